@@ -1,0 +1,43 @@
+// One interface for every way of solving the field system (SPEC S2.3):
+//   (D^T D + omega^2 S) T = omega^2 S C.
+// A solver is stateful: it caches whatever it has built (factor, hierarchy, previous field) and
+// is told the whole new constraint set on each edit; it works out the difference itself (S3.2).
+// Phases: setGrid (analyse) -> setConstraints (factorise / update / downdate) -> solve.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "constraints.hpp"
+#include "field_system.hpp"
+#include "grid.hpp"
+#include "status.hpp"
+
+namespace hairsketch {
+
+struct SolveStats {
+  std::string method;   // what the last setConstraints/solve did, e.g. "cg", "update", "refactor"
+  int iterations = 0;   // iterative solvers: iterations of the last solve
+  double residual = 0;  // relative residual of the last solve (if the solver tracks it)
+  int added = 0, removed = 0, changed = 0;  // size of the last edit
+  double setupMs = 0, solveMs = 0;
+};
+
+class FieldSolver {
+ public:
+  virtual ~FieldSolver() = default;
+  // Analyse the grid (no constraints yet). Called once; a new grid needs a new solver.
+  virtual Status setGrid(const Grid& grid, double omega) = 0;
+  // Replace the constraint set (normalised: sorted, unique, validated by the caller or here).
+  virtual Status setConstraints(const ConstraintSet& next) = 0;
+  // Solve for the field of the current constraints. T is resized to n x 3.
+  // With no constraints the field is zero by definition.
+  virtual Status solve(Field& T) = 0;
+  virtual const SolveStats& stats() const = 0;
+  virtual std::string name() const = 0;
+};
+
+// Factory by name: "cg" (the simple reference path); later issues add "exact", "fast", "auto".
+std::unique_ptr<FieldSolver> makeFieldSolver(const std::string& name);
+
+}  // namespace hairsketch

@@ -1,0 +1,11 @@
+#include "cg_solver.hpp"
+#include "field_solver.hpp"
+
+namespace hairsketch {
+
+std::unique_ptr<FieldSolver> makeFieldSolver(const std::string& name) {
+  if (name == "cg") return std::make_unique<CgSolver>();
+  return nullptr;
+}
+
+}  // namespace hairsketch

@@ -1,0 +1,37 @@
+// The solver engine as the worker sees it: one stateful object over the wasm module.
+// Implemented by wasmEngine.ts; the same object runs in the browser worker and under Node.
+import type {
+  ConstraintArrays,
+  CurveSet,
+  FieldArrays,
+  GridSpec,
+  GrowthParams,
+  ScalpMesh,
+  SolverName,
+  SolveStats,
+  StrandArrays,
+} from './protocol';
+
+export interface SolverEngine {
+  /** Analyse the grid and create the solver. Throws SolverError on bad input. */
+  setGrid(grid: GridSpec, omega: number, solver: SolverName): void;
+  /** Store the scalp triangles used for root sampling. */
+  setScalp(mesh: ScalpMesh): void;
+  /** Derive constraints from the curves and hand them to the solver (diffed in C++). */
+  setCurves(curves: CurveSet): void;
+  /** Solve the field for the current constraints. */
+  solve(): void;
+  /** Sample roots (S5.1) and grow strands (S5.2) in the current field. Returns copies. */
+  grow(params: GrowthParams): StrandArrays;
+  constraints(): ConstraintArrays;
+  field(): FieldArrays;
+  stats(): Omit<SolveStats, 'growMs'>;
+  dispose(): void;
+}
+
+export class SolverError extends Error {
+  constructor(message: string) {
+    super(message);
+    this.name = 'SolverError';
+  }
+}

@@ -1,0 +1,124 @@
+// The worker protocol: every message between the app and the solver worker, and the layout of
+// every typed array that crosses the boundary. Arrays are flat; the comment on each field gives
+// its index formula. Arrays sent by the worker are transferred (not copied).
+
+/** Uniform grid over the bounding volume (SPEC S1.2). Point (i, j, k) has index
+ *  p = i + nx * (j + ny * k) and world position origin + step * (i, j, k). */
+export interface GridSpec {
+  dims: [number, number, number]; // nx, ny, nz
+  origin: [number, number, number]; // world position of point (0, 0, 0)
+  step: number; // d, world units
+}
+
+/** The head as the solver needs it: triangles with a scalp flag (SPEC S1.1). */
+export interface ScalpMesh {
+  positions: Float32Array; // positions[3 * vertex + axis]
+  indices: Uint32Array; // indices[3 * triangle + corner]
+  scalp: Uint8Array; // scalp[triangle] = 1 when the triangle is part of the scalp
+  center: [number, number, number]; // origin of the spherical root parameterisation (S5.1)
+}
+
+/** Style curve kinds, as stored in CurveSet.kinds. Later primitives add values. */
+export const CurveKind = { stream: 0 } as const;
+export type CurveKindName = keyof typeof CurveKind;
+
+/** All style curves of a session, flattened. Curve c owns points
+ *  curveStart[c] .. curveStart[c + 1] - 1; its segments have length ≈ grid step (S4). */
+export interface CurveSet {
+  points: Float64Array; // points[3 * point + axis], world units
+  curveStart: Uint32Array; // length = curves + 1; curveStart[0] = 0
+  kinds: Uint8Array; // kinds[c]: a CurveKind value
+  extend: Uint8Array; // extend[c] = 1: append fading extrapolated segments (S4.1)
+}
+
+/** Hair growth settings (SPEC S5). */
+export interface GrowthParams {
+  thetaStepDeg: number; // sampling step of θ ∈ [0, 180)
+  phiStepDeg: number; // sampling step of φ ∈ [0, 360)
+  jitter: number; // random offset as a fraction of a step, 0..1
+  seed: number; // uint32: the same seed grows the same roots
+  stepFraction: number; // l / d (paper: 0.5)
+  minMagnitude: number; // stop when |v(p)| falls below this (paper: 0.05)
+  maxLength: number; // world units: stop a strand at this length
+  maxStrands: number; // cap on the number of roots used (0 = no cap)
+}
+
+/** Grown strands. Strand s owns points strandStart[s] .. strandStart[s + 1] - 1; the first is
+ *  its root on the scalp. */
+export interface StrandArrays {
+  points: Float32Array; // points[3 * point + axis]
+  strandStart: Uint32Array; // length = strands + 1
+}
+
+/** The solved field, one vector per grid point. */
+export interface FieldArrays {
+  vectors: Float32Array; // vectors[3 * p + axis], p = grid index
+}
+
+/** The constraint set derived from the curves (SPEC S2.3). */
+export interface ConstraintArrays {
+  index: Int32Array; // index[c] = grid point p of constraint c (sorted, unique)
+  target: Float32Array; // target[3 * c + axis] = c_p
+}
+
+export type SolverName = 'cg';
+
+export interface SolveStats {
+  method: string;
+  iterations: number;
+  constraints: number;
+  added: number;
+  removed: number;
+  changed: number;
+  setupMs: number;
+  solveMs: number;
+  growMs: number;
+}
+
+// ---- messages -------------------------------------------------------------------------------
+
+export type ToWorker =
+  | {
+      type: 'init';
+      grid: GridSpec;
+      omega: number;
+      solver: SolverName;
+      scalp: ScalpMesh;
+    }
+  | {
+      type: 'solve';
+      id: number; // increases per request; results carry it back
+      curves: CurveSet;
+      growth: GrowthParams;
+      wantField: boolean;
+    };
+
+export type FromWorker =
+  | { type: 'ready'; gridPoints: number; roots: number }
+  | { type: 'progress'; id: number; phase: 'constraints' | 'solve' | 'grow'; fraction: number }
+  | {
+      type: 'result';
+      id: number;
+      strands: StrandArrays;
+      constraints: ConstraintArrays;
+      field: FieldArrays | null;
+      stats: SolveStats;
+    }
+  | { type: 'error'; id: number | null; message: string };
+
+/** Transfer list for a result message: every array buffer it carries. */
+export function resultTransferables(msg: Extract<FromWorker, { type: 'result' }>): ArrayBuffer[] {
+  const list: ArrayBuffer[] = [
+    msg.strands.points.buffer as ArrayBuffer,
+    msg.strands.strandStart.buffer as ArrayBuffer,
+    msg.constraints.index.buffer as ArrayBuffer,
+    msg.constraints.target.buffer as ArrayBuffer,
+  ];
+  if (msg.field) list.push(msg.field.vectors.buffer as ArrayBuffer);
+  return list;
+}
+
+/** Number of strands in a StrandArrays. */
+export function strandCount(s: StrandArrays): number {
+  return Math.max(0, s.strandStart.length - 1);
+}
