@@ -40,6 +40,7 @@ export interface GrowthParams {
   stepFraction: number; // l / d (paper: 0.5)
   minMagnitude: number; // stop when |v(p)| falls below this (paper: 0.05)
   maxLength: number; // world units: stop a strand at this length
+  maxSegments: number; // stop a strand after this many segments
   maxStrands: number; // cap on the number of roots used (0 = no cap)
 }
 
