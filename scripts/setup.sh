@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# Installs what is missing: Debian packages (when root and apt-get exist) and npm packages.
+# Usage: scripts/setup.sh runtime|test
+set -euo pipefail
+cd "$(dirname "$0")/.."
+mode="${1:-runtime}"
+
+need_cmd=()   # commands that must exist
+pkgs=()       # Debian packages providing them
+want() { if ! command -v "$1" >/dev/null 2>&1; then need_cmd+=("$1"); pkgs+=("$2"); fi; }
+want_file() { if [ ! -e "$1" ]; then need_cmd+=("$1"); pkgs+=("$2"); fi; }
+
+want emcc emscripten
+want_file /usr/include/eigen3/Eigen/Core libeigen3-dev
+if [ "$mode" = test ]; then
+  want cmake cmake
+  want ninja ninja-build
+  want g++ g++
+  want clang-format clang-format
+  want_file /usr/include/gtest/gtest.h libgtest-dev
+  want_file "${CHROMIUM_PATH:-/usr/bin/chromium}" chromium
+fi
+
+if [ ${#pkgs[@]} -gt 0 ]; then
+  # shellcheck disable=SC2207
+  uniq_pkgs=($(printf '%s\n' "${pkgs[@]}" | sort -u))
+  cmd="apt-get update && apt-get install -y ${uniq_pkgs[*]}"
+  echo "setup: missing ${need_cmd[*]}; installing Debian packages: ${uniq_pkgs[*]}"
+  if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
+    if ! (export DEBIAN_FRONTEND=noninteractive; apt-get update -q && apt-get install -y -q "${uniq_pkgs[@]}"); then
+      echo "setup: could not install the packages. Run this yourself, then try again:" >&2
+      echo "  sudo sh -c '$cmd'" >&2
+      exit 1
+    fi
+  else
+    echo "setup: these Debian packages are needed and I cannot install them (not root or no apt-get)." >&2
+    echo "Run this, then try again:" >&2
+    echo "  sudo sh -c '$cmd'" >&2
+    exit 1
+  fi
+fi
+
+major=$(node -p 'process.versions.node.split(".")[0]')
+if [ "$major" -lt 20 ]; then
+  echo "setup: Node.js 20 or newer is needed (found $(node -v))." >&2
+  exit 1
+fi
+
+if [ ! -f node_modules/.package-lock.json ] || [ package-lock.json -nt node_modules/.package-lock.json ]; then
+  echo "setup: installing npm packages (npm ci)"
+  npm ci --no-audit --no-fund
+fi

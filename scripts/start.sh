@@ -1,0 +1,11 @@
+#!/usr/bin/env bash
+# npm start: set up what is missing, build, serve the app and print its URL.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/build.sh
+port="${PORT:-5173}"
+echo ""
+echo "hairsketch is served at  http://127.0.0.1:${port}/   (Ctrl+C stops it)"
+echo "  options: ?preset=default|empty  ?grid=25k|50k  ?strands=N"
+echo ""
+exec npx vite preview --port "$port" --strictPort

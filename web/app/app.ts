@@ -1,0 +1,337 @@
+// Wires the app together. Data flows one way:
+// pointer -> tool -> session model -> solver client (worker) -> typed arrays -> viewer.
+import * as THREE from 'three';
+import { buildHead } from '../head/buildHead';
+import { packCurves } from '../model/curveSet';
+import { gridForPreset } from '../model/grid';
+import { History } from '../model/history';
+import { applyPreset } from '../model/presets';
+import {
+  addCurve,
+  DEFAULT_GROWTH,
+  deleteCurve,
+  emptySession,
+  nextCurveId,
+  type SessionState,
+} from '../model/session';
+import { sub, type Vec3 } from '../model/vec3';
+import { SolverClient, type SolveResult } from '../solver/solverClient';
+import { SelectTool } from '../tools/selectTool';
+import { StreamCurveTool } from '../tools/streamCurveTool';
+import type { Tool } from '../tools/tool';
+import { StatusLine } from '../ui/status';
+import { buildToolbar } from '../ui/toolbar';
+import { createHeadMesh } from '../viewer/headMaterial';
+import { HeadPicker } from '../viewer/headPicker';
+import { buildStrandGeometry, createStrandMaterial } from '../viewer/strandMaterial';
+import { Viewer } from '../viewer/viewer';
+import { installTestApi } from './testApi';
+import { parseUrlOptions } from './urlOptions';
+
+export class App {
+  readonly viewer: Viewer;
+  readonly status: StatusLine;
+  readonly picker: HeadPicker;
+  readonly history: History<SessionState>;
+  readonly client: SolverClient;
+  readonly step: number;
+  selectedId: string | null = null;
+  private tool: Tool;
+  private readonly tools: Record<'stream' | 'select', Tool>;
+  private readonly toolbar;
+  private shownStrands: SolveResult['strands'] | null = null;
+  private strandMaterial: THREE.ShaderMaterial | null = null;
+  private lastMessage = '';
+
+  constructor() {
+    const opts = parseUrlOptions(window.location.search);
+    this.status = new StatusLine(
+      document.getElementById('status') as HTMLElement,
+      document.getElementById('hint') as HTMLElement,
+    );
+    this.status.set('loading', 'Building the head…');
+    this.viewer = new Viewer(document.getElementById('viewport') as HTMLCanvasElement);
+
+    const head = buildHead();
+    const headMesh = createHeadMesh(head);
+    this.viewer.addHead(headMesh);
+    this.picker = new HeadPicker(headMesh.geometry, head);
+
+    const grid = gridForPreset(opts.grid);
+    this.step = grid.step;
+    const growth = { ...DEFAULT_GROWTH, maxStrands: opts.maxStrands };
+    const session = applyPreset(emptySession(opts.grid, growth), opts.preset, {
+      headPoint: (t, p) => this.picker.scalpPoint(t, p)?.point ?? null,
+      center: head.center,
+      step: grid.step,
+      viewpoint: this.viewer.cameraState(),
+    });
+    this.history = new History(session);
+
+    this.tools = {
+      stream: new StreamCurveTool({
+        sample: (x, y) => {
+          const ray = this.viewer.rayAt(x, y);
+          const hit = this.picker.first(ray);
+          return {
+            origin: [ray.origin.x, ray.origin.y, ray.origin.z],
+            direction: [ray.direction.x, ray.direction.y, ray.direction.z],
+            scalpHit: hit?.scalp ? hit.point : null,
+          };
+        },
+        eye: () => this.viewer.eye(),
+        forward: () => this.viewer.viewForward(),
+        step: () => this.step,
+        showDraft: (pts) => this.viewer.setDraft(pts),
+        commit: (points) => this.commitStreamCurve(points),
+        notify: (m) => this.notify(m),
+      }),
+      select: new SelectTool({
+        curves: () => this.history.current.curves,
+        toScreen: (p) => this.viewer.worldToScreen(p),
+        select: (id) => this.select(id),
+      }),
+    };
+    this.tool = this.tools.select;
+
+    this.toolbar = buildToolbar(document.getElementById('toolbar') as HTMLElement, {
+      tool: (name) => this.setTool(name),
+      undo: () => this.undo(),
+      redo: () => this.redo(),
+      deleteSelected: () => this.deleteSelected(),
+      hairColor: (css) => this.setHairColor(css),
+    });
+    this.toolbar.setHairColor(session.hairColor);
+    this.bindInput();
+    this.viewer.onFrame(() => this.tool.update());
+
+    this.status.set('loading', 'Loading the solver…');
+    this.client = new SolverClient(
+      () => new Worker(new URL('../solver/worker.ts', import.meta.url), { type: 'module' }),
+      { type: 'init', grid, omega: 100, solver: 'cg', scalp: scalpMessage(head) },
+      {
+        onBusy: (phase) =>
+          this.status.set(
+            phase === 'loading' ? 'loading' : 'solving',
+            phase === 'loading' ? 'Loading the solver…' : phase === 'growing' ? 'Growing hair…' : 'Solving the field…',
+          ),
+        onResult: (r, latest) => this.showResult(r, latest),
+        onError: (m) => this.status.set('error', `Error: ${m}`),
+        onIdle: () => this.showReady(),
+      },
+    );
+    this.setTool(opts.preset === 'empty' ? 'stream' : 'select');
+    this.syncSession();
+    if (opts.warnings.length) this.notify(`URL: ${opts.warnings.join('; ')}`);
+    installTestApi(this);
+  }
+
+  // ---- edits -------------------------------------------------------------------------------
+
+  private commitStreamCurve(points: Vec3[]): void {
+    const s = this.history.current;
+    const id = nextCurveId(s);
+    const { position, target } = this.viewer.cameraState();
+    this.history.push(addCurve(s, { id, type: 'stream', points, extend: true, viewpoint: { position, target } }));
+    this.selectedId = id;
+    this.notify(`Added stream curve ${id} (${points.length - 1} segments).`);
+    this.syncSession();
+  }
+
+  undo(): void {
+    if (this.history.undo()) this.afterHistoryMove('Undone.');
+  }
+
+  redo(): void {
+    if (this.history.redo()) this.afterHistoryMove('Redone.');
+  }
+
+  deleteSelected(): void {
+    if (!this.selectedId) return;
+    const next = deleteCurve(this.history.current, this.selectedId);
+    if (next === this.history.current) return;
+    this.history.push(next);
+    this.notify(`Deleted curve ${this.selectedId}.`);
+    this.selectedId = null;
+    this.syncSession();
+  }
+
+  select(id: string | null): void {
+    this.selectedId = id;
+    this.syncCurvesView();
+    this.refreshToolbar();
+  }
+
+  setHairColor(css: string): void {
+    this.history.push({ ...this.history.current, hairColor: css });
+    this.applyHairColor();
+    this.refreshToolbar();
+  }
+
+  setTool(name: 'stream' | 'select'): void {
+    this.tool.onCancel();
+    this.tool = this.tools[name];
+    this.toolbar.setTool(name);
+    const c = this.viewer.controls;
+    // Drawing takes the primary button; the camera orbits with the right button then.
+    if (name === 'stream') {
+      c.mouseButtons = { LEFT: -1 as THREE.MOUSE, MIDDLE: THREE.MOUSE.PAN, RIGHT: THREE.MOUSE.ROTATE };
+      c.touches = { ONE: -1 as THREE.TOUCH, TWO: THREE.TOUCH.DOLLY_ROTATE };
+      this.status.hint('Drag from the scalp to draw a stream curve · right-drag orbits · wheel zooms · middle-drag pans');
+    } else {
+      c.mouseButtons = { LEFT: THREE.MOUSE.ROTATE, MIDDLE: THREE.MOUSE.DOLLY, RIGHT: THREE.MOUSE.PAN };
+      c.touches = { ONE: THREE.TOUCH.ROTATE, TWO: THREE.TOUCH.DOLLY_PAN };
+      this.status.hint('Click a curve to select it · drag orbits · wheel zooms · right-drag pans');
+    }
+  }
+
+  private afterHistoryMove(message: string): void {
+    if (this.selectedId && !this.history.current.curves.some((c) => c.id === this.selectedId))
+      this.selectedId = null;
+    this.notify(message);
+    this.applyHairColor();
+    this.toolbar.setHairColor(this.history.current.hairColor);
+    this.syncSession();
+  }
+
+  // ---- session -> solver -> view -------------------------------------------------------------
+
+  private syncSession(): void {
+    const s = this.history.current;
+    this.status.counts(this.status.strands, s.curves.length);
+    this.syncCurvesView();
+    this.refreshToolbar();
+    this.client.request(packCurves(s.curves), s.growth);
+  }
+
+  private syncCurvesView(): void {
+    this.viewer.setCurves(this.history.current.curves, this.selectedId);
+  }
+
+  private refreshToolbar(): void {
+    this.toolbar.setEnabled({
+      undo: this.history.canUndo,
+      redo: this.history.canRedo,
+      del: this.selectedId !== null,
+    });
+  }
+
+  private showResult(r: SolveResult, latest: boolean): void {
+    if (this.shownStrands !== r.strands) {
+      this.shownStrands = r.strands;
+      const geometry = buildStrandGeometry(r.strands.points, r.strands.strandStart);
+      this.strandMaterial = createStrandMaterial({ color: this.history.current.hairColor });
+      this.viewer.setHair(new THREE.LineSegments(geometry, this.strandMaterial));
+      this.status.counts(r.strands.strandStart.length - 1, this.history.current.curves.length);
+      this.status.bumpRevision();
+    }
+    const st = r.stats;
+    this.lastSolve = `${st.constraints} constraints, ${st.method} ${st.iterations} it. ${st.solveMs.toFixed(0)} ms, growth ${st.growMs.toFixed(0)} ms`;
+    if (latest && !this.client.pending) this.showReady();
+  }
+
+  private lastSolve = '';
+
+  private showReady(): void {
+    if (this.client.pending) return;
+    const s = this.status;
+    const extra = [this.lastMessage, this.lastSolve].filter(Boolean).join(' · ');
+    s.set('ready', `Ready — ${s.strands} strands, ${s.curves} curves${extra ? ` · ${extra}` : ''}`);
+  }
+
+  private notify(message: string): void {
+    this.lastMessage = message;
+    if (this.status.state === 'ready') this.showReady();
+  }
+
+  private applyHairColor(): void {
+    this.strandMaterial?.uniforms.hairColor?.value.set(this.history.current.hairColor);
+    this.viewer.requestRender();
+  }
+
+  // ---- input -------------------------------------------------------------------------------
+
+  private bindInput(): void {
+    const canvas = this.viewer.canvas;
+    let captured: number | null = null;
+    const ptr = (e: PointerEvent) => ({ x: e.clientX, y: e.clientY, button: e.button });
+    canvas.addEventListener('pointerdown', (e) => {
+      if (captured !== null) return;
+      if (this.tool.onPointerDown(ptr(e))) {
+        captured = e.pointerId;
+        canvas.setPointerCapture(e.pointerId);
+      } else if (e.button === 0) {
+        captured = e.pointerId;
+      }
+    });
+    canvas.addEventListener('pointermove', (e) => {
+      if (e.pointerId === captured) this.tool.onPointerMove(ptr(e));
+    });
+    const end = (e: PointerEvent, cancel: boolean) => {
+      if (e.pointerId !== captured) return;
+      captured = null;
+      if (cancel) this.tool.onCancel();
+      else this.tool.onPointerUp(ptr(e));
+    };
+    canvas.addEventListener('pointerup', (e) => end(e, false));
+    canvas.addEventListener('pointercancel', (e) => end(e, true));
+    canvas.addEventListener('contextmenu', (e) => e.preventDefault());
+    window.addEventListener('keydown', (e) => {
+      if (e.target instanceof HTMLInputElement) return;
+      const mod = e.ctrlKey || e.metaKey;
+      const key = e.key.toLowerCase();
+      if (mod && key === 'z') {
+        e.preventDefault();
+        if (e.shiftKey) this.redo();
+        else this.undo();
+      } else if (mod && key === 'y') {
+        e.preventDefault();
+        this.redo();
+      } else if (!mod && (e.key === 'Delete' || e.key === 'Backspace')) {
+        this.deleteSelected();
+      } else if (!mod && key === 's') {
+        this.setTool('stream');
+      } else if (!mod && key === 'v') {
+        this.setTool('select');
+      } else if (e.key === 'Escape') {
+        this.tool.onCancel();
+        this.select(null);
+      }
+    });
+  }
+
+  // ---- queries (test API) ----------------------------------------------------------------------
+
+  /** Whether a world point is the first thing the camera sees along its ray. */
+  visible(p: Vec3): boolean {
+    const eye = this.viewer.eye();
+    const d = sub(p, eye);
+    const len = Math.hypot(d[0], d[1], d[2]);
+    const ray = new THREE.Ray(new THREE.Vector3(...eye), new THREE.Vector3(...d).normalize());
+    const hit = this.picker.first(ray);
+    return hit !== null && Math.abs(hit.distance - len) < 1e-3 * len + 1e-4;
+  }
+
+  get busy(): boolean {
+    return this.client.pending || this.tool.state !== 'idle' && this.tool.state !== 'pressed';
+  }
+
+  displayedStrands(): SolveResult['strands'] | null {
+    return this.shownStrands;
+  }
+}
+
+function scalpMessage(head: {
+  positions: Float32Array;
+  indices: Uint32Array;
+  scalp: Uint8Array;
+  center: [number, number, number];
+}) {
+  // Copies: the worker gets its own arrays, the app keeps the head.
+  return {
+    positions: head.positions.slice(),
+    indices: head.indices.slice(),
+    scalp: head.scalp.slice(),
+    center: head.center,
+  };
+}

@@ -1,0 +1,51 @@
+// window.hairsketch: the hooks automated browser tests use (README, "Test contract").
+import { contentKey } from '../model/curveSet';
+import type { Vec3 } from '../model/vec3';
+import type { App } from './app';
+
+export interface HairsketchTestApi {
+  scalpToScreen(thetaDeg: number, phiDeg: number): { x: number; y: number } | null;
+  worldToScreen(p: Vec3): { x: number; y: number } | null;
+  session(): unknown;
+  idle(): Promise<void>;
+  hairHash(): string | null;
+  crashWorker(): void;
+}
+
+declare global {
+  interface Window {
+    hairsketch: HairsketchTestApi;
+  }
+}
+
+export function installTestApi(app: App): void {
+  window.hairsketch = {
+    scalpToScreen(thetaDeg, phiDeg) {
+      const hit = app.picker.scalpPoint(thetaDeg, phiDeg);
+      if (!hit || !hit.scalp || !app.visible(hit.point)) return null;
+      return app.viewer.worldToScreen(hit.point);
+    },
+    worldToScreen: (p) => app.viewer.worldToScreen(p),
+    session: () =>
+      JSON.parse(
+        JSON.stringify({
+          ...app.history.current,
+          camera: app.viewer.cameraState(),
+          selected: app.selectedId,
+        }),
+      ),
+    idle: () =>
+      new Promise<void>((resolve) => {
+        const check = () => {
+          if (!app.busy && !app.viewer.renderPending) resolve();
+          else requestAnimationFrame(check);
+        };
+        check();
+      }),
+    hairHash() {
+      const s = app.displayedStrands();
+      return s ? contentKey(s.points, s.strandStart) : null;
+    },
+    crashWorker: () => app.client.crash(),
+  };
+}

@@ -1,0 +1,41 @@
+// Packs the session's curves into the protocol's flat CurveSet layout.
+import { CurveKind, type CurveSet } from '../solver/protocol';
+import type { StyleCurve } from './session';
+
+export function packCurves(curves: readonly StyleCurve[]): CurveSet {
+  let total = 0;
+  for (const c of curves) total += c.points.length;
+  const points = new Float64Array(3 * total);
+  const curveStart = new Uint32Array(curves.length + 1);
+  const kinds = new Uint8Array(curves.length);
+  const extend = new Uint8Array(curves.length);
+  let k = 0;
+  curves.forEach((c, i) => {
+    curveStart[i] = k;
+    kinds[i] = CurveKind[c.type];
+    extend[i] = c.extend ? 1 : 0;
+    for (const p of c.points) {
+      points[3 * k] = p[0];
+      points[3 * k + 1] = p[1];
+      points[3 * k + 2] = p[2];
+      k++;
+    }
+  });
+  curveStart[curves.length] = k;
+  return { points, curveStart, kinds, extend };
+}
+
+/** A content key for a curve set + growth settings (for the result cache). FNV-1a over bytes. */
+export function contentKey(...arrays: ArrayBufferView[]): string {
+  let h1 = 0x811c9dc5;
+  let h2 = 0x01000193;
+  for (const a of arrays) {
+    const bytes = new Uint8Array(a.buffer, a.byteOffset, a.byteLength);
+    for (let i = 0; i < bytes.length; i++) {
+      h1 = Math.imul(h1 ^ bytes[i], 0x01000193);
+      h2 = Math.imul(h2 ^ bytes[i], 0x5bd1e995);
+    }
+    h1 = Math.imul(h1 ^ bytes.length, 0x01000193);
+  }
+  return `${(h1 >>> 0).toString(16)}-${(h2 >>> 0).toString(16)}`;
+}

@@ -1,0 +1,17 @@
+// Tools are small state machines fed pointer input; work happens in update(), once per frame.
+export interface ToolPointer {
+  x: number; // client coordinates
+  y: number;
+  button: number; // 0 = primary
+}
+
+export interface Tool {
+  readonly name: string;
+  readonly state: string;
+  /** Returns true when the tool takes this press (the camera then ignores it). */
+  onPointerDown(p: ToolPointer): boolean;
+  onPointerMove(p: ToolPointer): void;
+  onPointerUp(p: ToolPointer): void;
+  onCancel(): void;
+  update(): void;
+}

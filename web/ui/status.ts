@@ -1,0 +1,36 @@
+// The status line: a visible sentence plus data-* attributes for automated tests.
+export type AppState = 'loading' | 'solving' | 'ready' | 'error';
+
+export class StatusLine {
+  state: AppState = 'loading';
+  strands = 0;
+  curves = 0;
+  revision = 0;
+
+  constructor(
+    private readonly el: HTMLElement,
+    private readonly hintEl: HTMLElement,
+  ) {}
+
+  set(state: AppState, text: string): void {
+    this.state = state;
+    this.el.dataset.state = state;
+    this.el.textContent = text;
+  }
+
+  counts(strands: number, curves: number): void {
+    this.strands = strands;
+    this.curves = curves;
+    this.el.dataset.strands = String(strands);
+    this.el.dataset.curves = String(curves);
+  }
+
+  bumpRevision(): void {
+    this.revision++;
+    this.el.dataset.revision = String(this.revision);
+  }
+
+  hint(text: string): void {
+    this.hintEl.textContent = text;
+  }
+}

@@ -1,0 +1,191 @@
+// The three.js view: head, hair strands, style curves, the stroke being drawn. Renders on demand.
+import * as THREE from 'three';
+import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
+import type { Vec3 } from '../model/vec3';
+
+export interface CurveView {
+  id: string;
+  points: readonly Vec3[];
+}
+
+export const DEFAULT_CAMERA = { position: [2.6, 0.9, 7.0] as Vec3, target: [0, -0.55, 0] as Vec3 };
+
+export class Viewer {
+  readonly renderer: THREE.WebGLRenderer;
+  readonly scene = new THREE.Scene();
+  readonly camera: THREE.PerspectiveCamera;
+  readonly controls: OrbitControls;
+  private readonly hairGroup = new THREE.Group();
+  private readonly curveGroup = new THREE.Group();
+  private draft: THREE.Line | null = null;
+  private dirty = true;
+  private frameHooks: Array<() => void> = [];
+  /** Called after each rendered frame (e.g. to count displayed hair revisions). */
+  onRendered: (() => void) | null = null;
+
+  constructor(readonly canvas: HTMLCanvasElement) {
+    this.renderer = new THREE.WebGLRenderer({ canvas, antialias: true, preserveDrawingBuffer: true });
+    this.renderer.setPixelRatio(Math.min(window.devicePixelRatio || 1, 2));
+    this.renderer.setClearColor(0xe9edf2, 1);
+    this.camera = new THREE.PerspectiveCamera(35, 1, 0.05, 100);
+    this.controls = new OrbitControls(this.camera, canvas);
+    this.controls.enableDamping = false;
+    this.controls.minDistance = 2;
+    this.controls.maxDistance = 25;
+    this.controls.addEventListener('change', () => this.requestRender());
+    this.setCamera(DEFAULT_CAMERA.position, DEFAULT_CAMERA.target);
+
+    this.scene.add(new THREE.HemisphereLight(0xffffff, 0x6b5d52, 1.4));
+    const key = new THREE.DirectionalLight(0xffffff, 1.6);
+    key.position.set(3, 5, 4);
+    this.scene.add(key);
+    const rim = new THREE.DirectionalLight(0xbfd4ff, 0.6);
+    rim.position.set(-4, 2, -3);
+    this.scene.add(rim);
+    this.scene.add(this.hairGroup, this.curveGroup);
+
+    new ResizeObserver(() => this.resize()).observe(canvas);
+    this.resize();
+    const loop = () => {
+      for (const hook of this.frameHooks) hook();
+      if (this.dirty) {
+        this.dirty = false;
+        this.renderer.render(this.scene, this.camera);
+        this.onRendered?.();
+      }
+      requestAnimationFrame(loop);
+    };
+    requestAnimationFrame(loop);
+  }
+
+  /** Runs `hook` once per animation frame, before rendering. */
+  onFrame(hook: () => void): void {
+    this.frameHooks.push(hook);
+  }
+
+  requestRender(): void {
+    this.dirty = true;
+  }
+
+  get renderPending(): boolean {
+    return this.dirty;
+  }
+
+  setCamera(position: Vec3, target: Vec3): void {
+    this.camera.position.set(...position);
+    this.controls.target.set(...target);
+    this.controls.update();
+    this.requestRender();
+  }
+
+  cameraState(): { position: Vec3; target: Vec3 } {
+    const p = this.camera.position;
+    const t = this.controls.target;
+    return { position: [p.x, p.y, p.z], target: [t.x, t.y, t.z] };
+  }
+
+  addHead(mesh: THREE.Object3D): void {
+    this.scene.add(mesh);
+    this.requestRender();
+  }
+
+  /** Replaces the displayed hair. */
+  setHair(object: THREE.Object3D | null): void {
+    for (const child of [...this.hairGroup.children]) {
+      this.hairGroup.remove(child);
+      disposeObject(child);
+    }
+    if (object) this.hairGroup.add(object);
+    this.requestRender();
+  }
+
+  setCurves(curves: readonly CurveView[], selectedId: string | null): void {
+    for (const child of [...this.curveGroup.children]) {
+      this.curveGroup.remove(child);
+      disposeObject(child);
+    }
+    for (const c of curves) {
+      const line = polyline(c.points, c.id === selectedId ? 0xffc400 : 0x00b7d4);
+      line.userData.curveId = c.id;
+      this.curveGroup.add(line);
+    }
+    this.requestRender();
+  }
+
+  setDraft(points: readonly Vec3[] | null): void {
+    if (this.draft) {
+      this.scene.remove(this.draft);
+      disposeObject(this.draft);
+      this.draft = null;
+    }
+    if (points && points.length >= 2) {
+      this.draft = polyline(points, 0x2f7bff);
+      this.scene.add(this.draft);
+    }
+    this.requestRender();
+  }
+
+  /** Ray through client coordinates. */
+  rayAt(clientX: number, clientY: number): THREE.Ray {
+    const rect = this.canvas.getBoundingClientRect();
+    const ndc = new THREE.Vector2(
+      ((clientX - rect.left) / rect.width) * 2 - 1,
+      -((clientY - rect.top) / rect.height) * 2 + 1,
+    );
+    const rc = new THREE.Raycaster();
+    rc.setFromCamera(ndc, this.camera);
+    return rc.ray;
+  }
+
+  /** Client coordinates of a world point, or null when it is behind the camera or off screen. */
+  worldToScreen(p: Vec3): { x: number; y: number } | null {
+    const v = new THREE.Vector3(...p).project(this.camera);
+    if (v.z < -1 || v.z > 1 || Math.abs(v.x) > 1 || Math.abs(v.y) > 1) return null;
+    const rect = this.canvas.getBoundingClientRect();
+    return {
+      x: rect.left + ((v.x + 1) / 2) * rect.width,
+      y: rect.top + ((1 - v.y) / 2) * rect.height,
+    };
+  }
+
+  viewForward(): Vec3 {
+    const f = new THREE.Vector3();
+    this.camera.getWorldDirection(f);
+    return [f.x, f.y, f.z];
+  }
+
+  eye(): Vec3 {
+    const p = this.camera.position;
+    return [p.x, p.y, p.z];
+  }
+
+  private resize(): void {
+    const w = Math.max(1, this.canvas.clientWidth);
+    const h = Math.max(1, this.canvas.clientHeight);
+    this.renderer.setSize(w, h, false);
+    this.camera.aspect = w / h;
+    this.camera.updateProjectionMatrix();
+    this.requestRender();
+  }
+}
+
+function polyline(points: readonly Vec3[], color: number): THREE.Line {
+  const arr = new Float32Array(points.length * 3);
+  points.forEach((p, i) => arr.set(p, 3 * i));
+  const g = new THREE.BufferGeometry();
+  g.setAttribute('position', new THREE.BufferAttribute(arr, 3));
+  const m = new THREE.LineBasicMaterial({ color, depthTest: false, transparent: true });
+  const line = new THREE.Line(g, m);
+  line.renderOrder = 10;
+  return line;
+}
+
+function disposeObject(o: THREE.Object3D): void {
+  o.traverse((x) => {
+    const m = x as THREE.Mesh;
+    m.geometry?.dispose();
+    const mat = m.material as THREE.Material | THREE.Material[] | undefined;
+    if (Array.isArray(mat)) for (const mm of mat) mm.dispose();
+    else mat?.dispose();
+  });
+}
