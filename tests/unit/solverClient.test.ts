@@ -1,0 +1,138 @@
+// The client's scheduling against a fake worker: one solve in flight, newest wins, results are
+// cached by content, and a dead worker is replaced and sent the session again.
+import { describe, expect, it } from 'vitest';
+import { packCurves } from '../../web/model/curveSet';
+import { DEFAULT_GROWTH, type StyleCurve } from '../../web/model/session';
+import type { FromWorker, ToWorker } from '../../web/solver/protocol';
+import { type InitMessage, SolverClient, type SolveResult } from '../../web/solver/solverClient';
+
+class FakeWorker {
+  sent: ToWorker[] = [];
+  terminated = false;
+  onmessage: ((ev: MessageEvent<FromWorker>) => void) | null = null;
+  onerror: ((ev: ErrorEvent) => void) | null = null;
+  postMessage(m: ToWorker) {
+    this.sent.push(m);
+  }
+  terminate() {
+    this.terminated = true;
+  }
+  reply(m: FromWorker) {
+    this.onmessage?.({ data: m } as MessageEvent<FromWorker>);
+  }
+  die() {
+    this.onerror?.({ message: 'RuntimeError: abort(OOM)', preventDefault() {} } as ErrorEvent);
+  }
+  solves() {
+    return this.sent.filter((m): m is Extract<ToWorker, { type: 'solve' }> => m.type === 'solve');
+  }
+}
+
+const init: InitMessage = {
+  type: 'init',
+  grid: { dims: [2, 2, 2], origin: [0, 0, 0], step: 1 },
+  omega: 100,
+  solver: 'cg',
+  scalp: { positions: new Float32Array(), indices: new Uint32Array(), scalp: new Uint8Array(), center: [0, 0, 0] },
+};
+
+const curves = (n: number) =>
+  packCurves(
+    Array.from({ length: n }, (_, i): StyleCurve => ({
+      id: `c${i}`,
+      type: 'stream',
+      points: [
+        [i, 0, 0],
+        [i, 1, 0],
+      ],
+      extend: true,
+      viewpoint: { position: [0, 0, 5], target: [0, 0, 0] },
+    })),
+  );
+
+const result = (id: number): SolveResult => ({
+  type: 'result',
+  id,
+  strands: { points: new Float32Array([id, 0, 0]), strandStart: new Uint32Array([0, 1]) },
+  constraints: { index: new Int32Array(), target: new Float32Array() },
+  field: null,
+  stats: { method: 'cg', iterations: 0, constraints: 0, added: 0, removed: 0, changed: 0, setupMs: 0, solveMs: 0, growMs: 0 },
+});
+
+function setup() {
+  const workers: FakeWorker[] = [];
+  const shown: Array<{ id: number; cached: boolean }> = [];
+  const errors: string[] = [];
+  const client = new SolverClient(
+    () => {
+      const w = new FakeWorker();
+      workers.push(w);
+      return w as unknown as Worker;
+    },
+    init,
+    {
+      onBusy() {},
+      onResult: (r, _latest, cached) => shown.push({ id: r.id, cached }),
+      onError: (m) => errors.push(m),
+      onIdle() {},
+    },
+  );
+  return { client, workers, shown, errors };
+}
+
+describe('SolverClient', () => {
+  it('keeps one solve in flight and lets the newest waiting request supersede older ones', () => {
+    const { client, workers, shown } = setup();
+    const w = workers[0];
+    expect(w.sent[0].type).toBe('init');
+    client.request(curves(1), DEFAULT_GROWTH);
+    expect(w.solves()).toHaveLength(0); // not ready yet
+    w.reply({ type: 'ready', gridPoints: 8, roots: 0 });
+    expect(w.solves()).toHaveLength(1);
+    client.request(curves(2), DEFAULT_GROWTH);
+    client.request(curves(3), DEFAULT_GROWTH);
+    expect(w.solves()).toHaveLength(1); // busy: the others wait, and only the newest is kept
+    w.reply(result(w.solves()[0].id));
+    expect(w.solves()).toHaveLength(2);
+    expect(w.solves()[1].curves.curveStart.length).toBe(4); // 3 curves: the newest
+    expect(shown).toEqual([]); // the stale result is not shown while a newer one is waiting
+    w.reply(result(w.solves()[1].id));
+    expect(shown.map((s) => s.id)).toEqual([w.solves()[1].id]);
+    expect(client.pending).toBe(false);
+  });
+
+  it('answers a repeated state from its cache without the worker', () => {
+    const { client, workers, shown } = setup();
+    const w = workers[0];
+    w.reply({ type: 'ready', gridPoints: 8, roots: 0 });
+    client.request(curves(1), DEFAULT_GROWTH);
+    w.reply(result(w.solves()[0].id));
+    client.request(curves(2), DEFAULT_GROWTH);
+    w.reply(result(w.solves()[1].id));
+    client.request(curves(1), DEFAULT_GROWTH); // undo
+    expect(w.solves()).toHaveLength(2);
+    expect(shown.at(-1)).toEqual({ id: w.solves()[0].id, cached: true });
+  });
+
+  it('restarts a dead worker and re-sends the newest state', () => {
+    const { client, workers, errors } = setup();
+    workers[0].reply({ type: 'ready', gridPoints: 8, roots: 0 });
+    client.request(curves(2), DEFAULT_GROWTH);
+    workers[0].die();
+    expect(workers[0].terminated).toBe(true);
+    expect(errors[0]).toMatch(/restarting/);
+    expect(workers).toHaveLength(2);
+    const w = workers[1];
+    expect(w.sent[0].type).toBe('init');
+    w.reply({ type: 'ready', gridPoints: 8, roots: 0 });
+    expect(w.solves()).toHaveLength(1);
+    expect(w.solves()[0].curves.curveStart.length).toBe(3);
+  });
+
+  it('gives up after repeated deaths with a message that keeps the session', () => {
+    const { workers, errors } = setup();
+    for (let i = 0; i < 4; i++) workers[workers.length - 1].die();
+    expect(workers).toHaveLength(4);
+    expect(errors.at(-1)).toMatch(/reload the page/);
+  });
+});
