@@ -1,0 +1,132 @@
+// The built-in head (SPEC S1.1): the signed distance function of headSdf.ts polygonised by
+// surface nets into one closed, consistently oriented triangle mesh, with smoothed normals and a
+// scalp flag per triangle. World units ≈ 10 cm; y up; the face looks toward +z; +x is the head's
+// left; the scalp-parameterisation centre is the origin.
+
+import { HeadPart, headPartAt, headSdf } from './headSdf';
+import { markScalpTriangles } from './scalpRegion';
+import { sampleField, surfaceNets, type TriangleMesh } from './surfaceNets';
+
+export interface HeadModel {
+  positions: Float32Array; // positions[3 * vertex + axis], world units
+  normals: Float32Array; // normals[3 * vertex + axis], unit, outward
+  indices: Uint32Array; // indices[3 * triangle + corner], counter-clockwise seen from outside
+  scalp: Uint8Array; // scalp[triangle] = 1 on the hair-bearing region
+  parts: Uint8Array; // parts[vertex]: a HeadPart value (skin, eye, lips), for colouring
+  center: [number, number, number]; // origin of the scalp parameterisation (S5.1)
+  bounds: { min: [number, number, number]; max: [number, number, number] };
+}
+
+export interface BuildHeadOptions {
+  /** Grid cells per world unit (10 cm) of the polygonisation; default 24 (≈ 30K triangles). */
+  resolution?: number;
+}
+
+export { HeadPart };
+
+// Sampling box: the head lies inside with a margin so that the surface never touches the border.
+const BOX_MIN: [number, number, number] = [-1.05, -2.75, -1.2];
+const BOX_MAX: [number, number, number] = [1.05, 1.15, 1.5];
+
+export function buildHead(options: BuildHeadOptions = {}): HeadModel {
+  const resolution = options.resolution ?? 24;
+  if (!(resolution >= 4 && resolution <= 200)) throw new Error(`bad resolution ${resolution}`);
+  const step = 1 / resolution;
+  let mesh: TriangleMesh | null = null;
+  // A grid vertex pattern can, rarely, give a non-manifold edge (four quads around one dual
+  // edge at a saddle). Then shift the grid by a fraction of a step and polygonise again.
+  for (let attempt = 0; attempt < 6 && mesh === null; attempt++) {
+    const shift = attempt === 0 ? 0 : (0.173 * attempt) % 1;
+    const origin: [number, number, number] = [
+      BOX_MIN[0] - step * shift,
+      BOX_MIN[1] - step * ((shift * 1.7) % 1),
+      BOX_MIN[2] - step * ((shift * 2.3) % 1),
+    ];
+    const dims: [number, number, number] = [0, 1, 2].map(
+      (a) => Math.ceil((BOX_MAX[a] - origin[a]) / step) + 1,
+    ) as [number, number, number];
+    const candidate = surfaceNets(sampleField(headSdf, dims, origin, step, 1.5));
+    if (isClosedSphere(candidate)) mesh = candidate;
+  }
+  if (mesh === null) throw new Error('buildHead: polygonisation is not a closed manifold');
+
+  const { positions, indices } = mesh;
+  const normals = vertexNormals(positions, indices);
+  const vertices = positions.length / 3;
+  const parts = new Uint8Array(vertices);
+  const min: [number, number, number] = [Infinity, Infinity, Infinity];
+  const max: [number, number, number] = [-Infinity, -Infinity, -Infinity];
+  for (let v = 0; v < vertices; v++) {
+    const x = positions[3 * v];
+    const y = positions[3 * v + 1];
+    const z = positions[3 * v + 2];
+    parts[v] = headPartAt(x, y, z);
+    if (x < min[0]) min[0] = x;
+    if (y < min[1]) min[1] = y;
+    if (z < min[2]) min[2] = z;
+    if (x > max[0]) max[0] = x;
+    if (y > max[1]) max[1] = y;
+    if (z > max[2]) max[2] = z;
+  }
+  const center: [number, number, number] = [0, 0, 0];
+  const scalp = markScalpTriangles(mesh, center);
+  return { positions, normals, indices, scalp, parts, center, bounds: { min, max } };
+}
+
+/** Area-weighted vertex normals, normalised. */
+export function vertexNormals(positions: Float32Array, indices: Uint32Array): Float32Array {
+  const n = new Float32Array(positions.length);
+  for (let t = 0; t < indices.length; t += 3) {
+    const a = 3 * indices[t];
+    const b = 3 * indices[t + 1];
+    const c = 3 * indices[t + 2];
+    const ux = positions[b] - positions[a];
+    const uy = positions[b + 1] - positions[a + 1];
+    const uz = positions[b + 2] - positions[a + 2];
+    const vx = positions[c] - positions[a];
+    const vy = positions[c + 1] - positions[a + 1];
+    const vz = positions[c + 2] - positions[a + 2];
+    const nx = uy * vz - uz * vy;
+    const ny = uz * vx - ux * vz;
+    const nz = ux * vy - uy * vx;
+    for (const v of [a, b, c]) {
+      n[v] += nx;
+      n[v + 1] += ny;
+      n[v + 2] += nz;
+    }
+  }
+  for (let v = 0; v < n.length; v += 3) {
+    const l = Math.hypot(n[v], n[v + 1], n[v + 2]) || 1;
+    n[v] /= l;
+    n[v + 1] /= l;
+    n[v + 2] /= l;
+  }
+  return n;
+}
+
+/** True when every edge is used by exactly two triangles, once in each direction, and the
+ *  Euler characteristic V − E + F is 2 (one closed surface of genus 0, no pinched vertices). */
+export function isClosedSphere(mesh: TriangleMesh): boolean {
+  const { positions, indices } = mesh;
+  const vertices = positions.length / 3;
+  const triangles = indices.length / 3;
+  // directed edge a→b must appear once, and b→a once
+  const directed = new Map<number, number>();
+  for (let t = 0; t < indices.length; t += 3) {
+    for (let e = 0; e < 3; e++) {
+      const a = indices[t + e];
+      const b = indices[t + ((e + 1) % 3)];
+      if (a === b) return false;
+      const key = a * vertices + b;
+      if (directed.has(key)) return false;
+      directed.set(key, 1);
+    }
+  }
+  for (const key of directed.keys()) {
+    const a = Math.floor(key / vertices);
+    const b = key - a * vertices;
+    if (!directed.has(b * vertices + a)) return false;
+  }
+  const edges = directed.size / 2;
+  return vertices - edges + triangles === 2;
+}

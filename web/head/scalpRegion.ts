@@ -1,0 +1,127 @@
+// The scalp: the hair-bearing part of the cranium (SPEC S1.1), described as a region of
+// directions seen from the scalp-parameterisation centre. Spherical angles as in S5.1: θ from +y
+// (0 = top of the head), φ = 0 toward +z (the face), φ = 90° toward +x (the head's left); the
+// direction is (sinθ sinφ, cosθ, sinθ cosφ). The hairline is θ_max(|φ|): a direction is scalp
+// when θ < θ_max(|φ|).
+
+const DEG = Math.PI / 180;
+
+// Hairline control points (|φ| in degrees, θ_max in degrees), symmetric left/right: forehead,
+// temples (a little recessed), sideburn in front of the ear, over the ear, behind the ear, nape.
+const HAIRLINE: ReadonlyArray<readonly [number, number]> = [
+  [0, 57],
+  [20, 58],
+  [40, 64],
+  [55, 72],
+  [66, 84],
+  [73, 97],
+  [79, 96],
+  [84, 80],
+  [98, 74],
+  [112, 78],
+  [128, 92],
+  [150, 108],
+  [168, 115],
+  [180, 116],
+];
+
+/** θ_max (radians) of the natural hairline at azimuth φ (radians, any range). */
+export function hairlineTheta(phi: number): number {
+  let a = Math.abs(Math.atan2(Math.sin(phi), Math.cos(phi))) / DEG; // |φ| in [0, 180]
+  if (a > 180) a = 180;
+  for (let i = 1; i < HAIRLINE.length; i++) {
+    const [p1, t1] = HAIRLINE[i];
+    if (a <= p1) {
+      const [p0, t0] = HAIRLINE[i - 1];
+      const u = (a - p0) / (p1 - p0);
+      const s = u * u * (3 - 2 * u); // smoothstep between control points
+      return (t0 + (t1 - t0) * s) * DEG;
+    }
+  }
+  return HAIRLINE[HAIRLINE.length - 1][1] * DEG;
+}
+
+/** True when the direction at spherical angles (θ, φ) (radians) lies in the scalp region. */
+export function isScalpDirection(theta: number, phi: number): boolean {
+  return theta < hairlineTheta(phi);
+}
+
+/** Spherical angles (θ, φ) in radians of the vector (x, y, z) (not necessarily unit). */
+export function directionAngles(x: number, y: number, z: number): [number, number] {
+  const r = Math.sqrt(x * x + y * y + z * z);
+  if (r === 0) return [0, 0];
+  return [Math.acos(Math.max(-1, Math.min(1, y / r))), Math.atan2(x, z)];
+}
+
+/** True when the point (world units) seen from `center` lies in a scalp direction. */
+export function isScalpPoint(
+  x: number,
+  y: number,
+  z: number,
+  center: readonly [number, number, number] = [0, 0, 0],
+): boolean {
+  const [theta, phi] = directionAngles(x - center[0], y - center[1], z - center[2]);
+  return isScalpDirection(theta, phi);
+}
+
+export interface MeshArrays {
+  positions: Float32Array; // positions[3 * vertex + axis]
+  indices: Uint32Array; // indices[3 * triangle + corner]
+}
+
+/** Mark triangles (1 = scalp) whose centroid lies in a scalp direction from `center` and whose
+ *  outward normal faces away from the centre (so inner folds are never scalp). */
+export function markScalpTriangles(
+  mesh: MeshArrays,
+  center: readonly [number, number, number] = [0, 0, 0],
+): Uint8Array {
+  const { positions: P, indices: I } = mesh;
+  const triangles = I.length / 3;
+  const scalp = new Uint8Array(triangles);
+  for (let t = 0; t < triangles; t++) {
+    const a = 3 * I[3 * t];
+    const b = 3 * I[3 * t + 1];
+    const c = 3 * I[3 * t + 2];
+    const cx = (P[a] + P[b] + P[c]) / 3 - center[0];
+    const cy = (P[a + 1] + P[b + 1] + P[c + 1]) / 3 - center[1];
+    const cz = (P[a + 2] + P[b + 2] + P[c + 2]) / 3 - center[2];
+    const [theta, phi] = directionAngles(cx, cy, cz);
+    if (!isScalpDirection(theta, phi)) continue;
+    // face normal (unnormalised) · radial direction
+    const ux = P[b] - P[a];
+    const uy = P[b + 1] - P[a + 1];
+    const uz = P[b + 2] - P[a + 2];
+    const vx = P[c] - P[a];
+    const vy = P[c + 1] - P[a + 1];
+    const vz = P[c + 2] - P[a + 2];
+    const nx = uy * vz - uz * vy;
+    const ny = uz * vx - ux * vz;
+    const nz = ux * vy - uy * vx;
+    if (nx * cx + ny * cy + nz * cz > 0) scalp[t] = 1;
+  }
+  return scalp;
+}
+
+/** Scalp of a user-loaded head (SPEC S1.1): triangles whose centroid lies on the side of the
+ *  plane that `planeNormal` points to. The normal need not be unit. */
+export function scalpFromPlane(
+  mesh: MeshArrays,
+  planePoint: readonly [number, number, number],
+  planeNormal: readonly [number, number, number],
+): Uint8Array {
+  const { positions: P, indices: I } = mesh;
+  const triangles = I.length / 3;
+  const scalp = new Uint8Array(triangles);
+  const [px, py, pz] = planePoint;
+  const [nx, ny, nz] = planeNormal;
+  for (let t = 0; t < triangles; t++) {
+    const a = 3 * I[3 * t];
+    const b = 3 * I[3 * t + 1];
+    const c = 3 * I[3 * t + 2];
+    const cx = (P[a] + P[b] + P[c]) / 3 - px;
+    const cy = (P[a + 1] + P[b + 1] + P[c + 1]) / 3 - py;
+    const cz = (P[a + 2] + P[b + 2] + P[c + 2]) / 3 - pz;
+    if (cx * nx + cy * ny + cz * nz > 0) scalp[t] = 1;
+  }
+  return scalp;
+}
