@@ -1,0 +1,273 @@
+#include "cg_solver.hpp"
+
+#include <chrono>
+#include <cmath>
+
+namespace hairsketch {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double msSince(Clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+// Largest grid we accept: 16M points (the field alone is 384 MB of doubles).
+constexpr int64_t kMaxGridPoints = int64_t(1) << 24;
+
+}  // namespace
+
+Status CgSolver::setGrid(const Grid& grid, double omega) {
+  if (!grid.valid() || !std::isfinite(grid.step) || !grid.origin.allFinite())
+    return Status::Error(StatusCode::InvalidInput,
+                         "grid must have at least 2 points per axis and a finite step > 0");
+  if (grid.size() > kMaxGridPoints)
+    return Status::Error(StatusCode::InvalidInput, "grid has too many points");
+  if (!std::isfinite(omega) || omega <= 0)
+    return Status::Error(StatusCode::InvalidInput, "omega must be finite and > 0");
+  grid_ = grid;
+  omega_ = omega;
+  const int n = int(grid.size());
+  invCount_.resize(n);
+  for (int k = 0; k < grid.nz; ++k)
+    for (int j = 0; j < grid.ny; ++j)
+      for (int i = 0; i < grid.nx; ++i) {
+        const int c =
+            (i > 0) + (i + 1 < grid.nx) + (j > 0) + (j + 1 < grid.ny) + (k > 0) + (k + 1 < grid.nz);
+        invCount_[grid.index(i, j, k)] = 1.0 / c;
+      }
+  // (D^T D)_pp = sum_q D_qp^2 = 1 (the -1 of row p) + sum_{q in N(p)} (1 / |N(q)|)^2.
+  biDiag_.resize(n);
+  const int sx = 1, sy = grid.nx, sz = grid.nx * grid.ny;
+  for (int k = 0; k < grid.nz; ++k)
+    for (int j = 0; j < grid.ny; ++j)
+      for (int i = 0; i < grid.nx; ++i) {
+        const int p = grid.index(i, j, k);
+        double s = 1.0;
+        if (i > 0) s += invCount_[p - sx] * invCount_[p - sx];
+        if (i + 1 < grid.nx) s += invCount_[p + sx] * invCount_[p + sx];
+        if (j > 0) s += invCount_[p - sy] * invCount_[p - sy];
+        if (j + 1 < grid.ny) s += invCount_[p + sy] * invCount_[p + sy];
+        if (k > 0) s += invCount_[p - sz] * invCount_[p - sz];
+        if (k + 1 < grid.nz) s += invCount_[p + sz] * invCount_[p + sz];
+        biDiag_[p] = s;
+      }
+  penalty_ = Eigen::VectorXd::Zero(n);
+  set_.clear();
+  previous_.resize(0, 3);
+  hasGrid_ = true;
+  stats_ = SolveStats{};
+  stats_.method = "cg";
+  return Status::Ok();
+}
+
+Status CgSolver::setConstraints(const ConstraintSet& next) {
+  if (!hasGrid_) return Status::Error(StatusCode::InvalidInput, "setConstraints before setGrid");
+  Status s = validateConstraints(grid_, next);
+  if (!s.ok()) return s;
+  for (size_t c = 1; c < next.size(); ++c)
+    if (next[c].index <= next[c - 1].index)
+      return Status::Error(StatusCode::InvalidInput, "constraints must be sorted and unique");
+  const ConstraintDiff d = diffConstraints(set_, next);
+  stats_.added = int(d.added.size());
+  stats_.removed = int(d.removed.size());
+  stats_.changed = int(d.changed.size());
+  const auto t0 = Clock::now();
+  penalty_ = penaltyDiagonal(grid_, next, omega_);
+  set_ = next;
+  stats_.setupMs = msSince(t0);
+  return Status::Ok();
+}
+
+void CgSolver::applyOperator(const Field& X, Field& Y) const {
+  const Grid& g = grid_;
+  const int n = int(g.size());
+  const int sx = 3, sy = 3 * g.nx, sz = 3 * g.nx * g.ny;  // strides in doubles
+  Field& L = const_cast<Field&>(work_);
+  L.resize(n, 3);
+  Y.resize(n, 3);
+  const double* x = X.data();
+  double* l = L.data();
+  const double* inv = invCount_.data();
+  // Pass 1: L = D X, (D x)_p = inv_p * sum_{q in N(p)} x_q - x_p.
+  for (int k = 0, p = 0; k < g.nz; ++k)
+    for (int j = 0; j < g.ny; ++j)
+      for (int i = 0; i < g.nx; ++i, ++p) {
+        const double* xp = x + 3 * p;
+        double s0 = 0, s1 = 0, s2 = 0;
+        auto add = [&](int off) {
+          s0 += xp[off];
+          s1 += xp[off + 1];
+          s2 += xp[off + 2];
+        };
+        if (i > 0) add(-sx);
+        if (i + 1 < g.nx) add(sx);
+        if (j > 0) add(-sy);
+        if (j + 1 < g.ny) add(sy);
+        if (k > 0) add(-sz);
+        if (k + 1 < g.nz) add(sz);
+        const double w = inv[p];
+        l[3 * p] = w * s0 - xp[0];
+        l[3 * p + 1] = w * s1 - xp[1];
+        l[3 * p + 2] = w * s2 - xp[2];
+      }
+  // Pass 2: Y = D^T L + penalty * X, (D^T l)_p = -l_p + sum_{q in N(p)} inv_q l_q.
+  double* y = Y.data();
+  const double* pen = penalty_.data();
+  for (int k = 0, p = 0; k < g.nz; ++k)
+    for (int j = 0; j < g.ny; ++j)
+      for (int i = 0; i < g.nx; ++i, ++p) {
+        const double* lp = l + 3 * p;
+        double s0 = 0, s1 = 0, s2 = 0;
+        auto add = [&](int off, int q) {
+          const double w = inv[q];
+          s0 += w * lp[off];
+          s1 += w * lp[off + 1];
+          s2 += w * lp[off + 2];
+        };
+        if (i > 0) add(-sx, p - 1);
+        if (i + 1 < g.nx) add(sx, p + 1);
+        if (j > 0) add(-sy, p - g.nx);
+        if (j + 1 < g.ny) add(sy, p + g.nx);
+        if (k > 0) add(-sz, p - g.nx * g.ny);
+        if (k + 1 < g.nz) add(sz, p + g.nx * g.ny);
+        const double w = pen[p];
+        y[3 * p] = s0 - lp[0] + w * x[3 * p];
+        y[3 * p + 1] = s1 - lp[1] + w * x[3 * p + 1];
+        y[3 * p + 2] = s2 - lp[2] + w * x[3 * p + 2];
+      }
+}
+
+double smallestTridiagonalEigenvalue(const std::vector<double>& d, const std::vector<double>& e) {
+  const size_t k = d.size();
+  if (k == 0) return 0;
+  // Gershgorin interval.
+  double lo = d[0], hi = d[0];
+  for (size_t i = 0; i < k; ++i) {
+    const double r = (i > 0 ? std::abs(e[i - 1]) : 0) + (i + 1 < k ? std::abs(e[i]) : 0);
+    lo = std::min(lo, d[i] - r);
+    hi = std::max(hi, d[i] + r);
+  }
+  // Number of eigenvalues < x (LDL^T inertia).
+  auto countBelow = [&](double x) {
+    int neg = 0;
+    double q = d[0] - x;
+    for (size_t i = 0;; ++i) {
+      if (q == 0) q = -1e-300;
+      if (q < 0) ++neg;
+      if (i + 1 == k) break;
+      q = d[i + 1] - x - e[i] * e[i] / q;
+    }
+    return neg;
+  };
+  for (int it = 0; it < 100 && hi - lo > 1e-14 * std::max(std::abs(lo), std::abs(hi)); ++it) {
+    const double mid = 0.5 * (lo + hi);
+    if (countBelow(mid) >= 1)
+      hi = mid;
+    else
+      lo = mid;
+  }
+  return lo;  // the lower end: errs on the small side, which makes the error bound larger
+}
+
+Status CgSolver::solve(Field& T) {
+  if (!hasGrid_) return Status::Error(StatusCode::InvalidInput, "solve before setGrid");
+  const auto t0 = Clock::now();
+  const int n = int(grid_.size());
+  stats_.method = "cg";
+  stats_.iterations = 0;
+  stats_.residual = 0;
+  errorEstimate_ = 0;
+  if (set_.empty()) {  // D^T D alone is singular; the field is zero by definition.
+    T = Field::Zero(n, 3);
+    previous_ = T;
+    stats_.solveMs = msSince(t0);
+    return Status::Ok();
+  }
+  const Field B = assembleRhs(grid_, set_, omega_);
+  const Eigen::RowVector3d bNorm = B.colwise().norm();
+  const Eigen::VectorXd diag = biDiag_ + penalty_;
+  const Eigen::VectorXd invDiag = diag.cwiseInverse();
+  const double minDiag = diag.minCoeff();
+
+  Field X = (options_.warmStart && previous_.rows() == n) ? previous_ : Field::Zero(n, 3);
+  Field R(n, 3), Z(n, 3), P(n, 3), Q(n, 3);
+  applyOperator(X, Q);
+  R = B - Q;
+  // A warm start worse than zero (e.g. after a big edit) is dropped, column by column.
+  for (int c = 0; c < 3; ++c)
+    if (R.col(c).norm() > bNorm[c]) {
+      X.col(c).setZero();
+      R.col(c) = B.col(c);
+    }
+  Z = R.array().colwise() * invDiag.array();
+  P = Z;
+  Eigen::RowVector3d rz = (R.array() * Z.array()).colwise().sum();
+
+  // Lanczos tridiagonal per component, from the PCG coefficients.
+  std::vector<double> tDiag[3], tOff[3];
+  double lastAlpha[3] = {0, 0, 0}, lastBeta[3] = {0, 0, 0};
+  double bound[3] = {0, 0, 0};
+  bool active[3];
+  // Converged when the error bound is met; a zero right-hand side converges at once.
+  auto converged = [&](int c) {
+    const double r = R.col(c).norm();
+    if (r == 0) return true;
+    if (r > options_.residualGate * bNorm[c] || tDiag[c].empty()) return false;
+    const double theta = smallestTridiagonalEigenvalue(tDiag[c], tOff[c]);
+    if (!(theta > 0)) return false;
+    bound[c] = r / (minDiag * theta);
+    return bound[c] <= options_.errorTolerance * X.col(c).norm();
+  };
+  for (int c = 0; c < 3; ++c) active[c] = R.col(c).norm() > 0;
+
+  int it = 0;
+  while ((active[0] || active[1] || active[2]) && it < options_.maxIterations) {
+    applyOperator(P, Q);
+    ++it;
+    for (int c = 0; c < 3; ++c) {
+      if (!active[c]) continue;
+      const double pq = P.col(c).dot(Q.col(c));
+      if (!(pq > 0) || !std::isfinite(pq)) {
+        return Status::Error(StatusCode::NotPositiveDefinite,
+                             "cg: non-positive curvature (p^T M p = " + std::to_string(pq) + ")");
+      }
+      const double alpha = rz[c] / pq;
+      X.col(c) += alpha * P.col(c);
+      R.col(c) -= alpha * Q.col(c);
+      Z.col(c) = R.col(c).cwiseProduct(invDiag);
+      const double rzNew = R.col(c).dot(Z.col(c));
+      const double beta = rzNew / rz[c];
+      // T_k: delta_j = 1/alpha_j + beta_{j-1}/alpha_{j-1}, eta_j = sqrt(beta_j)/alpha_j.
+      tDiag[c].push_back(1.0 / alpha + (tDiag[c].empty() ? 0.0 : lastBeta[c] / lastAlpha[c]));
+      if (converged(c)) {
+        active[c] = false;
+        continue;
+      }
+      tOff[c].push_back(std::sqrt(beta) / alpha);
+      lastAlpha[c] = alpha;
+      lastBeta[c] = beta;
+      rz[c] = rzNew;
+      P.col(c) = Z.col(c) + beta * P.col(c);
+    }
+  }
+  stats_.iterations = it;
+  double rel = 0;
+  for (int c = 0; c < 3; ++c) {
+    if (bNorm[c] > 0) rel = std::max(rel, R.col(c).norm() / bNorm[c]);
+    const double xn = X.col(c).norm();
+    if (xn > 0) errorEstimate_ = std::max(errorEstimate_, bound[c] / xn);
+  }
+  stats_.residual = rel;
+  stats_.solveMs = msSince(t0);
+  if (!X.allFinite()) return Status::Error(StatusCode::NotConverged, "cg: field is not finite");
+  T = X;
+  previous_ = X;
+  if (active[0] || active[1] || active[2])
+    return Status::Error(StatusCode::NotConverged,
+                         "cg: no convergence after " + std::to_string(it) +
+                             " iterations (relative residual " + std::to_string(rel) + ")");
+  return Status::Ok();
+}
+
+}  // namespace hairsketch

@@ -1,0 +1,85 @@
+#include "hair_engine.hpp"
+
+#include <chrono>
+
+namespace hairsketch {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+}
+
+Status HairEngine::setGrid(const Grid& grid, double omega, const std::string& solverName) {
+  std::unique_ptr<FieldSolver> solver = makeFieldSolver(solverName);
+  if (!solver)
+    return Status::Error(StatusCode::InvalidInput, "unknown solver '" + solverName + "'");
+  Status s = solver->setGrid(grid, omega);
+  if (!s.ok()) return s;
+  solver_ = std::move(solver);
+  grid_ = grid;
+  hasGrid_ = true;
+  constraints_.clear();
+  field_ = Field::Zero(grid.size(), 3);
+  fieldF_.assign(size_t(grid.size()) * 3, 0.f);
+  fieldValid_ = true;  // no constraints: the zero field is the solution
+  strands_ = Strands{};
+  strands_.strandStart.assign(1, 0);
+  return Status::Ok();
+}
+
+Status HairEngine::setScalp(const float* positions, size_t vertexCount, const uint32_t* indices,
+                            size_t triangleCount, const uint8_t* scalp,
+                            const Eigen::Vector3d& center) {
+  rootsValid_ = false;
+  roots_.clear();
+  return scalp_.build(positions, vertexCount, indices, triangleCount, scalp, center);
+}
+
+Status HairEngine::setCurves(const CurveSetView& curves) {
+  if (!hasGrid_) return Status::Error(StatusCode::InvalidInput, "setCurves before setGrid");
+  ConstraintSet next;
+  Status s = curvesToConstraints(grid_, curves, next);
+  if (!s.ok()) return s;
+  s = solver_->setConstraints(next);
+  if (!s.ok()) return s;
+  constraints_ = std::move(next);
+  fieldValid_ = false;
+  return Status::Ok();
+}
+
+Status HairEngine::solve() {
+  if (!hasGrid_) return Status::Error(StatusCode::InvalidInput, "solve before setGrid");
+  Field T;
+  Status s = solver_->solve(T);
+  if (!s.ok()) return s;
+  field_ = std::move(T);
+  fieldF_ = toFloatField(field_);
+  fieldValid_ = true;
+  return Status::Ok();
+}
+
+Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
+  if (!hasGrid_) return Status::Error(StatusCode::InvalidInput, "grow before setGrid");
+  if (!fieldValid_)
+    return Status::Error(StatusCode::InvalidInput, "grow: curves changed, solve first");
+  const auto t0 = Clock::now();
+  const bool same = rootsValid_ && rootKey_.thetaStepDeg == rp.thetaStepDeg &&
+                    rootKey_.phiStepDeg == rp.phiStepDeg && rootKey_.jitter == rp.jitter &&
+                    rootKey_.seed == rp.seed && rootKey_.maxStrands == rp.maxStrands;
+  if (!same) {
+    rootsValid_ = false;
+    Status s = scalp_.sample(rp, roots_);
+    if (!s.ok()) return s;
+    rootKey_ = rp;
+    rootsValid_ = true;
+  }
+  Status s = growStrands(grid_, fieldF_, roots_, gp, strands_);
+  growMs_ = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+  return s;
+}
+
+SolveStats HairEngine::stats() const {
+  if (!solver_) return SolveStats{};
+  return solver_->stats();
+}
+
+}  // namespace hairsketch

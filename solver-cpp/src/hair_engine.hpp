@@ -1,0 +1,56 @@
+// The solver side of a session as one stateful object (used by the wasm binding):
+//   grid + solver by name -> scalp mesh -> curves -> constraints -> solve -> roots -> strands.
+// Roots are cached per (theta step, phi step, jitter, seed, maxStrands) and scalp mesh.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "constraints.hpp"
+#include "field_solver.hpp"
+#include "grid.hpp"
+#include "scalp_roots.hpp"
+#include "status.hpp"
+#include "strand_growth.hpp"
+#include "stream_constraints.hpp"
+
+namespace hairsketch {
+
+class HairEngine {
+ public:
+  // New grid and solver ("cg", or any name makeFieldSolver knows). Clears curves and field.
+  Status setGrid(const Grid& grid, double omega, const std::string& solverName);
+  Status setScalp(const float* positions, size_t vertexCount, const uint32_t* indices,
+                  size_t triangleCount, const uint8_t* scalp, const Eigen::Vector3d& center);
+  // Curves -> constraints -> solver (the solver diffs against its previous set).
+  Status setCurves(const CurveSetView& curves);
+  Status solve();
+  // Samples (or reuses) roots and grows strands in the last solved field.
+  Status grow(const RootParams& roots, const GrowthParams& growth);
+
+  const ConstraintSet& constraints() const { return constraints_; }
+  const Field& field() const { return field_; }
+  const Strands& strands() const { return strands_; }
+  const std::vector<Eigen::Vector3f>& roots() const { return roots_; }
+  SolveStats stats() const;
+  double growMs() const { return growMs_; }
+  const Grid& grid() const { return grid_; }
+
+ private:
+  Grid grid_;
+  bool hasGrid_ = false;
+  std::unique_ptr<FieldSolver> solver_;
+  ScalpSampler scalp_;
+  ConstraintSet constraints_;
+  Field field_;
+  bool fieldValid_ = false;
+  std::vector<float> fieldF_;
+  bool rootsValid_ = false;
+  RootParams rootKey_;
+  std::vector<Eigen::Vector3f> roots_;
+  Strands strands_;
+  double growMs_ = 0;
+};
+
+}  // namespace hairsketch

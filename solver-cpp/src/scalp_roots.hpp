@@ -1,0 +1,54 @@
+// Hair roots sampled on the scalp over spherical coordinates (SPEC S5.1).
+// Direction of (theta, phi) from the mesh center: (sin t sin p, cos t, sin t cos p)
+// (y up, +z the face's front, +x the head's left). Each ray takes the outermost hit on the head
+// mesh; when that triangle is scalp, the hit (pushed out along the normal) is a root.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+#include "status.hpp"
+
+namespace hairsketch {
+
+struct RootParams {
+  double thetaStepDeg = 2.0;  // sampling step of theta in [0, 180)
+  double phiStepDeg = 2.0;    // sampling step of phi in [0, 360)
+  double jitter = 0.5;        // random offset, fraction of a step (0..1)
+  uint32_t seed = 1;
+  int maxStrands = 0;  // 0 = no cap; else an even stride over the sampled roots
+};
+
+class ScalpSampler {
+ public:
+  // positions: #V x 3, indices: #T x 3, scalp: #T flags. Copies what it needs and bins the
+  // triangles by the spherical cap around their vertex directions.
+  Status build(const float* positions, size_t vertexCount, const uint32_t* indices,
+               size_t triangleCount, const uint8_t* scalp, const Eigen::Vector3d& center);
+  // Roots in deterministic order (theta rows, then phi), at most maxStrands of them.
+  Status sample(const RootParams& params, std::vector<Eigen::Vector3f>& roots) const;
+  // Outermost hit along the ray center + t * dir (t > 0). Returns false when nothing is hit.
+  bool castOutermost(const Eigen::Vector3d& dir, double& t, int& triangle) const;
+  bool built() const { return !tris_.empty(); }
+  size_t triangleCount() const { return tris_.size(); }
+
+ private:
+  struct Tri {
+    Eigen::Vector3d a, e1, e2;  // a, b - a, c - a, relative to the center
+    Eigen::Vector3d normal;     // unit, pointing away from the center
+    bool scalp = false;
+  };
+  int binOf(double theta, double phi) const;
+  std::vector<Tri> tris_;
+  Eigen::Vector3d center_ = Eigen::Vector3d::Zero();
+  double radius_ = 0;  // largest vertex distance from the center
+  int nTheta_ = 0, nPhi_ = 0;
+  std::vector<uint32_t> binStart_;  // CSR: bin b owns binTris_[binStart_[b] .. binStart_[b+1])
+  std::vector<uint32_t> binTris_;
+};
+
+// Direction of spherical coordinates (radians), as in S5.1.
+Eigen::Vector3d sphericalDirection(double theta, double phi);
+
+}  // namespace hairsketch

@@ -1,0 +1,130 @@
+#include "strand_growth.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hairsketch {
+
+std::vector<float> toFloatField(const Field& T) {
+  std::vector<float> v(size_t(T.rows()) * 3);
+  const double* src = T.data();  // row-major n x 3: already interleaved
+  for (size_t i = 0; i < v.size(); ++i) v[i] = float(src[i]);
+  return v;
+}
+
+namespace {
+
+// Grid-relative helper, precomputed once per growth call.
+struct Sampler {
+  const float* f;
+  int nx, ny, nz, sy, sz;
+  float ox, oy, oz, invStep;
+  float hx, hy, hz;  // upper corner of the volume, world units
+
+  bool inside(float x, float y, float z) const {
+    return x >= ox && y >= oy && z >= oz && x <= hx && y <= hy && z <= hz;
+  }
+  // Precondition: inside(x).
+  void at(float x, float y, float z, float out[3]) const {
+    const float u = (x - ox) * invStep, v = (y - oy) * invStep, w = (z - oz) * invStep;
+    int i = std::min(int(u), nx - 2), j = std::min(int(v), ny - 2), k = std::min(int(w), nz - 2);
+    i = std::max(i, 0);
+    j = std::max(j, 0);
+    k = std::max(k, 0);
+    const float a = u - i, b = v - j, c = w - k;
+    const float* p = f + 3 * (size_t(i) + size_t(j) * sy + size_t(k) * sz);
+    const size_t dx = 3, dy = 3 * size_t(sy), dz = 3 * size_t(sz);
+    for (int e = 0; e < 3; ++e) {
+      const float c00 = p[e] + a * (p[e + dx] - p[e]);
+      const float c10 = p[e + dy] + a * (p[e + dy + dx] - p[e + dy]);
+      const float c01 = p[e + dz] + a * (p[e + dz + dx] - p[e + dz]);
+      const float c11 = p[e + dz + dy] + a * (p[e + dz + dy + dx] - p[e + dz + dy]);
+      const float c0 = c00 + b * (c10 - c00), c1 = c01 + b * (c11 - c01);
+      out[e] = c0 + c * (c1 - c0);
+    }
+  }
+};
+
+Sampler makeSampler(const Grid& g, const float* field) {
+  const Eigen::Vector3d hi = g.maxCorner();
+  return Sampler{field,
+                 g.nx,
+                 g.ny,
+                 g.nz,
+                 g.nx,
+                 g.nx * g.ny,
+                 float(g.origin.x()),
+                 float(g.origin.y()),
+                 float(g.origin.z()),
+                 float(1.0 / g.step),
+                 float(hi.x()),
+                 float(hi.y()),
+                 float(hi.z())};
+}
+
+}  // namespace
+
+Eigen::Vector3f interpolateField(const Grid& g, const float* field, const Eigen::Vector3f& x) {
+  float v[3];
+  makeSampler(g, field).at(x.x(), x.y(), x.z(), v);
+  return {v[0], v[1], v[2]};
+}
+
+Status growStrands(const Grid& g, const std::vector<float>& field,
+                   const std::vector<Eigen::Vector3f>& roots, const GrowthParams& prm, Strands& out,
+                   size_t maxPoints) {
+  out.points.clear();
+  out.strandStart.assign(1, 0);
+  if (!g.valid()) return Status::Error(StatusCode::InvalidInput, "grow: no grid");
+  if (field.size() != size_t(g.size()) * 3)
+    return Status::Error(StatusCode::InvalidInput, "grow: no field for this grid (solve first)");
+  if (!(prm.stepFraction > 0) || !std::isfinite(prm.stepFraction))
+    return Status::Error(StatusCode::InvalidInput, "grow: stepFraction must be > 0");
+  if (!(prm.minMagnitude >= 0) || !std::isfinite(prm.minMagnitude))
+    return Status::Error(StatusCode::InvalidInput, "grow: minMagnitude must be >= 0");
+  if (!(prm.maxLength >= 0) || std::isnan(prm.maxLength))
+    return Status::Error(StatusCode::InvalidInput, "grow: maxLength must be >= 0");
+  if (prm.maxSegments < 0)
+    return Status::Error(StatusCode::InvalidInput, "grow: maxSegments must be >= 0");
+  const Sampler s = makeSampler(g, field.data());
+  const float l = float(prm.stepFraction * g.step);
+  const float minMag2 = float(prm.minMagnitude * prm.minMagnitude);
+  const double maxLen = prm.maxLength;
+  out.strandStart.reserve(roots.size() + 1);
+  out.points.reserve(std::min(maxPoints, roots.size() * 32) * 3);
+  for (const Eigen::Vector3f& r : roots) {
+    float x = r.x(), y = r.y(), z = r.z();
+    out.points.push_back(x);
+    out.points.push_back(y);
+    out.points.push_back(z);
+    double length = 0;
+    if (s.inside(x, y, z)) {
+      for (int seg = 0; seg < prm.maxSegments; ++seg) {
+        float v[3];
+        s.at(x, y, z, v);
+        const float m2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+        if (!(m2 >= minMag2)) break;  // weak field (or NaN)
+        const float nx = x + l * v[0], ny = y + l * v[1], nz = z + l * v[2];
+        if (!s.inside(nx, ny, nz)) break;  // leaving the bounding volume
+        const double segLen = double(l) * std::sqrt(double(m2));
+        if (length + segLen > maxLen) break;
+        length += segLen;
+        x = nx;
+        y = ny;
+        z = nz;
+        out.points.push_back(x);
+        out.points.push_back(y);
+        out.points.push_back(z);
+      }
+    }
+    if (out.points.size() / 3 > maxPoints) {
+      out.points.clear();
+      out.strandStart.assign(1, 0);
+      return Status::Error(StatusCode::OutOfMemory, "grow: too many strand points");
+    }
+    out.strandStart.push_back(uint32_t(out.points.size() / 3));
+  }
+  return Status::Ok();
+}
+
+}  // namespace hairsketch

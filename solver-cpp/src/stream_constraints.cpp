@@ -1,0 +1,87 @@
+#include "stream_constraints.hpp"
+
+#include <cmath>
+#include <string>
+
+namespace hairsketch {
+
+namespace {
+
+// Claims the 8 corners of the cell containing world point m, if m is inside the volume.
+void claimCell(const Grid& g, const Eigen::Vector3d& m, const Eigen::Vector3d& target,
+               std::vector<Constraint>& out) {
+  if (!g.insideVolume(m)) return;
+  const Eigen::Vector3d u = (m - g.origin) / g.step;
+  const int dims[3] = {g.nx, g.ny, g.nz};
+  int c[3];
+  for (int a = 0; a < 3; ++a) {
+    // A point on the upper face belongs to the last cell.
+    c[a] = std::min(int(std::floor(u[a])), dims[a] - 2);
+    c[a] = std::max(c[a], 0);
+  }
+  for (int dk = 0; dk < 2; ++dk)
+    for (int dj = 0; dj < 2; ++dj)
+      for (int di = 0; di < 2; ++di)
+        out.push_back({g.index(c[0] + di, c[1] + dj, c[2] + dk), target});
+}
+
+}  // namespace
+
+void appendStreamConstraints(const Grid& g, const double* pts, size_t count, bool extend,
+                             std::vector<Constraint>& out) {
+  Eigen::Vector3d lastTangent = Eigen::Vector3d::Zero();
+  double lastLength = 0;
+  for (size_t s = 0; s + 1 < count; ++s) {
+    const Eigen::Vector3d a(pts[3 * s], pts[3 * s + 1], pts[3 * s + 2]);
+    const Eigen::Vector3d b(pts[3 * s + 3], pts[3 * s + 4], pts[3 * s + 5]);
+    const double len = (b - a).norm();
+    if (!(len > 0)) continue;
+    const Eigen::Vector3d t = (b - a) / len;
+    claimCell(g, 0.5 * (a + b), t, out);
+    lastTangent = t;
+    lastLength = len;
+  }
+  if (!extend || lastLength == 0) return;
+  const Eigen::Vector3d end(pts[3 * (count - 1)], pts[3 * (count - 1) + 1],
+                            pts[3 * (count - 1) + 2]);
+  const int K = kStreamExtensionSegments;
+  for (int k = 1; k <= K; ++k) {
+    const double m = 1.0 - double(k) / K;
+    const Eigen::Vector3d mid = end + (k - 0.5) * lastLength * lastTangent;
+    claimCell(g, mid, m * lastTangent, out);
+  }
+}
+
+Status curvesToConstraints(const Grid& g, const CurveSetView& cs, ConstraintSet& out) {
+  out.clear();
+  if (cs.curveCount == 0) return Status::Ok();
+  if (!cs.curveStart || !cs.kinds || !cs.extend || (cs.pointCount > 0 && !cs.points))
+    return Status::Error(StatusCode::InvalidInput, "curves: missing array");
+  if (cs.curveStart[0] != 0 || cs.curveStart[cs.curveCount] != cs.pointCount)
+    return Status::Error(StatusCode::InvalidInput,
+                         "curves: curveStart must start at 0 and end at the point count");
+  for (size_t c = 0; c < cs.curveCount; ++c)
+    if (cs.curveStart[c + 1] < cs.curveStart[c])
+      return Status::Error(StatusCode::InvalidInput, "curves: curveStart is not non-decreasing");
+  for (size_t i = 0; i < 3 * cs.pointCount; ++i)
+    if (!std::isfinite(cs.points[i]))
+      return Status::Error(StatusCode::InvalidInput,
+                           "curves: point " + std::to_string(i / 3) + " is not finite");
+  std::vector<Constraint> raw;
+  for (size_t c = 0; c < cs.curveCount; ++c) {
+    const size_t begin = cs.curveStart[c], end = cs.curveStart[c + 1];
+    switch (cs.kinds[c]) {
+      case uint8_t(CurveKindCode::Stream):
+        appendStreamConstraints(g, cs.points + 3 * begin, end - begin, cs.extend[c] != 0, raw);
+        break;
+      default:
+        return Status::Error(StatusCode::InvalidInput, "curves: curve " + std::to_string(c) +
+                                                           " has unknown kind " +
+                                                           std::to_string(int(cs.kinds[c])));
+    }
+  }
+  out = normalizeConstraints(std::move(raw));
+  return Status::Ok();
+}
+
+}  // namespace hairsketch
