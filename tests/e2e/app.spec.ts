@@ -42,19 +42,25 @@ function watchConsole(page: Page): string[] {
 
 /** Drags the mouse from the scalp point (θ0, φ0) along a screen path, with real events. */
 async function strokeFromScalp(page: Page, theta: number, phi: number, dx: number, dy: number) {
-  const start = await page.evaluate(([t, p]) => window.hairsketch.scalpToScreen(t, p), [theta, phi]);
+  const start = await page.evaluate(
+    ([t, p]) => window.hairsketch.scalpToScreen(t, p),
+    [theta, phi],
+  );
   expect(start, `scalp point (${theta}, ${phi}) must be visible`).not.toBeNull();
   if (!start) return;
   await page.mouse.move(start.x, start.y);
   await page.mouse.down();
   const n = 24;
-  for (let i = 1; i <= n; i++) await page.mouse.move(start.x + (dx * i) / n, start.y + (dy * i) / n);
+  for (let i = 1; i <= n; i++)
+    await page.mouse.move(start.x + (dx * i) / n, start.y + (dy * i) / n);
   await page.mouse.up();
 }
 
 const hairHash = (page: Page) => page.evaluate(() => window.hairsketch.hairHash());
 
-test('loads to ready with hair and a non-blank canvas, without console errors', async ({ page }) => {
+test('loads to ready with hair and a non-blank canvas, without console errors', async ({
+  page,
+}) => {
   const errors = watchConsole(page);
   await page.goto(SCENE);
   const s = await settled(page);
@@ -69,16 +75,21 @@ test('loads to ready with hair and a non-blank canvas, without console errors', 
     ctx.drawImage(c, 0, 0, probe.width, probe.height);
     const data = ctx.getImageData(0, 0, probe.width, probe.height).data;
     const set = new Set<number>();
-    for (let i = 0; i < data.length; i += 4) set.add((data[i] << 16) | (data[i + 1] << 8) | data[i + 2]);
+    for (let i = 0; i < data.length; i += 4)
+      set.add((data[i] << 16) | (data[i + 1] << 8) | data[i + 2]);
     return set.size;
   });
   expect(colours).toBeGreaterThan(50);
-  const session = (await page.evaluate(() => window.hairsketch.session())) as { curves: { type: string }[] };
+  const session = (await page.evaluate(() => window.hairsketch.session())) as {
+    curves: { type: string }[];
+  };
   expect(session.curves.every((c) => c.type === 'stream')).toBe(true);
   expect(errors).toEqual([]);
 });
 
-test('a stroke from the scalp adds a curve and changes the hair; undo and redo restore', async ({ page }) => {
+test('a stroke from the scalp adds a curve and changes the hair; undo and redo restore', async ({
+  page,
+}) => {
   const errors = watchConsole(page);
   await page.goto(SCENE);
   const before = await settled(page);
@@ -138,14 +149,18 @@ test('a stroke that does not start on the scalp creates nothing and says why', a
   expect(after.state).toBe('ready');
 });
 
-test('a selected curve can be deleted, and a crashed worker is restarted with the session', async ({ page }) => {
+test('a selected curve can be deleted, and a crashed worker is restarted with the session', async ({
+  page,
+}) => {
   const errors = watchConsole(page);
   await page.goto(SCENE);
   const s0 = await settled(page);
   await page.getByRole('button', { name: 'Select' }).click();
   // Click on the middle of a visible curve.
   const target = await page.evaluate(() => {
-    const s = window.hairsketch.session() as { curves: { id: string; points: [number, number, number][] }[] };
+    const s = window.hairsketch.session() as {
+      curves: { id: string; points: [number, number, number][] }[];
+    };
     for (const c of s.curves) {
       const p = window.hairsketch.worldToScreen(c.points[Math.floor(c.points.length / 2)]);
       if (p) return { id: c.id, ...p };

@@ -1,7 +1,7 @@
 // SPEC S4.2 against a sphere "scalp" (the whole sphere is scalp here), ray-traced by hand.
 import { describe, expect, it } from 'vitest';
-import { liftStroke, type StrokeSample } from '../../web/tools/depthRule';
 import { dot, normalize, sub, type Vec3 } from '../../web/model/vec3';
+import { liftStroke, type StrokeSample } from '../../web/tools/depthRule';
 
 const R = 1;
 const eye: Vec3 = [0, 0, 5];

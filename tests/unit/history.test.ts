@@ -1,6 +1,12 @@
 import { describe, expect, it } from 'vitest';
 import { History } from '../../web/model/history';
-import { addCurve, deleteCurve, emptySession, nextCurveId, type StyleCurve } from '../../web/model/session';
+import {
+  addCurve,
+  deleteCurve,
+  emptySession,
+  nextCurveId,
+  type StyleCurve,
+} from '../../web/model/session';
 
 const curve = (id: string): StyleCurve => ({
   id,

@@ -5,13 +5,35 @@ import { gridForPreset, gridPointCount } from '../../web/model/grid';
 import type { StyleCurve } from '../../web/model/session';
 import { CurveKind, resultTransferables, strandCount } from '../../web/solver/protocol';
 
-const vp = { position: [0, 0, 5] as [number, number, number], target: [0, 0, 0] as [number, number, number] };
+const vp = {
+  position: [0, 0, 5] as [number, number, number],
+  target: [0, 0, 0] as [number, number, number],
+};
 
 describe('protocol layouts', () => {
   it('packs curves as points[3 * point + axis] with curveStart offsets', () => {
     const curves: StyleCurve[] = [
-      { id: 'a', type: 'stream', points: [[1, 2, 3], [4, 5, 6]], extend: true, viewpoint: vp },
-      { id: 'b', type: 'stream', points: [[7, 8, 9], [10, 11, 12], [13, 14, 15]], extend: false, viewpoint: vp },
+      {
+        id: 'a',
+        type: 'stream',
+        points: [
+          [1, 2, 3],
+          [4, 5, 6],
+        ],
+        extend: true,
+        viewpoint: vp,
+      },
+      {
+        id: 'b',
+        type: 'stream',
+        points: [
+          [7, 8, 9],
+          [10, 11, 12],
+          [13, 14, 15],
+        ],
+        extend: false,
+        viewpoint: vp,
+      },
     ];
     const set = packCurves(curves);
     expect(Array.from(set.curveStart)).toEqual([0, 2, 5]);
@@ -33,7 +55,17 @@ describe('protocol layouts', () => {
       strands: { points: new Float32Array(6), strandStart: new Uint32Array([0, 2]) },
       constraints: { index: new Int32Array(1), target: new Float32Array(3) },
       field: { vectors: new Float32Array(3) },
-      stats: { method: 'cg', iterations: 1, constraints: 1, added: 1, removed: 0, changed: 0, setupMs: 0, solveMs: 0, growMs: 0 },
+      stats: {
+        method: 'cg',
+        iterations: 1,
+        constraints: 1,
+        added: 1,
+        removed: 0,
+        changed: 0,
+        setupMs: 0,
+        solveMs: 0,
+        growMs: 0,
+      },
     };
     const t = resultTransferables(msg);
     expect(t).toHaveLength(5);
@@ -42,7 +74,10 @@ describe('protocol layouts', () => {
   });
 
   it('grid presets hold about 25K and 50K points inside the bounding volume', () => {
-    for (const [preset, target] of [['25k', 25_000], ['50k', 50_000]] as const) {
+    for (const [preset, target] of [
+      ['25k', 25_000],
+      ['50k', 50_000],
+    ] as const) {
       const g = gridForPreset(preset);
       const n = gridPointCount(g);
       expect(Math.abs(n - target) / target).toBeLessThan(0.12);

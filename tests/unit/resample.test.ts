@@ -25,7 +25,9 @@ describe('resamplePolyline', () => {
       ],
       0.3,
     );
-    expect(out.map((p) => p[0])).toEqual([0, 0.3, 0.6, 0.8999999999999999].map((x) => expect.closeTo(x, 12)));
+    expect(out.map((p) => p[0])).toEqual(
+      [0, 0.3, 0.6, 0.8999999999999999].map((x) => expect.closeTo(x, 12)),
+    );
     expect(out).toHaveLength(4); // 1.0 - 0.9 < 0.3: the tail is dropped
   });
 

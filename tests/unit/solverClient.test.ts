@@ -4,7 +4,7 @@ import { describe, expect, it } from 'vitest';
 import { packCurves } from '../../web/model/curveSet';
 import { DEFAULT_GROWTH, type StyleCurve } from '../../web/model/session';
 import type { FromWorker, ToWorker } from '../../web/solver/protocol';
-import { type InitMessage, SolverClient, type SolveResult } from '../../web/solver/solverClient';
+import { type InitMessage, type SolveResult, SolverClient } from '../../web/solver/solverClient';
 
 class FakeWorker {
   sent: ToWorker[] = [];
@@ -33,21 +33,29 @@ const init: InitMessage = {
   grid: { dims: [2, 2, 2], origin: [0, 0, 0], step: 1 },
   omega: 100,
   solver: 'cg',
-  scalp: { positions: new Float32Array(), indices: new Uint32Array(), scalp: new Uint8Array(), center: [0, 0, 0] },
+  scalp: {
+    positions: new Float32Array(),
+    indices: new Uint32Array(),
+    scalp: new Uint8Array(),
+    center: [0, 0, 0],
+  },
 };
 
 const curves = (n: number) =>
   packCurves(
-    Array.from({ length: n }, (_, i): StyleCurve => ({
-      id: `c${i}`,
-      type: 'stream',
-      points: [
-        [i, 0, 0],
-        [i, 1, 0],
-      ],
-      extend: true,
-      viewpoint: { position: [0, 0, 5], target: [0, 0, 0] },
-    })),
+    Array.from(
+      { length: n },
+      (_, i): StyleCurve => ({
+        id: `c${i}`,
+        type: 'stream',
+        points: [
+          [i, 0, 0],
+          [i, 1, 0],
+        ],
+        extend: true,
+        viewpoint: { position: [0, 0, 5], target: [0, 0, 0] },
+      }),
+    ),
   );
 
 const result = (id: number): SolveResult => ({
@@ -56,7 +64,17 @@ const result = (id: number): SolveResult => ({
   strands: { points: new Float32Array([id, 0, 0]), strandStart: new Uint32Array([0, 1]) },
   constraints: { index: new Int32Array(), target: new Float32Array() },
   field: null,
-  stats: { method: 'cg', iterations: 0, constraints: 0, added: 0, removed: 0, changed: 0, setupMs: 0, solveMs: 0, growMs: 0 },
+  stats: {
+    method: 'cg',
+    iterations: 0,
+    constraints: 0,
+    added: 0,
+    removed: 0,
+    changed: 0,
+    setupMs: 0,
+    solveMs: 0,
+    growMs: 0,
+  },
 });
 
 function setup() {

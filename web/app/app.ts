@@ -15,7 +15,7 @@ import {
   type SessionState,
 } from '../model/session';
 import { sub, type Vec3 } from '../model/vec3';
-import { SolverClient, type SolveResult } from '../solver/solverClient';
+import { type SolveResult, SolverClient } from '../solver/solverClient';
 import { SelectTool } from '../tools/selectTool';
 import { StreamCurveTool } from '../tools/streamCurveTool';
 import type { Tool } from '../tools/tool';
@@ -113,7 +113,11 @@ export class App {
         onBusy: (phase) =>
           this.status.set(
             phase === 'loading' ? 'loading' : 'solving',
-            phase === 'loading' ? 'Loading the solver…' : phase === 'growing' ? 'Growing hair…' : 'Solving the field…',
+            phase === 'loading'
+              ? 'Loading the solver…'
+              : phase === 'growing'
+                ? 'Growing hair…'
+                : 'Solving the field…',
           ),
         onResult: (r, latest) => this.showResult(r, latest),
         onError: (m) => this.status.set('error', `Error: ${m}`),
@@ -132,7 +136,9 @@ export class App {
     const s = this.history.current;
     const id = nextCurveId(s);
     const { position, target } = this.viewer.cameraState();
-    this.history.push(addCurve(s, { id, type: 'stream', points, extend: true, viewpoint: { position, target } }));
+    this.history.push(
+      addCurve(s, { id, type: 'stream', points, extend: true, viewpoint: { position, target } }),
+    );
     this.selectedId = id;
     this.notify(`Added stream curve ${id} (${points.length - 1} segments).`);
     this.syncSession();
@@ -175,11 +181,21 @@ export class App {
     const c = this.viewer.controls;
     // Drawing takes the primary button; the camera orbits with the right button then.
     if (name === 'stream') {
-      c.mouseButtons = { LEFT: -1 as THREE.MOUSE, MIDDLE: THREE.MOUSE.PAN, RIGHT: THREE.MOUSE.ROTATE };
+      c.mouseButtons = {
+        LEFT: -1 as THREE.MOUSE,
+        MIDDLE: THREE.MOUSE.PAN,
+        RIGHT: THREE.MOUSE.ROTATE,
+      };
       c.touches = { ONE: -1 as THREE.TOUCH, TWO: THREE.TOUCH.DOLLY_ROTATE };
-      this.status.hint('Drag from the scalp to draw a stream curve · right-drag orbits · wheel zooms · middle-drag pans');
+      this.status.hint(
+        'Drag from the scalp to draw a stream curve · right-drag orbits · wheel zooms · middle-drag pans',
+      );
     } else {
-      c.mouseButtons = { LEFT: THREE.MOUSE.ROTATE, MIDDLE: THREE.MOUSE.DOLLY, RIGHT: THREE.MOUSE.PAN };
+      c.mouseButtons = {
+        LEFT: THREE.MOUSE.ROTATE,
+        MIDDLE: THREE.MOUSE.DOLLY,
+        RIGHT: THREE.MOUSE.PAN,
+      };
       c.touches = { ONE: THREE.TOUCH.ROTATE, TWO: THREE.TOUCH.DOLLY_PAN };
       this.status.hint('Click a curve to select it · drag orbits · wheel zooms · right-drag pans');
     }
@@ -220,8 +236,9 @@ export class App {
     if (this.shownStrands !== r.strands) {
       this.shownStrands = r.strands;
       const geometry = buildStrandGeometry(r.strands.points, r.strands.strandStart);
-      this.strandMaterial = createStrandMaterial({ color: this.history.current.hairColor });
-      this.viewer.setHair(new THREE.LineSegments(geometry, this.strandMaterial));
+      const material = createStrandMaterial({ color: this.history.current.hairColor });
+      this.strandMaterial = material;
+      this.viewer.setHair(new THREE.LineSegments(geometry, material));
       this.status.counts(r.strands.strandStart.length - 1, this.history.current.curves.length);
       this.status.bumpRevision();
     }
@@ -313,7 +330,7 @@ export class App {
   }
 
   get busy(): boolean {
-    return this.client.pending || this.tool.state !== 'idle' && this.tool.state !== 'pressed';
+    return this.client.pending || (this.tool.state !== 'idle' && this.tool.state !== 'pressed');
   }
 
   displayedStrands(): SolveResult['strands'] | null {

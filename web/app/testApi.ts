@@ -22,7 +22,7 @@ export function installTestApi(app: App): void {
   window.hairsketch = {
     scalpToScreen(thetaDeg, phiDeg) {
       const hit = app.picker.scalpPoint(thetaDeg, phiDeg);
-      if (!hit || !hit.scalp || !app.visible(hit.point)) return null;
+      if (!hit?.scalp || !app.visible(hit.point)) return null;
       return app.viewer.worldToScreen(hit.point);
     },
     worldToScreen: (p) => app.viewer.worldToScreen(p),

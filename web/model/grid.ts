@@ -16,7 +16,8 @@ export function isGridPreset(s: string): s is GridPreset {
 export function gridForPreset(preset: GridPreset): GridSpec {
   const target = GRID_PRESETS[preset];
   const ext = [0, 1, 2].map((a) => BOX_MAX[a] - BOX_MIN[a]);
-  const dimsFor = (d: number) => ext.map((e) => Math.floor(e / d + 1e-9) + 1) as [number, number, number];
+  const dimsFor = (d: number) =>
+    ext.map((e) => Math.floor(e / d + 1e-9) + 1) as [number, number, number];
   let d = Math.cbrt((ext[0] * ext[1] * ext[2]) / target);
   let best = d;
   let bestErr = Number.POSITIVE_INFINITY;

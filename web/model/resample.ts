@@ -1,5 +1,5 @@
 // Stroke resampling at a fixed world-space step (SPEC S4: segments of length d).
-import { type Vec3, distance, dot, isFiniteVec, sub } from './vec3';
+import { distance, dot, isFiniteVec, sub, type Vec3 } from './vec3';
 
 /**
  * Walks the polyline and emits points whose consecutive distance is exactly `step` (chords, not

@@ -39,7 +39,10 @@ export const DEFAULT_GROWTH: GrowthParams = {
   maxStrands: 0,
 };
 
-export function emptySession(grid: GridPreset, growth: GrowthParams = DEFAULT_GROWTH): SessionState {
+export function emptySession(
+  grid: GridPreset,
+  growth: GrowthParams = DEFAULT_GROWTH,
+): SessionState {
   return { version: 1, head: 'builtin', grid, curves: [], growth, hairColor: '#5a3825' };
 }
 

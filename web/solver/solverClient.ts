@@ -1,8 +1,9 @@
 // The app's side of the solver worker: one solve in flight at a time, the newest request
 // supersedes any waiting one, results are cached by content (undo is instant and exact), and a
 // worker that dies is restarted and sent the session again.
-import type { CurveSet, FromWorker, GrowthParams, ToWorker } from './protocol';
+
 import { contentKey } from '../model/curveSet';
+import type { CurveSet, FromWorker, GrowthParams, ToWorker } from './protocol';
 
 export type InitMessage = Extract<ToWorker, { type: 'init' }>;
 export type SolveResult = Extract<FromWorker, { type: 'result' }>;
@@ -139,7 +140,9 @@ export class SolverClient {
         if (!this.pending) this.events.onIdle();
         return;
       case 'progress':
-        this.events.onBusy(msg.phase === 'constraints' ? 'solving' : msg.phase === 'solve' ? 'solving' : 'growing');
+        this.events.onBusy(
+          msg.phase === 'constraints' ? 'solving' : msg.phase === 'solve' ? 'solving' : 'growing',
+        );
         return;
       case 'result': {
         const req = this.inFlight;

@@ -1,7 +1,7 @@
 // The solver Web Worker: loads the wasm engine and answers protocol messages.
 import wasmUrl from '../generated/hairsolver.wasm?url';
-import { loadSolverEngine } from './wasmEngine';
 import { type FromWorker, resultTransferables, type ToWorker } from './protocol';
+import { loadSolverEngine } from './wasmEngine';
 import { handleMessage, type WorkerState } from './workerLogic';
 
 const scope = self as unknown as {

@@ -1,7 +1,7 @@
 // SPEC S4.2: lifting a screen stroke onto the head. The first point takes the depth of its scalp
 // hit; each next point takes the scalp depth while over the scalp, else the depth of the last
 // scalp point. "Depth" is the distance along the camera's viewing direction.
-import { type Vec3, add, dot, scale, sub } from '../model/vec3';
+import { add, dot, scale, sub, type Vec3 } from '../model/vec3';
 
 export interface StrokeSample {
   origin: Vec3; // ray origin (camera position for a perspective camera)
@@ -13,7 +13,8 @@ export type LiftResult = { ok: true; points: Vec3[] } | { ok: false; reason: 'no
 
 /** `forward` is the unit viewing direction of the camera. */
 export function liftStroke(samples: readonly StrokeSample[], eye: Vec3, forward: Vec3): LiftResult {
-  if (samples.length === 0 || samples[0].scalpHit === null) return { ok: false, reason: 'not-on-scalp' };
+  if (samples.length === 0 || samples[0].scalpHit === null)
+    return { ok: false, reason: 'not-on-scalp' };
   const points: Vec3[] = [];
   let depth = 0;
   for (const s of samples) {

@@ -32,7 +32,9 @@ export function buildToolbar(root: HTMLElement, actions: ToolbarActions): Toolba
   const stream = button('Stream curve', 'Draw a stream curve starting on the scalp (S)', () =>
     actions.tool('stream'),
   );
-  const select = button('Select', 'Select a curve; drag to orbit (V)', () => actions.tool('select'));
+  const select = button('Select', 'Select a curve; drag to orbit (V)', () =>
+    actions.tool('select'),
+  );
   const undo = button('Undo', 'Undo (Ctrl+Z)', actions.undo);
   const redo = button('Redo', 'Redo (Ctrl+Shift+Z)', actions.redo);
   const del = button('Delete', 'Delete the selected curve (Delete)', actions.deleteSelected);
@@ -46,7 +48,8 @@ export function buildToolbar(root: HTMLElement, actions: ToolbarActions): Toolba
   const tools: Record<string, HTMLButtonElement> = { stream, select };
   return {
     setTool(name) {
-      for (const [n, b] of Object.entries(tools)) b.setAttribute('aria-pressed', String(n === name));
+      for (const [n, b] of Object.entries(tools))
+        b.setAttribute('aria-pressed', String(n === name));
     },
     setEnabled(s) {
       undo.disabled = !s.undo;

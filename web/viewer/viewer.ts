@@ -24,7 +24,11 @@ export class Viewer {
   onRendered: (() => void) | null = null;
 
   constructor(readonly canvas: HTMLCanvasElement) {
-    this.renderer = new THREE.WebGLRenderer({ canvas, antialias: true, preserveDrawingBuffer: true });
+    this.renderer = new THREE.WebGLRenderer({
+      canvas,
+      antialias: true,
+      preserveDrawingBuffer: true,
+    });
     this.renderer.setPixelRatio(Math.min(window.devicePixelRatio || 1, 2));
     this.renderer.setClearColor(0xe9edf2, 1);
     this.camera = new THREE.PerspectiveCamera(35, 1, 0.05, 100);
@@ -171,7 +175,9 @@ export class Viewer {
 
 function polyline(points: readonly Vec3[], color: number): THREE.Line {
   const arr = new Float32Array(points.length * 3);
-  points.forEach((p, i) => arr.set(p, 3 * i));
+  points.forEach((p, i) => {
+    arr.set(p, 3 * i);
+  });
   const g = new THREE.BufferGeometry();
   g.setAttribute('position', new THREE.BufferAttribute(arr, 3));
   const m = new THREE.LineBasicMaterial({ color, depthTest: false, transparent: true });
