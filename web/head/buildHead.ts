@@ -110,23 +110,30 @@ export function isClosedSphere(mesh: TriangleMesh): boolean {
   const { positions, indices } = mesh;
   const vertices = positions.length / 3;
   const triangles = indices.length / 3;
-  // directed edge a→b must appear once, and b→a once
-  const directed = new Map<number, number>();
+  // outgoing directed edges per vertex, compressed rows: targets[first[a] .. first[a + 1])
+  const first = new Uint32Array(vertices + 1);
+  for (let t = 0; t < indices.length; t++) first[indices[t] + 1]++;
+  for (let v = 0; v < vertices; v++) first[v + 1] += first[v];
+  const fill = first.slice(0, vertices);
+  const targets = new Uint32Array(indices.length);
   for (let t = 0; t < indices.length; t += 3) {
     for (let e = 0; e < 3; e++) {
       const a = indices[t + e];
       const b = indices[t + ((e + 1) % 3)];
       if (a === b) return false;
-      const key = a * vertices + b;
-      if (directed.has(key)) return false;
-      directed.set(key, 1);
+      targets[fill[a]++] = b;
     }
   }
-  for (const key of directed.keys()) {
-    const a = Math.floor(key / vertices);
-    const b = key - a * vertices;
-    if (!directed.has(b * vertices + a)) return false;
+  // each directed edge a→b once, and its twin b→a present
+  for (let a = 0; a < vertices; a++) {
+    for (let i = first[a]; i < first[a + 1]; i++) {
+      const b = targets[i];
+      for (let j = i + 1; j < first[a + 1]; j++) if (targets[j] === b) return false;
+      let twin = false;
+      for (let j = first[b]; j < first[b + 1] && !twin; j++) twin = targets[j] === a;
+      if (!twin) return false;
+    }
   }
-  const edges = directed.size / 2;
+  const edges = indices.length / 2;
   return vertices - edges + triangles === 2;
 }

@@ -85,8 +85,8 @@ function skull(x: number, y: number, z: number, ax: number): number {
   // cranium: top at y = 1.0, half-width 0.75, half-length 0.95
   let d = sdEllipsoid(x, y, z + 0.05, 0.75, 1.0, 0.95);
   // upper face (cheekbone level) and jaw
-  d = smin(d, sdEllipsoid(x, y + 0.38, z - 0.28, 0.66, 0.6, 0.68), 0.25);
-  d = smin(d, sdEllipsoid(x, y + 0.85, z - 0.3, 0.5, 0.5, 0.62), 0.3);
+  d = smin(d, sdEllipsoid(x, y + 0.38, z - 0.27, 0.7, 0.6, 0.68), 0.25);
+  d = smin(d, sdEllipsoid(x, y + 0.82, z - 0.27, 0.57, 0.5, 0.64), 0.3);
   // chin
   d = smin(d, sdEllipsoid(x, y + 1.1, z - 0.62, 0.25, 0.21, 0.24), 0.2);
   // cheeks
@@ -97,14 +97,14 @@ function skull(x: number, y: number, z: number, ax: number): number {
 }
 
 function nose(x: number, y: number, z: number, ax: number): number {
-  let d = sdTaperedCapsule(x, y, z, 0, -0.08, 0.9, 0, -0.5, 1.14, 0.06, 0.1);
-  d = smin(d, sdEllipsoid(ax - 0.09, y + 0.53, z - 1.0, 0.09, 0.075, 0.09), 0.07);
+  let d = sdTaperedCapsule(x, y, z, 0, -0.1, 0.93, 0, -0.47, 1.2, 0.065, 0.095);
+  d = smin(d, sdEllipsoid(ax - 0.1, y + 0.5, z - 1.02, 0.095, 0.08, 0.1), 0.1);
   return d;
 }
 
 function lips(x: number, y: number, z: number): number {
-  let d = sdEllipsoid(x, y + 0.76, z - 0.95, 0.22, 0.075, 0.1);
-  d = smin(d, sdEllipsoid(x, y + 0.9, z - 0.92, 0.19, 0.075, 0.1), 0.04);
+  let d = sdEllipsoid(x, y + 0.775, z - 0.925, 0.2, 0.055, 0.085);
+  d = smin(d, sdEllipsoid(x, y + 0.885, z - 0.9, 0.17, 0.06, 0.085), 0.04);
   return d;
 }
 
@@ -125,9 +125,9 @@ function ear(y: number, z: number, ax: number): number {
 
 function neck(x: number, y: number, z: number): number {
   // elliptic cylinder, slightly flaring toward the bottom, capped flat at NECK_BOTTOM
-  const flare = 1 + 0.12 * Math.min(1, Math.max(0, (-1.9 - y) / 0.7));
-  const rx = 0.47 * flare;
-  const rz = 0.5 * flare;
+  const u = Math.min(1, Math.max(0, (-1.85 - y) / 0.75));
+  const rx = 0.52 * (1 + 0.22 * u * u);
+  const rz = 0.54 * (1 + 0.08 * u * u);
   const qx = x / rx;
   const qz = (z + 0.22) / rz;
   const side = (Math.sqrt(qx * qx + qz * qz) - 1) * Math.min(rx, rz);
@@ -146,15 +146,19 @@ export function headSdf(x: number, y: number, z: number): number {
   const ey = y - EYE_Y;
   if (z > 0.3 && ey > -0.5 && ey < 0.5 && ex < 0.5) {
     d = smax(d, -sdEllipsoid(ex, ey - 0.01, z - 0.9, 0.19, 0.14, 0.2), 0.1);
-    const eye = Math.sqrt(ex * ex + ey * ey + (z - EYE_Z) * (z - EYE_Z)) - EYE_R;
-    d = smin(d, eye, 0.04);
+    const r = Math.sqrt(ex * ex + ey * ey + (z - EYE_Z) * (z - EYE_Z));
+    d = smin(d, r - EYE_R, 0.04);
+    // eyelids: shells slightly larger than the eyeball above and below the opening
+    const lid = r - EYE_R - 0.02;
+    d = smin(d, smax(lid, EYE_Y + 0.035 - y, 0.03), 0.02);
+    d = smin(d, smax(lid, y - EYE_Y + 0.07, 0.03), 0.02);
   }
   // nose
   if (z > 0.5 && y > -0.8 && y < 0.2 && ax < 0.4) d = smin(d, nose(x, y, z, ax), 0.1);
   // lips and mouth line
   if (z > 0.5 && y > -1.15 && y < -0.55 && ax < 0.5) {
     d = smin(d, lips(x, y, z), 0.06);
-    d = smax(d, -sdEllipsoid(x, y + 0.835, z - 1.06, 0.2, 0.018, 0.09), 0.025);
+    d = smax(d, -sdEllipsoid(x, y + 0.835, z - 1.0, 0.19, 0.016, 0.09), 0.025);
   }
   // ears
   if (ax > 0.4 && y > -0.75 && y < 0.25 && z < 0.4 && z > -0.6) d = smin(d, ear(y, z, ax), 0.1);
@@ -170,7 +174,7 @@ export function headPartAt(x: number, y: number, z: number): number {
   const ex = ax - EYE_X;
   const ey = y - EYE_Y;
   const ez = z - EYE_Z;
-  if (Math.sqrt(ex * ex + ey * ey + ez * ez) - EYE_R < 0.012) return HeadPart.eye;
+  if (Math.sqrt(ex * ex + ey * ey + ez * ez) - EYE_R < 0.008) return HeadPart.eye;
   if (z > 0.5 && y > -1.15 && y < -0.55 && ax < 0.5 && lips(x, y, z) < 0.01) return HeadPart.lips;
   return HeadPart.skin;
 }

@@ -47,22 +47,25 @@ export function sampleField(
   const coarse = sampleField(f, [cx, cy, cz], origin, step * C).values;
   const L = lipschitz;
   const far = L * step * (C * Math.sqrt(3) + 1);
+  const corners = new Float64Array(8);
   for (let K = 0; K < cz - 1; K++) {
     for (let J = 0; J < cy - 1; J++) {
       for (let I = 0; I < cx - 1; I++) {
         const b = I + cx * (J + cy * K);
-        const corners = [
-          coarse[b],
-          coarse[b + 1],
-          coarse[b + cx],
-          coarse[b + 1 + cx],
-          coarse[b + cx * cy],
-          coarse[b + 1 + cx * cy],
-          coarse[b + cx + cx * cy],
-          coarse[b + 1 + cx + cx * cy],
-        ];
-        const lo = Math.min(...corners);
-        const hi = Math.max(...corners);
+        corners[0] = coarse[b];
+        corners[1] = coarse[b + 1];
+        corners[2] = coarse[b + cx];
+        corners[3] = coarse[b + 1 + cx];
+        corners[4] = coarse[b + cx * cy];
+        corners[5] = coarse[b + 1 + cx * cy];
+        corners[6] = coarse[b + cx + cx * cy];
+        corners[7] = coarse[b + 1 + cx + cx * cy];
+        let lo = corners[0];
+        let hi = corners[0];
+        for (let c = 1; c < 8; c++) {
+          if (corners[c] < lo) lo = corners[c];
+          if (corners[c] > hi) hi = corners[c];
+        }
         const allFar = lo > far || hi < -far;
         // each fine point once: upper ends exclusive except in the last coarse cell
         const i1 = I === cx - 2 ? nx - 1 : Math.min(C * I + C - 1, nx - 1);
@@ -110,7 +113,7 @@ export function surfaceNets(field: SampledField): TriangleMesh {
   const sy = nx;
   const sz = nx * ny;
   const cellVertex = new Int32Array(nx * ny * nz).fill(-1); // indexed by the cell's min corner
-  let positions = new Float32Array(3 * 4096);
+  let positions = new Float32Array(3 * 65536);
   let vertexCount = 0;
   const corner = new Float64Array(8);
   const cornerOffset = [0, sx, sy, sx + sy, sz, sx + sz, sy + sz, sx + sy + sz];
@@ -155,36 +158,22 @@ export function surfaceNets(field: SampledField): TriangleMesh {
     }
   }
 
-  let indices = new Uint32Array(6 * 4096);
-  let triCount = 0;
-  const emit = (a: number, b: number, c: number, d: number): void => {
-    // quad a-b-c-d (counter-clockwise); split along the shorter diagonal
-    if (3 * triCount + 6 > indices.length) {
-      const grown = new Uint32Array(indices.length * 2);
-      grown.set(indices);
-      indices = grown;
+  const P = positions.subarray(0, 3 * vertexCount);
+  // count the quads first, so the index array is allocated once
+  let quads = 0;
+  for (let k = 1; k < nz - 1; k++) {
+    for (let j = 1; j < ny - 1; j++) {
+      for (let i = 1; i < nx - 1; i++) {
+        const p = i + nx * (j + ny * k);
+        const inside = values[p] < 0;
+        if (inside !== values[p + sx] < 0) quads++;
+        if (inside !== values[p + sy] < 0) quads++;
+        if (inside !== values[p + sz] < 0) quads++;
+      }
     }
-    const dac = dist2(positions, a, c);
-    const dbd = dist2(positions, b, d);
-    const o = 3 * triCount;
-    if (dac <= dbd) {
-      indices[o] = a;
-      indices[o + 1] = b;
-      indices[o + 2] = c;
-      indices[o + 3] = a;
-      indices[o + 4] = c;
-      indices[o + 5] = d;
-    } else {
-      indices[o] = a;
-      indices[o + 1] = b;
-      indices[o + 2] = d;
-      indices[o + 3] = b;
-      indices[o + 4] = c;
-      indices[o + 5] = d;
-    }
-    triCount += 2;
-  };
-
+  }
+  const indices = new Uint32Array(6 * quads);
+  let o = 0;
   for (let k = 1; k < nz - 1; k++) {
     for (let j = 1; j < ny - 1; j++) {
       for (let i = 1; i < nx - 1; i++) {
@@ -196,8 +185,7 @@ export function surfaceNets(field: SampledField): TriangleMesh {
           const b = cellVertex[p - sz];
           const c = cellVertex[p];
           const d = cellVertex[p - sy];
-          if (inside) emit(a, b, c, d);
-          else emit(d, c, b, a);
+          o = inside ? emitQuad(indices, o, P, a, b, c, d) : emitQuad(indices, o, P, d, c, b, a);
         }
         // y edge: cells (i-1..i, j, k-1..k); quad in the (z, x) plane, normal +y
         if (inside !== values[p + sy] < 0) {
@@ -205,8 +193,7 @@ export function surfaceNets(field: SampledField): TriangleMesh {
           const b = cellVertex[p - sx];
           const c = cellVertex[p];
           const d = cellVertex[p - sz];
-          if (inside) emit(a, b, c, d);
-          else emit(d, c, b, a);
+          o = inside ? emitQuad(indices, o, P, a, b, c, d) : emitQuad(indices, o, P, d, c, b, a);
         }
         // z edge: cells (i-1..i, j-1..j, k); quad in the (x, y) plane, normal +z
         if (inside !== values[p + sz] < 0) {
@@ -214,16 +201,41 @@ export function surfaceNets(field: SampledField): TriangleMesh {
           const b = cellVertex[p - sy];
           const c = cellVertex[p];
           const d = cellVertex[p - sx];
-          if (inside) emit(a, b, c, d);
-          else emit(d, c, b, a);
+          o = inside ? emitQuad(indices, o, P, a, b, c, d) : emitQuad(indices, o, P, d, c, b, a);
         }
       }
     }
   }
-  return {
-    positions: positions.slice(0, 3 * vertexCount),
-    indices: indices.slice(0, 3 * triCount),
-  };
+  return { positions: P, indices };
+}
+
+/** Write quad a-b-c-d (counter-clockwise) as two triangles split along the shorter diagonal at
+ *  indices[o…o+5]; returns o + 6. */
+function emitQuad(
+  indices: Uint32Array,
+  o: number,
+  P: Float32Array,
+  a: number,
+  b: number,
+  c: number,
+  d: number,
+): number {
+  if (dist2(P, a, c) <= dist2(P, b, d)) {
+    indices[o] = a;
+    indices[o + 1] = b;
+    indices[o + 2] = c;
+    indices[o + 3] = a;
+    indices[o + 4] = c;
+    indices[o + 5] = d;
+  } else {
+    indices[o] = a;
+    indices[o + 1] = b;
+    indices[o + 2] = d;
+    indices[o + 3] = b;
+    indices[o + 4] = c;
+    indices[o + 5] = d;
+  }
+  return o + 6;
 }
 
 function dist2(pos: Float32Array, a: number, b: number): number {
@@ -243,25 +255,15 @@ export function disambiguateFaces(values: Float32Array, dims: [number, number, n
   const sy = nx;
   const sz = nx * ny;
   let flips = 0;
-  const fix = (q0: number, q1: number, q2: number, q3: number): number => {
-    const s0 = values[q0] < 0;
-    if (s0 === values[q1] < 0 || s0 !== values[q2] < 0 || s0 === values[q3] < 0) return 0;
-    let m = q0;
-    if (Math.abs(values[q1]) < Math.abs(values[m])) m = q1;
-    if (Math.abs(values[q2]) < Math.abs(values[m])) m = q2;
-    if (Math.abs(values[q3]) < Math.abs(values[m])) m = q3;
-    values[m] = values[m] < 0 ? 1e-9 : -1e-9;
-    return 1;
-  };
   for (let pass = 0; pass < 8; pass++) {
     let changed = 0;
     for (let k = 0; k < nz; k++) {
       for (let j = 0; j < ny; j++) {
         for (let i = 0; i < nx; i++) {
           const p = i + nx * (j + ny * k);
-          if (i < nx - 1 && j < ny - 1) changed += fix(p, p + sx, p + sx + sy, p + sy);
-          if (j < ny - 1 && k < nz - 1) changed += fix(p, p + sy, p + sy + sz, p + sz);
-          if (k < nz - 1 && i < nx - 1) changed += fix(p, p + sz, p + sz + sx, p + sx);
+          if (i < nx - 1 && j < ny - 1) changed += fixFace(values, p, p + sx, p + sx + sy, p + sy);
+          if (j < ny - 1 && k < nz - 1) changed += fixFace(values, p, p + sy, p + sy + sz, p + sz);
+          if (k < nz - 1 && i < nx - 1) changed += fixFace(values, p, p + sz, p + sz + sx, p + sx);
         }
       }
     }
@@ -269,4 +271,17 @@ export function disambiguateFaces(values: Float32Array, dims: [number, number, n
     if (changed === 0) break;
   }
   return flips;
+}
+
+/** Flip the corner nearest to zero of the face q0-q1-q2-q3 if its signs alternate; returns 1
+ *  when flipped. */
+function fixFace(values: Float32Array, q0: number, q1: number, q2: number, q3: number): number {
+  const s0 = values[q0] < 0;
+  if (s0 === values[q1] < 0 || s0 !== values[q2] < 0 || s0 === values[q3] < 0) return 0;
+  let m = q0;
+  if (Math.abs(values[q1]) < Math.abs(values[m])) m = q1;
+  if (Math.abs(values[q2]) < Math.abs(values[m])) m = q2;
+  if (Math.abs(values[q3]) < Math.abs(values[m])) m = q3;
+  values[m] = values[m] < 0 ? 1e-9 : -1e-9;
+  return 1;
 }

@@ -65,8 +65,8 @@ export function createHeadGeometry(
       const dy = positions[3 * v + 1] - EYE_Y;
       const dz = positions[3 * v + 2] - EYE_Z;
       const cos = dz / (Math.hypot(dx, dy, dz) || EYE_R);
-      if (cos > 0.96) c.copy(pupil);
-      else if (cos > 0.86) c.copy(iris);
+      if (cos > 0.985) c.copy(pupil);
+      else if (cos > 0.93) c.copy(iris);
       else c.copy(white);
     } else if (part === HeadPart.lips) {
       c.copy(lips);
