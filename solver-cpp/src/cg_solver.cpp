@@ -202,53 +202,123 @@ Status CgSolver::solve(Field& T) {
     }
   Z = R.array().colwise() * invDiag.array();
   P = Z;
-  Eigen::RowVector3d rz = (R.array() * Z.array()).colwise().sum();
+  double rz[3], rr[3], xx[3];
+  for (int c = 0; c < 3; ++c) {
+    rz[c] = R.col(c).dot(Z.col(c));
+    rr[c] = R.col(c).squaredNorm();
+    xx[c] = X.col(c).squaredNorm();
+  }
 
   // Lanczos tridiagonal per component, from the PCG coefficients.
   std::vector<double> tDiag[3], tOff[3];
   double lastAlpha[3] = {0, 0, 0}, lastBeta[3] = {0, 0, 0};
+  double theta[3] = {0, 0, 0};
+  int thetaAt[3] = {-1, -1, -1};
   double bound[3] = {0, 0, 0};
   bool active[3];
-  // Converged when the error bound is met; a zero right-hand side converges at once.
-  auto converged = [&](int c) {
-    const double r = R.col(c).norm();
-    if (r == 0) return true;
-    if (r > options_.residualGate * bNorm[c] || tDiag[c].empty()) return false;
-    const double theta = smallestTridiagonalEigenvalue(tDiag[c], tOff[c]);
-    if (!(theta > 0)) return false;
-    bound[c] = r / (minDiag * theta);
-    return bound[c] <= options_.errorTolerance * X.col(c).norm();
+  // Two bounds on ||x - x*||_2, both from lambda_min(A') ~ theta (see the header):
+  //   ||r||_2 / (min P * theta)   and   sqrt(r^T P^-1 r) / (sqrt(min P) * theta);
+  // the second is much tighter when the residual sits on the heavy (constrained) rows.
+  auto boundWith = [&](int c, double th) {
+    const double b1 = std::sqrt(rr[c]) / (minDiag * th);
+    const double b2 = std::sqrt(std::max(rz[c], 0.0)) / (std::sqrt(minDiag) * th);
+    return std::min(b1, b2);
   };
-  for (int c = 0; c < 3; ++c) active[c] = R.col(c).norm() > 0;
+  auto converged = [&](int c, int it) {
+    if (rr[c] == 0) return true;
+    if (rr[c] > options_.residualGate * options_.residualGate * bNorm[c] * bNorm[c] ||
+        tDiag[c].empty())
+      return false;
+    // The Ritz value only decreases with k: a stale one is optimistic, so it is refreshed
+    // every 32 iterations and always before declaring convergence.
+    if (thetaAt[c] < 0 || it - thetaAt[c] >= 32) {
+      theta[c] = smallestTridiagonalEigenvalue(tDiag[c], tOff[c]);
+      thetaAt[c] = it;
+    }
+    if (!(theta[c] > 0)) return false;
+    const double tol2 = options_.errorTolerance * options_.errorTolerance * xx[c];
+    bound[c] = boundWith(c, theta[c]);
+    if (bound[c] * bound[c] > tol2) return false;
+    if (thetaAt[c] != it) {
+      theta[c] = smallestTridiagonalEigenvalue(tDiag[c], tOff[c]);
+      thetaAt[c] = it;
+      bound[c] = boundWith(c, theta[c]);
+    }
+    return bound[c] * bound[c] <= tol2;
+  };
+  for (int c = 0; c < 3; ++c) active[c] = rr[c] > 0;
 
+  const double* id = invDiag.data();
   int it = 0;
   while ((active[0] || active[1] || active[2]) && it < options_.maxIterations) {
     applyOperator(P, Q);
     ++it;
+    double pq[3] = {0, 0, 0};
+    {
+      const double* p = P.data();
+      const double* q = Q.data();
+      for (int i = 0; i < 3 * n; i += 3) {
+        pq[0] += p[i] * q[i];
+        pq[1] += p[i + 1] * q[i + 1];
+        pq[2] += p[i + 2] * q[i + 2];
+      }
+    }
+    double alpha[3] = {0, 0, 0};
     for (int c = 0; c < 3; ++c) {
       if (!active[c]) continue;
-      const double pq = P.col(c).dot(Q.col(c));
-      if (!(pq > 0) || !std::isfinite(pq)) {
-        return Status::Error(StatusCode::NotPositiveDefinite,
-                             "cg: non-positive curvature (p^T M p = " + std::to_string(pq) + ")");
+      if (!(pq[c] > 0) || !std::isfinite(pq[c]))
+        return Status::Error(
+            StatusCode::NotPositiveDefinite,
+            "cg: non-positive curvature (p^T M p = " + std::to_string(pq[c]) + ")");
+      alpha[c] = rz[c] / pq[c];
+    }
+    // x += alpha p, r -= alpha q, z = P^-1 r, and the new dot products, in one pass.
+    double rzNew[3] = {0, 0, 0}, rrNew[3] = {0, 0, 0}, xxNew[3] = {0, 0, 0};
+    {
+      double* x = X.data();
+      double* r = R.data();
+      double* z = Z.data();
+      const double* p = P.data();
+      const double* q = Q.data();
+      for (int i = 0; i < n; ++i) {
+        const double w = id[i];
+        for (int c = 0; c < 3; ++c) {
+          const int k = 3 * i + c;
+          x[k] += alpha[c] * p[k];
+          r[k] -= alpha[c] * q[k];
+          z[k] = w * r[k];
+          rzNew[c] += r[k] * z[k];
+          rrNew[c] += r[k] * r[k];
+          xxNew[c] += x[k] * x[k];
+        }
       }
-      const double alpha = rz[c] / pq;
-      X.col(c) += alpha * P.col(c);
-      R.col(c) -= alpha * Q.col(c);
-      Z.col(c) = R.col(c).cwiseProduct(invDiag);
-      const double rzNew = R.col(c).dot(Z.col(c));
-      const double beta = rzNew / rz[c];
+    }
+    double beta[3] = {0, 0, 0};
+    for (int c = 0; c < 3; ++c) {
+      if (!active[c]) continue;
+      beta[c] = rzNew[c] / rz[c];
       // T_k: delta_j = 1/alpha_j + beta_{j-1}/alpha_{j-1}, eta_j = sqrt(beta_j)/alpha_j.
-      tDiag[c].push_back(1.0 / alpha + (tDiag[c].empty() ? 0.0 : lastBeta[c] / lastAlpha[c]));
-      if (converged(c)) {
+      tDiag[c].push_back(1.0 / alpha[c] + (tDiag[c].empty() ? 0.0 : lastBeta[c] / lastAlpha[c]));
+      tOff[c].push_back(std::sqrt(beta[c]) / alpha[c]);
+      lastAlpha[c] = alpha[c];
+      lastBeta[c] = beta[c];
+      rz[c] = rzNew[c];
+      rr[c] = rrNew[c];
+      xx[c] = xxNew[c];
+      tOff[c].pop_back();  // eta_k couples to a row not built yet
+      if (converged(c, it)) {
         active[c] = false;
-        continue;
+        beta[c] = 0;
+      } else {
+        tOff[c].push_back(std::sqrt(beta[c]) / alpha[c]);
       }
-      tOff[c].push_back(std::sqrt(beta) / alpha);
-      lastAlpha[c] = alpha;
-      lastBeta[c] = beta;
-      rz[c] = rzNew;
-      P.col(c) = Z.col(c) + beta * P.col(c);
+    }
+    {
+      double* p = P.data();
+      const double* z = Z.data();
+      for (int i = 0; i < 3 * n; i += 3)
+        for (int c = 0; c < 3; ++c)
+          if (active[c]) p[i + c] = z[i + c] + beta[c] * p[i + c];
     }
   }
   stats_.iterations = it;

@@ -80,7 +80,9 @@ TEST(CgSolver, MatchesDenseSolveAndMinimisesEnergy) {
     const Grid g = makeGrid(dims[0], dims[1], dims[2]);
     const ConstraintSet set = randomConstraints(g, 12, 11);
     const Field ref = denseSolve(g, set, kDefaultOmega);
-    CgSolver s;
+    CgOptions tight;
+    tight.errorTolerance = 1e-9;
+    CgSolver s(tight);
     ASSERT_TRUE(s.setGrid(g, kDefaultOmega).ok());
     ASSERT_TRUE(s.setConstraints(set).ok());
     Field T;
@@ -94,7 +96,7 @@ TEST(CgSolver, MatchesDenseSolveAndMinimisesEnergy) {
     EXPECT_LT(worst, 1e-8);
     // The stopping bound really bounds the error.
     EXPECT_GE(s.errorEstimate(), worst);
-    EXPECT_LE(s.errorEstimate(), CgOptions().errorTolerance * (1 + 1e-6));
+    EXPECT_LE(s.errorEstimate(), tight.errorTolerance * (1 + 1e-6));
     // E is minimal: every perturbation raises it.
     const double e0 = fieldEnergy(g, set, kDefaultOmega, T);
     Pcg32 r(5);
@@ -158,7 +160,7 @@ TEST(CgSolver, WarmStartAfterSmallEditConvergesFasterToSameAnswer) {
   ASSERT_TRUE(warm.solve(Tw).ok());
   ASSERT_TRUE(cold.solve(Tc).ok());
   EXPECT_LT(warm.stats().iterations, cold.stats().iterations);
-  EXPECT_LT((Tw - Tc).norm() / Tc.norm(), 1e-7);
+  EXPECT_LT((Tw - Tc).norm() / Tc.norm(), 1e-5);
 }
 
 TEST(CgSolver, FactoryMakesCg) {
