@@ -1,5 +1,5 @@
 // Hair strands as THREE.LineSegments with Kajiya–Kay shading (SPEC S6.1). Per vertex: the strand
-// tangent, `along` (0 at the root, 1 at the tip) and `strandRandom` (one value in [0, 1) per
+// tangent, `along` (0 at the root, 1 at the tip) and `strandRandom` (one value in [0, 1] per
 // strand, for colour variation). Uniforms: hair colour, light direction and colour, ambient,
 // two specular lobes (primary white-ish, secondary tinted by the hair colour).
 import * as THREE from 'three';
@@ -140,8 +140,9 @@ export function setLightDirection(material: StrandMaterial, x: number, y: number
  *  strandStart[s] .. strandStart[s + 1] − 1 of `points` (points[3 * point + axis]); each pair of
  *  consecutive points is a segment. The `position` attribute views `points` (not copied: do not
  *  change it afterwards). Added per point: `tangent` (unit, central differences; one-sided at the
- *  ends), `along` (0 at the root … 1 at the tip) and `strandRandom` (per strand, in [0, 1),
- *  a hash of the strand index and `colorSeed`). */
+ *  ends; Int8 normalised), `along` (0 at the root … 1 at the tip; Uint8 normalised) and
+ *  `strandRandom` (per strand, in [0, 1]: a hash of the strand index and `colorSeed`; Uint8
+ *  normalised). */
 export function buildStrandGeometry(
   points: Float32Array,
   strandStart: Uint32Array,
@@ -150,9 +151,11 @@ export function buildStrandGeometry(
   const strands = Math.max(0, strandStart.length - 1);
   const pointCount = strands > 0 ? strandStart[strands] : 0;
   if (3 * pointCount > points.length) throw new Error('strandStart exceeds the points array');
-  const tangent = new Float32Array(3 * pointCount);
-  const along = new Float32Array(pointCount);
-  const random = new Float32Array(pointCount);
+  // compact, normalised attributes: tangent as signed bytes (÷127), along and strandRandom as
+  // unsigned bytes (÷255); the shader reads floats either way
+  const tangent = new Int8Array(3 * pointCount);
+  const along = new Uint8Array(pointCount);
+  const random = new Uint8Array(pointCount);
   let segments = 0;
   for (let s = 0; s < strands; s++) {
     const n = strandStart[s + 1] - strandStart[s];
@@ -161,17 +164,32 @@ export function buildStrandGeometry(
   const index = new Uint32Array(2 * segments);
   let w = 0;
   const seedMix = Math.imul(colorSeed >>> 0, 0x9e3779b1);
+  let minX = Infinity;
+  let minY = Infinity;
+  let minZ = Infinity;
+  let maxX = -Infinity;
+  let maxY = -Infinity;
+  let maxZ = -Infinity;
   for (let s = 0; s < strands; s++) {
     const a = strandStart[s];
     const b = strandStart[s + 1];
     const n = b - a;
     if (n <= 0) continue;
-    const r = hash32(s ^ seedMix) / 4294967296;
-    const inv = n > 1 ? 1 / (n - 1) : 0;
+    const r = hash32(s ^ seedMix) >>> 24; // 0..255
+    const inv = n > 1 ? 255 / (n - 1) : 0;
     let tx = 0;
-    let ty = 1;
+    let ty = 127;
     let tz = 0;
     for (let i = a; i < b; i++) {
+      const px = points[3 * i];
+      const py = points[3 * i + 1];
+      const pz = points[3 * i + 2];
+      if (px < minX) minX = px;
+      if (px > maxX) maxX = px;
+      if (py < minY) minY = py;
+      if (py > maxY) maxY = py;
+      if (pz < minZ) minZ = pz;
+      if (pz > maxZ) maxZ = pz;
       const i0 = i > a ? i - 1 : i;
       const i1 = i < b - 1 ? i + 1 : i;
       const dx = points[3 * i1] - points[3 * i0];
@@ -179,14 +197,15 @@ export function buildStrandGeometry(
       const dz = points[3 * i1 + 2] - points[3 * i0 + 2];
       const l = Math.sqrt(dx * dx + dy * dy + dz * dz);
       if (l > 1e-12) {
-        tx = dx / l;
-        ty = dy / l;
-        tz = dz / l;
+        const k = 127 / l;
+        tx = Math.round(dx * k);
+        ty = Math.round(dy * k);
+        tz = Math.round(dz * k);
       }
       tangent[3 * i] = tx;
       tangent[3 * i + 1] = ty;
       tangent[3 * i + 2] = tz;
-      along[i] = (i - a) * inv;
+      along[i] = Math.round((i - a) * inv);
       random[i] = r;
       if (i < b - 1) {
         index[w++] = i;
@@ -197,11 +216,24 @@ export function buildStrandGeometry(
   const geometry = new THREE.BufferGeometry();
   const used = pointCount === points.length / 3 ? points : points.subarray(0, 3 * pointCount);
   geometry.setAttribute('position', new THREE.BufferAttribute(used, 3));
-  geometry.setAttribute('tangent', new THREE.BufferAttribute(tangent, 3));
-  geometry.setAttribute('along', new THREE.BufferAttribute(along, 1));
-  geometry.setAttribute('strandRandom', new THREE.BufferAttribute(random, 1));
+  geometry.setAttribute('tangent', new THREE.BufferAttribute(tangent, 3, true));
+  geometry.setAttribute('along', new THREE.BufferAttribute(along, 1, true));
+  geometry.setAttribute('strandRandom', new THREE.BufferAttribute(random, 1, true));
   geometry.setIndex(new THREE.BufferAttribute(index, 1));
-  geometry.computeBoundingSphere();
+  // bounds from the loop above (three's computeBoundingSphere takes ~40× longer on 4M points);
+  // the sphere around the box is conservative, which is all culling and picking need
+  if (pointCount > 0) {
+    geometry.boundingBox = new THREE.Box3(
+      new THREE.Vector3(minX, minY, minZ),
+      new THREE.Vector3(maxX, maxY, maxZ),
+    );
+    const center = geometry.boundingBox.getCenter(new THREE.Vector3());
+    const radius = 0.5 * Math.hypot(maxX - minX, maxY - minY, maxZ - minZ);
+    geometry.boundingSphere = new THREE.Sphere(center, radius);
+  } else {
+    geometry.boundingBox = new THREE.Box3();
+    geometry.boundingSphere = new THREE.Sphere(new THREE.Vector3(), 0);
+  }
   return geometry;
 }
 

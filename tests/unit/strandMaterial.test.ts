@@ -1,0 +1,112 @@
+// Strand geometry for LineSegments (tangents, `along`, per-strand variation) and the Kajiya–Kay
+// material's uniforms (SPEC S6.1). The shader itself compiles only in a browser (checked with a
+// headless Chromium render); here the geometry layout is checked against direct computation.
+import { describe, expect, it } from 'vitest';
+import {
+  buildStrandGeometry,
+  createStrandMaterial,
+  setHairColor,
+  setLightDirection,
+} from '../../web/viewer/strandMaterial';
+
+describe('buildStrandGeometry', () => {
+  // strand 0: 3 points along +x then +y; strand 1: a single point; strand 2: 2 points along −z
+  const points = new Float32Array([0, 0, 0, 1, 0, 0, 1, 1, 0, 5, 5, 5, 0, 0, 0, 0, 0, -2]);
+  const strandStart = new Uint32Array([0, 3, 4, 6]);
+  const g = buildStrandGeometry(points, strandStart, 3);
+
+  it('makes one index pair per segment, none across strands', () => {
+    expect(Array.from(g.getIndex()?.array ?? [])).toEqual([0, 1, 1, 2, 4, 5]);
+    expect(g.getAttribute('position').count).toBe(6);
+  });
+
+  it('has unit tangents from neighbouring points', () => {
+    const t = g.getAttribute('tangent');
+    const s = Math.SQRT1_2;
+    const expected = [
+      [1, 0, 0], // one-sided at the root
+      [s, s, 0], // central difference
+      [0, 1, 0], // one-sided at the tip
+      [0, 0, -1], // strand 2
+      [0, 0, -1],
+    ];
+    const rows = [0, 1, 2, 4, 5];
+    rows.forEach((v, k) => {
+      for (let a = 0; a < 3; a++) expect(t.getComponent(v, a)).toBeCloseTo(expected[k][a], 2);
+    });
+    // a lone point still gets a finite unit tangent
+    const lone = [0, 1, 2].map((a) => t.getComponent(3, a));
+    expect(Math.hypot(...lone)).toBeCloseTo(1, 2);
+  });
+
+  it('runs `along` from 0 at the root to 1 at the tip; one random value per strand', () => {
+    const along = g.getAttribute('along');
+    const expected = [0, 0.5, 1, 0, 1];
+    [0, 1, 2, 4, 5].forEach((v, k) => {
+      expect(along.getX(v)).toBeCloseTo(expected[k], 2);
+    });
+    const r = g.getAttribute('strandRandom');
+    expect(r.getX(0)).toBe(r.getX(2));
+    expect(r.getX(4)).toBe(r.getX(5));
+    expect(r.getX(0)).not.toBe(r.getX(4));
+    for (let v = 0; v < 6; v++) {
+      expect(r.getX(v)).toBeGreaterThanOrEqual(0);
+      expect(r.getX(v)).toBeLessThanOrEqual(1);
+    }
+    // seeded: same seed, same values; another seed, other values
+    const again = buildStrandGeometry(points, strandStart, 3).getAttribute('strandRandom');
+    const other = buildStrandGeometry(points, strandStart, 4).getAttribute('strandRandom');
+    expect(again.getX(0)).toBe(r.getX(0));
+    expect(other.getX(0)).not.toBe(r.getX(0));
+  });
+
+  it('handles no strands', () => {
+    const empty = buildStrandGeometry(new Float32Array(0), new Uint32Array([0]));
+    expect(empty.getIndex()?.count).toBe(0);
+    const none = buildStrandGeometry(new Float32Array(0), new Uint32Array(0));
+    expect(none.getAttribute('position').count).toBe(0);
+  });
+
+  it('rejects strand ranges beyond the points', () => {
+    expect(() => buildStrandGeometry(new Float32Array(3), new Uint32Array([0, 2]))).toThrow();
+  });
+
+  it('builds 100K strands × 40 points quickly', () => {
+    const strands = 100_000;
+    const per = 40;
+    const pts = new Float32Array(3 * strands * per);
+    const start = new Uint32Array(strands + 1);
+    for (let s = 0; s < strands; s++) {
+      start[s + 1] = (s + 1) * per;
+      for (let i = 0; i < per; i++) {
+        const p = 3 * (s * per + i);
+        pts[p] = Math.sin(s) + 0.01 * i;
+        pts[p + 1] = -0.05 * i;
+        pts[p + 2] = Math.cos(s);
+      }
+    }
+    buildStrandGeometry(pts, start); // warm up
+    const t0 = performance.now();
+    const big = buildStrandGeometry(pts, start);
+    const ms = performance.now() - t0;
+    expect(big.getIndex()?.count).toBe(2 * strands * (per - 1));
+    // the target is well under 200 ms; allow slack for a loaded test machine
+    expect(ms).toBeLessThan(600);
+  });
+});
+
+describe('createStrandMaterial', () => {
+  it('exposes settable colour and light uniforms', () => {
+    const m = createStrandMaterial({ color: '#ff0000', lightDirection: [0, 2, 0] });
+    expect(m.uniforms.hairColor.value.r).toBeCloseTo(1, 6);
+    expect(m.uniforms.hairColor.value.g).toBeCloseTo(0, 6);
+    expect(m.uniforms.lightDirection.value.y).toBeCloseTo(1, 6); // normalised
+    setHairColor(m, '#0000ff');
+    expect(m.uniforms.hairColor.value.b).toBeCloseTo(1, 6);
+    expect(m.uniforms.hairColor.value.r).toBeCloseTo(0, 6);
+    setLightDirection(m, 3, 0, 4);
+    expect(m.uniforms.lightDirection.value.x).toBeCloseTo(0.6, 6);
+    expect(m.fragmentShader).toContain('sinTL * sinTV - TL * TV'); // Kajiya–Kay cone term
+    expect(m.vertexShader).toContain('attribute vec3 tangent');
+  });
+});
