@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# Builds the C++ core + binding into web/generated/hairsolver.{mjs,wasm} with Debian's emcc.
+# Skips the build when every input is older than both outputs (FORCE=1 rebuilds anyway).
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+root="$(cd "$here/.." && pwd)"
+out="$root/web/generated"
+mjs="$out/hairsolver.mjs"
+wasm="$out/hairsolver.wasm"
+
+if ! command -v emcc >/dev/null 2>&1; then
+  echo "wasm-build: emcc not found. Install Debian's emscripten: apt-get install -y emscripten libeigen3-dev" >&2
+  exit 1
+fi
+eigen="${EIGEN_INCLUDE:-/usr/include/eigen3}"
+if [ ! -f "$eigen/Eigen/Core" ]; then
+  echo "wasm-build: Eigen headers not found in $eigen (apt-get install -y libeigen3-dev)" >&2
+  exit 1
+fi
+
+inputs=("$root"/solver-cpp/src/*.cpp "$root"/solver-cpp/src/*.hpp "$here/binding.cpp" "$here/build.sh")
+if [ "${FORCE:-0}" != 1 ] && [ -f "$mjs" ] && [ -f "$wasm" ]; then
+  stale=0
+  for f in "${inputs[@]}"; do
+    if [ "$f" -nt "$mjs" ] || [ "$f" -nt "$wasm" ]; then stale=1; break; fi
+  done
+  if [ "$stale" = 0 ]; then
+    echo "wasm-build: up to date ($mjs)"
+    exit 0
+  fi
+fi
+
+mkdir -p "$out"
+# Debian's emcc runs its JS optimiser with the system node, which needs Debian's node modules.
+export NODE_PATH=/usr/share/nodejs${NODE_PATH:+:$NODE_PATH}
+
+exports='_malloc,_free'
+for f in $(grep -o 'EMSCRIPTEN_KEEPALIVE [^(]*(' "$here/binding.cpp" | grep -o 'hs_[a-z_]*'); do
+  exports="$exports,_$f"
+done
+
+echo "wasm-build: emcc $(emcc --version | head -1 | grep -o '[0-9]\+\.[0-9]\+\.[0-9]\+' | head -1) -> $mjs"
+start=$(date +%s)
+# ENVIRONMENT=web,worker: the loader then never touches node's require (emcc 3.1.6 + EXPORT_ES6
+# breaks there); under Node the caller passes wasmBinary and the loader does not fetch.
+emcc -std=c++17 -O3 -msimd128 -DNDEBUG -DEIGEN_NO_DEBUG -fno-exceptions \
+  -I"$root/solver-cpp/src" -I"$eigen" \
+  "$root"/solver-cpp/src/*.cpp "$here/binding.cpp" \
+  -sMODULARIZE=1 -sEXPORT_ES6=1 -sEXPORT_NAME=createHairSolver \
+  -sENVIRONMENT=web,worker \
+  -sALLOW_MEMORY_GROWTH=1 -sINITIAL_MEMORY=33554432 -sMAXIMUM_MEMORY=2GB \
+  -sEXPORTED_FUNCTIONS="$exports" \
+  -sEXPORTED_RUNTIME_METHODS=UTF8ToString \
+  -sFILESYSTEM=0 -sASSERTIONS=0 \
+  -o "$mjs"
+touch "$mjs" "$wasm"
+echo "wasm-build: done in $(( $(date +%s) - start )) s ($(du -k "$wasm" | cut -f1) KB wasm)"
