@@ -87,8 +87,9 @@ function skull(x: number, y: number, z: number, ax: number): number {
   // upper face (cheekbone level) and jaw
   d = smin(d, sdEllipsoid(x, y + 0.38, z - 0.27, 0.7, 0.6, 0.68), 0.25);
   d = smin(d, sdEllipsoid(x, y + 0.82, z - 0.27, 0.57, 0.5, 0.64), 0.3);
-  // chin
-  d = smin(d, sdEllipsoid(x, y + 1.1, z - 0.62, 0.25, 0.21, 0.24), 0.2);
+  // muzzle (the teeth's curve under the lips) and chin
+  d = smin(d, sdEllipsoid(x, y + 0.74, z - 0.7, 0.3, 0.26, 0.27), 0.15);
+  d = smin(d, sdEllipsoid(x, y + 1.1, z - 0.66, 0.25, 0.21, 0.24), 0.2);
   // cheeks
   d = smin(d, sdEllipsoid(ax - 0.37, y + 0.45, z - 0.58, 0.25, 0.2, 0.28), 0.16);
   // brow ridge
@@ -103,8 +104,8 @@ function nose(x: number, y: number, z: number, ax: number): number {
 }
 
 function lips(x: number, y: number, z: number): number {
-  let d = sdEllipsoid(x, y + 0.775, z - 0.925, 0.2, 0.055, 0.085);
-  d = smin(d, sdEllipsoid(x, y + 0.885, z - 0.9, 0.17, 0.06, 0.085), 0.04);
+  let d = sdEllipsoid(x, y + 0.775, z - 0.95, 0.2, 0.055, 0.085);
+  d = smin(d, sdEllipsoid(x, y + 0.885, z - 0.925, 0.17, 0.06, 0.085), 0.04);
   return d;
 }
 
@@ -158,7 +159,7 @@ export function headSdf(x: number, y: number, z: number): number {
   // lips and mouth line
   if (z > 0.5 && y > -1.15 && y < -0.55 && ax < 0.5) {
     d = smin(d, lips(x, y, z), 0.06);
-    d = smax(d, -sdEllipsoid(x, y + 0.835, z - 1.0, 0.19, 0.016, 0.09), 0.025);
+    d = smax(d, -sdEllipsoid(x, y + 0.835, z - 1.03, 0.19, 0.016, 0.09), 0.025);
   }
   // ears
   if (ax > 0.4 && y > -0.75 && y < 0.25 && z < 0.4 && z > -0.6) d = smin(d, ear(y, z, ax), 0.1);
