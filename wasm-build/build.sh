@@ -18,6 +18,10 @@ if [ ! -f "$eigen/Eigen/Core" ]; then
   exit 1
 fi
 
+# The module's TypeScript declaration always goes next to it (cheap, keeps tsc happy).
+mkdir -p "$out"
+cp "$here/hairsolver.d.mts" "$out/hairsolver.d.mts"
+
 inputs=("$root"/solver-cpp/src/*.cpp "$root"/solver-cpp/src/*.hpp "$here/binding.cpp" "$here/build.sh")
 if [ "${FORCE:-0}" != 1 ] && [ -f "$mjs" ] && [ -f "$wasm" ]; then
   stale=0
