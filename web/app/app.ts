@@ -23,7 +23,12 @@ import { StatusLine } from '../ui/status';
 import { buildToolbar } from '../ui/toolbar';
 import { createHeadMesh } from '../viewer/headMaterial';
 import { HeadPicker } from '../viewer/headPicker';
-import { buildStrandGeometry, createStrandMaterial } from '../viewer/strandMaterial';
+import {
+  buildStrandGeometry,
+  createStrandMaterial,
+  type StrandMaterial,
+  setHairColor,
+} from '../viewer/strandMaterial';
 import { Viewer } from '../viewer/viewer';
 import { installTestApi } from './testApi';
 import { parseUrlOptions } from './urlOptions';
@@ -40,7 +45,7 @@ export class App {
   private readonly tools: Record<'stream' | 'select', Tool>;
   private readonly toolbar;
   private shownStrands: SolveResult['strands'] | null = null;
-  private strandMaterial: THREE.ShaderMaterial | null = null;
+  private strandMaterial: StrandMaterial | null = null;
   private lastMessage = '';
 
   constructor() {
@@ -262,7 +267,7 @@ export class App {
   }
 
   private applyHairColor(): void {
-    this.strandMaterial?.uniforms.hairColor?.value.set(this.history.current.hairColor);
+    if (this.strandMaterial) setHairColor(this.strandMaterial, this.history.current.hairColor);
     this.viewer.requestRender();
   }
 

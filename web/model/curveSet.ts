@@ -22,7 +22,16 @@ export function packCurves(curves: readonly StyleCurve[]): CurveSet {
     }
   });
   curveStart[curves.length] = k;
-  return { points, curveStart, kinds, extend };
+  return {
+    points,
+    curveStart,
+    kinds,
+    extend,
+    params: new Float64Array(0),
+    paramStart: new Uint32Array(curves.length + 1),
+    extraIndex: new Int32Array(0),
+    extraTarget: new Float64Array(0),
+  };
 }
 
 /** A content key for a curve set + growth settings (for the result cache). FNV-1a over bytes. */

@@ -18,8 +18,8 @@ export interface ScalpMesh {
   center: [number, number, number]; // origin of the spherical root parameterisation (S5.1)
 }
 
-/** Style curve kinds, as stored in CurveSet.kinds. Later primitives add values. */
-export const CurveKind = { stream: 0 } as const;
+/** Style curve kinds, as stored in CurveSet.kinds. */
+export const CurveKind = { stream: 0, dividing: 1, ponytail: 2 } as const;
 export type CurveKindName = keyof typeof CurveKind;
 
 /** All style curves of a session, flattened. Curve c owns points
@@ -29,6 +29,18 @@ export interface CurveSet {
   curveStart: Uint32Array; // length = curves + 1; curveStart[0] = 0
   kinds: Uint8Array; // kinds[c]: a CurveKind value
   extend: Uint8Array; // extend[c] = 1: append fading extrapolated segments (S4.1)
+  /** Kind-specific parameters: curve c owns params[paramStart[c] .. paramStart[c + 1] - 1].
+   *  stream: none.
+   *  dividing (S4.5): [sigma, h, alpha0, alpha1 (radians)], then per point of the curve the
+   *    scalp normal at it: nx, ny, nz (3 per point).
+   *  ponytail (S4.6): points are the spine; [tightness, circles], then per cross-section circle
+   *    (C1 first, C2 last): cx, cy, cz, ax, ay, az (unit axis along the spine), r (7 per circle). */
+  params: Float64Array;
+  paramStart: Uint32Array; // length = curves + 1
+  /** Constraints stated directly (e.g. scalp avoidance, S4.7): grid index and target. They are
+   *  added to those the curves derive; duplicates are averaged. */
+  extraIndex: Int32Array; // extraIndex[e] = grid point p
+  extraTarget: Float64Array; // extraTarget[3 * e + axis]
 }
 
 /** Hair growth settings (SPEC S5). */

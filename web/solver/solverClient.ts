@@ -57,6 +57,10 @@ export class SolverClient {
       curves.curveStart,
       curves.kinds,
       curves.extend,
+      curves.params,
+      curves.paramStart,
+      curves.extraIndex,
+      curves.extraTarget,
       new Float64Array(Object.values(growth)),
     );
     const req: Request = { id: this.nextId++, key, curves, growth };
