@@ -9,6 +9,9 @@ step() { echo ""; echo "== $* ($(( $(date +%s) - start )) s)"; }
 step setup
 bash scripts/setup.sh test
 
+step "wasm build (its type declarations are needed by tsc)"
+bash wasm-build/build.sh
+
 step "format and lint"
 mapfile -t cxx < <(git ls-files 'solver-cpp/*.cpp' 'solver-cpp/*.hpp' 'wasm-build/*.cpp' 'tests/native/*.cpp' 2>/dev/null || true)
 if [ ${#cxx[@]} -gt 0 ]; then clang-format --dry-run -Werror "${cxx[@]}"; fi
@@ -19,9 +22,6 @@ step "native build and tests"
 cmake -S solver-cpp -B build/native -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build/native
 ctest --test-dir build/native --output-on-failure -j2
-
-step "wasm build"
-bash wasm-build/build.sh
 
 step "unit tests (vitest, Node, real wasm)"
 npx vitest run

@@ -147,6 +147,10 @@ function streamCurve(c: [number, number, number], r: number, d: number, extend =
     curveStart: new Uint32Array([0, pts.length / 3]),
     kinds: new Uint8Array([0]),
     extend: new Uint8Array([extend ? 1 : 0]),
+    params: new Float64Array(0),
+    paramStart: new Uint32Array(2),
+    extraIndex: new Int32Array(0),
+    extraTarget: new Float64Array(0),
   };
 }
 
