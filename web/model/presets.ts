@@ -28,6 +28,9 @@ interface SweepSpec {
 
 // Shoulder-length hair swept back from the face and falling behind the ears.
 const DEFAULT_SWEEPS: SweepSpec[] = [
+  // Front hairline: combed to the sides, away from the face (a centre parting).
+  { theta: [46, 86], phi: [6, 84], lift: 0.14, fall: 1.1 },
+  { theta: [46, 86], phi: [-6, -84], lift: 0.14, fall: 1.1 },
   { theta: [18, 92], phi: [25, 75], lift: 0.16, fall: 1.2 },
   { theta: [18, 92], phi: [-25, -75], lift: 0.16, fall: 1.2 },
   { theta: [22, 98], phi: [70, 112], lift: 0.16, fall: 1.4 },
