@@ -47,6 +47,8 @@ if [ "$major" -lt 20 ]; then
 fi
 
 if [ ! -f node_modules/.package-lock.json ] || [ package-lock.json -nt node_modules/.package-lock.json ]; then
-  echo "setup: installing npm packages (npm ci)"
-  npm ci --no-audit --no-fund
+  # npm install, not npm ci: the registry mirror here lacks some other-platform optional
+  # packages (e.g. @biomejs/cli-win32-x64), which makes `npm ci` refuse the lock file.
+  echo "setup: installing npm packages (npm install, from package-lock.json)"
+  npm install --no-audit --no-fund
 fi
