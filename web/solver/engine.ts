@@ -21,12 +21,22 @@ export interface SolverEngine {
   setCurves(curves: CurveSet): void;
   /** Solve the field for the current constraints. */
   solve(): void;
+  /** Progressive solve: at most `maxIterations` more iterations, stopping once the estimated
+   *  relative error is <= tolerance. Direct solvers solve fully and report converged. The
+   *  field (and grow) then use the current iterate. */
+  iterate(maxIterations: number, tolerance: number): IterateProgress;
   /** Sample roots (S5.1) and grow strands (S5.2) in the current field. Returns copies. */
   grow(params: GrowthParams): StrandArrays;
   constraints(): ConstraintArrays;
   field(): FieldArrays;
-  stats(): Omit<SolveStats, 'growMs'>;
+  stats(): Omit<SolveStats, 'growMs' | 'errorEstimate'>;
   dispose(): void;
+}
+
+export interface IterateProgress {
+  iterations: number; // since the last setCurves
+  errorEstimate: number; // estimated relative error of the current iterate
+  converged: boolean;
 }
 
 export class SolverError extends Error {

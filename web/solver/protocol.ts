@@ -79,6 +79,7 @@ export type SolverName = 'cg';
 export interface SolveStats {
   method: string;
   iterations: number;
+  errorEstimate: number; // estimated relative field error of what was grown (0 = exact)
   constraints: number;
   added: number;
   removed: number;
@@ -104,6 +105,9 @@ export type ToWorker =
       curves: CurveSet;
       growth: GrowthParams;
       wantField: boolean;
+      /** 'preview': a few iterations and a light growth, for live feedback while drawing;
+       *  'full': a quick first look, then iterate to convergence and grow the final hair. */
+      mode: 'preview' | 'full';
     };
 
 export type FromWorker =
@@ -116,6 +120,8 @@ export type FromWorker =
       constraints: ConstraintArrays;
       field: FieldArrays | null;
       stats: SolveStats;
+      /** True for the converged field's hair; false for a preview or a first look. */
+      final: boolean;
     }
   | { type: 'error'; id: number | null; message: string };
 

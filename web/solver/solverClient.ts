@@ -1,27 +1,29 @@
-// The app's side of the solver worker: one solve in flight at a time, the newest request
-// supersedes any waiting one, results are cached by content (undo is instant and exact), and a
-// worker that dies is restarted and sent the session again.
-
+// The app's side of the solver worker. Every request goes to the worker at once and supersedes
+// the previous one there (the worker drops a superseded solve between iteration slices);
+// results of older requests are not shown. Final results are cached by content (undo is
+// instant and exact), and a worker that dies is restarted and sent the session again.
 import { contentKey } from '../model/curveSet';
 import type { CurveSet, FromWorker, GrowthParams, ToWorker } from './protocol';
 
 export type InitMessage = Extract<ToWorker, { type: 'init' }>;
 export type SolveResult = Extract<FromWorker, { type: 'result' }>;
+export type SolveMode = 'preview' | 'full';
 
 export interface SolverClientEvents {
-  /** The worker is (re)starting or solving; `phase` says what it does. */
-  onBusy(phase: string): void;
-  /** A result for `key`; `latest` is false when a newer request is already waiting. */
-  onResult(result: SolveResult, latest: boolean, fromCache: boolean): void;
+  /** The worker is (re)starting or working; `phase` says what it does. */
+  onBusy(phase: 'loading' | 'solving' | 'growing', fraction: number): void;
+  /** A result of the newest request (`final` false: a preview or a first look). */
+  onResult(result: SolveResult, final: boolean, fromCache: boolean): void;
   /** An error; `restarting` when the worker died and is being replaced. */
   onError(message: string, restarting: boolean): void;
-  /** Nothing is pending. */
+  /** The newest request is answered in full and nothing else is pending. */
   onIdle(): void;
 }
 
 interface Request {
   id: number;
   key: string;
+  mode: SolveMode;
   curves: CurveSet;
   growth: GrowthParams;
 }
@@ -31,9 +33,9 @@ const MAX_RESTARTS = 3;
 
 export class SolverClient {
   private worker: Worker | null = null;
-  private inFlight: Request | null = null;
-  private waiting: Request | null = null;
   private latest: Request | null = null;
+  /** The newest request still waiting for its final answer. */
+  private open: Request | null = null;
   private nextId = 1;
   private readonly cache = new Map<string, SolveResult>();
   private restarts = 0;
@@ -48,10 +50,10 @@ export class SolverClient {
   }
 
   get pending(): boolean {
-    return this.inFlight !== null || this.waiting !== null || !this.ready;
+    return this.open !== null || !this.ready;
   }
 
-  request(curves: CurveSet, growth: GrowthParams): void {
+  request(curves: CurveSet, growth: GrowthParams, mode: SolveMode = 'full'): void {
     const key = contentKey(
       curves.points,
       curves.curveStart,
@@ -63,17 +65,17 @@ export class SolverClient {
       curves.extraTarget,
       new Float64Array(Object.values(growth)),
     );
-    const req: Request = { id: this.nextId++, key, curves, growth };
+    const req: Request = { id: this.nextId++, key, mode, curves, growth };
     this.latest = req;
-    const cached = this.cache.get(key);
+    const cached = mode === 'full' ? this.cache.get(key) : undefined;
     if (cached) {
-      this.waiting = null;
+      this.open = null;
       this.events.onResult(cached, true, true);
-      if (!this.inFlight && this.ready) this.events.onIdle();
+      if (!this.pending) this.events.onIdle();
       return;
     }
-    this.waiting = req;
-    this.pump();
+    this.open = req;
+    this.send(req);
   }
 
   /** Test and fault hook: kills the worker as a crash would. */
@@ -88,7 +90,7 @@ export class SolverClient {
 
   private start(): void {
     this.ready = false;
-    this.events.onBusy('loading');
+    this.events.onBusy('loading', 0);
     const w = this.makeWorker();
     this.worker = w;
     w.onmessage = (ev: MessageEvent<FromWorker>) => {
@@ -101,12 +103,23 @@ export class SolverClient {
     w.postMessage(this.init);
   }
 
+  private send(req: Request): void {
+    if (!this.worker || !this.ready) return; // sent on 'ready'
+    this.events.onBusy('solving', 0);
+    const msg: ToWorker = {
+      type: 'solve',
+      id: req.id,
+      curves: req.curves,
+      growth: req.growth,
+      wantField: false,
+      mode: req.mode,
+    };
+    this.worker.postMessage(msg);
+  }
+
   private handleDeath(reason: string): void {
     this.worker?.terminate();
     this.worker = null;
-    // The in-flight request is lost with the worker: re-send the newest state.
-    if (this.inFlight && !this.waiting) this.waiting = this.latest;
-    this.inFlight = null;
     if (this.restarts >= MAX_RESTARTS) {
       this.events.onError(
         `The solver stopped (${reason}) ${MAX_RESTARTS} times in a row; reload the page. Your curves are kept in the session.`,
@@ -115,53 +128,41 @@ export class SolverClient {
       return;
     }
     this.restarts++;
+    // The answer in flight is lost with the worker: the newest state is sent again (as a full
+    // solve: a preview's stroke may have ended meanwhile).
+    if (this.latest) this.open = { ...this.latest, mode: 'full' };
     this.events.onError(`The solver stopped (${reason}); restarting it with your session.`, true);
     this.start();
-  }
-
-  private pump(): void {
-    if (!this.worker || !this.ready || this.inFlight || !this.waiting) return;
-    const req = this.waiting;
-    this.waiting = null;
-    this.inFlight = req;
-    this.events.onBusy('solving');
-    const msg: ToWorker = {
-      type: 'solve',
-      id: req.id,
-      curves: req.curves,
-      growth: req.growth,
-      wantField: false,
-    };
-    this.worker.postMessage(msg);
   }
 
   private onMessage(msg: FromWorker): void {
     switch (msg.type) {
       case 'ready':
         this.ready = true;
-        if (!this.waiting && !this.inFlight && this.latest) this.waiting = this.latest;
-        this.pump();
+        if (this.open) this.send(this.open);
         if (!this.pending) this.events.onIdle();
         return;
       case 'progress':
-        this.events.onBusy(
-          msg.phase === 'constraints' ? 'solving' : msg.phase === 'solve' ? 'solving' : 'growing',
-        );
+        if (this.open && msg.id === this.open.id)
+          this.events.onBusy(msg.phase === 'grow' ? 'growing' : 'solving', msg.fraction);
         return;
       case 'result': {
-        const req = this.inFlight;
-        this.inFlight = null;
-        this.restarts = 0;
-        if (req) {
-          this.cache.set(req.key, msg);
-          while (this.cache.size > CACHE_SIZE) {
-            const oldest = this.cache.keys().next().value as string;
-            this.cache.delete(oldest);
+        const isLatest = this.latest !== null && msg.id === this.latest.id;
+        if (msg.final) {
+          this.restarts = 0;
+          const req = this.open && this.open.id === msg.id ? this.open : null;
+          if (req && req.mode === 'full') {
+            this.cache.set(req.key, msg);
+            while (this.cache.size > CACHE_SIZE) {
+              const oldest = this.cache.keys().next().value as string;
+              this.cache.delete(oldest);
+            }
           }
         }
-        const latest = req !== null && req === this.latest;
-        if (!this.waiting) this.events.onResult(msg, latest, false);
-        this.pump();
+        if (!isLatest) return; // superseded: never shown
+        const done = msg.final || this.latest?.mode === 'preview';
+        if (done) this.open = null;
+        this.events.onResult(msg, msg.final, false);
         if (!this.pending) this.events.onIdle();
         return;
       }
@@ -171,9 +172,8 @@ export class SolverClient {
           this.events.onError(msg.message, false);
           return;
         }
-        this.inFlight = null;
+        if (this.open && msg.id === this.open.id) this.open = null;
         this.events.onError(msg.message, false);
-        this.pump();
         if (!this.pending) this.events.onIdle();
         return;
     }

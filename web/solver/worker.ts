@@ -2,7 +2,7 @@
 import wasmUrl from '../generated/hairsolver.wasm?url';
 import { type FromWorker, resultTransferables, type ToWorker } from './protocol';
 import { loadSolverEngine } from './wasmEngine';
-import { handleMessage, type WorkerState } from './workerLogic';
+import { WorkerLogic } from './workerLogic';
 
 const scope = self as unknown as {
   postMessage(msg: FromWorker, transfer?: Transferable[]): void;
@@ -14,30 +14,19 @@ const post = (msg: FromWorker): void => {
   else scope.postMessage(msg);
 };
 
-const queue: ToWorker[] = [];
-let state: WorkerState | null = null;
+// Messages that arrive while the module loads wait here.
+const early: ToWorker[] = [];
+let logic: WorkerLogic | null = null;
 
 scope.onmessage = (ev) => {
-  queue.push(ev.data);
-  drain();
+  if (logic) void logic.handle(ev.data);
+  else early.push(ev.data);
 };
-
-function drain(): void {
-  if (!state) return;
-  // Messages only wait here while the module loads; of the solves waiting, only the last one
-  // is worth running (the client sends one at a time after that).
-  const pending = queue.splice(0);
-  const lastSolve = pending.map((m) => m.type).lastIndexOf('solve');
-  pending.forEach((msg, i) => {
-    if (msg.type === 'solve' && i !== lastSolve) return;
-    handleMessage(state as WorkerState, msg, post);
-  });
-}
 
 loadSolverEngine({ locateFile: () => wasmUrl })
   .then((engine) => {
-    state = { engine, initialised: false };
-    drain();
+    logic = new WorkerLogic(engine, post);
+    for (const m of early.splice(0)) void logic.handle(m);
   })
   .catch((e: unknown) => {
     post({ type: 'error', id: null, message: `Could not load the solver: ${String(e)}` });

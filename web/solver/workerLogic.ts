@@ -1,61 +1,146 @@
 // The worker's logic as plain functions over a SolverEngine, so the same code runs in the
 // browser worker and under Node tests with the real wasm module.
-import type { SolverEngine } from './engine';
-import type { FromWorker, ToWorker } from './protocol';
+//
+// Scheduling (one job at a time, the newest request supersedes the running one):
+//   preview job: a few iterations, light growth, one non-final result;
+//   full job:    a first look after a few iterations (non-final), then iterate in slices,
+//                yielding to the event loop between slices so a newer request can take over,
+//                and grow the final hair when the field has converged.
+import type { IterateProgress, SolverEngine } from './engine';
+import type { FromWorker, GrowthParams, ToWorker } from './protocol';
 
 export type Post = (msg: FromWorker) => void;
+type SolveMsg = Extract<ToWorker, { type: 'solve' }>;
 
-export interface WorkerState {
-  engine: SolverEngine;
-  initialised: boolean;
+export interface SchedulerOptions {
+  tolerance: number; // converged when the estimated relative field error is below this
+  firstLookIterations: number;
+  sliceIterations: number;
+  previewIterations: number;
+  previewMaxStrands: number;
+  /** Resolves after pending messages have had a chance to run. */
+  yieldNow: () => Promise<void>;
+  now: () => number;
 }
 
-const now = (): number => (typeof performance !== 'undefined' ? performance.now() : Date.now());
+export const DEFAULT_SCHEDULER: SchedulerOptions = {
+  tolerance: 1e-6,
+  firstLookIterations: 4,
+  sliceIterations: 4,
+  previewIterations: 3,
+  previewMaxStrands: 6000,
+  yieldNow: () => new Promise((r) => setTimeout(r, 0)),
+  now: () => (typeof performance !== 'undefined' ? performance.now() : Date.now()),
+};
 
 const errorMessage = (e: unknown): string => (e instanceof Error ? e.message : String(e));
 
-export function handleMessage(state: WorkerState, msg: ToWorker, post: Post): void {
-  switch (msg.type) {
-    case 'init': {
+export class WorkerLogic {
+  private initialised = false;
+  private latest: SolveMsg | null = null;
+  private running = false;
+
+  constructor(
+    readonly engine: SolverEngine,
+    private readonly post: Post,
+    private readonly opts: SchedulerOptions = DEFAULT_SCHEDULER,
+  ) {}
+
+  /** Handles one message; solve jobs run asynchronously. Returns when the job queue is empty. */
+  handle(msg: ToWorker): Promise<void> {
+    if (msg.type === 'init') {
       try {
-        state.engine.setGrid(msg.grid, msg.omega, msg.solver);
-        state.engine.setScalp(msg.scalp);
-        state.initialised = true;
+        this.engine.setGrid(msg.grid, msg.omega, msg.solver);
+        this.engine.setScalp(msg.scalp);
+        this.initialised = true;
         const n = msg.grid.dims[0] * msg.grid.dims[1] * msg.grid.dims[2];
-        post({ type: 'ready', gridPoints: n, roots: 0 });
+        this.post({ type: 'ready', gridPoints: n, roots: 0 });
       } catch (e) {
-        post({ type: 'error', id: null, message: `Solver set-up failed: ${errorMessage(e)}` });
+        this.post({ type: 'error', id: null, message: `Solver set-up failed: ${errorMessage(e)}` });
       }
+      return Promise.resolve();
+    }
+    if (!this.initialised) {
+      this.post({ type: 'error', id: msg.id, message: 'Solver is not initialised' });
+      return Promise.resolve();
+    }
+    this.latest = msg;
+    return this.running ? Promise.resolve() : this.run();
+  }
+
+  private async run(): Promise<void> {
+    this.running = true;
+    try {
+      while (this.latest) {
+        const job = this.latest;
+        this.latest = null;
+        try {
+          await this.runJob(job);
+        } catch (e) {
+          this.post({ type: 'error', id: job.id, message: errorMessage(e) });
+        }
+      }
+    } finally {
+      this.running = false;
+    }
+  }
+
+  private superseded(): boolean {
+    return this.latest !== null;
+  }
+
+  private async runJob(job: SolveMsg): Promise<void> {
+    const o = this.opts;
+    const t0 = o.now();
+    this.post({ type: 'progress', id: job.id, phase: 'constraints', fraction: 0 });
+    this.engine.setCurves(job.curves);
+    if (job.mode === 'preview') {
+      const p = this.engine.iterate(o.previewIterations, o.tolerance);
+      const cap = job.growth.maxStrands > 0 ? Math.min(job.growth.maxStrands, o.previewMaxStrands) : o.previewMaxStrands;
+      this.emit(job, { ...job.growth, maxStrands: cap }, p, false, t0);
       return;
     }
-    case 'solve': {
-      if (!state.initialised) {
-        post({ type: 'error', id: msg.id, message: 'Solver is not initialised' });
-        return;
+    this.post({ type: 'progress', id: job.id, phase: 'solve', fraction: 0.05 });
+    let p = this.engine.iterate(o.firstLookIterations, o.tolerance);
+    if (!p.converged) {
+      this.emit(job, job.growth, p, false, t0);
+      while (!p.converged) {
+        await o.yieldNow();
+        if (this.superseded()) return;
+        p = this.engine.iterate(o.sliceIterations, o.tolerance);
+        this.post({
+          type: 'progress',
+          id: job.id,
+          phase: 'solve',
+          fraction: Math.min(0.95, Math.max(0.05, 1 - Math.log10(Math.max(p.errorEstimate, o.tolerance)) / Math.log10(o.tolerance))),
+        });
       }
-      try {
-        post({ type: 'progress', id: msg.id, phase: 'constraints', fraction: 0 });
-        state.engine.setCurves(msg.curves);
-        post({ type: 'progress', id: msg.id, phase: 'solve', fraction: 0.1 });
-        state.engine.solve();
-        post({ type: 'progress', id: msg.id, phase: 'grow', fraction: 0.8 });
-        const t0 = now();
-        const strands = state.engine.grow(msg.growth);
-        const growMs = now() - t0;
-        const stats = { ...state.engine.stats(), growMs };
-        const result: Extract<FromWorker, { type: 'result' }> = {
-          type: 'result',
-          id: msg.id,
-          strands,
-          constraints: state.engine.constraints(),
-          field: msg.wantField ? state.engine.field() : null,
-          stats,
-        };
-        post(result);
-      } catch (e) {
-        post({ type: 'error', id: msg.id, message: errorMessage(e) });
-      }
-      return;
+      await o.yieldNow();
+      if (this.superseded()) return;
     }
+    this.emit(job, job.growth, p, true, t0);
+  }
+
+  private emit(job: SolveMsg, growth: GrowthParams, p: IterateProgress, final: boolean, t0: number): void {
+    this.post({ type: 'progress', id: job.id, phase: 'grow', fraction: 0.95 });
+    const g0 = this.opts.now();
+    const strands = this.engine.grow(growth);
+    const growMs = this.opts.now() - g0;
+    const stats = {
+      ...this.engine.stats(),
+      iterations: p.iterations,
+      errorEstimate: p.converged ? Math.min(p.errorEstimate, this.opts.tolerance) : p.errorEstimate,
+      solveMs: g0 - t0,
+      growMs,
+    };
+    this.post({
+      type: 'result',
+      id: job.id,
+      strands,
+      constraints: this.engine.constraints(),
+      field: job.wantField ? this.engine.field() : null,
+      stats,
+      final,
+    });
   }
 }
