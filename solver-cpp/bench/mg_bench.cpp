@@ -78,7 +78,11 @@ int main(int argc, char** argv) {
       addStroke(g, rng, stroke, edited, used);
       const ConstraintSet c0 = normalizeConstraints(base), c1 = normalizeConstraints(edited);
 
-      MgPcgSolver s;
+      MultigridOptions mo;
+      if (const char* e = std::getenv("MG_SYM")) mo.symmetricSweeps = std::atoi(e) != 0;
+      if (const char* e = std::getenv("MG_SWEEPS")) mo.sweeps = std::atoi(e);
+      if (const char* e = std::getenv("MG_COARSEST")) mo.coarsestMaxPoints = std::atoi(e);
+      MgPcgSolver s(mo);
       auto t0 = Clock::now();
       if (!s.setGrid(g, kDefaultOmega).ok()) return 1;
       const double setupMs = ms(t0, Clock::now());
@@ -88,7 +92,7 @@ int main(int argc, char** argv) {
       s.field(prev);
 
       // Reference for the edited constraints: iterate far, then keep the field.
-      MgPcgSolver ref;
+      MgPcgSolver ref(mo);
       ref.setGrid(g, kDefaultOmega);
       ref.setConstraints(c1);
       ref.iterate(400, 1e-14);
