@@ -80,6 +80,7 @@ int main(int argc, char** argv) {
 
       MultigridOptions mo;
       if (const char* e = std::getenv("MG_SYM")) mo.symmetricSweeps = std::atoi(e) != 0;
+      if (const char* e = std::getenv("MG_CSYM")) mo.coarseSymmetricSweeps = std::atoi(e) != 0;
       if (const char* e = std::getenv("MG_SWEEPS")) mo.sweeps = std::atoi(e);
       if (const char* e = std::getenv("MG_COARSEST")) mo.coarsestMaxPoints = std::atoi(e);
       MgPcgSolver s(mo);

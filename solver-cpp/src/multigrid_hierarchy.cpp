@@ -317,6 +317,9 @@ void MultigridHierarchy::applyFine(const double* x, double* y) {
 
 // One Gauss-Seidel sweep on M x = b, keeping fine_.L = D x exact: the update delta at p
 // changes L_p by -delta and L_q by inv_q * delta for the 6 neighbours q.
+// Along a line, L at the previous and the current point stay in registers (carried from one
+// point to the next), so the only serial dependency is delta_{p-1} -> delta_p through a few
+// flops instead of a store and reload; everything read from the other lines is off that path.
 void MultigridHierarchy::fineSweep(bool forward, double* x, const double* b) {
   Fine& f = fine_;
   const int64_t sy = f.layout.sy, sz = f.layout.sz;
@@ -325,39 +328,88 @@ void MultigridHierarchy::fineSweep(bool forward, double* x, const double* b) {
   const double* invDiag = f.invDiag.data();
   double* L = f.L.data();
   const int nx = grid_.nx, ny = grid_.ny, nz = grid_.nz;
+  const int64_t step = forward ? 1 : -1;  // along x
   for (int kk = 0; kk < nz; ++kk) {
     const int k = forward ? kk : nz - 1 - kk;
     for (int jj = 0; jj < ny; ++jj) {
       const int j = forward ? jj : ny - 1 - jj;
-      const int64_t base = f.layout.offset + sy * j + sz * k;
+      const int64_t first = f.layout.offset + sy * j + sz * k + (forward ? 0 : nx - 1);
+      // prev = the point before `first` in sweep order (a ghost), cur = first.
+      double Lprev[3], Lcur[3];
+      for (int c = 0; c < 3; ++c) {
+        Lprev[c] = L[3 * (first - step) + c];
+        Lcur[c] = L[3 * first + c];
+      }
       for (int ii = 0; ii < nx; ++ii) {
-        const int64_t p = base + (forward ? ii : nx - 1 - ii);
-        const double i0 = inv[p - 1], i1 = inv[p + 1], i2 = inv[p - sy], i3 = inv[p + sy],
+        const int64_t p = first + step * ii;
+        const int64_t pb = p - step, pn = p + step;  // previous / next in sweep order
+        const double ib = inv[pb], in = inv[pn], i2 = inv[p - sy], i3 = inv[p + sy],
                      i4 = inv[p - sz], i5 = inv[p + sz];
-        double* Lp = L + 3 * p;
         double* xp = x + 3 * p;
         const double* bp = b + 3 * p;
+        double* Ln = L + 3 * pn;
         const double wp = w[p], dp = invDiag[p];
         for (int c = 0; c < 3; ++c) {
-          const double dtl = i0 * Lp[c - 3] + i1 * Lp[c + 3] + i2 * Lp[c - 3 * sy] +
-                             i3 * Lp[c + 3 * sy] + i4 * Lp[c - 3 * sz] + i5 * Lp[c + 3 * sz] -
-                             Lp[c];
-          const double d = (bp[c] - dtl - wp * xp[c]) * dp;
+          const double Lnext = Ln[c];
+          // Off the serial path: everything but the previous and current point's L.
+          const double rest =
+              bp[c] - wp * xp[c] -
+              ((in * Lnext + i2 * L[3 * (p - sy) + c]) +
+               (i3 * L[3 * (p + sy) + c] + i4 * L[3 * (p - sz) + c]) + i5 * L[3 * (p + sz) + c]);
+          const double d = (rest + Lcur[c] - ib * Lprev[c]) * dp;
           xp[c] += d;
-          Lp[c] -= d;
-          Lp[c - 3] += i0 * d;
-          Lp[c + 3] += i1 * d;
-          Lp[c - 3 * sy] += i2 * d;
-          Lp[c + 3 * sy] += i3 * d;
-          Lp[c - 3 * sz] += i4 * d;
-          Lp[c + 3 * sz] += i5 * d;
+          L[3 * pb + c] = Lprev[c] + ib * d;  // the previous point's L is final now
+          Lprev[c] = Lcur[c] - d;
+          Lcur[c] = Lnext + in * d;
+          L[3 * (p - sy) + c] += i2 * d;
+          L[3 * (p + sy) + c] += i3 * d;
+          L[3 * (p - sz) + c] += i4 * d;
+          L[3 * (p + sz) + c] += i5 * d;
         }
+      }
+      const int64_t last = first + step * (nx - 1);
+      for (int c = 0; c < 3; ++c) {
+        L[3 * last + c] = Lprev[c];
+        L[3 * (last + step) + c] = Lcur[c];  // ghost: inv there is 0, stays 0
       }
     }
   }
 }
 
 // ---- coarse levels, CSR --------------------------------------------------------------------
+
+namespace {
+
+// Row r of A (CSR) times x (rows of 3): two accumulator sets halve the add-latency chain.
+inline void rowDot3(const int64_t* ptr, const int* col, const double* val, const double* x, int r,
+                    double& o0, double& o1, double& o2) {
+  double a0 = 0, a1 = 0, a2 = 0, b0 = 0, b1 = 0, b2 = 0;
+  int64_t e = ptr[r];
+  const int64_t end = ptr[r + 1];
+  for (; e + 1 < end; e += 2) {
+    const double va = val[e], vb = val[e + 1];
+    const double* xa = x + 3 * int64_t(col[e]);
+    const double* xb = x + 3 * int64_t(col[e + 1]);
+    a0 += va * xa[0];
+    a1 += va * xa[1];
+    a2 += va * xa[2];
+    b0 += vb * xb[0];
+    b1 += vb * xb[1];
+    b2 += vb * xb[2];
+  }
+  if (e < end) {
+    const double va = val[e];
+    const double* xa = x + 3 * int64_t(col[e]);
+    a0 += va * xa[0];
+    a1 += va * xa[1];
+    a2 += va * xa[2];
+  }
+  o0 = a0 + b0;
+  o1 = a1 + b1;
+  o2 = a2 + b2;
+}
+
+}  // namespace
 
 void MultigridHierarchy::coarseSweep(int l, bool forward) {
   Level& lv = levels_[l];
@@ -367,20 +419,15 @@ void MultigridHierarchy::coarseSweep(int l, bool forward) {
   const double* val = lv.A.val.data();
   double* x = lv.x.data();
   const double* b = lv.b.data();
+  const double* invDiag = lv.invDiag.data();
   for (int rr = 0; rr < n; ++rr) {
     const int r = forward ? rr : n - 1 - rr;
-    double s0 = b[3 * r], s1 = b[3 * r + 1], s2 = b[3 * r + 2];
-    for (int64_t e = ptr[r]; e < ptr[r + 1]; ++e) {
-      const double a = val[e];
-      const double* xc = x + 3 * int64_t(col[e]);
-      s0 -= a * xc[0];
-      s1 -= a * xc[1];
-      s2 -= a * xc[2];
-    }
-    const double d = lv.invDiag[r];
-    x[3 * r] += s0 * d;
-    x[3 * r + 1] += s1 * d;
-    x[3 * r + 2] += s2 * d;
+    double s0, s1, s2;
+    rowDot3(ptr, col, val, x, r, s0, s1, s2);
+    const double d = invDiag[r];
+    x[3 * r] += (b[3 * r] - s0) * d;
+    x[3 * r + 1] += (b[3 * r + 1] - s1) * d;
+    x[3 * r + 2] += (b[3 * r + 2] - s2) * d;
   }
 }
 
@@ -388,17 +435,11 @@ void MultigridHierarchy::coarseResidual(int l) {
   Level& lv = levels_[l];
   const int n = lv.A.rows;
   for (int r = 0; r < n; ++r) {
-    double s0 = lv.b[3 * r], s1 = lv.b[3 * r + 1], s2 = lv.b[3 * r + 2];
-    for (int64_t e = lv.A.ptr[r]; e < lv.A.ptr[r + 1]; ++e) {
-      const double a = lv.A.val[e];
-      const double* xc = lv.x.data() + 3 * int64_t(lv.A.col[e]);
-      s0 -= a * xc[0];
-      s1 -= a * xc[1];
-      s2 -= a * xc[2];
-    }
-    lv.res[3 * r] = s0;
-    lv.res[3 * r + 1] = s1;
-    lv.res[3 * r + 2] = s2;
+    double s0, s1, s2;
+    rowDot3(lv.A.ptr.data(), lv.A.col.data(), lv.A.val.data(), lv.x.data(), r, s0, s1, s2);
+    lv.res[3 * r] = lv.b[3 * r] - s0;
+    lv.res[3 * r + 1] = lv.b[3 * r + 1] - s1;
+    lv.res[3 * r + 2] = lv.b[3 * r + 2] - s2;
   }
 }
 
@@ -420,16 +461,16 @@ void MultigridHierarchy::cycle(int l) {
   std::fill(lv.x.begin(), lv.x.end(), 0.0);
   for (int s = 0; s < opt_.sweeps; ++s) {
     coarseSweep(l, true);
-    if (opt_.symmetricSweeps) coarseSweep(l, false);
+    if (opt_.coarseSymmetricSweeps) coarseSweep(l, false);
   }
   coarseResidual(l);
   const Transfer3D& t = transfers_[l];
   restrictTranspose(t, lv.res.data(), BoxLayout::dense(lv.nx, lv.ny, lv.nz),
-                    levels_[l + 1].b.data());
+                    levels_[l + 1].b.data(), work_);
   cycle(l + 1);
-  prolongAdd(t, levels_[l + 1].x.data(), lv.x.data(), BoxLayout::dense(lv.nx, lv.ny, lv.nz));
+  prolongAdd(t, levels_[l + 1].x.data(), lv.x.data(), BoxLayout::dense(lv.nx, lv.ny, lv.nz), work_);
   for (int s = 0; s < opt_.sweeps; ++s) {
-    if (opt_.symmetricSweeps) coarseSweep(l, true);
+    if (opt_.coarseSymmetricSweeps) coarseSweep(l, true);
     coarseSweep(l, false);
   }
 }
@@ -453,9 +494,9 @@ void MultigridHierarchy::vcycle(const double* r, double* z) {
     if (opt_.symmetricSweeps) fineSweep(false, z, r);
   }
   fineResidual(z, r, f.res.data());
-  restrictTranspose(transfers_[0], f.res.data(), f.layout, levels_[1].b.data());
+  restrictTranspose(transfers_[0], f.res.data(), f.layout, levels_[1].b.data(), work_);
   cycle(1);
-  prolongAdd(transfers_[0], levels_[1].x.data(), z, f.layout);
+  prolongAdd(transfers_[0], levels_[1].x.data(), z, f.layout, work_);
   computeL(z, f.L.data());
   for (int s = 0; s < opt_.sweeps; ++s) {
     if (opt_.symmetricSweeps) fineSweep(true, z, r);

@@ -33,6 +33,8 @@ struct MultigridOptions {
   // true: each step is a symmetric Gauss-Seidel sweep (forward then backward) on both sides;
   // false: pre-smoothing forward, post-smoothing backward (also symmetric overall, cheaper).
   bool symmetricSweeps = true;
+  // The same choice for the coarse (CSR) levels, where a sweep costs more per point.
+  bool coarseSymmetricSweeps = true;
 };
 
 class MultigridHierarchy {
@@ -108,6 +110,7 @@ class MultigridHierarchy {
   std::vector<Level> levels_;
   std::vector<Transfer3D> transfers_;
   std::vector<std::vector<Comp1>> compX_, compY_, compZ_;  // per level
+  TransferWork work_;
   Eigen::MatrixXd coarsestDense_;
   Eigen::LLT<Eigen::MatrixXd> coarsestLlt_;
   bool coarsestDirty_ = true;

@@ -43,11 +43,17 @@ struct Transfer3D {
 };
 Transfer3D makeTransfer(int nx, int ny, int nz);
 
+// Scratch space of the axis-by-axis transfers (reused between calls).
+struct TransferWork {
+  std::vector<double> t1, t2;
+};
+
 // fine += P coarse; coarse is dense (x.nc * y.nc * z.nc rows of 3), fine in `layout`.
-void prolongAdd(const Transfer3D& t, const double* coarse, double* fine, const BoxLayout& layout);
+void prolongAdd(const Transfer3D& t, const double* coarse, double* fine, const BoxLayout& layout,
+                TransferWork& work);
 // coarse = P^T fine (overwritten).
 void restrictTranspose(const Transfer3D& t, const double* fine, const BoxLayout& layout,
-                       double* coarse);
+                       double* coarse, TransferWork& work);
 // P as a sparse matrix (fine dense index x coarse dense index), zero weights left out.
 Csr interpolationMatrix(const Transfer3D& t);
 
