@@ -1,0 +1,220 @@
+#include "mg_pcg_solver.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace hairsketch {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double msSince(Clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+constexpr double kEstimateSafety = 2.0;
+constexpr double kRhoMin = 0.3, kRhoMax = 0.95, kRhoFirst = 0.9;
+
+// Column-wise dot products of two padded n x 3 arrays.
+void dots3(const std::vector<double>& a, const std::vector<double>& b, double out[3]) {
+  double s0 = 0, s1 = 0, s2 = 0;
+  const size_t n = a.size() / 3;
+  for (size_t i = 0; i < n; ++i) {
+    s0 += a[3 * i] * b[3 * i];
+    s1 += a[3 * i + 1] * b[3 * i + 1];
+    s2 += a[3 * i + 2] * b[3 * i + 2];
+  }
+  out[0] = s0;
+  out[1] = s1;
+  out[2] = s2;
+}
+
+}  // namespace
+
+Status MgPcgSolver::setGrid(const Grid& grid, double omega) {
+  if (!grid.valid()) return Status::Error(StatusCode::InvalidInput, "grid must be at least 2^3");
+  if (!std::isfinite(omega) || omega <= 0)
+    return Status::Error(StatusCode::InvalidInput, "omega must be finite and positive");
+  if (grid.size() > int64_t(1) << 28)
+    return Status::Error(StatusCode::OutOfMemory, "grid too large for the multigrid solver");
+  const auto t0 = Clock::now();
+  Status s = mg_.build(grid, mgOptions_);
+  if (!s.ok()) return s;
+  grid_ = grid;
+  omega_ = omega;
+  hasGrid_ = true;
+  set_.clear();
+  const size_t m = 3 * size_t(mg_.paddedRows());
+  for (auto* v : {&x_, &b_, &r_, &z_, &p_, &q_}) v->assign(m, 0.0);
+  runActive_ = false;
+  progress_ = MgProgress();
+  progress_.errorEstimate = 0;
+  progress_.converged = true;
+  stats_ = SolveStats();
+  stats_.method = "mg-pcg";
+  stats_.setupMs = msSince(t0);
+  return Status::Ok();
+}
+
+Status MgPcgSolver::setConstraints(const ConstraintSet& input) {
+  if (!hasGrid_) return Status::Error(StatusCode::InvalidInput, "setGrid first");
+  const auto t0 = Clock::now();
+  Status s = validateConstraints(grid_, input);
+  if (!s.ok()) return s;
+  bool normal = true;
+  for (size_t i = 1; i < input.size(); ++i) normal = normal && input[i - 1].index < input[i].index;
+  const ConstraintSet next = normal ? input : normalizeConstraints(input);
+
+  const ConstraintDiff d = diffConstraints(set_, next);
+  const double w = omega_ * omega_;
+  for (int p : d.removed)
+    if (!(s = mg_.setPenalty(p, 0.0)).ok()) return s;
+  for (int p : d.added)
+    if (!(s = mg_.setPenalty(p, w)).ok()) return s;
+  set_ = next;
+  std::fill(b_.begin(), b_.end(), 0.0);
+  for (const Constraint& c : set_) {
+    const int64_t r = mg_.paddedRow(c.index);
+    for (int k = 0; k < 3; ++k) b_[3 * r + k] = w * c.target[k];
+  }
+  if (set_.empty()) {
+    std::fill(x_.begin(), x_.end(), 0.0);
+  } else if (!(s = mg_.prepare()).ok()) {
+    return s;
+  }
+  runActive_ = false;
+  progress_ = MgProgress();
+  stats_.method = "mg-pcg";
+  stats_.added = int(d.added.size());
+  stats_.removed = int(d.removed.size());
+  stats_.changed = int(d.changed.size());
+  stats_.iterations = 0;
+  stats_.setupMs = msSince(t0);
+  return Status::Ok();
+}
+
+Status MgPcgSolver::startRun() {
+  mg_.applyFine(x_.data(), q_.data());
+  for (size_t i = 0; i < r_.size(); ++i) r_[i] = b_[i] - q_[i];
+  mg_.vcycle(r_.data(), z_.data());
+  p_ = z_;
+  dots3(r_, z_, gamma_);
+  double bb[3];
+  dots3(b_, b_, bb);
+  bnorm2_ = bb[0] + bb[1] + bb[2];
+  for (auto& h : steps_) h.clear();
+  progress_ = MgProgress();
+  runActive_ = true;
+  return Status::Ok();
+}
+
+void MgPcgSolver::updateEstimate() {
+  double est2 = 0;
+  for (int c = 0; c < 3; ++c) {
+    const std::vector<double>& h = steps_[c];
+    if (h.empty() || h.back() == 0.0) continue;
+    const size_t k = h.size();
+    double rho = kRhoFirst;
+    if (k >= 2) {
+      const size_t m = std::min<size_t>(3, k - 1);
+      const double prev = h[k - 1 - m];
+      rho = prev > 0 ? std::pow(h.back() / prev, 1.0 / double(m)) : kRhoMax;
+      rho = std::clamp(rho, kRhoMin, kRhoMax);
+    }
+    const double e = h.back() * rho / (1.0 - rho);
+    est2 += e * e;
+  }
+  double xx[3];
+  dots3(x_, x_, xx);
+  const double xn = std::sqrt(xx[0] + xx[1] + xx[2]);
+  const double est = kEstimateSafety * std::sqrt(est2);
+  progress_.errorEstimate =
+      est == 0 ? 0 : (xn > 0 ? est / xn : std::numeric_limits<double>::infinity());
+  double rr[3];
+  dots3(r_, r_, rr);
+  progress_.relResidual = bnorm2_ > 0 ? std::sqrt((rr[0] + rr[1] + rr[2]) / bnorm2_) : 0;
+}
+
+Status MgPcgSolver::iterate(int maxIterations, double tolerance, MgProgress* out) {
+  if (!hasGrid_) return Status::Error(StatusCode::InvalidInput, "setGrid first");
+  const auto t0 = Clock::now();
+  if (set_.empty()) {  // no constraints: the field is zero by definition
+    progress_ = MgProgress();
+    progress_.errorEstimate = 0;
+    progress_.converged = true;
+    if (out) *out = progress_;
+    return Status::Ok();
+  }
+  if (!runActive_) startRun();
+  const size_t rows = r_.size() / 3;
+  int done = 0;
+  auto isConverged = [&] {
+    // At least two iterations, so that the rate estimate has seen one ratio (unless exact).
+    return progress_.errorEstimate <= tolerance &&
+           (progress_.iterations >= 2 || progress_.errorEstimate == 0);
+  };
+  while (done < maxIterations && !(tolerance > 0 && isConverged())) {
+    mg_.applyFine(p_.data(), q_.data());
+    double pq[3], pp[3], alpha[3];
+    dots3(p_, q_, pq);
+    dots3(p_, p_, pp);
+    for (int c = 0; c < 3; ++c) {
+      alpha[c] = (gamma_[c] > 0 && pq[c] > 0 && std::isfinite(gamma_[c] / pq[c]))
+                     ? gamma_[c] / pq[c]
+                     : 0.0;
+      steps_[c].push_back(std::abs(alpha[c]) * std::sqrt(pp[c]));
+    }
+    for (size_t i = 0; i < rows; ++i)
+      for (int c = 0; c < 3; ++c) {
+        x_[3 * i + c] += alpha[c] * p_[3 * i + c];
+        r_[3 * i + c] -= alpha[c] * q_[3 * i + c];
+      }
+    mg_.vcycle(r_.data(), z_.data());
+    double g[3], beta[3];
+    dots3(r_, z_, g);
+    for (int c = 0; c < 3; ++c) {
+      beta[c] = (gamma_[c] > 0 && alpha[c] != 0) ? g[c] / gamma_[c] : 0.0;
+      gamma_[c] = alpha[c] != 0 ? g[c] : 0.0;
+    }
+    for (size_t i = 0; i < rows; ++i)
+      for (int c = 0; c < 3; ++c) p_[3 * i + c] = z_[3 * i + c] + beta[c] * p_[3 * i + c];
+    ++done;
+    ++progress_.iterations;
+    updateEstimate();
+  }
+  progress_.converged = isConverged();
+  if (!std::isfinite(progress_.relResidual))
+    return Status::Error(StatusCode::NotConverged, "non-finite residual");
+  stats_.iterations = progress_.iterations;
+  stats_.residual = progress_.relResidual;
+  stats_.solveMs = msSince(t0);
+  if (out) *out = progress_;
+  return Status::Ok();
+}
+
+void MgPcgSolver::field(Field& T) const {
+  if (!hasGrid_) {
+    T.resize(0, 3);
+    return;
+  }
+  mg_.fromPadded(x_.data(), T);
+}
+
+Status MgPcgSolver::solve(Field& T) {
+  Status s = iterate(maxIterations_, tolerance_);
+  if (!s.ok()) return s;
+  field(T);
+  if (!progress_.converged)
+    return Status::Error(StatusCode::NotConverged,
+                         "error estimate " + std::to_string(progress_.errorEstimate) + " after " +
+                             std::to_string(progress_.iterations) + " iterations");
+  return Status::Ok();
+}
+
+size_t MgPcgSolver::memoryBytes() const {
+  return mg_.memoryBytes() +
+         (x_.size() + b_.size() + r_.size() + z_.size() + p_.size() + q_.size()) * sizeof(double) +
+         set_.size() * sizeof(Constraint);
+}
+
+}  // namespace hairsketch

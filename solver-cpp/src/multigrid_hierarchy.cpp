@@ -1,0 +1,507 @@
+#include "multigrid_hierarchy.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hairsketch {
+
+Status MultigridHierarchy::build(const Grid& grid, const MultigridOptions& options) {
+  if (!grid.valid()) return Status::Error(StatusCode::InvalidInput, "grid must be at least 2^3");
+  if (options.coarsestMaxPoints < 8 || options.sweeps < 1)
+    return Status::Error(StatusCode::InvalidInput, "bad multigrid options");
+  grid_ = grid;
+  opt_ = options;
+  levels_.clear();
+  transfers_.clear();
+
+  // Fine level: padded box and D's per-point weights.
+  Fine& f = fine_;
+  f = Fine();
+  f.px = grid.nx + 2;
+  f.py = grid.ny + 2;
+  f.pz = grid.nz + 2;
+  f.rows = int64_t(f.px) * f.py * f.pz;
+  f.layout = {
+      grid.nx, grid.ny, grid.nz, 1 + f.px + int64_t(f.px) * f.py, f.px, int64_t(f.px) * f.py};
+  f.inv.assign(f.rows, 0.0);
+  f.diagK.assign(f.rows, 0.0);
+  f.w.assign(f.rows, 0.0);
+  f.invDiag.assign(f.rows, 0.0);
+  f.L.assign(3 * f.rows, 0.0);
+  f.res.assign(3 * f.rows, 0.0);
+  const int64_t sy = f.layout.sy, sz = f.layout.sz;
+  for (int k = 0; k < grid.nz; ++k)
+    for (int j = 0; j < grid.ny; ++j)
+      for (int i = 0; i < grid.nx; ++i) {
+        const int cnt =
+            (i > 0) + (i + 1 < grid.nx) + (j > 0) + (j + 1 < grid.ny) + (k > 0) + (k + 1 < grid.nz);
+        f.inv[f.layout.offset + i + sy * j + sz * k] = 1.0 / cnt;
+      }
+  for (int k = 0; k < grid.nz; ++k)
+    for (int j = 0; j < grid.ny; ++j)
+      for (int i = 0; i < grid.nx; ++i) {
+        const int64_t p = f.layout.offset + i + sy * j + sz * k;
+        const double* v = f.inv.data();
+        f.diagK[p] = 1.0 + v[p - 1] * v[p - 1] + v[p + 1] * v[p + 1] + v[p - sy] * v[p - sy] +
+                     v[p + sy] * v[p + sy] + v[p - sz] * v[p - sz] + v[p + sz] * v[p + sz];
+        f.invDiag[p] = 1.0 / f.diagK[p];
+      }
+
+  // Level sizes.
+  Level l0;
+  l0.nx = grid.nx;
+  l0.ny = grid.ny;
+  l0.nz = grid.nz;
+  levels_.push_back(std::move(l0));
+  for (;;) {
+    const Level& last = levels_.back();
+    const int64_t size = int64_t(last.nx) * last.ny * last.nz;
+    if (size <= opt_.coarsestMaxPoints) break;
+    Level c;
+    c.nx = coarsenedSize(last.nx);
+    c.ny = coarsenedSize(last.ny);
+    c.nz = coarsenedSize(last.nz);
+    if (int64_t(c.nx) * c.ny * c.nz == size) break;  // nothing left to coarsen
+    transfers_.push_back(makeTransfer(last.nx, last.ny, last.nz));
+    levels_.push_back(std::move(c));
+  }
+
+  // Galerkin operators with W = 0: A_1 = (D P_0)^T (D P_0), A_{l+1} = P_l^T A_l P_l.
+  const Csr D = csrFromEigen(assembleLaplacian(grid));
+  if (levels_.size() == 1) {
+    levels_[0].A = multiplyCsr(transposeCsr(D), D);
+  } else {
+    const Csr G = multiplyCsr(D, interpolationMatrix(transfers_[0]));
+    levels_[1].A = multiplyCsr(transposeCsr(G), G);
+    for (size_t l = 1; l + 1 < levels_.size(); ++l) {
+      const Csr P = interpolationMatrix(transfers_[l]);
+      levels_[l + 1].A = multiplyCsr(transposeCsr(P), multiplyCsr(levels_[l].A, P));
+    }
+  }
+  for (size_t l = (levels_.size() == 1 ? 0 : 1); l < levels_.size(); ++l) finishLevel(levels_[l]);
+
+  // Composite 1D interpolation tables fine -> level l (identity for l = 0).
+  auto compose = [](int n, const std::vector<Interp1D*>& chain) {
+    std::vector<Comp1> out(n);
+    for (int i = 0; i < n; ++i) {
+      Comp1 c;
+      c.count = 1;
+      c.idx[0] = i;
+      c.w[0] = 1.0;
+      for (const Interp1D* t : chain) {
+        Comp1 d;
+        for (int a = 0; a < c.count; ++a) {
+          const int s = c.idx[a];
+          const int ids[2] = {t->i0[s], t->i1[s]};
+          const double ws[2] = {t->w0[s], t->w1[s]};
+          for (int b = 0; b < 2; ++b) {
+            const double w = c.w[a] * ws[b];
+            if (w == 0.0) continue;
+            int m = 0;
+            while (m < d.count && d.idx[m] != ids[b]) ++m;
+            if (m == d.count) {
+              // Nested nodes: never more than two coarse nodes per fine index.
+              if (d.count == 2) continue;
+              d.idx[d.count] = ids[b];
+              d.w[d.count++] = 0.0;
+            }
+            d.w[m] += w;
+          }
+        }
+        c = d;
+      }
+      out[i] = c;
+    }
+    return out;
+  };
+  compX_.assign(levels_.size(), {});
+  compY_.assign(levels_.size(), {});
+  compZ_.assign(levels_.size(), {});
+  for (size_t l = 0; l < levels_.size(); ++l) {
+    std::vector<Interp1D*> cx, cy, cz;
+    for (size_t m = 0; m < l; ++m) {
+      cx.push_back(&transfers_[m].x);
+      cy.push_back(&transfers_[m].y);
+      cz.push_back(&transfers_[m].z);
+    }
+    compX_[l] = compose(grid.nx, cx);
+    compY_[l] = compose(grid.ny, cy);
+    compZ_[l] = compose(grid.nz, cz);
+  }
+  coarsestDirty_ = true;
+  return Status::Ok();
+}
+
+void MultigridHierarchy::finishLevel(Level& lv) {
+  const int n = lv.A.rows;
+  lv.diagPos.assign(n, -1);
+  lv.invDiag.assign(n, 0.0);
+  for (int i = 0; i < n; ++i) {
+    lv.diagPos[i] = lv.A.find(i, i);
+    lv.invDiag[i] = 1.0 / lv.A.val[lv.diagPos[i]];
+  }
+  lv.x.assign(3 * size_t(n), 0.0);
+  lv.b.assign(3 * size_t(n), 0.0);
+  lv.res.assign(3 * size_t(n), 0.0);
+}
+
+void MultigridHierarchy::levelDims(int l, int& nx, int& ny, int& nz) const {
+  nx = levels_[l].nx;
+  ny = levels_[l].ny;
+  nz = levels_[l].nz;
+}
+
+int64_t MultigridHierarchy::paddedRow(int p) const {
+  const int i = p % grid_.nx, j = (p / grid_.nx) % grid_.ny, k = p / (grid_.nx * grid_.ny);
+  return fine_.layout.offset + i + fine_.layout.sy * j + fine_.layout.sz * k;
+}
+
+void MultigridHierarchy::toPadded(const Field& f, double* x) const {
+  std::fill(x, x + 3 * fine_.rows, 0.0);
+  int p = 0;
+  for (int k = 0; k < grid_.nz; ++k)
+    for (int j = 0; j < grid_.ny; ++j) {
+      double* row = x + 3 * (fine_.layout.offset + fine_.layout.sy * j + fine_.layout.sz * k);
+      for (int i = 0; i < grid_.nx; ++i, ++p)
+        for (int c = 0; c < 3; ++c) row[3 * i + c] = f(p, c);
+    }
+}
+
+void MultigridHierarchy::fromPadded(const double* x, Field& f) const {
+  f.resize(grid_.size(), 3);
+  int p = 0;
+  for (int k = 0; k < grid_.nz; ++k)
+    for (int j = 0; j < grid_.ny; ++j) {
+      const double* row = x + 3 * (fine_.layout.offset + fine_.layout.sy * j + fine_.layout.sz * k);
+      for (int i = 0; i < grid_.nx; ++i, ++p)
+        for (int c = 0; c < 3; ++c) f(p, c) = row[3 * i + c];
+    }
+}
+
+Status MultigridHierarchy::setPenalty(int p, double w) {
+  if (p < 0 || p >= grid_.size() || !std::isfinite(w) || w < 0)
+    return Status::Error(StatusCode::InvalidInput, "bad penalty update");
+  const int64_t r = paddedRow(p);
+  const double delta = w - fine_.w[r];
+  if (delta == 0.0) return Status::Ok();
+  fine_.w[r] = w;
+  fine_.invDiag[r] = 1.0 / (fine_.diagK[r] + w);
+  const int i = p % grid_.nx, j = (p / grid_.nx) % grid_.ny, k = p / (grid_.nx * grid_.ny);
+  const size_t first = levels_.size() == 1 ? 0 : 1;
+  for (size_t l = first; l < levels_.size(); ++l) {
+    Level& lv = levels_[l];
+    const Comp1 &cx = compX_[l][i], &cy = compY_[l][j], &cz = compZ_[l][k];
+    int idx[8];
+    double v[8];
+    int m = 0;
+    for (int c = 0; c < cz.count; ++c)
+      for (int b = 0; b < cy.count; ++b)
+        for (int a = 0; a < cx.count; ++a) {
+          idx[m] = cx.idx[a] + lv.nx * (cy.idx[b] + lv.ny * cz.idx[c]);
+          v[m++] = cx.w[a] * cy.w[b] * cz.w[c];
+        }
+    for (int a = 0; a < m; ++a) {
+      for (int b = 0; b < m; ++b) {
+        const int64_t pos = lv.A.find(idx[a], idx[b]);
+        if (pos < 0) return Status::Error(StatusCode::InvalidInput, "penalty outside pattern");
+        lv.A.val[pos] += delta * v[a] * v[b];
+      }
+    }
+    for (int a = 0; a < m; ++a) lv.invDiag[idx[a]] = 1.0 / lv.A.val[lv.diagPos[idx[a]]];
+  }
+  coarsestDirty_ = true;
+  return Status::Ok();
+}
+
+Status MultigridHierarchy::prepare() {
+  if (!coarsestDirty_) return Status::Ok();
+  const Level& c = levels_.back();
+  const int n = c.A.rows;
+  coarsestDense_.setZero(n, n);
+  for (int r = 0; r < n; ++r)
+    for (int64_t e = c.A.ptr[r]; e < c.A.ptr[r + 1]; ++e)
+      coarsestDense_(r, c.A.col[e]) = c.A.val[e];
+  coarsestLlt_.compute(coarsestDense_);
+  if (coarsestLlt_.info() != Eigen::Success)
+    return Status::Error(StatusCode::NotPositiveDefinite,
+                         "coarsest level is not positive definite");
+  coarsestDirty_ = false;
+  return Status::Ok();
+}
+
+size_t MultigridHierarchy::memoryBytes() const {
+  size_t b = (fine_.inv.size() + fine_.diagK.size() + fine_.w.size() + fine_.invDiag.size() +
+              fine_.L.size() + fine_.res.size()) *
+             sizeof(double);
+  for (const Level& l : levels_)
+    b += l.A.memoryBytes() + l.diagPos.size() * sizeof(int64_t) +
+         (l.invDiag.size() + l.x.size() + l.b.size() + l.res.size()) * sizeof(double);
+  for (const Transfer3D& t : transfers_)
+    b += (t.x.n + t.y.n + t.z.n) * (2 * sizeof(int) + 2 * sizeof(double));
+  for (size_t l = 0; l < compX_.size(); ++l)
+    b += (compX_[l].size() + compY_[l].size() + compZ_[l].size()) * sizeof(Comp1);
+  b += size_t(coarsestDense_.size()) * 2 * sizeof(double);
+  return b;
+}
+
+// ---- fine level, matrix-free -------------------------------------------------------------
+
+void MultigridHierarchy::computeL(const double* x, double* L) const {
+  const Fine& f = fine_;
+  const int64_t sy = f.layout.sy, sz = f.layout.sz;
+  const double* inv = f.inv.data();
+  for (int k = 0; k < grid_.nz; ++k)
+    for (int j = 0; j < grid_.ny; ++j) {
+      const int64_t base = f.layout.offset + sy * j + sz * k;
+      for (int i = 0; i < grid_.nx; ++i) {
+        const int64_t p = base + i;
+        const double* xp = x + 3 * p;
+        for (int c = 0; c < 3; ++c) {
+          const double s = xp[c - 3] + xp[c + 3] + xp[c - 3 * sy] + xp[c + 3 * sy] +
+                           xp[c - 3 * sz] + xp[c + 3 * sz];
+          L[3 * p + c] = inv[p] * s - xp[c];
+        }
+      }
+    }
+}
+
+// res = b - (D^T L + w x), with L = D x already computed.
+void MultigridHierarchy::fineResidual(const double* x, const double* b, double* res) const {
+  const Fine& f = fine_;
+  const int64_t sy = f.layout.sy, sz = f.layout.sz;
+  const double* inv = f.inv.data();
+  const double* w = f.w.data();
+  const double* L = f.L.data();
+  for (int k = 0; k < grid_.nz; ++k)
+    for (int j = 0; j < grid_.ny; ++j) {
+      const int64_t base = f.layout.offset + sy * j + sz * k;
+      for (int i = 0; i < grid_.nx; ++i) {
+        const int64_t p = base + i;
+        const double i0 = inv[p - 1], i1 = inv[p + 1], i2 = inv[p - sy], i3 = inv[p + sy],
+                     i4 = inv[p - sz], i5 = inv[p + sz];
+        const double* Lp = L + 3 * p;
+        for (int c = 0; c < 3; ++c) {
+          const double dtl = i0 * Lp[c - 3] + i1 * Lp[c + 3] + i2 * Lp[c - 3 * sy] +
+                             i3 * Lp[c + 3 * sy] + i4 * Lp[c - 3 * sz] + i5 * Lp[c + 3 * sz] -
+                             Lp[c];
+          res[3 * p + c] = b[3 * p + c] - dtl - w[p] * x[3 * p + c];
+        }
+      }
+    }
+}
+
+void MultigridHierarchy::applyFine(const double* x, double* y) {
+  computeL(x, fine_.L.data());
+  const Fine& f = fine_;
+  const int64_t sy = f.layout.sy, sz = f.layout.sz;
+  const double* inv = f.inv.data();
+  const double* w = f.w.data();
+  const double* L = f.L.data();
+  for (int k = 0; k < grid_.nz; ++k)
+    for (int j = 0; j < grid_.ny; ++j) {
+      const int64_t base = f.layout.offset + sy * j + sz * k;
+      for (int i = 0; i < grid_.nx; ++i) {
+        const int64_t p = base + i;
+        const double i0 = inv[p - 1], i1 = inv[p + 1], i2 = inv[p - sy], i3 = inv[p + sy],
+                     i4 = inv[p - sz], i5 = inv[p + sz];
+        const double* Lp = L + 3 * p;
+        for (int c = 0; c < 3; ++c) {
+          const double dtl = i0 * Lp[c - 3] + i1 * Lp[c + 3] + i2 * Lp[c - 3 * sy] +
+                             i3 * Lp[c + 3 * sy] + i4 * Lp[c - 3 * sz] + i5 * Lp[c + 3 * sz] -
+                             Lp[c];
+          y[3 * p + c] = dtl + w[p] * x[3 * p + c];
+        }
+      }
+    }
+}
+
+// One Gauss-Seidel sweep on M x = b, keeping fine_.L = D x exact: the update delta at p
+// changes L_p by -delta and L_q by inv_q * delta for the 6 neighbours q.
+// Along a line, L at the previous and the current point stay in registers (carried from one
+// point to the next), so the only serial dependency is delta_{p-1} -> delta_p through a few
+// flops instead of a store and reload; everything read from the other lines is off that path.
+void MultigridHierarchy::fineSweep(bool forward, double* x, const double* b) {
+  Fine& f = fine_;
+  const int64_t sy = f.layout.sy, sz = f.layout.sz;
+  const double* inv = f.inv.data();
+  const double* w = f.w.data();
+  const double* invDiag = f.invDiag.data();
+  double* L = f.L.data();
+  const int nx = grid_.nx, ny = grid_.ny, nz = grid_.nz;
+  const int64_t step = forward ? 1 : -1;  // along x
+  for (int kk = 0; kk < nz; ++kk) {
+    const int k = forward ? kk : nz - 1 - kk;
+    for (int jj = 0; jj < ny; ++jj) {
+      const int j = forward ? jj : ny - 1 - jj;
+      const int64_t first = f.layout.offset + sy * j + sz * k + (forward ? 0 : nx - 1);
+      // prev = the point before `first` in sweep order (a ghost), cur = first.
+      double Lprev[3], Lcur[3];
+      for (int c = 0; c < 3; ++c) {
+        Lprev[c] = L[3 * (first - step) + c];
+        Lcur[c] = L[3 * first + c];
+      }
+      for (int ii = 0; ii < nx; ++ii) {
+        const int64_t p = first + step * ii;
+        const int64_t pb = p - step, pn = p + step;  // previous / next in sweep order
+        const double ib = inv[pb], in = inv[pn], i2 = inv[p - sy], i3 = inv[p + sy],
+                     i4 = inv[p - sz], i5 = inv[p + sz];
+        double* xp = x + 3 * p;
+        const double* bp = b + 3 * p;
+        double* Ln = L + 3 * pn;
+        const double wp = w[p], dp = invDiag[p];
+        for (int c = 0; c < 3; ++c) {
+          const double Lnext = Ln[c];
+          // Off the serial path: everything but the previous and current point's L.
+          const double rest =
+              bp[c] - wp * xp[c] -
+              ((in * Lnext + i2 * L[3 * (p - sy) + c]) +
+               (i3 * L[3 * (p + sy) + c] + i4 * L[3 * (p - sz) + c]) + i5 * L[3 * (p + sz) + c]);
+          const double d = (rest + Lcur[c] - ib * Lprev[c]) * dp;
+          xp[c] += d;
+          L[3 * pb + c] = Lprev[c] + ib * d;  // the previous point's L is final now
+          Lprev[c] = Lcur[c] - d;
+          Lcur[c] = Lnext + in * d;
+          L[3 * (p - sy) + c] += i2 * d;
+          L[3 * (p + sy) + c] += i3 * d;
+          L[3 * (p - sz) + c] += i4 * d;
+          L[3 * (p + sz) + c] += i5 * d;
+        }
+      }
+      const int64_t last = first + step * (nx - 1);
+      for (int c = 0; c < 3; ++c) {
+        L[3 * last + c] = Lprev[c];
+        L[3 * (last + step) + c] = Lcur[c];  // ghost: inv there is 0, stays 0
+      }
+    }
+  }
+}
+
+// ---- coarse levels, CSR --------------------------------------------------------------------
+
+namespace {
+
+// Row r of A (CSR) times x (rows of 3): two accumulator sets halve the add-latency chain.
+inline void rowDot3(const int64_t* ptr, const int* col, const double* val, const double* x, int r,
+                    double& o0, double& o1, double& o2) {
+  double a0 = 0, a1 = 0, a2 = 0, b0 = 0, b1 = 0, b2 = 0;
+  int64_t e = ptr[r];
+  const int64_t end = ptr[r + 1];
+  for (; e + 1 < end; e += 2) {
+    const double va = val[e], vb = val[e + 1];
+    const double* xa = x + 3 * int64_t(col[e]);
+    const double* xb = x + 3 * int64_t(col[e + 1]);
+    a0 += va * xa[0];
+    a1 += va * xa[1];
+    a2 += va * xa[2];
+    b0 += vb * xb[0];
+    b1 += vb * xb[1];
+    b2 += vb * xb[2];
+  }
+  if (e < end) {
+    const double va = val[e];
+    const double* xa = x + 3 * int64_t(col[e]);
+    a0 += va * xa[0];
+    a1 += va * xa[1];
+    a2 += va * xa[2];
+  }
+  o0 = a0 + b0;
+  o1 = a1 + b1;
+  o2 = a2 + b2;
+}
+
+}  // namespace
+
+void MultigridHierarchy::coarseSweep(int l, bool forward) {
+  Level& lv = levels_[l];
+  const int n = lv.A.rows;
+  const int64_t* ptr = lv.A.ptr.data();
+  const int* col = lv.A.col.data();
+  const double* val = lv.A.val.data();
+  double* x = lv.x.data();
+  const double* b = lv.b.data();
+  const double* invDiag = lv.invDiag.data();
+  for (int rr = 0; rr < n; ++rr) {
+    const int r = forward ? rr : n - 1 - rr;
+    double s0, s1, s2;
+    rowDot3(ptr, col, val, x, r, s0, s1, s2);
+    const double d = invDiag[r];
+    x[3 * r] += (b[3 * r] - s0) * d;
+    x[3 * r + 1] += (b[3 * r + 1] - s1) * d;
+    x[3 * r + 2] += (b[3 * r + 2] - s2) * d;
+  }
+}
+
+void MultigridHierarchy::coarseResidual(int l) {
+  Level& lv = levels_[l];
+  const int n = lv.A.rows;
+  for (int r = 0; r < n; ++r) {
+    double s0, s1, s2;
+    rowDot3(lv.A.ptr.data(), lv.A.col.data(), lv.A.val.data(), lv.x.data(), r, s0, s1, s2);
+    lv.res[3 * r] = lv.b[3 * r] - s0;
+    lv.res[3 * r + 1] = lv.b[3 * r + 1] - s1;
+    lv.res[3 * r + 2] = lv.b[3 * r + 2] - s2;
+  }
+}
+
+void MultigridHierarchy::solveCoarsest() {
+  Level& c = levels_.back();
+  const int n = c.A.rows;
+  using Rm = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
+  Eigen::Map<const Rm> b(c.b.data(), n, 3);
+  Eigen::Map<Rm> x(c.x.data(), n, 3);
+  x = coarsestLlt_.solve(b);
+}
+
+void MultigridHierarchy::cycle(int l) {
+  Level& lv = levels_[l];
+  if (l + 1 == levels()) {
+    solveCoarsest();
+    return;
+  }
+  std::fill(lv.x.begin(), lv.x.end(), 0.0);
+  for (int s = 0; s < opt_.sweeps; ++s) {
+    coarseSweep(l, true);
+    if (opt_.coarseSymmetricSweeps) coarseSweep(l, false);
+  }
+  coarseResidual(l);
+  const Transfer3D& t = transfers_[l];
+  restrictTranspose(t, lv.res.data(), BoxLayout::dense(lv.nx, lv.ny, lv.nz),
+                    levels_[l + 1].b.data(), work_);
+  cycle(l + 1);
+  prolongAdd(t, levels_[l + 1].x.data(), lv.x.data(), BoxLayout::dense(lv.nx, lv.ny, lv.nz), work_);
+  for (int s = 0; s < opt_.sweeps; ++s) {
+    if (opt_.coarseSymmetricSweeps) coarseSweep(l, true);
+    coarseSweep(l, false);
+  }
+}
+
+void MultigridHierarchy::vcycle(const double* r, double* z) {
+  Fine& f = fine_;
+  std::fill(z, z + 3 * f.rows, 0.0);
+  if (levels_.size() == 1) {  // the whole problem is small: exact solve
+    Level& c = levels_[0];
+    Field tmp(grid_.size(), 3);
+    fromPadded(r, tmp);
+    std::copy(tmp.data(), tmp.data() + 3 * grid_.size(), c.b.begin());
+    solveCoarsest();
+    Eigen::Map<const Field> xs(c.x.data(), grid_.size(), 3);
+    toPadded(Field(xs), z);
+    return;
+  }
+  std::fill(f.L.begin(), f.L.end(), 0.0);  // L = D z = 0
+  for (int s = 0; s < opt_.sweeps; ++s) {
+    fineSweep(true, z, r);
+    if (opt_.symmetricSweeps) fineSweep(false, z, r);
+  }
+  fineResidual(z, r, f.res.data());
+  restrictTranspose(transfers_[0], f.res.data(), f.layout, levels_[1].b.data(), work_);
+  cycle(1);
+  prolongAdd(transfers_[0], levels_[1].x.data(), z, f.layout, work_);
+  computeL(z, f.L.data());
+  for (int s = 0; s < opt_.sweeps; ++s) {
+    if (opt_.symmetricSweeps) fineSweep(true, z, r);
+    fineSweep(false, z, r);
+  }
+}
+
+}  // namespace hairsketch

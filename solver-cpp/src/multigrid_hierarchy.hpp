@@ -1,0 +1,119 @@
+// Geometric multigrid hierarchy for M = D^T D + W (SPEC S2.3), W = diag(w), w_p = omega^2 on
+// constrained points, 0 elsewhere.
+//
+// Level 0 (fine) is matrix-free: vectors are n x 3 row-major on a box padded with one ghost
+// layer (ghost rows are always zero), so the 6-neighbour loops need no boundary tests; D and D^T
+// use a precomputed 1/|N(q)| per point (0 on ghosts). Gauss-Seidel keeps L = D x up to date, so
+// one point update reads and writes only 7 rows of L instead of the 25-point row of D^T D.
+// Levels l >= 1 are Galerkin operators A_{l+1} = P_l^T A_l P_l (A_1 = (D P_0)^T (D P_0) + P_0^T W
+// P_0) in CSR; the coarsest (at most `coarsestMaxPoints` points) is factored densely.
+// A penalty change at fine point p by delta changes every coarse operator by delta * v v^T, v the
+// composite interpolation row of p (at most 8 entries): setPenalty updates those 64 entries per
+// level in place, so an edit costs O(#changed points * levels) plus one small dense refactor.
+// vcycle() applies one symmetric V-cycle B (pre- and post-smoothing adjoint to each other, exact
+// coarsest solve), so B is symmetric positive definite and usable as a CG preconditioner.
+#pragma once
+
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+#include "field_system.hpp"
+#include "grid.hpp"
+#include "multigrid_sparse.hpp"
+#include "multigrid_transfer.hpp"
+#include "status.hpp"
+
+namespace hairsketch {
+
+struct MultigridOptions {
+  int coarsestMaxPoints = 512;  // coarsen until a level has at most this many points
+  int sweeps = 1;               // smoothing steps before and after the coarse correction
+  // true: each step is a symmetric Gauss-Seidel sweep (forward then backward) on both sides;
+  // false: pre-smoothing forward, post-smoothing backward (also symmetric overall, cheaper).
+  bool symmetricSweeps = true;
+  // The same choice for the coarse (CSR) levels, where a sweep costs more per point.
+  bool coarseSymmetricSweeps = true;
+};
+
+class MultigridHierarchy {
+ public:
+  // Builds levels, transfers and Galerkin operators for W = 0. InvalidInput on a bad grid.
+  Status build(const Grid& grid, const MultigridOptions& options = {});
+
+  int levels() const { return int(levels_.size()); }
+  // Box size of level l (0 = fine).
+  void levelDims(int l, int& nx, int& ny, int& nz) const;
+
+  // Fine vectors: paddedRows() rows of 3 doubles; grid point p lives at row paddedRow(p).
+  int64_t paddedRows() const { return fine_.rows; }
+  int64_t paddedRow(int p) const;
+  void toPadded(const Field& f, double* x) const;  // ghost rows set to zero
+  void fromPadded(const double* x, Field& f) const;
+
+  double penalty(int p) const { return fine_.w[paddedRow(p)]; }
+  // Sets w_p (fine) and updates all coarse operators locally. Call prepare() before vcycle().
+  Status setPenalty(int p, double w);
+  // Refactors the coarsest level if a penalty change reached it.
+  Status prepare();
+
+  // y = M x on padded fine vectors (x, y must not alias).
+  void applyFine(const double* x, double* y);
+  // z = B r, one V-cycle from a zero initial guess (r, z padded, must not alias).
+  void vcycle(const double* r, double* z);
+
+  // Galerkin operator of level l >= 1 (for the single-level case, level 0's assembled matrix).
+  const Csr& levelMatrix(int l) const { return levels_[l].A; }
+  // Transfer between level l (fine side) and l + 1 (coarse side).
+  const Transfer3D& transfer(int l) const { return transfers_[l]; }
+
+  size_t memoryBytes() const;
+
+ private:
+  struct Level {
+    int nx = 0, ny = 0, nz = 0;
+    Csr A;                          // l >= 1, or l = 0 when it is the only level
+    std::vector<int64_t> diagPos;   // position of A(i, i) in A.val
+    std::vector<double> invDiag;    // 1 / A(i, i)
+    std::vector<double> x, b, res;  // n x 3 work vectors (l >= 1)
+  };
+  struct Fine {
+    int px = 0, py = 0, pz = 0;
+    int64_t rows = 0;
+    BoxLayout layout;
+    std::vector<double> inv;      // 1/|N(q)| on real points, 0 on ghosts
+    std::vector<double> diagK;    // (D^T D)_pp = 1 + sum_q inv_q^2
+    std::vector<double> w;        // penalty
+    std::vector<double> invDiag;  // 1 / (diagK + w)
+    std::vector<double> L, res;   // padded x 3 work vectors
+  };
+  // Composite 1D interpolation from the fine axis to level l: at most 2 (index, weight) pairs.
+  struct Comp1 {
+    int count = 0;
+    int idx[2] = {0, 0};
+    double w[2] = {0, 0};
+  };
+
+  void computeL(const double* x, double* L) const;
+  void fineSweep(bool forward, double* x, const double* b);
+  void fineResidual(const double* x, const double* b, double* res) const;
+  void coarseSweep(int l, bool forward);
+  void coarseResidual(int l);
+  void cycle(int l);
+  void solveCoarsest();
+  static void finishLevel(Level& lv);
+
+  Grid grid_;
+  MultigridOptions opt_;
+  Fine fine_;
+  std::vector<Level> levels_;
+  std::vector<Transfer3D> transfers_;
+  std::vector<std::vector<Comp1>> compX_, compY_, compZ_;  // per level
+  TransferWork work_;
+  Eigen::MatrixXd coarsestDense_;
+  Eigen::LLT<Eigen::MatrixXd> coarsestLlt_;
+  bool coarsestDirty_ = true;
+};
+
+}  // namespace hairsketch

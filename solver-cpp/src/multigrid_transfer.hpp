@@ -1,0 +1,60 @@
+// Grid transfer operators of the multigrid hierarchy: trilinear interpolation P (coarse -> fine)
+// and its transpose R = P^T (fine -> coarse), for any box size n >= 2 per axis.
+//
+// Coarsening per axis: n -> nc = n/2 + 1 when n >= 3 (kept as is when n <= 2). Coarse node I sits
+// at fine index X_I = min(2I, n - 1): for odd n that is every other point, for even n the last
+// interval is one fine step instead of two. Every fine index lies between two consecutive coarse
+// nodes and gets the 1D linear weights; the 3D operator is the tensor product. Nodes are nested
+// from level to level, so the composite P of several levels also has at most 2 weights per axis.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "multigrid_sparse.hpp"
+
+namespace hairsketch {
+
+int coarsenedSize(int n);
+
+// 1D weights: fine index i -> w0[i] * coarse[i0[i]] + w1[i] * coarse[i1[i]] (w1 = 0, i1 = i0
+// when i coincides with a coarse node).
+struct Interp1D {
+  int n = 0, nc = 0;
+  std::vector<int> i0, i1;
+  std::vector<double> w0, w1;
+};
+Interp1D makeInterp1D(int n);
+
+// Where point (i, j, k) of an nx x ny x nz box lives in a row-major (points x 3) array:
+// row = offset + i + sy * j + sz * k. Lets the padded fine level and the dense coarse levels
+// share the transfer code.
+struct BoxLayout {
+  int nx = 0, ny = 0, nz = 0;
+  int64_t offset = 0, sy = 0, sz = 0;
+  static BoxLayout dense(int nx, int ny, int nz) {
+    return {nx, ny, nz, 0, int64_t(nx), int64_t(nx) * ny};
+  }
+};
+
+struct Transfer3D {
+  Interp1D x, y, z;
+  int coarseSize() const { return x.nc * y.nc * z.nc; }
+};
+Transfer3D makeTransfer(int nx, int ny, int nz);
+
+// Scratch space of the axis-by-axis transfers (reused between calls).
+struct TransferWork {
+  std::vector<double> t1, t2;
+};
+
+// fine += P coarse; coarse is dense (x.nc * y.nc * z.nc rows of 3), fine in `layout`.
+void prolongAdd(const Transfer3D& t, const double* coarse, double* fine, const BoxLayout& layout,
+                TransferWork& work);
+// coarse = P^T fine (overwritten).
+void restrictTranspose(const Transfer3D& t, const double* fine, const BoxLayout& layout,
+                       double* coarse, TransferWork& work);
+// P as a sparse matrix (fine dense index x coarse dense index), zero weights left out.
+Csr interpolationMatrix(const Transfer3D& t);
+
+}  // namespace hairsketch
