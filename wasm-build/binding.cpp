@@ -132,6 +132,19 @@ EMSCRIPTEN_KEEPALIVE int hs_engine_solve(EngineHandle* h) {
   return report(h->engine.solve());
 }
 
+// Progressive solve; the progress is read back with hs_engine_progress (iterations,
+// errorEstimate, converged as 0/1) into a 3-double buffer.
+EMSCRIPTEN_KEEPALIVE int hs_engine_iterate(EngineHandle* h, int maxIterations, double tolerance,
+                                           double* progressOut) {
+  if (!h) return fail("no engine");
+  IterateProgress p;
+  const int rc = report(h->engine.iterate(maxIterations, tolerance, p));
+  progressOut[0] = p.iterations;
+  progressOut[1] = p.errorEstimate;
+  progressOut[2] = p.converged ? 1 : 0;
+  return rc;
+}
+
 EMSCRIPTEN_KEEPALIVE int hs_engine_grow(EngineHandle* h, double thetaStepDeg, double phiStepDeg,
                                         double jitter, double seed, double stepFraction,
                                         double minMagnitude, double maxLength, int maxSegments,

@@ -27,6 +27,7 @@ export interface HairSolverModule {
     kinds: number, extend: number,
   ): number;
   _hs_engine_solve(h: number): number;
+  _hs_engine_iterate(h: number, maxIterations: number, tolerance: number, progressOut: number): number;
   _hs_engine_grow(
     h: number, thetaStepDeg: number, phiStepDeg: number, jitter: number, seed: number,
     stepFraction: number, minMagnitude: number, maxLength: number, maxSegments: number,

@@ -23,6 +23,12 @@ struct SolveStats {
   double setupMs = 0, solveMs = 0;
 };
 
+struct IterateProgress {
+  int iterations = 0;        // since the last setConstraints
+  double errorEstimate = 0;  // estimated relative error of the current iterate
+  bool converged = false;
+};
+
 class FieldSolver {
  public:
   virtual ~FieldSolver() = default;
@@ -33,6 +39,18 @@ class FieldSolver {
   // Solve for the field of the current constraints. T is resized to n x 3.
   // With no constraints the field is zero by definition.
   virtual Status solve(Field& T) = 0;
+  // Progressive solving: at most maxIterations more iterations, stopping once the estimated
+  // relative field error is <= tolerance; T receives the current iterate. Direct solvers (and
+  // this default) solve fully: converged, error 0 (rounding).
+  virtual Status iterate(int maxIterations, double tolerance, Field& T, IterateProgress& progress) {
+    (void)maxIterations;
+    (void)tolerance;
+    Status s = solve(T);
+    progress.iterations = stats().iterations;
+    progress.errorEstimate = 0;
+    progress.converged = s.ok();
+    return s;
+  }
   virtual const SolveStats& stats() const = 0;
   virtual std::string name() const = 0;
 };

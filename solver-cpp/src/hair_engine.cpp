@@ -31,7 +31,15 @@ Status HairEngine::setScalp(const float* positions, size_t vertexCount, const ui
                             const Eigen::Vector3d& center) {
   rootsValid_ = false;
   roots_.clear();
-  return scalp_.build(positions, vertexCount, indices, triangleCount, scalp, center);
+  meshPositions_.clear();
+  meshIndices_.clear();
+  meshScalp_.clear();
+  Status s = scalp_.build(positions, vertexCount, indices, triangleCount, scalp, center);
+  if (!s.ok()) return s;
+  meshPositions_.assign(positions, positions + 3 * vertexCount);
+  meshIndices_.assign(indices, indices + 3 * triangleCount);
+  meshScalp_.assign(scalp, scalp + triangleCount);
+  return s;
 }
 
 Status HairEngine::setCurves(const CurveSetView& curves) {
@@ -57,6 +65,17 @@ Status HairEngine::solve() {
   return Status::Ok();
 }
 
+Status HairEngine::iterate(int maxIterations, double tolerance, IterateProgress& progress) {
+  if (!hasGrid_) return Status::Error(StatusCode::InvalidInput, "iterate before setGrid");
+  Field T;
+  Status s = solver_->iterate(maxIterations, tolerance, T, progress);
+  if (!s.ok() && s.code != StatusCode::NotConverged) return s;
+  field_ = std::move(T);
+  fieldF_ = toFloatField(field_);
+  fieldValid_ = true;
+  return Status::Ok();
+}
+
 Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
   if (!hasGrid_) return Status::Error(StatusCode::InvalidInput, "grow before setGrid");
   if (!fieldValid_)
@@ -75,6 +94,19 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
   Status s = growStrands(grid_, fieldF_, roots_, gp, strands_);
   growMs_ = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
   return s;
+}
+
+Status HairEngine::scalpAvoidance(const ScalpAvoidanceParams& params, ConstraintSet& out,
+                                  ScalpAvoidanceStats* stats) const {
+  out.clear();
+  if (!hasGrid_) return Status::Error(StatusCode::InvalidInput, "scalp avoidance before setGrid");
+  if (!fieldValid_)
+    return Status::Error(StatusCode::InvalidInput, "scalp avoidance: curves changed, solve first");
+  if (meshIndices_.empty())
+    return Status::Error(StatusCode::InvalidInput, "scalp avoidance before setScalp");
+  HeadMeshView m{meshPositions_.data(), meshPositions_.size() / 3, meshIndices_.data(),
+                 meshIndices_.size() / 3, meshScalp_.data()};
+  return scalpAvoidanceConstraints(grid_, field_, m, params, out, stats);
 }
 
 SolveStats HairEngine::stats() const {

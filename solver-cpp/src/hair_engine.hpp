@@ -10,6 +10,7 @@
 #include "constraints.hpp"
 #include "field_solver.hpp"
 #include "grid.hpp"
+#include "scalp_avoidance.hpp"
 #include "scalp_roots.hpp"
 #include "status.hpp"
 #include "strand_growth.hpp"
@@ -26,8 +27,14 @@ class HairEngine {
   // Curves -> constraints -> solver (the solver diffs against its previous set).
   Status setCurves(const CurveSetView& curves);
   Status solve();
+  // Progressive solve (FieldSolver::iterate): the field becomes the current iterate.
+  Status iterate(int maxIterations, double tolerance, IterateProgress& progress);
   // Samples (or reuses) roots and grows strands in the last solved field.
   Status grow(const RootParams& roots, const GrowthParams& growth);
+  // Scalp avoidance (S4.7) on the last solved field and the scalp mesh: the constraints to store
+  // as the CurveSet's extra constraints. Does not change the engine's constraints.
+  Status scalpAvoidance(const ScalpAvoidanceParams& params, ConstraintSet& out,
+                        ScalpAvoidanceStats* stats = nullptr) const;
 
   const ConstraintSet& constraints() const { return constraints_; }
   const Field& field() const { return field_; }
@@ -42,6 +49,9 @@ class HairEngine {
   bool hasGrid_ = false;
   std::unique_ptr<FieldSolver> solver_;
   ScalpSampler scalp_;
+  std::vector<float> meshPositions_;  // the head mesh as given to setScalp (scalp avoidance)
+  std::vector<uint32_t> meshIndices_;
+  std::vector<uint8_t> meshScalp_;
   ConstraintSet constraints_;
   Field field_;
   bool fieldValid_ = false;

@@ -52,6 +52,17 @@ class MgPcgSolver : public FieldSolver {
   // Runs at most maxIterations more CG iterations of the current solve, stopping early once
   // errorEstimate <= tolerance (tolerance 0: run exactly maxIterations).
   Status iterate(int maxIterations, double tolerance, MgProgress* progress = nullptr);
+  // FieldSolver's progressive interface: the call above, then field(T).
+  Status iterate(int maxIterations, double tolerance, Field& T,
+                 IterateProgress& progress) override {
+    MgProgress p;
+    Status s = iterate(maxIterations, tolerance, &p);
+    field(T);
+    progress.iterations = p.iterations;
+    progress.errorEstimate = p.errorEstimate;
+    progress.converged = p.converged;
+    return s;
+  }
   // Current iterate (n x 3); after an edit and before any iteration: the previous field.
   void field(Field& T) const;
   const MgProgress& progress() const { return progress_; }

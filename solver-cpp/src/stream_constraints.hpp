@@ -26,7 +26,7 @@ void appendStreamConstraints(const Grid& grid, const double* points, size_t poin
                              std::vector<Constraint>& out);
 
 // Kind values of CurveSet.kinds (protocol.ts CurveKind).
-enum class CurveKindCode : uint8_t { Stream = 0 };
+enum class CurveKindCode : uint8_t { Stream = 0, Dividing = 1, Ponytail = 2 };
 
 // Non-owning view of protocol.ts CurveSet.
 struct CurveSetView {
@@ -36,10 +36,22 @@ struct CurveSetView {
   size_t curveCount = 0;
   const uint8_t* kinds = nullptr;   // curveCount entries
   const uint8_t* extend = nullptr;  // curveCount entries
+  // Kind-specific parameter blocks: curve c owns params[paramStart[c] .. paramStart[c + 1]).
+  // paramStart == nullptr means every block is empty (stream curves only).
+  const double* params = nullptr;
+  size_t paramCount = 0;
+  const uint32_t* paramStart = nullptr;  // curveCount + 1 entries, [0] = 0, last = paramCount
+  // Explicit constraints (scalp avoidance, S4.7), added to the derived ones before merging.
+  const int32_t* extraIndex = nullptr;  // extraCount grid indices
+  const double* extraTarget = nullptr;  // extraCount x 3
+  size_t extraCount = 0;
 };
 
-// All curves -> one normalised set (duplicates averaged). InvalidInput for a malformed layout,
-// non-finite points or an unknown kind.
+// All curves (stream, dividing dividing_constraints.hpp, ponytail ponytail_constraints.hpp) and
+// the explicit extras -> one normalised set (duplicates averaged). InvalidInput for a malformed
+// layout, non-finite points, an unknown kind, a parameter block of the wrong size or with
+// non-finite numbers (the message names the curve), or an extra constraint with an index outside
+// the grid or a non-finite target.
 Status curvesToConstraints(const Grid& grid, const CurveSetView& curves, ConstraintSet& out);
 
 }  // namespace hairsketch

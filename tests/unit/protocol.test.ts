@@ -55,9 +55,11 @@ describe('protocol layouts', () => {
       strands: { points: new Float32Array(6), strandStart: new Uint32Array([0, 2]) },
       constraints: { index: new Int32Array(1), target: new Float32Array(3) },
       field: { vectors: new Float32Array(3) },
+      final: true,
       stats: {
         method: 'cg',
         iterations: 1,
+        errorEstimate: 0,
         constraints: 1,
         added: 1,
         removed: 0,

@@ -58,15 +58,17 @@ const curves = (n: number) =>
     ),
   );
 
-const result = (id: number): SolveResult => ({
+const result = (id: number, final = true): SolveResult => ({
   type: 'result',
   id,
   strands: { points: new Float32Array([id, 0, 0]), strandStart: new Uint32Array([0, 1]) },
   constraints: { index: new Int32Array(), target: new Float32Array() },
   field: null,
+  final,
   stats: {
     method: 'cg',
     iterations: 0,
+    errorEstimate: 0,
     constraints: 0,
     added: 0,
     removed: 0,
@@ -99,24 +101,40 @@ function setup() {
 }
 
 describe('SolverClient', () => {
-  it('keeps one solve in flight and lets the newest waiting request supersede older ones', () => {
+  it('sends requests at once and shows only the newest, first look then final', () => {
     const { client, workers, shown } = setup();
     const w = workers[0];
     expect(w.sent[0].type).toBe('init');
     client.request(curves(1), DEFAULT_GROWTH);
-    expect(w.solves()).toHaveLength(0); // not ready yet
+    expect(w.solves()).toHaveLength(0); // not ready yet: sent on ready
     w.reply({ type: 'ready', gridPoints: 8, roots: 0 });
     expect(w.solves()).toHaveLength(1);
     client.request(curves(2), DEFAULT_GROWTH);
     client.request(curves(3), DEFAULT_GROWTH);
-    expect(w.solves()).toHaveLength(1); // busy: the others wait, and only the newest is kept
-    w.reply(result(w.solves()[0].id));
-    expect(w.solves()).toHaveLength(2);
-    expect(w.solves()[1].curves.curveStart.length).toBe(4); // 3 curves: the newest
-    expect(shown).toEqual([]); // the stale result is not shown while a newer one is waiting
-    w.reply(result(w.solves()[1].id));
-    expect(shown.map((s) => s.id)).toEqual([w.solves()[1].id]);
+    expect(w.solves()).toHaveLength(3); // the worker supersedes; the client does not queue
+    const [a, , c] = w.solves();
+    w.reply(result(a.id, false));
+    w.reply(result(a.id, true));
+    expect(shown).toEqual([]); // superseded answers are never shown
+    w.reply(result(c.id, false));
+    expect(shown.map((s) => s.id)).toEqual([c.id]);
+    expect(client.pending).toBe(true); // a first look: the final answer is still due
+    w.reply(result(c.id, true));
+    expect(shown.map((s) => s.id)).toEqual([c.id, c.id]);
     expect(client.pending).toBe(false);
+  });
+
+  it('treats a preview answer as complete and never caches it', () => {
+    const { client, workers, shown } = setup();
+    const w = workers[0];
+    w.reply({ type: 'ready', gridPoints: 8, roots: 0 });
+    client.request(curves(1), DEFAULT_GROWTH, 'preview');
+    expect(w.solves()[0].mode).toBe('preview');
+    w.reply(result(w.solves()[0].id, false));
+    expect(client.pending).toBe(false);
+    client.request(curves(1), DEFAULT_GROWTH, 'full');
+    expect(w.solves()).toHaveLength(2); // not answered from a cache
+    expect(shown).toHaveLength(1);
   });
 
   it('answers a repeated state from its cache without the worker', () => {
@@ -127,6 +145,7 @@ describe('SolverClient', () => {
     w.reply(result(w.solves()[0].id));
     client.request(curves(2), DEFAULT_GROWTH);
     w.reply(result(w.solves()[1].id));
+    expect(client.pending).toBe(false);
     client.request(curves(1), DEFAULT_GROWTH); // undo
     expect(w.solves()).toHaveLength(2);
     expect(shown.at(-1)).toEqual({ id: w.solves()[0].id, cached: true });

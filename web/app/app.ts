@@ -89,6 +89,7 @@ export class App {
         step: () => this.step,
         showDraft: (pts) => this.viewer.setDraft(pts),
         commit: (points) => this.commitStreamCurve(points),
+        preview: (points) => this.previewStroke(points),
         notify: (m) => this.notify(m),
       }),
       select: new SelectTool({
@@ -113,18 +114,17 @@ export class App {
     this.status.set('loading', 'Loading the solver…');
     this.client = new SolverClient(
       () => new Worker(new URL('../solver/worker.ts', import.meta.url), { type: 'module' }),
-      { type: 'init', grid, omega: 100, solver: 'cg', scalp: scalpMessage(head) },
+      { type: 'init', grid, omega: 100, solver: opts.solver, scalp: scalpMessage(head) },
       {
-        onBusy: (phase) =>
-          this.status.set(
-            phase === 'loading' ? 'loading' : 'solving',
-            phase === 'loading'
-              ? 'Loading the solver…'
-              : phase === 'growing'
-                ? 'Growing hair…'
-                : 'Solving the field…',
-          ),
-        onResult: (r, latest) => this.showResult(r, latest),
+        onBusy: (phase, fraction) => {
+          if (phase === 'loading') this.status.set('loading', 'Loading the solver…');
+          else if (!this.previewing)
+            this.status.set(
+              'solving',
+              `${phase === 'growing' ? 'Growing hair' : 'Solving the field'}… ${Math.round(fraction * 100)}%`,
+            );
+        },
+        onResult: (r, final) => this.showResult(r, final),
         onError: (m) => this.status.set('error', `Error: ${m}`),
         onIdle: () => this.showReady(),
       },
@@ -138,6 +138,7 @@ export class App {
   // ---- edits -------------------------------------------------------------------------------
 
   private commitStreamCurve(points: Vec3[]): void {
+    this.previewing = false;
     const s = this.history.current;
     const id = nextCurveId(s);
     const { position, target } = this.viewer.cameraState();
@@ -147,6 +148,29 @@ export class App {
     this.selectedId = id;
     this.notify(`Added stream curve ${id} (${points.length - 1} segments).`);
     this.syncSession();
+  }
+
+  /** Live preview while drawing: the session's curves plus the stroke so far, solved coarsely.
+   *  At most one preview is in flight; the newest stroke state is sent when it returns. */
+  private previewStroke(points: Vec3[] | null): void {
+    if (points === null) {
+      this.previewing = false;
+      this.previewInFlight = false;
+      return;
+    }
+    this.previewing = true;
+    if (this.previewInFlight || points.length < 3) return;
+    const s = this.history.current;
+    const { position, target } = this.viewer.cameraState();
+    const draft = {
+      id: '~draft',
+      type: 'stream' as const,
+      points,
+      extend: true,
+      viewpoint: { position, target },
+    };
+    this.previewInFlight = true;
+    this.client.request(packCurves([...s.curves, draft]), s.growth, 'preview');
   }
 
   undo(): void {
@@ -237,7 +261,7 @@ export class App {
     });
   }
 
-  private showResult(r: SolveResult, latest: boolean): void {
+  private showResult(r: SolveResult, final: boolean): void {
     if (this.shownStrands !== r.strands) {
       this.shownStrands = r.strands;
       const geometry = buildStrandGeometry(r.strands.points, r.strands.strandStart);
@@ -248,11 +272,16 @@ export class App {
       this.status.bumpRevision();
     }
     const st = r.stats;
-    this.lastSolve = `${st.constraints} constraints, ${st.method} ${st.iterations} it. ${st.solveMs.toFixed(0)} ms, growth ${st.growMs.toFixed(0)} ms`;
-    if (latest && !this.client.pending) this.showReady();
+    if (final)
+      this.lastSolve = `${st.constraints} constraints, ${st.method} ${st.iterations} it. ${st.solveMs.toFixed(0)} ms, growth ${st.growMs.toFixed(0)} ms`;
+    this.previewInFlight = false;
+    if (!this.client.pending) this.showReady();
   }
 
   private lastSolve = '';
+  /** A stroke is being drawn and previews are being solved. */
+  private previewing = false;
+  private previewInFlight = false;
 
   private showReady(): void {
     if (this.client.pending) return;

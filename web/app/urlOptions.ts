@@ -1,17 +1,33 @@
 // Query options: ?preset=default|empty, ?grid=25k|50k, ?strands=N (cap, for small test scenes).
 import { type GridPreset, isGridPreset } from '../model/grid';
 import { isPresetName, type PresetName } from '../model/presets';
+import type { SolverName } from '../solver/protocol';
+
+const SOLVERS: readonly SolverName[] = ['fast', 'exact', 'cg', 'auto'];
 
 export interface UrlOptions {
   preset: PresetName;
   grid: GridPreset;
   maxStrands: number; // 0 = no cap
+  solver: SolverName;
   warnings: string[]; // unknown or malformed values, reported in the status line
 }
 
 export function parseUrlOptions(search: string): UrlOptions {
   const q = new URLSearchParams(search);
-  const out: UrlOptions = { preset: 'default', grid: '25k', maxStrands: 0, warnings: [] };
+  const out: UrlOptions = {
+    preset: 'default',
+    grid: '25k',
+    maxStrands: 0,
+    solver: 'fast',
+    warnings: [],
+  };
+  const solver = q.get('solver');
+  if (solver !== null) {
+    const known = SOLVERS.find((s) => s === solver);
+    if (known) out.solver = known;
+    else out.warnings.push(`unknown solver "${solver.slice(0, 40)}" (using fast)`);
+  }
   const preset = q.get('preset');
   if (preset !== null) {
     if (isPresetName(preset)) out.preset = preset;

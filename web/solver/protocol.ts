@@ -74,7 +74,7 @@ export interface ConstraintArrays {
   target: Float32Array; // target[3 * c + axis] = c_p
 }
 
-export type SolverName = 'cg';
+export type SolverName = 'cg' | 'fast' | 'exact' | 'auto';
 
 export interface SolveStats {
   method: string;

@@ -2,7 +2,7 @@
 // memory for the duration of a call; results are copied out into fresh typed arrays of the
 // protocol.ts layouts, so they can be transferred and outlive the next call.
 import createHairSolver, { type HairSolverModule } from '../generated/hairsolver.mjs';
-import { type SolverEngine, SolverError } from './engine';
+import { type IterateProgress, type SolverEngine, SolverError } from './engine';
 import type {
   ConstraintArrays,
   CurveSet,
@@ -180,6 +180,15 @@ class WasmEngine implements SolverEngine {
     check(this.mod, this.mod._hs_engine_solve(this.h()));
   }
 
+  iterate(maxIterations: number, tolerance: number): IterateProgress {
+    const h = this.h();
+    return withInputs(this.mod, [new Float64Array(3)], ([out]) => {
+      check(this.mod, this.mod._hs_engine_iterate(h, maxIterations, tolerance, out));
+      const p = f64(this.mod, out, 3);
+      return { iterations: p[0], errorEstimate: p[1], converged: p[2] === 1 };
+    });
+  }
+
   grow(g: GrowthParams): StrandArrays {
     const h = this.h();
     const m = this.mod;
@@ -220,7 +229,7 @@ class WasmEngine implements SolverEngine {
     return { vectors: f32(this.mod, this.mod._hs_engine_field(h), 3 * n) };
   }
 
-  stats(): Omit<SolveStats, 'growMs'> {
+  stats(): Omit<SolveStats, 'growMs' | 'errorEstimate'> {
     const s = parseStats(this.mod.UTF8ToString(this.mod._hs_engine_stats_json(this.h())));
     return {
       method: s.method,

@@ -96,7 +96,10 @@ export class WorkerLogic {
     this.engine.setCurves(job.curves);
     if (job.mode === 'preview') {
       const p = this.engine.iterate(o.previewIterations, o.tolerance);
-      const cap = job.growth.maxStrands > 0 ? Math.min(job.growth.maxStrands, o.previewMaxStrands) : o.previewMaxStrands;
+      const cap =
+        job.growth.maxStrands > 0
+          ? Math.min(job.growth.maxStrands, o.previewMaxStrands)
+          : o.previewMaxStrands;
       this.emit(job, { ...job.growth, maxStrands: cap }, p, false, t0);
       return;
     }
@@ -112,7 +115,13 @@ export class WorkerLogic {
           type: 'progress',
           id: job.id,
           phase: 'solve',
-          fraction: Math.min(0.95, Math.max(0.05, 1 - Math.log10(Math.max(p.errorEstimate, o.tolerance)) / Math.log10(o.tolerance))),
+          fraction: Math.min(
+            0.95,
+            Math.max(
+              0.05,
+              1 - Math.log10(Math.max(p.errorEstimate, o.tolerance)) / Math.log10(o.tolerance),
+            ),
+          ),
         });
       }
       await o.yieldNow();
@@ -121,7 +130,13 @@ export class WorkerLogic {
     this.emit(job, job.growth, p, true, t0);
   }
 
-  private emit(job: SolveMsg, growth: GrowthParams, p: IterateProgress, final: boolean, t0: number): void {
+  private emit(
+    job: SolveMsg,
+    growth: GrowthParams,
+    p: IterateProgress,
+    final: boolean,
+    t0: number,
+  ): void {
     this.post({ type: 'progress', id: job.id, phase: 'grow', fraction: 0.95 });
     const g0 = this.opts.now();
     const strands = this.engine.grow(growth);

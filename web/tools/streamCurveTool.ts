@@ -12,6 +12,8 @@ export interface StrokeContext {
   step(): number; // grid step d
   showDraft(points: readonly Vec3[] | null): void;
   commit(points: Vec3[]): void;
+  /** Live preview of the stroke so far (resampled), or null when the stroke ends. */
+  preview(points: Vec3[] | null): void;
   notify(message: string): void;
 }
 
@@ -50,6 +52,7 @@ export class StreamCurveTool implements Tool {
     this.update();
     this.state = 'idle';
     this.ctx.showDraft(null);
+    this.ctx.preview(null);
     const lifted = liftStroke(this.samples, this.eye, this.forward);
     this.samples = [];
     if (!lifted.ok) return;
@@ -66,6 +69,7 @@ export class StreamCurveTool implements Tool {
     this.raw = [];
     this.samples = [];
     this.ctx.showDraft(null);
+    this.ctx.preview(null);
   }
 
   update(): void {
@@ -73,6 +77,8 @@ export class StreamCurveTool implements Tool {
     for (const r of this.raw) this.samples.push(this.ctx.sample(r.x, r.y));
     this.raw = [];
     const lifted = liftStroke(this.samples, this.eye, this.forward);
-    if (lifted.ok) this.ctx.showDraft(lifted.points);
+    if (!lifted.ok) return;
+    this.ctx.showDraft(lifted.points);
+    this.ctx.preview(resamplePolyline(lifted.points, this.ctx.step()));
   }
 }

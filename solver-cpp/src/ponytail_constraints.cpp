@@ -1,0 +1,148 @@
+#include "ponytail_constraints.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "stream_constraints.hpp"
+
+namespace hairsketch {
+
+namespace {
+
+// Calls fn(i, j, k, position) for every grid point within the world-space box centre +- half.
+template <class Fn>
+void forPointsInBox(const Grid& g, const Eigen::Vector3d& centre, double half, Fn&& fn) {
+  const Eigen::Vector3d lo = (centre.array() - half - g.origin.array()) / g.step;
+  const Eigen::Vector3d hi = (centre.array() + half - g.origin.array()) / g.step;
+  const int i0 = std::max(0, int(std::ceil(lo.x()))),
+            i1 = std::min(g.nx - 1, int(std::floor(hi.x())));
+  const int j0 = std::max(0, int(std::ceil(lo.y()))),
+            j1 = std::min(g.ny - 1, int(std::floor(hi.y())));
+  const int k0 = std::max(0, int(std::ceil(lo.z()))),
+            k1 = std::min(g.nz - 1, int(std::floor(hi.z())));
+  for (int k = k0; k <= k1; ++k)
+    for (int j = j0; j <= j1; ++j)
+      for (int i = i0; i <= i1; ++i) fn(i, j, k, g.position(i, j, k));
+}
+
+// Distance of q to the circle, with the axial offset w, radial distance rho and radial unit e.
+struct CircleCoords {
+  double w, rho, dist;
+  Eigen::Vector3d e;
+};
+
+CircleCoords circleCoords(const PonytailCircle& c, const Eigen::Vector3d& q, double tiny) {
+  CircleCoords cc;
+  const Eigen::Vector3d r = q - c.centre;
+  cc.w = r.dot(c.axis);
+  const Eigen::Vector3d radial = r - cc.w * c.axis;
+  cc.rho = radial.norm();
+  cc.e = cc.rho > tiny ? Eigen::Vector3d(radial / cc.rho) : Eigen::Vector3d::Zero();
+  cc.dist = std::hypot(cc.w, cc.rho - c.radius);
+  return cc;
+}
+
+}  // namespace
+
+Status parsePonytailParams(const double* p, size_t count, PonytailParams& out) {
+  if (count < 2)
+    return Status::Error(StatusCode::InvalidInput,
+                         "ponytail parameter block needs [tightness, circles, ...], has " +
+                             std::to_string(count) + " numbers");
+  for (size_t i = 0; i < count; ++i)
+    if (!std::isfinite(p[i]))
+      return Status::Error(StatusCode::InvalidInput,
+                           "ponytail parameter " + std::to_string(i) + " is not finite");
+  const double m = p[1];
+  if (!(m >= 1) || std::floor(m) != m || m > 1e6)
+    return Status::Error(StatusCode::InvalidInput,
+                         "ponytail circle count must be a positive integer");
+  const size_t circles = size_t(m);
+  if (count != 2 + 7 * circles)
+    return Status::Error(StatusCode::InvalidInput,
+                         "ponytail parameter block has " + std::to_string(count) +
+                             " numbers, expected 2 + 7 * " + std::to_string(circles) + " = " +
+                             std::to_string(2 + 7 * circles));
+  out.tightness = p[0];
+  out.circles.resize(circles);
+  for (size_t k = 0; k < circles; ++k) {
+    const double* b = p + 2 + 7 * k;
+    PonytailCircle& c = out.circles[k];
+    c.centre = Eigen::Vector3d(b[0], b[1], b[2]);
+    const Eigen::Vector3d a(b[3], b[4], b[5]);
+    if (!(a.norm() > 0))
+      return Status::Error(StatusCode::InvalidInput,
+                           "ponytail circle " + std::to_string(k) + " has a zero axis");
+    c.axis = a.normalized();
+    c.radius = b[6];
+    if (!(c.radius > 0))
+      return Status::Error(StatusCode::InvalidInput,
+                           "ponytail circle " + std::to_string(k) + " radius must be > 0");
+  }
+  return Status::Ok();
+}
+
+std::vector<double> ponytailRadiusSlopes(const PonytailParams& prm) {
+  const auto& C = prm.circles;
+  const size_t m = C.size();
+  std::vector<double> slope(m, 0.0);
+  if (m < 2) return slope;
+  for (size_t k = 0; k < m; ++k) {
+    const size_t a = k == 0 ? 0 : k - 1, b = k + 1 == m ? m - 1 : k + 1;
+    const double axial = (C[b].centre - C[a].centre).dot(C[k].axis);
+    if (std::abs(axial) > 1e-12) slope[k] = (C[b].radius - C[a].radius) / axial;
+  }
+  return slope;
+}
+
+size_t ponytailBlueStart(const double* spine, size_t n, const PonytailParams& prm) {
+  if (n == 0 || prm.circles.empty()) return 0;
+  const Eigen::Vector3d c = prm.circles.back().centre;
+  size_t best = 0;
+  double bestD = INFINITY;
+  for (size_t i = 0; i < n; ++i) {
+    const double d = (Eigen::Vector3d(spine[3 * i], spine[3 * i + 1], spine[3 * i + 2]) - c).norm();
+    if (d < bestD) {
+      bestD = d;
+      best = i;
+    }
+  }
+  return best;
+}
+
+void appendPonytailConstraints(const Grid& g, const double* spine, size_t n, bool extend,
+                               const PonytailParams& prm, std::vector<Constraint>& out,
+                               std::vector<ConstraintColour>* colours) {
+  const double tube = 0.5 * std::sqrt(3.0) * g.step;
+  const double tiny = 1e-9 * g.step;
+  const std::vector<double> slope = ponytailRadiusSlopes(prm);
+  // (1) purple, near each circle.
+  for (size_t k = 0; k < prm.circles.size(); ++k) {
+    const PonytailCircle& c = prm.circles[k];
+    forPointsInBox(g, c.centre, c.radius + tube,
+                   [&](int i, int j, int kk, const Eigen::Vector3d& q) {
+                     const CircleCoords cc = circleCoords(c, q, tiny);
+                     if (cc.dist > tube) return;
+                     out.push_back({g.index(i, j, kk), (c.axis + slope[k] * cc.e).normalized()});
+                     if (colours) colours->push_back(ConstraintColour::Purple);
+                   });
+  }
+  // (2) blue, the spine from near the last circle on.
+  const size_t start = ponytailBlueStart(spine, n, prm);
+  if (n > start + 1) appendStreamConstraints(g, spine + 3 * start, n - start, extend, out);
+  if (colours) colours->resize(out.size(), ConstraintColour::Blue);
+  // (3) green, the centripetal ring on C1's plane.
+  if (prm.circles.empty()) return;
+  const PonytailCircle& c1 = prm.circles.front();
+  const double outer = kPonytailRingOuter * c1.radius, inner = kPonytailRingInner * c1.radius;
+  forPointsInBox(g, c1.centre, outer + g.step, [&](int i, int j, int k, const Eigen::Vector3d& q) {
+    const CircleCoords cc = circleCoords(c1, q, tiny);
+    if (std::abs(cc.w) > 0.5 * g.step || cc.rho < inner || cc.rho > outer) return;
+    if (cc.dist <= tube) return;  // purple owns it
+    out.push_back({g.index(i, j, k), prm.tightness * (c1.centre - q).normalized()});
+    if (colours) colours->push_back(ConstraintColour::Green);
+  });
+}
+
+}  // namespace hairsketch
