@@ -75,6 +75,8 @@ struct EngineHandle {
   std::vector<int32_t> constraintIndex;
   std::vector<float> constraintTarget;
   std::vector<float> field;
+  std::vector<int32_t> avoidIndex;  // scalp avoidance result
+  std::vector<double> avoidTarget;
   std::string json;
 };
 
@@ -118,13 +120,56 @@ EMSCRIPTEN_KEEPALIVE int hs_engine_set_scalp(EngineHandle* h, const float* posit
                                    scalp, Eigen::Vector3d(cx, cy, cz)));
 }
 
+// protocol.ts CurveSet: params / paramStart (curveCount + 1 entries) are the kind-specific
+// parameter blocks; extraIndex / extraTarget (extraCount, extraCount x 3) the explicit
+// constraints.
 EMSCRIPTEN_KEEPALIVE int hs_engine_set_curves(EngineHandle* h, const double* points, int pointCount,
                                               const uint32_t* curveStart, int curveCount,
-                                              const uint8_t* kinds, const uint8_t* extend) {
+                                              const uint8_t* kinds, const uint8_t* extend,
+                                              const double* params, int paramCount,
+                                              const uint32_t* paramStart, const int32_t* extraIndex,
+                                              const double* extraTarget, int extraCount) {
   if (!h) return fail("no engine");
-  if (pointCount < 0 || curveCount < 0) return fail("curves: negative count");
+  if (pointCount < 0 || curveCount < 0 || paramCount < 0 || extraCount < 0)
+    return fail("curves: negative count");
   CurveSetView v{points, size_t(pointCount), curveStart, size_t(curveCount), kinds, extend};
+  v.params = params;
+  v.paramCount = size_t(paramCount);
+  v.paramStart = paramStart;
+  v.extraIndex = extraIndex;
+  v.extraTarget = extraTarget;
+  v.extraCount = size_t(extraCount);
   return report(h->engine.setCurves(v));
+}
+
+// Scalp avoidance (S4.7) on the last solved field: fills the handle's avoidance arrays (read
+// with hs_engine_avoid_index / hs_engine_avoid_target) and returns 0 / 1 as usual; the count
+// is hs_engine_avoid_count. wholeHead: 0 = scalp triangles only.
+EMSCRIPTEN_KEEPALIVE int hs_engine_scalp_avoidance(EngineHandle* h, double band, double magnitude,
+                                                   int wholeHead) {
+  if (!h) return fail("no engine");
+  ScalpAvoidanceParams p;
+  p.band = band;
+  p.magnitude = magnitude;
+  p.wholeHead = wholeHead != 0;
+  ConstraintSet out;
+  h->avoidIndex.clear();
+  h->avoidTarget.clear();
+  const int rc = report(h->engine.scalpAvoidance(p, out));
+  for (const Constraint& c : out) {
+    h->avoidIndex.push_back(c.index);
+    for (int a = 0; a < 3; ++a) h->avoidTarget.push_back(c.target[a]);
+  }
+  return rc;
+}
+EMSCRIPTEN_KEEPALIVE int hs_engine_avoid_count(EngineHandle* h) {
+  return int(h->avoidIndex.size());
+}
+EMSCRIPTEN_KEEPALIVE const int32_t* hs_engine_avoid_index(EngineHandle* h) {
+  return h->avoidIndex.data();
+}
+EMSCRIPTEN_KEEPALIVE const double* hs_engine_avoid_target(EngineHandle* h) {
+  return h->avoidTarget.data();
 }
 
 EMSCRIPTEN_KEEPALIVE int hs_engine_solve(EngineHandle* h) {

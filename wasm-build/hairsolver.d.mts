@@ -24,8 +24,13 @@ export interface HairSolverModule {
   ): number;
   _hs_engine_set_curves(
     h: number, points: number, pointCount: number, curveStart: number, curveCount: number,
-    kinds: number, extend: number,
+    kinds: number, extend: number, params: number, paramCount: number, paramStart: number,
+    extraIndex: number, extraTarget: number, extraCount: number,
   ): number;
+  _hs_engine_scalp_avoidance(h: number, band: number, magnitude: number, wholeHead: number): number;
+  _hs_engine_avoid_count(h: number): number;
+  _hs_engine_avoid_index(h: number): number;
+  _hs_engine_avoid_target(h: number): number;
   _hs_engine_solve(h: number): number;
   _hs_engine_iterate(h: number, maxIterations: number, tolerance: number, progressOut: number): number;
   _hs_engine_grow(

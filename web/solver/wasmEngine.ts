@@ -164,16 +164,65 @@ class WasmEngine implements SolverEngine {
     if (nc < 0) throw new SolverError('curves: curveStart must have curves + 1 entries');
     if (curves.kinds.length !== nc || curves.extend.length !== nc || curves.points.length % 3)
       throw new SolverError('curves: array lengths do not match');
+    if (curves.paramStart.length !== nc + 1)
+      throw new SolverError('curves: paramStart must have curves + 1 entries');
+    const ne = curves.extraIndex.length;
+    if (curves.extraTarget.length !== 3 * ne)
+      throw new SolverError('curves: extraTarget must have 3 entries per extraIndex');
     withInputs(
       this.mod,
-      [curves.points, curves.curveStart, curves.kinds, curves.extend],
-      ([p, s, k, e]) => {
+      [
+        curves.points,
+        curves.curveStart,
+        curves.kinds,
+        curves.extend,
+        curves.params,
+        curves.paramStart,
+        curves.extraIndex,
+        curves.extraTarget,
+      ],
+      ([p, s, k, e, pr, ps, xi, xt]) => {
         check(
           this.mod,
-          this.mod._hs_engine_set_curves(h, p, curves.points.length / 3, s, nc, k, e),
+          this.mod._hs_engine_set_curves(
+            h,
+            p,
+            curves.points.length / 3,
+            s,
+            nc,
+            k,
+            e,
+            pr,
+            curves.params.length,
+            ps,
+            xi,
+            xt,
+            ne,
+          ),
         );
       },
     );
+  }
+
+  /** Scalp avoidance (SPEC S4.7) on the last solved field: constraints to store as the
+   *  CurveSet's extraIndex / extraTarget (sorted by grid index, |target| = magnitude). */
+  scalpAvoidance(opts: ScalpAvoidanceOptions = {}): ScalpAvoidanceResult {
+    const h = this.h();
+    const m = this.mod;
+    check(
+      m,
+      m._hs_engine_scalp_avoidance(
+        h,
+        opts.band ?? 1.5,
+        opts.magnitude ?? 0.3,
+        opts.wholeHead ? 1 : 0,
+      ),
+    );
+    const n = m._hs_engine_avoid_count(h);
+    return {
+      index: i32(m, m._hs_engine_avoid_index(h), n),
+      target: f64(m, m._hs_engine_avoid_target(h), 3 * n),
+    };
   }
 
   solve(): void {
@@ -260,7 +309,24 @@ class WasmEngine implements SolverEngine {
 }
 
 /** Engine with extras beyond SolverEngine (timings, root count). */
-export type WasmSolverEngine = SolverEngine & { growMs(): number; rootCount(): number };
+export type WasmSolverEngine = SolverEngine & {
+  growMs(): number;
+  rootCount(): number;
+  scalpAvoidance(opts?: ScalpAvoidanceOptions): ScalpAvoidanceResult;
+};
+
+/** Options of scalp avoidance (SPEC S4.7). */
+export interface ScalpAvoidanceOptions {
+  band?: number; // grid steps from the scalp (default 1.5)
+  magnitude?: number; // target length (default 0.3)
+  wholeHead?: boolean; // measure against every head triangle, not only the scalp (default false)
+}
+
+/** index[e] = grid point, target[3 * e + axis]: ready for CurveSet.extraIndex / extraTarget. */
+export interface ScalpAvoidanceResult {
+  index: Int32Array;
+  target: Float64Array;
+}
 
 /** Loads a fresh wasm module and returns an engine over it. */
 export async function loadSolverEngine(opts: LoadOptions = {}): Promise<WasmSolverEngine> {
