@@ -25,10 +25,17 @@ struct DiagonalTerm {
   double alpha = 0.0;  // M <- M + alpha e e^T (omega^2 to add a constraint, -omega^2 to remove)
 };
 
+enum class UpdateKernel {
+  Blocked,  // panels of columns eliminated at once; the sweeps below are GEMMs (default)
+  Rank1,    // plain C1 rank-1 sweeps (reference; same arithmetic, regrouped)
+};
+
 struct UpdateOptions {
+  UpdateKernel kernel = UpdateKernel::Blocked;
+  int chunk = 128;  // blocked: at most this many vectors per pass through a supernode
   // A pivot d -> d' is accepted when d' is finite and d' > pivotTolerance * d.
   double pivotTolerance = 1e-12;
-  int panel = 32;  // columns per panel
+  int panel = 48;  // columns per panel
 };
 
 struct UpdateStats {

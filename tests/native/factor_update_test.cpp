@@ -15,7 +15,7 @@ constexpr double kW2 = 1e4;
 
 // Applies random updates/downdates to a factor and compares it with a fresh factorisation of
 // the same matrix: pivots and a 3-RHS solve.
-void randomModifications(const Grid& g, int leafMax, int rounds, unsigned seed, int panel) {
+void randomModifications(const Grid& g, int leafMax, int rounds, unsigned seed, UpdateOptions uo) {
   std::mt19937 rng(seed);
   const int n = int(g.size());
   const SparseMatrix M = assembleBiLaplacian(g);
@@ -28,8 +28,6 @@ void randomModifications(const Grid& g, int leafMax, int rounds, unsigned seed, 
   Eigen::VectorXd pen = Eigen::VectorXd::Zero(n);
   for (int i = 0; i < 3; ++i) pen[int(rng() % unsigned(n))] = kW2;
   ASSERT_TRUE(F.factorize(M, pen).ok());
-  UpdateOptions uo;
-  uo.panel = panel;
 
   for (int r = 0; r < rounds; ++r) {
     // Add a few points (clustered or scattered), remove a few constrained ones; keep >= 1.
@@ -80,9 +78,27 @@ void randomModifications(const Grid& g, int leafMax, int rounds, unsigned seed, 
   EXPECT_LT(testref::relError(X, ref), 1e-9);
 }
 
-TEST(FactorUpdate, RandomSequenceSmallGrid) { randomModifications(box(6, 5, 7), 8, 200, 1, 4); }
-TEST(FactorUpdate, RandomSequenceMediumGrid) {
-  randomModifications(box(14, 12, 13), 64, 200, 2, 32);
+UpdateOptions opts(UpdateKernel kernel, int panel, int chunk) {
+  UpdateOptions o;
+  o.kernel = kernel;
+  o.panel = panel;
+  o.chunk = chunk;
+  return o;
+}
+
+TEST(FactorUpdate, RandomSequenceSmallGridRank1) {
+  randomModifications(box(6, 5, 7), 8, 200, 1, opts(UpdateKernel::Rank1, 4, 0));
+}
+TEST(FactorUpdate, RandomSequenceSmallGridBlocked) {
+  // Tiny panels and chunks: many panels per supernode, several chunks per edit.
+  randomModifications(box(6, 5, 7), 8, 200, 1, opts(UpdateKernel::Blocked, 3, 4));
+}
+TEST(FactorUpdate, RandomSequenceMediumGridRank1) {
+  randomModifications(box(14, 12, 13), 64, 200, 2, opts(UpdateKernel::Rank1, 32, 0));
+}
+TEST(FactorUpdate, RandomSequenceMediumGridBlocked) {
+  randomModifications(box(14, 12, 13), 64, 200, 2, opts(UpdateKernel::Blocked, 48, 128));
+  randomModifications(box(13, 11, 12), 27, 100, 3, opts(UpdateKernel::Blocked, 16, 7));
 }
 
 TEST(FactorUpdate, ManyVectorsInOnePassMatchFreshFactor) {
@@ -111,18 +127,22 @@ TEST(FactorUpdate, ManyVectorsInOnePassMatchFreshFactor) {
     up.push_back({F.symbolic().iperm[size_t(p)], kW2});
   }
   UpdateStats st;
-  ASSERT_TRUE(modifyDiagonal(F, up, {}, &st).ok());
+  ASSERT_TRUE(modifyDiagonal(F, up, opts(UpdateKernel::Rank1, 32, 0), &st).ok());
   EXPECT_EQ(st.maxRank, 150);
   for (int t = 0; t < 100; ++t) {
     down.push_back({up[size_t(t)].position, -kW2});
     pen[F.symbolic().perm[size_t(up[size_t(t)].position)]] = 0;
   }
-  ASSERT_TRUE(modifyDiagonal(F, down).ok());
+  ASSERT_TRUE(modifyDiagonal(F, down).ok());  // blocked, two chunks of up to 128
   ASSERT_TRUE(fresh.factorize(M, pen).ok());
   for (int q = 0; q < n; ++q) ASSERT_NEAR(F.pivot(q), fresh.pivot(q), 1e-9 * fresh.pivot(q));
 }
 
-TEST(FactorUpdate, IndefiniteDowndateIsDetected) {
+class IndefiniteDowndate : public ::testing::TestWithParam<UpdateKernel> {};
+
+TEST_P(IndefiniteDowndate, IsDetected) {
+  UpdateOptions uo;
+  uo.kernel = GetParam();
   const Grid g = box(8, 8, 8);
   const SparseMatrix M = assembleBiLaplacian(g);
   SupernodalFactor F;
@@ -131,12 +151,14 @@ TEST(FactorUpdate, IndefiniteDowndateIsDetected) {
   pen[10] = kW2;
   ASSERT_TRUE(F.factorize(M, pen).ok());
   // Removing omega^2 where there is no constraint: M - omega^2 e e^T is indefinite.
-  const Status st = modifyDiagonal(F, {{F.symbolic().iperm[200], -kW2}});
+  const Status st = modifyDiagonal(F, {{F.symbolic().iperm[200], -kW2}}, uo);
   EXPECT_EQ(st.code, StatusCode::NotPositiveDefinite);
   EXPECT_FALSE(F.valid());
   // A damaged factor refuses further modification.
-  EXPECT_FALSE(modifyDiagonal(F, {{F.symbolic().iperm[10], kW2}}).ok());
+  EXPECT_FALSE(modifyDiagonal(F, {{F.symbolic().iperm[10], kW2}}, uo).ok());
 }
+INSTANTIATE_TEST_SUITE_P(Kernels, IndefiniteDowndate,
+                         ::testing::Values(UpdateKernel::Blocked, UpdateKernel::Rank1));
 
 TEST(FactorUpdate, CostEstimateCountsPathFlops) {
   const Grid g = box(12, 12, 12);
@@ -148,7 +170,7 @@ TEST(FactorUpdate, CostEstimateCountsPathFlops) {
   ASSERT_TRUE(F.factorize(M, pen).ok());
   const int pos = F.symbolic().iperm[size_t(g.index(3, 4, 5))];
   UpdateStats st;
-  ASSERT_TRUE(modifyDiagonal(F, {{pos, kW2}}, {}, &st).ok());
+  ASSERT_TRUE(modifyDiagonal(F, {{pos, kW2}}, opts(UpdateKernel::Rank1, 32, 0), &st).ok());
   // One vector: the estimate is exact up to the zero entries the kernel skips.
   const double est = estimateModifyFlops(F.symbolic(), {pos});
   EXPECT_GT(st.flops, 0.3 * est);
