@@ -4,6 +4,7 @@
 // SimplicialLDLT refactorisation as the naive baseline. Same source natively and in wasm.
 //
 //   exact_bench N [--baseline] [--edits 100,300,1000] [--force-both]
+//               [--chunk K] [--panel P] [--rank1]   (update kernel settings)
 // Prints one JSON object per line (key "kind") and nothing else on stdout.
 #include <Eigen/SparseCholesky>
 #include <chrono>
@@ -80,10 +81,14 @@ int main(int argc, char** argv) {
   }
   const int N = std::atoi(argv[1]);
   bool baseline = false, forceBoth = false;
+  ExactSolverOptions opts;
   std::vector<int> edits = {100, 300, 1000};
   for (int a = 2; a < argc; ++a) {
     if (!std::strcmp(argv[a], "--baseline")) baseline = true;
     if (!std::strcmp(argv[a], "--force-both")) forceBoth = true;
+    if (!std::strcmp(argv[a], "--chunk") && a + 1 < argc) opts.update.chunk = std::atoi(argv[++a]);
+    if (!std::strcmp(argv[a], "--panel") && a + 1 < argc) opts.update.panel = std::atoi(argv[++a]);
+    if (!std::strcmp(argv[a], "--rank1")) opts.update.kernel = UpdateKernel::Rank1;
     if (!std::strcmp(argv[a], "--edits") && a + 1 < argc) {
       edits.clear();
       for (char* s = std::strtok(argv[++a], ","); s; s = std::strtok(nullptr, ","))
@@ -96,7 +101,7 @@ int main(int argc, char** argv) {
   std::mt19937 rng(1234);
   const char* P = kPlatform;
 
-  ExactSolver solver;
+  ExactSolver solver(opts);
   auto t0 = Clock::now();
   Status st = solver.setGrid(g, omega);
   const double analyseMs = ms(t0);
@@ -136,8 +141,10 @@ int main(int argc, char** argv) {
   std::fflush(stdout);
 
   // Edits: add a curve (update or refactor), then remove it.
+  std::vector<std::vector<int>> curves;
   for (int k : edits) {
-    const std::vector<int> curve = curvePoints(g, k, rng, base);
+    curves.push_back(curvePoints(g, k, rng, base));
+    const std::vector<int>& curve = curves.back();
     std::set<int> with = base;
     with.insert(curve.begin(), curve.end());
     for (int phase = 0; phase < 2; ++phase) {
@@ -162,13 +169,22 @@ int main(int argc, char** argv) {
           solver.stats().iterations, est * 1e-9, peakMB());
       std::fflush(stdout);
     }
-    if (forceBoth) {
-      // The same add/remove with the update forced, to check the cost model's choice.
-      ExactSolverOptions o;
-      o.policy = ExactSolverOptions::Policy::AlwaysUpdate;
-      ExactSolver forced(o);
-      forced.setGrid(g, omega);
-      forced.setConstraints(toSet(base));
+  }
+  std::printf("{\"kind\":\"memory\",\"platform\":\"%s\",\"N\":%d,\"peakMB\":%.0f}\n", P, N,
+              peakMB());
+  std::fflush(stdout);
+
+  if (forceBoth) {
+    // The same edits with the update forced, to check the cost model's choice (a second
+    // solver: run after the memory line so its factor does not count).
+    ExactSolverOptions o = opts;
+    o.policy = ExactSolverOptions::Policy::AlwaysUpdate;
+    ExactSolver forced(o);
+    forced.setGrid(g, omega);
+    forced.setConstraints(toSet(base));
+    for (const std::vector<int>& curve : curves) {
+      std::set<int> with = base;
+      with.insert(curve.begin(), curve.end());
       for (int phase = 0; phase < 2; ++phase) {
         t0 = Clock::now();
         forced.setConstraints(toSet(phase == 0 ? with : base));

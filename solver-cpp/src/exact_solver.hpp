@@ -25,8 +25,8 @@ struct ExactSolverOptions {
   UpdateOptions update;
   // Cost model: seconds ~ flops / rate. The update kernel (rank-1 sweeps) runs slower than the
   // dense factorisation kernels; the ratio was measured (bench/exact_bench.cpp).
-  double factorRate = 1.0;  // relative speed of factorisation flops
-  double updateRate = 0.4;  // relative speed of update/downdate flops
+  double factorRate = 1.0;   // relative speed of factorisation flops
+  double updateRate = 0.45;  // relative speed of update/downdate flops
   enum class Policy { Auto, AlwaysUpdate, AlwaysRefactor } policy = Policy::Auto;
   int64_t maxBytes = int64_t(1800) << 20;  // refuse grids whose factor would need more
 };

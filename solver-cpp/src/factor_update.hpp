@@ -32,7 +32,7 @@ enum class UpdateKernel {
 
 struct UpdateOptions {
   UpdateKernel kernel = UpdateKernel::Blocked;
-  int chunk = 128;  // blocked: at most this many vectors per pass through a supernode
+  int chunk = 256;  // blocked: at most this many vectors per pass through a supernode
   // A pivot d -> d' is accepted when d' is finite and d' > pivotTolerance * d.
   double pivotTolerance = 1e-12;
   int panel = 48;  // columns per panel
