@@ -61,3 +61,22 @@ TEST(FieldSystem, ConstraintDiffSeparatesAddedRemovedChanged) {
   EXPECT_EQ(d.removed, std::vector<int>{2});
   EXPECT_EQ(d.changed, std::vector<int>{9});
 }
+
+#include "auto_solver.hpp"
+
+TEST(AutoSolver, PicksExactOnSmallGridsAndFastOnLargeOnesAndRecordsIt) {
+  Grid small;
+  small.nx = small.ny = small.nz = 10;
+  AutoSolver a;
+  ASSERT_TRUE(a.setGrid(small, kDefaultOmega).ok());
+  EXPECT_EQ(a.chosen(), "exact");
+  ASSERT_TRUE(a.setConstraints(normalizeConstraints({{5, {1, 0, 0}}})).ok());
+  Field T;
+  ASSERT_TRUE(a.solve(T).ok());
+  EXPECT_EQ(a.stats().method.rfind("auto:", 0), 0u);
+  Grid large;
+  large.nx = large.ny = large.nz = 30;
+  AutoSolver b;
+  ASSERT_TRUE(b.setGrid(large, kDefaultOmega).ok());
+  EXPECT_EQ(b.chosen(), "fast");
+}

@@ -1,0 +1,225 @@
+// Benchmark of the exact solver (issue 3) on an N^3 box: analyse, factor, 3-RHS solve, and edits
+// that add then remove a curve's 100 / 300 / 1000 clustered points on top of ~3000 existing
+// constraints, with the method the cost model chose; peak memory; optionally Eigen's
+// SimplicialLDLT refactorisation as the naive baseline. Same source natively and in wasm.
+//
+//   exact_bench N [--baseline] [--edits 100,300,1000] [--force-both]
+//               [--chunk K] [--panel P] [--rank1]   (update kernel settings)
+// Prints one JSON object per line (key "kind") and nothing else on stdout.
+#include <Eigen/SparseCholesky>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <random>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "exact_solver.hpp"
+#include "field_system.hpp"
+
+#ifdef __EMSCRIPTEN__
+static double peakMB() { return double(__builtin_wasm_memory_size(0)) * 65536.0 / 1048576.0; }
+static const char* kPlatform = "wasm";
+#else
+#include <sys/resource.h>
+static double peakMB() {
+  rusage u;
+  getrusage(RUSAGE_SELF, &u);
+  return double(u.ru_maxrss) / 1024.0;
+}
+static const char* kPlatform = "native";
+#endif
+
+using namespace hairsketch;
+using Clock = std::chrono::steady_clock;
+
+static double ms(Clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+// A stroke's points: a random walk of grid steps with momentum (as a resampled curve makes
+// them), unique, not already in `taken`.
+static std::vector<int> curvePoints(const Grid& g, int count, std::mt19937& rng,
+                                    const std::set<int>& taken) {
+  std::vector<int> out;
+  std::set<int> mine;
+  int p[3] = {int(rng() % unsigned(g.nx)), int(rng() % unsigned(g.ny)),
+              int(rng() % unsigned(g.nz))};
+  const int lim[3] = {g.nx, g.ny, g.nz};
+  int axis = int(rng() % 3), dir = 1;
+  int guard = 0;
+  while (int(out.size()) < count && guard++ < 100 * count) {
+    if (rng() % 4 == 0) {
+      axis = int(rng() % 3);
+      dir = (rng() % 2) ? 1 : -1;
+    }
+    int q = p[axis] + dir;
+    if (q < 0 || q >= lim[axis]) {
+      dir = -dir;
+      q = p[axis] + dir;
+    }
+    p[axis] = q;
+    const int idx = g.index(p[0], p[1], p[2]);
+    if (!taken.count(idx) && mine.insert(idx).second) out.push_back(idx);
+  }
+  return out;
+}
+
+static ConstraintSet toSet(const std::set<int>& idx) {
+  ConstraintSet cs;
+  for (int i : idx) cs.push_back({i, Eigen::Vector3d(1, 0, 0)});
+  return cs;
+}
+
+int main(int argc, char** argv) {
+  if (argc < 2) {
+    std::fprintf(stderr,
+                 "usage: exact_bench N [--baseline] [--edits 100,300,1000] [--force-both]\n");
+    return 2;
+  }
+  const int N = std::atoi(argv[1]);
+  bool baseline = false, forceBoth = false;
+  ExactSolverOptions opts;
+  std::vector<int> edits = {100, 300, 1000};
+  for (int a = 2; a < argc; ++a) {
+    if (!std::strcmp(argv[a], "--baseline")) baseline = true;
+    if (!std::strcmp(argv[a], "--force-both")) forceBoth = true;
+    if (!std::strcmp(argv[a], "--chunk") && a + 1 < argc) opts.update.chunk = std::atoi(argv[++a]);
+    if (!std::strcmp(argv[a], "--panel") && a + 1 < argc) opts.update.panel = std::atoi(argv[++a]);
+    if (!std::strcmp(argv[a], "--rank1")) opts.update.kernel = UpdateKernel::Rank1;
+    if (!std::strcmp(argv[a], "--edits") && a + 1 < argc) {
+      edits.clear();
+      for (char* s = std::strtok(argv[++a], ","); s; s = std::strtok(nullptr, ","))
+        edits.push_back(std::atoi(s));
+    }
+  }
+  Grid g;
+  g.nx = g.ny = g.nz = N;
+  const double omega = 100;
+  std::mt19937 rng(1234);
+  const char* P = kPlatform;
+
+  ExactSolver solver(opts);
+  auto t0 = Clock::now();
+  Status st = solver.setGrid(g, omega);
+  const double analyseMs = ms(t0);
+  if (!st.ok()) {
+    std::fprintf(stderr, "setGrid: %s\n", st.message.c_str());
+    return 1;
+  }
+  const SupernodalSymbolic& S = solver.factor().symbolic();
+  std::printf(
+      "{\"kind\":\"analyse\",\"platform\":\"%s\",\"N\":%d,\"n\":%d,\"ms\":%.1f,\"supernodes\":%d,"
+      "\"nnzL\":%lld,\"stored\":%lld,\"factorGflop\":%.2f,\"rootWidth\":%d,\"maxRows\":%d,"
+      "\"factorMB\":%.0f}\n",
+      P, N, S.n, analyseMs, S.supernodes(), (long long)S.nnzL, (long long)S.storedEntries,
+      S.factorFlops * 1e-9, S.width(S.supernodes() - 1), S.maxRows,
+      double(S.factorBytes()) / 1048576.0);
+  std::fflush(stdout);
+
+  // ~3000 existing constraints from 30 curves of 100 points.
+  std::set<int> base;
+  for (int c = 0; c < 30; ++c)
+    for (int p : curvePoints(g, 100, rng, base)) base.insert(p);
+  t0 = Clock::now();
+  st = solver.setConstraints(toSet(base));
+  const double factorMs = ms(t0);
+  if (!st.ok()) {
+    std::fprintf(stderr, "factor: %s\n", st.message.c_str());
+    return 1;
+  }
+  Field T;
+  t0 = Clock::now();
+  solver.solve(T);
+  const double solveMs = ms(t0);
+  std::printf(
+      "{\"kind\":\"factor\",\"platform\":\"%s\",\"N\":%d,\"constraints\":%zu,\"factorMs\":%.1f,"
+      "\"gflops\":%.2f,\"solveMs\":%.1f,\"peakMB\":%.0f}\n",
+      P, N, base.size(), factorMs, S.factorFlops / factorMs * 1e-6, solveMs, peakMB());
+  std::fflush(stdout);
+
+  // Edits: add a curve (update or refactor), then remove it.
+  std::vector<std::vector<int>> curves;
+  for (int k : edits) {
+    curves.push_back(curvePoints(g, k, rng, base));
+    const std::vector<int>& curve = curves.back();
+    std::set<int> with = base;
+    with.insert(curve.begin(), curve.end());
+    for (int phase = 0; phase < 2; ++phase) {
+      const std::set<int>& target = phase == 0 ? with : base;
+      const double est = solver.estimateUpdateFlops(curve);
+      t0 = Clock::now();
+      st = solver.setConstraints(toSet(target));
+      const double editMs = ms(t0);
+      if (!st.ok()) {
+        std::fprintf(stderr, "edit: %s\n", st.message.c_str());
+        return 1;
+      }
+      const std::string method = solver.stats().method;
+      t0 = Clock::now();
+      solver.solve(T);
+      const double sMs = ms(t0);
+      std::printf(
+          "{\"kind\":\"edit\",\"platform\":\"%s\",\"N\":%d,\"points\":%zu,\"op\":\"%s\","
+          "\"method\":\"%s\",\"editMs\":%.1f,\"solveMs\":%.1f,\"refineSolves\":%d,"
+          "\"updateGflop\":%.2f,\"peakMB\":%.0f}\n",
+          P, N, curve.size(), phase == 0 ? "add" : "remove", method.c_str(), editMs, sMs,
+          solver.stats().iterations, est * 1e-9, peakMB());
+      std::fflush(stdout);
+    }
+  }
+  std::printf("{\"kind\":\"memory\",\"platform\":\"%s\",\"N\":%d,\"peakMB\":%.0f}\n", P, N,
+              peakMB());
+  std::fflush(stdout);
+
+  if (forceBoth) {
+    // The same edits with the update forced, to check the cost model's choice (a second
+    // solver: run after the memory line so its factor does not count).
+    ExactSolverOptions o = opts;
+    o.policy = ExactSolverOptions::Policy::AlwaysUpdate;
+    ExactSolver forced(o);
+    forced.setGrid(g, omega);
+    forced.setConstraints(toSet(base));
+    for (const std::vector<int>& curve : curves) {
+      std::set<int> with = base;
+      with.insert(curve.begin(), curve.end());
+      for (int phase = 0; phase < 2; ++phase) {
+        t0 = Clock::now();
+        forced.setConstraints(toSet(phase == 0 ? with : base));
+        std::printf(
+            "{\"kind\":\"forced\",\"platform\":\"%s\",\"N\":%d,\"points\":%zu,\"op\":\"%s\","
+            "\"method\":\"%s\",\"editMs\":%.1f}\n",
+            P, N, curve.size(), phase == 0 ? "add" : "remove", forced.stats().method.c_str(),
+            ms(t0));
+        std::fflush(stdout);
+      }
+    }
+  }
+
+  if (baseline) {
+    // Naive baseline: Eigen SimplicialLDLT (AMD, up-looking) refactorisation of the same matrix.
+    const SparseMatrix M = assembleBiLaplacian(g);
+    SparseMatrix A = M;
+    for (int i : base) A.coeffRef(i, i) += omega * omega;
+    Eigen::SimplicialLDLT<SparseMatrix> ldlt;
+    t0 = Clock::now();
+    ldlt.analyzePattern(A);
+    const double aMs = ms(t0);
+    t0 = Clock::now();
+    ldlt.factorize(A);
+    const double fMs = ms(t0);
+    const Field B = assembleRhs(g, toSet(base), omega);
+    t0 = Clock::now();
+    Eigen::MatrixXd X = ldlt.solve(Eigen::MatrixXd(B));
+    const double sMs = ms(t0);
+    const double err = (Field(X) - T).norm() / T.norm();
+    std::printf(
+        "{\"kind\":\"baseline\",\"platform\":\"%s\",\"N\":%d,\"analyseMs\":%.1f,\"factorMs\":%.1f,"
+        "\"solveMs\":%.1f,\"nnzL\":%lld,\"relDiffToExact\":%.1e,\"peakMB\":%.0f}\n",
+        P, N, aMs, fMs, sMs, (long long)ldlt.matrixL().nestedExpression().nonZeros(), err,
+        peakMB());
+  }
+  return 0;
+}

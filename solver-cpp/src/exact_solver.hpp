@@ -1,0 +1,67 @@
+// FieldSolver "exact": the paper's §4.2 method (SPEC S3). Nested-dissection ordering of the box,
+// supernodal LDL^T of M = D^T D + omega^2 S, and on each edit either a multiple-rank
+// update/downdate of the factor or a refactorisation, whichever the cost model says is cheaper
+// (both are exact). stats().method records the choice:
+//   "factor"   first factorisation,            "update"  factor modified on the diagonal,
+//   "refactor" refactorised (cheaper),         "rhs"     only targets changed (no factor work),
+//   "recover"  a downdate failed its pivot check and M was refactorised from scratch,
+//   "zero"     no constraints: the field is zero (the factor is kept for the next edit).
+// After updates/downdates, solve() adds iterative refinement against the exact M (1-3 extra
+// solves; stats().iterations counts them, stats().residual is the last relative correction), so
+// the field equals that of a fresh factorisation to ~1e-12 however long the edit history.
+#pragma once
+
+#include <vector>
+
+#include "factor_update.hpp"
+#include "field_solver.hpp"
+#include "grid_ordering.hpp"
+#include "supernodal_factor.hpp"
+
+namespace hairsketch {
+
+struct ExactSolverOptions {
+  DissectionOptions dissection;
+  UpdateOptions update;
+  // Cost model: seconds ~ flops / rate. The update kernel (rank-1 sweeps) runs slower than the
+  // dense factorisation kernels; the ratio was measured (bench/exact_bench.cpp).
+  double factorRate = 1.0;   // relative speed of factorisation flops
+  double updateRate = 0.45;  // relative speed of update/downdate flops
+  enum class Policy { Auto, AlwaysUpdate, AlwaysRefactor } policy = Policy::Auto;
+  int64_t maxBytes = int64_t(1800) << 20;  // refuse grids whose factor would need more
+};
+
+class ExactSolver : public FieldSolver {
+ public:
+  explicit ExactSolver(ExactSolverOptions options = {}) : opt_(options) {}
+  Status setGrid(const Grid& grid, double omega) override;
+  Status setConstraints(const ConstraintSet& next) override;
+  Status solve(Field& T) override;
+  const SolveStats& stats() const override { return stats_; }
+  std::string name() const override { return "exact"; }
+
+  const SupernodalFactor& factor() const { return factor_; }
+  // Cost-model estimates for an edit of the factored constraint set (flops).
+  double estimateUpdateFlops(const std::vector<int>& gridPoints) const;
+  double factorFlops() const { return factor_.symbolic().factorFlops; }
+  // Test hook: the next update/downdate pass also removes omega^2 at this grid point (which is
+  // not constrained), making the factor indefinite, to exercise detection and recovery.
+  void injectBadDowndateForTest(int gridPoint) { injectBad_ = gridPoint; }
+
+ private:
+  Status refactor();
+
+  ExactSolverOptions opt_;
+  Grid grid_;
+  double omega_ = kDefaultOmega;
+  bool hasGrid_ = false;
+  SparseMatrix M_;
+  SupernodalFactor factor_;
+  ConstraintSet current_;      // the constraint set of the next solve
+  std::vector<int> factored_;  // grid points whose penalty is in the factor (sorted)
+  SolveStats stats_;
+  int injectBad_ = -1;
+  bool modified_ = false;  // the factor was updated/downdated since its factorisation
+};
+
+}  // namespace hairsketch
