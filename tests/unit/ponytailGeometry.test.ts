@@ -1,0 +1,76 @@
+// Ponytail cross sections (SPEC S4.6): circles between the profiles with the right radii, C1
+// nearest the scalp, the cross-section curve's scale, and the protocol block.
+import { describe, expect, it } from 'vitest';
+import {
+  packPonytailParams,
+  planeCrossing,
+  ponytailCircles,
+} from '../../web/model/ponytailGeometry';
+import type { Vec3 } from '../../web/model/vec3';
+
+// Spine straight down from the scalp at y = 1 to y = -1 (21 points, step 0.1).
+const spine: Vec3[] = Array.from({ length: 21 }, (_, i) => [0, 1 - 0.1 * i, 0]);
+// Profiles in the plane z = 0 between y = 0.55 and y = -0.55, at x = ±(0.25 + 0.1 y): the
+// radius half-way between them is r(y) = 0.25 + 0.1 y.
+const line = (x0: number, y0: number, x1: number, y1: number, n = 12): Vec3[] =>
+  Array.from({ length: n }, (_, k) => {
+    const t = k / (n - 1);
+    return [x0 + (x1 - x0) * t, y0 + (y1 - y0) * t, 0];
+  });
+const profileA = line(-0.305, 0.55, -0.195, -0.55);
+const profileB = line(0.305, 0.55, 0.195, -0.55);
+
+describe('ponytail circles', () => {
+  it('sit on the spine between the profiles, radius half the profile distance', () => {
+    const g = ponytailCircles(spine, [], profileA, profileB);
+    expect(g.scale).toBe(1);
+    expect(g.circles.length).toBe(11); // spine points y = 0.5 .. -0.5
+    g.circles.forEach((c, k) => {
+      const y = 0.5 - 0.1 * k;
+      expect(c.spineIndex).toBe(5 + k);
+      expect(c.centre).toEqual(spine[5 + k]);
+      expect(c.axis[0]).toBeCloseTo(0, 12);
+      expect(c.axis[1]).toBeCloseTo(-1, 12);
+      expect(c.radius).toBeCloseTo(0.25 + 0.1 * y, 10);
+    });
+    // C1 is the one nearest the scalp (the spine's root).
+    expect(g.circles[0].centre[1]).toBeCloseTo(0.5, 12);
+  });
+
+  it('take their scale from the cross-section curve where it is drawn', () => {
+    // A circle of radius 0.5 around the spine at y = 0, where the profiles give 0.25.
+    const cs: Vec3[] = Array.from({ length: 24 }, (_, k) => {
+      const a = (2 * Math.PI * k) / 24;
+      return [0.5 * Math.cos(a), 0, 0.5 * Math.sin(a)];
+    });
+    const g = ponytailCircles(spine, cs, profileA, profileB);
+    expect(g.scale).toBeCloseTo(2, 10);
+    expect(g.circles[0].radius).toBeCloseTo(0.6, 10);
+    expect(g.circles[10].radius).toBeCloseTo(0.4, 10);
+  });
+
+  it('every other spine point with every = 2; none without profiles', () => {
+    // Counted from the root: spine points 6, 8, .., 14.
+    expect(ponytailCircles(spine, [], profileA, profileB, { every: 2 }).circles.length).toBe(5);
+    expect(ponytailCircles(spine, [], profileA, []).circles.length).toBe(0);
+  });
+
+  it('packs to the protocol block', () => {
+    const g = ponytailCircles(spine, [], profileA, profileB);
+    const p = packPonytailParams(g.circles, 0.7);
+    expect(p.length).toBe(2 + 7 * 11);
+    expect(p.slice(0, 2)).toEqual([0.7, 11]);
+    expect(p.slice(2, 9).map((v) => Math.round(v * 1e9) / 1e9)).toEqual([0, 0.5, 0, 0, -1, 0, 0.3]);
+  });
+
+  it('plane crossing picks the intersection nearest the point', () => {
+    const zig: Vec3[] = [
+      [-2, -1, 0],
+      [-2, 1, 0],
+      [1, -1, 0],
+    ];
+    const x = planeCrossing(zig, [0, 0, 0], [0, 1, 0]);
+    expect(x).not.toBeNull();
+    expect((x as Vec3)[0]).toBeCloseTo(-0.5, 12);
+  });
+});
