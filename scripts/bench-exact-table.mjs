@@ -14,7 +14,9 @@ for (const r of rows) {
 }
 const s = (ms) => (ms >= 1000 ? `${(ms / 1000).toFixed(2)} s` : `${ms.toFixed(0)} ms`);
 const out = [];
-out.push('| platform | grid | n | nnz(L) | factor GFLOP | analyse | factor | 3-RHS solve | peak MB |');
+out.push(
+  '| platform | grid | n | nnz(L) | factor GFLOP | analyse | factor | 3-RHS solve | peak MB |',
+);
 out.push('| --- | --- | --- | --- | --- | --- | --- | --- | --- |');
 for (const [, g] of groups) {
   const a = g.find((r) => r.kind === 'analyse');
@@ -29,7 +31,9 @@ for (const [, g] of groups) {
 out.push('');
 out.push('Edits on top of ~3000 constraints: a curve of k clustered points added, then removed.');
 out.push('"edit" = factor work of the chosen method; "solve" = the 3-RHS solve after it (with one');
-out.push('refinement step after an update); "forced update" = the same edit with the update forced.');
+out.push(
+  'refinement step after an update); "forced update" = the same edit with the update forced.',
+);
 out.push('');
 out.push('| platform | grid | k | op | method | edit | solve | forced update |');
 out.push('| --- | --- | --- | --- | --- | --- | --- | --- |');
@@ -46,7 +50,9 @@ if (base.length) {
   out.push('');
   out.push('Naive baseline: Eigen SimplicialLDLT (AMD), full refactorisation of the same matrix.');
   out.push('');
-  out.push('| platform | grid | nnz(L) | analyse | factor | solve | rel. diff to exact | peak MB |');
+  out.push(
+    '| platform | grid | nnz(L) | analyse | factor | solve | rel. diff to exact | peak MB |',
+  );
   out.push('| --- | --- | --- | --- | --- | --- | --- | --- |');
   for (const b of base)
     out.push(

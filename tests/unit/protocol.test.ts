@@ -67,6 +67,7 @@ describe('protocol layouts', () => {
         setupMs: 0,
         solveMs: 0,
         growMs: 0,
+        heapBytes: 0,
       },
     };
     const t = resultTransferables(msg);

@@ -76,6 +76,7 @@ const result = (id: number, final = true): SolveResult => ({
     setupMs: 0,
     solveMs: 0,
     growMs: 0,
+    heapBytes: 0,
   },
 });
 

@@ -44,6 +44,7 @@ function scriptedEngine(log: string[]): SolverEngine {
       setupMs: 0,
       solveMs: 0,
     }),
+    heapBytes: () => 1 << 20,
     dispose: () => {},
   };
 }
@@ -99,6 +100,7 @@ describe('WorkerLogic', () => {
     await h.logic.handle(solve(1, 'preview'));
     expect(h.results().map((r) => [r.id, r.final])).toEqual([[1, false]]);
     expect(h.log).toContain(`grow:${DEFAULT_SCHEDULER.previewMaxStrands}`);
+    expect(h.results()[0].stats.heapBytes).toBe(1 << 20);
     expect(h.log).toContain(`iterate:${DEFAULT_SCHEDULER.previewIterations}`);
   });
 
@@ -116,6 +118,11 @@ describe('WorkerLogic', () => {
       [1, true],
     ]);
     expect(rs[1].stats.errorEstimate).toBeLessThanOrEqual(1e-6);
+    // The first look is grown light; the final hair with the session's settings (no cap).
+    expect(h.log.filter((l) => l.startsWith('grow'))).toEqual([
+      `grow:${DEFAULT_SCHEDULER.previewMaxStrands}`,
+      'grow:0',
+    ]);
     expect(h.log.filter((l) => l.startsWith('iterate'))).toEqual([
       'iterate:2',
       'iterate:4',

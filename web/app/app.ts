@@ -110,6 +110,12 @@ export class App {
     this.toolbar.setHairColor(session.hairColor);
     this.bindInput();
     this.viewer.onFrame(() => this.tool.update());
+    this.viewer.onRendered = () => {
+      if (!this.unstamped) return;
+      this.hairLog.push({ ...this.unstamped, time: performance.now() });
+      if (this.hairLog.length > 1000) this.hairLog.shift();
+      this.unstamped = null;
+    };
 
     this.status.set('loading', 'Loading the solver…');
     this.client = new SolverClient(
@@ -125,7 +131,11 @@ export class App {
             );
         },
         onResult: (r, final) => this.showResult(r, final),
-        onError: (m) => this.status.set('error', `Error: ${m}`),
+        onError: (m) =>
+          this.status.set(
+            'error',
+            `Error: ${m}${/over the cap/.test(m) ? ' — the exact solver does not fit this grid; use ?solver=fast' : ''}`,
+          ),
         onIdle: () => this.showReady(),
       },
     );
@@ -270,8 +280,14 @@ export class App {
       this.viewer.setHair(new THREE.LineSegments(geometry, material));
       this.status.counts(r.strands.strandStart.length - 1, this.history.current.curves.length);
       this.status.bumpRevision();
+      this.unstamped = {
+        revision: this.status.revision,
+        final,
+        strands: r.strands.strandStart.length - 1,
+      };
     }
     const st = r.stats;
+    this.heapBytes = st.heapBytes;
     if (final)
       this.lastSolve = `${st.constraints} constraints, ${st.method} ${st.iterations} it. ${st.solveMs.toFixed(0)} ms, growth ${st.growMs.toFixed(0)} ms`;
     this.previewInFlight = false;
@@ -279,6 +295,11 @@ export class App {
   }
 
   private lastSolve = '';
+  /** When each displayed hair revision reached the screen (performance.now(), for benchmarks). */
+  readonly hairLog: Array<{ revision: number; time: number; final: boolean; strands: number }> = [];
+  private unstamped: { revision: number; final: boolean; strands: number } | null = null;
+  lastPointerUp = 0;
+  heapBytes = 0;
   /** A stroke is being drawn and previews are being solved. */
   private previewing = false;
   private previewInFlight = false;
@@ -324,7 +345,10 @@ export class App {
       if (cancel) this.tool.onCancel();
       else this.tool.onPointerUp(ptr(e));
     };
-    canvas.addEventListener('pointerup', (e) => end(e, false));
+    canvas.addEventListener('pointerup', (e) => {
+      this.lastPointerUp = performance.now();
+      end(e, false);
+    });
     canvas.addEventListener('pointercancel', (e) => end(e, true));
     canvas.addEventListener('contextmenu', (e) => e.preventDefault());
     window.addEventListener('keydown', (e) => {

@@ -10,6 +10,11 @@ export interface HairsketchTestApi {
   idle(): Promise<void>;
   hairHash(): string | null;
   crashWorker(): void;
+  /** Benchmark probes: when each hair revision reached the screen, the last pointer-up time
+   *  (both performance.now()), and the solver's wasm heap size. */
+  hairLog(): Array<{ revision: number; time: number; final: boolean; strands: number }>;
+  lastPointerUp(): number;
+  heapBytes(): number;
 }
 
 declare global {
@@ -47,5 +52,8 @@ export function installTestApi(app: App): void {
       return s ? contentKey(s.points, s.strandStart) : null;
     },
     crashWorker: () => app.client.crash(),
+    hairLog: () => app.hairLog.slice(),
+    lastPointerUp: () => app.lastPointerUp,
+    heapBytes: () => app.heapBytes,
   };
 }

@@ -1,4 +1,5 @@
-// Query options: ?preset=default|empty, ?grid=25k|50k, ?strands=N (cap, for small test scenes).
+// Query options: ?preset=default|empty, ?grid=25k|50k|100k|250k, ?strands=N (cap, for small
+// test scenes), ?solver=fast|exact|cg|auto.
 import { type GridPreset, isGridPreset } from '../model/grid';
 import { isPresetName, type PresetName } from '../model/presets';
 import type { SolverName } from '../solver/protocol';

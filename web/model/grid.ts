@@ -5,7 +5,13 @@ import type { Vec3 } from './vec3';
 export const BOX_MIN: Vec3 = [-1.7, -2.9, -1.7];
 export const BOX_MAX: Vec3 = [1.7, 1.5, 1.7];
 
-export const GRID_PRESETS = { '25k': 25_000, '50k': 50_000 } as const;
+/** Grid points per preset: the paper's two (§6) and two finer ones for the multigrid path. */
+export const GRID_PRESETS = {
+  '25k': 25_000,
+  '50k': 50_000,
+  '100k': 100_000,
+  '250k': 250_000,
+} as const;
 export type GridPreset = keyof typeof GRID_PRESETS;
 
 export function isGridPreset(s: string): s is GridPreset {

@@ -29,7 +29,9 @@ export interface SolverEngine {
   grow(params: GrowthParams): StrandArrays;
   constraints(): ConstraintArrays;
   field(): FieldArrays;
-  stats(): Omit<SolveStats, 'growMs' | 'errorEstimate'>;
+  stats(): Omit<SolveStats, 'growMs' | 'errorEstimate' | 'heapBytes'>;
+  /** Bytes of the wasm heap (memory grows, never shrinks). */
+  heapBytes(): number;
   dispose(): void;
 }
 

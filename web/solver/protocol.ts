@@ -87,6 +87,7 @@ export interface SolveStats {
   setupMs: number;
   solveMs: number;
   growMs: number;
+  heapBytes: number; // wasm heap size after the job
 }
 
 // ---- messages -------------------------------------------------------------------------------

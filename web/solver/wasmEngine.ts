@@ -278,7 +278,7 @@ class WasmEngine implements SolverEngine {
     return { vectors: f32(this.mod, this.mod._hs_engine_field(h), 3 * n) };
   }
 
-  stats(): Omit<SolveStats, 'growMs' | 'errorEstimate'> {
+  stats(): Omit<SolveStats, 'growMs' | 'errorEstimate' | 'heapBytes'> {
     const s = parseStats(this.mod.UTF8ToString(this.mod._hs_engine_stats_json(this.h())));
     return {
       method: s.method,
@@ -295,6 +295,10 @@ class WasmEngine implements SolverEngine {
   /** Milliseconds of the last grow (roots + strands), measured in wasm. */
   growMs(): number {
     return this.mod._hs_engine_grow_ms(this.h());
+  }
+
+  heapBytes(): number {
+    return this.mod.HEAPU8.length;
   }
 
   /** Number of roots of the last grow. */

@@ -106,7 +106,8 @@ export class WorkerLogic {
     this.post({ type: 'progress', id: job.id, phase: 'solve', fraction: 0.05 });
     let p = this.engine.iterate(o.firstLookIterations, o.tolerance);
     if (!p.converged) {
-      this.emit(job, job.growth, p, false, t0);
+      // A first look, grown light so it reaches the screen fast; the final hair follows.
+      this.emit(job, this.lightGrowth(job.growth), p, false, t0);
       while (!p.converged) {
         await o.yieldNow();
         if (this.superseded()) return;
@@ -130,6 +131,11 @@ export class WorkerLogic {
     this.emit(job, job.growth, p, true, t0);
   }
 
+  private lightGrowth(g: GrowthParams): GrowthParams {
+    const cap = this.opts.previewMaxStrands;
+    return { ...g, maxStrands: g.maxStrands > 0 ? Math.min(g.maxStrands, cap) : cap };
+  }
+
   private emit(
     job: SolveMsg,
     growth: GrowthParams,
@@ -147,6 +153,7 @@ export class WorkerLogic {
       errorEstimate: p.converged ? Math.min(p.errorEstimate, this.opts.tolerance) : p.errorEstimate,
       solveMs: g0 - t0,
       growMs,
+      heapBytes: this.engine.heapBytes(),
     };
     this.post({
       type: 'result',

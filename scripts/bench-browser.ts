@@ -1,0 +1,175 @@
+// npm run bench:browser — drives the built app in Debian's Chromium and measures, per grid preset
+// and solver: page load -> first hair, five strokes (pointer-up -> first new hair on screen and
+// -> converged hair, preview updates per second while dragging), and the wasm heap size.
+// Writes bench-results/browser.json and prints a table. A benchmark, not a test: it asserts
+// nothing about speed. The drag is paced like a hand (about 60 pointer events per second).
+import { type ChildProcess, spawn } from 'node:child_process';
+import { mkdirSync, writeFileSync } from 'node:fs';
+import { chromium, type Page } from '@playwright/test';
+
+const PORT = Number(process.env.BENCH_PORT ?? 4190);
+const BASE = `http://127.0.0.1:${PORT}`;
+const configs = (process.env.BENCH_CONFIGS ?? '25k:fast,50k:fast,250k:fast,25k:exact,50k:exact')
+  .split(',')
+  .map((c) => {
+    const [grid, solver] = c.split(':');
+    return { grid, solver };
+  });
+const STROKES = Number(process.env.BENCH_STROKES ?? 5);
+
+interface StrokeResult {
+  firstMs: number | null;
+  convergedMs: number | null;
+  previewsPerSecond: number;
+  method: string;
+}
+
+const median = (xs: number[]): number | null => {
+  const v = xs.filter((x) => Number.isFinite(x)).sort((a, b) => a - b);
+  if (v.length === 0) return null;
+  const m = v.length >> 1;
+  return v.length % 2 ? v[m] : (v[m - 1] + v[m]) / 2;
+};
+
+async function waitServer(): Promise<void> {
+  for (let i = 0; i < 100; i++) {
+    try {
+      const r = await fetch(`${BASE}/`);
+      if (r.ok) return;
+    } catch {
+      // not up yet
+    }
+    await new Promise((r) => setTimeout(r, 200));
+  }
+  throw new Error('vite preview did not start');
+}
+
+async function settled(page: Page, timeout = 600_000): Promise<void> {
+  await page.waitForFunction(
+    () => {
+      const el = document.querySelector('[data-testid="status"]') as HTMLElement | null;
+      return !!el && (el.dataset.state === 'ready' || el.dataset.state === 'error');
+    },
+    null,
+    { timeout, polling: 20 },
+  );
+  await page.evaluate(() => window.hairsketch.idle());
+}
+
+async function stroke(page: Page, i: number): Promise<StrokeResult> {
+  const theta = 28 + 6 * i;
+  const phi = -50 + 25 * i;
+  const start = await page.evaluate(
+    ([t, p]) => window.hairsketch.scalpToScreen(t, p),
+    [theta, phi],
+  );
+  if (!start) throw new Error(`scalp point (${theta}, ${phi}) hidden`);
+  const before = await page.evaluate(() => window.hairsketch.hairLog().length);
+  await page.mouse.move(start.x, start.y);
+  await page.mouse.down();
+  const t0 = await page.evaluate(() => performance.now());
+  const n = 60;
+  for (let k = 1; k <= n; k++) {
+    await page.mouse.move(start.x + ((90 * k) / n) * (i % 2 ? -1 : 1), start.y + (170 * k) / n);
+    await page.waitForTimeout(16);
+  }
+  const t1 = await page.evaluate(() => performance.now());
+  await page.mouse.up();
+  await settled(page);
+  const r = await page.evaluate(
+    ([from]) => ({
+      log: window.hairsketch.hairLog().slice(from),
+      up: window.hairsketch.lastPointerUp(),
+      text: document.querySelector('[data-testid="status"]')?.textContent ?? '',
+    }),
+    [before],
+  );
+  const during = r.log.filter((e) => e.time > t0 && e.time <= r.up).length;
+  const after = r.log.filter((e) => e.time > r.up);
+  const first = after[0];
+  const converged = after.find((e) => e.final);
+  const method = /(mg-pcg|auto:[a-z-]+|update|refactor|factor|cg|rhs)/.exec(r.text)?.[1] ?? '?';
+  return {
+    firstMs: first ? first.time - r.up : null,
+    convergedMs: converged ? converged.time - r.up : null,
+    previewsPerSecond: during / ((t1 - t0) / 1000),
+    method,
+  };
+}
+
+async function main(): Promise<void> {
+  mkdirSync('bench-results', { recursive: true });
+  const server: ChildProcess = spawn(
+    'npx',
+    ['vite', 'preview', '--port', String(PORT), '--strictPort'],
+    {
+      stdio: 'ignore',
+    },
+  );
+  const browser = await chromium.launch({
+    executablePath: process.env.CHROMIUM_PATH ?? '/usr/bin/chromium',
+    args: [
+      '--no-sandbox',
+      '--disable-gpu',
+      '--disable-background-networking',
+      '--disable-component-update',
+      '--disable-sync',
+      '--no-first-run',
+      '--disable-quic',
+      '--enable-unsafe-swiftshader',
+    ],
+  });
+  const rows: Array<Record<string, unknown>> = [];
+  try {
+    await waitServer();
+    for (const { grid, solver } of configs) {
+      const page = await browser.newPage({ viewport: { width: 1000, height: 750 } });
+      await page.goto(`${BASE}/?grid=${grid}&solver=${solver}`);
+      await settled(page);
+      const state = await page.getByTestId('status').getAttribute('data-state');
+      const load = await page.evaluate(() => window.hairsketch.hairLog()[0]?.time ?? null);
+      if (state === 'error') {
+        const text = await page.getByTestId('status').textContent();
+        rows.push({ grid, solver, error: text });
+        console.log(`${grid} ${solver}: ${text}`);
+        await page.close();
+        continue;
+      }
+      await page.getByRole('button', { name: 'Stream curve' }).click();
+      const strokes: StrokeResult[] = [];
+      for (let i = 0; i < STROKES; i++) strokes.push(await stroke(page, i));
+      const heap = await page.evaluate(() => window.hairsketch.heapBytes());
+      const row = {
+        grid,
+        solver,
+        loadToFirstHairMs: load,
+        firstHairMedianMs: median(strokes.map((s) => s.firstMs ?? Number.NaN)),
+        convergedMedianMs: median(strokes.map((s) => s.convergedMs ?? Number.NaN)),
+        previewsPerSecondMedian: median(strokes.map((s) => s.previewsPerSecond)),
+        heapMB: heap / 2 ** 20,
+        methods: strokes.map((s) => s.method),
+        strokes,
+      };
+      rows.push(row);
+      console.log(JSON.stringify(row));
+      await page.close();
+    }
+  } finally {
+    await browser.close();
+    server.kill();
+  }
+  writeFileSync('bench-results/browser.json', `${JSON.stringify(rows, null, 2)}\n`);
+  const f = (x: unknown) => (typeof x === 'number' ? x.toFixed(x < 10 ? 1 : 0) : String(x ?? '—'));
+  console.log(
+    '\n| grid | solver | load → first hair ms | pointer-up → first new hair ms (median) | → converged ms (median) | previews/s while drawing | wasm heap MB |',
+  );
+  console.log('| --- | --- | --- | --- | --- | --- | --- |');
+  for (const r of rows)
+    console.log(
+      r.error
+        ? `| ${r.grid} | ${r.solver} | ${String(r.error).slice(0, 80)} | | | | |`
+        : `| ${r.grid} | ${r.solver} | ${f(r.loadToFirstHairMs)} | ${f(r.firstHairMedianMs)} | ${f(r.convergedMedianMs)} | ${f(r.previewsPerSecondMedian)} | ${f(r.heapMB)} |`,
+    );
+}
+
+await main();
