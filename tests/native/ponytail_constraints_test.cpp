@@ -7,6 +7,9 @@
 #include <cmath>
 #include <set>
 
+#include "hair_engine.hpp"
+#include "sphere_mesh.hpp"
+
 using namespace hairsketch;
 
 namespace {
@@ -148,4 +151,66 @@ TEST(PonytailConstraints, ParamValidation) {
   v[0] = INFINITY;
   EXPECT_EQ(code(v), StatusCode::InvalidInput);
   EXPECT_EQ(code({0.6}), StatusCode::InvalidInput);
+}
+
+TEST(PonytailConstraints, StrandsGatherThroughC1OnASphereHead) {
+  // Sphere head r = 1; a ponytail leaving the back of the head, backwards and down.
+  Grid g;
+  g.nx = g.ny = g.nz = 22;
+  g.origin = {-2, -2.4, -2.4};
+  g.step = 4.2 / 21;
+  auto head = hairsketch_test::uvSphere(0, 0, 0, 1.0, 24, 48);
+  hairsketch_test::markScalpAbove(head, -0.1);
+  const Eigen::Vector3d s0(0, 0.45, -0.95), dir = Eigen::Vector3d(0, -0.6, -0.8).normalized();
+  std::vector<double> spine;
+  for (int i = 0; i < 9; ++i) {
+    const Eigen::Vector3d p = s0 + i * g.step * dir;
+    spine.insert(spine.end(), {p.x(), p.y(), p.z()});
+  }
+  const Eigen::Vector3d c1 = s0 + 2 * g.step * dir, c2 = s0 + 4 * g.step * dir;
+  const double r1 = 0.3;
+  std::vector<double> params = {0.6, 2,      c1.x(), c1.y(), c1.z(),  dir.x(), dir.y(), dir.z(),
+                                r1,  c2.x(), c2.y(), c2.z(), dir.x(), dir.y(), dir.z(), 0.22};
+  std::vector<uint32_t> start = {0, 9}, pstart = {0, uint32_t(params.size())};
+  std::vector<uint8_t> kinds = {2}, extend = {1};
+  CurveSetView v{spine.data(), 9, start.data(), 1, kinds.data(), extend.data()};
+  v.params = params.data();
+  v.paramCount = params.size();
+  v.paramStart = pstart.data();
+  HairEngine e;
+  ASSERT_TRUE(e.setGrid(g, kDefaultOmega, "cg").ok());
+  ASSERT_TRUE(e.setScalp(head.positions.data(), head.positions.size() / 3, head.indices.data(),
+                         head.indices.size() / 3, head.scalp.data(), Eigen::Vector3d::Zero())
+                  .ok());
+  ASSERT_TRUE(e.setCurves(v).ok());
+  ASSERT_TRUE(e.solve().ok());
+  RootParams rp;
+  rp.thetaStepDeg = 8;
+  rp.phiStepDeg = 8;
+  rp.seed = 5;
+  GrowthParams gp;
+  gp.maxLength = 3;
+  ASSERT_TRUE(e.grow(rp, gp).ok());
+  // Strands rooted within 0.5 of the ponytail's root: how many cross C1's plane inside 1.2 r1?
+  const Strands& s = e.strands();
+  int near = 0, through = 0;
+  for (size_t k = 0; k + 1 < s.strandStart.size(); ++k) {
+    const float* P = s.points.data();
+    const Eigen::Vector3d root(P[3 * s.strandStart[k]], P[3 * s.strandStart[k] + 1],
+                               P[3 * s.strandStart[k] + 2]);
+    if ((root - s0).norm() > 0.5) continue;
+    ++near;
+    for (uint32_t q = s.strandStart[k]; q + 1 < s.strandStart[k + 1]; ++q) {
+      const Eigen::Vector3d a(P[3 * q], P[3 * q + 1], P[3 * q + 2]);
+      const Eigen::Vector3d b(P[3 * q + 3], P[3 * q + 4], P[3 * q + 5]);
+      const double da = (a - c1).dot(dir), db = (b - c1).dot(dir);
+      if (da <= 0 && db > 0) {
+        const Eigen::Vector3d x = a + (b - a) * (da / (da - db));
+        if ((x - c1).norm() <= 1.2 * r1) ++through;
+        break;
+      }
+    }
+  }
+  ASSERT_GT(near, 5);
+  EXPECT_GE(through, near * 3 / 4) << through << " of " << near;
 }
