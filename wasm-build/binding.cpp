@@ -245,6 +245,11 @@ EMSCRIPTEN_KEEPALIVE const int32_t* hs_engine_constraint_index(EngineHandle* h) 
 EMSCRIPTEN_KEEPALIVE const float* hs_engine_constraint_target(EngineHandle* h) {
   return h->constraintTarget.data();
 }
+// ConstraintColour per constraint (0 blue, 1 red, 2 purple, 3 green, 4 extra), same order and
+// count as the constraint arrays.
+EMSCRIPTEN_KEEPALIVE const uint8_t* hs_engine_constraint_colour(EngineHandle* h) {
+  return h->engine.constraintColours().data();
+}
 
 // Fills the float field (n x 3, interleaved); returns n (grid points).
 EMSCRIPTEN_KEEPALIVE int hs_engine_prepare_field(EngineHandle* h) {

@@ -46,6 +46,7 @@ export interface HairSolverModule {
   _hs_engine_prepare_constraints(h: number): number;
   _hs_engine_constraint_index(h: number): number;
   _hs_engine_constraint_target(h: number): number;
+  _hs_engine_constraint_colour(h: number): number;
   _hs_engine_prepare_field(h: number): number;
   _hs_engine_field(h: number): number;
   _hs_engine_stats_json(h: number): number;

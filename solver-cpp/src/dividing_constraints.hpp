@@ -31,6 +31,7 @@
 #include <string>
 #include <vector>
 
+#include "constraint_colour.hpp"
 #include "constraints.hpp"
 #include "grid.hpp"
 #include "status.hpp"
@@ -42,9 +43,6 @@ constexpr double kDividingBlueBand = 0.5;   // |v - G(|u|)| <= this, grid steps
 constexpr double kDividingRedColumn = 1.0;  // |u| <= this, grid steps
 constexpr double kDividingRedTop = 2.0;     // v <= this, grid steps
 constexpr double kDividingSlab = 0.5;       // |w| <= this, grid steps
-
-// Colour of a derived constraint, for display (Figs. 2, 4, 5).
-enum class ConstraintColour : uint8_t { Blue = 0, Red = 1, Purple = 2, Green = 3 };
 
 // Parsed dividing parameter block (protocol.ts CurveSet.params, kind dividing):
 // [sigma, h, alpha0, alpha1, then nx, ny, nz per curve point].

@@ -18,6 +18,7 @@ Status HairEngine::setGrid(const Grid& grid, double omega, const std::string& so
   grid_ = grid;
   hasGrid_ = true;
   constraints_.clear();
+  colours_.clear();
   field_ = Field::Zero(grid.size(), 3);
   fieldF_.assign(size_t(grid.size()) * 3, 0.f);
   fieldValid_ = true;  // no constraints: the zero field is the solution
@@ -45,11 +46,13 @@ Status HairEngine::setScalp(const float* positions, size_t vertexCount, const ui
 Status HairEngine::setCurves(const CurveSetView& curves) {
   if (!hasGrid_) return Status::Error(StatusCode::InvalidInput, "setCurves before setGrid");
   ConstraintSet next;
-  Status s = curvesToConstraints(grid_, curves, next);
+  std::vector<uint8_t> nextColours;
+  Status s = curvesToConstraints(grid_, curves, next, &nextColours);
   if (!s.ok()) return s;
   s = solver_->setConstraints(next);
   if (!s.ok()) return s;
   constraints_ = std::move(next);
+  colours_ = std::move(nextColours);
   fieldValid_ = false;
   return Status::Ok();
 }

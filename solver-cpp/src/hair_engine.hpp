@@ -37,6 +37,8 @@ class HairEngine {
                         ScalpAvoidanceStats* stats = nullptr) const;
 
   const ConstraintSet& constraints() const { return constraints_; }
+  // ConstraintColour of each constraint (same order), for display.
+  const std::vector<uint8_t>& constraintColours() const { return colours_; }
   const Field& field() const { return field_; }
   const Strands& strands() const { return strands_; }
   const std::vector<Eigen::Vector3f>& roots() const { return roots_; }
@@ -53,6 +55,7 @@ class HairEngine {
   std::vector<uint32_t> meshIndices_;
   std::vector<uint8_t> meshScalp_;
   ConstraintSet constraints_;
+  std::vector<uint8_t> colours_;
   Field field_;
   bool fieldValid_ = false;
   std::vector<float> fieldF_;

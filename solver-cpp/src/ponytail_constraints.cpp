@@ -130,8 +130,7 @@ void appendPonytailConstraints(const Grid& g, const double* spine, size_t n, boo
   }
   // (2) blue, the spine from near the last circle on.
   const size_t start = ponytailBlueStart(spine, n, prm);
-  if (n > start + 1) appendStreamConstraints(g, spine + 3 * start, n - start, extend, out);
-  if (colours) colours->resize(out.size(), ConstraintColour::Blue);
+  if (n > start + 1) appendStreamConstraints(g, spine + 3 * start, n - start, extend, out, colours);
   // (3) green, the centripetal ring on C1's plane.
   if (prm.circles.empty()) return;
   const PonytailCircle& c1 = prm.circles.front();

@@ -22,8 +22,8 @@
 #include <cstddef>
 #include <vector>
 
+#include "constraint_colour.hpp"
 #include "constraints.hpp"
-#include "dividing_constraints.hpp"  // ConstraintColour
 #include "grid.hpp"
 #include "status.hpp"
 

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <string>
+#include <unordered_map>
 
 #include "dividing_constraints.hpp"
 #include "ponytail_constraints.hpp"
@@ -31,7 +32,7 @@ void claimCell(const Grid& g, const Eigen::Vector3d& m, const Eigen::Vector3d& t
 }  // namespace
 
 void appendStreamConstraints(const Grid& g, const double* pts, size_t count, bool extend,
-                             std::vector<Constraint>& out) {
+                             std::vector<Constraint>& out, std::vector<ConstraintColour>* colours) {
   Eigen::Vector3d lastTangent = Eigen::Vector3d::Zero();
   double lastLength = 0;
   for (size_t s = 0; s + 1 < count; ++s) {
@@ -41,6 +42,7 @@ void appendStreamConstraints(const Grid& g, const double* pts, size_t count, boo
     if (!(len > 0)) continue;
     const Eigen::Vector3d t = (b - a) / len;
     claimCell(g, 0.5 * (a + b), t, out);
+    if (colours) colours->resize(out.size(), ConstraintColour::Blue);
     lastTangent = t;
     lastLength = len;
   }
@@ -52,11 +54,14 @@ void appendStreamConstraints(const Grid& g, const double* pts, size_t count, boo
     const double m = 1.0 - double(k) / K;
     const Eigen::Vector3d mid = end + (k - 0.5) * lastLength * lastTangent;
     claimCell(g, mid, m * lastTangent, out);
+    if (colours) colours->resize(out.size(), ConstraintColour::Red);
   }
 }
 
-Status curvesToConstraints(const Grid& g, const CurveSetView& cs, ConstraintSet& out) {
+Status curvesToConstraints(const Grid& g, const CurveSetView& cs, ConstraintSet& out,
+                           std::vector<uint8_t>* colours) {
   out.clear();
+  if (colours) colours->clear();
   if (cs.curveCount > 0) {
     if (!cs.curveStart || !cs.kinds || !cs.extend || (cs.pointCount > 0 && !cs.points))
       return Status::Error(StatusCode::InvalidInput, "curves: missing array");
@@ -87,6 +92,8 @@ Status curvesToConstraints(const Grid& g, const CurveSetView& cs, ConstraintSet&
   if (cs.extraCount > 0 && (!cs.extraIndex || !cs.extraTarget))
     return Status::Error(StatusCode::InvalidInput, "curves: missing extra constraint arrays");
   std::vector<Constraint> raw;
+  std::vector<ConstraintColour> rawColour;
+  std::vector<ConstraintColour>* rc = colours ? &rawColour : nullptr;
   for (size_t c = 0; c < cs.curveCount; ++c) {
     const size_t begin = cs.curveStart[c], end = cs.curveStart[c + 1];
     const double* pts = cs.points + 3 * begin;
@@ -101,20 +108,20 @@ Status curvesToConstraints(const Grid& g, const CurveSetView& cs, ConstraintSet&
           return Status::Error(StatusCode::InvalidInput,
                                name + " (stream) must have an empty parameter block, has " +
                                    std::to_string(pn) + " numbers");
-        appendStreamConstraints(g, pts, n, cs.extend[c] != 0, raw);
+        appendStreamConstraints(g, pts, n, cs.extend[c] != 0, raw, rc);
         break;
       case uint8_t(CurveKindCode::Dividing): {
         DividingParams dp;
         Status s = parseDividingParams(prm, pn, n, dp);
         if (!s.ok()) return Status::Error(s.code, name + " (dividing): " + s.message);
-        appendDividingConstraints(g, pts, n, dp, raw);
+        appendDividingConstraints(g, pts, n, dp, raw, rc);
         break;
       }
       case uint8_t(CurveKindCode::Ponytail): {
         PonytailParams pp;
         Status s = parsePonytailParams(prm, pn, pp);
         if (!s.ok()) return Status::Error(s.code, name + " (ponytail): " + s.message);
-        appendPonytailConstraints(g, pts, n, cs.extend[c] != 0, pp, raw);
+        appendPonytailConstraints(g, pts, n, cs.extend[c] != 0, pp, raw, rc);
         break;
       }
       default:
@@ -134,8 +141,16 @@ Status curvesToConstraints(const Grid& g, const CurveSetView& cs, ConstraintSet&
       return Status::Error(StatusCode::InvalidInput,
                            "curves: extra constraint " + std::to_string(e) + " is not finite");
     raw.push_back({p, t});
+    if (rc) rc->push_back(ConstraintColour::Extra);
   }
+  std::unordered_map<int, uint8_t> first;
+  if (colours)
+    for (size_t k = 0; k < raw.size(); ++k) first.emplace(raw[k].index, uint8_t(rawColour[k]));
   out = normalizeConstraints(std::move(raw));
+  if (colours) {
+    colours->resize(out.size());
+    for (size_t k = 0; k < out.size(); ++k) (*colours)[k] = first.at(out[k].index);
+  }
   return Status::Ok();
 }
 

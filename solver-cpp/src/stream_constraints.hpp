@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "constraint_colour.hpp"
 #include "constraints.hpp"
 #include "grid.hpp"
 #include "status.hpp"
@@ -21,9 +22,11 @@ constexpr int kStreamExtensionSegments = 4;
 // Each segment a->b claims the 8 corners of the grid cell containing its midpoint, with target
 // the unit tangent (b - a) / |b - a|. Segments whose midpoint lies outside the grid volume, and
 // zero-length segments, are skipped. With extend, K segments continue the last tangent with the
-// last segment's length, targets m_k * tangent, m_k = 1 - k / K.
+// last segment's length, targets m_k * tangent, m_k = 1 - k / K. colours (optional) receives one
+// entry per appended constraint: Blue for the curve, Red for the extension.
 void appendStreamConstraints(const Grid& grid, const double* points, size_t pointCount, bool extend,
-                             std::vector<Constraint>& out);
+                             std::vector<Constraint>& out,
+                             std::vector<ConstraintColour>* colours = nullptr);
 
 // Kind values of CurveSet.kinds (protocol.ts CurveKind).
 enum class CurveKindCode : uint8_t { Stream = 0, Dividing = 1, Ponytail = 2 };
@@ -48,10 +51,13 @@ struct CurveSetView {
 };
 
 // All curves (stream, dividing dividing_constraints.hpp, ponytail ponytail_constraints.hpp) and
-// the explicit extras -> one normalised set (duplicates averaged). InvalidInput for a malformed
+// the explicit extras -> one normalised set (duplicates averaged). colours (optional) gets one
+// entry per merged constraint: the colour of the first raw constraint at that grid point, in
+// curve order, extras last (ConstraintColour::Extra). InvalidInput for a malformed
 // layout, non-finite points, an unknown kind, a parameter block of the wrong size or with
 // non-finite numbers (the message names the curve), or an extra constraint with an index outside
 // the grid or a non-finite target.
-Status curvesToConstraints(const Grid& grid, const CurveSetView& curves, ConstraintSet& out);
+Status curvesToConstraints(const Grid& grid, const CurveSetView& curves, ConstraintSet& out,
+                           std::vector<uint8_t>* colours = nullptr);
 
 }  // namespace hairsketch

@@ -173,6 +173,21 @@ TEST(CurveSetDispatch, KindsParamBlocksAndExtras) {
       EXPECT_LT((c.target - Eigen::Vector3d(0, 0.2, 0)).norm(), 1e-15);  // averaged extras
     }
   EXPECT_TRUE(found);
+  // Colours: one per merged constraint; every kind is present; the extras' point keeps the
+  // colour of the first raw constraint there.
+  std::vector<uint8_t> colours;
+  ConstraintSet again;
+  ASSERT_TRUE(curvesToConstraints(g, v, again, &colours).ok());
+  ASSERT_EQ(colours.size(), again.size());
+  int seen[5] = {0, 0, 0, 0, 0};
+  for (uint8_t c : colours) {
+    ASSERT_LT(c, 5);
+    ++seen[c];
+  }
+  for (int c = 0; c < 5; ++c) EXPECT_GT(seen[c], 0) << "colour " << c;
+  for (size_t k = 0; k < again.size(); ++k)
+    if (colours[k] == uint8_t(ConstraintColour::Green))
+      EXPECT_NEAR(again[k].target.norm(), 0.6, 1e-12);
   auto expectError = [&](const char* needle) {
     const Status s = curvesToConstraints(g, v, out);
     EXPECT_EQ(s.code, StatusCode::InvalidInput) << needle;

@@ -90,6 +90,10 @@ describe('wasm primitives', () => {
     const minus = at(-2 * GRID.step, 1.07, 0);
     expect(f[3 * plus]).toBeGreaterThan(0.2);
     expect(f[3 * minus]).toBeLessThan(-0.2);
+    // Blue and red constraints, coloured per constraint.
+    const colours = e.constraintColours();
+    expect(colours.length).toBe(e.constraints().index.length);
+    expect(new Set(colours)).toEqual(new Set([0, 1]));
     e.dispose();
   });
 

@@ -204,6 +204,16 @@ class WasmEngine implements SolverEngine {
     );
   }
 
+  /** Display colour of each constraint of constraints(), same order: 0 blue, 1 red, 2 purple,
+   *  3 green, 4 explicit extra (solver-cpp/src/constraint_colour.hpp). */
+  constraintColours(): Uint8Array {
+    const h = this.h();
+    const m = this.mod;
+    const n = m._hs_engine_prepare_constraints(h);
+    const ptr = m._hs_engine_constraint_colour(h);
+    return n === 0 ? new Uint8Array(0) : m.HEAPU8.slice(ptr, ptr + n);
+  }
+
   /** Scalp avoidance (SPEC S4.7) on the last solved field: constraints to store as the
    *  CurveSet's extraIndex / extraTarget (sorted by grid index, |target| = magnitude). */
   scalpAvoidance(opts: ScalpAvoidanceOptions = {}): ScalpAvoidanceResult {
@@ -317,6 +327,7 @@ export type WasmSolverEngine = SolverEngine & {
   growMs(): number;
   rootCount(): number;
   scalpAvoidance(opts?: ScalpAvoidanceOptions): ScalpAvoidanceResult;
+  constraintColours(): Uint8Array;
 };
 
 /** Options of scalp avoidance (SPEC S4.7). */
