@@ -136,8 +136,9 @@ int main(int argc, char** argv) {
   const double solveMs = ms(t0);
   std::printf(
       "{\"kind\":\"factor\",\"platform\":\"%s\",\"N\":%d,\"constraints\":%zu,\"factorMs\":%.1f,"
-      "\"gflops\":%.2f,\"solveMs\":%.1f,\"peakMB\":%.0f}\n",
-      P, N, base.size(), factorMs, S.factorFlops / factorMs * 1e-6, solveMs, peakMB());
+      "\"gflops\":%.2f,\"solveMs\":%.1f,\"peakMB\":%.0f,\"fieldSum\":%.17g,\"fieldNorm\":%.17g}\n",
+      P, N, base.size(), factorMs, S.factorFlops / factorMs * 1e-6, solveMs, peakMB(), T.sum(),
+      T.norm());
   std::fflush(stdout);
 
   // Edits: add a curve (update or refactor), then remove it.

@@ -209,3 +209,46 @@ TEST(ExactSolver, ResidualAndEnergyMinimum) {
 
 }  // namespace
 }  // namespace hairsketch
+
+namespace hairsketch {
+namespace {
+
+TEST(ExactSolver, CostModelPrefersUpdateForSmallEditsAndRefactorForHugeOnes) {
+  const Grid g = testref::box(16, 16, 16);
+  ExactSolver s;
+  ASSERT_TRUE(s.setGrid(g, 100).ok());
+  ConstraintSet base;
+  for (int p = 0; p < int(g.size()); p += 97) base.push_back({p, {1, 0, 0}});
+  ASSERT_TRUE(s.setConstraints(base).ok());
+  EXPECT_EQ(s.stats().method, "factor");
+  // A few new points: update.
+  ConstraintSet small = base;
+  small.push_back({g.index(3, 3, 3), {0, 1, 0}});
+  small.push_back({g.index(3, 3, 4), {0, 1, 0}});
+  small = normalizeConstraints(small);
+  ASSERT_TRUE(s.setConstraints(small).ok());
+  EXPECT_EQ(s.stats().method, "update");
+  EXPECT_EQ(s.stats().added, 2);
+  // Constrain half the grid at once: the path costs exceed a factorisation.
+  ConstraintSet huge;
+  for (int p = 0; p < int(g.size()); p += 2) huge.push_back({p, {0, 0, 1}});
+  ASSERT_GT(s.estimateUpdateFlops([&] {
+    std::vector<int> v;
+    for (const Constraint& c : huge) v.push_back(c.index);
+    return v;
+  }()),
+            s.factorFlops());
+  ASSERT_TRUE(s.setConstraints(huge).ok());
+  EXPECT_EQ(s.stats().method, "refactor");
+  Field T;
+  ASSERT_TRUE(s.solve(T).ok());
+  EXPECT_LT(testref::relError(T, testref::referenceField(g, huge, 100)), 1e-10);
+  // Targets only: no factor work.
+  for (Constraint& c : huge) c.target = {1, 1, 0};
+  ASSERT_TRUE(s.setConstraints(huge).ok());
+  EXPECT_EQ(s.stats().method, "rhs");
+  EXPECT_EQ(s.stats().changed, int(huge.size()));
+}
+
+}  // namespace
+}  // namespace hairsketch
