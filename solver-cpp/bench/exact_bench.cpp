@@ -8,6 +8,7 @@
 // Prints one JSON object per line (key "kind") and nothing else on stdout.
 #include <Eigen/SparseCholesky>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -69,7 +70,7 @@ static std::vector<int> curvePoints(const Grid& g, int count, std::mt19937& rng,
 
 static ConstraintSet toSet(const std::set<int>& idx) {
   ConstraintSet cs;
-  for (int i : idx) cs.push_back({i, Eigen::Vector3d(1, 0, 0)});
+  for (int i : idx) cs.push_back({i, Eigen::Vector3d(std::cos(0.1 * i), std::sin(0.1 * i), 0.5)});
   return cs;
 }
 
