@@ -4,7 +4,8 @@
 // (both are exact). stats().method records the choice:
 //   "factor"   first factorisation,            "update"  factor modified on the diagonal,
 //   "refactor" refactorised (cheaper),         "rhs"     only targets changed (no factor work),
-//   "recover"  a downdate failed its pivot check and M was refactorised from scratch,
+//   "recover"  a downdate failed its pivot check (or refinement after updates did not settle)
+//              and M was refactorised from scratch,
 //   "zero"     no constraints: the field is zero (the factor is kept for the next edit).
 // After updates/downdates, solve() adds iterative refinement against the exact M (1-3 extra
 // solves; stats().iterations counts them, stats().residual is the last relative correction), so
