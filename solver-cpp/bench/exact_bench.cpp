@@ -4,7 +4,7 @@
 // SimplicialLDLT refactorisation as the naive baseline. Same source natively and in wasm.
 //
 //   exact_bench N [--baseline] [--edits 100,300,1000] [--force-both]
-//               [--chunk K] [--panel P] [--rank1]   (update kernel settings)
+//               [--chunk K] [--panel P] [--rank1|--blocked]   (update kernel settings)
 // Prints one JSON object per line (key "kind") and nothing else on stdout.
 #include <Eigen/SparseCholesky>
 #include <chrono>
@@ -90,6 +90,7 @@ int main(int argc, char** argv) {
     if (!std::strcmp(argv[a], "--chunk") && a + 1 < argc) opts.update.chunk = std::atoi(argv[++a]);
     if (!std::strcmp(argv[a], "--panel") && a + 1 < argc) opts.update.panel = std::atoi(argv[++a]);
     if (!std::strcmp(argv[a], "--rank1")) opts.update.kernel = UpdateKernel::Rank1;
+    if (!std::strcmp(argv[a], "--blocked")) opts.update.kernel = UpdateKernel::Blocked;
     if (!std::strcmp(argv[a], "--edits") && a + 1 < argc) {
       edits.clear();
       for (char* s = std::strtok(argv[++a], ","); s; s = std::strtok(nullptr, ","))

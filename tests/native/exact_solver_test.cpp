@@ -21,10 +21,12 @@ Eigen::Vector3d randomTarget(std::mt19937& rng) {
 // 200 random edits: new curves (clustered points), removals, target changes, occasional
 // clear-all; after each edit the field must equal a fresh Eigen solve.
 void randomEdits(const Grid& g, ExactSolverOptions::Policy policy, unsigned seed, int steps,
-                 std::map<std::string, int>* methods) {
+                 std::map<std::string, int>* methods,
+                 UpdateKernel kernel = ExactSolverOptions().update.kernel) {
   std::mt19937 rng(seed);
   ExactSolverOptions o;
   o.policy = policy;
+  o.update.kernel = kernel;
   ExactSolver solver(o);
   const double omega = 100.0;
   ASSERT_TRUE(solver.setGrid(g, omega).ok());
@@ -99,6 +101,15 @@ TEST(ExactSolver, RandomEditsMediumGridUpdates) {
   std::map<std::string, int> m;
   randomEdits(box(13, 12, 11), ExactSolverOptions::Policy::AlwaysUpdate, 6, 200, &m);
   EXPECT_GT(m["update"], 50);
+}
+
+TEST(ExactSolver, RandomEditsBothKernels) {
+  // The wasm build defaults to the rank-1 kernel, the native build to the blocked one.
+  for (UpdateKernel k : {UpdateKernel::Rank1, UpdateKernel::Blocked}) {
+    std::map<std::string, int> m;
+    randomEdits(box(9, 8, 10), ExactSolverOptions::Policy::AlwaysUpdate, 9, 200, &m, k);
+    EXPECT_GT(m["update"], 50);
+  }
 }
 
 TEST(ExactSolver, RandomEditsMediumGridCostModel) {
