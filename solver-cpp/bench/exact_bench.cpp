@@ -4,10 +4,11 @@
 // SimplicialLDLT refactorisation as the naive baseline. Same source natively and in wasm.
 //
 //   exact_bench N [--baseline] [--edits 100,300,1000] [--force-both]
-//               [--chunk K] [--panel P] [--rank1]   (update kernel settings)
+//               [--chunk K] [--panel P] [--rank1|--blocked]   (update kernel settings)
 // Prints one JSON object per line (key "kind") and nothing else on stdout.
 #include <Eigen/SparseCholesky>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -69,7 +70,7 @@ static std::vector<int> curvePoints(const Grid& g, int count, std::mt19937& rng,
 
 static ConstraintSet toSet(const std::set<int>& idx) {
   ConstraintSet cs;
-  for (int i : idx) cs.push_back({i, Eigen::Vector3d(1, 0, 0)});
+  for (int i : idx) cs.push_back({i, Eigen::Vector3d(std::cos(0.1 * i), std::sin(0.1 * i), 0.5)});
   return cs;
 }
 
@@ -89,6 +90,7 @@ int main(int argc, char** argv) {
     if (!std::strcmp(argv[a], "--chunk") && a + 1 < argc) opts.update.chunk = std::atoi(argv[++a]);
     if (!std::strcmp(argv[a], "--panel") && a + 1 < argc) opts.update.panel = std::atoi(argv[++a]);
     if (!std::strcmp(argv[a], "--rank1")) opts.update.kernel = UpdateKernel::Rank1;
+    if (!std::strcmp(argv[a], "--blocked")) opts.update.kernel = UpdateKernel::Blocked;
     if (!std::strcmp(argv[a], "--edits") && a + 1 < argc) {
       edits.clear();
       for (char* s = std::strtok(argv[++a], ","); s; s = std::strtok(nullptr, ","))
@@ -136,8 +138,9 @@ int main(int argc, char** argv) {
   const double solveMs = ms(t0);
   std::printf(
       "{\"kind\":\"factor\",\"platform\":\"%s\",\"N\":%d,\"constraints\":%zu,\"factorMs\":%.1f,"
-      "\"gflops\":%.2f,\"solveMs\":%.1f,\"peakMB\":%.0f}\n",
-      P, N, base.size(), factorMs, S.factorFlops / factorMs * 1e-6, solveMs, peakMB());
+      "\"gflops\":%.2f,\"solveMs\":%.1f,\"peakMB\":%.0f,\"fieldSum\":%.17g,\"fieldNorm\":%.17g}\n",
+      P, N, base.size(), factorMs, S.factorFlops / factorMs * 1e-6, solveMs, peakMB(), T.sum(),
+      T.norm());
   std::fflush(stdout);
 
   // Edits: add a curve (update or refactor), then remove it.

@@ -167,8 +167,15 @@ Status ExactSolver::solve(Field& T) {
       stats_.residual = rel;
       if (rel < 1e-8) break;  // the next correction would be ~rel^2: negligible
     }
-    // A factor this far off is refactored at the next edit (still exact, just cheaper to solve).
-    if (stats_.residual > 1e-8) factor_.invalidate();
+    // Refinement did not settle: the modified factor is too far off. Refactor from M and solve
+    // again (never return a field that is not exact).
+    if (!(stats_.residual <= 1e-8)) {
+      stats_.method = "recover";
+      Status st = refactor();
+      if (!st.ok()) return st;
+      T = B;
+      factor_.solveInPlace(T);
+    }
   }
   stats_.solveMs = msSince(t0);
   if (!T.allFinite())

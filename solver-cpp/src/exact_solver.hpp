@@ -4,7 +4,8 @@
 // (both are exact). stats().method records the choice:
 //   "factor"   first factorisation,            "update"  factor modified on the diagonal,
 //   "refactor" refactorised (cheaper),         "rhs"     only targets changed (no factor work),
-//   "recover"  a downdate failed its pivot check and M was refactorised from scratch,
+//   "recover"  a downdate failed its pivot check (or refinement after updates did not settle)
+//              and M was refactorised from scratch,
 //   "zero"     no constraints: the field is zero (the factor is kept for the next edit).
 // After updates/downdates, solve() adds iterative refinement against the exact M (1-3 extra
 // solves; stats().iterations counts them, stats().residual is the last relative correction), so
@@ -20,13 +21,30 @@
 
 namespace hairsketch {
 
+// Per-target defaults, measured with bench/exact_bench (29^3 and 37^3, edits of 300 and 1000
+// points): natively the blocked update kernel (Eigen GEMMs) wins; in wasm, where Eigen 3.4 has no
+// SIMD path but the rank-1 strip sweeps auto-vectorise to simd128, the rank-1 kernel wins
+// (0.57 s vs 0.74 s for 300 points at 29^3, 1.45 s vs 1.98 s at 37^3).
+#if defined(__wasm__)
+constexpr UpdateKernel kDefaultUpdateKernel = UpdateKernel::Rank1;
+constexpr double kDefaultUpdateRate = 0.85;
+#else
+constexpr UpdateKernel kDefaultUpdateKernel = UpdateKernel::Blocked;
+constexpr double kDefaultUpdateRate = 0.6;
+#endif
+
 struct ExactSolverOptions {
   DissectionOptions dissection;
-  UpdateOptions update;
-  // Cost model: seconds ~ flops / rate. The update kernel (rank-1 sweeps) runs slower than the
-  // dense factorisation kernels; the ratio was measured (bench/exact_bench.cpp).
-  double factorRate = 1.0;   // relative speed of factorisation flops
-  double updateRate = 0.45;  // relative speed of update/downdate flops
+  UpdateOptions update = [] {
+    UpdateOptions u;
+    u.kernel = kDefaultUpdateKernel;
+    return u;
+  }();
+  // Cost model: seconds ~ flops / rate, with flops from the symbolic analysis (factorisation)
+  // and the merged path lengths (estimateModifyFlops). Only the ratio matters; it was measured
+  // per target (see above).
+  double factorRate = 1.0;                 // relative speed of factorisation flops
+  double updateRate = kDefaultUpdateRate;  // relative speed of update/downdate flops
   enum class Policy { Auto, AlwaysUpdate, AlwaysRefactor } policy = Policy::Auto;
   int64_t maxBytes = int64_t(1800) << 20;  // refuse grids whose factor would need more
 };

@@ -4,13 +4,18 @@
 // path from p to the root, and the pattern of L never changes.
 //
 // Terms are applied as one multiple-rank pass over the union of their paths: supernodes are
-// visited in postorder; at each, the vectors that reach it (its own terms plus the vectors
-// coming up from its children) form a dense |R_s| x k block W, and the block is modified a
-// panel of columns at a time: the panel's pivots and scalars are computed row by row, then the
-// rows below the panel are swept in strips with all k vectors (cache-resident, vectorised over
-// rows). The rows of W below the supernode's own columns go on to the parent. Mathematically
-// this equals applying the rank-1 modifications one after the other in the order given, so
-// updates should come before downdates (the intermediate matrices then stay positive definite).
+// visited in postorder; at each, the vectors that reach it (its own terms plus the vectors coming
+// up from its children) form a dense |R_s| x k block W. Two kernels do the same arithmetic:
+//  - Blocked (default): a panel of columns is eliminated at once. With Y = L_pp^-1 W_p (the C1
+//    multipliers of the panel) and a k x k weight matrix Lambda (the alphas, then full: it is
+//    the Schur complement of the weights), every column gets g_j = Lambda_j y_j / d'_j and the
+//    rows below the panel are updated by two GEMMs with inner dimension k:
+//    L_below += (W_below G - L_below UT(Y G)), W_below -= L_below Y. Vectors travel in chunks of
+//    at most `chunk` columns; each chunk's residual rows and Lambda go to the parent.
+//  - Rank1: C1 column by column with all vectors of a supernode, rows swept in strips (the
+//    reference the blocked kernel is tested against).
+// Sequential rank-1 application in term order is the mathematical meaning: callers put updates
+// before downdates so that every intermediate matrix stays positive definite.
 #pragma once
 
 #include <vector>

@@ -21,10 +21,12 @@ Eigen::Vector3d randomTarget(std::mt19937& rng) {
 // 200 random edits: new curves (clustered points), removals, target changes, occasional
 // clear-all; after each edit the field must equal a fresh Eigen solve.
 void randomEdits(const Grid& g, ExactSolverOptions::Policy policy, unsigned seed, int steps,
-                 std::map<std::string, int>* methods) {
+                 std::map<std::string, int>* methods,
+                 UpdateKernel kernel = ExactSolverOptions().update.kernel) {
   std::mt19937 rng(seed);
   ExactSolverOptions o;
   o.policy = policy;
+  o.update.kernel = kernel;
   ExactSolver solver(o);
   const double omega = 100.0;
   ASSERT_TRUE(solver.setGrid(g, omega).ok());
@@ -99,6 +101,15 @@ TEST(ExactSolver, RandomEditsMediumGridUpdates) {
   std::map<std::string, int> m;
   randomEdits(box(13, 12, 11), ExactSolverOptions::Policy::AlwaysUpdate, 6, 200, &m);
   EXPECT_GT(m["update"], 50);
+}
+
+TEST(ExactSolver, RandomEditsBothKernels) {
+  // The wasm build defaults to the rank-1 kernel, the native build to the blocked one.
+  for (UpdateKernel k : {UpdateKernel::Rank1, UpdateKernel::Blocked}) {
+    std::map<std::string, int> m;
+    randomEdits(box(9, 8, 10), ExactSolverOptions::Policy::AlwaysUpdate, 9, 200, &m, k);
+    EXPECT_GT(m["update"], 50);
+  }
 }
 
 TEST(ExactSolver, RandomEditsMediumGridCostModel) {
@@ -205,6 +216,49 @@ TEST(ExactSolver, ResidualAndEnergyMinimum) {
     Field P = T + 1e-3 * Field::Random(g.size(), 3);
     EXPECT_GT(fieldEnergy(g, cs, 100, P), e0);
   }
+}
+
+}  // namespace
+}  // namespace hairsketch
+
+namespace hairsketch {
+namespace {
+
+TEST(ExactSolver, CostModelPrefersUpdateForSmallEditsAndRefactorForHugeOnes) {
+  const Grid g = testref::box(16, 16, 16);
+  ExactSolver s;
+  ASSERT_TRUE(s.setGrid(g, 100).ok());
+  ConstraintSet base;
+  for (int p = 0; p < int(g.size()); p += 97) base.push_back({p, {1, 0, 0}});
+  ASSERT_TRUE(s.setConstraints(base).ok());
+  EXPECT_EQ(s.stats().method, "factor");
+  // A few new points: update.
+  ConstraintSet small = base;
+  small.push_back({g.index(3, 3, 3), {0, 1, 0}});
+  small.push_back({g.index(3, 3, 4), {0, 1, 0}});
+  small = normalizeConstraints(small);
+  ASSERT_TRUE(s.setConstraints(small).ok());
+  EXPECT_EQ(s.stats().method, "update");
+  EXPECT_EQ(s.stats().added, 2);
+  // Constrain half the grid at once: the path costs exceed a factorisation.
+  ConstraintSet huge;
+  for (int p = 0; p < int(g.size()); p += 2) huge.push_back({p, {0, 0, 1}});
+  ASSERT_GT(s.estimateUpdateFlops([&] {
+    std::vector<int> v;
+    for (const Constraint& c : huge) v.push_back(c.index);
+    return v;
+  }()),
+            s.factorFlops());
+  ASSERT_TRUE(s.setConstraints(huge).ok());
+  EXPECT_EQ(s.stats().method, "refactor");
+  Field T;
+  ASSERT_TRUE(s.solve(T).ok());
+  EXPECT_LT(testref::relError(T, testref::referenceField(g, huge, 100)), 1e-10);
+  // Targets only: no factor work.
+  for (Constraint& c : huge) c.target = {1, 1, 0};
+  ASSERT_TRUE(s.setConstraints(huge).ok());
+  EXPECT_EQ(s.stats().method, "rhs");
+  EXPECT_EQ(s.stats().changed, int(huge.size()));
 }
 
 }  // namespace
