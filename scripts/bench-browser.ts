@@ -5,6 +5,7 @@
 // nothing about speed. The drag is paced like a hand (about 60 pointer events per second).
 import { type ChildProcess, spawn } from 'node:child_process';
 import { mkdirSync, writeFileSync } from 'node:fs';
+import http from 'node:http';
 import { chromium, type Page } from '@playwright/test';
 
 const PORT = Number(process.env.BENCH_PORT ?? 4190);
@@ -32,13 +33,15 @@ const median = (xs: number[]): number | null => {
 };
 
 async function waitServer(): Promise<void> {
-  for (let i = 0; i < 100; i++) {
-    try {
-      const r = await fetch(`${BASE}/`);
-      if (r.ok) return;
-    } catch {
-      // not up yet
-    }
+  for (let i = 0; i < 300; i++) {
+    const ok = await new Promise<boolean>((resolve) => {
+      const req = http.get(`${BASE}/`, (res) => {
+        res.resume();
+        resolve(res.statusCode === 200);
+      });
+      req.on('error', () => resolve(false));
+    });
+    if (ok) return;
     await new Promise((r) => setTimeout(r, 200));
   }
   throw new Error('vite preview did not start');
@@ -100,12 +103,13 @@ async function stroke(page: Page, i: number): Promise<StrokeResult> {
 async function main(): Promise<void> {
   mkdirSync('bench-results', { recursive: true });
   const server: ChildProcess = spawn(
-    'npx',
-    ['vite', 'preview', '--port', String(PORT), '--strictPort'],
-    {
-      stdio: 'ignore',
-    },
+    'node_modules/.bin/vite',
+    ['preview', '--port', String(PORT), '--strictPort'],
+    { stdio: ['ignore', 'ignore', 'inherit'] },
   );
+  server.on('exit', (code) => {
+    if (code) console.error(`vite preview exited with code ${code}`);
+  });
   const browser = await chromium.launch({
     executablePath: process.env.CHROMIUM_PATH ?? '/usr/bin/chromium',
     args: [
