@@ -5,7 +5,8 @@
 namespace hairsketch {
 namespace {
 
-constexpr int kOffsets[6][3] = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
+constexpr int kOffsets[6][3] = {{-1, 0, 0}, {1, 0, 0},  {0, -1, 0},
+                                {0, 1, 0},  {0, 0, -1}, {0, 0, 1}};
 
 int neighbourCount(const Grid& g, int i, int j, int k) {
   int c = 0;

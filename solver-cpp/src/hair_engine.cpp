@@ -32,6 +32,7 @@ Status HairEngine::setScalp(const float* positions, size_t vertexCount, const ui
                             const Eigen::Vector3d& center) {
   rootsValid_ = false;
   roots_.clear();
+  capped_ = false;
   meshPositions_.clear();
   meshIndices_.clear();
   meshScalp_.clear();
@@ -83,18 +84,29 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
   if (!hasGrid_) return Status::Error(StatusCode::InvalidInput, "grow before setGrid");
   if (!fieldValid_)
     return Status::Error(StatusCode::InvalidInput, "grow: curves changed, solve first");
+  if (rp.maxStrands < 0) return Status::Error(StatusCode::InvalidInput, "maxStrands < 0");
   const auto t0 = Clock::now();
+  // The full root set is cached (sampling casts a ray per root); a cap takes an even stride of
+  // it, so previews (capped) and full growth share one sampling.
   const bool same = rootsValid_ && rootKey_.thetaStepDeg == rp.thetaStepDeg &&
                     rootKey_.phiStepDeg == rp.phiStepDeg && rootKey_.jitter == rp.jitter &&
-                    rootKey_.seed == rp.seed && rootKey_.maxStrands == rp.maxStrands;
+                    rootKey_.seed == rp.seed;
   if (!same) {
     rootsValid_ = false;
-    Status s = scalp_.sample(rp, roots_);
+    RootParams all = rp;
+    all.maxStrands = 0;
+    Status s = scalp_.sample(all, roots_);
     if (!s.ok()) return s;
-    rootKey_ = rp;
+    rootKey_ = all;
     rootsValid_ = true;
   }
-  Status s = growStrands(grid_, fieldF_, roots_, gp, strands_);
+  capped_ = rp.maxStrands > 0 && roots_.size() > size_t(rp.maxStrands);
+  if (capped_) {
+    const size_t m = size_t(rp.maxStrands), total = roots_.size();
+    cappedRoots_.resize(m);
+    for (size_t k = 0; k < m; ++k) cappedRoots_[k] = roots_[k * total / m];
+  }
+  Status s = growStrands(grid_, fieldF_, roots(), gp, strands_);
   growMs_ = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
   return s;
 }

@@ -41,7 +41,8 @@ class HairEngine {
   const std::vector<uint8_t>& constraintColours() const { return colours_; }
   const Field& field() const { return field_; }
   const Strands& strands() const { return strands_; }
-  const std::vector<Eigen::Vector3f>& roots() const { return roots_; }
+  // The roots of the last growth (the cached set, or its capped stride).
+  const std::vector<Eigen::Vector3f>& roots() const { return capped_ ? cappedRoots_ : roots_; }
   SolveStats stats() const;
   double growMs() const { return growMs_; }
   const Grid& grid() const { return grid_; }
@@ -61,7 +62,9 @@ class HairEngine {
   std::vector<float> fieldF_;
   bool rootsValid_ = false;
   RootParams rootKey_;
-  std::vector<Eigen::Vector3f> roots_;
+  std::vector<Eigen::Vector3f> roots_;        // all roots of rootKey_
+  std::vector<Eigen::Vector3f> cappedRoots_;  // an even stride of roots_ when capped
+  bool capped_ = false;
   Strands strands_;
   double growMs_ = 0;
 };

@@ -6,6 +6,8 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <memory>
+#include <utility>
 #include <vector>
 
 #include "field_system.hpp"
@@ -23,8 +25,29 @@ struct GrowthParams {
 
 // protocol.ts StrandArrays: strand s owns points strandStart[s] .. strandStart[s + 1] - 1,
 // the first being its root. Every root gives a strand (possibly just the root point).
+// An allocator that leaves new elements uninitialised: growth writes every point it keeps, so
+// zero-filling the (large, reused) point buffer on each resize would be wasted work.
+template <typename T>
+struct UninitAllocator : std::allocator<T> {
+  template <typename U>
+  struct rebind {
+    using other = UninitAllocator<U>;
+  };
+  UninitAllocator() = default;
+  template <typename U>
+  UninitAllocator(const UninitAllocator<U>&) noexcept {}
+  template <typename U>
+  void construct(U* p) noexcept {
+    ::new (static_cast<void*>(p)) U;
+  }
+  template <typename U, typename... Args>
+  void construct(U* p, Args&&... args) {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+};
+
 struct Strands {
-  std::vector<float> points;  // points[3 * point + axis]
+  std::vector<float, UninitAllocator<float>> points;  // points[3 * point + axis]
   std::vector<uint32_t> strandStart;
 };
 

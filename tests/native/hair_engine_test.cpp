@@ -80,6 +80,26 @@ TEST(HairEngine, CurveToStrandsIsDeterministicPerSeed) {
   ASSERT_TRUE(e2.grow(rp, gp).ok());
   EXPECT_EQ(e2.strands().points, first.points);
   EXPECT_EQ(e2.strands().strandStart, first.strandStart);
+  // A capped growth (a preview) takes an even stride of the same roots: its strands are exactly
+  // the full growth's strands k * total / cap, and growing in full again gives the first hair.
+  {
+    RootParams capped = rp;
+    capped.maxStrands = 37;
+    ASSERT_TRUE(e.grow(capped, gp).ok());
+    const Strands few = e.strands();
+    const size_t total = first.strandStart.size() - 1, m = 37;
+    ASSERT_EQ(few.strandStart.size(), m + 1);
+    for (size_t k = 0; k < m; ++k) {
+      const size_t src = k * total / m;
+      const size_t n = few.strandStart[k + 1] - few.strandStart[k];
+      ASSERT_EQ(n, first.strandStart[src + 1] - first.strandStart[src]) << k;
+      for (size_t q = 0; q < 3 * n; ++q)
+        ASSERT_EQ(few.points[3 * few.strandStart[k] + q],
+                  first.points[3 * first.strandStart[src] + q]);
+    }
+    ASSERT_TRUE(e.grow(rp, gp).ok());
+    EXPECT_EQ(e.strands().points, first.points);
+  }
   rp.seed = 4;
   ASSERT_TRUE(e.grow(rp, gp).ok());
   EXPECT_NE(e.strands().points, first.points);
