@@ -26,7 +26,7 @@ const curves = presetCurves('default', {
   headPoint: (a, b) => picker.scalpPoint(a, b)?.point ?? null,
   center: head.center,
   step: grid.step,
-  viewpoint: { position: [0, 0, 6], target: [0, 0, 0], up: [0, 1, 0] },
+  viewpoint: { position: [0, 0, 6], target: [0, 0, 0] },
 });
 const engine = await loadSolverEngine({
   wasmBinary: new Uint8Array(readFileSync('web/generated/hairsolver.wasm')),
