@@ -15,4 +15,7 @@ emcc -O3 -msimd128 -std=c++17 -DNDEBUG -I"$src" -I/usr/include/eigen3 \
   "$src"/constraints.cpp \
   -sALLOW_MEMORY_GROWTH=1 -sMAXIMUM_MEMORY=4GB -sINITIAL_MEMORY=64MB -sENVIRONMENT=node \
   -sNODERAWFS=1 -sEXIT_RUNTIME=1 -o "$out/exact_bench.js"
+# The output is CommonJS; the repository's package.json says "type": "module", which Node would
+# apply to build/wasm-bench/*.js (ReferenceError: __dirname is not defined in ES module scope).
+echo '{"type": "commonjs"}' > "$out/package.json"
 echo "$out/exact_bench.js"

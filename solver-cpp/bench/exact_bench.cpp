@@ -3,8 +3,13 @@
 // constraints, with the method the cost model chose; peak memory; optionally Eigen's
 // SimplicialLDLT refactorisation as the naive baseline. Same source natively and in wasm.
 //
-//   exact_bench N [--baseline] [--edits 100,300,1000] [--force-both]
+//   exact_bench N [--baseline | --baseline-only] [--edits 100,300,1000] [--force-both]
 //               [--chunk K] [--panel P] [--rank1|--blocked]   (update kernel settings)
+// --force-both: every edit is also timed with the method the cost model did not choose (update
+//   forced on a second solver; refactorisation forced on a third), after the memory line.
+// --baseline: the naive baseline after everything else (its peak memory includes the rest).
+// --baseline-only: only the naive baseline, first in the process, so that its peak memory is its
+//   own; the exact solver then runs once (after the baseline's peak is taken) for the comparison.
 // Prints one JSON object per line (key "kind") and nothing else on stdout.
 #include <Eigen/SparseCholesky>
 #include <chrono>
@@ -74,18 +79,59 @@ static ConstraintSet toSet(const std::set<int>& idx) {
   return cs;
 }
 
+// Naive baseline: Eigen SimplicialLDLT (AMD, up-looking) refactorisation of the same matrix.
+struct Baseline {
+  double analyseMs = 0, factorMs = 0, solveMs = 0, peakMB = 0;
+  long long nnzL = 0;
+  Field X;
+};
+
+static Baseline runBaseline(const Grid& g, double omega, const std::set<int>& base) {
+  Baseline b;
+  const SparseMatrix M = assembleBiLaplacian(g);
+  SparseMatrix A = M;
+  for (int i : base) A.coeffRef(i, i) += omega * omega;
+  Eigen::SimplicialLDLT<SparseMatrix> ldlt;
+  auto t0 = Clock::now();
+  ldlt.analyzePattern(A);
+  b.analyseMs = ms(t0);
+  t0 = Clock::now();
+  ldlt.factorize(A);
+  b.factorMs = ms(t0);
+  const Field B = assembleRhs(g, toSet(base), omega);
+  t0 = Clock::now();
+  Eigen::MatrixXd X = ldlt.solve(Eigen::MatrixXd(B));
+  b.solveMs = ms(t0);
+  b.X = X;
+  b.nnzL = (long long)ldlt.matrixL().nestedExpression().nonZeros();
+  b.peakMB = peakMB();
+  return b;
+}
+
+static void printBaseline(const char* P, int N, const Baseline& b, const Field& T, bool own) {
+  const double err = (b.X - T).norm() / T.norm();
+  std::printf(
+      "{\"kind\":\"baseline\",\"platform\":\"%s\",\"N\":%d,\"analyseMs\":%.1f,\"factorMs\":%.1f,"
+      "\"solveMs\":%.1f,\"nnzL\":%lld,\"relDiffToExact\":%.1e,\"peakMB\":%.0f,"
+      "\"ownProcess\":%s}\n",
+      P, N, b.analyseMs, b.factorMs, b.solveMs, b.nnzL, err, b.peakMB, own ? "true" : "false");
+  std::fflush(stdout);
+}
+
 int main(int argc, char** argv) {
   if (argc < 2) {
     std::fprintf(stderr,
-                 "usage: exact_bench N [--baseline] [--edits 100,300,1000] [--force-both]\n");
+                 "usage: exact_bench N [--baseline | --baseline-only] [--edits 100,300,1000] "
+                 "[--force-both]\n");
     return 2;
   }
   const int N = std::atoi(argv[1]);
-  bool baseline = false, forceBoth = false;
+  bool baseline = false, baselineOnly = false, forceBoth = false;
   ExactSolverOptions opts;
   std::vector<int> edits = {100, 300, 1000};
   for (int a = 2; a < argc; ++a) {
     if (!std::strcmp(argv[a], "--baseline")) baseline = true;
+    if (!std::strcmp(argv[a], "--baseline-only")) baselineOnly = true;
     if (!std::strcmp(argv[a], "--force-both")) forceBoth = true;
     if (!std::strcmp(argv[a], "--chunk") && a + 1 < argc) opts.update.chunk = std::atoi(argv[++a]);
     if (!std::strcmp(argv[a], "--panel") && a + 1 < argc) opts.update.panel = std::atoi(argv[++a]);
@@ -102,6 +148,25 @@ int main(int argc, char** argv) {
   const double omega = 100;
   std::mt19937 rng(1234);
   const char* P = kPlatform;
+
+  // ~3000 existing constraints from 30 curves of 100 points (the first use of rng, so the same
+  // set in every mode).
+  std::set<int> base;
+  for (int c = 0; c < 30; ++c)
+    for (int p : curvePoints(g, 100, rng, base)) base.insert(p);
+
+  if (baselineOnly) {
+    const Baseline b = runBaseline(g, omega, base);
+    ExactSolver solver(opts);
+    Field T;
+    if (!solver.setGrid(g, omega).ok() || !solver.setConstraints(toSet(base)).ok() ||
+        !solver.solve(T).ok()) {
+      std::fprintf(stderr, "exact solve for the baseline comparison failed\n");
+      return 1;
+    }
+    printBaseline(P, N, b, T, true);
+    return 0;
+  }
 
   ExactSolver solver(opts);
   auto t0 = Clock::now();
@@ -121,10 +186,6 @@ int main(int argc, char** argv) {
       double(S.factorBytes()) / 1048576.0);
   std::fflush(stdout);
 
-  // ~3000 existing constraints from 30 curves of 100 points.
-  std::set<int> base;
-  for (int c = 0; c < 30; ++c)
-    for (int p : curvePoints(g, 100, rng, base)) base.insert(p);
   t0 = Clock::now();
   st = solver.setConstraints(toSet(base));
   const double factorMs = ms(t0);
@@ -144,7 +205,13 @@ int main(int argc, char** argv) {
   std::fflush(stdout);
 
   // Edits: add a curve (update or refactor), then remove it.
+  struct Edit {
+    size_t curve;
+    std::set<int> from, to;
+    std::string method;  // chosen by the cost model
+  };
   std::vector<std::vector<int>> curves;
+  std::vector<Edit> done;
   for (int k : edits) {
     curves.push_back(curvePoints(g, k, rng, base));
     const std::vector<int>& curve = curves.back();
@@ -161,6 +228,7 @@ int main(int argc, char** argv) {
         return 1;
       }
       const std::string method = solver.stats().method;
+      done.push_back({curves.size() - 1, phase == 0 ? base : with, target, method});
       t0 = Clock::now();
       solver.solve(T);
       const double sMs = ms(t0);
@@ -178,51 +246,37 @@ int main(int argc, char** argv) {
   std::fflush(stdout);
 
   if (forceBoth) {
-    // The same edits with the update forced, to check the cost model's choice (a second
-    // solver: run after the memory line so its factor does not count).
-    ExactSolverOptions o = opts;
-    o.policy = ExactSolverOptions::Policy::AlwaysUpdate;
-    ExactSolver forced(o);
-    forced.setGrid(g, omega);
-    forced.setConstraints(toSet(base));
-    for (const std::vector<int>& curve : curves) {
-      std::set<int> with = base;
-      with.insert(curve.begin(), curve.end());
-      for (int phase = 0; phase < 2; ++phase) {
+    // Each edit again with the method the cost model did not choose, to check its choice: an
+    // update forced on a second solver, a refactorisation forced on a third (one at a time, after
+    // the memory line so that their factors do not count). A forced solver is first brought to
+    // the edit's starting set (untimed) when it does not hold it already.
+    const ExactSolverOptions::Policy policies[2] = {ExactSolverOptions::Policy::AlwaysUpdate,
+                                                    ExactSolverOptions::Policy::AlwaysRefactor};
+    const char* names[2] = {"update", "refactor"};
+    for (int f = 0; f < 2; ++f) {
+      ExactSolverOptions o = opts;
+      o.policy = policies[f];
+      ExactSolver forced(o);
+      forced.setGrid(g, omega);
+      std::set<int> holds = base;
+      forced.setConstraints(toSet(base));
+      for (const Edit& e : done) {
+        if (e.method == names[f]) continue;
+        if (holds != e.from) forced.setConstraints(toSet(e.from));
         t0 = Clock::now();
-        forced.setConstraints(toSet(phase == 0 ? with : base));
+        forced.setConstraints(toSet(e.to));
+        const double editMs = ms(t0);
+        holds = e.to;
         std::printf(
             "{\"kind\":\"forced\",\"platform\":\"%s\",\"N\":%d,\"points\":%zu,\"op\":\"%s\","
             "\"method\":\"%s\",\"editMs\":%.1f}\n",
-            P, N, curve.size(), phase == 0 ? "add" : "remove", forced.stats().method.c_str(),
-            ms(t0));
+            P, N, curves[e.curve].size(), e.to.size() > e.from.size() ? "add" : "remove",
+            forced.stats().method.c_str(), editMs);
         std::fflush(stdout);
       }
     }
   }
 
-  if (baseline) {
-    // Naive baseline: Eigen SimplicialLDLT (AMD, up-looking) refactorisation of the same matrix.
-    const SparseMatrix M = assembleBiLaplacian(g);
-    SparseMatrix A = M;
-    for (int i : base) A.coeffRef(i, i) += omega * omega;
-    Eigen::SimplicialLDLT<SparseMatrix> ldlt;
-    t0 = Clock::now();
-    ldlt.analyzePattern(A);
-    const double aMs = ms(t0);
-    t0 = Clock::now();
-    ldlt.factorize(A);
-    const double fMs = ms(t0);
-    const Field B = assembleRhs(g, toSet(base), omega);
-    t0 = Clock::now();
-    Eigen::MatrixXd X = ldlt.solve(Eigen::MatrixXd(B));
-    const double sMs = ms(t0);
-    const double err = (Field(X) - T).norm() / T.norm();
-    std::printf(
-        "{\"kind\":\"baseline\",\"platform\":\"%s\",\"N\":%d,\"analyseMs\":%.1f,\"factorMs\":%.1f,"
-        "\"solveMs\":%.1f,\"nnzL\":%lld,\"relDiffToExact\":%.1e,\"peakMB\":%.0f}\n",
-        P, N, aMs, fMs, sMs, (long long)ldlt.matrixL().nestedExpression().nonZeros(), err,
-        peakMB());
-  }
+  if (baseline) printBaseline(P, N, runBaseline(g, omega, base), T, false);
   return 0;
 }
