@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs what is missing: Debian packages (when root and apt-get exist) and npm packages.
-# Usage: scripts/setup.sh runtime|test
+# Usage: scripts/setup.sh runtime|test|bench
 set -euo pipefail
 cd "$(dirname "$0")/.."
 mode="${1:-runtime}"
@@ -12,12 +12,15 @@ want_file() { if [ ! -e "$1" ]; then need_cmd+=("$1"); pkgs+=("$2"); fi; }
 
 want emcc emscripten
 want_file /usr/include/eigen3/Eigen/Core libeigen3-dev
-if [ "$mode" = test ]; then
+if [ "$mode" = test ] || [ "$mode" = bench ]; then
+  # bench: the native build of build/native (its CMake project also configures the tests).
   want cmake cmake
   want ninja ninja-build
   want g++ g++
-  want clang-format clang-format
   want_file /usr/include/gtest/gtest.h libgtest-dev
+fi
+if [ "$mode" = test ]; then
+  want clang-format clang-format
   want_file "${CHROMIUM_PATH:-/usr/bin/chromium}" chromium
 fi
 
