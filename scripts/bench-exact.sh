@@ -7,7 +7,7 @@
 # Every edit is timed with both methods (--force-both): the one the cost model chose, and the
 # other one forced. The naive baseline (Eigen SimplicialLDLT refactorisation, AMD ordering) runs
 # in its own process (so that its peak memory is its own) at 29^3 on both platforms; at 37^3
-# natively with --baseline37 (about 200 s), in wasm with --baseline37-wasm (several minutes more).
+# natively with --baseline37 (200-260 s), in wasm with --baseline37-wasm (7-9 minutes more).
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 cd "$root"
@@ -61,11 +61,11 @@ run() {  # platform N
     echo "== $platform $n^3 naive baseline (SimplicialLDLT)" >&2
     bench "$platform" "$n" --baseline-only
   elif [ "$platform" = native ]; then
-    note native "$n" "naive baseline not run (about 200 s natively at 37^3; pass --baseline37)"
+    note native "$n" "naive baseline not run (200-260 s natively at 37^3; pass --baseline37)"
   else
     note wasm "$n" "naive baseline not run in wasm at 37^3 by default: it would take about the \
-native 37^3 time (about 200 s) times the wasm/native ratio of the 29^3 baseline rows, i.e. \
-several minutes; pass --baseline37-wasm to run it"
+native 37^3 baseline time (200-260 s here) times the wasm/native ratio of the 29^3 baseline \
+rows (about 2), i.e. 7-9 minutes; pass --baseline37-wasm to run it"
   fi
 }
 for n in $sizes; do
