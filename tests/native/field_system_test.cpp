@@ -1,9 +1,9 @@
 // D^T D against a brute-force build from SPEC S2.2 on irregular boxes, boundary included.
+#include "field_system.hpp"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
-
-#include "field_system.hpp"
 
 using namespace hairsketch;
 
@@ -29,8 +29,8 @@ Eigen::MatrixXd bruteLaplacian(const Grid& g) {
 }  // namespace
 
 TEST(FieldSystem, BiLaplacianMatchesBruteForceOnIrregularBoxes) {
-  for (auto dims : {std::array<int, 3>{4, 5, 6}, std::array<int, 3>{2, 3, 2},
-                    std::array<int, 3>{7, 2, 3}}) {
+  for (auto dims :
+       {std::array<int, 3>{4, 5, 6}, std::array<int, 3>{2, 3, 2}, std::array<int, 3>{7, 2, 3}}) {
     Grid g;
     g.nx = dims[0];
     g.ny = dims[1];
@@ -50,8 +50,8 @@ TEST(FieldSystem, BiLaplacianMatchesBruteForceOnIrregularBoxes) {
 }
 
 TEST(FieldSystem, ConstraintDiffSeparatesAddedRemovedChanged) {
-  ConstraintSet a = normalizeConstraints(
-      {{5, {1, 0, 0}}, {2, {0, 1, 0}}, {9, {0, 0, 1}}, {2, {0, 0, 1}}});
+  ConstraintSet a =
+      normalizeConstraints({{5, {1, 0, 0}}, {2, {0, 1, 0}}, {9, {0, 0, 1}}, {2, {0, 0, 1}}});
   ASSERT_EQ(a.size(), 3u);
   EXPECT_EQ(a[0].index, 2);
   EXPECT_DOUBLE_EQ(a[0].target.y(), 0.5);  // duplicates averaged
