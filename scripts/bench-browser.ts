@@ -17,6 +17,9 @@ const configs = (process.env.BENCH_CONFIGS ?? '25k:fast,50k:fast,250k:fast,25k:e
     return { grid, solver };
   });
 const STROKES = Number(process.env.BENCH_STROKES ?? 5);
+const trace = (m: string): void => {
+  if (process.env.BENCH_TRACE) console.error(`[bench ${new Date().toISOString().slice(11, 23)}] ${m}`);
+};
 
 interface StrokeResult {
   firstMs: number | null;
@@ -78,7 +81,9 @@ async function stroke(page: Page, i: number): Promise<StrokeResult> {
   }
   const t1 = await page.evaluate(() => performance.now());
   await page.mouse.up();
+  trace(`stroke ${i}: pointer up`);
   await settled(page);
+  trace(`stroke ${i}: settled`);
   const r = await page.evaluate(
     ([from]) => ({
       log: window.hairsketch.hairLog().slice(from),
@@ -126,10 +131,13 @@ async function main(): Promise<void> {
   const rows: Array<Record<string, unknown>> = [];
   try {
     await waitServer();
+    trace('server up');
     for (const { grid, solver } of configs) {
       const page = await browser.newPage({ viewport: { width: 1000, height: 750 } });
       await page.goto(`${BASE}/?grid=${grid}&solver=${solver}`);
+      trace(`${grid} ${solver}: loading`);
       await settled(page);
+      trace('loaded');
       const state = await page.getByTestId('status').getAttribute('data-state');
       const load = await page.evaluate(() => window.hairsketch.hairLog()[0]?.time ?? null);
       if (state === 'error') {

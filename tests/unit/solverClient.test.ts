@@ -1,5 +1,6 @@
-// The client's scheduling against a fake worker: one solve in flight, newest wins, results are
-// cached by content, and a dead worker is replaced and sent the session again.
+// The client's scheduling against a fake worker: full requests sent at once, previews paced one
+// in flight, newest wins, results are cached by content, and a dead worker is replaced and sent
+// the session again.
 import { describe, expect, it } from 'vitest';
 import { packCurves } from '../../web/model/curveSet';
 import { DEFAULT_GROWTH, type StyleCurve } from '../../web/model/session';
@@ -136,6 +137,43 @@ describe('SolverClient', () => {
     client.request(curves(1), DEFAULT_GROWTH, 'full');
     expect(w.solves()).toHaveLength(2); // not answered from a cache
     expect(shown).toHaveLength(1);
+  });
+
+  it('keeps one preview in flight and sends the newest waiting one when it is answered', () => {
+    const { client, workers, shown } = setup();
+    const w = workers[0];
+    w.reply({ type: 'ready', gridPoints: 8, roots: 0 });
+    client.request(curves(1), DEFAULT_GROWTH, 'preview');
+    client.request(curves(2), DEFAULT_GROWTH, 'preview');
+    client.request(curves(3), DEFAULT_GROWTH, 'preview');
+    expect(w.solves()).toHaveLength(1); // the drag does not queue solves in the worker
+    const first = w.solves()[0];
+    w.reply(result(first.id, false));
+    // The answer is newer than the screen: shown, and the newest waiting preview goes out.
+    expect(shown.map((s) => s.id)).toEqual([first.id]);
+    expect(w.solves()).toHaveLength(2);
+    expect(w.solves()[1].curves.curveStart).toEqual(curves(3).curveStart);
+    expect(client.pending).toBe(true);
+    w.reply(result(w.solves()[1].id, false));
+    expect(client.pending).toBe(false);
+  });
+
+  it('never shows an answer older than the newest full request', () => {
+    const { client, workers, shown } = setup();
+    const w = workers[0];
+    w.reply({ type: 'ready', gridPoints: 8, roots: 0 });
+    client.request(curves(1), DEFAULT_GROWTH, 'preview');
+    client.request(curves(1), DEFAULT_GROWTH, 'full'); // pointer-up: sent at once
+    expect(w.solves().map((m) => m.mode)).toEqual(['preview', 'full']);
+    const [p, f] = w.solves();
+    w.reply(result(p.id, false)); // late preview answer
+    expect(shown).toEqual([]);
+    w.reply(result(f.id, false));
+    w.reply(result(f.id, true));
+    expect(shown.map((s) => s.id)).toEqual([f.id, f.id]);
+    // A preview after the full request is sent at once (nothing in flight), its answer shown.
+    client.request(curves(2), DEFAULT_GROWTH, 'preview');
+    expect(w.solves()).toHaveLength(3);
   });
 
   it('answers a repeated state from its cache without the worker', () => {

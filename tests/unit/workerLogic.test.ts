@@ -97,7 +97,9 @@ describe('WorkerLogic', () => {
   it('answers a preview with one non-final result grown with few strands', async () => {
     const h = harness();
     await h.logic.handle(init);
-    await h.logic.handle(solve(1, 'preview'));
+    const done = h.logic.handle(solve(1, 'preview'));
+    await h.release(); // the job starts after one yield (a burst of messages coalesces)
+    await done;
     expect(h.results().map((r) => [r.id, r.final])).toEqual([[1, false]]);
     expect(h.log).toContain(`grow:${DEFAULT_SCHEDULER.previewMaxStrands}`);
     expect(h.results()[0].stats.heapBytes).toBe(1 << 20);
@@ -108,6 +110,7 @@ describe('WorkerLogic', () => {
     const h = harness();
     await h.logic.handle(init);
     const done = h.logic.handle(solve(1, 'full'));
+    await h.release();
     // First look after 2 iterations, then slices of 2 with a yield before each.
     expect(h.results().map((r) => [r.id, r.final])).toEqual([[1, false]]);
     while (h.pendingYields() > 0) await h.release();
@@ -134,12 +137,28 @@ describe('WorkerLogic', () => {
     const h = harness();
     await h.logic.handle(init);
     const first = h.logic.handle(solve(1, 'full'));
-    await h.logic.handle(solve(2, 'full')); // arrives while job 1 waits at a yield
+    await h.release(); // job 1 runs to its first look and waits at a yield
+    await h.logic.handle(solve(2, 'full'));
     while (h.pendingYields() > 0) await h.release();
     await first;
     const rs = h.results();
     expect(rs.filter((r) => r.id === 1).map((r) => r.final)).toEqual([false]); // never final
     expect(rs.filter((r) => r.id === 2).map((r) => r.final)).toEqual([false, true]);
+  });
+
+  it('solves only the newest of a burst of requests', async () => {
+    const h = harness();
+    await h.logic.handle(init);
+    const first = h.logic.handle(solve(1, 'preview'));
+    await h.logic.handle(solve(2, 'preview'));
+    await h.logic.handle(solve(3, 'full'));
+    while (h.pendingYields() > 0) await h.release();
+    await first;
+    expect(h.results().map((r) => [r.id, r.final])).toEqual([
+      [3, false],
+      [3, true],
+    ]);
+    expect(h.log.filter((l) => l.startsWith('curves'))).toHaveLength(1);
   });
 
   it('reports a solve before init as an error', async () => {

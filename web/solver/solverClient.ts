@@ -1,7 +1,13 @@
-// The app's side of the solver worker. Every request goes to the worker at once and supersedes
-// the previous one there (the worker drops a superseded solve between iteration slices);
-// results of older requests are not shown. Final results are cached by content (undo is
-// instant and exact), and a worker that dies is restarted and sent the session again.
+// The app's side of the solver worker.
+// - A full request goes to the worker at once and supersedes what runs there (the worker drops
+//   a superseded solve between iteration slices).
+// - Previews (the curve being drawn) are paced by the worker: at most one is in flight; while it
+//   runs, newer previews replace each other in a one-slot mailbox and the newest is sent when the
+//   answer comes back. So a drag never queues stale solves, and the hair keeps up with the pen.
+// - A result is shown when it is newer than what is on screen and no full request newer than it
+//   was made (a late answer never undoes an edit the user made since).
+// Final results are cached by content (undo is instant and exact), and a worker that dies is
+// restarted and sent the session again.
 import { contentKey } from '../model/curveSet';
 import type { CurveSet, FromWorker, GrowthParams, ToWorker } from './protocol';
 
@@ -36,6 +42,13 @@ export class SolverClient {
   private latest: Request | null = null;
   /** The newest request still waiting for its final answer. */
   private open: Request | null = null;
+  /** The preview sent and not yet answered, and the newest one waiting to be sent. */
+  private previewInFlight: Request | null = null;
+  private previewWaiting: Request | null = null;
+  /** Id of the newest full request; older results are never shown after it. */
+  private lastFullId = 0;
+  /** Id of the request whose result is on screen. */
+  private shownId = 0;
   private nextId = 1;
   private readonly cache = new Map<string, SolveResult>();
   private restarts = 0;
@@ -50,7 +63,7 @@ export class SolverClient {
   }
 
   get pending(): boolean {
-    return this.open !== null || !this.ready;
+    return this.open !== null || this.previewWaiting !== null || !this.ready;
   }
 
   request(curves: CurveSet, growth: GrowthParams, mode: SolveMode = 'full'): void {
@@ -67,15 +80,38 @@ export class SolverClient {
     );
     const req: Request = { id: this.nextId++, key, mode, curves, growth };
     this.latest = req;
-    const cached = mode === 'full' ? this.cache.get(key) : undefined;
+    if (mode === 'preview') {
+      this.open = req;
+      if (this.previewInFlight && this.worker && this.ready) this.previewWaiting = req;
+      else this.sendPreview(req);
+      return;
+    }
+    this.lastFullId = req.id;
+    this.previewWaiting = null;
+    this.previewInFlight = null; // its answer, if any, is older than this request: not shown
+    const cached = this.cache.get(key);
     if (cached) {
       this.open = null;
+      this.shownId = req.id;
       this.events.onResult(cached, true, true);
       if (!this.pending) this.events.onIdle();
       return;
     }
     this.open = req;
     this.send(req);
+  }
+
+  private sendPreview(req: Request): void {
+    this.previewWaiting = null;
+    this.previewInFlight = this.worker && this.ready ? req : null;
+    this.send(req);
+  }
+
+  /** A preview was answered (or failed): send the newest waiting one. */
+  private previewAnswered(id: number): void {
+    if (this.previewInFlight?.id !== id) return;
+    this.previewInFlight = null;
+    if (this.previewWaiting) this.sendPreview(this.previewWaiting);
   }
 
   /** Test and fault hook: kills the worker as a crash would. */
@@ -130,7 +166,12 @@ export class SolverClient {
     this.restarts++;
     // The answer in flight is lost with the worker: the newest state is sent again (as a full
     // solve: a preview's stroke may have ended meanwhile).
-    if (this.latest) this.open = { ...this.latest, mode: 'full' };
+    this.previewInFlight = null;
+    this.previewWaiting = null;
+    if (this.latest) {
+      this.open = { ...this.latest, mode: 'full' };
+      this.lastFullId = this.latest.id;
+    }
     this.events.onError(`The solver stopped (${reason}); restarting it with your session.`, true);
     this.start();
   }
@@ -139,7 +180,10 @@ export class SolverClient {
     switch (msg.type) {
       case 'ready':
         this.ready = true;
-        if (this.open) this.send(this.open);
+        if (this.open) {
+          if (this.open.mode === 'preview') this.sendPreview(this.open);
+          else this.send(this.open);
+        }
         if (!this.pending) this.events.onIdle();
         return;
       case 'progress':
@@ -147,6 +191,7 @@ export class SolverClient {
           this.events.onBusy(msg.phase === 'grow' ? 'growing' : 'solving', msg.fraction);
         return;
       case 'result': {
+        this.previewAnswered(msg.id);
         const isLatest = this.latest !== null && msg.id === this.latest.id;
         if (msg.final) {
           this.restarts = 0;
@@ -159,10 +204,10 @@ export class SolverClient {
             }
           }
         }
-        if (!isLatest) return; // superseded: never shown
-        const done = msg.final || this.latest?.mode === 'preview';
-        if (done) this.open = null;
-        this.events.onResult(msg, msg.final, false);
+        if (msg.id < this.lastFullId || msg.id < this.shownId) return; // superseded
+        this.shownId = msg.id;
+        if (isLatest && (msg.final || this.latest?.mode === 'preview')) this.open = null;
+        this.events.onResult(msg, msg.final && isLatest, false);
         if (!this.pending) this.events.onIdle();
         return;
       }
@@ -172,6 +217,7 @@ export class SolverClient {
           this.events.onError(msg.message, false);
           return;
         }
+        if (msg.id !== null) this.previewAnswered(msg.id);
         if (this.open && msg.id === this.open.id) this.open = null;
         this.events.onError(msg.message, false);
         if (!this.pending) this.events.onIdle();

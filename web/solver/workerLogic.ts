@@ -71,6 +71,8 @@ export class WorkerLogic {
   private async run(): Promise<void> {
     this.running = true;
     try {
+      // Let messages already waiting arrive first: of a burst, only the newest is solved.
+      await this.opts.yieldNow();
       while (this.latest) {
         const job = this.latest;
         this.latest = null;
