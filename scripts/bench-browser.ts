@@ -18,7 +18,8 @@ const configs = (process.env.BENCH_CONFIGS ?? '25k:fast,50k:fast,250k:fast,25k:e
   });
 const STROKES = Number(process.env.BENCH_STROKES ?? 5);
 const trace = (m: string): void => {
-  if (process.env.BENCH_TRACE) console.error(`[bench ${new Date().toISOString().slice(11, 23)}] ${m}`);
+  if (process.env.BENCH_TRACE)
+    console.error(`[bench ${new Date().toISOString().slice(11, 23)}] ${m}`);
 };
 
 interface StrokeResult {

@@ -5,6 +5,7 @@ import { describe, expect, it } from 'vitest';
 import {
   buildStrandGeometry,
   createStrandMaterial,
+  LOD_GROUPS,
   setHairColor,
   setLightDirection,
 } from '../../web/viewer/strandMaterial';
@@ -16,6 +17,7 @@ describe('buildStrandGeometry', () => {
   const g = buildStrandGeometry(points, strandStart, 3);
 
   it('makes one index pair per segment, none across strands', () => {
+    // (strands in level-of-detail order: 0, then 2, then 1, which has no segment)
     expect(Array.from(g.getIndex()?.array ?? [])).toEqual([0, 1, 1, 2, 4, 5]);
     expect(g.getAttribute('position').count).toBe(6);
   });
@@ -88,6 +90,33 @@ describe('buildStrandGeometry', () => {
     // Speed is measured by the benchmarks, not asserted here; this checks the large case's layout.
     const big = buildStrandGeometry(pts, start);
     expect(big.getIndex()?.count).toBe(2 * strands * (per - 1));
+  });
+
+  it('orders strands so that every level-of-detail prefix is an even sample', () => {
+    const strands = 1000;
+    const per = 3;
+    const start = Uint32Array.from({ length: strands + 1 }, (_, s) => s * per);
+    const geo = buildStrandGeometry(new Float32Array(3 * strands * per), start);
+    const index = Array.from(geo.getIndex()?.array ?? []);
+    const lod = geo.userData.lodCounts as Uint32Array;
+    expect(lod.length).toBe(LOD_GROUPS + 1);
+    expect(lod[0]).toBe(0);
+    expect(lod[LOD_GROUPS]).toBe(index.length);
+    // every segment exactly once, each pair within one strand
+    const pairs = [];
+    for (let k = 0; k < index.length; k += 2) {
+      expect(index[k + 1]).toBe(index[k] + 1);
+      expect(Math.floor(index[k] / per)).toBe(Math.floor(index[k + 1] / per));
+      pairs.push(index[k]);
+    }
+    expect(new Set(pairs).size).toBe(strands * (per - 1));
+    // the strands drawn by the first 1, 2, 4 … groups are those ≡ 0 mod 64, 32, 16 …
+    for (let groups = 1; groups <= LOD_GROUPS; groups *= 2) {
+      const drawn = new Set(index.slice(0, lod[groups]).map((v) => Math.floor(v / per)));
+      const stride = LOD_GROUPS / groups;
+      const expected = Array.from({ length: strands }, (_, s) => s).filter((s) => s % stride === 0);
+      expect([...drawn].sort((a, b) => a - b)).toEqual(expected);
+    }
   });
 });
 

@@ -256,6 +256,7 @@ export class App {
     this.status.counts(this.status.strands, s.curves.length);
     this.syncCurvesView();
     this.refreshToolbar();
+    this.viewer.hold('settling', true); // until the final hair is shown (cached: at once)
     this.client.request(packCurves(s.curves), s.growth);
   }
 
@@ -275,9 +276,9 @@ export class App {
     if (this.shownStrands !== r.strands) {
       this.shownStrands = r.strands;
       const geometry = buildStrandGeometry(r.strands.points, r.strands.strandStart);
-      const material = createStrandMaterial({ color: this.history.current.hairColor });
-      this.strandMaterial = material;
-      this.viewer.setHair(new THREE.LineSegments(geometry, material));
+      // one material for all hair revisions: a new one would compile its shader again
+      this.strandMaterial ??= createStrandMaterial({ color: this.history.current.hairColor });
+      this.viewer.setHair(new THREE.LineSegments(geometry, this.strandMaterial));
       this.status.counts(r.strands.strandStart.length - 1, this.history.current.curves.length);
       this.status.bumpRevision();
       this.unstamped = {
@@ -286,6 +287,8 @@ export class App {
         strands: r.strands.strandStart.length - 1,
       };
     }
+    // hair that is still settling is drawn at interactive detail, the final hair in full
+    this.viewer.hold('settling', !final);
     const st = r.stats;
     this.heapBytes = st.heapBytes;
     if (final)
@@ -306,6 +309,7 @@ export class App {
 
   private showReady(): void {
     if (this.client.pending) return;
+    this.viewer.hold('settling', false);
     const s = this.status;
     const extra = [this.lastMessage, this.lastSolve].filter(Boolean).join(' · ');
     s.set('ready', `Ready — ${s.strands} strands, ${s.curves} curves${extra ? ` · ${extra}` : ''}`);
@@ -332,6 +336,7 @@ export class App {
       if (this.tool.onPointerDown(ptr(e))) {
         captured = e.pointerId;
         canvas.setPointerCapture(e.pointerId);
+        this.viewer.hold('stroke', true);
       } else if (e.button === 0) {
         captured = e.pointerId;
       }
@@ -342,6 +347,7 @@ export class App {
     const end = (e: PointerEvent, cancel: boolean) => {
       if (e.pointerId !== captured) return;
       captured = null;
+      this.viewer.hold('stroke', false);
       if (cancel) this.tool.onCancel();
       else this.tool.onPointerUp(ptr(e));
     };

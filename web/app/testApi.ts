@@ -15,6 +15,9 @@ export interface HairsketchTestApi {
   hairLog(): Array<{ revision: number; time: number; final: boolean; strands: number }>;
   lastPointerUp(): number;
   heapBytes(): number;
+  /** Fraction of the hair's segments the last frame drew (1 = all; less while interacting on a
+   *  slow GPU). */
+  hairDetail(): number;
 }
 
 declare global {
@@ -55,5 +58,6 @@ export function installTestApi(app: App): void {
     hairLog: () => app.hairLog.slice(),
     lastPointerUp: () => app.lastPointerUp,
     heapBytes: () => app.heapBytes,
+    hairDetail: () => app.viewer.hairDetail,
   };
 }

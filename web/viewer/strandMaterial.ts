@@ -136,13 +136,24 @@ export function setLightDirection(material: StrandMaterial, x: number, y: number
   material.uniforms.lightDirection.value.set(x, y, z).normalize();
 }
 
+/** Strands are drawn in this many interleaved groups (see buildStrandGeometry). */
+export const LOD_GROUPS = 64;
+const LOD_ORDER = Array.from({ length: LOD_GROUPS }, (_, g) => {
+  let r = 0;
+  for (let b = 1, x = g; b < LOD_GROUPS; b <<= 1, x >>= 1) r = (r << 1) | (x & 1);
+  return r;
+});
+
 /** Build indexed LineSegments geometry for strands. Strand s owns points
  *  strandStart[s] .. strandStart[s + 1] − 1 of `points` (points[3 * point + axis]); each pair of
  *  consecutive points is a segment. The `position` attribute views `points` (not copied: do not
  *  change it afterwards). Added per point: `tangent` (unit, central differences; one-sided at the
  *  ends; Int8 normalised), `along` (0 at the root … 1 at the tip; Uint8 normalised) and
  *  `strandRandom` (per strand, in [0, 1]: a hash of the strand index and `colorSeed`; Uint8
- *  normalised). */
+ *  normalised).
+ *  Level of detail: the index lists strands interleaved (stride LOD_GROUPS, groups in
+ *  bit-reversed order), so any prefix of the groups is an even sample of the whole head of hair;
+ *  `userData.lodCounts[g]` is the index count of the first g groups (a draw range). */
 export function buildStrandGeometry(
   points: Float32Array,
   strandStart: Uint32Array,
@@ -207,13 +218,20 @@ export function buildStrandGeometry(
       tangent[3 * i + 2] = tz;
       along[i] = Math.round((i - a) * inv);
       random[i] = r;
-      if (i < b - 1) {
+    }
+  }
+  const lodCounts = new Uint32Array(LOD_GROUPS + 1);
+  for (let g = 0; g < LOD_GROUPS; g++) {
+    for (let s = LOD_ORDER[g]; s < strands; s += LOD_GROUPS) {
+      for (let i = strandStart[s]; i + 1 < strandStart[s + 1]; i++) {
         index[w++] = i;
         index[w++] = i + 1;
       }
     }
+    lodCounts[g + 1] = w;
   }
   const geometry = new THREE.BufferGeometry();
+  geometry.userData.lodCounts = lodCounts;
   const used = pointCount === points.length / 3 ? points : points.subarray(0, 3 * pointCount);
   geometry.setAttribute('position', new THREE.BufferAttribute(used, 3));
   geometry.setAttribute('tangent', new THREE.BufferAttribute(tangent, 3, true));

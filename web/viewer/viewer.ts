@@ -1,4 +1,9 @@
 // The three.js view: head, hair strands, style curves, the stroke being drawn. Renders on demand.
+// While the user interacts (orbit, a stroke, hair still settling) the hair is drawn at a level of
+// detail that keeps frames near INTERACTIVE_FRAME_MS on this GPU: a prefix of the strands, which
+// buildStrandGeometry orders as an even sample. The budget comes from measured frame times, so a
+// fast GPU always draws everything; a software rasteriser draws a sparse sample while things move,
+// and the whole head of hair once they stop.
 import * as THREE from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import type { Vec3 } from '../model/vec3';
@@ -7,6 +12,10 @@ export interface CurveView {
   id: string;
   points: readonly Vec3[];
 }
+
+const INTERACTIVE_FRAME_MS = 40;
+const SLOW_FRAME_MS = 60;
+const FAST_FRAME_MS = 25;
 
 export const DEFAULT_CAMERA = { position: [2.6, 0.9, 7.0] as Vec3, target: [0, -0.55, 0] as Vec3 };
 
@@ -18,7 +27,14 @@ export class Viewer {
   private readonly hairGroup = new THREE.Group();
   private readonly curveGroup = new THREE.Group();
   private draft: THREE.Line | null = null;
+  private hair: THREE.LineSegments | null = null;
   private dirty = true;
+  /** Reasons the view is interactive now (e.g. 'orbit', 'stroke', 'settling'). */
+  private readonly holds = new Set<string>();
+  /** Hair index count an interactive frame may draw (Infinity until a slow frame is seen). */
+  private hairBudget = Number.POSITIVE_INFINITY;
+  private lastRender: { time: number; drawn: number } | null = null;
+  private lastDetail = 1;
   private frameHooks: Array<() => void> = [];
   /** Called after each rendered frame (e.g. to count displayed hair revisions). */
   onRendered: (() => void) | null = null;
@@ -37,6 +53,8 @@ export class Viewer {
     this.controls.minDistance = 2;
     this.controls.maxDistance = 25;
     this.controls.addEventListener('change', () => this.requestRender());
+    this.controls.addEventListener('start', () => this.hold('orbit', true));
+    this.controls.addEventListener('end', () => this.hold('orbit', false));
     this.setCamera(DEFAULT_CAMERA.position, DEFAULT_CAMERA.target);
 
     this.scene.add(new THREE.HemisphereLight(0xffffff, 0x6b5d52, 1.4));
@@ -50,11 +68,17 @@ export class Viewer {
 
     new ResizeObserver(() => this.resize()).observe(canvas);
     this.resize();
-    const loop = () => {
+    const loop = (now: number) => {
+      // the frame after a rendered one shows what that frame cost (the browser throttles frames
+      // while the GPU is behind)
+      if (this.lastRender) this.adaptBudget(now - this.lastRender.time, this.lastRender.drawn);
+      this.lastRender = null;
       for (const hook of this.frameHooks) hook();
       if (this.dirty) {
         this.dirty = false;
+        const drawn = this.applyHairDetail();
         this.renderer.render(this.scene, this.camera);
+        this.lastRender = { time: now, drawn };
         this.onRendered?.();
       }
       requestAnimationFrame(loop);
@@ -69,6 +93,45 @@ export class Viewer {
 
   requestRender(): void {
     this.dirty = true;
+  }
+
+  /** Marks the view interactive for `reason` (or not): hair is drawn at interactive detail
+   *  while any reason holds, and in full once none does. */
+  hold(reason: string, on: boolean): void {
+    const had = this.holds.size > 0;
+    if (on) this.holds.add(reason);
+    else this.holds.delete(reason);
+    if (had !== this.holds.size > 0) this.requestRender();
+  }
+
+  /** Fraction of the hair's segments the last frame drew (1 = all). */
+  get hairDetail(): number {
+    return this.lastDetail;
+  }
+
+  private applyHairDetail(): number {
+    const lod = this.hair?.geometry.userData.lodCounts as Uint32Array | undefined;
+    if (!this.hair || !lod) return 0;
+    const all = lod[lod.length - 1];
+    let count = all;
+    if (this.holds.size > 0 && this.hairBudget < all) {
+      let g = 1;
+      while (g + 1 < lod.length && lod[g + 1] <= this.hairBudget) g++;
+      count = lod[g];
+    }
+    this.hair.geometry.setDrawRange(0, count);
+    this.lastDetail = all > 0 ? count / all : 1;
+    return count;
+  }
+
+  private adaptBudget(frameMs: number, drawn: number): void {
+    if (drawn <= 0) return;
+    if (frameMs > SLOW_FRAME_MS) {
+      // cost scales with segments drawn: aim at the interactive frame time
+      this.hairBudget = Math.max(1, (drawn * INTERACTIVE_FRAME_MS) / frameMs);
+    } else if (frameMs < FAST_FRAME_MS && drawn >= this.hairBudget * 0.5) {
+      this.hairBudget = this.hairBudget * 1.5;
+    }
   }
 
   get renderPending(): boolean {
@@ -100,6 +163,7 @@ export class Viewer {
       disposeObject(child);
     }
     if (object) this.hairGroup.add(object);
+    this.hair = object instanceof THREE.LineSegments ? object : null;
     this.requestRender();
   }
 
@@ -173,6 +237,18 @@ export class Viewer {
   }
 }
 
+// Line materials are shared and never disposed: a disposed material releases its shader program,
+// and compiling it again stalls on the GPU (seconds behind a software rasteriser).
+const lineMaterials = new Map<number, THREE.LineBasicMaterial>();
+function lineMaterial(color: number): THREE.LineBasicMaterial {
+  let m = lineMaterials.get(color);
+  if (!m) {
+    m = new THREE.LineBasicMaterial({ color, depthTest: false, transparent: true });
+    lineMaterials.set(color, m);
+  }
+  return m;
+}
+
 function polyline(points: readonly Vec3[], color: number): THREE.Line {
   const arr = new Float32Array(points.length * 3);
   points.forEach((p, i) => {
@@ -180,18 +256,14 @@ function polyline(points: readonly Vec3[], color: number): THREE.Line {
   });
   const g = new THREE.BufferGeometry();
   g.setAttribute('position', new THREE.BufferAttribute(arr, 3));
-  const m = new THREE.LineBasicMaterial({ color, depthTest: false, transparent: true });
-  const line = new THREE.Line(g, m);
+  const line = new THREE.Line(g, lineMaterial(color));
   line.renderOrder = 10;
   return line;
 }
 
+/** Frees an object's geometry; materials are the owner's (shared, reused across objects). */
 function disposeObject(o: THREE.Object3D): void {
   o.traverse((x) => {
-    const m = x as THREE.Mesh;
-    m.geometry?.dispose();
-    const mat = m.material as THREE.Material | THREE.Material[] | undefined;
-    if (Array.isArray(mat)) for (const mm of mat) mm.dispose();
-    else mat?.dispose();
+    (x as THREE.Mesh).geometry?.dispose();
   });
 }
