@@ -33,6 +33,11 @@ import { Viewer } from '../viewer/viewer';
 import { installTestApi } from './testApi';
 import { parseUrlOptions } from './urlOptions';
 
+/** Strands grown for a preview while drawing: at most this many, fewer when the view draws a
+ *  sample (a slow GPU), never fewer than the minimum. */
+const PREVIEW_STRANDS = 6000;
+const MIN_PREVIEW_STRANDS = 800;
+
 export class App {
   readonly viewer: Viewer;
   readonly status: StatusLine;
@@ -180,7 +185,16 @@ export class App {
       viewpoint: { position, target },
     };
     this.previewInFlight = true;
-    this.client.request(packCurves([...s.curves, draft]), s.growth, 'preview');
+    // grow no more preview strands than the view can draw while the pen moves
+    const shown = this.status.strands || PREVIEW_STRANDS;
+    const cap = Math.round(
+      Math.min(
+        PREVIEW_STRANDS,
+        Math.max(MIN_PREVIEW_STRANDS, shown * this.viewer.interactiveDetail),
+      ),
+    );
+    const maxStrands = s.growth.maxStrands > 0 ? Math.min(s.growth.maxStrands, cap) : cap;
+    this.client.request(packCurves([...s.curves, draft]), { ...s.growth, maxStrands }, 'preview');
   }
 
   undo(): void {

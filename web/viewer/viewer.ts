@@ -16,6 +16,8 @@ export interface CurveView {
 const INTERACTIVE_FRAME_MS = 40;
 const SLOW_FRAME_MS = 60;
 const FAST_FRAME_MS = 25;
+/** Index entries (2 per segment) an interactive frame may always draw: ~250 strands. */
+const MIN_HAIR_BUDGET = 30_000;
 
 export const DEFAULT_CAMERA = { position: [2.6, 0.9, 7.0] as Vec3, target: [0, -0.55, 0] as Vec3 };
 
@@ -109,6 +111,13 @@ export class Viewer {
     return this.lastDetail;
   }
 
+  /** Fraction of the current hair an interactive frame draws (1 when the GPU keeps up). */
+  get interactiveDetail(): number {
+    const lod = this.hair?.geometry.userData.lodCounts as Uint32Array | undefined;
+    const all = lod ? lod[lod.length - 1] : 0;
+    return all > 0 ? Math.min(1, this.hairBudget / all) : 1;
+  }
+
   private applyHairDetail(): number {
     const lod = this.hair?.geometry.userData.lodCounts as Uint32Array | undefined;
     if (!this.hair || !lod) return 0;
@@ -128,7 +137,8 @@ export class Viewer {
     if (drawn <= 0) return;
     if (frameMs > SLOW_FRAME_MS) {
       // cost scales with segments drawn: aim at the interactive frame time
-      this.hairBudget = Math.max(1, (drawn * INTERACTIVE_FRAME_MS) / frameMs);
+      // (never below a floor: part of a slow frame is not the hair's, e.g. a busy CPU)
+      this.hairBudget = Math.max(MIN_HAIR_BUDGET, (drawn * INTERACTIVE_FRAME_MS) / frameMs);
     } else if (frameMs < FAST_FRAME_MS && drawn >= this.hairBudget * 0.5) {
       this.hairBudget = this.hairBudget * 1.5;
     }
