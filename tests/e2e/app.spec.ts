@@ -1,60 +1,8 @@
 // End to end in Debian's Chromium: real pointer events, waits on the status attributes only.
 import { expect, type Page, test } from '@playwright/test';
+import { settled, status, strokeFromScalp, watchConsole } from './helpers';
 
 const SCENE = '/?strands=2500'; // SwiftShader renders slowly: a small strand count keeps it quick
-
-interface StatusAttrs {
-  state: string;
-  strands: number;
-  curves: number;
-  revision: number;
-  text: string;
-}
-
-async function status(page: Page): Promise<StatusAttrs> {
-  return page.getByTestId('status').evaluate((el: HTMLElement) => ({
-    state: el.dataset.state ?? '',
-    strands: Number(el.dataset.strands),
-    curves: Number(el.dataset.curves),
-    revision: Number(el.dataset.revision),
-    text: el.textContent ?? '',
-  }));
-}
-
-/** Waits until the app is ready and idle with a hair revision past `after`. */
-async function settled(page: Page, after = -1): Promise<StatusAttrs> {
-  await page.waitForFunction((rev) => {
-    const el = document.querySelector('[data-testid="status"]') as HTMLElement | null;
-    return !!el && el.dataset.state === 'ready' && Number(el.dataset.revision) > rev;
-  }, after);
-  await page.evaluate(() => window.hairsketch.idle());
-  return status(page);
-}
-
-function watchConsole(page: Page): string[] {
-  const errors: string[] = [];
-  page.on('console', (m) => {
-    if (m.type() === 'error') errors.push(m.text());
-  });
-  page.on('pageerror', (e) => errors.push(String(e)));
-  return errors;
-}
-
-/** Drags the mouse from the scalp point (θ0, φ0) along a screen path, with real events. */
-async function strokeFromScalp(page: Page, theta: number, phi: number, dx: number, dy: number) {
-  const start = await page.evaluate(
-    ([t, p]) => window.hairsketch.scalpToScreen(t, p),
-    [theta, phi],
-  );
-  expect(start, `scalp point (${theta}, ${phi}) must be visible`).not.toBeNull();
-  if (!start) return;
-  await page.mouse.move(start.x, start.y);
-  await page.mouse.down();
-  const n = 24;
-  for (let i = 1; i <= n; i++)
-    await page.mouse.move(start.x + (dx * i) / n, start.y + (dy * i) / n);
-  await page.mouse.up();
-}
 
 const hairHash = (page: Page) => page.evaluate(() => window.hairsketch.hairHash());
 

@@ -197,6 +197,17 @@ export class App {
     this.client.request(packCurves([...s.curves, draft]), { ...s.growth, maxStrands }, 'preview');
   }
 
+  /** Test hook: the session from another page's session() replaces this one (undoable). */
+  replaceSession(json: unknown): void {
+    const j = json as Partial<SessionState>;
+    if (!j || !Array.isArray(j.curves) || typeof j.growth !== 'object')
+      throw new Error('replaceSession: not a session (curves and growth are required)');
+    const s = this.history.current;
+    this.history.push({ ...s, curves: j.curves, growth: { ...s.growth, ...j.growth } });
+    this.selectedId = null;
+    this.syncSession();
+  }
+
   undo(): void {
     if (this.history.undo()) this.afterHistoryMove('Undone.');
   }

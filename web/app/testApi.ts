@@ -18,6 +18,11 @@ export interface HairsketchTestApi {
   /** Fraction of the hair's segments the last frame drew (1 = all; less while interacting on a
    *  slow GPU). */
   hairDetail(): number;
+  /** Root and tip of every displayed strand: [rx, ry, rz, tx, ty, tz] per strand, flat. */
+  strandEnds(): number[];
+  /** Replaces the session with a plain-JSON one from session() (an undoable edit); for
+   *  comparing a session's hair against a fresh solve in another page. */
+  replaceSession(session: unknown): void;
 }
 
 declare global {
@@ -59,5 +64,17 @@ export function installTestApi(app: App): void {
     lastPointerUp: () => app.lastPointerUp,
     heapBytes: () => app.heapBytes,
     hairDetail: () => app.viewer.hairDetail,
+    strandEnds() {
+      const s = app.displayedStrands();
+      if (!s) return [];
+      const out: number[] = [];
+      for (let i = 0; i + 1 < s.strandStart.length; i++) {
+        const a = s.strandStart[i];
+        const b = s.strandStart[i + 1] - 1;
+        for (const k of [a, b]) out.push(s.points[3 * k], s.points[3 * k + 1], s.points[3 * k + 2]);
+      }
+      return out;
+    },
+    replaceSession: (session) => app.replaceSession(session),
   };
 }
