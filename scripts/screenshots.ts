@@ -1,0 +1,77 @@
+// npm run screenshots — loads each preset in the built app (Debian's Chromium) and saves the
+// 3D view to docs/screenshots/<preset>.png once the final hair is drawn.
+//   npx tsx scripts/screenshots.ts [preset ...]     (default: every preset in PRESET_NAMES)
+import { type ChildProcess, spawn } from 'node:child_process';
+import { mkdirSync } from 'node:fs';
+import http from 'node:http';
+import { chromium } from '@playwright/test';
+import { PRESET_NAMES } from '../web/model/presets';
+
+const PORT = Number(process.env.SHOT_PORT ?? 4195);
+const BASE = `http://127.0.0.1:${PORT}`;
+
+async function waitServer(): Promise<void> {
+  for (let i = 0; i < 300; i++) {
+    const ok = await new Promise<boolean>((resolve) => {
+      http
+        .get(`${BASE}/`, (res) => {
+          res.resume();
+          resolve(res.statusCode === 200);
+        })
+        .on('error', () => resolve(false));
+    });
+    if (ok) return;
+    await new Promise((r) => setTimeout(r, 200));
+  }
+  throw new Error('vite preview did not start');
+}
+
+async function main(): Promise<void> {
+  const asked = process.argv.slice(2);
+  const unknown = asked.filter((p) => !(PRESET_NAMES as readonly string[]).includes(p));
+  if (unknown.length) {
+    console.error(`unknown preset(s): ${unknown.join(', ')}; known: ${PRESET_NAMES.join(', ')}`);
+    process.exit(2);
+  }
+  const presets = asked.length ? asked : PRESET_NAMES.filter((p) => p !== 'empty');
+  mkdirSync('docs/screenshots', { recursive: true });
+  const server: ChildProcess = spawn(
+    'node_modules/.bin/vite',
+    ['preview', '--port', String(PORT), '--strictPort'],
+    { stdio: ['ignore', 'ignore', 'inherit'] },
+  );
+  const browser = await chromium.launch({
+    executablePath: process.env.CHROMIUM_PATH ?? '/usr/bin/chromium',
+    args: ['--no-sandbox', '--disable-gpu', '--enable-unsafe-swiftshader', '--no-first-run'],
+  });
+  try {
+    await waitServer();
+    for (const preset of presets) {
+      const page = await browser.newPage({ viewport: { width: 900, height: 800 } });
+      await page.goto(`${BASE}/?preset=${preset}`);
+      await page.waitForFunction(
+        () => {
+          const el = document.querySelector('[data-testid="status"]') as HTMLElement | null;
+          return !!el && (el.dataset.state === 'ready' || el.dataset.state === 'error');
+        },
+        null,
+        { timeout: 600_000, polling: 100 },
+      );
+      await page.evaluate(() => window.hairsketch.idle());
+      const state = await page.getByTestId('status').getAttribute('data-state');
+      if (state !== 'ready') {
+        console.error(`${preset}: ${await page.getByTestId('status').textContent()}`);
+        process.exitCode = 1;
+      }
+      const file = `docs/screenshots/${preset}.png`;
+      await page.getByTestId('viewport').screenshot({ path: file });
+      console.log(`${preset}: ${file}`);
+      await page.close();
+    }
+  } finally {
+    await browser.close();
+    server.kill();
+  }
+}
+
+await main();
