@@ -63,7 +63,7 @@ const result = (id: number, final = true): SolveResult => ({
   type: 'result',
   id,
   strands: { points: new Float32Array([id, 0, 0]), strandStart: new Uint32Array([0, 1]) },
-  constraints: { index: new Int32Array(), target: new Float32Array() },
+  constraints: { index: new Int32Array(), target: new Float32Array(), colour: new Uint8Array() },
   field: null,
   final,
   stats: {
