@@ -6,6 +6,11 @@ import { buildSupportingSurface } from '../../web/model/supportingSurface';
 import type { Vec3 } from '../../web/model/vec3';
 import type { GridSpec } from '../../web/solver/protocol';
 import { ConstraintColour } from '../../web/solver/protocol';
+import {
+  DEFAULT_DISPLAY,
+  DISPLAY_TOGGLES,
+  displayKeyForShortcut,
+} from '../../web/ui/displayToggles';
 import { gridBoxEdges } from '../../web/viewer/boundingVolume';
 import {
   CONSTRAINT_RGB,
@@ -161,5 +166,33 @@ describe('supporting surface mesh', () => {
     // the curve bends at each of its 6 inner joints
     expect((g.getIndex()?.count ?? 0) / 3).toBe(2 * 7 + 2 * 6);
     expect(g.getAttribute('position').count).toBe(s.positions.length / 3);
+  });
+});
+
+describe('display toggles', () => {
+  it('defaults to curves only, labels the five toggles and maps keys 1–5 to them in order', () => {
+    expect(DEFAULT_DISPLAY).toEqual({
+      curves: true,
+      constraints: false,
+      surface: false,
+      field: false,
+      box: false,
+    });
+    expect(DISPLAY_TOGGLES.map((t) => t.label)).toEqual([
+      'Curves',
+      'Constraints',
+      'Surface',
+      'Field',
+      'Box',
+    ]);
+    expect(['1', '2', '3', '4', '5'].map(displayKeyForShortcut)).toEqual([
+      'curves',
+      'constraints',
+      'surface',
+      'field',
+      'box',
+    ]);
+    for (const k of ['0', '6', '9', 'a', '11', ' ', 'F1'])
+      expect(displayKeyForShortcut(k)).toBeNull();
   });
 });

@@ -1,6 +1,7 @@
 // window.hairsketch: the hooks automated browser tests use (README, "Test contract").
 import { contentKey } from '../model/curveSet';
 import type { Vec3 } from '../model/vec3';
+import type { DisplayState } from '../ui/displayToggles';
 import type { App } from './app';
 
 export interface HairsketchTestApi {
@@ -18,6 +19,10 @@ export interface HairsketchTestApi {
   /** Fraction of the hair's segments the last frame drew (1 = all; less while interacting on a
    *  slow GPU). */
   hairDetail(): number;
+  /** The display toggles (SPEC S6.2): which of curves, constraints, surface, field, box show. */
+  display(): DisplayState;
+  /** What the shown overlays draw: constraints, field glyphs, surface triangles (0 when off). */
+  displayInfo(): { constraints: number; glyphs: number; surfaceTriangles: number };
 }
 
 declare global {
@@ -59,5 +64,7 @@ export function installTestApi(app: App): void {
     lastPointerUp: () => app.lastPointerUp,
     heapBytes: () => app.heapBytes,
     hairDetail: () => app.viewer.hairDetail,
+    display: () => ({ ...app.display }),
+    displayInfo: () => app.displayInfo(),
   };
 }

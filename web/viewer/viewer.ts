@@ -199,11 +199,13 @@ export class Viewer {
     this.requestRender();
   }
 
-  /** Adds (on) or removes a display object. The caller owns it: it is never disposed here. */
+  /** Adds (on) or removes a display object. The caller owns it: it is never disposed here, and
+   *  calls requestRender after changing it while shown. */
   showDisplay(object: THREE.Object3D, on: boolean): void {
     const shown = object.parent === this.displayGroup;
-    if (on && !shown) this.displayGroup.add(object);
-    else if (!on && shown) this.displayGroup.remove(object);
+    if (on === shown) return;
+    if (on) this.displayGroup.add(object);
+    else this.displayGroup.remove(object);
     this.requestRender();
   }
 
