@@ -60,8 +60,10 @@ describe('constraint colours', () => {
     const seg = Array.from(g.segments);
     expect(seg.slice(0, 6).map((x) => +x.toFixed(6))).toEqual([-0.75, 1, 2.75, -0.55, 1, 2.75]);
     expect(seg.slice(6, 12).map((x) => +x.toFixed(6))).toEqual([-0.25, 0.5, 3, -0.25, 0.44, 3]);
-    const blue = rgb01(CONSTRAINT_RGB[0]);
-    const red = rgb01(CONSTRAINT_RGB[1]);
+    // vertex colours are linear: the sRGB hex decoded (the sRGB transfer curve, by hand)
+    const lin = (x: number) => (x <= 0.04045 ? x / 12.92 : ((x + 0.055) / 1.055) ** 2.4);
+    const blue = rgb01(CONSTRAINT_RGB[0]).map(lin);
+    const red = rgb01(CONSTRAINT_RGB[1]).map(lin);
     expect(Array.from(g.pointColours).map((x) => +x.toFixed(5))).toEqual(
       [...blue, ...red].map((x) => +x.toFixed(5)),
     );

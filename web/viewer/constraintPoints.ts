@@ -35,7 +35,9 @@ export function gridPointPosition(grid: GridSpec, p: number): [number, number, n
 
 export interface ConstraintGlyphs {
   points: Float32Array; // points[3 * c + axis]: grid position of constraint c
-  pointColours: Float32Array; // pointColours[3 * c + channel], 0..1
+  /** pointColours[3 * c + channel], 0..1 in three's linear working space (the CONSTRAINT_RGB
+   *  sRGB colour on screen). */
+  pointColours: Float32Array;
   segments: Float32Array; // segments[6 * c + 3 * end + axis]: end 0 at the point, 1 at the tip
   segmentColours: Float32Array; // same layout, 0..1
 }
@@ -53,10 +55,11 @@ export function constraintGlyphs(
   const segments = new Float32Array(6 * n);
   const segmentColours = new Float32Array(6 * n);
   const k = length * grid.step;
+  // vertex colours are in three's linear working space: sRGB hex -> linear, once per colour
+  const palette = CONSTRAINT_RGB.map((hex) => new THREE.Color(hex).toArray() as number[]);
   for (let e = 0; e < n; e++) {
     const p = gridPointPosition(grid, c.index[e]);
-    const rgb = constraintRgb(c.colour[e] ?? 4);
-    const col = [(rgb >> 16) & 255, (rgb >> 8) & 255, rgb & 255].map((x) => x / 255);
+    const col = palette[c.colour[e]] ?? palette[4];
     for (let a = 0; a < 3; a++) {
       points[3 * e + a] = p[a];
       segments[6 * e + a] = p[a];

@@ -50,8 +50,9 @@ export function fieldGlyphPoints(
   return out;
 }
 
-const ROOT_RGB = [0.16, 0.2, 0.28];
-const TIP_RGB = [0.95, 0.55, 0.1];
+// vertex colours are linear (three's working space): sRGB hex -> linear
+const ROOT_RGB = new THREE.Color(0x2a3342).toArray();
+const TIP_RGB = new THREE.Color(0xe08a1e).toArray();
 
 /** Segment arrays of the glyphs: positions[6 * g + 3 * end + axis], colours the same layout. */
 export function fieldGlyphSegments(
