@@ -83,8 +83,16 @@ test('each display toggle switches with a click and with its shortcut, and the a
   await box('Curves').click();
   await expect(box('Curves')).not.toBeChecked();
   expect((await display(page)).curves).toBe(false);
+  // a hidden curve cannot be picked
+  await page.keyboard.press('Escape');
+  await expect(page.getByRole('button', { name: 'Delete' })).toBeDisabled();
+  await page.mouse.click(target.x, target.y);
+  await page.evaluate(() => window.hairsketch.idle());
+  await expect(page.getByRole('button', { name: 'Delete' })).toBeDisabled();
+  expect((await info(page)).surfaceTriangles).toBe(0);
 
-  // Shortcuts 1–5 flip each toggle back (focus stays on a checkbox: still shortcuts).
+  // Shortcuts 1–5 flip each toggle back (also with the focus on a checkbox).
+  await box('Box').focus();
   for (const key of ['1', '2', '3', '4', '5']) await page.keyboard.press(key);
   expect(await display(page)).toEqual({
     curves: true,

@@ -112,7 +112,8 @@ export class App {
         notify: (m) => this.notify(m),
       }),
       select: new SelectTool({
-        curves: () => this.history.current.curves,
+        // hidden curves (Curves display off) cannot be picked
+        curves: () => (this.display.curves ? this.history.current.curves : []),
         toScreen: (p) => this.viewer.worldToScreen(p),
         select: (id) => this.select(id),
       }),
@@ -431,16 +432,17 @@ export class App {
     const curve = d.surface
       ? (this.history.current.curves.find((c) => c.id === this.selectedId) ?? null)
       : null;
-    const mode = curve ? surfaceModeOf(curve) : '';
+    const source = curve ? surfaceSource(curve) : null;
+    const mode = source?.mode ?? '';
     if (drawn.surface !== curve || drawn.surfaceMode !== mode) {
       drawn.surface = curve;
       drawn.surfaceMode = mode;
       v.surface.update(
-        curve && mode && curve.points.length >= 2
+        source
           ? buildSupportingSurface(
-              curve.points,
-              curve.viewpoint.position,
-              mode,
+              source.points,
+              source.eye,
+              source.mode,
               SURFACE_HALF_WIDTH_STEPS * grid.step,
             )
           : null,
@@ -544,11 +546,21 @@ export class App {
 /** Half width of the displayed supporting surface, in grid steps. */
 const SURFACE_HALF_WIDTH_STEPS = 6;
 
-/** The supporting-surface mode of a curve: its own `surfaceMode` where it has one (stream curves
- *  and ponytail spines once the curve model stores it), else the ruled surface. */
-function surfaceModeOf(curve: object): SurfaceMode {
-  const m = (curve as { surfaceMode?: unknown }).surfaceMode;
-  return m === 'strip' ? 'strip' : 'ruled';
+/** What the supporting surface of a curve is built from: its points, its own viewpoint and its
+ *  mode (its `surfaceMode` where the curve model stores one, else the ruled surface); null for a
+ *  curve without a viewpoint (e.g. a dividing curve, drawn on the scalp) or with < 2 points. */
+function surfaceSource(curve: object): { points: Vec3[]; eye: Vec3; mode: SurfaceMode } | null {
+  const c = curve as {
+    points?: Vec3[];
+    viewpoint?: { position: Vec3 };
+    surfaceMode?: unknown;
+  };
+  if (!c.viewpoint || !c.points || c.points.length < 2) return null;
+  return {
+    points: c.points,
+    eye: c.viewpoint.position,
+    mode: c.surfaceMode === 'strip' ? 'strip' : 'ruled',
+  };
 }
 
 function scalpMessage(head: {

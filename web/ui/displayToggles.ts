@@ -58,7 +58,17 @@ export function buildDisplayToggles(
     box.type = 'checkbox';
     box.checked = initial[key];
     box.dataset.testid = `display-${key}`;
-    box.addEventListener('change', () => onToggle(key, box.checked));
+    // A click leaves no focus on the checkbox: the app's shortcuts (Delete, Escape, S, V, Ctrl+Z)
+    // ignore keys typed into inputs. Toggled from the keyboard (Tab, Space), it keeps the focus.
+    let byPointer = false;
+    l.addEventListener('pointerdown', () => {
+      byPointer = true;
+    });
+    box.addEventListener('change', () => {
+      if (byPointer) box.blur();
+      byPointer = false;
+      onToggle(key, box.checked);
+    });
     l.append(box, label);
     group.append(l);
     boxes.set(key, box);
