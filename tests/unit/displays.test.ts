@@ -14,11 +14,16 @@ import {
 import { gridBoxEdges } from '../../web/viewer/boundingVolume';
 import {
   CONSTRAINT_RGB,
+  ConstraintPointsView,
   constraintGlyphs,
   constraintRgb,
   gridPointPosition,
 } from '../../web/viewer/constraintPoints';
-import { fieldGlyphPoints, fieldGlyphSegments } from '../../web/viewer/fieldGlyphs';
+import {
+  FieldGlyphsView,
+  fieldGlyphPoints,
+  fieldGlyphSegments,
+} from '../../web/viewer/fieldGlyphs';
 import { SupportingSurfaceView, surfaceGeometry } from '../../web/viewer/supportingSurfaceView';
 
 const grid: GridSpec = { dims: [4, 3, 5], origin: [-1, 0.5, 2], step: 0.25 };
@@ -196,5 +201,30 @@ describe('display toggles', () => {
     ]);
     for (const k of ['0', '6', '9', 'a', '11', ' ', 'F1'])
       expect(displayKeyForShortcut(k)).toBeNull();
+  });
+});
+
+describe('display views', () => {
+  it('draw nothing, and hide, without input; count what they draw otherwise', () => {
+    const c = new ConstraintPointsView();
+    c.update(null, grid);
+    expect([c.count, c.object.visible]).toEqual([0, false]);
+    c.update(
+      {
+        index: new Int32Array([0, 5, 7]),
+        target: new Float32Array(9).fill(0.5),
+        colour: new Uint8Array([0, 2, 3]),
+      },
+      grid,
+    );
+    expect([c.count, c.object.visible]).toEqual([3, true]);
+    const f = new FieldGlyphsView({ stride: 1 });
+    f.update(null, grid);
+    expect([f.count, f.object.visible]).toEqual([0, false]);
+    const n = 4 * 3 * 5;
+    const v = new Float32Array(3 * n);
+    v[3 * 7 + 1] = 1; // one point with |v| = 1
+    f.update(v, grid);
+    expect([f.count, f.object.visible]).toEqual([1, true]);
   });
 });

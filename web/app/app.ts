@@ -397,7 +397,8 @@ export class App {
     if (key === 'field') {
       // the worker copies the field out only while it is shown
       this.client.wantField = on;
-      if (on && !this.displayResult?.field) this.syncSession();
+      // (while a stroke is drawn, its next preview carries the field)
+      if (on && !this.displayResult?.field && !this.previewing) this.syncSession();
     }
     this.updateDisplays();
   }
