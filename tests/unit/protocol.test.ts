@@ -53,7 +53,11 @@ describe('protocol layouts', () => {
       type: 'result' as const,
       id: 1,
       strands: { points: new Float32Array(6), strandStart: new Uint32Array([0, 2]) },
-      constraints: { index: new Int32Array(1), target: new Float32Array(3) },
+      constraints: {
+        index: new Int32Array(1),
+        target: new Float32Array(3),
+        colour: new Uint8Array(1),
+      },
       field: { vectors: new Float32Array(3) },
       final: true,
       stats: {
@@ -71,8 +75,9 @@ describe('protocol layouts', () => {
       },
     };
     const t = resultTransferables(msg);
-    expect(t).toHaveLength(5);
-    expect(new Set(t).size).toBe(5);
+    expect(t).toHaveLength(6);
+    expect(new Set(t).size).toBe(6);
+    expect(t).toContain(msg.constraints.colour.buffer);
     expect(strandCount(msg.strands)).toBe(1);
   });
 

@@ -63,7 +63,7 @@ const result = (id: number, final = true): SolveResult => ({
   type: 'result',
   id,
   strands: { points: new Float32Array([id, 0, 0]), strandStart: new Uint32Array([0, 1]) },
-  constraints: { index: new Int32Array(), target: new Float32Array() },
+  constraints: { index: new Int32Array(), target: new Float32Array(), colour: new Uint8Array() },
   field: null,
   final,
   stats: {
@@ -188,6 +188,26 @@ describe('SolverClient', () => {
     client.request(curves(1), DEFAULT_GROWTH); // undo
     expect(w.solves()).toHaveLength(2);
     expect(shown.at(-1)).toEqual({ id: w.solves()[0].id, cached: true });
+  });
+
+  it('asks for the field only while wanted, and does not answer a field request from a cache without it', () => {
+    const { client, workers, shown } = setup();
+    const w = workers[0];
+    w.reply({ type: 'ready', gridPoints: 8, roots: 0 });
+    client.request(curves(1), DEFAULT_GROWTH);
+    expect(w.solves()[0].wantField).toBe(false);
+    w.reply(result(w.solves()[0].id));
+    client.wantField = true;
+    client.request(curves(1), DEFAULT_GROWTH); // same state, but the cached answer has no field
+    expect(w.solves()).toHaveLength(2);
+    expect(w.solves()[1].wantField).toBe(true);
+    w.reply({ ...result(w.solves()[1].id), field: { vectors: new Float32Array(24) } });
+    client.request(curves(1), DEFAULT_GROWTH); // now cached with its field
+    expect(w.solves()).toHaveLength(2);
+    expect(shown.at(-1)).toEqual({ id: w.solves()[1].id, cached: true });
+    client.wantField = false;
+    client.request(curves(1), DEFAULT_GROWTH); // a field in the cache does no harm
+    expect(w.solves()).toHaveLength(2);
   });
 
   it('restarts a dead worker and re-sends the newest state', () => {

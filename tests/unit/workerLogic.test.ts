@@ -1,14 +1,17 @@
 // The worker's scheduler against a scripted engine: previews, first look then final, and a
 // newer request superseding a running solve between iteration slices.
+import { readFileSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
 import { describe, expect, it } from 'vitest';
 import { packCurves } from '../../web/model/curveSet';
 import { DEFAULT_GROWTH } from '../../web/model/session';
 import type { IterateProgress, SolverEngine } from '../../web/solver/engine';
 import type { FromWorker, ToWorker } from '../../web/solver/protocol';
+import { loadSolverEngine } from '../../web/solver/wasmEngine';
 import { DEFAULT_SCHEDULER, WorkerLogic } from '../../web/solver/workerLogic';
 
 /** An engine whose error falls by 10x per iteration from 1 (so 1e-6 takes 6 iterations). */
-function scriptedEngine(log: string[]): SolverEngine {
+function scriptedEngine(log: string[], colours = new Uint8Array([0, 1, 3])): SolverEngine {
   let it = 0;
   const progress = (): IterateProgress => ({
     iterations: it,
@@ -32,7 +35,8 @@ function scriptedEngine(log: string[]): SolverEngine {
       log.push(`grow:${g.maxStrands}`);
       return { points: new Float32Array(3), strandStart: new Uint32Array([0, 1]) };
     },
-    constraints: () => ({ index: new Int32Array(), target: new Float32Array() }),
+    constraints: () => ({ index: new Int32Array([4, 9, 12]), target: new Float32Array(9) }),
+    constraintColours: () => colours,
     field: () => ({ vectors: new Float32Array() }),
     stats: () => ({
       method: 'fast',
@@ -62,6 +66,8 @@ const init: ToWorker = {
   },
 };
 
+type SolveMsg = Extract<ToWorker, { type: 'solve' }>;
+
 const solve = (id: number, mode: 'preview' | 'full', n = 1): ToWorker => ({
   type: 'solve',
   id,
@@ -72,11 +78,11 @@ const solve = (id: number, mode: 'preview' | 'full', n = 1): ToWorker => ({
   ...(n ? {} : {}),
 });
 
-function harness() {
+function harness(colours?: Uint8Array<ArrayBuffer>) {
   const log: string[] = [];
   const posted: FromWorker[] = [];
   let yields: Array<() => void> = [];
-  const logic = new WorkerLogic(scriptedEngine(log), (m) => posted.push(m), {
+  const logic = new WorkerLogic(scriptedEngine(log, colours), (m) => posted.push(m), {
     ...DEFAULT_SCHEDULER,
     firstLookIterations: 2,
     sliceIterations: 2,
@@ -161,9 +167,83 @@ describe('WorkerLogic', () => {
     expect(h.log.filter((l) => l.startsWith('curves'))).toHaveLength(1);
   });
 
+  it('sends each constraint with its colour, in the same order', async () => {
+    const h = harness();
+    await h.logic.handle(init);
+    const done = h.logic.handle(solve(1, 'preview'));
+    await h.release();
+    await done;
+    const c = h.results()[0].constraints;
+    expect(Array.from(c.index)).toEqual([4, 9, 12]);
+    expect(Array.from(c.colour)).toEqual([0, 1, 3]);
+  });
+
+  it('pads missing colours as "extra" so colour and index always have one entry each', async () => {
+    const h = harness(new Uint8Array([2]));
+    await h.logic.handle(init);
+    const done = h.logic.handle(solve(1, 'preview'));
+    await h.release();
+    await done;
+    expect(Array.from(h.results()[0].constraints.colour)).toEqual([2, 4, 4]);
+  });
+
   it('reports a solve before init as an error', async () => {
     const h = harness();
     await h.logic.handle(solve(5, 'full'));
     expect(h.posted).toEqual([{ type: 'error', id: 5, message: 'Solver is not initialised' }]);
+  });
+});
+
+/** A small octahedron, every face scalp: enough for root sampling. */
+function octahedron(c: [number, number, number], r: number) {
+  const v = [
+    [r, 0, 0],
+    [-r, 0, 0],
+    [0, r, 0],
+    [0, -r, 0],
+    [0, 0, r],
+    [0, 0, -r],
+  ].flatMap((p) => [c[0] + p[0], c[1] + p[1], c[2] + p[2]]);
+  const f = [0, 2, 4, 2, 1, 4, 1, 3, 4, 3, 0, 4, 2, 0, 5, 1, 2, 5, 3, 1, 5, 0, 3, 5];
+  return {
+    positions: new Float32Array(v),
+    indices: new Uint32Array(f),
+    scalp: new Uint8Array(8).fill(1),
+    center: c,
+  };
+}
+
+describe('WorkerLogic over the real wasm engine', () => {
+  it('colours a stream curve blue and its fading extension red, one colour per constraint', async () => {
+    const wasmPath = fileURLToPath(new URL('../../web/generated/hairsolver.wasm', import.meta.url));
+    const engine = await loadSolverEngine({ wasmBinary: new Uint8Array(readFileSync(wasmPath)) });
+    const posted: FromWorker[] = [];
+    const logic = new WorkerLogic(engine, (m) => posted.push(m));
+    const step = 0.25;
+    await logic.handle({
+      ...init,
+      grid: { dims: [12, 12, 12], origin: [-1.5, -1.5, -1.5], step },
+      solver: 'cg',
+      scalp: octahedron([0, -1, 0], 0.3),
+    } as ToWorker);
+    const points: [number, number, number][] = [];
+    for (let i = 0; i < 6; i++) points.push([-0.6 + i * step, 0, 0]);
+    const curves = packCurves([
+      {
+        id: 'c1',
+        type: 'stream',
+        points,
+        extend: true,
+        viewpoint: { position: [0, 0, 5], target: [0, 0, 0] },
+      },
+    ]);
+    await logic.handle({ ...(solve(1, 'preview') as SolveMsg), curves });
+    const r = posted.find((m) => m.type === 'result');
+    if (r?.type !== 'result') throw new Error(`no result: ${JSON.stringify(posted)}`);
+    const c = r.constraints;
+    expect(c.index.length).toBeGreaterThan(5);
+    expect(c.colour.length).toBe(c.index.length);
+    expect(new Set(c.colour)).toEqual(new Set([0, 1]));
+    engine.dispose();
   });
 });

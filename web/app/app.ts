@@ -14,13 +14,26 @@ import {
   nextCurveId,
   type SessionState,
 } from '../model/session';
+import type { SurfaceMode } from '../model/supportingSurface';
+import { buildSupportingSurface } from '../model/supportingSurface';
 import { sub, type Vec3 } from '../model/vec3';
+import type { GridSpec } from '../solver/protocol';
 import { type SolveResult, SolverClient } from '../solver/solverClient';
 import { SelectTool } from '../tools/selectTool';
 import { StreamCurveTool } from '../tools/streamCurveTool';
 import type { Tool } from '../tools/tool';
+import {
+  buildDisplayToggles,
+  DEFAULT_DISPLAY,
+  type DisplayKey,
+  type DisplayState,
+  type DisplayToggles,
+} from '../ui/displayToggles';
 import { StatusLine } from '../ui/status';
 import { buildToolbar } from '../ui/toolbar';
+import { BoundingVolumeView } from '../viewer/boundingVolume';
+import { ConstraintPointsView } from '../viewer/constraintPoints';
+import { FieldGlyphsView } from '../viewer/fieldGlyphs';
 import { createHeadMesh } from '../viewer/headMaterial';
 import { HeadPicker } from '../viewer/headPicker';
 import {
@@ -29,6 +42,7 @@ import {
   type StrandMaterial,
   setHairColor,
 } from '../viewer/strandMaterial';
+import { SupportingSurfaceView } from '../viewer/supportingSurfaceView';
 import { Viewer } from '../viewer/viewer';
 import { installTestApi } from './testApi';
 import { parseUrlOptions } from './urlOptions';
@@ -98,7 +112,8 @@ export class App {
         notify: (m) => this.notify(m),
       }),
       select: new SelectTool({
-        curves: () => this.history.current.curves,
+        // hidden curves (Curves display off) cannot be picked
+        curves: () => (this.display.curves ? this.history.current.curves : []),
         toScreen: (p) => this.viewer.worldToScreen(p),
         select: (id) => this.select(id),
       }),
@@ -113,6 +128,7 @@ export class App {
       hairColor: (css) => this.setHairColor(css),
     });
     this.toolbar.setHairColor(session.hairColor);
+    this.initDisplays(document.getElementById('toolbar') as HTMLElement, grid);
     this.bindInput();
     this.viewer.onFrame(() => this.tool.update());
     this.viewer.onRendered = () => {
@@ -287,6 +303,7 @@ export class App {
 
   private syncCurvesView(): void {
     this.viewer.setCurves(this.history.current.curves, this.selectedId);
+    this.updateDisplays(); // the selected curve's surface follows edits and selection
   }
 
   private refreshToolbar(): void {
@@ -312,6 +329,8 @@ export class App {
         strands: r.strands.strandStart.length - 1,
       };
     }
+    this.displayResult = r;
+    this.updateDisplays();
     // hair that is still settling is drawn at interactive detail, the final hair in full
     this.viewer.hold('settling', !final);
     const st = r.stats;
@@ -348,6 +367,115 @@ export class App {
   private applyHairColor(): void {
     if (this.strandMaterial) setHairColor(this.strandMaterial, this.history.current.hairColor);
     this.viewer.requestRender();
+  }
+
+  // ---- display toggles (SPEC S6.2) ----------------------------------------------------------
+  // What the view shows besides head and hair. View state: not in the undo history, not shared.
+  // Hooks elsewhere: initDisplays (constructor), updateDisplays (syncCurvesView, showResult).
+
+  readonly display: DisplayState = { ...DEFAULT_DISPLAY };
+  private displayGrid: GridSpec | null = null;
+  private displayToggles: DisplayToggles | null = null;
+  /** The result whose constraints / field the overlays draw. */
+  private displayResult: SolveResult | null = null;
+  private readonly displayViews = {
+    constraints: new ConstraintPointsView(),
+    field: new FieldGlyphsView(),
+    surface: new SupportingSurfaceView(),
+    box: null as BoundingVolumeView | null,
+  };
+  /** What each overlay was last built from (rebuilt only when it changes). */
+  private readonly displayDrawn = {
+    constraints: null as unknown,
+    field: null as unknown,
+    surface: null as unknown,
+    surfaceMode: '',
+  };
+
+  private initDisplays(toolbar: HTMLElement, grid: GridSpec): void {
+    this.displayGrid = grid;
+    this.displayViews.box = new BoundingVolumeView(grid);
+    this.displayToggles = buildDisplayToggles(toolbar, this.display, (k, on) =>
+      this.setDisplay(k, on),
+    );
+  }
+
+  /** Turns one display on or off (the checkboxes, shortcuts 1–5 and tests call this). */
+  setDisplay(key: DisplayKey, on: boolean): void {
+    if (this.display[key] === on) return;
+    this.display[key] = on;
+    this.displayToggles?.set(this.display);
+    if (key === 'field') {
+      // the worker copies the field out only while it is shown
+      this.client.wantField = on;
+      // (while a stroke is drawn, its next preview carries the field)
+      if (on && !this.displayResult?.field && !this.previewing) this.syncSession();
+    }
+    this.updateDisplays();
+  }
+
+  /** Rebuilds what changed of the shown overlays and adds / removes them from the view. */
+  updateDisplays(): void {
+    const grid = this.displayGrid;
+    if (!grid) return; // called during construction, before initDisplays
+    const d = this.display;
+    const v = this.displayViews;
+    const drawn = this.displayDrawn;
+    const r = this.displayResult;
+    this.viewer.setCurvesVisible(d.curves);
+
+    let rebuilt = false;
+    const constraints = d.constraints ? (r?.constraints ?? null) : null;
+    if (drawn.constraints !== constraints) {
+      drawn.constraints = constraints;
+      v.constraints.update(constraints, grid);
+      rebuilt = true;
+    }
+    this.viewer.showDisplay(v.constraints.object, d.constraints);
+
+    const field = d.field ? (r?.field?.vectors ?? null) : null;
+    if (drawn.field !== field) {
+      drawn.field = field;
+      v.field.update(field, grid);
+      rebuilt = true;
+    }
+    this.viewer.showDisplay(v.field.object, d.field);
+
+    const curve = d.surface
+      ? (this.history.current.curves.find((c) => c.id === this.selectedId) ?? null)
+      : null;
+    const source = curve ? surfaceSource(curve) : null;
+    const mode = source?.mode ?? '';
+    if (drawn.surface !== curve || drawn.surfaceMode !== mode) {
+      drawn.surface = curve;
+      drawn.surfaceMode = mode;
+      v.surface.update(
+        source
+          ? buildSupportingSurface(
+              source.points,
+              source.eye,
+              source.mode,
+              SURFACE_HALF_WIDTH_STEPS * grid.step,
+            )
+          : null,
+      );
+      rebuilt = true;
+    }
+    this.viewer.showDisplay(v.surface.object, d.surface);
+
+    if (v.box) this.viewer.showDisplay(v.box.object, d.box);
+    if (rebuilt) this.viewer.requestRender();
+  }
+
+  /** What the overlays draw now (test API). */
+  displayInfo(): { constraints: number; glyphs: number; surfaceTriangles: number } {
+    const v = this.displayViews;
+    const d = this.display;
+    return {
+      constraints: d.constraints ? v.constraints.count : 0,
+      glyphs: d.field ? v.field.count : 0,
+      surfaceTriangles: d.surface ? v.surface.triangles : 0,
+    };
   }
 
   // ---- input -------------------------------------------------------------------------------
@@ -425,6 +553,26 @@ export class App {
   displayedStrands(): SolveResult['strands'] | null {
     return this.shownStrands;
   }
+}
+
+/** Half width of the displayed supporting surface, in grid steps. */
+const SURFACE_HALF_WIDTH_STEPS = 6;
+
+/** What the supporting surface of a curve is built from: its points, its own viewpoint and its
+ *  mode (its `surfaceMode` where the curve model stores one, else the ruled surface); null for a
+ *  curve without a viewpoint (e.g. a dividing curve, drawn on the scalp) or with < 2 points. */
+function surfaceSource(curve: object): { points: Vec3[]; eye: Vec3; mode: SurfaceMode } | null {
+  const c = curve as {
+    points?: Vec3[];
+    viewpoint?: { position: Vec3 };
+    surfaceMode?: unknown;
+  };
+  if (!c.viewpoint || !c.points || c.points.length < 2) return null;
+  return {
+    points: c.points,
+    eye: c.viewpoint.position,
+    mode: c.surfaceMode === 'strip' ? 'strip' : 'ruled',
+  };
 }
 
 function scalpMessage(head: {

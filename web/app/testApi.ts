@@ -1,6 +1,7 @@
 // window.hairsketch: the hooks automated browser tests use (README, "Test contract").
 import { contentKey } from '../model/curveSet';
 import type { Vec3 } from '../model/vec3';
+import type { DisplayState } from '../ui/displayToggles';
 import type { App } from './app';
 
 export interface HairsketchTestApi {
@@ -23,6 +24,10 @@ export interface HairsketchTestApi {
   /** Replaces the session with a plain-JSON one from session() (an undoable edit); for
    *  comparing a session's hair against a fresh solve in another page. */
   replaceSession(session: unknown): void;
+  /** The display toggles (SPEC S6.2): which of curves, constraints, surface, field, box show. */
+  display(): DisplayState;
+  /** What the shown overlays draw: constraints, field glyphs, surface triangles (0 when off). */
+  displayInfo(): { constraints: number; glyphs: number; surfaceTriangles: number };
 }
 
 declare global {
@@ -76,5 +81,7 @@ export function installTestApi(app: App): void {
       return out;
     },
     replaceSession: (session) => app.replaceSession(session),
+    display: () => ({ ...app.display }),
+    displayInfo: () => app.displayInfo(),
   };
 }

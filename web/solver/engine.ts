@@ -27,7 +27,10 @@ export interface SolverEngine {
   iterate(maxIterations: number, tolerance: number): IterateProgress;
   /** Sample roots (S5.1) and grow strands (S5.2) in the current field. Returns copies. */
   grow(params: GrowthParams): StrandArrays;
-  constraints(): ConstraintArrays;
+  /** The current constraints (sorted by grid index); their colours come from constraintColours. */
+  constraints(): Omit<ConstraintArrays, 'colour'>;
+  /** Display colour of each constraint of constraints(), same order (ConstraintColour values). */
+  constraintColours(): Uint8Array;
   field(): FieldArrays;
   stats(): Omit<SolveStats, 'growMs' | 'errorEstimate' | 'heapBytes'>;
   /** Bytes of the wasm heap (memory grows, never shrinks). */

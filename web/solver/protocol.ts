@@ -68,10 +68,19 @@ export interface FieldArrays {
   vectors: Float32Array; // vectors[3 * p + axis], p = grid index
 }
 
+/** Display colour of a constraint (paper Figs. 2, 4, 5; solver-cpp/src/constraint_colour.hpp). */
+export const ConstraintColour = { blue: 0, red: 1, purple: 2, green: 3, extra: 4 } as const;
+export type ConstraintColourName = keyof typeof ConstraintColour;
+
 /** The constraint set derived from the curves (SPEC S2.3). */
 export interface ConstraintArrays {
   index: Int32Array; // index[c] = grid point p of constraint c (sorted, unique)
   target: Float32Array; // target[3 * c + axis] = c_p
+  /** colour[c]: ConstraintColour of constraint c (same order as index): 0 blue (stream-curve
+   *  tangents, dividing-curve Gaussian profile, ponytail spine), 1 red (a stream curve's fading
+   *  extension, the dividing-curve discontinuity), 2 purple (ponytail cross sections),
+   *  3 green (ponytail centripetal ring), 4 extra (stated directly, e.g. scalp avoidance). */
+  colour: Uint8Array;
 }
 
 export type SolverName = 'cg' | 'fast' | 'exact' | 'auto';
@@ -133,6 +142,7 @@ export function resultTransferables(msg: Extract<FromWorker, { type: 'result' }>
     msg.strands.strandStart.buffer as ArrayBuffer,
     msg.constraints.index.buffer as ArrayBuffer,
     msg.constraints.target.buffer as ArrayBuffer,
+    msg.constraints.colour.buffer as ArrayBuffer,
   ];
   if (msg.field) list.push(msg.field.vectors.buffer as ArrayBuffer);
   return list;

@@ -8,6 +8,8 @@
 //   was made (a late answer never undoes an edit the user made since).
 // Final results are cached by content (undo is instant and exact), and a worker that dies is
 // restarted and sent the session again.
+// The solved field is copied out of the worker only while `wantField` is set (the field display
+// is on); a cached result without it does not answer a request that wants it.
 import { contentKey } from '../model/curveSet';
 import type { CurveSet, FromWorker, GrowthParams, ToWorker } from './protocol';
 
@@ -32,6 +34,7 @@ interface Request {
   mode: SolveMode;
   curves: CurveSet;
   growth: GrowthParams;
+  wantField: boolean;
 }
 
 const CACHE_SIZE = 4;
@@ -53,6 +56,8 @@ export class SolverClient {
   private readonly cache = new Map<string, SolveResult>();
   private restarts = 0;
   private ready = false;
+  /** Ask the worker for the solved field with each result (for the field display). */
+  wantField = false;
 
   constructor(
     private readonly makeWorker: () => Worker,
@@ -78,7 +83,14 @@ export class SolverClient {
       curves.extraTarget,
       new Float64Array(Object.values(growth)),
     );
-    const req: Request = { id: this.nextId++, key, mode, curves, growth };
+    const req: Request = {
+      id: this.nextId++,
+      key,
+      mode,
+      curves,
+      growth,
+      wantField: this.wantField,
+    };
     this.latest = req;
     if (mode === 'preview') {
       this.open = req;
@@ -90,7 +102,7 @@ export class SolverClient {
     this.previewWaiting = null;
     this.previewInFlight = null; // its answer, if any, is older than this request: not shown
     const cached = this.cache.get(key);
-    if (cached) {
+    if (cached && (cached.field || !req.wantField)) {
       this.open = null;
       this.shownId = req.id;
       this.events.onResult(cached, true, true);
@@ -147,7 +159,7 @@ export class SolverClient {
       id: req.id,
       curves: req.curves,
       growth: req.growth,
-      wantField: false,
+      wantField: req.wantField,
       mode: req.mode,
     };
     this.worker.postMessage(msg);

@@ -272,7 +272,7 @@ class WasmEngine implements SolverEngine {
     };
   }
 
-  constraints(): ConstraintArrays {
+  constraints(): Omit<ConstraintArrays, 'colour'> {
     const h = this.h();
     const m = this.mod;
     const n = m._hs_engine_prepare_constraints(h);

@@ -7,7 +7,13 @@
 //                yielding to the event loop between slices so a newer request can take over,
 //                and grow the final hair when the field has converged.
 import type { IterateProgress, SolverEngine } from './engine';
-import type { FromWorker, GrowthParams, ToWorker } from './protocol';
+import {
+  type ConstraintArrays,
+  ConstraintColour,
+  type FromWorker,
+  type GrowthParams,
+  type ToWorker,
+} from './protocol';
 
 export type Post = (msg: FromWorker) => void;
 type SolveMsg = Extract<ToWorker, { type: 'solve' }>;
@@ -133,6 +139,19 @@ export class WorkerLogic {
     this.emit(job, job.growth, p, true, t0);
   }
 
+  /** The engine's constraints with their display colours (4, "extra", where a colour is missing,
+   *  so the arrays always have the same length). */
+  private constraintsWithColours(): ConstraintArrays {
+    const c = this.engine.constraints();
+    let colour = this.engine.constraintColours();
+    if (colour.length !== c.index.length) {
+      const fixed = new Uint8Array(c.index.length).fill(ConstraintColour.extra);
+      fixed.set(colour.subarray(0, Math.min(colour.length, fixed.length)));
+      colour = fixed;
+    }
+    return { ...c, colour };
+  }
+
   private lightGrowth(g: GrowthParams): GrowthParams {
     const cap = this.opts.previewMaxStrands;
     return { ...g, maxStrands: g.maxStrands > 0 ? Math.min(g.maxStrands, cap) : cap };
@@ -161,7 +180,7 @@ export class WorkerLogic {
       type: 'result',
       id: job.id,
       strands,
-      constraints: this.engine.constraints(),
+      constraints: this.constraintsWithColours(),
       field: job.wantField ? this.engine.field() : null,
       stats,
       final,

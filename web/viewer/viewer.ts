@@ -28,6 +28,8 @@ export class Viewer {
   readonly controls: OrbitControls;
   private readonly hairGroup = new THREE.Group();
   private readonly curveGroup = new THREE.Group();
+  /** Display overlays (constraints, field, box, surface): owned by their display modules. */
+  private readonly displayGroup = new THREE.Group();
   private draft: THREE.Line | null = null;
   private hair: THREE.LineSegments | null = null;
   private dirty = true;
@@ -66,7 +68,7 @@ export class Viewer {
     const rim = new THREE.DirectionalLight(0xbfd4ff, 0.6);
     rim.position.set(-4, 2, -3);
     this.scene.add(rim);
-    this.scene.add(this.hairGroup, this.curveGroup);
+    this.scene.add(this.hairGroup, this.curveGroup, this.displayGroup);
 
     new ResizeObserver(() => this.resize()).observe(canvas);
     this.resize();
@@ -187,6 +189,23 @@ export class Viewer {
       line.userData.curveId = c.id;
       this.curveGroup.add(line);
     }
+    this.requestRender();
+  }
+
+  /** Shows or hides the style curves (the draft stroke is always shown). */
+  setCurvesVisible(on: boolean): void {
+    if (this.curveGroup.visible === on) return;
+    this.curveGroup.visible = on;
+    this.requestRender();
+  }
+
+  /** Adds (on) or removes a display object. The caller owns it: it is never disposed here, and
+   *  calls requestRender after changing it while shown. */
+  showDisplay(object: THREE.Object3D, on: boolean): void {
+    const shown = object.parent === this.displayGroup;
+    if (on === shown) return;
+    if (on) this.displayGroup.add(object);
+    else this.displayGroup.remove(object);
     this.requestRender();
   }
 

@@ -1,0 +1,113 @@
+// Display toggles (SPEC S6.2) end to end: real clicks on the checkboxes and the 1–5 shortcuts,
+// checked through window.hairsketch.display() / displayInfo(), with the app staying ready.
+import { expect, type Page, test } from '@playwright/test';
+
+const SCENE = '/?strands=2000'; // SwiftShader renders slowly: a small strand count keeps it quick
+
+/** Waits until the status says ready (optionally with a hair revision past `after`) and idle. */
+async function ready(page: Page, after = -1): Promise<number> {
+  await page.waitForFunction((rev) => {
+    const el = document.querySelector('[data-testid="status"]') as HTMLElement | null;
+    return !!el && el.dataset.state === 'ready' && Number(el.dataset.revision) > rev;
+  }, after);
+  await page.evaluate(() => window.hairsketch.idle());
+  return page
+    .getByTestId('status')
+    .evaluate((el: HTMLElement) => Number(el.dataset.revision ?? '0'));
+}
+
+const display = (page: Page) => page.evaluate(() => window.hairsketch.display());
+const info = (page: Page) => page.evaluate(() => window.hairsketch.displayInfo());
+
+test('each display toggle switches with a click and with its shortcut, and the app stays ready', async ({
+  page,
+}) => {
+  const errors: string[] = [];
+  page.on('console', (m) => {
+    if (m.type() === 'error') errors.push(m.text());
+  });
+  page.on('pageerror', (e) => errors.push(String(e)));
+  await page.goto(SCENE);
+  let rev = await ready(page);
+  expect(await display(page)).toEqual({
+    curves: true,
+    constraints: false,
+    surface: false,
+    field: false,
+    box: false,
+  });
+  const box = (name: string) => page.getByRole('checkbox', { name, exact: true });
+  await expect(box('Curves')).toBeChecked();
+
+  // Constraints: drawn from the result already on screen.
+  await box('Constraints').click();
+  await expect(box('Constraints')).toBeChecked();
+  expect((await display(page)).constraints).toBe(true);
+  expect((await info(page)).constraints).toBeGreaterThan(50);
+
+  // Box.
+  await box('Box').click();
+  expect((await display(page)).box).toBe(true);
+
+  // Field: asks the solver for the field, then draws glyphs (capped).
+  await box('Field').click();
+  expect((await display(page)).field).toBe(true);
+  await page.waitForFunction(() => window.hairsketch.displayInfo().glyphs > 0);
+  rev = await ready(page, -1);
+  const glyphs = (await info(page)).glyphs;
+  expect(glyphs).toBeGreaterThan(100);
+  expect(glyphs).toBeLessThanOrEqual(12_000);
+
+  // Surface: none until a curve is selected, then the selected curve's.
+  await box('Surface').click();
+  expect((await display(page)).surface).toBe(true);
+  expect((await info(page)).surfaceTriangles).toBe(0);
+  await page.getByRole('button', { name: 'Select' }).click();
+  const target = await page.evaluate(() => {
+    const s = window.hairsketch.session() as {
+      curves: { id: string; points: [number, number, number][] }[];
+    };
+    for (const c of s.curves) {
+      const p = window.hairsketch.worldToScreen(c.points[Math.floor(c.points.length / 2)]);
+      if (p) return { id: c.id, ...p };
+    }
+    return null;
+  });
+  if (!target) throw new Error('no curve on screen');
+  await page.mouse.click(target.x, target.y);
+  await expect(page.getByRole('button', { name: 'Delete' })).toBeEnabled();
+  const tris = (await info(page)).surfaceTriangles;
+  expect(tris).toBeGreaterThanOrEqual(2);
+
+  // Curves off.
+  await box('Curves').click();
+  await expect(box('Curves')).not.toBeChecked();
+  expect((await display(page)).curves).toBe(false);
+  // a hidden curve cannot be picked
+  await page.keyboard.press('Escape');
+  await expect(page.getByRole('button', { name: 'Delete' })).toBeDisabled();
+  await page.mouse.click(target.x, target.y);
+  await page.evaluate(() => window.hairsketch.idle());
+  await expect(page.getByRole('button', { name: 'Delete' })).toBeDisabled();
+  expect((await info(page)).surfaceTriangles).toBe(0);
+
+  // Shortcuts 1–5 flip each toggle back (also with the focus on a checkbox).
+  await box('Box').focus();
+  for (const key of ['1', '2', '3', '4', '5']) await page.keyboard.press(key);
+  expect(await display(page)).toEqual({
+    curves: true,
+    constraints: false,
+    surface: false,
+    field: false,
+    box: false,
+  });
+  for (const name of ['Constraints', 'Surface', 'Field', 'Box'])
+    await expect(box(name)).not.toBeChecked();
+  expect(await info(page)).toEqual({ constraints: 0, glyphs: 0, surfaceTriangles: 0 });
+
+  // Not in the undo history: undo still removes nothing (no edit was made).
+  await expect(page.getByRole('button', { name: 'Undo' })).toBeDisabled();
+  await ready(page, -1);
+  expect(rev).toBeGreaterThan(0);
+  expect(errors).toEqual([]);
+});

@@ -1,0 +1,76 @@
+// Materials of the display overlays (constraints, field glyphs, bounding box, supporting surface).
+// Each is created once, on first use, and never disposed: a disposed material releases its shader
+// program, and compiling it again stalls on the GPU (seconds behind a software rasteriser).
+import * as THREE from 'three';
+
+const cache = new Map<string, THREE.Material>();
+
+function shared<M extends THREE.Material>(key: string, make: () => M): M {
+  let m = cache.get(key);
+  if (!m) {
+    m = make();
+    cache.set(key, m);
+  }
+  return m as M;
+}
+
+/** Lines coloured per vertex; drawn over everything when `onTop` (like the style curves). */
+export const vertexColourLines = (onTop: boolean): THREE.LineBasicMaterial =>
+  shared(`lines:${onTop}`, () =>
+    onTop
+      ? new THREE.LineBasicMaterial({ vertexColors: true, depthTest: false, transparent: true })
+      : new THREE.LineBasicMaterial({ vertexColors: true }),
+  );
+
+/** Round-ish screen-space points coloured per vertex, drawn over everything. */
+export const vertexColourPoints = (): THREE.PointsMaterial =>
+  shared(
+    'points',
+    () =>
+      new THREE.PointsMaterial({
+        vertexColors: true,
+        size: 5,
+        sizeAttenuation: false,
+        depthTest: false,
+        transparent: true,
+      }),
+  );
+
+export const boxLines = (): THREE.LineBasicMaterial =>
+  shared('box', () => new THREE.LineBasicMaterial({ color: 0x59606b }));
+
+/** Translucent, two-sided, not writing depth: the head and hair stay visible through it. */
+export const translucentSurface = (): THREE.MeshBasicMaterial =>
+  shared(
+    'surface',
+    () =>
+      new THREE.MeshBasicMaterial({
+        color: 0xf2b134,
+        transparent: true,
+        opacity: 0.28,
+        side: THREE.DoubleSide,
+        depthWrite: false,
+      }),
+  );
+
+/** Geometry of line segments / points from flat arrays (positions[3 * vertex + axis], colours the
+ *  same layout in 0..1, or none). */
+export function flatGeometry(
+  positions: Float32Array,
+  colours?: Float32Array,
+): THREE.BufferGeometry {
+  const g = new THREE.BufferGeometry();
+  g.setAttribute('position', new THREE.BufferAttribute(positions, 3));
+  if (colours) g.setAttribute('color', new THREE.BufferAttribute(colours, 3));
+  return g;
+}
+
+/** Gives `object` new geometry, freeing the old one's GPU buffers (materials stay). */
+export function replaceGeometry(
+  object: THREE.Mesh | THREE.LineSegments | THREE.Points,
+  geometry: THREE.BufferGeometry,
+): void {
+  const old = object.geometry;
+  object.geometry = geometry;
+  old.dispose();
+}
