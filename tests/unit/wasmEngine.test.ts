@@ -222,7 +222,7 @@ describe('raw solver', () => {
       }
       const index = new Int32Array([...live.keys()].sort((a, b) => a - b));
       const target = new Float64Array(3 * index.length);
-      index.forEach((q, c) => target.set(live.get(q) as number[], 3 * c));
+      for (let c = 0; c < index.length; c++) target.set(live.get(index[c]) as number[], 3 * c);
       fast.setConstraints(index, target);
       exact.setConstraints(index, target);
       fast.solve();
