@@ -30,6 +30,11 @@ export interface SolverEngine {
   constraints(): ConstraintArrays;
   field(): FieldArrays;
   stats(): Omit<SolveStats, 'growMs' | 'errorEstimate' | 'heapBytes'>;
+  /** Scalp-avoidance constraints (S4.7) from the current field; optional (test fakes). */
+  scalpAvoidance?(opts: { band?: number; magnitude?: number; wholeHead?: boolean }): {
+    index: Int32Array;
+    target: Float64Array;
+  };
   /** Bytes of the wasm heap (memory grows, never shrinks). */
   heapBytes(): number;
   dispose(): void;
