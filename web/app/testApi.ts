@@ -1,4 +1,5 @@
 // window.hairsketch: the hooks automated browser tests use (README, "Test contract").
+import { headSdf } from '../head/headSdf';
 import { contentKey } from '../model/curveSet';
 import type { Vec3 } from '../model/vec3';
 import type { App } from './app';
@@ -18,6 +19,14 @@ export interface HairsketchTestApi {
   /** Fraction of the hair's segments the last frame drew (1 = all; less while interacting on a
    *  slow GPU). */
   hairDetail(): number;
+  /** The displayed strands as plain arrays (layout of protocol.ts StrandArrays). */
+  strands(): { points: number[]; strandStart: number[] } | null;
+  /** Displayed strand segments with a point (either end or the middle) deeper than `depth`
+   *  world units inside the head (built-in head's signed distance), and the deepest value. */
+  segmentsInsideHead(depth: number): { inside: number; segments: number; deepest: number };
+  select(id: string | null): void;
+  /** Which ponytail stroke the Ponytail tool expects next. */
+  ponytailStage(): string;
 }
 
 declare global {
@@ -59,5 +68,34 @@ export function installTestApi(app: App): void {
     lastPointerUp: () => app.lastPointerUp,
     heapBytes: () => app.heapBytes,
     hairDetail: () => app.viewer.hairDetail,
+    strands() {
+      const s = app.displayedStrands();
+      return s ? { points: Array.from(s.points), strandStart: Array.from(s.strandStart) } : null;
+    },
+    segmentsInsideHead(depth) {
+      const s = app.displayedStrands();
+      let inside = 0;
+      let segments = 0;
+      let deepest = Number.POSITIVE_INFINITY;
+      if (!s) return { inside, segments, deepest };
+      const P = s.points;
+      const sdf = (k: number) => headSdf(P[3 * k], P[3 * k + 1], P[3 * k + 2]);
+      for (let i = 0; i + 1 < s.strandStart.length; i++) {
+        for (let k = s.strandStart[i]; k + 1 < s.strandStart[i + 1]; k++) {
+          segments++;
+          const mid = headSdf(
+            (P[3 * k] + P[3 * k + 3]) / 2,
+            (P[3 * k + 1] + P[3 * k + 4]) / 2,
+            (P[3 * k + 2] + P[3 * k + 5]) / 2,
+          );
+          const d = Math.min(sdf(k), sdf(k + 1), mid);
+          deepest = Math.min(deepest, d);
+          if (d < -depth) inside++;
+        }
+      }
+      return { inside, segments, deepest };
+    },
+    select: (id) => app.select(id),
+    ponytailStage: () => app.ponytailStage,
   };
 }

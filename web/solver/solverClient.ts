@@ -73,7 +73,12 @@ export class SolverClient {
   }
 
   get pending(): boolean {
-    return this.open !== null || this.previewWaiting !== null || !this.ready;
+    return (
+      this.open !== null ||
+      this.previewWaiting !== null ||
+      this.avoidWaiting.size > 0 ||
+      !this.ready
+    );
   }
 
   request(curves: CurveSet, growth: GrowthParams, mode: SolveMode = 'full'): void {

@@ -28,6 +28,7 @@ export class Viewer {
   readonly controls: OrbitControls;
   private readonly hairGroup = new THREE.Group();
   private readonly curveGroup = new THREE.Group();
+  private readonly guideGroup = new THREE.Group();
   private draft: THREE.Line | null = null;
   private hair: THREE.LineSegments | null = null;
   private dirty = true;
@@ -66,7 +67,7 @@ export class Viewer {
     const rim = new THREE.DirectionalLight(0xbfd4ff, 0.6);
     rim.position.set(-4, 2, -3);
     this.scene.add(rim);
-    this.scene.add(this.hairGroup, this.curveGroup);
+    this.scene.add(this.hairGroup, this.curveGroup, this.guideGroup);
 
     new ResizeObserver(() => this.resize()).observe(canvas);
     this.resize();
@@ -187,6 +188,16 @@ export class Viewer {
       line.userData.curveId = c.id;
       this.curveGroup.add(line);
     }
+    this.requestRender();
+  }
+
+  /** Construction lines drawn over everything (e.g. a ponytail's strokes and circles). */
+  setGuides(lines: readonly (readonly Vec3[])[]): void {
+    for (const child of [...this.guideGroup.children]) {
+      this.guideGroup.remove(child);
+      disposeObject(child);
+    }
+    for (const l of lines) if (l.length >= 2) this.guideGroup.add(polyline(l, 0xb04dff));
     this.requestRender();
   }
 
