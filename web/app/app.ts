@@ -445,6 +445,10 @@ export class App {
     return this.ponytailTool.stage;
   }
 
+  get ponytailSpine(): readonly Vec3[] {
+    return this.ponytailTool.spinePoints;
+  }
+
   setHairColor(css: string): void {
     this.history.push({ ...this.history.current, hairColor: css });
     this.applyHairColor();

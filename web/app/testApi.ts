@@ -27,6 +27,10 @@ export interface HairsketchTestApi {
   select(id: string | null): void;
   /** Which ponytail stroke the Ponytail tool expects next. */
   ponytailStage(): string;
+  /** The spine of the ponytail being built (empty before its first stroke). */
+  ponytailSpine(): Vec3[];
+  /** The view ray through client coordinates. */
+  rayAt(x: number, y: number): { origin: Vec3; direction: Vec3 };
 }
 
 declare global {
@@ -97,5 +101,13 @@ export function installTestApi(app: App): void {
     },
     select: (id) => app.select(id),
     ponytailStage: () => app.ponytailStage,
+    rayAt(x, y) {
+      const r = app.viewer.rayAt(x, y);
+      return {
+        origin: [r.origin.x, r.origin.y, r.origin.z],
+        direction: [r.direction.x, r.direction.y, r.direction.z],
+      };
+    },
+    ponytailSpine: () => app.ponytailSpine.map((p) => [...p] as Vec3),
   };
 }

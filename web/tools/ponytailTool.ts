@@ -65,6 +65,11 @@ export class PonytailTool implements Tool {
 
   constructor(private readonly ctx: PonytailContext) {}
 
+  /** The spine drawn so far (empty at stage 'spine'). */
+  get spinePoints(): readonly Vec3[] {
+    return this.spine;
+  }
+
   onPointerDown(p: ToolPointer): boolean {
     if (p.button !== 0) return false;
     const first = this.ctx.sample(p.x, p.y);
