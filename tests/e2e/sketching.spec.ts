@@ -351,3 +351,36 @@ test('a ponytail from four strokes gathers strands through its first cross-secti
   expect(through).toBeGreaterThan(20);
   expect(errors).toEqual([]);
 });
+
+test('Avoid scalp: afterwards no grown strand segment enters the head; undo restores', async ({
+  page,
+}) => {
+  const errors = watchConsole(page);
+  await page.goto(SCENE);
+  await settled(page);
+  const depth = 0.02; // world units (2 mm): the mesh the roots sit on vs the exact surface
+  const before = await page.evaluate((d) => window.hairsketch.segmentsInsideHead(d), depth);
+  expect(before.segments).toBeGreaterThan(1000);
+  const hashBefore = await page.evaluate(() => window.hairsketch.hairHash());
+  await page.getByRole('button', { name: 'Avoid scalp' }).click();
+  await page.waitForFunction(() => {
+    const s = window.hairsketch.session() as Session;
+    return !!s.avoid && s.avoid.index.length > 0;
+  });
+  await settled(page);
+  await expect(page.getByTestId('status')).toContainText('Avoid scalp');
+  const s = await session(page);
+  expect(s.avoid?.target.length).toBe(3 * (s.avoid?.index.length ?? 0));
+  const after = await page.evaluate((d) => window.hairsketch.segmentsInsideHead(d), depth);
+  console.log(JSON.stringify({ before, after }));
+  console.log(
+    `segments inside the head: before ${before.inside}/${before.segments} (deepest ${before.deepest.toFixed(3)}), after ${after.inside}/${after.segments} (deepest ${after.deepest.toFixed(3)})`,
+  );
+  expect(after.segments).toBeGreaterThan(1000);
+  expect(after.inside).toBe(0);
+  await page.getByRole('button', { name: 'Undo' }).click();
+  await page.waitForFunction(() => !(window.hairsketch.session() as Session).avoid);
+  await settled(page);
+  expect(await page.evaluate(() => window.hairsketch.hairHash())).toBe(hashBefore);
+  expect(errors).toEqual([]);
+});

@@ -181,6 +181,7 @@ describe('WorkerLogic', () => {
       band: 1.5,
       magnitude: 0.3,
       wholeHead: true,
+      insideToo: true,
     });
     await h.logic.handle(solve(8, 'full'));
     while (h.pendingYields() > 0) await h.release();

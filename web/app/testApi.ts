@@ -23,7 +23,15 @@ export interface HairsketchTestApi {
   strands(): { points: number[]; strandStart: number[] } | null;
   /** Displayed strand segments with a point (either end or the middle) deeper than `depth`
    *  world units inside the head (built-in head's signed distance), and the deepest value. */
-  segmentsInsideHead(depth: number): { inside: number; segments: number; deepest: number };
+  segmentsInsideHead(depth: number): {
+    inside: number;
+    segments: number;
+    deepest: number;
+    /** Of `inside`, segments that start at the strand's root. */
+    atRoot: number;
+    /** Deepest root (roots sit on the polygonised head, not the exact surface). */
+    deepestRoot: number;
+  };
   select(id: string | null): void;
   /** Which ponytail stroke the Ponytail tool expects next. */
   ponytailStage(): string;
@@ -81,10 +89,13 @@ export function installTestApi(app: App): void {
       let inside = 0;
       let segments = 0;
       let deepest = Number.POSITIVE_INFINITY;
-      if (!s) return { inside, segments, deepest };
+      let atRoot = 0;
+      let deepestRoot = Number.POSITIVE_INFINITY;
+      if (!s) return { inside, segments, deepest, atRoot, deepestRoot };
       const P = s.points;
       const sdf = (k: number) => headSdf(P[3 * k], P[3 * k + 1], P[3 * k + 2]);
       for (let i = 0; i + 1 < s.strandStart.length; i++) {
+        deepestRoot = Math.min(deepestRoot, sdf(s.strandStart[i]));
         for (let k = s.strandStart[i]; k + 1 < s.strandStart[i + 1]; k++) {
           segments++;
           const mid = headSdf(
@@ -94,10 +105,13 @@ export function installTestApi(app: App): void {
           );
           const d = Math.min(sdf(k), sdf(k + 1), mid);
           deepest = Math.min(deepest, d);
-          if (d < -depth) inside++;
+          if (d < -depth) {
+            inside++;
+            if (k === s.strandStart[i]) atRoot++;
+          }
         }
       }
-      return { inside, segments, deepest };
+      return { inside, segments, deepest, atRoot, deepestRoot };
     },
     select: (id) => app.select(id),
     ponytailStage: () => app.ponytailStage,

@@ -31,7 +31,12 @@ export interface SolverEngine {
   field(): FieldArrays;
   stats(): Omit<SolveStats, 'growMs' | 'errorEstimate' | 'heapBytes'>;
   /** Scalp-avoidance constraints (S4.7) from the current field; optional (test fakes). */
-  scalpAvoidance?(opts: { band?: number; magnitude?: number; wholeHead?: boolean }): {
+  scalpAvoidance?(opts: {
+    band?: number;
+    magnitude?: number;
+    wholeHead?: boolean;
+    insideToo?: boolean;
+  }): {
     index: Int32Array;
     target: Float64Array;
   };

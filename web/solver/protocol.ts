@@ -119,6 +119,9 @@ export type ToWorker =
       band: number; // grid steps from the head surface
       magnitude: number; // target length (paper: 0.3)
       wholeHead: boolean; // measure against every head triangle, not only the scalp
+      /** Also grid points inside the head within the band: growth interpolates them just
+       *  outside the surface. */
+      insideToo: boolean;
     };
 
 export type FromWorker =

@@ -127,6 +127,7 @@ export class SolverClient {
       band,
       magnitude,
       wholeHead: true,
+      insideToo: true,
     };
     return new Promise((resolve, reject) => {
       this.avoidWaiting.set(msg.id, { msg, resolve, reject });

@@ -112,6 +112,7 @@ export class WorkerLogic {
       band: job.band,
       magnitude: job.magnitude,
       wholeHead: job.wholeHead,
+      insideToo: job.insideToo,
     });
     this.post({ type: 'avoidance', id: job.id, index: r.index, target: r.target });
   }
