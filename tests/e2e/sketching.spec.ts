@@ -384,3 +384,29 @@ test('Avoid scalp: afterwards no grown strand segment enters the head; undo rest
   expect(await page.evaluate(() => window.hairsketch.hairHash())).toBe(hashBefore);
   expect(errors).toEqual([]);
 });
+
+for (const [name, want] of [
+  ['fig6', { stream: 10, dividing: 0, ponytail: 0 }],
+  ['fig7', { stream: 7, dividing: 1, ponytail: 0 }],
+  ['fig8', { stream: 4, dividing: 0, ponytail: 2 }],
+  ['fig1', { stream: 11, dividing: 4, ponytail: 1 }],
+] as const) {
+  test(`preset ${name} loads to ready with hair and the figure's curves`, async ({ page }) => {
+    const errors = watchConsole(page);
+    await page.goto(`${SCENE}&preset=${name}`);
+    await settled(page);
+    const strands = await page
+      .getByTestId('status')
+      .evaluate((el: HTMLElement) => Number(el.dataset.strands));
+    expect(strands).toBeGreaterThan(500);
+    const s = await session(page);
+    const count = (t: string) => s.curves.filter((c) => c.type === t).length;
+    expect({
+      stream: count('stream'),
+      dividing: count('dividing'),
+      ponytail: count('ponytail'),
+    }).toEqual(want);
+    if (process.env.SHOTS) await page.screenshot({ path: `/tmp/preset-${name}.png` });
+    expect(errors).toEqual([]);
+  });
+}

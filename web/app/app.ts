@@ -92,6 +92,7 @@ export class App {
     const growth = { ...DEFAULT_GROWTH, maxStrands: opts.maxStrands };
     const session = applyPreset(emptySession(opts.grid, growth), opts.preset, {
       headPoint: (t, p) => this.picker.scalpPoint(t, p)?.point ?? null,
+      normalAt: headNormal,
       center: head.center,
       step: grid.step,
       viewpoint: this.viewer.cameraState(),
