@@ -211,12 +211,12 @@ const FIG7_PARTING: [number, number][] = [
 ];
 const FIG7_SWEEPS: SweepSpec[] = [
   // toward the left side, away from the parting
-  { theta: [42, 92], phi: [40, 95], lift: 0.1, fall: 0.35 },
-  { theta: [25, 96], phi: [48, 130], lift: 0.1, fall: 0.4 },
-  // across the top to the right side
-  { theta: [45, 85], phi: [22, -40], lift: 0.12, fall: 0.35 },
-  { theta: [32, 94], phi: [22, -85], lift: 0.12, fall: 0.4 },
-  { theta: [20, 98], phi: [25, -130], lift: 0.12, fall: 0.45 },
+  { theta: [42, 80], phi: [42, 100], lift: 0.1, fall: 0.35 },
+  { theta: [25, 95], phi: [50, 135], lift: 0.1, fall: 0.4 },
+  // across the top to the right side (a side-swept fringe)
+  { theta: [48, 70], phi: [20, -65], lift: 0.12, fall: 0.35 },
+  { theta: [32, 90], phi: [22, -100], lift: 0.12, fall: 0.4 },
+  { theta: [20, 100], phi: [25, -135], lift: 0.12, fall: 0.45 },
   // the back
   { theta: [12, 110], phi: [170, 178], lift: 0.1, fall: 0.45 },
   { theta: [12, 110], phi: [-160, -175], lift: 0.1, fall: 0.45 },
@@ -229,8 +229,8 @@ const FIG8_PONYTAILS: PonytailSpec[] = [
   { base: [72, -115], out: 0.28, fall: 1.7, gather: 0.12, width: 0.26 },
 ];
 const FIG8_SWEEPS: SweepSpec[] = [
-  { theta: [40, 70], phi: [8, 95], lift: 0.08, fall: 0.15 },
-  { theta: [40, 70], phi: [-8, -95], lift: 0.08, fall: 0.15 },
+  { theta: [40, 68], phi: [8, 100], lift: 0.08, fall: 0.15 },
+  { theta: [40, 68], phi: [-8, -100], lift: 0.08, fall: 0.15 },
   { theta: [12, 68], phi: [150, 125], lift: 0.08, fall: 0.15 },
   { theta: [12, 68], phi: [-150, -125], lift: 0.08, fall: 0.15 },
 ];
@@ -247,35 +247,35 @@ const FIG1_PONYTAIL: PonytailSpec = {
 };
 const FIG1_PARTINGS: [number, number][][] = [
   [
-    [62, 0],
-    [45, 0],
-    [30, 0],
+    [54, 0],
+    [40, 0],
+    [25, 0],
   ],
   [
-    [74, 50],
-    [48, 80],
+    [64, 55],
+    [40, 85],
   ],
   [
-    [74, -50],
-    [48, -80],
+    [64, -55],
+    [40, -85],
   ],
   [
-    [118, 150],
-    [118, 210],
+    [100, 150],
+    [100, 210],
   ],
 ];
 const FIG1_SWEEPS: SweepSpec[] = [
   { theta: [35, 50], phi: [10, 150], lift: 0.08, fall: 0 },
   { theta: [35, 50], phi: [-10, -150], lift: 0.08, fall: 0 },
-  { theta: [55, 60], phi: [20, 140], lift: 0.08, fall: 0 },
-  { theta: [55, 60], phi: [-20, -140], lift: 0.08, fall: 0 },
+  { theta: [52, 62], phi: [20, 140], lift: 0.08, fall: 0 },
+  { theta: [52, 62], phi: [-20, -140], lift: 0.08, fall: 0 },
   { theta: [15, 45], phi: [60, 165], lift: 0.08, fall: 0 },
   { theta: [15, 45], phi: [-60, -165], lift: 0.08, fall: 0 },
   { theta: [80, 100], phi: [85, 95], lift: 0.1, fall: 0.9 },
   { theta: [80, 100], phi: [-85, -95], lift: 0.1, fall: 0.9 },
-  { theta: [70, 92], phi: [40, 55], lift: 0.1, fall: 0.7 },
-  { theta: [70, 92], phi: [-40, -55], lift: 0.1, fall: 0.7 },
-  { theta: [122, 128], phi: [178, 179], lift: 0.06, fall: 0.5 },
+  { theta: [60, 82], phi: [50, 66], lift: 0.1, fall: 0.7 },
+  { theta: [60, 82], phi: [-50, -66], lift: 0.1, fall: 0.7 },
+  { theta: [104, 118], phi: [178, 179], lift: 0.06, fall: 0.5 },
 ];
 
 export function presetCurves(name: PresetName, ctx: PresetContext): StyleCurve[] {
