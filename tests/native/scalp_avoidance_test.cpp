@@ -95,7 +95,9 @@ TEST(ScalpAvoidance, NoInwardDirectionNearASphereScalp) {
     const Eigen::Vector3d q = pos(g, c.index);
     if (q.norm() < 0.99) ++under;
     EXPECT_GT(q.norm(), 1.0 - 1.5 * g.step - 0.02);
-    EXPECT_GE(c.target.normalized().dot(q.normalized()), -0.02) << "at " << q.transpose();
+    // against the true sphere normal: the faceted mesh's normal at the nearest point differs a
+    // little more from the radial direction of a point inside, hence 0.03
+    EXPECT_GE(c.target.normalized().dot(q.normalized()), -0.03) << "at " << q.transpose();
   }
   EXPECT_GT(under, 50);
   // A zero field has no direction to keep: every near point is skipped, nothing returned.
