@@ -256,6 +256,54 @@ test('a dividing curve parts the hair: roots on its two sides grow to opposite s
   if (!result) return;
   expect(result.agree).toBeGreaterThan(10);
   expect(result.agree).toBeGreaterThan(6 * result.disagree);
+
+  // a tilt hint: a stroke starting just beside the selected curve, leaving it at a slant
+  {
+    const i = Math.round(c.points.length * 0.25);
+    const f = await screenFrame(page, c, i);
+    const from = { x: f.p.x + 10 * f.n.x, y: f.p.y + 10 * f.n.y };
+    const to = {
+      x: from.x + 50 * f.n.x + 40 * f.t.x,
+      y: from.y + 50 * f.n.y + 40 * f.t.y,
+    };
+    await drag(page, lerp2(from, to, 12));
+    await page.waitForFunction(() => {
+      const d = (window.hairsketch.session() as Session).curves[0];
+      return d.alpha0 !== 0;
+    });
+    await settled(page);
+    await expect(page.getByTestId('status')).toContainText('Tilt: alpha0');
+    expect((await session(page)).curves).toHaveLength(1); // no new curve
+  }
+  // the parameter panel edits σ; undo restores it
+  await page.getByLabel('σ (grid steps)').fill('1.5');
+  await page.getByLabel('σ (grid steps)').press('Enter');
+  await page.waitForFunction(
+    () => (window.hairsketch.session() as Session).curves[0].sigma === 1.5,
+  );
+  await settled(page);
+  await page.getByRole('button', { name: 'Undo' }).click();
+  await page.waitForFunction(() => (window.hairsketch.session() as Session).curves[0].sigma === 1);
+  // Set viewpoint stores the current camera in the selected curve (undoable)
+  const vp0 = JSON.stringify((await session(page)).curves[0].viewpoint);
+  const box = await page.getByTestId('viewport').boundingBox();
+  if (!box) throw new Error('no viewport');
+  await drag(
+    page,
+    lerp2({ x: box.x + 60, y: box.y + 300 }, { x: box.x + 160, y: box.y + 300 }, 8),
+    'right',
+  );
+  await page.getByRole('button', { name: 'Set viewpoint' }).click();
+  await page.waitForFunction(
+    (v) => JSON.stringify((window.hairsketch.session() as Session).curves[0].viewpoint) !== v,
+    vp0,
+  );
+  await page.getByRole('button', { name: 'Undo' }).click();
+  await page.waitForFunction(
+    (v) => JSON.stringify((window.hairsketch.session() as Session).curves[0].viewpoint) === v,
+    vp0,
+  );
+  await settled(page);
   expect(errors).toEqual([]);
 });
 
