@@ -55,7 +55,7 @@ describe('presets', () => {
           expect(c.circles.length).toBeGreaterThan(2);
           // gathered at C1, wider below
           const r = c.circles.map((k) => k.radius);
-          expect(Math.max(...r)).toBeGreaterThan(1.5 * r[0]);
+          expect(Math.max(...r)).toBeGreaterThan(1.2 * r[0]);
         }
       }
       const set = packCurves(curves);

@@ -144,7 +144,7 @@ function ponytailFrom(ctx: PresetContext, spec: PonytailSpec, id: string): Ponyt
   let p = root;
   const ds = ctx.step / 4;
   for (let len = 0; len < spec.out + spec.fall; len += ds) {
-    if (len > spec.out) dir = normalize(add(dir, [0, -0.04, 0]));
+    if (len > spec.out) dir = normalize(add(dir, [0, -0.1, 0]));
     p = add(p, scale(dir, ds));
     dense.push(p);
   }
@@ -225,14 +225,16 @@ const FIG7_SWEEPS: SweepSpec[] = [
 // fig8: two ponytails (left and right, behind the ears) and four stream curves combing the hair
 // from a centre parting toward them.
 const FIG8_PONYTAILS: PonytailSpec[] = [
-  { base: [72, 115], out: 0.28, fall: 1.7, gather: 0.12, width: 0.26 },
-  { base: [72, -115], out: 0.28, fall: 1.7, gather: 0.12, width: 0.26 },
+  { base: [74, 115], out: 0.3, fall: 1.6, gather: 0.2, width: 0.3 },
+  { base: [74, -115], out: 0.3, fall: 1.6, gather: 0.2, width: 0.3 },
 ];
 const FIG8_SWEEPS: SweepSpec[] = [
-  { theta: [40, 68], phi: [8, 100], lift: 0.08, fall: 0.15 },
-  { theta: [40, 68], phi: [-8, -100], lift: 0.08, fall: 0.15 },
-  { theta: [12, 68], phi: [150, 125], lift: 0.08, fall: 0.15 },
-  { theta: [12, 68], phi: [-150, -125], lift: 0.08, fall: 0.15 },
+  // from the forehead over the top, down to each ponytail
+  { theta: [25, 68], phi: [6, 108], lift: 0.06, fall: 0 },
+  { theta: [25, 68], phi: [-6, -108], lift: 0.06, fall: 0 },
+  // from the nape up to each ponytail
+  { theta: [112, 80], phi: [176, 124], lift: 0.06, fall: 0 },
+  { theta: [112, 80], phi: [-176, -124], lift: 0.06, fall: 0 },
 ];
 
 // fig1: a high ponytail at the back of the crown, a centre parting from the forehead, two side
