@@ -6,6 +6,7 @@ import { headSdf } from '../head/headSdf';
 import { packCurves } from '../model/curveSet';
 import { gridForPreset } from '../model/grid';
 import { History } from '../model/history';
+import { ponytailCircles } from '../model/ponytailGeometry';
 import { applyPreset } from '../model/presets';
 import {
   addCurve,
@@ -257,6 +258,23 @@ export class App {
       return;
     }
     const points = r.points;
+    if (c.type === 'ponytail') {
+      // the circles follow the edited spine, between the profiles as drawn
+      const { circles } = ponytailCircles(points, c.crossSection, c.profiles[0], c.profiles[1], {
+        every: 2,
+      });
+      if (circles.length === 0) {
+        this.notify(
+          `Hint: ${r.op.kind} would leave the ponytail without circles — nothing changed.`,
+        );
+        return;
+      }
+      this.edit(
+        updateCurve(this.history.current, c.id, () => ({ ...c, points, circles })),
+        `Hint: ${r.op.kind} — ponytail ${c.id} spine now has ${points.length} points.`,
+      );
+      return;
+    }
     this.edit(
       updateCurve(this.history.current, c.id, (x) => ({ ...x, points }) as StyleCurve),
       `Hint: ${r.op.kind} — ${c.id} now has ${points.length} points.`,
