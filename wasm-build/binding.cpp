@@ -144,14 +144,16 @@ EMSCRIPTEN_KEEPALIVE int hs_engine_set_curves(EngineHandle* h, const double* poi
 
 // Scalp avoidance (S4.7) on the last solved field: fills the handle's avoidance arrays (read
 // with hs_engine_avoid_index / hs_engine_avoid_target) and returns 0 / 1 as usual; the count
-// is hs_engine_avoid_count. wholeHead: 0 = scalp triangles only.
+// is hs_engine_avoid_count. flags: bit 0 = measure against the whole head (else the scalp
+// triangles only), bit 1 = also grid points inside the head within the band.
 EMSCRIPTEN_KEEPALIVE int hs_engine_scalp_avoidance(EngineHandle* h, double band, double magnitude,
-                                                   int wholeHead) {
+                                                   int flags) {
   if (!h) return fail("no engine");
   ScalpAvoidanceParams p;
   p.band = band;
   p.magnitude = magnitude;
-  p.wholeHead = wholeHead != 0;
+  p.wholeHead = (flags & 1) != 0;
+  p.insideToo = (flags & 2) != 0;
   ConstraintSet out;
   h->avoidIndex.clear();
   h->avoidTarget.clear();

@@ -27,7 +27,7 @@ export interface HairSolverModule {
     kinds: number, extend: number, params: number, paramCount: number, paramStart: number,
     extraIndex: number, extraTarget: number, extraCount: number,
   ): number;
-  _hs_engine_scalp_avoidance(h: number, band: number, magnitude: number, wholeHead: number): number;
+  _hs_engine_scalp_avoidance(h: number, band: number, magnitude: number, flags: number): number;
   _hs_engine_avoid_count(h: number): number;
   _hs_engine_avoid_index(h: number): number;
   _hs_engine_avoid_target(h: number): number;

@@ -123,7 +123,7 @@ Status scalpAvoidanceConstraints(const Grid& g, const Field& T, const HeadMeshVi
     nrm.normalize();
     const int i = int(idx % size_t(g.nx)), j = int((idx / size_t(g.nx)) % size_t(g.ny)),
               k = int(idx / (size_t(g.nx) * size_t(g.ny)));
-    if ((g.position(i, j, k) - q).dot(nrm) < 0) continue;  // inside the head
+    if (!prm.insideToo && (g.position(i, j, k) - q).dot(nrm) < 0) continue;  // inside
     if (stats) ++stats->nearPoints;
     V3 v = T.row(Eigen::Index(idx)).transpose();
     if (!v.allFinite()) continue;

@@ -5,7 +5,9 @@
 //     n   = the outward normal at q: the vertex normals (area-weighted face normals of all head
 //           triangles, counter-clockwise = outward as in three.js) interpolated by q's
 //           barycentric coordinates, normalised (the face normal if that is zero),
-//     g is outside when (g - q) . n >= 0; points inside the head are left alone;
+//     g is outside when (g - q) . n >= 0; points inside the head are left alone unless
+//     insideToo is set (then they are treated alike: trilinear growth just outside the surface
+//     blends them in, so an inward vector there can pull a strand into the head);
 //     v   = the current field at g; if v . n < 0 (pointing inwards) v is replaced by its
 //           projection v - (v . n) n onto the tangent plane at q;
 //     the constraint is magnitude * v / |v| (magnitude 0.3).
@@ -40,6 +42,7 @@ struct ScalpAvoidanceParams {
   double band = 1.5;       // grid steps: how near the scalp a grid point must be
   double magnitude = 0.3;  // target length of every returned constraint
   bool wholeHead = false;  // measure against every head triangle, not only the scalp ones
+  bool insideToo = false;  // also grid points inside the head within the band
 };
 
 struct ScalpAvoidanceStats {

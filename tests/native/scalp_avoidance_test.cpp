@@ -85,6 +85,21 @@ TEST(ScalpAvoidance, NoInwardDirectionNearASphereScalp) {
     const Eigen::Vector3d q = pos(g, c.index);
     EXPECT_GE(c.target.normalized().dot(q.normalized()), -0.02) << "at " << q.transpose();
   }
+  // insideToo: grid points inside the head within the band are constrained as well, and none
+  // of them points inward either.
+  ScalpAvoidanceParams inside = whole;
+  inside.insideToo = true;
+  ASSERT_TRUE(scalpAvoidanceConstraints(g, T, view(head), inside, out, &st).ok());
+  int under = 0;
+  for (const Constraint& c : out) {
+    const Eigen::Vector3d q = pos(g, c.index);
+    if (q.norm() < 0.99) ++under;
+    EXPECT_GT(q.norm(), 1.0 - 1.5 * g.step - 0.02);
+    // against the true sphere normal: the faceted mesh's normal at the nearest point differs a
+    // little more from the radial direction of a point inside, hence 0.03
+    EXPECT_GE(c.target.normalized().dot(q.normalized()), -0.03) << "at " << q.transpose();
+  }
+  EXPECT_GT(under, 50);
   // A zero field has no direction to keep: every near point is skipped, nothing returned.
   T.setZero();
   ASSERT_TRUE(scalpAvoidanceConstraints(g, T, view(head), {}, out, &st).ok());

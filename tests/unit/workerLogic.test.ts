@@ -49,6 +49,10 @@ function scriptedEngine(log: string[], colours = new Uint8Array([0, 1, 3])): Sol
       solveMs: 0,
     }),
     heapBytes: () => 1 << 20,
+    scalpAvoidance: (o) => {
+      log.push(`avoid:${it}:${o.band}:${o.magnitude}:${o.wholeHead}`);
+      return { index: new Int32Array([4]), target: new Float64Array([0, 0.3, 0]) };
+    },
     dispose: () => {},
   };
 }
@@ -191,6 +195,37 @@ describe('WorkerLogic', () => {
     const h = harness();
     await h.logic.handle(solve(5, 'full'));
     expect(h.posted).toEqual([{ type: 'error', id: 5, message: 'Solver is not initialised' }]);
+  });
+
+  it('answers scalp avoidance on the converged field, ahead of a waiting solve', async () => {
+    const h = harness();
+    await h.logic.handle(init);
+    const done = h.logic.handle({
+      type: 'avoidScalp',
+      id: 7,
+      curves: packCurves([]),
+      band: 1.5,
+      magnitude: 0.3,
+      wholeHead: true,
+      insideToo: true,
+    });
+    await h.logic.handle(solve(8, 'full'));
+    while (h.pendingYields() > 0) await h.release();
+    await done;
+    // converged (error 1e-6 after 6 iterations) before the constraints are derived
+    expect(h.log).toContain('avoid:6:1.5:0.3:true');
+    const answer = h.posted.find((m) => m.type === 'avoidance');
+    expect(answer).toEqual({
+      type: 'avoidance',
+      id: 7,
+      index: new Int32Array([4]),
+      target: new Float64Array([0, 0.3, 0]),
+    });
+    // then the solve that was waiting
+    expect(h.results().map((r) => [r.id, r.final])).toEqual([
+      [8, false],
+      [8, true],
+    ]);
   });
 });
 

@@ -2,26 +2,36 @@
 // pointer -> tool -> session model -> solver client (worker) -> typed arrays -> viewer.
 import * as THREE from 'three';
 import { buildHead } from '../head/buildHead';
+import { headSdf } from '../head/headSdf';
 import { packCurves } from '../model/curveSet';
 import { gridForPreset } from '../model/grid';
 import { History } from '../model/history';
+import { ponytailCircles } from '../model/ponytailGeometry';
 import { applyPreset } from '../model/presets';
 import {
   addCurve,
   DEFAULT_GROWTH,
+  DEFAULT_TIGHTNESS,
   deleteCurve,
   emptySession,
+  findCurve,
   nextCurveId,
   type SessionState,
+  type StyleCurve,
+  setAvoid,
+  updateCurve,
 } from '../model/session';
-import type { SurfaceMode } from '../model/supportingSurface';
-import { buildSupportingSurface } from '../model/supportingSurface';
-import { sub, type Vec3 } from '../model/vec3';
+import { buildSupportingSurface, type SupportingSurface } from '../model/supportingSurface';
+import { normalize, sub, type Vec3 } from '../model/vec3';
 import type { GridSpec } from '../solver/protocol';
 import { type SolveResult, SolverClient } from '../solver/solverClient';
+import { DividingCurveTool } from '../tools/dividingCurveTool';
+import type { HintResult } from '../tools/hintStroke';
+import { PONYTAIL_STAGE_HINT, type PonytailDraft, PonytailTool } from '../tools/ponytailTool';
 import { SelectTool } from '../tools/selectTool';
 import { StreamCurveTool } from '../tools/streamCurveTool';
 import type { Tool } from '../tools/tool';
+import { buildCurvePanel, type CurvePanel, type CurvePatch } from '../ui/curvePanel';
 import {
   buildDisplayToggles,
   DEFAULT_DISPLAY,
@@ -30,7 +40,7 @@ import {
   type DisplayToggles,
 } from '../ui/displayToggles';
 import { StatusLine } from '../ui/status';
-import { buildToolbar } from '../ui/toolbar';
+import { buildToolbar, type ToolName } from '../ui/toolbar';
 import { BoundingVolumeView } from '../viewer/boundingVolume';
 import { ConstraintPointsView } from '../viewer/constraintPoints';
 import { FieldGlyphsView } from '../viewer/fieldGlyphs';
@@ -51,6 +61,8 @@ import { parseUrlOptions } from './urlOptions';
  *  sample (a slow GPU), never fewer than the minimum. */
 const PREVIEW_STRANDS = 6000;
 const MIN_PREVIEW_STRANDS = 800;
+/** Half width of a stream curve's supporting surface, in grid steps. */
+const SURFACE_HALF_WIDTH = 6;
 
 export class App {
   readonly viewer: Viewer;
@@ -61,8 +73,15 @@ export class App {
   readonly step: number;
   selectedId: string | null = null;
   private tool: Tool;
-  private readonly tools: Record<'stream' | 'select', Tool>;
+  private readonly tools: Record<ToolName, Tool>;
+  private readonly ponytailTool: PonytailTool;
   private readonly toolbar;
+  private readonly panel: CurvePanel;
+  /** Construction lines of the ponytail being built. */
+  private toolGuides: Vec3[][] = [];
+  private surfaceCache: { curve: StyleCurve; surface: SupportingSurface } | null = null;
+  /** An "Avoid scalp" request is being answered. */
+  private avoiding = false;
   private shownStrands: SolveResult['strands'] | null = null;
   private strandMaterial: StrandMaterial | null = null;
   private lastMessage = '';
@@ -86,23 +105,59 @@ export class App {
     const growth = { ...DEFAULT_GROWTH, maxStrands: opts.maxStrands };
     const session = applyPreset(emptySession(opts.grid, growth), opts.preset, {
       headPoint: (t, p) => this.picker.scalpPoint(t, p)?.point ?? null,
+      normalAt: headNormal,
       center: head.center,
       step: grid.step,
       viewpoint: this.viewer.cameraState(),
     });
     this.history = new History(session);
 
+    const sample = (x: number, y: number) => {
+      const ray = this.viewer.rayAt(x, y);
+      const hit = this.picker.first(ray);
+      return {
+        origin: [ray.origin.x, ray.origin.y, ray.origin.z] as Vec3,
+        direction: [ray.direction.x, ray.direction.y, ray.direction.z] as Vec3,
+        scalpHit: hit?.scalp ? hit.point : null,
+        headDistance: hit ? hit.distance : null,
+      };
+    };
+    this.ponytailTool = new PonytailTool({
+      sample,
+      eye: () => this.viewer.eye(),
+      forward: () => this.viewer.viewForward(),
+      step: () => this.step,
+      showDraft: (pts) => this.viewer.setDraft(pts),
+      showGuides: (lines) => {
+        this.toolGuides = lines.map((l) => l.slice());
+        this.syncGuides();
+      },
+      commit: (p) => this.commitPonytail(p),
+      notify: (m) => this.notify(m),
+      stageChanged: (stage) => {
+        if (this.tool === this.ponytailTool) this.status.hint(PONYTAIL_STAGE_HINT[stage]);
+        this.notify(PONYTAIL_STAGE_HINT[stage]);
+      },
+    });
     this.tools = {
-      stream: new StreamCurveTool({
-        sample: (x, y) => {
-          const ray = this.viewer.rayAt(x, y);
-          const hit = this.picker.first(ray);
-          return {
-            origin: [ray.origin.x, ray.origin.y, ray.origin.z],
-            direction: [ray.direction.x, ray.direction.y, ray.direction.z],
-            scalpHit: hit?.scalp ? hit.point : null,
-          };
+      dividing: new DividingCurveTool({
+        sample,
+        step: () => this.step,
+        selected: () => {
+          const c = findCurve(this.history.current, this.selectedId);
+          return c?.type === 'dividing' ? c : null;
         },
+        normalsAt: (pts) => pts.map(headNormal),
+        showDraft: (pts) => this.viewer.setDraft(pts),
+        commit: (points, normals) => this.commitDividing(points, normals),
+        setTilt: (end, alpha, side) => this.setTilt(end, alpha, side),
+        notify: (m) => this.notify(m),
+      }),
+      ponytail: this.ponytailTool,
+      stream: new StreamCurveTool({
+        sample,
+        hintTarget: () => this.hintTarget(),
+        applyHint: (r) => this.applyHint(r),
         eye: () => this.viewer.eye(),
         forward: () => this.viewer.viewForward(),
         step: () => this.step,
@@ -126,7 +181,13 @@ export class App {
       redo: () => this.redo(),
       deleteSelected: () => this.deleteSelected(),
       hairColor: (css) => this.setHairColor(css),
+      avoidScalp: () => void this.avoidScalp(),
+      setViewpoint: () => this.setViewpoint(),
+      surfaceMode: () => this.toggleSurfaceMode(),
     });
+    this.panel = buildCurvePanel(document.getElementById('stage') as HTMLElement, (id, patch) =>
+      this.patchCurve(id, patch),
+    );
     this.toolbar.setHairColor(session.hairColor);
     this.initDisplays(document.getElementById('toolbar') as HTMLElement, grid);
     this.bindInput();
@@ -167,6 +228,177 @@ export class App {
   }
 
   // ---- edits -------------------------------------------------------------------------------
+
+  /** Records an edit of the session (undoable) and re-solves. */
+  private edit(next: SessionState, message: string): void {
+    if (next === this.history.current) return;
+    this.history.push(next);
+    this.notify(message);
+    this.syncSession();
+  }
+
+  private selected(): StyleCurve | null {
+    return findCurve(this.history.current, this.selectedId);
+  }
+
+  /** The selected stream curve's supporting surface (cached per curve object). */
+  private surfaceOf(c: StyleCurve): SupportingSurface {
+    if (this.surfaceCache?.curve !== c) {
+      const mode = c.type === 'stream' ? (c.surfaceMode ?? 'ruled') : 'ruled';
+      this.surfaceCache = {
+        curve: c,
+        surface: buildSupportingSurface(
+          c.points,
+          c.viewpoint.position,
+          mode,
+          SURFACE_HALF_WIDTH * this.step,
+        ),
+      };
+    }
+    return this.surfaceCache.surface;
+  }
+
+  private hintTarget(): { points: readonly Vec3[]; surface: SupportingSurface } | null {
+    const c = this.selected();
+    if (!c || c.type === 'dividing' || c.points.length < 2) return null;
+    return { points: c.points, surface: this.surfaceOf(c) };
+  }
+
+  private applyHint(r: HintResult): void {
+    const c = this.selected();
+    if (!c) return;
+    if (r.op.kind === 'none') {
+      this.notify(`Hint: no operation (${r.op.reason}) — nothing changed.`);
+      return;
+    }
+    const points = r.points;
+    if (c.type === 'ponytail') {
+      // the circles follow the edited spine, between the profiles as drawn
+      const { circles } = ponytailCircles(points, c.crossSection, c.profiles[0], c.profiles[1], {
+        every: 2,
+      });
+      if (circles.length === 0) {
+        this.notify(
+          `Hint: ${r.op.kind} would leave the ponytail without circles — nothing changed.`,
+        );
+        return;
+      }
+      this.edit(
+        updateCurve(this.history.current, c.id, () => ({ ...c, points, circles })),
+        `Hint: ${r.op.kind} — ponytail ${c.id} spine now has ${points.length} points.`,
+      );
+      return;
+    }
+    this.edit(
+      updateCurve(this.history.current, c.id, (x) => ({ ...x, points }) as StyleCurve),
+      `Hint: ${r.op.kind} — ${c.id} now has ${points.length} points.`,
+    );
+  }
+
+  private commitDividing(points: Vec3[], normals: Vec3[]): void {
+    const s = this.history.current;
+    const id = nextCurveId(s);
+    const { position, target } = this.viewer.cameraState();
+    this.history.push(
+      addCurve(s, {
+        id,
+        type: 'dividing',
+        points,
+        normals,
+        sigma: 1,
+        h: 0.5,
+        alpha0: 0,
+        alpha1: 0,
+        viewpoint: { position, target },
+      }),
+    );
+    this.selectedId = id;
+    this.notify(`Added dividing curve ${id} (${points.length - 1} segments).`);
+    this.syncSession();
+  }
+
+  private setTilt(end: 'alpha0' | 'alpha1', alpha: number, side: 1 | -1): void {
+    const c = this.selected();
+    if (c?.type !== 'dividing') return;
+    const deg = Math.round((alpha * 180) / Math.PI);
+    this.edit(
+      updateCurve(this.history.current, c.id, (x) => ({ ...x, [end]: alpha }) as StyleCurve),
+      `Tilt: ${end} of ${c.id} = ${deg}° (stroke on the ${side > 0 ? '+x' : '−x'} side).`,
+    );
+  }
+
+  private commitPonytail(p: PonytailDraft): void {
+    const s = this.history.current;
+    const id = nextCurveId(s);
+    const { position, target } = this.viewer.cameraState();
+    this.history.push(
+      addCurve(s, {
+        id,
+        type: 'ponytail',
+        points: p.spine,
+        extend: true,
+        viewpoint: { position, target },
+        crossSection: p.crossSection,
+        profiles: p.profiles,
+        circles: p.circles,
+        tightness: DEFAULT_TIGHTNESS,
+      }),
+    );
+    this.selectedId = id;
+    this.notify(`Added ponytail ${id} (${p.circles.length} circles).`);
+    this.syncSession();
+  }
+
+  setViewpoint(): void {
+    const c = this.selected();
+    if (!c) return;
+    const { position, target } = this.viewer.cameraState();
+    this.edit(
+      updateCurve(this.history.current, c.id, (x) => ({ ...x, viewpoint: { position, target } })),
+      `Viewpoint of ${c.id} set to the current view.`,
+    );
+  }
+
+  toggleSurfaceMode(): void {
+    const c = this.selected();
+    if (c?.type !== 'stream') return;
+    const mode = (c.surfaceMode ?? 'ruled') === 'ruled' ? 'strip' : 'ruled';
+    this.edit(
+      updateCurve(this.history.current, c.id, (x) => ({ ...x, surfaceMode: mode }) as StyleCurve),
+      `Supporting surface of ${c.id}: ${mode}.`,
+    );
+  }
+
+  private patchCurve(id: string, patch: CurvePatch): void {
+    this.edit(
+      updateCurve(this.history.current, id, (x) => ({ ...x, ...patch }) as StyleCurve),
+      `Changed ${Object.keys(patch).join(', ')} of ${id}.`,
+    );
+  }
+
+  /** S4.7: constraints near the head from the converged field of the current curves, stored in
+   *  the session (undoable), then the hair is solved again with them. */
+  async avoidScalp(): Promise<void> {
+    if (this.avoiding) return;
+    this.avoiding = true;
+    this.refreshToolbar();
+    this.status.set('solving', 'Avoid scalp: solving the field…');
+    try {
+      const r = await this.client.avoidScalp(packCurves(this.history.current.curves));
+      this.history.push(
+        setAvoid(this.history.current, {
+          index: Array.from(r.index),
+          target: Array.from(r.target),
+        }),
+      );
+      this.notify(`Avoid scalp: ${r.index.length} constraints near the head.`);
+    } catch (e) {
+      this.notify(`Avoid scalp failed: ${e instanceof Error ? e.message : String(e)}`);
+    } finally {
+      this.avoiding = false;
+      this.syncSession();
+    }
+  }
 
   private commitStreamCurve(points: Vec3[]): void {
     this.previewing = false;
@@ -210,7 +442,11 @@ export class App {
       ),
     );
     const maxStrands = s.growth.maxStrands > 0 ? Math.min(s.growth.maxStrands, cap) : cap;
-    this.client.request(packCurves([...s.curves, draft]), { ...s.growth, maxStrands }, 'preview');
+    this.client.request(
+      packCurves([...s.curves, draft], s.avoid ?? null),
+      { ...s.growth, maxStrands },
+      'preview',
+    );
   }
 
   /** Test hook: the session from another page's session() replaces this one (undoable). */
@@ -248,19 +484,28 @@ export class App {
     this.refreshToolbar();
   }
 
+  /** Which ponytail stroke comes next (test API). */
+  get ponytailStage(): string {
+    return this.ponytailTool.stage;
+  }
+
+  get ponytailSpine(): readonly Vec3[] {
+    return this.ponytailTool.spinePoints;
+  }
+
   setHairColor(css: string): void {
     this.history.push({ ...this.history.current, hairColor: css });
     this.applyHairColor();
     this.refreshToolbar();
   }
 
-  setTool(name: 'stream' | 'select'): void {
+  setTool(name: ToolName): void {
     this.tool.onCancel();
     this.tool = this.tools[name];
     this.toolbar.setTool(name);
     const c = this.viewer.controls;
     // Drawing takes the primary button; the camera orbits with the right button then.
-    if (name === 'stream') {
+    if (name !== 'select') {
       c.mouseButtons = {
         LEFT: -1 as THREE.MOUSE,
         MIDDLE: THREE.MOUSE.PAN,
@@ -268,7 +513,11 @@ export class App {
       };
       c.touches = { ONE: -1 as THREE.TOUCH, TWO: THREE.TOUCH.DOLLY_ROTATE };
       this.status.hint(
-        'Drag from the scalp to draw a stream curve · right-drag orbits · wheel zooms · middle-drag pans',
+        name === 'stream'
+          ? 'Drag from the scalp to draw a stream curve · on the selected curve’s supporting surface a stroke cuts, extends or re-routes it · right-drag orbits · wheel zooms'
+          : name === 'dividing'
+            ? 'Drag on the scalp to draw a parting · a stroke starting beside the selected one tilts that side · right-drag orbits'
+            : PONYTAIL_STAGE_HINT[this.ponytailTool.stage],
       );
     } else {
       c.mouseButtons = {
@@ -298,19 +547,35 @@ export class App {
     this.syncCurvesView();
     this.refreshToolbar();
     this.viewer.hold('settling', true); // until the final hair is shown (cached: at once)
-    this.client.request(packCurves(s.curves), s.growth);
+    this.client.request(packCurves(s.curves, s.avoid ?? null), s.growth);
   }
 
   private syncCurvesView(): void {
     this.viewer.setCurves(this.history.current.curves, this.selectedId);
+    this.panel.show(this.selected());
+    this.syncGuides();
     this.updateDisplays(); // the selected curve's surface follows edits and selection
   }
 
+  /** The ponytail being built, else the selected ponytail's circles. */
+  private syncGuides(): void {
+    if (this.toolGuides.length > 0) {
+      this.viewer.setGuides(this.toolGuides);
+      return;
+    }
+    const c = this.selected();
+    this.viewer.setGuides(c?.type === 'ponytail' ? c.circles.map(circlePolyline) : []);
+  }
+
   private refreshToolbar(): void {
+    const c = this.selected();
     this.toolbar.setEnabled({
       undo: this.history.canUndo,
       redo: this.history.canRedo,
       del: this.selectedId !== null,
+      viewpoint: c !== null,
+      surfaceMode: c?.type === 'stream',
+      avoid: !this.avoiding,
     });
   }
 
@@ -444,21 +709,13 @@ export class App {
     const curve = d.surface
       ? (this.history.current.curves.find((c) => c.id === this.selectedId) ?? null)
       : null;
-    const source = curve ? surfaceSource(curve) : null;
-    const mode = source?.mode ?? '';
+    // the surface hint strokes are lifted onto (dividing curves have none: they lie on the scalp)
+    const surface = curve && curve.type !== 'dividing' ? this.surfaceOf(curve) : null;
+    const mode = surface ? surface.mode : '';
     if (drawn.surface !== curve || drawn.surfaceMode !== mode) {
       drawn.surface = curve;
       drawn.surfaceMode = mode;
-      v.surface.update(
-        source
-          ? buildSupportingSurface(
-              source.points,
-              source.eye,
-              source.mode,
-              SURFACE_HALF_WIDTH_STEPS * grid.step,
-            )
-          : null,
-      );
+      v.surface.update(surface);
       rebuilt = true;
     }
     this.viewer.showDisplay(v.surface.object, d.surface);
@@ -527,6 +784,12 @@ export class App {
         this.setTool('stream');
       } else if (!mod && key === 'v') {
         this.setTool('select');
+      } else if (!mod && key === 'd') {
+        this.setTool('dividing');
+      } else if (!mod && key === 'p') {
+        this.setTool('ponytail');
+      } else if (!mod && key === 'm') {
+        this.toggleSurfaceMode();
       } else if (e.key === 'Escape') {
         this.tool.onCancel();
         this.select(null);
@@ -547,7 +810,11 @@ export class App {
   }
 
   get busy(): boolean {
-    return this.client.pending || (this.tool.state !== 'idle' && this.tool.state !== 'pressed');
+    return (
+      this.avoiding ||
+      this.client.pending ||
+      (this.tool.state !== 'idle' && this.tool.state !== 'pressed')
+    );
   }
 
   displayedStrands(): SolveResult['strands'] | null {
@@ -556,25 +823,10 @@ export class App {
 }
 
 /** Half width of the displayed supporting surface, in grid steps. */
-const SURFACE_HALF_WIDTH_STEPS = 6;
 
 /** What the supporting surface of a curve is built from: its points, its own viewpoint and its
  *  mode (its `surfaceMode` where the curve model stores one, else the ruled surface); null for a
  *  curve without a viewpoint (e.g. a dividing curve, drawn on the scalp) or with < 2 points. */
-function surfaceSource(curve: object): { points: Vec3[]; eye: Vec3; mode: SurfaceMode } | null {
-  const c = curve as {
-    points?: Vec3[];
-    viewpoint?: { position: Vec3 };
-    surfaceMode?: unknown;
-  };
-  if (!c.viewpoint || !c.points || c.points.length < 2) return null;
-  return {
-    points: c.points,
-    eye: c.viewpoint.position,
-    mode: c.surfaceMode === 'strip' ? 'strip' : 'ruled',
-  };
-}
-
 function scalpMessage(head: {
   positions: Float32Array;
   indices: Uint32Array;
@@ -588,4 +840,40 @@ function scalpMessage(head: {
     scalp: head.scalp.slice(),
     center: head.center,
   };
+}
+
+/** Outward unit normal of the built-in head at (near) p: the gradient of its signed distance
+ *  (central differences). Used for a dividing curve's per-point scalp normals (S4.5). */
+export function headNormal(p: Vec3): Vec3 {
+  const e = 1e-3;
+  const [x, y, z] = p;
+  return normalize([
+    headSdf(x + e, y, z) - headSdf(x - e, y, z),
+    headSdf(x, y + e, z) - headSdf(x, y - e, z),
+    headSdf(x, y, z + e) - headSdf(x, y, z - e),
+  ]);
+}
+
+/** A circle as a closed polyline (48 segments), for display. */
+function circlePolyline(c: { centre: Vec3; axis: Vec3; radius: number }): Vec3[] {
+  const a = normalize(c.axis);
+  const ref: Vec3 = Math.abs(a[0]) < 0.9 ? [1, 0, 0] : [0, 1, 0];
+  const u = normalize([
+    a[1] * ref[2] - a[2] * ref[1],
+    a[2] * ref[0] - a[0] * ref[2],
+    a[0] * ref[1] - a[1] * ref[0],
+  ]);
+  const v: Vec3 = [a[1] * u[2] - a[2] * u[1], a[2] * u[0] - a[0] * u[2], a[0] * u[1] - a[1] * u[0]];
+  const out: Vec3[] = [];
+  for (let i = 0; i <= 48; i++) {
+    const t = (2 * Math.PI * i) / 48;
+    const cs = Math.cos(t) * c.radius;
+    const sn = Math.sin(t) * c.radius;
+    out.push([
+      c.centre[0] + cs * u[0] + sn * v[0],
+      c.centre[1] + cs * u[1] + sn * v[1],
+      c.centre[2] + cs * u[2] + sn * v[2],
+    ]);
+  }
+  return out;
 }

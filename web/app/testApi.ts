@@ -1,4 +1,5 @@
 // window.hairsketch: the hooks automated browser tests use (README, "Test contract").
+import { headSdf } from '../head/headSdf';
 import { contentKey } from '../model/curveSet';
 import type { Vec3 } from '../model/vec3';
 import type { DisplayState } from '../ui/displayToggles';
@@ -28,6 +29,26 @@ export interface HairsketchTestApi {
   display(): DisplayState;
   /** What the shown overlays draw: constraints, field glyphs, surface triangles (0 when off). */
   displayInfo(): { constraints: number; glyphs: number; surfaceTriangles: number };
+  /** The displayed strands as plain arrays (layout of protocol.ts StrandArrays). */
+  strands(): { points: number[]; strandStart: number[] } | null;
+  /** Displayed strand segments with a point (either end or the middle) deeper than `depth`
+   *  world units inside the head (built-in head's signed distance), and the deepest value. */
+  segmentsInsideHead(depth: number): {
+    inside: number;
+    segments: number;
+    deepest: number;
+    /** Of `inside`, segments that start at the strand's root. */
+    atRoot: number;
+    /** Deepest root (roots sit on the polygonised head, not the exact surface). */
+    deepestRoot: number;
+  };
+  select(id: string | null): void;
+  /** Which ponytail stroke the Ponytail tool expects next. */
+  ponytailStage(): string;
+  /** The spine of the ponytail being built (empty before its first stroke). */
+  ponytailSpine(): Vec3[];
+  /** The view ray through client coordinates. */
+  rayAt(x: number, y: number): { origin: Vec3; direction: Vec3 };
 }
 
 declare global {
@@ -83,5 +104,48 @@ export function installTestApi(app: App): void {
     replaceSession: (session) => app.replaceSession(session),
     display: () => ({ ...app.display }),
     displayInfo: () => app.displayInfo(),
+    strands() {
+      const s = app.displayedStrands();
+      return s ? { points: Array.from(s.points), strandStart: Array.from(s.strandStart) } : null;
+    },
+    segmentsInsideHead(depth) {
+      const s = app.displayedStrands();
+      let inside = 0;
+      let segments = 0;
+      let deepest = Number.POSITIVE_INFINITY;
+      let atRoot = 0;
+      let deepestRoot = Number.POSITIVE_INFINITY;
+      if (!s) return { inside, segments, deepest, atRoot, deepestRoot };
+      const P = s.points;
+      const sdf = (k: number) => headSdf(P[3 * k], P[3 * k + 1], P[3 * k + 2]);
+      for (let i = 0; i + 1 < s.strandStart.length; i++) {
+        deepestRoot = Math.min(deepestRoot, sdf(s.strandStart[i]));
+        for (let k = s.strandStart[i]; k + 1 < s.strandStart[i + 1]; k++) {
+          segments++;
+          const mid = headSdf(
+            (P[3 * k] + P[3 * k + 3]) / 2,
+            (P[3 * k + 1] + P[3 * k + 4]) / 2,
+            (P[3 * k + 2] + P[3 * k + 5]) / 2,
+          );
+          const d = Math.min(sdf(k), sdf(k + 1), mid);
+          deepest = Math.min(deepest, d);
+          if (d < -depth) {
+            inside++;
+            if (k === s.strandStart[i]) atRoot++;
+          }
+        }
+      }
+      return { inside, segments, deepest, atRoot, deepestRoot };
+    },
+    select: (id) => app.select(id),
+    ponytailStage: () => app.ponytailStage,
+    rayAt(x, y) {
+      const r = app.viewer.rayAt(x, y);
+      return {
+        origin: [r.origin.x, r.origin.y, r.origin.z],
+        direction: [r.direction.x, r.direction.y, r.direction.z],
+      };
+    },
+    ponytailSpine: () => app.ponytailSpine.map((p) => [...p] as Vec3),
   };
 }

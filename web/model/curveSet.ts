@@ -1,39 +1,65 @@
-// Packs the session's curves into the protocol's flat CurveSet layout.
+// Packs the session's curves into the protocol's flat CurveSet layout (protocol.ts).
 import { CurveKind, type CurveSet } from '../solver/protocol';
-import type { StyleCurve } from './session';
+import { packDividingParams } from './dividingFrames';
+import { packPonytailParams } from './ponytailGeometry';
+import type { ExtraConstraints, StyleCurve } from './session';
 
-export function packCurves(curves: readonly StyleCurve[]): CurveSet {
+/** The kind-specific parameter block of a curve (protocol.ts CurveSet.params). */
+export function curveParams(c: StyleCurve): number[] {
+  switch (c.type) {
+    case 'stream':
+      return [];
+    case 'dividing':
+      return packDividingParams(c.normals, c);
+    case 'ponytail':
+      return packPonytailParams(c.circles, c.tightness);
+  }
+}
+
+export function packCurves(
+  curves: readonly StyleCurve[],
+  extras: ExtraConstraints | null = null,
+): CurveSet {
   let total = 0;
   for (const c of curves) total += c.points.length;
   const points = new Float64Array(3 * total);
   const curveStart = new Uint32Array(curves.length + 1);
   const kinds = new Uint8Array(curves.length);
   const extend = new Uint8Array(curves.length);
+  const paramStart = new Uint32Array(curves.length + 1);
+  const blocks = curves.map(curveParams);
+  let nParams = 0;
+  for (const b of blocks) nParams += b.length;
+  const params = new Float64Array(nParams);
   let k = 0;
+  let q = 0;
   curves.forEach((c, i) => {
     curveStart[i] = k;
+    paramStart[i] = q;
     kinds[i] = CurveKind[c.type];
-    extend[i] = c.extend ? 1 : 0;
+    extend[i] = c.type !== 'dividing' && c.extend ? 1 : 0;
     for (const p of c.points) {
       points[3 * k] = p[0];
       points[3 * k + 1] = p[1];
       points[3 * k + 2] = p[2];
       k++;
     }
+    params.set(blocks[i], q);
+    q += blocks[i].length;
   });
   curveStart[curves.length] = k;
+  paramStart[curves.length] = q;
   return {
     points,
     curveStart,
     kinds,
     extend,
-    params: new Float64Array(0),
-    paramStart: new Uint32Array(curves.length + 1),
-    extraIndex: new Int32Array(0),
-    extraTarget: new Float64Array(0),
+    params,
+    paramStart,
+    extraIndex: Int32Array.from(extras?.index ?? []),
+    extraTarget: Float64Array.from(extras?.target ?? []),
   };
 }
-
 /** A content key for a curve set + growth settings (for the result cache). FNV-1a over bytes. */
 export function contentKey(...arrays: ArrayBufferView[]): string {
   let h1 = 0x811c9dc5;

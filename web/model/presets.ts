@@ -1,8 +1,22 @@
-// Built-in hairstyles, made of stream curves sketched in code the way a user would: each curve
-// starts on the scalp, follows the head a little above it and then falls (SPEC S4.1).
+// Built-in hairstyles, made of curves sketched in code the way a user would: stream curves start
+// on the scalp, follow the head a little above it and then fall (S4.1); dividing curves are
+// strokes on the scalp (S4.5); a ponytail is a spine from the scalp with a cross-section and two
+// profile strokes beside it, from which the circles are computed as for drawn strokes (S4.6).
+// The paper's figures: fig6 (ten stream curves), fig7 (seven stream curves and a short parting),
+// fig8 (four stream curves and two ponytails), fig1 (eleven stream curves, four dividing curves
+// and one ponytail).
+import { ponytailCircles } from './ponytailGeometry';
 import { resamplePolyline } from './resample';
-import type { SessionState, StyleCurve, Viewpoint } from './session';
-import { add, scale, sphericalDirection, type Vec3 } from './vec3';
+import {
+  DEFAULT_TIGHTNESS,
+  type DividingCurve,
+  type PonytailCurve,
+  type SessionState,
+  type StreamCurve,
+  type StyleCurve,
+  type Viewpoint,
+} from './session';
+import { add, normalize, scale, sphericalDirection, sub, type Vec3 } from './vec3';
 
 export interface PresetContext {
   /** Outermost head point at spherical angles from the head center, or null. */
@@ -10,9 +24,11 @@ export interface PresetContext {
   center: Vec3;
   step: number; // grid step d
   viewpoint: Viewpoint;
+  /** Outward unit normal of the head at (near) a point; default: radial from `center`. */
+  normalAt?(p: Vec3): Vec3;
 }
 
-export const PRESET_NAMES = ['default', 'empty'] as const;
+export const PRESET_NAMES = ['default', 'empty', 'fig6', 'fig7', 'fig8', 'fig1'] as const;
 export type PresetName = (typeof PRESET_NAMES)[number];
 
 export function isPresetName(s: string): s is PresetName {
@@ -63,21 +79,237 @@ function sweepCurve(ctx: PresetContext, spec: SweepSpec): Vec3[] | null {
   return dense;
 }
 
+/** A stream curve along a sweep, or null when it leaves the head. */
+function streamFrom(ctx: PresetContext, spec: SweepSpec, id: string): StreamCurve | null {
+  const dense = sweepCurve(ctx, spec);
+  if (!dense) return null;
+  const points = resamplePolyline(dense, ctx.step);
+  if (points.length < 2) return null;
+  return { id, type: 'stream', points, extend: true, viewpoint: ctx.viewpoint };
+}
+
+/** A dividing curve: a stroke on the scalp through the given (θ, φ) points. */
+function dividingFrom(
+  ctx: PresetContext,
+  path: [number, number][],
+  id: string,
+  tilt: [number, number] = [0, 0],
+): DividingCurve | null {
+  const dense: Vec3[] = [];
+  for (let k = 1; k < path.length; k++) {
+    for (let i = k === 1 ? 0 : 1; i <= 20; i++) {
+      const s = i / 20;
+      const hit = ctx.headPoint(
+        path[k - 1][0] + (path[k][0] - path[k - 1][0]) * s,
+        path[k - 1][1] + (path[k][1] - path[k - 1][1]) * s,
+      );
+      if (!hit) return null;
+      dense.push(hit);
+    }
+  }
+  const points = resamplePolyline(dense, ctx.step);
+  if (points.length < 3) return null;
+  const normal = ctx.normalAt ?? ((p: Vec3) => normalize(sub(p, ctx.center)));
+  return {
+    id,
+    type: 'dividing',
+    points,
+    normals: points.map(normal),
+    sigma: 1,
+    h: 0.5,
+    alpha0: tilt[0],
+    alpha1: tilt[1],
+    viewpoint: ctx.viewpoint,
+  };
+}
+
+interface PonytailSpec {
+  base: [number, number]; // (θ, φ) of the spine's root on the scalp
+  out: number; // how far the spine first leaves the head, world units
+  fall: number; // then how far it falls, world units
+  gather: number; // radius where the hair is gathered (C1), world units
+  width: number; // radius of the tail below the gather, world units
+}
+
+/** A ponytail sketched as the paper's four strokes: the spine (out from the scalp, then down),
+ *  a cross-section across it at the gather, and two profiles beside it, widening below the
+ *  gather and tapering to the tip. */
+function ponytailFrom(ctx: PresetContext, spec: PonytailSpec, id: string): PonytailCurve | null {
+  const root = ctx.headPoint(spec.base[0], spec.base[1]);
+  if (!root) return null;
+  const outDir = sphericalDirection(spec.base[0], spec.base[1]);
+  // out of the head, slanting down, then bending gently until it hangs straight down
+  const dense: Vec3[] = [root];
+  let dir = normalize(add(outDir, [0, -0.5, 0]));
+  let p = root;
+  const ds = ctx.step / 4;
+  for (let len = 0; len < spec.out + spec.fall; len += ds) {
+    if (len > spec.out) dir = normalize(add(dir, [0, -0.1, 0]));
+    p = add(p, scale(dir, ds));
+    dense.push(p);
+  }
+  const spine = resamplePolyline(dense, ctx.step);
+  if (spine.length < 5) return null;
+  // The side the profiles are drawn on: across the spine, horizontally.
+  const side = normalize([outDir[2], 0, -outDir[0]]);
+  const gatherAt = 4; // spine index where the hair is gathered (even: circles sit on every 2nd)
+  const radius = (i: number) => {
+    if (i <= gatherAt) return spec.gather;
+    const t = (i - gatherAt) / (spine.length - 1 - gatherAt);
+    return (
+      spec.gather + (spec.width - spec.gather) * Math.sin(Math.PI * Math.min(1, t * 1.4)) ** 0.7
+    );
+  };
+  // the profiles start at the gather: C1 (the first circle) is the gathered cross-section
+  const profile = (sign: number) =>
+    spine
+      .slice(gatherAt - 1)
+      .map((p, k) =>
+        add(p, scale(side, sign * Math.max(0.3 * spec.gather, radius(k + gatherAt - 1)))),
+      );
+  const g = spine[gatherAt];
+  const crossSection: Vec3[] = [];
+  for (let i = 0; i <= 8; i++) crossSection.push(add(g, scale(side, spec.gather * (i / 4 - 1))));
+  const profiles: [Vec3[], Vec3[]] = [profile(1), profile(-1)];
+  const { circles } = ponytailCircles(spine, crossSection, profiles[0], profiles[1], { every: 2 });
+  if (circles.length === 0) return null;
+  return {
+    id,
+    type: 'ponytail',
+    points: spine,
+    extend: true,
+    viewpoint: ctx.viewpoint,
+    crossSection,
+    profiles,
+    circles,
+    tightness: DEFAULT_TIGHTNESS,
+  };
+}
+
+// fig6: a smooth style from ten stream curves: long hair combed back from the face and falling
+// straight down the back and sides.
+const FIG6_SWEEPS: SweepSpec[] = [
+  { theta: [40, 88], phi: [10, 70], lift: 0.12, fall: 1.7 },
+  { theta: [40, 88], phi: [-10, -70], lift: 0.12, fall: 1.7 },
+  { theta: [20, 95], phi: [30, 100], lift: 0.14, fall: 1.8 },
+  { theta: [20, 95], phi: [-30, -100], lift: 0.14, fall: 1.8 },
+  { theta: [15, 100], phi: [80, 130], lift: 0.15, fall: 1.9 },
+  { theta: [15, 100], phi: [-80, -130], lift: 0.15, fall: 1.9 },
+  { theta: [10, 105], phi: [140, 160], lift: 0.15, fall: 2.0 },
+  { theta: [10, 105], phi: [-140, -160], lift: 0.15, fall: 2.0 },
+  { theta: [8, 108], phi: [175, 178], lift: 0.14, fall: 2.0 },
+  { theta: [8, 108], phi: [-175, -178], lift: 0.14, fall: 2.0 },
+];
+
+// fig7: short hair with a short side parting: the dividing curve runs from the front hairline
+// back over the crown on the head's left (φ ≈ 30°); the hair is combed away from it on both
+// sides and ends around the ears and nape.
+const FIG7_PARTING: [number, number][] = [
+  [52, 30],
+  [38, 32],
+  [24, 36],
+];
+const FIG7_SWEEPS: SweepSpec[] = [
+  // toward the left side, away from the parting
+  { theta: [42, 80], phi: [42, 100], lift: 0.1, fall: 0.35 },
+  { theta: [25, 95], phi: [50, 135], lift: 0.1, fall: 0.4 },
+  // across the top to the right side (a side-swept fringe)
+  { theta: [48, 70], phi: [20, -65], lift: 0.12, fall: 0.35 },
+  { theta: [32, 90], phi: [22, -100], lift: 0.12, fall: 0.4 },
+  { theta: [20, 100], phi: [25, -135], lift: 0.12, fall: 0.45 },
+  // the back
+  { theta: [12, 110], phi: [170, 178], lift: 0.1, fall: 0.45 },
+  { theta: [12, 110], phi: [-160, -175], lift: 0.1, fall: 0.45 },
+];
+
+// fig8: two ponytails (left and right, behind the ears) and four stream curves combing the hair
+// from a centre parting toward them.
+const FIG8_PONYTAILS: PonytailSpec[] = [
+  { base: [74, 115], out: 0.3, fall: 1.6, gather: 0.2, width: 0.3 },
+  { base: [74, -115], out: 0.3, fall: 1.6, gather: 0.2, width: 0.3 },
+];
+const FIG8_SWEEPS: SweepSpec[] = [
+  // from the forehead over the top, down to each ponytail
+  { theta: [25, 68], phi: [6, 108], lift: 0.06, fall: 0 },
+  { theta: [25, 68], phi: [-6, -108], lift: 0.06, fall: 0 },
+  // from the nape up to each ponytail
+  { theta: [112, 80], phi: [176, 124], lift: 0.06, fall: 0 },
+  { theta: [112, 80], phi: [-176, -124], lift: 0.06, fall: 0 },
+];
+
+// fig1: a high ponytail at the back of the crown, a centre parting from the forehead, two side
+// partings and a nape parting (four dividing curves), and eleven stream curves: the top and sides
+// combed toward the ponytail, loose locks in front of the ears and at the nape.
+const FIG1_PONYTAIL: PonytailSpec = {
+  base: [55, 180],
+  out: 0.3,
+  fall: 2.0,
+  gather: 0.13,
+  width: 0.3,
+};
+const FIG1_PARTINGS: [number, number][][] = [
+  [
+    [54, 0],
+    [40, 0],
+    [25, 0],
+  ],
+  [
+    [64, 55],
+    [40, 85],
+  ],
+  [
+    [64, -55],
+    [40, -85],
+  ],
+  [
+    [100, 150],
+    [100, 210],
+  ],
+];
+const FIG1_SWEEPS: SweepSpec[] = [
+  { theta: [35, 50], phi: [10, 150], lift: 0.08, fall: 0 },
+  { theta: [35, 50], phi: [-10, -150], lift: 0.08, fall: 0 },
+  { theta: [52, 62], phi: [20, 140], lift: 0.08, fall: 0 },
+  { theta: [52, 62], phi: [-20, -140], lift: 0.08, fall: 0 },
+  { theta: [15, 45], phi: [60, 165], lift: 0.08, fall: 0 },
+  { theta: [15, 45], phi: [-60, -165], lift: 0.08, fall: 0 },
+  { theta: [80, 100], phi: [85, 95], lift: 0.1, fall: 0.9 },
+  { theta: [80, 100], phi: [-85, -95], lift: 0.1, fall: 0.9 },
+  { theta: [60, 82], phi: [50, 66], lift: 0.1, fall: 0.7 },
+  { theta: [60, 82], phi: [-50, -66], lift: 0.1, fall: 0.7 },
+  { theta: [104, 118], phi: [178, 179], lift: 0.06, fall: 0.5 },
+];
+
 export function presetCurves(name: PresetName, ctx: PresetContext): StyleCurve[] {
   if (name === 'empty') return [];
   const curves: StyleCurve[] = [];
-  for (const spec of DEFAULT_SWEEPS) {
-    const dense = sweepCurve(ctx, spec);
-    if (!dense) continue;
-    const points = resamplePolyline(dense, ctx.step);
-    if (points.length < 2) continue;
-    curves.push({
-      id: `c${curves.length + 1}`,
-      type: 'stream',
-      points,
-      extend: true,
-      viewpoint: ctx.viewpoint,
-    });
+  const nextId = () => `c${curves.length + 1}`;
+  const push = (c: StyleCurve | null) => {
+    if (c) curves.push(c);
+  };
+  const sweeps = (list: SweepSpec[]) => {
+    for (const spec of list) push(streamFrom(ctx, spec, nextId()));
+  };
+  switch (name) {
+    case 'default':
+      sweeps(DEFAULT_SWEEPS);
+      break;
+    case 'fig6':
+      sweeps(FIG6_SWEEPS);
+      break;
+    case 'fig7':
+      push(dividingFrom(ctx, FIG7_PARTING, nextId()));
+      sweeps(FIG7_SWEEPS);
+      break;
+    case 'fig8':
+      for (const p of FIG8_PONYTAILS) push(ponytailFrom(ctx, p, nextId()));
+      sweeps(FIG8_SWEEPS);
+      break;
+    case 'fig1':
+      push(ponytailFrom(ctx, FIG1_PONYTAIL, nextId()));
+      for (const path of FIG1_PARTINGS) push(dividingFrom(ctx, path, nextId()));
+      sweeps(FIG1_SWEEPS);
+      break;
   }
   return curves;
 }

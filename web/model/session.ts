@@ -1,6 +1,9 @@
 // The session model: everything the user made, as plain immutable JSON-able data.
 import type { GrowthParams } from '../solver/protocol';
+import type { DividingSettings } from './dividingFrames';
 import type { GridPreset } from './grid';
+import type { PonytailCircle } from './ponytailGeometry';
+import type { SurfaceMode } from './supportingSurface';
 import type { Vec3 } from './vec3';
 
 export interface Viewpoint {
@@ -8,15 +11,50 @@ export interface Viewpoint {
   target: Vec3; // orbit target
 }
 
+/** A stream curve (S4.1–S4.4). */
 export interface StreamCurve {
   id: string;
   type: 'stream';
   points: Vec3[]; // world units, consecutive distance = grid step d
   extend: boolean; // append fading extrapolated segments (S4.1)
   viewpoint: Viewpoint;
+  /** Supporting surface mode (S4.3); absent = 'ruled' (sessions made before the option). */
+  surfaceMode?: SurfaceMode;
 }
 
-export type StyleCurve = StreamCurve;
+/** A dividing curve (S4.5) drawn on the scalp. `normals[i]` is the scalp normal at points[i];
+ *  sigma and h in grid steps, alpha0/alpha1 in radians. */
+export interface DividingCurve extends DividingSettings {
+  id: string;
+  type: 'dividing';
+  points: Vec3[];
+  normals: Vec3[];
+  viewpoint: Viewpoint;
+}
+
+/** A ponytail (S4.6): `points` is the spine (edited like a stream curve); the cross-section and
+ *  the two profile strokes are kept as drawn, the circles computed from them (C1 first). */
+export interface PonytailCurve {
+  id: string;
+  type: 'ponytail';
+  points: Vec3[];
+  extend: boolean;
+  viewpoint: Viewpoint; // where the spine was drawn
+  crossSection: Vec3[];
+  profiles: [Vec3[], Vec3[]];
+  circles: PonytailCircle[];
+  tightness: number; // centripetal magnitude (default 0.6)
+}
+
+export type StyleCurve = StreamCurve | DividingCurve | PonytailCurve;
+export type CurveType = StyleCurve['type'];
+
+/** Explicit constraints from "Avoid scalp" (S4.7): grid index and target, as in
+ *  protocol.ts CurveSet.extraIndex / extraTarget (target[3 * e + axis]). */
+export interface ExtraConstraints {
+  index: number[];
+  target: number[];
+}
 
 export interface SessionState {
   version: 1;
@@ -25,7 +63,11 @@ export interface SessionState {
   curves: readonly StyleCurve[];
   growth: GrowthParams;
   hairColor: string; // CSS hex colour
+  /** Scalp-avoidance constraints, or absent/null when "Avoid scalp" was not run. */
+  avoid?: ExtraConstraints | null;
 }
+
+export const DEFAULT_TIGHTNESS = 0.6;
 
 export const DEFAULT_GROWTH: GrowthParams = {
   thetaStepDeg: 1.0,
@@ -53,6 +95,30 @@ export function addCurve(s: SessionState, c: StyleCurve): SessionState {
 export function deleteCurve(s: SessionState, id: string): SessionState {
   const curves = s.curves.filter((c) => c.id !== id);
   return curves.length === s.curves.length ? s : { ...s, curves };
+}
+
+export function findCurve(s: SessionState, id: string | null): StyleCurve | null {
+  return id === null ? null : (s.curves.find((c) => c.id === id) ?? null);
+}
+
+/** Replaces curve `id` by `update(curve)`; the same session when nothing changes. */
+export function updateCurve(
+  s: SessionState,
+  id: string,
+  update: (c: StyleCurve) => StyleCurve,
+): SessionState {
+  let changed = false;
+  const curves = s.curves.map((c) => {
+    if (c.id !== id) return c;
+    const n = update(c);
+    if (n !== c) changed = true;
+    return n;
+  });
+  return changed ? { ...s, curves } : s;
+}
+
+export function setAvoid(s: SessionState, avoid: ExtraConstraints | null): SessionState {
+  return { ...s, avoid };
 }
 
 /** Curve ids are unique within a session: a counter past the largest id in use. */

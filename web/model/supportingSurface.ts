@@ -137,6 +137,11 @@ export function buildSupportingSurface(
   };
 }
 
+/** Barycentric slack of a ray-triangle hit: positions are float32, so a ray through a shared
+ *  vertex or edge (a stroke ending exactly on a curve point) could otherwise slip between the
+ *  triangles around it. Overlaps it creates are harmless: the nearest hit is taken. */
+const BARY_SLACK = 1e-5;
+
 /** Ray (origin, unit direction) against one triangle (Möller–Trumbore, both sides). */
 function rayTriangle(o: Vec3, d: Vec3, a: Vec3, b: Vec3, c: Vec3): number | null {
   const e1 = sub(b, a);
@@ -147,10 +152,10 @@ function rayTriangle(o: Vec3, d: Vec3, a: Vec3, b: Vec3, c: Vec3): number | null
   const inv = 1 / det;
   const s = sub(o, a);
   const u = dot(s, p) * inv;
-  if (u < -1e-9 || u > 1 + 1e-9) return null;
+  if (u < -BARY_SLACK || u > 1 + BARY_SLACK) return null;
   const q = cross(s, e1);
   const v = dot(d, q) * inv;
-  if (v < -1e-9 || u + v > 1 + 1e-9) return null;
+  if (v < -BARY_SLACK || u + v > 1 + BARY_SLACK) return null;
   const t = dot(e2, q) * inv;
   return t > 0 ? t : null;
 }

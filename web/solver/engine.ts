@@ -33,6 +33,16 @@ export interface SolverEngine {
   constraintColours(): Uint8Array;
   field(): FieldArrays;
   stats(): Omit<SolveStats, 'growMs' | 'errorEstimate' | 'heapBytes'>;
+  /** Scalp-avoidance constraints (S4.7) from the current field; optional (test fakes). */
+  scalpAvoidance?(opts: {
+    band?: number;
+    magnitude?: number;
+    wholeHead?: boolean;
+    insideToo?: boolean;
+  }): {
+    index: Int32Array;
+    target: Float64Array;
+  };
   /** Bytes of the wasm heap (memory grows, never shrinks). */
   heapBytes(): number;
   dispose(): void;

@@ -118,6 +118,19 @@ export type ToWorker =
       /** 'preview': a few iterations and a light growth, for live feedback while drawing;
        *  'full': a quick first look, then iterate to convergence and grow the final hair. */
       mode: 'preview' | 'full';
+    }
+  | {
+      /** Scalp penetration avoidance (S4.7): solve `curves` to convergence, then derive the
+       *  avoidance constraints from that field. Answered by 'avoidance' with the same id. */
+      type: 'avoidScalp';
+      id: number;
+      curves: CurveSet;
+      band: number; // grid steps from the head surface
+      magnitude: number; // target length (paper: 0.3)
+      wholeHead: boolean; // measure against every head triangle, not only the scalp
+      /** Also grid points inside the head within the band: growth interpolates them just
+       *  outside the surface. */
+      insideToo: boolean;
     };
 
 export type FromWorker =
@@ -132,6 +145,13 @@ export type FromWorker =
       stats: SolveStats;
       /** True for the converged field's hair; false for a preview or a first look. */
       final: boolean;
+    }
+  | {
+      /** Answer to 'avoidScalp': ready for CurveSet.extraIndex / extraTarget. */
+      type: 'avoidance';
+      id: number;
+      index: Int32Array; // index[e] = grid point p (sorted)
+      target: Float64Array; // target[3 * e + axis]
     }
   | { type: 'error'; id: number | null; message: string };
 

@@ -16,6 +16,7 @@ import type { CurveSet, FromWorker, GrowthParams, ToWorker } from './protocol';
 export type InitMessage = Extract<ToWorker, { type: 'init' }>;
 export type SolveResult = Extract<FromWorker, { type: 'result' }>;
 export type SolveMode = 'preview' | 'full';
+export type AvoidanceResult = { index: Int32Array; target: Float64Array };
 
 export interface SolverClientEvents {
   /** The worker is (re)starting or working; `phase` says what it does. */
@@ -58,6 +59,15 @@ export class SolverClient {
   private ready = false;
   /** Ask the worker for the solved field with each result (for the field display). */
   wantField = false;
+  /** Scalp-avoidance requests waiting for their answer, by id. */
+  private readonly avoidWaiting = new Map<
+    number,
+    {
+      msg: Extract<ToWorker, { type: 'avoidScalp' }>;
+      resolve: (r: AvoidanceResult) => void;
+      reject: (e: Error) => void;
+    }
+  >();
 
   constructor(
     private readonly makeWorker: () => Worker,
@@ -68,7 +78,12 @@ export class SolverClient {
   }
 
   get pending(): boolean {
-    return this.open !== null || this.previewWaiting !== null || !this.ready;
+    return (
+      this.open !== null ||
+      this.previewWaiting !== null ||
+      this.avoidWaiting.size > 0 ||
+      !this.ready
+    );
   }
 
   request(curves: CurveSet, growth: GrowthParams, mode: SolveMode = 'full'): void {
@@ -111,6 +126,25 @@ export class SolverClient {
     }
     this.open = req;
     this.send(req);
+  }
+
+  /** Asks the worker for scalp-avoidance constraints (S4.7) on the converged field of `curves`
+   *  (band in grid steps, magnitude 0.3 as in the paper; the whole head is avoided, face and neck
+   *  included). Resent if the worker restarts; rejected on a solver error. */
+  avoidScalp(curves: CurveSet, band = 1.5, magnitude = 0.3): Promise<AvoidanceResult> {
+    const msg: Extract<ToWorker, { type: 'avoidScalp' }> = {
+      type: 'avoidScalp',
+      id: this.nextId++,
+      curves,
+      band,
+      magnitude,
+      wholeHead: true,
+      insideToo: true,
+    };
+    return new Promise((resolve, reject) => {
+      this.avoidWaiting.set(msg.id, { msg, resolve, reject });
+      if (this.worker && this.ready) this.worker.postMessage(msg);
+    });
   }
 
   private sendPreview(req: Request): void {
@@ -192,12 +226,19 @@ export class SolverClient {
     switch (msg.type) {
       case 'ready':
         this.ready = true;
+        for (const w of this.avoidWaiting.values()) this.worker?.postMessage(w.msg);
         if (this.open) {
           if (this.open.mode === 'preview') this.sendPreview(this.open);
           else this.send(this.open);
         }
         if (!this.pending) this.events.onIdle();
         return;
+      case 'avoidance': {
+        const w = this.avoidWaiting.get(msg.id);
+        this.avoidWaiting.delete(msg.id);
+        w?.resolve({ index: msg.index, target: msg.target });
+        return;
+      }
       case 'progress':
         if (this.open && msg.id === this.open.id)
           this.events.onBusy(msg.phase === 'grow' ? 'growing' : 'solving', msg.fraction);
@@ -229,7 +270,15 @@ export class SolverClient {
           this.events.onError(msg.message, false);
           return;
         }
-        if (msg.id !== null) this.previewAnswered(msg.id);
+        if (msg.id !== null) {
+          const w = this.avoidWaiting.get(msg.id);
+          if (w) {
+            this.avoidWaiting.delete(msg.id);
+            w.reject(new Error(msg.message));
+            return;
+          }
+          this.previewAnswered(msg.id);
+        }
         if (this.open && msg.id === this.open.id) this.open = null;
         this.events.onError(msg.message, false);
         if (!this.pending) this.events.onIdle();

@@ -225,7 +225,7 @@ class WasmEngine implements SolverEngine {
         h,
         opts.band ?? 1.5,
         opts.magnitude ?? 0.3,
-        opts.wholeHead ? 1 : 0,
+        (opts.wholeHead ? 1 : 0) | (opts.insideToo ? 2 : 0),
       ),
     );
     const n = m._hs_engine_avoid_count(h);
@@ -335,6 +335,7 @@ export interface ScalpAvoidanceOptions {
   band?: number; // grid steps from the scalp (default 1.5)
   magnitude?: number; // target length (default 0.3)
   wholeHead?: boolean; // measure against every head triangle, not only the scalp (default false)
+  insideToo?: boolean; // also grid points inside the head within the band (default false)
 }
 
 /** index[e] = grid point, target[3 * e + axis]: ready for CurveSet.extraIndex / extraTarget. */

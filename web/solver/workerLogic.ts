@@ -17,6 +17,8 @@ import {
 
 export type Post = (msg: FromWorker) => void;
 type SolveMsg = Extract<ToWorker, { type: 'solve' }>;
+type AvoidMsg = Extract<ToWorker, { type: 'avoidScalp' }>;
+type Job = SolveMsg | AvoidMsg;
 
 export interface SchedulerOptions {
   tolerance: number; // converged when the estimated relative field error is below this
@@ -44,6 +46,9 @@ const errorMessage = (e: unknown): string => (e instanceof Error ? e.message : S
 export class WorkerLogic {
   private initialised = false;
   private latest: SolveMsg | null = null;
+  /** Avoidance requests run before any solve and are never superseded (their answer is an
+   *  edit the user asked for). */
+  private avoidQueue: AvoidMsg[] = [];
   private running = false;
 
   constructor(
@@ -70,7 +75,8 @@ export class WorkerLogic {
       this.post({ type: 'error', id: msg.id, message: 'Solver is not initialised' });
       return Promise.resolve();
     }
-    this.latest = msg;
+    if (msg.type === 'avoidScalp') this.avoidQueue.push(msg);
+    else this.latest = msg;
     return this.running ? Promise.resolve() : this.run();
   }
 
@@ -79,11 +85,12 @@ export class WorkerLogic {
     try {
       // Let messages already waiting arrive first: of a burst, only the newest is solved.
       await this.opts.yieldNow();
-      while (this.latest) {
-        const job = this.latest;
-        this.latest = null;
+      while (this.latest || this.avoidQueue.length) {
+        const job: Job = this.avoidQueue.shift() ?? (this.latest as SolveMsg);
+        if (job === this.latest) this.latest = null;
         try {
-          await this.runJob(job);
+          if (job.type === 'avoidScalp') await this.runAvoid(job);
+          else await this.runJob(job);
         } catch (e) {
           this.post({ type: 'error', id: job.id, message: errorMessage(e) });
         }
@@ -95,6 +102,25 @@ export class WorkerLogic {
 
   private superseded(): boolean {
     return this.latest !== null;
+  }
+
+  private async runAvoid(job: AvoidMsg): Promise<void> {
+    const o = this.opts;
+    if (!this.engine.scalpAvoidance) throw new Error('this solver has no scalp avoidance');
+    this.post({ type: 'progress', id: job.id, phase: 'constraints', fraction: 0 });
+    this.engine.setCurves(job.curves);
+    let p = this.engine.iterate(o.firstLookIterations, o.tolerance);
+    while (!p.converged) {
+      await o.yieldNow();
+      p = this.engine.iterate(o.sliceIterations, o.tolerance);
+    }
+    const r = this.engine.scalpAvoidance({
+      band: job.band,
+      magnitude: job.magnitude,
+      wholeHead: job.wholeHead,
+      insideToo: job.insideToo,
+    });
+    this.post({ type: 'avoidance', id: job.id, index: r.index, target: r.target });
   }
 
   private async runJob(job: SolveMsg): Promise<void> {

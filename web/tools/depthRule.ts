@@ -7,6 +7,7 @@ export interface StrokeSample {
   origin: Vec3; // ray origin (camera position for a perspective camera)
   direction: Vec3; // unit ray direction through the pointer
   scalpHit: Vec3 | null; // first hit of the ray on the head, when it is on the scalp
+  headDistance?: number | null; // distance along the ray to the first head hit (any part)
 }
 
 export type LiftResult = { ok: true; points: Vec3[] } | { ok: false; reason: 'not-on-scalp' };

@@ -164,7 +164,9 @@ export function classifyHintStroke(
     maxPos = Math.max(maxPos, s.offset);
     maxNeg = Math.max(maxNeg, -s.offset);
     const p = samples[i - 1];
-    if (i > 0 && p.onSurface && Number.isNaN(crossing) && p.offset * s.offset < 0) {
+    // a sign change; a sample exactly on the curve (offset 0) counts as the crossing
+    const changes = (p?.offset < 0 && s.offset >= 0) || (p?.offset > 0 && s.offset <= 0);
+    if (i > 0 && p.onSurface && Number.isNaN(crossing) && changes) {
       const f = p.offset / (p.offset - s.offset);
       crossing = p.param + (s.param - p.param) * f;
     }

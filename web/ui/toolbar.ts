@@ -1,15 +1,27 @@
 // Toolbar buttons with accessible names (the test contract relies on them).
+export type ToolName = 'stream' | 'select' | 'dividing' | 'ponytail';
+
 export interface ToolbarActions {
-  tool(name: 'stream' | 'select'): void;
+  tool(name: ToolName): void;
   undo(): void;
   redo(): void;
   deleteSelected(): void;
   hairColor(css: string): void;
+  avoidScalp(): void;
+  setViewpoint(): void;
+  surfaceMode(): void;
 }
 
 export interface Toolbar {
   setTool(name: string): void;
-  setEnabled(state: { undo: boolean; redo: boolean; del: boolean }): void;
+  setEnabled(state: {
+    undo: boolean;
+    redo: boolean;
+    del: boolean;
+    viewpoint: boolean;
+    surfaceMode: boolean;
+    avoid: boolean;
+  }): void;
   setHairColor(css: string): void;
 }
 
@@ -29,11 +41,38 @@ function separator(): HTMLElement {
 }
 
 export function buildToolbar(root: HTMLElement, actions: ToolbarActions): Toolbar {
-  const stream = button('Stream curve', 'Draw a stream curve starting on the scalp (S)', () =>
-    actions.tool('stream'),
+  const stream = button(
+    'Stream curve',
+    'Draw a stream curve starting on the scalp; on the selected curve’s supporting surface, a hint stroke edits it (S)',
+    () => actions.tool('stream'),
+  );
+  const dividing = button(
+    'Dividing curve',
+    'Draw a parting on the scalp; a stroke beside the selected dividing curve tilts that side (D)',
+    () => actions.tool('dividing'),
+  );
+  const ponytail = button(
+    'Ponytail',
+    'Four strokes: spine from the scalp, then cross-section and two profiles (P)',
+    () => actions.tool('ponytail'),
   );
   const select = button('Select', 'Select a curve; drag to orbit (V)', () =>
     actions.tool('select'),
+  );
+  const viewpoint = button(
+    'Set viewpoint',
+    'Store the current camera as the selected curve’s viewpoint (its supporting surface is rebuilt)',
+    actions.setViewpoint,
+  );
+  const surface = button(
+    'Surface mode',
+    'Switch the selected stream curve’s supporting surface: ruled (to the viewpoint) / strip (M)',
+    actions.surfaceMode,
+  );
+  const avoid = button(
+    'Avoid scalp',
+    'Keep the hair out of the head: constrain the field near the scalp to point outward or along it',
+    actions.avoidScalp,
   );
   const undo = button('Undo', 'Undo (Ctrl+Z)', actions.undo);
   const redo = button('Redo', 'Redo (Ctrl+Shift+Z)', actions.redo);
@@ -44,8 +83,23 @@ export function buildToolbar(root: HTMLElement, actions: ToolbarActions): Toolba
   color.type = 'color';
   color.addEventListener('input', () => actions.hairColor(color.value));
   colorLabel.append(color);
-  root.append(stream, select, separator(), undo, redo, del, separator(), colorLabel);
-  const tools: Record<string, HTMLButtonElement> = { stream, select };
+  root.append(
+    stream,
+    dividing,
+    ponytail,
+    select,
+    separator(),
+    viewpoint,
+    surface,
+    avoid,
+    separator(),
+    undo,
+    redo,
+    del,
+    separator(),
+    colorLabel,
+  );
+  const tools: Record<string, HTMLButtonElement> = { stream, select, dividing, ponytail };
   return {
     setTool(name) {
       for (const [n, b] of Object.entries(tools))
@@ -55,6 +109,9 @@ export function buildToolbar(root: HTMLElement, actions: ToolbarActions): Toolba
       undo.disabled = !s.undo;
       redo.disabled = !s.redo;
       del.disabled = !s.del;
+      viewpoint.disabled = !s.viewpoint;
+      surface.disabled = !s.surfaceMode;
+      avoid.disabled = !s.avoid;
     },
     setHairColor(css) {
       color.value = css;

@@ -30,6 +30,7 @@ export class Viewer {
   private readonly curveGroup = new THREE.Group();
   /** Display overlays (constraints, field, box, surface): owned by their display modules. */
   private readonly displayGroup = new THREE.Group();
+  private readonly guideGroup = new THREE.Group();
   private draft: THREE.Line | null = null;
   private hair: THREE.LineSegments | null = null;
   private dirty = true;
@@ -68,7 +69,7 @@ export class Viewer {
     const rim = new THREE.DirectionalLight(0xbfd4ff, 0.6);
     rim.position.set(-4, 2, -3);
     this.scene.add(rim);
-    this.scene.add(this.hairGroup, this.curveGroup, this.displayGroup);
+    this.scene.add(this.hairGroup, this.curveGroup, this.displayGroup, this.guideGroup);
 
     new ResizeObserver(() => this.resize()).observe(canvas);
     this.resize();
@@ -206,6 +207,16 @@ export class Viewer {
     if (on === shown) return;
     if (on) this.displayGroup.add(object);
     else this.displayGroup.remove(object);
+    this.requestRender();
+  }
+
+  /** Construction lines drawn over everything (e.g. a ponytail's strokes and circles). */
+  setGuides(lines: readonly (readonly Vec3[])[]): void {
+    for (const child of [...this.guideGroup.children]) {
+      this.guideGroup.remove(child);
+      disposeObject(child);
+    }
+    for (const l of lines) if (l.length >= 2) this.guideGroup.add(polyline(l, 0xb04dff));
     this.requestRender();
   }
 

@@ -1,0 +1,66 @@
+// The paper's presets, sketched in code: the kinds and counts of curves of each figure, every
+// curve well formed (segments of one grid step, finite, on or above the head), and packable.
+import * as THREE from 'three';
+import { describe, expect, it } from 'vitest';
+import { buildHead } from '../../web/head/buildHead';
+import { headSdf } from '../../web/head/headSdf';
+import { packCurves } from '../../web/model/curveSet';
+import { gridForPreset } from '../../web/model/grid';
+import { type PresetName, presetCurves } from '../../web/model/presets';
+import { distance, type Vec3 } from '../../web/model/vec3';
+import { HeadPicker } from '../../web/viewer/headPicker';
+
+const head = buildHead();
+const geometry = new THREE.BufferGeometry();
+geometry.setAttribute('position', new THREE.BufferAttribute(head.positions, 3));
+geometry.setIndex(new THREE.BufferAttribute(head.indices, 1));
+const picker = new HeadPicker(geometry, head);
+const step = gridForPreset('25k').step;
+const ctx = {
+  headPoint: (t: number, p: number) => picker.scalpPoint(t, p)?.point ?? null,
+  center: head.center,
+  step,
+  viewpoint: { position: [0, 0, 7] as Vec3, target: [0, 0, 0] as Vec3 },
+};
+
+const EXPECTED: Record<string, { stream: number; dividing: number; ponytail: number }> = {
+  fig6: { stream: 10, dividing: 0, ponytail: 0 },
+  fig7: { stream: 7, dividing: 1, ponytail: 0 },
+  fig8: { stream: 4, dividing: 0, ponytail: 2 },
+  fig1: { stream: 11, dividing: 4, ponytail: 1 },
+};
+
+describe('presets', () => {
+  for (const [name, want] of Object.entries(EXPECTED)) {
+    it(`${name}: the figure's curves, each well formed`, () => {
+      const curves = presetCurves(name as PresetName, ctx);
+      const count = (t: string) => curves.filter((c) => c.type === t).length;
+      expect({
+        stream: count('stream'),
+        dividing: count('dividing'),
+        ponytail: count('ponytail'),
+      }).toEqual(want);
+      expect(new Set(curves.map((c) => c.id)).size).toBe(curves.length);
+      for (const c of curves) {
+        expect(c.points.length).toBeGreaterThan(2);
+        for (let i = 1; i < c.points.length - 1; i++)
+          expect(distance(c.points[i - 1], c.points[i])).toBeCloseTo(step, 6);
+        // on the head (dividing) or not inside it (a little slack for the mesh)
+        for (const p of c.points) expect(headSdf(...p)).toBeGreaterThan(-0.03);
+        if (c.type === 'dividing') {
+          expect(c.normals.length).toBe(c.points.length);
+          for (const p of c.points) expect(Math.abs(headSdf(...p))).toBeLessThan(0.03);
+        }
+        if (c.type === 'ponytail') {
+          expect(c.circles.length).toBeGreaterThan(2);
+          // gathered at C1, wider below
+          const r = c.circles.map((k) => k.radius);
+          expect(Math.max(...r)).toBeGreaterThan(1.2 * r[0]);
+        }
+      }
+      const set = packCurves(curves);
+      expect(set.kinds.length).toBe(curves.length);
+      expect(set.params.every(Number.isFinite)).toBe(true);
+    });
+  }
+});

@@ -1,0 +1,170 @@
+// The sketching tools as state machines, fed pointer events without a browser: a flat "scalp"
+// (the plane z = 0 for x < 1, seen by rays straight down -z from z = 10).
+import { describe, expect, it } from 'vitest';
+import { buildSupportingSurface } from '../../web/model/supportingSurface';
+import type { Vec3 } from '../../web/model/vec3';
+import type { StrokeSample } from '../../web/tools/depthRule';
+import { DividingCurveTool } from '../../web/tools/dividingCurveTool';
+import type { HintResult } from '../../web/tools/hintStroke';
+import { type PonytailDraft, PonytailTool } from '../../web/tools/ponytailTool';
+import { StreamCurveTool } from '../../web/tools/streamCurveTool';
+import type { Tool } from '../../web/tools/tool';
+
+const EYE: Vec3 = [0, 0, 10];
+const FORWARD: Vec3 = [0, 0, -1];
+const STEP = 0.25;
+
+/** Rays parallel to -z through (x, y); the scalp is z = 0 where `scalp(x, y)`. */
+const sampler =
+  (scalp: (x: number, y: number) => boolean) =>
+  (x: number, y: number): StrokeSample => ({
+    origin: [x, y, 10],
+    direction: [0, 0, -1],
+    scalpHit: scalp(x, y) ? [x, y, 0] : null,
+    headDistance: scalp(x, y) ? 10 : null,
+  });
+
+function drag(tool: Tool, pts: Array<[number, number]>): void {
+  tool.onPointerDown({ x: pts[0][0], y: pts[0][1], button: 0 });
+  for (const [x, y] of pts.slice(1)) tool.onPointerMove({ x, y, button: 0 });
+  tool.update();
+  const [x, y] = pts[pts.length - 1];
+  tool.onPointerUp({ x, y, button: 0 });
+}
+
+const line = (a: [number, number], b: [number, number], n = 40): Array<[number, number]> =>
+  Array.from({ length: n + 1 }, (_, i) => [
+    a[0] + ((b[0] - a[0]) * i) / n,
+    a[1] + ((b[1] - a[1]) * i) / n,
+  ]);
+
+describe('StreamCurveTool', () => {
+  const curve: Vec3[] = Array.from({ length: 17 }, (_, i) => [i * STEP, 0, 0] as Vec3);
+  const eyeAbove: Vec3 = [2, 0.3, 10];
+  function setup(selected: boolean) {
+    const log: { commits: Vec3[][]; hints: HintResult[]; notes: string[] } = {
+      commits: [],
+      hints: [],
+      notes: [],
+    };
+    const surface = buildSupportingSurface(curve, eyeAbove, 'strip', 6 * STEP);
+    const tool = new StreamCurveTool({
+      sample: sampler((x) => x < 1),
+      eye: () => EYE,
+      forward: () => FORWARD,
+      step: () => STEP,
+      showDraft: () => {},
+      commit: (p) => log.commits.push(p),
+      preview: () => {},
+      notify: (m) => log.notes.push(m),
+      hintTarget: () => (selected ? { points: curve, surface } : null),
+      applyHint: (r) => log.hints.push(r),
+    });
+    return { tool, log };
+  }
+
+  it('draws a new curve from the scalp when no curve is selected', () => {
+    const { tool, log } = setup(false);
+    drag(tool, line([0.2, 0.5], [2, 0.5]));
+    expect(log.commits).toHaveLength(1);
+    expect(log.commits[0].length).toBeGreaterThan(5);
+    expect(log.hints).toHaveLength(0);
+  });
+
+  it('recognises cut, concatenate and insert on the selected curve’s surface', () => {
+    const { tool, log } = setup(true);
+    drag(tool, line([3, -1], [3, 1])); // across the curve, far on both sides
+    drag(tool, line([3.9, 0.02], [6, 0.5])); // from the end, away from it
+    drag(
+      tool,
+      line([1.5, 0.02], [3.5, 0.02]).map(([x, y]) => [x, y + 0.2 * Math.sin(x)]),
+    ); // near -> near
+    drag(tool, line([2, 1], [2.5, 1.2])); // far and never crossing
+    expect(log.hints.map((h) => h.op.kind)).toEqual(['cut', 'concatenate', 'insert', 'none']);
+    expect(log.hints[0].points.length).toBeLessThan(curve.length); // cut at x = 3 -> 13 points
+    expect(log.hints[0].points.length).toBe(13);
+    expect(log.hints[1].points.length).toBeGreaterThan(curve.length);
+    expect(log.hints[3].points).toEqual(curve); // nothing changed
+    expect(log.commits).toHaveLength(0);
+  });
+
+  it('says why a press off the scalp and off the surface draws nothing', () => {
+    const { tool, log } = setup(true);
+    drag(tool, line([3, 5], [4, 6]));
+    expect(log.notes[0]).toMatch(/must start on the scalp/);
+    expect(log.hints).toHaveLength(0);
+    expect(log.commits).toHaveLength(0);
+  });
+});
+
+describe('DividingCurveTool', () => {
+  it('draws a curve on the scalp, then a stroke beside it sets that side’s tilt', () => {
+    let selected: { points: Vec3[]; normals: Vec3[] } | null = null;
+    const tilts: Array<[string, number, number]> = [];
+    const tool = new DividingCurveTool({
+      sample: sampler(() => true),
+      step: () => STEP,
+      selected: () => selected,
+      normalsAt: (pts) => pts.map(() => [0, 0, 1] as Vec3),
+      showDraft: () => {},
+      commit: (points, normals) => {
+        selected = { points, normals };
+      },
+      setTilt: (end, alpha, side) => tilts.push([end, alpha, side]),
+      notify: () => {},
+    });
+    drag(tool, line([0, 0], [0, 3]));
+    expect(selected).not.toBeNull();
+    const sel = selected as unknown as { points: Vec3[]; normals: Vec3[] };
+    expect(sel.points.length).toBe(13);
+    expect(sel.normals.length).toBe(13);
+    // beside the first half, pointing away from the curve: side known, tilt about 0
+    drag(tool, line([0.3, 0.5], [1.3, 0.5]));
+    expect(tilts).toHaveLength(1);
+    expect(tilts[0][0]).toBe('alpha0');
+    expect(Math.abs(tilts[0][1])).toBeLessThan(1e-9);
+    // beside the second half on the other side, slanted 45° toward the curve's end
+    drag(tool, line([-0.3, 2.5], [-1.3, 3.5]));
+    expect(tilts[1][0]).toBe('alpha1');
+    expect(tilts[1][2]).toBe(-tilts[0][2]);
+    expect(Math.abs(Math.abs(tilts[1][1]) - Math.PI / 4)).toBeLessThan(1e-6);
+  });
+});
+
+describe('PonytailTool', () => {
+  it('takes spine, cross-section and two profiles, then commits the circles', () => {
+    const done: PonytailDraft[] = [];
+    const stages: string[] = [];
+    const tool = new PonytailTool({
+      sample: sampler((_x, y) => y > -0.05),
+      eye: () => EYE,
+      forward: () => FORWARD,
+      step: () => STEP,
+      showDraft: () => {},
+      showGuides: () => {},
+      commit: (p) => done.push(p),
+      notify: () => {},
+      stageChanged: (s) => stages.push(s),
+    });
+    expect(tool.stage).toBe('spine');
+    drag(tool, line([0, 0], [0, -4])); // spine down from the scalp edge, at depth z = 0
+    expect(tool.stage).toBe('cross');
+    drag(tool, line([-0.6, -1], [0.6, -1]));
+    drag(tool, line([-0.5, -0.5], [-0.3, -3.5]));
+    expect(done).toHaveLength(0);
+    drag(tool, line([0.5, -0.5], [0.3, -3.5]));
+    expect(stages).toEqual(['cross', 'profileA', 'profileB', 'spine']);
+    expect(done).toHaveLength(1);
+    const p = done[0];
+    expect(p.spine.length).toBe(17);
+    expect(p.circles.length).toBeGreaterThan(3);
+    // C1 first (nearest the root), radius from the cross-section: 0.6 at y = -1
+    expect(p.circles[0].centre[1]).toBeGreaterThan(p.circles[1].centre[1]);
+    const atCross = p.circles.reduce((a, c) =>
+      Math.abs(c.centre[1] + 1) < Math.abs(a.centre[1] + 1) ? c : a,
+    );
+    expect(atCross.radius).toBeCloseTo(0.6, 1);
+    // the circles narrow toward the tip, as the profiles do
+    expect(p.circles[p.circles.length - 1].radius).toBeLessThan(p.circles[0].radius);
+  });
+});
