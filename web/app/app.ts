@@ -21,6 +21,7 @@ import {
   setAvoid,
   updateCurve,
 } from '../model/session';
+import { decodeSessionLink, encodeSessionLink, parseSession } from '../model/sessionFile';
 import { buildSupportingSurface, type SupportingSurface } from '../model/supportingSurface';
 import { normalize, sub, type Vec3 } from '../model/vec3';
 import type { GridSpec } from '../solver/protocol';
@@ -184,6 +185,7 @@ export class App {
       avoidScalp: () => void this.avoidScalp(),
       setViewpoint: () => this.setViewpoint(),
       surfaceMode: () => this.toggleSurfaceMode(),
+      share: () => void this.shareLink(),
     });
     this.panel = buildCurvePanel(document.getElementById('stage') as HTMLElement, (id, patch) =>
       this.patchCurve(id, patch),
@@ -223,6 +225,7 @@ export class App {
     );
     this.setTool(opts.preset === 'empty' ? 'stream' : 'select');
     this.syncSession();
+    void this.openLink(window.location.hash);
     if (opts.warnings.length) this.notify(`URL: ${opts.warnings.join('; ')}`);
     installTestApi(this);
   }
@@ -451,11 +454,9 @@ export class App {
 
   /** Test hook: the session from another page's session() replaces this one (undoable). */
   replaceSession(json: unknown): void {
-    const j = json as Partial<SessionState>;
-    if (!j || !Array.isArray(j.curves) || typeof j.growth !== 'object')
-      throw new Error('replaceSession: not a session (curves and growth are required)');
-    const s = this.history.current;
-    this.history.push({ ...s, curves: j.curves, growth: { ...s.growth, ...j.growth } });
+    const parsed = parseSession(json);
+    if (!parsed.ok) throw new Error(`replaceSession: ${parsed.error}`);
+    this.history.push({ ...parsed.value, grid: this.history.current.grid });
     this.selectedId = null;
     this.syncSession();
   }
@@ -497,6 +498,7 @@ export class App {
     this.history.push({ ...this.history.current, hairColor: css });
     this.applyHairColor();
     this.refreshToolbar();
+    this.scheduleLinkUpdate();
   }
 
   setTool(name: ToolName): void {
@@ -548,6 +550,65 @@ export class App {
     this.refreshToolbar();
     this.viewer.hold('settling', true); // until the final hair is shown (cached: at once)
     this.client.request(packCurves(s.curves, s.avoid ?? null), s.growth);
+    this.scheduleLinkUpdate();
+  }
+
+  // ---- session links -------------------------------------------------------------------------
+
+  private linkTimer: ReturnType<typeof setTimeout> | null = null;
+  /** The session the address bar's link encodes (null: none yet). */
+  private linkedSession: SessionState | null = null;
+
+  /** Keeps the address bar's #s= link in step with the session (a reload keeps the work). */
+  private scheduleLinkUpdate(): void {
+    if (this.linkTimer !== null) clearTimeout(this.linkTimer);
+    this.linkTimer = setTimeout(() => {
+      this.linkTimer = null;
+      void this.writeLink();
+    }, 400);
+  }
+
+  private async writeLink(): Promise<string> {
+    const s = this.history.current;
+    const url = new URL(window.location.href);
+    if (this.linkedSession !== s) {
+      url.hash = await encodeSessionLink(s);
+      if (this.history.current !== s) return url.toString(); // superseded meanwhile
+      window.history.replaceState(null, '', url);
+      this.linkedSession = s;
+    }
+    return window.location.href;
+  }
+
+  /** "Share link": the current session's link, copied to the clipboard when allowed. */
+  async shareLink(): Promise<void> {
+    const href = await this.writeLink();
+    try {
+      await navigator.clipboard.writeText(href);
+      this.notify(`Link copied (${Math.round(href.length / 1024)} KB).`);
+    } catch {
+      this.notify('The link is in the address bar (the clipboard is not available here).');
+    }
+  }
+
+  /** Opens the session a link carries (#s=…); a bad link says why and keeps what is shown. */
+  private async openLink(fragment: string): Promise<void> {
+    if (!fragment.startsWith('#s=')) return;
+    const parsed = await decodeSessionLink(fragment);
+    if (!parsed.ok) {
+      const message = `Could not open the link: ${parsed.error}. Showing the preset instead.`;
+      this.status.set('error', message);
+      this.notify(message); // stays in the status line once the preset's hair is ready
+      return;
+    }
+    const grid = this.history.current.grid;
+    this.history.reset({ ...parsed.value, grid }); // the page's ?grid wins; curves are in world units
+    this.linkedSession = this.history.current;
+    this.selectedId = null;
+    this.applyHairColor();
+    this.toolbar.setHairColor(this.history.current.hairColor);
+    this.notify(`Opened a shared session (${parsed.value.curves.length} curves).`);
+    this.syncSession();
   }
 
   private syncCurvesView(): void {

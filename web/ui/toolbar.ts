@@ -10,6 +10,7 @@ export interface ToolbarActions {
   avoidScalp(): void;
   setViewpoint(): void;
   surfaceMode(): void;
+  share(): void;
 }
 
 export interface Toolbar {
@@ -77,6 +78,11 @@ export function buildToolbar(root: HTMLElement, actions: ToolbarActions): Toolba
   const undo = button('Undo', 'Undo (Ctrl+Z)', actions.undo);
   const redo = button('Redo', 'Redo (Ctrl+Shift+Z)', actions.redo);
   const del = button('Delete', 'Delete the selected curve (Delete)', actions.deleteSelected);
+  const share = button(
+    'Share link',
+    'Copy a link that opens this session (the address bar always holds it too)',
+    actions.share,
+  );
   const colorLabel = document.createElement('label');
   colorLabel.textContent = 'Hair colour';
   const color = document.createElement('input');
@@ -98,6 +104,7 @@ export function buildToolbar(root: HTMLElement, actions: ToolbarActions): Toolba
     del,
     separator(),
     colorLabel,
+    share,
   );
   const tools: Record<string, HTMLButtonElement> = { stream, select, dividing, ponytail };
   return {

@@ -1,0 +1,47 @@
+// Sessions as links: the address bar carries the session, a shared link reopens it, a damaged
+// link says so and keeps the app usable.
+import { expect, test } from '@playwright/test';
+import { settled, strokeFromScalp, watchConsole } from './helpers';
+
+interface SessionJson {
+  curves: { id: string; type: string; points: number[][] }[];
+  hairColor: string;
+}
+
+test('the link in the address bar reopens the session in a new page', async ({ page, context }) => {
+  const errors = watchConsole(page);
+  await page.goto('/?strands=2000');
+  const s0 = await settled(page);
+  await page.getByRole('button', { name: 'Stream curve' }).click();
+  await strokeFromScalp(page, 35, 20, 140, 190);
+  await settled(page, s0.revision);
+  const made = (await page.evaluate(() => window.hairsketch.session())) as SessionJson;
+  expect(made.curves.length).toBe(s0.curves + 1);
+  // The address bar follows the session (debounced); wait for it to carry this one.
+  await page.waitForFunction(() => window.location.hash.startsWith('#s='));
+  await page.getByRole('button', { name: 'Share link' }).click();
+  await expect(page.getByTestId('status')).toContainText('Link');
+  const href = await page.evaluate(() => window.location.href);
+
+  const other = await context.newPage();
+  await other.goto(href);
+  await settled(other);
+  const opened = (await other.evaluate(() => window.hairsketch.session())) as SessionJson;
+  expect(opened.curves.map((c) => c.id)).toEqual(made.curves.map((c) => c.id));
+  const a = made.curves[made.curves.length - 1].points;
+  const b = opened.curves[opened.curves.length - 1].points;
+  expect(b.length).toBe(a.length);
+  for (let i = 0; i < a.length; i++)
+    for (let k = 0; k < 3; k++) expect(Math.abs(b[i][k] - a[i][k])).toBeLessThan(1e-5);
+  expect(await other.evaluate(() => window.hairsketch.session())).toMatchObject({
+    hairColor: made.hairColor,
+  });
+  expect(errors).toEqual([]);
+});
+
+test('a damaged link says what is wrong and the preset still loads', async ({ page }) => {
+  await page.goto('/?strands=2000#s=bm90LWRlZmxhdGU');
+  const s = await settled(page);
+  expect(s.text).toContain('Could not open the link');
+  expect(s.curves).toBeGreaterThan(0); // the default preset
+});

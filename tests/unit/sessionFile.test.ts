@@ -1,0 +1,110 @@
+import { describe, expect, it } from 'vitest';
+import { emptySession, type SessionState } from '../../web/model/session';
+import { decodeSessionLink, encodeSessionLink, parseSession } from '../../web/model/sessionFile';
+
+const vp = {
+  position: [0, 0, 6] as [number, number, number],
+  target: [0, 0, 0] as [number, number, number],
+};
+
+function sample(): SessionState {
+  const s = emptySession('50k');
+  return {
+    ...s,
+    curves: [
+      {
+        id: 'c1',
+        type: 'stream',
+        points: [
+          [0, 1, 0],
+          [0.1, 1.1, 0.05],
+          [0.2, 1.15, 0.1],
+        ],
+        extend: true,
+        viewpoint: vp,
+        surfaceMode: 'strip',
+      },
+      {
+        id: 'c2',
+        type: 'dividing',
+        points: [
+          [0, 1, 0],
+          [0, 1, 0.1],
+        ],
+        normals: [
+          [0, 1, 0],
+          [0, 1, 0],
+        ],
+        viewpoint: vp,
+        sigma: 1,
+        h: 0.5,
+        alpha0: 0.1,
+        alpha1: -0.2,
+      },
+    ],
+    avoid: { index: [3, 7], target: [0, 0.3, 0, 0.3, 0, 0] },
+  };
+}
+
+describe('parseSession', () => {
+  it('accepts a session and gives back the same data', () => {
+    const s = sample();
+    const r = parseSession(JSON.parse(JSON.stringify(s)));
+    expect(r.ok).toBe(true);
+    if (r.ok) expect(r.value).toEqual(s);
+  });
+
+  it('names the field of the first problem', () => {
+    // biome-ignore lint/suspicious/noExplicitAny: edits arbitrary JSON to break it
+    const bad = (edit: (j: any) => void) => {
+      const j = JSON.parse(JSON.stringify(sample()));
+      edit(j);
+      const r = parseSession(j);
+      return r.ok ? 'ok' : r.error;
+    };
+    expect(bad((j) => (j.curves[0].points[1][2] = 'x'))).toBe(
+      'session.curves[0].points[1][2]: must be a finite number',
+    );
+    expect(bad((j) => (j.curves[0].points[1][2] = null))).toMatch(
+      /points\[1\]\[2\]: must be a finite/,
+    );
+    expect(bad((j) => (j.curves[1].type = 'spiral'))).toMatch(/curves\[1\]\.type: must be/);
+    expect(bad((j) => (j.curves[1].normals = [[0, 1, 0]]))).toMatch(/normals/);
+    expect(bad((j) => (j.curves[1].id = 'c1'))).toMatch(/unique/);
+    expect(bad((j) => (j.grid = '1e9'))).toMatch(/session\.grid/);
+    expect(bad((j) => (j.growth.jitter = 5))).toMatch(/growth\.jitter: must be between 0 and 1/);
+    expect(bad((j) => (j.avoid.target = [1]))).toMatch(/session\.avoid/);
+    expect(bad((j) => (j.version = 2))).toMatch(/version/);
+    expect(parseSession(null)).toEqual({ ok: false, error: 'session: must be an object' });
+  });
+});
+
+describe('session links', () => {
+  it('round-trip a session (numbers to 1e-5)', async () => {
+    const s = sample();
+    const link = await encodeSessionLink(s);
+    expect(link).toMatch(/^s=[A-Za-z0-9_-]+$/);
+    const r = await decodeSessionLink(`#${link}`);
+    expect(r.ok).toBe(true);
+    if (r.ok) {
+      expect(r.value.curves.length).toBe(2);
+      expect(r.value.curves[0].points[1][1]).toBeCloseTo(1.1, 5);
+      expect(r.value.avoid).toEqual(s.avoid);
+    }
+  });
+
+  it('say what is wrong with a damaged link', async () => {
+    expect(await decodeSessionLink('#x=1')).toEqual({
+      ok: false,
+      error: 'the link holds no session (#s=…)',
+    });
+    expect((await decodeSessionLink('#s=%%%')) as { error: string }).toMatchObject({
+      error: expect.stringMatching(/base64url/),
+    });
+    expect((await decodeSessionLink('#s=AAAA')) as { error: string }).toMatchObject({
+      error: expect.stringMatching(/damaged/),
+    });
+    const link = await encodeSessionLink(sample());
+    expect((await decodeSessionLink(`#${link.slice(0, link.length - 8)}`)).ok).toBe(false);
+  });
+});
