@@ -1,5 +1,5 @@
 // npm run screenshots — loads each preset in the built app (Debian's Chromium) and saves the
-// 3D view to docs/screenshots/<preset>.png once the final hair is drawn.
+// 3D view to docs/screenshots/<preset>-front.png and -back.png once the final hair is drawn.
 //   npx tsx scripts/screenshots.ts [preset ...]     (default: every preset in PRESET_NAMES)
 import { type ChildProcess, spawn } from 'node:child_process';
 import { mkdirSync } from 'node:fs';
@@ -7,6 +7,11 @@ import http from 'node:http';
 import { chromium } from '@playwright/test';
 import { PRESET_NAMES } from '../web/model/presets';
 
+type V3 = [number, number, number];
+const VIEWS: Array<[string, V3]> = [
+  ['front', [2.6, 0.9, 7.0]],
+  ['back', [-4.2, 1.6, -5.6]],
+];
 const PORT = Number(process.env.SHOT_PORT ?? 4195);
 const BASE = `http://127.0.0.1:${PORT}`;
 
@@ -63,9 +68,15 @@ async function main(): Promise<void> {
         console.error(`${preset}: ${await page.getByTestId('status').textContent()}`);
         process.exitCode = 1;
       }
-      const file = `docs/screenshots/${preset}.png`;
-      await page.getByTestId('viewport').screenshot({ path: file });
-      console.log(`${preset}: ${file}`);
+      // the hair alone (style curves are drawn over everything), from the front and the back
+      await page.getByRole('checkbox', { name: 'Curves' }).uncheck();
+      for (const [view, position] of VIEWS) {
+        await page.evaluate(([p]) => window.hairsketch.setCamera(p, [0, -0.55, 0]), [position]);
+        await page.evaluate(() => window.hairsketch.idle());
+        const file = `docs/screenshots/${preset}-${view}.png`;
+        await page.getByTestId('viewport').screenshot({ path: file });
+        console.log(`${preset}: ${file}`);
+      }
       await page.close();
     }
   } finally {

@@ -47,6 +47,8 @@ export interface HairsketchTestApi {
   ponytailStage(): string;
   /** The spine of the ponytail being built (empty before its first stroke). */
   ponytailSpine(): Vec3[];
+  /** Moves the camera (world position and orbit target). */
+  setCamera(position: Vec3, target: Vec3): void;
   /** The view ray through client coordinates. */
   rayAt(x: number, y: number): { origin: Vec3; direction: Vec3 };
 }
@@ -139,6 +141,7 @@ export function installTestApi(app: App): void {
     },
     select: (id) => app.select(id),
     ponytailStage: () => app.ponytailStage,
+    setCamera: (position, target) => app.viewer.setCamera(position, target),
     rayAt(x, y) {
       const r = app.viewer.rayAt(x, y);
       return {
