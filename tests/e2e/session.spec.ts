@@ -45,3 +45,40 @@ test('a damaged link says what is wrong and the preset still loads', async ({ pa
   expect(s.text).toContain('Could not open the link');
   expect(s.curves).toBeGreaterThan(0); // the default preset
 });
+
+test('Save writes a session file that Open reads back; a bad file changes nothing', async ({
+  page,
+}) => {
+  await page.goto('/?strands=2000&preset=fig7');
+  const s0 = await settled(page);
+  const made = (await page.evaluate(() => window.hairsketch.session())) as SessionJson;
+  const [download] = await Promise.all([
+    page.waitForEvent('download'),
+    page.getByRole('button', { name: 'Save' }).click(),
+  ]);
+  const file = await download.path();
+
+  await page.goto('/?strands=2000&preset=empty');
+  const e0 = await settled(page);
+  expect(e0.curves).toBe(0);
+  await page.locator('input[type=file]').setInputFiles({
+    name: 'bad.json',
+    mimeType: 'application/json',
+    buffer: Buffer.from('{"version": 1, "curves": [{"id": "c1", "type": "spiral"}]}'),
+  });
+  await expect(page.getByTestId('status')).toContainText('Could not open bad.json');
+  expect((await page.evaluate(() => window.hairsketch.session())) as SessionJson).toMatchObject({
+    curves: [],
+  });
+
+  await page.locator('input[type=file]').setInputFiles(file);
+  const opened = await settled(page, e0.revision);
+  expect(opened.curves).toBe(s0.curves);
+  const got = (await page.evaluate(() => window.hairsketch.session())) as SessionJson;
+  expect(got.curves).toEqual(made.curves);
+  // the hair equals the original page's: the same curves and seed grow the same strands
+  expect(opened.strands).toBe(s0.strands);
+  await page.getByRole('button', { name: 'Undo' }).click();
+  const undone = await settled(page, opened.revision);
+  expect(undone.curves).toBe(0);
+});

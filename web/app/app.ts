@@ -186,6 +186,8 @@ export class App {
       setViewpoint: () => this.setViewpoint(),
       surfaceMode: () => this.toggleSurfaceMode(),
       share: () => void this.shareLink(),
+      saveFile: () => this.saveFile(),
+      openFile: (f) => void this.openFile(f),
     });
     this.panel = buildCurvePanel(document.getElementById('stage') as HTMLElement, (id, patch) =>
       this.patchCurve(id, patch),
@@ -591,6 +593,46 @@ export class App {
     }
   }
 
+  /** "Save": the session (and the camera) as a JSON file download. */
+  saveFile(): void {
+    const json = JSON.stringify({ ...this.history.current, camera: this.viewer.cameraState() });
+    const a = document.createElement('a');
+    a.href = URL.createObjectURL(new Blob([json], { type: 'application/json' }));
+    a.download = 'hairstyle.hairsketch.json';
+    a.click();
+    setTimeout(() => URL.revokeObjectURL(a.href), 10_000);
+    this.notify(`Saved the session (${this.history.current.curves.length} curves).`);
+  }
+
+  /** "Open": a session file replaces the session (undoable); a bad file says why, changes nothing. */
+  async openFile(file: File): Promise<void> {
+    if (file.size > 64 << 20) {
+      this.notify(`Could not open ${file.name}: larger than 64 MB.`);
+      return;
+    }
+    let data: unknown;
+    try {
+      data = JSON.parse(await file.text());
+    } catch {
+      this.notify(`Could not open ${file.name}: not JSON. Nothing changed.`);
+      return;
+    }
+    const parsed = parseSession(data);
+    if (!parsed.ok) {
+      this.notify(`Could not open ${file.name}: ${parsed.error}. Nothing changed.`);
+      return;
+    }
+    this.history.push({ ...parsed.value, grid: this.history.current.grid });
+    this.selectedId = null;
+    const cam = (data as { camera?: { position?: unknown; target?: unknown } }).camera;
+    if (cam && isVec3(cam.position) && isVec3(cam.target))
+      this.viewer.setCamera(cam.position, cam.target);
+    this.applyHairColor();
+    this.toolbar.setHairColor(this.history.current.hairColor);
+    this.notify(`Opened ${file.name} (${parsed.value.curves.length} curves).`);
+    this.syncSession();
+  }
+
   /** Opens the session a link carries (#s=…); a bad link says why and keeps what is shown. */
   private async openLink(fragment: string): Promise<void> {
     if (!fragment.startsWith('#s=')) return;
@@ -839,6 +881,12 @@ export class App {
       } else if (mod && key === 'y') {
         e.preventDefault();
         this.redo();
+      } else if (mod && key === 's') {
+        e.preventDefault();
+        this.saveFile();
+      } else if (mod && key === 'o') {
+        e.preventDefault();
+        this.toolbar.openFileDialog();
       } else if (!mod && (e.key === 'Delete' || e.key === 'Backspace')) {
         this.deleteSelected();
       } else if (!mod && key === 's') {
@@ -888,6 +936,10 @@ export class App {
 /** What the supporting surface of a curve is built from: its points, its own viewpoint and its
  *  mode (its `surfaceMode` where the curve model stores one, else the ruled surface); null for a
  *  curve without a viewpoint (e.g. a dividing curve, drawn on the scalp) or with < 2 points. */
+function isVec3(v: unknown): v is Vec3 {
+  return Array.isArray(v) && v.length === 3 && v.every((x) => Number.isFinite(x));
+}
+
 function scalpMessage(head: {
   positions: Float32Array;
   indices: Uint32Array;

@@ -11,6 +11,8 @@ export interface ToolbarActions {
   setViewpoint(): void;
   surfaceMode(): void;
   share(): void;
+  saveFile(): void;
+  openFile(file: File): void;
 }
 
 export interface Toolbar {
@@ -24,6 +26,7 @@ export interface Toolbar {
     avoid: boolean;
   }): void;
   setHairColor(css: string): void;
+  openFileDialog(): void;
 }
 
 function button(label: string, title: string, onClick: () => void): HTMLButtonElement {
@@ -83,6 +86,17 @@ export function buildToolbar(root: HTMLElement, actions: ToolbarActions): Toolba
     'Copy a link that opens this session (the address bar always holds it too)',
     actions.share,
   );
+  const save = button('Save', 'Save the session as a JSON file (Ctrl+S)', actions.saveFile);
+  const picker = document.createElement('input');
+  picker.type = 'file';
+  picker.accept = '.json,application/json';
+  picker.hidden = true;
+  picker.addEventListener('change', () => {
+    const f = picker.files?.[0];
+    picker.value = '';
+    if (f) actions.openFile(f);
+  });
+  const open = button('Open', 'Open a session JSON file (Ctrl+O)', () => picker.click());
   const colorLabel = document.createElement('label');
   colorLabel.textContent = 'Hair colour';
   const color = document.createElement('input');
@@ -104,7 +118,11 @@ export function buildToolbar(root: HTMLElement, actions: ToolbarActions): Toolba
     del,
     separator(),
     colorLabel,
+    separator(),
     share,
+    save,
+    open,
+    picker,
   );
   const tools: Record<string, HTMLButtonElement> = { stream, select, dividing, ponytail };
   return {
@@ -122,6 +140,9 @@ export function buildToolbar(root: HTMLElement, actions: ToolbarActions): Toolba
     },
     setHairColor(css) {
       color.value = css;
+    },
+    openFileDialog() {
+      picker.click();
     },
   };
 }
