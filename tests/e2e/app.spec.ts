@@ -1,6 +1,6 @@
 // End to end in Debian's Chromium: real pointer events, waits on the status attributes only.
 import { expect, type Page, test } from '@playwright/test';
-import { settled, status, strokeFromScalp, watchConsole } from './helpers';
+import { settled, status, strokeFromScalp, visibleCurvePoint, watchConsole } from './helpers';
 
 const SCENE = '/?strands=2500'; // SwiftShader renders slowly: a small strand count keeps it quick
 
@@ -105,17 +105,7 @@ test('a selected curve can be deleted, and a crashed worker is restarted with th
   const s0 = await settled(page);
   await page.getByRole('button', { name: 'Select' }).click();
   // Click on the middle of a visible curve.
-  const target = await page.evaluate(() => {
-    const s = window.hairsketch.session() as {
-      curves: { id: string; points: [number, number, number][] }[];
-    };
-    for (const c of s.curves) {
-      const p = window.hairsketch.worldToScreen(c.points[Math.floor(c.points.length / 2)]);
-      if (p) return { id: c.id, ...p };
-    }
-    return null;
-  });
-  if (!target) throw new Error('no curve on screen');
+  const target = await visibleCurvePoint(page);
   await page.mouse.click(target.x, target.y);
   await expect(page.getByRole('button', { name: 'Delete' })).toBeEnabled();
   await page.getByRole('button', { name: 'Delete' }).click();

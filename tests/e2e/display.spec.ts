@@ -1,20 +1,13 @@
 // Display toggles (SPEC S6.2) end to end: real clicks on the checkboxes and the 1–5 shortcuts,
 // checked through window.hairsketch.display() / displayInfo(), with the app staying ready.
 import { expect, type Page, test } from '@playwright/test';
+import { settled, visibleCurvePoint, watchConsole } from './helpers';
 
 const SCENE = '/?strands=2000'; // SwiftShader renders slowly: a small strand count keeps it quick
 
-/** Waits until the status says ready (optionally with a hair revision past `after`) and idle. */
-async function ready(page: Page, after = -1): Promise<number> {
-  await page.waitForFunction((rev) => {
-    const el = document.querySelector('[data-testid="status"]') as HTMLElement | null;
-    return !!el && el.dataset.state === 'ready' && Number(el.dataset.revision) > rev;
-  }, after);
-  await page.evaluate(() => window.hairsketch.idle());
-  return page
-    .getByTestId('status')
-    .evaluate((el: HTMLElement) => Number(el.dataset.revision ?? '0'));
-}
+/** Waits until the app is ready and idle with a hair revision past `after`; its revision. */
+const ready = async (page: Page, after = -1): Promise<number> =>
+  (await settled(page, after)).revision;
 
 const display = (page: Page) => page.evaluate(() => window.hairsketch.display());
 const info = (page: Page) => page.evaluate(() => window.hairsketch.displayInfo());
@@ -22,11 +15,7 @@ const info = (page: Page) => page.evaluate(() => window.hairsketch.displayInfo()
 test('each display toggle switches with a click and with its shortcut, and the app stays ready', async ({
   page,
 }) => {
-  const errors: string[] = [];
-  page.on('console', (m) => {
-    if (m.type() === 'error') errors.push(m.text());
-  });
-  page.on('pageerror', (e) => errors.push(String(e)));
+  const errors = watchConsole(page);
   await page.goto(SCENE);
   let rev = await ready(page);
   expect(await display(page)).toEqual({
@@ -63,17 +52,7 @@ test('each display toggle switches with a click and with its shortcut, and the a
   expect((await display(page)).surface).toBe(true);
   expect((await info(page)).surfaceTriangles).toBe(0);
   await page.getByRole('button', { name: 'Select' }).click();
-  const target = await page.evaluate(() => {
-    const s = window.hairsketch.session() as {
-      curves: { id: string; points: [number, number, number][] }[];
-    };
-    for (const c of s.curves) {
-      const p = window.hairsketch.worldToScreen(c.points[Math.floor(c.points.length / 2)]);
-      if (p) return { id: c.id, ...p };
-    }
-    return null;
-  });
-  if (!target) throw new Error('no curve on screen');
+  const target = await visibleCurvePoint(page);
   await page.mouse.click(target.x, target.y);
   await expect(page.getByRole('button', { name: 'Delete' })).toBeEnabled();
   const tris = (await info(page)).surfaceTriangles;

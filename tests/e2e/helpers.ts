@@ -59,3 +59,19 @@ export async function strokeFromScalp(
     await page.mouse.move(start.x + (dx * i) / n, start.y + (dy * i) / n);
   await page.mouse.up();
 }
+
+/** Client coordinates of the middle point of the first style curve on screen, and its id. */
+export async function visibleCurvePoint(page: Page): Promise<{ id: string; x: number; y: number }> {
+  const target = await page.evaluate(() => {
+    const s = window.hairsketch.session() as {
+      curves: { id: string; points: [number, number, number][] }[];
+    };
+    for (const c of s.curves) {
+      const p = window.hairsketch.worldToScreen(c.points[Math.floor(c.points.length / 2)]);
+      if (p) return { id: c.id, ...p };
+    }
+    return null;
+  });
+  if (!target) throw new Error('no curve on screen');
+  return target;
+}
