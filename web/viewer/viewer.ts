@@ -16,6 +16,8 @@ export interface CurveView {
 const INTERACTIVE_FRAME_MS = 40;
 const SLOW_FRAME_MS = 60;
 const FAST_FRAME_MS = 25;
+/** Resolution of interactive frames that stay slow with little hair, relative to the display. */
+const INTERACTIVE_RESOLUTION = 0.5;
 /** Index entries (2 per segment) an interactive frame may always draw: ~250 strands. */
 const MIN_HAIR_BUDGET = 30_000;
 
@@ -34,6 +36,8 @@ export class Viewer {
   private draft: THREE.Line | null = null;
   private hair: THREE.LineSegments | null = null;
   private dirty = true;
+  /** WebGL runs on a software rasteriser (no GPU). */
+  readonly software: boolean;
   /** Reasons the view is interactive now (e.g. 'orbit', 'stroke', 'settling'). */
   private readonly holds = new Set<string>();
   /** Hair index count an interactive frame may draw (Infinity until a slow frame is seen). */
@@ -45,12 +49,15 @@ export class Viewer {
   onRendered: (() => void) | null = null;
 
   constructor(readonly canvas: HTMLCanvasElement) {
+    // Multisampling costs ~2x per frame on a software rasteriser (SwiftShader, llvmpipe), where
+    // frame time, not the solver, bounds interactivity: it is on only for a hardware GPU.
+    this.software = isSoftwareGl();
     this.renderer = new THREE.WebGLRenderer({
       canvas,
-      antialias: true,
+      antialias: !this.software,
       preserveDrawingBuffer: true,
     });
-    this.renderer.setPixelRatio(Math.min(window.devicePixelRatio || 1, 2));
+    this.renderer.setPixelRatio(basePixelRatio());
     this.renderer.setClearColor(0xe9edf2, 1);
     this.camera = new THREE.PerspectiveCamera(35, 1, 0.05, 100);
     this.controls = new OrbitControls(this.camera, canvas);
@@ -106,7 +113,19 @@ export class Viewer {
     const had = this.holds.size > 0;
     if (on) this.holds.add(reason);
     else this.holds.delete(reason);
-    if (had !== this.holds.size > 0) this.requestRender();
+    if (had !== this.holds.size > 0) {
+      if (!on) this.setResolutionScale(1); // the settled view in full resolution
+      this.requestRender();
+    }
+  }
+
+  /** Drawing-buffer resolution relative to the display's (interactive frames may lower it). */
+  private resolutionScale = 1;
+
+  private setResolutionScale(scale: number): void {
+    if (scale === this.resolutionScale) return;
+    this.resolutionScale = scale;
+    this.renderer.setPixelRatio(basePixelRatio() * scale);
   }
 
   /** Fraction of the hair's segments the last frame drew (1 = all). */
@@ -137,6 +156,14 @@ export class Viewer {
   }
 
   private adaptBudget(frameMs: number, drawn: number): void {
+    // Interactive frames still slow with the hair at its floor: the cost is per pixel (a software
+    // rasteriser, a large screen), so draw them at half resolution until the view settles.
+    if (
+      this.holds.size > 0 &&
+      frameMs > SLOW_FRAME_MS &&
+      (drawn <= MIN_HAIR_BUDGET || this.hairBudget <= MIN_HAIR_BUDGET)
+    )
+      this.setResolutionScale(INTERACTIVE_RESOLUTION);
     if (drawn <= 0) return;
     if (frameMs > SLOW_FRAME_MS) {
       // cost scales with segments drawn: aim at the interactive frame time
@@ -275,6 +302,21 @@ export class Viewer {
     this.camera.updateProjectionMatrix();
     this.requestRender();
   }
+}
+
+function basePixelRatio(): number {
+  return Math.min(window.devicePixelRatio || 1, 2);
+}
+
+/** Whether WebGL here is a software rasteriser, from the unmasked renderer string of a probe
+ *  context (released at once). */
+function isSoftwareGl(): boolean {
+  const gl = document.createElement('canvas').getContext('webgl2');
+  if (!gl) return false;
+  const info = gl.getExtension('WEBGL_debug_renderer_info');
+  const name = String(gl.getParameter(info ? info.UNMASKED_RENDERER_WEBGL : gl.RENDERER));
+  gl.getExtension('WEBGL_lose_context')?.loseContext();
+  return /swiftshader|llvmpipe|softpipe|software/i.test(name);
 }
 
 // Line materials are shared and never disposed: a disposed material releases its shader program,
