@@ -149,6 +149,7 @@ async function main(): Promise<void> {
         continue;
       }
       await page.getByRole('button', { name: 'Stream curve' }).click();
+      await page.evaluate(() => window.hairsketch.idle());
       const strokes: StrokeResult[] = [];
       for (let i = 0; i < STROKES; i++) strokes.push(await stroke(page, i));
       const heap = await page.evaluate(() => window.hairsketch.heapBytes());

@@ -16,6 +16,7 @@ export class StatusLine {
     this.state = state;
     this.el.dataset.state = state;
     this.el.textContent = text;
+    this.el.title = text; // the whole sentence when the line is clamped
   }
 
   counts(strands: number, curves: number): void {
@@ -32,5 +33,6 @@ export class StatusLine {
 
   hint(text: string): void {
     this.hintEl.textContent = text;
+    this.hintEl.title = text;
   }
 }
