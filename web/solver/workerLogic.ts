@@ -33,7 +33,7 @@ export interface SchedulerOptions {
 
 export const DEFAULT_SCHEDULER: SchedulerOptions = {
   tolerance: 1e-6,
-  firstLookIterations: 4,
+  firstLookIterations: 2,
   sliceIterations: 4,
   previewIterations: 3,
   previewMaxStrands: 6000,
