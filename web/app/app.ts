@@ -566,7 +566,8 @@ export class App {
     if (this.linkTimer !== null) clearTimeout(this.linkTimer);
     this.linkTimer = setTimeout(() => {
       this.linkTimer = null;
-      void this.writeLink();
+      // links need CompressionStream; without it the address bar just does not follow
+      this.writeLink().catch(() => {});
     }, 400);
   }
 
@@ -584,7 +585,13 @@ export class App {
 
   /** "Share link": the current session's link, copied to the clipboard when allowed. */
   async shareLink(): Promise<void> {
-    const href = await this.writeLink();
+    let href: string;
+    try {
+      href = await this.writeLink();
+    } catch {
+      this.notify('This browser cannot make session links (no CompressionStream); use Save.');
+      return;
+    }
     try {
       await navigator.clipboard.writeText(href);
       this.notify(`Link copied (${Math.round(href.length / 1024)} KB).`);
