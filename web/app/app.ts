@@ -20,6 +20,7 @@ import {
   type StyleCurve,
   setAvoid,
   updateCurve,
+  type Viewpoint,
 } from '../model/session';
 import { decodeSessionLink, encodeSessionLink, parseSession } from '../model/sessionFile';
 import { buildSupportingSurface, type SupportingSurface } from '../model/supportingSurface';
@@ -301,11 +302,8 @@ export class App {
   }
 
   private commitDividing(points: Vec3[], normals: Vec3[]): void {
-    const s = this.history.current;
-    const id = nextCurveId(s);
-    const { position, target } = this.viewer.cameraState();
-    this.history.push(
-      addCurve(s, {
+    this.addNewCurve(
+      (id, viewpoint) => ({
         id,
         type: 'dividing',
         points,
@@ -314,12 +312,10 @@ export class App {
         h: 0.5,
         alpha0: 0,
         alpha1: 0,
-        viewpoint: { position, target },
+        viewpoint,
       }),
+      `dividing curve {id} (${points.length - 1} segments)`,
     );
-    this.selectedId = id;
-    this.notify(`Added dividing curve ${id} (${points.length - 1} segments).`);
-    this.syncSession();
   }
 
   private setTilt(end: 'alpha0' | 'alpha1', alpha: number, side: 1 | -1): void {
@@ -333,25 +329,20 @@ export class App {
   }
 
   private commitPonytail(p: PonytailDraft): void {
-    const s = this.history.current;
-    const id = nextCurveId(s);
-    const { position, target } = this.viewer.cameraState();
-    this.history.push(
-      addCurve(s, {
+    this.addNewCurve(
+      (id, viewpoint) => ({
         id,
         type: 'ponytail',
         points: p.spine,
         extend: true,
-        viewpoint: { position, target },
+        viewpoint,
         crossSection: p.crossSection,
         profiles: p.profiles,
         circles: p.circles,
         tightness: DEFAULT_TIGHTNESS,
       }),
+      `ponytail {id} (${p.circles.length} circles)`,
     );
-    this.selectedId = id;
-    this.notify(`Added ponytail ${id} (${p.circles.length} circles).`);
-    this.syncSession();
   }
 
   setViewpoint(): void {
@@ -405,17 +396,23 @@ export class App {
     }
   }
 
-  private commitStreamCurve(points: Vec3[]): void {
-    this.previewing = false;
+  /** Adds a new curve (given its id and the current view as viewpoint), selects it, re-solves. */
+  private addNewCurve(make: (id: string, viewpoint: Viewpoint) => StyleCurve, what: string): void {
     const s = this.history.current;
     const id = nextCurveId(s);
     const { position, target } = this.viewer.cameraState();
-    this.history.push(
-      addCurve(s, { id, type: 'stream', points, extend: true, viewpoint: { position, target } }),
-    );
+    this.history.push(addCurve(s, make(id, { position, target })));
     this.selectedId = id;
-    this.notify(`Added stream curve ${id} (${points.length - 1} segments).`);
+    this.notify(`Added ${what.replace('{id}', id)}.`);
     this.syncSession();
+  }
+
+  private commitStreamCurve(points: Vec3[]): void {
+    this.previewing = false;
+    this.addNewCurve(
+      (id, viewpoint) => ({ id, type: 'stream', points, extend: true, viewpoint }),
+      `stream curve {id} (${points.length - 1} segments)`,
+    );
   }
 
   /** Live preview while drawing: the session's curves plus the stroke so far, solved coarsely.
