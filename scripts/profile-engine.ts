@@ -2,29 +2,22 @@
 // Node with the real wasm module, starting from the default preset plus one extra stroke.
 // Usage: npx tsx scripts/profile-engine.ts [25k|50k|100k|250k] [fast|exact|cg]
 import { readFileSync } from 'node:fs';
-import * as THREE from 'three';
-import { buildHead } from '../web/head/buildHead';
+import { Head } from '../web/head/head';
 import { packCurves } from '../web/model/curveSet';
 import { gridForPreset, isGridPreset } from '../web/model/grid';
 import { presetCurves } from '../web/model/presets';
 import { DEFAULT_GROWTH } from '../web/model/session';
 import type { SolverName } from '../web/solver/protocol';
 import { loadSolverEngine } from '../web/solver/wasmEngine';
-import { HeadPicker } from '../web/viewer/headPicker';
 
 const gridName = process.argv[2] ?? '25k';
 const solver = (process.argv[3] ?? 'fast') as SolverName;
 if (!isGridPreset(gridName)) throw new Error(`unknown grid ${gridName}`);
 const t = () => performance.now();
-const head = buildHead();
-const geo = new THREE.BufferGeometry();
-geo.setAttribute('position', new THREE.BufferAttribute(head.positions, 3));
-geo.setIndex(new THREE.BufferAttribute(head.indices, 1));
-const picker = new HeadPicker(geo, head);
+const head = Head.builtin();
 const grid = gridForPreset(gridName);
 const curves = presetCurves('default', {
-  headPoint: (a, b) => picker.scalpPoint(a, b)?.point ?? null,
-  center: head.center,
+  head,
   step: grid.step,
   viewpoint: { position: [0, 0, 6], target: [0, 0, 0] },
 });
@@ -34,10 +27,7 @@ const engine = await loadSolverEngine({
 let s = t();
 engine.setGrid(grid, 100, solver);
 engine.setScalp({
-  positions: head.positions,
-  indices: head.indices,
-  scalp: head.scalp,
-  center: head.center,
+  ...head.scalpMesh(),
 });
 console.log(`setGrid+setScalp ${(t() - s).toFixed(0)} ms`);
 const run = (label: string, set: typeof curves) => {

@@ -1,7 +1,7 @@
-import { App } from './app/app';
+import { startApp } from './app/app';
 
 try {
-  new App();
+  startApp();
 } catch (e) {
   const status = document.getElementById('status');
   if (status) {

@@ -1,7 +1,8 @@
 // The built-in head (SPEC S1.1): a closed, outward-oriented mesh in the agreed frame, with a
 // recognisable face, ears, neck and a scalp region that rays from the centre cross once.
 import { beforeAll, describe, expect, it } from 'vitest';
-import { buildHead, type HeadModel } from '../../web/head/buildHead';
+import { buildHead } from '../../web/head/buildHead';
+import type { HeadMesh } from '../../web/head/head';
 import {
   hairlineTheta,
   isScalpDirection,
@@ -10,7 +11,7 @@ import {
 } from '../../web/head/scalpRegion';
 
 const DEG = Math.PI / 180;
-let head: HeadModel;
+let head: HeadMesh;
 
 beforeAll(() => {
   head = buildHead();

@@ -1,24 +1,17 @@
 // The paper's presets, sketched in code: the kinds and counts of curves of each figure, every
 // curve well formed (segments of one grid step, finite, on or above the head), and packable.
-import * as THREE from 'three';
 import { describe, expect, it } from 'vitest';
-import { buildHead } from '../../web/head/buildHead';
+import { Head } from '../../web/head/head';
 import { headSdf } from '../../web/head/headSdf';
 import { packCurves } from '../../web/model/curveSet';
 import { gridForPreset } from '../../web/model/grid';
 import { type PresetName, presetCurves } from '../../web/model/presets';
 import { distance, type Vec3 } from '../../web/model/vec3';
-import { HeadPicker } from '../../web/viewer/headPicker';
 
-const head = buildHead();
-const geometry = new THREE.BufferGeometry();
-geometry.setAttribute('position', new THREE.BufferAttribute(head.positions, 3));
-geometry.setIndex(new THREE.BufferAttribute(head.indices, 1));
-const picker = new HeadPicker(geometry, head);
+const head = Head.builtin();
 const step = gridForPreset('25k').step;
 const ctx = {
-  headPoint: (t: number, p: number) => picker.scalpPoint(t, p)?.point ?? null,
-  center: head.center,
+  head,
   step,
   viewpoint: { position: [0, 0, 7] as Vec3, target: [0, 0, 0] as Vec3 },
 };

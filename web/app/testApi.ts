@@ -1,9 +1,15 @@
 // window.hairsketch: the hooks automated browser tests use (README, "Test contract").
-import { headSdf } from '../head/headSdf';
+import type { Editor } from '../editor/editor';
+import type { Head } from '../head/head';
 import { contentKey } from '../model/curveSet';
 import type { Vec3 } from '../model/vec3';
+import type { PonytailTool } from '../tools/ponytailTool';
 import type { DisplayState } from '../ui/displayToggles';
-import type { App } from './app';
+import type { Viewer } from '../viewer/viewer';
+import type { HairPresenter } from './hairPresenter';
+import type { OverlayPresenter } from './overlayPresenter';
+import { loadSession } from './sessionIO';
+import type { SolverBridge } from './solverBridge';
 
 export interface HairsketchTestApi {
   scalpToScreen(thetaDeg: number, phiDeg: number): { x: number; y: number } | null;
@@ -32,7 +38,8 @@ export interface HairsketchTestApi {
   /** The displayed strands as plain arrays (layout of protocol.ts StrandArrays). */
   strands(): { points: number[]; strandStart: number[] } | null;
   /** Displayed strand segments with a point (either end or the middle) deeper than `depth`
-   *  world units inside the head (built-in head's signed distance), and the deepest value. */
+   *  world units inside the head (Head.signedDistance: exact for the built-in head), and the
+   *  deepest value. */
   segmentsInsideHead(depth: number): {
     inside: number;
     segments: number;
@@ -59,41 +66,56 @@ declare global {
   }
 }
 
-export function installTestApi(app: App): void {
+/** The parts of the app the hooks read. */
+export interface TestApiParts {
+  editor: Editor;
+  head: Head;
+  viewer: Viewer;
+  bridge: SolverBridge;
+  hair: HairPresenter;
+  overlays: OverlayPresenter;
+  ponytail: PonytailTool;
+  /** Work is pending (a solve, an avoidance request, a stroke being drawn). */
+  busy(): boolean;
+  lastPointerUp(): number;
+}
+
+export function installTestApi(app: TestApiParts): void {
+  const { editor, head, viewer, hair } = app;
   window.hairsketch = {
     scalpToScreen(thetaDeg, phiDeg) {
-      const hit = app.picker.scalpPoint(thetaDeg, phiDeg);
-      if (!hit?.scalp || !app.visible(hit.point)) return null;
-      return app.viewer.worldToScreen(hit.point);
+      const hit = head.scalpPoint(thetaDeg, phiDeg);
+      if (!hit?.scalp || !head.visibleFrom(viewer.eye(), hit.point)) return null;
+      return viewer.worldToScreen(hit.point);
     },
-    worldToScreen: (p) => app.viewer.worldToScreen(p),
+    worldToScreen: (p) => viewer.worldToScreen(p),
     session: () =>
       JSON.parse(
         JSON.stringify({
-          ...app.history.current,
-          camera: app.viewer.cameraState(),
-          selected: app.selectedId,
+          ...editor.session,
+          camera: viewer.cameraState(),
+          selected: editor.selectedId,
         }),
       ),
     idle: () =>
       new Promise<void>((resolve) => {
         const check = () => {
-          if (!app.busy && !app.viewer.renderPending) resolve();
+          if (!app.busy() && !viewer.renderPending) resolve();
           else requestAnimationFrame(check);
         };
         check();
       }),
     hairHash() {
-      const s = app.displayedStrands();
+      const s = hair.strands;
       return s ? contentKey(s.points, s.strandStart) : null;
     },
-    crashWorker: () => app.client.crash(),
-    hairLog: () => app.hairLog.slice(),
-    lastPointerUp: () => app.lastPointerUp,
-    heapBytes: () => app.heapBytes,
-    hairDetail: () => app.viewer.hairDetail,
+    crashWorker: () => app.bridge.crash(),
+    hairLog: () => hair.log.slice(),
+    lastPointerUp: () => app.lastPointerUp(),
+    heapBytes: () => hair.heapBytes,
+    hairDetail: () => viewer.hairDetail,
     strandEnds() {
-      const s = app.displayedStrands();
+      const s = hair.strands;
       if (!s) return [];
       const out: number[] = [];
       for (let i = 0; i + 1 < s.strandStart.length; i++) {
@@ -103,15 +125,18 @@ export function installTestApi(app: App): void {
       }
       return out;
     },
-    replaceSession: (session) => app.replaceSession(session),
-    display: () => ({ ...app.display }),
-    displayInfo: () => app.displayInfo(),
+    replaceSession(session) {
+      const r = loadSession(editor, session, { kind: 'test' });
+      if (!r.ok) throw new Error(`replaceSession: ${r.error}`);
+    },
+    display: () => ({ ...app.overlays.display }),
+    displayInfo: () => app.overlays.info(),
     strands() {
-      const s = app.displayedStrands();
+      const s = hair.strands;
       return s ? { points: Array.from(s.points), strandStart: Array.from(s.strandStart) } : null;
     },
     segmentsInsideHead(depth) {
-      const s = app.displayedStrands();
+      const s = hair.strands;
       let inside = 0;
       let segments = 0;
       let deepest = Number.POSITIVE_INFINITY;
@@ -119,17 +144,18 @@ export function installTestApi(app: App): void {
       let deepestRoot = Number.POSITIVE_INFINITY;
       if (!s) return { inside, segments, deepest, atRoot, deepestRoot };
       const P = s.points;
-      const sdf = (k: number) => headSdf(P[3 * k], P[3 * k + 1], P[3 * k + 2]);
+      const sd = (x: number, y: number, z: number) => head.signedDistance([x, y, z]);
+      const at = (k: number) => sd(P[3 * k], P[3 * k + 1], P[3 * k + 2]);
       for (let i = 0; i + 1 < s.strandStart.length; i++) {
-        deepestRoot = Math.min(deepestRoot, sdf(s.strandStart[i]));
+        deepestRoot = Math.min(deepestRoot, at(s.strandStart[i]));
         for (let k = s.strandStart[i]; k + 1 < s.strandStart[i + 1]; k++) {
           segments++;
-          const mid = headSdf(
+          const mid = sd(
             (P[3 * k] + P[3 * k + 3]) / 2,
             (P[3 * k + 1] + P[3 * k + 4]) / 2,
             (P[3 * k + 2] + P[3 * k + 5]) / 2,
           );
-          const d = Math.min(sdf(k), sdf(k + 1), mid);
+          const d = Math.min(at(k), at(k + 1), mid);
           deepest = Math.min(deepest, d);
           if (d < -depth) {
             inside++;
@@ -139,16 +165,16 @@ export function installTestApi(app: App): void {
       }
       return { inside, segments, deepest, atRoot, deepestRoot };
     },
-    select: (id) => app.select(id),
-    ponytailStage: () => app.ponytailStage,
-    setCamera: (position, target) => app.viewer.setCamera(position, target),
+    select: (id) => editor.select(id),
+    ponytailStage: () => app.ponytail.stage,
+    setCamera: (position, target) => viewer.setCamera(position, target),
     rayAt(x, y) {
-      const r = app.viewer.rayAt(x, y);
+      const r = viewer.rayAt(x, y);
       return {
         origin: [r.origin.x, r.origin.y, r.origin.z],
         direction: [r.direction.x, r.direction.y, r.direction.z],
       };
     },
-    ponytailSpine: () => app.ponytailSpine.map((p) => [...p] as Vec3),
+    ponytailSpine: () => app.ponytail.spinePoints.map((p) => [...p] as Vec3),
   };
 }

@@ -3,19 +3,10 @@
 // scalp flag per triangle. World units ≈ 10 cm; y up; the face looks toward +z; +x is the head's
 // left; the scalp-parameterisation centre is the origin.
 
+import type { HeadMesh } from './head';
 import { HeadPart, headPartAt, headSdf } from './headSdf';
 import { markScalpTriangles } from './scalpRegion';
 import { sampleField, surfaceNets, type TriangleMesh } from './surfaceNets';
-
-export interface HeadModel {
-  positions: Float32Array; // positions[3 * vertex + axis], world units
-  normals: Float32Array; // normals[3 * vertex + axis], unit, outward
-  indices: Uint32Array; // indices[3 * triangle + corner], counter-clockwise seen from outside
-  scalp: Uint8Array; // scalp[triangle] = 1 on the hair-bearing region
-  parts: Uint8Array; // parts[vertex]: a HeadPart value (skin, eye, lips), for colouring
-  center: [number, number, number]; // origin of the scalp parameterisation (S5.1)
-  bounds: { min: [number, number, number]; max: [number, number, number] };
-}
 
 export interface BuildHeadOptions {
   /** Grid cells per world unit (10 cm) of the polygonisation; default 24 (≈ 30K triangles). */
@@ -28,7 +19,7 @@ export { HeadPart };
 const BOX_MIN: [number, number, number] = [-1.05, -2.75, -1.2];
 const BOX_MAX: [number, number, number] = [1.05, 1.15, 1.5];
 
-export function buildHead(options: BuildHeadOptions = {}): HeadModel {
+export function buildHead(options: BuildHeadOptions = {}): HeadMesh {
   const resolution = options.resolution ?? 24;
   if (!(resolution >= 4 && resolution <= 200)) throw new Error(`bad resolution ${resolution}`);
   const step = 1 / resolution;

@@ -3,6 +3,7 @@
 // (0 = top of the head), φ = 0 toward +z (the face), φ = 90° toward +x (the head's left); the
 // direction is (sinθ sinφ, cosθ, sinθ cosφ). The hairline is θ_max(|φ|): a direction is scalp
 // when θ < θ_max(|φ|).
+import type { TriangleSoup } from './head';
 
 const DEG = Math.PI / 180;
 
@@ -64,15 +65,10 @@ export function isScalpPoint(
   return isScalpDirection(theta, phi);
 }
 
-export interface MeshArrays {
-  positions: Float32Array; // positions[3 * vertex + axis]
-  indices: Uint32Array; // indices[3 * triangle + corner]
-}
-
 /** Mark triangles (1 = scalp) whose centroid lies in a scalp direction from `center` and whose
  *  outward normal faces away from the centre (so inner folds are never scalp). */
 export function markScalpTriangles(
-  mesh: MeshArrays,
+  mesh: TriangleSoup,
   center: readonly [number, number, number] = [0, 0, 0],
 ): Uint8Array {
   const { positions: P, indices: I } = mesh;
@@ -105,7 +101,7 @@ export function markScalpTriangles(
 /** Scalp of a user-loaded head (SPEC S1.1): triangles whose centroid lies on the side of the
  *  plane that `planeNormal` points to. The normal need not be unit. */
 export function scalpFromPlane(
-  mesh: MeshArrays,
+  mesh: TriangleSoup,
   planePoint: readonly [number, number, number],
   planeNormal: readonly [number, number, number],
 ): Uint8Array {

@@ -2,12 +2,9 @@
 // dividing block needs, the local frames (the same formulas as solver-cpp/src/
 // dividing_constraints.hpp, for display: the yellow lines of Fig. 2), the tilt a hint stroke
 // asks for, and packing to the parameter block.
-import { add, dot, length, normalize, scale, sub, type Vec3 } from './vec3';
 
-export interface MeshArrays {
-  positions: Float32Array; // positions[3 * vertex + axis]
-  indices: Uint32Array; // indices[3 * triangle + corner]
-}
+import type { TriangleSoup } from '../head/head';
+import { add, dot, length, normalize, scale, sub, type Vec3 } from './vec3';
 
 export interface DividingSettings {
   sigma: number; // grid steps (default 1)
@@ -65,7 +62,7 @@ function closestBarycentric(p: Vec3, a: Vec3, b: Vec3, c: Vec3): Vec3 {
  * solver's scalp avoidance. Brute force over the triangles (fine for a stroke's few dozen
  * points; the app may instead pass normals from HeadPicker's BVH).
  */
-export function scalpNormalsAt(points: readonly Vec3[], mesh: MeshArrays): Vec3[] {
+export function scalpNormalsAt(points: readonly Vec3[], mesh: TriangleSoup): Vec3[] {
   const P = mesh.positions;
   const I = mesh.indices;
   const nv = P.length / 3;

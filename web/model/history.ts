@@ -27,6 +27,14 @@ export class History<T> {
     this.state = next;
   }
 
+  /** Replaces the current state without a new undo step (an edit continued, e.g. a colour
+   *  being dragged): undo goes back to the state before the whole gesture. */
+  replace(next: T): void {
+    if (next === this.state) return;
+    this.future = [];
+    this.state = next;
+  }
+
   undo(): boolean {
     const prev = this.past.pop();
     if (prev === undefined) return false;

@@ -5,6 +5,7 @@
 // The paper's figures: fig6 (ten stream curves), fig7 (seven stream curves and a short parting),
 // fig8 (four stream curves and two ponytails), fig1 (eleven stream curves, four dividing curves
 // and one ponytail).
+import type { Head } from '../head/head';
 import { ponytailCircles } from './ponytailGeometry';
 import { resamplePolyline } from './resample';
 import {
@@ -16,16 +17,18 @@ import {
   type StyleCurve,
   type Viewpoint,
 } from './session';
-import { add, normalize, scale, sphericalDirection, sub, type Vec3 } from './vec3';
+import { add, normalize, scale, sphericalDirection, type Vec3 } from './vec3';
 
 export interface PresetContext {
-  /** Outermost head point at spherical angles from the head center, or null. */
-  headPoint(thetaDeg: number, phiDeg: number): Vec3 | null;
-  center: Vec3;
+  /** The head the curves are sketched on (its scalp points, normals and centre). */
+  head: Pick<Head, 'scalpPoint' | 'normalAt' | 'center'>;
   step: number; // grid step d
   viewpoint: Viewpoint;
-  /** Outward unit normal of the head at (near) a point; default: radial from `center`. */
-  normalAt?(p: Vec3): Vec3;
+}
+
+/** Outermost head point at spherical angles from the head centre, or null. */
+function headPoint(ctx: PresetContext, thetaDeg: number, phiDeg: number): Vec3 | null {
+  return ctx.head.scalpPoint(thetaDeg, phiDeg)?.point ?? null;
 }
 
 export const PRESET_NAMES = ['default', 'empty', 'fig6', 'fig7', 'fig8', 'fig1'] as const;
@@ -64,7 +67,7 @@ function sweepCurve(ctx: PresetContext, spec: SweepSpec): Vec3[] | null {
     const s = i / n;
     const theta = spec.theta[0] + (spec.theta[1] - spec.theta[0]) * s;
     const phi = spec.phi[0] + (spec.phi[1] - spec.phi[0]) * s;
-    const hit = ctx.headPoint(theta, phi);
+    const hit = headPoint(ctx, theta, phi);
     if (!hit) return null;
     const lift = spec.lift * Math.min(1, s / 0.25);
     dense.push(add(hit, scale(sphericalDirection(theta, phi), lift)));
@@ -99,7 +102,8 @@ function dividingFrom(
   for (let k = 1; k < path.length; k++) {
     for (let i = k === 1 ? 0 : 1; i <= 20; i++) {
       const s = i / 20;
-      const hit = ctx.headPoint(
+      const hit = headPoint(
+        ctx,
         path[k - 1][0] + (path[k][0] - path[k - 1][0]) * s,
         path[k - 1][1] + (path[k][1] - path[k - 1][1]) * s,
       );
@@ -109,7 +113,7 @@ function dividingFrom(
   }
   const points = resamplePolyline(dense, ctx.step);
   if (points.length < 3) return null;
-  const normal = ctx.normalAt ?? ((p: Vec3) => normalize(sub(p, ctx.center)));
+  const normal = (p: Vec3) => ctx.head.normalAt(p);
   return {
     id,
     type: 'dividing',
@@ -135,7 +139,7 @@ interface PonytailSpec {
  *  a cross-section across it at the gather, and two profiles beside it, widening below the
  *  gather and tapering to the tip. */
 function ponytailFrom(ctx: PresetContext, spec: PonytailSpec, id: string): PonytailCurve | null {
-  const root = ctx.headPoint(spec.base[0], spec.base[1]);
+  const root = headPoint(ctx, spec.base[0], spec.base[1]);
   if (!root) return null;
   const outDir = sphericalDirection(spec.base[0], spec.base[1]);
   // out of the head, slanting down, then bending gently until it hangs straight down

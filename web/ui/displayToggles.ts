@@ -1,5 +1,5 @@
 // Display toggles (SPEC S6.2): a compact row of checkboxes with accessible names "Curves",
-// "Constraints", "Surface", "Field", "Box", and the keyboard shortcuts 1–5. The state is view
+// "Constraints", "Surface", "Field", "Box" (keys 1–5: the actions table, app/actions.ts). The state is view
 // state, not part of the session: it is neither in the undo history nor in share links.
 
 export interface DisplayState {
@@ -74,15 +74,6 @@ export function buildDisplayToggles(
     boxes.set(key, box);
   });
   root.append(group);
-  window.addEventListener('keydown', (e) => {
-    if (e.ctrlKey || e.metaKey || e.altKey || typesText(e.target)) return;
-    const key = displayKeyForShortcut(e.key);
-    const box = key && boxes.get(key);
-    if (!key || !box) return;
-    e.preventDefault();
-    box.checked = !box.checked;
-    onToggle(key, box.checked);
-  });
   return {
     element: group,
     set(state) {
@@ -92,7 +83,7 @@ export function buildDisplayToggles(
 }
 
 /** Whether key presses on `target` type text (then they are not shortcuts). */
-function typesText(target: EventTarget | null): boolean {
+export function typesText(target: EventTarget | null): boolean {
   if (target instanceof HTMLTextAreaElement) return true;
   if (target instanceof HTMLElement && target.isContentEditable) return true;
   return (

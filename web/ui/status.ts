@@ -1,4 +1,5 @@
-// The status line: a visible sentence plus data-* attributes for automated tests.
+// The status line: a visible sentence plus data-* attributes for automated tests. Details that
+// only some users want (solver method, iterations, timings) go to its tooltip.
 export type AppState = 'loading' | 'solving' | 'ready' | 'error';
 
 export class StatusLine {
@@ -12,11 +13,12 @@ export class StatusLine {
     private readonly hintEl: HTMLElement,
   ) {}
 
-  set(state: AppState, text: string): void {
+  set(state: AppState, text: string, details = ''): void {
     this.state = state;
     this.el.dataset.state = state;
     this.el.textContent = text;
-    this.el.title = text; // the whole sentence when the line is clamped
+    // the whole sentence when the line is clamped, then the details
+    this.el.title = details ? `${text}\n${details}` : text;
   }
 
   counts(strands: number, curves: number): void {

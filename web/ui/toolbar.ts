@@ -1,92 +1,73 @@
-// Toolbar buttons with accessible names (the test contract relies on them).
-export type ToolName = 'stream' | 'select' | 'dividing' | 'ponytail';
+// The toolbar, built from the actions table: a main row (tools, undo, redo, delete) that is
+// always shown, and the rest (curve, file, view actions, hair colour, display toggles) inline on
+// wide screens and in a "More" menu on narrow ones (phones). Buttons keep their accessible
+// names (the test contract relies on them).
+import { type Action, displayShortcut } from '../app/actions';
 
-export interface ToolbarActions {
-  tool(name: ToolName): void;
-  undo(): void;
-  redo(): void;
-  deleteSelected(): void;
+export interface ToolbarExtras {
   hairColor(css: string): void;
-  avoidScalp(): void;
-  setViewpoint(): void;
-  surfaceMode(): void;
-  share(): void;
-  saveFile(): void;
   openFile(file: File): void;
 }
 
 export interface Toolbar {
-  setTool(name: string): void;
-  setEnabled(state: {
-    undo: boolean;
-    redo: boolean;
-    del: boolean;
-    viewpoint: boolean;
-    surfaceMode: boolean;
-    avoid: boolean;
-  }): void;
+  /** Reflects enabled / pressed / state labels of every action. */
+  refresh(): void;
   setHairColor(css: string): void;
   openFileDialog(): void;
+  /** Where the display toggles go. */
+  readonly moreElement: HTMLElement;
 }
 
-function button(label: string, title: string, onClick: () => void): HTMLButtonElement {
+function actionButton(a: Action): HTMLButtonElement {
   const b = document.createElement('button');
   b.type = 'button';
-  b.textContent = label;
-  b.title = title;
-  b.addEventListener('click', onClick);
+  b.textContent = a.label;
+  const keys = a.shortcuts?.map(displayShortcut).join(' or ');
+  b.title = keys ? `${a.title} (${keys})` : a.title;
+  b.dataset.action = a.id;
+  if (a.pressed) b.setAttribute('aria-pressed', 'false');
+  b.addEventListener('click', () => a.run());
   return b;
 }
 
-function separator(): HTMLElement {
-  const s = document.createElement('span');
-  s.className = 'sep';
-  return s;
-}
+export function buildToolbar(
+  root: HTMLElement,
+  actions: readonly Action[],
+  extras: ToolbarExtras,
+): Toolbar {
+  const main = document.createElement('div');
+  main.className = 'toolbar-main';
+  const more = document.createElement('div');
+  more.className = 'toolbar-more';
+  more.id = 'toolbar-more';
+  const moreButton = document.createElement('button');
+  moreButton.type = 'button';
+  moreButton.className = 'more-button';
+  moreButton.textContent = 'More';
+  moreButton.title = 'More actions and display options';
+  moreButton.setAttribute('aria-expanded', 'false');
+  moreButton.setAttribute('aria-controls', more.id);
+  const setOpen = (open: boolean) => {
+    root.classList.toggle('open', open);
+    moreButton.setAttribute('aria-expanded', String(open));
+  };
+  moreButton.addEventListener('click', () => setOpen(!root.classList.contains('open')));
 
-export function buildToolbar(root: HTMLElement, actions: ToolbarActions): Toolbar {
-  const stream = button(
-    'Stream curve',
-    'Draw a stream curve starting on the scalp; on the selected curve’s supporting surface, a hint stroke edits it (S)',
-    () => actions.tool('stream'),
-  );
-  const dividing = button(
-    'Dividing curve',
-    'Draw a parting on the scalp; a stroke beside the selected dividing curve tilts that side (D)',
-    () => actions.tool('dividing'),
-  );
-  const ponytail = button(
-    'Ponytail',
-    'Four strokes: spine from the scalp, then cross-section and two profiles (P)',
-    () => actions.tool('ponytail'),
-  );
-  const select = button('Select', 'Select a curve; drag to orbit (V)', () =>
-    actions.tool('select'),
-  );
-  const viewpoint = button(
-    'Set viewpoint',
-    'Store the current camera as the selected curve’s viewpoint (its supporting surface is rebuilt)',
-    actions.setViewpoint,
-  );
-  const surface = button(
-    'Surface mode',
-    'Switch the selected stream curve’s supporting surface: ruled (to the viewpoint) / strip (M)',
-    actions.surfaceMode,
-  );
-  const avoid = button(
-    'Avoid scalp',
-    'Keep the hair out of the head: constrain the field near the scalp to point outward or along it',
-    actions.avoidScalp,
-  );
-  const undo = button('Undo', 'Undo (Ctrl+Z)', actions.undo);
-  const redo = button('Redo', 'Redo (Ctrl+Shift+Z)', actions.redo);
-  const del = button('Delete', 'Delete the selected curve (Delete)', actions.deleteSelected);
-  const share = button(
-    'Share link',
-    'Copy a link that opens this session (the address bar always holds it too)',
-    actions.share,
-  );
-  const save = button('Save', 'Save the session as a JSON file (Ctrl+S)', actions.saveFile);
+  const buttons = new Map<Action, HTMLButtonElement>();
+  let lastGroup = '';
+  for (const a of actions) {
+    if (!a.toolbar) continue;
+    const b = actionButton(a);
+    buttons.set(a, b);
+    const row = a.toolbar === 'main' ? main : more;
+    if (row === more && lastGroup && lastGroup !== a.group) more.append(separator());
+    if (row === more) lastGroup = a.group;
+    row.append(b);
+    // a menu item closes the menu (phones)
+    if (row === more) b.addEventListener('click', () => setOpen(false));
+  }
+  main.append(moreButton);
+
   const picker = document.createElement('input');
   picker.type = 'file';
   picker.accept = '.json,application/json';
@@ -94,49 +75,33 @@ export function buildToolbar(root: HTMLElement, actions: ToolbarActions): Toolba
   picker.addEventListener('change', () => {
     const f = picker.files?.[0];
     picker.value = '';
-    if (f) actions.openFile(f);
+    if (f) extras.openFile(f);
   });
-  const open = button('Open', 'Open a session JSON file (Ctrl+O)', () => picker.click());
   const colorLabel = document.createElement('label');
   colorLabel.textContent = 'Hair colour';
   const color = document.createElement('input');
   color.type = 'color';
-  color.addEventListener('input', () => actions.hairColor(color.value));
+  color.addEventListener('input', () => extras.hairColor(color.value));
   colorLabel.append(color);
-  root.append(
-    stream,
-    dividing,
-    ponytail,
-    select,
-    separator(),
-    viewpoint,
-    surface,
-    avoid,
-    separator(),
-    undo,
-    redo,
-    del,
-    separator(),
-    colorLabel,
-    separator(),
-    share,
-    save,
-    open,
-    picker,
-  );
-  const tools: Record<string, HTMLButtonElement> = { stream, select, dividing, ponytail };
+  more.append(separator(), colorLabel, picker);
+  root.append(main, more);
+
+  // closes the menu on a press outside it
+  document.addEventListener('pointerdown', (e) => {
+    if (root.classList.contains('open') && !root.contains(e.target as Node)) setOpen(false);
+  });
+
   return {
-    setTool(name) {
-      for (const [n, b] of Object.entries(tools))
-        b.setAttribute('aria-pressed', String(n === name));
-    },
-    setEnabled(s) {
-      undo.disabled = !s.undo;
-      redo.disabled = !s.redo;
-      del.disabled = !s.del;
-      viewpoint.disabled = !s.viewpoint;
-      surface.disabled = !s.surfaceMode;
-      avoid.disabled = !s.avoid;
+    moreElement: more,
+    refresh() {
+      for (const [a, b] of buttons) {
+        b.disabled = a.enabled ? !a.enabled() : false;
+        if (a.pressed) b.setAttribute('aria-pressed', String(a.pressed()));
+        if (a.stateLabel) {
+          const text = a.stateLabel();
+          if (b.textContent !== text) b.textContent = text;
+        }
+      }
     },
     setHairColor(css) {
       color.value = css;
@@ -145,4 +110,10 @@ export function buildToolbar(root: HTMLElement, actions: ToolbarActions): Toolba
       picker.click();
     },
   };
+}
+
+function separator(): HTMLElement {
+  const s = document.createElement('span');
+  s.className = 'sep';
+  return s;
 }

@@ -1,0 +1,268 @@
+// The editor without a browser: each command, undo/redo of each, the selection rules, the one
+// load path, and one notification per change.
+import { describe, expect, it } from 'vitest';
+import type { Command } from '../../web/editor/commands';
+import { Editor, type EditorChange } from '../../web/editor/editor';
+import {
+  emptySession,
+  type SessionState,
+  type StreamCurve,
+  type Viewpoint,
+} from '../../web/model/session';
+import type { Vec3 } from '../../web/model/vec3';
+
+const vp: Viewpoint = { position: [0, 0, 7], target: [0, 0, 0] };
+const line = (x: number, n = 6): Vec3[] =>
+  Array.from({ length: n }, (_, i) => [x, 1 - 0.1 * i, 0.5] as Vec3);
+
+const addStream = (x: number): Command => ({
+  kind: 'addCurve',
+  curve: { type: 'stream', points: line(x), extend: true, viewpoint: vp },
+  what: 'stream curve {id}',
+});
+const addDividing = (): Command => ({
+  kind: 'addCurve',
+  curve: {
+    type: 'dividing',
+    points: line(0.2),
+    normals: line(0.2).map(() => [0, 1, 0] as Vec3),
+    sigma: 1,
+    h: 0.5,
+    alpha0: 0,
+    alpha1: 0,
+    viewpoint: vp,
+  },
+  what: 'dividing curve {id}',
+});
+
+function editorWithLog(s: SessionState = emptySession('25k'), clock = { t: 0 }) {
+  const e = new Editor(s, 'stream', () => clock.t);
+  const log: EditorChange[] = [];
+  e.listen((c) => log.push(c));
+  return { e, log, clock };
+}
+
+/** Runs `cmd` on an editor holding `setup`, checks it changed the session, then that undo
+ *  restores the exact session before and redo the exact session after. */
+function roundTrip(setup: Command[], cmd: Command, check: (after: SessionState) => void) {
+  const { e } = editorWithLog();
+  for (const c of setup) e.run(c);
+  const before = e.session;
+  expect(e.run(cmd)).toBe(true);
+  const after = e.session;
+  expect(after).not.toBe(before);
+  check(after);
+  expect(e.undo()).toBe(true);
+  expect(e.session).toBe(before);
+  expect(e.redo()).toBe(true);
+  expect(e.session).toBe(after);
+}
+
+describe('editor commands, each undoable', () => {
+  it('addCurve assigns the next id and selects the new curve', () => {
+    const { e } = editorWithLog();
+    e.run(addStream(0));
+    e.run(addStream(0.1));
+    expect(e.session.curves.map((c) => c.id)).toEqual(['c1', 'c2']);
+    expect(e.selectedId).toBe('c2');
+    roundTrip([], addStream(0), (s) => expect(s.curves).toHaveLength(1));
+  });
+
+  it('deleteCurve removes it and clears the selection', () => {
+    const { e } = editorWithLog();
+    e.run(addStream(0));
+    e.run({ kind: 'deleteCurve', id: 'c1' });
+    expect(e.session.curves).toHaveLength(0);
+    expect(e.selectedId).toBeNull();
+    // undo brings the curve back; the selection is not restored by undo (no curve was chosen)
+    e.undo();
+    expect(e.session.curves.map((c) => c.id)).toEqual(['c1']);
+    roundTrip([addStream(0)], { kind: 'deleteCurve', id: 'c1' }, (s) =>
+      expect(s.curves).toHaveLength(0),
+    );
+  });
+
+  it('deleting a curve that does not exist records nothing', () => {
+    const { e, log } = editorWithLog();
+    expect(e.run({ kind: 'deleteCurve', id: 'c9' })).toBe(false);
+    expect(e.canUndo).toBe(false);
+    expect(log).toHaveLength(1);
+    expect(log[0].sessionChanged).toBe(false);
+  });
+
+  it('hintEdit replaces the points of a stream curve', () => {
+    const pts = line(0.3, 9);
+    roundTrip([addStream(0)], { kind: 'hintEdit', id: 'c1', op: 'insert', points: pts }, (s) =>
+      expect(s.curves[0].points).toEqual(pts),
+    );
+  });
+
+  it('setTilt sets one end of a dividing curve', () => {
+    roundTrip(
+      [addDividing()],
+      { kind: 'setTilt', id: 'c1', end: 'alpha1', alpha: 0.5, side: 1 },
+      (s) => {
+        const c = s.curves[0];
+        expect(c.type === 'dividing' && [c.alpha0, c.alpha1]).toEqual([0, 0.5]);
+      },
+    );
+  });
+
+  it('patchCurve changes only parameters the curve has, with their types', () => {
+    roundTrip([addDividing()], { kind: 'patchCurve', id: 'c1', patch: { sigma: 2 } }, (s) => {
+      const c = s.curves[0];
+      expect(c.type === 'dividing' && c.sigma).toBe(2);
+    });
+    const { e } = editorWithLog();
+    e.run(addStream(0));
+    // a stream curve has no sigma; extend is boolean: a number does not replace it
+    expect(e.run({ kind: 'patchCurve', id: 'c1', patch: { sigma: 2, extend: 1 } })).toBe(false);
+    expect(e.run({ kind: 'patchCurve', id: 'c1', patch: { extend: false } })).toBe(true);
+    expect((e.session.curves[0] as StreamCurve).extend).toBe(false);
+  });
+
+  it('setViewpoint, setSurfaceMode, setAvoid, setHairColor', () => {
+    const other: Viewpoint = { position: [5, 0, 0], target: [0, 0, 0] };
+    roundTrip([addStream(0)], { kind: 'setViewpoint', id: 'c1', viewpoint: other }, (s) =>
+      expect(s.curves[0].viewpoint).toEqual(other),
+    );
+    roundTrip([addStream(0)], { kind: 'setSurfaceMode', id: 'c1', mode: 'strip' }, (s) =>
+      expect((s.curves[0] as StreamCurve).surfaceMode).toBe('strip'),
+    );
+    roundTrip([], { kind: 'setAvoid', avoid: { index: [3], target: [0, 0.3, 0] } }, (s) =>
+      expect(s.avoid?.index).toEqual([3]),
+    );
+    roundTrip([], { kind: 'setHairColor', color: '#112233' }, (s) =>
+      expect(s.hairColor).toBe('#112233'),
+    );
+  });
+
+  it('a hair colour that is not #rrggbb changes nothing', () => {
+    const { e } = editorWithLog();
+    expect(e.run({ kind: 'setHairColor', color: 'red; x' })).toBe(false);
+    expect(e.session.hairColor).toBe('#5a3825');
+  });
+
+  it('a colour dragged in the picker is one undo step', () => {
+    const { e, clock } = editorWithLog();
+    const start = e.session;
+    for (const c of ['#101010', '#202020', '#303030']) {
+      clock.t += 100;
+      e.run({ kind: 'setHairColor', color: c });
+    }
+    expect(e.session.hairColor).toBe('#303030');
+    e.undo();
+    expect(e.session).toBe(start);
+    expect(e.canUndo).toBe(false);
+    // after a pause, a new colour is a new step
+    e.redo();
+    clock.t += 5000;
+    e.run({ kind: 'setHairColor', color: '#404040' });
+    e.undo();
+    expect(e.session.hairColor).toBe('#303030');
+  });
+});
+
+describe('one load path', () => {
+  const saved = (): SessionState => ({
+    ...emptySession('50k'),
+    hairColor: '#aa0000',
+    curves: [{ id: 'c7', type: 'stream', points: line(0), extend: true, viewpoint: vp }],
+  });
+
+  it('a loaded session brings its hair colour and curves, keeps the page grid, and is undoable', () => {
+    const { e, log } = editorWithLog();
+    e.run(addStream(0.4));
+    const before = e.session;
+    e.run({ kind: 'loadSession', session: saved(), what: 'Opened x', camera: vp });
+    expect(e.session.hairColor).toBe('#aa0000');
+    expect(e.session.grid).toBe('25k');
+    expect(e.session.curves.map((c) => c.id)).toEqual(['c7']);
+    expect(e.selectedId).toBeNull();
+    const last = log[log.length - 1];
+    expect(last.camera).toEqual(vp);
+    expect(last.message).toContain('Opened x (1 curves)');
+    // undo restores the previous session, colour included, and subscribers see the colour change
+    e.undo();
+    expect(e.session).toBe(before);
+    const u = log[log.length - 1];
+    expect([u.previous.hairColor, u.session.hairColor]).toEqual(['#aa0000', '#5a3825']);
+  });
+
+  it('a link opened with the page starts the history', () => {
+    const { e } = editorWithLog();
+    e.run(addStream(0));
+    e.run({ kind: 'loadSession', session: saved(), what: 'Opened a link', resetHistory: true });
+    expect(e.canUndo).toBe(false);
+    expect(e.session.hairColor).toBe('#aa0000');
+  });
+});
+
+describe('selection and tools', () => {
+  it('selects only curves that exist; undoing the curve away drops the selection', () => {
+    const { e } = editorWithLog();
+    e.select('c1');
+    expect(e.selectedId).toBeNull();
+    e.run(addStream(0));
+    e.select(null);
+    e.select('c1');
+    expect(e.selectedId).toBe('c1');
+    e.undo(); // removes c1
+    expect(e.selectedId).toBeNull();
+    e.redo();
+    expect(e.selectedId).toBeNull();
+  });
+
+  it('the selection survives edits of other curves', () => {
+    const { e } = editorWithLog();
+    e.run(addStream(0));
+    e.run(addStream(0.2));
+    e.select('c1');
+    e.run({ kind: 'deleteCurve', id: 'c2' });
+    expect(e.selectedId).toBe('c1');
+  });
+
+  it('setTool changes the tool and notifies once; the same tool again is silent', () => {
+    const { e, log } = editorWithLog();
+    e.setTool('select');
+    e.setTool('select');
+    expect(e.tool).toBe('select');
+    expect(log.map((c) => c.cause)).toEqual(['tool']);
+  });
+});
+
+describe('subscriptions', () => {
+  it('fire once per change, with what changed', () => {
+    const { e, log } = editorWithLog();
+    e.run(addStream(0));
+    expect(log).toHaveLength(1);
+    expect(log[0]).toMatchObject({
+      cause: 'command',
+      sessionChanged: true,
+      selectionChanged: true,
+    });
+    e.select(null);
+    expect(log).toHaveLength(2);
+    expect(log[1]).toMatchObject({
+      cause: 'select',
+      sessionChanged: false,
+      selectionChanged: true,
+    });
+    e.undo();
+    e.redo();
+    expect(log.map((c) => c.cause)).toEqual(['command', 'select', 'undo', 'redo']);
+    expect(e.undo()).toBe(true);
+    expect(e.undo()).toBe(false); // nothing left: no notification
+    expect(log).toHaveLength(5);
+  });
+
+  it('unsubscribe stops notifications', () => {
+    const e = new Editor(emptySession('25k'));
+    let n = 0;
+    const off = e.listen(() => n++);
+    e.run(addStream(0));
+    off();
+    e.run(addStream(0.1));
+    expect(n).toBe(1);
+  });
+});

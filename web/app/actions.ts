@@ -1,0 +1,275 @@
+// Every command a user can give, once: id, label (the button's accessible name), what it does,
+// its keyboard shortcut and when it is enabled or pressed. The toolbar, the keyboard and the
+// help overlay ("?") all read this table (in the manner of tldraw's actions).
+import type { ToolName } from '../editor/editor';
+import { DISPLAY_TOGGLES, type DisplayKey } from '../ui/displayToggles';
+
+export type ActionGroup = 'tools' | 'curve' | 'edit' | 'file' | 'view' | 'display';
+
+export interface Action {
+  id: string;
+  /** Button label and accessible name. */
+  label: string;
+  /** What it does (tooltip and help overlay). */
+  title: string;
+  /** Shortcuts: 's', 'mod+z', 'mod+shift+z', 'delete', '?', '1'… ('mod' is Ctrl or ⌘). */
+  shortcuts?: readonly string[];
+  group: ActionGroup;
+  /** Where the toolbar shows it: 'main' (always), 'more' (in the overflow menu on narrow
+   *  screens), or not at all (keyboard only, or drawn by its own control). */
+  toolbar?: 'main' | 'more';
+  run(): void;
+  enabled?(): boolean;
+  /** For toggles and tools: whether it is on now. */
+  pressed?(): boolean;
+  /** A label that shows state (e.g. which surface mode is on); the accessible name still
+   *  starts with `label`. */
+  stateLabel?(): string;
+}
+
+/** What the actions act on (the composition root provides it). */
+export interface ActionTarget {
+  tool(): ToolName;
+  setTool(name: ToolName): void;
+  canUndo(): boolean;
+  canRedo(): boolean;
+  undo(): void;
+  redo(): void;
+  hasSelection(): boolean;
+  selectedKind(): 'stream' | 'dividing' | 'ponytail' | null;
+  surfaceMode(): 'ruled' | 'strip' | null;
+  deleteSelected(): void;
+  setViewpoint(): void;
+  toggleSurfaceMode(): void;
+  avoidScalp(): void;
+  avoiding(): boolean;
+  share(): void;
+  save(): void;
+  open(): void;
+  resetView(): void;
+  orbitSpeed(): number;
+  setOrbitSpeed(factor: number): void;
+  cancel(): void;
+  toggleHelp(): void;
+  display(key: DisplayKey): boolean;
+  setDisplay(key: DisplayKey, on: boolean): void;
+}
+
+const ORBIT_SPEEDS = [0.25, 0.5, 0.75, 1, 1.5, 2];
+
+export function buildActions(t: ActionTarget): Action[] {
+  const tool = (id: ToolName, label: string, key: string, title: string): Action => ({
+    id: `tool.${id}`,
+    label,
+    title,
+    shortcuts: [key],
+    group: 'tools',
+    toolbar: 'main',
+    run: () => t.setTool(id),
+    pressed: () => t.tool() === id,
+  });
+  const orbitStep = (dir: 1 | -1) => {
+    const i = ORBIT_SPEEDS.findIndex((s) => s >= t.orbitSpeed() - 1e-9);
+    const next = ORBIT_SPEEDS[Math.min(ORBIT_SPEEDS.length - 1, Math.max(0, i + dir))];
+    t.setOrbitSpeed(next);
+  };
+  return [
+    tool(
+      'stream',
+      'Stream curve',
+      's',
+      'Draw a stream curve starting on the scalp; on the selected curve’s supporting surface, a hint stroke edits it',
+    ),
+    tool(
+      'dividing',
+      'Dividing curve',
+      'd',
+      'Draw a parting on the scalp; a stroke beside the selected dividing curve tilts that side',
+    ),
+    tool(
+      'ponytail',
+      'Ponytail',
+      'p',
+      'Four strokes: spine from the scalp, then cross-section and two profiles',
+    ),
+    tool('select', 'Select', 'v', 'Select a curve; drag to orbit'),
+    {
+      id: 'edit.undo',
+      label: 'Undo',
+      title: 'Undo the last edit',
+      shortcuts: ['mod+z'],
+      group: 'edit',
+      toolbar: 'main',
+      run: () => t.undo(),
+      enabled: () => t.canUndo(),
+    },
+    {
+      id: 'edit.redo',
+      label: 'Redo',
+      title: 'Redo what was undone',
+      shortcuts: ['mod+shift+z', 'mod+y'],
+      group: 'edit',
+      toolbar: 'main',
+      run: () => t.redo(),
+      enabled: () => t.canRedo(),
+    },
+    {
+      id: 'edit.delete',
+      label: 'Delete',
+      title: 'Delete the selected curve',
+      shortcuts: ['delete', 'backspace'],
+      group: 'edit',
+      toolbar: 'main',
+      run: () => t.deleteSelected(),
+      enabled: () => t.hasSelection(),
+    },
+    {
+      id: 'curve.viewpoint',
+      label: 'Set viewpoint',
+      title:
+        'Store the current camera as the selected curve’s viewpoint (its supporting surface is rebuilt)',
+      group: 'curve',
+      toolbar: 'more',
+      run: () => t.setViewpoint(),
+      enabled: () => t.hasSelection(),
+    },
+    {
+      id: 'curve.surfaceMode',
+      label: 'Surface mode',
+      title:
+        'Switch the selected stream curve’s supporting surface: ruled (towards its viewpoint) or strip (facing it)',
+      shortcuts: ['m'],
+      group: 'curve',
+      toolbar: 'more',
+      run: () => t.toggleSurfaceMode(),
+      enabled: () => t.selectedKind() === 'stream',
+      pressed: () => t.surfaceMode() === 'strip',
+      stateLabel: () => {
+        const m = t.surfaceMode();
+        return m ? `Surface mode: ${m}` : 'Surface mode';
+      },
+    },
+    {
+      id: 'curve.avoidScalp',
+      label: 'Avoid scalp',
+      title:
+        'Keep the hair out of the head: constrain the field near the scalp to point outward or along it',
+      group: 'curve',
+      toolbar: 'more',
+      run: () => t.avoidScalp(),
+      enabled: () => !t.avoiding(),
+    },
+    {
+      id: 'file.share',
+      label: 'Share link',
+      title: 'Copy a link that opens this session (the address bar always holds it too)',
+      group: 'file',
+      toolbar: 'more',
+      run: () => t.share(),
+    },
+    {
+      id: 'file.save',
+      label: 'Save',
+      title: 'Save the session as a JSON file',
+      shortcuts: ['mod+s'],
+      group: 'file',
+      toolbar: 'more',
+      run: () => t.save(),
+    },
+    {
+      id: 'file.open',
+      label: 'Open',
+      title: 'Open a session JSON file',
+      shortcuts: ['mod+o'],
+      group: 'file',
+      toolbar: 'more',
+      run: () => t.open(),
+    },
+    {
+      id: 'view.reset',
+      label: 'Reset view',
+      title: 'Bring the camera back to the starting view of the head',
+      shortcuts: ['r'],
+      group: 'view',
+      toolbar: 'more',
+      run: () => t.resetView(),
+    },
+    {
+      id: 'view.orbitSlower',
+      label: 'Slower orbit',
+      title: 'Orbit the camera more slowly per pixel dragged',
+      shortcuts: ['['],
+      group: 'view',
+      run: () => orbitStep(-1),
+    },
+    {
+      id: 'view.orbitFaster',
+      label: 'Faster orbit',
+      title: 'Orbit the camera faster per pixel dragged',
+      shortcuts: [']'],
+      group: 'view',
+      run: () => orbitStep(1),
+    },
+    {
+      id: 'view.help',
+      label: 'Shortcuts',
+      title: 'Show every keyboard shortcut',
+      shortcuts: ['?'],
+      group: 'view',
+      toolbar: 'more',
+      run: () => t.toggleHelp(),
+    },
+    {
+      id: 'edit.cancel',
+      label: 'Cancel',
+      title: 'Abandon the stroke being drawn (and a ponytail in progress) and deselect',
+      shortcuts: ['escape'],
+      group: 'edit',
+      run: () => t.cancel(),
+    },
+    ...DISPLAY_TOGGLES.map(
+      ({ key, label, title }, i): Action => ({
+        id: `display.${key}`,
+        label,
+        title,
+        shortcuts: [String(i + 1)],
+        group: 'display',
+        run: () => t.setDisplay(key, !t.display(key)),
+        pressed: () => t.display(key),
+      }),
+    ),
+  ];
+}
+
+/** The shortcut a key event spells ('mod+shift+z', 'delete', '?', 's'…). */
+export function shortcutOf(e: {
+  key: string;
+  ctrlKey: boolean;
+  metaKey: boolean;
+  shiftKey: boolean;
+  altKey: boolean;
+}): string | null {
+  if (e.altKey) return null;
+  const key = e.key.length === 1 ? e.key.toLowerCase() : e.key.toLowerCase();
+  if (key === 'control' || key === 'shift' || key === 'meta' || key === 'alt') return null;
+  const mod = e.ctrlKey || e.metaKey;
+  // a shifted symbol ('?', '{') is its own key; Shift counts only with letters and mod
+  const letter = /^[a-z]$/.test(key);
+  const shift = e.shiftKey && (letter || mod) ? 'shift+' : '';
+  return `${mod ? 'mod+' : ''}${shift}${key}`;
+}
+
+/** The action a shortcut runs, if any. */
+export function actionForShortcut(actions: readonly Action[], shortcut: string): Action | null {
+  return actions.find((a) => a.shortcuts?.includes(shortcut)) ?? null;
+}
+
+/** How a shortcut reads in the help overlay and tooltips ('Ctrl+Shift+Z'). */
+export function displayShortcut(s: string): string {
+  return s
+    .split('+')
+    .map((p) =>
+      p === 'mod' ? 'Ctrl' : p.length === 1 ? p.toUpperCase() : p[0].toUpperCase() + p.slice(1),
+    )
+    .join('+');
+}

@@ -1,0 +1,70 @@
+// Puts solver results on screen: the hair (a new revision only when the strands changed), the
+// strand count and revision on the status line, the hair colour from the session, and when
+// each revision reached the screen (for benchmarks). Holds the view at interactive detail while
+// the hair is still settling.
+import type { EditorChange } from '../editor/editor';
+import type { StrandArrays } from '../solver/protocol';
+import type { SolveResult } from '../solver/solverClient';
+import type { StatusLine } from '../ui/status';
+import type { HairView } from '../viewer/hairView';
+import type { Viewer } from '../viewer/viewer';
+
+export interface HairRevision {
+  revision: number;
+  time: number;
+  final: boolean;
+  strands: number;
+}
+
+export class HairPresenter {
+  private shown: StrandArrays | null = null;
+  /** When each displayed hair revision reached the screen (performance.now()). */
+  readonly log: HairRevision[] = [];
+  private unstamped: Omit<HairRevision, 'time'> | null = null;
+  heapBytes = 0;
+
+  constructor(
+    private readonly viewer: Viewer,
+    private readonly hair: HairView,
+    private readonly status: StatusLine,
+    hairColor: string,
+  ) {
+    hair.setColor(hairColor);
+    viewer.onRendered = () => this.stamp();
+  }
+
+  get strands(): StrandArrays | null {
+    return this.shown;
+  }
+
+  editorChanged(c: EditorChange): void {
+    if (c.session.hairColor !== c.previous.hairColor || c.cause !== 'command')
+      this.hair.setColor(c.session.hairColor);
+    if (c.sessionChanged) this.viewer.hold('settling', true); // until the final hair is shown
+  }
+
+  result(r: SolveResult, final: boolean): void {
+    this.heapBytes = r.stats.heapBytes;
+    if (this.shown !== r.strands) {
+      this.shown = r.strands;
+      this.hair.show(r.strands);
+      const n = Math.max(0, r.strands.strandStart.length - 1);
+      this.status.counts(n, this.status.curves);
+      this.status.bumpRevision();
+      this.unstamped = { revision: this.status.revision, final, strands: n };
+    }
+    // hair that is still settling is drawn at interactive detail, the final hair in full
+    this.viewer.hold('settling', !final);
+  }
+
+  idle(): void {
+    this.viewer.hold('settling', false);
+  }
+
+  private stamp(): void {
+    if (!this.unstamped) return;
+    this.log.push({ ...this.unstamped, time: performance.now() });
+    if (this.log.length > 1000) this.log.shift();
+    this.unstamped = null;
+  }
+}

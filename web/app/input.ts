@@ -1,0 +1,63 @@
+// Pointer and keyboard input. A press goes to the active tool (which may take it from the
+// camera); keys run the action whose shortcut they spell (the actions table), except while
+// typing into a text field.
+import type { Tool } from '../tools/tool';
+import { typesText } from '../ui/displayToggles';
+import type { Viewer } from '../viewer/viewer';
+import { type Action, actionForShortcut, shortcutOf } from './actions';
+
+export interface InputDeps {
+  viewer: Viewer;
+  tool(): Tool;
+  actions: readonly Action[];
+  /** A key was pressed while an overlay (help) is open: it may close it. */
+  overlayKey?(key: string): boolean;
+  /** Benchmark probe: when the last pointer-up happened (performance.now()). */
+  pointerUp?(time: number): void;
+}
+
+export function bindInput(d: InputDeps): void {
+  const canvas = d.viewer.canvas;
+  let captured: number | null = null;
+  const ptr = (e: PointerEvent) => ({ x: e.clientX, y: e.clientY, button: e.button });
+  canvas.addEventListener('pointerdown', (e) => {
+    if (captured !== null) return;
+    if (d.tool().onPointerDown(ptr(e))) {
+      captured = e.pointerId;
+      canvas.setPointerCapture(e.pointerId);
+      d.viewer.hold('stroke', true);
+    } else if (e.button === 0) {
+      captured = e.pointerId;
+    }
+  });
+  canvas.addEventListener('pointermove', (e) => {
+    if (e.pointerId === captured) d.tool().onPointerMove(ptr(e));
+  });
+  const end = (e: PointerEvent, cancel: boolean) => {
+    if (e.pointerId !== captured) return;
+    captured = null;
+    d.viewer.hold('stroke', false);
+    if (cancel) d.tool().onCancel();
+    else d.tool().onPointerUp(ptr(e));
+  };
+  canvas.addEventListener('pointerup', (e) => {
+    d.pointerUp?.(performance.now());
+    end(e, false);
+  });
+  canvas.addEventListener('pointercancel', (e) => end(e, true));
+  canvas.addEventListener('contextmenu', (e) => e.preventDefault());
+
+  window.addEventListener('keydown', (e) => {
+    if (typesText(e.target)) return;
+    const s = shortcutOf(e);
+    if (s === null) return;
+    if (d.overlayKey?.(s)) {
+      e.preventDefault();
+      return;
+    }
+    const a = actionForShortcut(d.actions, s);
+    if (!a || (a.enabled && !a.enabled())) return;
+    e.preventDefault();
+    a.run();
+  });
+}

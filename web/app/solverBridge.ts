@@ -1,0 +1,138 @@
+// The bridge between the editor and the solver worker. It alone decides what the worker is
+// asked: the session after every change (a full solve), the stroke being drawn (previews, at
+// most one in flight: SolverClient paces them) and how many strands previews and first looks
+// grow. Results and progress go to whoever subscribed (hair presenter, overlays, status line).
+import type { Editor, EditorChange } from '../editor/editor';
+import { packCurves } from '../model/curveSet';
+import type { SessionState, Viewpoint } from '../model/session';
+import type { Vec3 } from '../model/vec3';
+import type { GridSpec, ScalpMesh, SolverErrorKind, SolverName } from '../solver/protocol';
+import { type AvoidanceResult, type SolveResult, SolverClient } from '../solver/solverClient';
+
+/** Strands grown for a preview or a first look: at most this many, fewer when the view draws a
+ *  sample (a slow GPU), never fewer than the minimum. */
+export const PREVIEW_STRANDS = 6000;
+export const MIN_PREVIEW_STRANDS = 800;
+
+export type BusyPhase = 'loading' | 'solving' | 'growing';
+
+export interface SolverBridgeEvents {
+  busy(phase: BusyPhase, fraction: number, previewing: boolean): void;
+  result(r: SolveResult, final: boolean): void;
+  error(message: string, kind: SolverErrorKind | undefined, restarting: boolean): void;
+  idle(): void;
+}
+
+export interface SolverBridgeOptions {
+  grid: GridSpec;
+  solver: SolverName;
+  scalp: ScalpMesh;
+  /** Fraction of the hair the view can draw while interacting (1 on a fast GPU). */
+  interactiveDetail: () => number;
+  /** Strands on screen now (previews grow no more than the view can draw). */
+  shownStrands: () => number;
+  makeWorker?: () => Worker;
+}
+
+export class SolverBridge {
+  readonly client: SolverClient;
+  /** A stroke is being drawn and previews are being solved. */
+  private drawing = false;
+  private readonly listeners: SolverBridgeEvents[] = [];
+
+  constructor(
+    private readonly editor: Editor,
+    private readonly opts: SolverBridgeOptions,
+  ) {
+    this.client = new SolverClient(
+      opts.makeWorker ??
+        (() => new Worker(new URL('../solver/worker.ts', import.meta.url), { type: 'module' })),
+      { type: 'init', grid: opts.grid, omega: 100, solver: opts.solver, scalp: opts.scalp },
+      {
+        onBusy: (phase, fraction) => this.each((l) => l.busy(phase, fraction, this.drawing)),
+        onResult: (r, final) => this.each((l) => l.result(r, final)),
+        onError: (message, restarting, kind) =>
+          this.each((l) => l.error(message, kind, restarting)),
+        onIdle: () => this.each((l) => l.idle()),
+      },
+    );
+    editor.listen((c) => this.onEditorChange(c));
+  }
+
+  subscribe(events: SolverBridgeEvents): void {
+    this.listeners.push(events);
+  }
+
+  private each(f: (l: SolverBridgeEvents) => void): void {
+    for (const l of this.listeners) f(l);
+  }
+
+  get pending(): boolean {
+    return this.client.pending;
+  }
+  get previewing(): boolean {
+    return this.drawing;
+  }
+
+  /** Sends the current session for a full solve. */
+  sync(): void {
+    const s = this.editor.session;
+    this.client.request(packCurves(s.curves, s.avoid ?? null), s.growth, 'full', this.lightCap(s));
+  }
+
+  /** The stroke being drawn (resampled points), solved with the session's curves as a preview;
+   *  null when the stroke ends. */
+  preview(points: Vec3[] | null, viewpoint: Viewpoint): void {
+    if (points === null) {
+      this.drawing = false;
+      return;
+    }
+    this.drawing = true;
+    if (points.length < 3) return;
+    const s = this.editor.session;
+    const draft = { id: '~draft', type: 'stream' as const, points, extend: true, viewpoint };
+    const cap = this.lightCap(s);
+    this.client.request(
+      packCurves([...s.curves, draft], s.avoid ?? null),
+      { ...s.growth, maxStrands: cap },
+      'preview',
+      cap,
+    );
+  }
+
+  /** Shows the solved field in results (the field display), re-solving when it is missing. */
+  setWantField(on: boolean, haveField: boolean): void {
+    this.client.wantField = on;
+    if (on && !haveField && !this.drawing) this.sync();
+  }
+
+  /** S4.7: the avoidance constraints of the current curves' converged field. */
+  avoidScalp(s: SessionState): Promise<AvoidanceResult> {
+    return this.client.avoidScalp(packCurves(s.curves));
+  }
+
+  crash(): void {
+    this.client.crash();
+  }
+
+  private lightCap(s: SessionState): number {
+    const shown = this.opts.shownStrands() || PREVIEW_STRANDS;
+    const cap = Math.round(
+      Math.min(
+        PREVIEW_STRANDS,
+        Math.max(MIN_PREVIEW_STRANDS, shown * this.opts.interactiveDetail()),
+      ),
+    );
+    return s.growth.maxStrands > 0 ? Math.min(s.growth.maxStrands, cap) : cap;
+  }
+
+  private onEditorChange(c: EditorChange): void {
+    if (!c.sessionChanged) return;
+    // a change of colour alone needs no solve
+    const p = c.previous;
+    const s = c.session;
+    if (p.curves === s.curves && p.avoid === s.avoid && p.growth === s.growth) return;
+    this.drawing = false;
+    this.sync();
+  }
+}

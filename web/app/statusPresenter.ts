@@ -1,0 +1,108 @@
+// The status line in plain words: what the app does now ("Solving… 60 %", "Ready — 30,000
+// strands"), the last thing the user did, and solver internals (method, iterations, times) in
+// the details tooltip only. Progress never goes backwards within one solve.
+import type { EditorChange } from '../editor/editor';
+import type { SolverErrorKind } from '../solver/protocol';
+import type { SolveResult } from '../solver/solverClient';
+import type { StatusLine } from '../ui/status';
+import type { BusyPhase } from './solverBridge';
+
+const fmt = (n: number) => n.toLocaleString('en-US');
+
+export class StatusPresenter {
+  private lastMessage = '';
+  private details = '';
+  /** Highest progress shown for the current solve, and whether a first look is on screen. */
+  private progress = 0;
+  private firstLook = false;
+
+  constructor(
+    private readonly line: StatusLine,
+    private readonly pending: () => boolean,
+  ) {}
+
+  /** A sentence about what the user just did (kept beside "Ready"). */
+  note(message: string): void {
+    if (!message) return;
+    this.lastMessage = message;
+    if (this.line.state === 'ready') this.ready();
+    else if (this.line.state !== 'error') this.line.set(this.line.state, this.busyText());
+  }
+
+  /** An error the user must see until the next change. */
+  error(message: string): void {
+    this.lastMessage = message;
+    this.line.set('error', message);
+  }
+
+  editorChanged(c: EditorChange): void {
+    if (c.sessionChanged) {
+      this.line.counts(this.line.strands, c.session.curves.length);
+      this.progress = 0;
+      this.firstLook = false;
+    }
+    if (c.cause !== 'tool' && c.cause !== 'select') this.note(c.message);
+  }
+
+  busy(phase: BusyPhase, fraction: number, previewing: boolean): void {
+    if (phase === 'loading') {
+      this.progress = 0;
+      this.firstLook = false;
+      this.line.set('loading', 'Loading the solver…');
+      return;
+    }
+    if (previewing) return; // the hair follows the pen; no progress for previews
+    // a first look is grown (at 95 %) before the solve goes on: growth counts as progress only
+    // once that first look is on screen
+    if (phase === 'solving' || this.firstLook) this.progress = Math.max(this.progress, fraction);
+    this.phase = phase === 'growing' && this.firstLook ? 'growing' : 'solving';
+    this.line.set('solving', this.busyText());
+  }
+
+  private phase: 'solving' | 'growing' = 'solving';
+
+  private busyText(): string {
+    const what = this.phase === 'growing' ? 'Growing the hair' : 'Solving';
+    const pct = Math.round(this.progress * 100);
+    const base = `${what}… ${pct} %`;
+    return this.lastMessage ? `${base} · ${this.lastMessage}` : base;
+  }
+
+  result(r: SolveResult, final: boolean): void {
+    const st = r.stats;
+    if (!final) {
+      this.firstLook = true;
+      return;
+    }
+    this.progress = 0;
+    this.firstLook = false;
+    this.details = `${st.constraints.toLocaleString('en-US')} constraints · ${st.method}, ${st.iterations} iterations, solve ${st.solveMs.toFixed(0)} ms, growth ${st.growMs.toFixed(0)} ms`;
+  }
+
+  solverError(message: string, kind: SolverErrorKind | undefined, restarting: boolean): void {
+    if (restarting) {
+      this.lastMessage = message;
+      this.line.set('loading', message);
+      return;
+    }
+    const advice =
+      kind === 'over_memory_cap'
+        ? ' — the exact solver does not fit this grid; use ?solver=fast or a smaller ?grid'
+        : '';
+    this.error(`Error: ${message}${advice}`);
+  }
+
+  /** The newest hair is on screen and nothing is pending. */
+  ready(): void {
+    if (this.pending()) return;
+    const l = this.line;
+    const hair =
+      l.strands > 0
+        ? `${fmt(l.strands)} strands`
+        : l.curves > 0
+          ? 'no strands grow from these curves'
+          : 'no hair yet: draw a stream curve from the scalp (S)';
+    const extra = this.lastMessage ? ` · ${this.lastMessage}` : '';
+    l.set('ready', `Ready — ${hair}${extra}`, this.details);
+  }
+}

@@ -1,0 +1,154 @@
+// Builds the sketching tools with what each needs to know (stroke samples from the head, the
+// camera, the selected curve) and what each may do: every edit is an editor command; the
+// stroke being drawn goes to the solver bridge as a preview; drafts and guides go to the view.
+import { curveSurface } from '../editor/curveSurface';
+import type { Editor, ToolName } from '../editor/editor';
+import type { Head } from '../head/head';
+import type { Vec3 } from '../model/vec3';
+import type { StrokeSample } from '../tools/depthRule';
+import { DividingCurveTool } from '../tools/dividingCurveTool';
+import { PONYTAIL_STAGE_HINT, PonytailTool } from '../tools/ponytailTool';
+import { SelectTool } from '../tools/selectTool';
+import { StreamCurveTool } from '../tools/streamCurveTool';
+import type { Tool } from '../tools/tool';
+import type { Viewer } from '../viewer/viewer';
+import type { OverlayPresenter } from './overlayPresenter';
+import type { SolverBridge } from './solverBridge';
+
+export interface ToolDeps {
+  editor: Editor;
+  head: Head;
+  viewer: Viewer;
+  bridge: SolverBridge;
+  overlays: OverlayPresenter;
+  step: number;
+  /** A sentence for the status line. */
+  notify(message: string): void;
+  /** The ponytail tool's next stroke changed (its hint line). */
+  ponytailStage(hint: string): void;
+}
+
+export interface ToolSet {
+  readonly byName: Record<ToolName, Tool>;
+  readonly ponytail: PonytailTool;
+}
+
+export function createTools(d: ToolDeps): ToolSet {
+  const { editor, viewer } = d;
+  const step = () => d.step;
+  const camera = () => viewer.cameraState();
+  const sample = (x: number, y: number): StrokeSample => {
+    const ray = viewer.rayAt(x, y);
+    const origin: Vec3 = [ray.origin.x, ray.origin.y, ray.origin.z];
+    const direction: Vec3 = [ray.direction.x, ray.direction.y, ray.direction.z];
+    const hit = d.head.raycast(origin, direction);
+    return {
+      origin,
+      direction,
+      scalpHit: hit?.scalp ? hit.point : null,
+      headDistance: hit ? hit.distance : null,
+    };
+  };
+  const showDraft = (pts: readonly Vec3[] | null) => viewer.setDraft(pts);
+  const eye = () => viewer.eye();
+  const forward = () => viewer.viewForward();
+
+  const ponytail = new PonytailTool({
+    sample,
+    eye,
+    forward,
+    step,
+    showDraft,
+    showGuides: (lines) => d.overlays.setToolGuides(lines),
+    commit: (p) =>
+      editor.run({
+        kind: 'addCurve',
+        curve: {
+          type: 'ponytail',
+          points: p.spine,
+          extend: true,
+          viewpoint: camera(),
+          crossSection: p.crossSection,
+          profiles: p.profiles,
+          circles: p.circles,
+          tightness: 0.6,
+        },
+        what: `ponytail {id} (${p.circles.length} circles)`,
+      }),
+    notify: d.notify,
+    stageChanged: (stage) => d.ponytailStage(PONYTAIL_STAGE_HINT[stage]),
+  });
+
+  const byName: Record<ToolName, Tool> = {
+    stream: new StreamCurveTool({
+      sample,
+      eye,
+      forward,
+      step,
+      showDraft,
+      toScreen: (p) => viewer.worldToScreen(p),
+      hintTarget: () => {
+        const c = editor.selectedCurve;
+        const surface = c ? curveSurface(c, d.step) : null;
+        return c && surface ? { points: c.points, surface } : null;
+      },
+      applyHint: (r) => {
+        const c = editor.selectedCurve;
+        if (!c) return;
+        if (r.op.kind === 'none') {
+          d.notify(`Hint: no operation (${r.op.reason}) — nothing changed.`);
+          return;
+        }
+        editor.run({ kind: 'hintEdit', id: c.id, op: r.op.kind, points: r.points });
+      },
+      commit: (points) => {
+        d.bridge.preview(null, camera());
+        editor.run({
+          kind: 'addCurve',
+          curve: { type: 'stream', points, extend: true, viewpoint: camera() },
+          what: `stream curve {id} (${points.length - 1} segments)`,
+        });
+      },
+      preview: (points) => d.bridge.preview(points, camera()),
+      notify: d.notify,
+    }),
+    dividing: new DividingCurveTool({
+      sample,
+      step,
+      selected: () => {
+        const c = editor.selectedCurve;
+        return c?.type === 'dividing' ? c : null;
+      },
+      normalsAt: (pts) => pts.map((p) => d.head.normalAt(p)),
+      showDraft,
+      commit: (points, normals) =>
+        editor.run({
+          kind: 'addCurve',
+          curve: {
+            type: 'dividing',
+            points,
+            normals,
+            sigma: 1,
+            h: 0.5,
+            alpha0: 0,
+            alpha1: 0,
+            viewpoint: camera(),
+          },
+          what: `dividing curve {id} (${points.length - 1} segments)`,
+        }),
+      setTilt: (end, alpha, side) => {
+        const c = editor.selectedCurve;
+        if (c?.type === 'dividing') editor.run({ kind: 'setTilt', id: c.id, end, alpha, side });
+      },
+      notify: d.notify,
+    }),
+    ponytail,
+    select: new SelectTool({
+      // hidden curves (Curves display off) cannot be picked
+      curves: () => (d.overlays.display.curves ? editor.session.curves : []),
+      toScreen: (p) => viewer.worldToScreen(p),
+      select: (id) => editor.select(id),
+    }),
+  };
+  return { byName, ponytail };
+}

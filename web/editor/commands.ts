@@ -1,0 +1,178 @@
+// Every change a user makes to the session, as one typed command, and what each does: a pure
+// function from (session, command) to the next session, the selection after it and a sentence
+// for the status line. The Editor (editor.ts) runs them through one path: history, then notify.
+import { ponytailCircles } from '../model/ponytailGeometry';
+import {
+  addCurve,
+  deleteCurve,
+  type ExtraConstraints,
+  findCurve,
+  nextCurveId,
+  type SessionState,
+  type StyleCurve,
+  updateCurve,
+  type Viewpoint,
+} from '../model/session';
+import type { SurfaceMode } from '../model/supportingSurface';
+import type { Vec3 } from '../model/vec3';
+
+/** A new curve as a tool makes it: everything but its id (the editor assigns it). */
+export type NewCurve = StyleCurve extends infer C
+  ? C extends StyleCurve
+    ? Omit<C, 'id'>
+    : never
+  : never;
+
+/** Scalar parameters the curve panel edits (dividing σ, h, α0, α1; ponytail tightness;
+ *  stream / ponytail "extend"). */
+export type CurveParamPatch = Readonly<Record<string, number | boolean>>;
+
+export type HintKind = 'cut' | 'concatenate' | 'insert';
+
+export type Command =
+  | { kind: 'addCurve'; curve: NewCurve; what: string }
+  | { kind: 'deleteCurve'; id: string }
+  /** A hint stroke's edit of a stream curve or ponytail spine (S4.4): its new points. */
+  | { kind: 'hintEdit'; id: string; op: HintKind; points: Vec3[] }
+  /** A dividing curve's tilt from a tilt hint (S4.5). */
+  | { kind: 'setTilt'; id: string; end: 'alpha0' | 'alpha1'; alpha: number; side: 1 | -1 }
+  | { kind: 'patchCurve'; id: string; patch: CurveParamPatch }
+  | { kind: 'setViewpoint'; id: string; viewpoint: Viewpoint }
+  | { kind: 'setSurfaceMode'; id: string; mode: SurfaceMode }
+  | { kind: 'setAvoid'; avoid: ExtraConstraints | null }
+  | { kind: 'setHairColor'; color: string }
+  /** Replaces the whole session (a file, a link, a test hook). The page's grid is kept: curves
+   *  are in world units. `camera`: the view the session was saved with, if any. */
+  | {
+      kind: 'loadSession';
+      session: SessionState;
+      what: string;
+      camera?: Viewpoint;
+      /** Start a new history (a link opened with the page) instead of an undoable edit. */
+      resetHistory?: boolean;
+    };
+
+export type CommandKind = Command['kind'];
+
+export interface CommandResult {
+  session: SessionState;
+  /** The selection after the command (undefined: unchanged). */
+  selectedId?: string | null;
+  message: string;
+}
+
+const deg = (rad: number) => Math.round((rad * 180) / Math.PI);
+const HEX_COLOR = /^#[0-9a-fA-F]{6}$/;
+
+/** What `cmd` does to `s`. The session is returned unchanged (same object) when nothing
+ *  changes; the message then says why. */
+export function applyCommand(s: SessionState, cmd: Command): CommandResult {
+  switch (cmd.kind) {
+    case 'addCurve': {
+      const id = nextCurveId(s);
+      const curve = { ...cmd.curve, id } as StyleCurve;
+      return {
+        session: addCurve(s, curve),
+        selectedId: id,
+        message: `Added ${cmd.what.replace('{id}', id)}.`,
+      };
+    }
+    case 'deleteCurve': {
+      const next = deleteCurve(s, cmd.id);
+      if (next === s) return { session: s, message: `No curve ${cmd.id} to delete.` };
+      // the selection drops only if it was this curve (the editor drops missing selections)
+      return { session: next, message: `Deleted curve ${cmd.id}.` };
+    }
+    case 'hintEdit': {
+      const c = findCurve(s, cmd.id);
+      if (!c || c.type === 'dividing')
+        return { session: s, message: `No curve ${cmd.id} to edit.` };
+      if (c.type === 'ponytail') {
+        // the circles follow the edited spine, between the profiles as drawn
+        const { circles } = ponytailCircles(
+          cmd.points,
+          c.crossSection,
+          c.profiles[0],
+          c.profiles[1],
+          {
+            every: 2,
+          },
+        );
+        if (circles.length === 0)
+          return {
+            session: s,
+            message: `Hint: ${cmd.op} would leave the ponytail without circles — nothing changed.`,
+          };
+        return {
+          session: updateCurve(s, c.id, () => ({ ...c, points: cmd.points, circles })),
+          message: `Hint: ${cmd.op} — ponytail ${c.id} spine now has ${cmd.points.length} points.`,
+        };
+      }
+      return {
+        session: updateCurve(s, c.id, () => ({ ...c, points: cmd.points })),
+        message: `Hint: ${cmd.op} — ${c.id} now has ${cmd.points.length} points.`,
+      };
+    }
+    case 'setTilt': {
+      const c = findCurve(s, cmd.id);
+      if (c?.type !== 'dividing') return { session: s, message: `No dividing curve ${cmd.id}.` };
+      return {
+        session: updateCurve(s, c.id, () => ({ ...c, [cmd.end]: cmd.alpha })),
+        message: `Tilt: ${cmd.end} of ${c.id} = ${deg(cmd.alpha)}° (stroke on the ${cmd.side > 0 ? '+x' : '−x'} side).`,
+      };
+    }
+    case 'patchCurve': {
+      const c = findCurve(s, cmd.id);
+      if (!c) return { session: s, message: `No curve ${cmd.id}.` };
+      const keys = Object.keys(cmd.patch).filter(
+        (k) =>
+          k in c && typeof (c as unknown as Record<string, unknown>)[k] === typeof cmd.patch[k],
+      );
+      if (keys.length === 0) return { session: s, message: `Nothing to change on ${c.id}.` };
+      const patch: Record<string, number | boolean> = {};
+      for (const k of keys) patch[k] = cmd.patch[k];
+      return {
+        session: updateCurve(s, c.id, () => ({ ...c, ...patch }) as StyleCurve),
+        message: `Changed ${keys.join(', ')} of ${c.id}.`,
+      };
+    }
+    case 'setViewpoint': {
+      const c = findCurve(s, cmd.id);
+      if (!c) return { session: s, message: `No curve ${cmd.id}.` };
+      return {
+        session: updateCurve(s, c.id, () => ({ ...c, viewpoint: cmd.viewpoint })),
+        message: `Viewpoint of ${c.id} set to the current view.`,
+      };
+    }
+    case 'setSurfaceMode': {
+      const c = findCurve(s, cmd.id);
+      if (c?.type !== 'stream')
+        return { session: s, message: 'Surface mode applies to a selected stream curve.' };
+      if ((c.surfaceMode ?? 'ruled') === cmd.mode)
+        return { session: s, message: `Supporting surface of ${c.id}: ${cmd.mode}.` };
+      return {
+        session: updateCurve(s, c.id, () => ({ ...c, surfaceMode: cmd.mode })),
+        message: `Supporting surface of ${c.id}: ${cmd.mode}.`,
+      };
+    }
+    case 'setAvoid':
+      return {
+        session: { ...s, avoid: cmd.avoid },
+        message: cmd.avoid
+          ? `Avoid scalp: ${cmd.avoid.index.length} constraints near the head.`
+          : 'Scalp avoidance removed.',
+      };
+    case 'setHairColor': {
+      if (!HEX_COLOR.test(cmd.color))
+        return { session: s, message: `Hair colour "${cmd.color.slice(0, 20)}" is not #rrggbb.` };
+      if (cmd.color === s.hairColor) return { session: s, message: `Hair colour ${cmd.color}.` };
+      return { session: { ...s, hairColor: cmd.color }, message: `Hair colour ${cmd.color}.` };
+    }
+    case 'loadSession':
+      return {
+        session: { ...cmd.session, grid: s.grid },
+        selectedId: null,
+        message: `${cmd.what} (${cmd.session.curves.length} curves).`,
+      };
+  }
+}

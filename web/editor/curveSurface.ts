@@ -1,0 +1,27 @@
+// A curve's supporting surface (S4.3), built from its points, its own viewpoint and its mode,
+// cached per curve object (curves are immutable: an edit makes a new object). Hint strokes are
+// lifted onto it; the "Surface" display draws it.
+import type { StyleCurve } from '../model/session';
+import { buildSupportingSurface, type SupportingSurface } from '../model/supportingSurface';
+
+/** Half width of a curve's supporting surface, in grid steps. */
+export const SURFACE_HALF_WIDTH = 6;
+
+const cache = new WeakMap<StyleCurve, { step: number; surface: SupportingSurface }>();
+
+/** The supporting surface of a stream curve or ponytail spine; null for a dividing curve (it
+ *  lies on the scalp) or a curve with fewer than two points. */
+export function curveSurface(c: StyleCurve, step: number): SupportingSurface | null {
+  if (c.type === 'dividing' || c.points.length < 2) return null;
+  const hit = cache.get(c);
+  if (hit && hit.step === step) return hit.surface;
+  const mode = c.type === 'stream' ? (c.surfaceMode ?? 'ruled') : 'ruled';
+  const surface = buildSupportingSurface(
+    c.points,
+    c.viewpoint.position,
+    mode,
+    SURFACE_HALF_WIDTH * step,
+  );
+  cache.set(c, { step, surface });
+  return surface;
+}
