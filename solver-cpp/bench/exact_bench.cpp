@@ -1,4 +1,4 @@
-// Benchmark of the exact solver (issue 3) on an N^3 box: analyse, factor, 3-RHS solve, and edits
+// Benchmark of the exact solver (paper §4.2) on an N^3 box: analyse, factor, 3-RHS solve, and edits
 // that add then remove a curve's 100 / 300 / 1000 clustered points on top of ~3000 existing
 // constraints, with the method the cost model chose; peak memory; optionally Eigen's
 // SimplicialLDLT refactorisation as the naive baseline. Same source natively and in wasm.

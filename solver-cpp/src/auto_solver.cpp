@@ -14,18 +14,18 @@ Status AutoSolver::setGrid(const Grid& grid, double omega) {
 }
 
 Status AutoSolver::setConstraints(const ConstraintSet& next) {
-  if (!inner_) return Status::Error(StatusCode::InvalidInput, "setConstraints before setGrid");
+  if (!inner_) return Status::Error(StatusCode::NotReady, "setConstraints before setGrid");
   return inner_->setConstraints(next);
 }
 
 Status AutoSolver::solve(Field& T) {
-  if (!inner_) return Status::Error(StatusCode::InvalidInput, "solve before setGrid");
+  if (!inner_) return Status::Error(StatusCode::NotReady, "solve before setGrid");
   return inner_->solve(T);
 }
 
 Status AutoSolver::iterate(int maxIterations, double tolerance, Field& T,
                            IterateProgress& progress) {
-  if (!inner_) return Status::Error(StatusCode::InvalidInput, "iterate before setGrid");
+  if (!inner_) return Status::Error(StatusCode::NotReady, "iterate before setGrid");
   return inner_->iterate(maxIterations, tolerance, T, progress);
 }
 

@@ -62,7 +62,7 @@ Status CgSolver::setGrid(const Grid& grid, double omega) {
 }
 
 Status CgSolver::setConstraints(const ConstraintSet& next) {
-  if (!hasGrid_) return Status::Error(StatusCode::InvalidInput, "setConstraints before setGrid");
+  if (!hasGrid_) return Status::Error(StatusCode::NotReady, "setConstraints before setGrid");
   Status s = validateConstraints(grid_, next);
   if (!s.ok()) return s;
   for (size_t c = 1; c < next.size(); ++c)
@@ -171,7 +171,7 @@ double smallestTridiagonalEigenvalue(const std::vector<double>& d, const std::ve
 }
 
 Status CgSolver::solve(Field& T) {
-  if (!hasGrid_) return Status::Error(StatusCode::InvalidInput, "solve before setGrid");
+  if (!hasGrid_) return Status::Error(StatusCode::NotReady, "solve before setGrid");
   const auto t0 = Clock::now();
   const int n = int(grid_.size());
   stats_.method = "cg";

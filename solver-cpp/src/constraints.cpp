@@ -28,9 +28,8 @@ Status validateConstraints(const Grid& grid, const ConstraintSet& set) {
       return Status::Error(StatusCode::InvalidInput,
                            "constraint index " + std::to_string(c.index) + " is outside the grid");
     if (!c.target.allFinite())
-      return Status::Error(
-          StatusCode::InvalidInput,
-          "constraint target at index " + std::to_string(c.index) + " is not finite");
+      return Status::Error(StatusCode::NonFinite, "constraint target at index " +
+                                                      std::to_string(c.index) + " is not finite");
   }
   return Status::Ok();
 }

@@ -16,29 +16,31 @@ Eigen::Vector3d pointAt(const double* pts, size_t i) {
 
 Status parseDividingParams(const double* params, size_t paramCount, size_t pointCount,
                            DividingParams& out) {
-  const size_t expected = 4 + 3 * pointCount;
+  const size_t expected = kDividingParamCount + 3 * pointCount;
   if (paramCount != expected)
     return Status::Error(StatusCode::InvalidInput,
                          "dividing parameter block has " + std::to_string(paramCount) +
-                             " numbers, expected 4 + 3 * " + std::to_string(pointCount) + " = " +
+                             " numbers, expected " + std::to_string(kDividingParamCount) +
+                             " + 3 * " + std::to_string(pointCount) + " = " +
                              std::to_string(expected));
   for (size_t i = 0; i < paramCount; ++i)
     if (!std::isfinite(params[i]))
-      return Status::Error(StatusCode::InvalidInput,
+      return Status::Error(StatusCode::NonFinite,
                            "dividing parameter " + std::to_string(i) + " is not finite");
-  if (!(params[0] > 0))
+  if (!(params[kDividingSigma] > 0))
     return Status::Error(StatusCode::InvalidInput, "dividing sigma must be > 0");
+  const double* normals = params + kDividingParamCount;
   for (size_t i = 0; i < pointCount; ++i) {
-    const double* n = params + 4 + 3 * i;
+    const double* n = normals + 3 * i;
     if (n[0] == 0 && n[1] == 0 && n[2] == 0)
       return Status::Error(StatusCode::InvalidInput,
                            "dividing scalp normal at point " + std::to_string(i) + " is zero");
   }
-  out.sigma = params[0];
-  out.h = params[1];
-  out.alpha0 = params[2];
-  out.alpha1 = params[3];
-  out.normals = params + 4;
+  out.sigma = params[kDividingSigma];
+  out.h = params[kDividingH];
+  out.alpha0 = params[kDividingAlpha0];
+  out.alpha1 = params[kDividingAlpha1];
+  out.normals = normals;
   return Status::Ok();
 }
 

@@ -33,6 +33,7 @@
 
 #include "constraint_colour.hpp"
 #include "constraints.hpp"
+#include "curve_params.hpp"
 #include "grid.hpp"
 #include "status.hpp"
 
@@ -44,8 +45,8 @@ constexpr double kDividingRedColumn = 1.0;  // |u| <= this, grid steps
 constexpr double kDividingRedTop = 2.0;     // v <= this, grid steps
 constexpr double kDividingSlab = 0.5;       // |w| <= this, grid steps
 
-// Parsed dividing parameter block (protocol.ts CurveSet.params, kind dividing):
-// [sigma, h, alpha0, alpha1, then nx, ny, nz per curve point].
+// Parsed dividing parameter block (protocol.ts CurveSet.params, kind dividing): the scalars
+// (curve_params.hpp DividingParam: sigma, h, alpha0, alpha1), then nx, ny, nz per curve point.
 struct DividingParams {
   double sigma = 1.0;               // grid steps, > 0
   double h = 0.5;                   // grid steps
@@ -53,8 +54,8 @@ struct DividingParams {
   const double* normals = nullptr;  // pointCount x 3
 };
 
-// Checks the block's size (4 + 3 * pointCount), finiteness, sigma > 0 and non-zero normals.
-// The message does not name the curve (the caller prefixes it).
+// Checks the block's size (kDividingParamCount + 3 * pointCount), finiteness (NonFinite),
+// sigma > 0 and non-zero normals. The message does not name the curve (the caller prefixes it).
 Status parseDividingParams(const double* params, size_t paramCount, size_t pointCount,
                            DividingParams& out);
 

@@ -61,7 +61,7 @@ Status ExactSolver::refactor() {
 }
 
 Status ExactSolver::setConstraints(const ConstraintSet& next) {
-  if (!hasGrid_) return Status::Error(StatusCode::InvalidInput, "exact: no grid");
+  if (!hasGrid_) return Status::Error(StatusCode::NotReady, "exact: no grid");
   Status v = validateConstraints(grid_, next);
   if (!v.ok()) return v;
   for (size_t i = 1; i < next.size(); ++i)
@@ -138,7 +138,7 @@ Status ExactSolver::setConstraints(const ConstraintSet& next) {
 }
 
 Status ExactSolver::solve(Field& T) {
-  if (!hasGrid_) return Status::Error(StatusCode::InvalidInput, "exact: no grid");
+  if (!hasGrid_) return Status::Error(StatusCode::NotReady, "exact: no grid");
   const auto t0 = std::chrono::steady_clock::now();
   if (current_.empty()) {
     T = Field::Zero(grid_.size(), 3);

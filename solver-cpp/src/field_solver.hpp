@@ -55,7 +55,10 @@ class FieldSolver {
   virtual std::string name() const = 0;
 };
 
-// Factory by name: "cg" (the simple reference path); later issues add "exact", "fast", "auto".
+// Factory by name: "cg" (plain conjugate gradients, the reference path), "fast" (multigrid-
+// preconditioned CG, mg_pcg_solver.hpp), "exact" (supernodal LDL^T with updates,
+// exact_solver.hpp), "auto" (exact on small grids, fast above, auto_solver.hpp); nullptr for an
+// unknown name.
 std::unique_ptr<FieldSolver> makeFieldSolver(const std::string& name);
 
 }  // namespace hairsketch

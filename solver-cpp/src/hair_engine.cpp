@@ -45,7 +45,7 @@ Status HairEngine::setScalp(const float* positions, size_t vertexCount, const ui
 }
 
 Status HairEngine::setCurves(const CurveSetView& curves) {
-  if (!hasGrid_) return Status::Error(StatusCode::InvalidInput, "setCurves before setGrid");
+  if (!hasGrid_) return Status::Error(StatusCode::NotReady, "setCurves before setGrid");
   ConstraintSet next;
   std::vector<uint8_t> nextColours;
   Status s = curvesToConstraints(grid_, curves, next, &nextColours);
@@ -59,7 +59,7 @@ Status HairEngine::setCurves(const CurveSetView& curves) {
 }
 
 Status HairEngine::solve() {
-  if (!hasGrid_) return Status::Error(StatusCode::InvalidInput, "solve before setGrid");
+  if (!hasGrid_) return Status::Error(StatusCode::NotReady, "solve before setGrid");
   Field T;
   Status s = solver_->solve(T);
   if (!s.ok()) return s;
@@ -70,7 +70,7 @@ Status HairEngine::solve() {
 }
 
 Status HairEngine::iterate(int maxIterations, double tolerance, IterateProgress& progress) {
-  if (!hasGrid_) return Status::Error(StatusCode::InvalidInput, "iterate before setGrid");
+  if (!hasGrid_) return Status::Error(StatusCode::NotReady, "iterate before setGrid");
   Field T;
   Status s = solver_->iterate(maxIterations, tolerance, T, progress);
   if (!s.ok() && s.code != StatusCode::NotConverged) return s;
@@ -81,9 +81,8 @@ Status HairEngine::iterate(int maxIterations, double tolerance, IterateProgress&
 }
 
 Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
-  if (!hasGrid_) return Status::Error(StatusCode::InvalidInput, "grow before setGrid");
-  if (!fieldValid_)
-    return Status::Error(StatusCode::InvalidInput, "grow: curves changed, solve first");
+  if (!hasGrid_) return Status::Error(StatusCode::NotReady, "grow before setGrid");
+  if (!fieldValid_) return Status::Error(StatusCode::NotReady, "grow: curves changed, solve first");
   if (rp.maxStrands < 0) return Status::Error(StatusCode::InvalidInput, "maxStrands < 0");
   const auto t0 = Clock::now();
   // The full root set is cached (sampling casts a ray per root); a cap takes an even stride of
@@ -114,11 +113,11 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
 Status HairEngine::scalpAvoidance(const ScalpAvoidanceParams& params, ConstraintSet& out,
                                   ScalpAvoidanceStats* stats) const {
   out.clear();
-  if (!hasGrid_) return Status::Error(StatusCode::InvalidInput, "scalp avoidance before setGrid");
+  if (!hasGrid_) return Status::Error(StatusCode::NotReady, "scalp avoidance before setGrid");
   if (!fieldValid_)
-    return Status::Error(StatusCode::InvalidInput, "scalp avoidance: curves changed, solve first");
+    return Status::Error(StatusCode::NotReady, "scalp avoidance: curves changed, solve first");
   if (meshIndices_.empty())
-    return Status::Error(StatusCode::InvalidInput, "scalp avoidance before setScalp");
+    return Status::Error(StatusCode::NotReady, "scalp avoidance before setScalp");
   HeadMeshView m{meshPositions_.data(), meshPositions_.size() / 3, meshIndices_.data(),
                  meshIndices_.size() / 3, meshScalp_.data()};
   return scalpAvoidanceConstraints(grid_, field_, m, params, out, stats);

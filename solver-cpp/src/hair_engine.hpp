@@ -8,19 +8,19 @@
 #include <vector>
 
 #include "constraints.hpp"
+#include "curve_set.hpp"
 #include "field_solver.hpp"
 #include "grid.hpp"
 #include "scalp_avoidance.hpp"
 #include "scalp_roots.hpp"
 #include "status.hpp"
 #include "strand_growth.hpp"
-#include "stream_constraints.hpp"
 
 namespace hairsketch {
 
 class HairEngine {
  public:
-  // New grid and solver ("cg", or any name makeFieldSolver knows). Clears curves and field.
+  // New grid and solver by name (makeFieldSolver: cg, fast, exact, auto). Clears curves and field.
   Status setGrid(const Grid& grid, double omega, const std::string& solverName);
   Status setScalp(const float* positions, size_t vertexCount, const uint32_t* indices,
                   size_t triangleCount, const uint8_t* scalp, const Eigen::Vector3d& center);

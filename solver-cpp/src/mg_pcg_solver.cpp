@@ -57,7 +57,7 @@ Status MgPcgSolver::setGrid(const Grid& grid, double omega) {
 }
 
 Status MgPcgSolver::setConstraints(const ConstraintSet& input) {
-  if (!hasGrid_) return Status::Error(StatusCode::InvalidInput, "setGrid first");
+  if (!hasGrid_) return Status::Error(StatusCode::NotReady, "setGrid first");
   const auto t0 = Clock::now();
   Status s = validateConstraints(grid_, input);
   if (!s.ok()) return s;
@@ -136,7 +136,7 @@ void MgPcgSolver::updateEstimate() {
 }
 
 Status MgPcgSolver::iterate(int maxIterations, double tolerance, MgProgress* out) {
-  if (!hasGrid_) return Status::Error(StatusCode::InvalidInput, "setGrid first");
+  if (!hasGrid_) return Status::Error(StatusCode::NotReady, "setGrid first");
   const auto t0 = Clock::now();
   if (set_.empty()) {  // no constraints: the field is zero by definition
     progress_ = MgProgress();

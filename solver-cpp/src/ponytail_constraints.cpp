@@ -46,28 +46,29 @@ CircleCoords circleCoords(const PonytailCircle& c, const Eigen::Vector3d& q, dou
 }  // namespace
 
 Status parsePonytailParams(const double* p, size_t count, PonytailParams& out) {
-  if (count < 2)
+  constexpr size_t S = kPonytailParamCount;  // scalars, then the circle count m
+  if (count < S + 1)
     return Status::Error(StatusCode::InvalidInput,
                          "ponytail parameter block needs [tightness, circles, ...], has " +
                              std::to_string(count) + " numbers");
   for (size_t i = 0; i < count; ++i)
     if (!std::isfinite(p[i]))
-      return Status::Error(StatusCode::InvalidInput,
+      return Status::Error(StatusCode::NonFinite,
                            "ponytail parameter " + std::to_string(i) + " is not finite");
-  const double m = p[1];
+  const double m = p[S];
   if (!(m >= 1) || std::floor(m) != m || m > 1e6)
     return Status::Error(StatusCode::InvalidInput,
                          "ponytail circle count must be a positive integer");
   const size_t circles = size_t(m);
-  if (count != 2 + 7 * circles)
+  if (count != S + 1 + 7 * circles)
     return Status::Error(StatusCode::InvalidInput,
                          "ponytail parameter block has " + std::to_string(count) +
-                             " numbers, expected 2 + 7 * " + std::to_string(circles) + " = " +
-                             std::to_string(2 + 7 * circles));
-  out.tightness = p[0];
+                             " numbers, expected " + std::to_string(S + 1) + " + 7 * " +
+                             std::to_string(circles) + " = " + std::to_string(S + 1 + 7 * circles));
+  out.tightness = p[kPonytailTightness];
   out.circles.resize(circles);
   for (size_t k = 0; k < circles; ++k) {
-    const double* b = p + 2 + 7 * k;
+    const double* b = p + S + 1 + 7 * k;
     PonytailCircle& c = out.circles[k];
     c.centre = Eigen::Vector3d(b[0], b[1], b[2]);
     const Eigen::Vector3d a(b[3], b[4], b[5]);

@@ -1,6 +1,7 @@
 // Ponytail constraints (SPEC S4.6, paper §5 and Fig. 5). The curve's points are the spine; the
-// parameter block (protocol.ts) is [tightness, m, then per circle C_k (k = 1..m, C1 nearest the
-// scalp, Cm = "C2" the last): cx, cy, cz, ax, ay, az, r].
+// parameter block (protocol.ts) is the scalars (curve_params.hpp PonytailParam: tightness), then
+// m, then per circle C_k (k = 1..m, C1 nearest the scalp, Cm = "C2" the last): cx, cy, cz, ax,
+// ay, az, r.
 //
 // Per circle k: centre c_k, unit axis a_k (normalised here), radius r_k (world units).
 // Radius slope along the axis (the meridian of the surface of revolution through the circles):
@@ -24,6 +25,7 @@
 
 #include "constraint_colour.hpp"
 #include "constraints.hpp"
+#include "curve_params.hpp"
 #include "grid.hpp"
 #include "status.hpp"
 
@@ -44,7 +46,8 @@ struct PonytailParams {
   std::vector<PonytailCircle> circles;  // C1 first
 };
 
-// Checks the block's size (2 + 7 m, m >= 1 an integer), finiteness, radius > 0, non-zero axes.
+// Checks the block's size (kPonytailParamCount + 1 + 7 m, m >= 1 an integer), finiteness
+// (NonFinite), radius > 0, non-zero axes.
 // The message does not name the curve (the caller prefixes it).
 Status parsePonytailParams(const double* params, size_t paramCount, PonytailParams& out);
 

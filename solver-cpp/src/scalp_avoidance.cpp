@@ -51,13 +51,13 @@ Status scalpAvoidanceConstraints(const Grid& g, const Field& T, const HeadMeshVi
                                  ScalpAvoidanceStats* stats) {
   out.clear();
   if (stats) *stats = ScalpAvoidanceStats{};
-  if (!g.valid()) return Status::Error(StatusCode::InvalidInput, "scalp avoidance: no grid");
+  if (!g.valid()) return Status::Error(StatusCode::NotReady, "scalp avoidance: no grid");
   if (T.rows() != g.size())
     return Status::Error(StatusCode::InvalidInput,
                          "scalp avoidance: field has " + std::to_string(T.rows()) +
                              " rows, grid has " + std::to_string(g.size()) + " points");
   if (m.triangleCount == 0 || !m.positions || !m.indices || (!m.scalp && !prm.wholeHead))
-    return Status::Error(StatusCode::InvalidInput, "scalp avoidance: no scalp mesh");
+    return Status::Error(StatusCode::NotReady, "scalp avoidance: no scalp mesh");
   if (!(prm.band > 0) || !std::isfinite(prm.band) || !std::isfinite(prm.magnitude))
     return Status::Error(StatusCode::InvalidInput,
                          "scalp avoidance: band must be > 0 and magnitude finite");

@@ -32,13 +32,13 @@ Status ScalpSampler::build(const float* pos, size_t nv, const uint32_t* idx, siz
   tris_.clear();
   binStart_.clear();
   binTris_.clear();
-  if (!center.allFinite()) return Status::Error(StatusCode::InvalidInput, "scalp: center");
+  if (!center.allFinite()) return Status::Error(StatusCode::NonFinite, "scalp: center");
   if (nt == 0 || nv == 0 || !pos || !idx || !scalp)
     return Status::Error(StatusCode::InvalidInput, "scalp: empty mesh");
   if (nt > kMaxTriangles) return Status::Error(StatusCode::InvalidInput, "scalp: too large");
   for (size_t i = 0; i < 3 * nv; ++i)
     if (!std::isfinite(pos[i]))
-      return Status::Error(StatusCode::InvalidInput, "scalp: non-finite vertex position");
+      return Status::Error(StatusCode::NonFinite, "scalp: non-finite vertex position");
   for (size_t i = 0; i < 3 * nt; ++i)
     if (idx[i] >= nv)
       return Status::Error(StatusCode::InvalidInput,
@@ -161,7 +161,7 @@ bool ScalpSampler::castOutermost(const Eigen::Vector3d& dir, double& tBest, int&
 
 Status ScalpSampler::sample(const RootParams& p, std::vector<Eigen::Vector3f>& roots) const {
   roots.clear();
-  if (!built()) return Status::Error(StatusCode::InvalidInput, "no scalp mesh set");
+  if (!built()) return Status::Error(StatusCode::NotReady, "no scalp mesh set");
   if (!(p.thetaStepDeg > 0) || !(p.phiStepDeg > 0) || !std::isfinite(p.thetaStepDeg) ||
       !std::isfinite(p.phiStepDeg))
     return Status::Error(StatusCode::InvalidInput, "root sampling steps must be > 0");

@@ -6,7 +6,19 @@
 
 namespace hairsketch {
 
-enum class StatusCode { Ok, InvalidInput, OutOfMemory, NotPositiveDefinite, NotConverged };
+// InvalidInput: malformed input (sizes, ranges, layout). NonFinite: a NaN or infinity in the
+// input. OutOfMemory: the work would exceed a memory cap. NotReady: a phase called before the
+// one it needs (no grid, no scalp, curves changed since the last solve). NotPositiveDefinite,
+// NotConverged: numerical failures.
+enum class StatusCode {
+  Ok,
+  InvalidInput,
+  NonFinite,
+  OutOfMemory,
+  NotReady,
+  NotPositiveDefinite,
+  NotConverged
+};
 
 struct Status {
   StatusCode code = StatusCode::Ok;

@@ -131,9 +131,9 @@ Status growStrands(const Grid& g, const std::vector<float>& field,
   // UninitAllocator), so a repeated growth neither reallocates nor refills it.
   out.points.clear();
   out.strandStart.assign(1, 0);
-  if (!g.valid()) return Status::Error(StatusCode::InvalidInput, "grow: no grid");
+  if (!g.valid()) return Status::Error(StatusCode::NotReady, "grow: no grid");
   if (field.size() != size_t(g.size()) * 3)
-    return Status::Error(StatusCode::InvalidInput, "grow: no field for this grid (solve first)");
+    return Status::Error(StatusCode::NotReady, "grow: no field for this grid (solve first)");
   if (!(prm.stepFraction > 0) || !std::isfinite(prm.stepFraction))
     return Status::Error(StatusCode::InvalidInput, "grow: stepFraction must be > 0");
   if (!(prm.minMagnitude >= 0) || !std::isfinite(prm.minMagnitude))

@@ -135,7 +135,7 @@ TEST(CgSolver, RejectsBadInput) {
   EXPECT_FALSE(s.setGrid(g, std::numeric_limits<double>::quiet_NaN()).ok());
   ASSERT_TRUE(s.setGrid(g, 100).ok());
   ConstraintSet bad = {{3, {1, std::numeric_limits<double>::infinity(), 0}}};
-  EXPECT_EQ(s.setConstraints(bad).code, StatusCode::InvalidInput);
+  EXPECT_EQ(s.setConstraints(bad).code, StatusCode::NonFinite);
   EXPECT_EQ(s.setConstraints({{64, {1, 0, 0}}}).code, StatusCode::InvalidInput);
   EXPECT_EQ(s.setConstraints({{5, {1, 0, 0}}, {2, {1, 0, 0}}}).code, StatusCode::InvalidInput);
 }

@@ -164,7 +164,7 @@ TEST(DividingConstraints, ParamValidation) {
   prm[0] = 1;
   prm[6] = std::nan("");
   const Status s = parseDividingParams(prm.data(), prm.size(), 2, p);
-  EXPECT_EQ(s.code, StatusCode::InvalidInput);
+  EXPECT_EQ(s.code, StatusCode::NonFinite);
   EXPECT_NE(s.message.find("not finite"), std::string::npos);
   prm[6] = 0;
   prm[5] = 0;  // zero normal at point 0

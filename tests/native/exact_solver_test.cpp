@@ -151,7 +151,7 @@ TEST(ExactSolver, RejectsBadInput) {
   ExactSolver t;
   ASSERT_TRUE(t.setGrid(box(5, 5, 5), 100).ok());
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_EQ(t.setConstraints({{3, {nan, 0, 0}}}).code, StatusCode::InvalidInput);
+  EXPECT_EQ(t.setConstraints({{3, {nan, 0, 0}}}).code, StatusCode::NonFinite);
   EXPECT_EQ(t.setConstraints({{125, {1, 0, 0}}}).code, StatusCode::InvalidInput);
   EXPECT_EQ(t.setConstraints({{-1, {1, 0, 0}}}).code, StatusCode::InvalidInput);
   EXPECT_EQ(t.setConstraints({{9, {1, 0, 0}}, {3, {1, 0, 0}}}).code, StatusCode::InvalidInput);

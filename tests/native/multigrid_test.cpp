@@ -336,8 +336,8 @@ TEST(MgPcgSolver, RejectsBadInputAndKeepsState) {
   ASSERT_TRUE(s.solve(before).ok());
   const double inf = std::numeric_limits<double>::infinity();
   EXPECT_EQ(s.setConstraints({{4, Eigen::Vector3d(std::nan(""), 0, 0)}}).code,
-            StatusCode::InvalidInput);
-  EXPECT_EQ(s.setConstraints({{4, Eigen::Vector3d(0, inf, 0)}}).code, StatusCode::InvalidInput);
+            StatusCode::NonFinite);
+  EXPECT_EQ(s.setConstraints({{4, Eigen::Vector3d(0, inf, 0)}}).code, StatusCode::NonFinite);
   EXPECT_EQ(s.setConstraints({{int(g.size()), Eigen::Vector3d(0, 0, 1)}}).code,
             StatusCode::InvalidInput);
   EXPECT_EQ(s.setConstraints({{-1, Eigen::Vector3d(0, 0, 1)}}).code, StatusCode::InvalidInput);

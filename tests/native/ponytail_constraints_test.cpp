@@ -149,7 +149,7 @@ TEST(PonytailConstraints, ParamValidation) {
   EXPECT_EQ(code(v), StatusCode::InvalidInput);  // zero axis
   v = t.params;
   v[0] = INFINITY;
-  EXPECT_EQ(code(v), StatusCode::InvalidInput);
+  EXPECT_EQ(code(v), StatusCode::NonFinite);
   EXPECT_EQ(code({0.6}), StatusCode::InvalidInput);
 }
 

@@ -85,39 +85,3 @@ TEST(StreamConstraints, OutsideAndZeroLengthSegmentsAreSkippedUpperFaceIsLastCel
     for (int j = 1; j <= 2; ++j)
       for (int i = 2; i <= 3; ++i) EXPECT_EQ(m.count(g.index(i, j, k)), 1u);
 }
-
-TEST(StreamConstraints, CurveSetMergesCurvesAndRejectsBadInput) {
-  const Grid g = unitGrid(4, 4, 4);
-  // Two opposite single-segment curves through the same cell average to zero.
-  std::vector<double> pts = {0.5, 0.5, 0.5, 1.5, 0.5, 0.5, 1.5, 0.5, 0.5, 0.5, 0.5, 0.5};
-  std::vector<uint32_t> start = {0, 2, 4};
-  std::vector<uint8_t> kinds = {0, 0}, extend = {0, 0};
-  CurveSetView v{pts.data(), 4, start.data(), 2, kinds.data(), extend.data()};
-  ConstraintSet out;
-  ASSERT_TRUE(curvesToConstraints(g, v, out).ok());
-  ASSERT_EQ(out.size(), 8u);
-  for (const Constraint& c : out) EXPECT_EQ(c.target.norm(), 0.0);
-  // The same points as one curve: +x, a zero-length segment (skipped), then +x again through
-  // cell (2,0,0) once its last point moves to x = 2.5: corner columns i = 1, 2, 3.
-  v.curveCount = 1;
-  pts[9] = 2.5;
-  std::vector<uint32_t> start1 = {0, 4};
-  v.curveStart = start1.data();
-  ASSERT_TRUE(curvesToConstraints(g, v, out).ok());
-  EXPECT_EQ(out.size(), 8u + 4u);
-  // Unknown kind.
-  kinds[0] = 7;
-  EXPECT_EQ(curvesToConstraints(g, v, out).code, StatusCode::InvalidInput);
-  kinds[0] = 0;
-  // Layout errors and non-finite points.
-  std::vector<uint32_t> bad = {0, 3};
-  v.curveStart = bad.data();
-  EXPECT_EQ(curvesToConstraints(g, v, out).code, StatusCode::InvalidInput);
-  v.curveStart = start1.data();
-  pts[4] = std::nan("");
-  EXPECT_EQ(curvesToConstraints(g, v, out).code, StatusCode::InvalidInput);
-  // No curves: no constraints.
-  v.curveCount = 0;
-  ASSERT_TRUE(curvesToConstraints(g, v, out).ok());
-  EXPECT_TRUE(out.empty());
-}
