@@ -2,7 +2,10 @@
 // as a wireframe of 12 edges.
 import * as THREE from 'three';
 import type { GridSpec } from '../solver/protocol';
-import { boxLines, flatGeometry } from './displayMaterials';
+import { flatGeometry } from './displayMaterials';
+import { overlayLineMaterial, setOverlayGeometry, withHiddenTwin } from './overlayStyle';
+
+const BOX_RGB = 0x59606b;
 
 /** The 12 edges of the grid box: edges[6 * e + 3 * end + axis]. Corners are origin and
  *  origin + step · (dims - 1). */
@@ -20,7 +23,11 @@ export function gridBoxEdges(grid: GridSpec): Float32Array {
 
 /** The box display: one THREE.LineSegments, rebuilt when the grid changes. */
 export class BoundingVolumeView {
-  readonly object = new THREE.LineSegments(new THREE.BufferGeometry(), boxLines());
+  // depth-tested against head and hair, faint where hidden (overlayStyle.ts)
+  readonly object = withHiddenTwin(
+    new THREE.LineSegments(new THREE.BufferGeometry(), overlayLineMaterial(BOX_RGB, 'visible')),
+    overlayLineMaterial(BOX_RGB, 'hidden'),
+  );
 
   constructor(grid: GridSpec) {
     this.object.name = 'box';
@@ -28,8 +35,6 @@ export class BoundingVolumeView {
   }
 
   update(grid: GridSpec): void {
-    const old = this.object.geometry;
-    this.object.geometry = flatGeometry(gridBoxEdges(grid));
-    old.dispose();
+    setOverlayGeometry(this.object, flatGeometry(gridBoxEdges(grid)));
   }
 }

@@ -4,12 +4,13 @@
 // dividing curve are short), and it fades towards white at its tip to show the direction.
 import * as THREE from 'three';
 import type { ConstraintArrays, GridSpec } from '../solver/protocol';
+import { flatGeometry } from './displayMaterials';
 import {
-  flatGeometry,
-  replaceGeometry,
-  vertexColourLines,
-  vertexColourPoints,
-} from './displayMaterials';
+  overlayVertexColourLines,
+  overlayVertexColourPoints,
+  setOverlayGeometry,
+  withHiddenTwin,
+} from './overlayStyle';
 
 /** RGB (0xRRGGBB) of each ConstraintColour code: blue, red, purple, green, grey (extra). */
 export const CONSTRAINT_RGB: readonly number[] = [0x1f5fe0, 0xe0262f, 0x9a3fc4, 0x1f9e4a, 0x7d848f];
@@ -75,18 +76,20 @@ export function constraintGlyphs(
 /** The constraint display: one THREE.Group of points and segments, rebuilt by update(). */
 export class ConstraintPointsView {
   readonly object = new THREE.Group();
-  private readonly points = new THREE.Points(new THREE.BufferGeometry(), vertexColourPoints());
-  private readonly segments = new THREE.LineSegments(
-    new THREE.BufferGeometry(),
-    vertexColourLines(true),
+  // depth-tested against head and hair, faint where hidden (overlayStyle.ts)
+  private readonly points = withHiddenTwin(
+    new THREE.Points(new THREE.BufferGeometry(), overlayVertexColourPoints('visible')),
+    overlayVertexColourPoints('hidden'),
+  );
+  private readonly segments = withHiddenTwin(
+    new THREE.LineSegments(new THREE.BufferGeometry(), overlayVertexColourLines('visible')),
+    overlayVertexColourLines('hidden'),
   );
   /** Number of constraints drawn. */
   count = 0;
 
   constructor() {
     this.object.name = 'constraints';
-    this.points.renderOrder = 11;
-    this.segments.renderOrder = 11;
     this.object.add(this.segments, this.points);
   }
 
@@ -94,11 +97,11 @@ export class ConstraintPointsView {
     const g = c ? constraintGlyphs(c, grid) : null;
     this.count = c ? c.index.length : 0;
     this.object.visible = this.count > 0;
-    replaceGeometry(
+    setOverlayGeometry(
       this.points,
       g ? flatGeometry(g.points, g.pointColours) : new THREE.BufferGeometry(),
     );
-    replaceGeometry(
+    setOverlayGeometry(
       this.segments,
       g ? flatGeometry(g.segments, g.segmentColours) : new THREE.BufferGeometry(),
     );

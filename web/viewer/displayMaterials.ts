@@ -1,4 +1,5 @@
-// Materials of the display overlays (constraints, field glyphs, bounding box, supporting surface).
+// Materials of the display overlays drawn as surfaces (the supporting surface); the line and point
+// overlays (constraints, field glyphs, bounding box) use overlayStyle.ts's two-pass depth rule.
 // Each is created once, on first use, and never disposed: a disposed material releases its shader
 // program, and compiling it again stalls on the GPU (seconds behind a software rasteriser).
 import * as THREE from 'three';
@@ -13,31 +14,6 @@ function shared<M extends THREE.Material>(key: string, make: () => M): M {
   }
   return m as M;
 }
-
-/** Lines coloured per vertex; drawn over everything when `onTop` (like the style curves). */
-export const vertexColourLines = (onTop: boolean): THREE.LineBasicMaterial =>
-  shared(`lines:${onTop}`, () =>
-    onTop
-      ? new THREE.LineBasicMaterial({ vertexColors: true, depthTest: false, transparent: true })
-      : new THREE.LineBasicMaterial({ vertexColors: true }),
-  );
-
-/** Round-ish screen-space points coloured per vertex, drawn over everything. */
-export const vertexColourPoints = (): THREE.PointsMaterial =>
-  shared(
-    'points',
-    () =>
-      new THREE.PointsMaterial({
-        vertexColors: true,
-        size: 5,
-        sizeAttenuation: false,
-        depthTest: false,
-        transparent: true,
-      }),
-  );
-
-export const boxLines = (): THREE.LineBasicMaterial =>
-  shared('box', () => new THREE.LineBasicMaterial({ color: 0x59606b }));
 
 /** Translucent, two-sided, not writing depth: the head and hair stay visible through it. */
 export const translucentSurface = (): THREE.MeshBasicMaterial =>

@@ -5,7 +5,8 @@
 // software rasteriser. Each segment runs from the point along v, darker at its root.
 import * as THREE from 'three';
 import type { GridSpec } from '../solver/protocol';
-import { flatGeometry, replaceGeometry, vertexColourLines } from './displayMaterials';
+import { flatGeometry } from './displayMaterials';
+import { overlayVertexColourLines, setOverlayGeometry, withHiddenTwin } from './overlayStyle';
 
 export interface FieldGlyphOptions {
   stride: number; // take every stride-th grid point along each axis
@@ -82,7 +83,11 @@ export function fieldGlyphSegments(
 
 /** The field display: one THREE.LineSegments, rebuilt by update(). */
 export class FieldGlyphsView {
-  readonly object = new THREE.LineSegments(new THREE.BufferGeometry(), vertexColourLines(false));
+  // depth-tested against head and hair, faint where hidden (overlayStyle.ts)
+  readonly object = withHiddenTwin(
+    new THREE.LineSegments(new THREE.BufferGeometry(), overlayVertexColourLines('visible')),
+    overlayVertexColourLines('hidden'),
+  );
   /** Number of glyphs drawn. */
   count = 0;
 
@@ -94,11 +99,11 @@ export class FieldGlyphsView {
   update(vectors: Float32Array | null, grid: GridSpec): void {
     if (!vectors) {
       this.count = 0;
-      replaceGeometry(this.object, new THREE.BufferGeometry());
+      setOverlayGeometry(this.object, new THREE.BufferGeometry());
     } else {
       const s = fieldGlyphSegments(vectors, grid, this.opts);
       this.count = s.count;
-      replaceGeometry(this.object, flatGeometry(s.positions, s.colours));
+      setOverlayGeometry(this.object, flatGeometry(s.positions, s.colours));
     }
     this.object.visible = this.count > 0;
   }

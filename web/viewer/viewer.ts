@@ -3,13 +3,31 @@
 // detail that keeps frames near INTERACTIVE_FRAME_MS on this GPU: a prefix of the strands, which
 // buildStrandGeometry orders as an even sample. The budget comes from measured frame times, so a
 // fast GPU always draws everything; a software rasteriser draws a sparse sample while things move,
-// and the whole head of hair once they stop.
+// and the whole head of hair once they stop. When the view settles and the whole hair is more
+// than an interactive frame can draw, the settled view is first drawn at interactive detail (that
+// frame is when new hair is "shown": onHairShown), and the full-detail frame follows a frame
+// later, so nothing waiting for the hair waits for it (a 30K-strand frame takes seconds on
+// SwiftShader).
+// Style curves, the draft stroke, guides and display glyphs are depth-tested against head and
+// hair, and faint where hidden (overlayStyle.ts).
 import * as THREE from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import type { Vec3 } from '../model/vec3';
+import {
+  curveRgb,
+  HIDDEN_OPACITY,
+  OVERLAY_ORDER,
+  OVERLAY_RGB,
+  overlayPolyline,
+  SELECTED_HIDDEN_OPACITY,
+} from './overlayStyle';
+import { type CameraView, easeInOut, interpolateView, orbitRotateSpeed } from './viewMath';
 
 export interface CurveView {
   id: string;
+  /** Session curve type ('stream' | 'dividing' | 'ponytail'): chooses the colour (stream when
+   *  absent). */
+  type?: string;
   points: readonly Vec3[];
 }
 
@@ -20,8 +38,31 @@ const FAST_FRAME_MS = 25;
 const INTERACTIVE_RESOLUTION = 0.5;
 /** Index entries (2 per segment) an interactive frame may always draw: ~250 strands. */
 const MIN_HAIR_BUDGET = 30_000;
+/** Hair budget before any frame was measured on a software rasteriser (a first look of 6,000
+ *  strands drawn whole took ~1 s there). */
+const SOFTWARE_INITIAL_BUDGET = 2 * MIN_HAIR_BUDGET;
+/** Frames between a settled view drawn at interactive detail and its full-detail frame: the
+ *  former is presented (with whatever the page changed meanwhile) before the latter's GPU work. */
+const FULL_DETAIL_DELAY_FRAMES = 1;
+/** Duration of resetView's animation. */
+const RESET_VIEW_MS = 450;
 
 export const DEFAULT_CAMERA = { position: [2.6, 0.9, 7.0] as Vec3, target: [0, -0.55, 0] as Vec3 };
+
+export type FrameMode = 'interactive' | 'settled' | 'full';
+
+/** Hair index count a frame of `mode` draws, given all of the hair and the interactive prefix,
+ *  and whether a full-detail frame must follow: a settled view is drawn whole only when an
+ *  interactive frame could draw it all, else at interactive detail first. */
+export function frameDetail(
+  mode: FrameMode,
+  all: number,
+  interactive: number,
+): { count: number; fullDetailNext: boolean } {
+  if (mode === 'interactive') return { count: interactive, fullDetailNext: false };
+  if (mode === 'settled' && interactive < all) return { count: interactive, fullDetailNext: true };
+  return { count: all, fullDetailNext: false };
+}
 
 export class Viewer {
   readonly renderer: THREE.WebGLRenderer;
@@ -33,25 +74,43 @@ export class Viewer {
   /** Display overlays (constraints, field, box, surface): owned by their display modules. */
   private readonly displayGroup = new THREE.Group();
   private readonly guideGroup = new THREE.Group();
-  private draft: THREE.Line | null = null;
+  private draft: THREE.Object3D | null = null;
   private hair: THREE.LineSegments | null = null;
   private dirty = true;
   /** WebGL runs on a software rasteriser (no GPU). */
   readonly software: boolean;
   /** Reasons the view is interactive now (e.g. 'orbit', 'stroke', 'settling'). */
   private readonly holds = new Set<string>();
-  /** Hair index count an interactive frame may draw (Infinity until a slow frame is seen). */
-  private hairBudget = Number.POSITIVE_INFINITY;
+  /** Hair index count an interactive frame may draw (until a slow frame is seen: Infinity on a
+   *  GPU, SOFTWARE_INITIAL_BUDGET on a software rasteriser). */
+  private hairBudget: number;
   private lastRender: { time: number; drawn: number } | null = null;
   private lastDetail = 1;
   private frameHooks: Array<() => void> = [];
   /** Called after each rendered frame (e.g. to count displayed hair revisions). */
   onRendered: (() => void) | null = null;
+  /** The settled view was drawn at interactive detail; its full-detail frame is still to come
+   *  (in fullDetailWait more frames). */
+  private fullDetailOwed = false;
+  private fullDetailWait = 0;
+  /** The hair object the last rendered frame drew (null: none yet). */
+  private shownHair: THREE.Object3D | null = null;
+  private readonly hairShownListeners = new Set<(hair: THREE.Object3D) => void>();
+  /** User orbit speed (1 = default: ORBIT_DEGREES_PER_WIDTH across the view). */
+  private orbitFactor = 1;
+  /** The camera resetView returns to. */
+  private homeView: CameraView = {
+    position: [...DEFAULT_CAMERA.position],
+    target: [...DEFAULT_CAMERA.target],
+  };
+  private viewAnimation: { from: CameraView; to: CameraView; start: number; ms: number } | null =
+    null;
 
   constructor(readonly canvas: HTMLCanvasElement) {
     // Multisampling costs ~2x per frame on a software rasteriser (SwiftShader, llvmpipe), where
     // frame time, not the solver, bounds interactivity: it is on only for a hardware GPU.
     this.software = isSoftwareGl();
+    this.hairBudget = this.software ? SOFTWARE_INITIAL_BUDGET : Number.POSITIVE_INFINITY;
     this.renderer = new THREE.WebGLRenderer({
       canvas,
       antialias: !this.software,
@@ -65,7 +124,10 @@ export class Viewer {
     this.controls.minDistance = 2;
     this.controls.maxDistance = 25;
     this.controls.addEventListener('change', () => this.requestRender());
-    this.controls.addEventListener('start', () => this.hold('orbit', true));
+    this.controls.addEventListener('start', () => {
+      this.stopViewAnimation(); // the user takes the camera
+      this.hold('orbit', true);
+    });
     this.controls.addEventListener('end', () => this.hold('orbit', false));
     this.setCamera(DEFAULT_CAMERA.position, DEFAULT_CAMERA.target);
 
@@ -85,17 +147,56 @@ export class Viewer {
       // while the GPU is behind)
       if (this.lastRender) this.adaptBudget(now - this.lastRender.time, this.lastRender.drawn);
       this.lastRender = null;
+      this.stepViewAnimation(now);
       for (const hook of this.frameHooks) hook();
       if (this.dirty) {
         this.dirty = false;
-        const drawn = this.applyHairDetail();
-        this.renderer.render(this.scene, this.camera);
-        this.lastRender = { time: now, drawn };
-        this.onRendered?.();
+        this.renderFrame(now, this.holds.size > 0 ? 'interactive' : 'settled');
+      } else if (this.fullDetailOwed && this.holds.size === 0 && this.fullDetailWait-- <= 0) {
+        this.renderFrame(now, 'full');
       }
       requestAnimationFrame(loop);
     };
     requestAnimationFrame(loop);
+  }
+
+  /** Draws the scene. 'interactive': the hair at interactive detail; 'settled': all of it when a
+   *  frame can afford it, else interactive detail now and all of it FULL_DETAIL_DELAY_FRAMES
+   *  frames later ('full'). */
+  private renderFrame(now: number, mode: FrameMode): void {
+    const { all, interactive } = this.hairCounts();
+    const { count, fullDetailNext } = frameDetail(mode, all, interactive);
+    this.fullDetailOwed = fullDetailNext;
+    if (fullDetailNext) this.fullDetailWait = FULL_DETAIL_DELAY_FRAMES;
+    if (this.hair && all > 0) this.hair.geometry.setDrawRange(0, count);
+    this.lastDetail = all > 0 ? count / all : 1;
+    this.renderer.render(this.scene, this.camera);
+    this.lastRender = { time: now, drawn: count };
+    this.onRendered?.();
+    const hair = this.hairGroup.children[0] ?? null;
+    if (hair !== this.shownHair) {
+      this.shownHair = hair;
+      if (hair) for (const cb of [...this.hairShownListeners]) cb(hair);
+    }
+  }
+
+  /** Calls `cb` with each hair object (as given to setHair) once the first frame that draws it
+   *  has been rendered, at whatever detail; DOM changes made in `cb` are painted with that frame.
+   *  Returns a function that removes the listener. */
+  onHairShown(cb: (hair: THREE.Object3D) => void): () => void {
+    this.hairShownListeners.add(cb);
+    return () => this.hairShownListeners.delete(cb);
+  }
+
+  /** Whether `hair` (as given to setHair) has been on screen. */
+  hairShown(hair: THREE.Object3D): boolean {
+    return this.shownHair === hair;
+  }
+
+  /** The settled view has been drawn at interactive detail and its full-detail frame is still to
+   *  come (a frame or two; that frame may take seconds on a software rasteriser). */
+  get fullDetailPending(): boolean {
+    return this.fullDetailOwed;
   }
 
   /** Runs `hook` once per animation frame, before rendering. */
@@ -140,19 +241,18 @@ export class Viewer {
     return all > 0 ? Math.min(1, this.hairBudget / all) : 1;
   }
 
-  private applyHairDetail(): number {
+  /** Index counts of the current hair: all of it, and the prefix an interactive frame draws. */
+  private hairCounts(): { all: number; interactive: number } {
     const lod = this.hair?.geometry.userData.lodCounts as Uint32Array | undefined;
-    if (!this.hair || !lod) return 0;
+    if (!lod || lod.length === 0) return { all: 0, interactive: 0 }; // drawn whole, as given
     const all = lod[lod.length - 1];
-    let count = all;
-    if (this.holds.size > 0 && this.hairBudget < all) {
+    let interactive = all;
+    if (this.hairBudget < all) {
       let g = 1;
       while (g + 1 < lod.length && lod[g + 1] <= this.hairBudget) g++;
-      count = lod[g];
+      interactive = lod[Math.min(g, lod.length - 1)];
     }
-    this.hair.geometry.setDrawRange(0, count);
-    this.lastDetail = all > 0 ? count / all : 1;
-    return count;
+    return { all, interactive };
   }
 
   private adaptBudget(frameMs: number, drawn: number): void {
@@ -179,10 +279,79 @@ export class Viewer {
   }
 
   setCamera(position: Vec3, target: Vec3): void {
+    this.stopViewAnimation();
+    this.placeCamera(position, target);
+  }
+
+  private placeCamera(position: Vec3, target: Vec3): void {
     this.camera.position.set(...position);
     this.controls.target.set(...target);
     this.controls.update();
     this.requestRender();
+  }
+
+  /** Returns the camera to the default framing of the head (DEFAULT_CAMERA, the view at load, or
+   *  the one given to setHomeView): animated over ~0.45 s unless `animate` is false. Orbiting,
+   *  setCamera or another resetView during the animation takes over from it. */
+  resetView(animate = true): void {
+    const to: CameraView = {
+      position: [...this.homeView.position],
+      target: [...this.homeView.target],
+    };
+    this.stopViewAnimation();
+    if (!animate) {
+      this.placeCamera(to.position, to.target);
+      return;
+    }
+    this.viewAnimation = { from: this.cameraState(), to, start: -1, ms: RESET_VIEW_MS };
+    this.hold('view-animation', true); // interactive detail while the camera moves
+    this.requestRender();
+  }
+
+  /** Sets the framing resetView returns to (default: DEFAULT_CAMERA). */
+  setHomeView(position: Vec3, target: Vec3): void {
+    this.homeView = { position: [...position], target: [...target] };
+  }
+
+  /** Whether resetView's animation is running. */
+  get viewAnimating(): boolean {
+    return this.viewAnimation !== null;
+  }
+
+  private stepViewAnimation(now: number): void {
+    const a = this.viewAnimation;
+    if (!a) return;
+    if (a.start < 0) a.start = now;
+    const t = a.ms > 0 ? (now - a.start) / a.ms : 1;
+    const v = interpolateView(a.from, a.to, easeInOut(t));
+    this.placeCamera(v.position, v.target);
+    if (t >= 1) this.stopViewAnimation();
+  }
+
+  private stopViewAnimation(): void {
+    if (!this.viewAnimation) return;
+    this.viewAnimation = null;
+    this.hold('view-animation', false);
+  }
+
+  /** Orbit speed relative to the default (1: a drag across the whole view turns the head
+   *  ORBIT_DEGREES_PER_WIDTH = 180°; 2 turns it twice as far). Non-positive or non-finite
+   *  factors count as 1. */
+  setOrbitSpeed(factor: number): void {
+    this.orbitFactor = Number.isFinite(factor) && factor > 0 ? factor : 1;
+    this.applyOrbitSpeed();
+  }
+
+  get orbitSpeed(): number {
+    return this.orbitFactor;
+  }
+
+  private applyOrbitSpeed(): void {
+    this.controls.rotateSpeed = orbitRotateSpeed(
+      this.canvas.clientWidth,
+      this.canvas.clientHeight,
+      this.orbitFactor,
+    );
   }
 
   cameraState(): { position: Vec3; target: Vec3 } {
@@ -207,13 +376,19 @@ export class Viewer {
     this.requestRender();
   }
 
+  /** Shows the style curves, each in its type's colour (overlayStyle.ts OVERLAY_RGB) and the
+   *  selected one highlighted and drawn over the others. */
   setCurves(curves: readonly CurveView[], selectedId: string | null): void {
-    for (const child of [...this.curveGroup.children]) {
-      this.curveGroup.remove(child);
-      disposeObject(child);
-    }
+    clearGroup(this.curveGroup);
     for (const c of curves) {
-      const line = polyline(c.points, c.id === selectedId ? 0xffc400 : 0x00b7d4);
+      if (c.points.length < 2) continue;
+      const selected = c.id === selectedId;
+      const line = overlayPolyline(
+        c.points,
+        curveRgb(c.type, selected),
+        selected ? OVERLAY_ORDER.selected : OVERLAY_ORDER.visible,
+        selected ? SELECTED_HIDDEN_OPACITY : HIDDEN_OPACITY,
+      );
       line.userData.curveId = c.id;
       this.curveGroup.add(line);
     }
@@ -237,16 +412,15 @@ export class Viewer {
     this.requestRender();
   }
 
-  /** Construction lines drawn over everything (e.g. a ponytail's strokes and circles). */
+  /** Construction lines (e.g. a ponytail's strokes and circles), in the ponytail guide colour. */
   setGuides(lines: readonly (readonly Vec3[])[]): void {
-    for (const child of [...this.guideGroup.children]) {
-      this.guideGroup.remove(child);
-      disposeObject(child);
-    }
-    for (const l of lines) if (l.length >= 2) this.guideGroup.add(polyline(l, 0xb04dff));
+    clearGroup(this.guideGroup);
+    for (const l of lines)
+      if (l.length >= 2) this.guideGroup.add(overlayPolyline(l, OVERLAY_RGB.ponytailGuide));
     this.requestRender();
   }
 
+  /** The stroke being drawn (null: none), in the draft colour, over the curves. */
   setDraft(points: readonly Vec3[] | null): void {
     if (this.draft) {
       this.scene.remove(this.draft);
@@ -254,7 +428,7 @@ export class Viewer {
       this.draft = null;
     }
     if (points && points.length >= 2) {
-      this.draft = polyline(points, 0x2f7bff);
+      this.draft = overlayPolyline(points, OVERLAY_RGB.draft, OVERLAY_ORDER.draft);
       this.scene.add(this.draft);
     }
     this.requestRender();
@@ -300,6 +474,7 @@ export class Viewer {
     this.renderer.setSize(w, h, false);
     this.camera.aspect = w / h;
     this.camera.updateProjectionMatrix();
+    this.applyOrbitSpeed(); // degrees per px follow the view's size
     this.requestRender();
   }
 }
@@ -319,33 +494,22 @@ function isSoftwareGl(): boolean {
   return /swiftshader|llvmpipe|softpipe|software/i.test(name);
 }
 
-// Line materials are shared and never disposed: a disposed material releases its shader program,
-// and compiling it again stalls on the GPU (seconds behind a software rasteriser).
-const lineMaterials = new Map<number, THREE.LineBasicMaterial>();
-function lineMaterial(color: number): THREE.LineBasicMaterial {
-  let m = lineMaterials.get(color);
-  if (!m) {
-    m = new THREE.LineBasicMaterial({ color, depthTest: false, transparent: true });
-    lineMaterials.set(color, m);
+function clearGroup(group: THREE.Group): void {
+  for (const child of [...group.children]) {
+    group.remove(child);
+    disposeObject(child);
   }
-  return m;
 }
 
-function polyline(points: readonly Vec3[], color: number): THREE.Line {
-  const arr = new Float32Array(points.length * 3);
-  points.forEach((p, i) => {
-    arr.set(p, 3 * i);
-  });
-  const g = new THREE.BufferGeometry();
-  g.setAttribute('position', new THREE.BufferAttribute(arr, 3));
-  const line = new THREE.Line(g, lineMaterial(color));
-  line.renderOrder = 10;
-  return line;
-}
-
-/** Frees an object's geometry; materials are the owner's (shared, reused across objects). */
+/** Frees an object's geometry (once, also when shared with its hidden-pass twin); materials are
+ *  the owner's (shared, reused across objects). */
 function disposeObject(o: THREE.Object3D): void {
+  const done = new Set<THREE.BufferGeometry>();
   o.traverse((x) => {
-    (x as THREE.Mesh).geometry?.dispose();
+    const g = (x as THREE.Mesh).geometry;
+    if (g && !done.has(g)) {
+      done.add(g);
+      g.dispose();
+    }
   });
 }
