@@ -9,6 +9,7 @@ import {
   editWithHintStroke,
   type HintSample,
   liftHintStroke,
+  scalpHintEdit,
 } from '../../web/tools/hintStroke';
 
 const d = 0.1;
@@ -192,5 +193,118 @@ describe('hint stroke classifier', () => {
     // A crossing that does not go far enough on one side is not a cut.
     const shallow = [mk(4, 0.3), mk(4.2, 0.2), mk(4.4, -0.05), mk(4.6, -0.2), mk(4.6, -0.1)];
     expect(classifyHintStroke(shallow, 11, d)).toEqual({ kind: 'none', reason: 'no-operation' });
+  });
+});
+
+// Strokes pressed on the scalp must clearly be hints (scalpHintEdit); otherwise the tool draws a
+// new curve. The view is straight down on the plane z = 0 at 100 px per world unit (10 px per
+// grid step): a sample's screen distance is its distance to the curve's segment in the plane.
+describe('hint strokes pressed on the scalp', () => {
+  const screen = (s: readonly HintSample[]) =>
+    s.map((h) => {
+      const x = Math.min(1, Math.max(0, h.point[0]));
+      return 100 * Math.hypot(h.point[0] - x, h.point[1]);
+    });
+  const fromScalp = (pts: Vec3[]) => {
+    const s = strokeThrough(pts);
+    const r = scalpHintEdit(curve, s, screen(s), d);
+    return r ? r.op.kind : 'new curve';
+  };
+
+  it('keeps the Fig. 3 operations: cut, concatenate, insert', () => {
+    const cut: Vec3[] = [
+      [0.55, 0.4, 0],
+      [0.55, -0.4, 0],
+    ];
+    const s = strokeThrough(cut);
+    const r = scalpHintEdit(curve, s, screen(s), d);
+    expect(r?.op.kind).toBe('cut');
+    expect(r?.points.length).toBe(6);
+    expect(
+      fromScalp([
+        [0.97, 0.02, 0],
+        [1.2, 0.15, 0],
+        [1.5, 0.35, 0],
+      ]),
+    ).toBe('concatenate');
+    // the insert of Fig. 3g: out 3 grid steps (30 px) between its ends, either way round
+    const insert: Vec3[] = [
+      [0.2, 0.02, 0],
+      [0.35, 0.3, 0],
+      [0.65, 0.3, 0],
+      [0.8, -0.01, 0],
+    ];
+    expect(fromScalp(insert)).toBe('insert');
+    expect(fromScalp(insert.slice().reverse())).toBe('insert');
+  });
+
+  it('is a new curve when it only runs along the curve, however close (not an insert)', () => {
+    const along: Vec3[] = [
+      [0.2, 0.02, 0],
+      [0.5, 0.03, 0],
+      [0.8, 0.02, 0],
+    ];
+    expect(classifyHintStroke(strokeThrough(along), curve.length, d).kind).toBe('insert');
+    expect(fromScalp(along)).toBe('new curve');
+    // leaving by less than near + leave (2 steps < 2.5): still running along it
+    const wavy: Vec3[] = [
+      [0.2, 0.02, 0],
+      [0.35, 0.2, 0],
+      [0.65, 0.2, 0],
+      [0.8, -0.01, 0],
+    ];
+    expect(classifyHintStroke(strokeThrough(wavy), curve.length, d).kind).toBe('insert');
+    expect(fromScalp(wavy)).toBe('new curve');
+  });
+
+  it('is a new curve when it does not start on the curve itself, or fits no operation', () => {
+    // near the end in surface terms (1 step), but 10 px from the curve's image: not "on" it
+    const offEnd: Vec3[] = [
+      [0.95, 0.1, 0],
+      [1.3, 0.4, 0],
+    ];
+    expect(classifyHintStroke(strokeThrough(offEnd), curve.length, d).kind).toBe('concatenate');
+    expect(fromScalp(offEnd)).toBe('new curve');
+    // the 'none' strokes of Fig. 3's counter-examples
+    expect(
+      fromScalp([
+        [0.2, 0.4, 0],
+        [0.8, 0.4, 0],
+      ]),
+    ).toBe('new curve');
+    expect(
+      fromScalp([
+        [0.5, 0.01, 0],
+        [0.5, 0.5, 0],
+      ]),
+    ).toBe('new curve');
+  });
+
+  it('cuts only when it really crosses the curve, clear of it at both ends', () => {
+    // starts 1.55 steps off (far in surface terms, so the classifier says cut) but 15.5 px
+    // from the curve's image: too close to be clearly across it
+    const close: Vec3[] = [
+      [0.55, 0.155, 0],
+      [0.55, -0.4, 0],
+    ];
+    expect(classifyHintStroke(strokeThrough(close), curve.length, d).kind).toBe('cut');
+    expect(fromScalp(close)).toBe('new curve');
+    // the same crossing hidden behind the head
+    const s = strokeThrough([
+      [0.55, 0.4, 0],
+      [0.55, -0.4, 0],
+    ]);
+    const hidden = s.map((h) => ({ ...h, hidden: Math.abs(h.point[1]) < 0.05 }));
+    expect(scalpHintEdit(curve, hidden, screen(s), d)).toBeNull();
+    // a sign change between samples far from the curve (the stroke jumped across the surface)
+    const mk = (param: number, offset: number, y: number): HintSample => ({
+      point: [param * d, y, 0],
+      onSurface: true,
+      param,
+      offset,
+    });
+    const jump = [mk(4, 0.3, 0.3), mk(4, 0.25, 0.25), mk(6, -0.25, 0.5), mk(6, -0.3, 0.6)];
+    expect(classifyHintStroke(jump, curve.length, d).kind).toBe('cut');
+    expect(scalpHintEdit(curve, jump, [30, 25, 50, 60], d)).toBeNull();
   });
 });

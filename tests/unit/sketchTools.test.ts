@@ -41,7 +41,7 @@ const line = (a: [number, number], b: [number, number], n = 40): Array<[number, 
 describe('StreamCurveTool', () => {
   const curve: Vec3[] = Array.from({ length: 17 }, (_, i) => [i * STEP, 0, 0] as Vec3);
   const eyeAbove: Vec3 = [2, 0.3, 10];
-  function setup(selected: boolean) {
+  function setup(selected: boolean, scalp: (x: number, y: number) => boolean = (x) => x < 1) {
     const log: { commits: Vec3[][]; hints: HintResult[]; notes: string[] } = {
       commits: [],
       hints: [],
@@ -49,7 +49,7 @@ describe('StreamCurveTool', () => {
     };
     const surface = buildSupportingSurface(curve, eyeAbove, 'strip', 6 * STEP);
     const tool = new StreamCurveTool({
-      sample: sampler((x) => x < 1),
+      sample: sampler(scalp),
       eye: () => EYE,
       forward: () => FORWARD,
       step: () => STEP,
@@ -86,6 +86,41 @@ describe('StreamCurveTool', () => {
     expect(log.hints[1].points.length).toBeGreaterThan(curve.length);
     expect(log.hints[3].points).toEqual(curve); // nothing changed
     expect(log.commits).toHaveLength(0);
+  });
+
+  // The whole plane is scalp here: the selected curve lies on it, and every stroke starts on it.
+  // Without ctx.toScreen the tool measures the angle to the curve: 0.001 rad a pixel, so at the
+  // rays' 10 units 1 px = 0.01 (8 px = 0.08, 16 px = 0.16; a grid step is 0.25).
+  it('from the scalp, a stroke is a hint only when it clearly is one (Fig. 3 cases)', () => {
+    const { tool, log } = setup(true, () => true);
+    drag(tool, line([3, -1], [3, 1])); // across the curve, far on both sides
+    drag(tool, line([3.95, 0.0], [6, 0.5])); // from the end (on it), away from it
+    drag(
+      tool,
+      line([1.5, 0], [3.5, 0]).map(([x, y]) => [x, y + 0.8 * Math.sin((Math.PI * (x - 1.5)) / 2)]),
+    ); // from the curve, out 3.2 steps, back onto the curve
+    expect(log.hints.map((h) => h.op.kind)).toEqual(['cut', 'concatenate', 'insert']);
+    expect(log.hints[0].points.length).toBe(13);
+    expect(log.hints[1].points.length).toBeGreaterThan(curve.length);
+    expect(log.hints[2].points.length).toBeGreaterThan(curve.length);
+    expect(log.commits).toHaveLength(0);
+  });
+
+  it('from the scalp, a stroke that is not clearly a hint is a new curve, never an edit', () => {
+    const { tool, log } = setup(true, () => true);
+    const strokes: Array<Array<[number, number]>> = [
+      line([1.5, 0.03], [3.5, 0.03]), // alongside, 0.12 steps off: was an insert
+      line([1.5, 0.02], [3.5, 0.02]).map(([x, y]) => [x, y + 0.3 * Math.sin(x)]), // was insert
+      line([0.05, 0.05], [3, 0.1]), // from beside the root, along it: was an insert
+      line([2, 0.02], [2.5, 1.5]), // from the middle, leaving it: was 'concatenate-not-at-end'
+      line([3, -0.1], [3, 1]), // across, but from on the curve: was 'concatenate-not-at-end'
+      line([2, 1], [2.5, 1.2]), // beside it, never crossing: was 'no operation'
+      line([3.95, 0.12], [6, 0.5]), // 12 px from the end: not on it (was concatenate)
+    ];
+    for (const s of strokes) drag(tool, s);
+    expect(log.hints).toEqual([]);
+    expect(log.commits).toHaveLength(strokes.length);
+    for (const c of log.commits) expect(c.length).toBeGreaterThan(1);
   });
 
   it('says why a press off the scalp and off the surface draws nothing', () => {
@@ -128,6 +163,16 @@ describe('DividingCurveTool', () => {
     expect(tilts[1][0]).toBe('alpha1');
     expect(tilts[1][2]).toBe(-tilts[0][2]);
     expect(Math.abs(Math.abs(tilts[1][1]) - Math.PI / 4)).toBeLessThan(1e-6);
+    // a parting drawn alongside the selected one, within HINT_RADIUS of it: a new parting
+    const first = sel;
+    drag(tool, line([0.2, 0.2], [0.25, 3]));
+    expect(tilts).toHaveLength(2);
+    expect(selected).not.toBe(first);
+    const second = selected as unknown as { points: Vec3[] };
+    expect(second.points[0][0]).toBeCloseTo(0.2, 9);
+    // a stroke from beside it across to the other side is no tilt either
+    drag(tool, line([0.3, 1], [-0.5, 1.2]));
+    expect(tilts).toHaveLength(2);
   });
 });
 

@@ -1,15 +1,50 @@
 // The "Dividing curve" tool (SPEC S4.5): Idle -> Drawing -> Idle.
 // A stroke on the scalp (every sample projected onto the head where the pointer is over the
 // scalp) makes a dividing curve. A stroke that starts within HINT_RADIUS grid steps of the
-// selected dividing curve is a hint instead: it sets the tilt of that side (tiltFromHint).
+// selected dividing curve may instead be a tilt hint, which sets the tilt of that side
+// (tiltFromHint). It is one only when it clearly is (isTiltHint): it leaves the curve, its end
+// being farther from the curve than its start by at least max(1 grid step, TILT_LEAVE x the
+// start-to-end distance) (so it heads away within about 70° of the curve's normal), and the tilt
+// it asks for is under 90°. Anything else, e.g. a parting drawn alongside the selected one,
+// however close, is a new dividing curve. Decided when the stroke ends.
 import { tiltFromHint } from '../model/dividingFrames';
 import { resamplePolyline } from '../model/resample';
-import { distance, type Vec3 } from '../model/vec3';
+import { add, distance, dot, scale, sub, type Vec3 } from '../model/vec3';
 import type { StrokeSample } from './depthRule';
 import type { Tool, ToolPointer } from './tool';
 
-/** A press this near the selected dividing curve (grid steps) is a tilt hint. */
+/** A press this near the selected dividing curve (grid steps) may be a tilt hint (isTiltHint). */
 export const HINT_RADIUS = 2;
+/** A tilt hint's end is farther from the curve than its start by this fraction of its span. */
+export const TILT_LEAVE = 0.3;
+
+/** Distance from p to the polyline. */
+export function distanceToPolyline(p: Vec3, line: readonly Vec3[]): number {
+  let best = Number.POSITIVE_INFINITY;
+  for (let i = 0; i < line.length; i++) {
+    best = Math.min(best, distance(p, line[i]));
+    if (i + 1 >= line.length) continue;
+    const e = sub(line[i + 1], line[i]);
+    const ee = dot(e, e);
+    const t = ee > 0 ? dot(sub(p, line[i]), e) / ee : 0;
+    if (t > 0 && t < 1) best = Math.min(best, distance(p, add(line[i], scale(e, t))));
+  }
+  return best;
+}
+
+/** Whether a stroke (on the scalp) pressed near the dividing curve is clearly a tilt hint. */
+export function isTiltHint(
+  curve: readonly Vec3[],
+  stroke: readonly Vec3[],
+  step: number,
+  alpha: number,
+): boolean {
+  if (stroke.length < 2 || !(Math.abs(alpha) < Math.PI / 2)) return false;
+  const a = stroke[0];
+  const b = stroke[stroke.length - 1];
+  const gain = distanceToPolyline(b, curve) - distanceToPolyline(a, curve);
+  return gain >= Math.max(step, TILT_LEAVE * distance(a, b));
+}
 
 export interface DividingContext {
   sample(x: number, y: number): StrokeSample;
@@ -41,7 +76,7 @@ export class DividingCurveTool implements Tool {
     const sel = this.ctx.selected();
     const hit = first.scalpHit;
     const reach = HINT_RADIUS * this.ctx.step();
-    const near = sel?.points.some((q) => distance(q, hit) <= reach) ?? false;
+    const near = !!sel && distanceToPolyline(hit, sel.points) <= reach;
     this.state = near ? 'hinting' : 'drawing';
     this.points = [first.scalpHit];
     this.raw = [];
@@ -64,12 +99,11 @@ export class DividingCurveTool implements Tool {
     if (hinting) {
       const sel = this.ctx.selected();
       const t = sel && tiltFromHint(sel.points, sel.normals, stroke);
-      if (!t) {
-        this.ctx.notify('The tilt hint was too short: nothing changed.');
+      if (sel && t && isTiltHint(sel.points, stroke, this.ctx.step(), t.alpha)) {
+        this.ctx.setTilt(t.end, t.alpha, t.side);
         return;
       }
-      this.ctx.setTilt(t.end, t.alpha, t.side);
-      return;
+      // not clearly a tilt hint: a new dividing curve
     }
     const points = resamplePolyline(stroke, this.ctx.step());
     if (points.length < 3) {

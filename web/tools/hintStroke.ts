@@ -6,6 +6,7 @@
 //   minLength = 1  shorter strokes are ignored ('too-short')
 //   endWindow = 2  "near the curve's end": start parameter >= last index - endWindow
 //   minSpan = 1  insert needs its two ends >= minSpan points apart along the curve
+//   leave = 1  margin past `near` an insert pressed on the scalp must reach (see below)
 // Rules, in order (the first that applies):
 //   1. the first sample is not on the surface -> none 'not-on-surface';
 //   2. stroke length < minLength -> none 'too-short';
@@ -21,6 +22,22 @@
 //   cut: keep the curve from its root to the crossing parameter;
 //   concatenate: the curve up to the start parameter, then the stroke;
 //   insert: the curve up to the start parameter, the stroke, the curve from the end parameter.
+//
+// Strokes pressed on the scalp (scalpHintEdit). A press on the scalp is also how a new stream
+// curve starts, and a new curve is usually drawn right beside the last one (which is selected),
+// so such a stroke is a hint only when it clearly is one; otherwise the tool draws a new curve.
+// "Screen distance" is a sample's distance from the curve's image, in pixels (SCALP_HINT_PIXELS);
+// a sample is "hidden" when its surface point lies behind the head. It is a hint when the rules
+// above give an operation and:
+//   concatenate: the press is on the curve (screen distance <= pressPixels, 8);
+//   insert: the press is on the curve, the end is not hidden, and the stroke leaves the curve
+//     between its ends: its largest |offset| exceeds (near + leave) d and its largest screen
+//     distance clearPixels (16) (a stroke running along the curve, however close, is a new curve);
+//   cut: the stroke really crosses the curve: it starts and ends clear of the curve's image
+//     (screen distance >= clearPixels), and the crossing, interpolated between its two samples,
+//     lies within near d of the curve and is not hidden behind the head;
+//   anything else ('none' included) is not a hint: a new curve.
+// Strokes pressed off the scalp keep the rules above unchanged ('none' says why).
 import { resamplePolyline } from '../model/resample';
 import { intersectSupportingSurface, type SupportingSurface } from '../model/supportingSurface';
 import { add, distance, dot, length, lerp, scale, sub, type Vec3 } from '../model/vec3';
@@ -31,6 +48,8 @@ export interface HintSample {
   onSurface: boolean;
   param: number; // curve parameter (point-index units); NaN when off the surface
   offset: number; // signed offset from the curve in the surface, world units; NaN when off it
+  ray?: number; // index of the stroke ray it was lifted from (liftHintStroke skips a few)
+  hidden?: boolean; // on the surface but behind the head (set by the tool; see scalpHintEdit)
 }
 
 export interface HintThresholds {
@@ -38,6 +57,8 @@ export interface HintThresholds {
   minLength: number;
   endWindow: number;
   minSpan: number;
+  /** Margin past `near` (grid steps) an insert pressed on the scalp must reach. */
+  leave: number;
 }
 
 export const DEFAULT_HINT_THRESHOLDS: HintThresholds = {
@@ -45,7 +66,18 @@ export const DEFAULT_HINT_THRESHOLDS: HintThresholds = {
   minLength: 1,
   endWindow: 2,
   minSpan: 1,
+  leave: 1,
 };
+
+/** Screen tolerances for strokes pressed on the scalp (pixels; see the header). */
+export interface ScalpHintPixels {
+  /** The press is "on the curve" within this distance of its image. */
+  pressPixels: number;
+  /** A stroke is "clear of the curve" beyond this distance of its image. */
+  clearPixels: number;
+}
+
+export const SCALP_HINT_PIXELS: ScalpHintPixels = { pressPixels: 8, clearPixels: 16 };
 
 export type HintReason =
   | 'empty'
@@ -93,19 +125,20 @@ export function liftHintStroke(
   };
   let lastOn: Vec3 | null = null;
   let prevOn: Vec3 | null = null;
-  for (const r of rays) {
+  for (let ray = 0; ray < rays.length; ray++) {
+    const r = rays[ray];
     const hit = intersectSupportingSurface(surface, r.origin, r.direction);
     if (hit) {
       prevOn = lastOn;
       lastOn = hit.point;
-      out.push({ point: hit.point, onSurface: true, param: hit.param, offset: hit.offset });
+      out.push({ point: hit.point, onSurface: true, param: hit.param, offset: hit.offset, ray });
       continue;
     }
     if (!lastOn) {
       let c: Vec3 = [0, 0, 0];
       for (const p of surface.curve) c = add(c, p);
       const x = atDepth(r, depth(scale(c, 1 / Math.max(1, surface.curve.length))));
-      if (x) out.push({ point: x, onSurface: false, param: Number.NaN, offset: Number.NaN });
+      if (x) out.push({ point: x, onSurface: false, param: Number.NaN, offset: Number.NaN, ray });
       continue;
     }
     let k = 0;
@@ -116,7 +149,7 @@ export function liftHintStroke(
     const x0 = atDepth(r, depth(lastOn));
     if (!x0) continue;
     const x = atDepth(r, depth(lastOn) + k * lateral(sub(x0, lastOn))) ?? x0;
-    out.push({ point: x, onSurface: false, param: Number.NaN, offset: Number.NaN });
+    out.push({ point: x, onSurface: false, param: Number.NaN, offset: Number.NaN, ray });
   }
   return out;
 }
@@ -155,7 +188,21 @@ export function classifyHintStroke(
     return { kind: 'none', reason: 'concatenate-not-at-end' };
   }
   // Starts far: look for a crossing.
-  let crossing = Number.NaN;
+  const c = findCrossing(samples);
+  if (c && c.maxPos >= near && c.maxNeg >= near && !isNear(lastS)) return { kind: 'cut', at: c.at };
+  return { kind: 'none', reason: 'no-operation' };
+}
+
+/**
+ * The stroke's first crossing of the curve within the surface: two consecutive on-surface
+ * samples i - 1, i whose offsets change sign (a sample exactly on the curve, offset 0, counts),
+ * the parameter interpolated between them at fraction f; with the largest offsets reached on
+ * either side over the whole stroke. Null when the stroke never crosses.
+ */
+export function findCrossing(
+  samples: readonly HintSample[],
+): { at: number; index: number; f: number; maxPos: number; maxNeg: number } | null {
+  let found: { at: number; index: number; f: number } | null = null;
   let maxPos = 0;
   let maxNeg = 0;
   for (let i = 0; i < samples.length; i++) {
@@ -164,16 +211,13 @@ export function classifyHintStroke(
     maxPos = Math.max(maxPos, s.offset);
     maxNeg = Math.max(maxNeg, -s.offset);
     const p = samples[i - 1];
-    // a sign change; a sample exactly on the curve (offset 0) counts as the crossing
-    const changes = (p?.offset < 0 && s.offset >= 0) || (p?.offset > 0 && s.offset <= 0);
-    if (i > 0 && p.onSurface && Number.isNaN(crossing) && changes) {
+    if (found || i === 0 || !p.onSurface) continue;
+    if ((p.offset < 0 && s.offset >= 0) || (p.offset > 0 && s.offset <= 0)) {
       const f = p.offset / (p.offset - s.offset);
-      crossing = p.param + (s.param - p.param) * f;
+      found = { at: p.param + (s.param - p.param) * f, index: i, f };
     }
   }
-  if (!Number.isNaN(crossing) && maxPos >= near && maxNeg >= near && !isNear(lastS))
-    return { kind: 'cut', at: crossing };
-  return { kind: 'none', reason: 'no-operation' };
+  return found ? { ...found, maxPos, maxNeg } : null;
 }
 
 /** The curve's point at a fractional parameter (clamped). */
@@ -243,4 +287,46 @@ export function editWithHintStroke(
   if (op.kind !== 'none' && points.length < 2)
     return { op: { kind: 'none', reason: 'cut-leaves-nothing' }, points: curve.slice() };
   return { op, points };
+}
+
+/**
+ * A stroke pressed on the scalp (see the header): the edit when it is clearly a hint, else null
+ * (the tool then draws a new curve). `screenDistance[i]` is sample i's distance from the curve's
+ * image in pixels; samples whose surface point is behind the head are marked `hidden`.
+ */
+export function scalpHintEdit(
+  curve: readonly Vec3[],
+  samples: readonly HintSample[],
+  screenDistance: readonly number[],
+  step: number,
+  thresholds: HintThresholds = DEFAULT_HINT_THRESHOLDS,
+  pixels: ScalpHintPixels = SCALP_HINT_PIXELS,
+): HintResult | null {
+  const result = editWithHintStroke(curve, samples, step, thresholds);
+  const op = result.op;
+  if (op.kind === 'none' || samples.length === 0) return null;
+  const far = (thresholds.near + thresholds.leave) * step;
+  const pressed = screenDistance[0] ?? Number.POSITIVE_INFINITY;
+  const released = screenDistance[samples.length - 1] ?? Number.POSITIVE_INFINITY;
+  if (op.kind === 'concatenate') return pressed <= pixels.pressPixels ? result : null;
+  const last = samples[samples.length - 1];
+  if (op.kind === 'insert') {
+    if (!(pressed <= pixels.pressPixels) || last.hidden) return null;
+    let offset = 0;
+    let screen = 0;
+    samples.forEach((s, i) => {
+      if (!s.onSurface) return;
+      offset = Math.max(offset, Math.abs(s.offset));
+      screen = Math.max(screen, screenDistance[i] ?? 0);
+    });
+    return offset > far && screen >= pixels.clearPixels ? result : null;
+  }
+  // cut
+  if (!(pressed >= pixels.clearPixels && released >= pixels.clearPixels)) return null;
+  const c = findCrossing(samples);
+  if (!c) return null;
+  const [a, b] = [samples[c.index - 1], samples[c.index]];
+  if (a.hidden || b.hidden) return null;
+  const at = lerp(a.point, b.point, c.f);
+  return distance(at, curveAt(curve, c.at)) <= thresholds.near * step ? result : null;
 }
