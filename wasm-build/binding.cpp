@@ -1,73 +1,176 @@
 // The wasm boundary: plain extern "C" functions over the C++ core. This file only converts
-// (pointers + counts in, pointers + counts out, Status -> 0 / 1 + message); all logic is in
+// (structs of pointers + counts in, Status -> status code + message out); all logic is in
 // solver-cpp/src. Results stay owned by the handle until its next call; JS copies them out.
-// Errors: a function returns 0 on success, 1 on failure and hs_last_error() says why.
+//
+// Every struct below mirrors one layout declared in web/solver/protocol.ts (the name is given
+// on each); its size is asserted here and every offset is checked by wasmEngine.ts at load
+// through hs_struct_layout. Pointers are wasm32 byte offsets (4 bytes).
+// Every call returns an HsStatus (protocol.ts SOLVER_STATUS): 0, or the kind of failure, with
+// the message in hs_last_error().
 #include <emscripten/emscripten.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
-#include <cstdio>
+#include <cstring>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "curve_set.hpp"
 #include "field_solver.hpp"
 #include "hair_engine.hpp"
 
 using namespace hairsketch;
 
+// protocol.ts SOLVER_STATUS.
+enum HsStatus : int32_t {
+  HS_OK = 0,
+  HS_INVALID_INPUT = 1,
+  HS_NON_FINITE = 2,
+  HS_OVER_MEMORY_CAP = 3,
+  HS_NOT_READY = 4,
+  HS_INTERNAL = 5,
+};
+
+// protocol.ts GRID_INPUT.
+struct HsGridInput {
+  double originX, originY, originZ, step, omega;
+  int32_t nx, ny, nz;
+  const char* solver;
+};
+static_assert(sizeof(HsGridInput) == 56, "protocol.ts GRID_INPUT");
+
+// protocol.ts SCALP_INPUT.
+struct HsScalpInput {
+  double centerX, centerY, centerZ;
+  const float* positions;
+  uint32_t vertexCount;
+  const uint32_t* indices;
+  uint32_t triangleCount;
+  const uint8_t* scalp;
+};
+static_assert(sizeof(HsScalpInput) == 48, "protocol.ts SCALP_INPUT");
+
+// protocol.ts CURVE_SET_HEADER (the CurveSet, see curve_set.hpp CurveSetView).
+struct HsCurveSetHeader {
+  const double* points;
+  uint32_t pointCount;
+  const uint32_t* curveStart;
+  uint32_t curveCount;
+  const uint8_t* kinds;
+  const uint8_t* extend;
+  const double* params;
+  uint32_t paramCount;
+  const uint32_t* paramStart;
+  const int32_t* extraIndex;
+  const double* extraTarget;
+  uint32_t extraCount;
+};
+static_assert(sizeof(HsCurveSetHeader) == 48, "protocol.ts CURVE_SET_HEADER");
+
+// protocol.ts GROWTH_INPUT.
+struct HsGrowthInput {
+  double thetaStepDeg, phiStepDeg, jitter, seed, stepFraction, minMagnitude, maxLength;
+  int32_t maxSegments, maxStrands;
+};
+static_assert(sizeof(HsGrowthInput) == 64, "protocol.ts GROWTH_INPUT");
+
+// protocol.ts AVOID_INPUT.
+struct HsAvoidInput {
+  double band, magnitude;
+  int32_t wholeHead, insideToo;
+};
+static_assert(sizeof(HsAvoidInput) == 24, "protocol.ts AVOID_INPUT");
+
+// protocol.ts CONSTRAINT_LIST.
+struct HsConstraintList {
+  const int32_t* index;
+  const double* target;
+  uint32_t count;
+};
+static_assert(sizeof(HsConstraintList) == 12, "protocol.ts CONSTRAINT_LIST");
+
+// protocol.ts ITERATE_PROGRESS.
+struct HsIterateProgress {
+  double errorEstimate;
+  int32_t iterations, converged;
+};
+static_assert(sizeof(HsIterateProgress) == 16, "protocol.ts ITERATE_PROGRESS");
+
+// protocol.ts STATS_OUTPUT.
+struct HsStats {
+  double residual, setupMs, solveMs, growMs;
+  int32_t iterations, added, removed, changed, constraints;
+  char method[32];
+};
+static_assert(sizeof(HsStats) == 88, "protocol.ts STATS_OUTPUT");
+
 namespace {
 
 std::string gLastError;
 
-int report(const Status& s) {
-  if (s.ok()) return 0;
-  gLastError = s.message.empty() ? "error" : s.message;
-  return 1;
+HsStatus kindOf(StatusCode c) {
+  switch (c) {
+    case StatusCode::Ok:
+      return HS_OK;
+    case StatusCode::InvalidInput:
+      return HS_INVALID_INPUT;
+    case StatusCode::NonFinite:
+      return HS_NON_FINITE;
+    case StatusCode::OutOfMemory:
+      return HS_OVER_MEMORY_CAP;
+    case StatusCode::NotReady:
+      return HS_NOT_READY;
+    default:
+      return HS_INTERNAL;
+  }
 }
 
-int fail(const char* msg) {
+int32_t report(const Status& s) {
+  if (s.ok()) return HS_OK;
+  gLastError = s.message.empty() ? "error" : s.message;
+  return kindOf(s.code);
+}
+
+int32_t fail(HsStatus kind, const char* msg) {
   gLastError = msg;
-  return 1;
+  return kind;
 }
 
 // Limit in wasm32 (2 GB): the CG solver holds ~8 fields of n x 3 doubles.
 constexpr double kMaxGridPoints = 4.0 * 1024 * 1024;
 
-Status makeGrid(int nx, int ny, int nz, double ox, double oy, double oz, double step, Grid& g) {
-  if (nx < 2 || ny < 2 || nz < 2)
+Status makeGrid(const HsGridInput& in, Grid& g) {
+  if (in.nx < 2 || in.ny < 2 || in.nz < 2)
     return Status::Error(StatusCode::InvalidInput, "grid dims must be >= 2");
-  if (double(nx) * ny * nz > kMaxGridPoints)
-    return Status::Error(StatusCode::InvalidInput, "grid has too many points for wasm");
-  if (!std::isfinite(ox) || !std::isfinite(oy) || !std::isfinite(oz) || !std::isfinite(step) ||
-      !(step > 0))
-    return Status::Error(StatusCode::InvalidInput, "grid origin/step must be finite, step > 0");
-  g.nx = nx;
-  g.ny = ny;
-  g.nz = nz;
-  g.origin = {ox, oy, oz};
-  g.step = step;
+  if (double(in.nx) * in.ny * in.nz > kMaxGridPoints)
+    return Status::Error(StatusCode::OutOfMemory, "grid has too many points for wasm");
+  if (!std::isfinite(in.originX) || !std::isfinite(in.originY) || !std::isfinite(in.originZ) ||
+      !std::isfinite(in.step))
+    return Status::Error(StatusCode::NonFinite, "grid origin/step must be finite");
+  if (!(in.step > 0)) return Status::Error(StatusCode::InvalidInput, "grid step must be > 0");
+  g.nx = in.nx;
+  g.ny = in.ny;
+  g.nz = in.nz;
+  g.origin = {in.originX, in.originY, in.originZ};
+  g.step = in.step;
   return Status::Ok();
 }
 
-std::string jsonEscape(const std::string& s) {
-  std::string o;
-  for (char c : s) {
-    if (c == '"' || c == '\\') o += '\\';
-    if (static_cast<unsigned char>(c) < 0x20) continue;
-    o += c;
-  }
-  return o;
-}
-
-std::string statsJson(const SolveStats& s, double extraValue, const char* extraKey) {
-  char buf[512];
-  std::snprintf(buf, sizeof buf,
-                "{\"method\":\"%s\",\"iterations\":%d,\"residual\":%.17g,\"added\":%d,"
-                "\"removed\":%d,\"changed\":%d,\"setupMs\":%.17g,\"solveMs\":%.17g,\"%s\":%.17g}",
-                jsonEscape(s.method).c_str(), s.iterations, s.residual, s.added, s.removed,
-                s.changed, s.setupMs, s.solveMs, extraKey, extraValue);
-  return buf;
+void writeStats(const SolveStats& s, int constraints, double growMs, HsStats* out) {
+  out->residual = s.residual;
+  out->setupMs = s.setupMs;
+  out->solveMs = s.solveMs;
+  out->growMs = growMs;
+  out->iterations = s.iterations;
+  out->added = s.added;
+  out->removed = s.removed;
+  out->changed = s.changed;
+  out->constraints = constraints;
+  std::memset(out->method, 0, sizeof out->method);
+  std::strncpy(out->method, s.method.c_str(), sizeof out->method - 1);
 }
 
 struct EngineHandle {
@@ -77,7 +180,6 @@ struct EngineHandle {
   std::vector<float> field;
   std::vector<int32_t> avoidIndex;  // scalp avoidance result
   std::vector<double> avoidTarget;
-  std::string json;
 };
 
 struct RawHandle {
@@ -86,8 +188,11 @@ struct RawHandle {
   bool hasGrid = false;
   size_t constraints = 0;
   Field field;
-  std::string json;
 };
+
+#define HS_OFFSETS(T, ...) \
+  { int32_t(sizeof(T)), __VA_ARGS__ }
+#define HS_AT(T, f) int32_t(offsetof(T, f))
 
 }  // namespace
 
@@ -95,77 +200,108 @@ extern "C" {
 
 EMSCRIPTEN_KEEPALIVE const char* hs_last_error() { return gLastError.c_str(); }
 
+// Layout of boundary struct `id` (protocol.ts BOUNDARY_STRUCTS order): writes sizeof, then each
+// member's offset in declaration order, into out (at most max entries); returns the number of
+// entries, 0 for an unknown id.
+EMSCRIPTEN_KEEPALIVE int32_t hs_struct_layout(int32_t id, int32_t* out, int32_t max) {
+  const std::vector<std::vector<int32_t>> layouts = {
+      HS_OFFSETS(HsGridInput, HS_AT(HsGridInput, originX), HS_AT(HsGridInput, originY),
+                 HS_AT(HsGridInput, originZ), HS_AT(HsGridInput, step), HS_AT(HsGridInput, omega),
+                 HS_AT(HsGridInput, nx), HS_AT(HsGridInput, ny), HS_AT(HsGridInput, nz),
+                 HS_AT(HsGridInput, solver)),
+      HS_OFFSETS(HsScalpInput, HS_AT(HsScalpInput, centerX), HS_AT(HsScalpInput, centerY),
+                 HS_AT(HsScalpInput, centerZ), HS_AT(HsScalpInput, positions),
+                 HS_AT(HsScalpInput, vertexCount), HS_AT(HsScalpInput, indices),
+                 HS_AT(HsScalpInput, triangleCount), HS_AT(HsScalpInput, scalp)),
+      HS_OFFSETS(HsCurveSetHeader, HS_AT(HsCurveSetHeader, points),
+                 HS_AT(HsCurveSetHeader, pointCount), HS_AT(HsCurveSetHeader, curveStart),
+                 HS_AT(HsCurveSetHeader, curveCount), HS_AT(HsCurveSetHeader, kinds),
+                 HS_AT(HsCurveSetHeader, extend), HS_AT(HsCurveSetHeader, params),
+                 HS_AT(HsCurveSetHeader, paramCount), HS_AT(HsCurveSetHeader, paramStart),
+                 HS_AT(HsCurveSetHeader, extraIndex), HS_AT(HsCurveSetHeader, extraTarget),
+                 HS_AT(HsCurveSetHeader, extraCount)),
+      HS_OFFSETS(HsGrowthInput, HS_AT(HsGrowthInput, thetaStepDeg),
+                 HS_AT(HsGrowthInput, phiStepDeg), HS_AT(HsGrowthInput, jitter),
+                 HS_AT(HsGrowthInput, seed), HS_AT(HsGrowthInput, stepFraction),
+                 HS_AT(HsGrowthInput, minMagnitude), HS_AT(HsGrowthInput, maxLength),
+                 HS_AT(HsGrowthInput, maxSegments), HS_AT(HsGrowthInput, maxStrands)),
+      HS_OFFSETS(HsAvoidInput, HS_AT(HsAvoidInput, band), HS_AT(HsAvoidInput, magnitude),
+                 HS_AT(HsAvoidInput, wholeHead), HS_AT(HsAvoidInput, insideToo)),
+      HS_OFFSETS(HsConstraintList, HS_AT(HsConstraintList, index), HS_AT(HsConstraintList, target),
+                 HS_AT(HsConstraintList, count)),
+      HS_OFFSETS(HsIterateProgress, HS_AT(HsIterateProgress, errorEstimate),
+                 HS_AT(HsIterateProgress, iterations), HS_AT(HsIterateProgress, converged)),
+      HS_OFFSETS(HsStats, HS_AT(HsStats, residual), HS_AT(HsStats, setupMs),
+                 HS_AT(HsStats, solveMs), HS_AT(HsStats, growMs), HS_AT(HsStats, iterations),
+                 HS_AT(HsStats, added), HS_AT(HsStats, removed), HS_AT(HsStats, changed),
+                 HS_AT(HsStats, constraints), HS_AT(HsStats, method)),
+  };
+  if (id < 0 || size_t(id) >= layouts.size() || !out) return 0;
+  const std::vector<int32_t>& l = layouts[size_t(id)];
+  const int32_t n = std::min(int32_t(l.size()), max);
+  for (int32_t i = 0; i < n; ++i) out[i] = l[size_t(i)];
+  return n;
+}
+
 // ---- engine -----------------------------------------------------------------------------
 
 EMSCRIPTEN_KEEPALIVE EngineHandle* hs_engine_create() { return new EngineHandle(); }
 EMSCRIPTEN_KEEPALIVE void hs_engine_destroy(EngineHandle* h) { delete h; }
 
-EMSCRIPTEN_KEEPALIVE int hs_engine_set_grid(EngineHandle* h, int nx, int ny, int nz, double ox,
-                                            double oy, double oz, double step, double omega,
-                                            const char* solver) {
-  if (!h) return fail("no engine");
+EMSCRIPTEN_KEEPALIVE int32_t hs_engine_set_grid(EngineHandle* h, const HsGridInput* in) {
+  if (!h || !in) return fail(HS_INVALID_INPUT, "set_grid: no engine or input");
   Grid g;
-  Status s = makeGrid(nx, ny, nz, ox, oy, oz, step, g);
+  Status s = makeGrid(*in, g);
   if (!s.ok()) return report(s);
-  return report(h->engine.setGrid(g, omega, solver ? solver : ""));
+  return report(h->engine.setGrid(g, in->omega, in->solver ? in->solver : ""));
 }
 
-EMSCRIPTEN_KEEPALIVE int hs_engine_set_scalp(EngineHandle* h, const float* positions,
-                                             int vertexCount, const uint32_t* indices,
-                                             int triangleCount, const uint8_t* scalp, double cx,
-                                             double cy, double cz) {
-  if (!h) return fail("no engine");
-  if (vertexCount < 0 || triangleCount < 0) return fail("scalp: negative count");
-  return report(h->engine.setScalp(positions, size_t(vertexCount), indices, size_t(triangleCount),
-                                   scalp, Eigen::Vector3d(cx, cy, cz)));
+EMSCRIPTEN_KEEPALIVE int32_t hs_engine_set_scalp(EngineHandle* h, const HsScalpInput* in) {
+  if (!h || !in) return fail(HS_INVALID_INPUT, "set_scalp: no engine or input");
+  return report(h->engine.setScalp(in->positions, in->vertexCount, in->indices, in->triangleCount,
+                                   in->scalp,
+                                   Eigen::Vector3d(in->centerX, in->centerY, in->centerZ)));
 }
 
-// protocol.ts CurveSet: params / paramStart (curveCount + 1 entries) are the kind-specific
-// parameter blocks; extraIndex / extraTarget (extraCount, extraCount x 3) the explicit
-// constraints.
-EMSCRIPTEN_KEEPALIVE int hs_engine_set_curves(EngineHandle* h, const double* points, int pointCount,
-                                              const uint32_t* curveStart, int curveCount,
-                                              const uint8_t* kinds, const uint8_t* extend,
-                                              const double* params, int paramCount,
-                                              const uint32_t* paramStart, const int32_t* extraIndex,
-                                              const double* extraTarget, int extraCount) {
-  if (!h) return fail("no engine");
-  if (pointCount < 0 || curveCount < 0 || paramCount < 0 || extraCount < 0)
-    return fail("curves: negative count");
-  CurveSetView v{points, size_t(pointCount), curveStart, size_t(curveCount), kinds, extend};
-  v.params = params;
-  v.paramCount = size_t(paramCount);
-  v.paramStart = paramStart;
-  v.extraIndex = extraIndex;
-  v.extraTarget = extraTarget;
-  v.extraCount = size_t(extraCount);
+EMSCRIPTEN_KEEPALIVE int32_t hs_engine_set_curves(EngineHandle* h, const HsCurveSetHeader* in) {
+  if (!h || !in) return fail(HS_INVALID_INPUT, "set_curves: no engine or input");
+  CurveSetView v;
+  v.points = in->points;
+  v.pointCount = in->pointCount;
+  v.curveStart = in->curveStart;
+  v.curveCount = in->curveCount;
+  v.kinds = in->kinds;
+  v.extend = in->extend;
+  v.params = in->params;
+  v.paramCount = in->paramCount;
+  v.paramStart = in->paramStart;
+  v.extraIndex = in->extraIndex;
+  v.extraTarget = in->extraTarget;
+  v.extraCount = in->extraCount;
   return report(h->engine.setCurves(v));
 }
 
 // Scalp avoidance (S4.7) on the last solved field: fills the handle's avoidance arrays (read
-// with hs_engine_avoid_index / hs_engine_avoid_target) and returns 0 / 1 as usual; the count
-// is hs_engine_avoid_count. flags: bit 0 = measure against the whole head (else the scalp
-// triangles only), bit 1 = also grid points inside the head within the band.
-EMSCRIPTEN_KEEPALIVE int hs_engine_scalp_avoidance(EngineHandle* h, double band, double magnitude,
-                                                   int flags) {
-  if (!h) return fail("no engine");
+// with hs_engine_avoid_index / hs_engine_avoid_target, hs_engine_avoid_count entries).
+EMSCRIPTEN_KEEPALIVE int32_t hs_engine_scalp_avoidance(EngineHandle* h, const HsAvoidInput* in) {
+  if (!h || !in) return fail(HS_INVALID_INPUT, "scalp_avoidance: no engine or input");
   ScalpAvoidanceParams p;
-  p.band = band;
-  p.magnitude = magnitude;
-  p.wholeHead = (flags & 1) != 0;
-  p.insideToo = (flags & 2) != 0;
+  p.band = in->band;
+  p.magnitude = in->magnitude;
+  p.wholeHead = in->wholeHead != 0;
+  p.insideToo = in->insideToo != 0;
   ConstraintSet out;
   h->avoidIndex.clear();
   h->avoidTarget.clear();
-  const int rc = report(h->engine.scalpAvoidance(p, out));
+  const int32_t rc = report(h->engine.scalpAvoidance(p, out));
   for (const Constraint& c : out) {
     h->avoidIndex.push_back(c.index);
     for (int a = 0; a < 3; ++a) h->avoidTarget.push_back(c.target[a]);
   }
   return rc;
 }
-EMSCRIPTEN_KEEPALIVE int hs_engine_avoid_count(EngineHandle* h) {
-  return int(h->avoidIndex.size());
+EMSCRIPTEN_KEEPALIVE int32_t hs_engine_avoid_count(EngineHandle* h) {
+  return int32_t(h->avoidIndex.size());
 }
 EMSCRIPTEN_KEEPALIVE const int32_t* hs_engine_avoid_index(EngineHandle* h) {
   return h->avoidIndex.data();
@@ -174,64 +310,61 @@ EMSCRIPTEN_KEEPALIVE const double* hs_engine_avoid_target(EngineHandle* h) {
   return h->avoidTarget.data();
 }
 
-EMSCRIPTEN_KEEPALIVE int hs_engine_solve(EngineHandle* h) {
-  if (!h) return fail("no engine");
+EMSCRIPTEN_KEEPALIVE int32_t hs_engine_solve(EngineHandle* h) {
+  if (!h) return fail(HS_INVALID_INPUT, "solve: no engine");
   return report(h->engine.solve());
 }
 
-// Progressive solve; the progress is read back with hs_engine_progress (iterations,
-// errorEstimate, converged as 0/1) into a 3-double buffer.
-EMSCRIPTEN_KEEPALIVE int hs_engine_iterate(EngineHandle* h, int maxIterations, double tolerance,
-                                           double* progressOut) {
-  if (!h) return fail("no engine");
+// Progressive solve; the progress is written to out.
+EMSCRIPTEN_KEEPALIVE int32_t hs_engine_iterate(EngineHandle* h, int32_t maxIterations,
+                                               double tolerance, HsIterateProgress* out) {
+  if (!h || !out) return fail(HS_INVALID_INPUT, "iterate: no engine or output");
   IterateProgress p;
-  const int rc = report(h->engine.iterate(maxIterations, tolerance, p));
-  progressOut[0] = p.iterations;
-  progressOut[1] = p.errorEstimate;
-  progressOut[2] = p.converged ? 1 : 0;
+  const int32_t rc = report(h->engine.iterate(maxIterations, tolerance, p));
+  out->iterations = p.iterations;
+  out->errorEstimate = p.errorEstimate;
+  out->converged = p.converged ? 1 : 0;
   return rc;
 }
 
-EMSCRIPTEN_KEEPALIVE int hs_engine_grow(EngineHandle* h, double thetaStepDeg, double phiStepDeg,
-                                        double jitter, double seed, double stepFraction,
-                                        double minMagnitude, double maxLength, int maxSegments,
-                                        int maxStrands) {
-  if (!h) return fail("no engine");
-  if (!(seed >= 0 && seed <= 4294967295.0) || std::floor(seed) != seed)
-    return fail("grow: seed must be a uint32");
+EMSCRIPTEN_KEEPALIVE int32_t hs_engine_grow(EngineHandle* h, const HsGrowthInput* in) {
+  if (!h || !in) return fail(HS_INVALID_INPUT, "grow: no engine or input");
+  if (!std::isfinite(in->seed)) return fail(HS_NON_FINITE, "grow: seed is not finite");
+  if (!(in->seed >= 0 && in->seed <= 4294967295.0) || std::floor(in->seed) != in->seed)
+    return fail(HS_INVALID_INPUT, "grow: seed must be a uint32");
   RootParams rp;
-  rp.thetaStepDeg = thetaStepDeg;
-  rp.phiStepDeg = phiStepDeg;
-  rp.jitter = jitter;
-  rp.seed = uint32_t(seed);
-  rp.maxStrands = maxStrands;
+  rp.thetaStepDeg = in->thetaStepDeg;
+  rp.phiStepDeg = in->phiStepDeg;
+  rp.jitter = in->jitter;
+  rp.seed = uint32_t(in->seed);
+  rp.maxStrands = in->maxStrands;
   GrowthParams gp;
-  gp.stepFraction = stepFraction;
-  gp.minMagnitude = minMagnitude;
-  gp.maxLength = maxLength;
-  gp.maxSegments = maxSegments;
+  gp.stepFraction = in->stepFraction;
+  gp.minMagnitude = in->minMagnitude;
+  gp.maxLength = in->maxLength;
+  gp.maxSegments = in->maxSegments;
   return report(h->engine.grow(rp, gp));
 }
 
 EMSCRIPTEN_KEEPALIVE const float* hs_engine_strand_points(EngineHandle* h) {
   return h->engine.strands().points.data();
 }
-EMSCRIPTEN_KEEPALIVE int hs_engine_strand_point_count(EngineHandle* h) {
-  return int(h->engine.strands().points.size() / 3);
+EMSCRIPTEN_KEEPALIVE int32_t hs_engine_strand_point_count(EngineHandle* h) {
+  return int32_t(h->engine.strands().points.size() / 3);
 }
 EMSCRIPTEN_KEEPALIVE const uint32_t* hs_engine_strand_start(EngineHandle* h) {
   return h->engine.strands().strandStart.data();
 }
 // Entries of strandStart (strands + 1).
-EMSCRIPTEN_KEEPALIVE int hs_engine_strand_start_count(EngineHandle* h) {
-  return int(h->engine.strands().strandStart.size());
+EMSCRIPTEN_KEEPALIVE int32_t hs_engine_strand_start_count(EngineHandle* h) {
+  return int32_t(h->engine.strands().strandStart.size());
 }
-EMSCRIPTEN_KEEPALIVE int hs_engine_root_count(EngineHandle* h) {
-  return int(h->engine.roots().size());
+EMSCRIPTEN_KEEPALIVE int32_t hs_engine_root_count(EngineHandle* h) {
+  return int32_t(h->engine.roots().size());
 }
 
 // Fills the flat constraint arrays; returns the number of constraints.
-EMSCRIPTEN_KEEPALIVE int hs_engine_prepare_constraints(EngineHandle* h) {
+EMSCRIPTEN_KEEPALIVE int32_t hs_engine_prepare_constraints(EngineHandle* h) {
   const ConstraintSet& cs = h->engine.constraints();
   h->constraintIndex.resize(cs.size());
   h->constraintTarget.resize(cs.size() * 3);
@@ -239,7 +372,7 @@ EMSCRIPTEN_KEEPALIVE int hs_engine_prepare_constraints(EngineHandle* h) {
     h->constraintIndex[c] = cs[c].index;
     for (int a = 0; a < 3; ++a) h->constraintTarget[3 * c + a] = float(cs[c].target[a]);
   }
-  return int(cs.size());
+  return int32_t(cs.size());
 }
 EMSCRIPTEN_KEEPALIVE const int32_t* hs_engine_constraint_index(EngineHandle* h) {
   return h->constraintIndex.data();
@@ -254,56 +387,66 @@ EMSCRIPTEN_KEEPALIVE const uint8_t* hs_engine_constraint_colour(EngineHandle* h)
 }
 
 // Fills the float field (n x 3, interleaved); returns n (grid points).
-EMSCRIPTEN_KEEPALIVE int hs_engine_prepare_field(EngineHandle* h) {
+EMSCRIPTEN_KEEPALIVE int32_t hs_engine_prepare_field(EngineHandle* h) {
   h->field = toFloatField(h->engine.field());
-  return int(h->field.size() / 3);
+  return int32_t(h->field.size() / 3);
 }
 EMSCRIPTEN_KEEPALIVE const float* hs_engine_field(EngineHandle* h) { return h->field.data(); }
 
-EMSCRIPTEN_KEEPALIVE const char* hs_engine_stats_json(EngineHandle* h) {
-  h->json = statsJson(h->engine.stats(), double(h->engine.constraints().size()), "constraints");
-  return h->json.c_str();
+EMSCRIPTEN_KEEPALIVE int32_t hs_engine_stats(EngineHandle* h, HsStats* out) {
+  if (!h || !out) return fail(HS_INVALID_INPUT, "stats: no engine or output");
+  writeStats(h->engine.stats(), int32_t(h->engine.constraints().size()), h->engine.growMs(), out);
+  return HS_OK;
 }
-EMSCRIPTEN_KEEPALIVE double hs_engine_grow_ms(EngineHandle* h) { return h->engine.growMs(); }
 
 // ---- raw solver (explicit grid + constraint list, for research pipelines) ---------------
 
-// Returns 0 (and sets the error) for an unknown name.
-EMSCRIPTEN_KEEPALIVE RawHandle* hs_raw_create(const char* name) {
+// *out = a new solver by name; HS_INVALID_INPUT for an unknown name.
+EMSCRIPTEN_KEEPALIVE int32_t hs_raw_create(const char* name, RawHandle** out) {
+  if (!out) return fail(HS_INVALID_INPUT, "raw_create: no output");
+  *out = nullptr;
   std::unique_ptr<FieldSolver> s = makeFieldSolver(name ? name : "");
   if (!s) {
     gLastError = std::string("unknown solver '") + (name ? name : "") + "'";
-    return nullptr;
+    return HS_INVALID_INPUT;
   }
   RawHandle* h = new RawHandle();
   h->solver = std::move(s);
-  return h;
+  *out = h;
+  return HS_OK;
 }
 EMSCRIPTEN_KEEPALIVE void hs_raw_destroy(RawHandle* h) { delete h; }
 
-EMSCRIPTEN_KEEPALIVE int hs_raw_set_grid(RawHandle* h, int nx, int ny, int nz, double omega) {
-  if (!h) return fail("no solver");
-  if (h->hasGrid) return fail("setGrid: a solver takes one grid; create a new one");
+// Uses nx, ny, nz and omega of the input (origin 0, step 1; the solver name was given to
+// hs_raw_create).
+EMSCRIPTEN_KEEPALIVE int32_t hs_raw_set_grid(RawHandle* h, const HsGridInput* in) {
+  if (!h || !in) return fail(HS_INVALID_INPUT, "set_grid: no solver or input");
+  if (h->hasGrid)
+    return fail(HS_INVALID_INPUT, "setGrid: a solver takes one grid; create a new one");
+  HsGridInput unit = *in;
+  unit.originX = unit.originY = unit.originZ = 0;
+  unit.step = 1;
   Grid g;
-  Status s = makeGrid(nx, ny, nz, 0, 0, 0, 1, g);
+  Status s = makeGrid(unit, g);
   if (!s.ok()) return report(s);
-  s = h->solver->setGrid(g, omega);
+  s = h->solver->setGrid(g, in->omega);
   if (!s.ok()) return report(s);
   h->grid = g;
   h->hasGrid = true;
-  return 0;
+  return HS_OK;
 }
 
-// index: count grid indices; target: count x 3 doubles. Duplicates are averaged.
-EMSCRIPTEN_KEEPALIVE int hs_raw_set_constraints(RawHandle* h, const int32_t* index,
-                                                const double* target, int count) {
-  if (!h) return fail("no solver");
-  if (!h->hasGrid) return fail("setConstraints before setGrid");
-  if (count < 0 || (count > 0 && (!index || !target))) return fail("constraints: bad arrays");
-  std::vector<Constraint> raw(static_cast<size_t>(count));
-  for (int c = 0; c < count; ++c) {
-    raw[c].index = index[c];
-    raw[c].target = Eigen::Vector3d(target[3 * c], target[3 * c + 1], target[3 * c + 2]);
+// Duplicates are averaged.
+EMSCRIPTEN_KEEPALIVE int32_t hs_raw_set_constraints(RawHandle* h, const HsConstraintList* in) {
+  if (!h || !in) return fail(HS_INVALID_INPUT, "set_constraints: no solver or input");
+  if (!h->hasGrid) return fail(HS_NOT_READY, "setConstraints before setGrid");
+  if (in->count > 0 && (!in->index || !in->target))
+    return fail(HS_INVALID_INPUT, "constraints: bad arrays");
+  std::vector<Constraint> raw(in->count);
+  for (uint32_t c = 0; c < in->count; ++c) {
+    raw[c].index = in->index[c];
+    raw[c].target =
+        Eigen::Vector3d(in->target[3 * c], in->target[3 * c + 1], in->target[3 * c + 2]);
   }
   // Validate before merging so that a NaN cannot hide in an average.
   Status s = validateConstraints(h->grid, raw);
@@ -312,19 +455,21 @@ EMSCRIPTEN_KEEPALIVE int hs_raw_set_constraints(RawHandle* h, const int32_t* ind
   s = h->solver->setConstraints(set);
   if (!s.ok()) return report(s);
   h->constraints = set.size();
-  return 0;
+  return HS_OK;
 }
 
-EMSCRIPTEN_KEEPALIVE int hs_raw_solve(RawHandle* h) {
-  if (!h) return fail("no solver");
+EMSCRIPTEN_KEEPALIVE int32_t hs_raw_solve(RawHandle* h) {
+  if (!h) return fail(HS_INVALID_INPUT, "solve: no solver");
+  if (!h->hasGrid) return fail(HS_NOT_READY, "solve before setGrid");
   return report(h->solver->solve(h->field));
 }
 // n x 3 doubles, row p = t_p; valid after a successful solve.
 EMSCRIPTEN_KEEPALIVE const double* hs_raw_field(RawHandle* h) { return h->field.data(); }
-EMSCRIPTEN_KEEPALIVE int hs_raw_field_points(RawHandle* h) { return int(h->field.rows()); }
-EMSCRIPTEN_KEEPALIVE const char* hs_raw_stats_json(RawHandle* h) {
-  h->json = statsJson(h->solver->stats(), double(h->constraints), "constraints");
-  return h->json.c_str();
+EMSCRIPTEN_KEEPALIVE int32_t hs_raw_field_points(RawHandle* h) { return int32_t(h->field.rows()); }
+EMSCRIPTEN_KEEPALIVE int32_t hs_raw_stats(RawHandle* h, HsStats* out) {
+  if (!h || !out) return fail(HS_INVALID_INPUT, "stats: no solver or output");
+  writeStats(h->solver->stats(), int32_t(h->constraints), 0, out);
+  return HS_OK;
 }
 
 }  // extern "C"

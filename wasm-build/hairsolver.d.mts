@@ -1,6 +1,8 @@
 // Types of the emscripten module built by wasm-build/build.sh (copied next to the generated
-// hairsolver.mjs). Pointers are byte offsets into the module's memory; functions returning an
-// int status give 0 on success and 1 on failure (message: UTF8ToString(_hs_last_error())).
+// hairsolver.mjs). Pointers are byte offsets into the module's memory. Functions returning a
+// status give 0 on success, else a protocol.ts SOLVER_STATUS code (the kind of failure), with the
+// message at UTF8ToString(_hs_last_error()). Struct arguments (`*In`, `*Out`) point to C structs
+// laid out as the protocol.ts layouts named on each.
 export interface HairSolverModule {
   HEAPU8: Uint8Array;
   HEAP32: Int32Array;
@@ -11,33 +13,26 @@ export interface HairSolverModule {
   _malloc(bytes: number): number;
   _free(ptr: number): void;
   _hs_last_error(): number;
+  /** Writes sizeof and the member offsets of BOUNDARY_STRUCTS[id] to out; returns the count. */
+  _hs_struct_layout(id: number, out: number, max: number): number;
 
   _hs_engine_create(): number;
   _hs_engine_destroy(h: number): void;
-  _hs_engine_set_grid(
-    h: number, nx: number, ny: number, nz: number,
-    ox: number, oy: number, oz: number, step: number, omega: number, solverName: number,
-  ): number;
-  _hs_engine_set_scalp(
-    h: number, positions: number, vertexCount: number, indices: number, triangleCount: number,
-    scalp: number, cx: number, cy: number, cz: number,
-  ): number;
-  _hs_engine_set_curves(
-    h: number, points: number, pointCount: number, curveStart: number, curveCount: number,
-    kinds: number, extend: number, params: number, paramCount: number, paramStart: number,
-    extraIndex: number, extraTarget: number, extraCount: number,
-  ): number;
-  _hs_engine_scalp_avoidance(h: number, band: number, magnitude: number, flags: number): number;
+  _hs_engine_set_grid(h: number, gridIn: number): number; // GRID_INPUT
+  _hs_engine_set_scalp(h: number, scalpIn: number): number; // SCALP_INPUT
+  _hs_engine_set_curves(h: number, curveSetIn: number): number; // CURVE_SET_HEADER
+  _hs_engine_scalp_avoidance(h: number, avoidIn: number): number; // AVOID_INPUT
   _hs_engine_avoid_count(h: number): number;
   _hs_engine_avoid_index(h: number): number;
   _hs_engine_avoid_target(h: number): number;
   _hs_engine_solve(h: number): number;
-  _hs_engine_iterate(h: number, maxIterations: number, tolerance: number, progressOut: number): number;
-  _hs_engine_grow(
-    h: number, thetaStepDeg: number, phiStepDeg: number, jitter: number, seed: number,
-    stepFraction: number, minMagnitude: number, maxLength: number, maxSegments: number,
-    maxStrands: number,
+  _hs_engine_iterate(
+    h: number,
+    maxIterations: number,
+    tolerance: number,
+    progressOut: number, // ITERATE_PROGRESS
   ): number;
+  _hs_engine_grow(h: number, growthIn: number): number; // GROWTH_INPUT
   _hs_engine_strand_points(h: number): number;
   _hs_engine_strand_point_count(h: number): number;
   _hs_engine_strand_start(h: number): number;
@@ -49,17 +44,16 @@ export interface HairSolverModule {
   _hs_engine_constraint_colour(h: number): number;
   _hs_engine_prepare_field(h: number): number;
   _hs_engine_field(h: number): number;
-  _hs_engine_stats_json(h: number): number;
-  _hs_engine_grow_ms(h: number): number;
+  _hs_engine_stats(h: number, statsOut: number): number; // STATS_OUTPUT
 
-  _hs_raw_create(solverName: number): number;
+  _hs_raw_create(solverName: number, handleOut: number): number; // handleOut: a 4-byte slot
   _hs_raw_destroy(h: number): void;
-  _hs_raw_set_grid(h: number, nx: number, ny: number, nz: number, omega: number): number;
-  _hs_raw_set_constraints(h: number, index: number, target: number, count: number): number;
+  _hs_raw_set_grid(h: number, gridIn: number): number; // GRID_INPUT (dims and omega)
+  _hs_raw_set_constraints(h: number, listIn: number): number; // CONSTRAINT_LIST
   _hs_raw_solve(h: number): number;
   _hs_raw_field(h: number): number;
   _hs_raw_field_points(h: number): number;
-  _hs_raw_stats_json(h: number): number;
+  _hs_raw_stats(h: number, statsOut: number): number; // STATS_OUTPUT
 }
 
 export interface HairSolverModuleOptions {

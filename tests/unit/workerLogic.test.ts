@@ -72,14 +72,17 @@ const init: ToWorker = {
 
 type SolveMsg = Extract<ToWorker, { type: 'solve' }>;
 
-const solve = (id: number, mode: 'preview' | 'full', n = 1): ToWorker => ({
+/** The light strand cap the tests' app asks for (previews, first looks). */
+const LIGHT = 1234;
+
+const solve = (id: number, mode: 'preview' | 'full', lightMaxStrands = LIGHT): ToWorker => ({
   type: 'solve',
   id,
   curves: packCurves([]),
   growth: { ...DEFAULT_GROWTH, maxStrands: 0 },
   wantField: false,
   mode,
-  ...(n ? {} : {}),
+  lightMaxStrands,
 });
 
 function harness(colours?: Uint8Array<ArrayBuffer>) {
@@ -111,7 +114,7 @@ describe('WorkerLogic', () => {
     await h.release(); // the job starts after one yield (a burst of messages coalesces)
     await done;
     expect(h.results().map((r) => [r.id, r.final])).toEqual([[1, false]]);
-    expect(h.log).toContain(`grow:${DEFAULT_SCHEDULER.previewMaxStrands}`);
+    expect(h.log).toContain(`grow:${LIGHT}`);
     expect(h.results()[0].stats.heapBytes).toBe(1 << 20);
     expect(h.log).toContain(`iterate:${DEFAULT_SCHEDULER.previewIterations}`);
   });
@@ -132,10 +135,7 @@ describe('WorkerLogic', () => {
     ]);
     expect(rs[1].stats.errorEstimate).toBeLessThanOrEqual(1e-6);
     // The first look is grown light; the final hair with the session's settings (no cap).
-    expect(h.log.filter((l) => l.startsWith('grow'))).toEqual([
-      `grow:${DEFAULT_SCHEDULER.previewMaxStrands}`,
-      'grow:0',
-    ]);
+    expect(h.log.filter((l) => l.startsWith('grow'))).toEqual([`grow:${LIGHT}`, 'grow:0']);
     expect(h.log.filter((l) => l.startsWith('iterate'))).toEqual([
       'iterate:2',
       'iterate:4',
@@ -194,7 +194,21 @@ describe('WorkerLogic', () => {
   it('reports a solve before init as an error', async () => {
     const h = harness();
     await h.logic.handle(solve(5, 'full'));
-    expect(h.posted).toEqual([{ type: 'error', id: 5, message: 'Solver is not initialised' }]);
+    expect(h.posted).toEqual([
+      { type: 'error', id: 5, message: 'Solver is not initialised', kind: 'not_ready' },
+    ]);
+  });
+
+  it("grows previews and first looks with the request's light cap, the final hair without it", async () => {
+    const h = harness();
+    await h.logic.handle(init);
+    let done = h.logic.handle(solve(1, 'preview', 77));
+    await h.release();
+    await done;
+    done = h.logic.handle(solve(2, 'full', 0)); // 0: no light cap of its own
+    while (h.pendingYields() > 0) await h.release();
+    await done;
+    expect(h.log.filter((l) => l.startsWith('grow'))).toEqual(['grow:77', 'grow:0', 'grow:0']);
   });
 
   it('answers scalp avoidance on the converged field, ahead of a waiting solve', async () => {
@@ -279,6 +293,37 @@ describe('WorkerLogic over the real wasm engine', () => {
     expect(c.index.length).toBeGreaterThan(5);
     expect(c.colour.length).toBe(c.index.length);
     expect(new Set(c.colour)).toEqual(new Set([0, 1]));
+    engine.dispose();
+  });
+
+  it('posts the kind of a solver error: a non-finite curve point is non_finite', async () => {
+    const wasmPath = fileURLToPath(new URL('../../web/generated/hairsolver.wasm', import.meta.url));
+    const engine = await loadSolverEngine({ wasmBinary: new Uint8Array(readFileSync(wasmPath)) });
+    const posted: FromWorker[] = [];
+    const logic = new WorkerLogic(engine, (m) => posted.push(m));
+    await logic.handle({
+      ...init,
+      grid: { dims: [6, 6, 6], origin: [0, 0, 0], step: 1 },
+      solver: 'cg',
+      scalp: octahedron([3, 1, 3], 0.5),
+    } as ToWorker);
+    expect(posted).toEqual([{ type: 'ready', gridPoints: 216, roots: 0 }]);
+    const vp = { position: [0, 0, 5] as const, target: [0, 0, 0] as const };
+    const curves = packCurves([
+      {
+        id: 'c1',
+        type: 'stream',
+        points: [
+          [1, 1, 1],
+          [2, Number.NaN, 1],
+        ],
+        extend: false,
+        viewpoint: { position: [...vp.position], target: [...vp.target] },
+      },
+    ]);
+    await logic.handle({ ...(solve(1, 'full') as SolveMsg), curves });
+    const e = posted.find((m) => m.type === 'error');
+    expect(e).toMatchObject({ type: 'error', id: 1, kind: 'non_finite' });
     engine.dispose();
   });
 });

@@ -1,19 +1,33 @@
-// Packs the session's curves into the protocol's flat CurveSet layout (protocol.ts).
-import { CurveKind, type CurveSet } from '../solver/protocol';
-import { packDividingParams } from './dividingFrames';
-import { packPonytailParams } from './ponytailGeometry';
+// Packs the session's curves into the protocol's flat CurveSet layout (protocol.ts): each curve's
+// parameter block is its kind's scalars from protocol.ts CURVE_PARAMS (by name, in table order,
+// the table's default for a curve without the field), then the kind's variable block.
+import { CURVE_PARAMS, CurveKind, type CurveSet } from '../solver/protocol';
 import type { ExtraConstraints, StyleCurve } from './session';
 
-/** The kind-specific parameter block of a curve (protocol.ts CurveSet.params). */
-export function curveParams(c: StyleCurve): number[] {
+/** The scalar parameters of a curve in CURVE_PARAMS order. */
+export function curveScalars(c: StyleCurve): number[] {
+  const values = c as unknown as Record<string, unknown>;
+  return CURVE_PARAMS[c.type].map((spec) => {
+    const v = values[spec.name];
+    return typeof v === 'number' ? v : spec.default;
+  });
+}
+
+/** The variable block that follows a curve's scalars (protocol.ts CurveSet.params). */
+function variableBlock(c: StyleCurve): number[] {
   switch (c.type) {
     case 'stream':
       return [];
     case 'dividing':
-      return packDividingParams(c.normals, c);
+      return c.normals.flatMap((n) => [n[0], n[1], n[2]]);
     case 'ponytail':
-      return packPonytailParams(c.circles, c.tightness);
+      return [c.circles.length, ...c.circles.flatMap((q) => [...q.centre, ...q.axis, q.radius])];
   }
+}
+
+/** The parameter block of a curve (protocol.ts CurveSet.params). */
+export function curveParams(c: StyleCurve): number[] {
+  return [...curveScalars(c), ...variableBlock(c)];
 }
 
 export function packCurves(

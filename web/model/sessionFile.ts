@@ -3,7 +3,13 @@
 // The reader never trusts its input: every field is checked, numbers must be finite, sizes are
 // capped; on the first problem it answers with a message naming the field.
 
-import type { GrowthParams } from '../solver/protocol';
+import {
+  CURVE_PARAMS,
+  type CurveKindName,
+  type CurveParamSpec,
+  type CurveParamValues,
+  type GrowthParams,
+} from '../solver/protocol';
 import { isGridPreset } from './grid';
 import { DEFAULT_GROWTH, type SessionState, type StyleCurve, type Viewpoint } from './session';
 import type { Vec3 } from './vec3';
@@ -56,6 +62,22 @@ function viewpoint(v: unknown, path: string): Viewpoint {
   };
 }
 
+/** A curve kind's scalar parameters (protocol.ts CURVE_PARAMS): each finite and within its
+ *  range; a curve saved without one (made before it existed) gets its default. */
+function scalars<K extends CurveKindName>(
+  o: Record<string, unknown>,
+  kind: K,
+  path: string,
+): CurveParamValues<K> {
+  const out: Record<string, number> = {};
+  for (const spec of CURVE_PARAMS[kind] as readonly CurveParamSpec[])
+    out[spec.name] =
+      o[spec.name] === undefined
+        ? spec.default
+        : num(o[spec.name], `${path}.${spec.name}`, spec.min, spec.max);
+  return out as CurveParamValues<K>;
+}
+
 function curve(v: unknown, path: string): StyleCurve {
   const o = obj(v, path);
   if (typeof o.id !== 'string' || !/^[A-Za-z0-9_~-]{1,32}$/.test(o.id))
@@ -75,6 +97,7 @@ function curve(v: unknown, path: string): StyleCurve {
         extend: bool(o.extend, `${path}.extend`),
         viewpoint: vp,
         ...(mode ? { surfaceMode: mode } : {}),
+        ...scalars(o, 'stream', path),
       };
     }
     case 'dividing': {
@@ -87,10 +110,7 @@ function curve(v: unknown, path: string): StyleCurve {
         points,
         normals,
         viewpoint: vp,
-        sigma: num(o.sigma, `${path}.sigma`, 0.05, 20),
-        h: num(o.h, `${path}.h`, 0, 20),
-        alpha0: num(o.alpha0, `${path}.alpha0`, -Math.PI, Math.PI),
-        alpha1: num(o.alpha1, `${path}.alpha1`, -Math.PI, Math.PI),
+        ...scalars(o, 'dividing', path),
       };
     }
     case 'ponytail': {
@@ -118,7 +138,7 @@ function curve(v: unknown, path: string): StyleCurve {
             spineIndex: num(q.spineIndex, `${path}.circles[${i}].spineIndex`, 0, MAX_POINTS),
           };
         }),
-        tightness: num(o.tightness, `${path}.tightness`, 0, 10),
+        ...scalars(o, 'ponytail', path),
       };
     }
     default:

@@ -7,6 +7,7 @@ import type {
   GridSpec,
   GrowthParams,
   ScalpMesh,
+  SolverErrorKind,
   SolverName,
   SolveStats,
   StrandArrays,
@@ -54,8 +55,13 @@ export interface IterateProgress {
   converged: boolean;
 }
 
+/** A failed solver call: `kind` says what went wrong (protocol.ts SolverErrorKind), the message
+ *  says it in words. */
 export class SolverError extends Error {
-  constructor(message: string) {
+  constructor(
+    message: string,
+    readonly kind: SolverErrorKind = 'internal',
+  ) {
     super(message);
     this.name = 'SolverError';
   }

@@ -1,9 +1,10 @@
 // The app's side of the solver worker.
 // - A full request goes to the worker at once and supersedes what runs there (the worker drops
 //   a superseded solve between iteration slices).
-// - Previews (the curve being drawn) are paced by the worker: at most one is in flight; while it
-//   runs, newer previews replace each other in a one-slot mailbox and the newest is sent when the
-//   answer comes back. So a drag never queues stale solves, and the hair keeps up with the pen.
+// - Previews (the curve being drawn) are paced here, and only here: at most one is in flight;
+//   while it runs, newer previews replace each other in a one-slot mailbox and the newest is sent
+//   when the answer comes back. So a drag never queues stale solves, and the hair keeps up with
+//   the pen. How light previews (and first looks) are is the caller's: lightMaxStrands.
 // - A result is shown when it is newer than what is on screen and no full request newer than it
 //   was made (a late answer never undoes an edit the user made since).
 // Final results are cached by content (undo is instant and exact), and a worker that dies is
@@ -11,7 +12,8 @@
 // The solved field is copied out of the worker only while `wantField` is set (the field display
 // is on); a cached result without it does not answer a request that wants it.
 import { contentKey } from '../model/curveSet';
-import type { CurveSet, FromWorker, GrowthParams, ToWorker } from './protocol';
+import { SolverError } from './engine';
+import type { CurveSet, FromWorker, GrowthParams, SolverErrorKind, ToWorker } from './protocol';
 
 export type InitMessage = Extract<ToWorker, { type: 'init' }>;
 export type SolveResult = Extract<FromWorker, { type: 'result' }>;
@@ -23,8 +25,9 @@ export interface SolverClientEvents {
   onBusy(phase: 'loading' | 'solving' | 'growing', fraction: number): void;
   /** A result of the newest request (`final` false: a preview or a first look). */
   onResult(result: SolveResult, final: boolean, fromCache: boolean): void;
-  /** An error; `restarting` when the worker died and is being replaced. */
-  onError(message: string, restarting: boolean): void;
+  /** An error; `restarting` when the worker died and is being replaced; `kind` what went wrong
+   *  (a worker that died: 'internal'). */
+  onError(message: string, restarting: boolean, kind: SolverErrorKind): void;
   /** The newest request is answered in full and nothing else is pending. */
   onIdle(): void;
 }
@@ -36,7 +39,11 @@ interface Request {
   curves: CurveSet;
   growth: GrowthParams;
   wantField: boolean;
+  lightMaxStrands: number;
 }
+
+/** Strand cap of light results when the caller names none. */
+export const DEFAULT_LIGHT_MAX_STRANDS = 6000;
 
 const CACHE_SIZE = 4;
 const MAX_RESTARTS = 3;
@@ -86,7 +93,14 @@ export class SolverClient {
     );
   }
 
-  request(curves: CurveSet, growth: GrowthParams, mode: SolveMode = 'full'): void {
+  /** Solves `curves` and grows `growth`; previews and a full solve's first look are grown with
+   *  at most `lightMaxStrands` strands (0: growth.maxStrands alone). */
+  request(
+    curves: CurveSet,
+    growth: GrowthParams,
+    mode: SolveMode = 'full',
+    lightMaxStrands = DEFAULT_LIGHT_MAX_STRANDS,
+  ): void {
     const key = contentKey(
       curves.points,
       curves.curveStart,
@@ -105,6 +119,7 @@ export class SolverClient {
       curves,
       growth,
       wantField: this.wantField,
+      lightMaxStrands,
     };
     this.latest = req;
     if (mode === 'preview') {
@@ -195,6 +210,7 @@ export class SolverClient {
       growth: req.growth,
       wantField: req.wantField,
       mode: req.mode,
+      lightMaxStrands: req.lightMaxStrands,
     };
     this.worker.postMessage(msg);
   }
@@ -206,6 +222,7 @@ export class SolverClient {
       this.events.onError(
         `The solver stopped (${reason}) ${MAX_RESTARTS} times in a row; reload the page. Your curves are kept in the session.`,
         false,
+        'internal',
       );
       return;
     }
@@ -218,7 +235,11 @@ export class SolverClient {
       this.open = { ...this.latest, mode: 'full' };
       this.lastFullId = this.latest.id;
     }
-    this.events.onError(`The solver stopped (${reason}); restarting it with your session.`, true);
+    this.events.onError(
+      `The solver stopped (${reason}); restarting it with your session.`,
+      true,
+      'internal',
+    );
     this.start();
   }
 
@@ -267,20 +288,20 @@ export class SolverClient {
       case 'error':
         if (msg.id === null && !this.ready) {
           // Set-up failed: restarting would fail the same way.
-          this.events.onError(msg.message, false);
+          this.events.onError(msg.message, false, msg.kind);
           return;
         }
         if (msg.id !== null) {
           const w = this.avoidWaiting.get(msg.id);
           if (w) {
             this.avoidWaiting.delete(msg.id);
-            w.reject(new Error(msg.message));
+            w.reject(new SolverError(msg.message, msg.kind));
             return;
           }
           this.previewAnswered(msg.id);
         }
         if (this.open && msg.id === this.open.id) this.open = null;
-        this.events.onError(msg.message, false);
+        this.events.onError(msg.message, false, msg.kind);
         if (!this.pending) this.events.onIdle();
         return;
     }

@@ -1,18 +1,31 @@
 // SolverEngine over the wasm module (wasm-build/binding.cpp). Inputs are copied into wasm
-// memory for the duration of a call; results are copied out into fresh typed arrays of the
-// protocol.ts layouts, so they can be transferred and outlive the next call.
+// memory for the duration of a call and described to the binding by one C struct per call,
+// written by writeStruct from its protocol.ts layout; results are copied out into fresh typed
+// arrays of the protocol.ts layouts, so they can be transferred and outlive the next call.
+// Every binding call returns a status; a failure throws SolverError with its kind.
 import createHairSolver, { type HairSolverModule } from '../generated/hairsolver.mjs';
 import { type IterateProgress, type SolverEngine, SolverError } from './engine';
-import type {
-  ConstraintArrays,
-  CurveSet,
-  FieldArrays,
-  GridSpec,
-  GrowthParams,
-  ScalpMesh,
-  SolverName,
-  SolveStats,
-  StrandArrays,
+import {
+  AVOID_INPUT,
+  BOUNDARY_STRUCTS,
+  CONSTRAINT_LIST,
+  type ConstraintArrays,
+  CURVE_SET_HEADER,
+  type CurveSet,
+  type FieldArrays,
+  GRID_INPUT,
+  GROWTH_INPUT,
+  type GridSpec,
+  type GrowthParams,
+  ITERATE_PROGRESS,
+  SCALP_INPUT,
+  type ScalpMesh,
+  type SolverName,
+  type SolveStats,
+  STATS_OUTPUT,
+  type StrandArrays,
+  type StructLayout,
+  solverErrorKind,
 } from './protocol';
 
 export interface LoadOptions {
@@ -50,17 +63,36 @@ export interface RawSolver {
 
 async function instantiate(opts: LoadOptions): Promise<HairSolverModule> {
   const locateFile = opts.locateFile;
-  return createHairSolver({
+  const mod = await createHairSolver({
     ...(opts.wasmBinary ? { wasmBinary: opts.wasmBinary } : {}),
     ...(locateFile ? { locateFile: (file: string) => locateFile(file) } : {}),
   });
+  const bad = boundaryLayoutMismatches(mod);
+  if (bad.length) throw new SolverError(`wasm boundary out of date: ${bad.join('; ')}`);
+  return mod;
+}
+
+/** Every boundary struct whose size or member offsets in the module differ from protocol.ts
+ *  (empty when the binding and protocol.ts agree). */
+export function boundaryLayoutMismatches(mod: HairSolverModule): string[] {
+  const out: string[] = [];
+  BOUNDARY_STRUCTS.forEach((layout: StructLayout<string>, id) => {
+    const want = [layout.size, ...layout.names.map((n) => layout.fields[n].offset)];
+    const got = withScratch(mod, 4 * want.length, (ptr) => {
+      const n = mod._hs_struct_layout(id, ptr, want.length);
+      return Array.from(i32(mod, ptr, n));
+    });
+    if (got.join() !== want.join())
+      out.push(`struct ${id} (${layout.names[0]}, ...): binding [${got}], protocol.ts [${want}]`);
+  });
+  return out;
 }
 
 /** Copies a typed array into fresh wasm memory; returns the pointer (free it). */
 function copyIn(mod: HairSolverModule, arr: ArrayBufferView): number {
   const bytes = new Uint8Array(arr.buffer, arr.byteOffset, arr.byteLength);
   const ptr = mod._malloc(Math.max(8, bytes.byteLength));
-  if (ptr === 0) throw new SolverError('out of wasm memory');
+  if (ptr === 0) throw new SolverError('out of wasm memory', 'over_memory_cap');
   mod.HEAPU8.set(bytes, ptr);
   return ptr;
 }
@@ -87,8 +119,102 @@ function withInputs<T>(
   }
 }
 
+/** Throws SolverError (with the kind of the status code) unless status is 0. */
 function check(mod: HairSolverModule, status: number): void {
-  if (status !== 0) throw new SolverError(mod.UTF8ToString(mod._hs_last_error()));
+  if (status !== 0)
+    throw new SolverError(mod.UTF8ToString(mod._hs_last_error()), solverErrorKind(status));
+}
+
+/** Runs fn with `bytes` of zeroed scratch wasm memory, then frees it. */
+function withScratch<T>(mod: HairSolverModule, bytes: number, fn: (ptr: number) => T): T {
+  const ptr = mod._malloc(Math.max(8, bytes));
+  if (ptr === 0) throw new SolverError('out of wasm memory', 'over_memory_cap');
+  try {
+    mod.HEAPU8.fill(0, ptr, ptr + bytes);
+    return fn(ptr);
+  } finally {
+    mod._free(ptr);
+  }
+}
+
+/** The one writer of every input struct: `values` into wasm memory at ptr, each member where
+ *  its protocol.ts layout puts it. */
+function writeStruct<F extends string>(
+  mod: HairSolverModule,
+  layout: StructLayout<F>,
+  ptr: number,
+  values: Readonly<Record<F, number>>,
+): void {
+  for (const name of layout.names) {
+    const { offset, type } = layout.fields[name];
+    const at = ptr + offset;
+    const v = values[name];
+    if (type === 'f64') mod.HEAPF64[at >> 3] = v;
+    else if (type === 'i32') mod.HEAP32[at >> 2] = v;
+    else if (type === 'u32' || type === 'ptr') mod.HEAPU32[at >> 2] = v;
+    else throw new SolverError(`struct member ${name}: ${type} is output only`);
+  }
+}
+
+/** Reads an output struct at ptr by its protocol.ts layout (char32 members as strings). */
+function readStruct<F extends string>(
+  mod: HairSolverModule,
+  layout: StructLayout<F>,
+  ptr: number,
+): Record<F, number | string> {
+  const out = {} as Record<F, number | string>;
+  for (const name of layout.names) {
+    const { offset, type } = layout.fields[name];
+    const at = ptr + offset;
+    if (type === 'f64') out[name] = mod.HEAPF64[at >> 3];
+    else if (type === 'i32') out[name] = mod.HEAP32[at >> 2];
+    else if (type === 'u32' || type === 'ptr') out[name] = mod.HEAPU32[at >> 2];
+    else out[name] = mod.UTF8ToString(at);
+  }
+  return out;
+}
+
+/** Writes an input struct, calls the binding with its pointer and checks the status. */
+function callWith<F extends string>(
+  mod: HairSolverModule,
+  layout: StructLayout<F>,
+  values: Readonly<Record<F, number>>,
+  call: (structPtr: number) => number,
+): void {
+  withScratch(mod, layout.size, (ptr) => {
+    writeStruct(mod, layout, ptr, values);
+    check(mod, call(ptr));
+  });
+}
+
+/** Calls the binding with an output struct and reads it (after checking the status). */
+function callOut<F extends string>(
+  mod: HairSolverModule,
+  layout: StructLayout<F>,
+  call: (structPtr: number) => number,
+): Record<F, number | string> {
+  return withScratch(mod, layout.size, (ptr) => {
+    check(mod, call(ptr));
+    return readStruct(mod, layout, ptr);
+  });
+}
+
+const num = (v: number | string): number => (typeof v === 'number' ? v : Number.NaN);
+
+function toRawStats(
+  o: Record<(typeof STATS_OUTPUT.names)[number], number | string>,
+): RawSolveStats {
+  return {
+    method: String(o.method),
+    iterations: num(o.iterations),
+    residual: num(o.residual),
+    constraints: num(o.constraints),
+    added: num(o.added),
+    removed: num(o.removed),
+    changed: num(o.changed),
+    setupMs: num(o.setupMs),
+    solveMs: num(o.solveMs),
+  };
 }
 
 // Typed-array copies out of wasm memory (views are re-read: memory may have grown).
@@ -101,22 +227,6 @@ const u32 = (mod: HairSolverModule, ptr: number, n: number): Uint32Array =>
 const i32 = (mod: HairSolverModule, ptr: number, n: number): Int32Array =>
   n === 0 ? new Int32Array(0) : mod.HEAP32.slice(ptr >> 2, (ptr >> 2) + n);
 
-function parseStats(json: string): RawSolveStats {
-  const o = JSON.parse(json) as Record<string, unknown>;
-  const num = (k: string): number => (typeof o[k] === 'number' ? (o[k] as number) : 0);
-  return {
-    method: typeof o.method === 'string' ? o.method : '',
-    iterations: num('iterations'),
-    residual: num('residual'),
-    constraints: num('constraints'),
-    added: num('added'),
-    removed: num('removed'),
-    changed: num('changed'),
-    setupMs: num('setupMs'),
-    solveMs: num('solveMs'),
-  };
-}
-
 class WasmEngine implements SolverEngine {
   private handle: number;
 
@@ -125,83 +235,101 @@ class WasmEngine implements SolverEngine {
   }
 
   private h(): number {
-    if (this.handle === 0) throw new SolverError('engine is disposed');
+    if (this.handle === 0) throw new SolverError('engine is disposed', 'not_ready');
     return this.handle;
   }
 
   setGrid(grid: GridSpec, omega: number, solver: SolverName): void {
     const h = this.h();
-    const name = copyInString(this.mod, solver);
+    const m = this.mod;
+    const name = copyInString(m, solver);
     try {
       const [nx, ny, nz] = grid.dims;
-      const [ox, oy, oz] = grid.origin;
-      check(
-        this.mod,
-        this.mod._hs_engine_set_grid(h, nx, ny, nz, ox, oy, oz, grid.step, omega, name),
+      const [originX, originY, originZ] = grid.origin;
+      callWith(
+        m,
+        GRID_INPUT,
+        { originX, originY, originZ, step: grid.step, omega, nx, ny, nz, solver: name },
+        (p) => m._hs_engine_set_grid(h, p),
       );
     } finally {
-      this.mod._free(name);
+      m._free(name);
     }
   }
 
   setScalp(mesh: ScalpMesh): void {
     const h = this.h();
+    const m = this.mod;
     const nt = Math.floor(mesh.indices.length / 3);
     if (mesh.scalp.length !== nt || mesh.indices.length !== 3 * nt || mesh.positions.length % 3)
-      throw new SolverError('scalp: array lengths do not match (3 per vertex, 3 per triangle)');
-    withInputs(this.mod, [mesh.positions, mesh.indices, mesh.scalp], ([p, i, s]) => {
-      const [cx, cy, cz] = mesh.center;
-      check(
-        this.mod,
-        this.mod._hs_engine_set_scalp(h, p, mesh.positions.length / 3, i, nt, s, cx, cy, cz),
+      throw new SolverError(
+        'scalp: array lengths do not match (3 per vertex, 3 per triangle)',
+        'invalid_input',
+      );
+    withInputs(m, [mesh.positions, mesh.indices, mesh.scalp], ([positions, indices, scalp]) => {
+      const [centerX, centerY, centerZ] = mesh.center;
+      callWith(
+        m,
+        SCALP_INPUT,
+        {
+          centerX,
+          centerY,
+          centerZ,
+          positions,
+          vertexCount: mesh.positions.length / 3,
+          indices,
+          triangleCount: nt,
+          scalp,
+        },
+        (p) => m._hs_engine_set_scalp(h, p),
       );
     });
   }
 
   setCurves(curves: CurveSet): void {
     const h = this.h();
+    const m = this.mod;
     const nc = curves.curveStart.length - 1;
-    if (nc < 0) throw new SolverError('curves: curveStart must have curves + 1 entries');
+    const bad = (msg: string) => new SolverError(`curves: ${msg}`, 'invalid_input');
+    if (nc < 0) throw bad('curveStart must have curves + 1 entries');
     if (curves.kinds.length !== nc || curves.extend.length !== nc || curves.points.length % 3)
-      throw new SolverError('curves: array lengths do not match');
-    if (curves.paramStart.length !== nc + 1)
-      throw new SolverError('curves: paramStart must have curves + 1 entries');
+      throw bad('array lengths do not match');
+    if (curves.paramStart.length !== nc + 1) throw bad('paramStart must have curves + 1 entries');
     const ne = curves.extraIndex.length;
     if (curves.extraTarget.length !== 3 * ne)
-      throw new SolverError('curves: extraTarget must have 3 entries per extraIndex');
-    withInputs(
-      this.mod,
-      [
-        curves.points,
-        curves.curveStart,
-        curves.kinds,
-        curves.extend,
-        curves.params,
-        curves.paramStart,
-        curves.extraIndex,
-        curves.extraTarget,
-      ],
-      ([p, s, k, e, pr, ps, xi, xt]) => {
-        check(
-          this.mod,
-          this.mod._hs_engine_set_curves(
-            h,
-            p,
-            curves.points.length / 3,
-            s,
-            nc,
-            k,
-            e,
-            pr,
-            curves.params.length,
-            ps,
-            xi,
-            xt,
-            ne,
-          ),
-        );
-      },
-    );
+      throw bad('extraTarget must have 3 entries per extraIndex');
+    const c = curves;
+    const arrays = [
+      c.points,
+      c.curveStart,
+      c.kinds,
+      c.extend,
+      c.params,
+      c.paramStart,
+      c.extraIndex,
+      c.extraTarget,
+    ];
+    withInputs(m, arrays, ([points, curveStart, kinds, extend, params, paramStart, xi, xt]) => {
+      callWith(
+        m,
+        CURVE_SET_HEADER,
+        {
+          points,
+          pointCount: c.points.length / 3,
+          curveStart,
+          curveCount: nc,
+          kinds,
+          extend,
+          params,
+          paramCount: c.params.length,
+          paramStart,
+          extraIndex: xi,
+          extraTarget: xt,
+          extraCount: ne,
+        },
+        (p) => m._hs_engine_set_curves(h, p),
+      );
+    });
   }
 
   /** Display colour of each constraint of constraints(), same order: 0 blue, 1 red, 2 purple,
@@ -219,14 +347,16 @@ class WasmEngine implements SolverEngine {
   scalpAvoidance(opts: ScalpAvoidanceOptions = {}): ScalpAvoidanceResult {
     const h = this.h();
     const m = this.mod;
-    check(
+    callWith(
       m,
-      m._hs_engine_scalp_avoidance(
-        h,
-        opts.band ?? 1.5,
-        opts.magnitude ?? 0.3,
-        (opts.wholeHead ? 1 : 0) | (opts.insideToo ? 2 : 0),
-      ),
+      AVOID_INPUT,
+      {
+        band: opts.band ?? 1.5,
+        magnitude: opts.magnitude ?? 0.3,
+        wholeHead: opts.wholeHead ? 1 : 0,
+        insideToo: opts.insideToo ? 1 : 0,
+      },
+      (p) => m._hs_engine_scalp_avoidance(h, p),
     );
     const n = m._hs_engine_avoid_count(h);
     return {
@@ -241,31 +371,21 @@ class WasmEngine implements SolverEngine {
 
   iterate(maxIterations: number, tolerance: number): IterateProgress {
     const h = this.h();
-    return withInputs(this.mod, [new Float64Array(3)], ([out]) => {
-      check(this.mod, this.mod._hs_engine_iterate(h, maxIterations, tolerance, out));
-      const p = f64(this.mod, out, 3);
-      return { iterations: p[0], errorEstimate: p[1], converged: p[2] === 1 };
-    });
+    const m = this.mod;
+    const p = callOut(m, ITERATE_PROGRESS, (out) =>
+      m._hs_engine_iterate(h, maxIterations, tolerance, out),
+    );
+    return {
+      iterations: num(p.iterations),
+      errorEstimate: num(p.errorEstimate),
+      converged: p.converged === 1,
+    };
   }
 
   grow(g: GrowthParams): StrandArrays {
     const h = this.h();
     const m = this.mod;
-    check(
-      m,
-      m._hs_engine_grow(
-        h,
-        g.thetaStepDeg,
-        g.phiStepDeg,
-        g.jitter,
-        g.seed,
-        g.stepFraction,
-        g.minMagnitude,
-        g.maxLength,
-        g.maxSegments,
-        g.maxStrands,
-      ),
-    );
+    callWith(m, GROWTH_INPUT, g, (p) => m._hs_engine_grow(h, p));
     return {
       points: f32(m, m._hs_engine_strand_points(h), 3 * m._hs_engine_strand_point_count(h)),
       strandStart: u32(m, m._hs_engine_strand_start(h), m._hs_engine_strand_start_count(h)),
@@ -289,22 +409,17 @@ class WasmEngine implements SolverEngine {
   }
 
   stats(): Omit<SolveStats, 'growMs' | 'errorEstimate' | 'heapBytes'> {
-    const s = parseStats(this.mod.UTF8ToString(this.mod._hs_engine_stats_json(this.h())));
-    return {
-      method: s.method,
-      iterations: s.iterations,
-      constraints: s.constraints,
-      added: s.added,
-      removed: s.removed,
-      changed: s.changed,
-      setupMs: s.setupMs,
-      solveMs: s.solveMs,
-    };
+    const h = this.h();
+    const { residual: _, ...s } = toRawStats(
+      callOut(this.mod, STATS_OUTPUT, (p) => this.mod._hs_engine_stats(h, p)),
+    );
+    return s;
   }
 
   /** Milliseconds of the last grow (roots + strands), measured in wasm. */
   growMs(): number {
-    return this.mod._hs_engine_grow_ms(this.h());
+    const h = this.h();
+    return num(callOut(this.mod, STATS_OUTPUT, (p) => this.mod._hs_engine_stats(h, p)).growMs);
   }
 
   heapBytes(): number {
@@ -356,20 +471,27 @@ class WasmRawSolver implements RawSolver {
   ) {}
 
   private h(): number {
-    if (this.handle === 0) throw new SolverError('solver is disposed');
+    if (this.handle === 0) throw new SolverError('solver is disposed', 'not_ready');
     return this.handle;
   }
 
   setGrid(dims: [number, number, number], omega: number): void {
-    check(this.mod, this.mod._hs_raw_set_grid(this.h(), dims[0], dims[1], dims[2], omega));
+    const h = this.h();
+    const m = this.mod;
+    const [nx, ny, nz] = dims;
+    const unit = { originX: 0, originY: 0, originZ: 0, step: 1, solver: 0 };
+    callWith(m, GRID_INPUT, { ...unit, omega, nx, ny, nz }, (p) => m._hs_raw_set_grid(h, p));
   }
 
   setConstraints(index: Int32Array, target: Float64Array): void {
     if (target.length !== 3 * index.length)
-      throw new SolverError('constraints: target must have 3 entries per index');
+      throw new SolverError('constraints: target must have 3 entries per index', 'invalid_input');
     const h = this.h();
-    withInputs(this.mod, [index, target], ([i, t]) => {
-      check(this.mod, this.mod._hs_raw_set_constraints(h, i, t, index.length));
+    const m = this.mod;
+    withInputs(m, [index, target], ([i, t]) => {
+      callWith(m, CONSTRAINT_LIST, { index: i, target: t, count: index.length }, (p) =>
+        m._hs_raw_set_constraints(h, p),
+      );
     });
   }
 
@@ -383,7 +505,8 @@ class WasmRawSolver implements RawSolver {
   }
 
   stats(): RawSolveStats {
-    return parseStats(this.mod.UTF8ToString(this.mod._hs_raw_stats_json(this.h())));
+    const h = this.h();
+    return toRawStats(callOut(this.mod, STATS_OUTPUT, (p) => this.mod._hs_raw_stats(h, p)));
   }
 
   dispose(): void {
@@ -397,8 +520,10 @@ export async function loadRawSolver(solver: string, opts: LoadOptions = {}): Pro
   const mod = await instantiate(opts);
   const name = copyInString(mod, solver);
   try {
-    const h = mod._hs_raw_create(name);
-    if (h === 0) throw new SolverError(mod.UTF8ToString(mod._hs_last_error()));
+    const h = withScratch(mod, 4, (out) => {
+      check(mod, mod._hs_raw_create(name, out));
+      return mod.HEAPU32[out >> 2];
+    });
     return new WasmRawSolver(mod, h);
   } finally {
     mod._free(name);

@@ -42,5 +42,10 @@ loadSolverEngine({ locateFile: () => wasmUrl })
     for (const m of early.splice(0)) void logic.handle(m);
   })
   .catch((e: unknown) => {
-    post({ type: 'error', id: null, message: `Could not load the solver: ${String(e)}` });
+    post({
+      type: 'error',
+      id: null,
+      message: `Could not load the solver: ${String(e)}`,
+      kind: 'internal',
+    });
   });

@@ -3,15 +3,16 @@
 //
 // Scheduling (one job at a time, the newest request supersedes the running one):
 //   preview job: a few iterations, light growth, one non-final result;
-//   full job:    a first look after a few iterations (non-final), then iterate in slices,
+//   full job:    a first look after a few iterations (non-final, light growth), then iterate in slices,
 //                yielding to the event loop between slices so a newer request can take over,
 //                and grow the final hair when the field has converged.
-import type { IterateProgress, SolverEngine } from './engine';
+import { type IterateProgress, type SolverEngine, SolverError } from './engine';
 import {
   type ConstraintArrays,
   ConstraintColour,
   type FromWorker,
   type GrowthParams,
+  type SolverErrorKind,
   type ToWorker,
 } from './protocol';
 
@@ -25,7 +26,6 @@ export interface SchedulerOptions {
   firstLookIterations: number;
   sliceIterations: number;
   previewIterations: number;
-  previewMaxStrands: number;
   /** Resolves after pending messages have had a chance to run. */
   yieldNow: () => Promise<void>;
   now: () => number;
@@ -36,12 +36,21 @@ export const DEFAULT_SCHEDULER: SchedulerOptions = {
   firstLookIterations: 2,
   sliceIterations: 4,
   previewIterations: 3,
-  previewMaxStrands: 6000,
   yieldNow: () => new Promise((r) => setTimeout(r, 0)),
   now: () => (typeof performance !== 'undefined' ? performance.now() : Date.now()),
 };
 
 const errorMessage = (e: unknown): string => (e instanceof Error ? e.message : String(e));
+const errorKind = (e: unknown): SolverErrorKind => (e instanceof SolverError ? e.kind : 'internal');
+
+/** The growth of a light result (a preview, a first look): the job's growth capped at its
+ *  lightMaxStrands (0 or less: no cap of its own; maxStrands 0 means no cap, as in GrowthParams). */
+export function lightGrowth(job: SolveMsg): GrowthParams {
+  const g = job.growth;
+  const cap = job.lightMaxStrands > 0 ? Math.round(job.lightMaxStrands) : 0;
+  if (cap === 0) return g;
+  return { ...g, maxStrands: g.maxStrands > 0 ? Math.min(g.maxStrands, cap) : cap };
+}
 
 export class WorkerLogic {
   private initialised = false;
@@ -67,12 +76,22 @@ export class WorkerLogic {
         const n = msg.grid.dims[0] * msg.grid.dims[1] * msg.grid.dims[2];
         this.post({ type: 'ready', gridPoints: n, roots: 0 });
       } catch (e) {
-        this.post({ type: 'error', id: null, message: `Solver set-up failed: ${errorMessage(e)}` });
+        this.post({
+          type: 'error',
+          id: null,
+          message: `Solver set-up failed: ${errorMessage(e)}`,
+          kind: errorKind(e),
+        });
       }
       return Promise.resolve();
     }
     if (!this.initialised) {
-      this.post({ type: 'error', id: msg.id, message: 'Solver is not initialised' });
+      this.post({
+        type: 'error',
+        id: msg.id,
+        message: 'Solver is not initialised',
+        kind: 'not_ready',
+      });
       return Promise.resolve();
     }
     if (msg.type === 'avoidScalp') this.avoidQueue.push(msg);
@@ -92,7 +111,7 @@ export class WorkerLogic {
           if (job.type === 'avoidScalp') await this.runAvoid(job);
           else await this.runJob(job);
         } catch (e) {
-          this.post({ type: 'error', id: job.id, message: errorMessage(e) });
+          this.post({ type: 'error', id: job.id, message: errorMessage(e), kind: errorKind(e) });
         }
       }
     } finally {
@@ -106,7 +125,8 @@ export class WorkerLogic {
 
   private async runAvoid(job: AvoidMsg): Promise<void> {
     const o = this.opts;
-    if (!this.engine.scalpAvoidance) throw new Error('this solver has no scalp avoidance');
+    if (!this.engine.scalpAvoidance)
+      throw new SolverError('this solver has no scalp avoidance', 'not_ready');
     this.post({ type: 'progress', id: job.id, phase: 'constraints', fraction: 0 });
     this.engine.setCurves(job.curves);
     let p = this.engine.iterate(o.firstLookIterations, o.tolerance);
@@ -130,18 +150,14 @@ export class WorkerLogic {
     this.engine.setCurves(job.curves);
     if (job.mode === 'preview') {
       const p = this.engine.iterate(o.previewIterations, o.tolerance);
-      const cap =
-        job.growth.maxStrands > 0
-          ? Math.min(job.growth.maxStrands, o.previewMaxStrands)
-          : o.previewMaxStrands;
-      this.emit(job, { ...job.growth, maxStrands: cap }, p, false, t0);
+      this.emit(job, lightGrowth(job), p, false, t0);
       return;
     }
     this.post({ type: 'progress', id: job.id, phase: 'solve', fraction: 0.05 });
     let p = this.engine.iterate(o.firstLookIterations, o.tolerance);
     if (!p.converged) {
       // A first look, grown light so it reaches the screen fast; the final hair follows.
-      this.emit(job, this.lightGrowth(job.growth), p, false, t0);
+      this.emit(job, lightGrowth(job), p, false, t0);
       while (!p.converged) {
         await o.yieldNow();
         if (this.superseded()) return;
@@ -176,11 +192,6 @@ export class WorkerLogic {
       colour = fixed;
     }
     return { ...c, colour };
-  }
-
-  private lightGrowth(g: GrowthParams): GrowthParams {
-    const cap = this.opts.previewMaxStrands;
-    return { ...g, maxStrands: g.maxStrands > 0 ? Math.min(g.maxStrands, cap) : cap };
   }
 
   private emit(

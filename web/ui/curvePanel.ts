@@ -1,39 +1,35 @@
-// A small panel with the selected curve's parameters: dividing σ, h, α0, α1 (degrees in the
-// panel, radians in the session); ponytail tightness; stream/ponytail "extend". Every change is
-// reported as one edit (the app records it in History).
+// A small panel with the selected curve's parameters, built from protocol.ts CURVE_PARAMS (label,
+// unit, range; angles in degrees in the panel, radians in the session), plus "Extend past the
+// end" for stream curves and ponytails. Every change is reported as one edit (the app records it
+// in History).
 import type { StyleCurve } from '../model/session';
+import { CURVE_PARAMS, type CurveParamSpec } from '../solver/protocol';
 
-export type CurvePatch =
-  | { sigma?: number; h?: number; alpha0?: number; alpha1?: number }
-  | { tightness?: number }
-  | { extend?: boolean };
+/** The fields a panel edit changes: scalar parameters by name (session units), or `extend`. */
+export type CurvePatch = Readonly<Record<string, number | boolean>>;
 
 export interface CurvePanel {
   show(curve: StyleCurve | null): void;
 }
 
-interface Field {
-  key: string;
-  label: string;
-  min: number;
-  max: number;
-  step: number;
-  toView?: (v: number) => number;
-  fromView?: (v: number) => number;
+const DEG = 180 / Math.PI;
+
+/** Session value -> panel value, and back (degrees for angles). */
+const toView = (s: CurveParamSpec, v: number) => (s.unit === 'rad' ? v * DEG : v);
+const fromView = (s: CurveParamSpec, v: number) => (s.unit === 'rad' ? v / DEG : v);
+
+/** The panel label: the table's label and its unit as shown. */
+export function paramLabel(s: CurveParamSpec): string {
+  if (s.unit === 'rad') return `${s.label} (°)`;
+  return s.unit ? `${s.label} (${s.unit})` : s.label;
 }
 
-const DEG = 180 / Math.PI;
-const angle = { toView: (v: number) => v * DEG, fromView: (v: number) => v / DEG };
+const specsOf = (c: StyleCurve): readonly CurveParamSpec[] => CURVE_PARAMS[c.type];
 
-const FIELDS: Record<'dividing' | 'ponytail', Field[]> = {
-  dividing: [
-    { key: 'sigma', label: 'σ (grid steps)', min: 0.25, max: 4, step: 0.05 },
-    { key: 'h', label: 'h (grid steps)', min: 0, max: 3, step: 0.05 },
-    { key: 'alpha0', label: 'α0 (°)', min: -80, max: 80, step: 1, ...angle },
-    { key: 'alpha1', label: 'α1 (°)', min: -80, max: 80, step: 1, ...angle },
-  ],
-  ponytail: [{ key: 'tightness', label: 'Tightness', min: 0, max: 1, step: 0.05 }],
-};
+function paramValue(c: StyleCurve, s: CurveParamSpec): number {
+  const v = (c as unknown as Record<string, unknown>)[s.name];
+  return typeof v === 'number' ? v : s.default;
+}
 
 export function buildCurvePanel(
   root: HTMLElement,
@@ -65,22 +61,20 @@ export function buildCurvePanel(
         label.append(box, ' Extend past the end');
         panel.append(label);
       }
-      if (curve.type === 'stream') return;
-      for (const f of FIELDS[curve.type]) {
+      for (const s of specsOf(curve)) {
         const label = document.createElement('label');
-        label.textContent = f.label;
+        label.textContent = paramLabel(s);
         const input = document.createElement('input');
         input.type = 'number';
-        input.min = String(f.min);
-        input.max = String(f.max);
-        input.step = String(f.step);
-        const raw = (curve as unknown as Record<string, number>)[f.key];
-        input.value = String(Math.round((f.toView ? f.toView(raw) : raw) * 1000) / 1000);
+        input.min = String(s.view.min);
+        input.max = String(s.view.max);
+        input.step = String(s.view.step);
+        input.value = String(Math.round(toView(s, paramValue(curve, s)) * 1000) / 1000);
         input.addEventListener('change', () => {
           const v = Number(input.value);
           if (!Number.isFinite(v)) return;
-          const clamped = Math.min(f.max, Math.max(f.min, v));
-          onChange(curve.id, { [f.key]: f.fromView ? f.fromView(clamped) : clamped } as CurvePatch);
+          const clamped = Math.min(s.view.max, Math.max(s.view.min, v));
+          onChange(curve.id, { [s.name]: fromView(s, clamped) });
         });
         label.append(input);
         panel.append(label);
@@ -89,13 +83,7 @@ export function buildCurvePanel(
   };
 }
 
+/** What the panel shows of a curve: it is rebuilt when this changes. */
 function paramsOf(c: StyleCurve): unknown {
-  switch (c.type) {
-    case 'stream':
-      return [c.extend];
-    case 'dividing':
-      return [c.sigma, c.h, c.alpha0, c.alpha1];
-    case 'ponytail':
-      return [c.extend, c.tightness];
-  }
+  return [c.type === 'dividing' ? null : c.extend, ...specsOf(c).map((s) => paramValue(c, s))];
 }
