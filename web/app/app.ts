@@ -199,14 +199,15 @@ export function startApp(): void {
       hair.result(r, final);
       overlays.result(r);
       status.result(r, final);
-      if (final) status.ready();
     },
     error: (m, kind, restarting) => status.solverError(m, kind, restarting),
     idle: () => {
       hair.idle();
-      status.ready();
+      // "Ready" once the converged hair is on screen (cached or unchanged hair: at once)
+      if (!hair.awaitingFrame) status.ready();
     },
   });
+  hair.onFinalShown = () => status.ready();
 
   let lastPointerUp = 0;
   bindInput({
@@ -245,7 +246,11 @@ export function startApp(): void {
     hair,
     overlays,
     ponytail: tools.ponytail,
-    busy: () => avoiding || bridge.pending || (tool.state !== 'idle' && tool.state !== 'pressed'),
+    busy: () =>
+      avoiding ||
+      bridge.pending ||
+      hair.awaitingFrame ||
+      (tool.state !== 'idle' && tool.state !== 'pressed'),
     lastPointerUp: () => lastPointerUp,
   });
 }

@@ -22,6 +22,10 @@ export class HairPresenter {
   readonly log: HairRevision[] = [];
   private unstamped: Omit<HairRevision, 'time'> | null = null;
   heapBytes = 0;
+  /** The converged hair was handed to the view and no frame has drawn it yet. */
+  private finalPending = false;
+  /** Called when the converged hair is on screen (the moment to say "Ready"). */
+  onFinalShown: (() => void) | null = null;
 
   constructor(
     private readonly viewer: Viewer,
@@ -37,6 +41,11 @@ export class HairPresenter {
     return this.shown;
   }
 
+  /** Converged hair is waiting for its first frame. */
+  get awaitingFrame(): boolean {
+    return this.finalPending;
+  }
+
   editorChanged(c: EditorChange): void {
     if (c.session.hairColor !== c.previous.hairColor || c.cause !== 'command')
       this.hair.setColor(c.session.hairColor);
@@ -47,7 +56,12 @@ export class HairPresenter {
     this.heapBytes = r.stats.heapBytes;
     if (this.shown !== r.strands) {
       this.shown = r.strands;
-      this.hair.show(r.strands);
+      this.finalPending = final;
+      this.hair.show(r.strands, () => {
+        if (!final || this.shown !== r.strands) return;
+        this.finalPending = false;
+        this.onFinalShown?.();
+      });
       const n = Math.max(0, r.strands.strandStart.length - 1);
       this.status.counts(n, this.status.curves);
       this.status.bumpRevision();

@@ -16,11 +16,19 @@ export class HairView {
 
   constructor(private readonly viewer: Viewer) {}
 
-  /** Replaces the hair on screen with `strands`. */
-  show(strands: StrandArrays): void {
+  /** Replaces the hair on screen with `strands`; `shown` runs once a frame has drawn it. */
+  show(strands: StrandArrays, shown?: () => void): void {
     const geometry = buildStrandGeometry(strands.points, strands.strandStart);
     this.material ??= createStrandMaterial({ color: this.color });
-    this.viewer.setHair(new THREE.LineSegments(geometry, this.material));
+    const hair = new THREE.LineSegments(geometry, this.material);
+    if (shown) {
+      const off = this.viewer.onHairShown((h) => {
+        if (h !== hair) return;
+        off();
+        shown();
+      });
+    }
+    this.viewer.setHair(hair);
   }
 
   setColor(css: string): void {

@@ -1,0 +1,181 @@
+// The editor as a new user meets it: curve after curve from the scalp, the shortcuts overlay,
+// plain-words status, Reset view, the surface mode's label, and a phone-sized screen. Real
+// pointer events; waits on the status attributes and the session, never on fixed sleeps.
+import { expect, type Page, test } from '@playwright/test';
+import { settled, status, watchConsole } from './helpers';
+
+type V3 = [number, number, number];
+interface Session {
+  curves: { id: string; type: string; points: V3[] }[];
+  selected: string | null;
+  camera: { position: V3; target: V3 };
+}
+const session = (page: Page) => page.evaluate(() => window.hairsketch.session() as Session);
+
+async function dragPath(page: Page, pts: { x: number; y: number }[]) {
+  await page.mouse.move(pts[0].x, pts[0].y);
+  await page.mouse.down();
+  for (const p of pts.slice(1)) await page.mouse.move(p.x, p.y);
+  await page.mouse.up();
+}
+
+test('six curves drawn in a row at 50K, each starting a few pixels from the last, make six curves', async ({
+  page,
+}) => {
+  const errors = watchConsole(page);
+  await page.goto('/?preset=empty&grid=50k&strands=1500');
+  await page.waitForFunction(() => {
+    const el = document.querySelector('[data-testid="status"]') as HTMLElement;
+    return el.dataset.state === 'ready';
+  });
+  await page.getByRole('button', { name: 'Stream curve' }).click();
+  const first = await page.evaluate(() => window.hairsketch.scalpToScreen(25, 25));
+  if (!first) throw new Error('scalp hidden');
+  let start = first;
+  for (let k = 0; k < 6; k++) {
+    // along the scalp and down past it, as a hand draws hair; the next one starts 5 px beside
+    const pts: { x: number; y: number }[] = [];
+    for (let i = 0; i <= 30; i++) pts.push({ x: start.x + 4 * i, y: start.y + 8 * i });
+    await dragPath(page, pts);
+    await page.waitForFunction(
+      (n) => (window.hairsketch.session() as Session).curves.length === n,
+      k + 1,
+    );
+    const s = await session(page);
+    expect(s.selected).toBe(s.curves[k].id); // the new curve is selected: the next stroke still makes one
+    // the next stroke starts within a few pixels of this curve's first point on screen
+    const root = await page.evaluate(
+      (p) => window.hairsketch.worldToScreen(p),
+      s.curves[k].points[0],
+    );
+    if (!root) throw new Error('the root of the new curve is hidden');
+    start = { x: root.x + 5, y: root.y + 1 };
+  }
+  const final = await settled(page);
+  expect(final.curves).toBe(6);
+  const s = await session(page);
+  expect(new Set(s.curves.map((c) => c.id)).size).toBe(6);
+  expect(final.text).not.toContain('Hint:');
+  expect(errors).toEqual([]);
+});
+
+test('"?" lists every shortcut; Escape closes it', async ({ page }) => {
+  await page.goto('/?strands=1000');
+  await settled(page);
+  await page.keyboard.press('?');
+  const dialog = page.getByRole('dialog', { name: 'Keyboard shortcuts' });
+  await expect(dialog).toBeVisible();
+  for (const text of ['Ctrl+Z', 'Ctrl+Shift+Z', 'Stream curve', 'Reset view', 'Delete']) {
+    await expect(dialog).toContainText(text);
+  }
+  await page.keyboard.press('Escape');
+  await expect(dialog).toBeHidden();
+});
+
+test('the status line speaks plainly: strand count with separators, no strands on a bald head', async ({
+  page,
+}) => {
+  await page.goto('/?strands=2500');
+  const s = await settled(page);
+  expect(s.strands).toBeGreaterThan(1000);
+  expect(s.text).toContain(`Ready — ${s.strands.toLocaleString('en-US')} strands`);
+  expect(s.text).not.toMatch(/mg-pcg|iterations|\bit\./);
+  await page.goto('/?preset=empty');
+  await page.waitForFunction(() => {
+    const el = document.querySelector('[data-testid="status"]') as HTMLElement;
+    return el.dataset.state === 'ready';
+  });
+  const bald = await status(page);
+  expect(bald.strands).toBe(0);
+  expect(bald.text).not.toMatch(/\d strands/);
+  expect(bald.text).toContain('no hair yet');
+});
+
+test('Reset view brings the camera back; Surface mode shows the mode that is on', async ({
+  page,
+}) => {
+  await page.goto('/?strands=1000');
+  await settled(page);
+  const before = (await session(page)).camera;
+  const box = await page.getByTestId('viewport').boundingBox();
+  if (!box) throw new Error('no viewport');
+  // orbit with the Select tool
+  await dragPath(page, [
+    { x: box.x + box.width / 2, y: box.y + box.height / 2 },
+    { x: box.x + box.width / 2 + 120, y: box.y + box.height / 2 + 10 },
+    { x: box.x + box.width / 2 + 240, y: box.y + box.height / 2 + 20 },
+  ]);
+  const moved = (await session(page)).camera;
+  expect(moved.position).not.toEqual(before.position);
+  await page.getByRole('button', { name: 'Reset view' }).click();
+  await page.waitForFunction((p) => {
+    const c = (window.hairsketch.session() as Session).camera.position;
+    return Math.hypot(c[0] - p[0], c[1] - p[1], c[2] - p[2]) < 1e-3;
+  }, before.position);
+
+  // select a stream curve: the surface mode button says which mode it is in
+  const s = await session(page);
+  await page.evaluate((id) => window.hairsketch.select(id), s.curves[0].id);
+  const mode = page.getByRole('button', { name: 'Surface mode' });
+  await expect(mode).toHaveText('Surface mode: ruled');
+  await mode.click();
+  await expect(mode).toHaveText('Surface mode: strip');
+  await expect(mode).toHaveAttribute('aria-pressed', 'true');
+});
+
+test.describe('on a phone-sized screen', () => {
+  test.use({ viewport: { width: 390, height: 844 }, hasTouch: true });
+
+  test('no sideways scrolling, a toolbar of at most two rows, 40 px targets, every toggle reachable', async ({
+    page,
+  }) => {
+    await page.goto('/?strands=800');
+    await settled(page);
+    const layout = await page.evaluate(() => {
+      const main = document.querySelector('#toolbar .toolbar-main') as HTMLElement;
+      const buttons = [...main.querySelectorAll('button')].map((b) => b.getBoundingClientRect());
+      const tops = [...new Set(buttons.map((r) => Math.round(r.top)))];
+      return {
+        scrollWidth: document.documentElement.scrollWidth,
+        width: window.innerWidth,
+        rows: tops.length,
+        smallest: Math.min(...buttons.map((r) => Math.min(r.width, r.height))),
+      };
+    });
+    expect(layout.scrollWidth).toBeLessThanOrEqual(layout.width);
+    expect(layout.rows).toBeLessThanOrEqual(2);
+    expect(layout.smallest).toBeGreaterThanOrEqual(40);
+
+    // everything else is in "More": each display toggle can be switched from there
+    const more = page.getByRole('button', { name: 'More' });
+    await more.click();
+    for (const name of ['Curves', 'Constraints', 'Surface', 'Field', 'Box']) {
+      const box = page.getByRole('checkbox', { name, exact: true });
+      await expect(box).toBeVisible();
+      const size = await box.evaluate((el) => {
+        const r = (el.parentElement as HTMLElement).getBoundingClientRect();
+        return Math.min(r.width, r.height);
+      });
+      expect(size).toBeGreaterThanOrEqual(40);
+    }
+    await page.getByRole('checkbox', { name: 'Box', exact: true }).click();
+    await page.waitForFunction(() => window.hairsketch.display().box);
+    await more.click(); // closes the menu
+    await expect(page.getByRole('checkbox', { name: 'Box', exact: true })).toBeHidden();
+    for (const name of [
+      'Surface mode',
+      'Avoid scalp',
+      'Share link',
+      'Save',
+      'Open',
+      'Reset view',
+    ]) {
+      await more.click();
+      await expect(page.getByRole('button', { name })).toBeVisible();
+      await more.click(); // closes again
+      await expect(page.getByRole('button', { name })).toBeHidden();
+    }
+    const after = await page.evaluate(() => document.documentElement.scrollWidth);
+    expect(after).toBeLessThanOrEqual(390);
+  });
+});
