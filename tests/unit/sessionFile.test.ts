@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { emptySession, type SessionState } from '../../web/model/session';
 import { decodeSessionLink, encodeSessionLink, parseSession } from '../../web/model/sessionFile';
+import { CURVE_PARAMS } from '../../web/solver/protocol';
 
 const vp = {
   position: [0, 0, 6] as [number, number, number],
@@ -76,6 +77,52 @@ describe('parseSession', () => {
     expect(bad((j) => (j.avoid.target = [1]))).toMatch(/session\.avoid/);
     expect(bad((j) => (j.version = 2))).toMatch(/version/);
     expect(parseSession(null)).toEqual({ ok: false, error: 'session: must be an object' });
+  });
+});
+
+describe('curve parameters (protocol.ts CURVE_PARAMS)', () => {
+  // biome-ignore lint/suspicious/noExplicitAny: edits arbitrary JSON
+  const parse = (edit: (j: any) => void) => {
+    const j = JSON.parse(JSON.stringify(sample()));
+    edit(j);
+    return parseSession(j);
+  };
+
+  it('checks every scalar against its range and names it', () => {
+    for (const spec of CURVE_PARAMS.dividing) {
+      const at = `session.curves[1].${spec.name}`;
+      for (const bad of [spec.min - 1, spec.max + 1])
+        expect(parse((j) => (j.curves[1][spec.name] = bad))).toEqual({
+          ok: false,
+          error: `${at}: must be between ${spec.min} and ${spec.max}`,
+        });
+      expect(parse((j) => (j.curves[1][spec.name] = 'x'))).toEqual({
+        ok: false,
+        error: `${at}: must be a finite number`,
+      });
+      const r = parse((j) => (j.curves[1][spec.name] = spec.max));
+      expect(r.ok && (r.value.curves[1] as unknown as Record<string, number>)[spec.name]).toBe(
+        spec.max,
+      );
+    }
+  });
+
+  it('gives a curve saved without a parameter its default (older sessions)', () => {
+    const r = parse((j) => {
+      delete j.curves[1].h;
+    });
+    expect(r.ok).toBe(true);
+    if (r.ok) expect((r.value.curves[1] as { h: number }).h).toBe(0.5);
+    // the ranges and defaults of the parameters saved sessions already carry
+    expect(CURVE_PARAMS.dividing.map((p) => [p.name, p.default, p.min, p.max])).toEqual([
+      ['sigma', 1, 0.05, 20],
+      ['h', 0.5, 0, 20],
+      ['alpha0', 0, -Math.PI, Math.PI],
+      ['alpha1', 0, -Math.PI, Math.PI],
+    ]);
+    expect(CURVE_PARAMS.ponytail.map((p) => [p.name, p.default, p.min, p.max])).toEqual([
+      ['tightness', 0.6, 0, 10],
+    ]);
   });
 });
 

@@ -85,6 +85,7 @@ function setup() {
   const workers: FakeWorker[] = [];
   const shown: Array<{ id: number; cached: boolean }> = [];
   const errors: string[] = [];
+  const kinds: string[] = [];
   const client = new SolverClient(
     () => {
       const w = new FakeWorker();
@@ -95,11 +96,14 @@ function setup() {
     {
       onBusy() {},
       onResult: (r, _latest, cached) => shown.push({ id: r.id, cached }),
-      onError: (m) => errors.push(m),
+      onError: (m, _restarting, kind) => {
+        errors.push(m);
+        kinds.push(kind);
+      },
       onIdle() {},
     },
   );
-  return { client, workers, shown, errors };
+  return { client, workers, shown, errors, kinds };
 }
 
 describe('SolverClient', () => {
@@ -230,5 +234,32 @@ describe('SolverClient', () => {
     for (let i = 0; i < 4; i++) workers[workers.length - 1].die();
     expect(workers).toHaveLength(4);
     expect(errors.at(-1)).toMatch(/reload the page/);
+  });
+
+  it("passes the worker's error kind on", () => {
+    const { client, workers, errors, kinds } = setup();
+    const w = workers[0];
+    w.reply({ type: 'ready', gridPoints: 8, roots: 0 });
+    client.request(curves(1), DEFAULT_GROWTH);
+    const id = w.solves()[0].id;
+    w.reply({ type: 'error', id, message: 'exact: over the cap', kind: 'over_memory_cap' });
+    expect(errors).toEqual(['exact: over the cap']);
+    expect(kinds).toEqual(['over_memory_cap']);
+    w.die();
+    expect(kinds.at(-1)).toBe('internal');
+  });
+
+  it('sends the light strand cap with each request (6000 unless the caller names one)', () => {
+    const { client, workers } = setup();
+    const w = workers[0];
+    w.reply({ type: 'ready', gridPoints: 8, roots: 0 });
+    client.request(curves(1), DEFAULT_GROWTH);
+    client.request(curves(2), DEFAULT_GROWTH, 'full', 900);
+    client.request(curves(3), DEFAULT_GROWTH, 'preview', 450);
+    expect(w.solves().map((m) => [m.mode, m.lightMaxStrands])).toEqual([
+      ['full', 6000],
+      ['full', 900],
+      ['preview', 450],
+    ]);
   });
 });
