@@ -1,11 +1,8 @@
 // Dividing curves on the TS side (SPEC S4.5): normals from the mesh, frames, hint tilt, packing.
+
 import { describe, expect, it } from 'vitest';
-import {
-  dividingFrames,
-  packDividingParams,
-  scalpNormalsAt,
-  tiltFromHint,
-} from '../../web/model/dividingFrames';
+import { curveParams } from '../../web/model/curveSet';
+import { dividingFrames, scalpNormalsAt, tiltFromHint } from '../../web/model/dividingFrames';
 import type { Vec3 } from '../../web/model/vec3';
 
 // Flat "scalp": the square y = 2, x, z in [0, 10], wound counter-clockwise seen from +y.
@@ -63,13 +60,23 @@ describe('dividing frames', () => {
   });
 
   it('packs the protocol block', () => {
-    const p = packDividingParams(
-      [
+    const p = curveParams({
+      id: 'c1',
+      type: 'dividing',
+      points: [
+        [0, 1, 0],
+        [0, 1.1, 0],
+      ],
+      normals: [
         [0, 1, 0],
         [0, 1, 0],
       ],
-      { sigma: 1, h: 0.5, alpha0: 0.1, alpha1: 0.2 },
-    );
+      sigma: 1,
+      h: 0.5,
+      alpha0: 0.1,
+      alpha1: 0.2,
+      viewpoint: { position: [0, 0, 7], target: [0, 0, 0] },
+    });
     expect(p).toEqual([1, 0.5, 0.1, 0.2, 0, 1, 0, 0, 1, 0]);
   });
 });

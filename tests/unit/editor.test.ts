@@ -118,6 +118,12 @@ describe('editor commands, each undoable', () => {
     // a stream curve has no sigma; extend is boolean: a number does not replace it
     expect(e.run({ kind: 'patchCurve', id: 'c1', patch: { sigma: 2, extend: 1 } })).toBe(false);
     expect(e.run({ kind: 'patchCurve', id: 'c1', patch: { extend: false } })).toBe(true);
+    // a parameter outside its range (protocol.ts CURVE_PARAMS) is refused with a message
+    const d = editorWithLog();
+    d.e.run(addDividing());
+    expect(d.e.run({ kind: 'patchCurve', id: 'c1', patch: { sigma: 1e9 } })).toBe(false);
+    expect(d.log.at(-1)?.message).toContain('must be a number from');
+    expect(d.e.run({ kind: 'patchCurve', id: 'c1', patch: { h: Number.NaN } })).toBe(false);
     expect((e.session.curves[0] as StreamCurve).extend).toBe(false);
   });
 

@@ -1,11 +1,9 @@
 // Ponytail cross sections (SPEC S4.6): circles between the profiles with the right radii, C1
 // nearest the scalp, the cross-section curve's scale, and the protocol block.
+
 import { describe, expect, it } from 'vitest';
-import {
-  packPonytailParams,
-  planeCrossing,
-  ponytailCircles,
-} from '../../web/model/ponytailGeometry';
+import { curveParams } from '../../web/model/curveSet';
+import { planeCrossing, ponytailCircles } from '../../web/model/ponytailGeometry';
 import type { Vec3 } from '../../web/model/vec3';
 
 // Spine straight down from the scalp at y = 1 to y = -1 (21 points, step 0.1).
@@ -57,7 +55,17 @@ describe('ponytail circles', () => {
 
   it('packs to the protocol block', () => {
     const g = ponytailCircles(spine, [], profileA, profileB);
-    const p = packPonytailParams(g.circles, 0.7);
+    const p = curveParams({
+      id: 'c1',
+      type: 'ponytail',
+      points: spine,
+      extend: true,
+      viewpoint: { position: [0, 0, 7], target: [0, 0, 0] },
+      crossSection: [],
+      profiles: [profileA, profileB],
+      circles: g.circles,
+      tightness: 0.7,
+    });
     expect(p.length).toBe(2 + 7 * 11);
     expect(p.slice(0, 2)).toEqual([0.7, 11]);
     expect(p.slice(2, 9).map((v) => Math.round(v * 1e9) / 1e9)).toEqual([0, 0.5, 0, 0, -1, 0, 0.3]);

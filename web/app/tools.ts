@@ -4,6 +4,7 @@
 import { curveSurface } from '../editor/curveSurface';
 import type { Editor, ToolName } from '../editor/editor';
 import type { Head } from '../head/head';
+import { DEFAULT_TIGHTNESS, defaultParams } from '../model/session';
 import type { Vec3 } from '../model/vec3';
 import type { StrokeSample } from '../tools/depthRule';
 import { DividingCurveTool } from '../tools/dividingCurveTool';
@@ -71,7 +72,7 @@ export function createTools(d: ToolDeps): ToolSet {
           crossSection: p.crossSection,
           profiles: p.profiles,
           circles: p.circles,
-          tightness: 0.6,
+          tightness: DEFAULT_TIGHTNESS,
         },
         what: `ponytail {id} (${p.circles.length} circles)`,
       }),
@@ -128,10 +129,7 @@ export function createTools(d: ToolDeps): ToolSet {
             type: 'dividing',
             points,
             normals,
-            sigma: 1,
-            h: 0.5,
-            alpha0: 0,
-            alpha1: 0,
+            ...defaultParams('dividing'),
             viewpoint: camera(),
           },
           what: `dividing curve {id} (${points.length - 1} segments)`,

@@ -15,6 +15,7 @@ import {
 } from '../model/session';
 import type { SurfaceMode } from '../model/supportingSurface';
 import type { Vec3 } from '../model/vec3';
+import { CURVE_PARAMS, type CurveParamSpec } from '../solver/protocol';
 
 /** A new curve as a tool makes it: everything but its id (the editor assigns it). */
 export type NewCurve = StyleCurve extends infer C
@@ -23,8 +24,8 @@ export type NewCurve = StyleCurve extends infer C
     : never
   : never;
 
-/** Scalar parameters the curve panel edits (dividing σ, h, α0, α1; ponytail tightness;
- *  stream / ponytail "extend"). */
+/** Scalar parameters the curve panel edits: those of protocol.ts CURVE_PARAMS for the curve's
+ *  kind (within their ranges), and "extend" (stream curves and ponytails). */
 export type CurveParamPatch = Readonly<Record<string, number | boolean>>;
 
 export type HintKind = 'cut' | 'concatenate' | 'insert';
@@ -124,13 +125,22 @@ export function applyCommand(s: SessionState, cmd: Command): CommandResult {
     case 'patchCurve': {
       const c = findCurve(s, cmd.id);
       if (!c) return { session: s, message: `No curve ${cmd.id}.` };
-      const keys = Object.keys(cmd.patch).filter(
-        (k) =>
-          k in c && typeof (c as unknown as Record<string, unknown>)[k] === typeof cmd.patch[k],
-      );
-      if (keys.length === 0) return { session: s, message: `Nothing to change on ${c.id}.` };
       const patch: Record<string, number | boolean> = {};
-      for (const k of keys) patch[k] = cmd.patch[k];
+      for (const [k, v] of Object.entries(cmd.patch)) {
+        const spec = (CURVE_PARAMS[c.type] as readonly CurveParamSpec[]).find((p) => p.name === k);
+        if (spec) {
+          if (typeof v !== 'number' || !Number.isFinite(v) || v < spec.min || v > spec.max)
+            return {
+              session: s,
+              message: `${spec.label} must be a number from ${spec.min} to ${spec.max}: nothing changed.`,
+            };
+          patch[k] = v;
+        } else if (k === 'extend' && c.type !== 'dividing' && typeof v === 'boolean') {
+          patch[k] = v;
+        }
+      }
+      const keys = Object.keys(patch);
+      if (keys.length === 0) return { session: s, message: `Nothing to change on ${c.id}.` };
       return {
         session: updateCurve(s, c.id, () => ({ ...c, ...patch }) as StyleCurve),
         message: `Changed ${keys.join(', ')} of ${c.id}.`,

@@ -13,8 +13,6 @@ export interface DividingSettings {
   alpha1: number; // radians, tilt at the last point
 }
 
-export const DEFAULT_DIVIDING: DividingSettings = { sigma: 1, h: 0.5, alpha0: 0, alpha1: 0 };
-
 const cross = (a: Vec3, b: Vec3): Vec3 => [
   a[1] * b[2] - a[2] * b[1],
   a[2] * b[0] - a[0] * b[2],
@@ -159,14 +157,4 @@ export function tiltFromHint(
   // With alpha = 0: t = z, b = x.
   const alpha = Math.atan2(-dot(D, f.z), dot(D, f.x));
   return { alpha, side, end: index <= (points.length - 1) / 2 ? 'alpha0' : 'alpha1', index };
-}
-
-/** protocol.ts dividing block: [sigma, h, alpha0, alpha1, then nx, ny, nz per point]. */
-export function packDividingParams(
-  normals: readonly Vec3[],
-  s: DividingSettings = DEFAULT_DIVIDING,
-): number[] {
-  const out = [s.sigma, s.h, s.alpha0, s.alpha1];
-  for (const n of normals) out.push(n[0], n[1], n[2]);
-  return out;
 }

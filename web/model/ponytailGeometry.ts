@@ -99,10 +99,3 @@ export function ponytailCircles(
   for (const c of circles) c.radius *= k;
   return { circles, scale: k };
 }
-
-/** protocol.ts ponytail block: [tightness, m, then cx, cy, cz, ax, ay, az, r per circle]. */
-export function packPonytailParams(circles: readonly PonytailCircle[], tightness = 0.6): number[] {
-  const out = [tightness, circles.length];
-  for (const c of circles) out.push(...c.centre, ...c.axis, c.radius);
-  return out;
-}

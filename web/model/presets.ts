@@ -11,6 +11,7 @@ import { resamplePolyline } from './resample';
 import {
   DEFAULT_TIGHTNESS,
   type DividingCurve,
+  defaultParams,
   type PonytailCurve,
   type SessionState,
   type StreamCurve,
@@ -119,8 +120,7 @@ function dividingFrom(
     type: 'dividing',
     points,
     normals: points.map(normal),
-    sigma: 1,
-    h: 0.5,
+    ...defaultParams('dividing'),
     alpha0: tilt[0],
     alpha1: tilt[1],
     viewpoint: ctx.viewpoint,

@@ -1,5 +1,10 @@
 // The session model: everything the user made, as plain immutable JSON-able data.
-import type { GrowthParams } from '../solver/protocol';
+import {
+  CURVE_PARAMS,
+  type CurveKindName,
+  type CurveParamValues,
+  type GrowthParams,
+} from '../solver/protocol';
 import type { DividingSettings } from './dividingFrames';
 import type { GridPreset } from './grid';
 import type { PonytailCircle } from './ponytailGeometry';
@@ -67,7 +72,15 @@ export interface SessionState {
   avoid?: ExtraConstraints | null;
 }
 
-export const DEFAULT_TIGHTNESS = 0.6;
+/** The scalar parameters of a new curve of kind `k`: the defaults of protocol.ts CURVE_PARAMS. */
+export function defaultParams<K extends CurveKindName>(k: K): CurveParamValues<K> {
+  const out: Record<string, number> = {};
+  for (const p of CURVE_PARAMS[k]) out[p.name] = p.default;
+  return out as CurveParamValues<K>;
+}
+
+/** A new ponytail's tightness: the default of protocol.ts CURVE_PARAMS. */
+export const DEFAULT_TIGHTNESS: number = CURVE_PARAMS.ponytail[0].default;
 
 export const DEFAULT_GROWTH: GrowthParams = {
   thetaStepDeg: 1.0,
