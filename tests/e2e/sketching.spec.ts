@@ -32,12 +32,13 @@ function watchConsole(page: Page): string[] {
   return errors;
 }
 
-/** Ready and idle (solver answered, no stroke, frame drawn). */
-async function settled(page: Page): Promise<void> {
-  await page.waitForFunction(() => {
+/** Ready and idle (solver answered, no stroke, frame drawn) with at least `minStrands` strands
+ *  (a bald head, preset=empty, shows none). */
+async function settled(page: Page, minStrands = 1): Promise<void> {
+  await page.waitForFunction((min) => {
     const el = document.querySelector('[data-testid="status"]') as HTMLElement | null;
-    return !!el && el.dataset.state === 'ready' && Number(el.dataset.strands) > 0;
-  });
+    return !!el && el.dataset.state === 'ready' && Number(el.dataset.strands) >= min;
+  }, minStrands);
   await page.evaluate(() => window.hairsketch.idle());
   await page.waitForFunction(() => {
     const el = document.querySelector('[data-testid="status"]') as HTMLElement | null;
@@ -112,7 +113,7 @@ test('a stream curve is edited by hint strokes: concatenate, insert, cut; a stro
 }) => {
   const errors = watchConsole(page);
   await page.goto(`${SCENE}&preset=empty`);
-  await settled(page);
+  await settled(page, 0);
   await page.getByRole('button', { name: 'Stream curve' }).click();
   const start = await page.evaluate(() => window.hairsketch.scalpToScreen(30, 20));
   if (!start) throw new Error('scalp hidden');
@@ -193,7 +194,7 @@ test('a dividing curve parts the hair: roots on its two sides grow to opposite s
 }) => {
   const errors = watchConsole(page);
   await page.goto(`${SCENE}&preset=empty`);
-  await settled(page);
+  await settled(page, 0);
   await page.getByRole('button', { name: 'Dividing curve' }).click();
   const path = await scalpPath(page, [
     [12, 40],
@@ -312,7 +313,7 @@ test('a ponytail from four strokes gathers strands through its first cross-secti
 }) => {
   const errors = watchConsole(page);
   await page.goto(`${SCENE}&preset=empty`);
-  await settled(page);
+  await settled(page, 0);
   await page.getByRole('button', { name: 'Ponytail' }).click();
   await expect(page.locator('#hint')).toContainText('spine');
   const start = await page.evaluate(() => window.hairsketch.scalpToScreen(60, 70));

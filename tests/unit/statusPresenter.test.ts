@@ -3,6 +3,7 @@
 // internals stay in the tooltip, a bald head reports no strands, and an over-cap error says what
 // to do.
 import { describe, expect, it } from 'vitest';
+import { visibleStrands } from '../../web/app/hairPresenter';
 import { StatusPresenter } from '../../web/app/statusPresenter';
 import type { SolveResult } from '../../web/solver/solverClient';
 import { StatusLine } from '../../web/ui/status';
@@ -113,5 +114,12 @@ describe('StatusPresenter', () => {
     expect(el.textContent).toContain('solver=fast');
     p.solverError('bad input', 'invalid_input', false);
     expect(el.textContent).not.toContain('solver=fast');
+  });
+
+  it('counts only strands that grew a segment (a bald head grows one-point strands)', () => {
+    const points = new Float32Array(3 * 7);
+    // three roots that grew nothing, one strand of 3 points, one of 1 point
+    expect(visibleStrands({ points, strandStart: new Uint32Array([0, 1, 2, 3, 6, 7]) })).toBe(1);
+    expect(visibleStrands({ points, strandStart: new Uint32Array([0]) })).toBe(0);
   });
 });

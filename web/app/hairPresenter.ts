@@ -62,7 +62,7 @@ export class HairPresenter {
         this.finalPending = false;
         this.onFinalShown?.();
       });
-      const n = Math.max(0, r.strands.strandStart.length - 1);
+      const n = visibleStrands(r.strands);
       this.status.counts(n, this.status.curves);
       this.status.bumpRevision();
       this.unstamped = { revision: this.status.revision, final, strands: n };
@@ -81,4 +81,13 @@ export class HairPresenter {
     if (this.log.length > 1000) this.log.shift();
     this.unstamped = null;
   }
+}
+
+/** Strands with at least one segment (a root in a zero field grows nothing: a bald head shows
+ *  no strands). */
+export function visibleStrands(s: StrandArrays): number {
+  let n = 0;
+  const start = s.strandStart;
+  for (let i = 0; i + 1 < start.length; i++) if (start[i + 1] - start[i] >= 2) n++;
+  return n;
 }

@@ -1,7 +1,8 @@
 // The head's look: skin shading (MeshStandardMaterial) with per-vertex colours, where the scalp
-// (HeadModel.scalp) is tinted so the hair-bearing region is visibly marked, eyes are white with
+// (HeadMesh.scalp) is tinted so the hair-bearing region is visibly marked, eyes are white with
 // an iris, and lips are reddened.
 import * as THREE from 'three';
+import type { HeadMesh } from '../head/head';
 import { EYE_R, EYE_X, EYE_Y, EYE_Z, HeadPart } from '../head/headSdf';
 
 export interface HeadColors {
@@ -22,15 +23,12 @@ export const DEFAULT_HEAD_COLORS: HeadColors = {
   pupil: '#141414',
 };
 
-/** What the geometry needs from a head: HeadModel satisfies it; a user-loaded head may leave
- *  out normals (computed) and parts (all skin). */
-export interface HeadMeshArrays {
-  positions: Float32Array; // positions[3 * vertex + axis]
-  indices: Uint32Array; // indices[3 * triangle + corner]
-  scalp: Uint8Array; // scalp[triangle] = 1 on the scalp
-  normals?: Float32Array; // normals[3 * vertex + axis]
-  parts?: Uint8Array; // parts[vertex]: HeadPart value
-}
+/** What the geometry needs from a head (web/head/head.ts HeadMesh; parts are optional: a
+ *  user-loaded head is all skin). */
+export type HeadMeshArrays = Pick<
+  HeadMesh,
+  'positions' | 'indices' | 'scalp' | 'normals' | 'parts'
+>;
 
 /** Indexed geometry with `position`, `normal` and `color` (linear RGB). A vertex's colour blends
  *  skin and scalp by the fraction of its triangles on the scalp. */
