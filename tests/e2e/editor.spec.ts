@@ -33,9 +33,11 @@ test('six curves drawn in a row at 50K, each starting a few pixels from the last
   if (!first) throw new Error('scalp hidden');
   let start = first;
   for (let k = 0; k < 6; k++) {
-    // along the scalp and down past it, as a hand draws hair; the next one starts 5 px beside
+    // along the scalp and down past it, as a hand draws hair; alternately running alongside the
+    // last curve and leaving it
+    const dx = k % 2 === 0 ? 4 : 2;
     const pts: { x: number; y: number }[] = [];
-    for (let i = 0; i <= 30; i++) pts.push({ x: start.x + 4 * i, y: start.y + 8 * i });
+    for (let i = 0; i <= 30; i++) pts.push({ x: start.x + dx * i, y: start.y + 8 * i });
     await dragPath(page, pts);
     await page.waitForFunction(
       (n) => (window.hairsketch.session() as Session).curves.length === n,
@@ -43,13 +45,22 @@ test('six curves drawn in a row at 50K, each starting a few pixels from the last
     );
     const s = await session(page);
     expect(s.selected).toBe(s.curves[k].id); // the new curve is selected: the next stroke still makes one
-    // the next stroke starts within a few pixels of this curve's first point on screen
-    const root = await page.evaluate(
+    // orbit a little (right-drag, as the Stream tool allows), then start the next stroke on
+    // this curve's image, a pixel beside its second point: its supporting surface is under the
+    // pointer there
+    const box = await page.getByTestId('viewport').boundingBox();
+    if (!box) throw new Error('no viewport');
+    const o = { x: box.x + 60, y: box.y + box.height - 60 };
+    await page.mouse.move(o.x, o.y);
+    await page.mouse.down({ button: 'right' });
+    for (let i = 1; i <= 8; i++) await page.mouse.move(o.x + (k % 2 === 0 ? 10 : -10) * i, o.y);
+    await page.mouse.up({ button: 'right' });
+    const p1 = await page.evaluate(
       (p) => window.hairsketch.worldToScreen(p),
-      s.curves[k].points[0],
+      s.curves[k].points[1],
     );
-    if (!root) throw new Error('the root of the new curve is hidden');
-    start = { x: root.x + 5, y: root.y + 1 };
+    if (!p1) throw new Error('the new curve is hidden');
+    start = { x: p1.x + 1, y: p1.y };
   }
   const final = await settled(page);
   expect(final.curves).toBe(6);

@@ -11,7 +11,7 @@ import { DEFAULT_GROWTH, emptySession } from '../model/session';
 import { PONYTAIL_STAGE_HINT } from '../tools/ponytailTool';
 import { buildCurvePanel } from '../ui/curvePanel';
 import { buildDisplayToggles } from '../ui/displayToggles';
-import { buildHelpOverlay } from '../ui/helpOverlay';
+import { buildHelpOverlay, type HelpOverlay } from '../ui/helpOverlay';
 import { StatusLine } from '../ui/status';
 import { buildToolbar } from '../ui/toolbar';
 import { setCameraButtons } from '../viewer/cameraButtons';
@@ -19,10 +19,11 @@ import { HairView } from '../viewer/hairView';
 import { createHeadMesh } from '../viewer/headMaterial';
 import { Viewer } from '../viewer/viewer';
 import { buildActions } from './actions';
+import { editActions } from './editActions';
 import { HairPresenter } from './hairPresenter';
 import { bindInput } from './input';
 import { OverlayPresenter } from './overlayPresenter';
-import { downloadSession, LinkWriter, openSessionFile, openSessionLink } from './sessionIO';
+import { LinkWriter, openSessionFile, openSessionLink } from './sessionIO';
 import { SolverBridge } from './solverBridge';
 import { StatusPresenter } from './statusPresenter';
 import { installTestApi } from './testApi';
@@ -83,84 +84,24 @@ export function startApp(): void {
   let tool = tools.byName[editor.tool];
   viewer.onFrame(() => tool.update());
 
-  let avoiding = false;
-  const toolbarRoot = byId('toolbar');
-  let help: ReturnType<typeof buildHelpOverlay> | null = null;
+  let help: HelpOverlay | null = null;
+  const edits = editActions({
+    editor,
+    viewer,
+    bridge,
+    status,
+    tool: () => tool,
+    openDialog: () => toolbar.openFileDialog(),
+    links,
+    refresh: () => toolbar.refresh(),
+  });
   const actions = buildActions({
-    tool: () => editor.tool,
-    setTool: (name) => editor.setTool(name),
-    canUndo: () => editor.canUndo,
-    canRedo: () => editor.canRedo,
-    undo: () => editor.undo(),
-    redo: () => editor.redo(),
-    hasSelection: () => editor.selectedId !== null,
-    selectedKind: () => editor.selectedCurve?.type ?? null,
-    surfaceMode: () => {
-      const c = editor.selectedCurve;
-      return c?.type === 'stream' ? (c.surfaceMode ?? 'ruled') : null;
-    },
-    deleteSelected: () => {
-      if (editor.selectedId) editor.run({ kind: 'deleteCurve', id: editor.selectedId });
-    },
-    setViewpoint: () => {
-      if (editor.selectedId)
-        editor.run({
-          kind: 'setViewpoint',
-          id: editor.selectedId,
-          viewpoint: viewer.cameraState(),
-        });
-    },
-    toggleSurfaceMode: () => {
-      const c = editor.selectedCurve;
-      if (c?.type === 'stream')
-        editor.run({
-          kind: 'setSurfaceMode',
-          id: c.id,
-          mode: (c.surfaceMode ?? 'ruled') === 'ruled' ? 'strip' : 'ruled',
-        });
-    },
-    avoidScalp: () => {
-      if (avoiding) return;
-      avoiding = true;
-      toolbar.refresh();
-      status.note('Avoid scalp: solving the field…');
-      bridge
-        .avoidScalp(editor.session)
-        .then((r) =>
-          editor.run({
-            kind: 'setAvoid',
-            avoid: { index: Array.from(r.index), target: Array.from(r.target) },
-          }),
-        )
-        .catch((e) => status.note(`Avoid scalp failed: ${e instanceof Error ? e.message : e}`))
-        .finally(() => {
-          avoiding = false;
-          toolbar.refresh();
-        });
-    },
-    avoiding: () => avoiding,
-    share: () => void links.share().then((m) => status.note(m)),
-    save: () => {
-      downloadSession(editor.session, viewer.cameraState());
-      status.note(`Saved the session (${editor.session.curves.length} curves).`);
-    },
-    open: () => toolbar.openFileDialog(),
-    resetView: () => viewer.resetView(),
-    orbitSpeed: () => viewer.orbitSpeed,
-    setOrbitSpeed: (f) => {
-      viewer.setOrbitSpeed(f);
-      status.note(`Orbit speed ×${f}.`);
-    },
-    cancel: () => {
-      if (help?.open) return help.close();
-      tool.onCancel();
-      editor.select(null);
-    },
+    ...edits,
     toggleHelp: () => help?.toggle(),
     display: (k) => overlays.display[k],
     setDisplay: (k, on) => overlays.setDisplay(k, on),
   });
-  const toolbar = buildToolbar(toolbarRoot, actions, {
+  const toolbar = buildToolbar(byId('toolbar'), actions, {
     hairColor: (css) => editor.run({ kind: 'setHairColor', color: css }),
     openFile: (f) => void openSessionFile(editor, f).then((m) => m && status.note(m)),
   });
@@ -247,7 +188,7 @@ export function startApp(): void {
     overlays,
     ponytail: tools.ponytail,
     busy: () =>
-      avoiding ||
+      edits.avoiding() ||
       bridge.pending ||
       hair.awaitingFrame ||
       (tool.state !== 'idle' && tool.state !== 'pressed'),

@@ -1,0 +1,99 @@
+// What the toolbar's and keyboard's actions do to the editor, the camera and the session's
+// files: the ActionTarget of actions.ts, minus the view toggles the composition root adds.
+import type { Editor } from '../editor/editor';
+import type { Tool } from '../tools/tool';
+import type { Viewer } from '../viewer/viewer';
+import type { ActionTarget } from './actions';
+import { downloadSession, type LinkWriter } from './sessionIO';
+import type { SolverBridge } from './solverBridge';
+import type { StatusPresenter } from './statusPresenter';
+
+export interface EditActionDeps {
+  editor: Editor;
+  viewer: Viewer;
+  bridge: SolverBridge;
+  status: StatusPresenter;
+  links: LinkWriter;
+  tool(): Tool;
+  openDialog(): void;
+  /** The toolbar reflects a state change (e.g. "Avoid scalp" busy). */
+  refresh(): void;
+}
+
+export type EditActions = Omit<ActionTarget, 'toggleHelp' | 'display' | 'setDisplay'>;
+
+export function editActions(d: EditActionDeps): EditActions {
+  const { editor, viewer, status } = d;
+  let avoiding = false;
+  return {
+    tool: () => editor.tool,
+    setTool: (name) => editor.setTool(name),
+    canUndo: () => editor.canUndo,
+    canRedo: () => editor.canRedo,
+    undo: () => editor.undo(),
+    redo: () => editor.redo(),
+    hasSelection: () => editor.selectedId !== null,
+    selectedKind: () => editor.selectedCurve?.type ?? null,
+    surfaceMode: () => {
+      const c = editor.selectedCurve;
+      return c?.type === 'stream' ? (c.surfaceMode ?? 'ruled') : null;
+    },
+    deleteSelected: () => {
+      if (editor.selectedId) editor.run({ kind: 'deleteCurve', id: editor.selectedId });
+    },
+    setViewpoint: () => {
+      if (editor.selectedId)
+        editor.run({
+          kind: 'setViewpoint',
+          id: editor.selectedId,
+          viewpoint: viewer.cameraState(),
+        });
+    },
+    toggleSurfaceMode: () => {
+      const c = editor.selectedCurve;
+      if (c?.type === 'stream')
+        editor.run({
+          kind: 'setSurfaceMode',
+          id: c.id,
+          mode: (c.surfaceMode ?? 'ruled') === 'ruled' ? 'strip' : 'ruled',
+        });
+    },
+    /** S4.7: constraints from the converged field of the current curves, an undoable edit. */
+    avoidScalp: () => {
+      if (avoiding) return;
+      avoiding = true;
+      d.refresh();
+      status.note('Avoid scalp: solving the field…');
+      d.bridge
+        .avoidScalp(editor.session)
+        .then((r) =>
+          editor.run({
+            kind: 'setAvoid',
+            avoid: { index: Array.from(r.index), target: Array.from(r.target) },
+          }),
+        )
+        .catch((e) => status.note(`Avoid scalp failed: ${e instanceof Error ? e.message : e}`))
+        .finally(() => {
+          avoiding = false;
+          d.refresh();
+        });
+    },
+    avoiding: () => avoiding,
+    share: () => void d.links.share().then((m) => status.note(m)),
+    save: () => {
+      downloadSession(editor.session, viewer.cameraState());
+      status.note(`Saved the session (${editor.session.curves.length} curves).`);
+    },
+    open: () => d.openDialog(),
+    resetView: () => viewer.resetView(),
+    orbitSpeed: () => viewer.orbitSpeed,
+    setOrbitSpeed: (f) => {
+      viewer.setOrbitSpeed(f);
+      status.note(`Orbit speed ×${f}.`);
+    },
+    cancel: () => {
+      d.tool().onCancel();
+      editor.select(null);
+    },
+  };
+}
