@@ -6,11 +6,7 @@ import { buildSupportingSurface } from '../../web/model/supportingSurface';
 import type { Vec3 } from '../../web/model/vec3';
 import type { GridSpec } from '../../web/solver/protocol';
 import { ConstraintColour } from '../../web/solver/protocol';
-import {
-  DEFAULT_DISPLAY,
-  DISPLAY_TOGGLES,
-  displayKeyForShortcut,
-} from '../../web/ui/displayToggles';
+import { DEFAULT_DISPLAY, DISPLAY_TOGGLES } from '../../web/ui/displayToggles';
 import { gridBoxEdges } from '../../web/viewer/boundingVolume';
 import {
   CONSTRAINT_RGB,
@@ -192,15 +188,6 @@ describe('display toggles', () => {
       'Field',
       'Box',
     ]);
-    expect(['1', '2', '3', '4', '5'].map(displayKeyForShortcut)).toEqual([
-      'curves',
-      'constraints',
-      'surface',
-      'field',
-      'box',
-    ]);
-    for (const k of ['0', '6', '9', 'a', '11', ' ', 'F1'])
-      expect(displayKeyForShortcut(k)).toBeNull();
   });
 });
 

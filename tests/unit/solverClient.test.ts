@@ -249,7 +249,7 @@ describe('SolverClient', () => {
     expect(kinds.at(-1)).toBe('internal');
   });
 
-  it('sends the light strand cap with each request (6000 unless the caller names one)', () => {
+  it('sends the light strand cap with each request (none of its own unless the caller names one)', () => {
     const { client, workers } = setup();
     const w = workers[0];
     w.reply({ type: 'ready', gridPoints: 8, roots: 0 });
@@ -257,7 +257,7 @@ describe('SolverClient', () => {
     client.request(curves(2), DEFAULT_GROWTH, 'full', 900);
     client.request(curves(3), DEFAULT_GROWTH, 'preview', 450);
     expect(w.solves().map((m) => [m.mode, m.lightMaxStrands])).toEqual([
-      ['full', 6000],
+      ['full', 0],
       ['full', 900],
       ['preview', 450],
     ]);

@@ -42,9 +42,6 @@ interface Request {
   lightMaxStrands: number;
 }
 
-/** Strand cap of light results when the caller names none. */
-export const DEFAULT_LIGHT_MAX_STRANDS = 6000;
-
 const CACHE_SIZE = 4;
 const MAX_RESTARTS = 3;
 
@@ -94,12 +91,13 @@ export class SolverClient {
   }
 
   /** Solves `curves` and grows `growth`; previews and a full solve's first look are grown with
-   *  at most `lightMaxStrands` strands (0: growth.maxStrands alone). */
+   *  at most `lightMaxStrands` strands (0: growth.maxStrands alone). The app's solver bridge
+   *  (app/solverBridge.ts) decides the cap. */
   request(
     curves: CurveSet,
     growth: GrowthParams,
     mode: SolveMode = 'full',
-    lightMaxStrands = DEFAULT_LIGHT_MAX_STRANDS,
+    lightMaxStrands = 0,
   ): void {
     const key = contentKey(
       curves.points,

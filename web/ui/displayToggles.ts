@@ -28,12 +28,6 @@ export const DISPLAY_TOGGLES: ReadonlyArray<{ key: DisplayKey; label: string; ti
   { key: 'box', label: 'Box', title: 'Show the bounding volume' },
 ];
 
-/** The toggle a shortcut key switches ("1" -> curves ... "5" -> box), or null. */
-export function displayKeyForShortcut(key: string): DisplayKey | null {
-  const n = /^[1-9]$/.test(key) ? Number(key) : 0;
-  return DISPLAY_TOGGLES[n - 1]?.key ?? null;
-}
-
 export interface DisplayToggles {
   readonly element: HTMLElement;
   /** Reflects a state in the checkboxes (no change event). */
