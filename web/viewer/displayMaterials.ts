@@ -6,7 +6,8 @@ import * as THREE from 'three';
 
 const cache = new Map<string, THREE.Material>();
 
-function shared<M extends THREE.Material>(key: string, make: () => M): M {
+/** The material made once under `key` (created on first use, never disposed). */
+export function shared<M extends THREE.Material>(key: string, make: () => M): M {
   let m = cache.get(key);
   if (!m) {
     m = make();

@@ -10,6 +10,7 @@
 // Materials are shared and never disposed: a disposed material releases its shader program, and
 // compiling it again stalls on the GPU (seconds behind a software rasteriser).
 import * as THREE from 'three';
+import { shared } from './displayMaterials';
 
 /** What kind of overlay line a colour is for. */
 export type OverlayKind =
@@ -105,16 +106,6 @@ function asOverlay<M extends THREE.Material>(
   };
   m.customProgramCacheKey = () => 'overlay-depth-bias';
   return m;
-}
-
-const cache = new Map<string, THREE.Material>();
-function shared<M extends THREE.Material>(key: string, make: () => M): M {
-  let m = cache.get(key);
-  if (!m) {
-    m = make();
-    cache.set(key, m);
-  }
-  return m as M;
 }
 
 /** A line material of one colour (sRGB hex) for `pass` (`hiddenOpacity`: the hidden pass's). */
