@@ -97,7 +97,7 @@ describe('actions', () => {
     run(key('?', { shift: true }));
     run(key('Escape'));
     expect(calls).toEqual(['tool:stream', 'undo', 'redo', 'redo', 'help', 'cancel']);
-    ['1', '2', '3', '4', '5'].forEach((k) => run(key(k)));
+    for (const k of ['1', '2', '3', '4', '5']) run(key(k));
     expect(display).toEqual({
       curves: false,
       constraints: true,

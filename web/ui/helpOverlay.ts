@@ -33,6 +33,7 @@ export function buildHelpOverlay(parent: HTMLElement, actions: readonly Action[]
   panel.setAttribute('role', 'dialog');
   panel.setAttribute('aria-label', 'Keyboard shortcuts');
   const h = document.createElement('h2');
+  h.className = 'help-title';
   h.textContent = 'Keyboard shortcuts';
   const close = document.createElement('button');
   close.type = 'button';
