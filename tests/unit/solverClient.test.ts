@@ -162,6 +162,21 @@ describe('SolverClient', () => {
     expect(client.pending).toBe(false);
   });
 
+  it('a preview that errors does not hold up the previews after it', () => {
+    const { client, workers } = setup();
+    const w = workers[0];
+    w.reply({ type: 'ready', gridPoints: 8, roots: 0 });
+    client.request(curves(1), DEFAULT_GROWTH, 'preview');
+    client.request(curves(2), DEFAULT_GROWTH, 'preview');
+    expect(w.solves()).toHaveLength(1);
+    w.reply({ type: 'error', id: w.solves()[0].id, message: 'bad curve', kind: 'invalid_input' });
+    // the waiting preview goes out, and so does the next one once that is answered
+    expect(w.solves()).toHaveLength(2);
+    w.reply(result(w.solves()[1].id, false));
+    client.request(curves(3), DEFAULT_GROWTH, 'preview');
+    expect(w.solves()).toHaveLength(3);
+  });
+
   it('never shows an answer older than the newest full request', () => {
     const { client, workers, shown } = setup();
     const w = workers[0];
