@@ -1,9 +1,29 @@
 // Dividing curves on the TS side (SPEC S4.5): normals from the mesh, frames, hint tilt, packing.
 
 import { describe, expect, it } from 'vitest';
+import { vertexNormals } from '../../web/head/buildHead';
+import { Head } from '../../web/head/head';
 import { curveParams } from '../../web/model/curveSet';
-import { dividingFrames, scalpNormalsAt, tiltFromHint } from '../../web/model/dividingFrames';
+import { dividingFrames, tiltFromHint } from '../../web/model/dividingFrames';
 import type { Vec3 } from '../../web/model/vec3';
+
+/** A Head over a small mesh (the app's one definition of scalp normals). */
+function headOf(m: { positions: Float32Array; indices: Uint32Array }): Head {
+  return new Head({
+    ...m,
+    normals: vertexNormals(m.positions, m.indices),
+    scalp: new Uint8Array(m.indices.length / 3).fill(1),
+    center: [0, 0, 0],
+    bounds: { min: [0, 0, 0], max: [10, 10, 10] },
+  });
+}
+const scalpNormalsAt = (
+  pts: readonly Vec3[],
+  m: { positions: Float32Array; indices: Uint32Array },
+) => {
+  const h = headOf(m);
+  return pts.map((p) => h.normalAt(p));
+};
 
 // Flat "scalp": the square y = 2, x, z in [0, 10], wound counter-clockwise seen from +y.
 const flat = {
@@ -13,7 +33,7 @@ const flat = {
 const curve: Vec3[] = Array.from({ length: 8 }, (_, i) => [5, 2, 2 + i]);
 
 describe('dividing frames', () => {
-  it('takes outward normals from the mesh', () => {
+  it('takes outward normals from the mesh (Head.normalAt)', () => {
     for (const n of scalpNormalsAt(curve, flat)) expect(n).toEqual([0, 1, 0]);
     // A sphere-ish check: a point above a tilted triangle gets the triangle's normal.
     const tilted = {
