@@ -89,7 +89,8 @@ async function stroke(page: Page, i: number): Promise<StrokeResult> {
     ([from]) => ({
       log: window.hairsketch.hairLog().slice(from),
       up: window.hairsketch.lastPointerUp(),
-      text: document.querySelector('[data-testid="status"]')?.textContent ?? '',
+      // the solver method is in the status line's details tooltip
+      text: (document.querySelector('[data-testid="status"]') as HTMLElement | null)?.title ?? '',
     }),
     [before],
   );

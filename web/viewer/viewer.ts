@@ -463,6 +463,63 @@ export class Viewer {
     return [f.x, f.y, f.z];
   }
 
+  /** The current view as a PNG at `scale` × the canvas's resolution, with every strand drawn
+   *  (not the level-of-detail sample), on a transparent background when asked. Rendered into a
+   *  half-float target and encoded to sRGB here (a render target is drawn in linear light). */
+  async captureImage(opts: { scale?: number; transparent?: boolean } = {}): Promise<Blob> {
+    const scale = opts.scale ?? 2;
+    const ratio = basePixelRatio() * scale;
+    const w = Math.max(1, Math.round(this.canvas.clientWidth * ratio));
+    const h = Math.max(1, Math.round(this.canvas.clientHeight * ratio));
+    const r = this.renderer;
+    const half = r.extensions.has('EXT_color_buffer_float');
+    const rt = new THREE.WebGLRenderTarget(w, h, {
+      type: half ? THREE.HalfFloatType : THREE.UnsignedByteType,
+      samples: this.software ? 0 : 4,
+    });
+    const clear = new THREE.Color();
+    r.getClearColor(clear);
+    const clearAlpha = r.getClearAlpha();
+    const { all } = this.hairCounts();
+    const pixels = half ? new Uint16Array(4 * w * h) : new Uint8Array(4 * w * h);
+    try {
+      if (this.hair && all > 0) this.hair.geometry.setDrawRange(0, all);
+      if (opts.transparent) r.setClearColor(clear, 0);
+      r.setRenderTarget(rt);
+      r.render(this.scene, this.camera);
+      r.readRenderTargetPixels(rt, 0, 0, w, h, pixels);
+    } finally {
+      r.setRenderTarget(null);
+      r.setClearColor(clear, clearAlpha);
+      rt.dispose();
+      this.requestRender();
+    }
+    const out = new Uint8ClampedArray(4 * w * h);
+    const channel = half
+      ? (k: number) => THREE.DataUtils.fromHalfFloat((pixels as Uint16Array)[k])
+      : (k: number) => (pixels as Uint8Array)[k] / 255;
+    for (let y = 0; y < h; y++) {
+      const src = (h - 1 - y) * w * 4; // rows come bottom-up
+      const dst = y * w * 4;
+      for (let x = 0; x < 4 * w; x += 4) {
+        for (let c = 0; c < 3; c++) out[dst + x + c] = 255 * linearToSrgb(channel(src + x + c));
+        out[dst + x + 3] = 255 * Math.min(1, Math.max(0, channel(src + x + 3)));
+      }
+    }
+    const canvas = document.createElement('canvas');
+    canvas.width = w;
+    canvas.height = h;
+    const ctx = canvas.getContext('2d');
+    if (!ctx) throw new Error('this browser cannot draw images (no 2D canvas)');
+    ctx.putImageData(new ImageData(out, w, h), 0, 0);
+    return new Promise((resolve, reject) =>
+      canvas.toBlob(
+        (b) => (b ? resolve(b) : reject(new Error('PNG encoding failed'))),
+        'image/png',
+      ),
+    );
+  }
+
   eye(): Vec3 {
     const p = this.camera.position;
     return [p.x, p.y, p.z];
@@ -477,6 +534,11 @@ export class Viewer {
     this.applyOrbitSpeed(); // degrees per px follow the view's size
     this.requestRender();
   }
+}
+
+function linearToSrgb(v: number): number {
+  const c = Math.min(1, Math.max(0, v));
+  return c <= 0.0031308 ? 12.92 * c : 1.055 * c ** (1 / 2.4) - 0.055;
 }
 
 function basePixelRatio(): number {
