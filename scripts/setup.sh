@@ -22,6 +22,10 @@ fi
 if [ "$mode" = test ]; then
   want clang-format clang-format
   want_file "${CHROMIUM_PATH:-/usr/bin/chromium}" chromium
+  # Debian's Python with venv (ensurepip), for Pixar's USD reader (usd-core) in build/usd-venv
+  if ! /usr/bin/python3 -c 'import ensurepip, venv' >/dev/null 2>&1; then
+    need_cmd+=("python3 -m venv"); pkgs+=(python3-venv)
+  fi
 fi
 
 if [ ${#pkgs[@]} -gt 0 ]; then
@@ -54,4 +58,21 @@ if [ ! -f node_modules/.package-lock.json ] || [ package-lock.json -nt node_modu
   # packages (e.g. @biomejs/cli-win32-x64), which makes `npm ci` refuse the lock file.
   echo "setup: installing npm packages (npm install, from package-lock.json)"
   npm install --no-audit --no-fund
+fi
+
+if [ "$mode" = test ]; then
+  # Pixar's USD reader checks the .usda export (tests/usd/check_usd.py, run by
+  # tests/unit/usdExport.test.ts): usd-core from PyPI in a virtual environment of its own.
+  venv=build/usd-venv
+  if ! "$venv/bin/python" -c 'import pxr.Usd' >/dev/null 2>&1; then
+    echo "setup: creating $venv with usd-core (pip install usd-core, from PyPI)"
+    rm -rf "$venv"
+    mkdir -p build
+    /usr/bin/python3 -m venv "$venv"
+    if ! "$venv/bin/pip" install --disable-pip-version-check -q usd-core; then
+      echo "setup: could not install usd-core into $venv (pip install usd-core)." >&2
+      exit 1
+    fi
+    "$venv/bin/python" -c 'import pxr.Usd'
+  fi
 fi
