@@ -1,0 +1,249 @@
+// glTF 2.0 binary (`.glb`): mesh "hair" as LINES (mode 1) with uint32 indices, POSITION (with
+// min/max), COLOR_0 (float32 VEC3, linear) and the application attribute _WIDTH (float32, the
+// diameter); mesh "head" as TRIANGLES (mode 4) with POSITION, NORMAL when given, and indices.
+// Both hang under a root node "hairsketch" scaled by METERS_PER_UNIT (glTF units are metres; the
+// app's unit is 10 cm), so positions and widths stay in app units inside the meshes. The session
+// is in asset.extras.hairsketch.session. All lengths are computed first; the BIN chunk is then
+// written in pieces.
+import { BinarySink, type Progress } from './chunkSink';
+import type { ExportStrands } from './strandsForExport';
+import { type ExportInput, METERS_PER_UNIT } from './types';
+
+const GLB_MAGIC = 0x46546c67; // "glTF"
+const CHUNK_JSON = 0x4e4f534a; // "JSON"
+const CHUNK_BIN = 0x004e4942; // "BIN\0"
+const FLOAT = 5126;
+const UNSIGNED_INT = 5125;
+const ARRAY_BUFFER = 34962;
+const ELEMENT_ARRAY_BUFFER = 34963;
+const LINES = 1;
+const TRIANGLES = 4;
+const BATCH = 4096;
+const ROWS = 16384;
+
+interface View {
+  buffer: 0;
+  byteOffset: number;
+  byteLength: number;
+  target: number;
+}
+
+interface Accessor {
+  bufferView: number;
+  componentType: number;
+  count: number;
+  type: 'SCALAR' | 'VEC3';
+  min?: number[];
+  max?: number[];
+}
+
+function bounds(positions: Float32Array): { min: number[]; max: number[] } {
+  const min = [positions[0], positions[1], positions[2]];
+  const max = [...min];
+  for (let i = 3; i < positions.length; i += 3)
+    for (let c = 0; c < 3; c++) {
+      const v = positions[i + c];
+      if (v < min[c]) min[c] = v;
+      if (v > max[c]) max[c] = v;
+    }
+  return { min, max };
+}
+
+export function* writeGlb(
+  strands: ExportStrands,
+  input: ExportInput,
+  progress: Progress,
+): Generator<Uint8Array> {
+  const { points, strandStart, widths, colors } = strands;
+  const n = strandStart.length - 1;
+  const p = widths.length;
+  const head = input.head && input.head.indices.length >= 3 ? input.head : null;
+  const headVerts = head ? head.positions.length / 3 : 0;
+  const headTris = head ? Math.floor(head.indices.length / 3) : 0;
+
+  const views: View[] = [];
+  const accessors: Accessor[] = [];
+  const meshes: object[] = [];
+  const nodes: { name: string; mesh?: number; children?: number[]; scale?: number[] }[] = [
+    { name: 'hairsketch', scale: [METERS_PER_UNIT, METERS_PER_UNIT, METERS_PER_UNIT] },
+  ];
+  let offset = 0;
+  const view = (byteLength: number, target: number): number => {
+    views.push({ buffer: 0, byteOffset: offset, byteLength, target });
+    offset += byteLength; // every element is 4 bytes: views stay 4-byte aligned
+    return views.length - 1;
+  };
+  const accessor = (a: Accessor): number => {
+    accessors.push(a);
+    return accessors.length - 1;
+  };
+
+  if (n > 0) {
+    const position = accessor({
+      bufferView: view(12 * p, ARRAY_BUFFER),
+      componentType: FLOAT,
+      count: p,
+      type: 'VEC3',
+      min: [...strands.min],
+      max: [...strands.max],
+    });
+    const color = accessor({
+      bufferView: view(12 * p, ARRAY_BUFFER),
+      componentType: FLOAT,
+      count: p,
+      type: 'VEC3',
+    });
+    const width = accessor({
+      bufferView: view(4 * p, ARRAY_BUFFER),
+      componentType: FLOAT,
+      count: p,
+      type: 'SCALAR',
+    });
+    const indices = accessor({
+      bufferView: view(8 * (p - n), ELEMENT_ARRAY_BUFFER),
+      componentType: UNSIGNED_INT,
+      count: 2 * (p - n),
+      type: 'SCALAR',
+    });
+    meshes.push({
+      name: 'hair',
+      primitives: [
+        {
+          mode: LINES,
+          indices,
+          attributes: { POSITION: position, COLOR_0: color, _WIDTH: width },
+        },
+      ],
+    });
+    nodes.push({ name: 'hair', mesh: meshes.length - 1 });
+  }
+  if (head) {
+    const position = accessor({
+      bufferView: view(12 * headVerts, ARRAY_BUFFER),
+      componentType: FLOAT,
+      count: headVerts,
+      type: 'VEC3',
+      ...bounds(head.positions),
+    });
+    const attributes: Record<string, number> = { POSITION: position };
+    if (head.normals)
+      attributes.NORMAL = accessor({
+        bufferView: view(12 * headVerts, ARRAY_BUFFER),
+        componentType: FLOAT,
+        count: headVerts,
+        type: 'VEC3',
+      });
+    const indices = accessor({
+      bufferView: view(12 * headTris, ELEMENT_ARRAY_BUFFER),
+      componentType: UNSIGNED_INT,
+      count: 3 * headTris,
+      type: 'SCALAR',
+    });
+    meshes.push({ name: 'head', primitives: [{ mode: TRIANGLES, indices, attributes }] });
+    nodes.push({ name: 'head', mesh: meshes.length - 1 });
+  }
+  if (nodes.length > 1) nodes[0].children = nodes.slice(1).map((_, i) => i + 1);
+  const binLength = offset;
+
+  const gltf: Record<string, unknown> = {
+    asset: {
+      version: '2.0',
+      generator: 'hairsketch',
+      extras: { hairsketch: { session: input.session } },
+    },
+    scene: 0,
+    scenes: [{ name: 'hairsketch', nodes: [0] }],
+    nodes,
+  };
+  if (meshes.length > 0) {
+    gltf.meshes = meshes;
+    gltf.accessors = accessors;
+    gltf.bufferViews = views;
+    gltf.buffers = [{ byteLength: binLength }];
+  }
+  const jsonBytes = new TextEncoder().encode(JSON.stringify(gltf));
+  const jsonPadded = (jsonBytes.length + 3) & ~3;
+  const binPadded = (binLength + 3) & ~3;
+  const total = 12 + 8 + jsonPadded + (binLength > 0 ? 8 + binPadded : 0);
+
+  const out = new BinarySink();
+  const report = () => progress.at(out.bytes / total);
+  out.u32(GLB_MAGIC);
+  out.u32(2);
+  out.u32(total);
+  out.u32(jsonPadded);
+  out.u32(CHUNK_JSON);
+  out.raw(jsonBytes);
+  out.raw(new Uint8Array(jsonPadded - jsonBytes.length).fill(0x20));
+  report();
+  yield* out.drain();
+  if (binLength === 0) {
+    yield* out.end();
+    progress.at(1);
+    return;
+  }
+  out.u32(binPadded);
+  out.u32(CHUNK_BIN);
+
+  if (n > 0) {
+    for (let s0 = 0; s0 < n; s0 += BATCH) {
+      const s1 = Math.min(n, s0 + BATCH);
+      out.f32s(points, 3 * strandStart[s0], 3 * strandStart[s1]);
+      report();
+      yield* out.drain();
+    }
+    for (let s0 = 0; s0 < n; s0 += BATCH) {
+      const s1 = Math.min(n, s0 + BATCH);
+      for (let s = s0; s < s1; s++) {
+        const r = colors[3 * s];
+        const g = colors[3 * s + 1];
+        const b = colors[3 * s + 2];
+        for (let q = strandStart[s]; q < strandStart[s + 1]; q++) {
+          out.f32(r);
+          out.f32(g);
+          out.f32(b);
+        }
+      }
+      report();
+      yield* out.drain();
+    }
+    for (let s0 = 0; s0 < n; s0 += BATCH) {
+      const s1 = Math.min(n, s0 + BATCH);
+      out.f32s(widths, strandStart[s0], strandStart[s1]);
+      report();
+      yield* out.drain();
+    }
+    for (let s0 = 0; s0 < n; s0 += BATCH) {
+      const s1 = Math.min(n, s0 + BATCH);
+      for (let s = s0; s < s1; s++)
+        for (let q = strandStart[s]; q + 1 < strandStart[s + 1]; q++) {
+          out.u32(q);
+          out.u32(q + 1);
+        }
+      report();
+      yield* out.drain();
+    }
+  }
+  if (head) {
+    for (let v0 = 0; v0 < headVerts; v0 += ROWS) {
+      out.f32s(head.positions, 3 * v0, 3 * Math.min(headVerts, v0 + ROWS));
+      report();
+      yield* out.drain();
+    }
+    const normals = head.normals;
+    if (normals)
+      for (let v0 = 0; v0 < headVerts; v0 += ROWS) {
+        out.f32s(normals, 3 * v0, 3 * Math.min(headVerts, v0 + ROWS));
+        report();
+        yield* out.drain();
+      }
+    for (let t0 = 0; t0 < headTris; t0 += ROWS) {
+      out.u32s(head.indices, 3 * t0, 3 * Math.min(headTris, t0 + ROWS));
+      report();
+      yield* out.drain();
+    }
+  }
+  out.zeros(binPadded - binLength);
+  yield* out.end();
+  progress.at(1);
+}

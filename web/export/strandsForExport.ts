@@ -1,0 +1,188 @@
+// The strands as every writer exports them: strands of fewer than 2 points dropped, strands of
+// more than MAX_POINTS_PER_STRAND points resampled evenly by arc length (root and tip kept
+// exactly), a diameter per point tapered ROOT_WIDTH → TIP_WIDTH by arc length, and a colour
+// per strand. Pure and deterministic: no DOM, no three.js, no randomness beyond a seeded hash.
+//
+// Colours are LINEAR RGB floats (USD displayColor and glTF COLOR_0 are linear; the .hair
+// colours use the same values): session.hairColor (#rrggbb, sRGB) varied per strand by
+// ±STRAND_VALUE_VARIATION in value (the sRGB channels scaled by one factor, clamped to 1), then
+// decoded with the sRGB transfer function.
+import type { SessionState } from '../model/session';
+import type { StrandArrays } from '../solver/protocol';
+import { MAX_POINTS_PER_STRAND, ROOT_WIDTH, TIP_WIDTH } from './types';
+
+/** Per-strand brightness variation: the value (HSV V) of each strand's colour is the session's
+ *  colour × (1 + u · 0.04), u in [-1, 1) from a hash of (growth seed, strand index). */
+export const STRAND_VALUE_VARIATION = 0.04;
+
+/** Colour used when the session's colour is not #rrggbb (the session reader rejects that). */
+const FALLBACK_COLOR = '#5a3825';
+
+export interface ExportStrands {
+  /** Exported strand s owns points strandStart[s] .. strandStart[s + 1] - 1 (root first). */
+  points: Float32Array; // points[3 * point + axis]
+  strandStart: Uint32Array; // length = strands + 1
+  /** Diameter per point, world units. */
+  widths: Float32Array; // widths[point]
+  /** Linear RGB per strand. */
+  colors: Float32Array; // colors[3 * strand + channel]
+  /** Bounds of points (exact float32 values), [0, 0, 0] for both when there are no points. */
+  min: [number, number, number];
+  max: [number, number, number];
+}
+
+/** sRGB transfer function, encoded 0..1 → linear 0..1 (IEC 61966-2-1). */
+export function srgbToLinear(c: number): number {
+  return c <= 0.04045 ? c / 12.92 : ((c + 0.055) / 1.055) ** 2.4;
+}
+
+/** #rrggbb → sRGB-encoded floats 0..1 (the fallback colour if it is not #rrggbb). */
+export function parseHexColor(hex: string): [number, number, number] {
+  const m = /^#([0-9a-fA-F]{6})$/.exec(hex) ?? /^#([0-9a-fA-F]{6})$/.exec(FALLBACK_COLOR);
+  const v = Number.parseInt((m as RegExpExecArray)[1], 16);
+  return [((v >> 16) & 255) / 255, ((v >> 8) & 255) / 255, (v & 255) / 255];
+}
+
+/** A 32-bit integer hash of (seed, index) (murmur3's finaliser over a combined key). */
+export function strandHash(seed: number, index: number): number {
+  let h = (seed >>> 0) ^ Math.imul(index >>> 0, 0x9e3779b1);
+  h = Math.imul(h ^ (h >>> 16), 0x85ebca6b);
+  h = Math.imul(h ^ (h >>> 13), 0xc2b2ae35);
+  h ^= h >>> 16;
+  return h >>> 0;
+}
+
+/** The value factor of strand `index` (its index among the input strands): 1 ± 0.04. */
+export function strandValueFactor(seed: number, index: number): number {
+  const u = (strandHash(seed, index) / 4294967296) * 2 - 1; // [-1, 1)
+  return 1 + STRAND_VALUE_VARIATION * u;
+}
+
+/** Linear RGB of input strand `index` for a session colour and seed. */
+export function strandColor(hex: string, seed: number, index: number): [number, number, number] {
+  const f = strandValueFactor(seed, index);
+  const [r, g, b] = parseHexColor(hex);
+  return [
+    srgbToLinear(Math.min(1, r * f)),
+    srgbToLinear(Math.min(1, g * f)),
+    srgbToLinear(Math.min(1, b * f)),
+  ];
+}
+
+/** Width (diameter) at arc-length fraction t (0 at the root, 1 at the tip). */
+export function widthAt(t: number): number {
+  return ROOT_WIDTH + (TIP_WIDTH - ROOT_WIDTH) * t;
+}
+
+/** Builds the exported strands (see the file comment). */
+export function strandsForExport(
+  strands: StrandArrays,
+  session: Pick<SessionState, 'hairColor' | 'growth'>,
+): ExportStrands {
+  const src = strands.points;
+  const start = strands.strandStart;
+  const nIn = Math.max(0, start.length - 1);
+  const cap = MAX_POINTS_PER_STRAND;
+
+  // First pass: how many strands and points come out.
+  let nOut = 0;
+  let pOut = 0;
+  for (let s = 0; s < nIn; s++) {
+    const n = start[s + 1] - start[s];
+    if (n < 2) continue;
+    nOut++;
+    pOut += Math.min(n, cap);
+  }
+
+  const points = new Float32Array(3 * pOut);
+  const widths = new Float32Array(pOut);
+  const colors = new Float32Array(3 * nOut);
+  const strandStart = new Uint32Array(nOut + 1);
+  const seed = session.growth.seed;
+  const base = parseHexColor(session.hairColor);
+  const cum = new Float64Array(Math.max(2, maxStrandLength(start)));
+
+  let so = 0;
+  let po = 0;
+  for (let s = 0; s < nIn; s++) {
+    const a = start[s];
+    const n = start[s + 1] - a;
+    if (n < 2) continue;
+
+    // Cumulative arc length along the input strand (float64).
+    cum[0] = 0;
+    for (let i = 1; i < n; i++) {
+      const p = 3 * (a + i);
+      const dx = src[p] - src[p - 3];
+      const dy = src[p + 1] - src[p - 2];
+      const dz = src[p + 2] - src[p - 1];
+      cum[i] = cum[i - 1] + Math.sqrt(dx * dx + dy * dy + dz * dz);
+    }
+    const total = cum[n - 1];
+
+    if (n <= cap) {
+      points.set(src.subarray(3 * a, 3 * (a + n)), 3 * po);
+      for (let i = 0; i < n; i++)
+        widths[po + i] = widthAt(total > 0 ? cum[i] / total : i / (n - 1));
+    } else {
+      const m = cap;
+      let seg = 0; // input segment holding the current target: cum[seg] <= target <= cum[seg + 1]
+      for (let k = 0; k < m; k++) {
+        const o = 3 * (po + k);
+        let q: number; // index of the source point to copy, or -1 to interpolate
+        let t = 0;
+        if (k === 0) q = 0;
+        else if (k === m - 1) q = n - 1;
+        else if (total > 0) {
+          const target = (total * k) / (m - 1);
+          while (seg < n - 2 && cum[seg + 1] < target) seg++;
+          const len = cum[seg + 1] - cum[seg];
+          t = len > 0 ? (target - cum[seg]) / len : 0;
+          q = -1;
+        } else q = Math.round((k * (n - 1)) / (m - 1));
+        if (q >= 0) {
+          const p = 3 * (a + q);
+          points[o] = src[p];
+          points[o + 1] = src[p + 1];
+          points[o + 2] = src[p + 2];
+        } else {
+          const p = 3 * (a + seg);
+          points[o] = src[p] + (src[p + 3] - src[p]) * t;
+          points[o + 1] = src[p + 1] + (src[p + 4] - src[p + 1]) * t;
+          points[o + 2] = src[p + 2] + (src[p + 5] - src[p + 2]) * t;
+        }
+        widths[po + k] = widthAt(k / (m - 1));
+      }
+    }
+
+    const f = strandValueFactor(seed, s);
+    colors[3 * so] = srgbToLinear(Math.min(1, base[0] * f));
+    colors[3 * so + 1] = srgbToLinear(Math.min(1, base[1] * f));
+    colors[3 * so + 2] = srgbToLinear(Math.min(1, base[2] * f));
+    po += Math.min(n, cap);
+    so++;
+    strandStart[so] = po;
+  }
+
+  const min: [number, number, number] = [0, 0, 0];
+  const max: [number, number, number] = [0, 0, 0];
+  if (pOut > 0) {
+    for (let c = 0; c < 3; c++) {
+      min[c] = points[c];
+      max[c] = points[c];
+    }
+    for (let i = 3; i < points.length; i += 3)
+      for (let c = 0; c < 3; c++) {
+        const v = points[i + c];
+        if (v < min[c]) min[c] = v;
+        if (v > max[c]) max[c] = v;
+      }
+  }
+  return { points, strandStart, widths, colors, min, max };
+}
+
+function maxStrandLength(start: Uint32Array): number {
+  let m = 0;
+  for (let s = 0; s + 1 < start.length; s++) m = Math.max(m, start[s + 1] - start[s]);
+  return m;
+}
