@@ -421,6 +421,31 @@ describe('GLB writer', () => {
   });
 });
 
+describe('no strands', () => {
+  it('writes every format from an empty hair, and the GLB stays valid', async () => {
+    const empty: ExportInput = {
+      strands: { points: new Float32Array(0), strandStart: new Uint32Array([0]) },
+      session: trickySession(),
+      head: tinyHead(),
+    };
+    for (const f of ['usda', 'hair', 'obj'] as const)
+      expect(collect(f, empty).bytes.length).toBeGreaterThan(0);
+    expect(collect('hair', empty).bytes.length).toBe(128);
+    for (const head of [tinyHead(), null]) {
+      const { bytes } = collect('glb', { ...empty, head });
+      const report = await validator.validateBytes(new Uint8Array(bytes));
+      expect(report.issues.numErrors).toBe(0);
+      expect(readExportedSession(bytes)).toEqual({ ok: true, session: empty.session });
+    }
+    const usd = text(collect('usda', empty).bytes);
+    expect(usd).toMatch(/int\[\] curveVertexCounts = \[\]/);
+    expect(readExportedSession(new TextEncoder().encode(usd))).toEqual({
+      ok: true,
+      session: empty.session,
+    });
+  });
+});
+
 // ---- USD ---------------------------------------------------------------------------------------
 
 /** The numbers inside `name = [ ... ]` within `block`. */
