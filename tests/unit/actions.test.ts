@@ -38,6 +38,7 @@ function target() {
     share: () => calls.push('share'),
     save: () => calls.push('save'),
     open: () => calls.push('open'),
+    exportMenu: () => calls.push('export'),
     resetView: () => calls.push('reset'),
     orbitSpeed: () => speed,
     setOrbitSpeed: (f) => {

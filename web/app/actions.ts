@@ -46,6 +46,7 @@ export interface ActionTarget {
   share(): void;
   save(): void;
   open(): void;
+  exportMenu(): void;
   resetView(): void;
   orbitSpeed(): number;
   setOrbitSpeed(factor: number): void;
@@ -184,6 +185,15 @@ export function buildActions(t: ActionTarget): Action[] {
       group: 'file',
       toolbar: 'more',
       run: () => t.open(),
+    },
+    {
+      id: 'file.export',
+      label: 'Export',
+      title: 'Export the hair: USD, Cem Yuksel .hair, OBJ, glTF, or a PNG image',
+      shortcuts: ['mod+e'],
+      group: 'file',
+      toolbar: 'more',
+      run: () => t.exportMenu(),
     },
     {
       id: 'view.reset',

@@ -20,6 +20,7 @@ import { createHeadMesh } from '../viewer/headMaterial';
 import { Viewer } from '../viewer/viewer';
 import { buildActions } from './actions';
 import { editActions } from './editActions';
+import { type ExportWiring, wireExport } from './exportActions';
 import { HairPresenter } from './hairPresenter';
 import { bindInput } from './input';
 import { OverlayPresenter } from './overlayPresenter';
@@ -95,8 +96,10 @@ export function startApp(): void {
     links,
     refresh: () => toolbar.refresh(),
   });
+  let exporting: ExportWiring | null = null;
   const actions = buildActions({
     ...edits,
+    exportMenu: () => exporting?.menu.toggle(),
     toggleHelp: () => help?.toggle(),
     display: (k) => overlays.display[k],
     setDisplay: (k, on) => overlays.setDisplay(k, on),
@@ -107,6 +110,16 @@ export function startApp(): void {
   });
   toolbar.setHairColor(initial.hairColor);
   help = buildHelpOverlay(document.body, actions);
+  exporting = wireExport({
+    editor,
+    viewer,
+    bridge,
+    status,
+    head,
+    grid,
+    solver: opts.solver,
+    anchor: byId('toolbar'),
+  });
   const toggles = buildDisplayToggles(toolbar.moreElement, overlays.display, (k, on) =>
     overlays.setDisplay(k, on),
   );
@@ -156,6 +169,10 @@ export function startApp(): void {
     tool: () => tool,
     actions,
     overlayKey: (key) => {
+      if (key === 'escape' && exporting?.menu.open) {
+        exporting.menu.close();
+        return true;
+      }
       if (!help?.open || (key !== 'escape' && key !== '?')) return false;
       help.close();
       return true;
@@ -189,6 +206,7 @@ export function startApp(): void {
     ponytail: tools.ponytail,
     busy: () =>
       edits.avoiding() ||
+      !!exporting?.busy() ||
       bridge.pending ||
       hair.awaitingFrame ||
       (tool.state !== 'idle' && tool.state !== 'pressed'),

@@ -20,7 +20,10 @@ export interface EditActionDeps {
   refresh(): void;
 }
 
-export type EditActions = Omit<ActionTarget, 'toggleHelp' | 'display' | 'setDisplay'>;
+export type EditActions = Omit<
+  ActionTarget,
+  'toggleHelp' | 'display' | 'setDisplay' | 'exportMenu'
+>;
 
 export function editActions(d: EditActionDeps): EditActions {
   const { editor, viewer, status } = d;

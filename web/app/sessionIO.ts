@@ -2,6 +2,7 @@
 // undo/redo are history moves in the editor), the file download, and the address bar's link
 // kept in step with the session.
 import type { Editor } from '../editor/editor';
+import { readExportedSession } from '../export/readExport';
 import type { SessionState, Viewpoint } from '../model/session';
 import {
   decodeSessionLink,
@@ -35,15 +36,27 @@ export function loadSession(editor: Editor, data: unknown, from: LoadSource): Pa
   return parsed;
 }
 
-/** Reads a session file the user chose; the sentence for the status line. */
+/** Reads a session file the user chose (a saved session, or an exported USD / glTF that
+ *  carries one); the sentence for the status line when it cannot be opened. */
 export async function openSessionFile(editor: Editor, file: File): Promise<string | null> {
-  if (file.size > 64 << 20)
-    return `Could not open ${file.name}: larger than 64 MB. Nothing changed.`;
+  if (file.size > 512 << 20)
+    return `Could not open ${file.name}: larger than 512 MB. Nothing changed.`;
   let data: unknown;
-  try {
-    data = JSON.parse(await file.text());
-  } catch {
-    return `Could not open ${file.name}: not JSON. Nothing changed.`;
+  const magic = new TextDecoder().decode(await file.slice(0, 5).arrayBuffer());
+  if (magic === '#usda' || magic.startsWith('glTF')) {
+    // an export: its session is in the USD header or the glTF JSON chunk
+    const r = readExportedSession(new Uint8Array(await file.arrayBuffer()));
+    if (!r?.ok)
+      return `Could not open ${file.name}: ${r ? r.error : 'not a hairsketch export'}. Nothing changed.`;
+    data = r.session;
+  } else {
+    if (file.size > 64 << 20)
+      return `Could not open ${file.name}: larger than 64 MB. Nothing changed.`;
+    try {
+      data = JSON.parse(await file.text());
+    } catch {
+      return `Could not open ${file.name}: not JSON, USD or glTF. Nothing changed.`;
+    }
   }
   const r = loadSession(editor, data, { kind: 'file', name: file.name });
   return r.ok ? null : `Could not open ${file.name}: ${r.error}. Nothing changed.`;

@@ -39,6 +39,7 @@ export class SolverBridge {
   /** A stroke is being drawn and previews are being solved. */
   private drawing = false;
   private readonly listeners: SolverBridgeEvents[] = [];
+  private idleWaiters: Array<() => void> = [];
 
   constructor(
     private readonly editor: Editor,
@@ -53,7 +54,10 @@ export class SolverBridge {
         onResult: (r, final) => this.each((l) => l.result(r, final)),
         onError: (message, restarting, kind) =>
           this.each((l) => l.error(message, kind, restarting)),
-        onIdle: () => this.each((l) => l.idle()),
+        onIdle: () => {
+          this.each((l) => l.idle());
+          for (const w of this.idleWaiters.splice(0)) w();
+        },
       },
     );
     editor.listen((c) => this.onEditorChange(c));
@@ -109,6 +113,12 @@ export class SolverBridge {
   /** S4.7: the avoidance constraints of the current curves' converged field. */
   avoidScalp(s: SessionState): Promise<AvoidanceResult> {
     return this.client.avoidScalp(packCurves(s.curves));
+  }
+
+  /** Resolves once no solve is pending (at once when idle). */
+  whenIdle(): Promise<void> {
+    if (!this.client.pending) return Promise.resolve();
+    return new Promise((resolve) => this.idleWaiters.push(resolve));
   }
 
   crash(): void {

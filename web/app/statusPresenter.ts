@@ -29,6 +29,25 @@ export class StatusPresenter {
     else if (this.line.state !== 'error') this.line.set(this.line.state, this.busyText());
   }
 
+  /** A long task of the user's (an export): its progress replaces the status text while the
+   *  hair is ready; the solver's own progress still wins while it solves. */
+  task(text: string): void {
+    this.taskText = text;
+    if (this.line.state !== 'error') this.line.set('solving', text);
+  }
+
+  /** The task ended: its sentence stays beside "Ready" (an error: shown as an error). */
+  taskDone(message: string, failed = false): void {
+    this.taskText = '';
+    if (failed) this.error(message);
+    else {
+      this.lastMessage = message;
+      this.ready();
+    }
+  }
+
+  private taskText = '';
+
   /** An error the user must see until the next change. */
   error(message: string): void {
     this.lastMessage = message;
@@ -95,6 +114,10 @@ export class StatusPresenter {
   /** The newest hair is on screen and nothing is pending. */
   ready(): void {
     if (this.pending()) return;
+    if (this.taskText) {
+      this.line.set('solving', this.taskText);
+      return;
+    }
     const l = this.line;
     const hair =
       l.strands > 0

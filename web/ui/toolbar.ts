@@ -70,7 +70,7 @@ export function buildToolbar(
 
   const picker = document.createElement('input');
   picker.type = 'file';
-  picker.accept = '.json,application/json';
+  picker.accept = '.json,.usda,.glb,application/json';
   picker.hidden = true;
   picker.addEventListener('change', () => {
     const f = picker.files?.[0];

@@ -1,0 +1,131 @@
+// "Export" end to end: every menu item downloads its file; the USD, .hair and glTF bytes equal
+// `hairsketch grow` run on the same session saved through "Save"; "Open" on the exported USD and
+// glTF restores the session; the PNG is twice the canvas size. Real clicks; waits on downloads
+// and the status attributes, never on fixed sleeps.
+import { execFileSync } from 'node:child_process';
+import { mkdtempSync, readFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { expect, type Page, test } from '@playwright/test';
+import { settled, watchConsole } from './helpers';
+
+const SCENE = '/?strands=1500';
+
+async function exportItem(page: Page, name: string): Promise<{ file: string; bytes: Buffer }> {
+  await page.getByRole('button', { name: 'Export' }).click();
+  const [download] = await Promise.all([
+    page.waitForEvent('download'),
+    page.getByRole('menuitem', { name, exact: true }).click(),
+  ]);
+  const file = await download.path();
+  return { file: download.suggestedFilename(), bytes: readFileSync(file) };
+}
+
+async function openFile(page: Page, path: string) {
+  await page.locator('input[type=file]').setInputFiles(path);
+}
+
+test('each export item downloads its file, equal to `hairsketch grow` on the saved session', async ({
+  page,
+}) => {
+  test.slow(); // three solves from scratch plus the CLI's
+  const errors = watchConsole(page);
+  await page.goto(SCENE);
+  await settled(page);
+  const dir = mkdtempSync(join(tmpdir(), 'hairsketch-export-'));
+
+  // the session as "Save" writes it
+  const [saved] = await Promise.all([
+    page.waitForEvent('download'),
+    page.getByRole('button', { name: 'Save', exact: true }).click(),
+  ]);
+  const sessionFile = join(dir, 'session.json');
+  await saved.saveAs(sessionFile);
+
+  const expected: Record<string, string> = {
+    'USD (.usda)': 'hairstyle.usda',
+    'Cem Yuksel (.hair)': 'hairstyle.hair',
+    'OBJ (.obj)': 'hairstyle.obj',
+    'glTF (.glb)': 'hairstyle.glb',
+  };
+  const files: Record<string, Buffer> = {};
+  for (const [item, name] of Object.entries(expected)) {
+    const { file, bytes } = await exportItem(page, item);
+    expect(file).toBe(name);
+    expect(bytes.length).toBeGreaterThan(1000);
+    files[name] = bytes;
+    await expect(page.getByTestId('status')).toContainText(`Exported ${name}`);
+  }
+  expect(files['hairstyle.usda'].subarray(0, 5).toString()).toBe('#usda');
+  expect(files['hairstyle.hair'].subarray(0, 4).toString()).toBe('HAIR');
+  expect(files['hairstyle.glb'].subarray(0, 4).toString()).toBe('glTF');
+
+  // the command line on the saved session gives the same bytes (same wasm, same seeded growth)
+  for (const name of ['hairstyle.usda', 'hairstyle.hair', 'hairstyle.glb']) {
+    const out = join(dir, `cli-${name}`);
+    const line = execFileSync(
+      process.execPath,
+      ['scripts/hairsketch.mjs', 'grow', sessionFile, '--out', out, '--grid', '25k'],
+      { encoding: 'utf8' },
+    );
+    expect(JSON.parse(line.trim().split('\n').at(-1) ?? '{}').bytes).toBe(files[name].length);
+    expect(readFileSync(out).equals(files[name]), `${name}: browser and CLI bytes differ`).toBe(
+      true,
+    );
+  }
+
+  // PNG: twice the canvas size
+  const canvas = await page.getByTestId('viewport').evaluate((c: HTMLCanvasElement) => ({
+    w: c.clientWidth,
+    h: c.clientHeight,
+  }));
+  const { file, bytes } = await exportItem(page, 'PNG image');
+  expect(file).toBe('hairstyle.png');
+  expect(bytes.subarray(1, 4).toString()).toBe('PNG');
+  expect([bytes.readUInt32BE(16), bytes.readUInt32BE(20)]).toEqual([2 * canvas.w, 2 * canvas.h]);
+  expect(errors).toEqual([]);
+});
+
+test('"Open" on an exported USD or glTF restores the session and its hair', async ({
+  page,
+  browser,
+}) => {
+  test.slow();
+  await page.goto('/?preset=fig7&strands=1200');
+  await settled(page);
+  const dir = mkdtempSync(join(tmpdir(), 'hairsketch-open-'));
+  const want = await page.evaluate(() => window.hairsketch.session() as { curves: unknown[] });
+  const paths: Record<string, string> = {};
+  for (const item of ['USD (.usda)', 'glTF (.glb)']) {
+    await page.getByRole('button', { name: 'Export' }).click();
+    const [d] = await Promise.all([
+      page.waitForEvent('download'),
+      page.getByRole('menuitem', { name: item, exact: true }).click(),
+    ]);
+    paths[item] = join(dir, d.suggestedFilename());
+    await d.saveAs(paths[item]);
+  }
+  const [saved] = await Promise.all([
+    page.waitForEvent('download'),
+    page.getByRole('button', { name: 'Save', exact: true }).click(),
+  ]);
+  paths.json = join(dir, 'session.json');
+  await saved.saveAs(paths.json);
+
+  // each file opened on an empty head: the same curves, and the same hair as opening the
+  // session file itself
+  const hashes: Record<string, string | null> = {};
+  for (const [key, path] of Object.entries(paths)) {
+    const p = await browser.newPage();
+    await p.goto('/?preset=empty&strands=1200');
+    const s0 = await settled(p);
+    await openFile(p, path);
+    await settled(p, s0.revision);
+    const got = await p.evaluate(() => window.hairsketch.session() as { curves: unknown[] });
+    expect(got.curves, key).toEqual(want.curves);
+    hashes[key] = await p.evaluate(() => window.hairsketch.hairHash());
+    await p.close();
+  }
+  expect(hashes['USD (.usda)']).toBe(hashes.json);
+  expect(hashes['glTF (.glb)']).toBe(hashes.json);
+});

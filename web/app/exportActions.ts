@@ -1,0 +1,69 @@
+// Wires "Export": the menu, file exports in their own worker (Exporter) and the PNG from the
+// viewer, each after the running solve (if any) has finished, with progress on the status line.
+import type { Editor } from '../editor/editor';
+import type { Head } from '../head/head';
+import type { GridSpec, SolverName } from '../solver/protocol';
+import { buildExportMenu, type ExportMenu } from '../ui/exportMenu';
+import type { Viewer } from '../viewer/viewer';
+import { download, Exporter, formatBytes } from './exporter';
+import type { SolverBridge } from './solverBridge';
+import type { StatusPresenter } from './statusPresenter';
+
+export interface ExportWiring {
+  menu: ExportMenu;
+  exporter: Exporter;
+  /** An export or a PNG is being made. */
+  busy(): boolean;
+}
+
+export function wireExport(d: {
+  editor: Editor;
+  viewer: Viewer;
+  bridge: SolverBridge;
+  status: StatusPresenter;
+  head: Head;
+  grid: GridSpec;
+  solver: SolverName;
+  anchor: HTMLElement;
+}): ExportWiring {
+  const { status, bridge } = d;
+  let png = false;
+  const exporter = new Exporter({
+    editor: d.editor,
+    grid: d.grid,
+    solver: d.solver,
+    scalp: () => d.head.scalpMesh(),
+    head: () => ({
+      positions: d.head.mesh.positions,
+      indices: d.head.mesh.indices,
+      normals: d.head.mesh.normals,
+    }),
+    solveSettled: () => bridge.whenIdle(),
+    solving: () => bridge.pending,
+    progress: (text) => status.task(text),
+    done: (m) => status.taskDone(m),
+    failed: (m) => status.taskDone(m, true),
+  });
+  const menu = buildExportMenu(d.anchor, {
+    exportFile: (format, withHead) => void exporter.export(format, withHead),
+    exportPng: async (transparent) => {
+      if (png) return;
+      png = true;
+      try {
+        if (bridge.pending) {
+          status.task('PNG image: waiting for the solve to finish…');
+          await bridge.whenIdle();
+        }
+        status.task('PNG image: drawing every strand…');
+        const blob = await d.viewer.captureImage({ scale: 2, transparent });
+        download(blob, 'hairstyle.png');
+        status.taskDone(`Exported hairstyle.png (${formatBytes(blob.size)}).`);
+      } catch (e) {
+        status.taskDone(`PNG image failed: ${e instanceof Error ? e.message : String(e)}.`, true);
+      } finally {
+        png = false;
+      }
+    },
+  });
+  return { menu, exporter, busy: () => png || exporter.busy };
+}

@@ -1,0 +1,144 @@
+// "Export": runs one export in its own worker (the page never freezes), shows progress on the
+// status line and downloads the file. Waits for a running solve to finish first, so the file
+// holds the converged hair of the session as it is. The PNG is drawn by the viewer.
+import type { Editor } from '../editor/editor';
+import type { FromExportWorker } from '../export/exportProtocol';
+import { EXPORT_FILE_NAMES, type ExportFormat, type ExportHead } from '../export/types';
+import type { GridSpec, ScalpMesh, SolverName } from '../solver/protocol';
+
+export interface ExporterDeps {
+  editor: Editor;
+  grid: GridSpec;
+  solver: SolverName;
+  scalp: () => ScalpMesh;
+  head: () => ExportHead;
+  /** Resolves once no solve is pending (at once when idle). */
+  solveSettled(): Promise<void>;
+  solving(): boolean;
+  /** Busy text with progress, or the final sentence. */
+  progress(text: string): void;
+  done(message: string): void;
+  failed(message: string): void;
+  makeWorker?: () => Worker;
+}
+
+export interface ExportOutcome {
+  name: string;
+  bytes: number;
+  strands: number;
+  ms: number;
+}
+
+const LABEL: Record<ExportFormat, string> = {
+  usda: 'USD',
+  hair: '.hair',
+  obj: 'OBJ',
+  glb: 'glTF',
+};
+
+export class Exporter {
+  private running: Worker | null = null;
+
+  constructor(private readonly d: ExporterDeps) {}
+
+  get busy(): boolean {
+    return this.running !== null;
+  }
+
+  /** Exports the session's full hair as `format`; the head when `withHead`. */
+  async export(format: ExportFormat, withHead: boolean): Promise<ExportOutcome | null> {
+    if (this.running) {
+      this.d.failed('An export is already running; wait for it to finish.');
+      return null;
+    }
+    const t0 = performance.now();
+    if (this.d.solving()) {
+      this.d.progress(`Export ${LABEL[format]}: waiting for the solve to finish…`);
+      await this.d.solveSettled();
+    }
+    const worker =
+      this.d.makeWorker?.() ??
+      new Worker(new URL('../export/exportWorker.ts', import.meta.url), { type: 'module' });
+    this.running = worker;
+    const name = EXPORT_FILE_NAMES[format];
+    const chunks: Uint8Array[] = [];
+    try {
+      const done = await new Promise<Extract<FromExportWorker, { type: 'done' }>>(
+        (resolve, reject) => {
+          worker.onmessage = (ev: MessageEvent<FromExportWorker>) => {
+            const m = ev.data;
+            if (m.type === 'chunk') chunks.push(m.bytes);
+            else if (m.type === 'progress') {
+              // solve 0–60 %, growth 60–70 %, writing 70–100 %
+              const f =
+                m.phase === 'solve'
+                  ? 0.6 * m.fraction
+                  : m.phase === 'grow'
+                    ? 0.6 + 0.1 * m.fraction
+                    : 0.7 + 0.3 * m.fraction;
+              const what =
+                m.phase === 'write'
+                  ? 'writing'
+                  : m.phase === 'grow'
+                    ? 'growing the hair'
+                    : 'solving';
+              this.d.progress(`Exporting ${name}: ${what}… ${Math.round(100 * f)} %`);
+            } else if (m.type === 'done') resolve(m);
+            else reject(new Error(m.message));
+          };
+          worker.onerror = (e) => {
+            e.preventDefault();
+            reject(new Error(e.message || 'the export worker stopped'));
+          };
+          const s = this.d.editor.session;
+          worker.postMessage({
+            type: 'export',
+            format,
+            session: s,
+            grid: this.d.grid,
+            solver: this.d.solver,
+            scalp: this.d.scalp(),
+            head: withHead ? this.d.head() : null,
+          });
+        },
+      );
+      download(new Blob(chunks as BlobPart[], { type: mimeOf(format) }), name);
+      const ms = performance.now() - t0;
+      this.d.done(
+        `Exported ${name} (${done.strands.toLocaleString('en-US')} strands, ${formatBytes(done.bytes)}, ${(ms / 1000).toFixed(1)} s).`,
+      );
+      return { name, bytes: done.bytes, strands: done.strands, ms };
+    } catch (e) {
+      this.d.failed(
+        `Export ${LABEL[format]} failed: ${e instanceof Error ? e.message : String(e)}. Your session is unchanged.`,
+      );
+      return null;
+    } finally {
+      worker.terminate();
+      this.running = null;
+    }
+  }
+}
+
+/** Starts a browser download of `blob` as `name`. */
+export function download(blob: Blob, name: string): void {
+  const a = document.createElement('a');
+  a.href = URL.createObjectURL(blob);
+  a.download = name;
+  a.click();
+  setTimeout(() => URL.revokeObjectURL(a.href), 30_000);
+}
+
+function mimeOf(f: ExportFormat): string {
+  return f === 'glb'
+    ? 'model/gltf-binary'
+    : f === 'obj' || f === 'usda'
+      ? 'text/plain'
+      : 'application/octet-stream';
+}
+
+export function formatBytes(n: number): string {
+  if (n < 1024) return `${n} B`;
+  if (n < 1024 * 1024) return `${(n / 1024).toFixed(0)} KB`;
+  return `${(n / 1024 / 1024).toFixed(1)} MB`;
+}

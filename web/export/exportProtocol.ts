@@ -1,0 +1,31 @@
+// Messages between the app and the export worker. The worker grows the session's full hair from
+// scratch (growSession.ts, the same pipeline as `hairsketch grow`) and streams the file back in
+// chunks (transferred), so a 100K-strand export never blocks the page or builds one giant string.
+import type { SessionState } from '../model/session';
+import type { GridSpec, ScalpMesh, SolverErrorKind, SolverName } from '../solver/protocol';
+import type { ExportFormat, ExportHead } from './types';
+
+export interface ExportRequest {
+  type: 'export';
+  format: ExportFormat;
+  session: SessionState;
+  grid: GridSpec;
+  solver: SolverName;
+  scalp: ScalpMesh;
+  /** The head mesh to include in the file, or null. */
+  head: ExportHead | null;
+}
+
+export type FromExportWorker =
+  | { type: 'progress'; phase: 'solve' | 'grow' | 'write'; fraction: number }
+  /** A piece of the file, in order. */
+  | { type: 'chunk'; bytes: Uint8Array }
+  | {
+      type: 'done';
+      strands: number;
+      bytes: number;
+      solveMs: number;
+      growMs: number;
+      writeMs: number;
+    }
+  | { type: 'error'; message: string; kind: SolverErrorKind | 'export' };

@@ -1,0 +1,48 @@
+// The hair export's shared contract: formats, what a writer is given, and how files come out
+// (in chunks, so 100K strands never make one giant string). The same code runs in the browser's
+// export worker and in `hairsketch grow` under Node, so the same session gives the same bytes.
+import type { SessionState } from '../model/session';
+import type { StrandArrays } from '../solver/protocol';
+
+export type ExportFormat = 'usda' | 'hair' | 'obj' | 'glb';
+
+export const EXPORT_FORMATS: readonly ExportFormat[] = ['usda', 'hair', 'obj', 'glb'];
+
+/** File name of each format's download (`hairstyle.usda`, …). */
+export const EXPORT_FILE_NAMES: Readonly<Record<ExportFormat, string>> = {
+  usda: 'hairstyle.usda',
+  hair: 'hairstyle.hair',
+  obj: 'hairstyle.obj',
+  glb: 'hairstyle.glb',
+};
+
+/** Unreal's groom importer keeps at most this many points per strand. */
+export const MAX_POINTS_PER_STRAND = 255;
+
+/** 1 world unit = 10 cm (web/head/headSdf.ts). */
+export const METERS_PER_UNIT = 0.1;
+
+/** Strand diameter at the root and at the tip, world units (tapered linearly root → tip). */
+export const ROOT_WIDTH = 0.0008;
+export const TIP_WIDTH = 0.0002;
+
+/** The head mesh to include, if any. */
+export interface ExportHead {
+  positions: Float32Array; // positions[3 * vertex + axis]
+  indices: Uint32Array; // indices[3 * triangle + corner], counter-clockwise from outside
+  normals?: Float32Array; // normals[3 * vertex + axis]
+}
+
+export interface ExportInput {
+  /** The full hair: every strand at full resolution (strands of fewer than 2 points are
+   *  skipped by every writer). */
+  strands: StrandArrays;
+  /** The session the hair was grown from: embedded where the format can carry it (USD custom
+   *  layer data, glTF asset extras) so that "Open" reads the export back. */
+  session: SessionState;
+  /** The head, or null to leave it out. */
+  head: ExportHead | null;
+}
+
+/** Progress of a long export, 0..1. */
+export type ExportProgress = (fraction: number) => void;

@@ -1,0 +1,98 @@
+// The "Export" menu: one item per file format (exact accessible names, the test contract relies
+// on them), "Include head" (indeterminate = each format's default: with USD and glTF, without
+// OBJ; a .hair file has no meshes) and "Transparent background" for the PNG.
+import type { ExportFormat } from '../export/types';
+
+export interface ExportMenuActions {
+  exportFile(format: ExportFormat, withHead: boolean): void;
+  exportPng(transparent: boolean): void;
+}
+
+export interface ExportMenu {
+  readonly open: boolean;
+  toggle(): void;
+  close(): void;
+}
+
+const ITEMS: ReadonlyArray<{ label: string; format: ExportFormat | 'png'; title: string }> = [
+  {
+    label: 'USD (.usda)',
+    format: 'usda',
+    title: 'Blender, Houdini, Unreal (via Blender → Alembic)',
+  },
+  { label: 'Cem Yuksel (.hair)', format: 'hair', title: 'Research and offline hair renderers' },
+  { label: 'OBJ (.obj)', format: 'obj', title: 'Lines, one per strand: opens almost anywhere' },
+  {
+    label: 'glTF (.glb)',
+    format: 'glb',
+    title: 'Lines with colour and width: web viewers, Blender',
+  },
+  { label: 'PNG image', format: 'png', title: 'The current view at twice the canvas resolution' },
+];
+
+/** Whether a format includes the head when the user has not said (the checkbox indeterminate). */
+export const HEAD_BY_DEFAULT: Readonly<Record<ExportFormat, boolean>> = {
+  usda: true,
+  glb: true,
+  obj: false,
+  hair: false,
+};
+
+export function buildExportMenu(anchor: HTMLElement, actions: ExportMenuActions): ExportMenu {
+  const menu = document.createElement('div');
+  menu.className = 'export-menu';
+  menu.id = 'export-menu';
+  menu.setAttribute('role', 'menu');
+  menu.setAttribute('aria-label', 'Export');
+  menu.hidden = true;
+
+  const head = checkbox('Include head', 'Default: with USD and glTF, without OBJ (.hair has none)');
+  head.input.indeterminate = true;
+  const transparent = checkbox('Transparent background', 'For the PNG image');
+
+  const close = () => {
+    menu.hidden = true;
+  };
+  for (const item of ITEMS) {
+    const b = document.createElement('button');
+    b.type = 'button';
+    b.setAttribute('role', 'menuitem');
+    b.textContent = item.label;
+    b.title = item.title;
+    b.addEventListener('click', () => {
+      close();
+      if (item.format === 'png') actions.exportPng(transparent.input.checked);
+      else
+        actions.exportFile(
+          item.format,
+          head.input.indeterminate ? HEAD_BY_DEFAULT[item.format] : head.input.checked,
+        );
+    });
+    menu.append(b);
+  }
+  menu.append(head.label, transparent.label);
+  anchor.append(menu);
+  document.addEventListener('pointerdown', (e) => {
+    const t = e.target as HTMLElement | null;
+    if (!menu.hidden && !menu.contains(t) && !t?.closest('[data-action="file.export"]')) close();
+  });
+  return {
+    get open() {
+      return !menu.hidden;
+    },
+    toggle() {
+      menu.hidden = !menu.hidden;
+      if (!menu.hidden) (menu.querySelector('[role="menuitem"]') as HTMLElement | null)?.focus();
+    },
+    close,
+  };
+}
+
+function checkbox(text: string, title: string) {
+  const label = document.createElement('label');
+  label.title = title;
+  const input = document.createElement('input');
+  input.type = 'checkbox';
+  label.append(input, text);
+  return { label, input };
+}
