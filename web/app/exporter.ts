@@ -4,6 +4,7 @@
 import type { Editor } from '../editor/editor';
 import type { FromExportWorker } from '../export/exportProtocol';
 import { EXPORT_FILE_NAMES, type ExportFormat, type ExportHead } from '../export/types';
+import { parseSession } from '../model/sessionFile';
 import type { GridSpec, ScalpMesh, SolverName } from '../solver/protocol';
 
 export interface ExporterDeps {
@@ -90,11 +91,14 @@ export class Exporter {
             e.preventDefault();
             reject(new Error(e.message || 'the export worker stopped'));
           };
-          const s = this.d.editor.session;
+          // the session as the strict reader writes it: the form `hairsketch grow` embeds,
+          // so the same session gives the same bytes
+          const parsed = parseSession(this.d.editor.session);
+          if (!parsed.ok) throw new Error(`the session is not valid (${parsed.error})`);
           worker.postMessage({
             type: 'export',
             format,
-            session: s,
+            session: parsed.value,
             grid: this.d.grid,
             solver: this.d.solver,
             scalp: this.d.scalp(),
