@@ -15,6 +15,7 @@ goes to stderr. On any failure: a message on stderr and exit status 1 (2 for bad
 """
 
 import argparse
+import array
 import json
 import math
 import sys
@@ -29,6 +30,23 @@ class CheckFailed(Exception):
 def require(ok, message):
     if not ok:
         raise CheckFailed(message)
+
+
+def floats(vt_array):
+    """The float32 values of a Vt float / Vec3f array, flat (through its buffer: fast)."""
+    view = memoryview(vt_array)
+    require(view.format == "f", f"expected float32 values, got buffer format {view.format}")
+    out = array.array("f")
+    out.frombytes(view.cast("B"))
+    return out
+
+
+def all_finite(values):
+    """True when every value is finite (one inf or nan makes the exact sum non-finite)."""
+    try:
+        return math.isfinite(math.fsum(values))
+    except (OverflowError, ValueError):  # inf - inf
+        return False
 
 
 def check(path, box):
@@ -74,20 +92,27 @@ def check(path, box):
         sum(counts) == n_points,
         f"curveVertexCounts sum to {sum(counts)} but there are {n_points} points",
     )
+    xyz = floats(points)
+    require(len(xyz) == 3 * n_points, "points are not 3 floats each")
     lo, hi = box[:3], box[3:]
-    for i, p in enumerate(points):
-        for a in range(3):
-            v = p[a]
-            require(math.isfinite(v), f"points[{i}] is not finite: {tuple(p)}")
-            require(lo[a] <= v <= hi[a], f"points[{i}] = {tuple(p)} is outside the box {box}")
+    if not all_finite(xyz):
+        i = next(k for k, v in enumerate(xyz) if not math.isfinite(v)) // 3
+        raise CheckFailed(f"points[{i}] is not finite: {tuple(points[i])}")
+    for a in range(3):
+        axis = xyz[a::3]
+        if n_points and (min(axis) < lo[a] or max(axis) > hi[a]):
+            i = next(k for k, v in enumerate(axis) if not lo[a] <= v <= hi[a])
+            raise CheckFailed(f"points[{i}] = {tuple(points[i])} is outside the box {box}")
 
     widths = curves.GetWidthsAttr().Get()
     require(widths is not None, "no widths")
     require(len(widths) == n_points, f"{len(widths)} widths for {n_points} points")
     interp = curves.GetWidthsInterpolation()
     require(interp == UsdGeom.Tokens.vertex, f'widths interpolation is "{interp}", not "vertex"')
-    for i, w in enumerate(widths):
-        require(math.isfinite(w) and w > 0, f"widths[{i}] = {w} is not a finite positive width")
+    w = floats(widths)
+    if n_points and not (all_finite(w) and min(w) > 0):
+        i = next(k for k, v in enumerate(w) if not (math.isfinite(v) and v > 0))
+        raise CheckFailed(f"widths[{i}] = {w[i]} is not a finite positive width")
 
     colours = curves.GetDisplayColorPrimvar()
     require(colours and colours.HasValue(), "no primvars:displayColor")

@@ -1,15 +1,17 @@
 // The `hairsketch` command line. Runs the same wasm module as the app, under Node.
 //   hairsketch solve PROBLEM.json --out DIR [--solver exact|fast|auto|cg]
+//   hairsketch grow SESSION --out FILE [--format …] [--grid …] [--solver …] [--strands N] (grow.ts)
+// Exit codes: 0 done, 2 bad input (a one-line message on stderr), 1 internal error.
 import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { loadRawSolver } from '../solver/wasmEngine';
+import { CliError } from './errors';
+import { runGrow } from './grow';
 import { constraintStates, decodeProblem } from './problem';
 
-const USAGE = 'usage: hairsketch solve PROBLEM.json --out DIR [--solver exact|fast|auto|cg]';
+const SOLVE_USAGE = 'usage: hairsketch solve PROBLEM.json --out DIR [--solver exact|fast|auto|cg]';
 const SOLVERS = ['exact', 'fast', 'auto', 'cg'];
-
-class CliError extends Error {}
 
 function parseArgs(argv: string[]): {
   command: string;
@@ -19,7 +21,11 @@ function parseArgs(argv: string[]): {
 } {
   const [command, ...rest] = argv;
   if (command !== 'solve')
-    throw new CliError(command ? `unknown command "${command}"; ${USAGE}` : USAGE);
+    throw new CliError(
+      command
+        ? `unknown command "${command}" (solve or grow); ${SOLVE_USAGE}`
+        : `no command (solve or grow); ${SOLVE_USAGE}`,
+    );
   let problem = '';
   let out = '';
   let solver = 'auto';
@@ -27,25 +33,37 @@ function parseArgs(argv: string[]): {
     const a = rest[i];
     if (a === '--out' || a === '--solver') {
       const v = rest[++i];
-      if (v === undefined) throw new CliError(`${a} needs a value; ${USAGE}`);
+      if (v === undefined) throw new CliError(`${a} needs a value; ${SOLVE_USAGE}`);
       if (a === '--out') out = v;
       else solver = v;
     } else if (a.startsWith('--')) {
-      throw new CliError(`unknown option "${a}"; ${USAGE}`);
+      throw new CliError(`unknown option "${a}"; ${SOLVE_USAGE}`);
     } else if (!problem) {
       problem = a;
     } else {
-      throw new CliError(`unexpected argument "${a}"; ${USAGE}`);
+      throw new CliError(`unexpected argument "${a}"; ${SOLVE_USAGE}`);
     }
   }
-  if (!problem || !out) throw new CliError(USAGE);
+  if (!problem || !out) throw new CliError(SOLVE_USAGE);
   if (!SOLVERS.includes(solver))
     throw new CliError(`unknown solver "${solver}" (one of ${SOLVERS.join(', ')})`);
   return { command, problem, out, solver };
 }
 
+/** The wasm module's bytes (built by wasm-build/build.sh into web/generated/). */
+function wasmBinary(): Uint8Array {
+  const here = dirname(fileURLToPath(import.meta.url));
+  return readFileSync(resolve(here, '../generated/hairsolver.wasm'));
+}
+
 export async function main(argv: string[]): Promise<number> {
   try {
+    if (argv[0] === 'grow') {
+      await runGrow(argv.slice(1), { wasmBinary: wasmBinary() }, (line) =>
+        process.stdout.write(`${line}\n`),
+      );
+      return 0;
+    }
     const args = parseArgs(argv);
     let text: string;
     try {
@@ -57,9 +75,7 @@ export async function main(argv: string[]): Promise<number> {
     if (!decoded.ok) throw new CliError(`${args.problem}: ${decoded.error}`);
     const p = decoded.value;
     mkdirSync(args.out, { recursive: true });
-    const here = dirname(fileURLToPath(import.meta.url));
-    const wasmBinary = readFileSync(resolve(here, '../generated/hairsolver.wasm'));
-    const solver = await loadRawSolver(args.solver, { wasmBinary });
+    const solver = await loadRawSolver(args.solver, { wasmBinary: wasmBinary() });
     try {
       solver.setGrid(p.grid, p.omega);
       let step = 0;
@@ -103,6 +119,6 @@ export async function main(argv: string[]): Promise<number> {
   } catch (e) {
     const msg = e instanceof Error ? e.message : String(e);
     process.stderr.write(`hairsketch: ${msg.split('\n')[0]}\n`);
-    return e instanceof CliError ? 2 : 1;
+    return e instanceof CliError ? e.exitCode : 1;
   }
 }

@@ -1,0 +1,324 @@
+// `hairsketch grow`: a saved session (or a share link, or an export that carries one) to a hair
+// file, through the same pipeline as the app's export (export/growSession.ts, then
+// export/writeExport.ts), so the same session gives the same file.
+//   hairsketch grow SESSION --out FILE [--format usda|hair|obj|glb] [--grid 25k|50k|100k|250k]
+//                   [--solver fast|exact] [--strands N] [--with-head|--no-head]
+// The file is written to a temporary name beside FILE and renamed into place only when complete.
+import {
+  closeSync,
+  fsyncSync,
+  openSync,
+  readFileSync,
+  renameSync,
+  statSync,
+  unlinkSync,
+  writeSync,
+} from 'node:fs';
+import { basename, dirname, join, resolve } from 'node:path';
+import { growSessionHair } from '../export/growSession';
+import { readExportedSession } from '../export/readExport';
+import {
+  EXPORT_FORMATS,
+  type ExportFormat,
+  type ExportHead,
+  MAX_POINTS_PER_STRAND,
+} from '../export/types';
+import { formatFromFileName, writeExport } from '../export/writeExport';
+import { Head } from '../head/head';
+import { GRID_PRESETS, type GridPreset, gridForPreset, isGridPreset } from '../model/grid';
+import type { SessionState } from '../model/session';
+import { decodeSessionLink, parseSession } from '../model/sessionFile';
+import { SolverError } from '../solver/engine';
+import type { StrandArrays } from '../solver/protocol';
+import { type LoadOptions, loadSolverEngine } from '../solver/wasmEngine';
+import { CliError } from './errors';
+
+export const GROW_USAGE =
+  'usage: hairsketch grow SESSION --out FILE [--format usda|hair|obj|glb] [--grid 25k|50k|100k|250k] [--solver fast|exact] [--strands N] [--with-head|--no-head]';
+
+const GROW_SOLVERS = ['fast', 'exact'] as const;
+type GrowSolver = (typeof GROW_SOLVERS)[number];
+export const MAX_STRANDS_OPTION = 1_000_000;
+/** Largest session file read (a saved session; an export carrying one may be larger). */
+const MAX_SESSION_BYTES = 64 << 20;
+const MAX_EXPORT_BYTES = 1 << 30;
+
+export interface GrowArgs {
+  session: string;
+  out: string;
+  format: ExportFormat;
+  grid: GridPreset | null; // null: the session's grid
+  solver: GrowSolver;
+  strands: number | null; // null: the session's growth.maxStrands
+  head: boolean;
+}
+
+/** The one line `grow` prints on success. */
+export interface GrowReport {
+  strands: number;
+  points: number;
+  bytes: number;
+  solveMs: number;
+  growMs: number;
+  format: ExportFormat;
+  file: string;
+}
+
+const gridList = Object.keys(GRID_PRESETS).join('|');
+
+export function parseGrowArgs(argv: readonly string[]): GrowArgs {
+  let session = '';
+  let out = '';
+  let format: string | null = null;
+  let grid: string | null = null;
+  let solver = 'fast';
+  let strands: string | null = null;
+  let head: boolean | null = null;
+  const valued = ['--out', '--format', '--grid', '--solver', '--strands'];
+  for (let i = 0; i < argv.length; i++) {
+    const a = argv[i];
+    if (valued.includes(a)) {
+      const v = argv[++i];
+      if (v === undefined || v === '') throw new CliError(`${a} needs a value; ${GROW_USAGE}`);
+      if (a === '--out') out = v;
+      else if (a === '--format') format = v;
+      else if (a === '--grid') grid = v;
+      else if (a === '--solver') solver = v;
+      else strands = v;
+    } else if (a === '--with-head' || a === '--no-head') {
+      head = a === '--with-head';
+    } else if (a.startsWith('--')) {
+      throw new CliError(`unknown option "${a}"; ${GROW_USAGE}`);
+    } else if (!session) {
+      session = a;
+    } else {
+      throw new CliError(`unexpected argument "${a}"; ${GROW_USAGE}`);
+    }
+  }
+  if (!session) throw new CliError(`no SESSION given; ${GROW_USAGE}`);
+  if (!out) throw new CliError(`no --out FILE given; ${GROW_USAGE}`);
+  let fmt: ExportFormat | null;
+  if (format !== null) {
+    fmt = (EXPORT_FORMATS as readonly string[]).includes(format) ? (format as ExportFormat) : null;
+    if (!fmt)
+      throw new CliError(`unknown format "${format}" (--format ${EXPORT_FORMATS.join('|')})`);
+  } else {
+    fmt = formatFromFileName(out);
+    if (!fmt)
+      throw new CliError(
+        `cannot tell the format from the extension of "${basename(out)}": name it .usda, .hair, .obj or .glb, or give --format ${EXPORT_FORMATS.join('|')}`,
+      );
+  }
+  if (grid !== null && !isGridPreset(grid))
+    throw new CliError(`unknown grid "${grid}" (--grid ${gridList})`);
+  if (!(GROW_SOLVERS as readonly string[]).includes(solver))
+    throw new CliError(`unknown solver "${solver}" (--solver ${GROW_SOLVERS.join('|')})`);
+  let n: number | null = null;
+  if (strands !== null) {
+    n = /^[0-9]{1,7}$/.test(strands) ? Number(strands) : Number.NaN;
+    if (!(n >= 1 && n <= MAX_STRANDS_OPTION))
+      throw new CliError(
+        `--strands must be an integer from 1 to ${MAX_STRANDS_OPTION.toLocaleString('en-US')}, got "${strands}"`,
+      );
+  }
+  return {
+    session,
+    out,
+    format: fmt,
+    grid: grid as GridPreset | null,
+    solver: solver as GrowSolver,
+    strands: n,
+    head: head ?? (fmt === 'usda' || fmt === 'glb'),
+  };
+}
+
+const isLink = (s: string) => /^https?:\/\//i.test(s) || s.startsWith('#s=');
+
+/** The session SESSION names: a share link (http…#s=… or #s=…), a saved session file (JSON), or
+ *  an exported .usda/.glb that carries one. Every path ends in the app's strict reader. */
+export async function readSessionArg(arg: string): Promise<SessionState> {
+  if (isLink(arg)) {
+    let fragment = arg;
+    if (!arg.startsWith('#')) {
+      try {
+        fragment = new URL(arg).hash;
+      } catch {
+        throw new CliError('the session link is not a valid URL');
+      }
+    }
+    const r = await decodeSessionLink(fragment);
+    if (!r.ok) throw new CliError(r.error);
+    return r.value;
+  }
+  let size: number;
+  try {
+    const st = statSync(arg);
+    if (st.isDirectory()) throw new CliError(`cannot read session ${arg}: it is a directory`);
+    size = st.size;
+  } catch (e) {
+    if (e instanceof CliError) throw e;
+    throw new CliError(`cannot read session ${arg}: ${(e as NodeJS.ErrnoException).code ?? e}`);
+  }
+  if (size > MAX_EXPORT_BYTES) throw new CliError(`session ${arg} is larger than 1 GB`);
+  let bytes: Uint8Array;
+  try {
+    bytes = readFileSync(arg);
+  } catch (e) {
+    throw new CliError(`cannot read session ${arg}: ${(e as NodeJS.ErrnoException).code ?? e}`);
+  }
+  let data: unknown;
+  const exported = readExportedSession(bytes);
+  if (exported) {
+    if (!exported.ok) throw new CliError(`session ${arg}: ${exported.error}`);
+    data = exported.session;
+  } else {
+    if (size > MAX_SESSION_BYTES) throw new CliError(`session ${arg} is larger than 64 MB`);
+    try {
+      data = JSON.parse(new TextDecoder().decode(bytes));
+    } catch {
+      throw new CliError(`session ${arg} is not JSON (nor an exported .usda or .glb)`);
+    }
+  }
+  const parsed = parseSession(data);
+  if (!parsed.ok) throw new CliError(`session ${arg}: ${parsed.error}`);
+  return parsed.value;
+}
+
+/** Strands and points as the writers export them (export/strandsForExport.ts): strands of fewer
+ *  than 2 points dropped, longer ones resampled to MAX_POINTS_PER_STRAND. */
+export function exportedCounts(s: StrandArrays): { strands: number; points: number } {
+  let strands = 0;
+  let points = 0;
+  const st = s.strandStart;
+  for (let i = 0; i + 1 < st.length; i++) {
+    const n = st[i + 1] - st[i];
+    if (n < 2) continue;
+    strands++;
+    points += Math.min(n, MAX_POINTS_PER_STRAND);
+  }
+  return { strands, points };
+}
+
+/** Checks now, before the solve, that a file can be created beside `out` (a probe, removed). */
+function checkWritable(out: string): void {
+  const target = resolve(out);
+  try {
+    if (statSync(target).isDirectory())
+      throw new CliError(`cannot write ${out}: it is a directory`);
+  } catch (e) {
+    if (e instanceof CliError) throw e;
+    // absent: fine
+  }
+  const probe = openTemp(out);
+  closeSync(probe.fd);
+  unlinkSync(probe.path);
+}
+
+/** A new temporary file beside `out`. */
+function openTemp(out: string): { path: string; fd: number } {
+  const target = resolve(out);
+  const dir = dirname(target);
+  const path = join(dir, `.${basename(target)}.${process.pid}.${Date.now().toString(36)}.tmp`);
+  try {
+    return { path, fd: openSync(path, 'wx', 0o644) };
+  } catch (e) {
+    const code = (e as NodeJS.ErrnoException).code;
+    const why = code === 'ENOENT' ? `no directory ${dir}` : (code ?? String(e));
+    throw new CliError(`cannot write ${out}: ${why}`);
+  }
+}
+
+function writeAll(fd: number, chunk: Uint8Array): void {
+  let off = 0;
+  while (off < chunk.byteLength) off += writeSync(fd, chunk, off, chunk.byteLength - off);
+}
+
+const yieldToEvents = () => new Promise<void>((r) => setImmediate(r));
+
+/** Runs `grow`: returns the report it printed. */
+export async function runGrow(
+  argv: readonly string[],
+  load: LoadOptions,
+  print: (line: string) => void,
+): Promise<GrowReport> {
+  const args = parseGrowArgs(argv);
+  const session = await readSessionArg(args.session);
+  const preset = args.grid ?? session.grid;
+  if (preset !== session.grid && (session.avoid?.index.length ?? 0) > 0)
+    throw new CliError(
+      `--grid ${preset} differs from the session's grid ${session.grid}, and its scalp-avoidance constraints are points of that grid (leave --grid out)`,
+    );
+  const head = Head.builtin();
+  const exportHead: ExportHead | null = args.head
+    ? { positions: head.mesh.positions, indices: head.mesh.indices, normals: head.mesh.normals }
+    : null;
+
+  checkWritable(args.out);
+
+  const engine = await loadSolverEngine(load);
+  let hair: ReturnType<typeof growSessionHair>;
+  try {
+    hair = growSessionHair(engine, session, head.scalpMesh(), {
+      grid: gridForPreset(preset),
+      solver: args.solver,
+      ...(args.strands !== null ? { maxStrands: args.strands } : {}),
+    });
+  } catch (e) {
+    // a solver refusing the input (an exact factor over the memory cap, …) is the user's choice
+    if (e instanceof SolverError && (e.kind === 'over_memory_cap' || e.kind === 'invalid_input'))
+      throw new CliError(`the solver cannot grow this session: ${e.message}`);
+    throw e;
+  } finally {
+    engine.dispose();
+  }
+
+  // Only now a temporary file exists: a signal while writing removes it (the write yields to
+  // the event loop now and then so that the handler runs).
+  const temp = openTemp(args.out);
+  let fd: number | null = temp.fd;
+  let interrupted: NodeJS.Signals | null = null;
+  const onSignal = (sig: NodeJS.Signals) => {
+    interrupted = sig;
+  };
+  process.on('SIGINT', onSignal);
+  process.on('SIGTERM', onSignal);
+  try {
+    let bytes = 0;
+    let chunks = 0;
+    for (const chunk of writeExport(args.format, {
+      strands: hair.strands,
+      session,
+      head: exportHead,
+    })) {
+      writeAll(fd, chunk);
+      bytes += chunk.byteLength;
+      if (++chunks % 16 === 0) await yieldToEvents();
+      if (interrupted) throw new CliError(`interrupted (${interrupted})`, 130);
+    }
+    fsyncSync(fd);
+    closeSync(fd);
+    fd = null;
+    renameSync(temp.path, args.out);
+    const report: GrowReport = {
+      ...exportedCounts(hair.strands),
+      bytes,
+      solveMs: Math.round(hair.solveMs),
+      growMs: Math.round(hair.growMs),
+      format: args.format,
+      file: resolve(args.out),
+    };
+    print(JSON.stringify(report));
+    return report;
+  } catch (e) {
+    if (fd !== null) closeSync(fd);
+    try {
+      unlinkSync(temp.path);
+    } catch {
+      // already gone
+    }
+    throw e;
+  } finally {
+    process.off('SIGINT', onSignal);
+    process.off('SIGTERM', onSignal);
+  }
+}
