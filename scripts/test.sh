@@ -8,6 +8,8 @@ step() { echo ""; echo "== $* ($(( $(date +%s) - start )) s)"; }
 
 step setup
 bash scripts/setup.sh test
+# Pixar's USD reader for tests/unit/usdExport.test.ts (tests/usd/check_usd.py), made by setup
+build/usd-venv/bin/python -c 'from pxr import Usd; print("usd-core", ".".join(map(str, Usd.GetVersion())))'
 
 step "wasm build (its type declarations are needed by tsc)"
 bash wasm-build/build.sh
