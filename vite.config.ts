@@ -1,13 +1,29 @@
 import { defineConfig } from 'vitest/config';
 
 // The app lives in web/ (index.html there); public/ is served as is; the build goes to dist/.
+// Served with a Content-Security-Policy that forbids inline script (and eval; the wasm module
+// is compiled under 'wasm-unsafe-eval'): strings from links and files can only ever be text.
+const CSP = [
+  "default-src 'self'",
+  "script-src 'self' 'wasm-unsafe-eval'",
+  "worker-src 'self'",
+  "style-src 'self' 'unsafe-inline'",
+  "img-src 'self' data: blob:",
+  "connect-src 'self'",
+  "object-src 'none'",
+  "base-uri 'none'",
+  "form-action 'none'",
+  "frame-ancestors 'none'",
+].join('; ');
+const headers = { 'Content-Security-Policy': CSP, 'X-Content-Type-Options': 'nosniff' };
+
 export default defineConfig({
   root: 'web',
   publicDir: '../public',
   build: { outDir: '../dist', emptyOutDir: true, target: 'es2022' },
   worker: { format: 'es' },
-  server: { host: '127.0.0.1', port: 5173, strictPort: false },
-  preview: { host: '127.0.0.1', port: 4173, strictPort: false },
+  server: { host: '127.0.0.1', port: 5173, strictPort: false, headers },
+  preview: { host: '127.0.0.1', port: 4173, strictPort: false, headers },
   test: {
     root: '.',
     include: ['tests/unit/**/*.test.ts'],

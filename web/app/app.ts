@@ -211,5 +211,6 @@ export function startApp(): void {
       hair.awaitingFrame ||
       (tool.state !== 'idle' && tool.state !== 'pressed'),
     lastPointerUp: () => lastPointerUp,
+    exporter: exporting.exporter,
   });
 }

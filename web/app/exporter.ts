@@ -39,11 +39,19 @@ const LABEL: Record<ExportFormat, string> = {
 
 export class Exporter {
   private running: Worker | null = null;
+  private abort: ((e: Error) => void) | null = null;
 
   constructor(private readonly d: ExporterDeps) {}
 
   get busy(): boolean {
     return this.running !== null;
+  }
+
+  /** Test and fault hook: kills the running export's worker as a crash would. */
+  crash(): void {
+    if (!this.running) return;
+    this.running.terminate();
+    this.abort?.(new Error('the export worker stopped'));
   }
 
   /** Exports the session's full hair as `format`; the head when `withHead`. */
@@ -66,6 +74,7 @@ export class Exporter {
     try {
       const done = await new Promise<Extract<FromExportWorker, { type: 'done' }>>(
         (resolve, reject) => {
+          this.abort = reject;
           worker.onmessage = (ev: MessageEvent<FromExportWorker>) => {
             const m = ev.data;
             if (m.type === 'chunk') chunks.push(m.bytes);
@@ -120,6 +129,7 @@ export class Exporter {
     } finally {
       worker.terminate();
       this.running = null;
+      this.abort = null;
     }
   }
 }

@@ -18,6 +18,8 @@ export interface HairsketchTestApi {
   idle(): Promise<void>;
   hairHash(): string | null;
   crashWorker(): void;
+  /** Kills the running export's worker as a crash would (nothing when no export runs). */
+  crashExport(): void;
   /** Benchmark probes: when each hair revision reached the screen, the last pointer-up time
    *  (both performance.now()), and the solver's wasm heap size. */
   hairLog(): Array<{ revision: number; time: number; final: boolean; strands: number }>;
@@ -78,6 +80,7 @@ export interface TestApiParts {
   /** Work is pending (a solve, an avoidance request, a stroke being drawn). */
   busy(): boolean;
   lastPointerUp(): number;
+  exporter?: { crash(): void };
 }
 
 export function installTestApi(app: TestApiParts): void {
@@ -110,6 +113,7 @@ export function installTestApi(app: TestApiParts): void {
       return s ? contentKey(s.points, s.strandStart) : null;
     },
     crashWorker: () => app.bridge.crash(),
+    crashExport: () => app.exporter?.crash(),
     hairLog: () => hair.log.slice(),
     lastPointerUp: () => app.lastPointerUp(),
     heapBytes: () => hair.heapBytes,
