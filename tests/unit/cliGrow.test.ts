@@ -17,7 +17,7 @@ import { afterEach, beforeAll, beforeEach, describe, expect, it, vi } from 'vite
 import { main } from '../../web/cli/main';
 import { presetSession } from '../../web/cli/presetSession';
 import { Head } from '../../web/head/head';
-import { encodeSessionLink } from '../../web/model/sessionFile';
+import { encodeSessionLink } from '../../web/model/sessionLink';
 
 const head = Head.builtin();
 const session = presetSession('default', head, '25k', 0);

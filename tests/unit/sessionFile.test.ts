@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { emptySession, type SessionState } from '../../web/model/session';
-import { decodeSessionLink, encodeSessionLink, parseSession } from '../../web/model/sessionFile';
+import { parseSession } from '../../web/model/sessionFile';
+import { decodeSessionLink, encodeSessionLink } from '../../web/model/sessionLink';
 import { CURVE_PARAMS } from '../../web/solver/protocol';
 
 const vp = {
@@ -130,7 +131,7 @@ describe('session links', () => {
   it('round-trip a session (numbers to 1e-5)', async () => {
     const s = sample();
     const link = await encodeSessionLink(s);
-    expect(link).toMatch(/^s=[A-Za-z0-9_-]+$/);
+    expect(link).toMatch(/^s=2\.[A-Za-z0-9_-]+$/);
     const r = await decodeSessionLink(`#${link}`);
     expect(r.ok).toBe(true);
     if (r.ok) {

@@ -4,12 +4,8 @@
 import type { Editor } from '../editor/editor';
 import { readExportedSession } from '../export/readExport';
 import type { SessionState, Viewpoint } from '../model/session';
-import {
-  decodeSessionLink,
-  encodeSessionLink,
-  type Parsed,
-  parseSession,
-} from '../model/sessionFile';
+import { type Parsed, parseSession } from '../model/sessionFile';
+import { decodeSessionLink, encodeSessionLink } from '../model/sessionLink';
 import type { Vec3 } from '../model/vec3';
 
 export type LoadSource = { kind: 'file'; name: string } | { kind: 'link' } | { kind: 'test' };

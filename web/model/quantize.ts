@@ -1,0 +1,141 @@
+// The grid every number of a session lives on. A session is quantised when it is made (the
+// editor quantises every curve it receives, presets are quantised when built), so a share link,
+// which stores these integers exactly (sessionLink.ts), reopens the very same numbers and so the
+// very same hair. Each kind of number has its own step:
+//
+//   positions (curve points, cross-sections, profiles, circle centres and radii,
+//   viewpoint positions and targets): 1e-4 world units (10 µm)
+//   directions (dividing-curve normals, ponytail circle axes, scalp-avoidance targets): 1e-4
+//   curve parameters (CURVE_PARAMS): angles (alpha0, alpha1) 1e-5 rad; the others
+//   (sigma, h in grid steps, tightness) 1e-4
+//   indices (circle spineIndex: rounded; avoid grid index: truncated, as Int32Array does)
+//   growth settings and the hair colour: exact (the colour as lowercase #rrggbb)
+//
+// A quantised number is Math.round(x * scale) / scale (never -0; |x| clamped to 1e6, far
+// outside any head), so it prints as a short decimal, and quantising twice changes nothing.
+// Every function returns its argument itself when it is already on the grid: quantising an
+// unchanged curve keeps its identity (the solver bridge compares curves by identity).
+import { CURVE_PARAMS, type CurveParamSpec } from '../solver/protocol';
+import type { PonytailCircle } from './ponytailGeometry';
+import type { ExtraConstraints, SessionState, StyleCurve, Viewpoint } from './session';
+import type { Vec3 } from './vec3';
+
+/** Integers per world unit for positions (1e-4 world units = 10 µm). */
+export const POSITION_SCALE = 1e4;
+/** Integers per unit for direction components (normals, axes, avoid targets). */
+export const DIRECTION_SCALE = 1e4;
+/** Integers per radian for curve angles. */
+export const ANGLE_SCALE = 1e5;
+/** Integers per unit for the other curve parameters (sigma, h, tightness). */
+export const PARAM_SCALE = 1e4;
+/** Numbers are clamped to ±LIMIT before quantising (keeps every integer far below 2^53). */
+export const LIMIT = 1e6;
+
+/** The grid step of curve parameter `name` (CURVE_PARAMS), as integers per unit. */
+export function paramScale(name: string): number {
+  return name.startsWith('alpha') ? ANGLE_SCALE : PARAM_SCALE;
+}
+
+/** The integer a number is stored as: round(clamp(x) * scale), never -0. */
+export function toGridInt(x: number, scale: number): number {
+  const c = Math.min(LIMIT, Math.max(-LIMIT, x));
+  return Math.round(c * scale) + 0;
+}
+
+/** The number on the grid an integer stands for. */
+export function fromGridInt(k: number, scale: number): number {
+  return k / scale + 0;
+}
+
+/** x on the grid of `scale`. */
+export function quantize(x: number, scale: number): number {
+  return fromGridInt(toGridInt(x, scale), scale);
+}
+
+function qv(v: Vec3, scale: number): Vec3 {
+  const a = quantize(v[0], scale);
+  const b = quantize(v[1], scale);
+  const c = quantize(v[2], scale);
+  return Object.is(a, v[0]) && Object.is(b, v[1]) && Object.is(c, v[2]) ? v : [a, b, c];
+}
+
+/** Maps `list` by `f`, returning `list` itself when every element maps to itself. */
+function mapSame<T>(list: readonly T[], f: (t: T) => T): T[] {
+  let out: T[] | null = null;
+  for (let i = 0; i < list.length; i++) {
+    const t = f(list[i]);
+    if (out) out.push(t);
+    else if (t !== list[i]) {
+      out = list.slice(0, i);
+      out.push(t);
+    }
+  }
+  return out ?? (list as T[]);
+}
+
+const positions = (p: Vec3[]) => mapSame(p, (v) => qv(v, POSITION_SCALE));
+const directions = (p: Vec3[]) => mapSame(p, (v) => qv(v, DIRECTION_SCALE));
+
+export function quantizeViewpoint(vp: Viewpoint): Viewpoint {
+  const position = qv(vp.position, POSITION_SCALE);
+  const target = qv(vp.target, POSITION_SCALE);
+  return position === vp.position && target === vp.target ? vp : { ...vp, position, target };
+}
+
+function quantizeCircle(c: PonytailCircle): PonytailCircle {
+  const centre = qv(c.centre, POSITION_SCALE);
+  const axis = qv(c.axis, DIRECTION_SCALE);
+  const radius = quantize(c.radius, POSITION_SCALE);
+  const spineIndex = quantize(c.spineIndex, 1);
+  return centre === c.centre &&
+    axis === c.axis &&
+    Object.is(radius, c.radius) &&
+    Object.is(spineIndex, c.spineIndex)
+    ? c
+    : { ...c, centre, axis, radius, spineIndex };
+}
+
+/** A curve with every number on the grid (the curve itself when already so). */
+export function quantizeCurve<C extends StyleCurve>(c: C): C {
+  const patch: Record<string, unknown> = {};
+  const set = (key: string, was: unknown, now: unknown) => {
+    if (!Object.is(was, now)) patch[key] = now;
+  };
+  set('points', c.points, positions(c.points));
+  set('viewpoint', c.viewpoint, quantizeViewpoint(c.viewpoint));
+  const rec = c as unknown as Record<string, number>;
+  for (const spec of CURVE_PARAMS[c.type] as readonly CurveParamSpec[])
+    if (typeof rec[spec.name] === 'number')
+      set(spec.name, rec[spec.name], quantize(rec[spec.name], paramScale(spec.name)));
+  if (c.type === 'dividing') set('normals', c.normals, directions(c.normals));
+  if (c.type === 'ponytail') {
+    set('crossSection', c.crossSection, positions(c.crossSection));
+    const p0 = positions(c.profiles[0]);
+    const p1 = positions(c.profiles[1]);
+    if (p0 !== c.profiles[0] || p1 !== c.profiles[1]) patch.profiles = [p0, p1];
+    set('circles', c.circles, mapSame(c.circles, quantizeCircle));
+  }
+  return Object.keys(patch).length === 0 ? c : ({ ...c, ...patch } as C);
+}
+
+/** Scalp-avoidance constraints on the grid: targets as directions, indices truncated to
+ *  integers as the solver's Int32Array would (null stays null). */
+export function quantizeAvoid(a: ExtraConstraints | null): ExtraConstraints | null {
+  if (!a) return a;
+  const index = mapSame(a.index, (i) => Math.trunc(i) + 0);
+  const target = mapSame(a.target, (x) => quantize(x, DIRECTION_SCALE));
+  return index === a.index && target === a.target ? a : { ...a, index, target };
+}
+
+/** A session with every number on the grid and the hair colour in lowercase: exactly what its
+ *  share link reopens (apart from `avoid`, which a link reopens as null when absent). The same
+ *  object when nothing changes; unchanged curves keep their identity. */
+export function quantizeSession(s: SessionState): SessionState {
+  const curves = mapSame(s.curves, quantizeCurve);
+  const avoid = s.avoid === undefined ? undefined : quantizeAvoid(s.avoid);
+  const hairColor = s.hairColor.toLowerCase();
+  if (curves === s.curves && avoid === s.avoid && hairColor === s.hairColor) return s;
+  const out: SessionState = { ...s, curves, hairColor };
+  if (s.avoid !== undefined) out.avoid = avoid;
+  return out;
+}
