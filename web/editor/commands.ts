@@ -2,6 +2,7 @@
 // function from (session, command) to the next session, the selection after it and a sentence
 // for the status line. The Editor (editor.ts) runs them through one path: history, then notify.
 import { ponytailCircles } from '../model/ponytailGeometry';
+import { quantizeSession } from '../model/quantize';
 import {
   addCurve,
   deleteCurve,
@@ -66,8 +67,15 @@ const deg = (rad: number) => Math.round((rad * 180) / Math.PI);
 const HEX_COLOR = /^#[0-9a-fA-F]{6}$/;
 
 /** What `cmd` does to `s`. The session is returned unchanged (same object) when nothing
- *  changes; the message then says why. */
+ *  changes; the message then says why. Every number the command brings in is put on the grid
+ *  of model/quantize.ts (curves, viewpoints, avoid targets), so the session a share link
+ *  reopens is this very session; unchanged curves keep their identity. */
 export function applyCommand(s: SessionState, cmd: Command): CommandResult {
+  const r = applyExact(s, cmd);
+  return r.session === s ? r : { ...r, session: quantizeSession(r.session) };
+}
+
+function applyExact(s: SessionState, cmd: Command): CommandResult {
   switch (cmd.kind) {
     case 'addCurve': {
       const id = nextCurveId(s);

@@ -7,6 +7,7 @@
 // and one ponytail).
 import type { Head } from '../head/head';
 import { ponytailCircles } from './ponytailGeometry';
+import { quantizeSession } from './quantize';
 import { resamplePolyline } from './resample';
 import {
   DEFAULT_TIGHTNESS,
@@ -319,5 +320,5 @@ export function presetCurves(name: PresetName, ctx: PresetContext): StyleCurve[]
 }
 
 export function applyPreset(s: SessionState, name: PresetName, ctx: PresetContext): SessionState {
-  return { ...s, curves: presetCurves(name, ctx) };
+  return quantizeSession({ ...s, curves: presetCurves(name, ctx) });
 }
