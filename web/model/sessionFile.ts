@@ -1,7 +1,21 @@
-// Sessions as files and links: a strict reader for session JSON from outside (a shared link, a
-// file, a test), and the link encoding (#s=<base64url of deflated JSON>).
-// The reader never trusts its input: every field is checked, numbers must be finite, sizes are
-// capped; on the first problem it answers with a message naming the field.
+// The one strict reader for a session from outside: a shared link (sessionLink.ts), a file, the
+// session an export carries, replaceSession, the command line.
+//
+// The reader (parseSession) never trusts its input and never throws:
+//  1. A first pass copies the input as plain JSON data (copyPlain): only own enumerable data
+//     properties of plain objects and arrays, within a depth, node and per-field size budget;
+//     a getter, a Proxy trap that throws, a cycle, a BigInt, a function, a class instance, a
+//     sparse array or an oversized array is refused with the path where it was found. Nothing
+//     of the caller's is read twice or after this pass.
+//  2. An older session is migrated to the current version (sessionMigrations.ts).
+//  3. The copy is read against the session's rules (SESSION_LIMITS), field by field; the first
+//     problem gives `{ok: false, error: '<path>: <what>'}`, e.g.
+//     `session.curves[2].points[5]: must be within the bounding volume (±25)`.
+// What it accepts it returns as a fresh value in a canonical form (fixed key order, defaults
+// spelled out, -0 written as 0), so reading its JSON again gives the same value and the same
+// session always gives the same bytes. Keys it does not know are refused (naming the key),
+// except the top-level `camera` and `selected` that "Save" and the test hook write beside the
+// session: those are not part of the session and are left out of the value.
 
 import {
   CURVE_PARAMS,
@@ -10,62 +24,332 @@ import {
   type CurveParamValues,
   type GrowthParams,
 } from '../solver/protocol';
-import { isGridPreset } from './grid';
-import { DEFAULT_GROWTH, type SessionState, type StyleCurve, type Viewpoint } from './session';
+import {
+  BOX_MAX,
+  BOX_MIN,
+  type GridPreset,
+  gridForPreset,
+  gridPointCount,
+  isGridPreset,
+} from './grid';
+import type { PonytailCircle } from './ponytailGeometry';
+import { POSITION_SCALE, toGridInt } from './quantize';
+import {
+  DEFAULT_GROWTH,
+  type ExtraConstraints,
+  type SessionState,
+  type StyleCurve,
+  type Viewpoint,
+} from './session';
+import { migrateSession, type Plain, type PlainRecord, SESSION_VERSION } from './sessionMigrations';
 import type { Vec3 } from './vec3';
 
 export type Parsed<T> = { ok: true; value: T } | { ok: false; error: string };
 
-const MAX_CURVES = 200;
-const MAX_POINTS = 5000; // per polyline
-const MAX_EXTRA = 200_000;
+/** Every bound the reader enforces (the README's session-file table mirrors this). */
+export const SESSION_LIMITS = {
+  /** Style curves per session. */
+  maxCurves: 200,
+  /** Points per polyline (a curve's points, a cross-section, a profile); circles per ponytail. */
+  maxPoints: 5000,
+  /** Points of all polylines, normals and circles of a session together. */
+  maxSessionPoints: 100_000,
+  /** Scalp-avoidance constraints. */
+  maxAvoid: 200_000,
+  /** |avoid target component|: the app writes 0.3-long vectors; curve targets are at most 1. */
+  maxAvoidTarget: 10,
+  /** Curve geometry (points, cross-sections, profiles, circle centres) lies within the box
+   *  (grid.ts BOX_MIN..BOX_MAX) grown by this many world units on every side. Strokes are not
+   *  clipped to the box: off the head they are drawn on the depth plane of the scalp, up to the
+   *  edge of the screen, and at the widest view the app allows (OrbitControls.maxDistance 25,
+   *  35° field of view) a 21:9 screen spans about ±8 units vertically and ±18 horizontally
+   *  around the orbit target. 25 units keeps every such stroke, while coordinates like 1e3 or
+   *  1e6 are refused. */
+  curveMargin: 25,
+  /** A curve's viewpoint (camera position and orbit target) lies within the box grown by this
+   *  many units: a curve starts on the visible scalp, within the camera's far plane (100 units),
+   *  and the orbit target is at most 25 units from the camera. */
+  viewMargin: 125,
+  /** Points that must differ (consecutive points of a polyline, a viewpoint's position and
+   *  target) differ on this grid (quantize.ts positions: 1e-4 world units), so they stay apart
+   *  when the editor or a link quantises them; the app's curves are resampled at half a grid
+   *  step or more (≥ 0.027). */
+  positionStep: 1 / POSITION_SCALE,
+  /** |n| of a unit vector (dividing normals, ponytail axes) is within this of 1. */
+  unitTolerance: 1e-3,
+  /** Ponytail circle radius: at least half a position step (not 0 once quantised) and at most
+   *  this (world units). */
+  maxRadius: 100,
+  /** growth.maxSegments (per strand). */
+  maxSegments: 2000,
+  /** growth.maxStrands (0 = no cap). */
+  maxStrands: 1_000_000,
+  /** Root directions sampled: ceil(180 / thetaStepDeg) · ceil(360 / phiStepDeg). */
+  maxRootSamples: 4_000_000,
+  /** Characters in any string; nesting depth and values of the whole input. */
+  maxString: 1024,
+  maxDepth: 10,
+  maxNodes: 2_500_000,
+} as const;
+const L = SESSION_LIMITS;
+
+const DEFAULT_HAIR_COLOR = '#5a3825';
 
 class ParseError extends Error {}
 
+/** ParseErrors this module threw (a WeakSet: asking it runs no trap of a thrown Proxy). */
+const OURS = new WeakSet<object>();
+const isOurs = (e: unknown): e is ParseError => typeof e === 'object' && e !== null && OURS.has(e);
+
 function fail(path: string, what: string): never {
-  throw new ParseError(`${path}: ${what}`);
+  const e = new ParseError(`${path}: ${what}`);
+  OURS.add(e);
+  throw e;
 }
 
-function obj(v: unknown, path: string): Record<string, unknown> {
+// ---- first pass: a plain copy of the input ---------------------------------------------------
+
+/** Array size caps by the key holding the array (the session's big arrays); other arrays hold
+ *  at most SMALL_ARRAY items (vectors, a viewpoint). The reader checks each size exactly. */
+interface Cap {
+  cap: number;
+  what: string;
+  /** Its length counts toward maxSessionPoints. */
+  points?: boolean;
+  /** The cap of the arrays it holds (default: SMALL_ARRAY). */
+  items?: Cap;
+}
+const SMALL_ARRAY = 16;
+const POLYLINE: Cap = { cap: L.maxPoints, what: 'points', points: true };
+const ARRAY_CAPS: Readonly<Record<string, Cap>> = {
+  curves: { cap: L.maxCurves, what: 'curves' },
+  points: POLYLINE,
+  normals: { cap: L.maxPoints, what: 'normals', points: true },
+  crossSection: POLYLINE,
+  profiles: { cap: SMALL_ARRAY, what: 'profiles', items: POLYLINE },
+  circles: { cap: L.maxPoints, what: 'circles', points: true },
+  index: { cap: L.maxAvoid, what: 'entries' },
+  target: { cap: 3 * L.maxAvoid, what: 'numbers' },
+};
+const MAX_KEYS = 64;
+
+interface CopyBudget {
+  nodes: number;
+  points: number;
+  /** Objects and arrays being copied (their ancestors): meeting one again is a cycle. */
+  open: Set<object>;
+}
+
+/** One own property's value, read from its descriptor so no getter runs; undefined when absent
+ *  (or, with `enumerable`, not enumerable: JSON.stringify leaves it out). */
+function ownValue(
+  o: object,
+  key: string,
+  path: string,
+  enumerable: boolean,
+): { value: unknown } | undefined {
+  const d = Reflect.getOwnPropertyDescriptor(o, key);
+  if (d === undefined || (enumerable && !d.enumerable)) return undefined;
+  if (!('value' in d)) fail(path, 'must be plain data (it is a getter or setter)');
+  return { value: d.value };
+}
+
+function isPlainObject(o: object): boolean {
+  const proto = Reflect.getPrototypeOf(o);
+  // Object.prototype of this realm or of another one (a frame's), or no prototype
+  return proto === null || proto === Object.prototype || Reflect.getPrototypeOf(proto) === null;
+}
+
+/** A plain copy of `v` (null-prototype records, arrays, primitives); undefined for undefined. */
+function copyPlain(
+  v: unknown,
+  path: string,
+  depth: number,
+  budget: CopyBudget,
+  cap?: Cap,
+): Plain | undefined {
+  if (++budget.nodes > L.maxNodes)
+    fail(path, `the input has more than ${L.maxNodes} values (the cap)`);
+  switch (typeof v) {
+    case 'undefined':
+      return undefined;
+    case 'boolean':
+      return v;
+    case 'number':
+      return v === 0 ? 0 : v; // -0 as JSON writes it
+    case 'string':
+      if (v.length > L.maxString) fail(path, `is longer than ${L.maxString} characters`);
+      return v;
+    case 'object':
+      break;
+    default:
+      fail(path, `must be JSON data, not a ${typeof v}`);
+  }
+  if (v === null) return null;
+  const o = v as object;
+  if (depth >= L.maxDepth) fail(path, `is nested deeper than ${L.maxDepth} levels`);
+  if (budget.open.has(o)) fail(path, 'refers to itself (a cycle)');
+  budget.open.add(o);
+  try {
+    if (Array.isArray(o)) {
+      const len = ownValue(o, 'length', path, false)?.value;
+      if (typeof len !== 'number') fail(path, 'must be an array');
+      const c = cap ?? { cap: SMALL_ARRAY, what: 'items' };
+      if (len > c.cap) fail(path, `has ${len} ${c.what}, more than ${c.cap} (the cap)`);
+      if (c.points) {
+        budget.points += len;
+        if (budget.points > L.maxSessionPoints)
+          fail(path, `brings the session over ${L.maxSessionPoints} points in all (the cap)`);
+      }
+      const out: Plain[] = new Array(len);
+      for (let i = 0; i < len; i++) {
+        const at = `${path}[${i}]`;
+        const d = ownValue(o, String(i), at, false);
+        if (d === undefined) fail(at, 'is missing (a hole in the array)');
+        const item = copyPlain(d.value, at, depth + 1, budget, c.items);
+        out[i] = item === undefined ? null : item; // as JSON writes undefined in an array
+      }
+      return out;
+    }
+    if (!isPlainObject(o)) fail(path, 'must be a plain object');
+    const keys = Reflect.ownKeys(o);
+    if (keys.length > MAX_KEYS) fail(path, `has more than ${MAX_KEYS} fields`);
+    const out: PlainRecord = Object.create(null);
+    for (const key of keys) {
+      if (typeof key !== 'string') continue; // a symbol key: not JSON
+      const at = `${path}.${key.length > 40 ? `${key.slice(0, 40)}…` : key}`;
+      const d = ownValue(o, key, at, true);
+      if (d === undefined) continue;
+      const item = copyPlain(
+        d.value,
+        at,
+        depth + 1,
+        budget,
+        Object.hasOwn(ARRAY_CAPS, key) ? ARRAY_CAPS[key] : undefined,
+      );
+      if (item !== undefined) out[key] = item;
+    }
+    return out;
+  } catch (e) {
+    if (isOurs(e)) throw e;
+    fail(path, 'could not be read (reading it threw)');
+  } finally {
+    budget.open.delete(o);
+  }
+}
+
+// ---- second pass: the session's rules, on the plain copy ---------------------------------------
+
+const BOX_LO = (m: number): Vec3 => [BOX_MIN[0] - m, BOX_MIN[1] - m, BOX_MIN[2] - m];
+const BOX_HI = (m: number): Vec3 => [BOX_MAX[0] + m, BOX_MAX[1] + m, BOX_MAX[2] + m];
+const CURVE_LO = BOX_LO(L.curveMargin);
+const CURVE_HI = BOX_HI(L.curveMargin);
+const VIEW_LO = BOX_LO(L.viewMargin);
+const VIEW_HI = BOX_HI(L.viewMargin);
+
+function record(v: Plain | undefined, path: string, known: readonly string[]): PlainRecord {
   if (typeof v !== 'object' || v === null || Array.isArray(v)) fail(path, 'must be an object');
-  return v as Record<string, unknown>;
+  for (const k in v)
+    if (!known.includes(k))
+      fail(
+        `${path}.${k.length > 40 ? `${k.slice(0, 40)}…` : k}`,
+        'is not a field hairsketch knows',
+      );
+  return v;
 }
 
-function num(v: unknown, path: string, min = -Infinity, max = Infinity): number {
+function array(v: Plain | undefined, path: string, what: string): Plain[] {
+  if (!Array.isArray(v)) fail(path, `must be an array of ${what}`);
+  return v;
+}
+
+function num(v: Plain | undefined, path: string, min = -Infinity, max = Infinity): number {
   if (typeof v !== 'number' || !Number.isFinite(v)) fail(path, 'must be a finite number');
   if (v < min || v > max) fail(path, `must be between ${min} and ${max}`);
   return v;
 }
 
-function bool(v: unknown, path: string): boolean {
+function int(v: Plain | undefined, path: string, min: number, max: number): number {
+  const n = num(v, path);
+  if (!Number.isInteger(n)) fail(path, `must be a whole number (from ${min} to ${max})`);
+  if (n < min || n > max) fail(path, `must be a whole number from ${min} to ${max}`);
+  return n;
+}
+
+function bool(v: Plain | undefined, path: string): boolean {
   if (typeof v !== 'boolean') fail(path, 'must be true or false');
   return v;
 }
 
-function vec3(v: unknown, path: string): Vec3 {
+function vec3(v: Plain | undefined, path: string): Vec3 {
   if (!Array.isArray(v) || v.length !== 3) fail(path, 'must be [x, y, z]');
   return [num(v[0], `${path}[0]`), num(v[1], `${path}[1]`), num(v[2], `${path}[2]`)];
 }
 
-function polyline(v: unknown, path: string, minPoints: number): Vec3[] {
-  if (!Array.isArray(v)) fail(path, 'must be an array of points');
-  if (v.length < minPoints) fail(path, `needs at least ${minPoints} points`);
-  if (v.length > MAX_POINTS) fail(path, `has more than ${MAX_POINTS} points`);
-  return v.map((p, i) => vec3(p, `${path}[${i}]`));
+/** A position within the box grown by `margin` on every side. */
+function position(v: Plain | undefined, path: string, lo: Vec3, hi: Vec3, margin: number): Vec3 {
+  const p = vec3(v, path);
+  for (let a = 0; a < 3; a++)
+    if (p[a] < lo[a] || p[a] > hi[a])
+      fail(
+        path,
+        `must be within the bounding volume (±${margin}): ${'xyz'[a]} from ${+lo[a].toFixed(4)} to ${+hi[a].toFixed(4)}`,
+      );
+  return p;
 }
 
-function viewpoint(v: unknown, path: string): Viewpoint {
-  const o = obj(v, path);
-  return {
-    position: vec3(o.position, `${path}.position`),
-    target: vec3(o.target, `${path}.target`),
-  };
+function unit(v: Plain | undefined, path: string): Vec3 {
+  const n = vec3(v, path);
+  const len = Math.hypot(n[0], n[1], n[2]);
+  if (!(Math.abs(len - 1) <= L.unitTolerance))
+    fail(
+      path,
+      `must be a unit vector (its length is ${+len.toPrecision(6)}, must be 1 ± ${L.unitTolerance})`,
+    );
+  return n;
+}
+
+/** Whether two positions are the same point on the position grid (quantize.ts). */
+function sameOnGrid(a: Vec3, b: Vec3): boolean {
+  for (let k = 0; k < 3; k++)
+    if (toGridInt(a[k], POSITION_SCALE) !== toGridInt(b[k], POSITION_SCALE)) return false;
+  return true;
+}
+
+/** A polyline of curve geometry: 2..maxPoints points in the volume, consecutive ones distinct. */
+function polyline(v: Plain | undefined, path: string): Vec3[] {
+  const a = array(v, path, 'points');
+  if (a.length < 2) fail(path, 'needs at least 2 points');
+  if (a.length > L.maxPoints) fail(path, `has more than ${L.maxPoints} points (the cap)`);
+  const out: Vec3[] = [];
+  for (let i = 0; i < a.length; i++) {
+    const p = position(a[i], `${path}[${i}]`, CURVE_LO, CURVE_HI, L.curveMargin);
+    if (i > 0 && sameOnGrid(p, out[i - 1]))
+      fail(
+        `${path}[${i}]`,
+        `repeats the point before it (consecutive points must differ on the ${L.positionStep} grid)`,
+      );
+    out.push(p);
+  }
+  return out;
+}
+
+function viewpoint(v: Plain | undefined, path: string): Viewpoint {
+  const o = record(v, path, ['position', 'target']);
+  const p = position(o.position, `${path}.position`, VIEW_LO, VIEW_HI, L.viewMargin);
+  const t = position(o.target, `${path}.target`, VIEW_LO, VIEW_HI, L.viewMargin);
+  if (sameOnGrid(p, t))
+    fail(
+      path,
+      `position and target must differ (on the ${L.positionStep} grid): no view direction`,
+    );
+  return { position: p, target: t };
 }
 
 /** A curve kind's scalar parameters (protocol.ts CURVE_PARAMS): each finite and within its
  *  range; a curve saved without one (made before it existed) gets its default. */
 function scalars<K extends CurveKindName>(
-  o: Record<string, unknown>,
+  o: PlainRecord,
   kind: K,
   path: string,
 ): CurveParamValues<K> {
@@ -78,137 +362,229 @@ function scalars<K extends CurveKindName>(
   return out as CurveParamValues<K>;
 }
 
-function curve(v: unknown, path: string): StyleCurve {
-  const o = obj(v, path);
+const paramNames = (k: CurveKindName): string[] =>
+  (CURVE_PARAMS[k] as readonly CurveParamSpec[]).map((p) => p.name);
+const CURVE_FIELDS = {
+  stream: ['id', 'type', 'points', 'extend', 'viewpoint', 'surfaceMode', ...paramNames('stream')],
+  dividing: ['id', 'type', 'points', 'normals', 'viewpoint', ...paramNames('dividing')],
+  ponytail: [
+    'id',
+    'type',
+    'points',
+    'extend',
+    'viewpoint',
+    'crossSection',
+    'profiles',
+    'circles',
+    ...paramNames('ponytail'),
+  ],
+} as const satisfies Record<CurveKindName, readonly string[]>;
+
+function curve(v: Plain, path: string): StyleCurve {
+  if (typeof v !== 'object' || v === null || Array.isArray(v)) fail(path, 'must be an object');
+  const type = v.type;
+  if (type !== 'stream' && type !== 'dividing' && type !== 'ponytail')
+    fail(`${path}.type`, 'must be "stream", "dividing" or "ponytail"');
+  const o = record(v, path, CURVE_FIELDS[type]);
   if (typeof o.id !== 'string' || !/^[A-Za-z0-9_~-]{1,32}$/.test(o.id))
-    fail(`${path}.id`, 'must be a short identifier');
+    fail(`${path}.id`, 'must be a short identifier (1 to 32 of A-Z a-z 0-9 _ ~ -)');
   const id = o.id;
-  const points = polyline(o.points, `${path}.points`, 2);
-  const vp = viewpoint(o.viewpoint, `${path}.viewpoint`);
-  switch (o.type) {
+  const points = polyline(o.points, `${path}.points`);
+  switch (type) {
     case 'stream': {
+      const extend = bool(o.extend, `${path}.extend`);
+      const vp = viewpoint(o.viewpoint, `${path}.viewpoint`);
       const mode = o.surfaceMode;
       if (mode !== undefined && mode !== 'ruled' && mode !== 'strip')
         fail(`${path}.surfaceMode`, 'must be "ruled" or "strip"');
       return {
         id,
-        type: 'stream',
+        type,
         points,
-        extend: bool(o.extend, `${path}.extend`),
+        extend,
         viewpoint: vp,
-        ...(mode ? { surfaceMode: mode } : {}),
+        ...(mode === undefined ? {} : { surfaceMode: mode }),
         ...scalars(o, 'stream', path),
       };
     }
     case 'dividing': {
-      const normals = polyline(o.normals, `${path}.normals`, points.length);
-      if (normals.length !== points.length)
-        fail(`${path}.normals`, 'must have one normal per point');
-      return {
-        id,
-        type: 'dividing',
-        points,
-        normals,
-        viewpoint: vp,
-        ...scalars(o, 'dividing', path),
-      };
+      const n = array(o.normals, `${path}.normals`, 'normals');
+      if (n.length !== points.length)
+        fail(
+          `${path}.normals`,
+          `must have one normal per point (${points.length}), has ${n.length}`,
+        );
+      const normals = n.map((x, i) => unit(x, `${path}.normals[${i}]`));
+      const vp = viewpoint(o.viewpoint, `${path}.viewpoint`);
+      return { id, type, points, normals, viewpoint: vp, ...scalars(o, 'dividing', path) };
     }
     case 'ponytail': {
-      if (!Array.isArray(o.profiles) || o.profiles.length !== 2)
-        fail(`${path}.profiles`, 'must hold two profile strokes');
-      if (!Array.isArray(o.circles) || o.circles.length > MAX_POINTS)
-        fail(`${path}.circles`, 'must be an array of circles');
+      const extend = bool(o.extend, `${path}.extend`);
+      const vp = viewpoint(o.viewpoint, `${path}.viewpoint`);
+      const crossSection = polyline(o.crossSection, `${path}.crossSection`);
+      const pr = array(o.profiles, `${path}.profiles`, 'profile strokes');
+      if (pr.length !== 2)
+        fail(`${path}.profiles`, `must hold two profile strokes, has ${pr.length}`);
+      const profiles: [Vec3[], Vec3[]] = [
+        polyline(pr[0], `${path}.profiles[0]`),
+        polyline(pr[1], `${path}.profiles[1]`),
+      ];
+      const cs = array(o.circles, `${path}.circles`, 'circles');
+      if (cs.length < 1) fail(`${path}.circles`, 'needs at least 1 circle');
+      if (cs.length > points.length)
+        fail(
+          `${path}.circles`,
+          `has ${cs.length} circles, more than its ${points.length} spine points (the cap)`,
+        );
+      const circles: PonytailCircle[] = [];
+      for (let i = 0; i < cs.length; i++) {
+        const at = `${path}.circles[${i}]`;
+        const q = record(cs[i], at, ['centre', 'axis', 'radius', 'spineIndex']);
+        const centre = position(q.centre, `${at}.centre`, CURVE_LO, CURVE_HI, L.curveMargin);
+        const axis = unit(q.axis, `${at}.axis`);
+        const radius = num(q.radius, `${at}.radius`, 0, L.maxRadius);
+        if (toGridInt(radius, POSITION_SCALE) === 0)
+          fail(
+            `${at}.radius`,
+            `must be greater than 0 (at least ${L.positionStep / 2}, at most ${L.maxRadius})`,
+          );
+        const spineIndex = int(q.spineIndex, `${at}.spineIndex`, 0, points.length - 1);
+        if (i > 0 && spineIndex <= circles[i - 1].spineIndex)
+          fail(
+            `${at}.spineIndex`,
+            "must be greater than the previous circle's (C1 first, in spine order)",
+          );
+        circles.push({ centre, axis, radius, spineIndex });
+      }
       return {
         id,
-        type: 'ponytail',
+        type,
         points,
-        extend: bool(o.extend, `${path}.extend`),
+        extend,
         viewpoint: vp,
-        crossSection: polyline(o.crossSection, `${path}.crossSection`, 0),
-        profiles: [
-          polyline(o.profiles[0], `${path}.profiles[0]`, 0),
-          polyline(o.profiles[1], `${path}.profiles[1]`, 0),
-        ],
-        circles: o.circles.map((c, i) => {
-          const q = obj(c, `${path}.circles[${i}]`);
-          return {
-            centre: vec3(q.centre, `${path}.circles[${i}].centre`),
-            axis: vec3(q.axis, `${path}.circles[${i}].axis`),
-            radius: num(q.radius, `${path}.circles[${i}].radius`, 0, 100),
-            spineIndex: num(q.spineIndex, `${path}.circles[${i}].spineIndex`, 0, MAX_POINTS),
-          };
-        }),
+        crossSection,
+        profiles,
+        circles,
         ...scalars(o, 'ponytail', path),
       };
     }
-    default:
-      fail(`${path}.type`, 'must be "stream", "dividing" or "ponytail"');
   }
 }
 
-function growth(v: unknown, path: string): GrowthParams {
-  const o = obj(v, path);
-  const g = { ...DEFAULT_GROWTH };
-  const limits: Record<keyof GrowthParams, [number, number]> = {
-    thetaStepDeg: [0.1, 30],
-    phiStepDeg: [0.1, 30],
-    jitter: [0, 1],
-    seed: [0, 2 ** 32 - 1],
-    stepFraction: [0.05, 4],
-    minMagnitude: [0, 1],
-    maxLength: [0.01, 100],
-    maxSegments: [1, 10_000],
-    maxStrands: [0, 1_000_000],
-  };
-  for (const key of Object.keys(limits) as (keyof GrowthParams)[])
-    if (o[key] !== undefined) g[key] = num(o[key], `${path}.${key}`, ...limits[key]);
+/** growth: each field within its range; integers where counts and seeds are meant; a field
+ *  left out (sessions made before it) takes its default. */
+const GROWTH_RULES: Record<keyof GrowthParams, { min: number; max: number; integer?: boolean }> = {
+  thetaStepDeg: { min: 0.1, max: 30 },
+  phiStepDeg: { min: 0.1, max: 30 },
+  jitter: { min: 0, max: 1 },
+  seed: { min: 0, max: 2 ** 32 - 1, integer: true },
+  stepFraction: { min: 0.05, max: 4 },
+  minMagnitude: { min: 0, max: 1 },
+  maxLength: { min: 0.01, max: 100 },
+  maxSegments: { min: 1, max: L.maxSegments, integer: true },
+  maxStrands: { min: 0, max: L.maxStrands, integer: true },
+};
+const GROWTH_KEYS = Object.keys(DEFAULT_GROWTH) as (keyof GrowthParams)[];
+
+/** Root directions the engine samples for these steps (solver-cpp scalp_roots.cpp). */
+export function rootSamples(thetaStepDeg: number, phiStepDeg: number): number {
+  const nT = Math.max(1, Math.ceil(180 / thetaStepDeg - 1e-9));
+  const nP = Math.max(1, Math.ceil(360 / phiStepDeg - 1e-9));
+  return nT * nP;
+}
+
+function growth(v: Plain | undefined, path: string): GrowthParams {
+  if (v === undefined) return { ...DEFAULT_GROWTH };
+  const o = record(v, path, GROWTH_KEYS);
+  const g = {} as GrowthParams;
+  for (const key of GROWTH_KEYS) {
+    const r = GROWTH_RULES[key];
+    g[key] =
+      o[key] === undefined
+        ? DEFAULT_GROWTH[key]
+        : r.integer
+          ? int(o[key], `${path}.${key}`, r.min, r.max)
+          : num(o[key], `${path}.${key}`, r.min, r.max);
+  }
+  const roots = rootSamples(g.thetaStepDeg, g.phiStepDeg);
+  if (roots > L.maxRootSamples)
+    fail(
+      path,
+      `thetaStepDeg ${g.thetaStepDeg} and phiStepDeg ${g.phiStepDeg} sample ${roots} root directions, more than ${L.maxRootSamples} (the cap)`,
+    );
   return g;
 }
 
-/** Reads a session from untrusted JSON-able data. */
+function avoid(v: Plain | undefined, path: string, grid: GridPreset): ExtraConstraints | null {
+  if (v === undefined || v === null) return null;
+  const a = record(v, path, ['index', 'target']);
+  const index = array(a.index, `${path}.index`, 'grid indices');
+  const target = array(a.target, `${path}.target`, 'numbers');
+  if (index.length > L.maxAvoid)
+    fail(`${path}.index`, `has more than ${L.maxAvoid} constraints (the cap)`);
+  if (target.length !== 3 * index.length)
+    fail(
+      `${path}.target`,
+      `must hold 3 numbers per index (${3 * index.length}), has ${target.length}`,
+    );
+  const points = gridPointCount(gridForPreset(grid));
+  return {
+    index: index.map((x, i) => int(x, `${path}.index[${i}]`, 0, points - 1)),
+    target: target.map((x, i) =>
+      num(x, `${path}.target[${i}]`, -L.maxAvoidTarget, L.maxAvoidTarget),
+    ),
+  };
+}
+
+const SESSION_FIELDS = ['version', 'head', 'grid', 'curves', 'growth', 'hairColor', 'avoid'];
+/** Written beside the session by "Save" (camera) and the test hook (camera, selected); the
+ *  reader leaves them out of the session (app/sessionIO.ts reads the saved camera). */
+const SIDE_FIELDS = ['camera', 'selected'];
+
+function session(o: PlainRecord): SessionState {
+  record(o, 'session', [...SESSION_FIELDS, ...SIDE_FIELDS]);
+  if (o.head !== undefined && o.head !== 'builtin') fail('session.head', 'must be "builtin"');
+  if (o.grid !== undefined && (typeof o.grid !== 'string' || !isGridPreset(o.grid)))
+    fail('session.grid', 'must be 25k, 50k, 100k or 250k');
+  const grid: GridPreset = o.grid ?? '25k';
+  const cs = array(o.curves, 'session.curves', 'curves');
+  if (cs.length > L.maxCurves)
+    fail('session.curves', `has more than ${L.maxCurves} curves (the cap)`);
+  const curves: StyleCurve[] = [];
+  const ids = new Set<string>();
+  for (let i = 0; i < cs.length; i++) {
+    const c = curve(cs[i], `session.curves[${i}]`);
+    if (ids.has(c.id))
+      fail(`session.curves[${i}].id`, `"${c.id}" is used by an earlier curve (ids must be unique)`);
+    ids.add(c.id);
+    curves.push(c);
+  }
+  const g = growth(o.growth, 'session.growth');
+  const hairColor = o.hairColor ?? DEFAULT_HAIR_COLOR;
+  if (typeof hairColor !== 'string' || !/^#[0-9a-fA-F]{6}$/.test(hairColor))
+    fail('session.hairColor', 'must be a colour like #5a3825');
+  return {
+    version: SESSION_VERSION,
+    head: 'builtin',
+    grid,
+    curves,
+    growth: g,
+    hairColor,
+    avoid: avoid(o.avoid, 'session.avoid', grid),
+  };
+}
+
+/** Reads a session from untrusted data (JSON, or any value a caller hands over); never throws. */
 export function parseSession(v: unknown): Parsed<SessionState> {
   try {
-    const o = obj(v, 'session');
-    if (o.version !== 1) fail('session.version', 'must be 1');
-    if (o.grid !== undefined && (typeof o.grid !== 'string' || !isGridPreset(o.grid)))
-      fail('session.grid', 'must be 25k, 50k, 100k or 250k');
-    if (!Array.isArray(o.curves)) fail('session.curves', 'must be an array');
-    if (o.curves.length > MAX_CURVES) fail('session.curves', `has more than ${MAX_CURVES} curves`);
-    const curves = o.curves.map((c, i) => curve(c, `session.curves[${i}]`));
-    if (new Set(curves.map((c) => c.id)).size !== curves.length)
-      fail('session.curves', 'curve ids must be unique');
-    const hairColor = o.hairColor ?? '#5a3825';
-    if (typeof hairColor !== 'string' || !/^#[0-9a-fA-F]{6}$/.test(hairColor))
-      fail('session.hairColor', 'must be a colour like #5a3825');
-    let avoid: SessionState['avoid'] = null;
-    if (o.avoid !== undefined && o.avoid !== null) {
-      const a = obj(o.avoid, 'session.avoid');
-      if (
-        !Array.isArray(a.index) ||
-        !Array.isArray(a.target) ||
-        a.target.length !== 3 * a.index.length
-      )
-        fail('session.avoid', 'needs index[] and target[] with 3 numbers per index');
-      if (a.index.length > MAX_EXTRA) fail('session.avoid', `has more than ${MAX_EXTRA} entries`);
-      avoid = {
-        index: a.index.map((x, i) => num(x, `session.avoid.index[${i}]`, 0, 2 ** 31 - 1)),
-        target: a.target.map((x, i) => num(x, `session.avoid.target[${i}]`)),
-      };
-    }
-    return {
-      ok: true,
-      value: {
-        version: 1,
-        head: 'builtin',
-        grid: (o.grid as SessionState['grid'] | undefined) ?? '25k',
-        curves,
-        growth: o.growth === undefined ? { ...DEFAULT_GROWTH } : growth(o.growth, 'session.growth'),
-        hairColor,
-        avoid,
-      },
-    };
+    const copy = copyPlain(v, 'session', 0, { nodes: 0, points: 0, open: new Set() });
+    if (typeof copy !== 'object' || copy === null || Array.isArray(copy))
+      fail('session', 'must be an object');
+    const migrated = migrateSession(copy);
+    if (!migrated.ok) return migrated;
+    return { ok: true, value: session(migrated.value) };
   } catch (e) {
-    if (e instanceof ParseError) return { ok: false, error: e.message };
-    throw e;
+    if (isOurs(e)) return { ok: false, error: e.message };
+    return { ok: false, error: 'session: could not be read (reading it threw)' };
   }
 }
