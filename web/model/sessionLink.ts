@@ -1,7 +1,10 @@
 // Share links: a session in the address bar's fragment, URL-safe characters only, no line breaks.
 //
-//   #s=2.<base64url(deflate-raw(body))>   version 2 (written): a binary layout, below
+//   #s=2.<base64url(varint n + deflate-raw(body), n bytes)>   version 2 (written): below
 //   #s=<base64url(deflate-raw(JSON))>     version 1 (still read): the session JSON, numbers to 1e-5
+//
+// Version 2 states the deflated length n up front, so a link cut short or with characters added
+// (a chat client's doing) is named as such before anything is inflated.
 //
 // Version 2 stores every number as an integer on the grid of quantize.ts, so a session the
 // editor made (already on that grid) reopens deep-equal, and grows the same hair. The body:
@@ -47,7 +50,7 @@ import { type Parsed, parseSession } from './sessionFile';
 import type { Vec3 } from './vec3';
 
 /** Inflated size cap (bytes), enforced while inflating. */
-export const MAX_LINK_BYTES = 16 << 20;
+export const MAX_LINK_BYTES = 8 << 20;
 /** Characters in the fragment, checked before decoding. */
 export const MAX_LINK_CHARS = 2_000_000;
 
@@ -137,7 +140,7 @@ const CRC_TABLE = (() => {
   return t;
 })();
 
-function crc32(bytes: Uint8Array): number {
+export function crc32(bytes: Uint8Array): number {
   let c = 0xffffffff;
   for (let i = 0; i < bytes.length; i++) c = CRC_TABLE[(c ^ bytes[i]) & 0xff] ^ (c >>> 8);
   return (c ^ 0xffffffff) >>> 0;
@@ -363,7 +366,11 @@ export function packSession(s: SessionState): Uint8Array {
 
 /** The link fragment for a session (without '#'): `s=2.` + base64url(deflate-raw(body)). */
 export async function encodeSessionLink(s: SessionState): Promise<string> {
-  return `s=2.${toBase64Url(await deflate(packSession(s)))}`;
+  const deflated = await deflate(packSession(s));
+  const w = new Writer();
+  w.varint(deflated.length);
+  w.bytes(deflated);
+  return `s=2.${toBase64Url(w.done())}`;
 }
 
 /** The version 1 fragment (`s=` + base64url(deflate-raw(JSON)), numbers to 1e-5), as links were
@@ -595,8 +602,22 @@ export async function decodeSessionLink(fragment: string): Promise<Parsed<Sessio
       ok: false,
       error: `the session link is version ${m[1].slice(0, 12)}; this app opens versions 1 and 2`,
     };
-  const packed = fromBase64Url(m[2]);
+  if (/^[A-Za-z0-9_-]*$/.test(m[2]) && m[2].length % 4 === 1)
+    return damaged('a character too many or too few: cut short?');
+  let packed = fromBase64Url(m[2]);
   if (!packed || packed.length === 0) return damaged('not base64url');
+  if (version === 2) {
+    const r = new Reader(packed);
+    let n: number;
+    try {
+      n = r.varint();
+    } catch {
+      return damaged('it is cut short');
+    }
+    if (r.left < n) return damaged(`it is cut short (${r.left} of ${n} bytes)`);
+    if (r.left > n) return damaged(`it has ${r.left - n} bytes too many at the end`);
+    packed = packed.subarray(r.at);
+  }
   const inflated = await inflateCapped(packed, MAX_LINK_BYTES);
   if (inflated === 'too large') return { ok: false, error: 'the session link is too large' };
   if (inflated === 'damaged') return damaged('it does not inflate');
