@@ -138,6 +138,16 @@ interface CopyBudget {
   points: number;
   /** Objects and arrays being copied (their ancestors): meeting one again is a cycle. */
   open: Set<object>;
+  /** Where the copy is: keys and indices below `session` (made a string only for a message). */
+  at: (string | number)[];
+}
+
+const keyText = (k: string) => (k.length > 40 ? `${k.slice(0, 40)}…` : k);
+
+function where(b: CopyBudget): string {
+  let s = 'session';
+  for (const k of b.at) s += typeof k === 'number' ? `[${k}]` : `.${keyText(k)}`;
+  return s;
 }
 
 /** One own property's value, read from its descriptor so no getter runs; undefined when absent
@@ -145,13 +155,13 @@ interface CopyBudget {
 function ownValue(
   o: object,
   key: string,
-  path: string,
+  b: CopyBudget,
   enumerable: boolean,
 ): { value: unknown } | undefined {
   const d = Reflect.getOwnPropertyDescriptor(o, key);
   if (d === undefined || (enumerable && !d.enumerable)) return undefined;
-  if (!('value' in d)) fail(path, 'must be plain data (it is a getter or setter)');
-  return { value: d.value };
+  if (!('value' in d)) fail(where(b), 'must be plain data (it is a getter or setter)');
+  return d as { value: unknown };
 }
 
 function isPlainObject(o: object): boolean {
@@ -161,15 +171,9 @@ function isPlainObject(o: object): boolean {
 }
 
 /** A plain copy of `v` (null-prototype records, arrays, primitives); undefined for undefined. */
-function copyPlain(
-  v: unknown,
-  path: string,
-  depth: number,
-  budget: CopyBudget,
-  cap?: Cap,
-): Plain | undefined {
-  if (++budget.nodes > L.maxNodes)
-    fail(path, `the input has more than ${L.maxNodes} values (the cap)`);
+function copyPlain(v: unknown, b: CopyBudget, cap?: Cap): Plain | undefined {
+  if (++b.nodes > L.maxNodes)
+    fail(where(b), `the input has more than ${L.maxNodes} values (the cap)`);
   switch (typeof v) {
     case 'undefined':
       return undefined;
@@ -178,63 +182,66 @@ function copyPlain(
     case 'number':
       return v === 0 ? 0 : v; // -0 as JSON writes it
     case 'string':
-      if (v.length > L.maxString) fail(path, `is longer than ${L.maxString} characters`);
+      if (v.length > L.maxString) fail(where(b), `is longer than ${L.maxString} characters`);
       return v;
     case 'object':
       break;
     default:
-      fail(path, `must be JSON data, not a ${typeof v}`);
+      fail(where(b), `must be JSON data, not a ${typeof v}`);
   }
   if (v === null) return null;
   const o = v as object;
-  if (depth >= L.maxDepth) fail(path, `is nested deeper than ${L.maxDepth} levels`);
-  if (budget.open.has(o)) fail(path, 'refers to itself (a cycle)');
-  budget.open.add(o);
+  if (b.at.length >= L.maxDepth) fail(where(b), `is nested deeper than ${L.maxDepth} levels`);
+  if (b.open.has(o)) fail(where(b), 'refers to itself (a cycle)');
+  b.open.add(o);
+  const depth = b.at.length;
   try {
     if (Array.isArray(o)) {
-      const len = ownValue(o, 'length', path, false)?.value;
-      if (typeof len !== 'number') fail(path, 'must be an array');
+      const len = ownValue(o, 'length', b, false)?.value;
+      if (typeof len !== 'number') fail(where(b), 'must be an array');
       const c = cap ?? { cap: SMALL_ARRAY, what: 'items' };
-      if (len > c.cap) fail(path, `has ${len} ${c.what}, more than ${c.cap} (the cap)`);
+      if (len > c.cap) fail(where(b), `has ${len} ${c.what}, more than ${c.cap} (the cap)`);
       if (c.points) {
-        budget.points += len;
-        if (budget.points > L.maxSessionPoints)
-          fail(path, `brings the session over ${L.maxSessionPoints} points in all (the cap)`);
+        b.points += len;
+        if (b.points > L.maxSessionPoints)
+          fail(where(b), `brings the session over ${L.maxSessionPoints} points in all (the cap)`);
       }
       const out: Plain[] = new Array(len);
       for (let i = 0; i < len; i++) {
-        const at = `${path}[${i}]`;
-        const d = ownValue(o, String(i), at, false);
-        if (d === undefined) fail(at, 'is missing (a hole in the array)');
-        const item = copyPlain(d.value, at, depth + 1, budget, c.items);
+        b.at.push(i);
+        const d = ownValue(o, String(i), b, false);
+        if (d === undefined) fail(where(b), 'is missing (a hole in the array)');
+        const item = copyPlain(d.value, b, c.items);
         out[i] = item === undefined ? null : item; // as JSON writes undefined in an array
+        b.at.pop();
       }
       return out;
     }
-    if (!isPlainObject(o)) fail(path, 'must be a plain object');
+    if (!isPlainObject(o)) fail(where(b), 'must be a plain object');
     const keys = Reflect.ownKeys(o);
-    if (keys.length > MAX_KEYS) fail(path, `has more than ${MAX_KEYS} fields`);
+    if (keys.length > MAX_KEYS) fail(where(b), `has more than ${MAX_KEYS} fields`);
     const out: PlainRecord = Object.create(null);
     for (const key of keys) {
       if (typeof key !== 'string') continue; // a symbol key: not JSON
-      const at = `${path}.${key.length > 40 ? `${key.slice(0, 40)}…` : key}`;
-      const d = ownValue(o, key, at, true);
-      if (d === undefined) continue;
-      const item = copyPlain(
-        d.value,
-        at,
-        depth + 1,
-        budget,
-        Object.hasOwn(ARRAY_CAPS, key) ? ARRAY_CAPS[key] : undefined,
-      );
-      if (item !== undefined) out[key] = item;
+      b.at.push(key);
+      const d = ownValue(o, key, b, true);
+      if (d !== undefined) {
+        const item = copyPlain(
+          d.value,
+          b,
+          Object.hasOwn(ARRAY_CAPS, key) ? ARRAY_CAPS[key] : undefined,
+        );
+        if (item !== undefined) out[key] = item;
+      }
+      b.at.pop();
     }
     return out;
   } catch (e) {
     if (isOurs(e)) throw e;
-    fail(path, 'could not be read (reading it threw)');
+    b.at.length = depth; // the message names this value, not the item being read when it threw
+    fail(where(b), 'could not be read (reading it threw)');
   } finally {
-    budget.open.delete(o);
+    b.open.delete(o);
   }
 }
 
@@ -250,11 +257,7 @@ const VIEW_HI = BOX_HI(L.viewMargin);
 function record(v: Plain | undefined, path: string, known: readonly string[]): PlainRecord {
   if (typeof v !== 'object' || v === null || Array.isArray(v)) fail(path, 'must be an object');
   for (const k in v)
-    if (!known.includes(k))
-      fail(
-        `${path}.${k.length > 40 ? `${k.slice(0, 40)}…` : k}`,
-        'is not a field hairsketch knows',
-      );
+    if (!known.includes(k)) fail(`${path}.${keyText(k)}`, 'is not a field hairsketch knows');
   return v;
 }
 
@@ -298,6 +301,14 @@ function position(v: Plain | undefined, path: string, lo: Vec3, hi: Vec3, margin
   return p;
 }
 
+/** [x, y, z] when `v` is a unit vector within the tolerance, else null (no strings made). */
+function unitFast(v: Plain | undefined): Vec3 | null {
+  if (!Array.isArray(v) || v.length !== 3) return null;
+  const [x, y, z] = v;
+  if (typeof x !== 'number' || typeof y !== 'number' || typeof z !== 'number') return null;
+  return Math.abs(Math.hypot(x, y, z) - 1) <= L.unitTolerance ? [x, y, z] : null;
+}
+
 function unit(v: Plain | undefined, path: string): Vec3 {
   const n = vec3(v, path);
   const len = Math.hypot(n[0], n[1], n[2]);
@@ -316,20 +327,34 @@ function sameOnGrid(a: Vec3, b: Vec3): boolean {
   return true;
 }
 
+/** A finite [x, y, z] within lo..hi (the fast path: no message strings unless it fails). */
+function inside(v: Plain | undefined, lo: Vec3, hi: Vec3): v is [number, number, number] {
+  if (!Array.isArray(v) || v.length !== 3) return false;
+  for (let k = 0; k < 3; k++) {
+    const x = v[k];
+    // NaN fails both comparisons; ±Infinity is outside every box
+    if (typeof x !== 'number' || !(x >= lo[k] && x <= hi[k])) return false;
+  }
+  return true;
+}
+
 /** A polyline of curve geometry: 2..maxPoints points in the volume, consecutive ones distinct. */
 function polyline(v: Plain | undefined, path: string): Vec3[] {
   const a = array(v, path, 'points');
   if (a.length < 2) fail(path, 'needs at least 2 points');
   if (a.length > L.maxPoints) fail(path, `has more than ${L.maxPoints} points (the cap)`);
-  const out: Vec3[] = [];
+  const out: Vec3[] = new Array(a.length);
   for (let i = 0; i < a.length; i++) {
-    const p = position(a[i], `${path}[${i}]`, CURVE_LO, CURVE_HI, L.curveMargin);
+    const q = a[i];
+    const p: Vec3 = inside(q, CURVE_LO, CURVE_HI)
+      ? [q[0], q[1], q[2]]
+      : position(q, `${path}[${i}]`, CURVE_LO, CURVE_HI, L.curveMargin);
     if (i > 0 && sameOnGrid(p, out[i - 1]))
       fail(
         `${path}[${i}]`,
         `repeats the point before it (consecutive points must differ on the ${L.positionStep} grid)`,
       );
-    out.push(p);
+    out[i] = p;
   }
   return out;
 }
@@ -414,7 +439,7 @@ function curve(v: Plain, path: string): StyleCurve {
           `${path}.normals`,
           `must have one normal per point (${points.length}), has ${n.length}`,
         );
-      const normals = n.map((x, i) => unit(x, `${path}.normals[${i}]`));
+      const normals = n.map((x, i) => unitFast(x) ?? unit(x, `${path}.normals[${i}]`));
       const vp = viewpoint(o.viewpoint, `${path}.viewpoint`);
       return { id, type, points, normals, viewpoint: vp, ...scalars(o, 'dividing', path) };
     }
@@ -528,12 +553,22 @@ function avoid(v: Plain | undefined, path: string, grid: GridPreset): ExtraConst
       `must hold 3 numbers per index (${3 * index.length}), has ${target.length}`,
     );
   const points = gridPointCount(gridForPreset(grid));
-  return {
-    index: index.map((x, i) => int(x, `${path}.index[${i}]`, 0, points - 1)),
-    target: target.map((x, i) =>
-      num(x, `${path}.target[${i}]`, -L.maxAvoidTarget, L.maxAvoidTarget),
-    ),
-  };
+  const outIndex: number[] = new Array(index.length);
+  for (let i = 0; i < index.length; i++) {
+    const x = index[i];
+    outIndex[i] =
+      typeof x === 'number' && Number.isInteger(x) && x >= 0 && x < points
+        ? x
+        : int(x, `${path}.index[${i}]`, 0, points - 1);
+  }
+  const m = L.maxAvoidTarget;
+  const outTarget: number[] = new Array(target.length);
+  for (let i = 0; i < target.length; i++) {
+    const x = target[i];
+    outTarget[i] =
+      typeof x === 'number' && x >= -m && x <= m ? x : num(x, `${path}.target[${i}]`, -m, m);
+  }
+  return { index: outIndex, target: outTarget };
 }
 
 const SESSION_FIELDS = ['version', 'head', 'grid', 'curves', 'growth', 'hairColor', 'avoid'];
@@ -577,7 +612,7 @@ function session(o: PlainRecord): SessionState {
 /** Reads a session from untrusted data (JSON, or any value a caller hands over); never throws. */
 export function parseSession(v: unknown): Parsed<SessionState> {
   try {
-    const copy = copyPlain(v, 'session', 0, { nodes: 0, points: 0, open: new Set() });
+    const copy = copyPlain(v, { nodes: 0, points: 0, open: new Set(), at: [] });
     if (typeof copy !== 'object' || copy === null || Array.isArray(copy))
       fail('session', 'must be an object');
     const migrated = migrateSession(copy);
