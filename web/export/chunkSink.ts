@@ -1,5 +1,6 @@
 // Shared by the export writers: chunked output (text and little-endian binary) and the one
 // number format of the text formats.
+import type { ExportStrands } from './strandsForExport';
 
 /** No chunk a writer yields is larger than this (1 MiB). */
 export const CHUNK_BYTES = 1 << 20;
@@ -182,5 +183,34 @@ export class BinarySink {
   *end(): Generator<Uint8Array> {
     this.flush();
     yield* this.drain();
+  }
+}
+
+/** Strands per batch when writing per-point arrays (a progress report and a drain after each). */
+const STRAND_BATCH = 4096;
+
+/** Writes one per-point float32 array of the exported strands, in batches of strands:
+ *  'points' (x, y, z), 'widths', or 'colors' (each strand's colour at each of its points). */
+export function* writeStrandFloats(
+  out: BinarySink,
+  strands: ExportStrands,
+  what: 'points' | 'widths' | 'colors',
+  report: () => void,
+): Generator<Uint8Array> {
+  const { strandStart, points, widths, colors } = strands;
+  const n = strandStart.length - 1;
+  for (let s0 = 0; s0 < n; s0 += STRAND_BATCH) {
+    const s1 = Math.min(n, s0 + STRAND_BATCH);
+    if (what === 'points') out.f32s(points, 3 * strandStart[s0], 3 * strandStart[s1]);
+    else if (what === 'widths') out.f32s(widths, strandStart[s0], strandStart[s1]);
+    else
+      for (let s = s0; s < s1; s++)
+        for (let q = strandStart[s]; q < strandStart[s + 1]; q++) {
+          out.f32(colors[3 * s]);
+          out.f32(colors[3 * s + 1]);
+          out.f32(colors[3 * s + 2]);
+        }
+    report();
+    yield* out.drain();
   }
 }

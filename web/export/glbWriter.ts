@@ -5,7 +5,7 @@
 // app's unit is 10 cm), so positions and widths stay in app units inside the meshes. The session
 // is in asset.extras.hairsketch.session. All lengths are computed first; the BIN chunk is then
 // written in pieces.
-import { BinarySink, type Progress } from './chunkSink';
+import { BinarySink, type Progress, writeStrandFloats } from './chunkSink';
 import type { ExportStrands } from './strandsForExport';
 import { type ExportInput, METERS_PER_UNIT } from './types';
 
@@ -54,7 +54,7 @@ export function* writeGlb(
   input: ExportInput,
   progress: Progress,
 ): Generator<Uint8Array> {
-  const { points, strandStart, widths, colors } = strands;
+  const { strandStart, widths } = strands;
   const n = strandStart.length - 1;
   const p = widths.length;
   const head = input.head && input.head.indices.length >= 3 ? input.head : null;
@@ -186,33 +186,9 @@ export function* writeGlb(
   out.u32(CHUNK_BIN);
 
   if (n > 0) {
-    for (let s0 = 0; s0 < n; s0 += BATCH) {
-      const s1 = Math.min(n, s0 + BATCH);
-      out.f32s(points, 3 * strandStart[s0], 3 * strandStart[s1]);
-      report();
-      yield* out.drain();
-    }
-    for (let s0 = 0; s0 < n; s0 += BATCH) {
-      const s1 = Math.min(n, s0 + BATCH);
-      for (let s = s0; s < s1; s++) {
-        const r = colors[3 * s];
-        const g = colors[3 * s + 1];
-        const b = colors[3 * s + 2];
-        for (let q = strandStart[s]; q < strandStart[s + 1]; q++) {
-          out.f32(r);
-          out.f32(g);
-          out.f32(b);
-        }
-      }
-      report();
-      yield* out.drain();
-    }
-    for (let s0 = 0; s0 < n; s0 += BATCH) {
-      const s1 = Math.min(n, s0 + BATCH);
-      out.f32s(widths, strandStart[s0], strandStart[s1]);
-      report();
-      yield* out.drain();
-    }
+    yield* writeStrandFloats(out, strands, 'points', report);
+    yield* writeStrandFloats(out, strands, 'colors', report);
+    yield* writeStrandFloats(out, strands, 'widths', report);
     for (let s0 = 0; s0 < n; s0 += BATCH) {
       const s1 = Math.min(n, s0 + BATCH);
       for (let s = s0; s < s1; s++)

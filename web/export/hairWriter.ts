@@ -2,7 +2,7 @@
 // segments uint16[N] (points − 1 per strand), points float32[3P], thickness float32[P] (the
 // diameter, = the USD width) and colours float32[3P] (linear RGB, the strand's colour at each of
 // its points). No transparency array.
-import { BinarySink, type Progress } from './chunkSink';
+import { BinarySink, type Progress, writeStrandFloats } from './chunkSink';
 import { type ExportStrands, parseHexColor, srgbToLinear } from './strandsForExport';
 import { type ExportInput, ROOT_WIDTH } from './types';
 
@@ -27,7 +27,7 @@ export function* writeHair(
   input: ExportInput,
   progress: Progress,
 ): Generator<Uint8Array> {
-  const { points, strandStart, widths, colors } = strands;
+  const { strandStart, widths } = strands;
   const n = strandStart.length - 1;
   const p = widths.length;
   const total = hairFileSize(n, p);
@@ -54,33 +54,9 @@ export function* writeHair(
     report();
     yield* out.drain();
   }
-  for (let s0 = 0; s0 < n; s0 += BATCH) {
-    const s1 = Math.min(n, s0 + BATCH);
-    out.f32s(points, 3 * strandStart[s0], 3 * strandStart[s1]);
-    report();
-    yield* out.drain();
-  }
-  for (let s0 = 0; s0 < n; s0 += BATCH) {
-    const s1 = Math.min(n, s0 + BATCH);
-    out.f32s(widths, strandStart[s0], strandStart[s1]);
-    report();
-    yield* out.drain();
-  }
-  for (let s0 = 0; s0 < n; s0 += BATCH) {
-    const s1 = Math.min(n, s0 + BATCH);
-    for (let s = s0; s < s1; s++) {
-      const r = colors[3 * s];
-      const g = colors[3 * s + 1];
-      const b = colors[3 * s + 2];
-      for (let q = strandStart[s]; q < strandStart[s + 1]; q++) {
-        out.f32(r);
-        out.f32(g);
-        out.f32(b);
-      }
-    }
-    report();
-    yield* out.drain();
-  }
+  yield* writeStrandFloats(out, strands, 'points', report);
+  yield* writeStrandFloats(out, strands, 'widths', report);
+  yield* writeStrandFloats(out, strands, 'colors', report);
   yield* out.end();
   progress.at(1);
 }
