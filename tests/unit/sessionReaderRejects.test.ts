@@ -266,10 +266,10 @@ describe('ponytails', () => {
       }),
     ).toBe(`session.curves[${P}].circles: has 4 circles, more than its 3 spine points (the cap)`);
     expect(errorOf((j) => (j.curves[P].circles[1].spineIndex = 2.5))).toBe(
-      `session.curves[${P}].circles[1].spineIndex: must be a whole number (from 0 to 18)`,
+      `session.curves[${P}].circles[1].spineIndex: must be a whole number (between 0 and 18)`,
     );
     expect(errorOf((j) => (j.curves[P].circles[1].spineIndex = 19))).toBe(
-      `session.curves[${P}].circles[1].spineIndex: must be a whole number from 0 to 18`,
+      `session.curves[${P}].circles[1].spineIndex: must be between 0 and 18`,
     );
     expect(errorOf((j) => (j.curves[P].circles[1].spineIndex = 0))).toBe(
       `session.curves[${P}].circles[1].spineIndex: must be greater than the previous circle's (C1 first, in spine order)`,
@@ -280,28 +280,28 @@ describe('ponytails', () => {
 describe('growth', () => {
   it('wants whole numbers for the seed, maxSegments and maxStrands', () => {
     expect(errorOf((j) => (j.growth.seed = 1.5))).toBe(
-      'session.growth.seed: must be a whole number (from 0 to 4294967295)',
+      'session.growth.seed: must be a whole number (between 0 and 4294967295)',
     );
     expect(errorOf((j) => (j.growth.seed = 2 ** 32))).toBe(
-      'session.growth.seed: must be a whole number from 0 to 4294967295',
+      'session.growth.seed: must be between 0 and 4294967295',
     );
     expect(errorOf((j) => (j.growth.seed = -1))).toBe(
-      'session.growth.seed: must be a whole number from 0 to 4294967295',
+      'session.growth.seed: must be between 0 and 4294967295',
     );
     expect(errorOf((j) => (j.growth.maxSegments = 12.25))).toBe(
-      `session.growth.maxSegments: must be a whole number (from 1 to ${L.maxSegments})`,
+      `session.growth.maxSegments: must be a whole number (between 1 and ${L.maxSegments})`,
     );
     expect(errorOf((j) => (j.growth.maxStrands = 0.5))).toBe(
-      `session.growth.maxStrands: must be a whole number (from 0 to ${L.maxStrands})`,
+      `session.growth.maxStrands: must be a whole number (between 0 and ${L.maxStrands})`,
     );
   });
 
   it('caps the work: maxSegments, maxStrands and the root samples the steps give', () => {
     expect(errorOf((j) => (j.growth.maxSegments = L.maxSegments + 1))).toBe(
-      `session.growth.maxSegments: must be a whole number from 1 to ${L.maxSegments}`,
+      `session.growth.maxSegments: must be between 1 and ${L.maxSegments}`,
     );
     expect(errorOf((j) => (j.growth.maxStrands = L.maxStrands + 1))).toBe(
-      `session.growth.maxStrands: must be a whole number from 0 to ${L.maxStrands}`,
+      `session.growth.maxStrands: must be between 0 and ${L.maxStrands}`,
     );
     expect(errorOf((j) => (j.growth.maxStrands = L.maxStrands))).toBe('accepted');
     expect(
@@ -326,7 +326,7 @@ describe('scalp-avoidance constraints', () => {
 
   it('refuses indices outside the session grid, fractional indices and huge targets', () => {
     expect(errorOf((j) => (j.avoid.index[1] = points25k))).toBe(
-      `session.avoid.index[1]: must be a whole number from 0 to ${points25k - 1}`,
+      `session.avoid.index[1]: must be between 0 and ${points25k - 1}`,
     );
     expect(errorOf((j) => (j.avoid.index[1] = points25k - 1))).toBe('accepted');
     // the same index is inside a finer grid
@@ -340,7 +340,7 @@ describe('scalp-avoidance constraints', () => {
       /^session\.avoid\.index\[0\]: must be a whole number/,
     );
     expect(errorOf((j) => (j.avoid.index[0] = -1))).toMatch(
-      /^session\.avoid\.index\[0\]: must be a whole number from 0/,
+      /^session\.avoid\.index\[0\]: must be between 0 and /,
     );
     expect(errorOf((j) => (j.avoid.target[4] = 1e6))).toBe(
       `session.avoid.target[4]: must be between -${L.maxAvoidTarget} and ${L.maxAvoidTarget}`,

@@ -273,9 +273,8 @@ function num(v: Plain | undefined, path: string, min = -Infinity, max = Infinity
 }
 
 function int(v: Plain | undefined, path: string, min: number, max: number): number {
-  const n = num(v, path);
-  if (!Number.isInteger(n)) fail(path, `must be a whole number (from ${min} to ${max})`);
-  if (n < min || n > max) fail(path, `must be a whole number from ${min} to ${max}`);
+  const n = num(v, path, min, max);
+  if (!Number.isInteger(n)) fail(path, `must be a whole number (between ${min} and ${max})`);
   return n;
 }
 
