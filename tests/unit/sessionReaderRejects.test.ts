@@ -377,6 +377,10 @@ describe('the session object', () => {
     expect(errorOf((j) => (j.curves[P].circles[0].colour = 1))).toBe(
       `session.curves[${P}].circles[0].colour: is not a field hairsketch knows`,
     );
+    // a key that is not an identifier is quoted, so the path stays unambiguous
+    expect(errorOf((j) => (j.curves[S]['a b.c'] = 1))).toBe(
+      `session.curves[${S}]["a b.c"]: is not a field hairsketch knows`,
+    );
     expect(
       errorOf((j) => {
         j.camera = { position: [0, 0, 5], target: [0, 0, 0] };

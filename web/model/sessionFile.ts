@@ -142,11 +142,15 @@ interface CopyBudget {
   at: (string | number)[];
 }
 
-const keyText = (k: string) => (k.length > 40 ? `${k.slice(0, 40)}…` : k);
+/** A key as a path step: `.name` for an identifier, else `["…"]` (JSON, cut to 40 characters). */
+const keyStep = (k: string) =>
+  /^[A-Za-z_$][\w$]*$/.test(k) && k.length <= 40
+    ? `.${k}`
+    : `[${JSON.stringify(k.length > 40 ? `${k.slice(0, 40)}…` : k)}]`;
 
 function where(b: CopyBudget): string {
   let s = 'session';
-  for (const k of b.at) s += typeof k === 'number' ? `[${k}]` : `.${keyText(k)}`;
+  for (const k of b.at) s += typeof k === 'number' ? `[${k}]` : keyStep(k);
   return s;
 }
 
@@ -257,7 +261,7 @@ const VIEW_HI = BOX_HI(L.viewMargin);
 function record(v: Plain | undefined, path: string, known: readonly string[]): PlainRecord {
   if (typeof v !== 'object' || v === null || Array.isArray(v)) fail(path, 'must be an object');
   for (const k in v)
-    if (!known.includes(k)) fail(`${path}.${keyText(k)}`, 'is not a field hairsketch knows');
+    if (!known.includes(k)) fail(`${path}${keyStep(k)}`, 'is not a field hairsketch knows');
   return v;
 }
 
