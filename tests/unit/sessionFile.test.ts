@@ -56,6 +56,26 @@ describe('parseSession', () => {
     if (r.ok) expect(r.value).toEqual(s);
   });
 
+  it('reads a file saved by an earlier hairsketch (no surfaceMode, curve parameters, avoid)', () => {
+    // the shape "Save" wrote before surface modes, curve parameters and "Avoid scalp" existed,
+    // with the camera it writes beside the session
+    const old = `{"version":1,"head":"builtin","grid":"25k","curves":[
+      {"id":"c1","type":"stream","points":[[0,1,0],[0.1,1.1,0.05]],"extend":true,
+       "viewpoint":{"position":[0,0,6],"target":[0,0,0]}},
+      {"id":"c2","type":"dividing","points":[[0,1,0],[0,1,0.1]],"normals":[[0,1,0],[0,1,0]],
+       "viewpoint":{"position":[0,0,6],"target":[0,0,0]}}],
+      "growth":{"thetaStepDeg":1,"phiStepDeg":1,"jitter":0.8,"seed":20070807,"stepFraction":0.5,
+       "minMagnitude":0.05,"maxLength":3.2,"maxSegments":120,"maxStrands":0},
+      "hairColor":"#5a3825","camera":{"position":[2.6,0.9,7],"target":[0,-0.55,0]}}`;
+    const r = parseSession(JSON.parse(old));
+    expect(r.ok).toBe(true);
+    if (!r.ok) return;
+    expect(r.value.curves[0]).not.toHaveProperty('surfaceMode');
+    expect(r.value.curves[1]).toMatchObject({ sigma: 1, h: 0.5, alpha0: 0, alpha1: 0 });
+    expect(r.value.avoid).toBeNull();
+    expect(r.value).not.toHaveProperty('camera');
+  });
+
   it('names the field of the first problem', () => {
     // biome-ignore lint/suspicious/noExplicitAny: edits arbitrary JSON to break it
     const bad = (edit: (j: any) => void) => {
