@@ -462,7 +462,13 @@ export function applyMutations(
         break;
       }
       case 'exotic':
-        applyExotic(parent, key, m.how, clonePlain(m.value), holder.root);
+        // a getter on the holder of the root is no input at all
+        if (path.length === 0 && (m.how === 'throwingGetter' || m.how === 'flakyGetter')) continue;
+        try {
+          applyExotic(parent, key, m.how, clonePlain(m.value), holder.root);
+        } catch {
+          continue; // its place is behind an earlier hostile getter or proxy
+        }
         log.push(`${at}: ${m.how} (${show(m.value)})`);
         break;
     }

@@ -114,7 +114,7 @@ function runChild(name: string, seed: number): Promise<Result> {
   return new Promise((resolve, reject) => {
     const child = spawn(process.execPath, [...process.execArgv, process.argv[1]], {
       env: { ...process.env, FUZZ_CHILD: name, FUZZ_SEED: String(seed) },
-      stdio: ['ignore', 'pipe', 'ignore'],
+      stdio: ['ignore', 'pipe', 'inherit'],
     });
     let out = '';
     child.stdout.on('data', (d) => {
