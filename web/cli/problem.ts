@@ -3,6 +3,7 @@
 //    "unset": [[i, j, k], ...]}, ...]}
 // Grid point (i, j, k) has index p = i + nx * (j + ny * k). Constraints persist between steps.
 // Decoding is strict and returns a one-line error instead of throwing.
+import { oneLine } from '../model/oneLine';
 
 export interface Problem {
   grid: [number, number, number];
@@ -23,7 +24,7 @@ const isObject = (v: unknown): v is Record<string, unknown> =>
 
 function unknownKeys(o: Record<string, unknown>, allowed: string[], where: string): string | null {
   for (const k of Object.keys(o))
-    if (!allowed.includes(k)) return `unknown key "${k.slice(0, 40)}" in ${where}`;
+    if (!allowed.includes(k)) return `unknown key "${oneLine(k, 40)}" in ${where}`;
   return null;
 }
 
@@ -32,7 +33,7 @@ export function decodeProblem(text: string): Decoded<Problem> {
   try {
     raw = JSON.parse(text);
   } catch (e) {
-    return { ok: false, error: `not valid JSON: ${(e as Error).message}` };
+    return { ok: false, error: `not valid JSON: ${oneLine((e as Error).message)}` };
   }
   if (!isObject(raw)) return { ok: false, error: 'the problem must be a JSON object' };
   const bad = unknownKeys(raw, ['grid', 'omega', 'steps'], 'the problem');
@@ -78,7 +79,7 @@ export function decodeProblem(text: string): Decoded<Problem> {
       if (!inGrid(v[0], v[1], v[2]))
         return {
           ok: false,
-          error: `step ${s} set[${e}]: index (${v.slice(0, 3).join(', ')}) is outside the grid`,
+          error: `step ${s} set[${e}]: index (${oneLine(v.slice(0, 3).join(', '), 80)}) is outside the grid`,
         };
       if (!v.slice(3).every((x) => typeof x === 'number' && Number.isFinite(x)))
         return { ok: false, error: `step ${s} set[${e}]: target is not finite` };

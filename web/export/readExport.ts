@@ -1,6 +1,7 @@
 // Reads the session back out of an export: the `.usda` layer's customLayerData
 // "hairsketch:session" string, or the `.glb`'s asset.extras.hairsketch.session. The app then
 // checks the session with its own strict reader (parseSession).
+import { oneLine } from '../model/oneLine';
 
 export type ReadExportResult = { ok: true; session: unknown } | { ok: false; error: string };
 
@@ -30,7 +31,7 @@ function parseJson(text: string, what: string): ReadExportResult {
   try {
     return { ok: true, session: JSON.parse(text) };
   } catch (e) {
-    return { ok: false, error: `${what} is not valid JSON (${(e as Error).message})` };
+    return { ok: false, error: `${what} is not valid JSON (${oneLine((e as Error).message)})` };
   }
 }
 
