@@ -275,3 +275,38 @@ describe('subscriptions', () => {
     expect(n).toBe(1);
   });
 });
+
+describe('the editor holds only sessions the reader accepts', () => {
+  it('a curve past the working volume is refused with a message; nothing changes', () => {
+    const { e, log } = editorWithLog();
+    const far: Command = {
+      kind: 'addCurve',
+      curve: {
+        type: 'stream',
+        points: [
+          [0, 1, 0.5],
+          [0, 1, 900],
+        ],
+        extend: true,
+        viewpoint: vp,
+      },
+      what: 'stream curve {id}',
+    };
+    expect(e.run(far)).toBe(false);
+    expect(e.session.curves).toHaveLength(0);
+    expect(log.at(-1)?.message).toContain('Nothing changed');
+    expect(log.at(-1)?.message).toContain('curve.points[1]');
+  });
+
+  it('a session loaded onto another grid drops its scalp avoidance (its points are grid points)', () => {
+    const { e, log } = editorWithLog();
+    const other = { ...emptySession('50k'), avoid: { index: [5], target: [0, 0.3, 0] } };
+    e.run({ kind: 'loadSession', session: other, what: 'Opened x' });
+    expect(e.session.grid).toBe('25k');
+    expect(e.session.avoid).toBeNull();
+    expect(log.at(-1)?.message).toContain('dropped');
+    const same = { ...emptySession('25k'), avoid: { index: [5], target: [0, 0.3, 0] } };
+    e.run({ kind: 'loadSession', session: same, what: 'Opened y' });
+    expect(e.session.avoid?.index).toEqual([5]);
+  });
+});

@@ -134,12 +134,29 @@ export class LinkWriter {
 }
 
 function savedCamera(data: unknown): Viewpoint | undefined {
-  const cam = (data as { camera?: { position?: unknown; target?: unknown } } | null)?.camera;
-  if (cam && isVec3(cam.position) && isVec3(cam.target))
-    return { position: cam.position, target: cam.target };
-  return undefined;
-}
-
-function isVec3(v: unknown): v is Vec3 {
-  return Array.isArray(v) && v.length === 3 && v.every((x) => Number.isFinite(x));
+  // read as the reader reads: own data properties only, so no getter or proxy trap runs
+  const own = (o: unknown, k: string): unknown => {
+    try {
+      if (typeof o !== 'object' || o === null) return undefined;
+      const d = Object.getOwnPropertyDescriptor(o, k);
+      return d && 'value' in d ? d.value : undefined;
+    } catch {
+      return undefined;
+    }
+  };
+  const cam = own(data, 'camera');
+  const position = own(cam, 'position');
+  const target = own(cam, 'target');
+  const vec = (v: unknown): Vec3 | null => {
+    try {
+      if (!Array.isArray(v) || own(v, 'length') !== 3) return null;
+    } catch {
+      return null; // a revoked proxy
+    }
+    const out = [own(v, '0'), own(v, '1'), own(v, '2')];
+    return out.every((x) => typeof x === 'number' && Number.isFinite(x)) ? (out as Vec3) : null;
+  };
+  const p = vec(position);
+  const t = vec(target);
+  return p && t ? { position: p, target: t } : undefined;
 }

@@ -14,6 +14,7 @@ import {
   updateCurve,
   type Viewpoint,
 } from '../model/session';
+import { parseSession } from '../model/sessionFile';
 import type { SurfaceMode } from '../model/supportingSurface';
 import type { Vec3 } from '../model/vec3';
 import { CURVE_PARAMS, type CurveParamSpec } from '../solver/protocol';
@@ -72,7 +73,21 @@ const HEX_COLOR = /^#[0-9a-fA-F]{6}$/;
  *  reopens is this very session; unchanged curves keep their identity. */
 export function applyCommand(s: SessionState, cmd: Command): CommandResult {
   const r = applyExact(s, cmd);
-  return r.session === s ? r : { ...r, session: quantizeSession(r.session) };
+  if (r.session === s) return r;
+  const next = quantizeSession(r.session);
+  // A curve a tool made (or edited) must be one the session reader accepts, so the editor never
+  // holds a session that a link, a file or an export would refuse (e.g. a stroke drawn far off
+  // the head, past the working volume). Only the curves this command made are read.
+  const made = next.curves.filter((c) => !s.curves.includes(c));
+  if (made.length > 0 && cmd.kind !== 'loadSession') {
+    const check = parseSession({ ...next, curves: made, avoid: null });
+    if (!check.ok)
+      return {
+        session: s,
+        message: `Nothing changed: the curve is not one a session can hold (${check.error.replace(/^session\.curves\[\d+\]/, 'curve')}).`,
+      };
+  }
+  return { ...r, session: next };
 }
 
 function applyExact(s: SessionState, cmd: Command): CommandResult {
@@ -186,11 +201,15 @@ function applyExact(s: SessionState, cmd: Command): CommandResult {
       if (cmd.color === s.hairColor) return { session: s, message: `Hair colour ${cmd.color}.` };
       return { session: { ...s, hairColor: cmd.color }, message: `Hair colour ${cmd.color}.` };
     }
-    case 'loadSession':
+    case 'loadSession': {
+      // Scalp-avoidance constraints are points of the grid they were made on: on another grid
+      // they would land elsewhere, so they are dropped (the user can run Avoid scalp again).
+      const keepAvoid = cmd.session.grid === s.grid || !cmd.session.avoid;
       return {
-        session: { ...cmd.session, grid: s.grid },
+        session: { ...cmd.session, grid: s.grid, avoid: keepAvoid ? cmd.session.avoid : null },
         selectedId: null,
-        message: `${cmd.what} (${cmd.session.curves.length} curves).`,
+        message: `${cmd.what} (${cmd.session.curves.length} curves)${keepAvoid ? '' : `; its scalp avoidance was made for the ${cmd.session.grid} grid and is dropped on this ${s.grid} grid`}.`,
       };
+    }
   }
 }
