@@ -119,7 +119,7 @@ HsStatus kindOf(StatusCode c) {
       return HS_INVALID_INPUT;
     case StatusCode::NonFinite:
       return HS_NON_FINITE;
-    case StatusCode::OutOfMemory:
+    case StatusCode::OverMemoryCap:
       return HS_OVER_MEMORY_CAP;
     case StatusCode::NotReady:
       return HS_NOT_READY;
@@ -139,14 +139,11 @@ int32_t fail(HsStatus kind, const char* msg) {
   return kind;
 }
 
-// Limit in wasm32 (2 GB): the CG solver holds ~8 fields of n x 3 doubles.
-constexpr double kMaxGridPoints = 4.0 * 1024 * 1024;
-
+// The memory cap itself is each solver's estimate against what the module has left
+// (memory_budget.hpp); here only the grid's shape.
 Status makeGrid(const HsGridInput& in, Grid& g) {
   if (in.nx < 2 || in.ny < 2 || in.nz < 2)
     return Status::Error(StatusCode::InvalidInput, "grid dims must be >= 2");
-  if (double(in.nx) * in.ny * in.nz > kMaxGridPoints)
-    return Status::Error(StatusCode::OutOfMemory, "grid has too many points for wasm");
   if (!std::isfinite(in.originX) || !std::isfinite(in.originY) || !std::isfinite(in.originZ) ||
       !std::isfinite(in.step))
     return Status::Error(StatusCode::NonFinite, "grid origin/step must be finite");
@@ -184,6 +181,7 @@ struct EngineHandle {
 
 struct RawHandle {
   std::unique_ptr<FieldSolver> solver;
+  std::string name;
   Grid grid;
   bool hasGrid = false;
   size_t constraints = 0;
@@ -412,6 +410,7 @@ EMSCRIPTEN_KEEPALIVE int32_t hs_raw_create(const char* name, RawHandle** out) {
   }
   RawHandle* h = new RawHandle();
   h->solver = std::move(s);
+  h->name = name;
   *out = h;
   return HS_OK;
 }
@@ -455,6 +454,47 @@ EMSCRIPTEN_KEEPALIVE int32_t hs_raw_set_constraints(RawHandle* h, const HsConstr
   s = h->solver->setConstraints(set);
   if (!s.ok()) return report(s);
   h->constraints = set.size();
+  return HS_OK;
+}
+
+// out[0] = the solver's memory estimate for an nx x ny x nz grid (bytes, FieldSolver::
+// estimateBytes: no allocation), out[1] = the cap setGrid would check it against now.
+EMSCRIPTEN_KEEPALIVE int32_t hs_raw_estimate(RawHandle* h, int32_t nx, int32_t ny, int32_t nz,
+                                             double* out) {
+  if (!h || !out) return fail(HS_INVALID_INPUT, "estimate: no solver or output");
+  if (nx < 2 || ny < 2 || nz < 2) return fail(HS_INVALID_INPUT, "grid dims must be >= 2");
+  Grid g;
+  g.nx = nx;
+  g.ny = ny;
+  g.nz = nz;
+  out[0] = h->solver->estimateBytes(g);
+  out[1] = double(h->solver->memoryCap());
+  return HS_OK;
+}
+
+// Progress of long solves: at most every intervalMs of a solve's iterations the solver calls
+// Module.hsOnProgress(iterations, errorEstimate, relResidual) when JS has set it; a falsy
+// return stops the solve (status internal, "... stopped after N iterations"). intervalMs <= 0
+// removes the hook.
+EMSCRIPTEN_KEEPALIVE int32_t hs_raw_set_progress(RawHandle* h, double intervalMs) {
+  if (!h) return fail(HS_INVALID_INPUT, "set_progress: no solver");
+  if (!(intervalMs > 0)) {
+    h->solver->setProgressHook(nullptr);
+    return HS_OK;
+  }
+  double last = emscripten_get_now();
+  h->solver->setProgressHook([intervalMs, last](const IterateProgress& p) mutable {
+    const double now = emscripten_get_now();
+    if (now - last < intervalMs) return true;
+    last = now;
+    const int keep = EM_ASM_INT(
+        {
+          const f = Module['hsOnProgress'];
+          return f ? (f($0, $1, $2) ? 1 : 0) : 1;
+        },
+        p.iterations, p.errorEstimate, p.relResidual);
+    return keep != 0;
+  });
   return HS_OK;
 }
 

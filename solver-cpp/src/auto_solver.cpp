@@ -5,11 +5,22 @@
 
 namespace hairsketch {
 
+std::unique_ptr<FieldSolver> AutoSolver::pick(const Grid& grid) {
+  if (grid.size() <= kExactMaxPoints) return std::make_unique<ExactSolver>();
+  return std::make_unique<MgPcgSolver>();
+}
+
+double AutoSolver::estimateBytes(const Grid& grid) const { return pick(grid)->estimateBytes(grid); }
+
+void AutoSolver::setProgressHook(ProgressHook hook) {
+  hook_ = hook;
+  if (inner_) inner_->setProgressHook(std::move(hook));
+}
+
 Status AutoSolver::setGrid(const Grid& grid, double omega) {
-  if (grid.size() <= kExactMaxPoints)
-    inner_ = std::make_unique<ExactSolver>();
-  else
-    inner_ = std::make_unique<MgPcgSolver>();
+  inner_ = pick(grid);
+  inner_->setMemoryCap(memoryCap());
+  inner_->setProgressHook(hook_);
   return inner_->setGrid(grid, omega);
 }
 

@@ -19,6 +19,9 @@ class AutoSolver : public FieldSolver {
   static constexpr int64_t kExactMaxPoints = 12000;
 
   Status setGrid(const Grid& grid, double omega) override;
+  // The estimate of the solver this grid gets.
+  double estimateBytes(const Grid& grid) const override;
+  void setProgressHook(ProgressHook hook) override;
   Status setConstraints(const ConstraintSet& next) override;
   Status solve(Field& T) override;
   Status iterate(int maxIterations, double tolerance, Field& T, IterateProgress& progress) override;
@@ -28,6 +31,7 @@ class AutoSolver : public FieldSolver {
   std::string chosen() const { return inner_ ? inner_->name() : std::string(); }
 
  private:
+  static std::unique_ptr<FieldSolver> pick(const Grid& grid);
   std::unique_ptr<FieldSolver> inner_;
   mutable SolveStats stats_;
 };

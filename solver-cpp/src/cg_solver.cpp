@@ -1,7 +1,9 @@
 #include "cg_solver.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 namespace hairsketch {
 
@@ -12,19 +14,26 @@ double msSince(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 
-// Largest grid we accept: 16M points (the field alone is 384 MB of doubles).
-constexpr int64_t kMaxGridPoints = int64_t(1) << 24;
-
 }  // namespace
+
+// Per grid point: 9 n x 3 double fields alive in solve() (previous_, work_, B, X, R, Z, P, Q
+// and the caller's T: 216 bytes), 5 double vectors (invCount_, biDiag_, penalty_, diag, invDiag:
+// 40 bytes), 8 bytes of penaltyDiagonal's temporary, and 24 of slack (a warm start copy):
+// 288 bytes per point, plus 1 MB (Lanczos tridiagonals, constraint set).
+double CgSolver::estimateBytes(const Grid& grid) const {
+  return bytesOf(double(grid.nx) * double(grid.ny) * double(grid.nz), 288) + double(1 << 20);
+}
 
 Status CgSolver::setGrid(const Grid& grid, double omega) {
   if (!grid.valid() || !std::isfinite(grid.step) || !grid.origin.allFinite())
     return Status::Error(StatusCode::InvalidInput,
                          "grid must have at least 2 points per axis and a finite step > 0");
-  if (grid.size() > kMaxGridPoints)
-    return Status::Error(StatusCode::InvalidInput, "grid has too many points");
   if (!std::isfinite(omega) || omega <= 0)
     return Status::Error(StatusCode::InvalidInput, "omega must be finite and > 0");
+  Status fits = checkGridIndexable(grid);
+  if (!fits.ok()) return fits;
+  fits = checkMemory("cg solver", estimateBytes(grid), memoryCap());
+  if (!fits.ok()) return fits;
   grid_ = grid;
   omega_ = omega;
   const int n = int(grid.size());
@@ -319,6 +328,31 @@ Status CgSolver::solve(Field& T) {
       for (int i = 0; i < 3 * n; i += 3)
         for (int c = 0; c < 3; ++c)
           if (active[c]) p[i + c] = z[i + c] + beta[c] * p[i + c];
+    }
+    if (hook_) {
+      IterateProgress pr;
+      pr.iterations = it;
+      pr.errorEstimate = 0;
+      for (int c = 0; c < 3; ++c) {
+        if (bNorm[c] > 0) pr.relResidual = std::max(pr.relResidual, std::sqrt(rr[c]) / bNorm[c]);
+        // The error bound exists once a component passed the residual gate; before, unknown.
+        const double xn = std::sqrt(xx[c]);
+        const double e = bound[c] > 0 && xn > 0 ? bound[c] / xn
+                         : active[c]            ? std::numeric_limits<double>::infinity()
+                                                : 0.0;
+        pr.errorEstimate = std::max(pr.errorEstimate, e);
+      }
+      if (!keepGoing(pr)) {
+        stats_.iterations = it;
+        stats_.residual = pr.relResidual;
+        stats_.solveMs = msSince(t0);
+        errorEstimate_ = pr.errorEstimate;
+        T = X;
+        previous_ = X;
+        return Status::Error(StatusCode::Cancelled, "cg: stopped after " + std::to_string(it) +
+                                                        " iterations (relative residual " +
+                                                        std::to_string(pr.relResidual) + ")");
+      }
     }
   }
   stats_.iterations = it;

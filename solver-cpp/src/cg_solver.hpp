@@ -34,6 +34,7 @@ class CgSolver : public FieldSolver {
   explicit CgSolver(const CgOptions& options) : options_(options) {}
 
   Status setGrid(const Grid& grid, double omega) override;
+  double estimateBytes(const Grid& grid) const override;
   Status setConstraints(const ConstraintSet& next) override;
   Status solve(Field& T) override;
   const SolveStats& stats() const override { return stats_; }

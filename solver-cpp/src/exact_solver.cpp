@@ -14,24 +14,67 @@ double msSince(std::chrono::steady_clock::time_point t0) {
 
 }  // namespace
 
+// Memory of the exact path (bytes; n points):
+//   analysis   <= 1200 n   assembling M = D^T D (triplets, D, D^T, the product), the
+//                          dissection and the supernodal rows (measured 680-1090 n)
+//   held        = 304 n (M: 25 entries of 12 bytes + column pointers) + 12 n (perm, iperm,
+//                 colSuper) + 4 rows + 48 supernodes   after the analysis
+//   factor      = 8 (storedEntries + peakWorkEntries) + 4 n   the values, the update matrices
+//                 alive at once during a factorisation (symbolic count), the row map
+//   solve       = 136 n   rhs, field, permuted copy, refinement residual and M T (24 n each),
+//                 the penalty vector (8 n) of a refactorisation, 8 n slack
+// Before the analysis the factor is estimated from the dims: with a <= b <= c the box's sides,
+// storedEntries ~ 22 n sqrt(a b) (measured 0.8-1.0x of the symbolic count on cubes 10^3-80^3,
+// 2 x 2 x 2000, 4 x 4 x 3000, 12 x 30 x 40, 100 x 100 x 10) and peakWorkEntries ~ 0.6 of it.
+namespace {
+constexpr double kAnalysisBytesPerPoint = 1200, kSolveBytesPerPoint = 136;
+
+double heldBytes(double n, double rows, double supernodes) {
+  return 316 * n + 4 * rows + 48 * supernodes;
+}
+}  // namespace
+
+double ExactSolver::estimateBytes(const Grid& grid) const {
+  const double n = double(grid.nx) * grid.ny * grid.nz;
+  if (hasGrid_ && grid.nx == grid_.nx && grid.ny == grid_.ny && grid.nz == grid_.nz)
+    return analysedBytes();
+  double d[3] = {double(grid.nx), double(grid.ny), double(grid.nz)};
+  std::sort(d, d + 3);
+  const double stored = 22 * n * std::sqrt(d[0] * d[1]);
+  return kAnalysisBytesPerPoint * n + 8 * 1.6 * stored + kSolveBytesPerPoint * n + double(1 << 20);
+}
+
+double ExactSolver::analysedBytes() const {
+  const SupernodalSymbolic& S = factor_.symbolic();
+  const double n = S.n;
+  return heldBytes(n, double(S.row.size()), S.supernodes()) + double(S.factorBytes()) + 4 * n +
+         kSolveBytesPerPoint * n + double(1 << 20);
+}
+
 Status ExactSolver::setGrid(const Grid& grid, double omega) {
   if (hasGrid_) return Status::Error(StatusCode::InvalidInput, "exact: setGrid called twice");
   if (!grid.valid())
     return Status::Error(StatusCode::InvalidInput, "exact: grid must be at least 2x2x2");
   if (!std::isfinite(omega) || omega <= 0)
     return Status::Error(StatusCode::InvalidInput, "exact: omega must be finite and positive");
-  if (grid.size() > (int64_t(1) << 26))
-    return Status::Error(StatusCode::OutOfMemory, "exact: grid too large");
+  Status fits = checkGridIndexable(grid);
+  if (!fits.ok()) return fits;
+  const int64_t cap = memoryCap();
+  const double n = double(grid.nx) * grid.ny * grid.nz;
+  // Before analysing: refuse when the analysis alone would not fit, or when the estimate from
+  // the dims is over twice the cap (it errs by less than 1.3x), so that a large grid is refused
+  // at once. Otherwise the symbolic count decides, before the factor is allocated.
+  const double rough = estimateBytes(grid);
+  if (kAnalysisBytesPerPoint * n > double(cap) || rough > 2 * double(cap))
+    return checkMemory("exact solver", std::max(rough, double(cap) + 1), cap);
   const auto t0 = std::chrono::steady_clock::now();
   M_ = assembleBiLaplacian(grid);
   factor_.analyse(M_, boxNestedDissection(grid, opt_.dissection));
-  const int64_t bytes = factor_.symbolic().factorBytes();
-  if (bytes > opt_.maxBytes) {
+  const double bytes = analysedBytes();
+  if (bytes > double(cap)) {
     factor_ = SupernodalFactor();
     M_ = SparseMatrix();
-    return Status::Error(StatusCode::OutOfMemory, "exact: the factor of this grid needs " +
-                                                      std::to_string(bytes >> 20) +
-                                                      " MB, over the cap");
+    return checkMemory("exact solver", bytes, cap);
   }
   grid_ = grid;
   omega_ = omega;

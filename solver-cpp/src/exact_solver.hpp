@@ -46,17 +46,21 @@ struct ExactSolverOptions {
   double factorRate = 1.0;                 // relative speed of factorisation flops
   double updateRate = kDefaultUpdateRate;  // relative speed of update/downdate flops
   enum class Policy { Auto, AlwaysUpdate, AlwaysRefactor } policy = Policy::Auto;
-  int64_t maxBytes = int64_t(1800) << 20;  // refuse grids whose factor would need more
+  // The memory cap is FieldSolver::setMemoryCap (default: what the module has left).
 };
 
 class ExactSolver : public FieldSolver {
  public:
   explicit ExactSolver(ExactSolverOptions options = {}) : opt_(options) {}
   Status setGrid(const Grid& grid, double omega) override;
+  // From the dims before setGrid; from the symbolic count (analysedBytes) after it.
+  double estimateBytes(const Grid& grid) const override;
   Status setConstraints(const ConstraintSet& next) override;
   Status solve(Field& T) override;
   const SolveStats& stats() const override { return stats_; }
   std::string name() const override { return "exact"; }
+  // The estimate from the symbolic count of the analysed grid (see exact_solver.cpp).
+  double analysedBytes() const;
 
   const SupernodalFactor& factor() const { return factor_; }
   // Cost-model estimates for an edit of the factored constraint set (flops).

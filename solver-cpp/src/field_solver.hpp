@@ -5,12 +5,15 @@
 // Phases: setGrid (analyse) -> setConstraints (factorise / update / downdate) -> solve.
 #pragma once
 
+#include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 
 #include "constraints.hpp"
 #include "field_system.hpp"
 #include "grid.hpp"
+#include "memory_budget.hpp"
 #include "status.hpp"
 
 namespace hairsketch {
@@ -27,13 +30,28 @@ struct IterateProgress {
   int iterations = 0;        // since the last setConstraints
   double errorEstimate = 0;  // estimated relative error of the current iterate
   bool converged = false;
+  double relResidual = 0;  // ||B - M T|| / ||B|| of the current iterate (if tracked)
 };
 
 class FieldSolver {
  public:
   virtual ~FieldSolver() = default;
   // Analyse the grid (no constraints yet). Called once; a new grid needs a new solver.
+  // Refuses with OverMemoryCap, before allocating, when estimateBytes(grid) > memoryCap().
   virtual Status setGrid(const Grid& grid, double omega) = 0;
+  // An upper estimate of the bytes this solver allocates at its peak over setGrid,
+  // setConstraints and solve on this grid (its arrays, the temporaries of building them, and
+  // the n x 3 field solve() writes), from the dims alone: no allocation. Each solver documents
+  // its formula; tests/native/memory_estimate_probe.cpp checks it against measured peaks.
+  virtual double estimateBytes(const Grid& grid) const = 0;
+  // The cap setGrid checks against; by default (negative) availableMemoryBytes() at the call.
+  void setMemoryCap(int64_t bytes) { memoryCap_ = bytes; }
+  int64_t memoryCap() const { return memoryCap_ >= 0 ? memoryCap_ : availableMemoryBytes(); }
+  // Iterative solvers call the hook about once per iteration of solve()/iterate() (the caller
+  // throttles); returning false stops the solve with StatusCode::Cancelled. Direct solvers never
+  // call it.
+  using ProgressHook = std::function<bool(const IterateProgress&)>;
+  virtual void setProgressHook(ProgressHook hook) { hook_ = std::move(hook); }
   // Replace the constraint set (normalised: sorted, unique, validated by the caller or here).
   virtual Status setConstraints(const ConstraintSet& next) = 0;
   // Solve for the field of the current constraints. T is resized to n x 3.
@@ -53,6 +71,11 @@ class FieldSolver {
   }
   virtual const SolveStats& stats() const = 0;
   virtual std::string name() const = 0;
+
+ protected:
+  bool keepGoing(const IterateProgress& p) const { return !hook_ || hook_(p); }
+  int64_t memoryCap_ = -1;
+  ProgressHook hook_;
 };
 
 // Factory by name: "cg" (plain conjugate gradients, the reference path), "fast" (multigrid-

@@ -1,5 +1,6 @@
 #include "hair_engine.hpp"
 
+#include <algorithm>
 #include <chrono>
 
 namespace hairsketch {
@@ -8,11 +9,30 @@ namespace {
 using Clock = std::chrono::steady_clock;
 }
 
+// Per grid point the engine holds, besides its solver: field_ (24 bytes), fieldF_ (12), the
+// binding's float copy for JS (12) and toFloatField's temporary (12).
+constexpr double kEngineBytesPerPoint = 60;
+
 Status HairEngine::setGrid(const Grid& grid, double omega, const std::string& solverName) {
   std::unique_ptr<FieldSolver> solver = makeFieldSolver(solverName);
   if (!solver)
     return Status::Error(StatusCode::InvalidInput, "unknown solver '" + solverName + "'");
-  Status s = solver->setGrid(grid, omega);
+  Status s = checkGridIndexable(grid);
+  if (!s.ok()) return s;
+  // The previous grid's solver and buffers are released first (their memory is what the new
+  // grid may use); a refused grid leaves the engine without a grid (NotReady until the next).
+  solver_.reset();
+  hasGrid_ = false;
+  field_ = Field();
+  std::vector<float>().swap(fieldF_);
+  strands_ = Strands{};
+  const double n = double(grid.nx) * grid.ny * grid.nz;
+  const int64_t cap = availableMemoryBytes();
+  s = checkMemory(solverName + " solver", solver->estimateBytes(grid) + kEngineBytesPerPoint * n,
+                  cap);
+  if (!s.ok()) return s;
+  solver->setMemoryCap(cap - int64_t(kEngineBytesPerPoint * n));
+  s = solver->setGrid(grid, omega);
   if (!s.ok()) return s;
   solver_ = std::move(solver);
   grid_ = grid;
@@ -104,6 +124,20 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
     const size_t m = size_t(rp.maxStrands), total = roots_.size();
     cappedRoots_.resize(m);
     for (size_t k = 0; k < m; ++k) cappedRoots_[k] = roots_[k * total / m];
+  }
+  // The strand buffers for every root at maxSegments must fit: the point buffer (12 bytes a
+  // point) is grown by doubling up to that bound, so it and its previous copy may both be live.
+  const double worstPoints =
+      double(roots().size()) * (double(std::max(gp.maxSegments, 0)) + 1) + 3 * 4096;
+  const double needs = 2 * 12 * worstPoints + 4 * double(roots().size() + 1);
+  const int64_t cap = availableMemoryBytes() + int64_t(strands_.points.capacity() * sizeof(float));
+  Status fits = checkMemory("growth (" + std::to_string(roots().size()) + " strands of up to " +
+                                std::to_string(gp.maxSegments) + " segments)",
+                            needs, cap);
+  if (!fits.ok()) {
+    strands_ = Strands{};
+    strands_.strandStart.assign(1, 0);
+    return fits;
   }
   Status s = growStrands(grid_, fieldF_, roots(), gp, strands_);
   growMs_ = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();

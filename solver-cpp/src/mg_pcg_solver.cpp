@@ -4,6 +4,8 @@
 #include <chrono>
 #include <cmath>
 
+#include "multigrid_transfer.hpp"
+
 namespace hairsketch {
 namespace {
 
@@ -31,12 +33,70 @@ void dots3(const std::vector<double>& a, const std::vector<double>& b, double ou
 
 }  // namespace
 
+// The peak is the larger of building the hierarchy and solving (n points, R = (nx+2)(ny+2)(nz+2)
+// padded fine rows, m_l points and s_l = prod_axis min(5, dim) stencil entries per row on coarse
+// level l, all in bytes):
+//   steady = 224 R   fine arrays (inv, diagK, w, invDiag, L, res: 80 R) + CG vectors (144 R)
+//          + sum_l (96 + 12 s_l) m_l   Galerkin CSR (12 per entry, 8 per row) + diagPos, invDiag,
+//                                       x, b, res (96 per row)
+//          + 16 m_c^2                  dense coarsest matrix and its Cholesky factor
+//          + 24 (c_x n_y n_z + c_x c_y n_z)   transfer scratch at the fine level
+//          + 24 n                      the field solve() writes
+//   build  = 80 R + levels + max(assembling D: 288 n (triplets 112 n, two Eigen copies 176 n),
+//              D (92 n) + P_0 (12 p n + 8 n) + G = D P_0 (12 g n + 8 n) + 12 m_1,
+//              D + G + G^T (12 g n + 8 m_1) + A_1 (12 s_1 m_1 + 8 m_1) + 12 n)
+//     with per-row bounds p = prod (2 on a coarsened axis, else 1) and g = the union of the
+//     coarse supports of D's 7-point row (3 x 2 x 2 per axis line, inclusion-exclusion: 20 in a
+//     full box); multiplyCsr and interpolationMatrix allocate exactly.
+//   + 56 (nx + ny + nz) per level: composite interpolation tables and 1D transfers.
+// Coarser Galerkin products (at most 1/8 of the fine rows) stay below the level-1 ones.
+double MgPcgSolver::estimateBytes(const Grid& grid) const {
+  const double n = double(grid.nx) * grid.ny * grid.nz;
+  const double R = double(grid.nx + 2) * double(grid.ny + 2) * double(grid.nz + 2);
+  double levels = 0, m1 = 0, s1 = 0, coarsest = n, count = 1;
+  int ax = grid.nx, ay = grid.ny, az = grid.nz;
+  for (;;) {
+    const double size = double(ax) * ay * az;
+    if (size <= mgOptions_.coarsestMaxPoints) break;
+    const int cx = coarsenedSize(ax), cy = coarsenedSize(ay), cz = coarsenedSize(az);
+    const double m = double(cx) * cy * cz;
+    if (m == size) break;
+    const double s = double(std::min(5, cx)) * std::min(5, cy) * std::min(5, cz);
+    levels += (96 + 12 * s) * m;
+    if (m1 == 0) m1 = m, s1 = s;
+    coarsest = m;
+    count += 1;
+    ax = cx, ay = cy, az = cz;
+  }
+  if (m1 == 0) levels = (96 + 12 * 25) * n;  // one level: its assembled matrix
+  auto axisP = [](int d) { return coarsenedSize(d) < d ? 2.0 : 1.0; };
+  // Coarse support of one fine index (S1) and of three consecutive ones (S3), per axis.
+  auto s1Of = [](int d) { return coarsenedSize(d) < d ? 2.0 : 1.0; };
+  auto s3Of = [](int d) { return coarsenedSize(d) < d ? 3.0 : double(std::min(d, 3)); };
+  const double p = axisP(grid.nx) * axisP(grid.ny) * axisP(grid.nz);
+  const double ux = s1Of(grid.nx), uy = s1Of(grid.ny), uz = s1Of(grid.nz);
+  const double g = s3Of(grid.nx) * uy * uz + ux * s3Of(grid.ny) * uz + ux * uy * s3Of(grid.nz) -
+                   2 * ux * uy * uz;
+  // Composite interpolation tables (32 bytes per fine index per axis and level) and 1D transfers.
+  const double tables = (32 + 24) * double(grid.nx + grid.ny + grid.nz) * count;
+  const double c0x = coarsenedSize(grid.nx), c0y = coarsenedSize(grid.ny);
+  const double scratch = 24 * (c0x * grid.ny * grid.nz + c0x * c0y * grid.nz);
+  const double steady = 224 * R + levels + tables + 16 * coarsest * coarsest + scratch + 24 * n;
+  const double t1 = 288 * n;
+  const double t2 = 92 * n + (12 * p + 8) * n + (12 * g + 8) * n + 12 * m1;
+  const double t3 = 92 * n + 2 * (12 * g + 8) * n + (12 * s1 + 8) * m1 + 12 * n;
+  const double build = 80 * R + levels + tables + std::max({t1, t2, t3});
+  return std::max(steady, build) + double(1 << 20);
+}
+
 Status MgPcgSolver::setGrid(const Grid& grid, double omega) {
   if (!grid.valid()) return Status::Error(StatusCode::InvalidInput, "grid must be at least 2^3");
   if (!std::isfinite(omega) || omega <= 0)
     return Status::Error(StatusCode::InvalidInput, "omega must be finite and positive");
-  if (grid.size() > int64_t(1) << 28)
-    return Status::Error(StatusCode::OutOfMemory, "grid too large for the multigrid solver");
+  Status fits = checkGridIndexable(grid);
+  if (!fits.ok()) return fits;
+  fits = checkMemory("fast solver", estimateBytes(grid), memoryCap());
+  if (!fits.ok()) return fits;
   const auto t0 = Clock::now();
   Status s = mg_.build(grid, mgOptions_);
   if (!s.ok()) return s;
@@ -181,6 +241,22 @@ Status MgPcgSolver::iterate(int maxIterations, double tolerance, MgProgress* out
     ++done;
     ++progress_.iterations;
     updateEstimate();
+    if (hook_) {
+      IterateProgress pr;
+      pr.iterations = progress_.iterations;
+      pr.errorEstimate = progress_.errorEstimate;
+      pr.relResidual = progress_.relResidual;
+      if (!keepGoing(pr)) {
+        stats_.iterations = progress_.iterations;
+        stats_.residual = progress_.relResidual;
+        stats_.solveMs = msSince(t0);
+        if (out) *out = progress_;
+        return Status::Error(StatusCode::Cancelled,
+                             "fast: stopped after " + std::to_string(progress_.iterations) +
+                                 " iterations (error estimate " +
+                                 std::to_string(progress_.errorEstimate) + ")");
+      }
+    }
   }
   progress_.converged = isConverged();
   if (!std::isfinite(progress_.relResidual))

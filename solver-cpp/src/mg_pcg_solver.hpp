@@ -40,6 +40,7 @@ class MgPcgSolver : public FieldSolver {
   explicit MgPcgSolver(const MultigridOptions& mg = {}) : mgOptions_(mg) {}
 
   Status setGrid(const Grid& grid, double omega) override;
+  double estimateBytes(const Grid& grid) const override;
   // Validates (InvalidInput on bad index / non-finite target, nothing changed then), normalises
   // an unsorted set, updates penalties on all levels for the added/removed points.
   Status setConstraints(const ConstraintSet& next) override;

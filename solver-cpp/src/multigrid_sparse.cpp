@@ -30,15 +30,30 @@ Csr transposeCsr(const Csr& a) {
 }
 
 Csr multiplyCsr(const Csr& a, const Csr& b) {
+  // Two passes (count, then fill arrays of the exact size): no push_back slack, so the memory of
+  // a product is its nnz (MgPcgSolver::estimateBytes counts on it).
   Csr c;
   c.rows = a.rows;
   c.cols = b.cols;
   c.ptr.assign(size_t(c.rows) + 1, 0);
-  std::vector<double> acc(size_t(b.cols), 0.0);
   std::vector<int> mark(size_t(b.cols), -1);
-  std::vector<int> cols;
   for (int r = 0; r < a.rows; ++r) {
-    cols.clear();
+    int64_t count = 0;
+    for (int64_t e = a.ptr[r]; e < a.ptr[r + 1]; ++e)
+      for (int64_t f = b.ptr[a.col[e]]; f < b.ptr[a.col[e] + 1]; ++f)
+        if (mark[b.col[f]] != r) {
+          mark[b.col[f]] = r;
+          ++count;
+        }
+    c.ptr[r + 1] = c.ptr[r] + count;
+  }
+  c.col.resize(size_t(c.ptr[size_t(c.rows)]));
+  c.val.resize(size_t(c.ptr[size_t(c.rows)]));
+  std::fill(mark.begin(), mark.end(), -1);
+  std::vector<double> acc(size_t(b.cols), 0.0);
+  for (int r = 0; r < a.rows; ++r) {
+    int* cols = c.col.data() + c.ptr[r];
+    int m = 0;
     for (int64_t e = a.ptr[r]; e < a.ptr[r + 1]; ++e) {
       const int k = a.col[e];
       const double av = a.val[e];
@@ -47,17 +62,14 @@ Csr multiplyCsr(const Csr& a, const Csr& b) {
         if (mark[j] != r) {
           mark[j] = r;
           acc[j] = 0.0;
-          cols.push_back(j);
+          cols[m++] = j;
         }
         acc[j] += av * b.val[f];
       }
     }
-    std::sort(cols.begin(), cols.end());
-    for (int j : cols) {
-      c.col.push_back(j);
-      c.val.push_back(acc[j]);
-    }
-    c.ptr[r + 1] = int64_t(c.col.size());
+    std::sort(cols, cols + m);
+    double* vals = c.val.data() + c.ptr[r];
+    for (int i = 0; i < m; ++i) vals[i] = acc[cols[i]];
   }
   return c;
 }

@@ -135,6 +135,11 @@ Csr interpolationMatrix(const Transfer3D& t) {
   p.rows = t.x.n * t.y.n * t.z.n;
   p.cols = t.coarseSize();
   p.ptr.assign(size_t(p.rows) + 1, 0);
+  // At most 2 weights per coarsened axis: reserve that bound (no push_back doubling slack).
+  const size_t perRow =
+      size_t(t.x.nc < t.x.n ? 2 : 1) * (t.y.nc < t.y.n ? 2 : 1) * (t.z.nc < t.z.n ? 2 : 1);
+  p.col.reserve(size_t(p.rows) * perRow);
+  p.val.reserve(size_t(p.rows) * perRow);
   int row = 0;
   for (int k = 0; k < t.z.n; ++k)
     for (int j = 0; j < t.y.n; ++j)

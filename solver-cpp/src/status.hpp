@@ -7,17 +7,19 @@
 namespace hairsketch {
 
 // InvalidInput: malformed input (sizes, ranges, layout). NonFinite: a NaN or infinity in the
-// input. OutOfMemory: the work would exceed a memory cap. NotReady: a phase called before the
-// one it needs (no grid, no scalp, curves changed since the last solve). NotPositiveDefinite,
-// NotConverged: numerical failures.
+// input. OverMemoryCap: the work would exceed the memory cap (memory_budget.hpp; refused before
+// allocating). NotReady: a phase called before the one it needs (no grid, no scalp, curves
+// changed since the last solve). NotPositiveDefinite, NotConverged: numerical failures.
+// Cancelled: the caller's progress hook asked to stop (a time cap).
 enum class StatusCode {
   Ok,
   InvalidInput,
   NonFinite,
-  OutOfMemory,
+  OverMemoryCap,
   NotReady,
   NotPositiveDefinite,
-  NotConverged
+  NotConverged,
+  Cancelled
 };
 
 struct Status {

@@ -153,8 +153,10 @@ Status growStrands(const Grid& g, const std::vector<float>& field,
   // per-point push_back), then trimmed to what was written.
   size_t used = 0;
   for (size_t r = 0; r < roots.size(); ++r) {
-    if (out.points.size() < used + perStrand)
-      out.points.resize(std::max(out.points.size() * 2, used + perStrand) + 3 * 4096);
+    if (out.points.size() < used + perStrand)  // doubling, never past every strand at its max
+      out.points.resize(
+          std::max(std::min(out.points.size() * 2, roots.size() * perStrand), used + perStrand) +
+          3 * 4096);
     float* dst = out.points.data() + used;
     float x = roots[r].x(), y = roots[r].y(), z = roots[r].z();
     *dst++ = x;
@@ -183,7 +185,7 @@ Status growStrands(const Grid& g, const std::vector<float>& field,
     if (used / 3 > maxPoints) {
       out.points.clear();
       out.strandStart.assign(1, 0);
-      return Status::Error(StatusCode::OutOfMemory, "grow: too many strand points");
+      return Status::Error(StatusCode::OverMemoryCap, "grow: too many strand points");
     }
     out.strandStart[r + 1] = uint32_t(used / 3);
   }

@@ -57,7 +57,7 @@ std::vector<float> toFloatField(const Field& T);
 // Trilinear interpolation of a float field at world point x (x inside the volume).
 Eigen::Vector3f interpolateField(const Grid& grid, const float* field, const Eigen::Vector3f& x);
 
-// Grows one strand per root. OutOfMemory (and no strands) if the output would exceed
+// Grows one strand per root. OverMemoryCap (and no strands) if the output would exceed
 // maxPoints points in total.
 Status growStrands(const Grid& grid, const std::vector<float>& field,
                    const std::vector<Eigen::Vector3f>& roots, const GrowthParams& params,

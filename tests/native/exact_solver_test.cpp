@@ -164,10 +164,12 @@ TEST(ExactSolver, RejectsBadInput) {
 }
 
 TEST(ExactSolver, CapRefusesHugeGrid) {
-  ExactSolverOptions o;
-  o.maxBytes = 1 << 20;
-  ExactSolver s(o);
-  EXPECT_EQ(s.setGrid(box(20, 20, 20), 100).code, StatusCode::OutOfMemory);
+  ExactSolver s;
+  s.setMemoryCap(1 << 20);
+  const Status st = s.setGrid(box(20, 20, 20), 100);
+  EXPECT_EQ(st.code, StatusCode::OverMemoryCap);
+  EXPECT_NE(st.message.find("over the memory cap (needs ~"), std::string::npos) << st.message;
+  EXPECT_NE(st.message.find(" MB, cap 1 MB)"), std::string::npos) << st.message;
 }
 
 TEST(ExactSolver, FailedDowndateIsRecoveredByRefactor) {

@@ -127,5 +127,6 @@ TEST(StrandGrowth, RejectsBadParamsAndMissingField) {
   EXPECT_FALSE(growStrands(g, {}, {Eigen::Vector3f(0, 1, 0)}, GrowthParams{}, s).ok());
   // Output cap.
   prm = GrowthParams{};
-  EXPECT_EQ(growStrands(g, v, {Eigen::Vector3f(0, 1, 0)}, prm, s, 3).code, StatusCode::OutOfMemory);
+  EXPECT_EQ(growStrands(g, v, {Eigen::Vector3f(0, 1, 0)}, prm, s, 3).code,
+            StatusCode::OverMemoryCap);
 }

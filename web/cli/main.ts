@@ -1,16 +1,26 @@
 // The `hairsketch` command line. Runs the same wasm module as the app, under Node.
-//   hairsketch solve PROBLEM.json --out DIR [--solver exact|fast|auto|cg]
+//   hairsketch solve PROBLEM.json --out DIR [--solver exact|fast|auto|cg] [--max-seconds N]
+//                    [--progress-seconds N]
 //   hairsketch grow SESSION --out FILE [--format …] [--grid …] [--solver …] [--strands N] (grow.ts)
-// Exit codes: 0 done, 2 bad input (a one-line message on stderr), 1 internal error.
-import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
+// Exit codes: 0 done, 2 bad input (a one-line message on stderr; a grid over the memory cap is
+// refused by the solver's estimate before it allocates), 3 stopped at the --max-seconds time cap,
+// 1 internal error. Iterative solves print a JSON progress line to stderr every
+// --progress-seconds (default 5).
+import { mkdirSync, readFileSync, writeFileSync, writeSync } from 'node:fs';
 import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { loadRawSolver } from '../solver/wasmEngine';
+import { SolverError } from '../solver/engine';
+import { loadRawSolver, type RawSolveProgress } from '../solver/wasmEngine';
 import { CliError } from './errors';
 import { runGrow } from './grow';
 import { constraintStates, decodeProblem } from './problem';
 
-const SOLVE_USAGE = 'usage: hairsketch solve PROBLEM.json --out DIR [--solver exact|fast|auto|cg]';
+const SOLVE_USAGE =
+  'usage: hairsketch solve PROBLEM.json --out DIR [--solver exact|fast|auto|cg] [--max-seconds N] [--progress-seconds N]';
+/** Default time cap of a `solve` run (seconds). */
+export const DEFAULT_MAX_SECONDS = 600;
+/** Exit code of a run stopped at its time cap. */
+export const EXIT_TIME_CAP = 3;
 const SOLVERS = ['exact', 'fast', 'auto', 'cg'];
 
 function parseArgs(argv: string[]): {
@@ -18,6 +28,8 @@ function parseArgs(argv: string[]): {
   problem: string;
   out: string;
   solver: string;
+  maxSeconds: number;
+  progressSeconds: number;
 } {
   const [command, ...rest] = argv;
   if (command !== 'solve')
@@ -29,13 +41,23 @@ function parseArgs(argv: string[]): {
   let problem = '';
   let out = '';
   let solver = 'auto';
+  let maxSeconds = DEFAULT_MAX_SECONDS;
+  let progressSeconds = 5;
+  const seconds = (a: string, v: string): number => {
+    const x = Number(v);
+    if (!(v.trim() !== '' && Number.isFinite(x) && x > 0))
+      throw new CliError(`${a} must be a number of seconds > 0, not "${v.slice(0, 40)}"`);
+    return x;
+  };
   for (let i = 0; i < rest.length; i++) {
     const a = rest[i];
-    if (a === '--out' || a === '--solver') {
+    if (a === '--out' || a === '--solver' || a === '--max-seconds' || a === '--progress-seconds') {
       const v = rest[++i];
       if (v === undefined) throw new CliError(`${a} needs a value; ${SOLVE_USAGE}`);
       if (a === '--out') out = v;
-      else solver = v;
+      else if (a === '--solver') solver = v;
+      else if (a === '--max-seconds') maxSeconds = seconds(a, v);
+      else progressSeconds = seconds(a, v);
     } else if (a.startsWith('--')) {
       throw new CliError(`unknown option "${a}"; ${SOLVE_USAGE}`);
     } else if (!problem) {
@@ -47,7 +69,7 @@ function parseArgs(argv: string[]): {
   if (!problem || !out) throw new CliError(SOLVE_USAGE);
   if (!SOLVERS.includes(solver))
     throw new CliError(`unknown solver "${solver}" (one of ${SOLVERS.join(', ')})`);
-  return { command, problem, out, solver };
+  return { command, problem, out, solver, maxSeconds, progressSeconds };
 }
 
 /** The wasm module's bytes (built by wasm-build/build.sh into web/generated/). */
@@ -77,9 +99,61 @@ export async function main(argv: string[]): Promise<number> {
     mkdirSync(args.out, { recursive: true });
     const solver = await loadRawSolver(args.solver, { wasmBinary: wasmBinary() });
     try {
-      solver.setGrid(p.grid, p.omega);
+      // The solver's memory estimate refuses a grid over the cap here, before allocating.
+      try {
+        solver.setGrid(p.grid, p.omega);
+      } catch (e) {
+        if (
+          e instanceof SolverError &&
+          (e.kind === 'over_memory_cap' || e.kind === 'invalid_input')
+        )
+          throw new CliError(`${p.grid.join('x')} grid: ${e.message}`);
+        throw e;
+      }
+      const start = performance.now();
+      const elapsed = () => (performance.now() - start) / 1000;
       let step = 0;
+      let stopped: RawSolveProgress | null = null;
+      let lastPrint = 0;
+      // Iterative solvers report every 250 ms of iterations; a line goes out every
+      // --progress-seconds, and past --max-seconds the solve is told to stop.
+      solver.onProgress(Math.min(250, 1000 * args.progressSeconds), (pr) => {
+        const t = elapsed();
+        if (t > args.maxSeconds) {
+          stopped = pr;
+          return false;
+        }
+        if (t - lastPrint >= args.progressSeconds) {
+          lastPrint = t;
+          writeSync(
+            2,
+            `${JSON.stringify({
+              progress: {
+                step,
+                iterations: pr.iterations,
+                errorEstimate: Number.isFinite(pr.errorEstimate) ? pr.errorEstimate : null,
+                relResidual: pr.relResidual,
+                seconds: Number(t.toFixed(1)),
+              },
+            })}\n`,
+          );
+        }
+        return true;
+      });
+      const timeCap = (pr: RawSolveProgress | null) =>
+        new CliError(
+          `stopped at the time cap of ${args.maxSeconds} s (--max-seconds) in step ${step}` +
+            (pr
+              ? ` after ${pr.iterations} iterations (relative residual ${pr.relResidual.toExponential(2)}` +
+                (Number.isFinite(pr.errorEstimate)
+                  ? `, error estimate ${pr.errorEstimate.toExponential(2)})`
+                  : ')')
+              : '') +
+            `; fields of steps before ${step} are written`,
+          EXIT_TIME_CAP,
+        );
       for (const state of constraintStates(p)) {
+        if (elapsed() > args.maxSeconds) throw timeCap(null);
         const index = new Int32Array(state.size);
         const target = new Float64Array(3 * state.size);
         let e = 0;
@@ -90,7 +164,12 @@ export async function main(argv: string[]): Promise<number> {
         }
         const t0 = performance.now();
         solver.setConstraints(index, target);
-        solver.solve();
+        try {
+          solver.solve();
+        } catch (err) {
+          if (stopped) throw timeCap(stopped);
+          throw err;
+        }
         const ms = performance.now() - t0;
         const field = solver.field();
         writeFileSync(

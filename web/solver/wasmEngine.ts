@@ -48,8 +48,34 @@ export interface RawSolveStats {
   solveMs: number;
 }
 
+/** Progress of a long raw solve (iterative solvers). */
+export interface RawSolveProgress {
+  iterations: number;
+  /** Estimated relative field error (Infinity while the solver has no estimate yet). */
+  errorEstimate: number;
+  relResidual: number;
+}
+
+/** The solver's memory estimate for a grid and the cap setGrid checks it against (bytes). */
+export interface MemoryEstimate {
+  needsBytes: number;
+  capBytes: number;
+}
+
+/** Binding calls beyond wasm-build/hairsolver.d.mts (estimate and progress plumbing). */
+type EstimateModule = HairSolverModule & {
+  _hs_raw_estimate(h: number, nx: number, ny: number, nz: number, out: number): number;
+  _hs_raw_set_progress(h: number, intervalMs: number): number;
+  hsOnProgress?: (iterations: number, errorEstimate: number, relResidual: number) => boolean;
+};
+
 /** The raw solver: an explicit grid (indices only) + constraint list -> field. */
 export interface RawSolver {
+  /** Memory estimate for a grid of these dims (no allocation) and the current cap. */
+  estimate(dims: [number, number, number]): MemoryEstimate;
+  /** During solve(), fn is called at most every intervalMs with the progress; returning false
+   *  stops the solve (solve() then throws). intervalMs <= 0 removes it. */
+  onProgress(intervalMs: number, fn?: (p: RawSolveProgress) => boolean): void;
   /** Once per solver. Grid point (i, j, k) has index i + nx * (j + ny * k). */
   setGrid(dims: [number, number, number], omega: number): void;
   /** index[c] = grid point, target[3 * c + axis] = its target. Duplicates are averaged. */
@@ -481,6 +507,23 @@ class WasmRawSolver implements RawSolver {
     const [nx, ny, nz] = dims;
     const unit = { originX: 0, originY: 0, originZ: 0, step: 1, solver: 0 };
     callWith(m, GRID_INPUT, { ...unit, omega, nx, ny, nz }, (p) => m._hs_raw_set_grid(h, p));
+  }
+
+  estimate(dims: [number, number, number]): MemoryEstimate {
+    const h = this.h();
+    const m = this.mod as EstimateModule;
+    return withScratch(m, 16, (out) => {
+      check(m, m._hs_raw_estimate(h, dims[0], dims[1], dims[2], out));
+      return { needsBytes: m.HEAPF64[out >> 3], capBytes: m.HEAPF64[(out >> 3) + 1] };
+    });
+  }
+
+  onProgress(intervalMs: number, fn?: (p: RawSolveProgress) => boolean): void {
+    const m = this.mod as EstimateModule;
+    m.hsOnProgress = fn
+      ? (iterations, errorEstimate, relResidual) => fn({ iterations, errorEstimate, relResidual })
+      : undefined;
+    check(m, m._hs_raw_set_progress(this.h(), fn ? intervalMs : 0));
   }
 
   setConstraints(index: Int32Array, target: Float64Array): void {
