@@ -24,7 +24,9 @@ test('served with a Content-Security-Policy that forbids inline script; the app 
   expect(csp).toContain("script-src 'self'");
   expect(csp).not.toContain("'unsafe-inline' 'self' 'wasm"); // no inline script allowed
   expect(csp).toMatch(/script-src[^;]*'wasm-unsafe-eval'/);
-  expect(csp.split(';').find((d) => d.trim().startsWith('script-src'))).not.toContain('unsafe-inline');
+  expect(csp.split(';').find((d) => d.trim().startsWith('script-src'))).not.toContain(
+    'unsafe-inline',
+  );
   await settled(page);
   // an inline script injected now is refused by the policy
   const ran = await page.evaluate(async () => {
@@ -70,7 +72,10 @@ test('script and HTML payloads in every string of a session file and its name on
     await expect(page.getByTestId('status')).toContainText(name);
   }
   // the same payloads in the curve ids alone (the field most likely to be drawn somewhere)
-  const onlyIds = { ...good, curves: curves.map((c, k) => ({ ...c, id: PAYLOADS[k % PAYLOADS.length] })) };
+  const onlyIds = {
+    ...good,
+    curves: curves.map((c, k) => ({ ...c, id: PAYLOADS[k % PAYLOADS.length] })),
+  };
   await page.locator('input[type=file]').setInputFiles({
     name: 'ids.json',
     mimeType: 'application/json',
@@ -89,7 +94,9 @@ test('script and HTML payloads in every string of a session file and its name on
   expect(now.curves.length).toBeGreaterThan(0);
 });
 
-test('payloads in a link only ever show as text, and the preset loads instead', async ({ page }) => {
+test('payloads in a link only ever show as text, and the preset loads instead', async ({
+  page,
+}) => {
   await page.goto('/?strands=800');
   await settled(page);
   const link = await page.evaluate(async (payload) => {
