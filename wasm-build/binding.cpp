@@ -325,6 +325,12 @@ EMSCRIPTEN_KEEPALIVE int32_t hs_engine_iterate(EngineHandle* h, int32_t maxItera
   return rc;
 }
 
+// 1 when the next hs_engine_iterate starts from zero (an iterative solver forgot its warm
+// start), 0 when there was nothing to forget (a direct solver, or no grid yet).
+EMSCRIPTEN_KEEPALIVE int32_t hs_engine_forget_warm_start(EngineHandle* h) {
+  return h && h->engine.forgetWarmStart() ? 1 : 0;
+}
+
 EMSCRIPTEN_KEEPALIVE int32_t hs_engine_grow(EngineHandle* h, const HsGrowthInput* in) {
   if (!h || !in) return fail(HS_INVALID_INPUT, "grow: no engine or input");
   if (!std::isfinite(in->seed)) return fail(HS_NON_FINITE, "grow: seed is not finite");

@@ -23,6 +23,7 @@ class AutoSolver : public FieldSolver {
   double estimateBytes(const Grid& grid) const override;
   void setProgressHook(ProgressHook hook) override;
   Status setConstraints(const ConstraintSet& next) override;
+  bool forgetWarmStart() override { return inner_ ? inner_->forgetWarmStart() : false; }
   Status solve(Field& T) override;
   Status iterate(int maxIterations, double tolerance, Field& T, IterateProgress& progress) override;
   const SolveStats& stats() const override;

@@ -39,6 +39,10 @@ class CgSolver : public FieldSolver {
   Status solve(Field& T) override;
   const SolveStats& stats() const override { return stats_; }
   std::string name() const override { return "cg"; }
+  bool forgetWarmStart() override {
+    previous_.resize(0, 3);
+    return true;
+  }
   // Estimated relative error bound of the last solve (max over components).
   double errorEstimate() const { return errorEstimate_; }
 

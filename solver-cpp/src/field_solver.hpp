@@ -71,6 +71,11 @@ class FieldSolver {
   }
   virtual const SolveStats& stats() const = 0;
   virtual std::string name() const = 0;
+  // Iterative solvers start the next solve()/iterate() from zero instead of the previous field,
+  // so the converged field depends on the constraints alone, not on the edits before them (a
+  // share link then reopens bit-identical hair). Returns whether there was a warm start to
+  // forget (direct solvers: false, their result never depends on history).
+  virtual bool forgetWarmStart() { return false; }
 
  protected:
   bool keepGoing(const IterateProgress& p) const { return !hook_ || hook_(p); }

@@ -29,6 +29,9 @@ class HairEngine {
   Status solve();
   // Progressive solve (FieldSolver::iterate): the field becomes the current iterate.
   Status iterate(int maxIterations, double tolerance, IterateProgress& progress);
+  // The next iterate() starts from zero (FieldSolver::forgetWarmStart); false for a direct
+  // solver (nothing to forget) or before setGrid.
+  bool forgetWarmStart() { return hasGrid_ && solver_ && solver_->forgetWarmStart(); }
   // Samples (or reuses) roots and grows strands in the last solved field.
   Status grow(const RootParams& roots, const GrowthParams& growth);
   // Scalp avoidance (S4.7) on the last solved field and the scalp mesh: the constraints to store

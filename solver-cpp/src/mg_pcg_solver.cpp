@@ -37,7 +37,8 @@ void dots3(const std::vector<double>& a, const std::vector<double>& b, double ou
 // padded fine rows, m_l points and s_l = prod_axis min(5, dim) stencil entries per row on coarse
 // level l, all in bytes):
 //   steady = 224 R   fine arrays (inv, diagK, w, invDiag, L, res: 80 R) + CG vectors (144 R)
-//          + sum_l (96 + 12 s_l) m_l   Galerkin CSR (12 per entry, 8 per row) + diagPos, invDiag,
+//          + sum_l (96 + 20 s_l) m_l   Galerkin CSR (12 per entry, 8 per row), its W = 0 copy
+//                                       (8 per entry) + diagPos, invDiag,
 //                                       x, b, res (96 per row)
 //          + 16 m_c^2                  dense coarsest matrix and its Cholesky factor
 //          + 24 (c_x n_y n_z + c_x c_y n_z)   transfer scratch at the fine level
@@ -62,13 +63,13 @@ double MgPcgSolver::estimateBytes(const Grid& grid) const {
     const double m = double(cx) * cy * cz;
     if (m == size) break;
     const double s = double(std::min(5, cx)) * std::min(5, cy) * std::min(5, cz);
-    levels += (96 + 12 * s) * m;
+    levels += (96 + 20 * s) * m;
     if (m1 == 0) m1 = m, s1 = s;
     coarsest = m;
     count += 1;
     ax = cx, ay = cy, az = cz;
   }
-  if (m1 == 0) levels = (96 + 12 * 25) * n;  // one level: its assembled matrix
+  if (m1 == 0) levels = (96 + 20 * 25) * n;  // one level: its assembled matrix
   auto axisP = [](int d) { return coarsenedSize(d) < d ? 2.0 : 1.0; };
   // Coarse support of one fine index (S1) and of three consecutive ones (S3), per axis.
   auto s1Of = [](int d) { return coarsenedSize(d) < d ? 2.0 : 1.0; };
@@ -151,6 +152,16 @@ Status MgPcgSolver::setConstraints(const ConstraintSet& input) {
   stats_.iterations = 0;
   stats_.setupMs = msSince(t0);
   return Status::Ok();
+}
+
+bool MgPcgSolver::forgetWarmStart() {
+  // the operators as a fresh solver builds them (no rounding of earlier edits), and a zero start
+  if (!mg_.resetPenalties().ok() || !mg_.prepare().ok()) return false;
+  std::fill(x_.begin(), x_.end(), 0.0);
+  runActive_ = false;
+  progress_ = MgProgress();
+  stats_.iterations = 0;
+  return true;
 }
 
 Status MgPcgSolver::startRun() {

@@ -53,6 +53,7 @@ class MgPcgSolver : public FieldSolver {
   // Runs at most maxIterations more CG iterations of the current solve, stopping early once
   // errorEstimate <= tolerance (tolerance 0: run exactly maxIterations).
   Status iterate(int maxIterations, double tolerance, MgProgress* progress = nullptr);
+  bool forgetWarmStart() override;
   // FieldSolver's progressive interface: the call above, then field(T).
   Status iterate(int maxIterations, double tolerance, Field& T,
                  IterateProgress& progress) override {

@@ -133,6 +133,7 @@ Status MultigridHierarchy::build(const Grid& grid, const MultigridOptions& optio
 }
 
 void MultigridHierarchy::finishLevel(Level& lv) {
+  lv.base = lv.A.val;
   const int n = lv.A.rows;
   lv.diagPos.assign(n, -1);
   lv.invDiag.assign(n, 0.0);
@@ -186,6 +187,12 @@ Status MultigridHierarchy::setPenalty(int p, double w) {
   if (delta == 0.0) return Status::Ok();
   fine_.w[r] = w;
   fine_.invDiag[r] = 1.0 / (fine_.diagK[r] + w);
+  Status s = addPenaltyToLevels(p, delta);
+  coarsestDirty_ = true;
+  return s;
+}
+
+Status MultigridHierarchy::addPenaltyToLevels(int p, double delta) {
   const int i = p % grid_.nx, j = (p / grid_.nx) % grid_.ny, k = p / (grid_.nx * grid_.ny);
   const size_t first = levels_.size() == 1 ? 0 : 1;
   for (size_t l = first; l < levels_.size(); ++l) {
@@ -208,6 +215,22 @@ Status MultigridHierarchy::setPenalty(int p, double w) {
       }
     }
     for (int a = 0; a < m; ++a) lv.invDiag[idx[a]] = 1.0 / lv.A.val[lv.diagPos[idx[a]]];
+  }
+  return Status::Ok();
+}
+
+Status MultigridHierarchy::resetPenalties() {
+  const size_t first = levels_.size() == 1 ? 0 : 1;
+  for (size_t l = first; l < levels_.size(); ++l) {
+    Level& lv = levels_[l];
+    lv.A.val = lv.base;
+    for (int i = 0; i < lv.A.rows; ++i) lv.invDiag[i] = 1.0 / lv.A.val[lv.diagPos[i]];
+  }
+  for (int p = 0; p < grid_.size(); ++p) {
+    const double w = fine_.w[paddedRow(p)];
+    if (w == 0.0) continue;
+    Status s = addPenaltyToLevels(p, w);
+    if (!s.ok()) return s;
   }
   coarsestDirty_ = true;
   return Status::Ok();
@@ -235,7 +258,8 @@ size_t MultigridHierarchy::memoryBytes() const {
              sizeof(double);
   for (const Level& l : levels_)
     b += l.A.memoryBytes() + l.diagPos.size() * sizeof(int64_t) +
-         (l.invDiag.size() + l.x.size() + l.b.size() + l.res.size()) * sizeof(double);
+         (l.base.size() + l.invDiag.size() + l.x.size() + l.b.size() + l.res.size()) *
+             sizeof(double);
   for (const Transfer3D& t : transfers_)
     b += (t.x.n + t.y.n + t.z.n) * (2 * sizeof(int) + 2 * sizeof(double));
   for (size_t l = 0; l < compX_.size(); ++l)

@@ -55,6 +55,12 @@ class MultigridHierarchy {
   double penalty(int p) const { return fine_.w[paddedRow(p)]; }
   // Sets w_p (fine) and updates all coarse operators locally. Call prepare() before vcycle().
   Status setPenalty(int p, double w);
+  // Rebuilds every coarse operator from its W = 0 values plus the current fine penalties added
+  // in ascending point order: the same arithmetic, in the same order, as a fresh hierarchy given
+  // these penalties, so the operators no longer carry the rounding of earlier edits (the
+  // preconditioner, and with a zero start the whole solve, then depend on the penalties alone).
+  // Call prepare() after it.
+  Status resetPenalties();
   // Refactors the coarsest level if a penalty change reached it.
   Status prepare();
 
@@ -74,6 +80,7 @@ class MultigridHierarchy {
   struct Level {
     int nx = 0, ny = 0, nz = 0;
     Csr A;                          // l >= 1, or l = 0 when it is the only level
+    std::vector<double> base;       // A.val with W = 0 (resetPenalties)
     std::vector<int64_t> diagPos;   // position of A(i, i) in A.val
     std::vector<double> invDiag;    // 1 / A(i, i)
     std::vector<double> x, b, res;  // n x 3 work vectors (l >= 1)
@@ -96,6 +103,7 @@ class MultigridHierarchy {
   };
 
   void computeL(const double* x, double* L) const;
+  Status addPenaltyToLevels(int p, double delta);
   void fineSweep(bool forward, double* x, const double* b);
   void fineResidual(const double* x, const double* b, double* res) const;
   void coarseSweep(int l, bool forward);

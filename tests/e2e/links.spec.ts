@@ -1,9 +1,9 @@
 // Share links, version 2 (web/model/sessionLink.ts): the default preset plus one stroke makes
 // an address-bar link short enough for a chat (≤ 2,000 characters, URL-safe), and that link
 // opened in a fresh page holds the identical session (the editor keeps every number on the
-// link's grid, web/model/quantize.ts) and grows the same hair: the identical hairHash with the
-// exact solver; with the default fast solver, whose converged field depends on the solves before
-// it (warm starts) to ~1e-6, the same roots and no tip moved by 0.01.
+// link's grid, web/model/quantize.ts) and grows the identical hair (the same hairHash) with the
+// exact solver and with the default fast solver, whose final field is solved from zero
+// (SolverEngine.forgetWarmStart), so it does not depend on the solves before it.
 import { deflateRawSync } from 'node:zlib';
 import { type BrowserContext, expect, type Page, test } from '@playwright/test';
 import { settled, strokeFromScalp, watchConsole } from './helpers';
@@ -63,26 +63,14 @@ test('the default preset with a stroke: a short link that reopens the identical 
   expect(await other.evaluate(() => window.hairsketch.hairHash())).toBe(a);
 });
 
-test('with the default (fast) solver no strand comes back elsewhere', async ({ page, context }) => {
+test('with the default (fast) solver the link reopens the identical hair too', async ({
+  page,
+  context,
+}) => {
   const { other } = await strokeAndReopen(page, context, '/?strands=30000');
-  const a = await page.evaluate(() => window.hairsketch.strandEnds());
-  const b = await other.evaluate(() => window.hairsketch.strandEnds());
-  expect(b.length).toBe(a.length);
-  let roots = 0;
-  let tips = 0;
-  let bits = 0;
-  for (let i = 0; i < a.length; i += 6) {
-    if (Math.hypot(a[i] - b[i], a[i + 1] - b[i + 1], a[i + 2] - b[i + 2]) > 0) roots++;
-    const d = Math.hypot(a[i + 3] - b[i + 3], a[i + 4] - b[i + 4], a[i + 5] - b[i + 5]);
-    if (d > 0.01) tips++;
-    if (d > 0) bits++;
-  }
-  const n = a.length / 6;
-  console.log(
-    `fast solver: of ${n} strands, ${roots} roots moved, ${tips} tips moved by more than 0.01, ${bits} tips differ at all`,
-  );
-  expect(roots).toBe(0);
-  expect(tips).toBeLessThanOrEqual(Math.ceil(0.001 * n));
+  const a = await page.evaluate(() => window.hairsketch.hairHash());
+  expect(a).not.toBeNull();
+  expect(await other.evaluate(() => window.hairsketch.hairHash())).toBe(a);
 });
 
 test('a link cut short says so and the preset loads instead', async ({ page }) => {

@@ -100,6 +100,36 @@ describe('growSessionHair', () => {
     );
   });
 
+  it("equals the worker's converged hair whatever the worker solved before (no warm-start trace)", async () => {
+    const engine = await loadSolverEngine({ wasmBinary });
+    const results: FromWorker[] = [];
+    const logic = new WorkerLogic(engine, (m) => results.push(m), {
+      ...DEFAULT_SCHEDULER,
+      yieldNow: () => Promise.resolve(),
+    });
+    await logic.handle({ type: 'init', grid, omega: 100, solver: 'fast', scalp: head.scalpMesh() });
+    const growth = { ...session.growth, maxStrands: 2000 };
+    const solve = (id: number, curves: typeof session.curves, mode: 'preview' | 'full') =>
+      logic.handle({
+        type: 'solve',
+        id,
+        curves: packCurves(curves, session.avoid ?? null),
+        growth,
+        wantField: false,
+        mode,
+        lightMaxStrands: 500,
+      });
+    // a history: the session without its last curve, previews of a part of it, then the session
+    await solve(1, session.curves.slice(0, -1), 'full');
+    await solve(2, session.curves.slice(0, -2), 'preview');
+    await solve(3, session.curves, 'full');
+    engine.dispose();
+    const final = results.find((m) => m.type === 'result' && m.final && m.id === 3);
+    if (final?.type !== 'result') throw new Error('the worker sent no final result');
+    const mine = await grow('fast', 2000);
+    expect(bytes(mine.hair.strands.points).equals(bytes(final.strands.points))).toBe(true);
+  });
+
   it('exact solver: deterministic too', async () => {
     const a = await grow('exact', 1000);
     const b = await grow('exact', 1000);

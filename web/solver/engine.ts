@@ -26,6 +26,11 @@ export interface SolverEngine {
    *  relative error is <= tolerance. Direct solvers solve fully and report converged. The
    *  field (and grow) then use the current iterate. */
   iterate(maxIterations: number, tolerance: number): IterateProgress;
+  /** The next iterate() starts from zero instead of the previous field, so the converged field
+   *  depends on the curves alone (the same session gives bit-identical hair whatever was drawn
+   *  before: share links, exports). False when there is nothing to forget (a direct solver).
+   *  Optional (test fakes). */
+  forgetWarmStart?(): boolean;
   /** Sample roots (S5.1) and grow strands (S5.2) in the current field. Returns copies. */
   grow(params: GrowthParams): StrandArrays;
   /** The current constraints (sorted by grid index); their colours come from constraintColours. */

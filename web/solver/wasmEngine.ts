@@ -408,6 +408,10 @@ class WasmEngine implements SolverEngine {
     };
   }
 
+  forgetWarmStart(): boolean {
+    return this.mod._hs_engine_forget_warm_start(this.h()) === 1;
+  }
+
   grow(g: GrowthParams): StrandArrays {
     const h = this.h();
     const m = this.mod;

@@ -155,9 +155,16 @@ export class WorkerLogic {
     }
     this.post({ type: 'progress', id: job.id, phase: 'solve', fraction: 0.05 });
     let p = this.engine.iterate(o.firstLookIterations, o.tolerance);
+    // A first look from the warm start (the last preview of nearly the same curves), grown light
+    // so it reaches the screen fast. The final field is then solved from zero: it depends on the
+    // session alone, so a share link, an export or the command line grow bit-identical hair.
+    if (!p.converged) this.emit(job, lightGrowth(job), p, false, t0);
+    if (this.engine.forgetWarmStart?.()) {
+      await o.yieldNow();
+      if (this.superseded()) return;
+      p = this.engine.iterate(o.sliceIterations, o.tolerance);
+    }
     if (!p.converged) {
-      // A first look, grown light so it reaches the screen fast; the final hair follows.
-      this.emit(job, lightGrowth(job), p, false, t0);
       while (!p.converged) {
         await o.yieldNow();
         if (this.superseded()) return;
