@@ -35,7 +35,7 @@ import { type LoadOptions, loadSolverEngine } from '../solver/wasmEngine';
 import { CliError } from './errors';
 
 export const GROW_USAGE =
-  'usage: hairsketch grow SESSION --out FILE [--format usda|hair|obj|glb] [--grid 25k|50k|100k|250k] [--solver fast|exact] [--strands N] [--with-head|--no-head]';
+  'usage: hairsketch grow SESSION --out FILE [--format usda|hair|obj|glb] [--grid 25k|50k|100k|250k] [--solver fast|exact] [--strands N] [--with-head|--no-head] [--max-seconds N] [--progress-seconds N]';
 
 const GROW_SOLVERS = ['fast', 'exact'] as const;
 type GrowSolver = (typeof GROW_SOLVERS)[number];
@@ -52,6 +52,10 @@ export interface GrowArgs {
   solver: GrowSolver;
   strands: number | null; // null: the session's growth.maxStrands
   head: boolean;
+  /** Stop (exit 3) when the solve and growth take longer than this. */
+  maxSeconds: number;
+  /** A JSON progress line on stderr at most this often during the solve. */
+  progressSeconds: number;
 }
 
 /** The one line `grow` prints on success. */
@@ -75,7 +79,23 @@ export function parseGrowArgs(argv: readonly string[]): GrowArgs {
   let solver = 'fast';
   let strands: string | null = null;
   let head: boolean | null = null;
-  const valued = ['--out', '--format', '--grid', '--solver', '--strands'];
+  let maxSeconds = 600;
+  let progressSeconds = 5;
+  const seconds = (a: string, v: string): number => {
+    const x = Number(v);
+    if (!(v.trim() !== '' && Number.isFinite(x) && x > 0))
+      throw new CliError(`${a} must be a number of seconds > 0, not "${v.slice(0, 40)}"`);
+    return x;
+  };
+  const valued = [
+    '--out',
+    '--format',
+    '--grid',
+    '--solver',
+    '--strands',
+    '--max-seconds',
+    '--progress-seconds',
+  ];
   for (let i = 0; i < argv.length; i++) {
     const a = argv[i];
     if (valued.includes(a)) {
@@ -85,6 +105,8 @@ export function parseGrowArgs(argv: readonly string[]): GrowArgs {
       else if (a === '--format') format = v;
       else if (a === '--grid') grid = v;
       else if (a === '--solver') solver = v;
+      else if (a === '--max-seconds') maxSeconds = seconds(a, v);
+      else if (a === '--progress-seconds') progressSeconds = seconds(a, v);
       else strands = v;
     } else if (a === '--with-head' || a === '--no-head') {
       head = a === '--with-head';
@@ -130,6 +152,8 @@ export function parseGrowArgs(argv: readonly string[]): GrowArgs {
     solver: solver as GrowSolver,
     strands: n,
     head: head ?? (fmt === 'usda' || fmt === 'glb'),
+    maxSeconds,
+    progressSeconds,
   };
 }
 
@@ -259,10 +283,28 @@ export async function runGrow(
   const engine = await loadSolverEngine(load);
   let hair: ReturnType<typeof growSessionHair>;
   try {
+    const t0 = performance.now();
+    let lastLine = t0;
     hair = growSessionHair(engine, session, head.scalpMesh(), {
       grid: gridForPreset(preset),
       solver: args.solver,
       ...(args.strands !== null ? { maxStrands: args.strands } : {}),
+      // between solver slices: progress on stderr now and then, and the time cap
+      onProgress: (phase, fraction) => {
+        const now = performance.now();
+        const s = (now - t0) / 1000;
+        if (now - lastLine >= 1000 * args.progressSeconds) {
+          lastLine = now;
+          process.stderr.write(
+            `${JSON.stringify({ phase, fraction: Number(fraction.toFixed(3)), seconds: Number(s.toFixed(1)) })}\n`,
+          );
+        }
+        if (s > args.maxSeconds)
+          throw new CliError(
+            `stopped at the time cap of ${args.maxSeconds} s (--max-seconds) while ${phase === 'solve' ? 'solving' : 'growing'} (${Math.round(100 * fraction)} %)`,
+            3,
+          );
+      },
     });
   } catch (e) {
     // a solver refusing the input (an exact factor over the memory cap, …) is the user's choice
