@@ -443,13 +443,17 @@ export function applyMutations(
         break;
       case 'addKey': {
         const v = parent[key];
-        if (!isObject(v) || Array.isArray(v)) continue;
-        Object.defineProperty(v, m.key, {
-          value: clonePlain(m.value),
-          enumerable: true,
-          writable: true,
-          configurable: true,
-        });
+        if (!isObject(v) || Array.isArray(v) || ArrayBuffer.isView(v)) continue;
+        try {
+          Object.defineProperty(v, m.key, {
+            value: clonePlain(m.value),
+            enumerable: true,
+            writable: true,
+            configurable: true,
+          });
+        } catch {
+          continue; // a value that takes no new keys (frozen, exotic): not a case for the reader
+        }
         log.push(`${at}[${JSON.stringify(m.key)}] = ${show(m.value)}`);
         break;
       }
