@@ -11,3 +11,11 @@ export class CliError extends Error {
     this.name = 'CliError';
   }
 }
+
+/** A `--max-seconds` / `--progress-seconds` value: a number of seconds > 0. */
+export function parseSeconds(option: string, value: string): number {
+  const x = Number(value);
+  if (!(value.trim() !== '' && Number.isFinite(x) && x > 0))
+    throw new CliError(`${option} must be a number of seconds > 0, not "${value.slice(0, 40)}"`);
+  return x;
+}

@@ -17,12 +17,8 @@ import {
 import { basename, dirname, join, resolve } from 'node:path';
 import { growSessionHair } from '../export/growSession';
 import { readExportedSession } from '../export/readExport';
-import {
-  EXPORT_FORMATS,
-  type ExportFormat,
-  type ExportHead,
-  MAX_POINTS_PER_STRAND,
-} from '../export/types';
+import { exportedCounts } from '../export/strandsForExport';
+import { EXPORT_FORMATS, type ExportFormat, type ExportHead } from '../export/types';
 import { formatFromFileName, writeExport } from '../export/writeExport';
 import { Head } from '../head/head';
 import { GRID_PRESETS, type GridPreset, gridForPreset, isGridPreset } from '../model/grid';
@@ -30,9 +26,8 @@ import type { SessionState } from '../model/session';
 import { parseSession } from '../model/sessionFile';
 import { decodeSessionLink } from '../model/sessionLink';
 import { SolverError } from '../solver/engine';
-import type { StrandArrays } from '../solver/protocol';
 import { type LoadOptions, loadSolverEngine } from '../solver/wasmEngine';
-import { CliError } from './errors';
+import { CliError, parseSeconds } from './errors';
 
 export const GROW_USAGE =
   'usage: hairsketch grow SESSION --out FILE [--format usda|hair|obj|glb] [--grid 25k|50k|100k|250k] [--solver fast|exact] [--strands N] [--with-head|--no-head] [--max-seconds N] [--progress-seconds N]';
@@ -81,12 +76,6 @@ export function parseGrowArgs(argv: readonly string[]): GrowArgs {
   let head: boolean | null = null;
   let maxSeconds = 600;
   let progressSeconds = 5;
-  const seconds = (a: string, v: string): number => {
-    const x = Number(v);
-    if (!(v.trim() !== '' && Number.isFinite(x) && x > 0))
-      throw new CliError(`${a} must be a number of seconds > 0, not "${v.slice(0, 40)}"`);
-    return x;
-  };
   const valued = [
     '--out',
     '--format',
@@ -105,8 +94,8 @@ export function parseGrowArgs(argv: readonly string[]): GrowArgs {
       else if (a === '--format') format = v;
       else if (a === '--grid') grid = v;
       else if (a === '--solver') solver = v;
-      else if (a === '--max-seconds') maxSeconds = seconds(a, v);
-      else if (a === '--progress-seconds') progressSeconds = seconds(a, v);
+      else if (a === '--max-seconds') maxSeconds = parseSeconds(a, v);
+      else if (a === '--progress-seconds') progressSeconds = parseSeconds(a, v);
       else strands = v;
     } else if (a === '--with-head' || a === '--no-head') {
       head = a === '--with-head';
@@ -207,21 +196,6 @@ export async function readSessionArg(arg: string): Promise<SessionState> {
   const parsed = parseSession(data);
   if (!parsed.ok) throw new CliError(`session ${arg}: ${parsed.error}`);
   return parsed.value;
-}
-
-/** Strands and points as the writers export them (export/strandsForExport.ts): strands of fewer
- *  than 2 points dropped, longer ones resampled to MAX_POINTS_PER_STRAND. */
-export function exportedCounts(s: StrandArrays): { strands: number; points: number } {
-  let strands = 0;
-  let points = 0;
-  const st = s.strandStart;
-  for (let i = 0; i + 1 < st.length; i++) {
-    const n = st[i + 1] - st[i];
-    if (n < 2) continue;
-    strands++;
-    points += Math.min(n, MAX_POINTS_PER_STRAND);
-  }
-  return { strands, points };
 }
 
 /** Checks now, before the solve, that a file can be created beside `out` (a probe, removed). */

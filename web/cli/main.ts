@@ -11,7 +11,7 @@ import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { SolverError } from '../solver/engine';
 import { loadRawSolver, type RawSolveProgress } from '../solver/wasmEngine';
-import { CliError } from './errors';
+import { CliError, parseSeconds } from './errors';
 import { runGrow } from './grow';
 import { constraintStates, decodeProblem } from './problem';
 
@@ -43,12 +43,6 @@ function parseArgs(argv: string[]): {
   let solver = 'auto';
   let maxSeconds = DEFAULT_MAX_SECONDS;
   let progressSeconds = 5;
-  const seconds = (a: string, v: string): number => {
-    const x = Number(v);
-    if (!(v.trim() !== '' && Number.isFinite(x) && x > 0))
-      throw new CliError(`${a} must be a number of seconds > 0, not "${v.slice(0, 40)}"`);
-    return x;
-  };
   for (let i = 0; i < rest.length; i++) {
     const a = rest[i];
     if (a === '--out' || a === '--solver' || a === '--max-seconds' || a === '--progress-seconds') {
@@ -56,8 +50,8 @@ function parseArgs(argv: string[]): {
       if (v === undefined) throw new CliError(`${a} needs a value; ${SOLVE_USAGE}`);
       if (a === '--out') out = v;
       else if (a === '--solver') solver = v;
-      else if (a === '--max-seconds') maxSeconds = seconds(a, v);
-      else progressSeconds = seconds(a, v);
+      else if (a === '--max-seconds') maxSeconds = parseSeconds(a, v);
+      else progressSeconds = parseSeconds(a, v);
     } else if (a.startsWith('--')) {
       throw new CliError(`unknown option "${a}"; ${SOLVE_USAGE}`);
     } else if (!problem) {

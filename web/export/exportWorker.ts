@@ -6,6 +6,7 @@ import { SolverError } from '../solver/engine';
 import { loadSolverEngine } from '../solver/wasmEngine';
 import type { ExportRequest, FromExportWorker } from './exportProtocol';
 import { growSessionHair } from './growSession';
+import { exportedCounts } from './strandsForExport';
 import { writeExport } from './writeExport';
 
 const scope = self as unknown as {
@@ -35,9 +36,7 @@ async function run(req: ExportRequest): Promise<void> {
     });
     const t0 = performance.now();
     let bytes = 0;
-    let strands = 0;
-    const s = hair.strands.strandStart;
-    for (let i = 0; i + 1 < s.length; i++) if (s[i + 1] - s[i] >= 2) strands++;
+    const { strands } = exportedCounts(hair.strands);
     let lastProgress = 0;
     for (const chunk of writeExport(
       req.format,

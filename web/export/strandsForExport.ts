@@ -186,3 +186,18 @@ function maxStrandLength(start: Uint32Array): number {
   for (let s = 0; s + 1 < start.length; s++) m = Math.max(m, start[s + 1] - start[s]);
   return m;
 }
+
+/** Strands and points as the writers export them (strandsForExport below): strands of fewer
+ *  than 2 points dropped, longer ones resampled to MAX_POINTS_PER_STRAND. */
+export function exportedCounts(s: StrandArrays): { strands: number; points: number } {
+  let strands = 0;
+  let points = 0;
+  const st = s.strandStart;
+  for (let i = 0; i + 1 < st.length; i++) {
+    const n = st[i + 1] - st[i];
+    if (n < 2) continue;
+    strands++;
+    points += Math.min(n, MAX_POINTS_PER_STRAND);
+  }
+  return { strands, points };
+}
