@@ -5,8 +5,8 @@
 // nothing about speed. The drag is paced like a hand (about 60 pointer events per second).
 import { type ChildProcess, spawn } from 'node:child_process';
 import { mkdirSync, writeFileSync } from 'node:fs';
-import http from 'node:http';
 import { chromium, type Page } from '@playwright/test';
+import { waitServer } from './previewServer';
 
 const PORT = Number(process.env.BENCH_PORT ?? 4190);
 const BASE = `http://127.0.0.1:${PORT}`;
@@ -35,21 +35,6 @@ const median = (xs: number[]): number | null => {
   const m = v.length >> 1;
   return v.length % 2 ? v[m] : (v[m - 1] + v[m]) / 2;
 };
-
-async function waitServer(): Promise<void> {
-  for (let i = 0; i < 300; i++) {
-    const ok = await new Promise<boolean>((resolve) => {
-      const req = http.get(`${BASE}/`, (res) => {
-        res.resume();
-        resolve(res.statusCode === 200);
-      });
-      req.on('error', () => resolve(false));
-    });
-    if (ok) return;
-    await new Promise((r) => setTimeout(r, 200));
-  }
-  throw new Error('vite preview did not start');
-}
 
 async function settled(page: Page, timeout = 600_000): Promise<void> {
   await page.waitForFunction(
@@ -132,7 +117,7 @@ async function main(): Promise<void> {
   });
   const rows: Array<Record<string, unknown>> = [];
   try {
-    await waitServer();
+    await waitServer(BASE);
     trace('server up');
     for (const { grid, solver } of configs) {
       const page = await browser.newPage({ viewport: { width: 1000, height: 750 } });

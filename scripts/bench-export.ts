@@ -5,10 +5,10 @@
 // Writes bench-results/export.json and prints a table.
 import { type ChildProcess, execFileSync, spawn } from 'node:child_process';
 import { mkdirSync, mkdtempSync, statSync, writeFileSync } from 'node:fs';
-import http from 'node:http';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { chromium, type Page } from '@playwright/test';
+import { waitServer } from './previewServer';
 
 const PORT = Number(process.env.BENCH_PORT ?? 4192);
 const BASE = `http://127.0.0.1:${PORT}`;
@@ -18,21 +18,6 @@ const ITEMS: Array<[string, string]> = [
   ['obj', 'OBJ (.obj)'],
   ['glb', 'glTF (.glb)'],
 ];
-
-async function waitServer(): Promise<void> {
-  for (let i = 0; i < 300; i++) {
-    const ok = await new Promise<boolean>((resolve) => {
-      const req = http.get(`${BASE}/`, (res) => {
-        res.resume();
-        resolve(res.statusCode === 200);
-      });
-      req.on('error', () => resolve(false));
-    });
-    if (ok) return;
-    await new Promise((r) => setTimeout(r, 200));
-  }
-  throw new Error('vite preview did not start');
-}
 
 async function ready(page: Page): Promise<void> {
   await page.waitForFunction(
@@ -62,7 +47,7 @@ async function main(): Promise<void> {
   const dir = mkdtempSync(join(tmpdir(), 'hairsketch-bench-export-'));
   const rows: Row[] = [];
   try {
-    await waitServer();
+    await waitServer(BASE);
     const browser = await chromium.launch({
       executablePath: process.env.CHROMIUM_PATH ?? '/usr/bin/chromium',
       args: ['--no-sandbox', '--disable-gpu', '--enable-unsafe-swiftshader'],
