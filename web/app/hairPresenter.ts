@@ -47,8 +47,7 @@ export class HairPresenter {
   }
 
   editorChanged(c: EditorChange): void {
-    if (c.session.hairColor !== c.previous.hairColor || c.cause !== 'command')
-      this.hair.setColor(c.session.hairColor);
+    this.hair.setColor(c.session.hairColor); // a no-op when it is the same colour
     if (c.sessionChanged) this.viewer.hold('settling', true); // until the final hair is shown
   }
 
