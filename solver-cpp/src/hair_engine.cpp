@@ -56,7 +56,10 @@ Status HairEngine::setScalp(const float* positions, size_t vertexCount, const ui
   meshPositions_.clear();
   meshIndices_.clear();
   meshScalp_.clear();
+  headDistance_.clear();
   Status s = scalp_.build(positions, vertexCount, indices, triangleCount, scalp, center);
+  if (!s.ok()) return s;
+  s = headDistance_.build(HeadMeshView{positions, vertexCount, indices, triangleCount, scalp});
   if (!s.ok()) return s;
   meshPositions_.assign(positions, positions + 3 * vertexCount);
   meshIndices_.assign(indices, indices + 3 * triangleCount);
@@ -139,7 +142,8 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
     strands_.strandStart.assign(1, 0);
     return fits;
   }
-  Status s = growStrands(grid_, fieldF_, roots(), gp, strands_);
+  Status s = growStrands(grid_, fieldF_, roots(), gp, strands_, size_t(24) << 20,
+                         headDistance_.built() ? &headDistance_ : nullptr);
   growMs_ = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
   return s;
 }

@@ -11,6 +11,7 @@
 #include "curve_set.hpp"
 #include "field_solver.hpp"
 #include "grid.hpp"
+#include "head_distance.hpp"
 #include "scalp_avoidance.hpp"
 #include "scalp_roots.hpp"
 #include "status.hpp"
@@ -48,6 +49,8 @@ class HairEngine {
   const std::vector<Eigen::Vector3f>& roots() const { return capped_ ? cappedRoots_ : roots_; }
   SolveStats stats() const;
   double growMs() const { return growMs_; }
+  // The head's distance grid (built by setScalp): growth keeps hair outside it.
+  const HeadDistance& headDistance() const { return headDistance_; }
   const Grid& grid() const { return grid_; }
 
  private:
@@ -58,6 +61,7 @@ class HairEngine {
   std::vector<float> meshPositions_;  // the head mesh as given to setScalp (scalp avoidance)
   std::vector<uint32_t> meshIndices_;
   std::vector<uint8_t> meshScalp_;
+  HeadDistance headDistance_;
   ConstraintSet constraints_;
   std::vector<uint8_t> colours_;
   Field field_;

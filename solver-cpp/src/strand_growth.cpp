@@ -126,7 +126,7 @@ struct PaddedSampler {
 
 Status growStrands(const Grid& g, const std::vector<float>& field,
                    const std::vector<Eigen::Vector3f>& roots, const GrowthParams& prm, Strands& out,
-                   size_t maxPoints) {
+                   size_t maxPoints, const HeadDistance* head) {
   // The point buffer keeps its capacity from the last call and is not zero-filled (see
   // UninitAllocator), so a repeated growth neither reallocates nor refills it.
   out.points.clear();
@@ -142,6 +142,11 @@ Status growStrands(const Grid& g, const std::vector<float>& field,
     return Status::Error(StatusCode::InvalidInput, "grow: maxLength must be >= 0");
   if (prm.maxSegments < 0)
     return Status::Error(StatusCode::InvalidInput, "grow: maxSegments must be >= 0");
+  if (!(prm.margin >= 0) || !std::isfinite(prm.margin) || !(prm.minSlide >= 0) ||
+      !std::isfinite(prm.minSlide))
+    return Status::Error(StatusCode::InvalidInput, "grow: margin and minSlide must be >= 0");
+  if (head && !head->built()) head = nullptr;
+  const float margin = float(prm.margin), minSlide = float(prm.minSlide);
   out.points.resize(out.points.capacity());
   const PaddedSampler s(g, field);
   const float l = float(prm.stepFraction * g.step);
@@ -168,9 +173,30 @@ Status growStrands(const Grid& g, const std::vector<float>& field,
         const F4 v = s.at(x, y, z);
         const float m2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
         if (!(m2 >= minMag2)) break;  // weak field (or NaN)
-        const float nx = x + l * v[0], ny = y + l * v[1], nz = z + l * v[2];
+        float nx = x + l * v[0], ny = y + l * v[1], nz = z + l * v[2];
+        double segLen = double(l) * std::sqrt(double(m2));
+        if (head) {
+          float grad[3];
+          if (head->distance(nx, ny, nz, grad) < margin) {
+            // Slide: drop the inward part of the step, then stand off at the margin.
+            float st[3] = {nx - x, ny - y, nz - z};
+            const float g2 = grad[0] * grad[0] + grad[1] * grad[1] + grad[2] * grad[2];
+            const float sn = (st[0] * grad[0] + st[1] * grad[1] + st[2] * grad[2]);
+            if (g2 > 1e-6f && sn < 0)
+              for (int e = 0; e < 3; ++e) st[e] -= sn / g2 * grad[e];
+            float q[3] = {x + st[0], y + st[1], z + st[2]};
+            head->pushOut(q, margin);
+            const double moved =
+                std::sqrt(double(q[0] - x) * (q[0] - x) + double(q[1] - y) * (q[1] - y) +
+                          double(q[2] - z) * (q[2] - z));
+            if (!(moved >= minSlide * segLen)) break;  // the field points into the head
+            nx = q[0];
+            ny = q[1];
+            nz = q[2];
+            segLen = moved;
+          }
+        }
         if (!s.inside(nx, ny, nz)) break;  // leaving the bounding volume
-        const double segLen = double(l) * std::sqrt(double(m2));
         if (length + segLen > maxLen) break;
         length += segLen;
         x = nx;
@@ -191,6 +217,20 @@ Status growStrands(const Grid& g, const std::vector<float>& field,
   }
   out.points.resize(used);
   return Status::Ok();
+}
+
+size_t keepOutsideHead(const HeadDistance& head, float margin, Strands& strands) {
+  if (!head.built()) return 0;
+  size_t moved = 0;
+  for (size_t st = 0; st + 1 < strands.strandStart.size(); ++st)
+    for (uint32_t p = strands.strandStart[st] + 1; p < strands.strandStart[st + 1]; ++p) {
+      float* q = strands.points.data() + 3 * size_t(p);
+      if (head.distance(q[0], q[1], q[2]) < margin) {
+        head.pushOut(q, margin);
+        ++moved;
+      }
+    }
+  return moved;
 }
 
 }  // namespace hairsketch

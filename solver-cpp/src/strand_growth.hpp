@@ -2,6 +2,10 @@
 // l = stepFraction * d, v trilinearly interpolated from the field and not normalised (paper §6).
 // A strand stops when |v(p)| < minMagnitude, when the next point would leave the bounding
 // volume, when the next segment would take its length past maxLength, or after maxSegments.
+// With the head's distance grid, hair stays outside the head: a next point closer to the head
+// than `margin` loses the inward part of its step (the strand slides along the surface) and is
+// pushed out to the margin; when what is left of the step is shorter than minSlide times the
+// step the field asked for (the field points into the head), the strand stops there.
 #pragma once
 
 #include <Eigen/Core>
@@ -12,6 +16,7 @@
 
 #include "field_system.hpp"
 #include "grid.hpp"
+#include "head_distance.hpp"
 #include "status.hpp"
 
 namespace hairsketch {
@@ -21,6 +26,8 @@ struct GrowthParams {
   double minMagnitude = 0.05;
   double maxLength = 1e30;  // world units
   int maxSegments = 200;
+  double margin = 0.02;   // world units kept between hair and head (0.02 = 2 mm)
+  double minSlide = 0.3;  // of the step the field asks for
 };
 
 // protocol.ts StrandArrays: strand s owns points strandStart[s] .. strandStart[s + 1] - 1,
@@ -61,6 +68,11 @@ Eigen::Vector3f interpolateField(const Grid& grid, const float* field, const Eig
 // maxPoints points in total.
 Status growStrands(const Grid& grid, const std::vector<float>& field,
                    const std::vector<Eigen::Vector3f>& roots, const GrowthParams& params,
-                   Strands& out, size_t maxPoints = size_t(24) << 20);
+                   Strands& out, size_t maxPoints = size_t(24) << 20,
+                   const HeadDistance* head = nullptr);
+
+// Moves every point but the roots that lies closer to the head than `margin` out to it (after
+// detail has moved points). Returns how many points moved.
+size_t keepOutsideHead(const HeadDistance& head, float margin, Strands& strands);
 
 }  // namespace hairsketch

@@ -1,7 +1,7 @@
 // SPEC S4.2 against a sphere "scalp" (the whole sphere is scalp here), ray-traced by hand.
 import { describe, expect, it } from 'vitest';
 import { dot, normalize, sub, type Vec3 } from '../../web/model/vec3';
-import { liftStroke, type StrokeSample } from '../../web/tools/depthRule';
+import { liftStroke, STROKE_MARGIN, type StrokeSample } from '../../web/tools/depthRule';
 
 const R = 1;
 const eye: Vec3 = [0, 0, 5];
@@ -60,5 +60,51 @@ describe('liftStroke (S4.2 depth rule)', () => {
     // Point at x = 0.4 on the plane at the last scalp depth: t = depth, position x = 0.4 * depth.
     const depth = dot(sub(lifted.points[4], eye), forward);
     expect(lifted.points[7][0]).toBeCloseTo(0.4 * (depth / 1) * (1 / 1), 10);
+  });
+
+  it('brings a point the depth rule puts inside the head to the margin in front of it', () => {
+    // The scalp is the sphere's cap above y = 0.5; below it the sphere is "face": rays that hit
+    // it carry its distance but no scalp hit. A stroke from the top down over the front: at the
+    // last scalp depth the points below would lie inside the sphere.
+    const over = (x: number, y: number): StrokeSample => {
+      const direction = normalize(sub([x, y, 4], eye));
+      const hit = sphereHit(eye, direction);
+      const headDistance = hit ? Math.hypot(...sub(hit, eye)) : null;
+      return { origin: eye, direction, scalpHit: hit && hit[1] > 0.5 ? hit : null, headDistance };
+    };
+    const ys = [0.16, 0.14, 0.12, 0.1, 0.08, 0.05, 0.02, -0.05];
+    const lifted = liftStroke(
+      ys.map((y) => over(0, y)),
+      eye,
+      forward,
+    );
+    if (!lifted.ok) throw new Error('expected ok');
+    const bare = liftStroke(
+      ys.map((y) => ({ ...over(0, y), headDistance: null })),
+      eye,
+      forward,
+    );
+    if (!bare.ok) throw new Error('expected ok');
+    const bareDepth = (i: number) => Math.hypot(...sub(bare.points[i], eye));
+    let moved = 0;
+    ys.forEach((y, i) => {
+      const p = lifted.points[i];
+      const s = over(0, y);
+      if (Math.hypot(...sub(p, bare.points[i])) > 1e-9) moved++;
+      const r = Math.hypot(...p);
+      if (s.scalpHit) expect(r).toBeCloseTo(R, 12);
+      else if (s.headDistance !== null && s.headDistance !== undefined) {
+        // at least STROKE_MARGIN in front of the sphere along the ray, exactly that when the
+        // last scalp depth lies behind it
+        const t = Math.hypot(...sub(p, eye));
+        expect(t).toBeLessThanOrEqual(s.headDistance - STROKE_MARGIN + 1e-12);
+        if (bareDepth(i) > s.headDistance - STROKE_MARGIN)
+          expect(t).toBeCloseTo(s.headDistance - STROKE_MARGIN, 12);
+        expect(r).toBeGreaterThan(R);
+      } else expect(r).toBeGreaterThan(R); // past the silhouette: the plane of the last scalp point
+    });
+    // Without the head distance some of the same points are inside: the rule is what moved them.
+    expect(Math.hypot(...bare.points[5])).toBeLessThan(R);
+    expect(moved).toBeGreaterThanOrEqual(2);
   });
 });

@@ -1,6 +1,9 @@
 // SPEC S4.2: lifting a screen stroke onto the head. The first point takes the depth of its scalp
 // hit; each next point takes the scalp depth while over the scalp, else the depth of the last
-// scalp point. "Depth" is the distance along the camera's viewing direction.
+// scalp point. "Depth" is the distance along the camera's viewing direction. A point that depth
+// would put inside the head (a stroke passing over the face, the ears, the neck) is brought
+// forward along its ray to STROKE_MARGIN in front of the head's surface instead, so style
+// curves never run inside the head.
 import { add, dot, scale, sub, type Vec3 } from '../model/vec3';
 
 export interface StrokeSample {
@@ -9,6 +12,9 @@ export interface StrokeSample {
   scalpHit: Vec3 | null; // first hit of the ray on the head, when it is on the scalp
   headDistance?: number | null; // distance along the ray to the first head hit (any part)
 }
+
+/** World units (0.06 = 6 mm) kept along the ray in front of a head hit by a lifted point. */
+export const STROKE_MARGIN = 0.06;
 
 export type LiftResult = { ok: true; points: Vec3[] } | { ok: false; reason: 'not-on-scalp' };
 
@@ -25,7 +31,9 @@ export function liftStroke(samples: readonly StrokeSample[], eye: Vec3, forward:
     } else {
       const along = dot(s.direction, forward);
       if (along <= 1e-9) continue; // a ray parallel to the image plane has no point at that depth
-      const t = (depth - dot(sub(s.origin, eye), forward)) / along;
+      let t = (depth - dot(sub(s.origin, eye), forward)) / along;
+      if (s.headDistance != null && t > s.headDistance - STROKE_MARGIN)
+        t = Math.max(0, s.headDistance - STROKE_MARGIN);
       points.push(add(s.origin, scale(s.direction, t)));
     }
   }

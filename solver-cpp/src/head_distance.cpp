@@ -1,0 +1,178 @@
+#include "head_distance.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "triangle_geometry.hpp"
+
+namespace hairsketch {
+
+namespace {
+using V3 = Eigen::Vector3d;
+}
+
+Status HeadDistance::build(const HeadMeshView& m, double cell, int bandCells) {
+  d_.clear();
+  if (m.triangleCount == 0 || !m.positions || !m.indices)
+    return Status::Error(StatusCode::InvalidInput, "head distance: no mesh");
+  if (!(cell > 0) || !std::isfinite(cell) || bandCells < 1)
+    return Status::Error(StatusCode::InvalidInput, "head distance: bad cell size or band");
+  for (size_t i = 0; i < 3 * m.triangleCount; ++i)
+    if (m.indices[i] >= m.vertexCount)
+      return Status::Error(StatusCode::InvalidInput, "head distance: triangle index out of range");
+  auto vert = [&](uint32_t v) {
+    return V3(m.positions[3 * v], m.positions[3 * v + 1], m.positions[3 * v + 2]);
+  };
+  V3 lo = V3::Constant(std::numeric_limits<double>::infinity()), hi = -lo, sum = V3::Zero();
+  for (size_t v = 0; v < m.vertexCount; ++v) {
+    const V3 p = vert(uint32_t(v));
+    if (!p.allFinite())
+      return Status::Error(StatusCode::NonFinite, "head distance: vertex is not finite");
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+    sum += p;
+  }
+  const double band = bandCells * cell;
+  const double pad = (bandCells + 2) * cell;
+  lo.array() -= pad;
+  hi.array() += pad;
+  const V3 ext = (hi - lo) / cell;
+  const int nx = int(std::ceil(ext.x())) + 1, ny = int(std::ceil(ext.y())) + 1,
+            nz = int(std::ceil(ext.z())) + 1;
+  if (double(nx) * ny * nz > 64e6)
+    return Status::Error(StatusCode::OverMemoryCap, "head distance: head too large for its grid");
+  // Area-weighted vertex normals (counter-clockwise = outward, as in three.js).
+  std::vector<V3> vn(m.vertexCount, V3::Zero());
+  for (size_t t = 0; t < m.triangleCount; ++t) {
+    const uint32_t* I = m.indices + 3 * t;
+    const V3 fn = (vert(I[1]) - vert(I[0])).cross(vert(I[2]) - vert(I[0]));
+    for (int k = 0; k < 3; ++k) vn[I[k]] += fn;
+  }
+  for (V3& n : vn) {
+    const double l = n.norm();
+    if (l > 0) n /= l;
+  }
+  const size_t n = size_t(nx) * ny * nz;
+  const float inf = std::numeric_limits<float>::infinity();
+  std::vector<float> d(n, inf);  // signed, compared by magnitude
+  auto at = [&](int i, int j, int k) {
+    return size_t(i) + size_t(nx) * (size_t(j) + size_t(ny) * k);
+  };
+  for (size_t t = 0; t < m.triangleCount; ++t) {
+    const uint32_t* I = m.indices + 3 * t;
+    const V3 a = vert(I[0]), b = vert(I[1]), c = vert(I[2]);
+    const V3 faceN = (b - a).cross(c - a);
+    const V3 blo = (a.cwiseMin(b).cwiseMin(c).array() - band - lo.array()) / cell;
+    const V3 bhi = (a.cwiseMax(b).cwiseMax(c).array() + band - lo.array()) / cell;
+    const int i0 = std::max(0, int(std::ceil(blo.x()))), i1 = std::min(nx - 1, int(bhi.x()));
+    const int j0 = std::max(0, int(std::ceil(blo.y()))), j1 = std::min(ny - 1, int(bhi.y()));
+    const int k0 = std::max(0, int(std::ceil(blo.z()))), k1 = std::min(nz - 1, int(bhi.z()));
+    for (int k = k0; k <= k1; ++k)
+      for (int j = j0; j <= j1; ++j)
+        for (int i = i0; i <= i1; ++i) {
+          const V3 p = lo + cell * V3(i, j, k);
+          const V3 w = closestBarycentric(p, a, b, c);
+          const V3 q = w.x() * a + w.y() * b + w.z() * c;
+          const double dist = (p - q).norm();
+          float& cur = d[at(i, j, k)];
+          if (!(dist < std::fabs(cur)) || dist > band) continue;
+          V3 nrm = w.x() * vn[I[0]] + w.y() * vn[I[1]] + w.z() * vn[I[2]];
+          if (!(nrm.squaredNorm() > 1e-24)) nrm = faceN;
+          cur = float((p - q).dot(nrm) < 0 ? -dist : dist);
+        }
+  }
+  // Far cells: outside when connected to the border through far cells.
+  std::vector<uint8_t> outside(n, 0);
+  std::vector<size_t> stack;
+  auto seed = [&](size_t idx) {
+    if (!outside[idx] && std::isinf(d[idx])) {
+      outside[idx] = 1;
+      stack.push_back(idx);
+    }
+  };
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i)
+        if (i == 0 || j == 0 || k == 0 || i == nx - 1 || j == ny - 1 || k == nz - 1)
+          seed(at(i, j, k));
+  while (!stack.empty()) {
+    const size_t idx = stack.back();
+    stack.pop_back();
+    const int i = int(idx % size_t(nx)), j = int((idx / size_t(nx)) % size_t(ny)),
+              k = int(idx / (size_t(nx) * size_t(ny)));
+    if (i > 0) seed(idx - 1);
+    if (i < nx - 1) seed(idx + 1);
+    if (j > 0) seed(idx - size_t(nx));
+    if (j < ny - 1) seed(idx + size_t(nx));
+    if (k > 0) seed(idx - size_t(nx) * ny);
+    if (k < nz - 1) seed(idx + size_t(nx) * ny);
+  }
+  for (size_t idx = 0; idx < n; ++idx)
+    if (std::isinf(d[idx])) d[idx] = float(outside[idx] ? band : -band);
+  d_ = std::move(d);
+  nx_ = nx;
+  ny_ = ny;
+  nz_ = nz;
+  h_ = cell;
+  inv_ = float(1.0 / cell);
+  ox_ = float(lo.x());
+  oy_ = float(lo.y());
+  oz_ = float(lo.z());
+  far_ = float(band);
+  centre_ = (sum / double(m.vertexCount)).cast<float>();
+  return Status::Ok();
+}
+
+float HeadDistance::distance(float x, float y, float z, float gradient[3]) const {
+  const float u = (x - ox_) * inv_, v = (y - oy_) * inv_, w = (z - oz_) * inv_;
+  if (!(u >= 0 && v >= 0 && w >= 0 && u < float(nx_ - 1) && v < float(ny_ - 1) &&
+        w < float(nz_ - 1))) {
+    if (gradient) gradient[0] = gradient[1] = gradient[2] = 0;
+    return far_;
+  }
+  const int i = int(u), j = int(v), k = int(w);
+  const float a = u - float(i), b = v - float(j), c = w - float(k);
+  const size_t sy = size_t(nx_), sz = size_t(nx_) * size_t(ny_);
+  const float* p = d_.data() + size_t(i) + sy * size_t(j) + sz * size_t(k);
+  const float d000 = p[0], d100 = p[1], d010 = p[sy], d110 = p[sy + 1];
+  const float d001 = p[sz], d101 = p[sz + 1], d011 = p[sz + sy], d111 = p[sz + sy + 1];
+  const float x00 = d000 + a * (d100 - d000), x10 = d010 + a * (d110 - d010);
+  const float x01 = d001 + a * (d101 - d001), x11 = d011 + a * (d111 - d011);
+  const float y0 = x00 + b * (x10 - x00), y1 = x01 + b * (x11 - x01);
+  if (gradient) {
+    const float gx0 = (1 - b) * (d100 - d000) + b * (d110 - d010);
+    const float gx1 = (1 - b) * (d101 - d001) + b * (d111 - d011);
+    gradient[0] = ((1 - c) * gx0 + c * gx1) * inv_;
+    const float gy0 = (1 - a) * (d010 - d000) + a * (d110 - d100);
+    const float gy1 = (1 - a) * (d011 - d001) + a * (d111 - d101);
+    gradient[1] = ((1 - c) * gy0 + c * gy1) * inv_;
+    gradient[2] = (y1 - y0) * inv_;
+  }
+  return y0 + c * (y1 - y0);
+}
+
+float HeadDistance::pushOut(float p[3], float margin) const {
+  float g[3];
+  const float d0 = distance(p[0], p[1], p[2], g);
+  float d = d0;
+  // A few Newton steps along the gradient: the distance's gradient has unit length where it
+  // is exact, so one step usually lands on the margin.
+  for (int it = 0; it < 4 && d < margin; ++it) {
+    float len = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+    if (!(len > 1e-3f)) {
+      g[0] = p[0] - centre_.x();
+      g[1] = p[1] - centre_.y();
+      g[2] = p[2] - centre_.z();
+      len = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+      if (!(len > 0)) return d0;
+    }
+    const float move = (margin - d) / len;  // along the unit gradient g / len
+    for (int e = 0; e < 3; ++e) p[e] += move * g[e] / len;
+    d = distance(p[0], p[1], p[2], g);
+  }
+  return d0;
+}
+
+}  // namespace hairsketch

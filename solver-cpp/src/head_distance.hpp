@@ -1,0 +1,47 @@
+// The head's signed distance on a fine grid of its own, for keeping hair outside the head
+// (growth and detail never leave a strand point inside it).
+//
+// Built once per head mesh:
+//   cells of size h over the mesh's bounds grown by (band + 2) cells;
+//   every cell within band * h of a triangle gets its exact distance to the nearest triangle
+//     (each triangle splatted into its box grown by band * h), signed by the outward normal at
+//     the closest point (area-weighted vertex normals interpolated by its barycentric weights);
+//   every other cell is ±band * h: outside when a 6-connected path of such cells reaches the
+//     grid's border (flood fill), inside otherwise, so the sign far from the surface needs no
+//     normals and tolerates meshes with several parts.
+// Queries interpolate trilinearly (accurate to about h² / (8 R) on a surface of radius R) and are
+// +band * h outside the grid.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <cstdint>
+#include <vector>
+
+#include "scalp_avoidance.hpp"
+#include "status.hpp"
+
+namespace hairsketch {
+
+class HeadDistance {
+ public:
+  Status build(const HeadMeshView& mesh, double cell = 0.03, int bandCells = 3);
+  bool built() const { return !d_.empty(); }
+  void clear() { d_.clear(); }
+  // Signed distance (negative inside) and its gradient (not normalised; zero when flat).
+  float distance(float x, float y, float z, float gradient[3] = nullptr) const;
+  // Moves p out to `margin` outside the surface along the distance gradient (the direction
+  // from the mesh centre where the gradient vanishes). Returns the distance before the move.
+  float pushOut(float p[3], float margin) const;
+  double cellSize() const { return h_; }
+  size_t cells() const { return d_.size(); }
+
+ private:
+  float ox_ = 0, oy_ = 0, oz_ = 0, inv_ = 1, far_ = 0;
+  double h_ = 0;
+  int nx_ = 0, ny_ = 0, nz_ = 0;
+  Eigen::Vector3f centre_ = Eigen::Vector3f::Zero();
+  std::vector<float> d_;
+};
+
+}  // namespace hairsketch

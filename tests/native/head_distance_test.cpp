@@ -1,0 +1,149 @@
+// The head's distance grid against the analytic distance of a sphere, and growth that keeps
+// hair outside it.
+#include "head_distance.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "sphere_mesh.hpp"
+#include "strand_growth.hpp"
+
+using namespace hairsketch;
+
+namespace {
+
+HeadMeshView view(const hairsketch_test::Mesh& m) {
+  return HeadMeshView{m.positions.data(), m.positions.size() / 3, m.indices.data(),
+                      m.indices.size() / 3, m.scalp.data()};
+}
+
+// A fine UV sphere of radius 1 at the origin: its chords lie within 1 - cos(pi / 96) of the
+// sphere, 5e-4.
+hairsketch_test::Mesh sphere() {
+  hairsketch_test::Mesh m = hairsketch_test::uvSphere(0, 0, 0, 1, 96, 192);
+  hairsketch_test::markScalpAbove(m, -2);
+  return m;
+}
+
+Grid box() {
+  Grid g;
+  g.nx = g.ny = g.nz = 41;
+  g.step = 0.1;
+  g.origin = Eigen::Vector3d(-2, -2, -2);
+  return g;
+}
+
+}  // namespace
+
+TEST(HeadDistance, MatchesTheSpheresDistanceNearTheSurfaceAndItsSignEverywhere) {
+  const auto m = sphere();
+  HeadDistance hd;
+  ASSERT_TRUE(hd.build(view(m), 0.03, 3).ok());
+  uint64_t state = 12345;
+  for (int t = 0; t < 2000; ++t) {
+    auto u = [&] {
+      state = state * 6364136223846793005ull + 1442695040888963407ull;
+      return double(state >> 11) / double(1ull << 53);
+    };
+    const Eigen::Vector3d p(4 * u() - 2, 4 * u() - 2, 4 * u() - 2);
+    const double exact = p.norm() - 1;
+    float g[3];
+    const float d = hd.distance(float(p.x()), float(p.y()), float(p.z()), g);
+    if (std::fabs(exact) < 0.06) {
+      EXPECT_NEAR(d, exact, 2e-3) << p.transpose();
+      const Eigen::Vector3d grad(g[0], g[1], g[2]);
+      EXPECT_GT(grad.normalized().dot(p.normalized()), 0.98) << p.transpose();
+    } else {
+      EXPECT_EQ(d > 0, exact > 0) << p.transpose();  // the sign far from the surface
+    }
+  }
+}
+
+TEST(HeadDistance, TwoSeparatePartsAreBothInside) {
+  // Two spheres (as a head with separate eyes would be): the flood fill finds both insides.
+  auto a = hairsketch_test::uvSphere(-1, 0, 0, 0.5, 24, 48);
+  const auto b = hairsketch_test::uvSphere(1, 0, 0, 0.5, 24, 48);
+  const uint32_t off = uint32_t(a.positions.size() / 3);
+  a.positions.insert(a.positions.end(), b.positions.begin(), b.positions.end());
+  for (uint32_t i : b.indices) a.indices.push_back(i + off);
+  hairsketch_test::markScalpAbove(a, -2);
+  HeadDistance hd;
+  ASSERT_TRUE(hd.build(view(a), 0.05, 2).ok());
+  EXPECT_LT(hd.distance(-1, 0, 0), -0.05f);
+  EXPECT_LT(hd.distance(1, 0, 0), -0.05f);
+  EXPECT_GT(hd.distance(0, 0, 0), 0.05f);
+  EXPECT_NEAR(hd.distance(1.55f, 0, 0), 0.05f, 0.01f);  // near the surface: its distance
+  EXPECT_FLOAT_EQ(hd.distance(1.8f, 0, 0), 0.1f);       // past the band: the band (2 x 0.05)
+}
+
+TEST(HeadDistance, GrowthIntoTheHeadSlidesAlongItAndStaysOutside) {
+  // A field pointing down and slightly inwards everywhere: strands from the top of the sphere
+  // would cut through it. With the distance grid they slide over the surface, never deeper
+  // than the margin allows, and stop where the field points straight in.
+  const Grid g = box();
+  std::vector<float> field(size_t(g.size()) * 3);
+  for (int64_t p = 0; p < g.size(); ++p) {
+    field[3 * p] = 0.2f;
+    field[3 * p + 1] = -1;
+    field[3 * p + 2] = 0;
+  }
+  const auto m = sphere();
+  HeadDistance hd;
+  ASSERT_TRUE(hd.build(view(m), 0.03, 3).ok());
+  std::vector<Eigen::Vector3f> roots;
+  for (int k = 0; k < 40; ++k) {
+    const double th = 0.6 * k / 40.0, ph = 0.37 * k;
+    roots.emplace_back(float(std::sin(th) * std::cos(ph)), float(std::cos(th)),
+                       float(std::sin(th) * std::sin(ph)));
+  }
+  GrowthParams prm;
+  prm.maxSegments = 400;
+  prm.margin = 0.02;
+  Strands with, without;
+  ASSERT_TRUE(growStrands(g, field, roots, prm, with, size_t(1) << 24, &hd).ok());
+  ASSERT_TRUE(growStrands(g, field, roots, prm, without).ok());
+  int deepWithout = 0;
+  double lowestEnd = 1;
+  for (size_t s = 0; s < roots.size(); ++s) {
+    for (uint32_t p = with.strandStart[s] + 1; p < with.strandStart[s + 1]; ++p) {
+      const Eigen::Vector3d q(with.points[3 * p], with.points[3 * p + 1], with.points[3 * p + 2]);
+      EXPECT_GT(q.norm() - 1, 0.02 - 2e-3) << "strand " << s << " point " << p;
+      // the midpoint of each segment too
+      const Eigen::Vector3d q0(with.points[3 * p - 3], with.points[3 * p - 2],
+                               with.points[3 * p - 1]);
+      EXPECT_GT((q + q0).norm() / 2 - 1, -1e-3);
+    }
+    const uint32_t tip = with.strandStart[s + 1] - 1;
+    lowestEnd = std::min(lowestEnd, double(with.points[3 * tip + 1]));
+    for (uint32_t p = without.strandStart[s] + 1; p < without.strandStart[s + 1]; ++p) {
+      const Eigen::Vector3d q(without.points[3 * p], without.points[3 * p + 1],
+                              without.points[3 * p + 2]);
+      deepWithout += q.norm() < 0.9;
+    }
+  }
+  EXPECT_GT(deepWithout, 100);  // the test's field does push hair into the head
+  EXPECT_LT(lowestEnd, -1.5);   // hair slid round the sphere and fell below it
+  // keepOutsideHead moves points that something else put inside back out.
+  Strands moved = without;
+  EXPECT_GT(keepOutsideHead(hd, 0.02f, moved), size_t(deepWithout));
+  for (size_t p = 0; p < moved.points.size() / 3; ++p) {
+    const Eigen::Vector3d q(moved.points[3 * p], moved.points[3 * p + 1], moved.points[3 * p + 2]);
+    bool root = false;
+    for (uint32_t r : moved.strandStart) root |= r == p;
+    if (!root) EXPECT_GT(q.norm() - 1, 0.02 - 2e-3);
+  }
+}
+
+TEST(HeadDistance, AFieldPointingStraightInStopsTheStrand) {
+  const Grid g = box();
+  std::vector<float> field(size_t(g.size()) * 3, 0.f);
+  for (int64_t p = 0; p < g.size(); ++p) field[3 * p + 1] = -1;
+  const auto m = sphere();
+  HeadDistance hd;
+  ASSERT_TRUE(hd.build(view(m), 0.03, 3).ok());
+  Strands s;
+  GrowthParams prm;
+  ASSERT_TRUE(growStrands(g, field, {Eigen::Vector3f(0, 1, 0)}, prm, s, 1 << 20, &hd).ok());
+  EXPECT_LE(s.points.size() / 3, 2u);  // at most a root and the first point at the margin
+}
