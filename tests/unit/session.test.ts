@@ -1,6 +1,7 @@
 // The session model with every curve kind, packed into protocol.ts's CurveSet layout.
 import { describe, expect, it } from 'vitest';
-import { packCurves } from '../../web/model/curveSet';
+import { packCurves, packHairOptions } from '../../web/model/curveSet';
+import type { HairDetail } from '../../web/model/detail';
 import { History } from '../../web/model/history';
 import {
   addCurve,
@@ -10,11 +11,10 @@ import {
   nextCurveId,
   type PonytailCurve,
   type StreamCurve,
-  setAvoid,
   updateCurve,
 } from '../../web/model/session';
 import type { Vec3 } from '../../web/model/vec3';
-import { CurveKind } from '../../web/solver/protocol';
+import { CurveKind, DETAIL_GROUP_STRIDE } from '../../web/solver/protocol';
 
 const vp = { position: [0, 0, 5] as Vec3, target: [0, 0, 0] as Vec3 };
 const stream: StreamCurve = {
@@ -105,16 +105,92 @@ describe('session with every curve kind', () => {
     expect(same).toBe(s);
     s = updateCurve(s, 'c2', (c) => (c.type === 'dividing' ? { ...c, sigma: 2 } : c));
     h.push(s);
-    s = setAvoid(s, { index: [1], target: [0, 0.3, 0] });
+    s = { ...s, avoidScalp: true };
     h.push(s);
     s = deleteCurve(s, 'c1');
     h.push(s);
     expect(JSON.parse(JSON.stringify(s))).toEqual(s); // plain JSON
     h.undo();
+    expect(h.current.avoidScalp).toBe(true);
+    expect(h.current.curves.map((c) => c.id)).toEqual(['c1', 'c2']);
     h.undo();
-    expect(h.current.avoid ?? null).toBeNull();
+    expect(h.current.avoidScalp).toBeUndefined();
     expect((h.current.curves[1] as DividingCurve).sigma).toBe(2);
     h.undo();
     expect((h.current.curves[1] as DividingCurve).sigma).toBe(1);
+  });
+});
+
+describe('packHairOptions (solve options: avoid scalp and detail groups)', () => {
+  // Group layout (protocol.ts DETAIL_GROUP_STRIDE = 11): curl radius, frequency, start,
+  // randomOffset; clump factor, shape, tipSpread, guideDistance; frizz distance, shape;
+  // lengthJitter. An absent block is off: its first number is 0.
+  const CURL = 0;
+  const CLUMP = 4;
+  const FRIZZ = 8;
+  const JITTER = 10;
+  const group = (o: { groups: Float64Array }, g: number) =>
+    Array.from(o.groups.subarray(DETAIL_GROUP_STRIDE * g, DETAIL_GROUP_STRIDE * (g + 1)));
+
+  it('has 11 numbers per group', () => {
+    expect(DETAIL_GROUP_STRIDE).toBe(11);
+  });
+
+  it('group 0 is the session detail; a curve with its own detail gets its own group', () => {
+    const sessionDetail: HairDetail = {
+      curl: { radius: 0.05, frequency: 3, start: 0.15, randomOffset: 1 },
+      lengthJitter: 0.25,
+    };
+    const clumped: HairDetail = {
+      clump: { factor: 0.5, shape: 0.3, tipSpread: 0.02, guideDistance: 0.12 },
+    };
+    const frizzy: HairDetail = { frizz: { distance: 0.006, shape: -0.4 } };
+    const curves = [
+      stream,
+      { ...dividing, detail: clumped },
+      ponytail,
+      { ...stream, id: 'c4', detail: frizzy },
+    ];
+    const o = packHairOptions({ avoidScalp: true, detail: sessionDetail }, curves);
+    expect(o.avoidScalp).toBe(true);
+    expect(o.detail.groups.length).toBe(3 * DETAIL_GROUP_STRIDE);
+    expect(Array.from(o.detail.curveGroup)).toEqual([0, 1, 0, 2]);
+
+    const g0 = group(o.detail, 0);
+    expect(g0.slice(CURL, CURL + 4)).toEqual([0.05, 3, 0.15, 1]);
+    expect(g0[CLUMP]).toBe(0); // no clump block: off
+    expect(g0[FRIZZ]).toBe(0); // no frizz block: off
+    expect(g0[JITTER]).toBe(0.25);
+
+    const g1 = group(o.detail, 1);
+    expect(g1[CURL]).toBe(0); // the curve's own detail replaces the session's (no curl)
+    expect(g1.slice(CLUMP, CLUMP + 4)).toEqual([0.5, 0.3, 0.02, 0.12]);
+    expect(g1[FRIZZ]).toBe(0);
+    expect(g1[JITTER]).toBe(0);
+
+    const g2 = group(o.detail, 2);
+    expect(g2[CURL]).toBe(0);
+    expect(g2[CLUMP]).toBe(0);
+    expect(g2.slice(FRIZZ, FRIZZ + 2)).toEqual([0.006, -0.4]);
+    expect(g2[JITTER]).toBe(0);
+  });
+
+  it('no detail anywhere: one group, every block off; avoid scalp absent is off', () => {
+    const o = packHairOptions({}, [stream, dividing]);
+    expect(o.avoidScalp).toBe(false);
+    expect(o.detail.groups.length).toBe(DETAIL_GROUP_STRIDE);
+    expect(Array.from(o.detail.curveGroup)).toEqual([0, 0]);
+    const g0 = group(o.detail, 0);
+    expect([g0[CURL], g0[CLUMP], g0[FRIZZ], g0[JITTER]]).toEqual([0, 0, 0, 0]);
+    expect(packHairOptions({ avoidScalp: false }, []).avoidScalp).toBe(false);
+    expect(packHairOptions({}, []).detail.curveGroup.length).toBe(0);
+  });
+
+  it("an empty detail of a curve is its own group (no detail, not the session's)", () => {
+    const o = packHairOptions({ detail: { lengthJitter: 0.5 } }, [{ ...stream, detail: {} }]);
+    expect(Array.from(o.detail.curveGroup)).toEqual([1]);
+    expect(group(o.detail, 0)[JITTER]).toBe(0.5);
+    const g1 = group(o.detail, 1);
+    expect([g1[CURL], g1[CLUMP], g1[FRIZZ], g1[JITTER]]).toEqual([0, 0, 0, 0]);
   });
 });

@@ -4,14 +4,20 @@
 import { describe, expect, it } from 'vitest';
 import { presetSession } from '../../web/cli/presetSession';
 import { Head } from '../../web/head/head';
-import { BOX_MAX, BOX_MIN, gridForPreset, gridPointCount } from '../../web/model/grid';
+import { BOX_MAX, BOX_MIN } from '../../web/model/grid';
 import type { SessionState } from '../../web/model/session';
 import { SESSION_LIMITS as L, parseSession } from '../../web/model/sessionFile';
 
 // fig1: c1 is a ponytail (curves[0]), c2..c5 dividing (curves[1..4]), c6.. stream (curves[5..])
 const base: SessionState = {
   ...presetSession('fig1', Head.builtin(), '25k', 0),
-  avoid: { index: [3, 7], target: [0, 0.3, 0, 0.3, 0, 0] },
+  avoidScalp: true,
+  detail: {
+    curl: { radius: 0.05, frequency: 3, start: 0.15, randomOffset: 1 },
+    clump: { factor: 0.5, shape: 0.3, tipSpread: 0.02, guideDistance: 0.12 },
+    frizz: { distance: 0.006, shape: 0.5 },
+    lengthJitter: 0.15,
+  },
 };
 const baseJson = JSON.stringify(base);
 const P = 0; // ponytail
@@ -321,45 +327,107 @@ describe('growth', () => {
   });
 });
 
-describe('scalp-avoidance constraints', () => {
-  const points25k = gridPointCount(gridForPreset('25k'));
+describe('avoid scalp (a setting since version 2)', () => {
+  it('wants true or false; false reads as absent', () => {
+    for (const v of [1, 'yes', null, [], {}])
+      expect(errorOf((j) => (j.avoidScalp = v))).toBe('session.avoidScalp: must be true or false');
+    const off = JSON.parse(baseJson);
+    off.avoidScalp = false;
+    const r = parseSession(off);
+    expect(r.ok).toBe(true);
+    expect(r.ok && Object.keys(r.value)).not.toContain('avoidScalp');
+  });
 
-  it('refuses indices outside the session grid, fractional indices and huge targets', () => {
-    expect(errorOf((j) => (j.avoid.index[1] = points25k))).toBe(
-      `session.avoid.index[1]: must be between 0 and ${points25k - 1}`,
+  it('refuses the stored constraints of version 1 in a version 2 session, naming them', () => {
+    expect(errorOf((j) => (j.avoid = { index: [3], target: [0, 0.3, 0] }))).toBe(
+      'session.avoid: is not a field hairsketch knows',
     );
-    expect(errorOf((j) => (j.avoid.index[1] = points25k - 1))).toBe('accepted');
-    // the same index is inside a finer grid
+    expect(errorOf((j) => (j.avoid = null))).toBe('session.avoid: is not a field hairsketch knows');
+  });
+
+  it('caps the constraint count of a version 1 session while copying it', () => {
     expect(
       errorOf((j) => {
-        j.avoid.index[1] = points25k;
-        j.grid = '50k';
+        j.version = 1;
+        delete j.avoidScalp;
+        j.avoid = { index: new Array(L.maxAvoid + 1).fill(0), target: [] };
       }),
-    ).toBe('accepted');
-    expect(errorOf((j) => (j.avoid.index[0] = 1.5))).toMatch(
-      /^session\.avoid\.index\[0\]: must be a whole number/,
-    );
-    expect(errorOf((j) => (j.avoid.index[0] = -1))).toMatch(
-      /^session\.avoid\.index\[0\]: must be between 0 and /,
-    );
-    expect(errorOf((j) => (j.avoid.target[4] = 1e6))).toBe(
-      `session.avoid.target[4]: must be between -${L.maxAvoidTarget} and ${L.maxAvoidTarget}`,
-    );
-    expect(errorOf((j) => (j.avoid.target = [1]))).toBe(
-      'session.avoid.target: must hold 3 numbers per index (6), has 1',
-    );
-    expect(errorOf((j) => delete j.avoid.index)).toBe(
-      'session.avoid.index: must be an array of grid indices',
+    ).toBe(`session.avoid.index: has ${L.maxAvoid + 1} entries, more than ${L.maxAvoid} (the cap)`);
+  });
+});
+
+describe('hair detail (session-wide and per curve)', () => {
+  it('accepts the base detail and each block alone', () => {
+    expect(errorOf((j) => (j.detail = { curl: j.detail.curl }))).toBe('accepted');
+    expect(errorOf((j) => (j.detail = { lengthJitter: 1 }))).toBe('accepted');
+    expect(errorOf((j) => (j.detail = {}))).toBe('accepted');
+    expect(errorOf((j) => delete j.detail)).toBe('accepted');
+  });
+
+  it('refuses an unknown key in a block, naming it', () => {
+    expect(errorOf((j) => (j.detail.curl.radiuss = 0.1))).toBe(
+      'session.detail.curl.radiuss: is not a field hairsketch knows',
     );
   });
 
-  it('caps the constraint count', () => {
-    expect(
-      errorOf((j) => {
-        j.avoid.index = new Array(L.maxAvoid + 1).fill(0);
-        j.avoid.target = [];
-      }),
-    ).toBe(`session.avoid.index: has ${L.maxAvoid + 1} entries, more than ${L.maxAvoid} (the cap)`);
+  it('refuses a block with a key missing, naming the key', () => {
+    expect(errorOf((j) => delete j.detail.clump.tipSpread)).toBe(
+      'session.detail.clump.tipSpread: must be a finite number',
+    );
+  });
+
+  it('refuses numbers out of range, naming the field and the range', () => {
+    expect(errorOf((j) => (j.detail.frizz.shape = 2))).toBe(
+      'session.detail.frizz.shape: must be between -1 and 1',
+    );
+    expect(errorOf((j) => (j.detail.clump.guideDistance = 0))).toBe(
+      'session.detail.clump.guideDistance: must be between 0.01 and 2',
+    );
+    expect(errorOf((j) => (j.detail.curl.radius = -0.01))).toBe(
+      'session.detail.curl.radius: must be between 0 and 0.5',
+    );
+    expect(errorOf((j) => (j.detail.lengthJitter = 1.5))).toBe(
+      'session.detail.lengthJitter: must be between 0 and 1',
+    );
+    // the ends of a range are inside it
+    expect(errorOf((j) => (j.detail.curl.frequency = 20))).toBe('accepted');
+    expect(errorOf((j) => (j.detail.clump.shape = -1))).toBe('accepted');
+  });
+
+  it('refuses what is not a number, naming the field', () => {
+    expect(errorOf((j) => (j.detail.curl.frequency = '3'))).toBe(
+      'session.detail.curl.frequency: must be a finite number',
+    );
+    expect(errorOf((j) => (j.detail.frizz.distance = null))).toBe(
+      'session.detail.frizz.distance: must be a finite number',
+    );
+    expect(errorOf((j) => (j.detail.lengthJitter = true))).toBe(
+      'session.detail.lengthJitter: must be a finite number',
+    );
+  });
+
+  it('refuses an unknown detail key and blocks that are not objects', () => {
+    expect(errorOf((j) => (j.detail.wave = { radius: 1 }))).toBe(
+      'session.detail.wave: is not a field hairsketch knows',
+    );
+    expect(errorOf((j) => (j.detail = 5))).toBe('session.detail: must be an object');
+    expect(errorOf((j) => (j.detail.curl = true))).toBe('session.detail.curl: must be an object');
+  });
+
+  it("checks a curve's own detail the same way, naming the curve", () => {
+    const own = JSON.parse(baseJson).detail;
+    expect(errorOf((j) => (j.curves[S].detail = own))).toBe('accepted');
+    expect(errorOf((j) => (j.curves[D].detail = { lengthJitter: 0.5 }))).toBe('accepted');
+    expect(errorOf((j) => (j.curves[P].detail = {}))).toBe('accepted');
+    expect(errorOf((j) => (j.curves[S].detail = { ...own, lengthJitter: 2 }))).toBe(
+      `session.curves[${S}].detail.lengthJitter: must be between 0 and 1`,
+    );
+    expect(errorOf((j) => (j.curves[D].detail = { clump: { factor: 1 } }))).toBe(
+      `session.curves[${D}].detail.clump.shape: must be a finite number`,
+    );
+    expect(errorOf((j) => (j.curves[P].detail = { frizz: { ...own.frizz, size: 1 } }))).toBe(
+      `session.curves[${P}].detail.frizz.size: is not a field hairsketch knows`,
+    );
   });
 });
 

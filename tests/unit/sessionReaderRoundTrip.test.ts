@@ -18,6 +18,8 @@ import {
 
 const head = Head.builtin();
 
+const plain = (o: object) => JSON.parse(JSON.stringify(o)) as PlainRecord;
+
 function read(v: unknown): SessionState {
   const r = parseSession(v);
   if (!r.ok) throw new Error(r.error);
@@ -63,7 +65,7 @@ describe('every preset session passes the reader and round-trips', () => {
         const s = presetSession(name, head, grid, 0);
         const back = expectRoundTrip(JSON.parse(JSON.stringify(s)));
         // nothing of the preset is lost or changed: only the defaults are spelled out
-        expect(back).toEqual({ ...s, avoid: s.avoid ?? null });
+        expect(back).toEqual(s);
         // the in-memory session (not through JSON) reads the same, as the exporter reads it
         expect(read(s)).toEqual(back);
       });
@@ -72,21 +74,15 @@ describe('every preset session passes the reader and round-trips', () => {
     const s = presetSession('fig1', head, '25k', 5000);
     const file = { ...s, camera: { position: [1, 2, 3], target: [0, 0, 0] }, selected: 'c2' };
     const back = expectRoundTrip(JSON.parse(JSON.stringify(file)));
-    expect(back).toEqual({ ...s, avoid: null });
-    expect(Object.keys(back)).toEqual([
-      'version',
-      'head',
-      'grid',
-      'curves',
-      'growth',
-      'hairColor',
-      'avoid',
-    ]);
+    expect(back).toEqual(s);
+    expect(Object.keys(back)).toEqual(['version', 'head', 'grid', 'curves', 'growth', 'hairColor']);
   });
 
   it('spells out the defaults of a minimal session, and keeps them on the next read', () => {
-    const back = expectRoundTrip({ version: 1, curves: [] });
-    expect(back).toEqual({ ...emptySession('25k'), avoid: null });
+    const back = expectRoundTrip({ version: 2, curves: [] });
+    expect(back).toEqual(emptySession('25k'));
+    // a minimal version 1 session reads as the same session
+    expect(expectRoundTrip({ version: 1, curves: [] })).toEqual(emptySession('25k'));
   });
 
   it('writes -0 as 0 (JSON cannot say -0)', () => {
@@ -106,11 +102,106 @@ describe('every preset session passes the reader and round-trips', () => {
   });
 });
 
-describe('session versions (sessionMigrations.ts)', () => {
-  const plain = (o: object) => JSON.parse(JSON.stringify(o)) as PlainRecord;
+describe('hair detail and avoid scalp round-trip byte-stable', () => {
+  const detail = {
+    curl: { radius: 0.05, frequency: 3, start: 0.15, randomOffset: 1 },
+    clump: { factor: 0.5, shape: -0.3, tipSpread: 0.02, guideDistance: 0.12 },
+    frizz: { distance: 0.006, shape: 0.5 },
+    lengthJitter: 0.15,
+  };
 
-  it('the current version is 1 and the table reaches it without gaps', () => {
-    expect(SESSION_VERSION).toBe(1);
+  it('a session-wide detail with every block, and avoidScalp', () => {
+    const s = { ...presetSession('fig7', head, '25k', 0), avoidScalp: true, detail };
+    const back = expectRoundTrip(JSON.parse(JSON.stringify(s)));
+    expect(back.avoidScalp).toBe(true);
+    expect(back.detail).toEqual(detail);
+    expect(back).toEqual(s);
+    // a canonical key order: the blocks and their numbers in the table's order
+    expect(Object.keys(back.detail ?? {})).toEqual(['curl', 'clump', 'frizz', 'lengthJitter']);
+    expect(Object.keys(back.detail?.clump ?? {})).toEqual([
+      'factor',
+      'shape',
+      'tipSpread',
+      'guideDistance',
+    ]);
+  });
+
+  it('single blocks and an empty detail', () => {
+    for (const d of [{ frizz: detail.frizz }, { lengthJitter: 0 }, {}]) {
+      const s = { ...presetSession('default', head, '25k', 0), detail: d };
+      expect(expectRoundTrip(JSON.parse(JSON.stringify(s))).detail).toEqual(d);
+    }
+  });
+
+  it("each curve kind's own detail", () => {
+    const s = presetSession('fig1', head, '25k', 0); // a ponytail, dividing and stream curves
+    const kinds = new Set<string>();
+    const curves = s.curves.map((c, i) => {
+      if (kinds.has(c.type)) return c;
+      kinds.add(c.type);
+      return { ...c, detail: i % 2 ? { clump: detail.clump } : detail };
+    });
+    expect([...kinds].sort()).toEqual(['dividing', 'ponytail', 'stream']);
+    const withDetail = { ...s, curves };
+    const back = expectRoundTrip(JSON.parse(JSON.stringify(withDetail)));
+    expect(back).toEqual(withDetail);
+  });
+});
+
+describe('v1-to-v2: stored scalp-avoidance constraints become the avoidScalp setting', () => {
+  const v2 = JSON.parse(JSON.stringify(presetSession('fig6', head, '25k', 0)));
+  const v1 = (avoid: unknown) => ({ ...v2, version: 1, avoid });
+
+  it('a version 1 session with constraints opens as the version 2 session with avoidScalp on', () => {
+    const r = parseSession(v1({ index: [3, 7], target: [0, 0.3, 0, 0.3, 0, 0] }));
+    expect(r.ok).toBe(true);
+    if (!r.ok) return;
+    expect(r.value.version).toBe(2);
+    expect(r.value.avoidScalp).toBe(true);
+    expect(Object.keys(r.value)).not.toContain('avoid');
+    // exactly what the reader gives for the same session written as version 2
+    expect(r.value).toEqual(read({ ...v2, avoidScalp: true }));
+    expectRoundTrip(r.value);
+  });
+
+  it('no constraints (null, empty or absent) opens with avoid scalp off', () => {
+    for (const avoid of [null, { index: [], target: [] }, undefined]) {
+      const r = parseSession(v1(avoid));
+      expect(r.ok).toBe(true);
+      if (!r.ok) return;
+      expect(Object.keys(r.value)).not.toContain('avoidScalp');
+      expect(Object.keys(r.value)).not.toContain('avoid');
+      expect(r.value).toEqual(read(v2));
+    }
+  });
+
+  it('a malformed avoid is refused by name', () => {
+    for (const avoid of [5, 'all', [1, 2], { target: [0, 0.3, 0] }, { index: 3, target: [] }])
+      expect(parseSession(v1(avoid))).toEqual({
+        ok: false,
+        error: 'session.avoid: is not a field hairsketch knows',
+      });
+  });
+
+  it('the step is pure, names itself and gives version 2', () => {
+    const step = SESSION_MIGRATIONS.find((m) => m.from === 1);
+    expect(step?.name).toMatch(/^v1-to-v2: /);
+    if (!step) return;
+    const input = Object.freeze(
+      plain({ version: 1, curves: [], avoid: { index: [1], target: [0, 0, 1] } }),
+    );
+    const before = JSON.stringify(input);
+    const out = step.migrate(input);
+    expect(JSON.stringify(input)).toBe(before);
+    expect(out).toEqual({ version: 2, curves: [], avoidScalp: true });
+    expect(migrateSession(input)).toMatchObject({ ok: true, applied: [step.name] });
+  });
+});
+
+describe('session versions (sessionMigrations.ts)', () => {
+  it('the current version is 2 and the table reaches it without gaps', () => {
+    expect(SESSION_VERSION).toBe(2);
+    expect(SESSION_MIGRATIONS.map((m) => m.from)).toEqual([1]);
     expect(emptySession('25k').version).toBe(SESSION_VERSION);
     const froms = SESSION_MIGRATIONS.map((m) => m.from);
     froms.forEach((f, i) => {
@@ -121,28 +212,29 @@ describe('session versions (sessionMigrations.ts)', () => {
   });
 
   it('refuses a newer version, saying it was made by a newer hairsketch', () => {
-    for (const version of [2, 17])
+    for (const version of [3, 17])
       expect(parseSession({ version, curves: [] })).toEqual({
         ok: false,
-        error: `session.version: must be 1; version ${version} was made by a newer hairsketch (update hairsketch to open it)`,
+        error: `session.version: must be an integer from 1 to 2; version ${version} was made by a newer hairsketch (update hairsketch to open it)`,
       });
   });
 
   it('refuses a missing, older or non-integer version', () => {
     expect(parseSession({ curves: [] })).toEqual({
       ok: false,
-      error: 'session.version: missing (must be 1)',
+      error: 'session.version: missing (must be an integer from 1 to 2)',
     });
     expect(parseSession({ version: 0, curves: [] })).toMatchObject({
-      error: 'session.version: must be 1; version 0 is older than any hairsketch',
+      error:
+        'session.version: must be an integer from 1 to 2; version 0 is older than any hairsketch',
     });
-    for (const version of [1.5, '1', null, true, Number.NaN])
+    for (const version of [1.5, '2', null, true, Number.NaN])
       expect(parseSession({ version, curves: [] })).toMatchObject({
-        error: 'session.version: must be 1',
+        error: 'session.version: must be an integer from 1 to 2',
       });
   });
 
-  // A made-up history (v1 → v2 → v3) to test the runner; the real table is empty today.
+  // A made-up history (v1 → v2 → v3) to test the runner apart from the real table.
   const v1ToV2: SessionMigration = {
     name: 'v1-to-v2: hairColor becomes hair.colour',
     from: 1,
