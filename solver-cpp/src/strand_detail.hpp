@@ -1,0 +1,96 @@
+// Hair detail on grown strands: length jitter, clump, curl, frizz (FORMATS.md "Detail parameters
+// as Blender names them"), applied in that order. World units (1 = 10 cm). For a strand with points
+// p_0 (root) .. p_{n-1}, arc length s_i along its current path, length L = s_{n-1} and normalised
+// arc length x_i = s_i / L (0 root .. 1 tip):
+//
+// Shape falloff S(x; s): s = 0 -> 1; else a = min(|s|, 1), x' = x if s > 0 else 1 - x, and
+//   S = x'^(-log2(1 - a))            for a <= 0.5,
+//   S = 1 - (1 - x')^(-log2 a)       for a > 0.5      (s = 0.5 -> x, s = -0.5 -> 1 - x).
+//
+// Length jitter j: L' = L (1 - j u), u uniform in [0, 1) from the strand's key; the strand is cut
+// at
+//   arc length L' (its last point interpolated on the segment that contains L').
+// Clump (factor f, shape s, tipSpread t, guideDistance g), per group: guides are picked by a greedy
+//   Poisson-disc pass over the roots in a seeded random order (sorted by a hash of seed and key):
+//   a strand becomes a guide when no guide root lies closer than g to its root (g = 0: every strand
+//   is its own guide, nothing moves). Every other strand follows its nearest guide G (lookup in a
+//   uniform hash grid of cell size g): for every point but the root,
+//     p_i <- (1 - w) p_i + w G(x_i) + t x_i (cos phi N_G(x_i) + sin phi B_G(x_i)),  w = f S(x_i;
+//     s),
+//   G(x) being the guide's point at normalised arc length x (interpolated), N_G, B_G its
+//   rotation-minimising frame there and phi a seeded per-strand angle. Guides keep their shape and
+//   strands follow the guides' un-clumped shape. f = 1, s = 0, t = 0: tips land on the guide's tip.
+// Curl (radius r, frequency q turns per unit of arc length, start a, randomOffset o): the strand is
+//   first resampled evenly by arc length to m = min(maxPoints, max(n, ceil(12 q L) + 1)) points
+//   (at least 12 a turn unless the cap binds), s_k = L k / (m - 1); then around that path
+//     p_k <- p_k + r ramp(x_k) (cos theta_k N_k + sin theta_k B_k),
+//     theta_k = 2 pi (q s_k + o u),  ramp(x) = smoothstep(x / a) (1 for a = 0; 0 at the root),
+//   u uniform in [0, 1) from the key, (T, N, B) the path's rotation-minimising frame (double
+//   reflection, Wang et al. 2008; N_0 = the component of +y normal to T_0, +x if T_0 is along y).
+// Frizz (distance d, shape s): v_i uniform in the unit ball (seeded by the key, one per point),
+//   c_0 = 0, c_i = c_{i-1} + v_i.x T_i + v_i.y N_i + v_i.z B_i (the frame of the path before curl),
+//   p_i <- p_i + d S(x_i; s) c_i. The root is pinned.
+//
+// Every detail leaves the root where it is. Strands with fewer than 2 points and strands whose
+// group has nothing on are left bit-identical, unless they have more than maxPoints points: every
+// strand ends with at most maxPoints points (a longer one is resampled evenly by arc length to
+// maxPoints, root and tip kept). Randomness comes from Pcg32 seeded with (seed, key[s]) and a
+// stream per use, so a strand's jitter, curl phase, frizz and tip spread do not depend on which
+// other strands are grown; clump guides do (they are chosen among the strands present).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "status.hpp"
+#include "strand_growth.hpp"
+
+namespace hairsketch {
+
+struct CurlParams {
+  double radius = 0;           // world units; 0 = off
+  double frequency = 1;        // turns per world unit of arc length
+  double start = 0.1;          // fraction of the length over which the curl ramps in
+  double randomOffset = 0.25;  // per-strand phase, fraction of a turn
+};
+
+struct ClumpParams {
+  double factor = 0;  // 0 = off, 1 = onto the guide
+  double shape = 0.5;
+  double tipSpread = 0;        // world units at the tip
+  double guideDistance = 0.1;  // world units between guide roots
+};
+
+struct FrizzParams {
+  double distance = 0;  // world units per point; 0 = off
+  double shape = 0.5;
+};
+
+struct DetailParams {
+  CurlParams curl;
+  ClumpParams clump;
+  FrizzParams frizz;
+  double lengthJitter = 0;  // 0..1
+  bool any() const {
+    return curl.radius > 0 || clump.factor > 0 || frizz.distance > 0 || lengthJitter > 0;
+  }
+};
+
+// Blender's shape falloff S(x; s) (above); x is clamped to [0, 1].
+double shapeFalloff(double x, double s);
+
+// InvalidInput naming the field ("detail: curl.radius must be finite and >= 0") if a parameter is
+// out of range: radius, frequency, tipSpread, guideDistance, distance finite and >= 0; factor,
+// start, randomOffset, lengthJitter in [0, 1]; shapes in [-1, 1].
+Status validateDetail(const DetailParams& d);
+
+// groups: the detail parameter sets; groupOf[s]: which set strand s uses (size = strand count);
+// key[s]: a stable per-strand key (the root's index in the full root set) that seeds that strand's
+// randomness; seed: the session's seed. No strand ends with more than maxPoints (>= 2) points.
+// InvalidInput (strands untouched) on a bad parameter, size mismatch, group out of range or
+// malformed strands.
+Status applyDetail(const std::vector<DetailParams>& groups, const std::vector<uint32_t>& groupOf,
+                   const std::vector<uint32_t>& key, uint32_t seed, Strands& strands,
+                   int maxPoints = 255);
+
+}  // namespace hairsketch
