@@ -44,7 +44,12 @@ function sample(): SessionState {
         alpha1: -0.2,
       },
     ],
-    avoid: { index: [3, 7], target: [0, 0.3, 0, 0.3, 0, 0] },
+    avoidScalp: true,
+    detail: {
+      curl: { radius: 0.05, frequency: 3, start: 0.15, randomOffset: 1 },
+      frizz: { distance: 0.006, shape: 0.5 },
+      lengthJitter: 0.15,
+    },
   };
 }
 
@@ -56,7 +61,21 @@ describe('parseSession', () => {
     if (r.ok) expect(r.value).toEqual(s);
   });
 
-  it('reads a file saved by an earlier hairsketch (no surfaceMode, curve parameters, avoid)', () => {
+  it('a Save file (session + camera) with avoidScalp and detail reads back as the session', () => {
+    const s = sample();
+    const text = JSON.stringify({ ...s, camera: vp }, null, 2);
+    const r = parseSession(JSON.parse(text));
+    expect(r.ok).toBe(true);
+    if (!r.ok) return;
+    expect(r.value).toEqual(s);
+    expect(r.value.avoidScalp).toBe(true);
+    expect(r.value.detail?.curl?.frequency).toBe(3);
+    expect(r.value.detail).not.toHaveProperty('clump');
+    // and the file of what was read is the same file
+    expect(JSON.stringify({ ...r.value, camera: vp }, null, 2)).toBe(text);
+  });
+
+  it('reads a file saved by an earlier hairsketch (version 1: no surfaceMode, curve parameters, avoid)', () => {
     // the shape "Save" wrote before surface modes, curve parameters and "Avoid scalp" existed,
     // with the camera it writes beside the session
     const old = `{"version":1,"head":"builtin","grid":"25k","curves":[
@@ -72,7 +91,10 @@ describe('parseSession', () => {
     if (!r.ok) return;
     expect(r.value.curves[0]).not.toHaveProperty('surfaceMode');
     expect(r.value.curves[1]).toMatchObject({ sigma: 1, h: 0.5, alpha0: 0, alpha1: 0 });
-    expect(r.value.avoid).toBeNull();
+    expect(r.value.version).toBe(2);
+    expect(r.value).not.toHaveProperty('avoidScalp');
+    expect(r.value).not.toHaveProperty('avoid');
+    expect(r.value).not.toHaveProperty('detail');
     expect(r.value).not.toHaveProperty('camera');
   });
 
@@ -95,8 +117,14 @@ describe('parseSession', () => {
     expect(bad((j) => (j.curves[1].id = 'c1'))).toMatch(/unique/);
     expect(bad((j) => (j.grid = '1e9'))).toMatch(/session\.grid/);
     expect(bad((j) => (j.growth.jitter = 5))).toMatch(/growth\.jitter: must be between 0 and 1/);
-    expect(bad((j) => (j.avoid.target = [1]))).toMatch(/session\.avoid/);
-    expect(bad((j) => (j.version = 2))).toMatch(/version/);
+    expect(bad((j) => (j.avoid = { index: [1], target: [0, 0.3, 0] }))).toBe(
+      'session.avoid: is not a field hairsketch knows',
+    );
+    expect(bad((j) => (j.avoidScalp = 'yes'))).toBe('session.avoidScalp: must be true or false');
+    expect(bad((j) => (j.detail.curl.radius = 1))).toBe(
+      'session.detail.curl.radius: must be between 0 and 0.5',
+    );
+    expect(bad((j) => (j.version = 3))).toMatch(/version/);
     expect(parseSession(null)).toEqual({ ok: false, error: 'session: must be an object' });
   });
 });
@@ -157,7 +185,8 @@ describe('session links', () => {
     if (r.ok) {
       expect(r.value.curves.length).toBe(2);
       expect(r.value.curves[0].points[1][1]).toBeCloseTo(1.1, 5);
-      expect(r.value.avoid).toEqual(s.avoid);
+      expect(r.value.avoidScalp).toBe(true);
+      expect(r.value.detail).toEqual(s.detail);
     }
   });
 

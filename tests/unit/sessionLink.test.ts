@@ -29,9 +29,15 @@ import type { Vec3 } from '../../web/model/vec3';
 
 const head = Head.builtin();
 
-/** What a link reopens: the quantised session, "no avoid" spelled null as the reader does. */
-const reopened = (s: SessionState): SessionState =>
-  quantizeSession({ ...s, avoid: s.avoid ?? null });
+/** What a link reopens: the quantised session (detail travels as written, in the JSON tail). */
+const reopened = (s: SessionState): SessionState => quantizeSession(s);
+
+const DETAIL = {
+  curl: { radius: 0.05, frequency: 3.1234567, start: 0.15, randomOffset: 1 },
+  clump: { factor: 0.5, shape: -0.3, tipSpread: 0.02, guideDistance: 0.12 },
+  frizz: { distance: 0.006, shape: 0.5 },
+  lengthJitter: 0.15,
+};
 
 async function roundTrip(s: SessionState): Promise<SessionState> {
   const link = await encodeSessionLink(s);
@@ -110,10 +116,8 @@ function everything(): SessionState {
         tightness: 0.6123456,
       },
     ],
-    avoid: {
-      index: [5, 17, 18, 19, 2000, 1999, 100000],
-      target: Array.from({ length: 21 }, (_, i) => Math.cos(i) * 0.3),
-    },
+    avoidScalp: true,
+    detail: DETAIL,
   };
 }
 
@@ -151,12 +155,40 @@ describe('version 2 links', () => {
     // the same link from the session and from its quantised self; reopening changes nothing
     expect(await encodeSessionLink(s)).toBe(await encodeSessionLink(reopened(s)));
     expect(await roundTrip(back)).toEqual(back);
-    // no avoid, and an empty one
-    expect((await roundTrip({ ...s, avoid: null })).avoid).toBeNull();
-    expect((await roundTrip({ ...s, avoid: { index: [], target: [] } })).avoid).toEqual({
-      index: [],
-      target: [],
-    });
+    expect(back.avoidScalp).toBe(true);
+    expect(back.detail).toEqual(DETAIL);
+    // avoid scalp off (absent or false) and no detail reopen as absent
+    const { avoidScalp: _a, detail: _d, ...plain } = s;
+    const off = await roundTrip({ ...plain, avoidScalp: false });
+    expect(Object.keys(off)).not.toContain('avoidScalp');
+    expect(Object.keys(off)).not.toContain('detail');
+    expect(off).toEqual(reopened(plain));
+  });
+
+  it('write the avoid slot empty: avoidScalp and detail travel in the JSON tail', () => {
+    const s = everything();
+    const data = unpackSession(packSession(s));
+    expect(data.version).toBe(2);
+    expect(data).not.toHaveProperty('avoid');
+    expect(data.avoidScalp).toBe(true);
+    expect(data.detail).toEqual(DETAIL);
+    // without them the tail is empty: the body ends with the avoid slot 0, tail length 0, CRC
+    const { avoidScalp: _a, detail: _d, ...plain } = presetSession('default', head);
+    const body = packSession(plain);
+    expect(Array.from(body.subarray(body.length - 6, body.length - 4))).toEqual([0, 0]);
+  });
+
+  it("carry a curve's own detail (in the JSON tail)", async () => {
+    const s = everything();
+    const curves = s.curves.map((c, i) =>
+      i === 1 ? { ...c, detail: { frizz: DETAIL.frizz } } : i === 3 ? { ...c, detail: {} } : c,
+    );
+    const withOwn = { ...s, curves };
+    const data = unpackSession(packSession(withOwn)) as { curves: Record<string, unknown>[] };
+    expect(data.curves[1].detail).toEqual({ frizz: DETAIL.frizz });
+    expect(data.curves[3].detail).toEqual({});
+    expect(data.curves[0]).not.toHaveProperty('detail');
+    expect(await roundTrip(withOwn)).toEqual(reopened(withOwn));
   });
 
   it('carry fields the layout has no place for in the JSON tail', () => {
@@ -204,6 +236,66 @@ describe('version 1 links', () => {
       expect({ ...r.value, curves: [] }).toEqual({ ...reopened(s), curves: [] });
     }
   });
+
+  it('with scalp-avoidance constraints open with avoidScalp on (migrated from version 1)', async () => {
+    const s = presetSession('fig6', head);
+    const v1 = { ...s, version: 1, avoid: { index: [3, 7], target: [0, 0.3, 0, 0.3, 0, 0] } };
+    const r = await decodeSessionLink(
+      `#${await encodeSessionLinkV1(v1 as unknown as SessionState)}`,
+    );
+    if (!r.ok) throw new Error(r.error);
+    expect(r.value.version).toBe(2);
+    expect(r.value.avoidScalp).toBe(true);
+    expect(r.value).not.toHaveProperty('avoid');
+    expect({ ...r.value, curves: [] }).toEqual({ ...reopened(s), avoidScalp: true, curves: [] });
+    // null constraints: avoid scalp off
+    const none = { ...s, version: 1, avoid: null } as unknown as SessionState;
+    const n = await decodeSessionLink(`#${await encodeSessionLinkV1(none)}`);
+    expect(n.ok && Object.keys(n.value)).not.toContain('avoidScalp');
+  });
+});
+
+describe('version 2 links made before session version 2 (constraints in the avoid slot)', () => {
+  /** A varint and a zigzag varint, as the layout comment states them (written here by hand). */
+  const varint = (n: number): number[] => {
+    const out: number[] = [];
+    for (;;) {
+      if (n < 128) return [...out, n];
+      out.push((n % 128) | 128);
+      n = Math.floor(n / 128);
+    }
+  };
+  const zigzag = (n: number) => varint(n >= 0 ? 2 * n : -2 * n - 1);
+
+  it('open as version 1 sessions with avoidScalp on', async () => {
+    const s = presetSession('fig7', head);
+    const body = packSession(s);
+    // no tail: the body ends with the avoid slot (0), the tail length (0) and the CRC
+    const before = body.subarray(0, body.length - 6);
+    expect(Array.from(body.subarray(body.length - 6, body.length - 4))).toEqual([0, 0]);
+    // two constraints: grid points 3 and 7, targets (0, 0.3, 0) and (0.3, 0, -0.15)
+    const avoid = [
+      ...varint(2 + 1),
+      ...zigzag(3),
+      ...zigzag(7 - 3),
+      ...zigzag(0),
+      ...zigzag(3000),
+      ...zigzag(0),
+      ...zigzag(3000 - 0),
+      ...zigzag(0 - 3000),
+      ...zigzag(-1500 - 0),
+    ];
+    const old = new Uint8Array([...before, ...avoid, 0]);
+    const data = unpackSession(withCrc(old));
+    expect(data.version).toBe(1);
+    expect(data.avoid).toEqual({ index: [3, 7], target: [0, 0.3, 0, 0.3, 0, -0.15] });
+    const r = await decodeSessionLink(await linkOf(withCrc(old)));
+    if (!r.ok) throw new Error(r.error);
+    expect(r.value).toEqual({ ...reopened(s), avoidScalp: true });
+    // the same body with an empty slot is the session itself
+    const same = await decodeSessionLink(await linkOf(body));
+    expect(same.ok && same.value).toEqual(reopened(s));
+  });
 });
 
 /** deflate-raw of `size` zero bytes, made in pieces (never `size` bytes in memory). */
@@ -233,6 +325,22 @@ function v2Fragment(deflated: Uint8Array): string {
     head.push((v % 128) | 128);
   }
   return `#s=2.${toBase64Url(new Uint8Array([...head, ...deflated]))}`;
+}
+
+/** A body with its CRC-32 appended. */
+function withCrc(b: Uint8Array): Uint8Array {
+  const out = new Uint8Array(b.length + 4);
+  out.set(b);
+  new DataView(out.buffer).setUint32(b.length, crc32(b), true);
+  return out;
+}
+
+/** The version 2 fragment of a body (deflated here, not by the codec). */
+async function linkOf(b: Uint8Array): Promise<string> {
+  const cs = new Response(
+    new Blob([b as BlobPart]).stream().pipeThrough(new CompressionStream('deflate-raw')),
+  );
+  return v2Fragment(new Uint8Array(await cs.arrayBuffer()));
 }
 
 describe('caps', () => {
@@ -296,18 +404,7 @@ describe('damaged links say what is wrong', () => {
 
   it('a body that inflates but does not fit the layout', async () => {
     const body = packSession(presetSession('fig8', head));
-    const withCrc = (b: Uint8Array) => {
-      const out = new Uint8Array(b.length + 4);
-      out.set(b);
-      new DataView(out.buffer).setUint32(b.length, crc32(b), true);
-      return out;
-    };
-    const link = async (b: Uint8Array) => {
-      const cs = new Response(
-        new Blob([b as BlobPart]).stream().pipeThrough(new CompressionStream('deflate-raw')),
-      );
-      return v2Fragment(new Uint8Array(await cs.arrayBuffer()));
-    };
+    const link = linkOf;
     const payload = body.subarray(0, body.length - 4);
     await bad(await link(withCrc(new Uint8Array([...payload, 7]))), /data past its end/);
     await bad(
