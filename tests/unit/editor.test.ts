@@ -130,7 +130,7 @@ describe('editor commands, each undoable', () => {
     expect((e.session.curves[0] as StreamCurve).extend).toBe(false);
   });
 
-  it('setViewpoint, setSurfaceMode, setAvoid, setHairColor', () => {
+  it('setViewpoint, setSurfaceMode, setAvoidScalp, setHairColor', () => {
     const other: Viewpoint = { position: [5, 0, 0], target: [0, 0, 0] };
     roundTrip([addStream(0)], { kind: 'setViewpoint', id: 'c1', viewpoint: other }, (s) =>
       expect(s.curves[0].viewpoint).toEqual(other),
@@ -138,12 +138,99 @@ describe('editor commands, each undoable', () => {
     roundTrip([addStream(0)], { kind: 'setSurfaceMode', id: 'c1', mode: 'strip' }, (s) =>
       expect((s.curves[0] as StreamCurve).surfaceMode).toBe('strip'),
     );
-    roundTrip([], { kind: 'setAvoid', avoid: { index: [3], target: [0, 0.3, 0] } }, (s) =>
-      expect(s.avoid?.index).toEqual([3]),
+    roundTrip([], { kind: 'setAvoidScalp', on: true }, (s) => expect(s.avoidScalp).toBe(true));
+    roundTrip([{ kind: 'setAvoidScalp', on: true }], { kind: 'setAvoidScalp', on: false }, (s) =>
+      expect(Object.keys(s)).not.toContain('avoidScalp'),
     );
     roundTrip([], { kind: 'setHairColor', color: '#112233' }, (s) =>
       expect(s.hairColor).toBe('#112233'),
     );
+  });
+
+  it('setAvoidScalp to what it is already changes nothing and says so', () => {
+    const { e, log } = editorWithLog();
+    expect(e.run({ kind: 'setAvoidScalp', on: false })).toBe(false);
+    expect(log.at(-1)?.message).toContain('already off');
+    expect(e.run({ kind: 'setAvoidScalp', on: true })).toBe(true);
+    expect(e.run({ kind: 'setAvoidScalp', on: true })).toBe(false);
+    expect(log.at(-1)?.message).toContain('already on');
+    expect(e.undo()).toBe(true);
+    expect(e.session.avoidScalp).toBeUndefined();
+    expect(e.canUndo).toBe(false);
+  });
+
+  it('setDetail of the session: set, replace, off; each undoable', () => {
+    const curl = { radius: 0.05, frequency: 3, start: 0.15, randomOffset: 1 };
+    roundTrip([], { kind: 'setDetail', curveId: null, detail: { curl } }, (s) =>
+      expect(s.detail).toEqual({ curl }),
+    );
+    roundTrip(
+      [{ kind: 'setDetail', curveId: null, detail: { curl } }],
+      { kind: 'setDetail', curveId: null, detail: { lengthJitter: 0.4 } },
+      (s) => expect(s.detail).toEqual({ lengthJitter: 0.4 }),
+    );
+    // a detail that changes no strand is no detail
+    for (const off of [undefined, {}, { lengthJitter: 0 }])
+      roundTrip(
+        [{ kind: 'setDetail', curveId: null, detail: { curl } }],
+        { kind: 'setDetail', curveId: null, detail: off },
+        (s) => expect(Object.keys(s)).not.toContain('detail'),
+      );
+    const { e } = editorWithLog();
+    expect(e.run({ kind: 'setDetail', curveId: null, detail: { lengthJitter: 0 } })).toBe(false);
+    expect(e.run({ kind: 'setDetail', curveId: null, detail: { curl } })).toBe(true);
+    expect(e.run({ kind: 'setDetail', curveId: null, detail: { curl: { ...curl } } })).toBe(false);
+  });
+
+  it("setDetail of a curve: its own detail (even none), then back to the session's", () => {
+    const frizz = { distance: 0.006, shape: 0.5 };
+    roundTrip([addStream(0)], { kind: 'setDetail', curveId: 'c1', detail: { frizz } }, (s) =>
+      expect(s.curves[0].detail).toEqual({ frizz }),
+    );
+    roundTrip([addStream(0)], { kind: 'setDetail', curveId: 'c1', detail: {} }, (s) =>
+      expect(s.curves[0].detail).toEqual({}),
+    );
+    roundTrip(
+      [addStream(0), { kind: 'setDetail', curveId: 'c1', detail: { frizz } }],
+      { kind: 'setDetail', curveId: 'c1', detail: undefined },
+      (s) => expect(Object.keys(s.curves[0])).not.toContain('detail'),
+    );
+    const { e } = editorWithLog();
+    expect(e.run({ kind: 'setDetail', curveId: 'c9', detail: { frizz } })).toBe(false);
+  });
+
+  it('setDetail out of range changes nothing (the editor holds only sessions the reader accepts)', () => {
+    const { e } = editorWithLog();
+    e.run(addStream(0));
+    const before = e.session;
+    const bad = { curl: { radius: 5, frequency: 3, start: 0.15, randomOffset: 1 } };
+    expect(e.run({ kind: 'setDetail', curveId: null, detail: bad })).toBe(false);
+    expect(e.run({ kind: 'setDetail', curveId: 'c1', detail: bad })).toBe(false);
+    expect(e.session).toBe(before);
+  });
+
+  it('setGrowth: a patch of growth settings, checked by the reader, undoable', () => {
+    roundTrip([], { kind: 'setGrowth', patch: { maxStrands: 5000, maxLength: 2 } }, (s) => {
+      expect(s.growth.maxStrands).toBe(5000);
+      expect(s.growth.maxLength).toBe(2);
+      expect(s.growth.seed).toBe(emptySession('25k').growth.seed);
+    });
+    const { e, log } = editorWithLog();
+    const before = e.session;
+    expect(e.run({ kind: 'setGrowth', patch: { maxSegments: 1e9 } })).toBe(false);
+    expect(log.at(-1)?.message).toContain('session.growth.maxSegments');
+    expect(e.run({ kind: 'setGrowth', patch: { jitter: Number.NaN } })).toBe(false);
+    expect(e.run({ kind: 'setGrowth', patch: { seed: 1.5 } })).toBe(false);
+    expect(
+      e.run({
+        kind: 'setGrowth',
+        patch: { speed: 2 } as unknown as Partial<SessionState['growth']>,
+      }),
+    ).toBe(false);
+    expect(e.run({ kind: 'setGrowth', patch: { maxStrands: before.growth.maxStrands } })).toBe(
+      false,
+    );
+    expect(e.session).toBe(before);
   });
 
   it('a hair colour that is not #rrggbb changes nothing', () => {
@@ -298,15 +385,17 @@ describe('the editor holds only sessions the reader accepts', () => {
     expect(log.at(-1)?.message).toContain('curve.points[1]');
   });
 
-  it('a session loaded onto another grid drops its scalp avoidance (its points are grid points)', () => {
+  it('a session loaded onto another grid keeps avoid scalp and detail (settings, not grid points)', () => {
     const { e, log } = editorWithLog();
-    const other = { ...emptySession('50k'), avoid: { index: [5], target: [0, 0.3, 0] } };
+    const detail = { lengthJitter: 0.3 };
+    const other: SessionState = { ...emptySession('50k'), avoidScalp: true, detail };
     e.run({ kind: 'loadSession', session: other, what: 'Opened x' });
     expect(e.session.grid).toBe('25k');
-    expect(e.session.avoid).toBeNull();
-    expect(log.at(-1)?.message).toContain('dropped');
-    const same = { ...emptySession('25k'), avoid: { index: [5], target: [0, 0.3, 0] } };
-    e.run({ kind: 'loadSession', session: same, what: 'Opened y' });
-    expect(e.session.avoid?.index).toEqual([5]);
+    expect(e.session.avoidScalp).toBe(true);
+    expect(e.session.detail).toEqual(detail);
+    expect(log.at(-1)?.message).toBe('Opened x (0 curves).');
+    e.run({ kind: 'loadSession', session: emptySession('25k'), what: 'Opened y' });
+    expect(Object.keys(e.session)).not.toContain('avoidScalp');
+    expect(Object.keys(e.session)).not.toContain('detail');
   });
 });
