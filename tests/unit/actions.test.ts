@@ -20,6 +20,8 @@ function target() {
     box: false,
   };
   let speed = 1;
+  let avoidOn = false;
+  let detailOpen = false;
   const t: ActionTarget = {
     tool: () => 'select',
     setTool: (n) => calls.push(`tool:${n}`),
@@ -33,8 +35,11 @@ function target() {
     deleteSelected: () => calls.push('delete'),
     setViewpoint: () => calls.push('viewpoint'),
     toggleSurfaceMode: () => calls.push('surface'),
-    avoidScalp: () => calls.push('avoid'),
-    avoiding: () => false,
+    toggleAvoidScalp: () => {
+      calls.push('avoid');
+      avoidOn = !avoidOn;
+    },
+    avoidScalpOn: () => avoidOn,
     share: () => calls.push('share'),
     save: () => calls.push('save'),
     open: () => calls.push('open'),
@@ -46,6 +51,11 @@ function target() {
     },
     cancel: () => calls.push('cancel'),
     toggleHelp: () => calls.push('help'),
+    toggleDetailPanel: () => {
+      calls.push('detail');
+      detailOpen = !detailOpen;
+    },
+    detailPanelOpen: () => detailOpen,
     display: (k) => display[k],
     setDisplay: (k, on) => {
       display[k] = on;
@@ -122,5 +132,31 @@ describe('actions', () => {
     expect(speed()).toBe(2);
     for (let i = 0; i < 10; i++) byId('view.orbitSlower')?.run();
     expect(speed()).toBe(0.25);
+  });
+
+  it('"Avoid scalp" is a toggle: always enabled, pressed while on', () => {
+    const { t, calls } = target();
+    const avoid = buildActions(t).find((a) => a.label === 'Avoid scalp');
+    if (!avoid) throw new Error('no Avoid scalp action');
+    expect(avoid.enabled?.() ?? true).toBe(true);
+    expect(avoid.pressed?.()).toBe(false);
+    avoid.run();
+    expect(avoid.pressed?.()).toBe(true);
+    expect(avoid.enabled?.() ?? true).toBe(true); // it can be turned off again
+    avoid.run();
+    expect(avoid.pressed?.()).toBe(false);
+    expect(calls).toEqual(['avoid', 'avoid']);
+  });
+
+  it('"h" shows and hides the Detail panel; its button is pressed while open', () => {
+    const { t, calls } = target();
+    const actions = buildActions(t);
+    const a = actionForShortcut(actions, key('h') ?? '');
+    expect(a?.label).toBe('Detail');
+    a?.run();
+    expect(a?.pressed?.()).toBe(true);
+    a?.run();
+    expect(a?.pressed?.()).toBe(false);
+    expect(calls).toEqual(['detail', 'detail']);
   });
 });
