@@ -2,7 +2,8 @@
 // in flight, newest wins, results are cached by content, and a dead worker is replaced and sent
 // the session again.
 import { describe, expect, it } from 'vitest';
-import { packCurves } from '../../web/model/curveSet';
+import { packCurves, packHairOptions } from '../../web/model/curveSet';
+import type { HairDetail } from '../../web/model/detail';
 import { DEFAULT_GROWTH, type StyleCurve } from '../../web/model/session';
 import type { FromWorker, ToWorker } from '../../web/solver/protocol';
 import { type InitMessage, type SolveResult, SolverClient } from '../../web/solver/solverClient';
@@ -42,22 +43,24 @@ const init: InitMessage = {
   },
 };
 
-const curves = (n: number) =>
-  packCurves(
-    Array.from(
-      { length: n },
-      (_, i): StyleCurve => ({
-        id: `c${i}`,
-        type: 'stream',
-        points: [
-          [i, 0, 0],
-          [i, 1, 0],
-        ],
-        extend: true,
-        viewpoint: { position: [0, 0, 5], target: [0, 0, 0] },
-      }),
-    ),
+const streams = (n: number) =>
+  Array.from(
+    { length: n },
+    (_, i): StyleCurve => ({
+      id: `c${i}`,
+      type: 'stream',
+      points: [
+        [i, 0, 0],
+        [i, 1, 0],
+      ],
+      extend: true,
+      viewpoint: { position: [0, 0, 5], target: [0, 0, 0] },
+    }),
   );
+const curves = (n: number) => packCurves(streams(n));
+/** The solve options of n curves: avoid scalp off and no detail unless given. */
+const opts = (n: number, s: { avoidScalp?: boolean; detail?: HairDetail } = {}) =>
+  packHairOptions(s, streams(n));
 
 const result = (id: number, final = true): SolveResult => ({
   type: 'result',
@@ -111,12 +114,12 @@ describe('SolverClient', () => {
     const { client, workers, shown } = setup();
     const w = workers[0];
     expect(w.sent[0].type).toBe('init');
-    client.request(curves(1), DEFAULT_GROWTH);
+    client.request(curves(1), DEFAULT_GROWTH, opts(1));
     expect(w.solves()).toHaveLength(0); // not ready yet: sent on ready
     w.reply({ type: 'ready', gridPoints: 8, roots: 0 });
     expect(w.solves()).toHaveLength(1);
-    client.request(curves(2), DEFAULT_GROWTH);
-    client.request(curves(3), DEFAULT_GROWTH);
+    client.request(curves(2), DEFAULT_GROWTH, opts(2));
+    client.request(curves(3), DEFAULT_GROWTH, opts(3));
     expect(w.solves()).toHaveLength(3); // the worker supersedes; the client does not queue
     const [a, , c] = w.solves();
     w.reply(result(a.id, false));
@@ -134,11 +137,11 @@ describe('SolverClient', () => {
     const { client, workers, shown } = setup();
     const w = workers[0];
     w.reply({ type: 'ready', gridPoints: 8, roots: 0 });
-    client.request(curves(1), DEFAULT_GROWTH, 'preview');
+    client.request(curves(1), DEFAULT_GROWTH, opts(1), 'preview');
     expect(w.solves()[0].mode).toBe('preview');
     w.reply(result(w.solves()[0].id, false));
     expect(client.pending).toBe(false);
-    client.request(curves(1), DEFAULT_GROWTH, 'full');
+    client.request(curves(1), DEFAULT_GROWTH, opts(1), 'full');
     expect(w.solves()).toHaveLength(2); // not answered from a cache
     expect(shown).toHaveLength(1);
   });
@@ -147,9 +150,9 @@ describe('SolverClient', () => {
     const { client, workers, shown } = setup();
     const w = workers[0];
     w.reply({ type: 'ready', gridPoints: 8, roots: 0 });
-    client.request(curves(1), DEFAULT_GROWTH, 'preview');
-    client.request(curves(2), DEFAULT_GROWTH, 'preview');
-    client.request(curves(3), DEFAULT_GROWTH, 'preview');
+    client.request(curves(1), DEFAULT_GROWTH, opts(1), 'preview');
+    client.request(curves(2), DEFAULT_GROWTH, opts(2), 'preview');
+    client.request(curves(3), DEFAULT_GROWTH, opts(3), 'preview');
     expect(w.solves()).toHaveLength(1); // the drag does not queue solves in the worker
     const first = w.solves()[0];
     w.reply(result(first.id, false));
@@ -166,14 +169,14 @@ describe('SolverClient', () => {
     const { client, workers } = setup();
     const w = workers[0];
     w.reply({ type: 'ready', gridPoints: 8, roots: 0 });
-    client.request(curves(1), DEFAULT_GROWTH, 'preview');
-    client.request(curves(2), DEFAULT_GROWTH, 'preview');
+    client.request(curves(1), DEFAULT_GROWTH, opts(1), 'preview');
+    client.request(curves(2), DEFAULT_GROWTH, opts(2), 'preview');
     expect(w.solves()).toHaveLength(1);
     w.reply({ type: 'error', id: w.solves()[0].id, message: 'bad curve', kind: 'invalid_input' });
     // the waiting preview goes out, and so does the next one once that is answered
     expect(w.solves()).toHaveLength(2);
     w.reply(result(w.solves()[1].id, false));
-    client.request(curves(3), DEFAULT_GROWTH, 'preview');
+    client.request(curves(3), DEFAULT_GROWTH, opts(3), 'preview');
     expect(w.solves()).toHaveLength(3);
   });
 
@@ -181,8 +184,8 @@ describe('SolverClient', () => {
     const { client, workers, shown } = setup();
     const w = workers[0];
     w.reply({ type: 'ready', gridPoints: 8, roots: 0 });
-    client.request(curves(1), DEFAULT_GROWTH, 'preview');
-    client.request(curves(1), DEFAULT_GROWTH, 'full'); // pointer-up: sent at once
+    client.request(curves(1), DEFAULT_GROWTH, opts(1), 'preview');
+    client.request(curves(1), DEFAULT_GROWTH, opts(1), 'full'); // pointer-up: sent at once
     expect(w.solves().map((m) => m.mode)).toEqual(['preview', 'full']);
     const [p, f] = w.solves();
     w.reply(result(p.id, false)); // late preview answer
@@ -191,7 +194,7 @@ describe('SolverClient', () => {
     w.reply(result(f.id, true));
     expect(shown.map((s) => s.id)).toEqual([f.id, f.id]);
     // A preview after the full request is sent at once (nothing in flight), its answer shown.
-    client.request(curves(2), DEFAULT_GROWTH, 'preview');
+    client.request(curves(2), DEFAULT_GROWTH, opts(2), 'preview');
     expect(w.solves()).toHaveLength(3);
   });
 
@@ -199,12 +202,12 @@ describe('SolverClient', () => {
     const { client, workers, shown } = setup();
     const w = workers[0];
     w.reply({ type: 'ready', gridPoints: 8, roots: 0 });
-    client.request(curves(1), DEFAULT_GROWTH);
+    client.request(curves(1), DEFAULT_GROWTH, opts(1));
     w.reply(result(w.solves()[0].id));
-    client.request(curves(2), DEFAULT_GROWTH);
+    client.request(curves(2), DEFAULT_GROWTH, opts(2));
     w.reply(result(w.solves()[1].id));
     expect(client.pending).toBe(false);
-    client.request(curves(1), DEFAULT_GROWTH); // undo
+    client.request(curves(1), DEFAULT_GROWTH, opts(1)); // undo
     expect(w.solves()).toHaveLength(2);
     expect(shown.at(-1)).toEqual({ id: w.solves()[0].id, cached: true });
   });
@@ -213,26 +216,26 @@ describe('SolverClient', () => {
     const { client, workers, shown } = setup();
     const w = workers[0];
     w.reply({ type: 'ready', gridPoints: 8, roots: 0 });
-    client.request(curves(1), DEFAULT_GROWTH);
+    client.request(curves(1), DEFAULT_GROWTH, opts(1));
     expect(w.solves()[0].wantField).toBe(false);
     w.reply(result(w.solves()[0].id));
     client.wantField = true;
-    client.request(curves(1), DEFAULT_GROWTH); // same state, but the cached answer has no field
+    client.request(curves(1), DEFAULT_GROWTH, opts(1)); // same state, but the cached answer has no field
     expect(w.solves()).toHaveLength(2);
     expect(w.solves()[1].wantField).toBe(true);
     w.reply({ ...result(w.solves()[1].id), field: { vectors: new Float32Array(24) } });
-    client.request(curves(1), DEFAULT_GROWTH); // now cached with its field
+    client.request(curves(1), DEFAULT_GROWTH, opts(1)); // now cached with its field
     expect(w.solves()).toHaveLength(2);
     expect(shown.at(-1)).toEqual({ id: w.solves()[1].id, cached: true });
     client.wantField = false;
-    client.request(curves(1), DEFAULT_GROWTH); // a field in the cache does no harm
+    client.request(curves(1), DEFAULT_GROWTH, opts(1)); // a field in the cache does no harm
     expect(w.solves()).toHaveLength(2);
   });
 
   it('restarts a dead worker and re-sends the newest state', () => {
     const { client, workers, errors } = setup();
     workers[0].reply({ type: 'ready', gridPoints: 8, roots: 0 });
-    client.request(curves(2), DEFAULT_GROWTH);
+    client.request(curves(2), DEFAULT_GROWTH, opts(2));
     workers[0].die();
     expect(workers[0].terminated).toBe(true);
     expect(errors[0]).toMatch(/restarting/);
@@ -255,7 +258,7 @@ describe('SolverClient', () => {
     const { client, workers, errors, kinds } = setup();
     const w = workers[0];
     w.reply({ type: 'ready', gridPoints: 8, roots: 0 });
-    client.request(curves(1), DEFAULT_GROWTH);
+    client.request(curves(1), DEFAULT_GROWTH, opts(1));
     const id = w.solves()[0].id;
     w.reply({ type: 'error', id, message: 'exact: over the cap', kind: 'over_memory_cap' });
     expect(errors).toEqual(['exact: over the cap']);
@@ -264,13 +267,52 @@ describe('SolverClient', () => {
     expect(kinds.at(-1)).toBe('internal');
   });
 
+  it('sends the solve options (avoid scalp, detail groups) with each request, and again after a restart', () => {
+    const { client, workers } = setup();
+    workers[0].reply({ type: 'ready', gridPoints: 8, roots: 0 });
+    const o = opts(2, { avoidScalp: true, detail: { lengthJitter: 0.4 } });
+    client.request(curves(2), DEFAULT_GROWTH, o);
+    const sent = workers[0].solves()[0].options;
+    expect(sent.avoidScalp).toBe(true);
+    expect(sent.detail.groups[10]).toBe(0.4); // group 0's lengthJitter
+    expect(Array.from(sent.detail.curveGroup)).toEqual([0, 0]);
+    workers[0].die();
+    workers[1].reply({ type: 'ready', gridPoints: 8, roots: 0 });
+    expect(workers[1].solves()[0].options).toEqual(o);
+  });
+
+  it('a cached answer is for the same options only: avoid scalp and detail are part of the state', () => {
+    const { client, workers, shown } = setup();
+    const w = workers[0];
+    w.reply({ type: 'ready', gridPoints: 8, roots: 0 });
+    client.request(curves(1), DEFAULT_GROWTH, opts(1));
+    w.reply(result(w.solves()[0].id));
+    client.request(curves(1), DEFAULT_GROWTH, opts(1, { avoidScalp: true }));
+    expect(w.solves()).toHaveLength(2); // the same curves with avoid scalp: solved again
+    expect(w.solves()[1].options.avoidScalp).toBe(true);
+    w.reply(result(w.solves()[1].id));
+    client.request(curves(1), DEFAULT_GROWTH, opts(1, { detail: { lengthJitter: 0.2 } }));
+    expect(w.solves()).toHaveLength(3); // another detail: grown again
+    w.reply(result(w.solves()[2].id));
+    client.request(curves(1), DEFAULT_GROWTH, opts(1, { detail: { lengthJitter: 0.3 } }));
+    expect(w.solves()).toHaveLength(4);
+    w.reply(result(w.solves()[3].id));
+    // undo back to avoid scalp off: from the cache
+    client.request(curves(1), DEFAULT_GROWTH, opts(1));
+    expect(w.solves()).toHaveLength(4);
+    expect(shown.at(-1)).toEqual({ id: w.solves()[0].id, cached: true });
+    client.request(curves(1), DEFAULT_GROWTH, opts(1, { avoidScalp: true }));
+    expect(w.solves()).toHaveLength(4);
+    expect(shown.at(-1)).toEqual({ id: w.solves()[1].id, cached: true });
+  });
+
   it('sends the light strand cap with each request (none of its own unless the caller names one)', () => {
     const { client, workers } = setup();
     const w = workers[0];
     w.reply({ type: 'ready', gridPoints: 8, roots: 0 });
-    client.request(curves(1), DEFAULT_GROWTH);
-    client.request(curves(2), DEFAULT_GROWTH, 'full', 900);
-    client.request(curves(3), DEFAULT_GROWTH, 'preview', 450);
+    client.request(curves(1), DEFAULT_GROWTH, opts(1));
+    client.request(curves(2), DEFAULT_GROWTH, opts(2), 'full', 900);
+    client.request(curves(3), DEFAULT_GROWTH, opts(3), 'preview', 450);
     expect(w.solves().map((m) => [m.mode, m.lightMaxStrands])).toEqual([
       ['full', 0],
       ['full', 900],
