@@ -79,10 +79,10 @@ static_assert(sizeof(HsGrowthInput) == 64, "protocol.ts GROWTH_INPUT");
 
 // protocol.ts AVOID_INPUT.
 struct HsAvoidInput {
-  double band, magnitude;
+  double band, magnitude, minField;
   int32_t wholeHead, insideToo;
 };
-static_assert(sizeof(HsAvoidInput) == 24, "protocol.ts AVOID_INPUT");
+static_assert(sizeof(HsAvoidInput) == 32, "protocol.ts AVOID_INPUT");
 
 // protocol.ts CONSTRAINT_LIST.
 struct HsConstraintList {
@@ -224,7 +224,8 @@ EMSCRIPTEN_KEEPALIVE int32_t hs_struct_layout(int32_t id, int32_t* out, int32_t 
                  HS_AT(HsGrowthInput, minMagnitude), HS_AT(HsGrowthInput, maxLength),
                  HS_AT(HsGrowthInput, maxSegments), HS_AT(HsGrowthInput, maxStrands)),
       HS_OFFSETS(HsAvoidInput, HS_AT(HsAvoidInput, band), HS_AT(HsAvoidInput, magnitude),
-                 HS_AT(HsAvoidInput, wholeHead), HS_AT(HsAvoidInput, insideToo)),
+                 HS_AT(HsAvoidInput, minField), HS_AT(HsAvoidInput, wholeHead),
+                 HS_AT(HsAvoidInput, insideToo)),
       HS_OFFSETS(HsConstraintList, HS_AT(HsConstraintList, index), HS_AT(HsConstraintList, target),
                  HS_AT(HsConstraintList, count)),
       HS_OFFSETS(HsIterateProgress, HS_AT(HsIterateProgress, errorEstimate),
@@ -281,6 +282,23 @@ EMSCRIPTEN_KEEPALIVE int32_t hs_engine_set_curves(EngineHandle* h, const HsCurve
 
 // Scalp avoidance (S4.7) on the last solved field: fills the handle's avoidance arrays (read
 // with hs_engine_avoid_index / hs_engine_avoid_target, hs_engine_avoid_count entries).
+// protocol.ts DetailArrays: groupCount groups of kDetailStride doubles, one group per curve.
+EMSCRIPTEN_KEEPALIVE int32_t hs_engine_set_detail(EngineHandle* h, const double* groups,
+                                                  int32_t groupCount, const int32_t* curveGroup,
+                                                  int32_t curveCount) {
+  if (!h || groupCount < 0 || curveCount < 0 || (groupCount > 0 && !groups) ||
+      (curveCount > 0 && !curveGroup))
+    return fail(HS_INVALID_INPUT, "set_detail: no engine or arrays");
+  std::vector<DetailParams> g(static_cast<size_t>(groupCount));
+  for (int32_t k = 0; k < groupCount; ++k) {
+    const double* d = groups + size_t(k) * kDetailStride;
+    for (int e = 0; e < kDetailStride; ++e)
+      if (!std::isfinite(d[e])) return fail(HS_NON_FINITE, "set_detail: a number is not finite");
+    g[k] = detailFromArray(d);
+  }
+  return report(h->engine.setDetail(std::move(g),
+                                    std::vector<int32_t>(curveGroup, curveGroup + curveCount)));
+}
 EMSCRIPTEN_KEEPALIVE int32_t hs_engine_scalp_avoidance(EngineHandle* h, const HsAvoidInput* in) {
   if (!h || !in) return fail(HS_INVALID_INPUT, "scalp_avoidance: no engine or input");
   ScalpAvoidanceParams p;
@@ -288,6 +306,7 @@ EMSCRIPTEN_KEEPALIVE int32_t hs_engine_scalp_avoidance(EngineHandle* h, const Hs
   p.magnitude = in->magnitude;
   p.wholeHead = in->wholeHead != 0;
   p.insideToo = in->insideToo != 0;
+  p.minField = in->minField;
   ConstraintSet out;
   h->avoidIndex.clear();
   h->avoidTarget.clear();

@@ -21,6 +21,13 @@ export interface HairSolverModule {
   _hs_engine_set_grid(h: number, gridIn: number): number; // GRID_INPUT
   _hs_engine_set_scalp(h: number, scalpIn: number): number; // SCALP_INPUT
   _hs_engine_set_curves(h: number, curveSetIn: number): number; // CURVE_SET_HEADER
+  _hs_engine_set_detail(
+    h: number,
+    groups: number, // float64[11 * groupCount] (protocol.ts DetailArrays)
+    groupCount: number,
+    curveGroup: number, // int32[curveCount]
+    curveCount: number,
+  ): number;
   _hs_engine_scalp_avoidance(h: number, avoidIn: number): number; // AVOID_INPUT
   _hs_engine_avoid_count(h: number): number;
   _hs_engine_avoid_index(h: number): number;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <limits>
 
 namespace hairsketch {
 
@@ -67,8 +68,47 @@ Status HairEngine::setScalp(const float* positions, size_t vertexCount, const ui
   return s;
 }
 
+DetailParams detailFromArray(const double* d) {
+  DetailParams p;
+  p.curl.radius = d[0];
+  p.curl.frequency = d[1];
+  p.curl.start = d[2];
+  p.curl.randomOffset = d[3];
+  p.clump.factor = d[4];
+  p.clump.shape = d[5];
+  p.clump.tipSpread = d[6];
+  p.clump.guideDistance = d[7];
+  p.frizz.distance = d[8];
+  p.frizz.shape = d[9];
+  p.lengthJitter = d[10];
+  return p;
+}
+
+Status HairEngine::setDetail(std::vector<DetailParams> groups, std::vector<int32_t> curveGroup) {
+  for (int32_t g : curveGroup)
+    if (g < 0 || size_t(g) >= std::max<size_t>(groups.size(), 1))
+      return Status::Error(StatusCode::InvalidInput, "detail: a curve's group is out of range");
+  detail_ = std::move(groups);
+  curveGroup_ = std::move(curveGroup);
+  return Status::Ok();
+}
+
 Status HairEngine::setCurves(const CurveSetView& curves) {
   if (!hasGrid_) return Status::Error(StatusCode::NotReady, "setCurves before setGrid");
+  // At most 16 points of each curve, evenly spaced, for the nearest curve at each root.
+  curvePoints_.clear();
+  curvePointCurve_.clear();
+  for (size_t c = 0; c < curves.curveCount; ++c) {
+    const size_t a = curves.curveStart[c], b = curves.curveStart[c + 1];
+    if (b <= a) continue;
+    const size_t n = b - a, take = std::min<size_t>(n, 16);
+    for (size_t k = 0; k < take; ++k) {
+      const size_t p = a + (take == 1 ? 0 : k * (n - 1) / (take - 1));
+      curvePoints_.emplace_back(float(curves.points[3 * p]), float(curves.points[3 * p + 1]),
+                                float(curves.points[3 * p + 2]));
+      curvePointCurve_.push_back(int32_t(c));
+    }
+  }
   ConstraintSet next;
   std::vector<uint8_t> nextColours;
   Status s = curvesToConstraints(grid_, curves, next, &nextColours);
@@ -142,8 +182,34 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
     strands_.strandStart.assign(1, 0);
     return fits;
   }
-  Status s = growStrands(grid_, fieldF_, roots(), gp, strands_, size_t(24) << 20,
-                         headDistance_.built() ? &headDistance_ : nullptr);
+  const HeadDistance* head = headDistance_.built() ? &headDistance_ : nullptr;
+  Status s = growStrands(grid_, fieldF_, roots(), gp, strands_, size_t(24) << 20, head);
+  bool anyDetail = false;
+  for (const DetailParams& d : detail_) anyDetail |= d.any();
+  if (s.ok() && anyDetail) {
+    const std::vector<Eigen::Vector3f>& R = roots();
+    const size_t n = R.size(), total = roots_.size();
+    std::vector<uint32_t> groupOf(n, 0), key(n);
+    for (size_t k = 0; k < n; ++k) key[k] = uint32_t(capped_ ? k * total / n : k);
+    bool perCurve = false;
+    for (int32_t g : curveGroup_) perCurve |= g != 0;
+    if (perCurve && !curvePoints_.empty())
+      for (size_t k = 0; k < n; ++k) {
+        float best = std::numeric_limits<float>::infinity();
+        int32_t curve = -1;
+        for (size_t q = 0; q < curvePoints_.size(); ++q) {
+          const float d2 = (curvePoints_[q] - R[k]).squaredNorm();
+          if (d2 < best) {
+            best = d2;
+            curve = curvePointCurve_[q];
+          }
+        }
+        if (curve >= 0 && size_t(curve) < curveGroup_.size())
+          groupOf[k] = uint32_t(curveGroup_[curve]);
+      }
+    s = applyDetail(detail_, groupOf, key, rp.seed, strands_, 255);
+    if (head) keepOutsideHead(*head, float(gp.margin), strands_);
+  }
   growMs_ = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
   return s;
 }

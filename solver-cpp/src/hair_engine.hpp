@@ -15,9 +15,14 @@
 #include "scalp_avoidance.hpp"
 #include "scalp_roots.hpp"
 #include "status.hpp"
+#include "strand_detail.hpp"
 #include "strand_growth.hpp"
 
 namespace hairsketch {
+
+// protocol.ts DetailArrays: the numbers of one detail group, in this order.
+constexpr int kDetailStride = 11;
+DetailParams detailFromArray(const double* d);  // d[0 .. kDetailStride)
 
 class HairEngine {
  public:
@@ -33,7 +38,11 @@ class HairEngine {
   // The next iterate() starts from zero (FieldSolver::forgetWarmStart); false for a direct
   // solver (nothing to forget) or before setGrid.
   bool forgetWarmStart() { return hasGrid_ && solver_ && solver_->forgetWarmStart(); }
-  // Samples (or reuses) roots and grows strands in the last solved field.
+  // Detail groups (group 0 the session's) and each curve's group (curves of the next setCurves,
+  // in order; an empty list = every curve uses group 0). Validated by applyDetail at growth.
+  Status setDetail(std::vector<DetailParams> groups, std::vector<int32_t> curveGroup);
+  // Samples (or reuses) roots, grows strands in the last solved field, applies the detail of the
+  // curve nearest each root and keeps every point outside the head.
   Status grow(const RootParams& roots, const GrowthParams& growth);
   // Scalp avoidance (S4.7) on the last solved field and the scalp mesh: the constraints to store
   // as the CurveSet's extra constraints. Does not change the engine's constraints.
@@ -74,6 +83,11 @@ class HairEngine {
   bool capped_ = false;
   Strands strands_;
   double growMs_ = 0;
+  std::vector<DetailParams> detail_;
+  std::vector<int32_t> curveGroup_;
+  // Curve points subsampled for the nearest-curve lookup, with their curve's index.
+  std::vector<Eigen::Vector3f> curvePoints_;
+  std::vector<int32_t> curvePointCurve_;
 };
 
 }  // namespace hairsketch

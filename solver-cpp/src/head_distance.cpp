@@ -57,6 +57,7 @@ Status HeadDistance::build(const HeadMeshView& m, double cell, int bandCells) {
   const size_t n = size_t(nx) * ny * nz;
   const float inf = std::numeric_limits<float>::infinity();
   std::vector<float> d(n, inf);  // signed, compared by magnitude
+  std::vector<uint8_t> scalpCell(n, 0);
   auto at = [&](int i, int j, int k) {
     return size_t(i) + size_t(nx) * (size_t(j) + size_t(ny) * k);
   };
@@ -81,6 +82,7 @@ Status HeadDistance::build(const HeadMeshView& m, double cell, int bandCells) {
           V3 nrm = w.x() * vn[I[0]] + w.y() * vn[I[1]] + w.z() * vn[I[2]];
           if (!(nrm.squaredNorm() > 1e-24)) nrm = faceN;
           cur = float((p - q).dot(nrm) < 0 ? -dist : dist);
+          scalpCell[at(i, j, k)] = m.scalp ? m.scalp[t] : 0;
         }
   }
   // Far cells: outside when connected to the border through far cells.
@@ -112,6 +114,7 @@ Status HeadDistance::build(const HeadMeshView& m, double cell, int bandCells) {
   for (size_t idx = 0; idx < n; ++idx)
     if (std::isinf(d[idx])) d[idx] = float(outside[idx] ? band : -band);
   d_ = std::move(d);
+  scalp_ = std::move(scalpCell);
   nx_ = nx;
   ny_ = ny;
   nz_ = nz;
@@ -151,6 +154,15 @@ float HeadDistance::distance(float x, float y, float z, float gradient[3]) const
     gradient[2] = (y1 - y0) * inv_;
   }
   return y0 + c * (y1 - y0);
+}
+
+bool HeadDistance::scalpNear(float x, float y, float z) const {
+  const float u = (x - ox_) * inv_, v = (y - oy_) * inv_, w = (z - oz_) * inv_;
+  if (!(u >= 0 && v >= 0 && w >= 0 && u < float(nx_ - 1) && v < float(ny_ - 1) &&
+        w < float(nz_ - 1)))
+    return false;
+  const size_t i = size_t(u + 0.5f), j = size_t(v + 0.5f), k = size_t(w + 0.5f);
+  return scalp_[i + size_t(nx_) * (j + size_t(ny_) * k)] != 0;
 }
 
 float HeadDistance::pushOut(float p[3], float margin) const {

@@ -9,6 +9,7 @@
 //   every other cell is ±band * h: outside when a 6-connected path of such cells reaches the
 //     grid's border (flood fill), inside otherwise, so the sign far from the surface needs no
 //     normals and tolerates meshes with several parts.
+// Each cell within the band also keeps whether its nearest triangle is scalp (mesh.scalp).
 // Queries interpolate trilinearly (accurate to about h² / (8 R) on a surface of radius R) and are
 // +band * h outside the grid.
 #pragma once
@@ -30,6 +31,9 @@ class HeadDistance {
   void clear() { d_.clear(); }
   // Signed distance (negative inside) and its gradient (not normalised; zero when flat).
   float distance(float x, float y, float z, float gradient[3] = nullptr) const;
+  // Whether the head surface nearest p is scalp (the nearest cell's nearest triangle); false
+  // away from the surface or when the mesh has no scalp flags.
+  bool scalpNear(float x, float y, float z) const;
   // Moves p out to `margin` outside the surface along the distance gradient (the direction
   // from the mesh centre where the gradient vanishes). Returns the distance before the move.
   float pushOut(float p[3], float margin) const;
@@ -42,6 +46,7 @@ class HeadDistance {
   int nx_ = 0, ny_ = 0, nz_ = 0;
   Eigen::Vector3f centre_ = Eigen::Vector3f::Zero();
   std::vector<float> d_;
+  std::vector<uint8_t> scalp_;
 };
 
 }  // namespace hairsketch

@@ -26,7 +26,8 @@ Status scalpAvoidanceConstraints(const Grid& g, const Field& T, const HeadMeshVi
                              " rows, grid has " + std::to_string(g.size()) + " points");
   if (m.triangleCount == 0 || !m.positions || !m.indices || (!m.scalp && !prm.wholeHead))
     return Status::Error(StatusCode::NotReady, "scalp avoidance: no scalp mesh");
-  if (!(prm.band > 0) || !std::isfinite(prm.band) || !std::isfinite(prm.magnitude))
+  if (!(prm.band > 0) || !std::isfinite(prm.band) || !std::isfinite(prm.magnitude) ||
+      !(prm.minField >= 0) || !std::isfinite(prm.minField))
     return Status::Error(StatusCode::InvalidInput,
                          "scalp avoidance: band must be > 0 and magnitude finite");
   for (size_t i = 0; i < 3 * m.triangleCount; ++i)
@@ -95,6 +96,8 @@ Status scalpAvoidanceConstraints(const Grid& g, const Field& T, const HeadMeshVi
     if (stats) ++stats->nearPoints;
     V3 v = T.row(Eigen::Index(idx)).transpose();
     if (!v.allFinite()) continue;
+    const double field = v.norm();
+    if (field < prm.minField) continue;
     const double vn0 = v.dot(nrm);
     if (vn0 < 0) {
       v -= vn0 * nrm;
@@ -105,7 +108,7 @@ Status scalpAvoidanceConstraints(const Grid& g, const Field& T, const HeadMeshVi
       if (stats) ++stats->skipped;
       continue;
     }
-    out.push_back({int(idx), prm.magnitude * v / len});
+    out.push_back({int(idx), std::min(prm.magnitude, field) * v / len});
   }
   return Status::Ok();
 }

@@ -10,7 +10,9 @@
 //     blends them in, so an inward vector there can pull a strand into the head);
 //     v   = the current field at g; if v . n < 0 (pointing inwards) v is replaced by its
 //           projection v - (v . n) n onto the tangent plane at q;
-//     the constraint is magnitude * v / |v| (magnitude 0.3).
+//     the constraint is min(magnitude, |v|) * v / |v| (magnitude 0.3: never longer than the
+//     field was, so avoidance turns hair and does not grow hair where the curves asked for
+//     none); grid points whose field is shorter than minField get none.
 //   A near-scalp point whose (projected) field vector is shorter than 1e-6 has no direction to
 //   keep: it is skipped (counted in stats.skipped) and the solve interpolates it from its
 //   neighbours.
@@ -43,6 +45,7 @@ struct ScalpAvoidanceParams {
   double magnitude = 0.3;  // target length of every returned constraint
   bool wholeHead = false;  // measure against every head triangle, not only the scalp ones
   bool insideToo = false;  // also grid points inside the head within the band
+  double minField = 0;     // no constraint where |field| < minField (growth's threshold)
 };
 
 struct ScalpAvoidanceStats {

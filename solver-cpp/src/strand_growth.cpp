@@ -178,6 +178,7 @@ Status growStrands(const Grid& g, const std::vector<float>& field,
         if (head) {
           float grad[3];
           if (head->distance(nx, ny, nz, grad) < margin) {
+            if (seg > 0 && !head->scalpNear(nx, ny, nz)) break;  // not over the face
             // Slide: drop the inward part of the step, then stand off at the margin.
             float st[3] = {nx - x, ny - y, nz - z};
             const float g2 = grad[0] * grad[0] + grad[1] * grad[1] + grad[2] * grad[2];

@@ -5,7 +5,10 @@
 // With the head's distance grid, hair stays outside the head: a next point closer to the head
 // than `margin` loses the inward part of its step (the strand slides along the surface) and is
 // pushed out to the margin; when what is left of the step is shorter than minSlide times the
-// step the field asked for (the field points into the head), the strand stops there.
+// step the field asked for (the field points into the head), the strand stops there. Hair slides
+// over the scalp only: a strand (past its first step) that meets the head where the nearest
+// surface is not scalp (the face, the ears, the neck) stops there instead of running down over
+// it.
 #pragma once
 
 #include <Eigen/Core>

@@ -41,8 +41,8 @@ export interface ActionTarget {
   deleteSelected(): void;
   setViewpoint(): void;
   toggleSurfaceMode(): void;
-  avoidScalp(): void;
-  avoiding(): boolean;
+  toggleAvoidScalp(): void;
+  avoidScalpOn(): boolean;
   share(): void;
   save(): void;
   open(): void;
@@ -52,6 +52,8 @@ export interface ActionTarget {
   setOrbitSpeed(factor: number): void;
   cancel(): void;
   toggleHelp(): void;
+  toggleDetailPanel(): void;
+  detailPanelOpen(): boolean;
   display(key: DisplayKey): boolean;
   setDisplay(key: DisplayKey, on: boolean): void;
 }
@@ -154,11 +156,11 @@ export function buildActions(t: ActionTarget): Action[] {
       id: 'curve.avoidScalp',
       label: 'Avoid scalp',
       title:
-        'Keep the hair out of the head: constrain the field near the scalp to point outward or along it',
+        'Turn the hair near the scalp along it (the field is solved again with scalp constraints each time the curves change); on or off',
       group: 'curve',
       toolbar: 'more',
-      run: () => t.avoidScalp(),
-      enabled: () => !t.avoiding(),
+      run: () => t.toggleAvoidScalp(),
+      pressed: () => t.avoidScalpOn(),
     },
     {
       id: 'file.share',
@@ -228,6 +230,16 @@ export function buildActions(t: ActionTarget): Action[] {
       group: 'view',
       toolbar: 'more',
       run: () => t.toggleHelp(),
+    },
+    {
+      id: 'view.detail',
+      label: 'Detail',
+      title: 'Show or hide the Hair panel: strand count, maximum length, curl, clump, frizz',
+      shortcuts: ['h'],
+      group: 'view',
+      toolbar: 'more',
+      run: () => t.toggleDetailPanel(),
+      pressed: () => t.detailPanelOpen(),
     },
     {
       id: 'edit.cancel',

@@ -10,6 +10,7 @@ import { applyPreset } from '../model/presets';
 import { DEFAULT_GROWTH, emptySession } from '../model/session';
 import { PONYTAIL_STAGE_HINT } from '../tools/ponytailTool';
 import { buildCurvePanel } from '../ui/curvePanel';
+import { buildDetailPanel, type DetailPanel } from '../ui/detailPanel';
 import { buildDisplayToggles } from '../ui/displayToggles';
 import { buildHelpOverlay, type HelpOverlay } from '../ui/helpOverlay';
 import { StatusLine } from '../ui/status';
@@ -86,6 +87,7 @@ export function startApp(): void {
   viewer.onFrame(() => tool.update());
 
   let help: HelpOverlay | null = null;
+  let detailPanel: DetailPanel | null = null;
   const edits = editActions({
     editor,
     viewer,
@@ -101,6 +103,11 @@ export function startApp(): void {
     ...edits,
     exportMenu: () => exporting?.menu.toggle(),
     toggleHelp: () => help?.toggle(),
+    toggleDetailPanel: () => {
+      detailPanel?.toggle();
+      toolbar.refresh();
+    },
+    detailPanelOpen: () => !!detailPanel?.open,
     display: (k) => overlays.display[k],
     setDisplay: (k, on) => overlays.setDisplay(k, on),
   });
@@ -130,6 +137,11 @@ export function startApp(): void {
   const panel = buildCurvePanel(byId('stage'), (id, patch) =>
     editor.run({ kind: 'patchCurve', id, patch }),
   );
+  detailPanel = buildDetailPanel(byId('stage'), {
+    setGrowth: (patch) => editor.run({ kind: 'setGrowth', patch }),
+    setDetail: (curveId, detail) => editor.run({ kind: 'setDetail', curveId, detail }),
+  });
+  detailPanel.show(editor.session, editor.selectedCurve);
 
   const applyTool = (name: ToolName) => {
     tool.onCancel();
@@ -145,6 +157,7 @@ export function startApp(): void {
     status.editorChanged(c);
     if (c.session.hairColor !== c.previous.hairColor) toolbar.setHairColor(c.session.hairColor);
     panel.show(editor.selectedCurve);
+    detailPanel?.show(c.session, editor.selectedCurve);
     toolbar.refresh();
   });
   bridge.subscribe({
@@ -205,7 +218,6 @@ export function startApp(): void {
     overlays,
     ponytail: tools.ponytail,
     busy: () =>
-      edits.avoiding() ||
       !!exporting?.busy() ||
       bridge.pending ||
       hair.awaitingFrame ||

@@ -22,12 +22,11 @@ export interface EditActionDeps {
 
 export type EditActions = Omit<
   ActionTarget,
-  'toggleHelp' | 'display' | 'setDisplay' | 'exportMenu'
+  'toggleHelp' | 'display' | 'setDisplay' | 'exportMenu' | 'toggleDetailPanel' | 'detailPanelOpen'
 >;
 
 export function editActions(d: EditActionDeps): EditActions {
   const { editor, viewer, status } = d;
-  let avoiding = false;
   return {
     tool: () => editor.tool,
     setTool: (name) => editor.setTool(name),
@@ -61,27 +60,9 @@ export function editActions(d: EditActionDeps): EditActions {
           mode: (c.surfaceMode ?? 'ruled') === 'ruled' ? 'strip' : 'ruled',
         });
     },
-    /** S4.7: constraints from the converged field of the current curves, an undoable edit. */
-    avoidScalp: () => {
-      if (avoiding) return;
-      avoiding = true;
-      d.refresh();
-      status.note('Avoid scalp: solving the field…');
-      d.bridge
-        .avoidScalp(editor.session)
-        .then((r) =>
-          editor.run({
-            kind: 'setAvoid',
-            avoid: { index: Array.from(r.index), target: Array.from(r.target) },
-          }),
-        )
-        .catch((e) => status.note(`Avoid scalp failed: ${e instanceof Error ? e.message : e}`))
-        .finally(() => {
-          avoiding = false;
-          d.refresh();
-        });
-    },
-    avoiding: () => avoiding,
+    /** S4.7 as a setting of the session, an undoable edit. */
+    toggleAvoidScalp: () => editor.run({ kind: 'setAvoidScalp', on: !editor.session.avoidScalp }),
+    avoidScalpOn: () => !!editor.session.avoidScalp,
     share: () => void d.links.share().then((m) => status.note(m)),
     save: () => {
       downloadSession(editor.session, viewer.cameraState());

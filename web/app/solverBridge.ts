@@ -3,11 +3,11 @@
 // most one in flight: SolverClient paces them) and how many strands previews and first looks
 // grow. Results and progress go to whoever subscribed (hair presenter, overlays, status line).
 import type { Editor, EditorChange } from '../editor/editor';
-import { packCurves } from '../model/curveSet';
+import { packCurves, packHairOptions } from '../model/curveSet';
 import type { SessionState, Viewpoint } from '../model/session';
 import type { Vec3 } from '../model/vec3';
 import type { GridSpec, ScalpMesh, SolverErrorKind, SolverName } from '../solver/protocol';
-import { type AvoidanceResult, type SolveResult, SolverClient } from '../solver/solverClient';
+import { type SolveResult, SolverClient } from '../solver/solverClient';
 
 /** Strands grown for a preview or a first look: at most this many, fewer when the view draws a
  *  sample (a slow GPU), never fewer than the minimum. */
@@ -81,7 +81,13 @@ export class SolverBridge {
   /** Sends the current session for a full solve. */
   sync(): void {
     const s = this.editor.session;
-    this.client.request(packCurves(s.curves, s.avoid ?? null), s.growth, 'full', this.lightCap(s));
+    this.client.request(
+      packCurves(s.curves),
+      s.growth,
+      packHairOptions(s, s.curves),
+      'full',
+      this.lightCap(s),
+    );
   }
 
   /** The stroke being drawn (resampled points), solved with the session's curves as a preview;
@@ -96,9 +102,11 @@ export class SolverBridge {
     const s = this.editor.session;
     const draft = { id: '~draft', type: 'stream' as const, points, extend: true, viewpoint };
     const cap = this.lightCap(s);
+    const curves = [...s.curves, draft];
     this.client.request(
-      packCurves([...s.curves, draft], s.avoid ?? null),
+      packCurves(curves),
       { ...s.growth, maxStrands: cap },
+      packHairOptions(s, curves),
       'preview',
       cap,
     );
@@ -108,11 +116,6 @@ export class SolverBridge {
   setWantField(on: boolean, haveField: boolean): void {
     this.client.wantField = on;
     if (on && !haveField && !this.drawing) this.sync();
-  }
-
-  /** S4.7: the avoidance constraints of the current curves' converged field. */
-  avoidScalp(s: SessionState): Promise<AvoidanceResult> {
-    return this.client.avoidScalp(packCurves(s.curves));
   }
 
   /** Resolves once no solve is pending (at once when idle). */
@@ -141,7 +144,13 @@ export class SolverBridge {
     // a change of colour alone needs no solve
     const p = c.previous;
     const s = c.session;
-    if (p.curves === s.curves && p.avoid === s.avoid && p.growth === s.growth) return;
+    if (
+      p.curves === s.curves &&
+      p.avoidScalp === s.avoidScalp &&
+      p.detail === s.detail &&
+      p.growth === s.growth
+    )
+      return;
     this.drawing = false;
     this.sync();
   }

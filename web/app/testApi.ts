@@ -1,5 +1,6 @@
 // window.hairsketch: the hooks automated browser tests use (README, "Test contract").
 import type { Editor } from '../editor/editor';
+import { scalpCoverage, VIEW_DIRECTIONS } from '../head/hairCoverage';
 import type { Head } from '../head/head';
 import { contentKey } from '../model/curveSet';
 import type { Vec3 } from '../model/vec3';
@@ -28,6 +29,9 @@ export interface HairsketchTestApi {
   /** Fraction of the hair's segments the last frame drew (1 = all; less while interacting on a
    *  slow GPU). */
   hairDetail(): number;
+  /** Benchmark probe: the median time in ms of `runs` frames of the current view drawn with
+   *  every strand (GPU work included). */
+  frameMs(runs?: number): number;
   /** Root and tip of every displayed strand: [rx, ry, rz, tx, ty, tz] per strand, flat. */
   strandEnds(): number[];
   /** Replaces the session with a plain-JSON one from session() (an undoable edit); for
@@ -37,6 +41,12 @@ export interface HairsketchTestApi {
   display(): DisplayState;
   /** What the shown overlays draw: constraints, field glyphs, surface triangles (0 when off). */
   displayInfo(): { constraints: number; glyphs: number; surfaceTriangles: number };
+  /** Rays from one side (back: travelling +z) at a 3° grid of scalp points: how many are seen
+   *  from there and how many of those no displayed strand hides (within `radius`, 1 mm). */
+  scalpCoverage(
+    view: 'front' | 'back' | 'left' | 'right' | 'top',
+    radius?: number,
+  ): { points: number; bare: number; fraction: number; bareAt: [number, number][] };
   /** The displayed strands as plain arrays (layout of protocol.ts StrandArrays). */
   strands(): { points: number[]; strandStart: number[] } | null;
   /** Displayed strand segments with a point (either end or the middle) deeper than `depth`
@@ -118,6 +128,14 @@ export function installTestApi(app: TestApiParts): void {
     lastPointerUp: () => app.lastPointerUp(),
     heapBytes: () => hair.heapBytes,
     hairDetail: () => viewer.hairDetail,
+    scalpCoverage: (view, radius) =>
+      scalpCoverage(head, hair.strands, { dir: VIEW_DIRECTIONS[view], radius }),
+    frameMs(runs = 5) {
+      const t: number[] = [];
+      for (let i = 0; i < Math.max(1, runs); i++) t.push(viewer.measureFrame());
+      t.sort((x, y) => x - y);
+      return t[t.length >> 1];
+    },
     strandEnds() {
       const s = hair.strands;
       if (!s) return [];

@@ -243,10 +243,6 @@ export async function runGrow(
   const args = parseGrowArgs(argv);
   const session = await readSessionArg(args.session);
   const preset = args.grid ?? session.grid;
-  if (preset !== session.grid && (session.avoid?.index.length ?? 0) > 0)
-    throw new CliError(
-      `--grid ${preset} differs from the session's grid ${session.grid}, and its scalp-avoidance constraints are points of that grid (leave --grid out)`,
-    );
   const head = Head.builtin();
   const exportHead: ExportHead | null = args.head
     ? { positions: head.mesh.positions, indices: head.mesh.indices, normals: head.mesh.normals }

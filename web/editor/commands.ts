@@ -1,12 +1,12 @@
 // Every change a user makes to the session, as one typed command, and what each does: a pure
 // function from (session, command) to the next session, the selection after it and a sentence
 // for the status line. The Editor (editor.ts) runs them through one path: history, then notify.
+import { detailIsOn, type HairDetail } from '../model/detail';
 import { ponytailCircles } from '../model/ponytailGeometry';
 import { quantizeSession } from '../model/quantize';
 import {
   addCurve,
   deleteCurve,
-  type ExtraConstraints,
   findCurve,
   nextCurveId,
   type SessionState,
@@ -17,7 +17,7 @@ import {
 import { parseSession } from '../model/sessionFile';
 import type { SurfaceMode } from '../model/supportingSurface';
 import type { Vec3 } from '../model/vec3';
-import { CURVE_PARAMS, type CurveParamSpec } from '../solver/protocol';
+import { CURVE_PARAMS, type CurveParamSpec, type GrowthParams } from '../solver/protocol';
 
 /** A new curve as a tool makes it: everything but its id (the editor assigns it). */
 export type NewCurve = StyleCurve extends infer C
@@ -42,7 +42,12 @@ export type Command =
   | { kind: 'patchCurve'; id: string; patch: CurveParamPatch }
   | { kind: 'setViewpoint'; id: string; viewpoint: Viewpoint }
   | { kind: 'setSurfaceMode'; id: string; mode: SurfaceMode }
-  | { kind: 'setAvoid'; avoid: ExtraConstraints | null }
+  /** "Avoid scalp" (S4.7) on or off: a setting the solver applies whenever it solves. */
+  | { kind: 'setAvoidScalp'; on: boolean }
+  /** The session's detail (curveId null) or one curve's own (undefined: none / the session's). */
+  | { kind: 'setDetail'; curveId: string | null; detail: HairDetail | undefined }
+  /** Growth settings (strand density, cap, maximum length). */
+  | { kind: 'setGrowth'; patch: Partial<GrowthParams> }
   | { kind: 'setHairColor'; color: string }
   /** Replaces the whole session (a file, a link, a test hook). The page's grid is kept: curves
    *  are in world units. `camera`: the view the session was saved with, if any. */
@@ -80,7 +85,7 @@ export function applyCommand(s: SessionState, cmd: Command): CommandResult {
   // the head, past the working volume). Only the curves this command made are read.
   const made = next.curves.filter((c) => !s.curves.includes(c));
   if (made.length > 0 && cmd.kind !== 'loadSession') {
-    const check = parseSession({ ...next, curves: made, avoid: null });
+    const check = parseSession({ ...next, curves: made });
     if (!check.ok)
       return {
         session: s,
@@ -188,13 +193,58 @@ function applyExact(s: SessionState, cmd: Command): CommandResult {
         message: `Supporting surface of ${c.id}: ${cmd.mode}.`,
       };
     }
-    case 'setAvoid':
+    case 'setAvoidScalp': {
+      if (!!s.avoidScalp === cmd.on)
+        return { session: s, message: `Avoid scalp is already ${cmd.on ? 'on' : 'off'}.` };
+      const { avoidScalp: _, ...rest } = s;
       return {
-        session: { ...s, avoid: cmd.avoid },
-        message: cmd.avoid
-          ? `Avoid scalp: ${cmd.avoid.index.length} constraints near the head.`
-          : 'Scalp avoidance removed.',
+        session: cmd.on ? { ...rest, avoidScalp: true } : rest,
+        message: cmd.on
+          ? 'Avoid scalp on: hair near the head is turned along it.'
+          : 'Avoid scalp off.',
       };
+    }
+    case 'setDetail': {
+      const d = cmd.detail && (detailIsOn(cmd.detail) || cmd.curveId) ? cmd.detail : undefined;
+      if (cmd.curveId === null) {
+        if (JSON.stringify(d) === JSON.stringify(s.detail))
+          return { session: s, message: 'Detail unchanged.' };
+        const { detail: _, ...rest } = s;
+        return {
+          session: d ? { ...rest, detail: d } : rest,
+          message: d ? `Detail: ${describeDetail(d)}.` : 'Detail off.',
+        };
+      }
+      const c = findCurve(s, cmd.curveId);
+      if (!c) return { session: s, message: `No curve ${cmd.curveId}.` };
+      if (JSON.stringify(d) === JSON.stringify(c.detail))
+        return { session: s, message: 'Detail unchanged.' };
+      return {
+        session: updateCurve(s, c.id, () => {
+          const { detail: _, ...rest } = c;
+          return (d ? { ...rest, detail: d } : rest) as StyleCurve;
+        }),
+        message: d
+          ? `Detail of ${c.id}: ${describeDetail(d)}.`
+          : `${c.id} uses the session's detail.`,
+      };
+    }
+    case 'setGrowth': {
+      const g = { ...s.growth };
+      let changed = false;
+      for (const [k, v] of Object.entries(cmd.patch) as [keyof GrowthParams, number][]) {
+        if (!(k in g) || typeof v !== 'number' || !Number.isFinite(v))
+          return { session: s, message: `Growth setting ${String(k)} is not a finite number.` };
+        if (g[k] !== v) {
+          g[k] = v;
+          changed = true;
+        }
+      }
+      if (!changed) return { session: s, message: 'Growth unchanged.' };
+      const check = parseSession({ ...s, curves: [], growth: g });
+      if (!check.ok) return { session: s, message: `Nothing changed: ${check.error}.` };
+      return { session: { ...s, growth: g }, message: 'Growth settings changed.' };
+    }
     case 'setHairColor': {
       if (!HEX_COLOR.test(cmd.color))
         return { session: s, message: `Hair colour "${cmd.color.slice(0, 20)}" is not #rrggbb.` };
@@ -202,14 +252,17 @@ function applyExact(s: SessionState, cmd: Command): CommandResult {
       return { session: { ...s, hairColor: cmd.color }, message: `Hair colour ${cmd.color}.` };
     }
     case 'loadSession': {
-      // Scalp-avoidance constraints are points of the grid they were made on: on another grid
-      // they would land elsewhere, so they are dropped (the user can run Avoid scalp again).
-      const keepAvoid = cmd.session.grid === s.grid || !cmd.session.avoid;
       return {
-        session: { ...cmd.session, grid: s.grid, avoid: keepAvoid ? cmd.session.avoid : null },
+        session: { ...cmd.session, grid: s.grid },
         selectedId: null,
-        message: `${cmd.what} (${cmd.session.curves.length} curves)${keepAvoid ? '' : `; its scalp avoidance was made for the ${cmd.session.grid} grid and is dropped on this ${s.grid} grid`}.`,
+        message: `${cmd.what} (${cmd.session.curves.length} curves).`,
       };
     }
   }
+}
+
+function describeDetail(d: HairDetail): string {
+  const on = (['curl', 'clump', 'frizz'] as const).filter((b) => d[b]);
+  if ((d.lengthJitter ?? 0) > 0) on.push('length jitter' as never);
+  return on.length ? on.join(', ') : 'none';
 }

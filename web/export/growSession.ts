@@ -6,10 +6,11 @@
 // grid with omega 100, the scalp, the session's curves and avoidance constraints, iterations from
 // a cold start until the estimated field error is below the tolerance, then growth with the
 // session's growth parameters (the strand cap replaced when the caller gives one).
-import { packCurves } from '../model/curveSet';
+import { packCurves, packHairOptions } from '../model/curveSet';
 import type { SessionState } from '../model/session';
 import { type SolverEngine, SolverError } from '../solver/engine';
 import type { GridSpec, ScalpMesh, SolverName, StrandArrays } from '../solver/protocol';
+import { avoidanceOptions } from '../solver/workerLogic';
 
 /** The field's omega, as the app sends it (app/solverBridge.ts). */
 export const GROW_OMEGA = 100;
@@ -64,10 +65,24 @@ export function growSessionHair(
   report('solve', 0);
   engine.setGrid(opts.grid, GROW_OMEGA, opts.solver);
   engine.setScalp(scalp);
-  engine.setCurves(packCurves(session.curves, session.avoid ?? null));
+  const curves = packCurves(session.curves);
+  const options = packHairOptions(session, session.curves);
+  engine.setDetail?.(options.detail);
+  engine.setCurves(curves);
   let p = engine.iterate(SLICE_ITERATIONS, tolerance);
   let fraction = 0; // reported fractions never fall back (the error estimate is not monotonic)
-  while (!p.converged) {
+  // With "Avoid scalp", the converged field gives the avoidance constraints and the field is
+  // solved again from zero with them, as the worker does (workerLogic.ts).
+  let avoided = !(options.avoidScalp && engine.scalpAvoidance);
+  for (;;) {
+    if (p.converged && !avoided && engine.scalpAvoidance) {
+      const r = engine.scalpAvoidance(avoidanceOptions(session.growth));
+      engine.setCurves({ ...curves, extraIndex: r.index, extraTarget: r.target });
+      engine.forgetWarmStart?.();
+      avoided = true;
+      p = engine.iterate(SLICE_ITERATIONS, tolerance);
+    }
+    if (p.converged) break;
     if (p.iterations >= MAX_ITERATIONS || !Number.isFinite(p.errorEstimate))
       throw new SolverError(
         `the field did not converge (${p.iterations} iterations, estimated error ${p.errorEstimate})`,

@@ -1,8 +1,21 @@
 // Packs the session's curves into the protocol's flat CurveSet layout (protocol.ts): each curve's
 // parameter block is its kind's scalars from protocol.ts CURVE_PARAMS (by name, in table order,
 // the table's default for a curve without the field), then the kind's variable block.
-import { CURVE_PARAMS, CurveKind, type CurveSet } from '../solver/protocol';
-import type { ExtraConstraints, StyleCurve } from './session';
+import {
+  CURVE_PARAMS,
+  CurveKind,
+  type CurveSet,
+  DETAIL_GROUP_STRIDE,
+  type HairOptions,
+} from '../solver/protocol';
+import { packDetailGroup } from './detail';
+import type { SessionState, StyleCurve } from './session';
+
+/** Constraints stated directly (protocol.ts CurveSet.extraIndex / extraTarget). */
+export interface ExtraConstraints {
+  index: ArrayLike<number>;
+  target: ArrayLike<number>;
+}
 
 /** The scalar parameters of a curve in CURVE_PARAMS order. */
 export function curveScalars(c: StyleCurve): number[] {
@@ -87,4 +100,25 @@ export function contentKey(...arrays: ArrayBufferView[]): string {
     h1 = Math.imul(h1 ^ bytes.length, 0x01000193);
   }
   return `${(h1 >>> 0).toString(16)}-${(h2 >>> 0).toString(16)}`;
+}
+
+/** The solve options of a session (protocol.ts HairOptions) for `curves` (the session's curves,
+ *  perhaps with a stroke being drawn after them): group 0 is the session's detail, then one
+ *  group per curve with a detail of its own. */
+export function packHairOptions(
+  s: Pick<SessionState, 'avoidScalp' | 'detail'>,
+  curves: readonly StyleCurve[],
+): HairOptions {
+  const own = curves.filter((c) => c.detail !== undefined);
+  const groups = new Float64Array(DETAIL_GROUP_STRIDE * (1 + own.length));
+  packDetailGroup(s.detail, groups, 0);
+  const curveGroup = new Int32Array(curves.length);
+  let g = 0;
+  curves.forEach((c, i) => {
+    if (c.detail === undefined) return;
+    g++;
+    packDetailGroup(c.detail, groups, DETAIL_GROUP_STRIDE * g);
+    curveGroup[i] = g;
+  });
+  return { avoidScalp: !!s.avoidScalp, detail: { groups, curveGroup } };
 }

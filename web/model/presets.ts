@@ -3,9 +3,11 @@
 // strokes on the scalp (S4.5); a ponytail is a spine from the scalp with a cross-section and two
 // profile strokes beside it, from which the circles are computed as for drawn strokes (S4.6).
 // The paper's figures: fig6 (ten stream curves), fig7 (seven stream curves and a short parting),
-// fig8 (four stream curves and two ponytails), fig1 (eleven stream curves, four dividing curves
-// and one ponytail).
+// fig8 (two ponytails, a centre parting over the back and the stream curves that comb each half
+// to its ponytail), fig1 (eleven stream curves, four dividing curves and one ponytail); and
+// `curly`, the default style with curl, clumps and a little frizz (model/detail.ts).
 import type { Head } from '../head/head';
+import type { HairDetail } from './detail';
 import { ponytailCircles } from './ponytailGeometry';
 import { quantizeSession } from './quantize';
 import { resamplePolyline } from './resample';
@@ -33,7 +35,7 @@ function headPoint(ctx: PresetContext, thetaDeg: number, phiDeg: number): Vec3 |
   return ctx.head.scalpPoint(thetaDeg, phiDeg)?.point ?? null;
 }
 
-export const PRESET_NAMES = ['default', 'empty', 'fig6', 'fig7', 'fig8', 'fig1'] as const;
+export const PRESET_NAMES = ['default', 'empty', 'fig6', 'fig7', 'fig8', 'fig1', 'curly'] as const;
 export type PresetName = (typeof PRESET_NAMES)[number];
 
 export function isPresetName(s: string): s is PresetName {
@@ -227,16 +229,29 @@ const FIG7_SWEEPS: SweepSpec[] = [
   { theta: [12, 110], phi: [-160, -175], lift: 0.1, fall: 0.45 },
 ];
 
-// fig8: two ponytails (left and right, behind the ears) and four stream curves combing the hair
-// from a centre parting toward them.
+// fig8: two ponytails (left and right, behind the ears) and stream curves combing the hair from a
+// centre parting toward them. The figure's back has no bald area: the parting runs on over the
+// crown down to the nape (a dividing curve), and curves from beside it at the back of the crown
+// and the occiput comb each half sideways to its ponytail, so the two halves do not cancel.
 const FIG8_PONYTAILS: PonytailSpec[] = [
   { base: [74, 115], out: 0.3, fall: 1.6, gather: 0.2, width: 0.3 },
   { base: [74, -115], out: 0.3, fall: 1.6, gather: 0.2, width: 0.3 },
+];
+const FIG8_PARTING: [number, number][] = [
+  [12, 178],
+  [50, 180],
+  [90, 180],
+  [112, 180],
 ];
 const FIG8_SWEEPS: SweepSpec[] = [
   // from the forehead over the top, down to each ponytail
   { theta: [25, 68], phi: [6, 108], lift: 0.06, fall: 0 },
   { theta: [25, 68], phi: [-6, -108], lift: 0.06, fall: 0 },
+  // from beside the back parting (crown, occiput) across to each ponytail
+  { theta: [20, 68], phi: [165, 118], lift: 0.06, fall: 0 },
+  { theta: [20, 68], phi: [-165, -118], lift: 0.06, fall: 0 },
+  { theta: [55, 74], phi: [172, 122], lift: 0.06, fall: 0 },
+  { theta: [55, 74], phi: [-172, -122], lift: 0.06, fall: 0 },
   // from the nape up to each ponytail
   { theta: [112, 80], phi: [176, 124], lift: 0.06, fall: 0 },
   { theta: [112, 80], phi: [-176, -124], lift: 0.06, fall: 0 },
@@ -244,13 +259,14 @@ const FIG8_SWEEPS: SweepSpec[] = [
 
 // fig1: a high ponytail at the back of the crown, a centre parting from the forehead, two side
 // partings and a nape parting (four dividing curves), and eleven stream curves: the top and sides
-// combed toward the ponytail, loose locks in front of the ears and at the nape.
+// combed toward the ponytail, the back combed up from the nape into it, loose locks in front of
+// the ears. From behind, the ponytail hangs alone over the neck.
 const FIG1_PONYTAIL: PonytailSpec = {
   base: [55, 180],
-  out: 0.3,
+  out: 0.35,
   fall: 2.0,
-  gather: 0.13,
-  width: 0.3,
+  gather: 0.12,
+  width: 0.24,
 };
 const FIG1_PARTINGS: [number, number][][] = [
   [
@@ -267,8 +283,8 @@ const FIG1_PARTINGS: [number, number][][] = [
     [40, -85],
   ],
   [
-    [100, 150],
-    [100, 210],
+    [114, 140],
+    [114, 220],
   ],
 ];
 const FIG1_SWEEPS: SweepSpec[] = [
@@ -282,7 +298,10 @@ const FIG1_SWEEPS: SweepSpec[] = [
   { theta: [80, 100], phi: [-85, -95], lift: 0.1, fall: 0.9 },
   { theta: [60, 82], phi: [50, 66], lift: 0.1, fall: 0.7 },
   { theta: [60, 82], phi: [-50, -66], lift: 0.1, fall: 0.7 },
-  { theta: [104, 118], phi: [178, 179], lift: 0.06, fall: 0.5 },
+  // the back, combed up from the nape into the ponytail
+  { theta: [110, 64], phi: [150, 172], lift: 0.05, fall: 0 },
+  { theta: [110, 64], phi: [-150, -172], lift: 0.05, fall: 0 },
+  { theta: [112, 64], phi: [179, 179.5], lift: 0.05, fall: 0 },
 ];
 
 export function presetCurves(name: PresetName, ctx: PresetContext): StyleCurve[] {
@@ -297,6 +316,7 @@ export function presetCurves(name: PresetName, ctx: PresetContext): StyleCurve[]
   };
   switch (name) {
     case 'default':
+    case 'curly':
       sweeps(DEFAULT_SWEEPS);
       break;
     case 'fig6':
@@ -308,6 +328,7 @@ export function presetCurves(name: PresetName, ctx: PresetContext): StyleCurve[]
       break;
     case 'fig8':
       for (const p of FIG8_PONYTAILS) push(ponytailFrom(ctx, p, nextId()));
+      push(dividingFrom(ctx, FIG8_PARTING, nextId()));
       sweeps(FIG8_SWEEPS);
       break;
     case 'fig1':
@@ -319,6 +340,16 @@ export function presetCurves(name: PresetName, ctx: PresetContext): StyleCurve[]
   return curves;
 }
 
+/** The `curly` preset's detail: tight curls gathered into clumps, a little frizz, uneven ends. */
+export const CURLY_DETAIL: HairDetail = {
+  curl: { radius: 0.05, frequency: 3, start: 0.15, randomOffset: 1 },
+  clump: { factor: 0.5, shape: 0.3, tipSpread: 0.02, guideDistance: 0.12 },
+  frizz: { distance: 0.006, shape: 0.5 },
+  lengthJitter: 0.15,
+};
+
 export function applyPreset(s: SessionState, name: PresetName, ctx: PresetContext): SessionState {
-  return quantizeSession({ ...s, curves: presetCurves(name, ctx) });
+  const { detail: _, ...rest } = s;
+  const detail = name === 'curly' ? { detail: CURLY_DETAIL } : {};
+  return quantizeSession({ ...rest, ...detail, curves: presetCurves(name, ctx) });
 }

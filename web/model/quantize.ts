@@ -17,7 +17,7 @@
 // unchanged curve keeps its identity (the solver bridge compares curves by identity).
 import { CURVE_PARAMS, type CurveParamSpec } from '../solver/protocol';
 import type { PonytailCircle } from './ponytailGeometry';
-import type { ExtraConstraints, SessionState, StyleCurve, Viewpoint } from './session';
+import type { SessionState, StyleCurve, Viewpoint } from './session';
 import type { Vec3 } from './vec3';
 
 /** Integers per world unit for positions (1e-4 world units = 10 µm). */
@@ -118,24 +118,12 @@ export function quantizeCurve<C extends StyleCurve>(c: C): C {
   return Object.keys(patch).length === 0 ? c : ({ ...c, ...patch } as C);
 }
 
-/** Scalp-avoidance constraints on the grid: targets as directions, indices truncated to
- *  integers as the solver's Int32Array would (null stays null). */
-export function quantizeAvoid(a: ExtraConstraints | null): ExtraConstraints | null {
-  if (!a) return a;
-  const index = mapSame(a.index, (i) => Math.trunc(i) + 0);
-  const target = mapSame(a.target, (x) => quantize(x, DIRECTION_SCALE));
-  return index === a.index && target === a.target ? a : { ...a, index, target };
-}
-
 /** A session with every number on the grid and the hair colour in lowercase: exactly what its
- *  share link reopens (apart from `avoid`, which a link reopens as null when absent). The same
+ *  share link reopens. The same
  *  object when nothing changes; unchanged curves keep their identity. */
 export function quantizeSession(s: SessionState): SessionState {
   const curves = mapSame(s.curves, quantizeCurve);
-  const avoid = s.avoid === undefined ? undefined : quantizeAvoid(s.avoid);
   const hairColor = s.hairColor.toLowerCase();
-  if (curves === s.curves && avoid === s.avoid && hairColor === s.hairColor) return s;
-  const out: SessionState = { ...s, curves, hairColor };
-  if (s.avoid !== undefined) out.avoid = avoid;
-  return out;
+  if (curves === s.curves && hairColor === s.hairColor) return s;
+  return { ...s, curves, hairColor };
 }

@@ -5,6 +5,7 @@ import {
   type CurveParamValues,
   type GrowthParams,
 } from '../solver/protocol';
+import type { HairDetail } from './detail';
 import type { DividingSettings } from './dividingFrames';
 import type { GridPreset } from './grid';
 import type { PonytailCircle } from './ponytailGeometry';
@@ -25,6 +26,9 @@ export interface StreamCurve {
   viewpoint: Viewpoint;
   /** Supporting surface mode (S4.3); absent = 'ruled' (sessions made before the option). */
   surfaceMode?: SurfaceMode;
+  /** Detail for the strands this curve governs (nearest curve at the root), instead of the
+   *  session's. */
+  detail?: HairDetail;
 }
 
 /** A dividing curve (S4.5) drawn on the scalp. `normals[i]` is the scalp normal at points[i];
@@ -35,6 +39,7 @@ export interface DividingCurve extends DividingSettings {
   points: Vec3[];
   normals: Vec3[];
   viewpoint: Viewpoint;
+  detail?: HairDetail;
 }
 
 /** A ponytail (S4.6): `points` is the spine (edited like a stream curve); the cross-section and
@@ -49,27 +54,24 @@ export interface PonytailCurve {
   profiles: [Vec3[], Vec3[]];
   circles: PonytailCircle[];
   tightness: number; // centripetal magnitude (default 0.6)
+  detail?: HairDetail;
 }
 
 export type StyleCurve = StreamCurve | DividingCurve | PonytailCurve;
 export type CurveType = StyleCurve['type'];
 
-/** Explicit constraints from "Avoid scalp" (S4.7): grid index and target, as in
- *  protocol.ts CurveSet.extraIndex / extraTarget (target[3 * e + axis]). */
-export interface ExtraConstraints {
-  index: number[];
-  target: number[];
-}
-
 export interface SessionState {
-  version: 1;
+  version: 2;
   head: 'builtin';
   grid: GridPreset;
   curves: readonly StyleCurve[];
   growth: GrowthParams;
   hairColor: string; // CSS hex colour
-  /** Scalp-avoidance constraints, or absent/null when "Avoid scalp" was not run. */
-  avoid?: ExtraConstraints | null;
+  /** "Avoid scalp" (S4.7) is on: the solver derives the avoidance constraints from the curves'
+   *  field each time it solves them (absent = off). */
+  avoidScalp?: boolean;
+  /** Curl, clump, frizz and length jitter of every strand (absent = none). */
+  detail?: HairDetail;
 }
 
 /** The scalar parameters of a new curve of kind `k`: the defaults of protocol.ts CURVE_PARAMS. */
@@ -98,7 +100,7 @@ export function emptySession(
   grid: GridPreset,
   growth: GrowthParams = DEFAULT_GROWTH,
 ): SessionState {
-  return { version: 1, head: 'builtin', grid, curves: [], growth, hairColor: '#5a3825' };
+  return { version: 2, head: 'builtin', grid, curves: [], growth, hairColor: '#5a3825' };
 }
 
 export function addCurve(s: SessionState, c: StyleCurve): SessionState {
@@ -128,10 +130,6 @@ export function updateCurve(
     return n;
   });
   return changed ? { ...s, curves } : s;
-}
-
-export function setAvoid(s: SessionState, avoid: ExtraConstraints | null): SessionState {
-  return { ...s, avoid };
 }
 
 /** Curve ids are unique within a session: a counter past the largest id in use. */

@@ -28,15 +28,19 @@ import {
   BOX_MAX,
   BOX_MIN,
   type GridPreset,
-  gridForPreset,
-  gridPointCount,
   isGridPreset,
 } from './grid';
+import {
+  DETAIL_BLOCKS,
+  DETAIL_PARAMS,
+  type DetailParamSpec,
+  type HairDetail,
+  LENGTH_JITTER,
+} from './detail';
 import type { PonytailCircle } from './ponytailGeometry';
 import { POSITION_SCALE, toGridInt } from './quantize';
 import {
   DEFAULT_GROWTH,
-  type ExtraConstraints,
   type SessionState,
   type StyleCurve,
   type Viewpoint,
@@ -54,7 +58,7 @@ export const SESSION_LIMITS = {
   maxPoints: 5000,
   /** Points of all polylines, normals and circles of a session together. */
   maxSessionPoints: 100_000,
-  /** Scalp-avoidance constraints. */
+  /** Scalp-avoidance constraints of a version 1 session (read, then dropped by its migration). */
   maxAvoid: 200_000,
   /** |avoid target component|: the app writes 0.3-long vectors; curve targets are at most 1. */
   maxAvoidTarget: 10,
@@ -408,6 +412,25 @@ const CURVE_FIELDS = {
   ],
 } as const satisfies Record<CurveKindName, readonly string[]>;
 
+/** A detail object: blocks of DETAIL_PARAMS (each key required, within its range) and
+ *  lengthJitter; absent = none. */
+function detail(v: Plain | undefined, path: string): { detail?: HairDetail } {
+  if (v === undefined) return {};
+  const o = record(v, path, [...DETAIL_BLOCKS, 'lengthJitter']);
+  const out: HairDetail = {};
+  for (const b of DETAIL_BLOCKS) {
+    if (o[b] === undefined) continue;
+    const specs = DETAIL_PARAMS[b] as readonly DetailParamSpec[];
+    const q = record(o[b], `${path}.${b}`, specs.map((p) => p.key));
+    const block: Record<string, number> = {};
+    for (const p of specs) block[p.key] = num(q[p.key], `${path}.${b}.${p.key}`, p.min, p.max);
+    (out as Record<string, unknown>)[b] = block;
+  }
+  if (o.lengthJitter !== undefined)
+    out.lengthJitter = num(o.lengthJitter, `${path}.lengthJitter`, LENGTH_JITTER.min, LENGTH_JITTER.max);
+  return { detail: out };
+}
+
 function curve(v: Plain, path: string): StyleCurve {
   if (typeof v !== 'object' || v === null || Array.isArray(v)) fail(path, 'must be an object');
   const type = v.type;
@@ -433,6 +456,7 @@ function curve(v: Plain, path: string): StyleCurve {
         viewpoint: vp,
         ...(mode === undefined ? {} : { surfaceMode: mode }),
         ...scalars(o, 'stream', path),
+        ...detail(o.detail, `${path}.detail`),
       };
     }
     case 'dividing': {
@@ -444,7 +468,15 @@ function curve(v: Plain, path: string): StyleCurve {
         );
       const normals = n.map((x, i) => unitFast(x) ?? unit(x, `${path}.normals[${i}]`));
       const vp = viewpoint(o.viewpoint, `${path}.viewpoint`);
-      return { id, type, points, normals, viewpoint: vp, ...scalars(o, 'dividing', path) };
+      return {
+        id,
+        type,
+        points,
+        normals,
+        viewpoint: vp,
+        ...scalars(o, 'dividing', path),
+        ...detail(o.detail, `${path}.detail`),
+      };
     }
     case 'ponytail': {
       const extend = bool(o.extend, `${path}.extend`);
@@ -494,6 +526,7 @@ function curve(v: Plain, path: string): StyleCurve {
         profiles,
         circles,
         ...scalars(o, 'ponytail', path),
+        ...detail(o.detail, `${path}.detail`),
       };
     }
   }
@@ -543,38 +576,16 @@ function growth(v: Plain | undefined, path: string): GrowthParams {
   return g;
 }
 
-function avoid(v: Plain | undefined, path: string, grid: GridPreset): ExtraConstraints | null {
-  if (v === undefined || v === null) return null;
-  const a = record(v, path, ['index', 'target']);
-  const index = array(a.index, `${path}.index`, 'grid indices');
-  const target = array(a.target, `${path}.target`, 'numbers');
-  if (index.length > L.maxAvoid)
-    fail(`${path}.index`, `has more than ${L.maxAvoid} constraints (the cap)`);
-  if (target.length !== 3 * index.length)
-    fail(
-      `${path}.target`,
-      `must hold 3 numbers per index (${3 * index.length}), has ${target.length}`,
-    );
-  const points = gridPointCount(gridForPreset(grid));
-  const outIndex: number[] = new Array(index.length);
-  for (let i = 0; i < index.length; i++) {
-    const x = index[i];
-    outIndex[i] =
-      typeof x === 'number' && Number.isInteger(x) && x >= 0 && x < points
-        ? x
-        : int(x, `${path}.index[${i}]`, 0, points - 1);
-  }
-  const m = L.maxAvoidTarget;
-  const outTarget: number[] = new Array(target.length);
-  for (let i = 0; i < target.length; i++) {
-    const x = target[i];
-    outTarget[i] =
-      typeof x === 'number' && x >= -m && x <= m ? x : num(x, `${path}.target[${i}]`, -m, m);
-  }
-  return { index: outIndex, target: outTarget };
-}
-
-const SESSION_FIELDS = ['version', 'head', 'grid', 'curves', 'growth', 'hairColor', 'avoid'];
+const SESSION_FIELDS = [
+  'version',
+  'head',
+  'grid',
+  'curves',
+  'growth',
+  'hairColor',
+  'avoidScalp',
+  'detail',
+];
 /** Written beside the session by "Save" (camera) and the test hook (camera, selected); the
  *  reader leaves them out of the session (app/sessionIO.ts reads the saved camera). */
 const SIDE_FIELDS = ['camera', 'selected'];
@@ -601,6 +612,7 @@ function session(o: PlainRecord): SessionState {
   const hairColor = o.hairColor ?? DEFAULT_HAIR_COLOR;
   if (typeof hairColor !== 'string' || !/^#[0-9a-fA-F]{6}$/.test(hairColor))
     fail('session.hairColor', 'must be a colour like #5a3825');
+  const avoidScalp = o.avoidScalp === undefined ? false : bool(o.avoidScalp, 'session.avoidScalp');
   return {
     version: SESSION_VERSION,
     head: 'builtin',
@@ -608,7 +620,8 @@ function session(o: PlainRecord): SessionState {
     curves,
     growth: g,
     hairColor,
-    avoid: avoid(o.avoid, 'session.avoid', grid),
+    ...(avoidScalp ? { avoidScalp } : {}),
+    ...detail(o.detail, 'session.detail'),
   };
 }
 

@@ -26,11 +26,13 @@
 //     ponytail: crossSection, profiles[0], profiles[1]: polylines; circle count (varint);
 //               per circle, each a zigzag varint of the difference from the previous circle
 //               (the first from zero): spineIndex, centre x y z, axis x y z, radius
-//   varint    avoid: 0 for none, else entries + 1; then per entry the zigzag difference of
-//             the grid index from the previous one; then per entry the zigzag differences of
-//             the target's x y z from the previous entry's (direction grid)
+//   varint    avoid (session version 1): 0 for none, else entries + 1; then per entry the
+//             zigzag difference of the grid index from the previous one; then per entry the
+//             zigzag differences of the target's x y z from the previous entry's (direction
+//             grid). Written as 0 since version 2; a link with entries is a version 1 session.
 //   varint    length of a JSON tail, then the tail (UTF-8): fields the layout has no place for
-//             (none today), {"session": {…}, "growth": {…}, "curves": [[i, {…}], …]}
+//             (avoidScalp, detail, a curve's detail), {"session": {…}, "growth": {…},
+//             "curves": [[i, {…}], …]}
 //   u32       CRC-32 of everything before it, little-endian
 //
 // A polyline is a varint point count, the first point as 3 zigzag varints, the second as its
@@ -47,6 +49,7 @@ import { GRID_PRESETS, type GridPreset } from './grid';
 import { DIRECTION_SCALE as DIR, POSITION_SCALE as POS, paramScale, toGridInt } from './quantize';
 import { DEFAULT_GROWTH, type SessionState, type StyleCurve } from './session';
 import { type Parsed, parseSession } from './sessionFile';
+import { SESSION_VERSION } from './sessionMigrations';
 import type { Vec3 } from './vec3';
 
 /** Inflated size cap (bytes), enforced while inflating. */
@@ -258,7 +261,6 @@ export function packSession(s: SessionState): Uint8Array {
     curves?: [number, Record<string, unknown>][];
   } = {};
   const top = rest(s, KNOWN_TOP) ?? {};
-  if (s.version !== 1) top.version = s.version;
   if (s.head !== 'builtin') top.head = s.head;
   const grid = GRIDS.indexOf(s.grid);
   if (grid < 0) top.grid = s.grid;
@@ -347,25 +349,9 @@ export function packSession(s: SessionState): Uint8Array {
     }
   });
 
-  const avoid = s.avoid ?? null;
-  if (!avoid) w.varint(0);
-  else {
-    const n = avoid.index.length;
-    w.varint(n + 1);
-    let prev = 0;
-    for (const i of avoid.index) {
-      const k = Math.trunc(i);
-      w.zigzag(k - prev);
-      prev = k;
-    }
-    const p = [0, 0, 0];
-    for (let e = 0; e < n; e++)
-      for (let a = 0; a < 3; a++) {
-        const k = toGridInt(avoid.target[3 * e + a] ?? 0, DIR);
-        w.zigzag(k - p[a]);
-        p[a] = k;
-      }
-  }
+  // The slot of version 1's scalp-avoidance constraints: empty since version 2 (avoidScalp is
+  // a setting, carried in the JSON tail).
+  w.varint(0);
 
   if (Object.keys(tail).length) {
     const json = new TextEncoder().encode(JSON.stringify(tail));
@@ -565,15 +551,17 @@ export function unpackSession(body: Uint8Array): Record<string, unknown> {
       }
     avoid = { index, target };
   }
+  // Constraints in the avoid slot: a version 1 session (its migration turns them into the
+  // avoidScalp setting); none: the current version (whose extra fields are in the tail).
   const session: Record<string, unknown> = {
-    version: 1,
+    version: avoid ? 1 : SESSION_VERSION,
     head: 'builtin',
     grid: GRIDS[gridIndex],
     curves,
     growth,
     hairColor: `#${hex}`,
-    avoid,
   };
+  if (avoid) session.avoid = avoid;
   const tailLength = r.count(1);
   if (tailLength > 0) {
     let tail: { session?: unknown; growth?: unknown; curves?: unknown };

@@ -5,8 +5,7 @@
 // pure function from one version's plain JSON to the next one's (`v1-to-v2: …`). A session from a
 // version newer than this build knows is refused with a message saying so, never guessed at.
 //
-// Today every session is version 1 (the shape has not changed since the first release), so the
-// table is empty. To change the shape: bump SESSION_VERSION (and SessionState['version'] in
+// To change the shape: bump SESSION_VERSION (and SessionState['version'] in
 // session.ts), make the reader read the new shape, and add the step from the old version here,
 // with a test that an old session comes out as the new one.
 
@@ -17,7 +16,7 @@ export interface PlainRecord {
 }
 
 /** The session shape this build writes and reads. */
-export const SESSION_VERSION = 1 as const;
+export const SESSION_VERSION = 2 as const;
 
 /** One step: reads a session of version `from`, returns it as version `from + 1`. Pure: it must
  *  not modify its argument (the reader's copy may be shared with the caller's error path). */
@@ -29,7 +28,28 @@ export interface SessionMigration {
 }
 
 /** Oldest first; one step per version from the oldest readable one up to SESSION_VERSION. */
-export const SESSION_MIGRATIONS: readonly SessionMigration[] = [];
+export const SESSION_MIGRATIONS: readonly SessionMigration[] = [
+  {
+    name: 'v1-to-v2: stored scalp-avoidance constraints become the avoidScalp setting',
+    from: 1,
+    migrate(s) {
+      // Version 1 kept "Avoid scalp" as the constraints it made (grid indices and targets, made
+      // once from the curves of that moment). Version 2 keeps that it is on; the solver derives
+      // the constraints from the current curves whenever it solves them.
+      // An `avoid` that is not null or a record with an index array is left in place, so the
+      // reader refuses it by name.
+      const a = s.avoid;
+      const wellFormed =
+        a === null ||
+        (typeof a === 'object' && !Array.isArray(a) && Array.isArray(a.index));
+      const out: PlainRecord = Object.create(null);
+      for (const [k, v] of Object.entries(s)) if (k !== 'avoid' || !wellFormed) out[k] = v;
+      if (wellFormed && a !== null && (a.index as Plain[]).length > 0) out.avoidScalp = true;
+      out.version = 2;
+      return out;
+    },
+  },
+];
 
 export type Migrated =
   | { ok: true; value: PlainRecord; applied: string[] }

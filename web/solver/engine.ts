@@ -3,6 +3,7 @@
 import type {
   ConstraintArrays,
   CurveSet,
+  DetailArrays,
   FieldArrays,
   GridSpec,
   GrowthParams,
@@ -18,6 +19,8 @@ export interface SolverEngine {
   setGrid(grid: GridSpec, omega: number, solver: SolverName): void;
   /** Store the scalp triangles used for root sampling. */
   setScalp(mesh: ScalpMesh): void;
+  /** Detail applied by grow (curl, clump, frizz, length jitter); optional (test fakes). */
+  setDetail?(detail: DetailArrays): void;
   /** Derive constraints from the curves and hand them to the solver (diffed in C++). */
   setCurves(curves: CurveSet): void;
   /** Solve the field for the current constraints. */
@@ -45,6 +48,7 @@ export interface SolverEngine {
     magnitude?: number;
     wholeHead?: boolean;
     insideToo?: boolean;
+    minField?: number;
   }): {
     index: Int32Array;
     target: Float64Array;

@@ -134,6 +134,27 @@ export interface GrowthParams {
   maxStrands: number; // cap on the number of roots used (0 = no cap)
 }
 
+/** Hair detail for growth (web/model/detail.ts; solver-cpp/src/strand_detail.hpp): groups of
+ *  DETAIL_GROUP_STRIDE (11) numbers: curl radius, frequency, start, randomOffset; clump factor,
+ *  shape, tipSpread, guideDistance; frizz distance, shape; lengthJitter (radius, factor and
+ *  distance 0 = that block off). Group 0 is the session's; a strand uses the group of the curve
+ *  nearest its root. */
+export const DETAIL_GROUP_STRIDE = 11;
+
+export interface DetailArrays {
+  groups: Float64Array; // groups[11 * g + k]
+  curveGroup: Int32Array; // curveGroup[c] = group of curve c of the CurveSet (length = curves)
+}
+
+/** What a solve applies besides the curves and growth. */
+export interface HairOptions {
+  /** S4.7, recomputed with the hair: after the curves' field converges, every grid point near
+   *  the scalp whose field points inwards is turned along the surface (constraints of magnitude
+   *  min(0.3, |v|)), and the field is solved again with them. Full solves only. */
+  avoidScalp: boolean;
+  detail: DetailArrays;
+}
+
 /** Grown strands. Strand s owns points strandStart[s] .. strandStart[s + 1] - 1; the first is
  *  its root on the scalp. */
 export interface StrandArrays {
@@ -192,6 +213,7 @@ export type ToWorker =
       id: number; // increases per request; results carry it back
       curves: CurveSet;
       growth: GrowthParams;
+      options: HairOptions;
       wantField: boolean;
       /** 'preview': a few iterations and a light growth, for live feedback while drawing;
        *  'full': a quick first look, then iterate to convergence and grow the final hair. */
@@ -201,19 +223,7 @@ export type ToWorker =
        *  while the pen moves). */
       lightMaxStrands: number;
     }
-  | {
-      /** Scalp penetration avoidance (S4.7): solve `curves` to convergence, then derive the
-       *  avoidance constraints from that field. Answered by 'avoidance' with the same id. */
-      type: 'avoidScalp';
-      id: number;
-      curves: CurveSet;
-      band: number; // grid steps from the head surface
-      magnitude: number; // target length (paper: 0.3)
-      wholeHead: boolean; // measure against every head triangle, not only the scalp
-      /** Also grid points inside the head within the band: growth interpolates them just
-       *  outside the surface. */
-      insideToo: boolean;
-    };
+;
 
 export type FromWorker =
   | { type: 'ready'; gridPoints: number; roots: number }
@@ -227,13 +237,6 @@ export type FromWorker =
       stats: SolveStats;
       /** True for the converged field's hair; false for a preview or a first look. */
       final: boolean;
-    }
-  | {
-      /** Answer to 'avoidScalp': ready for CurveSet.extraIndex / extraTarget. */
-      type: 'avoidance';
-      id: number;
-      index: Int32Array; // index[e] = grid point p (sorted)
-      target: Float64Array; // target[3 * e + axis]
     }
   | { type: 'error'; id: number | null; message: string; kind: SolverErrorKind };
 
@@ -373,6 +376,7 @@ export const GROWTH_INPUT = structLayout([
 export const AVOID_INPUT = structLayout([
   ['band', 'f64'],
   ['magnitude', 'f64'],
+  ['minField', 'f64'],
   ['wholeHead', 'i32'], // 0 / 1
   ['insideToo', 'i32'], // 0 / 1
 ]);

@@ -12,13 +12,18 @@
 // The solved field is copied out of the worker only while `wantField` is set (the field display
 // is on); a cached result without it does not answer a request that wants it.
 import { contentKey } from '../model/curveSet';
-import { SolverError } from './engine';
-import type { CurveSet, FromWorker, GrowthParams, SolverErrorKind, ToWorker } from './protocol';
+import type {
+  CurveSet,
+  FromWorker,
+  GrowthParams,
+  HairOptions,
+  SolverErrorKind,
+  ToWorker,
+} from './protocol';
 
 export type InitMessage = Extract<ToWorker, { type: 'init' }>;
 export type SolveResult = Extract<FromWorker, { type: 'result' }>;
 export type SolveMode = 'preview' | 'full';
-export type AvoidanceResult = { index: Int32Array; target: Float64Array };
 
 export interface SolverClientEvents {
   /** The worker is (re)starting or working; `phase` says what it does. */
@@ -38,6 +43,7 @@ interface Request {
   mode: SolveMode;
   curves: CurveSet;
   growth: GrowthParams;
+  options: HairOptions;
   wantField: boolean;
   lightMaxStrands: number;
 }
@@ -63,16 +69,6 @@ export class SolverClient {
   private ready = false;
   /** Ask the worker for the solved field with each result (for the field display). */
   wantField = false;
-  /** Scalp-avoidance requests waiting for their answer, by id. */
-  private readonly avoidWaiting = new Map<
-    number,
-    {
-      msg: Extract<ToWorker, { type: 'avoidScalp' }>;
-      resolve: (r: AvoidanceResult) => void;
-      reject: (e: Error) => void;
-    }
-  >();
-
   constructor(
     private readonly makeWorker: () => Worker,
     private readonly init: InitMessage,
@@ -82,12 +78,7 @@ export class SolverClient {
   }
 
   get pending(): boolean {
-    return (
-      this.open !== null ||
-      this.previewWaiting !== null ||
-      this.avoidWaiting.size > 0 ||
-      !this.ready
-    );
+    return this.open !== null || this.previewWaiting !== null || !this.ready;
   }
 
   /** Solves `curves` and grows `growth`; previews and a full solve's first look are grown with
@@ -96,6 +87,7 @@ export class SolverClient {
   request(
     curves: CurveSet,
     growth: GrowthParams,
+    options: HairOptions,
     mode: SolveMode = 'full',
     lightMaxStrands = 0,
   ): void {
@@ -109,6 +101,9 @@ export class SolverClient {
       curves.extraIndex,
       curves.extraTarget,
       new Float64Array(Object.values(growth)),
+      new Uint8Array([options.avoidScalp ? 1 : 0]),
+      options.detail.groups,
+      options.detail.curveGroup,
     );
     const req: Request = {
       id: this.nextId++,
@@ -116,6 +111,7 @@ export class SolverClient {
       mode,
       curves,
       growth,
+      options,
       wantField: this.wantField,
       lightMaxStrands,
     };
@@ -139,25 +135,6 @@ export class SolverClient {
     }
     this.open = req;
     this.send(req);
-  }
-
-  /** Asks the worker for scalp-avoidance constraints (S4.7) on the converged field of `curves`
-   *  (band in grid steps, magnitude 0.3 as in the paper; the whole head is avoided, face and neck
-   *  included). Resent if the worker restarts; rejected on a solver error. */
-  avoidScalp(curves: CurveSet, band = 1.5, magnitude = 0.3): Promise<AvoidanceResult> {
-    const msg: Extract<ToWorker, { type: 'avoidScalp' }> = {
-      type: 'avoidScalp',
-      id: this.nextId++,
-      curves,
-      band,
-      magnitude,
-      wholeHead: true,
-      insideToo: true,
-    };
-    return new Promise((resolve, reject) => {
-      this.avoidWaiting.set(msg.id, { msg, resolve, reject });
-      if (this.worker && this.ready) this.worker.postMessage(msg);
-    });
   }
 
   private sendPreview(req: Request): void {
@@ -206,6 +183,7 @@ export class SolverClient {
       id: req.id,
       curves: req.curves,
       growth: req.growth,
+      options: req.options,
       wantField: req.wantField,
       mode: req.mode,
       lightMaxStrands: req.lightMaxStrands,
@@ -245,19 +223,12 @@ export class SolverClient {
     switch (msg.type) {
       case 'ready':
         this.ready = true;
-        for (const w of this.avoidWaiting.values()) this.worker?.postMessage(w.msg);
         if (this.open) {
           if (this.open.mode === 'preview') this.sendPreview(this.open);
           else this.send(this.open);
         }
         if (!this.pending) this.events.onIdle();
         return;
-      case 'avoidance': {
-        const w = this.avoidWaiting.get(msg.id);
-        this.avoidWaiting.delete(msg.id);
-        w?.resolve({ index: msg.index, target: msg.target });
-        return;
-      }
       case 'progress':
         if (this.open && msg.id === this.open.id)
           this.events.onBusy(msg.phase === 'grow' ? 'growing' : 'solving', msg.fraction);
@@ -289,15 +260,7 @@ export class SolverClient {
           this.events.onError(msg.message, false, msg.kind);
           return;
         }
-        if (msg.id !== null) {
-          const w = this.avoidWaiting.get(msg.id);
-          if (w) {
-            this.avoidWaiting.delete(msg.id);
-            w.reject(new SolverError(msg.message, msg.kind));
-            return;
-          }
-          this.previewAnswered(msg.id);
-        }
+        if (msg.id !== null) this.previewAnswered(msg.id);
         if (this.open && msg.id === this.open.id) this.open = null;
         this.events.onError(msg.message, false, msg.kind);
         if (!this.pending) this.events.onIdle();

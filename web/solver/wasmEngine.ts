@@ -12,6 +12,8 @@ import {
   type ConstraintArrays,
   CURVE_SET_HEADER,
   type CurveSet,
+  DETAIL_GROUP_STRIDE,
+  type DetailArrays,
   type FieldArrays,
   GRID_INPUT,
   GROWTH_INPUT,
@@ -312,6 +314,24 @@ class WasmEngine implements SolverEngine {
     });
   }
 
+  /** Detail groups and each curve's group (protocol.ts DetailArrays), used by grow. */
+  setDetail(d: DetailArrays): void {
+    const h = this.h();
+    const m = this.mod;
+    if (d.groups.length % DETAIL_GROUP_STRIDE)
+      throw new SolverError(
+        `detail: groups must hold ${DETAIL_GROUP_STRIDE} numbers per group`,
+        'invalid_input',
+      );
+    const nGroups = d.groups.length / DETAIL_GROUP_STRIDE;
+    withInputs(m, [d.groups, d.curveGroup], ([groups, curveGroup]) =>
+      check(
+        m,
+        m._hs_engine_set_detail(h, groups, nGroups, curveGroup, d.curveGroup.length),
+      ),
+    );
+  }
+
   setCurves(curves: CurveSet): void {
     const h = this.h();
     const m = this.mod;
@@ -381,6 +401,7 @@ class WasmEngine implements SolverEngine {
         magnitude: opts.magnitude ?? 0.3,
         wholeHead: opts.wholeHead ? 1 : 0,
         insideToo: opts.insideToo ? 1 : 0,
+        minField: opts.minField ?? 0,
       },
       (p) => m._hs_engine_scalp_avoidance(h, p),
     );
@@ -481,6 +502,7 @@ export interface ScalpAvoidanceOptions {
   magnitude?: number; // target length (default 0.3)
   wholeHead?: boolean; // measure against every head triangle, not only the scalp (default false)
   insideToo?: boolean; // also grid points inside the head within the band (default false)
+  minField?: number; // no constraint where the field is shorter than this (default 0)
 }
 
 /** index[e] = grid point, target[3 * e + axis]: ready for CurveSet.extraIndex / extraTarget. */

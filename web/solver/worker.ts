@@ -11,8 +11,6 @@ const scope = self as unknown as {
 
 const post = (msg: FromWorker): void => {
   if (msg.type === 'result') scope.postMessage(msg, resultTransferables(msg));
-  else if (msg.type === 'avoidance')
-    scope.postMessage(msg, [msg.index.buffer as ArrayBuffer, msg.target.buffer as ArrayBuffer]);
   else scope.postMessage(msg);
 };
 

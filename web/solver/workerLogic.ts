@@ -5,7 +5,9 @@
 //   preview job: a few iterations, light growth, one non-final result;
 //   full job:    a first look after a few iterations (non-final, light growth), then iterate in slices,
 //                yielding to the event loop between slices so a newer request can take over,
-//                and grow the final hair when the field has converged.
+//                and grow the final hair when the field has converged. With "Avoid scalp" on, the
+//                converged field gives the scalp-avoidance constraints (S4.7) and the field is
+//                solved again, from zero, with them (growSession.ts does the same).
 import { type IterateProgress, type SolverEngine, SolverError } from './engine';
 import {
   type ConstraintArrays,
@@ -18,8 +20,23 @@ import {
 
 export type Post = (msg: FromWorker) => void;
 type SolveMsg = Extract<ToWorker, { type: 'solve' }>;
-type AvoidMsg = Extract<ToWorker, { type: 'avoidScalp' }>;
-type Job = SolveMsg | AvoidMsg;
+type Job = SolveMsg;
+
+/** Scalp avoidance as the app applies it (S4.7): grid points within 1.5 grid steps of the scalp
+ *  (inside it too: growth interpolates them just outside), turned along the surface where they
+ *  point inwards; the target keeps the field's length up to 0.3 (never longer: avoidance turns
+ *  hair, it does not make hair where the curves asked for none), and grid points where the
+ *  field is weaker than the growth threshold get none. Only the scalp is measured against,
+ *  so no hair is pulled down over the face. */
+export function avoidanceOptions(growth: GrowthParams) {
+  return {
+    band: 1.5,
+    magnitude: 0.3,
+    wholeHead: false,
+    insideToo: true,
+    minField: growth.minMagnitude,
+  };
+}
 
 export interface SchedulerOptions {
   tolerance: number; // converged when the estimated relative field error is below this
@@ -55,9 +72,6 @@ export function lightGrowth(job: SolveMsg): GrowthParams {
 export class WorkerLogic {
   private initialised = false;
   private latest: SolveMsg | null = null;
-  /** Avoidance requests run before any solve and are never superseded (their answer is an
-   *  edit the user asked for). */
-  private avoidQueue: AvoidMsg[] = [];
   private running = false;
 
   constructor(
@@ -94,8 +108,7 @@ export class WorkerLogic {
       });
       return Promise.resolve();
     }
-    if (msg.type === 'avoidScalp') this.avoidQueue.push(msg);
-    else this.latest = msg;
+    this.latest = msg;
     return this.running ? Promise.resolve() : this.run();
   }
 
@@ -104,12 +117,11 @@ export class WorkerLogic {
     try {
       // Let messages already waiting arrive first: of a burst, only the newest is solved.
       await this.opts.yieldNow();
-      while (this.latest || this.avoidQueue.length) {
-        const job: Job = this.avoidQueue.shift() ?? (this.latest as SolveMsg);
-        if (job === this.latest) this.latest = null;
+      while (this.latest) {
+        const job: Job = this.latest;
+        this.latest = null;
         try {
-          if (job.type === 'avoidScalp') await this.runAvoid(job);
-          else await this.runJob(job);
+          await this.runJob(job);
         } catch (e) {
           this.post({ type: 'error', id: job.id, message: errorMessage(e), kind: errorKind(e) });
         }
@@ -123,30 +135,11 @@ export class WorkerLogic {
     return this.latest !== null;
   }
 
-  private async runAvoid(job: AvoidMsg): Promise<void> {
-    const o = this.opts;
-    if (!this.engine.scalpAvoidance)
-      throw new SolverError('this solver has no scalp avoidance', 'not_ready');
-    this.post({ type: 'progress', id: job.id, phase: 'constraints', fraction: 0 });
-    this.engine.setCurves(job.curves);
-    let p = this.engine.iterate(o.firstLookIterations, o.tolerance);
-    while (!p.converged) {
-      await o.yieldNow();
-      p = this.engine.iterate(o.sliceIterations, o.tolerance);
-    }
-    const r = this.engine.scalpAvoidance({
-      band: job.band,
-      magnitude: job.magnitude,
-      wholeHead: job.wholeHead,
-      insideToo: job.insideToo,
-    });
-    this.post({ type: 'avoidance', id: job.id, index: r.index, target: r.target });
-  }
-
   private async runJob(job: SolveMsg): Promise<void> {
     const o = this.opts;
     const t0 = o.now();
     this.post({ type: 'progress', id: job.id, phase: 'constraints', fraction: 0 });
+    this.engine.setDetail?.(job.options.detail);
     this.engine.setCurves(job.curves);
     if (job.mode === 'preview') {
       const p = this.engine.iterate(o.previewIterations, o.tolerance);
@@ -184,6 +177,18 @@ export class WorkerLogic {
       }
       await o.yieldNow();
       if (this.superseded()) return;
+    }
+    if (job.options.avoidScalp && this.engine.scalpAvoidance) {
+      const r = this.engine.scalpAvoidance(avoidanceOptions(job.growth));
+      this.engine.setCurves({ ...job.curves, extraIndex: r.index, extraTarget: r.target });
+      this.engine.forgetWarmStart?.();
+      p = this.engine.iterate(o.sliceIterations, o.tolerance);
+      while (!p.converged) {
+        await o.yieldNow();
+        if (this.superseded()) return;
+        p = this.engine.iterate(o.sliceIterations, o.tolerance);
+        this.post({ type: 'progress', id: job.id, phase: 'solve', fraction: 0.95 });
+      }
     }
     this.emit(job, job.growth, p, true, t0);
   }

@@ -520,6 +520,22 @@ export class Viewer {
     );
   }
 
+  /** Benchmark probe: draws the current view once with every strand and returns its time in
+   *  ms, GPU work included (a one-pixel read before and after waits for the GPU). */
+  measureFrame(): number {
+    const { all } = this.hairCounts();
+    const gl = this.renderer.getContext();
+    const px = new Uint8Array(4);
+    gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, px);
+    const t0 = performance.now();
+    if (this.hair && all > 0) this.hair.geometry.setDrawRange(0, all);
+    this.renderer.render(this.scene, this.camera);
+    gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, px);
+    const ms = performance.now() - t0;
+    this.requestRender();
+    return ms;
+  }
+
   eye(): Vec3 {
     const p = this.camera.position;
     return [p.x, p.y, p.z];
