@@ -132,8 +132,8 @@ function checkReadsBack(value: SessionState, where: string): void {
 // ---- the fixtures the arbitraries start from -------------------------------------------------
 
 export interface FuzzContext {
-  /** Preset sessions as the app builds them (plus one with scalp-avoidance constraints and
-   *  one on the 100k grid), as plain JSON. */
+  /** Preset sessions as the app builds them (plus one on the 100k grid with avoid scalp on, a
+   *  session-wide detail and a curve's own detail), as plain JSON. */
   sessions: { name: string; json: unknown; places: Places }[];
   /** Their share links. */
   links: string[];
@@ -163,11 +163,20 @@ export async function makeContext(): Promise<FuzzContext> {
   }));
   const withAvoid = presetSession('fig7', head, '100k', 5000);
   built.push({
-    name: 'fig7+avoid@100k',
+    name: 'fig7+avoidScalp+detail@100k',
     session: {
       ...withAvoid,
       hairColor: '#C0FFEE',
-      avoid: { index: [12, 40, 41, 977], target: [0, 0.25, 0, 0.1, 0.2, -0.1, 0, 0, 0.3, 1, 2, 3] },
+      avoidScalp: true,
+      detail: {
+        curl: { radius: 0.05, frequency: 3, start: 0.15, randomOffset: 1 },
+        clump: { factor: 0.5, shape: -0.3, tipSpread: 0.02, guideDistance: 0.12 },
+        frizz: { distance: 0.006, shape: 0.5 },
+        lengthJitter: 0.15,
+      },
+      curves: withAvoid.curves.map((c, i) =>
+        i === 1 ? { ...c, detail: { frizz: { distance: 0.01, shape: -1 } } } : c,
+      ),
     },
   });
   const sessions = built.map(({ name, session }) => {
