@@ -86,7 +86,12 @@ function trickySession(): SessionState {
         viewpoint: { position: [0, 0, 6], target: [0, 0, 0] },
       },
     ],
-    avoid: { index: [3, 7], target: [0, 1, 0, 0.5, 0.5, 0] },
+    avoidScalp: true,
+    detail: {
+      curl: { radius: 0.05, frequency: 3, start: 0.15, randomOffset: 1 },
+      clump: { factor: 0.5, shape: -0.3, tipSpread: 0.02, guideDistance: 0.12 },
+      lengthJitter: 0.15,
+    },
   };
 }
 
