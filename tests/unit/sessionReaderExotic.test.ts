@@ -186,7 +186,7 @@ describe('cycles, odd values and odd objects', () => {
         'session.growth.seed: must be a plain object',
       ],
       ['date', (j) => (j.growth = new Date()), 'session.growth: must be a plain object'],
-      ['map', (j) => (j.avoid = new Map()), 'session.avoid: must be a plain object'],
+      ['map', (j) => (j.detail = new Map()), 'session.detail: must be a plain object'],
       [
         'typed',
         (j) => (j.curves[S].points[0] = new Float64Array(3)),
