@@ -5,7 +5,9 @@ import { Head } from '../../web/head/head';
 import { headSdf } from '../../web/head/headSdf';
 import { packCurves } from '../../web/model/curveSet';
 import { gridForPreset } from '../../web/model/grid';
-import { type PresetName, presetCurves } from '../../web/model/presets';
+import { applyPreset, type PresetName, presetCurves } from '../../web/model/presets';
+import { emptySession } from '../../web/model/session';
+import { parseSession } from '../../web/model/sessionFile';
 import { distance, type Vec3 } from '../../web/model/vec3';
 
 const head = Head.builtin();
@@ -19,8 +21,10 @@ const ctx = {
 const EXPECTED: Record<string, { stream: number; dividing: number; ponytail: number }> = {
   fig6: { stream: 10, dividing: 0, ponytail: 0 },
   fig7: { stream: 7, dividing: 1, ponytail: 0 },
-  fig8: { stream: 4, dividing: 0, ponytail: 2 },
-  fig1: { stream: 11, dividing: 4, ponytail: 1 },
+  // two ponytails, the centre parting over the back, curves combing each half to its ponytail
+  fig8: { stream: 8, dividing: 1, ponytail: 2 },
+  // the back combed up from the nape into the ponytail (three curves where one lock was)
+  fig1: { stream: 13, dividing: 4, ponytail: 1 },
 };
 
 describe('presets', () => {
@@ -56,4 +60,19 @@ describe('presets', () => {
       expect(set.params.every(Number.isFinite)).toBe(true);
     });
   }
+
+  it('curly: the default curves with curl, clumps, frizz and length jitter; other presets drop a detail', () => {
+    const curly = applyPreset(emptySession('25k'), 'curly', ctx);
+    expect(curly.curves).toEqual(applyPreset(emptySession('25k'), 'default', ctx).curves);
+    expect(curly.detail).toEqual({
+      curl: { radius: 0.05, frequency: 3, start: 0.15, randomOffset: 1 },
+      clump: { factor: 0.5, shape: 0.3, tipSpread: 0.02, guideDistance: 0.12 },
+      frizz: { distance: 0.006, shape: 0.5 },
+      lengthJitter: 0.15,
+    });
+    const read = parseSession(JSON.parse(JSON.stringify(curly)));
+    expect(read.ok && read.value).toEqual(curly);
+    const fig6 = applyPreset(curly, 'fig6', ctx);
+    expect(Object.keys(fig6)).not.toContain('detail');
+  });
 });
