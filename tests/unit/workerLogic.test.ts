@@ -3,10 +3,10 @@
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { describe, expect, it } from 'vitest';
-import { packCurves } from '../../web/model/curveSet';
+import { packCurves, packHairOptions } from '../../web/model/curveSet';
 import { DEFAULT_GROWTH } from '../../web/model/session';
 import type { IterateProgress, SolverEngine } from '../../web/solver/engine';
-import type { FromWorker, ToWorker } from '../../web/solver/protocol';
+import type { FromWorker, HairOptions, ToWorker } from '../../web/solver/protocol';
 import { loadSolverEngine } from '../../web/solver/wasmEngine';
 import { DEFAULT_SCHEDULER, WorkerLogic } from '../../web/solver/workerLogic';
 
@@ -21,9 +21,15 @@ function scriptedEngine(log: string[], colours = new Uint8Array([0, 1, 3])): Sol
   return {
     setGrid: () => log.push('grid'),
     setScalp: () => log.push('scalp'),
+    setDetail: (d) => log.push(`detail:${d.groups.length}:${d.groups[10]}`),
     setCurves: (c) => {
       it = 0;
-      log.push(`curves:${c.curveStart.length - 1}`);
+      log.push(`curves:${c.curveStart.length - 1}:extra${c.extraIndex.length}`);
+    },
+    // a direct solver: nothing to forget (the scheduler then goes on without a restart)
+    forgetWarmStart: () => {
+      log.push('forget');
+      return false;
     },
     solve: () => {},
     iterate: (k, tol) => {
@@ -50,7 +56,7 @@ function scriptedEngine(log: string[], colours = new Uint8Array([0, 1, 3])): Sol
     }),
     heapBytes: () => 1 << 20,
     scalpAvoidance: (o) => {
-      log.push(`avoid:${it}:${o.band}:${o.magnitude}:${o.wholeHead}`);
+      log.push(`avoid:${it}:${o.band}:${o.magnitude}:${o.wholeHead}:${o.insideToo}:${o.minField}`);
       return { index: new Int32Array([4]), target: new Float64Array([0, 0.3, 0]) };
     },
     dispose: () => {},
@@ -75,11 +81,19 @@ type SolveMsg = Extract<ToWorker, { type: 'solve' }>;
 /** The light strand cap the tests' app asks for (previews, first looks). */
 const LIGHT = 1234;
 
-const solve = (id: number, mode: 'preview' | 'full', lightMaxStrands = LIGHT): ToWorker => ({
+const NO_OPTIONS: HairOptions = packHairOptions({}, []);
+
+const solve = (
+  id: number,
+  mode: 'preview' | 'full',
+  lightMaxStrands = LIGHT,
+  options = NO_OPTIONS,
+): ToWorker => ({
   type: 'solve',
   id,
   curves: packCurves([]),
   growth: { ...DEFAULT_GROWTH, maxStrands: 0 },
+  options,
   wantField: false,
   mode,
   lightMaxStrands,
@@ -211,35 +225,92 @@ describe('WorkerLogic', () => {
     expect(h.log.filter((l) => l.startsWith('grow'))).toEqual(['grow:77', 'grow:0', 'grow:0']);
   });
 
-  it('answers scalp avoidance on the converged field, ahead of a waiting solve', async () => {
+  it('with avoid scalp on, a full solve derives the avoidance from the converged field and solves again with it', async () => {
     const h = harness();
     await h.logic.handle(init);
-    const done = h.logic.handle({
-      type: 'avoidScalp',
-      id: 7,
-      curves: packCurves([]),
-      band: 1.5,
-      magnitude: 0.3,
-      wholeHead: true,
-      insideToo: true,
-    });
-    await h.logic.handle(solve(8, 'full'));
+    const msg = solve(1, 'full', LIGHT, packHairOptions({ avoidScalp: true }, [])) as SolveMsg;
+    const done = h.logic.handle({ ...msg, growth: { ...msg.growth, minMagnitude: 0.07 } });
     while (h.pendingYields() > 0) await h.release();
     await done;
-    // converged (error 1e-6 after 6 iterations) before the constraints are derived
-    expect(h.log).toContain('avoid:6:1.5:0.3:true');
-    const answer = h.posted.find((m) => m.type === 'avoidance');
-    expect(answer).toEqual({
-      type: 'avoidance',
-      id: 7,
-      index: new Int32Array([4]),
-      target: new Float64Array([0, 0.3, 0]),
-    });
-    // then the solve that was waiting
-    expect(h.results().map((r) => [r.id, r.final])).toEqual([
-      [8, false],
-      [8, true],
+    // converged (error 1e-6 after 6 iterations), then the constraints: the scalp only (not the
+    // whole head), band 1.5 steps, magnitude 0.3, inside too, none where |v| < minMagnitude
+    const i = h.log.indexOf('avoid:6:1.5:0.3:false:true:0.07');
+    expect(i).toBeGreaterThan(0);
+    // the curves again with the derived constraints as extras, from zero, to convergence
+    expect(h.log.slice(i + 1)).toEqual([
+      'curves:0:extra1',
+      'forget',
+      'iterate:2',
+      'iterate:4',
+      'iterate:6',
+      'grow:0',
     ]);
+    expect(h.log.filter((l) => l.startsWith('avoid'))).toHaveLength(1);
+    // one first look (before avoidance) and one final hair (after it)
+    expect(h.results().map((r) => [r.id, r.final])).toEqual([
+      [1, false],
+      [1, true],
+    ]);
+    expect(h.results()[1].stats.errorEstimate).toBeLessThanOrEqual(1e-6);
+  });
+
+  it('with avoid scalp off, or in a preview, derives no avoidance', async () => {
+    const h = harness();
+    await h.logic.handle(init);
+    let done = h.logic.handle(solve(1, 'full'));
+    while (h.pendingYields() > 0) await h.release();
+    await done;
+    done = h.logic.handle(solve(2, 'preview', LIGHT, packHairOptions({ avoidScalp: true }, [])));
+    while (h.pendingYields() > 0) await h.release();
+    await done;
+    expect(h.log.filter((l) => l.startsWith('avoid'))).toEqual([]);
+    expect(h.log.filter((l) => l.startsWith('curves'))).toEqual([
+      'curves:0:extra0',
+      'curves:0:extra0',
+    ]);
+    expect(h.results().map((r) => [r.id, r.final])).toEqual([
+      [1, false],
+      [1, true],
+      [2, false],
+    ]);
+  });
+
+  it('a newer request supersedes a solve while it solves again with the avoidance', async () => {
+    const h = harness();
+    await h.logic.handle(init);
+    const first = h.logic.handle(
+      solve(1, 'full', LIGHT, packHairOptions({ avoidScalp: true }, [])),
+    );
+    // run until it solves again with the avoidance, and is waiting between slices
+    while (!h.log.includes('curves:0:extra1')) await h.release();
+    expect(h.log.at(-1)).toBe('iterate:2');
+    await h.logic.handle(solve(2, 'full'));
+    while (h.pendingYields() > 0) await h.release();
+    await first;
+    expect(
+      h
+        .results()
+        .filter((r) => r.id === 1)
+        .map((r) => r.final),
+    ).toEqual([false]);
+    expect(
+      h
+        .results()
+        .filter((r) => r.id === 2)
+        .map((r) => r.final),
+    ).toEqual([false, true]);
+  });
+
+  it("hands each request's detail to the engine before its curves", async () => {
+    const h = harness();
+    await h.logic.handle(init);
+    const options = packHairOptions({ detail: { lengthJitter: 0.25 } }, []);
+    const done = h.logic.handle(solve(1, 'preview', LIGHT, options));
+    await h.release();
+    await done;
+    const d = h.log.indexOf('detail:11:0.25'); // one group of 11, lengthJitter 0.25
+    expect(d).toBeGreaterThanOrEqual(0);
+    expect(h.log[d + 1]).toBe('curves:0:extra0');
   });
 });
 
