@@ -1,6 +1,7 @@
 #include "strand_detail.hpp"
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -125,23 +126,25 @@ void cutAt(std::vector<V3>& p, std::vector<double>& s, double len) {
 // mean of the adjacent segment directions), N_0 = the part of +y normal to T_0 (+x if T_0 is along
 // y), B = T x N.
 void frames(const std::vector<V3>& p, std::vector<V3>& T, std::vector<V3>& N, std::vector<V3>& B) {
-  const size_t n = p.size();
+  const size_t n = p.size();  // >= 2
   T.resize(n);
   N.resize(n);
   B.resize(n);
   // Unit segment directions (a zero segment repeats the previous direction), in B for now.
-  V3 prev = V3::Zero();
+  V3 prev(0, 0, 1);
   for (size_t i = 0; i + 1 < n; ++i) {
     const V3 d = p[i + 1] - p[i];
     const double l2 = d.squaredNorm();
-    B[i] = l2 > 0 ? V3(d / std::sqrt(l2)) : prev;
+    B[i] = l2 > 0 ? V3(d * (1 / std::sqrt(l2))) : prev;
     prev = B[i];
   }
-  for (size_t i = 0; i < n; ++i) {
-    const V3 t = i == 0 ? B[0] : i + 1 == n ? B[n - 2] : V3(B[i - 1] + B[i]);
+  T[0] = B[0];
+  for (size_t i = 1; i + 1 < n; ++i) {
+    const V3 t = B[i - 1] + B[i];
     const double l2 = t.squaredNorm();
-    T[i] = l2 > 1e-12 ? V3(t / std::sqrt(l2)) : i > 0 ? T[i - 1] : V3(0, 0, 1);
+    T[i] = l2 > 1e-12 ? V3(t * (1 / std::sqrt(l2))) : B[i];
   }
+  T[n - 1] = B[n - 2];
   auto normalTo = [](const V3& t) {
     V3 r = V3(0, 1, 0) - t.y() * t;
     if (r.squaredNorm() < 1e-12) r = V3(1, 0, 0) - t.x() * t;
@@ -149,22 +152,17 @@ void frames(const std::vector<V3>& p, std::vector<V3>& T, std::vector<V3>& N, st
   };
   N[0] = normalTo(T[0]);
   for (size_t i = 0; i + 1 < n; ++i) {
-    // Reflect (N, T) in the plane bisecting the segment, then in the one taking T onto T_{i+1}.
-    const V3 v1 = p[i + 1] - p[i];
-    const double c1 = v1.squaredNorm();
-    V3 rL = N[i], tL = T[i];
-    if (c1 > 1e-30) {
-      rL -= (2 / c1) * v1.dot(N[i]) * v1;
-      tL -= (2 / c1) * v1.dot(T[i]) * v1;
-    }
+    // Reflect (N, T) in the plane normal to the segment, then in the one taking T onto T_{i+1}.
+    const V3& d = B[i];
+    const V3 rL = N[i] - 2 * d.dot(N[i]) * d, tL = T[i] - 2 * d.dot(T[i]) * d;
     const V3 v2 = T[i + 1] - tL;
     const double c2 = v2.squaredNorm();
-    if (c2 > 1e-30) rL -= (2 / c2) * v2.dot(rL) * v2;
-    // Reflections keep length and angles; only rounding (and a fallback tangent) is corrected.
-    rL -= rL.dot(T[i + 1]) * T[i + 1];
-    const double l2 = rL.squaredNorm();
-    N[i + 1] = std::abs(l2 - 1) < 1e-6 ? rL
-               : l2 > 1e-12            ? V3(rL / std::sqrt(l2))
+    V3 r = c2 > 1e-30 ? V3(rL - (2 / c2) * v2.dot(rL) * v2) : rL;
+    // Reflections keep lengths and angles; only rounding (or a repeated direction) is corrected.
+    r -= r.dot(T[i + 1]) * T[i + 1];
+    const double l2 = r.squaredNorm();
+    N[i + 1] = std::abs(l2 - 1) < 1e-9 ? r
+               : l2 > 1e-12            ? V3(r / std::sqrt(l2))
                                        : normalTo(T[i + 1]);
   }
   for (size_t i = 0; i < n; ++i) B[i] = T[i].cross(N[i]);
