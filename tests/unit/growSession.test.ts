@@ -7,8 +7,9 @@ import { beforeAll, describe, expect, it } from 'vitest';
 import { presetSession } from '../../web/cli/presetSession';
 import { growSessionHair } from '../../web/export/growSession';
 import { Head } from '../../web/head/head';
-import { packCurves } from '../../web/model/curveSet';
+import { packCurves, packHairOptions } from '../../web/model/curveSet';
 import { gridForPreset } from '../../web/model/grid';
+import type { SessionState } from '../../web/model/session';
 import type { FromWorker, StrandArrays } from '../../web/solver/protocol';
 import { loadSolverEngine } from '../../web/solver/wasmEngine';
 import { DEFAULT_SCHEDULER, WorkerLogic } from '../../web/solver/workerLogic';
@@ -26,11 +27,21 @@ const session = presetSession('default', head, '25k', 0);
 const bytes = (a: ArrayBufferView) => Buffer.from(a.buffer, a.byteOffset, a.byteLength);
 const strandCount = (s: StrandArrays) => s.strandStart.length - 1;
 
-async function grow(solver: 'fast' | 'exact', maxStrands?: number) {
+/** Avoid scalp on, the curly preset's session-wide detail, and a curve with its own. */
+const curly = presetSession('curly', head, '25k', 0);
+const styled: SessionState = {
+  ...curly,
+  avoidScalp: true,
+  curves: curly.curves.map((c, i) =>
+    i === 2 ? { ...c, detail: { frizz: { distance: 0.02, shape: 0 }, lengthJitter: 0.4 } } : c,
+  ),
+};
+
+async function grow(solver: 'fast' | 'exact', maxStrands?: number, s: SessionState = session) {
   const engine = await loadSolverEngine({ wasmBinary });
   try {
     const phases: string[] = [];
-    const hair = growSessionHair(engine, session, head.scalpMesh(), {
+    const hair = growSessionHair(engine, s, head.scalpMesh(), {
       grid,
       solver,
       maxStrands,
@@ -67,7 +78,8 @@ describe('growSessionHair', () => {
     expect(strandCount(all.hair.strands)).toBeGreaterThan(10_000);
   });
 
-  it("equals the converged hair of the app's worker for the same session", async () => {
+  /** The final hair the app's worker shows for `s` (2,000 strands). */
+  async function workerHair(s: SessionState): Promise<StrandArrays> {
     const engine = await loadSolverEngine({ wasmBinary });
     const results: FromWorker[] = [];
     const logic = new WorkerLogic(engine, (m) => results.push(m), {
@@ -84,8 +96,9 @@ describe('growSessionHair', () => {
     await logic.handle({
       type: 'solve',
       id: 1,
-      curves: packCurves(session.curves, session.avoid ?? null),
-      growth: { ...session.growth, maxStrands: 2000 },
+      curves: packCurves(s.curves),
+      growth: { ...s.growth, maxStrands: 2000 },
+      options: packHairOptions(s, s.curves),
       wantField: false,
       mode: 'full',
       lightMaxStrands: 500,
@@ -93,11 +106,53 @@ describe('growSessionHair', () => {
     engine.dispose();
     const final = results.find((m) => m.type === 'result' && m.final);
     if (final?.type !== 'result') throw new Error('the worker sent no final result');
-    const mine = await grow('fast', 2000);
-    expect(bytes(mine.hair.strands.points).equals(bytes(final.strands.points))).toBe(true);
-    expect(bytes(mine.hair.strands.strandStart).equals(bytes(final.strands.strandStart))).toBe(
-      true,
-    );
+    return final.strands;
+  }
+
+  for (const [label, s] of [
+    ['the default session', session],
+    ['avoid scalp on, detail of the session and of a curve', styled],
+  ] as const)
+    it(`equals the converged hair of the app's worker for the same session: ${label}`, async () => {
+      const final = await workerHair(s);
+      const mine = await grow('fast', 2000, s);
+      expect(strandCount(mine.hair.strands)).toBe(2000);
+      expect(bytes(mine.hair.strands.points).equals(bytes(final.points))).toBe(true);
+      expect(bytes(mine.hair.strands.strandStart).equals(bytes(final.strandStart))).toBe(true);
+    });
+
+  it('avoid scalp, the session detail and a curve detail each change the hair', async () => {
+    const points = async (s: SessionState) =>
+      bytes((await grow('fast', 2000, s)).hair.strands.points);
+    const plain = await points(session);
+    const avoiding = await points({ ...session, avoidScalp: true });
+    expect(avoiding.equals(plain)).toBe(false);
+    const { avoidScalp: _, ...noAvoid } = styled;
+    const withDetail = await points(curly);
+    expect(withDetail.equals(plain)).toBe(false); // curly: the default curves with a detail
+    const withOwn = await points(noAvoid);
+    expect(withOwn.equals(withDetail)).toBe(false);
+  });
+
+  it('keeps every grown point after the root outside the head, with and without detail', async () => {
+    for (const [label, s] of [
+      ['default', session],
+      ['default, avoid scalp', { ...session, avoidScalp: true }],
+      ['curly', curly],
+      ['styled', styled],
+    ] as const) {
+      const { strands } = (await grow('fast', 2000, s)).hair;
+      const P = strands.points;
+      let inside = 0;
+      let deepest = 0;
+      for (let i = 0; i < strandCount(strands); i++)
+        for (let k = strands.strandStart[i] + 1; k < strands.strandStart[i + 1]; k++) {
+          const d = head.signedDistance([P[3 * k], P[3 * k + 1], P[3 * k + 2]]);
+          if (d < 0) inside++;
+          deepest = Math.min(deepest, d);
+        }
+      expect({ label, inside, deepest }).toEqual({ label, inside: 0, deepest: 0 });
+    }
   });
 
   it("equals the worker's converged hair whatever the worker solved before (no warm-start trace)", async () => {
@@ -113,8 +168,9 @@ describe('growSessionHair', () => {
       logic.handle({
         type: 'solve',
         id,
-        curves: packCurves(curves, session.avoid ?? null),
+        curves: packCurves(curves),
         growth,
+        options: packHairOptions(session, curves),
         wantField: false,
         mode,
         lightMaxStrands: 500,
