@@ -162,12 +162,12 @@ describe('hairsketch grow: bad input', () => {
         'invalid session (version)',
         () => [
           badSession((s) => {
-            s.version = 2;
+            s.version = 3;
           }),
           '--out',
           join(dir, 'never.usda'),
         ],
-        /session\.version: must be 1/,
+        /session\.version: must be an integer from 1 to 2; version 3 was made by a newer hairsketch/,
       ],
       [
         'an export with no session',
@@ -278,14 +278,34 @@ describe('hairsketch grow: bad input', () => {
     expect(readdirSync(dir).filter((f) => f.endsWith('.usda') || f.endsWith('.tmp'))).toEqual([]);
   });
 
-  it("a grid other than the session's is refused when the session has scalp-avoidance constraints", async () => {
+  it('a version 1 session with scalp-avoidance constraints grows as version 2 with avoidScalp, on any grid', async () => {
     const d = freshDir();
-    const f = join(d, 'avoid.json');
-    writeFileSync(f, JSON.stringify({ ...session, avoid: { index: [5], target: [0, 0.3, 0] } }));
-    const r = await grow(f, '--out', join(d, 'o.obj'), '--grid', '50k');
-    expect(r.code).toBe(2);
-    expect(r.stderr).toMatch(/--grid 50k differs from the session's grid 25k/);
-    expect(readdirSync(d)).toEqual(['avoid.json']);
+    const v1 = join(d, 'v1.json');
+    writeFileSync(
+      v1,
+      JSON.stringify({ ...session, version: 1, avoid: { index: [5], target: [0, 0.3, 0] } }),
+    );
+    const v2 = join(d, 'v2.json');
+    writeFileSync(v2, JSON.stringify({ ...session, avoidScalp: true }));
+    await growOk(v1, '--out', join(d, 'v1.obj'), '--strands', '500');
+    await growOk(v2, '--out', join(d, 'v2.obj'), '--strands', '500');
+    await growOk(sessionFile, '--out', join(d, 'plain.obj'), '--strands', '500');
+    const file = (n: string) => readFileSync(join(d, n));
+    expect(file('v1.obj').equals(file('v2.obj'))).toBe(true);
+    expect(file('v1.obj').equals(file('plain.obj'))).toBe(false); // the avoidance was applied
+    // the constraints are no longer grid points: another grid is fine
+    const other = await growOk(
+      v1,
+      '--out',
+      join(d, 'v1-50k.obj'),
+      '--strands',
+      '300',
+      '--grid',
+      '50k',
+    );
+    // the strands that grew at least one segment, of the 300 roots asked for
+    expect(other.strands).toBeGreaterThan(250);
+    expect(other.strands).toBeLessThanOrEqual(300);
   });
 
   it('an existing output file is left as it was when the run fails', async () => {
