@@ -8,7 +8,7 @@ import { deflateRawSync } from 'node:zlib';
 import { type BrowserContext, expect, type Page, test } from '@playwright/test';
 import { settled, strokeFromScalp, watchConsole } from './helpers';
 
-type Session = { curves: unknown[]; avoid?: unknown; selected?: unknown };
+type Session = { curves: unknown[]; avoidScalp?: boolean; selected?: unknown };
 
 /** Opens `scene`, draws a stroke, reads the link the address bar then carries, opens it in a
  *  fresh page; both pages settled. */
@@ -42,8 +42,8 @@ async function strokeAndReopen(page: Page, context: BrowserContext, scene: strin
   const opened = await settled(other);
   expect(opened.text).toContain('Opened a shared session');
   const session = (await other.evaluate(() => window.hairsketch.session())) as Session;
-  // the very same numbers ("no avoid" reads as null; a link carries no selection)
-  expect(session).toEqual({ ...made, avoid: made.avoid ?? null, selected: null });
+  // the very same numbers (a link carries no selection)
+  expect(session).toEqual({ ...made, selected: null });
   expect(await other.evaluate(() => window.location.hash)).toBe(hash);
   expect(errors).toEqual([]);
   expect(otherErrors).toEqual([]);

@@ -1,7 +1,8 @@
 // The sketching tools end to end, with real pointer strokes (page.mouse down/move/up): hint
-// strokes on a stream curve, a dividing curve, a ponytail, scalp avoidance, and the presets.
+// strokes on a stream curve, a dividing curve, a ponytail, the Avoid scalp toggle, and the presets.
 // Waits only on the status attributes and the session, never on fixed sleeps.
 import { expect, type Page, test } from '@playwright/test';
+import { settled as settledAfter } from './helpers';
 
 type V3 = [number, number, number];
 interface Curve {
@@ -15,7 +16,7 @@ interface Curve {
 }
 interface Session {
   curves: Curve[];
-  avoid?: { index: number[]; target: number[] } | null;
+  avoidScalp?: boolean;
   selected: string | null;
 }
 
@@ -401,25 +402,25 @@ test('a ponytail from four strokes gathers strands through its first cross-secti
   expect(errors).toEqual([]);
 });
 
-test('Avoid scalp: afterwards no grown strand segment enters the head; undo restores', async ({
+test('Avoid scalp is a toggle: on, the hair is solved again with it and no strand segment enters the head; undo turns it off', async ({
   page,
 }) => {
   const errors = watchConsole(page);
   await page.goto(SCENE);
-  await settled(page);
+  const s0 = await settledAfter(page);
   const depth = 0.02; // world units (2 mm): the mesh the roots sit on vs the exact surface
   const before = await page.evaluate((d) => window.hairsketch.segmentsInsideHead(d), depth);
   expect(before.segments).toBeGreaterThan(1000);
   const hashBefore = await page.evaluate(() => window.hairsketch.hairHash());
-  await page.getByRole('button', { name: 'Avoid scalp' }).click();
-  await page.waitForFunction(() => {
-    const s = window.hairsketch.session() as Session;
-    return !!s.avoid && s.avoid.index.length > 0;
-  });
-  await settled(page);
+  const button = page.getByRole('button', { name: 'Avoid scalp' });
+  await expect(button).toHaveAttribute('aria-pressed', 'false');
+  await button.click();
+  await expect(button).toHaveAttribute('aria-pressed', 'true');
+  expect((await session(page)).avoidScalp).toBe(true);
+  // the hair is re-solved: a newer revision, with other strands
+  await settledAfter(page, s0.revision);
   await expect(page.getByTestId('status')).toContainText('Avoid scalp');
-  const s = await session(page);
-  expect(s.avoid?.target.length).toBe(3 * (s.avoid?.index.length ?? 0));
+  expect(await page.evaluate(() => window.hairsketch.hairHash())).not.toBe(hashBefore);
   const after = await page.evaluate((d) => window.hairsketch.segmentsInsideHead(d), depth);
   console.log(JSON.stringify({ before, after }));
   console.log(
@@ -428,17 +429,18 @@ test('Avoid scalp: afterwards no grown strand segment enters the head; undo rest
   expect(after.segments).toBeGreaterThan(1000);
   expect(after.inside).toBe(0);
   await page.getByRole('button', { name: 'Undo' }).click();
-  await page.waitForFunction(() => !(window.hairsketch.session() as Session).avoid);
+  await expect(button).toHaveAttribute('aria-pressed', 'false');
+  await page.waitForFunction(() => !(window.hairsketch.session() as Session).avoidScalp);
   await settled(page);
-  expect(await page.evaluate(() => window.hairsketch.hairHash())).toBe(hashBefore);
+  await page.waitForFunction((h) => window.hairsketch.hairHash() === h, hashBefore);
   expect(errors).toEqual([]);
 });
 
 for (const [name, want] of [
   ['fig6', { stream: 10, dividing: 0, ponytail: 0 }],
   ['fig7', { stream: 7, dividing: 1, ponytail: 0 }],
-  ['fig8', { stream: 4, dividing: 0, ponytail: 2 }],
-  ['fig1', { stream: 11, dividing: 4, ponytail: 1 }],
+  ['fig8', { stream: 8, dividing: 1, ponytail: 2 }],
+  ['fig1', { stream: 13, dividing: 4, ponytail: 1 }],
 ] as const) {
   test(`preset ${name} loads to ready with hair and the figure's curves`, async ({ page }) => {
     const errors = watchConsole(page);
