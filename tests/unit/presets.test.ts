@@ -21,8 +21,8 @@ const ctx = {
 const EXPECTED: Record<string, { stream: number; dividing: number; ponytail: number }> = {
   fig6: { stream: 10, dividing: 0, ponytail: 0 },
   fig7: { stream: 7, dividing: 1, ponytail: 0 },
-  // two ponytails, the centre parting over the back, curves combing each half to its ponytail
-  fig8: { stream: 8, dividing: 1, ponytail: 2 },
+  // two ponytails, curves combing each half (front, crown, occiput, nape) to its ponytail
+  fig8: { stream: 8, dividing: 0, ponytail: 2 },
   // the back combed up from the nape into the ponytail (three curves where one lock was)
   fig1: { stream: 13, dividing: 4, ponytail: 1 },
 };

@@ -1,8 +1,9 @@
 // How much of the scalp the hair hides from a direction: rays along `dir` (parallel, as from far
-// away) at a grid of scalp points; a ray is covered when a strand segment passes within `radius`
-// of it in front of the scalp point (nearer to where the ray comes from), bare when its first hit
-// is the scalp. Segments are binned on the plane across the rays, so each ray looks only at the
-// segments near it.
+// away) at a grid of scalp points; a ray is covered when at least `layers` different strands
+// pass within `radius` of it in front of the scalp point (nearer to where the ray comes from),
+// bare otherwise: a root's own short stubble (a strand that hardly grew, in a weak field) does
+// not hide the scalp around it, hair combed over it does (many strands). Segments are binned on
+// the plane across the rays, so each ray looks only at the segments near it.
 
 import type { Vec3 } from '../model/vec3';
 import type { StrandArrays } from '../solver/protocol';
@@ -15,6 +16,8 @@ export interface CoverageOptions {
   radius?: number;
   /** Angular step of the scalp grid in θ and φ, degrees (default 3). */
   stepDeg?: number;
+  /** Different strands that must pass in front of a point to hide it (default 3). */
+  layers?: number;
 }
 
 export interface Coverage {
@@ -34,6 +37,7 @@ export function scalpCoverage(
 ): Coverage {
   const r = opts.radius ?? 0.01;
   const step = opts.stepDeg ?? 3;
+  const layers = opts.layers ?? 3;
   const d = opts.dir;
   // a frame across the rays: u, v with d
   const a: Vec3 = Math.abs(d[1]) < 0.9 ? [0, 1, 0] : [1, 0, 0];
@@ -44,9 +48,11 @@ export function scalpCoverage(
   const key = (i: number, j: number) => (i + 32768) * 65536 + (j + 32768);
   const P = strands?.points;
   const S = strands?.strandStart;
+  const strandOf = new Int32Array(P ? P.length / 3 : 0);
   if (P && S)
     for (let s = 0; s + 1 < S.length; s++)
       for (let k = S[s]; k + 1 < S[s + 1]; k++) {
+        strandOf[k] = s;
         const au = dot3(P, k, u);
         const av = dot3(P, k, v);
         const bu = dot3(P, k + 1, u);
@@ -79,14 +85,13 @@ export function scalpCoverage(
       const pv = p[0] * v[0] + p[1] * v[1] + p[2] * v[2];
       const pd = p[0] * d[0] + p[1] * d[1] + p[2] * d[2];
       const list = bins.get(key(Math.floor(pu / cell), Math.floor(pv / cell))) ?? [];
-      let covered = false;
+      const hiding = new Set<number>();
       for (const k of list) {
-        if (segmentHides(P as Float32Array, k, u, v, d, pu, pv, pd, r)) {
-          covered = true;
-          break;
-        }
+        if (hiding.has(strandOf[k])) continue;
+        if (segmentHides(P as Float32Array, k, u, v, d, pu, pv, pd, r)) hiding.add(strandOf[k]);
+        if (hiding.size >= layers) break;
       }
-      if (!covered) bareAt.push([theta, phi]);
+      if (hiding.size < layers) bareAt.push([theta, phi]);
     }
   return { points, bare: bareAt.length, fraction: points ? bareAt.length / points : 0, bareAt };
 }

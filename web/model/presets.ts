@@ -3,8 +3,7 @@
 // strokes on the scalp (S4.5); a ponytail is a spine from the scalp with a cross-section and two
 // profile strokes beside it, from which the circles are computed as for drawn strokes (S4.6).
 // The paper's figures: fig6 (ten stream curves), fig7 (seven stream curves and a short parting),
-// fig8 (two ponytails, a centre parting over the back and the stream curves that comb each half
-// to its ponytail), fig1 (eleven stream curves, four dividing curves and one ponytail); and
+// fig8 (two ponytails and eight stream curves that comb each half of the head to its ponytail), fig1 (thirteen stream curves, four dividing curves and one ponytail); and
 // `curly`, the default style with curl, clumps and a little frizz (model/detail.ts).
 import type { Head } from '../head/head';
 import type { HairDetail } from './detail';
@@ -230,18 +229,12 @@ const FIG7_SWEEPS: SweepSpec[] = [
 ];
 
 // fig8: two ponytails (left and right, behind the ears) and stream curves combing the hair from a
-// centre parting toward them. The figure's back has no bald area: the parting runs on over the
-// crown down to the nape (a dividing curve), and curves from beside it at the back of the crown
-// and the occiput comb each half sideways to its ponytail, so the two halves do not cancel.
+// centre parting toward them. The figure's back has no bald area: curves from beside the back
+// midline at the crown and the occiput comb each half sideways to its ponytail, so the two halves
+// do not cancel there.
 const FIG8_PONYTAILS: PonytailSpec[] = [
   { base: [74, 115], out: 0.3, fall: 1.6, gather: 0.2, width: 0.3 },
   { base: [74, -115], out: 0.3, fall: 1.6, gather: 0.2, width: 0.3 },
-];
-const FIG8_PARTING: [number, number][] = [
-  [12, 178],
-  [50, 180],
-  [90, 180],
-  [112, 180],
 ];
 const FIG8_SWEEPS: SweepSpec[] = [
   // from the forehead over the top, down to each ponytail
@@ -258,7 +251,7 @@ const FIG8_SWEEPS: SweepSpec[] = [
 ];
 
 // fig1: a high ponytail at the back of the crown, a centre parting from the forehead, two side
-// partings and a nape parting (four dividing curves), and eleven stream curves: the top and sides
+// partings and a nape parting (four dividing curves), and thirteen stream curves: the top and sides
 // combed toward the ponytail, the back combed up from the nape into it, loose locks in front of
 // the ears. From behind, the ponytail hangs alone over the neck.
 const FIG1_PONYTAIL: PonytailSpec = {
@@ -328,7 +321,6 @@ export function presetCurves(name: PresetName, ctx: PresetContext): StyleCurve[]
       break;
     case 'fig8':
       for (const p of FIG8_PONYTAILS) push(ponytailFrom(ctx, p, nextId()));
-      push(dividingFrom(ctx, FIG8_PARTING, nextId()));
       sweeps(FIG8_SWEEPS);
       break;
     case 'fig1':

@@ -1,0 +1,84 @@
+// Hair stays outside the head without any button, goes when its curves go, and covers the back of
+// the figure presets (measured by rays from behind, not by eye).
+import { expect, test } from '@playwright/test';
+import { settled, status, strokeFromScalp, watchConsole } from './helpers';
+
+test('a stroke drawn from the front down over the temple and cheek leaves no hair inside the head', async ({
+  page,
+}) => {
+  const errors = watchConsole(page);
+  await page.goto('/?preset=empty');
+  const first = await settled(page);
+  expect(first.strands).toBe(0);
+  // From the front hairline at the temple, straight down the screen over the cheek: the depth
+  // rule would put the off-scalp part of this stroke inside the face.
+  await strokeFromScalp(page, 58, 40, 0, 220);
+  const after = await settled(page, first.revision);
+  expect(after.curves).toBe(1);
+  expect(after.strands).toBeGreaterThan(500);
+  // the curve's points are all outside the head (the depth rule's margin)
+  const curveDepths = await page.evaluate(() => {
+    const s = window.hairsketch.session() as { curves: { points: [number, number, number][] }[] };
+    return s.curves[0].points.length;
+  });
+  expect(curveDepths).toBeGreaterThan(5);
+  const inside = await page.evaluate(() => window.hairsketch.segmentsInsideHead(0.01));
+  console.log(`stroke over the face: ${JSON.stringify(inside)}`);
+  expect(inside.segments).toBeGreaterThan(1000);
+  expect(inside.inside).toBe(0); // no segment deeper than 1 mm inside the head
+  // Deleting every curve leaves a bald head (no stale scalp constraints keep hair alive).
+  await page.getByRole('button', { name: 'Avoid scalp' }).click();
+  const avoided = await settled(page, after.revision);
+  expect(avoided.strands).toBeGreaterThan(500);
+  expect(await page.evaluate(() => window.hairsketch.segmentsInsideHead(0.01).inside)).toBe(0);
+  await page.getByRole('button', { name: 'Select' }).click();
+  const id = await page.evaluate(
+    () => (window.hairsketch.session() as { curves: { id: string }[] }).curves[0].id,
+  );
+  await page.evaluate((c) => window.hairsketch.select(c), id);
+  await page.getByRole('button', { name: 'Delete' }).click();
+  const bald = await settled(page, avoided.revision);
+  expect(bald.curves).toBe(0);
+  expect(bald.strands).toBe(0);
+  expect(errors).toEqual([]);
+});
+
+for (const preset of ['fig8', 'fig1', 'fig6', 'fig7', 'default']) {
+  test(`${preset}: from behind, at most 2 % of the scalp is bare`, async ({ page }) => {
+    await page.goto(`/?preset=${preset}`);
+    const s = await settled(page);
+    expect(s.strands).toBeGreaterThan(20_000);
+    const back = await page.evaluate(() => window.hairsketch.scalpCoverage('back'));
+    console.log(
+      `${preset} from behind: ${back.bare} of ${back.points} scalp points bare (${(100 * back.fraction).toFixed(2)} %)`,
+    );
+    expect(back.points).toBeGreaterThan(1000);
+    expect(back.fraction).toBeLessThanOrEqual(0.02);
+    const inside = await page.evaluate(() => window.hairsketch.segmentsInsideHead(0.01));
+    expect(inside.inside).toBe(0);
+    expect((await status(page)).state).toBe('ready');
+  });
+}
+
+test('the Detail panel curls the hair, and Undo restores it exactly', async ({ page }) => {
+  const errors = watchConsole(page);
+  await page.goto('/?preset=default&strands=3000');
+  const first = await settled(page);
+  const before = await page.evaluate(() => window.hairsketch.hairHash());
+  await page.getByRole('button', { name: 'Detail' }).click();
+  const panel = page.getByRole('region', { name: 'Hair detail' });
+  await expect(panel).toBeVisible();
+  await panel.getByRole('checkbox', { name: 'Curl' }).check();
+  const curled = await settled(page, first.revision);
+  const session = (await page.evaluate(() => window.hairsketch.session())) as {
+    detail?: { curl?: { radius: number } };
+  };
+  expect(session.detail?.curl?.radius).toBe(0.1); // Blender's default radius
+  const hash = await page.evaluate(() => window.hairsketch.hairHash());
+  expect(hash).not.toBe(before);
+  expect(await page.evaluate(() => window.hairsketch.segmentsInsideHead(0.01).inside)).toBe(0);
+  await page.getByRole('button', { name: 'Undo' }).click();
+  await settled(page, curled.revision);
+  expect(await page.evaluate(() => window.hairsketch.hairHash())).toBe(before);
+  expect(errors).toEqual([]);
+});
