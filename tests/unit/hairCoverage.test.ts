@@ -42,8 +42,12 @@ describe('scalpCoverage', () => {
   it('does not count strands farther than the radius from a ray', () => {
     // strands every 10 cm: most rays pass more than 1 mm from every strand
     const sparse = blanket(() => -1.5, 0.1);
-    const c = scalpCoverage(head, sparse, { dir: VIEW_DIRECTIONS.back, stepDeg: 6, radius: 0.01 });
+    const one = { dir: VIEW_DIRECTIONS.back, stepDeg: 6, radius: 0.01, layers: 1 };
+    const c = scalpCoverage(head, sparse, one);
     expect(c.bare).toBeGreaterThan(0.7 * c.points);
     expect(c.bare).toBeLessThan(c.points); // a few rays do pass next to one
+    // by default a point needs 3 different strands in front: one stray strand hides nothing
+    const three = scalpCoverage(head, sparse, { ...one, layers: undefined });
+    expect(three.bare).toBe(three.points);
   });
 });
