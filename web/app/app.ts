@@ -5,7 +5,7 @@
 // and connects them.
 import { Editor, type ToolName } from '../editor/editor';
 import { Head } from '../head/head';
-import { gridForPreset } from '../model/grid';
+import { gridForPreset, gridForSession } from '../model/grid';
 import { applyPreset } from '../model/presets';
 import { DEFAULT_GROWTH, emptySession } from '../model/session';
 import { PONYTAIL_STAGE_HINT } from '../tools/ponytailTool';
@@ -60,14 +60,14 @@ export function startApp(): void {
 
   const hair = new HairPresenter(viewer, new HairView(viewer), line, initial.hairColor);
   const bridge = new SolverBridge(editor, {
-    grid,
+    grid: gridForSession(initial.grid, initial.curves),
     solver: opts.solver,
     scalp: head.scalpMesh(),
     interactiveDetail: () => viewer.interactiveDetail,
     shownStrands: () => line.strands,
   });
   const status = new StatusPresenter(line, () => bridge.pending);
-  const overlays = new OverlayPresenter(viewer, editor, grid);
+  const overlays = new OverlayPresenter(viewer, editor, bridge.grid);
   const links = new LinkWriter(editor);
 
   const tools = createTools({
@@ -123,7 +123,6 @@ export function startApp(): void {
     bridge,
     status,
     head,
-    grid,
     solver: opts.solver,
     anchor: byId('toolbar'),
   });
@@ -168,6 +167,7 @@ export function startApp(): void {
       status.result(r, final);
     },
     error: (m, kind, restarting) => status.solverError(m, kind, restarting),
+    gridChanged: (g) => overlays.setGrid(g),
     idle: () => {
       hair.idle();
       // "Ready" once the converged hair is on screen (cached or unchanged hair: at once)

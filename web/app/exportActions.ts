@@ -2,7 +2,7 @@
 // viewer, each after the running solve (if any) has finished, with progress on the status line.
 import type { Editor } from '../editor/editor';
 import type { Head } from '../head/head';
-import type { GridSpec, SolverName } from '../solver/protocol';
+import type { SolverName } from '../solver/protocol';
 import { buildExportMenu, type ExportMenu } from '../ui/exportMenu';
 import type { Viewer } from '../viewer/viewer';
 import { download, Exporter, formatBytes } from './exporter';
@@ -22,7 +22,6 @@ export function wireExport(d: {
   bridge: SolverBridge;
   status: StatusPresenter;
   head: Head;
-  grid: GridSpec;
   solver: SolverName;
   anchor: HTMLElement;
 }): ExportWiring {
@@ -30,7 +29,6 @@ export function wireExport(d: {
   let png = false;
   const exporter = new Exporter({
     editor: d.editor,
-    grid: d.grid,
     solver: d.solver,
     scalp: () => d.head.scalpMesh(),
     head: () => ({

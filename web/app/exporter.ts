@@ -4,12 +4,12 @@
 import type { Editor } from '../editor/editor';
 import type { FromExportWorker } from '../export/exportProtocol';
 import { EXPORT_FILE_NAMES, type ExportFormat, type ExportHead } from '../export/types';
+import { gridForSession } from '../model/grid';
 import { parseSession } from '../model/sessionFile';
-import type { GridSpec, ScalpMesh, SolverName } from '../solver/protocol';
+import type { ScalpMesh, SolverName } from '../solver/protocol';
 
 export interface ExporterDeps {
   editor: Editor;
-  grid: GridSpec;
   solver: SolverName;
   scalp: () => ScalpMesh;
   head: () => ExportHead;
@@ -108,7 +108,7 @@ export class Exporter {
             type: 'export',
             format,
             session: parsed.value,
-            grid: this.d.grid,
+            grid: gridForSession(parsed.value.grid, parsed.value.curves),
             solver: this.d.solver,
             scalp: this.d.scalp(),
             head: withHead ? this.d.head() : null,

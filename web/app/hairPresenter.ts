@@ -56,7 +56,7 @@ export class HairPresenter {
     if (this.shown !== r.strands) {
       this.shown = r.strands;
       this.finalPending = final;
-      this.hair.show(r.strands, () => {
+      this.hair.show(r.strands, r.lighting, () => {
         if (!final || this.shown !== r.strands) return;
         this.finalPending = false;
         this.onFinalShown?.();

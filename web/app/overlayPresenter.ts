@@ -38,9 +38,15 @@ export class OverlayPresenter {
   constructor(
     private readonly viewer: Viewer,
     private readonly editor: Editor,
-    private readonly grid: GridSpec,
+    private grid: GridSpec,
   ) {
     this.views.box = new BoundingVolumeView(grid);
+  }
+
+  /** The bounding volume moved (gridForSession): the box and later results use the new grid. */
+  setGrid(grid: GridSpec): void {
+    this.grid = grid;
+    this.views.box?.update(grid);
   }
 
   get shownResult(): SolveResult | null {

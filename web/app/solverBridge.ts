@@ -4,6 +4,7 @@
 // grow. Results and progress go to whoever subscribed (hair presenter, overlays, status line).
 import type { Editor, EditorChange } from '../editor/editor';
 import { packCurves, packHairOptions } from '../model/curveSet';
+import { gridForSession, sameGrid } from '../model/grid';
 import type { SessionState, Viewpoint } from '../model/session';
 import type { Vec3 } from '../model/vec3';
 import type { GridSpec, ScalpMesh, SolverErrorKind, SolverName } from '../solver/protocol';
@@ -21,9 +22,12 @@ export interface SolverBridgeEvents {
   result(r: SolveResult, final: boolean): void;
   error(message: string, kind: SolverErrorKind | undefined, restarting: boolean): void;
   idle(): void;
+  /** The bounding volume changed (results from now on are on this grid). */
+  gridChanged?(grid: GridSpec): void;
 }
 
 export interface SolverBridgeOptions {
+  /** The grid of the session the page starts with (gridForSession). */
   grid: GridSpec;
   solver: SolverName;
   scalp: ScalpMesh;
@@ -78,9 +82,19 @@ export class SolverBridge {
     return this.drawing;
   }
 
-  /** Sends the current session for a full solve. */
+  /** The grid the solver works on: the session's bounding volume (gridForSession). */
+  get grid(): GridSpec {
+    return this.client.grid;
+  }
+
+  /** Sends the current session for a full solve (on the grid its curves need). */
   sync(): void {
     const s = this.editor.session;
+    const grid = gridForSession(s.grid, s.curves);
+    if (!sameGrid(grid, this.client.grid)) {
+      this.client.setGrid(grid);
+      this.each((l) => l.gridChanged?.(grid));
+    }
     this.client.request(
       packCurves(s.curves),
       s.growth,

@@ -21,7 +21,7 @@ import { exportedCounts } from '../export/strandsForExport';
 import { EXPORT_FORMATS, type ExportFormat, type ExportHead } from '../export/types';
 import { formatFromFileName, writeExport } from '../export/writeExport';
 import { Head } from '../head/head';
-import { GRID_PRESETS, type GridPreset, gridForPreset, isGridPreset } from '../model/grid';
+import { GRID_PRESETS, type GridPreset, gridForSession, isGridPreset } from '../model/grid';
 import type { SessionState } from '../model/session';
 import { parseSession } from '../model/sessionFile';
 import { decodeSessionLink } from '../model/sessionLink';
@@ -256,7 +256,7 @@ export async function runGrow(
     const t0 = performance.now();
     let lastLine = t0;
     hair = growSessionHair(engine, session, head.scalpMesh(), {
-      grid: gridForPreset(preset),
+      grid: gridForSession(preset, session.curves),
       solver: args.solver,
       ...(args.strands !== null ? { maxStrands: args.strands } : {}),
       // between solver slices: progress on stderr now and then, and the time cap

@@ -210,8 +210,11 @@ function applyExact(s: SessionState, cmd: Command): CommandResult {
         if (JSON.stringify(d) === JSON.stringify(s.detail))
           return { session: s, message: 'Detail unchanged.' };
         const { detail: _, ...rest } = s;
+        const next = d ? { ...rest, detail: d } : rest;
+        const check = parseSession({ ...next, curves: [] });
+        if (!check.ok) return { session: s, message: `Nothing changed: ${check.error}.` };
         return {
-          session: d ? { ...rest, detail: d } : rest,
+          session: next,
           message: d ? `Detail: ${describeDetail(d)}.` : 'Detail off.',
         };
       }

@@ -43,4 +43,59 @@ export function gridForPreset(preset: GridPreset): GridSpec {
   return { dims, origin, step: best };
 }
 
+/** Grid steps kept between a curve's last point and the faces of a fitted volume: the fading
+ *  extension past a curve's end (4 steps, S4.1) and the strands' fall to below the growth
+ *  threshold. Every other point keeps one step. */
+export const FIT_MARGIN_STEPS = 6;
+/** A fitted volume grows past the default box by at most this on each side (world units), so
+ *  a stroke at the edge of the working volume cannot ask for an unbounded grid. */
+export const FIT_MAX_GROWTH = 2.0;
+
+/** The preset's grid, grown (same step, same lattice) until the bounding volume holds every
+ *  point of `curves` with a step to spare and each curve's end with FIT_MARGIN_STEPS, so the
+ *  hair the curves ask for is not cut flat where the default box ends. The default box when the
+ *  curves fit in it. */
+export function gridForSession(
+  preset: GridPreset,
+  curves: readonly { points: readonly Vec3[] }[],
+): GridSpec {
+  const g = gridForPreset(preset);
+  const lo: Vec3 = [...g.origin];
+  const hi = [0, 1, 2].map((a) => g.origin[a] + g.step * (g.dims[a] - 1)) as Vec3;
+  const hold = (p: Vec3, m: number) => {
+    for (let a = 0; a < 3; a++) {
+      if (p[a] - m < lo[a]) lo[a] = p[a] - m;
+      if (p[a] + m > hi[a]) hi[a] = p[a] + m;
+    }
+  };
+  for (const c of curves) {
+    for (const p of c.points) hold(p, g.step);
+    if (c.points.length) hold(c.points[c.points.length - 1], FIT_MARGIN_STEPS * g.step);
+  }
+  const origin = [...g.origin] as Vec3;
+  const dims = [...g.dims] as [number, number, number];
+  for (let a = 0; a < 3; a++) {
+    const below = Math.min(
+      Math.ceil((g.origin[a] - lo[a]) / g.step - 1e-9),
+      Math.floor(FIT_MAX_GROWTH / g.step),
+    );
+    const top = g.origin[a] + g.step * (g.dims[a] - 1);
+    const above = Math.min(
+      Math.ceil((hi[a] - top) / g.step - 1e-9),
+      Math.floor(FIT_MAX_GROWTH / g.step),
+    );
+    if (below > 0) {
+      origin[a] = g.origin[a] - below * g.step;
+      dims[a] += below;
+    }
+    if (above > 0) dims[a] += above;
+  }
+  return { dims, origin, step: g.step };
+}
+
+export const sameGrid = (a: GridSpec, b: GridSpec): boolean =>
+  a.step === b.step &&
+  a.dims.every((d, i) => d === b.dims[i]) &&
+  a.origin.every((o, i) => o === b.origin[i]);
+
 export const gridPointCount = (g: GridSpec): number => g.dims[0] * g.dims[1] * g.dims[2];

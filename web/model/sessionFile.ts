@@ -25,26 +25,16 @@ import {
   type GrowthParams,
 } from '../solver/protocol';
 import {
-  BOX_MAX,
-  BOX_MIN,
-  type GridPreset,
-  isGridPreset,
-} from './grid';
-import {
   DETAIL_BLOCKS,
   DETAIL_PARAMS,
   type DetailParamSpec,
   type HairDetail,
   LENGTH_JITTER,
 } from './detail';
+import { BOX_MAX, BOX_MIN, type GridPreset, isGridPreset } from './grid';
 import type { PonytailCircle } from './ponytailGeometry';
 import { POSITION_SCALE, toGridInt } from './quantize';
-import {
-  DEFAULT_GROWTH,
-  type SessionState,
-  type StyleCurve,
-  type Viewpoint,
-} from './session';
+import { DEFAULT_GROWTH, type SessionState, type StyleCurve, type Viewpoint } from './session';
 import { migrateSession, type Plain, type PlainRecord, SESSION_VERSION } from './sessionMigrations';
 import type { Vec3 } from './vec3';
 
@@ -397,8 +387,17 @@ function scalars<K extends CurveKindName>(
 const paramNames = (k: CurveKindName): string[] =>
   (CURVE_PARAMS[k] as readonly CurveParamSpec[]).map((p) => p.name);
 const CURVE_FIELDS = {
-  stream: ['id', 'type', 'points', 'extend', 'viewpoint', 'surfaceMode', ...paramNames('stream')],
-  dividing: ['id', 'type', 'points', 'normals', 'viewpoint', ...paramNames('dividing')],
+  stream: [
+    'id',
+    'type',
+    'points',
+    'extend',
+    'viewpoint',
+    'surfaceMode',
+    'detail',
+    ...paramNames('stream'),
+  ],
+  dividing: ['id', 'type', 'points', 'normals', 'viewpoint', 'detail', ...paramNames('dividing')],
   ponytail: [
     'id',
     'type',
@@ -408,6 +407,7 @@ const CURVE_FIELDS = {
     'crossSection',
     'profiles',
     'circles',
+    'detail',
     ...paramNames('ponytail'),
   ],
 } as const satisfies Record<CurveKindName, readonly string[]>;
@@ -421,13 +421,22 @@ function detail(v: Plain | undefined, path: string): { detail?: HairDetail } {
   for (const b of DETAIL_BLOCKS) {
     if (o[b] === undefined) continue;
     const specs = DETAIL_PARAMS[b] as readonly DetailParamSpec[];
-    const q = record(o[b], `${path}.${b}`, specs.map((p) => p.key));
+    const q = record(
+      o[b],
+      `${path}.${b}`,
+      specs.map((p) => p.key),
+    );
     const block: Record<string, number> = {};
     for (const p of specs) block[p.key] = num(q[p.key], `${path}.${b}.${p.key}`, p.min, p.max);
     (out as Record<string, unknown>)[b] = block;
   }
   if (o.lengthJitter !== undefined)
-    out.lengthJitter = num(o.lengthJitter, `${path}.lengthJitter`, LENGTH_JITTER.min, LENGTH_JITTER.max);
+    out.lengthJitter = num(
+      o.lengthJitter,
+      `${path}.lengthJitter`,
+      LENGTH_JITTER.min,
+      LENGTH_JITTER.max,
+    );
   return { detail: out };
 }
 

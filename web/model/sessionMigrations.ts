@@ -40,8 +40,7 @@ export const SESSION_MIGRATIONS: readonly SessionMigration[] = [
       // reader refuses it by name.
       const a = s.avoid;
       const wellFormed =
-        a === null ||
-        (typeof a === 'object' && !Array.isArray(a) && Array.isArray(a.index));
+        a === null || (typeof a === 'object' && !Array.isArray(a) && Array.isArray(a.index));
       const out: PlainRecord = Object.create(null);
       for (const [k, v] of Object.entries(s)) if (k !== 'avoid' || !wellFormed) out[k] = v;
       if (wellFormed && a !== null && (a.index as Plain[]).length > 0) out.avoidScalp = true;

@@ -162,6 +162,19 @@ export interface StrandArrays {
   strandStart: Uint32Array; // length = strands + 1
 }
 
+/** Lighting precomputed for a hair revision towards the fixed key light
+ *  (web/lighting/hairLighting.ts, web/lighting/keyLight.ts KEY_LIGHT_DIRECTION). */
+export interface HairLightingArrays {
+  /** 2 per strand point (StrandArrays point order): strand[2 * point] = transmittance towards
+   *  the light through hair and head, strand[2 * point + 1] = ambient occlusion (1 = open);
+   *  both in [0, 1]. */
+  strand: Float32Array;
+  /** 1 per head vertex (ScalpMesh vertex order): transmittance through the hair towards the
+   *  light, in [0, 1] (the hair's shadow on scalp and face). */
+  head: Float32Array;
+  ms: number; // time the precompute took in the worker
+}
+
 /** The solved field, one vector per grid point. */
 export interface FieldArrays {
   vectors: Float32Array; // vectors[3 * p + axis], p = grid index
@@ -222,8 +235,7 @@ export type ToWorker =
        *  still applies when smaller. 0 = no cap of its own. Chosen by the app (what it can draw
        *  while the pen moves). */
       lightMaxStrands: number;
-    }
-;
+    };
 
 export type FromWorker =
   | { type: 'ready'; gridPoints: number; roots: number }
@@ -234,6 +246,9 @@ export type FromWorker =
       strands: StrandArrays;
       constraints: ConstraintArrays;
       field: FieldArrays | null;
+      /** Self-shadowing, occlusion and the hair's shadow on the head; absent or null when the
+       *  worker computed none. */
+      lighting?: HairLightingArrays | null;
       stats: SolveStats;
       /** True for the converged field's hair; false for a preview or a first look. */
       final: boolean;
@@ -250,6 +265,8 @@ export function resultTransferables(msg: Extract<FromWorker, { type: 'result' }>
     msg.constraints.colour.buffer as ArrayBuffer,
   ];
   if (msg.field) list.push(msg.field.vectors.buffer as ArrayBuffer);
+  if (msg.lighting)
+    list.push(msg.lighting.strand.buffer as ArrayBuffer, msg.lighting.head.buffer as ArrayBuffer);
   return list;
 }
 

@@ -71,7 +71,7 @@ export class SolverClient {
   wantField = false;
   constructor(
     private readonly makeWorker: () => Worker,
-    private readonly init: InitMessage,
+    private init: InitMessage,
     private readonly events: SolverClientEvents,
   ) {
     this.start();
@@ -79,6 +79,25 @@ export class SolverClient {
 
   get pending(): boolean {
     return this.open !== null || this.previewWaiting !== null || !this.ready;
+  }
+
+  /** The grid the worker solves on. */
+  get grid(): InitMessage['grid'] {
+    return this.init.grid;
+  }
+
+  /** Moves the solver to another grid (the session's bounding volume grew or shrank): the
+   *  worker is replaced by one set up on it, and the open request is sent to it when ready.
+   *  Cached results were grown on the old grid: dropped. */
+  setGrid(grid: InitMessage['grid']): void {
+    this.init = { ...this.init, grid };
+    this.cache.clear();
+    this.worker?.terminate();
+    this.worker = null;
+    this.ready = false;
+    this.previewInFlight = null;
+    this.previewWaiting = null;
+    this.start();
   }
 
   /** Solves `curves` and grows `growth`; previews and a full solve's first look are grown with

@@ -325,10 +325,7 @@ class WasmEngine implements SolverEngine {
       );
     const nGroups = d.groups.length / DETAIL_GROUP_STRIDE;
     withInputs(m, [d.groups, d.curveGroup], ([groups, curveGroup]) =>
-      check(
-        m,
-        m._hs_engine_set_detail(h, groups, nGroups, curveGroup, d.curveGroup.length),
-      ),
+      check(m, m._hs_engine_set_detail(h, groups, nGroups, curveGroup, d.curveGroup.length)),
     );
   }
 

@@ -8,12 +8,14 @@
 //                and grow the final hair when the field has converged. With "Avoid scalp" on, the
 //                converged field gives the scalp-avoidance constraints (S4.7) and the field is
 //                solved again, from zero, with them (growSession.ts does the same).
+import { resultLighting } from '../lighting/resultLighting';
 import { type IterateProgress, type SolverEngine, SolverError } from './engine';
 import {
   type ConstraintArrays,
   ConstraintColour,
   type FromWorker,
   type GrowthParams,
+  type ScalpMesh,
   type SolverErrorKind,
   type ToWorker,
 } from './protocol';
@@ -71,6 +73,8 @@ export function lightGrowth(job: SolveMsg): GrowthParams {
 
 export class WorkerLogic {
   private initialised = false;
+  /** The head from 'init': the hair's lighting is computed against it (resultLighting). */
+  private head: ScalpMesh | null = null;
   private latest: SolveMsg | null = null;
   private running = false;
 
@@ -86,6 +90,7 @@ export class WorkerLogic {
       try {
         this.engine.setGrid(msg.grid, msg.omega, msg.solver);
         this.engine.setScalp(msg.scalp);
+        this.head = msg.scalp;
         this.initialised = true;
         const n = msg.grid.dims[0] * msg.grid.dims[1] * msg.grid.dims[2];
         this.post({ type: 'ready', gridPoints: n, roots: 0 });
@@ -231,6 +236,7 @@ export class WorkerLogic {
       strands,
       constraints: this.constraintsWithColours(),
       field: job.wantField ? this.engine.field() : null,
+      lighting: resultLighting(strands, this.head, this.opts.now),
       stats,
       final,
     });

@@ -75,6 +75,7 @@ export function buildDetailPanel(root: HTMLElement, events: DetailPanelEvents): 
 
   const row = (text: string, input: HTMLElement): HTMLLabelElement => {
     const label = document.createElement('label');
+    label.className = 'detail-row';
     label.append(text, input);
     return label;
   };
@@ -110,6 +111,7 @@ export function buildDetailPanel(root: HTMLElement, events: DetailPanelEvents): 
         events.setDetail(selected.id, box.checked ? (s.detail ?? {}) : undefined),
       );
       const label = document.createElement('label');
+      label.className = 'detail-row';
       label.append(box, ` Own detail for ${selected.id}`);
       panel.append(label);
       if (!own) {

@@ -1,26 +1,54 @@
-// The displayed hair: strand arrays from the solver become one LineSegments object in the
-// viewer, with one shared Kajiya–Kay material (a new material would compile its shader again).
+// The displayed hair: strand arrays from the solver become one object in the viewer, drawn at
+// the active quality: 'fast' = GL lines with the lighting precomputed in the worker (transmittance
+// and occlusion per point); 'high' = camera-facing tapered strips with alpha-to-coverage (where
+// the canvas is multisampled) and deep opacity maps for the key light's shadow. Materials are
+// shared across revisions (a new material would compile its shader again). The head receives the
+// hair's shadow (per-vertex transmittance, headMaterial.ts).
 import * as THREE from 'three';
-import type { StrandArrays } from '../solver/protocol';
+import type { HairLightingArrays, StrandArrays } from '../solver/protocol';
+import { DeepOpacityMaps } from './deepOpacity';
+import { setHeadHairShadow } from './headMaterial';
 import {
   buildStrandGeometry,
+  buildStrandStripGeometry,
   createStrandMaterial,
   type StrandMaterial,
   setHairColor,
 } from './strandMaterial';
 import type { Viewer } from './viewer';
 
+export type ActiveQuality = 'fast' | 'high';
+
 export class HairView {
-  private material: StrandMaterial | null = null;
+  private lines: StrandMaterial | null = null;
+  private strips: StrandMaterial | null = null;
   private color = '#5a3825';
+  private quality: ActiveQuality = 'fast';
+  private current: { strands: StrandArrays; lighting: HairLightingArrays | null } | null = null;
+  private object: THREE.Mesh | THREE.LineSegments | null = null;
+  private dom: DeepOpacityMaps | null = null;
+  private domDirty = false;
+  /** Lighting precompute time of the hair shown (ms, in the worker), null without one. */
+  lightingMs: number | null = null;
 
-  constructor(private readonly viewer: Viewer) {}
+  constructor(
+    private readonly viewer: Viewer,
+    private readonly head: THREE.Mesh | null = null,
+  ) {
+    viewer.onFrame(() => this.renderDeepOpacity());
+  }
 
-  /** Replaces the hair on screen with `strands`; `shown` runs once a frame has drawn it. */
-  show(strands: StrandArrays, shown?: () => void): void {
-    const geometry = buildStrandGeometry(strands.points, strands.strandStart);
-    this.material ??= createStrandMaterial({ color: this.color });
-    const hair = new THREE.LineSegments(geometry, this.material);
+  /** Replaces the hair on screen with `strands` (lit by `lighting` when given); `shown` runs
+   *  once a frame has drawn it. */
+  show(
+    strands: StrandArrays,
+    lighting: HairLightingArrays | null | undefined,
+    shown?: () => void,
+  ): void {
+    this.current = { strands, lighting: lighting ?? null };
+    this.lightingMs = lighting ? lighting.ms : null;
+    if (this.head && lighting) setHeadHairShadow(this.head, lighting.head);
+    const hair = this.build();
     if (shown) {
       const off = this.viewer.onHairShown((h) => {
         if (h !== hair) return;
@@ -31,10 +59,71 @@ export class HairView {
     this.viewer.setHair(hair);
   }
 
+  /** The drawing path: rebuilds the shown hair when it changes. */
+  setQuality(q: ActiveQuality): void {
+    if (q === this.quality) return;
+    this.quality = q;
+    if (this.current) this.viewer.setHair(this.build());
+    this.viewer.requestRender();
+  }
+
+  get activeQuality(): ActiveQuality {
+    return this.quality;
+  }
+
   setColor(css: string): void {
     if (css === this.color) return;
     this.color = css;
-    if (this.material) setHairColor(this.material, css);
+    for (const m of [this.lines, this.strips]) if (m) setHairColor(m, css);
+    this.viewer.requestRender();
+  }
+
+  private build(): THREE.Object3D {
+    const c = this.current;
+    if (!c) throw new Error('no hair to build');
+    const { points, strandStart } = c.strands;
+    const light = c.lighting?.strand ?? null;
+    if (this.quality === 'high') {
+      const geometry = buildStrandStripGeometry(points, strandStart, 0, light);
+      this.strips ??= this.createStripMaterial();
+      const mesh = new THREE.Mesh(geometry, this.strips);
+      this.object = mesh;
+      this.domDirty = this.dom !== null;
+      return mesh;
+    }
+    const geometry = buildStrandGeometry(points, strandStart, 0, light);
+    this.lines ??= createStrandMaterial({ color: this.color, kind: 'lines' });
+    const lines = new THREE.LineSegments(geometry, this.lines);
+    this.object = lines;
+    return lines;
+  }
+
+  private createStripMaterial(): StrandMaterial {
+    const r = this.viewer.renderer;
+    const gl = r.getContext() as WebGL2RenderingContext;
+    const msaa = Number(gl.getParameter(gl.SAMPLES)) > 1;
+    const canDom = r.extensions.has('EXT_color_buffer_float');
+    const m = createStrandMaterial({
+      color: this.color,
+      kind: 'strips',
+      alphaToCoverage: msaa,
+      deepOpacity: canDom,
+    });
+    if (canDom) {
+      this.dom = new DeepOpacityMaps(this.viewer.software ? 512 : 1024);
+      this.dom.bind(m);
+    }
+    return m;
+  }
+
+  /** Deep opacity maps for the shown strips, once per hair revision (the light is fixed). */
+  private renderDeepOpacity(): void {
+    if (!this.domDirty || !this.dom || !this.strips) return;
+    this.domDirty = false;
+    const hair = this.object;
+    if (!(hair instanceof THREE.Mesh)) return;
+    this.dom.render(this.viewer.renderer, hair.geometry, this.strips, this.head);
+    this.dom.refresh(this.strips);
     this.viewer.requestRender();
   }
 }

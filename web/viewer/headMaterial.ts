@@ -1,6 +1,8 @@
 // The head's look: skin shading (MeshStandardMaterial) with per-vertex colours, where the scalp
 // (HeadMesh.scalp) is tinted so the hair-bearing region is visibly marked, eyes are white with
-// an iris, and lips are reddened.
+// an iris, and lips are reddened. The hair's shadow: a per-vertex `hairShadow` attribute
+// (transmittance through the hair towards the key light, from the worker's lighting precompute,
+// 1 = unshadowed) scales the key light (the scene's first directional light).
 import * as THREE from 'three';
 import type { HeadMesh } from '../head/head';
 import { EYE_R, EYE_X, EYE_Y, EYE_Z, HeadPart } from '../head/headSdf';
@@ -80,6 +82,10 @@ export function createHeadGeometry(
   geometry.setAttribute('position', new THREE.BufferAttribute(positions, 3));
   geometry.setAttribute('color', new THREE.BufferAttribute(rgb, 3));
   geometry.setIndex(new THREE.BufferAttribute(indices, 1));
+  geometry.setAttribute(
+    'hairShadow',
+    new THREE.BufferAttribute(new Float32Array(vertices).fill(1), 1),
+  );
   if (head.normals) geometry.setAttribute('normal', new THREE.BufferAttribute(head.normals, 3));
   else geometry.computeVertexNormals();
   geometry.computeBoundingBox();
@@ -95,7 +101,41 @@ export function createHeadMaterial(): THREE.MeshStandardMaterial {
     metalness: 0,
   });
   material.name = 'HeadSkin';
+  material.onBeforeCompile = (shader) => {
+    shader.vertexShader = shader.vertexShader
+      .replace(
+        '#include <common>',
+        '#include <common>\nattribute float hairShadow;\nvarying float vHairShadow;',
+      )
+      .replace('#include <begin_vertex>', '#include <begin_vertex>\nvHairShadow = hairShadow;');
+    // the key light is the scene's first directional light (viewer.ts adds it first)
+    const lights = THREE.ShaderChunk.lights_fragment_begin.replace(
+      'getDirectionalLightInfo( directionalLight, directLight );',
+      `getDirectionalLightInfo( directionalLight, directLight );
+		#if UNROLLED_LOOP_INDEX == 0
+		directLight.color *= mix( 1.0, vHairShadow, HAIR_SHADOW_STRENGTH );
+		#endif`,
+    );
+    shader.fragmentShader = shader.fragmentShader
+      .replace(
+        '#include <common>',
+        `#include <common>\nvarying float vHairShadow;\n#define HAIR_SHADOW_STRENGTH ${HAIR_SHADOW_STRENGTH.toFixed(2)}`,
+      )
+      .replace('#include <lights_fragment_begin>', lights);
+  };
   return material;
+}
+
+/** How much of the key light the hair's shadow takes away (1 = all of it). */
+const HAIR_SHADOW_STRENGTH = 0.85;
+
+/** Sets the hair's shadow on a head made by createHeadMesh: one transmittance per vertex
+ *  (protocol.ts HairLightingArrays.head); ignored when the count does not match. */
+export function setHeadHairShadow(mesh: THREE.Mesh, transmittance: Float32Array): void {
+  const a = mesh.geometry.getAttribute('hairShadow') as THREE.BufferAttribute | undefined;
+  if (!a || a.count !== transmittance.length) return;
+  (a.array as Float32Array).set(transmittance);
+  a.needsUpdate = true;
 }
 
 /** The head as a ready-to-add mesh (geometry views the head's arrays, not copied). */

@@ -1,75 +1,214 @@
-// Hair strands as THREE.LineSegments with Kajiya–Kay shading (SPEC S6.1). Per vertex: the strand
-// tangent, `along` (0 at the root, 1 at the tip) and `strandRandom` (one value in [0, 1] per
-// strand, for colour variation). Uniforms: hair colour, light direction and colour, ambient,
-// two specular lobes (primary white-ish, secondary tinted by the hair colour).
+// Hair strands (SPEC S6.1): geometry and shading.
+// Shading: Kajiya–Kay diffuse and two highlights on shifted tangents (Scheuermann 2004, AMD
+// TressFX): T' = normalize(T + shift·N), N the strand's normal (outward from the head,
+// perpendicular to T); a white primary tilted towards the root and a hair-coloured secondary
+// tilted towards the tip, with their own exponents and weights, the secondary broken up per
+// strand by noise. Per strand (four seeded random bytes): value, hue, where the tip starts to
+// fade (length appearance) and the highlight noise. Roots darker, tips fading out. Lighting is a
+// key light fixed in world space (lighting/keyLight.ts) attenuated by the precomputed
+// transmittance of the hair (the `lighting` attribute: transmittance, ambient occlusion, from
+// the solver worker: lighting/hairLighting.ts), a fill light from behind and a sky ambient, both
+// scaled by the occlusion.
+// Two geometries: GL lines (1 pixel; the Fast quality), and camera-facing strips tapered root →
+// tip (two vertices per point, expanded in the vertex shader, at least a pixel wide with the
+// coverage in alpha: alpha-to-coverage with MSAA; the High quality, which also reads deep
+// opacity maps: deepOpacity.ts).
 import * as THREE from 'three';
+import { FILL_LIGHT_DIRECTION, KEY_LIGHT_DIRECTION } from '../lighting/keyLight';
 
-const vertexShader = /* glsl */ `
+const commonVertex = /* glsl */ `
 attribute vec3 tangent;
 attribute float along;
-attribute float strandRandom;
+attribute vec4 strandRandom;
+attribute vec2 lighting;
 varying vec3 vTangent;
 varying vec3 vWorldPosition;
 varying float vAlong;
-varying float vRandom;
+varying vec4 vRandom;
+varying vec2 vLight;
+varying float vCoverage;
+`;
 
+const linesVertexShader = /* glsl */ `
+${commonVertex}
 void main() {
   vec4 world = modelMatrix * vec4(position, 1.0);
   vWorldPosition = world.xyz;
   vTangent = mat3(modelMatrix) * tangent;
   vAlong = along;
   vRandom = strandRandom;
+  vLight = lighting;
+  vCoverage = 1.0;
+  gl_Position = projectionMatrix * viewMatrix * world;
+}
+`;
+
+/** Strip expansion: vertex 2i and 2i + 1 are the two sides of point i (gl_VertexID parity). In
+ *  the deep-opacity passes (DOM_PASS) the strip faces the light instead of the camera. */
+const stripsVertexShader = /* glsl */ `
+${commonVertex}
+uniform float strandWidth; // world units at the root
+uniform float tipWidth; // fraction of strandWidth at the tip
+uniform float viewportHeight; // pixels of the target being drawn
+#ifdef DOM_PASS
+uniform vec3 domViewDirection; // towards the light
+uniform float domPixelSize; // world units per map texel
+#endif
+
+void main() {
+  vec4 world = modelMatrix * vec4(position, 1.0);
+  vec3 T = normalize(mat3(modelMatrix) * tangent);
+#ifdef DOM_PASS
+  vec3 V = domViewDirection;
+  float pixel = domPixelSize;
+#else
+  vec3 toEye = cameraPosition - world.xyz;
+  float dist = length(toEye);
+  vec3 V = toEye / max(dist, 1e-6);
+  // world size of a pixel at this distance (perspective: 2 d tan(fov / 2) / height)
+  float pixel = 2.0 * dist / (projectionMatrix[1][1] * max(viewportHeight, 1.0));
+  if (projectionMatrix[3][3] > 0.5) pixel = 2.0 / (projectionMatrix[1][1] * max(viewportHeight, 1.0));
+#endif
+  vec3 side = cross(T, V);
+  float sl = length(side);
+  side = sl > 1e-4 ? side / sl : normalize(cross(T, abs(T.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0)));
+  float width = strandWidth * mix(1.0, tipWidth, along);
+  float drawn = max(width, pixel);
+  float s = (gl_VertexID % 2 == 0) ? -0.5 : 0.5;
+  world.xyz += side * (s * drawn);
+  vWorldPosition = world.xyz;
+  vTangent = T;
+  vAlong = along;
+  vRandom = strandRandom;
+  vLight = lighting;
+  vCoverage = width / drawn;
   gl_Position = projectionMatrix * viewMatrix * world;
 }
 `;
 
 const fragmentShader = /* glsl */ `
 uniform vec3 hairColor;
-uniform vec3 lightDirection; // world space, toward the light
-uniform vec3 lightColor;
+uniform vec3 keyDirection; // world space, towards the light (fixed: not the camera's)
+uniform vec3 keyColor;
+uniform vec3 fillDirection;
+uniform vec3 fillColor;
 uniform vec3 ambientColor;
-uniform vec3 headCenter; // world space: hair on the far side of it from the light is shadowed
-uniform float selfShadow; // 0 = off, 1 = full
+uniform vec3 headCenter; // strand normals point away from it
 uniform float diffuseStrength;
-uniform float specularStrength;
-uniform float specularPower;
+uniform float primaryStrength;
+uniform float primaryPower;
+uniform float primaryShift; // tan of the tilt towards the root
 uniform float secondaryStrength;
 uniform float secondaryPower;
-uniform float rootDarkening; // 0 = none; roots are darker by this fraction
-uniform float colorVariation; // ± fraction of brightness varying per strand
+uniform float secondaryShift; // tan of the tilt (negative: towards the tip)
+uniform float rootDarkening; // roots are darker by this fraction
+uniform float valueVariation; // ± fraction of brightness per strand
+uniform float hueVariation; // ± red/blue balance per strand
+uniform float lengthVariation; // ± shift of where the tip fade starts, per strand
+uniform float tipFade; // fraction of the strand over which the tip fades out
+uniform float precomputed; // 1: use the precomputed lighting attribute; 0: ignore it (all lit)
+#ifdef DEEP_OPACITY
+uniform sampler2D domDepth;
+uniform sampler2D domOpacity;
+uniform mat4 domMatrix; // world -> the light's clip space
+uniform vec3 domLayers; // far ends of the 3 layers past the first hair, world units
+uniform float domRange; // world depth of the light camera's [0, 1]
+uniform float domKappa; // optical depth per unit of accumulated opacity
+uniform float domBias; // world units
+#endif
 varying vec3 vTangent;
 varying vec3 vWorldPosition;
 varying float vAlong;
-varying float vRandom;
+varying vec4 vRandom;
+varying vec2 vLight;
+varying float vCoverage;
+
+// Scheuermann / TressFX strand highlight on a (shifted) tangent
+float strandSpecular(vec3 T, vec3 H, float power) {
+  float TH = dot(T, H);
+  float sinTH = sqrt(max(0.0, 1.0 - TH * TH));
+  return smoothstep(-1.0, 0.0, TH) * pow(sinTH, power);
+}
+
+float hash12(vec2 p) {
+  vec3 p3 = fract(vec3(p.xyx) * 0.1031);
+  p3 += dot(p3, p3.yzx + 33.33);
+  return fract((p3.x + p3.y) * p3.z);
+}
+
+#ifdef DEEP_OPACITY
+// Yuksel & Keyser 2008: the opacity accumulated between the first hair seen from the light and
+// this point, interpolated between the 3 layers' cumulative values.
+float deepOpacityTransmittance(vec3 world) {
+  vec4 p = domMatrix * vec4(world, 1.0);
+  vec3 q = p.xyz / p.w * 0.5 + 0.5;
+  if (q.x <= 0.0 || q.y <= 0.0 || q.x >= 1.0 || q.y >= 1.0) return 1.0;
+  float z0 = texture2D(domDepth, q.xy).r;
+  float d = (q.z - z0) * domRange - domBias;
+  if (d <= 0.0) return 1.0;
+  vec3 o = texture2D(domOpacity, q.xy).rgb;
+  float opacity;
+  if (d < domLayers.x) opacity = o.r * d / domLayers.x;
+  else if (d < domLayers.y) opacity = mix(o.r, o.g, (d - domLayers.x) / (domLayers.y - domLayers.x));
+  else if (d < domLayers.z) opacity = mix(o.g, o.b, (d - domLayers.y) / (domLayers.z - domLayers.y));
+  else opacity = o.b;
+  return exp(-domKappa * opacity);
+}
+#endif
 
 void main() {
+  // per strand: value, hue, length appearance, highlight noise (seeded: the same every time)
+  float value = 1.0 + valueVariation * (2.0 * vRandom.x - 1.0);
+  float hue = hueVariation * (2.0 * vRandom.y - 1.0);
+  float fadeStart = clamp(1.0 - tipFade + lengthVariation * (2.0 * vRandom.z - 1.0), 0.3, 0.98);
+  float noise = vRandom.w;
+
+  float alpha = vCoverage * (1.0 - smoothstep(fadeStart, 1.0, vAlong));
+#ifdef ALPHA_TO_COVERAGE
+  if (alpha < 0.02) discard;
+#else
+  // no multisampling: a stable dither stands in for partial coverage
+  if (alpha < 0.999 && alpha <= hash12(gl_FragCoord.xy)) discard;
+#endif
+
   vec3 T = normalize(vTangent);
-  vec3 L = normalize(lightDirection);
   vec3 V = normalize(cameraPosition - vWorldPosition);
+  vec3 L = keyDirection;
+  vec3 radial = vWorldPosition - headCenter;
+  vec3 N = radial - T * dot(radial, T);
+  N = dot(N, N) > 1e-10 ? normalize(N) : V;
+
+  vec3 base = hairColor * value * vec3(1.0 + hue, 1.0, 1.0 - hue);
+  base *= mix(1.0 - rootDarkening, 1.0, smoothstep(0.0, 0.3, vAlong));
+
+  // Kajiya–Kay diffuse: sin(T, L), softened so that strands along the light are not black
   float TL = dot(T, L);
-  float TV = dot(T, V);
-  float sinTL = sqrt(max(0.0, 1.0 - TL * TL));
-  float sinTV = sqrt(max(0.0, 1.0 - TV * TV));
-  // Kajiya-Kay: diffuse ~ sin(T, L); specular peaks where V lies on the cone of reflection
-  // around T: cos(angle(T, V) - (pi - angle(T, L))) = sinTL sinTV - TL TV.
-  float diffuse = sinTL;
-  float cosCone = max(0.0, sinTL * sinTV - TL * TV);
-  float primary = pow(cosCone, specularPower);
-  float secondary = pow(cosCone, secondaryPower);
+  float diffuse = mix(0.25, 1.0, sqrt(max(0.0, 1.0 - TL * TL)));
+  vec3 H = normalize(L + V);
+  float primary = strandSpecular(normalize(T + primaryShift * N), H, primaryPower);
+  float secondary = strandSpecular(normalize(T + secondaryShift * N), H, secondaryPower);
+  // break the highlights up: per strand and in patches along it
+  float patches = 0.5 + 0.5 * sin(vAlong * (9.0 + 14.0 * noise) + 6.2832 * vRandom.y);
+  primary *= mix(0.55, 1.0, fract(noise * 7.31)) * smoothstep(0.02, 0.2, vAlong);
+  secondary *= mix(0.15, 1.0, noise) * mix(0.45, 1.0, patches);
+  // the secondary carries the hair's colour (light that went through the fibre)
+  vec3 tint = sqrt(max(hairColor, vec3(1e-4)));
 
-  float shade = 1.0 + colorVariation * (2.0 * vRandom - 1.0);
-  float root = mix(1.0 - rootDarkening, 1.0, smoothstep(0.0, 0.45, vAlong));
-  vec3 base = hairColor * shade * root;
+  float shadow = mix(1.0, vLight.x, precomputed);
+  float ao = mix(1.0, vLight.y, precomputed);
+#ifdef DEEP_OPACITY
+  shadow = min(shadow, deepOpacityTransmittance(vWorldPosition));
+#endif
+  float TF = dot(T, fillDirection);
+  float fill = mix(0.3, 1.0, sqrt(max(0.0, 1.0 - TF * TF)));
+  float sky = 0.65 + 0.35 * N.y;
 
-  vec3 toPoint = vWorldPosition - headCenter;
-  float facing = dot(normalize(toPoint + 1e-6), L);
-  float lit = mix(1.0, smoothstep(-0.45, 0.35, facing), selfShadow);
-
-  vec3 color = base * ambientColor
-    + lit * lightColor * (diffuseStrength * diffuse * base
-    + specularStrength * primary * vec3(1.0)
-    + secondaryStrength * secondary * hairColor * root);
-  gl_FragColor = vec4(color, 1.0);
+  vec3 color = keyColor * shadow * (diffuseStrength * diffuse * base
+      + primaryStrength * primary * vec3(1.0)
+      + secondaryStrength * secondary * tint * base / max(max(base.r, base.g), max(base.b, 1e-3)))
+    + fillColor * ao * fill * base
+    + ambientColor * ao * sky * base;
+  gl_FragColor = vec4(color, alpha);
   #include <tonemapping_fragment>
   #include <colorspace_fragment>
 }
@@ -77,52 +216,103 @@ void main() {
 
 export interface StrandMaterialOptions {
   color?: THREE.ColorRepresentation; // hair colour (CSS string, hex number or THREE.Color)
-  lightDirection?: [number, number, number]; // world space, toward the light
+  lightDirection?: readonly [number, number, number]; // world space, toward the key light
   lightColor?: THREE.ColorRepresentation;
   ambient?: THREE.ColorRepresentation;
-  headCenter?: [number, number, number];
+  headCenter?: readonly [number, number, number];
+  /** 'lines' (GL lines, Fast) or 'strips' (camera-facing tapered strips, High). */
+  kind?: 'lines' | 'strips';
+  /** Strips: alpha-to-coverage (only with a multisampled target; else a dither). */
+  alphaToCoverage?: boolean;
+  /** Strips: read deep opacity maps (deepOpacity.ts) for the key light's shadow. */
+  deepOpacity?: boolean;
 }
 
 /** Uniform names of the strand material (all `{ value }` objects, settable at any time). */
 export interface StrandUniforms {
   [name: string]: THREE.IUniform;
   hairColor: THREE.IUniform<THREE.Color>;
-  lightDirection: THREE.IUniform<THREE.Vector3>;
-  lightColor: THREE.IUniform<THREE.Color>;
+  keyDirection: THREE.IUniform<THREE.Vector3>;
+  keyColor: THREE.IUniform<THREE.Color>;
+  fillDirection: THREE.IUniform<THREE.Vector3>;
+  fillColor: THREE.IUniform<THREE.Color>;
   ambientColor: THREE.IUniform<THREE.Color>;
   headCenter: THREE.IUniform<THREE.Vector3>;
-  selfShadow: THREE.IUniform<number>;
   diffuseStrength: THREE.IUniform<number>;
-  specularStrength: THREE.IUniform<number>;
-  specularPower: THREE.IUniform<number>;
+  primaryStrength: THREE.IUniform<number>;
+  primaryPower: THREE.IUniform<number>;
+  primaryShift: THREE.IUniform<number>;
   secondaryStrength: THREE.IUniform<number>;
   secondaryPower: THREE.IUniform<number>;
+  secondaryShift: THREE.IUniform<number>;
   rootDarkening: THREE.IUniform<number>;
-  colorVariation: THREE.IUniform<number>;
+  valueVariation: THREE.IUniform<number>;
+  hueVariation: THREE.IUniform<number>;
+  lengthVariation: THREE.IUniform<number>;
+  tipFade: THREE.IUniform<number>;
+  precomputed: THREE.IUniform<number>;
+  strandWidth: THREE.IUniform<number>;
+  tipWidth: THREE.IUniform<number>;
+  viewportHeight: THREE.IUniform<number>;
 }
 
 export type StrandMaterial = THREE.ShaderMaterial & { uniforms: StrandUniforms };
 
+const DEG = Math.PI / 180;
+/** Tilt of the primary highlight's tangent towards the root (its highlight moves ~2× that). */
+export const PRIMARY_SHIFT_DEG = 10;
+/** Tilt of the secondary's tangent towards the tip. */
+export const SECONDARY_SHIFT_DEG = -15;
+
+const viewport = new THREE.Vector4();
+
 export function createStrandMaterial(options: StrandMaterialOptions = {}): StrandMaterial {
-  const light = options.lightDirection ?? [0.45, 0.8, 0.55];
+  const light = options.lightDirection ?? KEY_LIGHT_DIRECTION;
   const center = options.headCenter ?? [0, 0, 0];
+  const strips = options.kind === 'strips';
   const uniforms: StrandUniforms = {
     hairColor: { value: new THREE.Color(options.color ?? '#5a3825') },
-    lightDirection: { value: new THREE.Vector3(...light).normalize() },
-    lightColor: { value: new THREE.Color(options.lightColor ?? '#ffffff') },
-    ambientColor: { value: new THREE.Color(options.ambient ?? '#6e6e6e') },
+    keyDirection: { value: new THREE.Vector3(...light).normalize() },
+    keyColor: { value: new THREE.Color(options.lightColor ?? '#fff6ea').multiplyScalar(1.25) },
+    fillDirection: { value: new THREE.Vector3(...FILL_LIGHT_DIRECTION).normalize() },
+    fillColor: { value: new THREE.Color('#9db4d6').multiplyScalar(0.45) },
+    ambientColor: { value: new THREE.Color(options.ambient ?? '#b4aca4').multiplyScalar(0.55) },
     headCenter: { value: new THREE.Vector3(...center) },
-    selfShadow: { value: 0.7 },
-    diffuseStrength: { value: 0.9 },
-    specularStrength: { value: 0.22 },
-    specularPower: { value: 80 },
-    secondaryStrength: { value: 0.35 },
-    secondaryPower: { value: 12 },
-    rootDarkening: { value: 0.35 },
-    colorVariation: { value: 0.12 },
+    diffuseStrength: { value: 0.95 },
+    primaryStrength: { value: 0.2 },
+    primaryPower: { value: 90 },
+    primaryShift: { value: Math.tan(PRIMARY_SHIFT_DEG * DEG) },
+    secondaryStrength: { value: 0.32 },
+    secondaryPower: { value: 22 },
+    secondaryShift: { value: Math.tan(SECONDARY_SHIFT_DEG * DEG) },
+    rootDarkening: { value: 0.3 },
+    valueVariation: { value: 0.16 },
+    hueVariation: { value: 0.05 },
+    lengthVariation: { value: 0.1 },
+    tipFade: { value: 0.22 },
+    precomputed: { value: 1 },
+    strandWidth: { value: 0.008 },
+    tipWidth: { value: 0.25 },
+    viewportHeight: { value: 750 },
   };
-  const material = new THREE.ShaderMaterial({ uniforms, vertexShader, fragmentShader });
-  material.name = 'KajiyaKayStrands';
+  const defines: Record<string, string> = {};
+  if (options.deepOpacity) defines.DEEP_OPACITY = '';
+  const material = new THREE.ShaderMaterial({
+    uniforms,
+    defines,
+    vertexShader: strips ? stripsVertexShader : linesVertexShader,
+    fragmentShader,
+  });
+  material.name = strips ? 'HairStrips' : 'HairLines';
+  if (strips) {
+    material.side = THREE.DoubleSide;
+    material.alphaToCoverage = !!options.alphaToCoverage;
+    // the strip's width depends on the pixel size of the target being drawn
+    material.onBeforeRender = (renderer) => {
+      renderer.getCurrentViewport(viewport);
+      uniforms.viewportHeight.value = viewport.w;
+    };
+  }
   return material as StrandMaterial;
 }
 
@@ -131,9 +321,9 @@ export function setHairColor(material: StrandMaterial, color: THREE.ColorReprese
   material.uniforms.hairColor.value.set(color);
 }
 
-/** Set the light direction (world space, toward the light; need not be unit). */
+/** Set the key light direction (world space, toward the light; need not be unit). */
 export function setLightDirection(material: StrandMaterial, x: number, y: number, z: number): void {
-  material.uniforms.lightDirection.value.set(x, y, z).normalize();
+  material.uniforms.keyDirection.value.set(x, y, z).normalize();
 }
 
 /** Strands are drawn in this many interleaved groups (see buildStrandGeometry). */
@@ -144,36 +334,32 @@ const LOD_ORDER = Array.from({ length: LOD_GROUPS }, (_, g) => {
   return r;
 });
 
-/** Build indexed LineSegments geometry for strands. Strand s owns points
- *  strandStart[s] .. strandStart[s + 1] − 1 of `points` (points[3 * point + axis]); each pair of
- *  consecutive points is a segment. The `position` attribute views `points` (not copied: do not
- *  change it afterwards). Added per point: `tangent` (unit, central differences; one-sided at the
- *  ends; Int8 normalised), `along` (0 at the root … 1 at the tip; Uint8 normalised) and
- *  `strandRandom` (per strand, in [0, 1]: a hash of the strand index and `colorSeed`; Uint8
- *  normalised).
- *  Level of detail: the index lists strands interleaved (stride LOD_GROUPS, groups in
- *  bit-reversed order), so any prefix of the groups is an even sample of the whole head of hair;
- *  `userData.lodCounts[g]` is the index count of the first g groups (a draw range). */
-export function buildStrandGeometry(
+interface PointAttributes {
+  pointCount: number;
+  tangent: Int8Array;
+  along: Uint8Array;
+  random: Uint8Array; // 4 per point
+  light: Uint8Array; // 2 per point
+  box: THREE.Box3;
+}
+
+/** Per-point attributes shared by lines and strips (see buildStrandGeometry). */
+function pointAttributes(
   points: Float32Array,
   strandStart: Uint32Array,
-  colorSeed = 0,
-): THREE.BufferGeometry {
+  colorSeed: number,
+  lighting: Float32Array | null,
+): PointAttributes {
   const strands = Math.max(0, strandStart.length - 1);
   const pointCount = strands > 0 ? strandStart[strands] : 0;
   if (3 * pointCount > points.length) throw new Error('strandStart exceeds the points array');
-  // compact, normalised attributes: tangent as signed bytes (÷127), along and strandRandom as
-  // unsigned bytes (÷255); the shader reads floats either way
+  const useLight = lighting !== null && lighting.length >= 2 * pointCount;
+  // compact, normalised attributes: tangent as signed bytes (÷127), the rest as unsigned bytes
+  // (÷255); the shader reads floats either way
   const tangent = new Int8Array(3 * pointCount);
   const along = new Uint8Array(pointCount);
-  const random = new Uint8Array(pointCount);
-  let segments = 0;
-  for (let s = 0; s < strands; s++) {
-    const n = strandStart[s + 1] - strandStart[s];
-    if (n > 1) segments += n - 1;
-  }
-  const index = new Uint32Array(2 * segments);
-  let w = 0;
+  const random = new Uint8Array(4 * pointCount);
+  const light = new Uint8Array(2 * pointCount);
   const seedMix = Math.imul(colorSeed >>> 0, 0x9e3779b1);
   let minX = Infinity;
   let minY = Infinity;
@@ -186,7 +372,12 @@ export function buildStrandGeometry(
     const b = strandStart[s + 1];
     const n = b - a;
     if (n <= 0) continue;
-    const r = hash32(s ^ seedMix) >>> 24; // 0..255
+    const h = hash32(s ^ seedMix);
+    const h2 = hash32(h ^ 0x5bd1e995);
+    const r0 = h >>> 24; // value
+    const r1 = (h >>> 16) & 255; // hue
+    const r2 = (h >>> 8) & 255; // length appearance
+    const r3 = h2 >>> 24; // highlight noise
     const inv = n > 1 ? 255 / (n - 1) : 0;
     let tx = 0;
     let ty = 127;
@@ -217,9 +408,67 @@ export function buildStrandGeometry(
       tangent[3 * i + 1] = ty;
       tangent[3 * i + 2] = tz;
       along[i] = Math.round((i - a) * inv);
-      random[i] = r;
+      random[4 * i] = r0;
+      random[4 * i + 1] = r1;
+      random[4 * i + 2] = r2;
+      random[4 * i + 3] = r3;
+      if (useLight) {
+        light[2 * i] = Math.round(255 * clamp01(lighting[2 * i]));
+        light[2 * i + 1] = Math.round(255 * clamp01(lighting[2 * i + 1]));
+      } else {
+        light[2 * i] = 255;
+        light[2 * i + 1] = 255;
+      }
     }
   }
+  const box =
+    pointCount > 0
+      ? new THREE.Box3(new THREE.Vector3(minX, minY, minZ), new THREE.Vector3(maxX, maxY, maxZ))
+      : new THREE.Box3();
+  return { pointCount, tangent, along, random, light, box };
+}
+
+function setBounds(geometry: THREE.BufferGeometry, box: THREE.Box3, empty: boolean): void {
+  // bounds from the attribute loop (three's computeBoundingSphere takes ~40× longer on 4M
+  // points); the sphere around the box is conservative, which is all culling and picking need
+  geometry.boundingBox = box;
+  if (empty) {
+    geometry.boundingSphere = new THREE.Sphere(new THREE.Vector3(), 0);
+    return;
+  }
+  const center = box.getCenter(new THREE.Vector3());
+  const size = box.getSize(new THREE.Vector3());
+  geometry.boundingSphere = new THREE.Sphere(center, 0.5 * size.length());
+}
+
+/** Build indexed LineSegments geometry for strands. Strand s owns points
+ *  strandStart[s] .. strandStart[s + 1] − 1 of `points` (points[3 * point + axis]); each pair of
+ *  consecutive points is a segment. The `position` attribute views `points` (not copied: do not
+ *  change it afterwards). Added per point: `tangent` (unit, central differences; one-sided at the
+ *  ends; Int8 normalised), `along` (0 at the root … 1 at the tip; Uint8 normalised),
+ *  `strandRandom` (4 values per strand, in [0, 1]: value, hue, length appearance, highlight
+ *  noise; a hash of the strand index and `colorSeed`; Uint8 normalised) and `lighting`
+ *  (transmittance, ambient occlusion from `lighting`, 2 per point as protocol.ts
+ *  HairLightingArrays.strand; 1, 1 without it; Uint8 normalised).
+ *  Level of detail: the index lists strands interleaved (stride LOD_GROUPS, groups in
+ *  bit-reversed order), so any prefix of the groups is an even sample of the whole head of hair;
+ *  `userData.lodCounts[g]` is the index count of the first g groups (a draw range). */
+export function buildStrandGeometry(
+  points: Float32Array,
+  strandStart: Uint32Array,
+  colorSeed = 0,
+  lighting: Float32Array | null = null,
+): THREE.BufferGeometry {
+  const attrs = pointAttributes(points, strandStart, colorSeed, lighting);
+  const { pointCount } = attrs;
+  const strands = Math.max(0, strandStart.length - 1);
+  let segments = 0;
+  for (let s = 0; s < strands; s++) {
+    const n = strandStart[s + 1] - strandStart[s];
+    if (n > 1) segments += n - 1;
+  }
+  const index = new Uint32Array(2 * segments);
+  let w = 0;
   const lodCounts = new Uint32Array(LOD_GROUPS + 1);
   for (let g = 0; g < LOD_GROUPS; g++) {
     for (let s = LOD_ORDER[g]; s < strands; s += LOD_GROUPS) {
@@ -234,25 +483,77 @@ export function buildStrandGeometry(
   geometry.userData.lodCounts = lodCounts;
   const used = pointCount === points.length / 3 ? points : points.subarray(0, 3 * pointCount);
   geometry.setAttribute('position', new THREE.BufferAttribute(used, 3));
-  geometry.setAttribute('tangent', new THREE.BufferAttribute(tangent, 3, true));
-  geometry.setAttribute('along', new THREE.BufferAttribute(along, 1, true));
-  geometry.setAttribute('strandRandom', new THREE.BufferAttribute(random, 1, true));
+  geometry.setAttribute('tangent', new THREE.BufferAttribute(attrs.tangent, 3, true));
+  geometry.setAttribute('along', new THREE.BufferAttribute(attrs.along, 1, true));
+  geometry.setAttribute('strandRandom', new THREE.BufferAttribute(attrs.random, 4, true));
+  geometry.setAttribute('lighting', new THREE.BufferAttribute(attrs.light, 2, true));
   geometry.setIndex(new THREE.BufferAttribute(index, 1));
-  // bounds from the loop above (three's computeBoundingSphere takes ~40× longer on 4M points);
-  // the sphere around the box is conservative, which is all culling and picking need
-  if (pointCount > 0) {
-    geometry.boundingBox = new THREE.Box3(
-      new THREE.Vector3(minX, minY, minZ),
-      new THREE.Vector3(maxX, maxY, maxZ),
-    );
-    const center = geometry.boundingBox.getCenter(new THREE.Vector3());
-    const radius = 0.5 * Math.hypot(maxX - minX, maxY - minY, maxZ - minZ);
-    geometry.boundingSphere = new THREE.Sphere(center, radius);
-  } else {
-    geometry.boundingBox = new THREE.Box3();
-    geometry.boundingSphere = new THREE.Sphere(new THREE.Vector3(), 0);
-  }
+  setBounds(geometry, attrs.box, pointCount === 0);
   return geometry;
+}
+
+/** Strip geometry for the same strands: point i becomes vertices 2i and 2i + 1 (the two sides,
+ *  by gl_VertexID parity; same attributes as buildStrandGeometry, each twice) and each segment
+ *  two triangles. The index lists strands in the same level-of-detail order, with
+ *  `userData.lodCounts` (6 index entries per segment). */
+export function buildStrandStripGeometry(
+  points: Float32Array,
+  strandStart: Uint32Array,
+  colorSeed = 0,
+  lighting: Float32Array | null = null,
+): THREE.BufferGeometry {
+  const attrs = pointAttributes(points, strandStart, colorSeed, lighting);
+  const { pointCount } = attrs;
+  const strands = Math.max(0, strandStart.length - 1);
+  const twice = <T extends Int8Array | Uint8Array | Float32Array>(src: T, size: number): T => {
+    const out = new (src.constructor as { new (n: number): T })(2 * src.length);
+    for (let i = 0; i < pointCount; i++)
+      for (let c = 0; c < size; c++) {
+        const v = src[size * i + c];
+        out[2 * size * i + c] = v;
+        out[2 * size * i + size + c] = v;
+      }
+    return out;
+  };
+  let segments = 0;
+  for (let s = 0; s < strands; s++) {
+    const n = strandStart[s + 1] - strandStart[s];
+    if (n > 1) segments += n - 1;
+  }
+  const index = new Uint32Array(6 * segments);
+  let w = 0;
+  const lodCounts = new Uint32Array(LOD_GROUPS + 1);
+  for (let g = 0; g < LOD_GROUPS; g++) {
+    for (let s = LOD_ORDER[g]; s < strands; s += LOD_GROUPS) {
+      for (let i = strandStart[s]; i + 1 < strandStart[s + 1]; i++) {
+        const a = 2 * i;
+        index[w++] = a;
+        index[w++] = a + 1;
+        index[w++] = a + 2;
+        index[w++] = a + 1;
+        index[w++] = a + 3;
+        index[w++] = a + 2;
+      }
+    }
+    lodCounts[g + 1] = w;
+  }
+  const geometry = new THREE.BufferGeometry();
+  geometry.userData.lodCounts = lodCounts;
+  geometry.setAttribute(
+    'position',
+    new THREE.BufferAttribute(twice(points.subarray(0, 3 * pointCount), 3), 3),
+  );
+  geometry.setAttribute('tangent', new THREE.BufferAttribute(twice(attrs.tangent, 3), 3, true));
+  geometry.setAttribute('along', new THREE.BufferAttribute(twice(attrs.along, 1), 1, true));
+  geometry.setAttribute('strandRandom', new THREE.BufferAttribute(twice(attrs.random, 4), 4, true));
+  geometry.setAttribute('lighting', new THREE.BufferAttribute(twice(attrs.light, 2), 2, true));
+  geometry.setIndex(new THREE.BufferAttribute(index, 1));
+  setBounds(geometry, attrs.box, pointCount === 0);
+  return geometry;
+}
+
+function clamp01(v: number): number {
+  return v > 0 ? (v < 1 ? v : 1) : 0;
 }
 
 /** 32-bit integer hash (lowbias32, Chris Wellons). */
