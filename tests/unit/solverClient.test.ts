@@ -247,6 +247,29 @@ describe('SolverClient', () => {
     expect(w.solves()[0].curves.curveStart.length).toBe(3);
   });
 
+  it('moves to another grid: a new worker set up on it solves the open request; the cache is dropped', () => {
+    const { client, workers } = setup();
+    workers[0].reply({ type: 'ready', gridPoints: 8, roots: 0 });
+    client.request(curves(1), DEFAULT_GROWTH, opts(1));
+    workers[0].reply(result(workers[0].solves()[0].id));
+    const bigger = {
+      dims: [2, 3, 2] as [number, number, number],
+      origin: [0, -1, 0] as [number, number, number],
+      step: 1,
+    };
+    client.setGrid(bigger);
+    expect(client.grid).toEqual(bigger);
+    expect(workers[0].terminated).toBe(true);
+    expect(workers).toHaveLength(2);
+    const w = workers[1];
+    expect(w.sent[0]).toMatchObject({ type: 'init', grid: bigger });
+    client.request(curves(1), DEFAULT_GROWTH, opts(1)); // the same state: not from the old grid's cache
+    expect(w.solves()).toHaveLength(0); // waits for the new worker
+    w.reply({ type: 'ready', gridPoints: 12, roots: 0 });
+    expect(w.solves()).toHaveLength(1);
+    expect(client.pending).toBe(true);
+  });
+
   it('gives up after repeated deaths with a message that keeps the session', () => {
     const { workers, errors } = setup();
     for (let i = 0; i < 4; i++) workers[workers.length - 1].die();
