@@ -1,8 +1,13 @@
 // npm run bench:browser — drives the built app in Debian's Chromium and measures, per grid preset
 // and solver: page load -> first hair, five strokes (pointer-up -> first new hair on screen and
 // -> converged hair, preview updates per second while dragging), and the wasm heap size.
+// Also, per config: the idle full-hair frame time (the view drawn with every strand, median of
+// BENCH_FRAMES frames, GPU work included) and the lighting precompute time of the final hair; and,
+// unless BENCH_DENSE=0, the same two for a denser version of the session (roots every 0.55°
+// instead of 1°: ~100K strands with the default preset).
 // Writes bench-results/browser.json and prints a table. A benchmark, not a test: it asserts
 // nothing about speed. The drag is paced like a hand (about 60 pointer events per second).
+// BENCH_DIST=<dir> serves another build (vite build --outDir <dir>) instead of dist/.
 import { type ChildProcess, spawn } from 'node:child_process';
 import { mkdirSync, writeFileSync } from 'node:fs';
 import { chromium, type Page } from '@playwright/test';
@@ -17,6 +22,8 @@ const configs = (process.env.BENCH_CONFIGS ?? '25k:fast,50k:fast,250k:fast,25k:e
     return { grid, solver };
   });
 const STROKES = Number(process.env.BENCH_STROKES ?? 5);
+const FRAMES = Number(process.env.BENCH_FRAMES ?? 5);
+const DENSE = process.env.BENCH_DENSE !== '0';
 const trace = (m: string): void => {
   if (process.env.BENCH_TRACE)
     console.error(`[bench ${new Date().toISOString().slice(11, 23)}] ${m}`);
@@ -46,6 +53,38 @@ async function settled(page: Page, timeout = 600_000): Promise<void> {
     { timeout, polling: 20 },
   );
   await page.evaluate(() => window.hairsketch.idle());
+}
+
+/** Strands shown, the idle full-hair frame time and the final hair's lighting precompute time. */
+async function frameFigures(
+  page: Page,
+): Promise<{ strands: number; frameMs: number; lightingMs: number | null }> {
+  const strands = Number(await page.getByTestId('status').getAttribute('data-strands'));
+  const frameMs = await page.evaluate((n) => window.hairsketch.frameMs(n), FRAMES);
+  // the lighting probe exists once the worker precomputes lighting
+  const lightingMs = await page.evaluate(() => {
+    const api = window.hairsketch as unknown as { lightingMs?: () => number | null };
+    return api.lightingMs ? api.lightingMs() : null;
+  });
+  return { strands, frameMs, lightingMs };
+}
+
+/** Replaces the session with a denser growth (roots every `stepDeg`°) and waits for its hair. */
+async function densify(page: Page, stepDeg: number): Promise<void> {
+  const before = Number(await page.getByTestId('status').getAttribute('data-revision'));
+  await page.evaluate((step) => {
+    const s = window.hairsketch.session() as { growth: Record<string, number> };
+    s.growth.thetaStepDeg = step;
+    s.growth.phiStepDeg = step;
+    window.hairsketch.replaceSession(s);
+  }, stepDeg);
+  await page.waitForFunction(
+    (r) =>
+      Number(document.querySelector('[data-testid="status"]')?.getAttribute('data-revision')) > r,
+    before,
+    { timeout: 600_000 },
+  );
+  await settled(page);
 }
 
 async function stroke(page: Page, i: number): Promise<StrokeResult> {
@@ -96,7 +135,13 @@ async function main(): Promise<void> {
   mkdirSync('bench-results', { recursive: true });
   const server: ChildProcess = spawn(
     'node_modules/.bin/vite',
-    ['preview', '--port', String(PORT), '--strictPort'],
+    [
+      'preview',
+      '--port',
+      String(PORT),
+      '--strictPort',
+      ...(process.env.BENCH_DIST ? ['--outDir', process.env.BENCH_DIST] : []),
+    ],
     { stdio: ['ignore', 'ignore', 'inherit'] },
   );
   server.on('exit', (code) => {
@@ -134,11 +179,19 @@ async function main(): Promise<void> {
         await page.close();
         continue;
       }
+      const idle = await frameFigures(page);
+      trace(`idle frame ${idle.frameMs.toFixed(0)} ms`);
       await page.getByRole('button', { name: 'Stream curve' }).click();
       await page.evaluate(() => window.hairsketch.idle());
       const strokes: StrokeResult[] = [];
       for (let i = 0; i < STROKES; i++) strokes.push(await stroke(page, i));
       const heap = await page.evaluate(() => window.hairsketch.heapBytes());
+      let dense: Awaited<ReturnType<typeof frameFigures>> | null = null;
+      if (DENSE) {
+        await densify(page, 0.55);
+        dense = await frameFigures(page);
+        trace(`dense: ${dense.strands} strands, frame ${dense.frameMs.toFixed(0)} ms`);
+      }
       const row = {
         grid,
         solver,
@@ -147,6 +200,12 @@ async function main(): Promise<void> {
         convergedMedianMs: median(strokes.map((s) => s.convergedMs ?? Number.NaN)),
         previewsPerSecondMedian: median(strokes.map((s) => s.previewsPerSecond)),
         heapMB: heap / 2 ** 20,
+        strands: idle.strands,
+        idleFrameMs: idle.frameMs,
+        lightingMs: idle.lightingMs,
+        denseStrands: dense?.strands ?? null,
+        denseIdleFrameMs: dense?.frameMs ?? null,
+        denseLightingMs: dense?.lightingMs ?? null,
         methods: strokes.map((s) => s.method),
         strokes,
       };
@@ -161,14 +220,14 @@ async function main(): Promise<void> {
   writeFileSync('bench-results/browser.json', `${JSON.stringify(rows, null, 2)}\n`);
   const f = (x: unknown) => (typeof x === 'number' ? x.toFixed(x < 10 ? 1 : 0) : String(x ?? '—'));
   console.log(
-    '\n| grid | solver | load → first hair ms | pointer-up → first new hair ms (median) | → converged ms (median) | previews/s while drawing | wasm heap MB |',
+    '\n| grid | solver | load → first hair ms | pointer-up → first new hair ms (median) | → converged ms (median) | previews/s while drawing | wasm heap MB | strands | idle full-hair frame ms | lighting precompute ms | dense strands | dense frame ms | dense lighting ms |',
   );
-  console.log('| --- | --- | --- | --- | --- | --- | --- |');
+  console.log('| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |');
   for (const r of rows)
     console.log(
       r.error
-        ? `| ${r.grid} | ${r.solver} | ${String(r.error).slice(0, 80)} | | | | |`
-        : `| ${r.grid} | ${r.solver} | ${f(r.loadToFirstHairMs)} | ${f(r.firstHairMedianMs)} | ${f(r.convergedMedianMs)} | ${f(r.previewsPerSecondMedian)} | ${f(r.heapMB)} |`,
+        ? `| ${r.grid} | ${r.solver} | ${String(r.error).slice(0, 80)} | | | | | | | | | | |`
+        : `| ${r.grid} | ${r.solver} | ${f(r.loadToFirstHairMs)} | ${f(r.firstHairMedianMs)} | ${f(r.convergedMedianMs)} | ${f(r.previewsPerSecondMedian)} | ${f(r.heapMB)} | ${f(r.strands)} | ${f(r.idleFrameMs)} | ${f(r.lightingMs)} | ${f(r.denseStrands)} | ${f(r.denseIdleFrameMs)} | ${f(r.denseLightingMs)} |`,
     );
 }
 

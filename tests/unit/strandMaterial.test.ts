@@ -4,6 +4,7 @@
 import { describe, expect, it } from 'vitest';
 import {
   buildStrandGeometry,
+  buildStrandStripGeometry,
   createStrandMaterial,
   LOD_GROUPS,
   setHairColor,
@@ -125,13 +126,65 @@ describe('createStrandMaterial', () => {
     const m = createStrandMaterial({ color: '#ff0000', lightDirection: [0, 2, 0] });
     expect(m.uniforms.hairColor.value.r).toBeCloseTo(1, 6);
     expect(m.uniforms.hairColor.value.g).toBeCloseTo(0, 6);
-    expect(m.uniforms.lightDirection.value.y).toBeCloseTo(1, 6); // normalised
+    expect(m.uniforms.keyDirection.value.y).toBeCloseTo(1, 6); // normalised
     setHairColor(m, '#0000ff');
     expect(m.uniforms.hairColor.value.b).toBeCloseTo(1, 6);
     expect(m.uniforms.hairColor.value.r).toBeCloseTo(0, 6);
     setLightDirection(m, 3, 0, 4);
-    expect(m.uniforms.lightDirection.value.x).toBeCloseTo(0.6, 6);
-    expect(m.fragmentShader).toContain('sinTL * sinTV - TL * TV'); // Kajiya–Kay cone term
+    expect(m.uniforms.keyDirection.value.x).toBeCloseTo(0.6, 6);
     expect(m.vertexShader).toContain('attribute vec3 tangent');
+    expect(m.vertexShader).toContain('attribute vec2 lighting');
+  });
+
+  it('has two highlights on tangents shifted opposite ways, and no head-centre shadow', () => {
+    const m = createStrandMaterial();
+    // Scheuermann / TressFX: T' = normalize(T + shift·N), primary towards the root (+),
+    // secondary towards the tip (−), each with its own exponent and weight
+    expect(m.fragmentShader).toContain('normalize(T + primaryShift * N)');
+    expect(m.fragmentShader).toContain('normalize(T + secondaryShift * N)');
+    expect(m.uniforms.primaryShift.value).toBeGreaterThan(0);
+    expect(m.uniforms.secondaryShift.value).toBeLessThan(0);
+    expect(m.uniforms.primaryPower.value).toBeGreaterThan(m.uniforms.secondaryPower.value);
+    expect(m.fragmentShader).not.toContain('selfShadow');
+    // the key light is fixed in world space: no view-space light
+    expect(m.fragmentShader).toContain('vLight.x');
+  });
+
+  it('strips: tapered, camera-facing, deep opacity maps on request', () => {
+    const m = createStrandMaterial({ kind: 'strips', deepOpacity: true, alphaToCoverage: true });
+    expect(m.vertexShader).toContain('gl_VertexID');
+    expect(m.defines.DEEP_OPACITY).toBe('');
+    expect(m.alphaToCoverage).toBe(true);
+    expect(m.uniforms.tipWidth.value).toBeLessThan(1);
+  });
+});
+
+describe('lighting attribute and strips', () => {
+  const points = new Float32Array([0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 0, 0, 0, 0, -2]);
+  const strandStart = new Uint32Array([0, 3, 5]);
+  const lighting = new Float32Array([1, 1, 0.5, 0.25, 0, 0.75, 0.2, 0.4, 2, -1]);
+
+  it('carries the precomputed transmittance and occlusion per point (1, 1 without them)', () => {
+    const g = buildStrandGeometry(points, strandStart, 0, lighting);
+    const a = g.getAttribute('lighting');
+    expect(a.itemSize).toBe(2);
+    expect(a.getX(1)).toBeCloseTo(0.5, 2);
+    expect(a.getY(1)).toBeCloseTo(0.25, 2);
+    expect(a.getX(4)).toBe(1); // clamped to [0, 1]
+    expect(a.getY(4)).toBe(0);
+    const none = buildStrandGeometry(points, strandStart).getAttribute('lighting');
+    for (let v = 0; v < 5; v++) expect([none.getX(v), none.getY(v)]).toEqual([1, 1]);
+  });
+
+  it('strips double every point and draw two triangles per segment in LOD order', () => {
+    const g = buildStrandStripGeometry(points, strandStart, 0, lighting);
+    expect(g.getAttribute('position').count).toBe(10);
+    expect(g.getAttribute('position').getX(3)).toBe(1); // point 1, second side
+    expect(g.getAttribute('lighting').getX(3)).toBeCloseTo(0.5, 2);
+    const index = Array.from(g.getIndex()?.array ?? []);
+    expect(index.length).toBe(6 * 3);
+    expect(index.slice(0, 6)).toEqual([0, 1, 2, 1, 3, 2]);
+    const lod = g.userData.lodCounts as Uint32Array;
+    expect(lod[LOD_GROUPS]).toBe(index.length);
   });
 });

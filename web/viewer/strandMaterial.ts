@@ -553,7 +553,7 @@ export function buildStrandStripGeometry(
 }
 
 function clamp01(v: number): number {
-  return v > 0 ? (v < 1 ? v : 1) : 0;
+  return v > 0 ? Math.min(v, 1) : 0;
 }
 
 /** 32-bit integer hash (lowbias32, Chris Wellons). */

@@ -1,0 +1,15 @@
+// The lighting the solver worker adds to each result (protocol.ts HairLightingArrays): the
+// precompute of hairLighting.ts towards the fixed key light, timed.
+import type { HairLightingArrays, ScalpMesh, StrandArrays } from '../solver/protocol';
+import { computeHairLighting } from './hairLighting';
+import { KEY_LIGHT_DIRECTION } from './keyLight';
+
+export function resultLighting(
+  strands: StrandArrays,
+  head: Pick<ScalpMesh, 'positions' | 'indices'> | null,
+  now: () => number = () => performance.now(),
+): HairLightingArrays {
+  const t0 = now();
+  const r = computeHairLighting(strands, head, { light: KEY_LIGHT_DIRECTION });
+  return { strand: r.strand, head: r.head, ms: now() - t0 };
+}
