@@ -169,18 +169,20 @@ float HeadDistance::pushOut(float p[3], float margin) const {
   float g[3];
   const float d0 = distance(p[0], p[1], p[2], g);
   float d = d0;
-  // A few Newton steps along the gradient: the distance's gradient has unit length where it
-  // is exact, so one step usually lands on the margin.
-  for (int it = 0; it < 4 && d < margin; ++it) {
+  // Steps along the gradient, which has unit length where the distance is exact (within the
+  // band); deeper inside it is flat (the band's value) and the direction from the mesh centre is
+  // used instead. Each step moves at most the band width, so a point deep inside walks out in
+  // several steps rather than being thrown by a near-zero gradient.
+  for (int it = 0; it < 64 && d < margin; ++it) {
     float len = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
-    if (!(len > 1e-3f)) {
+    if (!(len > 0.5f)) {
       g[0] = p[0] - centre_.x();
       g[1] = p[1] - centre_.y();
       g[2] = p[2] - centre_.z();
       len = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
       if (!(len > 0)) return d0;
     }
-    const float move = (margin - d) / len;  // along the unit gradient g / len
+    const float move = std::min(margin - d, far_);
     for (int e = 0; e < 3; ++e) p[e] += move * g[e] / len;
     d = distance(p[0], p[1], p[2], g);
   }

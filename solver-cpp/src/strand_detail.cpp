@@ -279,16 +279,24 @@ void forNearGuides(const CellTable& table, const std::vector<int32_t>& next, con
           if (!f(k)) return;
 }
 
+// cos 60°: a guide whose heading is further from a follower's than this does not take it.
+constexpr double kSameWay = 0.5;
+
 // Clump of one group's strands (members, each with >= 2 points), in place.
 void clumpGroup(const ClumpParams& c, const std::vector<uint32_t>& members,
                 const std::vector<uint32_t>& key, uint32_t seed, Strands& strands, Work& w) {
   const size_t M = members.size();
   const uint32_t* start = strands.strandStart.data();
   float* P = strands.points.data();
-  std::vector<V3> roots(M);
+  std::vector<V3> roots(M), heading(M);
   for (size_t m = 0; m < M; ++m) {
-    const float* r = P + 3 * size_t(start[members[m]]);
+    const size_t a = start[members[m]], n = start[members[m] + 1] - a;
+    const float* r = P + 3 * a;
     roots[m] = V3(r[0], r[1], r[2]);
+    // where the strand sets off to: root to its point a few steps on (unit, or zero)
+    const float* q = P + 3 * (a + std::min<size_t>(n - 1, 4));
+    const V3 d = V3(q[0], q[1], q[2]) - roots[m];
+    heading[m] = d.norm() > 0 ? V3(d / d.norm()) : V3(V3::Zero());
   }
   // Seeded visiting order: by a hash of (seed, key), then key, then position.
   std::vector<std::tuple<uint32_t, uint32_t, uint32_t>> order(M);
@@ -342,6 +350,8 @@ void clumpGroup(const ClumpParams& c, const std::vector<uint32_t>& members,
     int32_t best = -1;
     double bestD2 = std::numeric_limits<double>::infinity();
     forNearGuides(table, next, roots[m], inv, [&](int32_t k) {
+      // a guide that sets off the other way (across a parting) does not take this strand
+      if (heading[size_t(k)].dot(heading[m]) < kSameWay) return true;
       const double d2 = (roots[size_t(k)] - roots[m]).squaredNorm();
       if (d2 < bestD2) {
         bestD2 = d2;
@@ -349,7 +359,7 @@ void clumpGroup(const ClumpParams& c, const std::vector<uint32_t>& members,
       }
       return true;
     });
-    if (best < 0) continue;  // cannot happen: a guide closer than g stopped m being one
+    if (best < 0) continue;  // no guide near that sets off the same way: not clumped
     const uint32_t s = members[m], G = members[size_t(best)];
     const size_t count = start[s + 1] - start[s], gCount = start[G + 1] - start[G];
     const float* gp = P + 3 * size_t(start[G]);
@@ -357,7 +367,9 @@ void clumpGroup(const ClumpParams& c, const std::vector<uint32_t>& members,
     const double LG = gArc[gCount - 1];
     load(P + 3 * size_t(start[s]), count, w.p);
     const double L = arcLengths(w.p, w.s);
-    if (!(L > 0)) continue;
+    if (!(L > 0) || !(LG > 0)) continue;
+    // a strand less than half as long as its guide (stubble near a hairline) is pulled less
+    const double reach = std::min(1.0, 2 * L / LG);
     const double phi = spread ? kTwoPi * strandRng(seed, key[s], kStreamSpread).uniform() : 0;
     const double cPhi = std::cos(phi), sPhi = std::sin(phi);
     size_t j = 0;
@@ -366,7 +378,7 @@ void clumpGroup(const ClumpParams& c, const std::vector<uint32_t>& members,
       const double u = locate(gArc, gCount, x * LG, j);
       const V3 a(gp[3 * j], gp[3 * j + 1], gp[3 * j + 2]);
       const V3 b(gp[3 * j + 3], gp[3 * j + 4], gp[3 * j + 5]);
-      const double wgt = c.factor * S(x);
+      const double wgt = c.factor * reach * S(x);
       w.p[i] = (1 - wgt) * w.p[i] + wgt * lerp(a, b, u);
       if (spread) {
         const size_t o = guideAt[size_t(best)] + j;

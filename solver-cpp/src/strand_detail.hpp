@@ -14,9 +14,12 @@
 //   Poisson-disc pass over the roots in a seeded random order (sorted by a hash of seed and key):
 //   a strand becomes a guide when no guide root lies closer than g to its root (g = 0: every strand
 //   is its own guide, nothing moves). Every other strand follows its nearest guide G (lookup in a
-//   uniform hash grid of cell size g): for every point but the root,
-//     p_i <- (1 - w) p_i + w G(x_i) + t x_i (cos phi N_G(x_i) + sin phi B_G(x_i)),  w = f S(x_i;
-//     s),
+//   uniform hash grid of cell size g) among those that set off the same way (headings, root to
+//   the 4th point, within 60°: no clump across a parting; none such: not clumped): for every
+//   point but the root,
+//     p_i <- (1 - w) p_i + w G(x_i) + t x_i (cos phi N_G(x_i) + sin phi B_G(x_i)),
+//     w = f min(1, 2 L / L_G) S(x_i; s)  (a strand under half its guide's length is pulled
+//     less: stubble near a hairline is not stretched towards a long guide),
 //   G(x) being the guide's point at normalised arc length x (interpolated), N_G, B_G its
 //   rotation-minimising frame there and phi a seeded per-strand angle. Guides keep their shape and
 //   strands follow the guides' un-clumped shape. f = 1, s = 0, t = 0: tips land on the guide's tip.

@@ -147,3 +147,18 @@ TEST(HeadDistance, AFieldPointingStraightInStopsTheStrand) {
   ASSERT_TRUE(growStrands(g, field, {Eigen::Vector3f(0, 1, 0)}, prm, s, 1 << 20, &hd).ok());
   EXPECT_LE(s.points.size() / 3, 2u);  // at most a root and the first point at the margin
 }
+
+TEST(HeadDistance, PushOutBringsADeepPointJustOutsideNearWhereItWas) {
+  const auto m = sphere();
+  HeadDistance hd;
+  ASSERT_TRUE(hd.build(view(m), 0.03, 3).ok());
+  // 0.3, 0.6 and 0.9 deep (the grid's band is 0.09: the distance is flat there)
+  for (float depth : {0.3f, 0.6f, 0.9f}) {
+    const Eigen::Vector3f dir = Eigen::Vector3f(0.3f, 0.8f, -0.5f).normalized();
+    float p[3] = {dir.x() * (1 - depth), dir.y() * (1 - depth), dir.z() * (1 - depth)};
+    hd.pushOut(p, 0.02f);
+    const Eigen::Vector3f q(p[0], p[1], p[2]);
+    EXPECT_NEAR(q.norm(), 1.02f, 3e-3f) << depth;         // at the margin, hand value 1 + 0.02
+    EXPECT_GT(q.normalized().dot(dir), 0.999f) << depth;  // straight out from the centre
+  }
+}

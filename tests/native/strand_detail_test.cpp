@@ -552,3 +552,42 @@ TEST(StrandDetail, HundredThousandStrandsOfSixtyPointsTakeUnderASecondOrTwo) {
 #endif
   }
 }
+
+TEST(StrandDetail, ClumpNeverPullsAcrossAPartingNorStretchesStubble) {
+  // Two strands 0.05 apart setting off in opposite directions (either side of a parting): each is
+  // the other's nearest root, but neither takes the other as its guide.
+  {
+    const std::vector<Strand> in = {straight(V3(0, 0, 0), V3(1, 0.2, 0), 30, 0.05),
+                                    straight(V3(0.05, 0, 0), V3(-1, 0.2, 0), 30, 0.05)};
+    Strands s = makeStrands(in);
+    DetailParams d;
+    d.clump.factor = 1;
+    d.clump.shape = 0;
+    d.clump.guideDistance = 0.1;
+    ASSERT_TRUE(apply(d, s).ok());
+    for (size_t k = 0; k < in.size(); ++k)
+      EXPECT_LT((strandOf(s, k).back() - in[k].back()).norm(), 1e-6) << k;  // float storage
+  }
+  // A 2-point stub (0.06 long) beside a 3-long guide going the same way: pulled by
+  // f * min(1, 2 L / L_G) = 0.04 of the way at its tip, not halfway up the guide.
+  {
+    const std::vector<Strand> in = {straight(V3(0, 0, 0), V3(0, 1, 0), 61, 0.05),
+                                    straight(V3(0.03, 0, 0), V3(0, 1, 0), 2, 0.06)};
+    Strands s = makeStrands(in);
+    DetailParams d;
+    d.clump.factor = 1;
+    d.clump.shape = 0;
+    d.clump.guideDistance = 0.1;
+    ASSERT_TRUE(apply(d, s).ok());
+    const Strand a = strandOf(s, 0), b = strandOf(s, 1);
+    // whichever is the guide keeps its shape; the other moves by at most 4 % of the gap
+    const bool stubIsGuide = (b.back() - in[1].back()).norm() < 1e-6;
+    if (!stubIsGuide) {
+      const V3 target = in[0].back();  // the guide's tip (x = 1)
+      const V3 moved = b.back() - in[1].back();
+      EXPECT_NEAR(moved.norm(), 0.04 * (target - in[1].back()).norm(), 1e-6);
+    } else {
+      EXPECT_LT((a.back() - in[0].back()).norm(), 1e-6);  // a long strand is never pulled
+    }                                                     // onto a short guide's tip far away
+  }
+}
