@@ -1,6 +1,9 @@
 // npm run screenshots — loads each preset in the built app (Debian's Chromium) and saves the
-// 3D view to docs/screenshots/<preset>-front.png and -back.png once the final hair is drawn.
+// 3D view to docs/screenshots/<preset>-front.png, -side.png and -back.png once the final hair is
+// drawn.
 //   npx tsx scripts/screenshots.ts [preset ...]     (default: every preset in PRESET_NAMES)
+// SHOT_QUALITY=fast|high|auto picks the Quality setting (default: the app's Auto); SHOT_OUT=<dir>
+// writes elsewhere; SHOT_DIST=<dir> serves another build (vite build --outDir <dir>).
 import { type ChildProcess, spawn } from 'node:child_process';
 import { mkdirSync } from 'node:fs';
 import http from 'node:http';
@@ -10,6 +13,7 @@ import { PRESET_NAMES } from '../web/model/presets';
 type V3 = [number, number, number];
 const VIEWS: Array<[string, V3]> = [
   ['front', [2.6, 0.9, 7.0]],
+  ['side', [7.4, 0.6, -0.6]],
   ['back', [-4.2, 1.6, -5.6]],
 ];
 const PORT = Number(process.env.SHOT_PORT ?? 4195);
@@ -39,10 +43,17 @@ async function main(): Promise<void> {
     process.exit(2);
   }
   const presets = asked.length ? asked : PRESET_NAMES.filter((p) => p !== 'empty');
-  mkdirSync('docs/screenshots', { recursive: true });
+  const out = process.env.SHOT_OUT ?? 'docs/screenshots';
+  mkdirSync(out, { recursive: true });
   const server: ChildProcess = spawn(
     'node_modules/.bin/vite',
-    ['preview', '--port', String(PORT), '--strictPort'],
+    [
+      'preview',
+      '--port',
+      String(PORT),
+      '--strictPort',
+      ...(process.env.SHOT_DIST ? ['--outDir', process.env.SHOT_DIST] : []),
+    ],
     { stdio: ['ignore', 'ignore', 'inherit'] },
   );
   const browser = await chromium.launch({
@@ -54,6 +65,11 @@ async function main(): Promise<void> {
     for (const preset of presets) {
       const page = await browser.newPage({ viewport: { width: 900, height: 800 } });
       await page.goto(`${BASE}/?preset=${preset}`);
+      const q = process.env.SHOT_QUALITY;
+      if (q === 'fast' || q === 'high' || q === 'auto') {
+        const setting: 'fast' | 'high' | 'auto' = q;
+        await page.evaluate((s) => window.hairsketch.setQuality(s), setting);
+      }
       await page.waitForFunction(
         () => {
           const el = document.querySelector('[data-testid="status"]') as HTMLElement | null;
@@ -73,7 +89,7 @@ async function main(): Promise<void> {
       for (const [view, position] of VIEWS) {
         await page.evaluate(([p]) => window.hairsketch.setCamera(p, [0, -0.55, 0]), [position]);
         await page.evaluate(() => window.hairsketch.idle());
-        const file = `docs/screenshots/${preset}-${view}.png`;
+        const file = `${out}/${preset}-${view}.png`;
         await page.getByTestId('viewport').screenshot({ path: file });
         console.log(`${preset}: ${file}`);
       }

@@ -52,6 +52,10 @@ export interface ActionTarget {
   setOrbitSpeed(factor: number): void;
   cancel(): void;
   toggleHelp(): void;
+  /** The hair's Quality setting (app/quality.ts): its button label, and the next setting.
+   *  Optional: without them there is no Quality action. */
+  qualityLabel?(): string;
+  cycleQuality?(): void;
   toggleDetailPanel(): void;
   detailPanelOpen(): boolean;
   display(key: DisplayKey): boolean;
@@ -206,6 +210,21 @@ export function buildActions(t: ActionTarget): Action[] {
       toolbar: 'more',
       run: () => t.resetView(),
     },
+    ...(t.cycleQuality && t.qualityLabel
+      ? [
+          {
+            id: 'view.quality',
+            label: 'Quality',
+            title:
+              'Hair drawing quality: Auto (High on a GPU, Fast on a software renderer), Fast (lines, precomputed lighting) or High (tapered strips, deep opacity shadow maps)',
+            shortcuts: ['q'],
+            group: 'view',
+            toolbar: 'more',
+            run: () => t.cycleQuality?.(),
+            stateLabel: () => t.qualityLabel?.() ?? 'Quality',
+          } satisfies Action,
+        ]
+      : []),
     {
       id: 'view.orbitSlower',
       label: 'Slower orbit',

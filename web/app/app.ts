@@ -25,6 +25,7 @@ import { type ExportWiring, wireExport } from './exportActions';
 import { HairPresenter } from './hairPresenter';
 import { bindInput } from './input';
 import { OverlayPresenter } from './overlayPresenter';
+import { QualityControl } from './quality';
 import { LinkWriter, openSessionFile, openSessionLink } from './sessionIO';
 import { SolverBridge } from './solverBridge';
 import { StatusPresenter } from './statusPresenter';
@@ -48,7 +49,8 @@ export function startApp(): void {
   line.set('loading', 'Building the head…');
   const viewer = new Viewer(byId('viewport') as HTMLCanvasElement);
   const head = Head.builtin();
-  viewer.addHead(createHeadMesh(head.mesh));
+  const headMesh = createHeadMesh(head.mesh);
+  viewer.addHead(headMesh);
 
   const grid = gridForPreset(opts.grid);
   const initial = applyPreset(
@@ -58,7 +60,9 @@ export function startApp(): void {
   );
   const editor = new Editor(initial, opts.preset === 'empty' ? 'stream' : 'select');
 
-  const hair = new HairPresenter(viewer, new HairView(viewer), line, initial.hairColor);
+  const hairView = new HairView(viewer, headMesh);
+  const quality = new QualityControl(hairView, viewer);
+  const hair = new HairPresenter(viewer, hairView, line, initial.hairColor);
   const bridge = new SolverBridge(editor, {
     grid: gridForSession(initial.grid, initial.curves),
     solver: opts.solver,
@@ -110,6 +114,11 @@ export function startApp(): void {
     detailPanelOpen: () => !!detailPanel?.open,
     display: (k) => overlays.display[k],
     setDisplay: (k, on) => overlays.setDisplay(k, on),
+    qualityLabel: () => quality.label(),
+    cycleQuality: () => {
+      quality.cycle();
+      toolbar.refresh();
+    },
   });
   const toolbar = buildToolbar(byId('toolbar'), actions, {
     hairColor: (css) => editor.run({ kind: 'setHairColor', color: css }),
@@ -223,6 +232,7 @@ export function startApp(): void {
       hair.awaitingFrame ||
       (tool.state !== 'idle' && tool.state !== 'pressed'),
     lastPointerUp: () => lastPointerUp,
+    quality,
     exporter: exporting.exporter,
   });
 }

@@ -9,6 +9,7 @@ import type { DisplayState } from '../ui/displayToggles';
 import type { Viewer } from '../viewer/viewer';
 import type { HairPresenter } from './hairPresenter';
 import type { OverlayPresenter } from './overlayPresenter';
+import { isQualitySetting, type QualityControl } from './quality';
 import { loadSession } from './sessionIO';
 import type { SolverBridge } from './solverBridge';
 
@@ -47,6 +48,13 @@ export interface HairsketchTestApi {
     view: 'front' | 'back' | 'left' | 'right' | 'top',
     radius?: number,
   ): { points: number; bare: number; fraction: number; bareAt: [number, number][] };
+  /** The Quality setting ('auto' | 'fast' | 'high'), the drawing path active now and the
+   *  unmasked WebGL renderer it was chosen from. */
+  quality(): { setting: string; active: 'fast' | 'high'; renderer: string };
+  /** Sets the Quality setting as the Quality button does (persisted view state). */
+  setQuality(setting: 'auto' | 'fast' | 'high'): void;
+  /** Benchmark probe: the lighting precompute time (ms, in the worker) of the hair shown. */
+  lightingMs(): number | null;
   /** The displayed strands as plain arrays (layout of protocol.ts StrandArrays). */
   strands(): { points: number[]; strandStart: number[] } | null;
   /** Displayed strand segments with a point (either end or the middle) deeper than `depth`
@@ -90,6 +98,7 @@ export interface TestApiParts {
   /** Work is pending (a solve, an avoidance request, a stroke being drawn). */
   busy(): boolean;
   lastPointerUp(): number;
+  quality?: QualityControl;
   exporter?: { crash(): void };
 }
 
@@ -153,6 +162,13 @@ export function installTestApi(app: TestApiParts): void {
     },
     display: () => ({ ...app.overlays.display }),
     displayInfo: () => app.overlays.info(),
+    quality: () =>
+      app.quality?.info() ?? { setting: 'fast', active: 'fast', renderer: viewer.rendererName },
+    setQuality: (s) => {
+      if (!isQualitySetting(s)) throw new Error(`setQuality: unknown setting ${String(s)}`);
+      app.quality?.set(s);
+    },
+    lightingMs: () => app.quality?.lightingMs() ?? null,
     strands() {
       const s = hair.strands;
       return s ? { points: Array.from(s.points), strandStart: Array.from(s.strandStart) } : null;

@@ -167,8 +167,10 @@ void main() {
 #ifdef ALPHA_TO_COVERAGE
   if (alpha < 0.02) discard;
 #else
-  // no multisampling: a stable dither stands in for partial coverage
-  if (alpha < 0.999 && alpha <= hash12(gl_FragCoord.xy)) discard;
+  // no multisampling: each strand ends somewhere in its fade (ragged ends, not pixel noise), and
+  // a thin strip's partial coverage becomes a stable dither
+  if (vAlong > mix(fadeStart, 1.0, fract(noise * 13.7))) discard;
+  if (vCoverage < 0.999 && vCoverage <= hash12(gl_FragCoord.xy)) discard;
 #endif
 
   vec3 T = normalize(vTangent);
@@ -273,20 +275,20 @@ export function createStrandMaterial(options: StrandMaterialOptions = {}): Stran
   const uniforms: StrandUniforms = {
     hairColor: { value: new THREE.Color(options.color ?? '#5a3825') },
     keyDirection: { value: new THREE.Vector3(...light).normalize() },
-    keyColor: { value: new THREE.Color(options.lightColor ?? '#fff6ea').multiplyScalar(1.25) },
+    keyColor: { value: new THREE.Color(options.lightColor ?? '#fff6ea').multiplyScalar(1.05) },
     fillDirection: { value: new THREE.Vector3(...FILL_LIGHT_DIRECTION).normalize() },
     fillColor: { value: new THREE.Color('#9db4d6').multiplyScalar(0.45) },
     ambientColor: { value: new THREE.Color(options.ambient ?? '#b4aca4').multiplyScalar(0.55) },
     headCenter: { value: new THREE.Vector3(...center) },
     diffuseStrength: { value: 0.95 },
-    primaryStrength: { value: 0.2 },
+    primaryStrength: { value: 0.14 },
     primaryPower: { value: 90 },
     primaryShift: { value: Math.tan(PRIMARY_SHIFT_DEG * DEG) },
-    secondaryStrength: { value: 0.32 },
-    secondaryPower: { value: 22 },
+    secondaryStrength: { value: 0.4 },
+    secondaryPower: { value: 30 },
     secondaryShift: { value: Math.tan(SECONDARY_SHIFT_DEG * DEG) },
     rootDarkening: { value: 0.3 },
-    valueVariation: { value: 0.16 },
+    valueVariation: { value: 0.24 },
     hueVariation: { value: 0.05 },
     lengthVariation: { value: 0.1 },
     tipFade: { value: 0.22 },

@@ -12,6 +12,7 @@
 // hair, and faint where hidden (overlayStyle.ts).
 import * as THREE from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
+import { KEY_LIGHT_POSITION } from '../lighting/keyLight';
 import type { Vec3 } from '../model/vec3';
 import {
   curveRgb,
@@ -75,10 +76,12 @@ export class Viewer {
   private readonly displayGroup = new THREE.Group();
   private readonly guideGroup = new THREE.Group();
   private draft: THREE.Object3D | null = null;
-  private hair: THREE.LineSegments | null = null;
+  private hair: THREE.LineSegments | THREE.Mesh | null = null;
   private dirty = true;
   /** WebGL runs on a software rasteriser (no GPU). */
   readonly software: boolean;
+  /** The unmasked WebGL renderer (WEBGL_debug_renderer_info), or the masked one without it. */
+  readonly rendererName: string;
   /** Reasons the view is interactive now (e.g. 'orbit', 'stroke', 'settling'). */
   private readonly holds = new Set<string>();
   /** Hair index count an interactive frame may draw (until a slow frame is seen: Infinity on a
@@ -109,7 +112,8 @@ export class Viewer {
   constructor(readonly canvas: HTMLCanvasElement) {
     // Multisampling costs ~2x per frame on a software rasteriser (SwiftShader, llvmpipe), where
     // frame time, not the solver, bounds interactivity: it is on only for a hardware GPU.
-    this.software = isSoftwareGl();
+    this.rendererName = glRendererName();
+    this.software = /swiftshader|llvmpipe|softpipe|software/i.test(this.rendererName);
     this.hairBudget = this.software ? SOFTWARE_INITIAL_BUDGET : Number.POSITIVE_INFINITY;
     this.renderer = new THREE.WebGLRenderer({
       canvas,
@@ -133,7 +137,7 @@ export class Viewer {
 
     this.scene.add(new THREE.HemisphereLight(0xffffff, 0x6b5d52, 1.4));
     const key = new THREE.DirectionalLight(0xffffff, 1.6);
-    key.position.set(3, 5, 4);
+    key.position.set(...KEY_LIGHT_POSITION); // fixed in world space: the hair's lighting is precomputed
     this.scene.add(key);
     const rim = new THREE.DirectionalLight(0xbfd4ff, 0.6);
     rim.position.set(-4, 2, -3);
@@ -372,7 +376,8 @@ export class Viewer {
       disposeObject(child);
     }
     if (object) this.hairGroup.add(object);
-    this.hair = object instanceof THREE.LineSegments ? object : null;
+    this.hair =
+      object instanceof THREE.LineSegments || object instanceof THREE.Mesh ? object : null;
     this.requestRender();
   }
 
@@ -561,15 +566,15 @@ function basePixelRatio(): number {
   return Math.min(window.devicePixelRatio || 1, 2);
 }
 
-/** Whether WebGL here is a software rasteriser, from the unmasked renderer string of a probe
- *  context (released at once). */
-function isSoftwareGl(): boolean {
+/** The unmasked renderer string of a probe context (released at once): tells a software
+ *  rasteriser from a GPU. */
+function glRendererName(): string {
   const gl = document.createElement('canvas').getContext('webgl2');
-  if (!gl) return false;
+  if (!gl) return '';
   const info = gl.getExtension('WEBGL_debug_renderer_info');
   const name = String(gl.getParameter(info ? info.UNMASKED_RENDERER_WEBGL : gl.RENDERER));
   gl.getExtension('WEBGL_lose_context')?.loseContext();
-  return /swiftshader|llvmpipe|softpipe|software/i.test(name);
+  return name;
 }
 
 function clearGroup(group: THREE.Group): void {

@@ -1,0 +1,87 @@
+// The Quality setting end to end: the button cycles Auto → Fast → High → Auto, the drawing path
+// follows (Auto is Fast on a software rasteriser such as this SwiftShader, High on a GPU), High
+// (strips, deep opacity maps) draws without GL errors even here, the setting survives a reload
+// (view state, not the session), and the hair arrives with its precomputed lighting.
+import { expect, type Page, test } from '@playwright/test';
+import { settled, watchConsole } from './helpers';
+
+const SCENE = '/?strands=1500'; // SwiftShader renders slowly: a small strand count keeps it quick
+
+const quality = (page: Page) => page.evaluate(() => window.hairsketch.quality());
+
+/** The WebGL error flag of the app's canvas after the next frame (0 = none). */
+const glError = (page: Page) =>
+  page.evaluate(async () => {
+    await window.hairsketch.idle();
+    const canvas = document.querySelector('[data-testid="viewport"]') as HTMLCanvasElement;
+    const gl = canvas.getContext('webgl2') as WebGL2RenderingContext;
+    return gl.getError();
+  });
+
+/** Pixels of the centre of the view that differ from the background (the hair and head). */
+const drawnPixels = (page: Page) =>
+  page.evaluate(() => {
+    const canvas = document.querySelector('[data-testid="viewport"]') as HTMLCanvasElement;
+    const gl = canvas.getContext('webgl2') as WebGL2RenderingContext;
+    const w = 64;
+    const px = new Uint8Array(4 * w * w);
+    gl.readPixels(
+      (gl.drawingBufferWidth - w) >> 1,
+      (gl.drawingBufferHeight - w) >> 1,
+      w,
+      w,
+      gl.RGBA,
+      gl.UNSIGNED_BYTE,
+      px,
+    );
+    let n = 0;
+    for (let i = 0; i < px.length; i += 4) if (Math.abs(px[i] - 0xe9) > 8) n++;
+    return n;
+  });
+
+test('Quality switches the drawing path, High draws without GL errors, and the setting persists', async ({
+  page,
+}) => {
+  const errors = watchConsole(page);
+  await page.goto(SCENE);
+  await page.evaluate(() => localStorage.removeItem('hairsketch.quality'));
+  await page.reload();
+  await settled(page);
+
+  const first = await quality(page);
+  expect(first.setting).toBe('auto');
+  const software = /swiftshader|llvmpipe|softpipe|software/i.test(first.renderer);
+  expect(first.active).toBe(software ? 'fast' : 'high');
+  const button = page.getByRole('button', { name: /^Quality/ });
+  await expect(button).toHaveText(`Quality: Auto (${software ? 'Fast' : 'High'})`);
+  // the worker lit the hair
+  expect(await page.evaluate(() => window.hairsketch.lightingMs())).not.toBeNull();
+
+  await button.click();
+  await expect(button).toHaveText('Quality: Fast');
+  expect(await quality(page)).toMatchObject({ setting: 'fast', active: 'fast' });
+  expect(await glError(page)).toBe(0);
+  expect(await drawnPixels(page)).toBeGreaterThan(500);
+
+  await button.click();
+  await expect(button).toHaveText('Quality: High');
+  expect(await quality(page)).toMatchObject({ setting: 'high', active: 'high' });
+  expect(await glError(page)).toBe(0);
+  expect(await drawnPixels(page)).toBeGreaterThan(500);
+  expect((await page.getByTestId('status').getAttribute('data-state')) ?? '').toBe('ready');
+
+  // view state: kept across a reload, not part of the session or its link
+  await page.reload();
+  await settled(page);
+  expect(await quality(page)).toMatchObject({ setting: 'high', active: 'high' });
+  expect(await glError(page)).toBe(0);
+  const session = JSON.stringify(await page.evaluate(() => window.hairsketch.session()));
+  expect(session).not.toContain('quality');
+
+  // the shortcut cycles on: High → Auto
+  await page.keyboard.press('q');
+  await expect(button).toHaveText(`Quality: Auto (${software ? 'Fast' : 'High'})`);
+  expect((await quality(page)).active).toBe(software ? 'fast' : 'high');
+  expect(await glError(page)).toBe(0);
+  expect(errors.filter((e) => !/GPU stall|GL Driver Message/.test(e))).toEqual([]);
+});

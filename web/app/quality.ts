@@ -1,0 +1,113 @@
+// The "Quality" setting (view state: kept in localStorage, not in the session or its history):
+// Auto, Fast or High. Fast draws GL lines lit by the worker's precomputed lighting; High adds
+// camera-facing tapered strips with alpha-to-coverage and deep opacity maps. Auto is High where
+// the unmasked WebGL renderer is a real GPU and Fast on a software rasteriser (SwiftShader,
+// llvmpipe), where a High frame costs several times a Fast one.
+
+export type QualitySetting = 'auto' | 'fast' | 'high';
+export type ActiveQuality = 'fast' | 'high';
+
+export const QUALITY_SETTINGS: readonly QualitySetting[] = ['auto', 'fast', 'high'];
+const STORAGE_KEY = 'hairsketch.quality';
+
+export function isQualitySetting(v: unknown): v is QualitySetting {
+  return typeof v === 'string' && (QUALITY_SETTINGS as readonly string[]).includes(v);
+}
+
+/** The drawing path a setting chooses on this renderer. */
+export function activeQuality(setting: QualitySetting, software: boolean): ActiveQuality {
+  if (setting === 'auto') return software ? 'fast' : 'high';
+  return setting;
+}
+
+/** The setting after `s` in the Quality button's cycle (Auto → Fast → High → Auto). */
+export function nextQuality(s: QualitySetting): QualitySetting {
+  return QUALITY_SETTINGS[(QUALITY_SETTINGS.indexOf(s) + 1) % QUALITY_SETTINGS.length];
+}
+
+/** The button's label: "Quality: Auto (Fast)", "Quality: High". */
+export function qualityLabel(setting: QualitySetting, active: ActiveQuality): string {
+  const name = (q: string) => q[0].toUpperCase() + q.slice(1);
+  return setting === 'auto' ? `Quality: Auto (${name(active)})` : `Quality: ${name(setting)}`;
+}
+
+type Store = Pick<Storage, 'getItem' | 'setItem'>;
+
+function storage(): Store | null {
+  try {
+    return typeof localStorage !== 'undefined' ? localStorage : null;
+  } catch {
+    return null; // storage blocked (e.g. a sandboxed frame)
+  }
+}
+
+/** The saved setting ('auto' when none or unreadable). */
+export function loadQualitySetting(store: Store | null = storage()): QualitySetting {
+  try {
+    const v = store?.getItem(STORAGE_KEY);
+    return isQualitySetting(v) ? v : 'auto';
+  } catch {
+    return 'auto';
+  }
+}
+
+export function saveQualitySetting(s: QualitySetting, store: Store | null = storage()): void {
+  try {
+    store?.setItem(STORAGE_KEY, s);
+  } catch {
+    // not persisted: the setting still applies to this page
+  }
+}
+
+/** What the Quality setting acts on: the hair view (viewer/hairView.ts). */
+export interface QualityTarget {
+  setQuality(q: ActiveQuality): void;
+  readonly activeQuality: ActiveQuality;
+  readonly lightingMs: number | null;
+}
+
+/** The setting, persisted, applied to the hair view. */
+export class QualityControl {
+  private current: QualitySetting;
+
+  constructor(
+    private readonly hair: QualityTarget,
+    private readonly renderer: { software: boolean; rendererName: string },
+    initial: QualitySetting = loadQualitySetting(),
+  ) {
+    this.current = initial;
+    this.hair.setQuality(activeQuality(initial, renderer.software));
+  }
+
+  get setting(): QualitySetting {
+    return this.current;
+  }
+
+  set(s: QualitySetting): void {
+    this.current = s;
+    saveQualitySetting(s);
+    this.hair.setQuality(activeQuality(s, this.renderer.software));
+  }
+
+  cycle(): void {
+    this.set(nextQuality(this.current));
+  }
+
+  label(): string {
+    return qualityLabel(this.current, this.hair.activeQuality);
+  }
+
+  /** For the test API: the setting, the path drawing now, and the unmasked renderer. */
+  info(): { setting: QualitySetting; active: ActiveQuality; renderer: string } {
+    return {
+      setting: this.current,
+      active: this.hair.activeQuality,
+      renderer: this.renderer.rendererName,
+    };
+  }
+
+  /** The lighting precompute time of the hair shown (ms in the worker; null: none). */
+  lightingMs(): number | null {
+    return this.hair.lightingMs;
+  }
+}
