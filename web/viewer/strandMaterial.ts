@@ -29,17 +29,150 @@ varying vec2 vLight;
 varying float vCoverage;
 `;
 
+/** Uniforms, helpers and shadeStrand(): the shading, shared by the lines' vertex shader and
+ *  the strips' fragment shader. */
+const shading = /* glsl */ `
+uniform vec3 hairColor;
+uniform vec3 keyDirection; // world space, towards the light (fixed: not the camera's)
+uniform vec3 keyColor;
+uniform vec3 fillDirection;
+uniform vec3 fillColor;
+uniform vec3 ambientColor;
+uniform vec3 headCenter; // strand normals point away from it
+uniform float diffuseStrength;
+uniform float primaryStrength;
+uniform float primaryPower;
+uniform float primaryShift; // tan of the tilt towards the root
+uniform float secondaryStrength;
+uniform float secondaryPower;
+uniform float secondaryShift; // tan of the tilt (negative: towards the tip)
+uniform float rootDarkening; // roots are darker by this fraction
+uniform float valueVariation; // ± fraction of brightness per strand
+uniform float hueVariation; // ± red/blue balance per strand
+uniform float lengthVariation; // ± shift of where the tip fade starts, per strand
+uniform float tipFade; // fraction of the strand over which the tip fades out
+uniform float precomputed; // 1: use the precomputed lighting attribute; 0: ignore it (all lit)
+#ifdef DEEP_OPACITY
+uniform sampler2D domDepth;
+uniform sampler2D domOpacity;
+uniform mat4 domMatrix; // world -> the light's clip space
+uniform vec3 domLayers; // far ends of the 3 layers past the first hair, world units
+uniform float domRange; // world depth of the light camera's [0, 1]
+uniform float domKappa; // optical depth per unit of accumulated opacity
+uniform float domBias; // world units
+#endif
+// Scheuermann / TressFX strand highlight on a (shifted) tangent
+float strandSpecular(vec3 T, vec3 H, float power) {
+  float TH = dot(T, H);
+  float sinTH = sqrt(max(0.0, 1.0 - TH * TH));
+  return smoothstep(-1.0, 0.0, TH) * pow(sinTH, power);
+}
+
+float hash12(vec2 p) {
+  vec3 p3 = fract(vec3(p.xyx) * 0.1031);
+  p3 += dot(p3, p3.yzx + 33.33);
+  return fract((p3.x + p3.y) * p3.z);
+}
+
+#ifdef DEEP_OPACITY
+// Yuksel & Keyser 2008: the opacity accumulated between the first hair seen from the light and
+// this point, interpolated between the 3 layers' cumulative values.
+float deepOpacityTransmittance(vec3 world) {
+  vec4 p = domMatrix * vec4(world, 1.0);
+  vec3 q = p.xyz / p.w * 0.5 + 0.5;
+  if (q.x <= 0.0 || q.y <= 0.0 || q.x >= 1.0 || q.y >= 1.0) return 1.0;
+  float z0 = texture2D(domDepth, q.xy).r;
+  float d = (q.z - z0) * domRange - domBias;
+  if (d <= 0.0) return 1.0;
+  vec3 o = texture2D(domOpacity, q.xy).rgb;
+  float opacity;
+  if (d < domLayers.x) opacity = o.r * d / domLayers.x;
+  else if (d < domLayers.y) opacity = mix(o.r, o.g, (d - domLayers.x) / (domLayers.y - domLayers.x));
+  else if (d < domLayers.z) opacity = mix(o.g, o.b, (d - domLayers.y) / (domLayers.z - domLayers.y));
+  else opacity = o.b;
+  return exp(-domKappa * opacity);
+}
+#endif
+
+// where a strand ends (rnd: its random values): somewhere in its tip fade (length appearance, ragged ends)
+float fadeStartOf(vec4 rnd) {
+  return clamp(1.0 - tipFade + lengthVariation * (2.0 * rnd.z - 1.0), 0.3, 0.98);
+}
+float strandCut(vec4 rnd) {
+  return mix(fadeStartOf(rnd), 1.0, fract(rnd.w * 13.7));
+}
+
+// The strand's colour at world point P with unit tangent T (root -> tip).
+vec3 shadeStrand(vec3 T, vec3 P, float along, vec4 rnd, vec2 light) {
+  // per strand: value, hue, highlight noise (seeded: the same every time)
+  float value = 1.0 + valueVariation * (2.0 * rnd.x - 1.0);
+  float hue = hueVariation * (2.0 * rnd.y - 1.0);
+  float noise = rnd.w;
+  vec3 V = normalize(cameraPosition - P);
+  vec3 L = keyDirection;
+  vec3 radial = P - headCenter;
+  vec3 N = radial - T * dot(radial, T);
+  N = dot(N, N) > 1e-10 ? normalize(N) : V;
+
+  vec3 base = hairColor * value * vec3(1.0 + hue, 1.0, 1.0 - hue);
+  base *= mix(1.0 - rootDarkening, 1.0, smoothstep(0.0, 0.3, along));
+
+  // Kajiya–Kay diffuse: sin(T, L), softened so that strands along the light are not black
+  float TL = dot(T, L);
+  float diffuse = mix(0.25, 1.0, sqrt(max(0.0, 1.0 - TL * TL)));
+  vec3 H = normalize(L + V);
+  float primary = strandSpecular(normalize(T + primaryShift * N), H, primaryPower);
+  float secondary = strandSpecular(normalize(T + secondaryShift * N), H, secondaryPower);
+  // break the highlights up: per strand and in patches along it
+  float patches = 0.5 + 0.5 * sin(along * (9.0 + 14.0 * noise) + 6.2832 * rnd.y);
+  primary *= mix(0.55, 1.0, fract(noise * 7.31)) * smoothstep(0.02, 0.2, along);
+  secondary *= mix(0.15, 1.0, noise) * mix(0.45, 1.0, patches);
+  // the secondary carries the hair's colour (light that went through the fibre)
+  vec3 tint = sqrt(max(hairColor, vec3(1e-4)));
+
+  float shadow = mix(1.0, light.x, precomputed);
+  float ao = mix(1.0, light.y, precomputed);
+#ifdef DEEP_OPACITY
+  shadow = min(shadow, deepOpacityTransmittance(P));
+#endif
+  float TF = dot(T, fillDirection);
+  float fill = mix(0.3, 1.0, sqrt(max(0.0, 1.0 - TF * TF)));
+  float sky = 0.65 + 0.35 * N.y;
+
+  return keyColor * shadow * (diffuseStrength * diffuse * base
+      + primaryStrength * primary * vec3(1.0)
+      + secondaryStrength * secondary * tint * base / max(max(base.r, base.g), max(base.b, 1e-3)))
+    + fillColor * ao * fill * base
+    + ambientColor * ao * sky * base;
+}
+`;
+
+/** Lines shade per vertex (the strand is a 1-pixel line: the only interpolation is along
+ *  segments a few pixels long), so a fragment costs no more than a flat colour. */
 const linesVertexShader = /* glsl */ `
 ${commonVertex}
+${shading}
+varying vec3 vColor;
+varying float vCut;
 void main() {
   vec4 world = modelMatrix * vec4(position, 1.0);
-  vWorldPosition = world.xyz;
-  vTangent = mat3(modelMatrix) * tangent;
+  vec3 T = normalize(mat3(modelMatrix) * tangent);
+  vColor = shadeStrand(T, world.xyz, along, strandRandom, lighting);
   vAlong = along;
-  vRandom = strandRandom;
-  vLight = lighting;
-  vCoverage = 1.0;
+  vCut = strandCut(strandRandom);
   gl_Position = projectionMatrix * viewMatrix * world;
+}
+`;
+
+const linesFragmentShader = /* glsl */ `
+varying vec3 vColor;
+varying float vAlong;
+varying float vCut;
+void main() {
+  if (vAlong > vCut) discard;
+  gl_FragColor = vec4(vColor, 1.0);
+  #include <tonemapping_fragment>
+  #include <colorspace_fragment>
 }
 `;
 
@@ -86,36 +219,9 @@ void main() {
 }
 `;
 
-const fragmentShader = /* glsl */ `
-uniform vec3 hairColor;
-uniform vec3 keyDirection; // world space, towards the light (fixed: not the camera's)
-uniform vec3 keyColor;
-uniform vec3 fillDirection;
-uniform vec3 fillColor;
-uniform vec3 ambientColor;
-uniform vec3 headCenter; // strand normals point away from it
-uniform float diffuseStrength;
-uniform float primaryStrength;
-uniform float primaryPower;
-uniform float primaryShift; // tan of the tilt towards the root
-uniform float secondaryStrength;
-uniform float secondaryPower;
-uniform float secondaryShift; // tan of the tilt (negative: towards the tip)
-uniform float rootDarkening; // roots are darker by this fraction
-uniform float valueVariation; // ± fraction of brightness per strand
-uniform float hueVariation; // ± red/blue balance per strand
-uniform float lengthVariation; // ± shift of where the tip fade starts, per strand
-uniform float tipFade; // fraction of the strand over which the tip fades out
-uniform float precomputed; // 1: use the precomputed lighting attribute; 0: ignore it (all lit)
-#ifdef DEEP_OPACITY
-uniform sampler2D domDepth;
-uniform sampler2D domOpacity;
-uniform mat4 domMatrix; // world -> the light's clip space
-uniform vec3 domLayers; // far ends of the 3 layers past the first hair, world units
-uniform float domRange; // world depth of the light camera's [0, 1]
-uniform float domKappa; // optical depth per unit of accumulated opacity
-uniform float domBias; // world units
-#endif
+/** Strips shade per fragment (wide strands on a GPU). */
+const stripsFragmentShader = /* glsl */ `
+${shading}
 varying vec3 vTangent;
 varying vec3 vWorldPosition;
 varying float vAlong;
@@ -123,93 +229,18 @@ varying vec4 vRandom;
 varying vec2 vLight;
 varying float vCoverage;
 
-// Scheuermann / TressFX strand highlight on a (shifted) tangent
-float strandSpecular(vec3 T, vec3 H, float power) {
-  float TH = dot(T, H);
-  float sinTH = sqrt(max(0.0, 1.0 - TH * TH));
-  return smoothstep(-1.0, 0.0, TH) * pow(sinTH, power);
-}
-
-float hash12(vec2 p) {
-  vec3 p3 = fract(vec3(p.xyx) * 0.1031);
-  p3 += dot(p3, p3.yzx + 33.33);
-  return fract((p3.x + p3.y) * p3.z);
-}
-
-#ifdef DEEP_OPACITY
-// Yuksel & Keyser 2008: the opacity accumulated between the first hair seen from the light and
-// this point, interpolated between the 3 layers' cumulative values.
-float deepOpacityTransmittance(vec3 world) {
-  vec4 p = domMatrix * vec4(world, 1.0);
-  vec3 q = p.xyz / p.w * 0.5 + 0.5;
-  if (q.x <= 0.0 || q.y <= 0.0 || q.x >= 1.0 || q.y >= 1.0) return 1.0;
-  float z0 = texture2D(domDepth, q.xy).r;
-  float d = (q.z - z0) * domRange - domBias;
-  if (d <= 0.0) return 1.0;
-  vec3 o = texture2D(domOpacity, q.xy).rgb;
-  float opacity;
-  if (d < domLayers.x) opacity = o.r * d / domLayers.x;
-  else if (d < domLayers.y) opacity = mix(o.r, o.g, (d - domLayers.x) / (domLayers.y - domLayers.x));
-  else if (d < domLayers.z) opacity = mix(o.g, o.b, (d - domLayers.y) / (domLayers.z - domLayers.y));
-  else opacity = o.b;
-  return exp(-domKappa * opacity);
-}
-#endif
-
 void main() {
-  // per strand: value, hue, length appearance, highlight noise (seeded: the same every time)
-  float value = 1.0 + valueVariation * (2.0 * vRandom.x - 1.0);
-  float hue = hueVariation * (2.0 * vRandom.y - 1.0);
-  float fadeStart = clamp(1.0 - tipFade + lengthVariation * (2.0 * vRandom.z - 1.0), 0.3, 0.98);
-  float noise = vRandom.w;
-
-  float alpha = vCoverage * (1.0 - smoothstep(fadeStart, 1.0, vAlong));
+  float alpha = vCoverage * (1.0 - smoothstep(fadeStartOf(vRandom), 1.0, vAlong));
 #ifdef ALPHA_TO_COVERAGE
   if (alpha < 0.02) discard;
 #else
-  // no multisampling: each strand ends somewhere in its fade (ragged ends, not pixel noise), and
-  // a thin strip's partial coverage becomes a stable dither
-  if (vAlong > mix(fadeStart, 1.0, fract(noise * 13.7))) discard;
+  // no multisampling: each strand ends somewhere in its fade, and a thin strip's partial
+  // coverage becomes a stable dither
+  if (vAlong > strandCut(vRandom)) discard;
   if (vCoverage < 0.999 && vCoverage <= hash12(gl_FragCoord.xy)) discard;
+  alpha = 1.0; // the dither stands for the coverage: the canvas stays opaque
 #endif
-
-  vec3 T = normalize(vTangent);
-  vec3 V = normalize(cameraPosition - vWorldPosition);
-  vec3 L = keyDirection;
-  vec3 radial = vWorldPosition - headCenter;
-  vec3 N = radial - T * dot(radial, T);
-  N = dot(N, N) > 1e-10 ? normalize(N) : V;
-
-  vec3 base = hairColor * value * vec3(1.0 + hue, 1.0, 1.0 - hue);
-  base *= mix(1.0 - rootDarkening, 1.0, smoothstep(0.0, 0.3, vAlong));
-
-  // Kajiya–Kay diffuse: sin(T, L), softened so that strands along the light are not black
-  float TL = dot(T, L);
-  float diffuse = mix(0.25, 1.0, sqrt(max(0.0, 1.0 - TL * TL)));
-  vec3 H = normalize(L + V);
-  float primary = strandSpecular(normalize(T + primaryShift * N), H, primaryPower);
-  float secondary = strandSpecular(normalize(T + secondaryShift * N), H, secondaryPower);
-  // break the highlights up: per strand and in patches along it
-  float patches = 0.5 + 0.5 * sin(vAlong * (9.0 + 14.0 * noise) + 6.2832 * vRandom.y);
-  primary *= mix(0.55, 1.0, fract(noise * 7.31)) * smoothstep(0.02, 0.2, vAlong);
-  secondary *= mix(0.15, 1.0, noise) * mix(0.45, 1.0, patches);
-  // the secondary carries the hair's colour (light that went through the fibre)
-  vec3 tint = sqrt(max(hairColor, vec3(1e-4)));
-
-  float shadow = mix(1.0, vLight.x, precomputed);
-  float ao = mix(1.0, vLight.y, precomputed);
-#ifdef DEEP_OPACITY
-  shadow = min(shadow, deepOpacityTransmittance(vWorldPosition));
-#endif
-  float TF = dot(T, fillDirection);
-  float fill = mix(0.3, 1.0, sqrt(max(0.0, 1.0 - TF * TF)));
-  float sky = 0.65 + 0.35 * N.y;
-
-  vec3 color = keyColor * shadow * (diffuseStrength * diffuse * base
-      + primaryStrength * primary * vec3(1.0)
-      + secondaryStrength * secondary * tint * base / max(max(base.r, base.g), max(base.b, 1e-3)))
-    + fillColor * ao * fill * base
-    + ambientColor * ao * sky * base;
+  vec3 color = shadeStrand(normalize(vTangent), vWorldPosition, vAlong, vRandom, vLight);
   gl_FragColor = vec4(color, alpha);
   #include <tonemapping_fragment>
   #include <colorspace_fragment>
@@ -281,10 +312,10 @@ export function createStrandMaterial(options: StrandMaterialOptions = {}): Stran
     ambientColor: { value: new THREE.Color(options.ambient ?? '#b4aca4').multiplyScalar(0.55) },
     headCenter: { value: new THREE.Vector3(...center) },
     diffuseStrength: { value: 0.95 },
-    primaryStrength: { value: 0.14 },
-    primaryPower: { value: 90 },
+    primaryStrength: { value: 0.1 },
+    primaryPower: { value: 160 },
     primaryShift: { value: Math.tan(PRIMARY_SHIFT_DEG * DEG) },
-    secondaryStrength: { value: 0.4 },
+    secondaryStrength: { value: 0.3 },
     secondaryPower: { value: 30 },
     secondaryShift: { value: Math.tan(SECONDARY_SHIFT_DEG * DEG) },
     rootDarkening: { value: 0.3 },
@@ -303,7 +334,7 @@ export function createStrandMaterial(options: StrandMaterialOptions = {}): Stran
     uniforms,
     defines,
     vertexShader: strips ? stripsVertexShader : linesVertexShader,
-    fragmentShader,
+    fragmentShader: strips ? stripsFragmentShader : linesFragmentShader,
   });
   material.name = strips ? 'HairStrips' : 'HairLines';
   if (strips) {
