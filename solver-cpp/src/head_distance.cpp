@@ -165,6 +165,19 @@ bool HeadDistance::scalpNear(float x, float y, float z) const {
   return scalp_[i + size_t(nx_) * (j + size_t(ny_) * k)] != 0;
 }
 
+float HeadDistance::outward(const float p[3], float dir[3]) const {
+  const float d = distance(p[0], p[1], p[2], dir);
+  float len = std::sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+  if (!(len > 0.5f)) {
+    dir[0] = p[0] - centre_.x();
+    dir[1] = p[1] - centre_.y();
+    dir[2] = p[2] - centre_.z();
+    len = std::sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+  }
+  for (int e = 0; e < 3; ++e) dir[e] = len > 0 ? dir[e] / len : 0.f;
+  return d;
+}
+
 float HeadDistance::pushOut(float p[3], float margin) const {
   float g[3];
   const float d0 = distance(p[0], p[1], p[2], g);

@@ -34,6 +34,9 @@ class HeadDistance {
   // Whether the head surface nearest p is scalp (the nearest cell's nearest triangle); false
   // away from the surface or when the mesh has no scalp flags.
   bool scalpNear(float x, float y, float z) const;
+  // The unit direction out of the head at p: the distance gradient where it is exact, else the
+  // direction from the mesh centre. Returns the distance at p.
+  float outward(const float p[3], float dir[3]) const;
   // Moves p out to `margin` outside the surface along the distance gradient (the direction
   // from the mesh centre where the gradient vanishes). Returns the distance before the move.
   float pushOut(float p[3], float margin) const;

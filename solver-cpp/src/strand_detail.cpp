@@ -281,6 +281,9 @@ void forNearGuides(const CellTable& table, const std::vector<int32_t>& next, con
 
 // cos 60°: a guide whose heading is further from a follower's than this does not take it.
 constexpr double kSameWay = 0.5;
+// How far (world units, 10 cm; at least 4 guide distances) a follower's path may part from its
+// guide's and still be clumped to it: round different sides of the head they part by more.
+constexpr double kMaxApart = 1.0;
 
 // Clump of one group's strands (members, each with >= 2 points), in place.
 void clumpGroup(const ClumpParams& c, const std::vector<uint32_t>& members,
@@ -368,17 +371,31 @@ void clumpGroup(const ClumpParams& c, const std::vector<uint32_t>& members,
     load(P + 3 * size_t(start[s]), count, w.p);
     const double L = arcLengths(w.p, w.s);
     if (!(L > 0) || !(LG > 0)) continue;
-    // a strand less than half as long as its guide (stubble near a hairline) is pulled less
-    const double reach = std::min(1.0, 2 * L / LG);
+    // Along the guide by arc length, stretched to its tip only for a strand longer than it: a
+    // shorter strand (stubble at a hairline) joins the clump near its root, not at its far tip.
+    const double along = LG / std::max(L, LG);
     const double phi = spread ? kTwoPi * strandRng(seed, key[s], kStreamSpread).uniform() : 0;
     const double cPhi = std::cos(phi), sPhi = std::sin(phi);
+    // A strand whose path parts from its guide's by more than kMaxApart (the two go round
+    // different sides of the head, or either side of a parting further on) is not clumped: a
+    // blend of the two paths would cut through the head.
+    const double maxApart = std::max(kMaxApart, 4 * c.guideDistance);
+    bool apart = false;
     size_t j = 0;
-    for (size_t i = 1; i < count; ++i) {
-      const double x = w.s[i] / L;
-      const double u = locate(gArc, gCount, x * LG, j);
+    for (size_t i = 1; i < count && !apart; ++i) {
+      const double u = locate(gArc, gCount, w.s[i] * along, j);
       const V3 a(gp[3 * j], gp[3 * j + 1], gp[3 * j + 2]);
       const V3 b(gp[3 * j + 3], gp[3 * j + 4], gp[3 * j + 5]);
-      const double wgt = c.factor * reach * S(x);
+      apart = (lerp(a, b, u) - w.p[i]).norm() > maxApart;
+    }
+    if (apart) continue;
+    j = 0;
+    for (size_t i = 1; i < count; ++i) {
+      const double x = w.s[i] / L;
+      const double u = locate(gArc, gCount, w.s[i] * along, j);
+      const V3 a(gp[3 * j], gp[3 * j + 1], gp[3 * j + 2]);
+      const V3 b(gp[3 * j + 3], gp[3 * j + 4], gp[3 * j + 5]);
+      const double wgt = c.factor * S(x);
       w.p[i] = (1 - wgt) * w.p[i] + wgt * lerp(a, b, u);
       if (spread) {
         const size_t o = guideAt[size_t(best)] + j;

@@ -15,14 +15,17 @@
 //   a strand becomes a guide when no guide root lies closer than g to its root (g = 0: every strand
 //   is its own guide, nothing moves). Every other strand follows its nearest guide G (lookup in a
 //   uniform hash grid of cell size g) among those that set off the same way (headings, root to
-//   the 4th point, within 60°: no clump across a parting; none such: not clumped): for every
-//   point but the root,
-//     p_i <- (1 - w) p_i + w G(x_i) + t x_i (cos phi N_G(x_i) + sin phi B_G(x_i)),
-//     w = f min(1, 2 L / L_G) S(x_i; s)  (a strand under half its guide's length is pulled
-//     less: stubble near a hairline is not stretched towards a long guide),
-//   G(x) being the guide's point at normalised arc length x (interpolated), N_G, B_G its
-//   rotation-minimising frame there and phi a seeded per-strand angle. Guides keep their shape and
-//   strands follow the guides' un-clumped shape. f = 1, s = 0, t = 0: tips land on the guide's tip.
+//   the 4th point, within 60°: no clump across a parting; none such: not clumped), unless their
+//   paths part by more than max(1, 4 g) somewhere (round different sides of the head: a blend
+//   would cut through it; then not clumped): for every point but the root,
+//     p_i <- (1 - w) p_i + w G(s_i) + t x_i (cos phi N_G(s_i) + sin phi B_G(s_i)),
+//     w = f S(x_i; s), x_i = s_i / L,
+//   G(s) being the guide's point at arc length s L_G / max(L, L_G) (interpolated): a strand longer
+//   than its guide follows it stretched to its tip, a shorter one (stubble at a hairline) joins
+//   the clump by arc length near its root and is not stretched towards a far tip; N_G, B_G the
+//   guide's rotation-minimising frame there and phi a seeded per-strand angle. Guides keep their
+//   shape and strands follow the guides' un-clumped shape. f = 1, s = 0, t = 0: every point lands
+//   on the guide, the tip on its tip when the strand is at least as long.
 // Curl (radius r, frequency q turns per unit of arc length, start a, randomOffset o): the strand is
 //   first resampled evenly by arc length to m = min(maxPoints, max(n, ceil(12 q L) + 1)) points
 //   (at least 12 a turn unless the cap binds), s_k = L k / (m - 1); then around that path
