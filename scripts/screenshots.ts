@@ -63,7 +63,7 @@ async function main(): Promise<void> {
   try {
     await waitServer();
     for (const preset of presets) {
-      const page = await browser.newPage({ viewport: { width: 900, height: 800 } });
+      const page = await browser.newPage({ viewport: { width: 1280, height: 800 } });
       await page.goto(`${BASE}/?preset=${preset}`);
       const q = process.env.SHOT_QUALITY;
       if (q === 'fast' || q === 'high' || q === 'auto') {

@@ -296,8 +296,8 @@ EMSCRIPTEN_KEEPALIVE int32_t hs_engine_set_detail(EngineHandle* h, const double*
       if (!std::isfinite(d[e])) return fail(HS_NON_FINITE, "set_detail: a number is not finite");
     g[k] = detailFromArray(d);
   }
-  return report(h->engine.setDetail(std::move(g),
-                                    std::vector<int32_t>(curveGroup, curveGroup + curveCount)));
+  return report(
+      h->engine.setDetail(std::move(g), std::vector<int32_t>(curveGroup, curveGroup + curveCount)));
 }
 EMSCRIPTEN_KEEPALIVE int32_t hs_engine_scalp_avoidance(EngineHandle* h, const HsAvoidInput* in) {
   if (!h || !in) return fail(HS_INVALID_INPUT, "scalp_avoidance: no engine or input");

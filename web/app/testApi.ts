@@ -42,6 +42,8 @@ export interface HairsketchTestApi {
   display(): DisplayState;
   /** What the shown overlays draw: constraints, field glyphs, surface triangles (0 when off). */
   displayInfo(): { constraints: number; glyphs: number; surfaceTriangles: number };
+  /** Points of the grid the solver works on (the session's bounding volume, gridForSession). */
+  gridPoints(): number;
   /** Rays from one side (back: travelling +z) at a 3° grid of scalp points: how many are seen
    *  from there and how many of those no displayed strand hides (within `radius`, 1 mm). */
   scalpCoverage(
@@ -137,6 +139,10 @@ export function installTestApi(app: TestApiParts): void {
     lastPointerUp: () => app.lastPointerUp(),
     heapBytes: () => hair.heapBytes,
     hairDetail: () => viewer.hairDetail,
+    gridPoints: () => {
+      const d = app.bridge.grid.dims;
+      return d[0] * d[1] * d[2];
+    },
     scalpCoverage: (view, radius) =>
       scalpCoverage(head, hair.strands, { dir: VIEW_DIRECTIONS[view], radius }),
     frameMs(runs = 5) {

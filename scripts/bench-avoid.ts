@@ -1,0 +1,62 @@
+// npm run bench:avoid — time from a click on "Avoid scalp" to the converged hair on screen
+// (hairLog), in the built app in Debian's Chromium: the first toggle of each page (later toggles
+// of the same state come from the result cache).
+//   npx tsx scripts/bench-avoid.ts [preset] [grid ...]     (default: fig6 25k 50k)
+import { type ChildProcess, spawn } from 'node:child_process';
+import { chromium, type Page } from '@playwright/test';
+import { waitServer } from './previewServer';
+
+const PORT = Number(process.env.BENCH_PORT ?? 4297);
+const BASE = `http://127.0.0.1:${PORT}`;
+const [preset = 'fig6', ...gridArgs] = process.argv.slice(2);
+const grids = gridArgs.length ? gridArgs : ['25k', '50k'];
+
+const readyAfter = (page: Page, rev: number) =>
+  page.waitForFunction(
+    (r) => {
+      const el = document.querySelector('[data-testid="status"]') as HTMLElement | null;
+      return !!el && el.dataset.state === 'ready' && Number(el.dataset.revision) > r;
+    },
+    rev,
+    { timeout: 600_000, polling: 20 },
+  );
+
+async function main(): Promise<void> {
+  const server: ChildProcess = spawn(
+    'node_modules/.bin/vite',
+    ['preview', '--port', String(PORT), '--strictPort'],
+    { stdio: ['ignore', 'ignore', 'inherit'] },
+  );
+  const browser = await chromium.launch({
+    executablePath: process.env.CHROMIUM_PATH ?? '/usr/bin/chromium',
+    args: ['--no-sandbox', '--disable-gpu', '--enable-unsafe-swiftshader'],
+  });
+  try {
+    await waitServer(BASE);
+    console.log('| preset | grid | grid points | click → converged hair ms | solve ms (tooltip) |');
+    console.log('| --- | --- | --- | --- | --- |');
+    for (const grid of grids) {
+      const page = await browser.newPage({ viewport: { width: 1000, height: 750 } });
+      await page.goto(`${BASE}/?preset=${preset}&grid=${grid}`);
+      await readyAfter(page, -1);
+      await page.evaluate(() => window.hairsketch.idle());
+      const rev = Number(await page.getByTestId('status').getAttribute('data-revision'));
+      const t0 = await page.evaluate(() => performance.now());
+      await page.getByRole('button', { name: 'Avoid scalp' }).click();
+      await readyAfter(page, rev);
+      const log = await page.evaluate(() => window.hairsketch.hairLog());
+      const shown = log.filter((e) => e.final).at(-1)?.time ?? Number.NaN;
+      const tip = (await page.getByTestId('status').getAttribute('title')) ?? '';
+      const points = await page.evaluate(() => window.hairsketch.gridPoints());
+      console.log(
+        `| ${preset} | ${grid} | ${points} | ${(shown - t0).toFixed(0)} | ${/solve (\d+) ms/.exec(tip)?.[1] ?? '?'} |`,
+      );
+      await page.close();
+    }
+  } finally {
+    await browser.close();
+    server.kill();
+  }
+}
+
+void main();
