@@ -252,14 +252,14 @@ const FIG8_SWEEPS: SweepSpec[] = [
 
 // fig1: a high ponytail at the back of the crown, a centre parting from the forehead, two side
 // partings and a nape parting (four dividing curves), and thirteen stream curves: the top and sides
-// combed toward the ponytail, the back combed up from the nape into it, loose locks in front of
-// the ears. From behind, the ponytail hangs alone over the neck.
+// combed toward the ponytail, the back and the sides behind the ears combed up into it, a loose
+// lock in front of each ear. From behind, the ponytail hangs alone over the neck.
 const FIG1_PONYTAIL: PonytailSpec = {
   base: [55, 180],
   out: 0.35,
   fall: 2.0,
-  gather: 0.12,
-  width: 0.24,
+  gather: 0.1,
+  width: 0.16,
 };
 const FIG1_PARTINGS: [number, number][][] = [
   [
@@ -287,11 +287,12 @@ const FIG1_SWEEPS: SweepSpec[] = [
   { theta: [52, 62], phi: [-20, -140], lift: 0.08, fall: 0 },
   { theta: [15, 45], phi: [60, 165], lift: 0.08, fall: 0 },
   { theta: [15, 45], phi: [-60, -165], lift: 0.08, fall: 0 },
-  { theta: [80, 100], phi: [85, 95], lift: 0.1, fall: 0.9 },
-  { theta: [80, 100], phi: [-85, -95], lift: 0.1, fall: 0.9 },
+  // a loose lock in front of each ear
   { theta: [60, 82], phi: [50, 66], lift: 0.1, fall: 0.7 },
   { theta: [60, 82], phi: [-50, -66], lift: 0.1, fall: 0.7 },
-  // the back, combed up from the nape into the ponytail
+  // behind the ears and the back, combed up from the hairline into the ponytail
+  { theta: [98, 62], phi: [105, 150], lift: 0.05, fall: 0 },
+  { theta: [98, 62], phi: [-105, -150], lift: 0.05, fall: 0 },
   { theta: [110, 64], phi: [150, 172], lift: 0.05, fall: 0 },
   { theta: [110, 64], phi: [-150, -172], lift: 0.05, fall: 0 },
   { theta: [112, 64], phi: [179, 179.5], lift: 0.05, fall: 0 },
