@@ -78,7 +78,14 @@ test('the Detail panel curls the hair, and Undo restores it exactly', async ({ p
   expect(hash).not.toBe(before);
   expect(await page.evaluate(() => window.hairsketch.segmentsInsideHead(0.01).inside)).toBe(0);
   await page.getByRole('button', { name: 'Undo' }).click();
-  await settled(page, curled.revision);
+  const undone = await settled(page, curled.revision);
   expect(await page.evaluate(() => window.hairsketch.hairHash())).toBe(before);
+  // Density is a session setting too: 6,000 strands where the page capped at 3,000.
+  const strands = panel.getByRole('spinbutton', { name: 'Strands' });
+  await strands.fill('6000');
+  await strands.press('Enter');
+  const denser = await settled(page, undone.revision);
+  expect(denser.strands).toBeGreaterThan(5000);
+  expect(denser.strands).toBeLessThan(7000);
   expect(errors).toEqual([]);
 });

@@ -97,7 +97,7 @@ export class SolverClient {
     this.ready = false;
     this.previewInFlight = null;
     this.previewWaiting = null;
-    this.start();
+    this.start('solving');
   }
 
   /** Solves `curves` and grows `growth`; previews and a full solve's first look are grown with
@@ -179,9 +179,11 @@ export class SolverClient {
     this.worker = null;
   }
 
-  private start(): void {
+  /** A new worker, sent `init`. `phase`: what the user is told meanwhile (a grid move is part of
+   *  solving the edit that needed it, not a load). */
+  private start(phase: 'loading' | 'solving' = 'loading'): void {
     this.ready = false;
-    this.events.onBusy('loading', 0);
+    this.events.onBusy(phase, 0);
     const w = this.makeWorker();
     this.worker = w;
     w.onmessage = (ev: MessageEvent<FromWorker>) => {
