@@ -236,10 +236,10 @@ describe('WorkerLogic', () => {
     // whole head), band 1.5 steps, magnitude 0.3, inside too, none where |v| < minMagnitude
     const i = h.log.indexOf('avoid:6:1.5:0.3:false:true:0.07');
     expect(i).toBeGreaterThan(0);
-    // the curves again with the derived constraints as extras, from zero, to convergence
+    // the curves again with the derived constraints as extras, warm-started from the converged
+    // (history-free) field: no forgetting, to convergence
     expect(h.log.slice(i + 1)).toEqual([
       'curves:0:extra1',
-      'forget',
       'iterate:2',
       'iterate:4',
       'iterate:6',

@@ -72,13 +72,12 @@ export function growSessionHair(
   let p = engine.iterate(SLICE_ITERATIONS, tolerance);
   let fraction = 0; // reported fractions never fall back (the error estimate is not monotonic)
   // With "Avoid scalp", the converged field gives the avoidance constraints and the field is
-  // solved again from zero with them, as the worker does (workerLogic.ts).
+  // solved again with them from that field, as the worker does (workerLogic.ts).
   let avoided = !(options.avoidScalp && engine.scalpAvoidance);
   for (;;) {
     if (p.converged && !avoided && engine.scalpAvoidance) {
       const r = engine.scalpAvoidance(avoidanceOptions(session.growth));
       engine.setCurves({ ...curves, extraIndex: r.index, extraTarget: r.target });
-      engine.forgetWarmStart?.();
       avoided = true;
       p = engine.iterate(SLICE_ITERATIONS, tolerance);
     }

@@ -7,7 +7,8 @@
 //                yielding to the event loop between slices so a newer request can take over,
 //                and grow the final hair when the field has converged. With "Avoid scalp" on, the
 //                converged field gives the scalp-avoidance constraints (S4.7) and the field is
-//                solved again, from zero, with them (growSession.ts does the same).
+//                solved again with them, warm-started from that field (growSession.ts does the
+//                same).
 import { resultLighting } from '../lighting/resultLighting';
 import { type IterateProgress, type SolverEngine, SolverError } from './engine';
 import {
@@ -185,8 +186,9 @@ export class WorkerLogic {
     }
     if (job.options.avoidScalp && this.engine.scalpAvoidance) {
       const r = this.engine.scalpAvoidance(avoidanceOptions(job.growth));
+      // Warm-started from the curves' converged field, which depends on the session alone (it
+      // was solved from zero): the second solve stays history-free and needs few iterations.
       this.engine.setCurves({ ...job.curves, extraIndex: r.index, extraTarget: r.target });
-      this.engine.forgetWarmStart?.();
       p = this.engine.iterate(o.sliceIterations, o.tolerance);
       while (!p.converged) {
         await o.yieldNow();
