@@ -1,0 +1,67 @@
+// npm run bench:detail — the cost of hair detail in the growth step (the same wasm under Node):
+// the default preset's session grown from scratch with each detail block alone and all together
+// (the curly preset's values), printing growth time (roots, strands, detail, keeping points
+// outside the head), points, and the segments or segment midpoints inside the head (exact SDF).
+//   npx tsx scripts/bench-detail.ts [strands]     (default: every root, 29,948)
+import { readFileSync } from 'node:fs';
+import { presetSession } from '../web/cli/presetSession';
+import { growSessionHair } from '../web/export/growSession';
+import { Head } from '../web/head/head';
+import type { HairDetail } from '../web/model/detail';
+import { gridForSession } from '../web/model/grid';
+import { CURLY_DETAIL } from '../web/model/presets';
+import { loadSolverEngine } from '../web/solver/wasmEngine';
+
+const wasmBinary = new Uint8Array(readFileSync('web/generated/hairsolver.wasm'));
+const head = Head.builtin();
+const base = presetSession('default', head, '25k', Number(process.argv[2] ?? 0));
+const grid = gridForSession(base.grid, base.curves);
+const cases: Array<[string, HairDetail | undefined]> = [
+  ['none', undefined],
+  ['curl', { curl: CURLY_DETAIL.curl }],
+  ['clump', { clump: CURLY_DETAIL.clump }],
+  ['frizz', { frizz: CURLY_DETAIL.frizz }],
+  ['length jitter', { lengthJitter: CURLY_DETAIL.lengthJitter }],
+  ['all (curly)', CURLY_DETAIL],
+];
+
+async function main(): Promise<void> {
+  console.log('| detail | strands | points | growth ms (median of 3) | segments inside |');
+  console.log('| --- | --- | --- | --- | --- |');
+  for (const [name, detail] of cases) {
+    const times: number[] = [];
+    let row = '';
+    for (let run = 0; run < 3; run++) {
+      const engine = await loadSolverEngine({ wasmBinary });
+      const hair = growSessionHair(
+        engine,
+        { ...base, ...(detail ? { detail } : {}) },
+        head.scalpMesh(),
+        {
+          grid,
+          solver: 'fast',
+        },
+      );
+      engine.dispose();
+      times.push(hair.growMs);
+      if (run > 0) continue;
+      const P = hair.strands.points;
+      const S = hair.strands.strandStart;
+      let inside = 0;
+      for (let i = 0; i + 1 < S.length; i++)
+        for (let k = S[i]; k + 1 < S[i + 1]; k++) {
+          const m: [number, number, number] = [0, 1, 2].map(
+            (a) => (P[3 * k + a] + P[3 * k + 3 + a]) / 2,
+          ) as [number, number, number];
+          const end: [number, number, number] = [P[3 * k + 3], P[3 * k + 4], P[3 * k + 5]];
+          if (Math.min(head.signedDistance(m), head.signedDistance(end)) < -0.01) inside++;
+        }
+      row = `${S.length - 1} | ${P.length / 3} |`;
+      row += ` %T | ${inside} |`;
+    }
+    times.sort((a, b) => a - b);
+    console.log(`| ${name} | ${row.replace('%T', times[1].toFixed(0))}`);
+  }
+}
+
+void main();
