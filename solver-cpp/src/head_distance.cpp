@@ -44,16 +44,8 @@ Status HeadDistance::build(const HeadMeshView& m, double cell, int bandCells) {
   if (double(nx) * ny * nz > 64e6)
     return Status::Error(StatusCode::OverMemoryCap, "head distance: head too large for its grid");
   // Area-weighted vertex normals (counter-clockwise = outward, as in three.js).
-  std::vector<V3> vn(m.vertexCount, V3::Zero());
-  for (size_t t = 0; t < m.triangleCount; ++t) {
-    const uint32_t* I = m.indices + 3 * t;
-    const V3 fn = (vert(I[1]) - vert(I[0])).cross(vert(I[2]) - vert(I[0]));
-    for (int k = 0; k < 3; ++k) vn[I[k]] += fn;
-  }
-  for (V3& n : vn) {
-    const double l = n.norm();
-    if (l > 0) n /= l;
-  }
+  const std::vector<V3> vn =
+      areaWeightedVertexNormals(m.positions, m.vertexCount, m.indices, m.triangleCount);
   const size_t n = size_t(nx) * ny * nz;
   const float inf = std::numeric_limits<float>::infinity();
   std::vector<float> d(n, inf);  // signed, compared by magnitude

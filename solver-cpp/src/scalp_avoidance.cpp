@@ -38,16 +38,8 @@ Status scalpAvoidanceConstraints(const Grid& g, const Field& T, const HeadMeshVi
     return V3(m.positions[3 * v], m.positions[3 * v + 1], m.positions[3 * v + 2]);
   };
   // Area-weighted vertex normals over the whole head.
-  std::vector<V3> vn(m.vertexCount, V3::Zero());
-  for (size_t t = 0; t < m.triangleCount; ++t) {
-    const uint32_t* I = m.indices + 3 * t;
-    const V3 fn = (vert(I[1]) - vert(I[0])).cross(vert(I[2]) - vert(I[0]));
-    for (int k = 0; k < 3; ++k) vn[I[k]] += fn;
-  }
-  for (V3& n : vn) {
-    const double l = n.norm();
-    if (l > 0) n /= l;
-  }
+  const std::vector<V3> vn =
+      areaWeightedVertexNormals(m.positions, m.vertexCount, m.indices, m.triangleCount);
   // Nearest candidate triangle per grid point: splat each triangle into its grown box.
   const double band = prm.band * g.step;
   const size_t n = size_t(g.size());

@@ -2,6 +2,10 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
 
 namespace hairsketch {
 
@@ -36,6 +40,29 @@ inline Eigen::Vector3d closestBarycentric(const Eigen::Vector3d& p, const Eigen:
   const double denom = 1.0 / (va + vb + vc);
   const double v = vb * denom, w = vc * denom;
   return {1 - v - w, v, w};
+}
+
+// Unit area-weighted vertex normals of a triangle mesh (counter-clockwise = outward, as in
+// three.js); zero for a vertex no triangle with area touches. positions #V x 3, indices #T x 3
+// (checked by the caller).
+inline std::vector<Eigen::Vector3d> areaWeightedVertexNormals(const float* positions,
+                                                              size_t vertexCount,
+                                                              const uint32_t* indices,
+                                                              size_t triangleCount) {
+  auto vert = [&](uint32_t v) {
+    return Eigen::Vector3d(positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]);
+  };
+  std::vector<Eigen::Vector3d> vn(vertexCount, Eigen::Vector3d::Zero());
+  for (size_t t = 0; t < triangleCount; ++t) {
+    const uint32_t* I = indices + 3 * t;
+    const Eigen::Vector3d fn = (vert(I[1]) - vert(I[0])).cross(vert(I[2]) - vert(I[0]));
+    for (int k = 0; k < 3; ++k) vn[I[k]] += fn;
+  }
+  for (Eigen::Vector3d& n : vn) {
+    const double l = n.norm();
+    if (l > 0) n /= l;
+  }
+  return vn;
 }
 
 }  // namespace hairsketch
