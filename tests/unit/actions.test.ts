@@ -22,6 +22,7 @@ function target() {
   let speed = 1;
   let avoidOn = false;
   let detailOpen = false;
+  let mirrorOn = false;
   const t: ActionTarget = {
     tool: () => 'select',
     setTool: (n) => calls.push(`tool:${n}`),
@@ -40,6 +41,11 @@ function target() {
       avoidOn = !avoidOn;
     },
     avoidScalpOn: () => avoidOn,
+    mirror: () => mirrorOn,
+    setMirror: (on) => {
+      calls.push(`mirror:${on}`);
+      mirrorOn = on;
+    },
     share: () => calls.push('share'),
     save: () => calls.push('save'),
     open: () => calls.push('open'),
@@ -158,5 +164,16 @@ describe('actions', () => {
     a?.run();
     expect(a?.pressed?.()).toBe(false);
     expect(calls).toEqual(['detail', 'detail']);
+  });
+
+  it('"x" toggles Mirror; its button is pressed while on', () => {
+    const { t, calls } = target();
+    const a = actionForShortcut(buildActions(t), key('x') ?? '');
+    expect(a?.label).toBe('Mirror');
+    expect(a?.pressed?.()).toBe(false);
+    a?.run();
+    expect(a?.pressed?.()).toBe(true);
+    a?.run();
+    expect(calls).toEqual(['mirror:true', 'mirror:false']);
   });
 });

@@ -41,6 +41,8 @@ export interface ActionTarget {
   deleteSelected(): void;
   setViewpoint(): void;
   toggleSurfaceMode(): void;
+  mirror(): boolean;
+  setMirror(on: boolean): void;
   toggleAvoidScalp(): void;
   avoidScalpOn(): boolean;
   share(): void;
@@ -249,6 +251,17 @@ export function buildActions(t: ActionTarget): Action[] {
       group: 'view',
       toolbar: 'more',
       run: () => t.toggleHelp(),
+    },
+    {
+      id: 'edit.mirror',
+      label: 'Mirror',
+      title:
+        'Mirror editing: every new curve gets a twin across the head, and editing or deleting one does the same to the other',
+      shortcuts: ['x'],
+      group: 'edit',
+      toolbar: 'main',
+      run: () => t.setMirror(!t.mirror()),
+      pressed: () => t.mirror(),
     },
     {
       id: 'view.detail',

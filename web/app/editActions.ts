@@ -60,6 +60,8 @@ export function editActions(d: EditActionDeps): EditActions {
           mode: (c.surfaceMode ?? 'ruled') === 'ruled' ? 'strip' : 'ruled',
         });
     },
+    mirror: () => editor.mirror,
+    setMirror: (on) => editor.setMirror(on),
     /** S4.7 as a setting of the session, an undoable edit. */
     toggleAvoidScalp: () => editor.run({ kind: 'setAvoidScalp', on: !editor.session.avoidScalp }),
     avoidScalpOn: () => !!editor.session.avoidScalp,

@@ -75,6 +75,7 @@ export function createTools(d: ToolDeps): ToolSet {
           tightness: DEFAULT_TIGHTNESS,
         },
         what: `ponytail {id} (${p.circles.length} circles)`,
+        mirror: editor.mirror,
       }),
     notify: d.notify,
     stageChanged: (stage) => d.ponytailStage(PONYTAIL_STAGE_HINT[stage]),
@@ -108,6 +109,7 @@ export function createTools(d: ToolDeps): ToolSet {
           kind: 'addCurve',
           curve: { type: 'stream', points, extend: true, viewpoint: camera() },
           what: `stream curve {id} (${points.length - 1} segments)`,
+          mirror: editor.mirror,
         });
       },
       preview: (points) => d.bridge.preview(points, camera()),
@@ -133,6 +135,7 @@ export function createTools(d: ToolDeps): ToolSet {
             viewpoint: camera(),
           },
           what: `dividing curve {id} (${points.length - 1} segments)`,
+          mirror: editor.mirror,
         }),
       setTilt: (end, alpha, side) => {
         const c = editor.selectedCurve;

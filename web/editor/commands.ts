@@ -2,6 +2,7 @@
 // function from (session, command) to the next session, the selection after it and a sentence
 // for the status line. The Editor (editor.ts) runs them through one path: history, then notify.
 import { detailIsOn, type HairDetail } from '../model/detail';
+import { isSelfMirror, mirrorCurve, syncMirrorTwins } from '../model/mirror';
 import { ponytailCircles } from '../model/ponytailGeometry';
 import { quantizeSession } from '../model/quantize';
 import {
@@ -33,7 +34,8 @@ export type CurveParamPatch = Readonly<Record<string, number | boolean>>;
 export type HintKind = 'cut' | 'concatenate' | 'insert';
 
 export type Command =
-  | { kind: 'addCurve'; curve: NewCurve; what: string }
+  /** `mirror`: also add the curve's mirrored twin (unless it is its own mirror image). */
+  | { kind: 'addCurve'; curve: NewCurve; what: string; mirror?: boolean }
   | { kind: 'deleteCurve'; id: string }
   /** A hint stroke's edit of a stream curve or ponytail spine (S4.4): its new points. */
   | { kind: 'hintEdit'; id: string; op: HintKind; points: Vec3[] }
@@ -79,6 +81,9 @@ const HEX_COLOR = /^#[0-9a-fA-F]{6}$/;
 export function applyCommand(s: SessionState, cmd: Command): CommandResult {
   const r = applyExact(s, cmd);
   if (r.session === s) return r;
+  // Mirrored twins follow: one deleted takes the other, one edited remakes the other.
+  const synced = cmd.kind === 'loadSession' ? null : syncMirrorTwins(s.curves, r.session.curves);
+  if (synced) r.session = { ...r.session, curves: synced };
   const next = quantizeSession(r.session);
   // A curve a tool made (or edited) must be one the session reader accepts, so the editor never
   // holds a session that a link, a file or an export would refuse (e.g. a stroke drawn far off
@@ -100,6 +105,16 @@ function applyExact(s: SessionState, cmd: Command): CommandResult {
     case 'addCurve': {
       const id = nextCurveId(s);
       const curve = { ...cmd.curve, id } as StyleCurve;
+      if (cmd.mirror && !isSelfMirror(curve)) {
+        const twinId = `c${Number(id.slice(1)) + 1}`;
+        const first = { ...curve, mirror: twinId } as StyleCurve;
+        const twin = mirrorCurve(first, twinId, id);
+        return {
+          session: addCurve(addCurve(s, first), twin),
+          selectedId: id,
+          message: `Added ${cmd.what.replace('{id}', id)} and its mirror ${twinId}.`,
+        };
+      }
       return {
         session: addCurve(s, curve),
         selectedId: id,
@@ -110,7 +125,13 @@ function applyExact(s: SessionState, cmd: Command): CommandResult {
       const next = deleteCurve(s, cmd.id);
       if (next === s) return { session: s, message: `No curve ${cmd.id} to delete.` };
       // the selection drops only if it was this curve (the editor drops missing selections)
-      return { session: next, message: `Deleted curve ${cmd.id}.` };
+      const twin = findCurve(s, cmd.id)?.mirror;
+      return {
+        session: next,
+        message: twin
+          ? `Deleted curve ${cmd.id} and its mirror ${twin}.`
+          : `Deleted curve ${cmd.id}.`,
+      };
     }
     case 'hintEdit': {
       const c = findCurve(s, cmd.id);

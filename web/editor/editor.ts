@@ -41,6 +41,7 @@ export class Editor {
   private readonly history: History<SessionState>;
   private selected: string | null = null;
   private currentTool: ToolName;
+  private mirrorOn = false;
   private readonly listeners = new Set<EditorListener>();
   private lastCoalesce: { key: string; time: number } | null = null;
 
@@ -64,6 +65,10 @@ export class Editor {
   }
   get tool(): ToolName {
     return this.currentTool;
+  }
+  /** Mirror editing (view state, not in the session or the history): new curves get a twin. */
+  get mirror(): boolean {
+    return this.mirrorOn;
   }
   get canUndo(): boolean {
     return this.history.canUndo;
@@ -134,6 +139,17 @@ export class Editor {
       previous: s,
       message: next ? `Selected ${next}.` : 'Nothing selected.',
       selectionChanged: true,
+    });
+  }
+
+  setMirror(on: boolean): void {
+    if (on === this.mirrorOn) return;
+    this.mirrorOn = on;
+    this.emit({
+      cause: 'tool',
+      previous: this.history.current,
+      message: on ? 'Mirror on: new curves get a twin across the head.' : 'Mirror off.',
+      selectionChanged: false,
     });
   }
 

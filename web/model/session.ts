@@ -29,6 +29,8 @@ export interface StreamCurve {
   /** Detail for the strands this curve governs (nearest curve at the root), instead of the
    *  session's. */
   detail?: HairDetail;
+  /** Id of its mirrored twin (model/mirror.ts), edited together with it. */
+  mirror?: string;
 }
 
 /** A dividing curve (S4.5) drawn on the scalp. `normals[i]` is the scalp normal at points[i];
@@ -40,6 +42,7 @@ export interface DividingCurve extends DividingSettings {
   normals: Vec3[];
   viewpoint: Viewpoint;
   detail?: HairDetail;
+  mirror?: string;
 }
 
 /** A ponytail (S4.6): `points` is the spine (edited like a stream curve); the cross-section and
@@ -55,6 +58,7 @@ export interface PonytailCurve {
   circles: PonytailCircle[];
   tightness: number; // centripetal magnitude (default 0.6)
   detail?: HairDetail;
+  mirror?: string;
 }
 
 export type StyleCurve = StreamCurve | DividingCurve | PonytailCurve;

@@ -395,9 +395,19 @@ const CURVE_FIELDS = {
     'viewpoint',
     'surfaceMode',
     'detail',
+    'mirror',
     ...paramNames('stream'),
   ],
-  dividing: ['id', 'type', 'points', 'normals', 'viewpoint', 'detail', ...paramNames('dividing')],
+  dividing: [
+    'id',
+    'type',
+    'points',
+    'normals',
+    'viewpoint',
+    'detail',
+    'mirror',
+    ...paramNames('dividing'),
+  ],
   ponytail: [
     'id',
     'type',
@@ -408,6 +418,7 @@ const CURVE_FIELDS = {
     'profiles',
     'circles',
     'detail',
+    'mirror',
     ...paramNames('ponytail'),
   ],
 } as const satisfies Record<CurveKindName, readonly string[]>;
@@ -440,6 +451,14 @@ function detail(v: Plain | undefined, path: string): { detail?: HairDetail } {
   return { detail: out };
 }
 
+/** A curve's `mirror`: the id of its twin (checked against the session's curves later). */
+function mirrorOf(v: Plain | undefined, path: string): { mirror?: string } {
+  if (v === undefined) return {};
+  if (typeof v !== 'string' || !/^[A-Za-z0-9_~-]{1,32}$/.test(v))
+    fail(path, "must be another curve's id");
+  return { mirror: v };
+}
+
 function curve(v: Plain, path: string): StyleCurve {
   if (typeof v !== 'object' || v === null || Array.isArray(v)) fail(path, 'must be an object');
   const type = v.type;
@@ -466,6 +485,7 @@ function curve(v: Plain, path: string): StyleCurve {
         ...(mode === undefined ? {} : { surfaceMode: mode }),
         ...scalars(o, 'stream', path),
         ...detail(o.detail, `${path}.detail`),
+        ...mirrorOf(o.mirror, `${path}.mirror`),
       };
     }
     case 'dividing': {
@@ -485,6 +505,7 @@ function curve(v: Plain, path: string): StyleCurve {
         viewpoint: vp,
         ...scalars(o, 'dividing', path),
         ...detail(o.detail, `${path}.detail`),
+        ...mirrorOf(o.mirror, `${path}.mirror`),
       };
     }
     case 'ponytail': {
@@ -536,6 +557,7 @@ function curve(v: Plain, path: string): StyleCurve {
         circles,
         ...scalars(o, 'ponytail', path),
         ...detail(o.detail, `${path}.detail`),
+        ...mirrorOf(o.mirror, `${path}.mirror`),
       };
     }
   }
@@ -617,6 +639,17 @@ function session(o: PlainRecord): SessionState {
     ids.add(c.id);
     curves.push(c);
   }
+  // mirrored twins name each other and are of one kind
+  const byId = new Map(curves.map((c) => [c.id, c]));
+  curves.forEach((c, i) => {
+    if (c.mirror === undefined) return;
+    const twin = byId.get(c.mirror);
+    if (!twin || twin === c || twin.mirror !== c.id || twin.type !== c.type)
+      fail(
+        `session.curves[${i}].mirror`,
+        `"${c.mirror}" must be another ${c.type} curve of the session whose mirror is "${c.id}"`,
+      );
+  });
   const g = growth(o.growth, 'session.growth');
   const hairColor = o.hairColor ?? DEFAULT_HAIR_COLOR;
   if (typeof hairColor !== 'string' || !/^#[0-9a-fA-F]{6}$/.test(hairColor))
