@@ -3,6 +3,9 @@ import { defineConfig } from '@playwright/test';
 // Debian's Chromium, never a downloaded browser (TOOLCHAIN.md). The built app is served by
 // `vite preview`; scenes are kept small (?strands=) because WebGL runs on SwiftShader here.
 const port = Number(process.env.E2E_PORT ?? 4179);
+// The "not-isolated" project's server omits the COOP/COEP headers (vite.config.ts), so the page
+// is not cross-origin isolated and the solver falls back to the single-threaded module.
+const plainPort = port + 1;
 
 export default defineConfig({
   testDir: 'tests/e2e',
@@ -28,10 +31,27 @@ export default defineConfig({
       ],
     },
   },
-  webServer: {
-    command: `npx vite preview --port ${port} --strictPort`,
-    url: `http://127.0.0.1:${port}/`,
-    reuseExistingServer: false,
-    timeout: 60_000,
-  },
+  projects: [
+    { name: 'isolated' },
+    {
+      name: 'not-isolated',
+      testMatch: /threads\.spec\.ts/,
+      use: { baseURL: `http://127.0.0.1:${plainPort}` },
+    },
+  ],
+  webServer: [
+    {
+      command: `npx vite preview --port ${port} --strictPort`,
+      url: `http://127.0.0.1:${port}/`,
+      reuseExistingServer: false,
+      timeout: 60_000,
+    },
+    {
+      command: `npx vite preview --port ${plainPort} --strictPort`,
+      env: { HAIRSKETCH_NO_ISOLATION: '1' },
+      url: `http://127.0.0.1:${plainPort}/`,
+      reuseExistingServer: false,
+      timeout: 60_000,
+    },
+  ],
 });

@@ -15,12 +15,33 @@ const CSP = [
   "form-action 'none'",
   "frame-ancestors 'none'",
 ].join('; ');
-const headers = { 'Content-Security-Policy': CSP, 'X-Content-Type-Options': 'nosniff' };
+// Cross-origin isolation (COOP + COEP): SharedArrayBuffer, hence the threaded solver module
+// (web/solver/worker.ts). Everything the app loads is same-origin, so require-corp costs nothing.
+// HAIRSKETCH_NO_ISOLATION=1 serves without them (the e2e fallback project: single-threaded).
+const isolation: Record<string, string> =
+  process.env.HAIRSKETCH_NO_ISOLATION === '1'
+    ? {}
+    : {
+        'Cross-Origin-Opener-Policy': 'same-origin',
+        'Cross-Origin-Embedder-Policy': 'require-corp',
+      };
+const headers = {
+  'Content-Security-Policy': CSP,
+  'X-Content-Type-Options': 'nosniff',
+  ...isolation,
+};
 
 export default defineConfig({
   root: 'web',
   publicDir: '../public',
-  build: { outDir: '../dist', emptyOutDir: true, target: 'es2022' },
+  build: {
+    outDir: '../dist',
+    emptyOutDir: true,
+    target: 'es2022',
+    // The threaded module's loader and pthread worker script stay files (a data: URL worker
+    // would be cross-origin, and the CSP allows same-origin workers only).
+    assetsInlineLimit: (file: string) => (/hairsolver/.test(file) ? false : undefined),
+  },
   worker: { format: 'es' },
   server: { host: '127.0.0.1', port: 5173, strictPort: false, headers },
   preview: { host: '127.0.0.1', port: 4173, strictPort: false, headers },

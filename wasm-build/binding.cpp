@@ -21,6 +21,7 @@
 #include "curve_set.hpp"
 #include "field_solver.hpp"
 #include "hair_engine.hpp"
+#include "parallel.hpp"
 
 using namespace hairsketch;
 
@@ -243,6 +244,13 @@ EMSCRIPTEN_KEEPALIVE int32_t hs_struct_layout(int32_t id, int32_t* out, int32_t 
 }
 
 // ---- engine -----------------------------------------------------------------------------
+
+// Threads the solver's parallel loops use (the caller included); the threaded module's pthread
+// pool must hold n - 1 workers. Returns the count in effect: always 1 in the single-threaded
+// module.
+EMSCRIPTEN_KEEPALIVE int32_t hs_set_threads(int32_t n) {
+  return hairsketch::parallel::setThreadCount(n);
+}
 
 EMSCRIPTEN_KEEPALIVE EngineHandle* hs_engine_create() { return new EngineHandle(); }
 EMSCRIPTEN_KEEPALIVE void hs_engine_destroy(EngineHandle* h) { delete h; }

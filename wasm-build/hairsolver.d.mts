@@ -15,6 +15,11 @@ export interface HairSolverModule {
   _hs_last_error(): number;
   /** Writes sizeof and the member offsets of BOUNDARY_STRUCTS[id] to out; returns the count. */
   _hs_struct_layout(id: number, out: number, max: number): number;
+  /** Threads of the solver's parallel loops (caller included); returns the count in effect
+   *  (always 1 in the single-threaded module). */
+  _hs_set_threads(n: number): number;
+  /** The module's memory (shared in the threaded module). */
+  wasmMemory?: WebAssembly.Memory;
 
   _hs_engine_create(): number;
   _hs_engine_destroy(h: number): void;
@@ -67,6 +72,9 @@ export interface HairSolverModule {
 export interface HairSolverModuleOptions {
   wasmBinary?: Uint8Array | ArrayBuffer;
   locateFile?: (file: string, prefix: string) => string;
+  /** Threaded module (hairsolver-mt.mjs): the URL its pthread workers import, and their count. */
+  mainScriptUrlOrBlob?: string;
+  hsPoolSize?: number;
 }
 
 declare function createHairSolver(options?: HairSolverModuleOptions): Promise<HairSolverModule>;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "parallel.hpp"
+
 namespace hairsketch {
 
 std::vector<float> toFloatField(const Field& T) {
@@ -122,6 +124,80 @@ struct PaddedSampler {
   }
 };
 
+using PointBuffer = decltype(Strands::points);
+
+// Grows the strands of roots [b, e) into buf from offset `used` on (buf grown ahead of each
+// strand, never zero-filled), writing each strand's end (in points of buf) to ends[r - b].
+// False when buf passes maxPoints points.
+struct GrowRange {
+  const PaddedSampler& s;
+  const HeadDistance* head;
+  float margin, minSlide, l, minMag2;
+  double maxLen;
+  int maxSegments;
+  const std::vector<Eigen::Vector3f>& roots;
+
+  bool operator()(size_t b, size_t e, PointBuffer& buf, size_t& used, uint32_t* ends,
+                  size_t maxPoints) const {
+    const size_t perStrand = 3 * (size_t(maxSegments) + 1);
+    for (size_t r = b; r < e; ++r) {
+      if (buf.size() < used + perStrand)  // doubling, never past every strand at its max
+        buf.resize(std::max(std::min(buf.size() * 2, (e - b) * perStrand), used + perStrand) +
+                   3 * 4096);
+      float* dst = buf.data() + used;
+      float x = roots[r].x(), y = roots[r].y(), z = roots[r].z();
+      *dst++ = x;
+      *dst++ = y;
+      *dst++ = z;
+      double length = 0;
+      if (s.inside(x, y, z)) {
+        for (int seg = 0; seg < maxSegments; ++seg) {
+          const F4 v = s.at(x, y, z);
+          const float m2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+          if (!(m2 >= minMag2)) break;  // weak field (or NaN)
+          float nx = x + l * v[0], ny = y + l * v[1], nz = z + l * v[2];
+          double segLen = double(l) * std::sqrt(double(m2));
+          if (head) {
+            float grad[3];
+            if (head->distance(nx, ny, nz, grad) < margin) {
+              if (seg > 0 && !head->scalpNear(nx, ny, nz)) break;  // not over the face
+              // Slide: drop the inward part of the step, then stand off at the margin.
+              float st[3] = {nx - x, ny - y, nz - z};
+              const float g2 = grad[0] * grad[0] + grad[1] * grad[1] + grad[2] * grad[2];
+              const float sn = (st[0] * grad[0] + st[1] * grad[1] + st[2] * grad[2]);
+              if (g2 > 1e-6f && sn < 0)
+                for (int k = 0; k < 3; ++k) st[k] -= sn / g2 * grad[k];
+              float q[3] = {x + st[0], y + st[1], z + st[2]};
+              head->pushOut(q, margin);
+              const double moved =
+                  std::sqrt(double(q[0] - x) * (q[0] - x) + double(q[1] - y) * (q[1] - y) +
+                            double(q[2] - z) * (q[2] - z));
+              if (!(moved >= minSlide * segLen)) break;  // the field points into the head
+              nx = q[0];
+              ny = q[1];
+              nz = q[2];
+              segLen = moved;
+            }
+          }
+          if (!s.inside(nx, ny, nz)) break;  // leaving the bounding volume
+          if (length + segLen > maxLen) break;
+          length += segLen;
+          x = nx;
+          y = ny;
+          z = nz;
+          *dst++ = x;
+          *dst++ = y;
+          *dst++ = z;
+        }
+      }
+      used = size_t(dst - buf.data());
+      if (used / 3 > maxPoints) return false;
+      ends[r - b] = uint32_t(used / 3);
+    }
+    return true;
+  }
+};
+
 }  // namespace
 
 Status growStrands(const Grid& g, const std::vector<float>& field,
@@ -147,84 +223,87 @@ Status growStrands(const Grid& g, const std::vector<float>& field,
     return Status::Error(StatusCode::InvalidInput, "grow: margin and minSlide must be >= 0");
   if (head && !head->built()) head = nullptr;
   const float margin = float(prm.margin), minSlide = float(prm.minSlide);
-  out.points.resize(out.points.capacity());
   const PaddedSampler s(g, field);
-  const float l = float(prm.stepFraction * g.step);
-  const float minMag2 = float(prm.minMagnitude * prm.minMagnitude);
-  const double maxLen = prm.maxLength;
-  const size_t perStrand = 3 * (size_t(prm.maxSegments) + 1);
+  const GrowRange grow{s,
+                       head,
+                       margin,
+                       minSlide,
+                       float(prm.stepFraction * g.step),
+                       float(prm.minMagnitude * prm.minMagnitude),
+                       prm.maxLength,
+                       prm.maxSegments,
+                       roots};
   out.strandStart.resize(roots.size() + 1);
-  // Points are written through a pointer into a buffer grown ahead of each strand (no
-  // per-point push_back), then trimmed to what was written.
-  size_t used = 0;
-  for (size_t r = 0; r < roots.size(); ++r) {
-    if (out.points.size() < used + perStrand)  // doubling, never past every strand at its max
-      out.points.resize(
-          std::max(std::min(out.points.size() * 2, roots.size() * perStrand), used + perStrand) +
-          3 * 4096);
-    float* dst = out.points.data() + used;
-    float x = roots[r].x(), y = roots[r].y(), z = roots[r].z();
-    *dst++ = x;
-    *dst++ = y;
-    *dst++ = z;
-    double length = 0;
-    if (s.inside(x, y, z)) {
-      for (int seg = 0; seg < prm.maxSegments; ++seg) {
-        const F4 v = s.at(x, y, z);
-        const float m2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
-        if (!(m2 >= minMag2)) break;  // weak field (or NaN)
-        float nx = x + l * v[0], ny = y + l * v[1], nz = z + l * v[2];
-        double segLen = double(l) * std::sqrt(double(m2));
-        if (head) {
-          float grad[3];
-          if (head->distance(nx, ny, nz, grad) < margin) {
-            if (seg > 0 && !head->scalpNear(nx, ny, nz)) break;  // not over the face
-            // Slide: drop the inward part of the step, then stand off at the margin.
-            float st[3] = {nx - x, ny - y, nz - z};
-            const float g2 = grad[0] * grad[0] + grad[1] * grad[1] + grad[2] * grad[2];
-            const float sn = (st[0] * grad[0] + st[1] * grad[1] + st[2] * grad[2]);
-            if (g2 > 1e-6f && sn < 0)
-              for (int e = 0; e < 3; ++e) st[e] -= sn / g2 * grad[e];
-            float q[3] = {x + st[0], y + st[1], z + st[2]};
-            head->pushOut(q, margin);
-            const double moved =
-                std::sqrt(double(q[0] - x) * (q[0] - x) + double(q[1] - y) * (q[1] - y) +
-                          double(q[2] - z) * (q[2] - z));
-            if (!(moved >= minSlide * segLen)) break;  // the field points into the head
-            nx = q[0];
-            ny = q[1];
-            nz = q[2];
-            segLen = moved;
-          }
-        }
-        if (!s.inside(nx, ny, nz)) break;  // leaving the bounding volume
-        if (length + segLen > maxLen) break;
-        length += segLen;
-        x = nx;
-        y = ny;
-        z = nz;
-        *dst++ = x;
-        *dst++ = y;
-        *dst++ = z;
-      }
-    }
-    used = size_t(dst - out.points.data());
-    if (used / 3 > maxPoints) {
+  const size_t n = roots.size();
+  const int threads = parallel::threadCount();
+  // Fewer than ~256 strands a chunk is not worth a thread.
+  const int chunks = threads > 1 ? int(std::min<size_t>(size_t(threads) * 4, n / 256)) : 1;
+  if (chunks <= 1) {
+    out.points.resize(out.points.capacity());
+    size_t used = 0;
+    if (!grow(0, n, out.points, used, out.strandStart.data() + 1, maxPoints)) {
       out.points.clear();
       out.strandStart.assign(1, 0);
       return Status::Error(StatusCode::OverMemoryCap, "grow: too many strand points");
     }
-    out.strandStart[r + 1] = uint32_t(used / 3);
+    out.points.resize(used);
+    return Status::Ok();
   }
-  out.points.resize(used);
+  // Threads: each chunk of roots grows into its own buffer (strand ends relative to it), then
+  // the chunks are joined in root order: the same bytes as one thread.
+  std::vector<PointBuffer> bufs;
+  bufs.resize(size_t(chunks));
+  std::vector<size_t> usedBy(size_t(chunks), 0);
+  std::vector<char> fits(size_t(chunks), 1);
+  parallel::forChunks(n, chunks, [&](int c, size_t b, size_t e) {
+    fits[size_t(c)] =
+        grow(b, e, bufs[size_t(c)], usedBy[size_t(c)], out.strandStart.data() + 1 + b, maxPoints);
+  });
+  size_t total = 0;
+  bool ok = true;
+  for (int c = 0; c < chunks; ++c) {
+    ok = ok && fits[size_t(c)];
+    total += usedBy[size_t(c)];
+  }
+  if (!ok || total / 3 > maxPoints) {
+    out.points.clear();
+    out.strandStart.assign(1, 0);
+    return Status::Error(StatusCode::OverMemoryCap, "grow: too many strand points");
+  }
+  out.points.resize(total);
+  size_t at = 0;
+  for (int c = 0; c < chunks; ++c) {
+    const size_t b = n * size_t(c) / size_t(chunks), e = n * size_t(c + 1) / size_t(chunks);
+    for (size_t r = b; r < e; ++r) out.strandStart[r + 1] += uint32_t(at / 3);
+    std::copy(bufs[size_t(c)].begin(), bufs[size_t(c)].begin() + std::ptrdiff_t(usedBy[size_t(c)]),
+              out.points.begin() + std::ptrdiff_t(at));
+    at += usedBy[size_t(c)];
+    bufs[size_t(c)] = PointBuffer();  // free as we go
+  }
   return Status::Ok();
 }
 
+static void keepStrandOutside(const HeadDistance& head, float margin, Strands& strands, size_t st,
+                              size_t& moved);
+
 size_t keepOutsideHead(const HeadDistance& head, float margin, Strands& strands) {
   if (!head.built()) return 0;
-  size_t moved = 0;
   const size_t nS = strands.strandStart.empty() ? 0 : strands.strandStart.size() - 1;
-  for (size_t st = 0; st < nS; ++st) {
+  // Strands are independent: chunks of them in parallel, each counting its own moves.
+  const int chunks = int(std::min<size_t>(size_t(parallel::threadCount()) * 4, nS / 256 + 1));
+  std::vector<size_t> movedBy(size_t(std::max(chunks, 1)), 0);
+  parallel::forChunks(nS, chunks, [&](int c, size_t s0, size_t s1) {
+    size_t& moved = movedBy[size_t(c)];
+    for (size_t st = s0; st < s1; ++st) keepStrandOutside(head, margin, strands, st, moved);
+  });
+  size_t moved = 0;
+  for (size_t m : movedBy) moved += m;
+  return moved;
+}
+
+static void keepStrandOutside(const HeadDistance& head, float margin, Strands& strands, size_t st,
+                              size_t& moved) {
+  {
     const uint32_t a = strands.strandStart[st], b = strands.strandStart[st + 1];
     for (uint32_t p = a + 1; p < b; ++p) {
       float* q = strands.points.data() + 3 * size_t(p);
@@ -257,7 +336,6 @@ size_t keepOutsideHead(const HeadDistance& head, float margin, Strands& strands)
       if (!any) break;
     }
   }
-  return moved;
 }
 
 }  // namespace hairsketch

@@ -95,7 +95,7 @@ export class StatusPresenter {
     }
     this.progress = 0;
     this.firstLook = false;
-    this.details = `${st.constraints.toLocaleString('en-US')} constraints · ${st.method}, ${st.iterations} iterations, solve ${st.solveMs.toFixed(0)} ms, growth ${st.growMs.toFixed(0)} ms`;
+    this.details = `${st.constraints.toLocaleString('en-US')} constraints · ${st.method}, ${st.iterations} iterations, solve ${st.solveMs.toFixed(0)} ms, growth ${st.growMs.toFixed(0)} ms${st.module ? ` · ${st.module}` : ''}`;
   }
 
   solverError(message: string, kind: SolverErrorKind | undefined, restarting: boolean): void {

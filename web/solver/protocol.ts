@@ -209,6 +209,8 @@ export interface SolveStats {
   solveMs: number;
   growMs: number;
   heapBytes: number; // wasm heap size after the job
+  /** The wasm module that solved: "threads: N" or "single-threaded: <why>" (status tooltip). */
+  module?: string;
 }
 
 // ---- messages -------------------------------------------------------------------------------

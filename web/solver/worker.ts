@@ -1,7 +1,20 @@
 // The solver Web Worker: loads the wasm engine and answers protocol messages.
+// Cross-origin isolated (the server sends COOP/COEP, so SharedArrayBuffer exists) it loads the
+// threaded module, hairsolver-mt, which starts its own pthread workers; otherwise, or when that
+// fails to load, the single-threaded module. The threaded module's files are plain assets (?url):
+// vite must not bundle them (its loader and worker import each other at run time).
+
 import wasmUrl from '../generated/hairsolver.wasm?url';
+import mtScriptUrl from '../generated/hairsolver-mt.mjs?url';
+import mtWasmUrl from '../generated/hairsolver-mt.wasm?url';
+import mtWorkerUrl from '../generated/hairsolver-mt.worker.js?url';
 import { type FromWorker, resultTransferables, type ToWorker } from './protocol';
-import { loadSolverEngine } from './wasmEngine';
+import {
+  chooseThreads,
+  loadSolverEngine,
+  type ModuleFactory,
+  type WasmSolverEngine,
+} from './wasmEngine';
 import { DEFAULT_SCHEDULER, WorkerLogic } from './workerLogic';
 
 const scope = self as unknown as {
@@ -34,7 +47,26 @@ scope.onmessage = (ev) => {
   else early.push(ev.data);
 };
 
-loadSolverEngine({ locateFile: () => wasmUrl })
+async function loadEngine(): Promise<WasmSolverEngine> {
+  const single = (singleReason: string) =>
+    loadSolverEngine({ locateFile: () => wasmUrl, singleReason });
+  if (!(self as { crossOriginIsolated?: boolean }).crossOriginIsolated)
+    return single('not cross-origin isolated');
+  const threads = chooseThreads(navigator.hardwareConcurrency);
+  try {
+    const scriptUrl = new URL(mtScriptUrl, self.location.href).href;
+    const imported = (await import(/* @vite-ignore */ scriptUrl)) as { default: ModuleFactory };
+    return await loadSolverEngine({
+      locateFile: (file) => (file.endsWith('.worker.js') ? mtWorkerUrl : mtWasmUrl),
+      threaded: { create: imported.default, scriptUrl, threads },
+    });
+  } catch (e) {
+    console.warn('threaded solver module failed to load; single-threaded instead:', e);
+    return single(`the threaded module failed to load (${String(e)})`);
+  }
+}
+
+loadEngine()
   .then((engine) => {
     logic = new WorkerLogic(engine, post, { ...DEFAULT_SCHEDULER, yieldNow });
     for (const m of early.splice(0)) void logic.handle(m);
