@@ -56,11 +56,18 @@ export class HairPresenter {
     if (this.shown !== r.strands) {
       this.shown = r.strands;
       this.finalPending = final;
-      this.hair.show(r.strands, r.lighting, () => {
-        if (!final || this.shown !== r.strands) return;
-        this.finalPending = false;
-        this.onFinalShown?.();
-      });
+      // previews and first looks keep the head's shadow as the converged hair cast it: the head
+      // stays in the frame cache while a stroke is drawn (viewer/frameCache.ts)
+      this.hair.show(
+        r.strands,
+        r.lighting,
+        () => {
+          if (!final || this.shown !== r.strands) return;
+          this.finalPending = false;
+          this.onFinalShown?.();
+        },
+        final,
+      );
       const n = visibleStrands(r.strands);
       this.status.counts(n, this.status.curves);
       this.status.bumpRevision();

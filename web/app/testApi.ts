@@ -80,6 +80,22 @@ export interface HairsketchTestApi {
   setCamera(position: Vec3, target: Vec3): void;
   /** The view ray through client coordinates. */
   rayAt(x: number, y: number): { origin: Vec3; direction: Vec3 };
+  /** The current view drawn through the frame cache (from the layer the next frame would start
+   *  from, or the cached head with `from` = 'static') and drawn whole: RGBA pixels of each, rows
+   *  bottom-up, base64; `source` the layer the cached image started from ('none': nothing was
+   *  cached), `count` the hair index count both drew. */
+  renderBoth(from?: 'static'): {
+    width: number;
+    height: number;
+    source: string;
+    count: number;
+    cached: string;
+    full: string;
+  };
+  /** Turns the frame cache off (every frame drawn whole) or on; returns whether it is in use. */
+  setFrameCache(on: boolean): boolean;
+  /** Where the last frame started from: 'hair', 'static' or 'none' (viewer/frameCache.ts). */
+  frameSource(): string;
 }
 
 declare global {
@@ -220,5 +236,22 @@ export function installTestApi(app: TestApiParts): void {
       };
     },
     ponytailSpine: () => app.ponytail.spinePoints.map((p) => [...p] as Vec3),
+    renderBoth(from) {
+      const r = viewer.compareFrames(from);
+      return { ...r, cached: base64(r.cached), full: base64(r.full) };
+    },
+    setFrameCache(on) {
+      viewer.frameCacheEnabled = on;
+      viewer.requestRender();
+      return viewer.frameCacheActive;
+    },
+    frameSource: () => viewer.lastFrameSource,
   };
+}
+
+function base64(bytes: Uint8Array): string {
+  let s = '';
+  for (let i = 0; i < bytes.length; i += 0x8000)
+    s += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
+  return btoa(s);
 }

@@ -39,15 +39,18 @@ export class HairView {
   }
 
   /** Replaces the hair on screen with `strands` (lit by `lighting` when given); `shown` runs
-   *  once a frame has drawn it. */
+   *  once a frame has drawn it. `headShadow` (default true): the hair's shadow on the head is
+   *  updated too; previews leave it as the last converged hair cast it, so the head (the frame
+   *  cache's static layer) is not drawn again for every preview. */
   show(
     strands: StrandArrays,
     lighting: HairLightingArrays | null | undefined,
     shown?: () => void,
+    headShadow = true,
   ): void {
     this.current = { strands, lighting: lighting ?? null };
     this.lightingMs = lighting ? lighting.ms : null;
-    if (this.head && lighting) setHeadHairShadow(this.head, lighting.head);
+    if (this.head && lighting && headShadow) setHeadHairShadow(this.head, lighting.head);
     const hair = this.build();
     if (shown) {
       const off = this.viewer.onHairShown((h) => {
@@ -75,7 +78,7 @@ export class HairView {
     if (css === this.color) return;
     this.color = css;
     for (const m of [this.lines, this.strips]) if (m) setHairColor(m, css);
-    this.viewer.requestRender();
+    this.viewer.invalidateFrameCache(); // a uniform: the cached hair layer cannot see it
   }
 
   private build(): THREE.Object3D {
@@ -124,6 +127,6 @@ export class HairView {
     if (!(hair instanceof THREE.Mesh)) return;
     this.dom.render(this.viewer.renderer, hair.geometry, this.strips, this.head);
     this.dom.refresh(this.strips);
-    this.viewer.requestRender();
+    this.viewer.invalidateFrameCache(); // new maps and uniforms: the cached hair is stale
   }
 }

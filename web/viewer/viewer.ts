@@ -15,6 +15,17 @@ import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { KEY_LIGHT_POSITION } from '../lighting/keyLight';
 import type { Vec3 } from '../model/vec3';
 import {
+  drawableStamp,
+  type FrameMode,
+  type FramePlan,
+  FrameSlots,
+  type HairKey,
+  type LayerKey,
+  planFrame,
+  sameLayer,
+  viewKey,
+} from './frameCache';
+import {
   curveRgb,
   HIDDEN_OPACITY,
   OVERLAY_ORDER,
@@ -50,20 +61,7 @@ const RESET_VIEW_MS = 450;
 
 export const DEFAULT_CAMERA = { position: [2.6, 0.9, 7.0] as Vec3, target: [0, -0.55, 0] as Vec3 };
 
-export type FrameMode = 'interactive' | 'settled' | 'full';
-
-/** Hair index count a frame of `mode` draws, given all of the hair and the interactive prefix,
- *  and whether a full-detail frame must follow: a settled view is drawn whole only when an
- *  interactive frame could draw it all, else at interactive detail first. */
-export function frameDetail(
-  mode: FrameMode,
-  all: number,
-  interactive: number,
-): { count: number; fullDetailNext: boolean } {
-  if (mode === 'interactive') return { count: interactive, fullDetailNext: false };
-  if (mode === 'settled' && interactive < all) return { count: interactive, fullDetailNext: true };
-  return { count: all, fullDetailNext: false };
-}
+export { type FrameMode, frameDetail } from './frameCache';
 
 export class Viewer {
   readonly renderer: THREE.WebGLRenderer;
@@ -108,6 +106,17 @@ export class Viewer {
   };
   private viewAnimation: { from: CameraView; to: CameraView; start: number; ms: number } | null =
     null;
+  /** The frame cache (frameCache.ts): its slots (made with the first frame) and what each holds. */
+  private slots: FrameSlots | null = null;
+  private staticKey: LayerKey | null = null;
+  private hairKey: HairKey | null = null;
+  /** Bumped by invalidateFrameCache: changes the slots' stamps cannot see (uniforms). */
+  private cacheEpoch = 0;
+  /** Frames are drawn through the frame cache when it is available (false: every frame is
+   *  drawn whole, as before it existed; a test and benchmark switch). */
+  frameCacheEnabled = true;
+  /** Where the last frame started from (frameCache.ts FrameSource). */
+  private lastSource: FramePlan['source'] = 'none';
 
   constructor(readonly canvas: HTMLCanvasElement) {
     // Multisampling costs ~2x per frame on a software rasteriser (SwiftShader, llvmpipe), where
@@ -166,22 +175,188 @@ export class Viewer {
 
   /** Draws the scene. 'interactive': the hair at interactive detail; 'settled': all of it when a
    *  frame can afford it, else interactive detail now and all of it FULL_DETAIL_DELAY_FRAMES
-   *  frames later ('full'). */
+   *  frames later ('full'). Through the frame cache, only what changed since the cached layers
+   *  were drawn is drawn again. */
   private renderFrame(now: number, mode: FrameMode): void {
     const { all, interactive } = this.hairCounts();
-    const { count, fullDetailNext } = frameDetail(mode, all, interactive);
-    this.fullDetailOwed = fullDetailNext;
-    if (fullDetailNext) this.fullDetailWait = FULL_DETAIL_DELAY_FRAMES;
-    if (this.hair && all > 0) this.hair.geometry.setDrawRange(0, count);
-    this.lastDetail = all > 0 ? count / all : 1;
-    this.renderer.render(this.scene, this.camera);
-    this.lastRender = { time: now, drawn: count };
+    const keys = this.layerKeys();
+    const plan = this.planFor(mode, all, interactive, keys);
+    this.fullDetailOwed = plan.fullDetailNext;
+    if (plan.fullDetailNext) this.fullDetailWait = FULL_DETAIL_DELAY_FRAMES;
+    this.lastDetail = all > 0 ? plan.count / all : 1;
+    const source = this.draw(plan, all, keys, true);
+    this.lastSource = source;
+    // a frame that drew no hair says nothing about what hair costs
+    this.lastRender = { time: now, drawn: source === 'hair' ? -1 : plan.count };
     this.onRendered?.();
     const hair = this.hairGroup.children[0] ?? null;
     if (hair !== this.shownHair) {
       this.shownHair = hair;
       if (hair) for (const cb of [...this.hairShownListeners]) cb(hair);
     }
+  }
+
+  /** Whether frames go through the frame cache (on, and the canvas allows copies). */
+  get frameCacheActive(): boolean {
+    this.slots ??= new FrameSlots(this.renderer);
+    return this.frameCacheEnabled && this.slots.available;
+  }
+
+  /** Where the last frame started from: 'hair' (only overlays drawn), 'static' (hair and
+   *  overlays drawn over the cached head) or 'none' (drawn whole). */
+  get lastFrameSource(): FramePlan['source'] {
+    return this.lastSource;
+  }
+
+  /** Forgets the cached layers: for changes the cache cannot see for itself (a uniform of the
+   *  hair's or the head's material). Camera, size, the head's geometry and material versions and
+   *  the hair object are checked every frame. Requests a frame. */
+  invalidateFrameCache(): void {
+    this.cacheEpoch++;
+    this.requestRender();
+  }
+
+  /** What the cached layers must match: the view, the static part's stamp, the hair's. */
+  private layerKeys(): { layer: LayerKey; hair: string } {
+    this.camera.updateMatrixWorld();
+    const size = this.renderer.getDrawingBufferSize(new THREE.Vector2());
+    const statics = this.scene.children.filter((c) => this.layerOf(c) === 'static');
+    return {
+      layer: {
+        view: viewKey(
+          this.camera.matrixWorld.elements,
+          this.camera.projectionMatrix.elements,
+          size.x,
+          size.y,
+        ),
+        scene: `${this.cacheEpoch}|${drawableStamp(statics)}`,
+      },
+      hair: drawableStamp([this.hairGroup]),
+    };
+  }
+
+  private planFor(
+    mode: FrameMode,
+    all: number,
+    interactive: number,
+    keys: { layer: LayerKey; hair: string },
+  ): FramePlan {
+    if (!this.frameCacheActive) return planFrame(mode, all, interactive, false, null);
+    const cachedHair =
+      this.hairKey && sameLayer(this.hairKey, keys.layer) && this.hairKey.hair === keys.hair
+        ? this.hairKey.count
+        : null;
+    return planFrame(mode, all, interactive, sameLayer(this.staticKey, keys.layer), cachedHair);
+  }
+
+  private layerOf(o: THREE.Object3D): 'static' | 'hair' | 'overlay' | 'light' {
+    if (o === this.hairGroup) return 'hair';
+    if (
+      o === this.curveGroup ||
+      o === this.displayGroup ||
+      o === this.guideGroup ||
+      o === this.draft
+    )
+      return 'overlay';
+    return o instanceof THREE.Light ? 'light' : 'static';
+  }
+
+  /** Draws the scene's objects of the given layers (lights always stay: hiding one would change
+   *  the lit materials' programs). */
+  private renderLayers(layers: ReadonlyArray<'static' | 'hair' | 'overlay'>): void {
+    const hidden: THREE.Object3D[] = [];
+    for (const c of this.scene.children) {
+      const layer = this.layerOf(c);
+      if (layer === 'light' || layers.includes(layer) || !c.visible) continue;
+      c.visible = false;
+      hidden.push(c);
+    }
+    try {
+      this.renderer.render(this.scene, this.camera);
+    } finally {
+      for (const c of hidden) c.visible = true;
+    }
+  }
+
+  /** Draws a frame as `plan` says, into the canvas; `save`: keep the layers drawn in the cache.
+   *  Returns where the frame started from (a cached slot, or 'none'). */
+  private draw(
+    plan: FramePlan,
+    all: number,
+    keys: { layer: LayerKey; hair: string },
+    save: boolean,
+  ): FramePlan['source'] {
+    const r = this.renderer;
+    if (this.hair && all > 0 && plan.source !== 'hair')
+      this.hair.geometry.setDrawRange(0, plan.count);
+    if (!this.frameCacheActive || !this.slots) {
+      r.render(this.scene, this.camera);
+      return 'none';
+    }
+    const slots = this.slots;
+    const size = r.getDrawingBufferSize(new THREE.Vector2());
+    let source = plan.source;
+    if (source !== 'none' && !slots.copy(source, 'restore', size.x, size.y)) source = 'none';
+    if (source === 'none' && plan.source === 'hair' && this.hair && all > 0)
+      this.hair.geometry.setDrawRange(0, plan.count);
+    const autoClear = r.autoClear;
+    try {
+      if (source === 'none') {
+        r.autoClear = true;
+        this.renderLayers(['static']);
+        if (save && slots.copy('static', 'save', size.x, size.y)) this.staticKey = keys.layer;
+      }
+      r.autoClear = false;
+      if (source !== 'hair') {
+        this.renderLayers(['hair']);
+        if (save && slots.copy('hair', 'save', size.x, size.y))
+          this.hairKey = { ...keys.layer, hair: keys.hair, count: plan.count };
+      }
+      this.renderLayers(['overlay']);
+    } finally {
+      r.autoClear = autoClear;
+    }
+    return source;
+  }
+
+  /** Test probe: the current view drawn through the frame cache (starting from the slot the next
+   *  frame would use, or from the static slot with `from` = 'static') and drawn whole in one pass,
+   *  both with the same hair detail; RGBA pixels of the drawing buffer, rows bottom-up. Caches
+   *  nothing; a normal frame follows. */
+  compareFrames(from?: 'static'): {
+    width: number;
+    height: number;
+    source: FramePlan['source'];
+    count: number;
+    cached: Uint8Array;
+    full: Uint8Array;
+  } {
+    const { all, interactive } = this.hairCounts();
+    const keys = this.layerKeys();
+    let plan = this.planFor(
+      this.holds.size > 0 ? 'interactive' : 'settled',
+      all,
+      interactive,
+      keys,
+    );
+    if (from === 'static' && plan.source === 'hair') {
+      const staticValid = this.frameCacheActive && sameLayer(this.staticKey, keys.layer);
+      plan = { ...plan, source: staticValid ? 'static' : 'none' };
+    }
+    const size = this.renderer.getDrawingBufferSize(new THREE.Vector2());
+    const gl = this.renderer.getContext();
+    const read = (): Uint8Array => {
+      const px = new Uint8Array(4 * size.x * size.y);
+      gl.readPixels(0, 0, size.x, size.y, gl.RGBA, gl.UNSIGNED_BYTE, px);
+      return px;
+    };
+    const source = this.draw(plan, all, keys, false);
+    const cached = read();
+    if (this.hair && all > 0) this.hair.geometry.setDrawRange(0, plan.count);
+    this.renderer.render(this.scene, this.camera);
+    const full = read();
+    this.requestRender();
+    return { width: size.x, height: size.y, source, count: plan.count, cached, full };
   }
 
   /** Calls `cb` with each hair object (as given to setHair) once the first frame that draws it
@@ -260,6 +435,7 @@ export class Viewer {
   }
 
   private adaptBudget(frameMs: number, drawn: number): void {
+    if (drawn < 0) return; // the frame drew no hair (the cached hair layer)
     // Interactive frames still slow with the hair at its floor: the cost is per pixel (a software
     // rasteriser, a large screen), so draw them at half resolution until the view settles.
     if (

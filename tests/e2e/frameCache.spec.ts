@@ -1,0 +1,136 @@
+// Frames that cost only what changed (issue 15, viewer/frameCache.ts): a frame drawn from the
+// cached head (and hair) plus what changed must look like the same state drawn whole. Real
+// pointer events; waits on status attributes and the test API, never on fixed sleeps.
+import { writeFileSync } from 'node:fs';
+import { expect, type Page, test } from '@playwright/test';
+import { settled, status, watchConsole } from './helpers';
+
+interface Both {
+  width: number;
+  height: number;
+  source: string;
+  count: number;
+  cached: string;
+  full: string;
+}
+
+/** Mean absolute difference of the RGB channels, as a fraction of full scale, and the fraction
+ *  of pixels that are not the background in the full image (the scene is really drawn). */
+function compare(b: Both): { meanDiff: number; drawn: number } {
+  const a = Buffer.from(b.cached, 'base64');
+  const f = Buffer.from(b.full, 'base64');
+  expect(a.length).toBe(4 * b.width * b.height);
+  expect(f.length).toBe(a.length);
+  let sum = 0;
+  let drawn = 0;
+  const bg = [f[0], f[1], f[2]]; // a corner: the clear colour
+  for (let i = 0; i < a.length; i += 4) {
+    let other = false;
+    for (let c = 0; c < 3; c++) {
+      sum += Math.abs(a[i + c] - f[i + c]);
+      if (Math.abs(f[i + c] - bg[c]) > 8) other = true;
+    }
+    if (other) drawn++;
+  }
+  return { meanDiff: sum / ((3 * a.length) / 4) / 255, drawn: drawn / (a.length / 4) };
+}
+
+/** Writes both images as PNGs next to the test's output (to look at). */
+async function savePngs(page: Page, b: Both, base: string): Promise<void> {
+  for (const which of ['cached', 'full'] as const) {
+    const url = await page.evaluate(
+      ([data, w, h]) => {
+        const raw = Uint8Array.from(atob(data as string), (c) => c.charCodeAt(0));
+        const width = w as number;
+        const height = h as number;
+        const out = new Uint8ClampedArray(raw.length);
+        for (let y = 0; y < height; y++)
+          out.set(
+            raw.subarray((height - 1 - y) * width * 4, (height - y) * width * 4),
+            y * width * 4,
+          );
+        for (let i = 3; i < out.length; i += 4) out[i] = 255;
+        const c = document.createElement('canvas');
+        c.width = width;
+        c.height = height;
+        c.getContext('2d')?.putImageData(new ImageData(out, width, height), 0, 0);
+        return c.toDataURL('image/png');
+      },
+      [b[which], b.width, b.height] as const,
+    );
+    writeFileSync(`${base}-${which}.png`, Buffer.from(url.split(',')[1], 'base64'));
+  }
+}
+
+/** Resolves once the frame showing hair revision `rev` has been drawn. */
+function revisionDrawn(page: Page, rev: number) {
+  return page.waitForFunction((r) => {
+    const log = window.hairsketch.hairLog();
+    return log.length > 0 && log[log.length - 1].revision >= r;
+  }, rev);
+}
+
+test('frames drawn through the cache look the same as full redraws, during and after a stroke', async ({
+  page,
+}, testInfo) => {
+  const errors = watchConsole(page);
+  await page.goto('/?strands=1500');
+  const s0 = await settled(page);
+  expect(await page.evaluate(() => window.hairsketch.setFrameCache(true))).toBe(true);
+  await page.getByRole('button', { name: 'Stream curve' }).click();
+  const start = await page.evaluate(() => window.hairsketch.scalpToScreen(35, 20));
+  if (!start) throw new Error('scalp point hidden');
+  await page.mouse.move(start.x, start.y);
+  await page.mouse.down();
+  for (let i = 1; i <= 8; i++) await page.mouse.move(start.x + 9 * i, start.y + 15 * i);
+  // a preview of the stroke is on screen
+  await page.waitForFunction((r) => {
+    const el = document.querySelector('[data-testid="status"]') as HTMLElement;
+    return Number(el.dataset.revision) > r;
+  }, s0.revision);
+  await revisionDrawn(page, (await status(page)).revision);
+  // the draft moves on while the preview hair stays: frames start from the cached hair layer
+  // (a preview of the move may still replace the hair: then wait for its frame and try again)
+  await page.mouse.move(start.x + 80, start.y + 140);
+  let during: Both | null = null;
+  for (let attempt = 0; attempt < 20; attempt++) {
+    await revisionDrawn(page, (await status(page)).revision);
+    during = await page.evaluate(() => window.hairsketch.renderBoth());
+    if (during.source === 'hair') break;
+    await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => r(null))));
+  }
+  if (!during) throw new Error('no frame compared');
+  expect(during.source, 'the head and preview hair come from the cache').toBe('hair');
+  const d1 = compare(during);
+  await savePngs(page, during, testInfo.outputPath('during-stroke'));
+  expect(d1.drawn).toBeGreaterThan(0.05);
+  expect(d1.meanDiff).toBeLessThan(0.01);
+
+  const fromHead = await page.evaluate(() => window.hairsketch.renderBoth('static'));
+  expect(fromHead.source, 'the head comes from the cache, the hair is drawn over it').toBe(
+    'static',
+  );
+  expect(compare(fromHead).meanDiff).toBeLessThan(0.01);
+
+  await page.mouse.up();
+  const s1 = await settled(page, s0.revision);
+  expect(s1.curves).toBe(s0.curves + 1);
+  // idle, every strand drawn: an overlay change (the Constraints display) redraws no hair
+  await page.waitForFunction(() => window.hairsketch.hairDetail() === 1);
+  await page.getByTestId('display-constraints').check();
+  await page.evaluate(() => window.hairsketch.idle());
+  expect(await page.evaluate(() => window.hairsketch.frameSource())).toBe('hair');
+  const idle = await page.evaluate(() => window.hairsketch.renderBoth());
+  expect(idle.source).toBe('hair');
+  const d2 = compare(idle);
+  await savePngs(page, idle, testInfo.outputPath('idle-overlay'));
+  expect(d2.meanDiff).toBeLessThan(0.01);
+
+  // a camera move invalidates every cached layer: the new view, not the old one, is shown
+  await page.evaluate(() => window.hairsketch.setCamera([-3.5, 1.2, 6], [0, -0.4, 0]));
+  await page.evaluate(() => window.hairsketch.idle());
+  await page.waitForFunction(() => window.hairsketch.hairDetail() === 1);
+  const moved = await page.evaluate(() => window.hairsketch.renderBoth());
+  expect(compare(moved).meanDiff).toBeLessThan(0.01);
+  expect(errors).toEqual([]);
+});
