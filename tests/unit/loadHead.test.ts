@@ -588,14 +588,41 @@ describe('load time and memory (figures for the issue)', () => {
             if (loaded.head.signedDistance(p) < 0) inside++;
           }
       const t2 = performance.now();
+      // the same within a 3 cm band (farther points get ±0.3): what scalp avoidance looks at
+      let insideBand = 0;
+      for (let i = 0; i < n; i++)
+        for (let j = 0; j < n; j++)
+          for (let k = 0; k < n; k++) {
+            const p: Vec3 = [0, 1, 2].map((a) => {
+              const u = [i, j, k][a] / (n - 1);
+              return b.min[a] - 0.3 + u * (b.max[a] - b.min[a] + 0.6);
+            }) as Vec3;
+            if (loaded.signedDistance(p, 0.3) < 0) insideBand++;
+          }
+      const t3 = performance.now();
+      expect(insideBand).toBe(inside);
       const after = process.memoryUsage();
       const triangles = loaded.mesh.indices.length / 3;
+      // what the loaded head keeps: its arrays and the BVH's
+      const m = loaded.mesh;
+      const internals = loaded.head.bvh as unknown as {
+        _roots: ArrayBuffer[];
+        _indirectBuffer?: Uint32Array;
+      };
+      const kept =
+        m.positions.byteLength +
+        m.normals.byteLength +
+        m.indices.byteLength +
+        m.scalp.byteLength +
+        internals._roots.reduce((n, r) => n + r.byteLength, 0) +
+        (internals._indirectBuffer?.byteLength ?? 0);
       const t = loaded.timings;
       console.log(
         `[loadHead] ${triangles.toLocaleString('en-US')} triangles, ${(bytes.byteLength / 2 ** 20).toFixed(0)} MB STL: ` +
           `load ${(t1 - t0).toFixed(0)} ms (parse ${t.parseMs.toFixed(0)}, weld+place ${t.normaliseMs.toFixed(0)}, ` +
           `normals+BVH ${t.bvhMs.toFixed(0)}, scalp ${t.scalpMs.toFixed(0)}); signed distance at ${n ** 3} points ` +
-          `${(t2 - t1).toFixed(0)} ms (${inside} inside); memory: heap +${mb(after.heapUsed - before.heapUsed)}, ` +
+          `${(t2 - t1).toFixed(0)} ms (${inside} inside), within a 0.3 band ${(t3 - t2).toFixed(0)} ms; ` +
+          `kept: ${mb(kept)} (mesh arrays and BVH); memory: heap +${mb(after.heapUsed - before.heapUsed)}, ` +
           `array buffers +${mb(after.arrayBuffers - before.arrayBuffers)}, rss +${mb(after.rss - before.rss)} ` +
           `(rss ${mb(after.rss)})`,
       );

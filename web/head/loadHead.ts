@@ -63,7 +63,8 @@ export interface LoadedHead {
    *  normals), and marking the default scalp. */
   timings: { parseMs: number; normaliseMs: number; bvhMs: number; scalpMs: number };
   insideHead(p: Vec3): boolean;
-  signedDistance(p: Vec3): number;
+  /** Distance to the mesh, negative inside (insideHead); beyond `maxDistance` ±maxDistance. */
+  signedDistance(p: Vec3, maxDistance?: number): number;
 }
 
 export type LoadHeadResult = { ok: true; head: LoadedHead } | { ok: false; error: string };
@@ -226,7 +227,7 @@ function finish(m: IndexedTriangles, info: Info): LoadedHead {
     head,
     mesh,
     insideHead: (p) => probe.inside(p),
-    signedDistance: (p) => probe.signedDistance(p),
+    signedDistance: (p, maxDistance) => probe.signedDistance(p, maxDistance),
   };
 }
 

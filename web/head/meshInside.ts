@@ -25,8 +25,9 @@ const VOTES_NEEDED = 4; // majority of 7
 export interface MeshInside {
   /** True when `p` is inside the mesh (majority of 7 rays). */
   inside(p: Vec3): boolean;
-  /** Distance to the closest surface point, negative inside. */
-  signedDistance(p: Vec3): number;
+  /** Distance to the closest surface point, negative inside; with `maxDistance`, points
+   *  farther than that from the surface give ±maxDistance (much faster far from it). */
+  signedDistance(p: Vec3, maxDistance?: number): number;
 }
 
 export function meshInside(bvh: MeshBVH, bounds: { min: Vec3; max: Vec3 }): MeshInside {
@@ -63,11 +64,24 @@ export function meshInside(bvh: MeshBVH, bounds: { min: Vec3; max: Vec3 }): Mesh
     return yes > no;
   };
 
-  const signedDistance = (p: Vec3): number => {
+  // The previous query bounds this one (d(p) ≤ d(q) + |p − q|): consecutive queries on a grid
+  // or along a strand prune the BVH with that bound and stay exact.
+  const last: Vec3 = [Number.NaN, Number.NaN, Number.NaN];
+  let lastDistance = Infinity;
+  const signedDistance = (p: Vec3, maxDistance = Infinity): number => {
     target.set(p[0], p[1], p[2]);
-    const r = bvh.closestPointToPoint(target, result);
-    if (!r) return Infinity;
-    const d = r.distance;
+    const bound =
+      (lastDistance + Math.hypot(p[0] - last[0], p[1] - last[1], p[2] - last[2])) * (1 + 1e-6) +
+      1e-9;
+    const limit = Math.min(maxDistance, Number.isFinite(bound) ? bound : Infinity);
+    let r = bvh.closestPointToPoint(target, result, 0, limit);
+    if (!r && limit < maxDistance) r = bvh.closestPointToPoint(target, result, 0, maxDistance);
+    const d = r ? r.distance : maxDistance;
+    if (!Number.isFinite(d)) return Infinity; // no triangles
+    last[0] = p[0];
+    last[1] = p[1];
+    last[2] = p[2];
+    lastDistance = d;
     if (d === 0) return 0;
     return inside(p) ? -d : d;
   };
