@@ -70,6 +70,11 @@ export async function threadedNodeOptions(threads: number): Promise<LoadOptions>
   };
 }
 
+/** Ends every pthread worker started so far (the modules they served can no longer be used). */
+export async function stopThreadWorkers(): Promise<void> {
+  await Promise.all(started.splice(0).map((w) => w.terminate()));
+}
+
 /** The single-threaded module's load options under Node. */
 export function singleNodeOptions(): LoadOptions {
   return {
