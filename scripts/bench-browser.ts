@@ -7,6 +7,8 @@
 // instead of 1°: ~100K strands with the default preset).
 // Writes bench-results/browser.json and prints a table. A benchmark, not a test: it asserts
 // nothing about speed. The drag is paced like a hand (about 60 pointer events per second).
+// Each stroke's row also counts the frames drawn while drawing by where they started (the frame
+// cache: cached head and hair / cached head / nothing).
 // BENCH_DIST=<dir> serves another build (vite build --outDir <dir>) instead of dist/.
 import { type ChildProcess, spawn } from 'node:child_process';
 import { mkdirSync, writeFileSync } from 'node:fs';
@@ -34,7 +36,19 @@ interface StrokeResult {
   convergedMs: number | null;
   previewsPerSecond: number;
   method: string;
+  /** Frames drawn while the stroke was drawn, by where each started (viewer/frameCache.ts):
+   *  from the cached head and hair (only overlays drawn), the cached head, or nothing. */
+  frames: { hair: number; static: number; none: number } | null;
 }
+
+/** The app's frame counts by source (absent in builds before the frame cache). */
+const frameSources = (page: Page) =>
+  page.evaluate(() => {
+    const api = window.hairsketch as unknown as {
+      frameSources?: () => { hair: number; static: number; none: number };
+    };
+    return api.frameSources ? api.frameSources() : null;
+  });
 
 const median = (xs: number[]): number | null => {
   const v = xs.filter((x) => Number.isFinite(x)).sort((a, b) => a - b);
@@ -99,12 +113,14 @@ async function stroke(page: Page, i: number): Promise<StrokeResult> {
   await page.mouse.move(start.x, start.y);
   await page.mouse.down();
   const t0 = await page.evaluate(() => performance.now());
+  const f0 = await frameSources(page);
   const n = 60;
   for (let k = 1; k <= n; k++) {
     await page.mouse.move(start.x + ((90 * k) / n) * (i % 2 ? -1 : 1), start.y + (170 * k) / n);
     await page.waitForTimeout(16);
   }
   const t1 = await page.evaluate(() => performance.now());
+  const f1 = await frameSources(page);
   await page.mouse.up();
   trace(`stroke ${i}: pointer up`);
   await settled(page);
@@ -128,6 +144,10 @@ async function stroke(page: Page, i: number): Promise<StrokeResult> {
     convergedMs: converged ? converged.time - r.up : null,
     previewsPerSecond: during / ((t1 - t0) / 1000),
     method,
+    frames:
+      f0 && f1
+        ? { hair: f1.hair - f0.hair, static: f1.static - f0.static, none: f1.none - f0.none }
+        : null,
   };
 }
 
@@ -199,6 +219,7 @@ async function main(): Promise<void> {
         firstHairMedianMs: median(strokes.map((s) => s.firstMs ?? Number.NaN)),
         convergedMedianMs: median(strokes.map((s) => s.convergedMs ?? Number.NaN)),
         previewsPerSecondMedian: median(strokes.map((s) => s.previewsPerSecond)),
+        framesWhileDrawing: strokes.map((s) => s.frames),
         heapMB: heap / 2 ** 20,
         strands: idle.strands,
         idleFrameMs: idle.frameMs,

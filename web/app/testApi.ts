@@ -96,6 +96,8 @@ export interface HairsketchTestApi {
   setFrameCache(on: boolean): boolean;
   /** Where the last frame started from: 'hair', 'static' or 'none' (viewer/frameCache.ts). */
   frameSource(): string;
+  /** Frames drawn since the page loaded, by where each started from (benchmark probe). */
+  frameSources(): { hair: number; static: number; none: number };
 }
 
 declare global {
@@ -246,6 +248,7 @@ export function installTestApi(app: TestApiParts): void {
       return viewer.frameCacheActive;
     },
     frameSource: () => viewer.lastFrameSource,
+    frameSources: () => ({ ...viewer.frameSources }),
   };
 }
 

@@ -117,6 +117,8 @@ export class Viewer {
   frameCacheEnabled = true;
   /** Where the last frame started from (frameCache.ts FrameSource). */
   private lastSource: FramePlan['source'] = 'none';
+  /** Frames drawn so far, by where each started from (a benchmark probe). */
+  readonly frameSources: Record<FramePlan['source'], number> = { hair: 0, static: 0, none: 0 };
 
   constructor(readonly canvas: HTMLCanvasElement) {
     // Multisampling costs ~2x per frame on a software rasteriser (SwiftShader, llvmpipe), where
@@ -186,6 +188,7 @@ export class Viewer {
     this.lastDetail = all > 0 ? plan.count / all : 1;
     const source = this.draw(plan, all, keys, true);
     this.lastSource = source;
+    this.frameSources[source]++;
     // a frame that drew no hair says nothing about what hair costs
     this.lastRender = { time: now, drawn: source === 'hair' ? -1 : plan.count };
     this.onRendered?.();
