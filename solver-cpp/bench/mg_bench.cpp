@@ -7,12 +7,18 @@
 // smaller grids), where the error estimate stops, memory. Env: MG_SYM, MG_CSYM, MG_SWEEPS,
 // MG_COARSEST override MultigridOptions.
 // Usage: mg_bench [N ...]   (default 29 37 47 63)
+//        mg_bench --app BEFORE.txt AFTER.txt   an app's constraint sets ("nx ny nz" then
+//          "index tx ty tz" lines): the edit BEFORE -> AFTER as the worker runs it (warm start to
+//          1e-6, then the history-free final solve from zero to 1e-6), against a reference.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <random>
 #include <set>
+#include <sstream>
+#include <string>
 #include <vector>
 
 #include "mg_pcg_solver.hpp"
@@ -60,7 +66,86 @@ static void addStroke(const Grid& g, std::mt19937& rng, int count, std::vector<C
 
 static double relErr(const Field& a, const Field& ref) { return (a - ref).norm() / ref.norm(); }
 
+static MultigridOptions optionsFromEnv() {
+  MultigridOptions mo;
+  if (const char* e = std::getenv("MG_SYM")) mo.symmetricSweeps = std::atoi(e) != 0;
+  if (const char* e = std::getenv("MG_CSYM")) mo.coarseSymmetricSweeps = std::atoi(e) != 0;
+  if (const char* e = std::getenv("MG_SWEEPS")) mo.sweeps = std::atoi(e);
+  if (const char* e = std::getenv("MG_COARSEST")) mo.coarsestMaxPoints = std::atoi(e);
+  if (const char* e = std::getenv("MG_CSWEEPS")) mo.coarseSweeps = std::atoi(e);
+  if (const char* e = std::getenv("MG_CYCLES")) mo.coarseCycles = std::atoi(e);
+  return mo;
+}
+
+static bool readConstraints(const char* path, Grid& g, ConstraintSet& out) {
+  std::ifstream in(path);
+  if (!(in >> g.nx >> g.ny >> g.nz)) return false;
+  std::vector<Constraint> c;
+  int idx;
+  double x, y, z;
+  while (in >> idx >> x >> y >> z) c.push_back({idx, Eigen::Vector3d(x, y, z)});
+  out = normalizeConstraints(c);
+  return true;
+}
+
+static int appMode(const char* before, const char* after) {
+  Grid g, g1;
+  ConstraintSet c0, c1;
+  if (!readConstraints(before, g, c0) || !readConstraints(after, g1, c1) || g.nx != g1.nx ||
+      g.ny != g1.ny || g.nz != g1.nz) {
+    std::fprintf(stderr, "cannot read %s / %s\n", before, after);
+    return 2;
+  }
+  const MultigridOptions mo = optionsFromEnv();
+  MgPcgSolver ref(mo);
+  ref.setGrid(g, kDefaultOmega);
+  ref.setConstraints(c1);
+  ref.iterate(1000, 1e-13);
+  Field T1, T;
+  ref.field(T1);
+
+  MgPcgSolver s(mo);
+  auto t0 = Clock::now();
+  if (!s.setGrid(g, kDefaultOmega).ok()) return 1;
+  const double setupMs = ms(t0, Clock::now());
+  s.setConstraints(c0);
+  s.iterate(1000, 1e-6);
+  t0 = Clock::now();
+  s.setConstraints(c1);
+  const double editMs = ms(t0, Clock::now());
+  t0 = Clock::now();
+  MgProgress pw;
+  s.iterate(1000, 1e-6, &pw);
+  const double warmMs = ms(t0, Clock::now());
+  s.field(T);
+  const double warmErr = relErr(T, T1);
+  t0 = Clock::now();
+  s.forgetWarmStart();
+  const double forgetMs = ms(t0, Clock::now());
+  t0 = Clock::now();
+  MgProgress pc;
+  s.iterate(1000, 1e-6, &pc);
+  const double coldMs = ms(t0, Clock::now());
+  s.field(T);
+  std::printf(
+      "| %dx%dx%d | %lld | %zu -> %zu | %d | %.0f | %.1f | %.1f | %d | %.0f | %.1e | %.0f | %d | "
+      "%.0f | %.1e |\n",
+      g.nx, g.ny, g.nz, (long long)g.size(), c0.size(), c1.size(), s.hierarchy().levels(), setupMs,
+      s.memoryBytes() / 1048576.0, editMs, pw.iterations, warmMs, warmErr, forgetMs, pc.iterations,
+      coldMs, relErr(T, T1));
+  return 0;
+}
+
 int main(int argc, char** argv) {
+  if (argc == 4 && std::string(argv[1]) == "--app") {
+    std::printf(
+        "| grid | n | constraints | levels | setup ms | MB | edit ms | warm it | warm ms | warm "
+        "err "
+        "| forget ms | cold it | cold ms | cold err "
+        "|\n|---|---|---|---|---|---|---|---|---|---|---|"
+        "---|---|---|\n");
+    return appMode(argv[2], argv[3]);
+  }
   std::vector<int> sizes;
   for (int a = 1; a < argc; ++a) sizes.push_back(std::atoi(argv[a]));
   if (sizes.empty()) sizes = {29, 37, 47, 63};
@@ -80,11 +165,7 @@ int main(int argc, char** argv) {
       addStroke(g, rng, stroke, edited, used);
       const ConstraintSet c0 = normalizeConstraints(base), c1 = normalizeConstraints(edited);
 
-      MultigridOptions mo;
-      if (const char* e = std::getenv("MG_SYM")) mo.symmetricSweeps = std::atoi(e) != 0;
-      if (const char* e = std::getenv("MG_CSYM")) mo.coarseSymmetricSweeps = std::atoi(e) != 0;
-      if (const char* e = std::getenv("MG_SWEEPS")) mo.sweeps = std::atoi(e);
-      if (const char* e = std::getenv("MG_COARSEST")) mo.coarsestMaxPoints = std::atoi(e);
+      const MultigridOptions mo = optionsFromEnv();
       MgPcgSolver s(mo);
       auto t0 = Clock::now();
       if (!s.setGrid(g, kDefaultOmega).ok()) return 1;

@@ -1,5 +1,6 @@
 #include "multigrid_hierarchy.hpp"
 
+#include <Eigen/Cholesky>
 #include <algorithm>
 #include <cmath>
 
@@ -129,6 +130,8 @@ Status MultigridHierarchy::build(const Grid& grid, const MultigridOptions& optio
     compZ_[l] = compose(grid.nz, cz);
   }
   coarsestDirty_ = true;
+  factorValid_ = false;
+  pending_.clear();
   return Status::Ok();
 }
 
@@ -215,6 +218,13 @@ Status MultigridHierarchy::addPenaltyToLevels(int p, double delta) {
       }
     }
     for (int a = 0; a < m; ++a) lv.invDiag[idx[a]] = 1.0 / lv.A.val[lv.diagPos[idx[a]]];
+    if (l + 1 == levels_.size() && factorValid_) {
+      CoarseTerm t;
+      t.count = m;
+      t.delta = delta;
+      for (int a = 0; a < m; ++a) t.idx[a] = idx[a], t.v[a] = v[a];
+      pending_.push_back(t);
+    }
   }
   return Status::Ok();
 }
@@ -226,6 +236,8 @@ Status MultigridHierarchy::resetPenalties() {
     lv.A.val = lv.base;
     for (int i = 0; i < lv.A.rows; ++i) lv.invDiag[i] = 1.0 / lv.A.val[lv.diagPos[i]];
   }
+  factorValid_ = false;  // refactor from the rebuilt operator: no trace of earlier updates
+  pending_.clear();
   for (int p = 0; p < grid_.size(); ++p) {
     const double w = fine_.w[paddedRow(p)];
     if (w == 0.0) continue;
@@ -238,18 +250,76 @@ Status MultigridHierarchy::resetPenalties() {
 
 Status MultigridHierarchy::prepare() {
   if (!coarsestDirty_) return Status::Ok();
-  const Level& c = levels_.back();
-  const int n = c.A.rows;
-  coarsestDense_.setZero(n, n);
-  for (int r = 0; r < n; ++r)
-    for (int64_t e = c.A.ptr[r]; e < c.A.ptr[r + 1]; ++e)
-      coarsestDense_(r, c.A.col[e]) = c.A.val[e];
-  coarsestLlt_.compute(coarsestDense_);
-  if (coarsestLlt_.info() != Eigen::Success)
-    return Status::Error(StatusCode::NotPositiveDefinite,
-                         "coarsest level is not positive definite");
+  // Rank-1 updates cost ~2 (m - first)^2 flops each, a refactorisation m^3 / 3 (plus the copy).
+  const double m = double(levels_.back().A.rows);
+  const bool update = factorValid_ && double(pending_.size()) * 6.0 < m;
+  lastRefactored_ = !(update && updateCoarsest());
+  pending_.clear();
+  if (lastRefactored_) {
+    Status s = refactorCoarsest();
+    if (!s.ok()) return s;
+  }
   coarsestDirty_ = false;
   return Status::Ok();
+}
+
+Status MultigridHierarchy::refactorCoarsest() {
+  factorValid_ = false;
+  const Level& c = levels_.back();
+  const int n = c.A.rows;
+  coarsestL_.setZero(n, n);
+  for (int r = 0; r < n; ++r)
+    for (int64_t e = c.A.ptr[r]; e < c.A.ptr[r + 1]; ++e)
+      if (c.A.col[e] <= r) coarsestL_(r, c.A.col[e]) = c.A.val[e];
+  Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>, Eigen::Lower> llt(coarsestL_);
+  if (llt.info() != Eigen::Success)
+    return Status::Error(StatusCode::NotPositiveDefinite,
+                         "coarsest level is not positive definite");
+  coarsestL_.triangularView<Eigen::StrictlyUpper>().setZero();
+  factorValid_ = true;
+  return Status::Ok();
+}
+
+// L L^T + delta v v^T for each pending term, updates (delta > 0) before downdates so that every
+// intermediate matrix stays positive definite; columns before the term's first entry do not
+// change. false (factor invalid) when a pivot is not finite or drops below 1e-10 of its old
+// value: the caller refactors from the operator.
+bool MultigridHierarchy::updateCoarsest() {
+  const int n = int(coarsestL_.rows());
+  Eigen::VectorXd u(n);
+  for (int pass = 0; pass < 2; ++pass)
+    for (const CoarseTerm& t : pending_) {
+      if ((pass == 0) != (t.delta > 0)) continue;
+      const double sigma = t.delta > 0 ? 1.0 : -1.0;
+      const double scale = std::sqrt(std::abs(t.delta));
+      int first = n;
+      for (int a = 0; a < t.count; ++a) first = std::min(first, t.idx[a]);
+      u.segment(first, n - first).setZero();
+      for (int a = 0; a < t.count; ++a) u[t.idx[a]] += scale * t.v[a];
+      double beta = 1.0;
+      for (int j = first; j < n; ++j) {
+        const double uj = u[j];
+        if (uj == 0.0) continue;  // column j unchanged
+        const double ljj = coarsestL_(j, j), dj = ljj * ljj;
+        const double su2 = sigma * uj * uj;
+        const double x = dj + su2 / beta;
+        if (!(x > 1e-10 * dj) || !std::isfinite(x)) {
+          factorValid_ = false;
+          return false;
+        }
+        const double nljj = std::sqrt(x);
+        const double gamma = dj * beta + su2;
+        beta += su2 / dj;
+        coarsestL_(j, j) = nljj;
+        const int rs = n - j - 1;
+        if (rs == 0) continue;
+        auto col = coarsestL_.col(j).tail(rs);
+        auto ut = u.tail(rs);
+        ut -= (uj / ljj) * col;
+        col = (nljj / ljj) * col + (nljj * sigma * uj / gamma) * ut;
+      }
+    }
+  return true;
 }
 
 size_t MultigridHierarchy::memoryBytes() const {
@@ -264,7 +334,8 @@ size_t MultigridHierarchy::memoryBytes() const {
     b += (t.x.n + t.y.n + t.z.n) * (2 * sizeof(int) + 2 * sizeof(double));
   for (size_t l = 0; l < compX_.size(); ++l)
     b += (compX_[l].size() + compY_[l].size() + compZ_[l].size()) * sizeof(Comp1);
-  b += size_t(coarsestDense_.size()) * 2 * sizeof(double);
+  b += size_t(coarsestL_.size() + coarsestRhs_.size()) * sizeof(double) +
+       pending_.capacity() * sizeof(CoarseTerm);
   return b;
 }
 
@@ -464,9 +535,10 @@ void MultigridHierarchy::solveCoarsest() {
   Level& c = levels_.back();
   const int n = c.A.rows;
   using Rm = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
-  Eigen::Map<const Rm> b(c.b.data(), n, 3);
-  Eigen::Map<Rm> x(c.x.data(), n, 3);
-  x = coarsestLlt_.solve(b);
+  coarsestRhs_ = Eigen::Map<const Rm>(c.b.data(), n, 3);
+  coarsestL_.triangularView<Eigen::Lower>().solveInPlace(coarsestRhs_);
+  coarsestL_.transpose().triangularView<Eigen::Upper>().solveInPlace(coarsestRhs_);
+  Eigen::Map<Rm>(c.x.data(), n, 3) = coarsestRhs_;
 }
 
 void MultigridHierarchy::cycle(int l) {
@@ -475,18 +547,24 @@ void MultigridHierarchy::cycle(int l) {
     solveCoarsest();
     return;
   }
+  const int sweeps = opt_.coarseSweeps > 0 ? opt_.coarseSweeps : opt_.sweeps;
   std::fill(lv.x.begin(), lv.x.end(), 0.0);
-  for (int s = 0; s < opt_.sweeps; ++s) {
+  for (int s = 0; s < sweeps; ++s) {
     coarseSweep(l, true);
     if (opt_.coarseSymmetricSweeps) coarseSweep(l, false);
   }
-  coarseResidual(l);
   const Transfer3D& t = transfers_[l];
-  restrictTranspose(t, lv.res.data(), BoxLayout::dense(lv.nx, lv.ny, lv.nz),
-                    levels_[l + 1].b.data(), work_);
-  cycle(l + 1);
-  prolongAdd(t, levels_[l + 1].x.data(), lv.x.data(), BoxLayout::dense(lv.nx, lv.ny, lv.nz), work_);
-  for (int s = 0; s < opt_.sweeps; ++s) {
+  // More than one correction only when the next level is not the exact coarsest.
+  const int corrections = l + 2 == levels() ? 1 : std::max(1, opt_.coarseCycles);
+  for (int g = 0; g < corrections; ++g) {
+    coarseResidual(l);
+    restrictTranspose(t, lv.res.data(), BoxLayout::dense(lv.nx, lv.ny, lv.nz),
+                      levels_[l + 1].b.data(), work_);
+    cycle(l + 1);
+    prolongAdd(t, levels_[l + 1].x.data(), lv.x.data(), BoxLayout::dense(lv.nx, lv.ny, lv.nz),
+               work_);
+  }
+  for (int s = 0; s < sweeps; ++s) {
     if (opt_.coarseSymmetricSweeps) coarseSweep(l, true);
     coarseSweep(l, false);
   }
