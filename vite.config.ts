@@ -1,3 +1,5 @@
+import { readFile } from 'node:fs/promises';
+import type { Plugin } from 'vite';
 import { defineConfig } from 'vitest/config';
 
 // The app lives in web/ (index.html there); public/ is served as is; the build goes to dist/.
@@ -31,7 +33,36 @@ const headers = {
   ...isolation,
 };
 
+// vite dev serves JS through its transform, which adds ES imports: the threaded module's classic
+// pthread worker script (and its loader, which that worker imports) must reach the browser as
+// built, as `vite build` emits them (plain ?url assets).
+const rawThreadedModule = (): Plugin => ({
+  name: 'hairsketch-raw-threaded-module',
+  apply: 'serve',
+  configureServer(server) {
+    server.middlewares.use(async (req, res, next) => {
+      // only the files themselves: `…?url` is vite's module naming them
+      const path = req.url ?? '';
+      const m = /^\/generated\/(hairsolver-mt\.(?:mjs|worker\.js|wasm))$/.exec(path);
+      if (!m) return next();
+      try {
+        const body = await readFile(new URL(`./web/generated/${m[1]}`, import.meta.url));
+        for (const [k, v] of Object.entries(headers)) res.setHeader(k, v);
+        res.setHeader(
+          'Content-Type',
+          m[1].endsWith('.wasm') ? 'application/wasm' : 'text/javascript',
+        );
+        res.setHeader('Cache-Control', 'no-cache');
+        res.end(body);
+      } catch {
+        next();
+      }
+    });
+  },
+});
+
 export default defineConfig({
+  plugins: [rawThreadedModule()],
   root: 'web',
   publicDir: '../public',
   build: {
