@@ -22,7 +22,12 @@ const threads = Number(process.env.BENCH_THREADS ?? chooseThreads(availableParal
 const repeat = Number(process.env.BENCH_REPEAT ?? 3);
 const head = Head.builtin();
 const grid = gridForPreset(gridName);
-const session = presetSession('default', head, gridName, 0);
+// Roots every 0.55° instead of 1° for more than the preset's ~30K strands (as bench:export).
+const base = presetSession('default', head, gridName, 0);
+const dense = strands > 30_000;
+const session = dense
+  ? { ...base, growth: { ...base.growth, thetaStepDeg: 0.55, phiStepDeg: 0.55 } }
+  : base;
 
 async function run(label: string, load: LoadOptions) {
   const engine = await loadSolverEngine(load);
