@@ -32,8 +32,10 @@ namespace hairsketch {
 struct MultigridOptions {
   // Coarsen until a level has at most this many points; that level is factored densely. A
   // large exact coarsest level matters on this operator: on the app's 250K grid ending at
-  // 9 x 11 x 9 instead of 5 x 6 x 5 takes CG from ~127 to ~49 iterations.
-  int coarsestMaxPoints = 1400;
+  // 9 x 11 x 9 instead of 5 x 6 x 5 takes CG from ~127 to ~49 iterations. Past ~1000 points the
+  // dense triangular solves (m^2 per V-cycle) cost more than the iterations they save (the 50K
+  // grid's 10 x 12 x 10: 45 -> 35 iterations but 11 -> 16 ms per iteration natively).
+  int coarsestMaxPoints = 1000;
   int sweeps = 1;  // smoothing steps before and after the coarse correction
   // true: each step is a symmetric Gauss-Seidel sweep (forward then backward) on both sides;
   // false: pre-smoothing forward, post-smoothing backward (also symmetric overall, cheaper).
