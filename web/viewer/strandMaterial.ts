@@ -494,24 +494,7 @@ export function buildStrandGeometry(
 ): THREE.BufferGeometry {
   const attrs = pointAttributes(points, strandStart, colorSeed, lighting);
   const { pointCount } = attrs;
-  const strands = Math.max(0, strandStart.length - 1);
-  let segments = 0;
-  for (let s = 0; s < strands; s++) {
-    const n = strandStart[s + 1] - strandStart[s];
-    if (n > 1) segments += n - 1;
-  }
-  const index = new Uint32Array(2 * segments);
-  let w = 0;
-  const lodCounts = new Uint32Array(LOD_GROUPS + 1);
-  for (let g = 0; g < LOD_GROUPS; g++) {
-    for (let s = LOD_ORDER[g]; s < strands; s += LOD_GROUPS) {
-      for (let i = strandStart[s]; i + 1 < strandStart[s + 1]; i++) {
-        index[w++] = i;
-        index[w++] = i + 1;
-      }
-    }
-    lodCounts[g + 1] = w;
-  }
+  const { index, lodCounts } = lodIndex(strandStart, [0, 1]);
   const geometry = new THREE.BufferGeometry();
   geometry.userData.lodCounts = lodCounts;
   const used = pointCount === points.length / 3 ? points : points.subarray(0, 3 * pointCount);
@@ -537,7 +520,6 @@ export function buildStrandStripGeometry(
 ): THREE.BufferGeometry {
   const attrs = pointAttributes(points, strandStart, colorSeed, lighting);
   const { pointCount } = attrs;
-  const strands = Math.max(0, strandStart.length - 1);
   const twice = <T extends Int8Array | Uint8Array | Float32Array>(src: T, size: number): T => {
     const out = new (src.constructor as { new (n: number): T })(2 * src.length);
     for (let i = 0; i < pointCount; i++)
@@ -548,28 +530,8 @@ export function buildStrandStripGeometry(
       }
     return out;
   };
-  let segments = 0;
-  for (let s = 0; s < strands; s++) {
-    const n = strandStart[s + 1] - strandStart[s];
-    if (n > 1) segments += n - 1;
-  }
-  const index = new Uint32Array(6 * segments);
-  let w = 0;
-  const lodCounts = new Uint32Array(LOD_GROUPS + 1);
-  for (let g = 0; g < LOD_GROUPS; g++) {
-    for (let s = LOD_ORDER[g]; s < strands; s += LOD_GROUPS) {
-      for (let i = strandStart[s]; i + 1 < strandStart[s + 1]; i++) {
-        const a = 2 * i;
-        index[w++] = a;
-        index[w++] = a + 1;
-        index[w++] = a + 2;
-        index[w++] = a + 1;
-        index[w++] = a + 3;
-        index[w++] = a + 2;
-      }
-    }
-    lodCounts[g + 1] = w;
-  }
+  // vertices 2i, 2i + 1 are point i's two sides: two triangles per segment
+  const { index, lodCounts } = lodIndex(strandStart, [0, 1, 2, 1, 3, 2], 2);
   const geometry = new THREE.BufferGeometry();
   geometry.userData.lodCounts = lodCounts;
   geometry.setAttribute(
@@ -583,6 +545,34 @@ export function buildStrandStripGeometry(
   geometry.setIndex(new THREE.BufferAttribute(index, 1));
   setBounds(geometry, attrs.box, pointCount === 0);
   return geometry;
+}
+
+/** The index of every segment in level-of-detail order (strands interleaved with stride
+ *  LOD_GROUPS, groups in LOD_ORDER) and `lodCounts[g]`, the index count of the first g groups.
+ *  Each segment from point i writes `pattern` offset by `verticesPerPoint * i`. */
+function lodIndex(
+  strandStart: Uint32Array,
+  pattern: readonly number[],
+  verticesPerPoint = 1,
+): { index: Uint32Array; lodCounts: Uint32Array } {
+  const strands = Math.max(0, strandStart.length - 1);
+  let segments = 0;
+  for (let s = 0; s < strands; s++) {
+    const n = strandStart[s + 1] - strandStart[s];
+    if (n > 1) segments += n - 1;
+  }
+  const index = new Uint32Array(pattern.length * segments);
+  const lodCounts = new Uint32Array(LOD_GROUPS + 1);
+  let w = 0;
+  for (let g = 0; g < LOD_GROUPS; g++) {
+    for (let s = LOD_ORDER[g]; s < strands; s += LOD_GROUPS)
+      for (let i = strandStart[s]; i + 1 < strandStart[s + 1]; i++) {
+        const a = verticesPerPoint * i;
+        for (const k of pattern) index[w++] = a + k;
+      }
+    lodCounts[g + 1] = w;
+  }
+  return { index, lodCounts };
 }
 
 function clamp01(v: number): number {
