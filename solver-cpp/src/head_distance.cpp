@@ -110,7 +110,6 @@ Status HeadDistance::build(const HeadMeshView& m, double cell, int bandCells) {
   nx_ = nx;
   ny_ = ny;
   nz_ = nz;
-  h_ = cell;
   inv_ = float(1.0 / cell);
   ox_ = float(lo.x());
   oy_ = float(lo.y());

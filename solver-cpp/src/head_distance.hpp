@@ -40,12 +40,9 @@ class HeadDistance {
   // Moves p out to `margin` outside the surface along the distance gradient (the direction
   // from the mesh centre where the gradient vanishes). Returns the distance before the move.
   float pushOut(float p[3], float margin) const;
-  double cellSize() const { return h_; }
-  size_t cells() const { return d_.size(); }
 
  private:
   float ox_ = 0, oy_ = 0, oz_ = 0, inv_ = 1, far_ = 0;
-  double h_ = 0;
   int nx_ = 0, ny_ = 0, nz_ = 0;
   Eigen::Vector3f centre_ = Eigen::Vector3f::Zero();
   std::vector<float> d_;
