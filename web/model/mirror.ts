@@ -1,23 +1,49 @@
 // Mirror editing: a curve and its twin reflected across the head's symmetry plane (x = 0 for the
-// built-in head: +x is the head's left). The twins name each other in their `mirror` field; an
-// edit of one is made to the other, mirrored, in the same command (one undo step).
+// built-in head: +x is the head's left; a loaded head's best left-right symmetry plane,
+// head/symmetryPlane.ts, kept in the session as `symmetry`). The twins name each other in their
+// `mirror` field; an edit of one is made to the other, mirrored, in the same command (one undo
+// step).
 import type { PonytailCircle } from './ponytailGeometry';
 import type { StyleCurve, Viewpoint } from './session';
 import type { Vec3 } from './vec3';
 
-/** x of the built-in head's symmetry plane. */
-export const MIRROR_PLANE_X = 0;
+/** A mirror plane: the points p with normal · p = offset (normal a unit vector). */
+export interface MirrorPlane {
+  normal: Vec3;
+  offset: number;
+}
 
-const flip = (p: Vec3): Vec3 => [2 * MIRROR_PLANE_X - p[0] + 0, p[1], p[2]];
-const flipDir = (v: Vec3): Vec3 => [-v[0] + 0, v[1], v[2]];
-const flipView = (v: Viewpoint): Viewpoint => ({
-  position: flip(v.position),
-  target: flip(v.target),
-});
+/** The built-in head's symmetry plane, x = 0. */
+export const X_PLANE: MirrorPlane = { normal: [1, 0, 0], offset: 0 };
+
+/** The reflection of point p across the plane (+ 0: no negative zeros in a session). */
+export function reflectPoint(p: Vec3, plane: MirrorPlane = X_PLANE): Vec3 {
+  const n = plane.normal;
+  const k = 2 * (n[0] * p[0] + n[1] * p[1] + n[2] * p[2] - plane.offset);
+  return [p[0] - k * n[0] + 0, p[1] - k * n[1] + 0, p[2] - k * n[2] + 0];
+}
+
+/** The reflection of direction v (no offset). */
+export function reflectDirection(v: Vec3, plane: MirrorPlane = X_PLANE): Vec3 {
+  const n = plane.normal;
+  const k = 2 * (n[0] * v[0] + n[1] * v[1] + n[2] * v[2]);
+  return [v[0] - k * n[0] + 0, v[1] - k * n[1] + 0, v[2] - k * n[2] + 0];
+}
 
 /** `c` reflected across the plane, named `id`, its twin `twinId`. Tilts change sign (the
  *  reflection turns the curve's handedness); everything else is kept. */
-export function mirrorCurve(c: StyleCurve, id: string, twinId: string): StyleCurve {
+export function mirrorCurve(
+  c: StyleCurve,
+  id: string,
+  twinId: string,
+  plane: MirrorPlane = X_PLANE,
+): StyleCurve {
+  const flip = (p: Vec3) => reflectPoint(p, plane);
+  const flipDir = (v: Vec3) => reflectDirection(v, plane);
+  const flipView = (v: Viewpoint): Viewpoint => ({
+    position: flip(v.position),
+    target: flip(v.target),
+  });
   const base = {
     ...c,
     id,
@@ -49,8 +75,15 @@ export function mirrorCurve(c: StyleCurve, id: string, twinId: string): StyleCur
 
 /** True when the curve is its own mirror image (drawn along the plane, e.g. a centre parting):
  *  it gets no twin. */
-export function isSelfMirror(c: StyleCurve, tolerance = 1e-3): boolean {
-  return c.points.every((p) => Math.abs(p[0] - MIRROR_PLANE_X) < tolerance);
+export function isSelfMirror(
+  c: StyleCurve,
+  plane: MirrorPlane = X_PLANE,
+  tolerance = 1e-3,
+): boolean {
+  const n = plane.normal;
+  return c.points.every(
+    (p) => Math.abs(n[0] * p[0] + n[1] * p[1] + n[2] * p[2] - plane.offset) < tolerance,
+  );
 }
 
 /** After a command turned `prev` into `next`: a curve deleted takes its twin with it, and a curve
@@ -58,6 +91,7 @@ export function isSelfMirror(c: StyleCurve, tolerance = 1e-3): boolean {
 export function syncMirrorTwins(
   prev: readonly StyleCurve[],
   next: readonly StyleCurve[],
+  plane: MirrorPlane = X_PLANE,
 ): StyleCurve[] | null {
   const before = new Map(prev.map((c) => [c.id, c]));
   const ids = new Set(next.map((c) => c.id));
@@ -69,7 +103,7 @@ export function syncMirrorTwins(
     if (!c.mirror || before.get(c.id) === c) continue; // unchanged
     const twin = byId.get(c.mirror);
     if (!twin || before.get(twin.id) !== twin) continue; // gone, or changed by the command too
-    replace.set(twin.id, mirrorCurve(c, twin.id, c.id));
+    replace.set(twin.id, mirrorCurve(c, twin.id, c.id, plane));
   }
   if (replace.size) {
     out = out.map((c) => replace.get(c.id) ?? c);
