@@ -7,6 +7,7 @@ import {
   FIT_MAX_GROWTH,
   gridForPreset,
   gridForSession,
+  HEAD_ROOM,
   sameGrid,
 } from '../../web/model/grid';
 import type { Vec3 } from '../../web/model/vec3';
@@ -47,5 +48,22 @@ describe('gridForSession', () => {
     expect(g25.origin[1] - g.origin[1]).toBeLessThanOrEqual(FIT_MAX_GROWTH + 1e-9);
     expect(top(g, 0) - top(g25, 0)).toBeLessThanOrEqual(FIT_MAX_GROWTH + 1e-9);
     expect(top(g, 0) - top(g25, 0)).toBeGreaterThan(FIT_MAX_GROWTH - g.step);
+  });
+
+  it('holds a loaded head with the built-in head’s room around it (not below the floor)', () => {
+    // a head 1.5× the built-in one: bounds from a hand-made box
+    const head = { min: [-1.2, -4, -1.6] as Vec3, max: [1.2, 1.5, 1.8] as Vec3 };
+    const g = gridForSession('25k', [], head);
+    expect(g.step).toBe(g25.step);
+    expect(g.origin[0]).toBeLessThanOrEqual(head.min[0] - HEAD_ROOM[0] + 1e-9);
+    expect(top(g, 0)).toBeGreaterThanOrEqual(head.max[0] + HEAD_ROOM[0] - 1e-9);
+    expect(top(g, 1)).toBeGreaterThanOrEqual(head.max[1] + HEAD_ROOM[1] - 1e-9);
+    expect(g.origin[2]).toBeLessThanOrEqual(head.min[2] - HEAD_ROOM[2] + 1e-9);
+    expect(top(g, 2)).toBeGreaterThanOrEqual(head.max[2] + HEAD_ROOM[2] - 1e-9);
+    // the floor stays the preset's: a body below it is not hair space
+    expect(g.origin[1]).toBeCloseTo(g25.origin[1], 12);
+    // a head inside the default box leaves the preset grid
+    const small = { min: [-0.5, -1, -0.5] as Vec3, max: [0.5, 0.9, 0.6] as Vec3 };
+    expect(sameGrid(gridForSession('25k', [], small), g25)).toBe(true);
   });
 });

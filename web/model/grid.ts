@@ -51,6 +51,9 @@ export const FIT_MARGIN_STEPS = 6;
  *  a stroke at the edge of the working volume cannot ask for an unbounded grid. */
 export const FIT_MAX_GROWTH = 2.0;
 
+/** Room the default box leaves around the built-in head (x each side, above, z each side). */
+export const HEAD_ROOM: Vec3 = [0.9, 0.5, 0.5];
+
 /** The preset's grid, grown (same step, same lattice) until the bounding volume holds every
  *  point of `curves` with a step to spare and each curve's end with FIT_MARGIN_STEPS, so the
  *  hair the curves ask for is not cut flat where the default box ends. The default box when the
@@ -58,6 +61,10 @@ export const FIT_MAX_GROWTH = 2.0;
 export function gridForSession(
   preset: GridPreset,
   curves: readonly { points: readonly Vec3[] }[],
+  /** A loaded head's bounds (absent for the built-in head, which the default box holds): the
+   *  volume also holds the head above the box's floor with the built-in head's room around it
+   *  (HEAD_ROOM), so long hair on a bigger head has space. */
+  headBounds?: { min: Vec3; max: Vec3 },
 ): GridSpec {
   const g = gridForPreset(preset);
   const lo: Vec3 = [...g.origin];
@@ -68,6 +75,13 @@ export function gridForSession(
       if (p[a] + m > hi[a]) hi[a] = p[a] + m;
     }
   };
+  if (headBounds) {
+    for (let a = 0; a < 3; a++) {
+      const bottom = a === 1 ? Math.max(headBounds.min[a], g.origin[a]) : headBounds.min[a];
+      lo[a] = Math.min(lo[a], bottom - (a === 1 ? 0 : HEAD_ROOM[a]));
+      hi[a] = Math.max(hi[a], headBounds.max[a] + HEAD_ROOM[a]);
+    }
+  }
   for (const c of curves) {
     for (const p of c.points) hold(p, g.step);
     if (c.points.length) hold(c.points[c.points.length - 1], FIT_MARGIN_STEPS * g.step);
