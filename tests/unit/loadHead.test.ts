@@ -17,6 +17,7 @@ import {
 import { meshInside } from '../../web/head/meshInside';
 import { markScalpTriangles } from '../../web/head/scalpRegion';
 import type { Vec3 } from '../../web/model/vec3';
+import { ellipsoidHead, toObj } from '../support/generatedHead';
 
 interface Soup {
   positions: Float32Array;
@@ -25,15 +26,6 @@ interface Soup {
 
 // ---------------------------------------------------------------------------------------------
 // Writers (by hand, as a user's tool would)
-
-function toObj(m: Soup): ArrayBuffer {
-  const lines: string[] = ['# generated head', 'o head'];
-  const P = m.positions;
-  for (let i = 0; i < P.length; i += 3) lines.push(`v ${P[i]} ${P[i + 1]} ${P[i + 2]}`);
-  const I = m.indices;
-  for (let t = 0; t < I.length; t += 3) lines.push(`f ${I[t] + 1} ${I[t + 1] + 1} ${I[t + 2] + 1}`);
-  return new TextEncoder().encode(`${lines.join('\n')}\n`).buffer as ArrayBuffer;
-}
 
 function toStl(m: Soup): ArrayBuffer {
   const n = m.indices.length / 3;
@@ -143,56 +135,6 @@ function flipWinding(m: Soup): Soup {
   const I = m.indices.slice();
   for (let t = 0; t < I.length; t += 3) [I[t + 1], I[t + 2]] = [I[t + 2], I[t + 1]];
   return { positions: m.positions, indices: I };
-}
-
-/** An ellipsoid head with a nose bump, `rings` × 2·`rings` quads (≈ 4·rings² triangles),
- *  optionally without the triangles whose centroid direction is near `holes`. */
-function ellipsoidHead(rings: number, holes: { dir: Vec3; cosMin: number }[] = []): Soup {
-  const segments = 2 * rings;
-  const R: Vec3 = [0.8, 1.1, 0.95];
-  const positions = new Float32Array(3 * ((rings + 1) * segments));
-  let v = 0;
-  for (let i = 0; i <= rings; i++) {
-    const theta = (Math.PI * i) / rings;
-    for (let j = 0; j < segments; j++) {
-      const phi = (2 * Math.PI * j) / segments;
-      const d: Vec3 = [
-        Math.sin(theta) * Math.sin(phi),
-        Math.cos(theta),
-        Math.sin(theta) * Math.cos(phi),
-      ];
-      // nose: a bump around θ = 100°, φ = 0 (toward +z)
-      const c = d[0] * 0 + d[1] * -0.17 + d[2] * 0.985;
-      const bump = 1 + 0.22 * Math.exp(-(1 - c) / 0.004);
-      positions[v++] = R[0] * d[0] * bump;
-      positions[v++] = R[1] * d[1] * bump;
-      positions[v++] = R[2] * d[2] * bump;
-    }
-  }
-  const idx: number[] = [];
-  const at = (i: number, j: number) => i * segments + (j % segments);
-  const keep = (a: number, b: number, c: number) => {
-    if (holes.length === 0) return true;
-    const m = [0, 1, 2].map(
-      (k) => positions[3 * a + k] + positions[3 * b + k] + positions[3 * c + k],
-    );
-    const len = Math.hypot(m[0], m[1], m[2]);
-    return holes.every(
-      (h) => (m[0] * h.dir[0] + m[1] * h.dir[1] + m[2] * h.dir[2]) / len < h.cosMin,
-    );
-  };
-  for (let i = 0; i < rings; i++) {
-    for (let j = 0; j < segments; j++) {
-      const a = at(i, j);
-      const b = at(i + 1, j);
-      const c = at(i + 1, j + 1);
-      const d = at(i, j + 1);
-      // counter-clockwise seen from outside
-      if (i > 0 && keep(a, b, d)) idx.push(a, b, d);
-      if (i < rings - 1 && keep(d, b, c)) idx.push(d, b, c);
-    }
-  }
-  return { positions, indices: Uint32Array.from(idx) };
 }
 
 function sphere(center: Vec3, r: number, rings: number): Soup {
