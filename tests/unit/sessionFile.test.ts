@@ -91,7 +91,8 @@ describe('parseSession', () => {
     if (!r.ok) return;
     expect(r.value.curves[0]).not.toHaveProperty('surfaceMode');
     expect(r.value.curves[1]).toMatchObject({ sigma: 1, h: 0.5, alpha0: 0, alpha1: 0 });
-    expect(r.value.version).toBe(2);
+    expect(r.value.version).toBe(3);
+    expect(r.value.head).toBe('builtin');
     expect(r.value).not.toHaveProperty('avoidScalp');
     expect(r.value).not.toHaveProperty('avoid');
     expect(r.value).not.toHaveProperty('detail');
@@ -124,7 +125,7 @@ describe('parseSession', () => {
     expect(bad((j) => (j.detail.curl.radius = 1))).toBe(
       'session.detail.curl.radius: must be between 0 and 0.5',
     );
-    expect(bad((j) => (j.version = 3))).toMatch(/version/);
+    expect(bad((j) => (j.version = 4))).toMatch(/version/);
     expect(parseSession(null)).toEqual({ ok: false, error: 'session: must be an object' });
   });
 });

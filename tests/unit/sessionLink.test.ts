@@ -6,6 +6,7 @@ import { createDeflateRaw } from 'node:zlib';
 import { describe, expect, it } from 'vitest';
 import { presetSession } from '../../web/cli/presetSession';
 import { Head } from '../../web/head/head';
+import { X_PLANE } from '../../web/model/mirror';
 import { PRESET_NAMES } from '../../web/model/presets';
 import {
   DIRECTION_SCALE,
@@ -168,7 +169,7 @@ describe('version 2 links', () => {
   it('write the avoid slot empty: avoidScalp and detail travel in the JSON tail', () => {
     const s = everything();
     const data = unpackSession(packSession(s));
-    expect(data.version).toBe(2);
+    expect(data.version).toBe(3);
     expect(data).not.toHaveProperty('avoid');
     expect(data.avoidScalp).toBe(true);
     expect(data.detail).toEqual(DETAIL);
@@ -244,7 +245,7 @@ describe('version 1 links', () => {
       `#${await encodeSessionLinkV1(v1 as unknown as SessionState)}`,
     );
     if (!r.ok) throw new Error(r.error);
-    expect(r.value.version).toBe(2);
+    expect(r.value.version).toBe(3);
     expect(r.value.avoidScalp).toBe(true);
     expect(r.value).not.toHaveProperty('avoid');
     expect({ ...r.value, curves: [] }).toEqual({ ...reopened(s), avoidScalp: true, curves: [] });
@@ -406,7 +407,15 @@ describe('damaged links say what is wrong', () => {
     const body = packSession(presetSession('fig8', head));
     const link = linkOf;
     const payload = body.subarray(0, body.length - 4);
-    await bad(await link(withCrc(new Uint8Array([...payload, 7]))), /data past its end/);
+    // after the JSON tail: the optional parts (a mask), then nothing
+    await bad(await link(withCrc(new Uint8Array([...payload, 8]))), /parts this app does not know/);
+    await bad(await link(withCrc(new Uint8Array([...payload, 0]))), /parts this app does not know/);
+    await bad(await link(withCrc(new Uint8Array([...payload, 7]))), /ends too early/);
+    const withPlane = packSession({ ...presetSession('fig8', head), symmetry: X_PLANE });
+    await bad(
+      await link(withCrc(new Uint8Array([...withPlane.subarray(0, withPlane.length - 4), 1]))),
+      /data past its end/,
+    );
     await bad(
       await link(withCrc(payload.subarray(0, payload.length - 5))),
       /ends too early|larger than the data/,

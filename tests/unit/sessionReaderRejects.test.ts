@@ -462,7 +462,9 @@ describe('the session object', () => {
     expect(errorOf((j) => (j.grid = 'constructor'))).toBe(
       'session.grid: must be 25k, 50k, 100k or 250k',
     );
-    expect(errorOf((j) => (j.head = 'mannequin'))).toBe('session.head: must be "builtin"');
+    expect(errorOf((j) => (j.head = 'mannequin'))).toBe(
+      'session.head: must be "builtin" or a head mesh ({"kind": "mesh", "name", "hash", …})',
+    );
     expect(errorOf((j) => (j.hairColor = 'red'))).toBe(
       'session.hairColor: must be a colour like #5a3825',
     );

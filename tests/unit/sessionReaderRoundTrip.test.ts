@@ -156,7 +156,7 @@ describe('v1-to-v2: stored scalp-avoidance constraints become the avoidScalp set
     const r = parseSession(v1({ index: [3, 7], target: [0, 0.3, 0, 0.3, 0, 0] }));
     expect(r.ok).toBe(true);
     if (!r.ok) return;
-    expect(r.value.version).toBe(2);
+    expect(r.value.version).toBe(3);
     expect(r.value.avoidScalp).toBe(true);
     expect(Object.keys(r.value)).not.toContain('avoid');
     // exactly what the reader gives for the same session written as version 2
@@ -194,14 +194,17 @@ describe('v1-to-v2: stored scalp-avoidance constraints become the avoidScalp set
     const out = step.migrate(input);
     expect(JSON.stringify(input)).toBe(before);
     expect(out).toEqual({ version: 2, curves: [], avoidScalp: true });
-    expect(migrateSession(input)).toMatchObject({ ok: true, applied: [step.name] });
+    expect(migrateSession(input)).toMatchObject({
+      ok: true,
+      applied: [step.name, SESSION_MIGRATIONS[1].name],
+    });
   });
 });
 
 describe('session versions (sessionMigrations.ts)', () => {
-  it('the current version is 2 and the table reaches it without gaps', () => {
-    expect(SESSION_VERSION).toBe(2);
-    expect(SESSION_MIGRATIONS.map((m) => m.from)).toEqual([1]);
+  it('the current version is 3 and the table reaches it without gaps', () => {
+    expect(SESSION_VERSION).toBe(3);
+    expect(SESSION_MIGRATIONS.map((m) => m.from)).toEqual([1, 2]);
     expect(emptySession('25k').version).toBe(SESSION_VERSION);
     const froms = SESSION_MIGRATIONS.map((m) => m.from);
     froms.forEach((f, i) => {
@@ -212,25 +215,25 @@ describe('session versions (sessionMigrations.ts)', () => {
   });
 
   it('refuses a newer version, saying it was made by a newer hairsketch', () => {
-    for (const version of [3, 17])
+    for (const version of [4, 17])
       expect(parseSession({ version, curves: [] })).toEqual({
         ok: false,
-        error: `session.version: must be an integer from 1 to 2; version ${version} was made by a newer hairsketch (update hairsketch to open it)`,
+        error: `session.version: must be an integer from 1 to 3; version ${version} was made by a newer hairsketch (update hairsketch to open it)`,
       });
   });
 
   it('refuses a missing, older or non-integer version', () => {
     expect(parseSession({ curves: [] })).toEqual({
       ok: false,
-      error: 'session.version: missing (must be an integer from 1 to 2)',
+      error: 'session.version: missing (must be an integer from 1 to 3)',
     });
     expect(parseSession({ version: 0, curves: [] })).toMatchObject({
       error:
-        'session.version: must be an integer from 1 to 2; version 0 is older than any hairsketch',
+        'session.version: must be an integer from 1 to 3; version 0 is older than any hairsketch',
     });
     for (const version of [1.5, '2', null, true, Number.NaN])
       expect(parseSession({ version, curves: [] })).toMatchObject({
-        error: 'session.version: must be an integer from 1 to 2',
+        error: 'session.version: must be an integer from 1 to 3',
       });
   });
 

@@ -10,14 +10,19 @@
 //   (sigma, h in grid steps, tightness) 1e-4
 //   indices (circle spineIndex: rounded; avoid grid index: truncated, as Int32Array does)
 //   growth settings and the hair colour: exact (the colour as lowercase #rrggbb)
+//   scalp brush strokes (points, radius): positions
+//   the mirror plane (symmetry): its offset a position; its normal exact, as a unit vector
+//   (unitNormal: divided by its length unless that is already 1 within 1e-12, so doing it twice
+//   changes nothing), written in full by a link
 //
 // A quantised number is Math.round(x * scale) / scale (never -0; |x| clamped to 1e6, far
 // outside any head), so it prints as a short decimal, and quantising twice changes nothing.
 // Every function returns its argument itself when it is already on the grid: quantising an
 // unchanged curve keeps its identity (the solver bridge compares curves by identity).
 import { CURVE_PARAMS, type CurveParamSpec } from '../solver/protocol';
+import type { MirrorPlane } from './mirror';
 import type { PonytailCircle } from './ponytailGeometry';
-import type { SessionState, StyleCurve, Viewpoint } from './session';
+import type { ScalpStroke, SessionState, StyleCurve, Viewpoint } from './session';
 import type { Vec3 } from './vec3';
 
 /** Integers per world unit for positions (1e-4 world units = 10 µm). */
@@ -118,12 +123,51 @@ export function quantizeCurve<C extends StyleCurve>(c: C): C {
   return Object.keys(patch).length === 0 ? c : ({ ...c, ...patch } as C);
 }
 
+/** A scalp brush stroke with its points and radius on the position grid (itself when so). */
+export function quantizeStroke(st: ScalpStroke): ScalpStroke {
+  const points = positions(st.points);
+  const radius = quantize(st.radius, POSITION_SCALE);
+  return points === st.points && Object.is(radius, st.radius) ? st : { ...st, points, radius };
+}
+
+/** `n` as a unit vector: n / |n|, or `n` itself when |n| is 1 within 1e-12 (so a unit normal
+ *  stays bit for bit what it is, and normalising twice changes nothing); never -0. A zero or non-finite
+ *  vector is returned as it is (the reader refuses it). */
+export function unitNormal(n: Vec3): Vec3 {
+  const len = Math.hypot(n[0], n[1], n[2]);
+  if (!(len > 0) || !Number.isFinite(len)) return n;
+  if (Math.abs(len - 1) <= 1e-12)
+    return n.some((x) => Object.is(x, -0)) ? [n[0] + 0, n[1] + 0, n[2] + 0] : n;
+  return [n[0] / len + 0, n[1] / len + 0, n[2] / len + 0];
+}
+
+/** The mirror plane with a unit normal and its offset on the position grid (itself when so). */
+export function quantizePlane(p: MirrorPlane): MirrorPlane {
+  const normal = unitNormal(p.normal);
+  const offset = quantize(p.offset, POSITION_SCALE);
+  return normal === p.normal && Object.is(offset, p.offset) ? p : { ...p, normal, offset };
+}
+
 /** A session with every number on the grid and the hair colour in lowercase: exactly what its
  *  share link reopens. The same
  *  object when nothing changes; unchanged curves keep their identity. */
 export function quantizeSession(s: SessionState): SessionState {
   const curves = mapSame(s.curves, quantizeCurve);
   const hairColor = s.hairColor.toLowerCase();
-  if (curves === s.curves && hairColor === s.hairColor) return s;
-  return { ...s, curves, hairColor };
+  const scalpPaint = s.scalpPaint && mapSame(s.scalpPaint, quantizeStroke);
+  const symmetry = s.symmetry && quantizePlane(s.symmetry);
+  if (
+    curves === s.curves &&
+    hairColor === s.hairColor &&
+    scalpPaint === s.scalpPaint &&
+    symmetry === s.symmetry
+  )
+    return s;
+  return {
+    ...s,
+    curves,
+    hairColor,
+    ...(scalpPaint ? { scalpPaint } : {}),
+    ...(symmetry ? { symmetry } : {}),
+  };
 }

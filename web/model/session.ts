@@ -1,4 +1,6 @@
 // The session model: everything the user made, as plain immutable JSON-able data.
+
+import type { Axis, HeadFormat } from '../head/loadHead';
 import {
   CURVE_PARAMS,
   type CurveKindName,
@@ -8,6 +10,7 @@ import {
 import type { HairDetail } from './detail';
 import type { DividingSettings } from './dividingFrames';
 import type { GridPreset } from './grid';
+import type { MirrorPlane } from './mirror';
 import type { PonytailCircle } from './ponytailGeometry';
 import type { SurfaceMode } from './supportingSurface';
 import type { Vec3 } from './vec3';
@@ -64,9 +67,56 @@ export interface PonytailCurve {
 export type StyleCurve = StreamCurve | DividingCurve | PonytailCurve;
 export type CurveType = StyleCurve['type'];
 
+/** The head file formats a session can name (loadHead.ts HeadFormat, every one of them). */
+export const HEAD_FORMATS = [
+  'obj',
+  'gltf',
+  'glb',
+  'ply',
+  'stl',
+] as const satisfies readonly HeadFormat[];
+// every HeadFormat is listed (a compile error here when loadHead.ts gains one)
+const _allFormats: Exclude<HeadFormat, (typeof HEAD_FORMATS)[number]> extends never ? true : never =
+  true;
+void _allFormats;
+
+/** A quarter turn step of a loaded head (loadHead.ts rotateLoadedHead), in the order applied. */
+export interface HeadTurn {
+  axis: Axis;
+  /** 0..3 quarter turns, counter-clockwise looking down the axis. */
+  quarterTurns: number;
+}
+
+/** A user's head mesh (issue 13), named by its file's content: the normalised mesh is
+ *  loadHeadFile(name, bytes, { up }) turned by each of `turns` in order (head/headStore.ts
+ *  loadHeadRef), where `bytes` are the file whose SHA-256 is `hash`. The session does not hold
+ *  the bytes: a session file embeds them beside it (sessionFile.ts), a link does not, and the
+ *  browser keeps them by hash (head/headStore.ts). */
+export interface HeadRef {
+  kind: 'mesh';
+  /** The file's name as opened (its extension tells the format to the loader), ≤ 255 characters. */
+  name: string;
+  /** SHA-256 of the file's bytes, 64 lowercase hex digits. */
+  hash: string;
+  format: HeadFormat;
+  /** The file's up axis, as guessed or told when it was opened. */
+  up: 'y' | 'z';
+  turns: HeadTurn[];
+}
+
+/** A scalp brush stroke (head/scalpPaint.ts): a triangle is covered when its centroid is within
+ *  `radius` (world units, in (0, 2]) of the polyline `points` (one point: a dab); `erase` removes
+ *  scalp, else it adds scalp. */
+export interface ScalpStroke {
+  erase: boolean;
+  radius: number;
+  points: Vec3[];
+}
+
 export interface SessionState {
-  version: 2;
-  head: 'builtin';
+  version: 3;
+  /** The built-in mannequin head, or a user's head mesh. */
+  head: 'builtin' | HeadRef;
   grid: GridPreset;
   curves: readonly StyleCurve[];
   growth: GrowthParams;
@@ -76,6 +126,10 @@ export interface SessionState {
   avoidScalp?: boolean;
   /** Curl, clump, frizz and length jitter of every strand (absent = none). */
   detail?: HairDetail;
+  /** Scalp brush strokes applied in order over the head's default scalp (absent = none). */
+  scalpPaint?: ScalpStroke[];
+  /** The mirror plane n·p = offset (unit n); absent = x = 0 (the built-in head's). */
+  symmetry?: MirrorPlane;
 }
 
 /** The scalar parameters of a new curve of kind `k`: the defaults of protocol.ts CURVE_PARAMS. */
@@ -104,7 +158,7 @@ export function emptySession(
   grid: GridPreset,
   growth: GrowthParams = DEFAULT_GROWTH,
 ): SessionState {
-  return { version: 2, head: 'builtin', grid, curves: [], growth, hairColor: '#5a3825' };
+  return { version: 3, head: 'builtin', grid, curves: [], growth, hairColor: '#5a3825' };
 }
 
 export function addCurve(s: SessionState, c: StyleCurve): SessionState {

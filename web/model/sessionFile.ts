@@ -15,7 +15,15 @@
 // spelled out, -0 written as 0), so reading its JSON again gives the same value and the same
 // session always gives the same bytes. Keys it does not know are refused (naming the key),
 // except the top-level `camera` and `selected` that "Save" and the test hook write beside the
-// session: those are not part of the session and are left out of the value.
+// session, and `headFile`: those are not part of the session and are left out of the value.
+//
+// A session on a loaded head (head: {kind: 'mesh', hash, …}) names the head by the SHA-256 of its
+// file. A session file ("Save", writeSessionFile) embeds that file beside the session:
+//   "headFile": {"name": "head.obj", "hash": "<64 hex>", "encoding": "deflate-base64",
+//                "data": "<base64 of the raw deflate of the file's bytes>"}
+// readSessionFile reads it back, inflating with a cap (MAX_HEAD_FILE_BYTES) and checking that the
+// bytes' SHA-256 is the hash the session's head names. A file without it reads fine: the app
+// finds the head by its hash in the browser's store or asks for it.
 
 import {
   CURVE_PARAMS,
@@ -24,6 +32,7 @@ import {
   type CurveParamValues,
   type GrowthParams,
 } from '../solver/protocol';
+import { deflateRaw, fromBase64, inflateCapped, sha256Hex, toBase64 } from './bytes';
 import {
   DETAIL_BLOCKS,
   DETAIL_PARAMS,
@@ -32,9 +41,19 @@ import {
   LENGTH_JITTER,
 } from './detail';
 import { BOX_MAX, BOX_MIN, type GridPreset, isGridPreset } from './grid';
+import type { MirrorPlane } from './mirror';
 import type { PonytailCircle } from './ponytailGeometry';
-import { POSITION_SCALE, toGridInt } from './quantize';
-import { DEFAULT_GROWTH, type SessionState, type StyleCurve, type Viewpoint } from './session';
+import { POSITION_SCALE, toGridInt, unitNormal } from './quantize';
+import {
+  DEFAULT_GROWTH,
+  HEAD_FORMATS,
+  type HeadRef,
+  type HeadTurn,
+  type ScalpStroke,
+  type SessionState,
+  type StyleCurve,
+  type Viewpoint,
+} from './session';
 import { migrateSession, type Plain, type PlainRecord, SESSION_VERSION } from './sessionMigrations';
 import type { Vec3 } from './vec3';
 
@@ -80,12 +99,32 @@ export const SESSION_LIMITS = {
   maxStrands: 1_000_000,
   /** Root directions sampled: ceil(180 / thetaStepDeg) · ceil(360 / phiStepDeg). */
   maxRootSamples: 4_000_000,
-  /** Characters in any string; nesting depth and values of the whole input. */
+  /** Scalp brush strokes per session, and their points together (a stroke has at least one). */
+  maxStrokes: 4096,
+  maxStrokePoints: 100_000,
+  /** Scalp brush radius: greater than 0 (at least half a position step) and at most this (world
+   *  units: 20 cm). */
+  maxBrushRadius: 2,
+  /** |symmetry.offset|: the mirror plane passes within this of the origin (world units, 1 m). */
+  maxPlaneOffset: 10,
+  /** Characters of a head's file name; quarter turns of a loaded head. */
+  maxHeadName: 255,
+  maxTurns: 64,
+  /** Bytes of a head file a session file embeds, after inflating (refused past it while
+   *  inflating). */
+  maxHeadFileBytes: 256 * 1024 * 1024,
+  /** Characters in any string (but headFile.data: maxHeadFileData); nesting depth and values of
+   *  the whole input. */
   maxString: 1024,
   maxDepth: 10,
   maxNodes: 2_500_000,
 } as const;
 const L = SESSION_LIMITS;
+/** MAX_HEAD_FILE_BYTES, as the reader's limits name it. */
+export const MAX_HEAD_FILE_BYTES = L.maxHeadFileBytes;
+/** Characters of headFile.data: the base64 of a deflate stream of at most maxHeadFileBytes
+ *  (stored blocks add 5 bytes per 64 KiB to incompressible data). */
+const MAX_HEAD_FILE_DATA = 4 * Math.ceil((L.maxHeadFileBytes * 1.001 + 1024) / 3);
 
 const DEFAULT_HAIR_COLOR = '#5a3825';
 
@@ -110,6 +149,8 @@ interface Cap {
   what: string;
   /** Its length counts toward maxSessionPoints. */
   points?: boolean;
+  /** Its length counts toward maxStrokePoints. */
+  strokePoints?: boolean;
   /** The cap of the arrays it holds (default: SMALL_ARRAY). */
   items?: Cap;
 }
@@ -125,11 +166,29 @@ const ARRAY_CAPS: Readonly<Record<string, Cap>> = {
   index: { cap: L.maxAvoid, what: 'entries' },
   target: { cap: 3 * L.maxAvoid, what: 'numbers' },
 };
+/** Arrays under `scalpPaint` and `head` (found by where they are, not only by their key). */
+const STROKES: Cap = { cap: L.maxStrokes, what: 'strokes' };
+const STROKE_POINTS: Cap = { cap: L.maxStrokePoints, what: 'points', strokePoints: true };
+const TURNS: Cap = { cap: L.maxTurns, what: 'turns' };
 const MAX_KEYS = 64;
+
+/** The cap of the array held by `key` of the object at path at[0 .. depth). */
+function capFor(at: readonly (string | number)[], depth: number, key: string): Cap | undefined {
+  if (depth === 0 && key === 'scalpPaint') return STROKES;
+  if (depth === 2 && at[0] === 'scalpPaint' && key === 'points') return STROKE_POINTS;
+  if (depth === 1 && at[0] === 'head' && key === 'turns') return TURNS;
+  return Object.hasOwn(ARRAY_CAPS, key) ? ARRAY_CAPS[key] : undefined;
+}
+
+/** Whether the string at path `at` is the embedded head file's data (allowed up to
+ *  MAX_HEAD_FILE_DATA characters). */
+const isHeadFileData = (at: readonly (string | number)[]) =>
+  at.length === 2 && at[0] === 'headFile' && at[1] === 'data';
 
 interface CopyBudget {
   nodes: number;
   points: number;
+  strokePoints: number;
   /** Objects and arrays being copied (their ancestors): meeting one again is a cycle. */
   open: Set<object>;
   /** Where the copy is: keys and indices below `session` (made a string only for a message). */
@@ -179,9 +238,11 @@ function copyPlain(v: unknown, b: CopyBudget, cap?: Cap): Plain | undefined {
       return v;
     case 'number':
       return v === 0 ? 0 : v; // -0 as JSON writes it
-    case 'string':
-      if (v.length > L.maxString) fail(where(b), `is longer than ${L.maxString} characters`);
+    case 'string': {
+      const max = isHeadFileData(b.at) ? MAX_HEAD_FILE_DATA : L.maxString;
+      if (v.length > max) fail(where(b), `is longer than ${max} characters`);
       return v;
+    }
     case 'object':
       break;
     default:
@@ -204,6 +265,14 @@ function copyPlain(v: unknown, b: CopyBudget, cap?: Cap): Plain | undefined {
         if (b.points > L.maxSessionPoints)
           fail(where(b), `brings the session over ${L.maxSessionPoints} points in all (the cap)`);
       }
+      if (c.strokePoints) {
+        b.strokePoints += len;
+        if (b.strokePoints > L.maxStrokePoints)
+          fail(
+            where(b),
+            `brings the scalp strokes over ${L.maxStrokePoints} points in all (the cap)`,
+          );
+      }
       const out: Plain[] = new Array(len);
       for (let i = 0; i < len; i++) {
         b.at.push(i);
@@ -224,11 +293,7 @@ function copyPlain(v: unknown, b: CopyBudget, cap?: Cap): Plain | undefined {
       b.at.push(key);
       const d = ownValue(o, key, b, true);
       if (d !== undefined) {
-        const item = copyPlain(
-          d.value,
-          b,
-          Object.hasOwn(ARRAY_CAPS, key) ? ARRAY_CAPS[key] : undefined,
-        );
+        const item = copyPlain(d.value, b, capFor(b.at, depth, key));
         if (item !== undefined) out[key] = item;
       }
       b.at.pop();
@@ -607,6 +672,97 @@ function growth(v: Plain | undefined, path: string): GrowthParams {
   return g;
 }
 
+/** A file name as the user's system gave it: 1 to maxHeadName characters, no control
+ *  characters (it is shown on one line). */
+function fileName(v: Plain | undefined, path: string): string {
+  if (typeof v !== 'string' || v.length === 0 || v.length > L.maxHeadName)
+    fail(path, `must be a file name (1 to ${L.maxHeadName} characters)`);
+  // biome-ignore lint/suspicious/noControlCharactersInRegex: refusing them is the point
+  if (/[\u0000-\u001f\u007f]/.test(v)) fail(path, 'must be a file name without control characters');
+  return v;
+}
+
+function sha256Of(v: Plain | undefined, path: string): string {
+  if (typeof v !== 'string' || !/^[0-9a-f]{64}$/.test(v))
+    fail(path, 'must be a SHA-256 as 64 lowercase hex digits');
+  return v;
+}
+
+const HEAD_FIELDS = ['kind', 'name', 'hash', 'format', 'up', 'turns'];
+
+/** session.head: "builtin" (or absent), or a loaded head's reference. */
+function head(v: Plain | undefined, path: string): 'builtin' | HeadRef {
+  if (v === undefined || v === 'builtin') return 'builtin';
+  if (typeof v !== 'object' || v === null || Array.isArray(v))
+    fail(path, 'must be "builtin" or a head mesh ({"kind": "mesh", "name", "hash", …})');
+  const o = record(v, path, HEAD_FIELDS);
+  if (o.kind !== 'mesh') fail(`${path}.kind`, 'must be "mesh"');
+  const name = fileName(o.name, `${path}.name`);
+  const hash = sha256Of(o.hash, `${path}.hash`);
+  const format = o.format;
+  if (typeof format !== 'string' || !(HEAD_FORMATS as readonly string[]).includes(format))
+    fail(`${path}.format`, `must be one of ${HEAD_FORMATS.map((f) => `"${f}"`).join(', ')}`);
+  if (o.up !== 'y' && o.up !== 'z') fail(`${path}.up`, 'must be "y" or "z"');
+  const up = o.up;
+  const ts = o.turns === undefined ? [] : array(o.turns, `${path}.turns`, 'turns');
+  if (ts.length > L.maxTurns) fail(`${path}.turns`, `has more than ${L.maxTurns} turns (the cap)`);
+  const turns: HeadTurn[] = ts.map((t, i) => {
+    const at = `${path}.turns[${i}]`;
+    const q = record(t, at, ['axis', 'quarterTurns']);
+    if (q.axis !== 'x' && q.axis !== 'y' && q.axis !== 'z')
+      fail(`${at}.axis`, 'must be "x", "y" or "z"');
+    return { axis: q.axis, quarterTurns: int(q.quarterTurns, `${at}.quarterTurns`, 0, 3) };
+  });
+  return { kind: 'mesh', name, hash, format: format as HeadRef['format'], up, turns };
+}
+
+/** session.scalpPaint: brush strokes in order (absent or empty = none). */
+function scalpPaint(v: Plain | undefined, path: string): { scalpPaint?: ScalpStroke[] } {
+  if (v === undefined) return {};
+  const a = array(v, path, 'scalp strokes');
+  if (a.length > L.maxStrokes) fail(path, `has more than ${L.maxStrokes} strokes (the cap)`);
+  const out: ScalpStroke[] = [];
+  let total = 0;
+  for (let i = 0; i < a.length; i++) {
+    const at = `${path}[${i}]`;
+    const o = record(a[i], at, ['erase', 'radius', 'points']);
+    const erase = bool(o.erase, `${at}.erase`);
+    const radius = num(o.radius, `${at}.radius`, 0, L.maxBrushRadius);
+    if (toGridInt(radius, POSITION_SCALE) === 0)
+      fail(
+        `${at}.radius`,
+        `must be greater than 0 (at least ${L.positionStep / 2}, at most ${L.maxBrushRadius})`,
+      );
+    const ps = array(o.points, `${at}.points`, 'points');
+    if (ps.length < 1) fail(`${at}.points`, 'needs at least 1 point');
+    total += ps.length;
+    if (total > L.maxStrokePoints)
+      fail(
+        `${at}.points`,
+        `brings the scalp strokes over ${L.maxStrokePoints} points in all (the cap)`,
+      );
+    const points: Vec3[] = new Array(ps.length);
+    for (let k = 0; k < ps.length; k++) {
+      const q = ps[k];
+      points[k] = inside(q, CURVE_LO, CURVE_HI)
+        ? [q[0], q[1], q[2]]
+        : position(q, `${at}.points[${k}]`, CURVE_LO, CURVE_HI, L.curveMargin);
+    }
+    out.push({ erase, radius, points });
+  }
+  return out.length > 0 ? { scalpPaint: out } : {};
+}
+
+/** session.symmetry: the mirror plane n·p = offset; the normal within unitTolerance of unit
+ *  length, made a unit vector (quantize.ts unitNormal). */
+function symmetry(v: Plain | undefined, path: string): { symmetry?: MirrorPlane } {
+  if (v === undefined) return {};
+  const o = record(v, path, ['normal', 'offset']);
+  const normal = unitNormal(unit(o.normal, `${path}.normal`));
+  const offset = num(o.offset, `${path}.offset`, -L.maxPlaneOffset, L.maxPlaneOffset);
+  return { symmetry: { normal, offset } };
+}
+
 const SESSION_FIELDS = [
   'version',
   'head',
@@ -616,14 +772,17 @@ const SESSION_FIELDS = [
   'hairColor',
   'avoidScalp',
   'detail',
+  'scalpPaint',
+  'symmetry',
 ];
-/** Written beside the session by "Save" (camera) and the test hook (camera, selected); the
- *  reader leaves them out of the session (app/sessionIO.ts reads the saved camera). */
-const SIDE_FIELDS = ['camera', 'selected'];
+/** Written beside the session by "Save" (camera, headFile) and the test hook (camera,
+ *  selected); the reader leaves them out of the session (app/sessionIO.ts reads the saved
+ *  camera, readSessionFile the head file). */
+const SIDE_FIELDS = ['camera', 'selected', 'headFile'];
 
 function session(o: PlainRecord): SessionState {
   record(o, 'session', [...SESSION_FIELDS, ...SIDE_FIELDS]);
-  if (o.head !== undefined && o.head !== 'builtin') fail('session.head', 'must be "builtin"');
+  const h = head(o.head, 'session.head');
   if (o.grid !== undefined && (typeof o.grid !== 'string' || !isGridPreset(o.grid)))
     fail('session.grid', 'must be 25k, 50k, 100k or 250k');
   const grid: GridPreset = o.grid ?? '25k';
@@ -657,27 +816,165 @@ function session(o: PlainRecord): SessionState {
   const avoidScalp = o.avoidScalp === undefined ? false : bool(o.avoidScalp, 'session.avoidScalp');
   return {
     version: SESSION_VERSION,
-    head: 'builtin',
+    head: h,
     grid,
     curves,
     growth: g,
     hairColor,
     ...(avoidScalp ? { avoidScalp } : {}),
     ...detail(o.detail, 'session.detail'),
+    ...scalpPaint(o.scalpPaint, 'session.scalpPaint'),
+    ...symmetry(o.symmetry, 'session.symmetry'),
   };
 }
 
-/** Reads a session from untrusted data (JSON, or any value a caller hands over); never throws. */
+/** The plain copy of the input and the session it holds (throws ParseError, or what a hostile
+ *  input threw). */
+function readInput(v: unknown): { top: PlainRecord; session: SessionState } {
+  const copy = copyPlain(v, { nodes: 0, points: 0, strokePoints: 0, open: new Set(), at: [] });
+  if (typeof copy !== 'object' || copy === null || Array.isArray(copy))
+    fail('session', 'must be an object');
+  const migrated = migrateSession(copy);
+  if (!migrated.ok) {
+    const e = new ParseError(migrated.error);
+    OURS.add(e);
+    throw e;
+  }
+  return { top: copy, session: session(migrated.value) };
+}
+
+function failed(e: unknown): { ok: false; error: string } {
+  if (isOurs(e)) return { ok: false, error: e.message };
+  return { ok: false, error: 'session: could not be read (reading it threw)' };
+}
+
+/** Reads a session from untrusted data (JSON, or any value a caller hands over); never throws.
+ *  A `headFile` beside it is not read (readSessionFile reads it). */
 export function parseSession(v: unknown): Parsed<SessionState> {
   try {
-    const copy = copyPlain(v, { nodes: 0, points: 0, open: new Set(), at: [] });
-    if (typeof copy !== 'object' || copy === null || Array.isArray(copy))
-      fail('session', 'must be an object');
-    const migrated = migrateSession(copy);
-    if (!migrated.ok) return migrated;
-    return { ok: true, value: session(migrated.value) };
+    return { ok: true, value: readInput(v).session };
   } catch (e) {
-    if (isOurs(e)) return { ok: false, error: e.message };
-    return { ok: false, error: 'session: could not be read (reading it threw)' };
+    return failed(e);
   }
+}
+
+// ---- session files with their head -----------------------------------------------------------
+
+/** The encoding of headFile.data. */
+export const HEAD_FILE_ENCODING = 'deflate-base64';
+
+/** A head file carried by a session file: its name, SHA-256 and bytes. */
+export interface HeadFileData {
+  name: string;
+  hash: string;
+  bytes: ArrayBuffer;
+}
+
+/** What a session file holds: the session, and the head file when it embeds one. */
+export interface SessionFileContents {
+  session: SessionState;
+  headFile?: HeadFileData;
+}
+
+/** The SHA-256 of bytes as 64 lowercase hex digits (the content hash that names a head). */
+export const hashBytes = (bytes: ArrayBuffer | Uint8Array): Promise<string> => sha256Hex(bytes);
+
+/** Reads a session file's data (parsed JSON, or any value): the session by the strict reader,
+ *  and its `headFile` when present, inflated (refused past MAX_HEAD_FILE_BYTES) and checked
+ *  against its hash and the session head's. Never throws; the first problem names its field
+ *  (`session.headFile.hash: …`). A session on a loaded head without a headFile reads fine. */
+export async function readSessionFile(data: unknown): Promise<Parsed<SessionFileContents>> {
+  let top: PlainRecord;
+  let value: SessionState;
+  let embedded: { name: string; hash: string; data: string } | null;
+  try {
+    ({ top, session: value } = readInput(data));
+    embedded = headFileRecord(top.headFile, value);
+  } catch (e) {
+    return failed(e);
+  }
+  if (!embedded) return { ok: true, value: { session: value } };
+  const at = 'session.headFile';
+  const deflated = fromBase64(embedded.data);
+  if (!deflated) return { ok: false, error: `${at}.data: must be base64 text` };
+  const inflated = await inflateCapped(deflated, L.maxHeadFileBytes);
+  if (inflated === 'too large')
+    return {
+      ok: false,
+      error: `${at}.data: inflates to more than ${L.maxHeadFileBytes / (1 << 20)} MiB (the cap)`,
+    };
+  if (inflated === 'damaged')
+    return { ok: false, error: `${at}.data: does not inflate (damaged deflate data)` };
+  const hash = await sha256Hex(inflated);
+  if (hash !== embedded.hash)
+    return {
+      ok: false,
+      error: `${at}.hash: does not match the data (the SHA-256 of the data is ${hash}): the file is damaged`,
+    };
+  const bytes =
+    inflated.byteOffset === 0 && inflated.byteLength === inflated.buffer.byteLength
+      ? (inflated.buffer as ArrayBuffer)
+      : (inflated.slice().buffer as ArrayBuffer);
+  return {
+    ok: true,
+    value: { session: value, headFile: { name: embedded.name, hash: embedded.hash, bytes } },
+  };
+}
+
+/** The headFile record's fields, checked against the session's head (null when absent). */
+function headFileRecord(
+  v: Plain | undefined,
+  s: SessionState,
+): { name: string; hash: string; data: string } | null {
+  if (v === undefined) return null;
+  const at = 'session.headFile';
+  const o = record(v, at, ['name', 'hash', 'encoding', 'data']);
+  const name = fileName(o.name, `${at}.name`);
+  const hash = sha256Of(o.hash, `${at}.hash`);
+  if (o.encoding !== HEAD_FILE_ENCODING) fail(`${at}.encoding`, `must be "${HEAD_FILE_ENCODING}"`);
+  if (typeof o.data !== 'string') fail(`${at}.data`, 'must be base64 text');
+  if (s.head === 'builtin')
+    fail(at, 'the session is on the built-in head (session.head), so it carries no head file');
+  if (hash !== s.head.hash)
+    fail(`${at}.hash`, `must be the hash of the session's head (session.head.hash ${s.head.hash})`);
+  if (name !== s.head.name)
+    fail(
+      `${at}.name`,
+      `must be the name of the session's head (session.head.name ${JSON.stringify(s.head.name)})`,
+    );
+  return { name, hash, data: o.data };
+}
+
+export interface WriteSessionFileOptions {
+  /** The bytes of the file the session's head names (its SHA-256 must be the head's hash); left
+   *  out, a session on a loaded head is written without its head. Ignored on the built-in head. */
+  headBytes?: ArrayBuffer;
+  /** Written beside the session as `camera` ("Save" keeps the view). */
+  camera?: Viewpoint;
+}
+
+/** A session file's text (JSON): the session, the camera and, for a session on a loaded head
+ *  given its bytes, the head file (`headFile`, last). Throws when the bytes are not the head's
+ *  (their SHA-256 is not session.head.hash): writing them would make a file that cannot be read. */
+export async function writeSessionFile(
+  s: SessionState,
+  options: WriteSessionFileOptions = {},
+): Promise<string> {
+  const out: Record<string, unknown> = { ...s };
+  if (options.camera) out.camera = options.camera;
+  if (s.head !== 'builtin' && options.headBytes) {
+    const bytes = new Uint8Array(options.headBytes);
+    const hash = await sha256Hex(bytes);
+    if (hash !== s.head.hash)
+      throw new Error(
+        `writeSessionFile: the head bytes' SHA-256 ${hash} is not the session head's ${s.head.hash}`,
+      );
+    out.headFile = {
+      name: s.head.name,
+      hash,
+      encoding: HEAD_FILE_ENCODING,
+      data: toBase64(await deflateRaw(bytes)),
+    };
+  }
+  return JSON.stringify(out);
 }

@@ -33,6 +33,17 @@
 //   varint    length of a JSON tail, then the tail (UTF-8): fields the layout has no place for
 //             (avoidScalp, detail, a curve's detail), {"session": {…}, "growth": {…},
 //             "curves": [[i, {…}], …]}
+//   [parts]   optional (session version 3; absent when the session has none of them, so such a
+//             link is byte for byte what it was before): varint mask of the parts present,
+//             1 head, 2 scalpPaint, 4 symmetry, then each present part in that order:
+//     head        (a loaded head: its reference, never the mesh) the SHA-256 as 32 bytes; the
+//                 name as a varint length and UTF-8; u8 format (session.ts HEAD_FORMATS); u8 up
+//                 (0 y, 1 z); varint turn count, then per turn a u8 4·axis (0 x, 1 y, 2 z) +
+//                 quarter turns
+//     scalpPaint  varint stroke count; per stroke a u8 (1 erase, 0 paint), the radius as a
+//                 varint (position grid) and its points as a polyline (position grid)
+//     symmetry    the plane's unit normal as 3 f64 little-endian (exact), its offset as a
+//                 zigzag varint (position grid)
 //   u32       CRC-32 of everything before it, little-endian
 //
 // A polyline is a varint point count, the first point as 3 zigzag varints, the second as its
@@ -45,9 +56,17 @@
 // (sessionFile.ts parseSession).
 
 import { CURVE_PARAMS, type CurveParamSpec, type GrowthParams } from '../solver/protocol';
+import { deflateRaw, fromBase64Url, inflateCapped, toBase64Url } from './bytes';
 import { GRID_PRESETS, type GridPreset } from './grid';
 import { DIRECTION_SCALE as DIR, POSITION_SCALE as POS, paramScale, toGridInt } from './quantize';
-import { DEFAULT_GROWTH, type SessionState, type StyleCurve } from './session';
+import {
+  DEFAULT_GROWTH,
+  HEAD_FORMATS,
+  type HeadRef,
+  type ScalpStroke,
+  type SessionState,
+  type StyleCurve,
+} from './session';
 import { type Parsed, parseSession } from './sessionFile';
 import { SESSION_VERSION } from './sessionMigrations';
 import type { Vec3 } from './vec3';
@@ -61,87 +80,31 @@ const GRIDS = Object.keys(GRID_PRESETS) as GridPreset[];
 const TYPES = ['stream', 'dividing', 'ponytail'] as const;
 const MODES = [undefined, 'ruled', 'strip'] as const;
 const GROWTH_KEYS = Object.keys(DEFAULT_GROWTH) as (keyof GrowthParams)[];
-const KNOWN_TOP = ['version', 'head', 'grid', 'curves', 'growth', 'hairColor', 'avoid'];
+const KNOWN_TOP = [
+  'version',
+  'head',
+  'grid',
+  'curves',
+  'growth',
+  'hairColor',
+  'avoid',
+  'scalpPaint',
+  'symmetry',
+];
+const AXES = ['x', 'y', 'z'] as const;
+/** The optional parts after the JSON tail (the mask's bits). */
+const PART_HEAD = 1;
+const PART_SCALP_PAINT = 2;
+const PART_SYMMETRY = 4;
+const PARTS = PART_HEAD | PART_SCALP_PAINT | PART_SYMMETRY;
 const KNOWN_CURVE: Record<StyleCurve['type'], string[]> = {
   stream: ['id', 'type', 'points', 'extend', 'viewpoint', 'surfaceMode'],
   dividing: ['id', 'type', 'points', 'normals', 'viewpoint'],
   ponytail: ['id', 'type', 'points', 'extend', 'viewpoint', 'crossSection', 'profiles', 'circles'],
 };
 
-// ---- base64url, deflate ----------------------------------------------------------------------
-
-export function toBase64Url(bytes: Uint8Array): string {
-  let bin = '';
-  for (let i = 0; i < bytes.length; i += 0x8000)
-    bin += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
-  return btoa(bin).replace(/\+/g, '-').replace(/\//g, '_').replace(/=+$/, '');
-}
-
-export function fromBase64Url(text: string): Uint8Array | null {
-  if (!/^[A-Za-z0-9_-]*$/.test(text) || text.length % 4 === 1) return null;
-  try {
-    const bin = atob(text.replace(/-/g, '+').replace(/_/g, '/'));
-    const out = new Uint8Array(bin.length);
-    for (let i = 0; i < bin.length; i++) out[i] = bin.charCodeAt(i);
-    return out;
-  } catch {
-    return null;
-  }
-}
-
-async function deflate(bytes: Uint8Array): Promise<Uint8Array> {
-  const out = new Response(
-    new Blob([bytes as BlobPart]).stream().pipeThrough(new CompressionStream('deflate-raw')),
-  );
-  return new Uint8Array(await out.arrayBuffer());
-}
-
-/** Compressed bytes handed to the inflater at a time: deflate expands at most ~1032:1, so one
- *  slice inflates to at most ~4 MiB. (Chromium inflates a whole input chunk before its output
- *  can be read: fed the link in one piece, a 1 GiB bomb took 3.8 s before the first check.) */
-const INFLATE_SLICE = 4096;
-
-/** Inflates `bytes`, giving up as soon as the output passes `cap` bytes ('too large') or the
- *  data is not valid deflate ('damaged'). The input goes in in slices, read as they inflate. */
-export async function inflateCapped(
-  bytes: Uint8Array,
-  cap: number,
-): Promise<Uint8Array | 'too large' | 'damaged'> {
-  const ds = new DecompressionStream('deflate-raw');
-  const writer = ds.writable.getWriter();
-  const reader = ds.readable.getReader();
-  let stop = false;
-  void (async () => {
-    for (let i = 0; i < bytes.length && !stop; i += INFLATE_SLICE)
-      await writer.write(bytes.slice(i, i + INFLATE_SLICE));
-    if (!stop) await writer.close();
-  })().catch(() => {}); // a damaged stream: the reader below says so
-  const chunks: Uint8Array[] = [];
-  let total = 0;
-  try {
-    for (;;) {
-      const { done, value } = await reader.read();
-      if (done) break;
-      total += value.length;
-      if (total > cap) {
-        stop = true;
-        reader.cancel().catch(() => {});
-        return 'too large';
-      }
-      chunks.push(value);
-    }
-  } catch {
-    stop = true;
-    return 'damaged';
-  }
-  const out = new Uint8Array(total);
-  let at = 0;
-  for (const c of chunks) {
-    out.set(c, at);
-    at += c.length;
-  }
-  return out;
-}
+// base64url and deflate: bytes.ts (re-exported here, where they were first defined)
+export { fromBase64Url, inflateCapped, toBase64Url };
 
 // ---- CRC-32 ----------------------------------------------------------------------------------
 
@@ -261,7 +224,8 @@ export function packSession(s: SessionState): Uint8Array {
     curves?: [number, Record<string, unknown>][];
   } = {};
   const top = rest(s, KNOWN_TOP) ?? {};
-  if (s.head !== 'builtin') top.head = s.head;
+  const head = packableHead(s.head);
+  if (s.head !== 'builtin' && !head) top.head = s.head; // not a head reference: the reader says so
   const grid = GRIDS.indexOf(s.grid);
   if (grid < 0) top.grid = s.grid;
   w.u8(Math.max(0, grid));
@@ -358,13 +322,59 @@ export function packSession(s: SessionState): Uint8Array {
     w.varint(json.length);
     w.bytes(json);
   } else w.varint(0);
+
+  const strokes = s.scalpPaint ?? [];
+  const parts =
+    (head ? PART_HEAD : 0) |
+    (strokes.length > 0 ? PART_SCALP_PAINT : 0) |
+    (s.symmetry ? PART_SYMMETRY : 0);
+  if (parts) {
+    w.varint(parts);
+    if (head) writeHead(w, head);
+    if (strokes.length > 0) {
+      w.varint(strokes.length);
+      for (const st of strokes) writeStroke(w, st);
+    }
+    if (s.symmetry) {
+      for (const x of s.symmetry.normal) w.f64(x);
+      w.zigzag(toGridInt(s.symmetry.offset, POS));
+    }
+  }
   w.u32(crc32(w.done()));
   return w.done();
 }
 
+/** The head when it is a reference the layout can hold, else null. */
+function packableHead(h: SessionState['head']): HeadRef | null {
+  if (typeof h !== 'object' || h === null || h.kind !== 'mesh') return null;
+  if (typeof h.hash !== 'string' || !/^[0-9a-f]{64}$/.test(h.hash)) return null;
+  if (typeof h.name !== 'string' || !HEAD_FORMATS.includes(h.format)) return null;
+  if ((h.up !== 'y' && h.up !== 'z') || !Array.isArray(h.turns)) return null;
+  const turnOk = (t: HeadRef['turns'][number]) =>
+    AXES.includes(t?.axis) && Number.isInteger(t.quarterTurns) && t.quarterTurns >= 0;
+  return h.turns.every((t) => turnOk(t) && t.quarterTurns <= 3) ? h : null;
+}
+
+function writeHead(w: Writer, h: HeadRef) {
+  for (let i = 0; i < 64; i += 2) w.u8(parseInt(h.hash.slice(i, i + 2), 16));
+  const name = new TextEncoder().encode(h.name);
+  w.varint(name.length);
+  w.bytes(name);
+  w.u8(HEAD_FORMATS.indexOf(h.format));
+  w.u8(h.up === 'y' ? 0 : 1);
+  w.varint(h.turns.length);
+  for (const t of h.turns) w.u8(4 * AXES.indexOf(t.axis) + t.quarterTurns);
+}
+
+function writeStroke(w: Writer, st: ScalpStroke) {
+  w.u8(st.erase ? 1 : 0);
+  w.varint(Math.max(0, toGridInt(st.radius, POS)));
+  writePolyline(w, st.points, POS);
+}
+
 /** The link fragment for a session (without '#'): `s=2.` + base64url(deflate-raw(body)). */
 export async function encodeSessionLink(s: SessionState): Promise<string> {
-  const deflated = await deflate(packSession(s));
+  const deflated = await deflateRaw(packSession(s));
   const w = new Writer();
   w.varint(deflated.length);
   w.bytes(deflated);
@@ -377,7 +387,7 @@ export async function encodeSessionLinkV1(s: SessionState): Promise<string> {
   const json = JSON.stringify(s, (_k, v) =>
     typeof v === 'number' ? Math.round(v * 1e5) / 1e5 : v,
   );
-  return `s=${toBase64Url(await deflate(new TextEncoder().encode(json)))}`;
+  return `s=${toBase64Url(await deflateRaw(new TextEncoder().encode(json)))}`;
 }
 
 // ---- reading ---------------------------------------------------------------------------------
@@ -577,8 +587,51 @@ export function unpackSession(body: Uint8Array): Record<string, unknown> {
         if (Array.isArray(entry) && Number.isInteger(entry[0]) && curves[entry[0]])
           merge(curves[entry[0]], entry[1]);
   }
+  if (r.left > 0) readParts(r, session);
   if (r.left > 0) throw new LinkError('it has data past its end');
   return session;
+}
+
+/** The optional parts after the JSON tail (head, scalpPaint, symmetry) into `session`. */
+function readParts(r: Reader, session: Record<string, unknown>) {
+  const mask = r.varint();
+  if (mask === 0 || mask > PARTS)
+    throw new LinkError('it has parts this app does not know (made by a newer hairsketch?)');
+  if (mask & PART_HEAD) {
+    const hash = Array.from(r.bytes(32), (b) => b.toString(16).padStart(2, '0')).join('');
+    let name: string;
+    try {
+      name = new TextDecoder('utf-8', { fatal: true }).decode(r.bytes(r.count(1)));
+    } catch (e) {
+      if (e instanceof LinkError) throw e;
+      throw new LinkError("its head's name is not UTF-8");
+    }
+    const format = HEAD_FORMATS[r.u8()];
+    if (!format) throw new LinkError("its head's file format is unknown");
+    const upByte = r.u8();
+    if (upByte > 1) throw new LinkError("its head's up axis is unknown");
+    const turns = [];
+    for (let i = r.count(1); i > 0; i--) {
+      const t = r.u8();
+      if (t >> 2 >= AXES.length) throw new LinkError("its head's turns are unknown");
+      turns.push({ axis: AXES[t >> 2], quarterTurns: t & 3 });
+    }
+    session.head = { kind: 'mesh', name, hash, format, up: upByte ? 'z' : 'y', turns };
+  }
+  if (mask & PART_SCALP_PAINT) {
+    const strokes = [];
+    for (let i = r.count(3); i > 0; i--) {
+      const erase = r.u8();
+      if (erase > 1) throw new LinkError('a scalp stroke is unknown');
+      const radius = r.varint() / POS + 0;
+      strokes.push({ erase: erase === 1, radius, points: readPolyline(r, POS) });
+    }
+    session.scalpPaint = strokes;
+  }
+  if (mask & PART_SYMMETRY) {
+    const normal = [r.f64() + 0, r.f64() + 0, r.f64() + 0];
+    session.symmetry = { normal, offset: r.zigzag() / POS + 0 };
+  }
 }
 
 const damaged = (why: string): Parsed<SessionState> => ({

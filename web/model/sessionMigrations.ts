@@ -16,7 +16,7 @@ export interface PlainRecord {
 }
 
 /** The session shape this build writes and reads. */
-export const SESSION_VERSION = 2 as const;
+export const SESSION_VERSION = 3 as const;
 
 /** One step: reads a session of version `from`, returns it as version `from + 1`. Pure: it must
  *  not modify its argument (the reader's copy may be shared with the caller's error path). */
@@ -45,6 +45,21 @@ export const SESSION_MIGRATIONS: readonly SessionMigration[] = [
       for (const [k, v] of Object.entries(s)) if (k !== 'avoid' || !wellFormed) out[k] = v;
       if (wellFormed && a !== null && (a.index as Plain[]).length > 0) out.avoidScalp = true;
       out.version = 2;
+      return out;
+    },
+  },
+  {
+    name: 'v2-to-v3: the head may be a loaded mesh; version 2 sessions are on the built-in head',
+    from: 2,
+    migrate(s) {
+      // Version 3 adds a head mesh (head: {kind: 'mesh', …}), scalp brush strokes (scalpPaint)
+      // and a mirror plane (symmetry), all optional. A version 2 session is on the built-in
+      // head, and says so. A `head` other than absent or "builtin" is left in place for the
+      // reader to check as version 3 data.
+      const out: PlainRecord = Object.create(null);
+      for (const [k, v] of Object.entries(s)) out[k] = v;
+      if (s.head === undefined) out.head = 'builtin';
+      out.version = 3;
       return out;
     },
   },
