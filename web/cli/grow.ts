@@ -2,7 +2,9 @@
 // file, through the same pipeline as the app's export (export/growSession.ts, then
 // export/writeExport.ts), so the same session gives the same file.
 //   hairsketch grow SESSION --out FILE [--format usda|hair|obj|glb] [--grid 25k|50k|100k|250k]
-//                   [--solver fast|exact] [--strands N] [--with-head|--no-head]
+//                   [--solver fast|exact] [--strands N] [--with-head|--no-head] [--head FILE]
+// The head is the session's (cli/head.ts): the built-in one, or a loaded head's file embedded in
+// the session file or given with --head FILE (OBJ, glTF/GLB, PLY, STL).
 // The file is written to a temporary name beside FILE and renamed into place only when complete.
 import {
   closeSync,
@@ -20,23 +22,24 @@ import { readExportedSession } from '../export/readExport';
 import { exportedCounts } from '../export/strandsForExport';
 import { EXPORT_FORMATS, type ExportFormat, type ExportHead } from '../export/types';
 import { formatFromFileName, writeExport } from '../export/writeExport';
-import { Head } from '../head/head';
 import { GRID_PRESETS, type GridPreset, gridForSession, isGridPreset } from '../model/grid';
 import type { SessionState } from '../model/session';
-import { parseSession } from '../model/sessionFile';
+import { type HeadFileData, readSessionFile } from '../model/sessionFile';
 import { decodeSessionLink } from '../model/sessionLink';
 import { SolverError } from '../solver/engine';
 import { type LoadOptions, loadSolverEngine } from '../solver/wasmEngine';
 import { CliError, parseSeconds } from './errors';
+import { headForGrow } from './head';
 
 export const GROW_USAGE =
-  'usage: hairsketch grow SESSION --out FILE [--format usda|hair|obj|glb] [--grid 25k|50k|100k|250k] [--solver fast|exact] [--strands N] [--with-head|--no-head] [--max-seconds N] [--progress-seconds N]';
+  'usage: hairsketch grow SESSION --out FILE [--format usda|hair|obj|glb] [--grid 25k|50k|100k|250k] [--solver fast|exact] [--strands N] [--with-head|--no-head] [--head FILE] [--max-seconds N] [--progress-seconds N]';
 
 const GROW_SOLVERS = ['fast', 'exact'] as const;
 type GrowSolver = (typeof GROW_SOLVERS)[number];
 export const MAX_STRANDS_OPTION = 1_000_000;
-/** Largest session file read (a saved session; an export carrying one may be larger). */
-const MAX_SESSION_BYTES = 64 << 20;
+/** Largest session file read (a saved session, which may embed its head file; an export
+ *  carrying one may be larger). */
+const MAX_SESSION_BYTES = 500 << 20;
 const MAX_EXPORT_BYTES = 1 << 30;
 
 export interface GrowArgs {
@@ -46,7 +49,10 @@ export interface GrowArgs {
   grid: GridPreset | null; // null: the session's grid
   solver: GrowSolver;
   strands: number | null; // null: the session's growth.maxStrands
+  /** Write the head mesh into the file (--with-head / --no-head). */
   head: boolean;
+  /** --head FILE: the head file to grow on (null: the session's own). */
+  headFile: string | null;
   /** Stop (exit 3) when the solve and growth take longer than this. */
   maxSeconds: number;
   /** A JSON progress line on stderr at most this often during the solve. */
@@ -74,6 +80,7 @@ export function parseGrowArgs(argv: readonly string[]): GrowArgs {
   let solver = 'fast';
   let strands: string | null = null;
   let head: boolean | null = null;
+  let headFile: string | null = null;
   let maxSeconds = 600;
   let progressSeconds = 5;
   const valued = [
@@ -84,6 +91,7 @@ export function parseGrowArgs(argv: readonly string[]): GrowArgs {
     '--strands',
     '--max-seconds',
     '--progress-seconds',
+    '--head',
   ];
   for (let i = 0; i < argv.length; i++) {
     const a = argv[i];
@@ -96,6 +104,7 @@ export function parseGrowArgs(argv: readonly string[]): GrowArgs {
       else if (a === '--solver') solver = v;
       else if (a === '--max-seconds') maxSeconds = parseSeconds(a, v);
       else if (a === '--progress-seconds') progressSeconds = parseSeconds(a, v);
+      else if (a === '--head') headFile = v;
       else strands = v;
     } else if (a === '--with-head' || a === '--no-head') {
       head = a === '--with-head';
@@ -141,6 +150,7 @@ export function parseGrowArgs(argv: readonly string[]): GrowArgs {
     solver: solver as GrowSolver,
     strands: n,
     head: head ?? (fmt === 'usda' || fmt === 'glb'),
+    headFile,
     maxSeconds,
     progressSeconds,
   };
@@ -148,9 +158,12 @@ export function parseGrowArgs(argv: readonly string[]): GrowArgs {
 
 const isLink = (s: string) => /^https?:\/\//i.test(s) || s.startsWith('#s=');
 
-/** The session SESSION names: a share link (http…#s=… or #s=…), a saved session file (JSON), or
- *  an exported .usda/.glb that carries one. Every path ends in the app's strict reader. */
-export async function readSessionArg(arg: string): Promise<SessionState> {
+/** The session SESSION names: a share link (http…#s=… or #s=…), a saved session file (JSON, with
+ *  the head file it may embed), or an exported .usda/.glb that carries one. Every path ends in
+ *  the app's strict reader. */
+export async function readSessionArg(
+  arg: string,
+): Promise<{ session: SessionState; headFile?: HeadFileData }> {
   if (isLink(arg)) {
     let fragment = arg;
     if (!arg.startsWith('#')) {
@@ -162,7 +175,7 @@ export async function readSessionArg(arg: string): Promise<SessionState> {
     }
     const r = await decodeSessionLink(fragment);
     if (!r.ok) throw new CliError(r.error);
-    return r.value;
+    return { session: r.value };
   }
   let size: number;
   try {
@@ -186,14 +199,15 @@ export async function readSessionArg(arg: string): Promise<SessionState> {
     if (!exported.ok) throw new CliError(`session ${arg}: ${exported.error}`);
     data = exported.session;
   } else {
-    if (size > MAX_SESSION_BYTES) throw new CliError(`session ${arg} is larger than 64 MB`);
+    if (size > MAX_SESSION_BYTES)
+      throw new CliError(`session ${arg} is larger than ${MAX_SESSION_BYTES >> 20} MB`);
     try {
       data = JSON.parse(new TextDecoder().decode(bytes));
     } catch {
       throw new CliError(`session ${arg} is not JSON (nor an exported .usda or .glb)`);
     }
   }
-  const parsed = parseSession(data);
+  const parsed = await readSessionFile(data);
   if (!parsed.ok) throw new CliError(`session ${arg}: ${parsed.error}`);
   return parsed.value;
 }
@@ -241,9 +255,13 @@ export async function runGrow(
   print: (line: string) => void,
 ): Promise<GrowReport> {
   const args = parseGrowArgs(argv);
-  const session = await readSessionArg(args.session);
+  const read = await readSessionArg(args.session);
+  const { head, scalp, bounds, session } = await headForGrow(
+    read.session,
+    read.headFile,
+    args.headFile,
+  );
   const preset = args.grid ?? session.grid;
-  const head = Head.builtin();
   const exportHead: ExportHead | null = args.head
     ? { positions: head.mesh.positions, indices: head.mesh.indices, normals: head.mesh.normals }
     : null;
@@ -255,8 +273,8 @@ export async function runGrow(
   try {
     const t0 = performance.now();
     let lastLine = t0;
-    hair = growSessionHair(engine, session, head.scalpMesh(), {
-      grid: gridForSession(preset, session.curves),
+    hair = growSessionHair(engine, session, scalp, {
+      grid: gridForSession(preset, session.curves, bounds),
       solver: args.solver,
       ...(args.strands !== null ? { maxStrands: args.strands } : {}),
       // between solver slices: progress on stderr now and then, and the time cap
