@@ -1,21 +1,64 @@
 // Sessions in and out: one load path for every way a session comes in (file, link, test hook;
 // undo/redo are history moves in the editor), the file download, and the address bar's link
 // kept in step with the session.
+//
+// A session on a loaded head names the head by its file's SHA-256 (model/session.ts HeadRef).
+// A session file carries the head file: opening it puts the file into the head store before the
+// session is applied, so the app finds it there. A link (or a file saved without its head, or an
+// export) carries only the name: when the store does not hold that head the session is still
+// applied (the app keeps showing the head it has) and the outcome says which head it needs
+// (`needsHead`), so the app can say so and offer "Open head".
 import type { Editor } from '../editor/editor';
 import { readExportedSession } from '../export/readExport';
+import type { HeadStore } from '../head/headStore';
 import type { SessionState, Viewpoint } from '../model/session';
-import { type Parsed, parseSession } from '../model/sessionFile';
+import { type Parsed, parseSession, readSessionFile, writeSessionFile } from '../model/sessionFile';
 import { decodeSessionLink, encodeSessionLink } from '../model/sessionLink';
 import type { Vec3 } from '../model/vec3';
 
 export type LoadSource = { kind: 'file'; name: string } | { kind: 'link' } | { kind: 'test' };
+
+/** Largest file "Open" reads, and largest JSON session file (a JavaScript string holds at most
+ *  ~536M characters; a session file embedding a large head is mostly its base64). */
+const MAX_OPEN_BYTES = 512 << 20;
+const MAX_JSON_BYTES = 500 << 20;
+
+/** A head a session names that the head store does not hold. */
+export interface HeadNeeded {
+  name: string;
+  hash: string;
+}
+
+/** What opening a session file or a link came to. `opened` and `needsHead` applied the session
+ *  (one undoable edit; a link starts the history); `needsHead` also says which head file the
+ *  app must be given (Open head) to show it; `failed` changed nothing. `message` is the status
+ *  line's sentence (null when opened: the editor's own "Opened …" is shown). */
+export type OpenOutcome =
+  | { kind: 'opened'; message: null }
+  | { kind: 'needsHead'; needsHead: HeadNeeded; message: string }
+  | { kind: 'failed'; message: string };
+
+/** The status sentence for a session whose head is not stored. */
+export function needsHeadMessage(h: HeadNeeded, what: 'link' | 'session'): string {
+  return `This ${what} needs the head “${h.name}”; Open head to load it.`;
+}
 
 /** The one load path: checks `data` with the strict session reader and, when it is valid,
  *  makes it the session (an undoable edit; a link opened with the page starts the history).
  *  A bad session changes nothing; the result says why. */
 export function loadSession(editor: Editor, data: unknown, from: LoadSource): Parsed<SessionState> {
   const parsed = parseSession(data);
-  if (!parsed.ok) return parsed;
+  if (parsed.ok) applySession(editor, parsed.value, from, savedCamera(data));
+  return parsed;
+}
+
+/** Makes a session the reader accepted the editor's session (one undoable edit). */
+function applySession(
+  editor: Editor,
+  session: SessionState,
+  from: LoadSource,
+  camera: Viewpoint | undefined,
+): void {
   const what =
     from.kind === 'file'
       ? `Opened ${from.name}`
@@ -24,56 +67,164 @@ export function loadSession(editor: Editor, data: unknown, from: LoadSource): Pa
         : 'Loaded a session';
   editor.run({
     kind: 'loadSession',
-    session: parsed.value,
+    session,
     what,
-    camera: savedCamera(data),
+    camera,
     resetHistory: from.kind === 'link',
   });
-  return parsed;
+}
+
+/** The head `s` needs that `heads` does not hold (null: the built-in head, a stored head, or no
+ *  store to ask). */
+async function missingHead(s: SessionState, heads?: HeadStore): Promise<HeadNeeded | null> {
+  if (s.head === 'builtin' || !heads) return null;
+  try {
+    if (await heads.get(s.head.hash)) return null;
+  } catch {
+    // a store that fails holds nothing
+  }
+  return { name: s.head.name, hash: s.head.hash };
+}
+
+/** Applies `s` and says whether its head is missing from the store. */
+async function openParsed(
+  editor: Editor,
+  s: SessionState,
+  from: LoadSource,
+  camera: Viewpoint | undefined,
+  heads: HeadStore | undefined,
+): Promise<OpenOutcome> {
+  const missing = await missingHead(s, heads);
+  applySession(editor, s, from, camera);
+  if (!missing) return { kind: 'opened', message: null };
+  return {
+    kind: 'needsHead',
+    needsHead: missing,
+    message: needsHeadMessage(missing, from.kind === 'link' ? 'link' : 'session'),
+  };
 }
 
 /** Reads a session file the user chose (a saved session, or an exported USD / glTF that
- *  carries one); the sentence for the status line when it cannot be opened. */
-export async function openSessionFile(editor: Editor, file: File): Promise<string | null> {
-  if (file.size > 512 << 20)
-    return `Could not open ${file.name}: larger than 512 MB. Nothing changed.`;
-  let data: unknown;
+ *  carries one). A saved session's embedded head file goes into `heads` before the session is
+ *  applied. */
+export async function openSessionFileOutcome(
+  editor: Editor,
+  file: File,
+  heads?: HeadStore,
+): Promise<OpenOutcome> {
+  const failed = (why: string): OpenOutcome => ({
+    kind: 'failed',
+    message: `Could not open ${file.name}: ${why}. Nothing changed.`,
+  });
+  if (file.size > MAX_OPEN_BYTES) return failed('larger than 512 MB');
+  const from: LoadSource = { kind: 'file', name: file.name };
   const magic = new TextDecoder().decode(await file.slice(0, 5).arrayBuffer());
   if (magic === '#usda' || magic.startsWith('glTF')) {
-    // an export: its session is in the USD header or the glTF JSON chunk
+    // an export: its session is in the USD header or the glTF JSON chunk (never its head file)
     const r = readExportedSession(new Uint8Array(await file.arrayBuffer()));
-    if (!r?.ok)
-      return `Could not open ${file.name}: ${r ? r.error : 'not a hairsketch export'}. Nothing changed.`;
-    data = r.session;
-  } else {
-    if (file.size > 64 << 20)
-      return `Could not open ${file.name}: larger than 64 MB. Nothing changed.`;
+    if (!r?.ok) return failed(r ? r.error : 'not a hairsketch export');
+    const parsed = parseSession(r.session);
+    if (!parsed.ok) return failed(parsed.error);
+    return openParsed(editor, parsed.value, from, savedCamera(r.session), heads);
+  }
+  if (file.size > MAX_JSON_BYTES) return failed('larger than 500 MB');
+  let data: unknown;
+  try {
+    data = JSON.parse(await file.text());
+  } catch {
+    return failed('not JSON, USD or glTF');
+  }
+  const r = await readSessionFile(data);
+  if (!r.ok) return failed(r.error);
+  const { session, headFile } = r.value;
+  if (headFile && heads) {
     try {
-      data = JSON.parse(await file.text());
+      await heads.put({ hash: headFile.hash, name: headFile.name, bytes: headFile.bytes });
     } catch {
-      return `Could not open ${file.name}: not JSON, USD or glTF. Nothing changed.`;
+      // a store that fails: the head is reported missing below
     }
   }
-  const r = loadSession(editor, data, { kind: 'file', name: file.name });
-  return r.ok ? null : `Could not open ${file.name}: ${r.error}. Nothing changed.`;
+  return openParsed(editor, session, from, savedCamera(data), heads);
 }
 
-/** Opens the session a link carries (#s=…); the error sentence when the link is bad. */
-export async function openSessionLink(editor: Editor, fragment: string): Promise<string | null> {
-  if (!fragment.startsWith('#s=')) return null;
+/** Reads a session file (as openSessionFileOutcome); the sentence for the status line when it
+ *  could not be opened or its head is missing, else null. */
+export async function openSessionFile(
+  editor: Editor,
+  file: File,
+  heads?: HeadStore,
+): Promise<string | null> {
+  return (await openSessionFileOutcome(editor, file, heads)).message;
+}
+
+/** Opens the session a link carries (#s=…); a link whose head `heads` does not hold is opened
+ *  and reported as `needsHead`. A fragment that is not a session link: opened, nothing done. */
+export async function openSessionLinkOutcome(
+  editor: Editor,
+  fragment: string,
+  heads?: HeadStore,
+): Promise<OpenOutcome> {
+  if (!fragment.startsWith('#s=')) return { kind: 'opened', message: null };
   const decoded = await decodeSessionLink(fragment);
-  const r = decoded.ok ? loadSession(editor, decoded.value, { kind: 'link' }) : decoded;
-  return r.ok ? null : `Could not open the link: ${r.error}. Showing the preset instead.`;
+  if (!decoded.ok)
+    return {
+      kind: 'failed',
+      message: `Could not open the link: ${decoded.error}. Showing the preset instead.`,
+    };
+  return openParsed(editor, decoded.value, { kind: 'link' }, undefined, heads);
 }
 
-/** "Save": the session and the camera as a JSON file download. */
-export function downloadSession(s: SessionState, camera: Viewpoint): void {
-  const json = JSON.stringify({ ...s, camera });
+/** Opens the session a link carries (#s=…); the sentence for the status line when the link is
+ *  bad or its head is missing, else null. */
+export async function openSessionLink(
+  editor: Editor,
+  fragment: string,
+  heads?: HeadStore,
+): Promise<string | null> {
+  return (await openSessionLinkOutcome(editor, fragment, heads)).message;
+}
+
+/** The text "Save" writes: the session, the camera and, for a session on a loaded head whose
+ *  file `heads` holds, the head file. `headMissing` when the head could not be embedded. */
+export async function sessionFileText(
+  s: SessionState,
+  camera: Viewpoint,
+  heads?: HeadStore,
+): Promise<{ text: string; headMissing: HeadNeeded | null }> {
+  if (s.head === 'builtin')
+    return { text: await writeSessionFile(s, { camera }), headMissing: null };
+  const needed = { name: s.head.name, hash: s.head.hash };
+  let headBytes: ArrayBuffer | undefined;
+  try {
+    headBytes = (await heads?.get(needed.hash))?.bytes;
+  } catch {
+    // a store that fails holds nothing
+  }
+  if (headBytes)
+    try {
+      return { text: await writeSessionFile(s, { camera, headBytes }), headMissing: null };
+    } catch {
+      // the stored bytes are not the head's (a damaged store): save without them
+    }
+  return { text: await writeSessionFile(s, { camera }), headMissing: needed };
+}
+
+/** "Save": the session and the camera (and, on a loaded head, its file from `heads`) as a JSON
+ *  file download. Resolves to a sentence when the head file could not be included, else null. */
+export async function downloadSession(
+  s: SessionState,
+  camera: Viewpoint,
+  heads?: HeadStore,
+): Promise<string | null> {
+  const { text: json, headMissing } = await sessionFileText(s, camera, heads);
   const a = document.createElement('a');
   a.href = URL.createObjectURL(new Blob([json], { type: 'application/json' }));
   a.download = 'hairstyle.hairsketch.json';
   a.click();
   setTimeout(() => URL.revokeObjectURL(a.href), 10_000);
+  return headMissing
+    ? `Saved without the head file “${headMissing.name}” (this browser has not stored it): whoever opens the file needs that head too.`
+    : null;
 }
 
 /** Keeps the address bar's #s= link in step with the session (a reload keeps the work). */
