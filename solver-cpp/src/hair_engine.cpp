@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <chrono>
 #include <limits>
+#include <string>
+
+#include "memory_budget.hpp"
 
 namespace hairsketch {
 
@@ -54,18 +57,37 @@ Status HairEngine::setScalp(const float* positions, size_t vertexCount, const ui
   rootsValid_ = false;
   roots_.clear();
   capped_ = false;
-  meshPositions_.clear();
-  meshIndices_.clear();
-  meshScalp_.clear();
-  headDistance_.clear();
-  Status s = scalp_.build(positions, vertexCount, indices, triangleCount, scalp, center);
+  // The previous head is released first: its memory is what the new one may use.
+  scalp_ = ScalpSampler();
+  headDistance_ = HeadDistance();
+  const HeadMeshView view{positions, vertexCount, indices, triangleCount, scalp};
+  Status s = checkMemory(
+      "head mesh (" + std::to_string(triangleCount) + " triangles)",
+      ScalpSampler::estimateBytes(vertexCount, triangleCount) + HeadDistance::estimateBytes(view),
+      availableMemoryBytes());
   if (!s.ok()) return s;
-  s = headDistance_.build(HeadMeshView{positions, vertexCount, indices, triangleCount, scalp});
+  s = scalp_.build(positions, vertexCount, indices, triangleCount, scalp, center);
   if (!s.ok()) return s;
-  meshPositions_.assign(positions, positions + 3 * vertexCount);
-  meshIndices_.assign(indices, indices + 3 * triangleCount);
-  meshScalp_.assign(scalp, scalp + triangleCount);
+  s = headDistance_.build(view);
+  if (!s.ok()) scalp_ = ScalpSampler();
   return s;
+}
+
+Status HairEngine::setScalpMask(const uint8_t* scalp, size_t triangleCount) {
+  if (!scalp_.built() || !headDistance_.built())
+    return Status::Error(StatusCode::NotReady, "scalp mask before setScalp");
+  if (!scalp || triangleCount != scalp_.triangleCount())
+    return Status::Error(StatusCode::InvalidInput,
+                         "scalp mask: " + std::to_string(triangleCount) + " flags for a head of " +
+                             std::to_string(scalp_.triangleCount()) + " triangles");
+  Status s = scalp_.setScalpMask(scalp, triangleCount);
+  if (s.ok()) s = headDistance_.setScalpMask(scalp, triangleCount);
+  if (!s.ok()) return s;
+  // Roots are sampled again over the new scalp at the next grow.
+  rootsValid_ = false;
+  roots_.clear();
+  capped_ = false;
+  return Status::Ok();
 }
 
 DetailParams detailFromArray(const double* d) {
@@ -220,10 +242,10 @@ Status HairEngine::scalpAvoidance(const ScalpAvoidanceParams& params, Constraint
   if (!hasGrid_) return Status::Error(StatusCode::NotReady, "scalp avoidance before setGrid");
   if (!fieldValid_)
     return Status::Error(StatusCode::NotReady, "scalp avoidance: curves changed, solve first");
-  if (meshIndices_.empty())
+  if (!scalp_.built())
     return Status::Error(StatusCode::NotReady, "scalp avoidance before setScalp");
-  HeadMeshView m{meshPositions_.data(), meshPositions_.size() / 3, meshIndices_.data(),
-                 meshIndices_.size() / 3, meshScalp_.data()};
+  HeadMeshView m{scalp_.positions().data(), scalp_.positions().size() / 3, scalp_.indices().data(),
+                 scalp_.triangleCount(), scalp_.scalpMask().data()};
   return scalpAvoidanceConstraints(grid_, field_, m, params, out, stats);
 }
 

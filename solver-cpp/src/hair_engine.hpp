@@ -1,6 +1,6 @@
 // The solver side of a session as one stateful object (used by the wasm binding):
 //   grid + solver by name -> scalp mesh -> curves -> constraints -> solve -> roots -> strands.
-// Roots are cached per (theta step, phi step, jitter, seed, maxStrands) and scalp mesh.
+// Roots are cached per (theta step, phi step, jitter, seed) and scalp mesh and mask.
 #pragma once
 
 #include <memory>
@@ -28,8 +28,15 @@ class HairEngine {
  public:
   // New grid and solver by name (makeFieldSolver: cg, fast, exact, auto). Clears curves and field.
   Status setGrid(const Grid& grid, double omega, const std::string& solverName);
+  // The head mesh (protocol.ts ScalpMesh): builds the root sampler and the head's distance grid
+  // (checked against the memory cap first). A refused head leaves the engine without one.
   Status setScalp(const float* positions, size_t vertexCount, const uint32_t* indices,
                   size_t triangleCount, const uint8_t* scalp, const Eigen::Vector3d& center);
+  // A new scalp mask for the same head: scalp[triangle] != 0 on the scalp, triangleCount = the
+  // head's. Roots are sampled again over it at the next grow; the head's distance grid, the
+  // grid, field and constraints stay. A wrong count (InvalidInput) or no head (NotReady) is
+  // refused and the old mask stays in force.
+  Status setScalpMask(const uint8_t* scalp, size_t triangleCount);
   // Curves -> constraints -> solver (the solver diffs against its previous set).
   Status setCurves(const CurveSetView& curves);
   Status solve();
@@ -66,10 +73,7 @@ class HairEngine {
   Grid grid_;
   bool hasGrid_ = false;
   std::unique_ptr<FieldSolver> solver_;
-  ScalpSampler scalp_;
-  std::vector<float> meshPositions_;  // the head mesh as given to setScalp (scalp avoidance)
-  std::vector<uint32_t> meshIndices_;
-  std::vector<uint8_t> meshScalp_;
+  ScalpSampler scalp_;  // also keeps the head mesh and its mask (scalp avoidance reads them)
   HeadDistance headDistance_;
   ConstraintSet constraints_;
   std::vector<uint8_t> colours_;

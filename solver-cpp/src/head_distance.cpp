@@ -11,71 +11,156 @@ namespace hairsketch {
 
 namespace {
 using V3 = Eigen::Vector3d;
-}
 
-Status HeadDistance::build(const HeadMeshView& m, double cell, int bandCells) {
-  d_.clear();
+// The cell lattice of a mesh: bounds grown by (band + 2) cells.
+struct Lattice {
+  V3 lo, sum;
+  int nx = 0, ny = 0, nz = 0;
+  size_t cells() const { return size_t(nx) * size_t(ny) * size_t(nz); }
+};
+
+Status latticeOf(const HeadMeshView& m, double cell, int bandCells, Lattice& L) {
   if (m.triangleCount == 0 || !m.positions || !m.indices)
     return Status::Error(StatusCode::InvalidInput, "head distance: no mesh");
   if (!(cell > 0) || !std::isfinite(cell) || bandCells < 1)
     return Status::Error(StatusCode::InvalidInput, "head distance: bad cell size or band");
-  for (size_t i = 0; i < 3 * m.triangleCount; ++i)
-    if (m.indices[i] >= m.vertexCount)
-      return Status::Error(StatusCode::InvalidInput, "head distance: triangle index out of range");
-  auto vert = [&](uint32_t v) {
-    return V3(m.positions[3 * v], m.positions[3 * v + 1], m.positions[3 * v + 2]);
-  };
   V3 lo = V3::Constant(std::numeric_limits<double>::infinity()), hi = -lo, sum = V3::Zero();
   for (size_t v = 0; v < m.vertexCount; ++v) {
-    const V3 p = vert(uint32_t(v));
+    const V3 p(m.positions[3 * v], m.positions[3 * v + 1], m.positions[3 * v + 2]);
     if (!p.allFinite())
       return Status::Error(StatusCode::NonFinite, "head distance: vertex is not finite");
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
     sum += p;
   }
-  const double band = bandCells * cell;
   const double pad = (bandCells + 2) * cell;
   lo.array() -= pad;
   hi.array() += pad;
   const V3 ext = (hi - lo) / cell;
-  const int nx = int(std::ceil(ext.x())) + 1, ny = int(std::ceil(ext.y())) + 1,
-            nz = int(std::ceil(ext.z())) + 1;
-  if (double(nx) * ny * nz > 64e6)
+  if (!(ext.maxCoeff() < 1e6))
     return Status::Error(StatusCode::OverMemoryCap, "head distance: head too large for its grid");
+  L.lo = lo;
+  L.sum = sum;
+  L.nx = int(std::ceil(ext.x())) + 1;
+  L.ny = int(std::ceil(ext.y())) + 1;
+  L.nz = int(std::ceil(ext.z())) + 1;
+  if (double(L.nx) * L.ny * L.nz > 64e6)
+    return Status::Error(StatusCode::OverMemoryCap, "head distance: head too large for its grid");
+  return Status::Ok();
+}
+
+// Per cell: d (4 bytes), tri (4), the propagation's queue flag (1) and the flood fill's flag (1)
+// and stack (8, at most); per vertex the double normals (24).
+constexpr double kBytesPerCell = 18, kBytesPerVertex = 24;
+
+}  // namespace
+
+double HeadDistance::estimateBytes(const HeadMeshView& m, double cell, int bandCells) {
+  Lattice L;
+  if (!latticeOf(m, cell, bandCells, L).ok()) return 0;
+  return kBytesPerCell * double(L.cells()) + kBytesPerVertex * double(m.vertexCount) +
+         double(m.triangleCount);
+}
+
+void HeadDistance::clear() {
+  d_.clear();
+  tri_.clear();
+  scalp_.clear();
+  triangleCount_ = 0;
+}
+
+Status HeadDistance::setScalpMask(const uint8_t* scalp, size_t triangleCount) {
+  if (!built()) return Status::Error(StatusCode::NotReady, "scalp mask: no head built");
+  if (!scalp || triangleCount != triangleCount_)
+    return Status::Error(StatusCode::InvalidInput,
+                         "scalp mask: " + std::to_string(triangleCount) + " flags for a head of " +
+                             std::to_string(triangleCount_) + " triangles");
+  scalp_.assign(scalp, scalp + triangleCount);
+  return Status::Ok();
+}
+
+Status HeadDistance::build(const HeadMeshView& m, double cell, int bandCells) {
+  clear();
+  Lattice L;
+  Status s = latticeOf(m, cell, bandCells, L);
+  if (!s.ok()) return s;
+  for (size_t i = 0; i < 3 * m.triangleCount; ++i)
+    if (m.indices[i] >= m.vertexCount)
+      return Status::Error(StatusCode::InvalidInput, "head distance: triangle index out of range");
+  auto vert = [&](uint32_t v) {
+    return V3(m.positions[3 * v], m.positions[3 * v + 1], m.positions[3 * v + 2]);
+  };
+  const V3 lo = L.lo;
+  const int nx = L.nx, ny = L.ny, nz = L.nz;
+  const double band = bandCells * cell;
   // Area-weighted vertex normals (counter-clockwise = outward, as in three.js).
   const std::vector<V3> vn =
       areaWeightedVertexNormals(m.positions, m.vertexCount, m.indices, m.triangleCount);
-  const size_t n = size_t(nx) * ny * nz;
+  const size_t n = L.cells();
   const float inf = std::numeric_limits<float>::infinity();
   std::vector<float> d(n, inf);  // signed, compared by magnitude
-  std::vector<uint8_t> scalpCell(n, 0);
+  std::vector<int32_t> tri(n, -1);
   auto at = [&](int i, int j, int k) {
     return size_t(i) + size_t(nx) * (size_t(j) + size_t(ny) * k);
   };
+  // Distance from cell (i, j, k) to triangle t; when it is within the band and nearer than
+  // the cell's current one, the cell takes it (signed) and true is returned.
+  auto offer = [&](int i, int j, int k, uint32_t t) {
+    const uint32_t* I = m.indices + 3 * size_t(t);
+    const V3 a = vert(I[0]), b = vert(I[1]), c = vert(I[2]);
+    const V3 p = lo + cell * V3(i, j, k);
+    const V3 w = closestBarycentric(p, a, b, c);
+    const V3 q = w.x() * a + w.y() * b + w.z() * c;
+    const double dist = (p - q).norm();
+    const size_t idx = at(i, j, k);
+    float& cur = d[idx];
+    if (!(dist < std::fabs(cur)) || dist > band) return false;
+    V3 nrm = w.x() * vn[I[0]] + w.y() * vn[I[1]] + w.z() * vn[I[2]];
+    if (!(nrm.squaredNorm() > 1e-24)) nrm = (b - a).cross(c - a);
+    cur = float((p - q).dot(nrm) < 0 ? -dist : dist);
+    tri[idx] = int32_t(t);
+    return true;
+  };
+  // Exact within one cell: each triangle splatted into its box grown by one cell.
   for (size_t t = 0; t < m.triangleCount; ++t) {
     const uint32_t* I = m.indices + 3 * t;
     const V3 a = vert(I[0]), b = vert(I[1]), c = vert(I[2]);
-    const V3 faceN = (b - a).cross(c - a);
-    const V3 blo = (a.cwiseMin(b).cwiseMin(c).array() - band - lo.array()) / cell;
-    const V3 bhi = (a.cwiseMax(b).cwiseMax(c).array() + band - lo.array()) / cell;
+    const V3 blo = (a.cwiseMin(b).cwiseMin(c).array() - cell - lo.array()) / cell;
+    const V3 bhi = (a.cwiseMax(b).cwiseMax(c).array() + cell - lo.array()) / cell;
     const int i0 = std::max(0, int(std::ceil(blo.x()))), i1 = std::min(nx - 1, int(bhi.x()));
     const int j0 = std::max(0, int(std::ceil(blo.y()))), j1 = std::min(ny - 1, int(bhi.y()));
     const int k0 = std::max(0, int(std::ceil(blo.z()))), k1 = std::min(nz - 1, int(bhi.z()));
     for (int k = k0; k <= k1; ++k)
       for (int j = j0; j <= j1; ++j)
-        for (int i = i0; i <= i1; ++i) {
-          const V3 p = lo + cell * V3(i, j, k);
-          const V3 w = closestBarycentric(p, a, b, c);
-          const V3 q = w.x() * a + w.y() * b + w.z() * c;
-          const double dist = (p - q).norm();
-          float& cur = d[at(i, j, k)];
-          if (!(dist < std::fabs(cur)) || dist > band) continue;
-          V3 nrm = w.x() * vn[I[0]] + w.y() * vn[I[1]] + w.z() * vn[I[2]];
-          if (!(nrm.squaredNorm() > 1e-24)) nrm = faceN;
-          cur = float((p - q).dot(nrm) < 0 ? -dist : dist);
-          scalpCell[at(i, j, k)] = m.scalp ? m.scalp[t] : 0;
-        }
+        for (int i = i0; i <= i1; ++i) offer(i, j, k, uint32_t(t));
+  }
+  // Out to the band: every cell offers its nearest triangle to its 26 neighbours; a neighbour
+  // that takes it offers it on in turn (first in, first out, from the cells in index order).
+  {
+    std::vector<uint8_t> queued(n, 0);
+    std::vector<uint32_t> queue;
+    for (size_t idx = 0; idx < n; ++idx)
+      if (tri[idx] >= 0) {
+        queue.push_back(uint32_t(idx));
+        queued[idx] = 1;
+      }
+    for (size_t head = 0; head < queue.size(); ++head) {
+      const size_t idx = queue[head];
+      queued[idx] = 0;
+      const int i = int(idx % size_t(nx)), j = int((idx / size_t(nx)) % size_t(ny)),
+                k = int(idx / (size_t(nx) * size_t(ny)));
+      const uint32_t t = uint32_t(tri[idx]);
+      for (int dk = -1; dk <= 1; ++dk)
+        for (int dj = -1; dj <= 1; ++dj)
+          for (int di = -1; di <= 1; ++di) {
+            const int a = i + di, b = j + dj, c = k + dk;
+            if (a < 0 || b < 0 || c < 0 || a >= nx || b >= ny || c >= nz) continue;
+            const size_t nb = at(a, b, c);
+            if (tri[nb] == int32_t(t) || !offer(a, b, c, t) || queued[nb]) continue;
+            queued[nb] = 1;
+            queue.push_back(uint32_t(nb));
+          }
+    }
   }
   // Far cells: outside when connected to the border through far cells.
   std::vector<uint8_t> outside(n, 0);
@@ -106,7 +191,9 @@ Status HeadDistance::build(const HeadMeshView& m, double cell, int bandCells) {
   for (size_t idx = 0; idx < n; ++idx)
     if (std::isinf(d[idx])) d[idx] = float(outside[idx] ? band : -band);
   d_ = std::move(d);
-  scalp_ = std::move(scalpCell);
+  tri_ = std::move(tri);
+  triangleCount_ = m.triangleCount;
+  if (m.scalp) scalp_.assign(m.scalp, m.scalp + m.triangleCount);
   nx_ = nx;
   ny_ = ny;
   nz_ = nz;
@@ -115,7 +202,7 @@ Status HeadDistance::build(const HeadMeshView& m, double cell, int bandCells) {
   oy_ = float(lo.y());
   oz_ = float(lo.z());
   far_ = float(band);
-  centre_ = (sum / double(m.vertexCount)).cast<float>();
+  centre_ = (L.sum / double(m.vertexCount)).cast<float>();
   return Status::Ok();
 }
 
@@ -153,7 +240,8 @@ bool HeadDistance::scalpNear(float x, float y, float z) const {
         w < float(nz_ - 1)))
     return false;
   const size_t i = size_t(u + 0.5f), j = size_t(v + 0.5f), k = size_t(w + 0.5f);
-  return scalp_[i + size_t(nx_) * (j + size_t(ny_) * k)] != 0;
+  const int32_t t = tri_[i + size_t(nx_) * (j + size_t(ny_) * k)];
+  return t >= 0 && size_t(t) < scalp_.size() && scalp_[size_t(t)] != 0;
 }
 
 float HeadDistance::outward(const float p[3], float dir[3]) const {

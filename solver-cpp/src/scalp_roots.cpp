@@ -27,9 +27,42 @@ int ScalpSampler::binOf(double theta, double phi) const {
   return i * nPhi_ + j;
 }
 
+Eigen::Vector3d ScalpSampler::corner(size_t t, int k) const {
+  const float* p = positions_.data() + 3 * size_t(indices_[3 * t + size_t(k)]);
+  return Eigen::Vector3d(p[0], p[1], p[2]) - center_;
+}
+
+Eigen::Vector3d ScalpSampler::normal(size_t t) const {
+  const Eigen::Vector3d a = corner(t, 0), b = corner(t, 1), c = corner(t, 2);
+  Eigen::Vector3d nrm = (b - a).cross(c - a);
+  const double len = nrm.norm();
+  nrm = len > 0 ? Eigen::Vector3d(nrm / len) : Eigen::Vector3d::Zero();
+  if (nrm.dot(a + b + c) < 0) nrm = -nrm;  // away from the center
+  return nrm;
+}
+
+double ScalpSampler::estimateBytes(size_t vertexCount, size_t triangleCount) {
+  // positions, indices, flags; per triangle its bin range (8, temporary) and about 6 bin
+  // entries (4 each); the bin starts (at most 512 x 1024 + 1).
+  return 12.0 * double(vertexCount) + (12.0 + 1 + 8 + 24) * double(triangleCount) +
+         4.0 * (512 * 1024 + 1);
+}
+
+Status ScalpSampler::setScalpMask(const uint8_t* scalp, size_t nt) {
+  if (!built()) return Status::Error(StatusCode::NotReady, "scalp mask: no scalp mesh set");
+  if (!scalp || nt != scalp_.size())
+    return Status::Error(StatusCode::InvalidInput,
+                         "scalp mask: " + std::to_string(nt) + " flags for a head of " +
+                             std::to_string(scalp_.size()) + " triangles");
+  std::copy(scalp, scalp + nt, scalp_.begin());
+  return Status::Ok();
+}
+
 Status ScalpSampler::build(const float* pos, size_t nv, const uint32_t* idx, size_t nt,
                            const uint8_t* scalp, const Eigen::Vector3d& center) {
-  tris_.clear();
+  positions_.clear();
+  indices_.clear();
+  scalp_.clear();
   binStart_.clear();
   binTris_.clear();
   if (!center.allFinite()) return Status::Error(StatusCode::NonFinite, "scalp: center");
@@ -44,46 +77,35 @@ Status ScalpSampler::build(const float* pos, size_t nv, const uint32_t* idx, siz
       return Status::Error(StatusCode::InvalidInput,
                            "scalp: triangle index " + std::to_string(idx[i]) + " out of range");
   center_ = center;
+  positions_.assign(pos, pos + 3 * nv);
+  indices_.assign(idx, idx + 3 * nt);
   radius_ = 0;
-  tris_.resize(nt);
-  auto vert = [&](uint32_t v) -> Eigen::Vector3d {
-    return Eigen::Vector3d(pos[3 * v], pos[3 * v + 1], pos[3 * v + 2]) - center;
-  };
-  for (size_t t = 0; t < nt; ++t) {
-    const Eigen::Vector3d a = vert(idx[3 * t]), b = vert(idx[3 * t + 1]), c = vert(idx[3 * t + 2]);
-    Tri& tr = tris_[t];
-    tr.a = a;
-    tr.e1 = b - a;
-    tr.e2 = c - a;
-    Eigen::Vector3d nrm = tr.e1.cross(tr.e2);
-    const double len = nrm.norm();
-    nrm = len > 0 ? Eigen::Vector3d(nrm / len) : Eigen::Vector3d::Zero();
-    if (nrm.dot(a + b + c) < 0) nrm = -nrm;  // away from the center
-    tr.normal = nrm;
-    tr.scalp = scalp[t] != 0;
-    radius_ = std::max({radius_, a.norm(), b.norm(), c.norm()});
-  }
+  for (size_t v = 0; v < nv; ++v)
+    radius_ = std::max(
+        radius_, (Eigen::Vector3d(pos[3 * v], pos[3 * v + 1], pos[3 * v + 2]) - center).norm());
   // Bins over (theta, phi): about 4 triangles' worth of area per bin, within limits.
   const double target = std::sqrt(double(nt) / 2.0);
   nTheta_ = std::clamp(int(target / 2), 8, 512);
   nPhi_ = 2 * nTheta_;
   const double dTheta = kPi / nTheta_, dPhi = 2 * kPi / nPhi_;
-  // Each triangle goes to every bin its bounding cap touches. The cap around the normalised
-  // vertex directions (axis = their mean) contains the spherical triangle because caps smaller
-  // than a hemisphere are geodesically convex. Triangles whose cap is not small (containing or
-  // near the center) go everywhere.
-  std::vector<std::pair<uint32_t, uint32_t>> claims;  // (bin, triangle)
-  claims.reserve(nt * 4);
+  // Each triangle goes to every bin its bounding cap touches: theta rows i0..i1, and in each
+  // row the phi columns j0 .. j0 + span (mod nPhi). The cap around the normalised vertex
+  // directions (axis = their mean) contains the spherical triangle because caps smaller than a
+  // hemisphere are geodesically convex. Triangles whose cap is not small (containing or near
+  // the center) go everywhere.
+  struct Range {
+    uint16_t i0, i1, j0, span;
+  };
+  std::vector<Range> range(nt);
   const double margin = 1e-6;
   for (size_t t = 0; t < nt; ++t) {
-    const Tri& tr = tris_[t];
-    const Eigen::Vector3d v[3] = {tr.a, tr.a + tr.e1, tr.a + tr.e2};
     Eigen::Vector3d u[3];
     bool degenerate = false;
     for (int k = 0; k < 3; ++k) {
-      const double l = v[k].norm();
+      const Eigen::Vector3d v = corner(t, k);
+      const double l = v.norm();
       if (!(l > 1e-12 * (radius_ + 1e-300))) degenerate = true;
-      u[k] = degenerate ? Eigen::Vector3d::Zero() : Eigen::Vector3d(v[k] / l);
+      u[k] = degenerate ? Eigen::Vector3d::Zero() : Eigen::Vector3d(v / l);
     }
     Eigen::Vector3d axis = u[0] + u[1] + u[2];
     double alpha = kPi;
@@ -93,40 +115,42 @@ Status ScalpSampler::build(const float* pos, size_t nv, const uint32_t* idx, siz
       for (int k = 0; k < 3; ++k) minCos = std::min(minCos, axis.dot(u[k]));
       alpha = std::acos(std::clamp(minCos, -1.0, 1.0)) + margin;
     }
-    int i0 = 0, i1 = nTheta_ - 1;
-    bool allPhi = true;
-    double phiC = 0, halfPhi = kPi;
+    Range r{0, uint16_t(nTheta_ - 1), 0, uint16_t(nPhi_ - 1)};  // everywhere
     if (alpha < 0.45 * kPi) {
       const double thetaC = std::acos(std::clamp(axis.y(), -1.0, 1.0));
-      phiC = std::atan2(axis.x(), axis.z());
+      const double phiC = std::atan2(axis.x(), axis.z());
       const double lo = thetaC - alpha, hi = thetaC + alpha;
-      i0 = std::max(0, int(std::floor(lo / dTheta)));
-      i1 = std::min(nTheta_ - 1, int(std::floor(hi / dTheta)));
+      r.i0 = uint16_t(std::max(0, int(std::floor(lo / dTheta))));
+      r.i1 = uint16_t(std::min(nTheta_ - 1, int(std::floor(hi / dTheta))));
       if (lo > 0 && hi < kPi) {
-        halfPhi = std::asin(std::min(1.0, std::sin(alpha) / std::sin(thetaC))) + margin;
-        allPhi = halfPhi >= kPi;
+        const double halfPhi =
+            std::asin(std::min(1.0, std::sin(alpha) / std::sin(thetaC))) + margin;
+        if (halfPhi < kPi) {
+          double p0 = phiC - halfPhi;
+          p0 -= 2 * kPi * std::floor(p0 / (2 * kPi));  // [0, 2 pi)
+          r.j0 = uint16_t(std::min(nPhi_ - 1, int(std::floor(p0 / dPhi))));
+          r.span = uint16_t(std::min(nPhi_ - 1, int(std::ceil(2 * halfPhi / dPhi)) + 1));
+        }
       }
     }
-    for (int i = i0; i <= i1; ++i) {
-      if (allPhi) {
-        for (int j = 0; j < nPhi_; ++j) claims.emplace_back(uint32_t(i * nPhi_ + j), uint32_t(t));
-      } else {
-        double p0 = phiC - halfPhi;
-        p0 -= 2 * kPi * std::floor(p0 / (2 * kPi));  // [0, 2 pi)
-        const int j0 = int(std::floor(p0 / dPhi));
-        const int span = std::min(nPhi_ - 1, int(std::ceil(2 * halfPhi / dPhi)) + 1);
-        for (int s = 0; s <= span; ++s)
-          claims.emplace_back(uint32_t(i * nPhi_ + (j0 + s) % nPhi_), uint32_t(t));
-      }
-    }
+    range[t] = r;
   }
+  // Counted, then filled in triangle order (each bin lists its triangles in mesh order).
   const size_t nb = size_t(nTheta_) * nPhi_;
   binStart_.assign(nb + 1, 0);
-  for (const auto& c : claims) ++binStart_[c.first + 1];
+  for (const Range& r : range)
+    for (int i = r.i0; i <= r.i1; ++i)
+      for (int s = 0; s <= r.span; ++s) ++binStart_[size_t(i) * nPhi_ + (r.j0 + s) % nPhi_ + 1];
   for (size_t b = 0; b < nb; ++b) binStart_[b + 1] += binStart_[b];
-  binTris_.resize(claims.size());
+  binTris_.resize(binStart_[nb]);
   std::vector<uint32_t> fill(binStart_.begin(), binStart_.end() - 1);
-  for (const auto& c : claims) binTris_[fill[c.first]++] = c.second;
+  for (size_t t = 0; t < nt; ++t) {
+    const Range& r = range[t];
+    for (int i = r.i0; i <= r.i1; ++i)
+      for (int s = 0; s <= r.span; ++s)
+        binTris_[fill[size_t(i) * nPhi_ + (r.j0 + s) % nPhi_]++] = uint32_t(t);
+  }
+  scalp_.assign(scalp, scalp + nt);
   return Status::Ok();
 }
 
@@ -138,22 +162,23 @@ bool ScalpSampler::castOutermost(const Eigen::Vector3d& dir, double& tBest, int&
   tBest = -1;
   triBest = -1;
   for (uint32_t k = binStart_[b]; k < binStart_[b + 1]; ++k) {
-    const Tri& tr = tris_[binTris_[k]];
+    const size_t t = binTris_[k];
+    const Eigen::Vector3d a = corner(t, 0), e1 = corner(t, 1) - a, e2 = corner(t, 2) - a;
     // Moller-Trumbore with the ray origin at the center (local origin 0).
-    const Eigen::Vector3d pv = dir.cross(tr.e2);
-    const double det = tr.e1.dot(pv);
+    const Eigen::Vector3d pv = dir.cross(e2);
+    const double det = e1.dot(pv);
     if (std::abs(det) < 1e-300) continue;
     const double inv = 1.0 / det;
-    const Eigen::Vector3d s = -tr.a;
+    const Eigen::Vector3d s = -a;
     const double u = s.dot(pv) * inv;
     if (u < 0 || u > 1) continue;
-    const Eigen::Vector3d qv = s.cross(tr.e1);
+    const Eigen::Vector3d qv = s.cross(e1);
     const double v = dir.dot(qv) * inv;
     if (v < 0 || u + v > 1) continue;
-    const double t = tr.e2.dot(qv) * inv;
-    if (t > 0 && t > tBest) {
-      tBest = t;
-      triBest = int(binTris_[k]);
+    const double tHit = e2.dot(qv) * inv;
+    if (tHit > 0 && tHit > tBest) {
+      tBest = tHit;
+      triBest = int(t);
     }
   }
   return triBest >= 0;
@@ -185,8 +210,8 @@ Status ScalpSampler::sample(const RootParams& p, std::vector<Eigen::Vector3f>& r
       const Eigen::Vector3d dir = sphericalDirection(theta, phi);
       double t;
       int tri;
-      if (!castOutermost(dir, t, tri) || !tris_[tri].scalp) continue;
-      const Eigen::Vector3d hit = center_ + t * dir + pushOut * tris_[tri].normal;
+      if (!castOutermost(dir, t, tri) || !scalp_[size_t(tri)]) continue;
+      const Eigen::Vector3d hit = center_ + t * dir + pushOut * normal(size_t(tri));
       all.push_back(hit.cast<float>());
     }
   if (p.maxStrands > 0 && all.size() > size_t(p.maxStrands)) {

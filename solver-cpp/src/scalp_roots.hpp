@@ -23,25 +23,35 @@ struct RootParams {
 
 class ScalpSampler {
  public:
-  // positions: #V x 3, indices: #T x 3, scalp: #T flags. Copies what it needs and bins the
+  // positions: #V x 3, indices: #T x 3, scalp: #T flags. Copies the mesh and bins the
   // triangles by the spherical cap around their vertex directions.
   Status build(const float* positions, size_t vertexCount, const uint32_t* indices,
                size_t triangleCount, const uint8_t* scalp, const Eigen::Vector3d& center);
+  // Replaces the scalp flags (count = the built mesh's triangle count); the binning stays. A
+  // wrong count or nothing built is refused and the old flags stay.
+  Status setScalpMask(const uint8_t* scalp, size_t triangleCount);
+  // Bytes build keeps and its temporaries, for a memory check before building.
+  static double estimateBytes(size_t vertexCount, size_t triangleCount);
   // Roots in deterministic order (theta rows, then phi), at most maxStrands of them.
   Status sample(const RootParams& params, std::vector<Eigen::Vector3f>& roots) const;
   // Outermost hit along the ray center + t * dir (t > 0). Returns false when nothing is hit.
   bool castOutermost(const Eigen::Vector3d& dir, double& t, int& triangle) const;
-  bool built() const { return !tris_.empty(); }
-  size_t triangleCount() const { return tris_.size(); }
+  bool built() const { return !scalp_.empty(); }
+  size_t triangleCount() const { return scalp_.size(); }
+  // The mesh as built (scalp avoidance reads it): positions #V x 3, indices #T x 3, flags #T.
+  const std::vector<float>& positions() const { return positions_; }
+  const std::vector<uint32_t>& indices() const { return indices_; }
+  const std::vector<uint8_t>& scalpMask() const { return scalp_; }
 
  private:
-  struct Tri {
-    Eigen::Vector3d a, e1, e2;  // a, b - a, c - a, relative to the center
-    Eigen::Vector3d normal;     // unit, pointing away from the center
-    bool scalp = false;
-  };
+  // Corner k of triangle t relative to the center, in double.
+  Eigen::Vector3d corner(size_t t, int k) const;
+  // Unit normal of triangle t pointing away from the center (zero when degenerate).
+  Eigen::Vector3d normal(size_t t) const;
   int binOf(double theta, double phi) const;
-  std::vector<Tri> tris_;
+  std::vector<float> positions_;
+  std::vector<uint32_t> indices_;
+  std::vector<uint8_t> scalp_;
   Eigen::Vector3d center_ = Eigen::Vector3d::Zero();
   double radius_ = 0;  // largest vertex distance from the center
   int nTheta_ = 0, nPhi_ = 0;

@@ -121,3 +121,78 @@ TEST(HairEngine, ErrorsAreStatusesNotCrashes) {
   ASSERT_TRUE(e.setCurves(s.curves()).ok());
   EXPECT_FALSE(e.grow(RootParams{}, GrowthParams{}).ok());  // curves changed, not solved
 }
+
+namespace {
+
+// The left half of the head (x > 0) above the ears: another scalp than the scene's.
+std::vector<uint8_t> leftHalf(const hairsketch_test::Mesh& m) {
+  std::vector<uint8_t> mask(m.indices.size() / 3, 0);
+  for (size_t t = 0; t < mask.size(); ++t) {
+    double x = 0, y = 0;
+    for (int k = 0; k < 3; ++k) {
+      x += m.positions[3 * m.indices[3 * t + k]] / 3;
+      y += m.positions[3 * m.indices[3 * t + k] + 1] / 3;
+    }
+    mask[t] = x > 0 && y > -0.3;
+  }
+  return mask;
+}
+
+}  // namespace
+
+TEST(HairEngine, ANewScalpMaskGrowsWhatAFreshEngineWithThatScalpGrows) {
+  Scene s;
+  RootParams rp;
+  rp.thetaStepDeg = 6;
+  rp.phiStepDeg = 6;
+  rp.seed = 3;
+  GrowthParams gp;
+  gp.maxLength = 3;
+  HairEngine e;
+  ASSERT_TRUE(setup(e, s).ok());
+  ASSERT_TRUE(e.grow(rp, gp).ok());  // roots of the scene's scalp cached
+  const Strands before = e.strands();
+  const Field field = e.field();
+  const size_t constraints = e.constraints().size();
+  const std::vector<uint8_t> mask = leftHalf(s.head);
+  ASSERT_TRUE(e.setScalpMask(mask.data(), mask.size()).ok());
+  // The field and constraints stay; the next growth starts from the new scalp.
+  EXPECT_EQ(e.field(), field);
+  EXPECT_EQ(e.constraints().size(), constraints);
+  ASSERT_TRUE(e.grow(rp, gp).ok());
+  const Strands after = e.strands();
+  // The reference: a fresh engine given a head with that mask.
+  Scene fresh;
+  fresh.head.scalp = mask;
+  HairEngine f;
+  ASSERT_TRUE(setup(f, fresh).ok());
+  ASSERT_TRUE(f.grow(rp, gp).ok());
+  EXPECT_EQ(after.points, f.strands().points);
+  EXPECT_EQ(after.strandStart, f.strands().strandStart);
+  EXPECT_NE(after.points, before.points);
+  for (const Eigen::Vector3f& r : e.roots()) EXPECT_GT(r.x(), -0.1f);  // on the left half
+  // Scalp avoidance measures against the new scalp too.
+  ScalpAvoidanceParams ap;
+  ConstraintSet ae, af;
+  ASSERT_TRUE(e.scalpAvoidance(ap, ae).ok());
+  ASSERT_TRUE(f.scalpAvoidance(ap, af).ok());
+  ASSERT_EQ(ae.size(), af.size());
+  for (size_t c = 0; c < ae.size(); ++c) {
+    EXPECT_EQ(ae[c].index, af[c].index);
+    EXPECT_EQ(ae[c].target, af[c].target);
+  }
+  // A wrong length (or no mask) is refused and the mask in force stays.
+  EXPECT_EQ(e.setScalpMask(s.head.scalp.data(), s.head.scalp.size() - 1).code,
+            StatusCode::InvalidInput);
+  EXPECT_EQ(e.setScalpMask(nullptr, mask.size()).code, StatusCode::InvalidInput);
+  ASSERT_TRUE(e.grow(rp, gp).ok());
+  EXPECT_EQ(e.strands().points, f.strands().points);
+  // Back to the first mask: the first hair again.
+  ASSERT_TRUE(e.setScalpMask(s.head.scalp.data(), s.head.scalp.size()).ok());
+  ASSERT_TRUE(e.grow(rp, gp).ok());
+  EXPECT_EQ(e.strands().points, before.points);
+  // Before any head: not ready.
+  HairEngine none;
+  ASSERT_TRUE(none.setGrid(s.grid, kDefaultOmega, "cg").ok());
+  EXPECT_EQ(none.setScalpMask(mask.data(), mask.size()).code, StatusCode::NotReady);
+}

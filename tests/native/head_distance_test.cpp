@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "sphere_mesh.hpp"
 #include "strand_growth.hpp"
@@ -75,6 +77,105 @@ TEST(HeadDistance, TwoSeparatePartsAreBothInside) {
   EXPECT_GT(hd.distance(0, 0, 0), 0.05f);
   EXPECT_NEAR(hd.distance(1.55f, 0, 0), 0.05f, 0.01f);  // near the surface: its distance
   EXPECT_FLOAT_EQ(hd.distance(1.8f, 0, 0), 0.1f);       // past the band: the band (2 x 0.05)
+}
+
+namespace {
+
+// Unsigned distance from p to the nearest triangle of m, by testing every triangle.
+double bruteDistance(const hairsketch_test::Mesh& m, const Eigen::Vector3d& p) {
+  double best = std::numeric_limits<double>::infinity();
+  auto v = [&](uint32_t i) {
+    return Eigen::Vector3d(m.positions[3 * i], m.positions[3 * i + 1], m.positions[3 * i + 2]);
+  };
+  for (size_t t = 0; t < m.indices.size() / 3; ++t) {
+    const Eigen::Vector3d a = v(m.indices[3 * t]), b = v(m.indices[3 * t + 1]),
+                          c = v(m.indices[3 * t + 2]);
+    // closest point by projecting onto the plane, else onto the three edges
+    const Eigen::Vector3d n = (b - a).cross(c - a).normalized();
+    const Eigen::Vector3d q = p - n.dot(p - a) * n;
+    bool inside = true;
+    const Eigen::Vector3d corners[3] = {a, b, c};
+    for (int k = 0; k < 3; ++k)
+      inside &= (corners[(k + 1) % 3] - corners[k]).cross(q - corners[k]).dot(n) >= 0;
+    double d = inside ? (p - q).norm() : std::numeric_limits<double>::infinity();
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector3d e0 = corners[k], e = corners[(k + 1) % 3] - e0;
+      const double s = std::clamp((p - e0).dot(e) / e.squaredNorm(), 0.0, 1.0);
+      d = std::min(d, (p - (e0 + s * e)).norm());
+    }
+    best = std::min(best, d);
+  }
+  return best;
+}
+
+}  // namespace
+
+TEST(HeadDistance, MatchesBruteForceBetweenTwoNearlyTouchingParts) {
+  // Two spheres 0.08 apart (a crease, as between an ear and the head): the distance within the
+  // band is the nearest triangle's wherever the distance is smooth (away from the bisector).
+  const double cell = 0.03;
+  auto a = hairsketch_test::uvSphere(-0.54, 0, 0, 0.5, 24, 48);
+  const auto b = hairsketch_test::uvSphere(0.54, 0.05, 0, 0.5, 24, 48);
+  const uint32_t off = uint32_t(a.positions.size() / 3);
+  a.positions.insert(a.positions.end(), b.positions.begin(), b.positions.end());
+  for (uint32_t i : b.indices) a.indices.push_back(i + off);
+  hairsketch_test::markScalpAbove(a, -2);
+  HeadDistance hd;
+  ASSERT_TRUE(hd.build(view(a), cell, 3).ok());
+  uint64_t state = 777;
+  auto u = [&] {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return double(state >> 11) / double(1ull << 53);
+  };
+  int compared = 0;
+  for (int t = 0; t < 3000; ++t) {
+    const Eigen::Vector3d p(2.4 * u() - 1.2, 1.2 * u() - 0.6, 1.2 * u() - 0.6);
+    const double da = (p - Eigen::Vector3d(-0.54, 0, 0)).norm() - 0.5;
+    const double db = (p - Eigen::Vector3d(0.54, 0.05, 0)).norm() - 0.5;
+    // skip where the nearest sphere changes within two cells (the distance has a kink there)
+    if (std::fabs(da - db) < 2 * cell) continue;
+    const double exact = bruteDistance(a, p);
+    if (exact > 0.06) continue;  // a cell past the band (clamped to it) is in the stencil
+    const double sign = std::min(da, db) < 0 ? -1 : 1;
+    EXPECT_NEAR(hd.distance(float(p.x()), float(p.y()), float(p.z())), sign * exact, 2e-3)
+        << p.transpose();
+    ++compared;
+  }
+  EXPECT_GT(compared, 100);
+}
+
+TEST(HeadDistance, ScalpNearReadsTheMaskInForce) {
+  const auto m = sphere();  // all scalp
+  std::vector<uint8_t> top(m.scalp.size());
+  for (size_t t = 0; t < top.size(); ++t) {
+    double y = 0;
+    for (int k = 0; k < 3; ++k) y += m.positions[3 * m.indices[3 * t + k] + 1];
+    top[t] = y / 3 > 0.3;
+  }
+  HeadDistance hd, fresh;
+  ASSERT_TRUE(hd.build(view(m), 0.03, 3).ok());
+  hairsketch_test::Mesh withTop = m;
+  withTop.scalp = top;
+  ASSERT_TRUE(fresh.build(view(withTop), 0.03, 3).ok());
+  ASSERT_TRUE(hd.setScalpMask(top.data(), top.size()).ok());
+  // a wrong count is refused and leaves the mask in force
+  EXPECT_EQ(hd.setScalpMask(m.scalp.data(), m.scalp.size() + 1).code, StatusCode::InvalidInput);
+  int scalp = 0, other = 0;
+  for (int i = 0; i < 400; ++i) {
+    const double th = 3.14159265 * (i + 0.5) / 400, ph = 0.7 * i;
+    const float r = 1.01f;
+    const float x = float(r * std::sin(th) * std::sin(ph)), y = float(r * std::cos(th)),
+                z = float(r * std::sin(th) * std::cos(ph));
+    EXPECT_EQ(hd.scalpNear(x, y, z), fresh.scalpNear(x, y, z)) << i;
+    // away from the mask's edge, the mask itself
+    if (std::fabs(y - 0.3f) > 0.05f) EXPECT_EQ(hd.scalpNear(x, y, z), y > 0.3f) << i;
+    (hd.scalpNear(x, y, z) ? scalp : other)++;
+  }
+  EXPECT_GT(scalp, 50);
+  EXPECT_GT(other, 50);
+  EXPECT_FALSE(hd.scalpNear(1.5f, 0, 0));  // away from the surface
+  HeadDistance none;
+  EXPECT_EQ(none.setScalpMask(top.data(), top.size()).code, StatusCode::NotReady);
 }
 
 TEST(HeadDistance, GrowthIntoTheHeadSlidesAlongItAndStaysOutside) {
