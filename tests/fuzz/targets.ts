@@ -18,6 +18,7 @@ import { type ExportFormat, type ExportHead, MAX_POINTS_PER_STRAND } from '../..
 import { writeExport } from '../../web/export/writeExport';
 import { Head } from '../../web/head/head';
 import { PRESET_NAMES } from '../../web/model/presets';
+import { quantizeSession } from '../../web/model/quantize';
 import type { SessionState } from '../../web/model/session';
 import { parseSession } from '../../web/model/sessionFile';
 import { decodeSessionLink, encodeSessionLink, MAX_LINK_BYTES } from '../../web/model/sessionLink';
@@ -178,6 +179,30 @@ export async function makeContext(): Promise<FuzzContext> {
         i === 1 ? { ...c, detail: { frizz: { distance: 0.01, shape: -1 } } } : c,
       ),
     },
+  });
+  // a loaded head (its reference), scalp brush strokes and a tilted mirror plane (version 3)
+  const def = presetSession('default', head);
+  built.push({
+    name: 'default+loaded head+scalp strokes+mirror plane',
+    session: quantizeSession({
+      ...def,
+      head: {
+        kind: 'mesh',
+        name: 'my head.glb',
+        hash: '9f86d081884c7d659a2feaa0c55ad015a3bf4f1b2b0b822cd15d6c15b0f00a08',
+        format: 'glb',
+        up: 'z',
+        turns: [
+          { axis: 'y', quarterTurns: 1 },
+          { axis: 'x', quarterTurns: 3 },
+        ],
+      },
+      scalpPaint: [
+        { erase: false, radius: 0.15, points: def.curves[0].points.slice(0, 12) },
+        { erase: true, radius: 0.04, points: [def.curves[1].points[0]] },
+      ],
+      symmetry: { normal: [0.9986295347545738, 0.05233595624294383, 0], offset: 0.012 },
+    }),
   });
   const sessions = built.map(({ name, session }) => {
     const json = JSON.parse(JSON.stringify(session));

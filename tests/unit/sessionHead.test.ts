@@ -230,6 +230,7 @@ describe('links with a head, scalp strokes and a mirror plane', () => {
       { scalpPaint: STROKES },
       { symmetry: PLANE },
       { head: { ...REF, turns: [], up: 'y' as const, format: 'stl' as const } },
+      { head: { ...REF, name: 'tête 😀.obj' } },
     ]) {
       const s = quantizeSession({ ...base, ...part });
       const back = await decodeSessionLink(`#${await encodeSessionLink(s)}`);
@@ -341,6 +342,13 @@ describe('the reader checks every new field', () => {
     expect(errorOf((j) => (j.head.name = 'a\u0000.obj'))).toBe(
       'session.head.name: must be a file name without control characters',
     );
+    expect(errorOf((j) => (j.head.name = 'a\ud800.obj'))).toBe(
+      'session.head.name: must be a file name in well-formed Unicode (a lone surrogate)',
+    );
+    expect(errorOf((j) => (j.head.name = '\udc00a.obj'))).toBe(
+      'session.head.name: must be a file name in well-formed Unicode (a lone surrogate)',
+    );
+    expect(errorOf((j) => (j.head.name = 'tête 😀.obj'))).toBe('accepted');
     expect(errorOf((j) => (j.head.format = 'fbx'))).toBe(
       'session.head.format: must be one of "obj", "gltf", "glb", "ply", "stl"',
     );

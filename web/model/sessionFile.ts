@@ -673,12 +673,15 @@ function growth(v: Plain | undefined, path: string): GrowthParams {
 }
 
 /** A file name as the user's system gave it: 1 to maxHeadName characters, no control
- *  characters (it is shown on one line). */
+ *  characters (it is shown on one line), well-formed Unicode. */
 function fileName(v: Plain | undefined, path: string): string {
   if (typeof v !== 'string' || v.length === 0 || v.length > L.maxHeadName)
     fail(path, `must be a file name (1 to ${L.maxHeadName} characters)`);
   // biome-ignore lint/suspicious/noControlCharactersInRegex: refusing them is the point
   if (/[\u0000-\u001f\u007f]/.test(v)) fail(path, 'must be a file name without control characters');
+  // a lone surrogate would not survive UTF-8 (a link's encoding of the name)
+  if (/[\ud800-\udbff](?![\udc00-\udfff])|(?<![\ud800-\udbff])[\udc00-\udfff]/.test(v))
+    fail(path, 'must be a file name in well-formed Unicode (a lone surrogate)');
   return v;
 }
 
