@@ -277,6 +277,22 @@ describe('links with a head, scalp strokes and a mirror plane', () => {
   });
 });
 
+describe('quantizeSession: strokes and the plane', () => {
+  it('strokes on the position grid, the plane a unit normal and an offset on the grid', () => {
+    const s = quantizeSession({
+      ...base,
+      scalpPaint: [{ erase: false, radius: 0.123456, points: [[0.100004, 0.99996, -0.2000001]] }],
+      symmetry: { normal: [2, 0, -0], offset: 0.0123456 },
+    });
+    expect(s.scalpPaint).toEqual([{ erase: false, radius: 0.1235, points: [[0.1, 1, -0.2]] }]);
+    expect(s.symmetry).toEqual({ normal: [1, 0, 0], offset: 0.0123 });
+    expect(Object.is(s.symmetry?.normal[2], -0)).toBe(false);
+    // on the grid already: the very same objects
+    expect(quantizeSession(s)).toBe(s);
+    expect(quantizeSession(loaded)).toBe(loaded);
+  });
+});
+
 describe('v2-to-v3: version 2 sessions are on the built-in head', () => {
   const v2 = JSON.parse(JSON.stringify({ ...base, version: 2 }));
 
