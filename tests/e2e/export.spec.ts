@@ -22,7 +22,7 @@ async function exportItem(page: Page, name: string): Promise<{ file: string; byt
 }
 
 async function openFile(page: Page, path: string) {
-  await page.locator('input[type=file]').setInputFiles(path);
+  await page.getByLabel('Session file').setInputFiles(path);
 }
 
 test('each export item downloads its file, equal to `hairsketch grow` on the saved session', async ({

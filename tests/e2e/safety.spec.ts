@@ -62,7 +62,7 @@ test('script and HTML payloads in every string of a session file and its name on
     const name = `x${i}<img src=x onerror=window.__xss=9>.json`;
     const file = join(dir, `payload-${i}.json`);
     writeFileSync(file, JSON.stringify(bad));
-    await page.locator('input[type=file]').setInputFiles({
+    await page.getByLabel('Session file').setInputFiles({
       name,
       mimeType: 'application/json',
       buffer: Buffer.from(JSON.stringify(bad)),
@@ -76,7 +76,7 @@ test('script and HTML payloads in every string of a session file and its name on
     ...good,
     curves: curves.map((c, k) => ({ ...c, id: PAYLOADS[k % PAYLOADS.length] })),
   };
-  await page.locator('input[type=file]').setInputFiles({
+  await page.getByLabel('Session file').setInputFiles({
     name: 'ids.json',
     mimeType: 'application/json',
     buffer: Buffer.from(JSON.stringify(onlyIds)),

@@ -61,7 +61,7 @@ test('Save writes a session file that Open reads back; a bad file changes nothin
   await page.goto('/?strands=2000&preset=empty');
   const e0 = await settled(page);
   expect(e0.curves).toBe(0);
-  await page.locator('input[type=file]').setInputFiles({
+  await page.getByLabel('Session file').setInputFiles({
     name: 'bad.json',
     mimeType: 'application/json',
     buffer: Buffer.from('{"version": 1, "curves": [{"id": "c1", "type": "spiral"}]}'),
@@ -71,7 +71,7 @@ test('Save writes a session file that Open reads back; a bad file changes nothin
     curves: [],
   });
 
-  await page.locator('input[type=file]').setInputFiles(file);
+  await page.getByLabel('Session file').setInputFiles(file);
   const opened = await settled(page, e0.revision);
   expect(opened.curves).toBe(s0.curves);
   const got = (await page.evaluate(() => window.hairsketch.session())) as SessionJson;

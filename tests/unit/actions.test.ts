@@ -57,6 +57,9 @@ function target() {
     },
     cancel: () => calls.push('cancel'),
     toggleHelp: () => calls.push('help'),
+    openHead: () => calls.push('openHead'),
+    toggleHeadPanel: () => calls.push('headPanel'),
+    headPanelOpen: () => false,
     toggleDetailPanel: () => {
       calls.push('detail');
       detailOpen = !detailOpen;

@@ -60,6 +60,10 @@ export interface ActionTarget {
   cycleQuality?(): void;
   toggleDetailPanel(): void;
   detailPanelOpen(): boolean;
+  /** "Open head": the head file dialog. */
+  openHead(): void;
+  toggleHeadPanel(): void;
+  headPanelOpen(): boolean;
   display(key: DisplayKey): boolean;
   setDisplay(key: DisplayKey, on: boolean): void;
 }
@@ -102,6 +106,12 @@ export function buildActions(t: ActionTarget): Action[] {
       'Four strokes: spine from the scalp, then cross-section and two profiles',
     ),
     tool('select', 'Select', 'v', 'Select a curve; drag to orbit'),
+    tool(
+      'scalp',
+      'Scalp brush',
+      'b',
+      'Paint the scalp (where hair grows) by dragging on the head; Shift+drag erases; the wheel sets the radius',
+    ),
     {
       id: 'edit.undo',
       label: 'Undo',
@@ -195,6 +205,15 @@ export function buildActions(t: ActionTarget): Action[] {
       run: () => t.open(),
     },
     {
+      id: 'file.openHead',
+      label: 'Open head',
+      title: 'Load your own head mesh (OBJ, glTF/GLB, PLY or STL); hair grows on its scalp',
+      shortcuts: ['mod+shift+o'],
+      group: 'file',
+      toolbar: 'more',
+      run: () => t.openHead(),
+    },
+    {
       id: 'file.export',
       label: 'Export',
       title: 'Export the hair: USD, Cem Yuksel .hair, OBJ, glTF, or a PNG image',
@@ -272,6 +291,17 @@ export function buildActions(t: ActionTarget): Action[] {
       toolbar: 'more',
       run: () => t.toggleDetailPanel(),
       pressed: () => t.detailPanelOpen(),
+    },
+    {
+      id: 'view.head',
+      label: 'Head',
+      title:
+        'Show or hide the Head panel: open a head, rotate it, the scalp brush radius, the mirror plane',
+      shortcuts: ['g'],
+      group: 'view',
+      toolbar: 'more',
+      run: () => t.toggleHeadPanel(),
+      pressed: () => t.headPanelOpen(),
     },
     {
       id: 'edit.cancel',

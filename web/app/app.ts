@@ -5,6 +5,8 @@
 // and connects them.
 import { Editor, type ToolName } from '../editor/editor';
 import { Head } from '../head/head';
+import { indexedDbHeadStore } from '../head/headStore';
+import { fitSymmetryPlane } from '../head/symmetryPlane';
 import { gridForPreset, gridForSession } from '../model/grid';
 import { applyPreset } from '../model/presets';
 import { DEFAULT_GROWTH, emptySession } from '../model/session';
@@ -12,6 +14,7 @@ import { PONYTAIL_STAGE_HINT } from '../tools/ponytailTool';
 import { buildCurvePanel } from '../ui/curvePanel';
 import { buildDetailPanel, type DetailPanel } from '../ui/detailPanel';
 import { buildDisplayToggles } from '../ui/displayToggles';
+import { buildHeadPanel, type HeadPanel } from '../ui/headPanel';
 import { buildHelpOverlay, type HelpOverlay } from '../ui/helpOverlay';
 import { StatusLine } from '../ui/status';
 import { buildToolbar } from '../ui/toolbar';
@@ -23,10 +26,11 @@ import { buildActions } from './actions';
 import { editActions } from './editActions';
 import { type ExportWiring, wireExport } from './exportActions';
 import { HairPresenter } from './hairPresenter';
+import { HeadController } from './headController';
 import { bindInput } from './input';
 import { OverlayPresenter } from './overlayPresenter';
 import { QualityControl } from './quality';
-import { LinkWriter, openSessionFile, openSessionLink } from './sessionIO';
+import { LinkWriter, openSessionFileOutcome, openSessionLinkOutcome } from './sessionIO';
 import { SolverBridge } from './solverBridge';
 import { StatusPresenter } from './statusPresenter';
 import { installTestApi } from './testApi';
@@ -40,6 +44,8 @@ const TOOL_HINTS: Record<Exclude<ToolName, 'ponytail'>, string> = {
     'Drag on the scalp to draw a parting · a stroke starting beside the selected one tilts that side · right-drag orbits',
   select:
     'Click a curve to select it · drag orbits · wheel zooms · right-drag pans · ? lists shortcuts',
+  scalp:
+    'Drag on the head to paint scalp (where hair grows) · Shift+drag erases · wheel sets the brush radius · right-drag orbits',
 };
 
 export function startApp(): void {
@@ -51,6 +57,20 @@ export function startApp(): void {
   const head = Head.builtin();
   const headMesh = createHeadMesh(head.mesh);
   viewer.addHead(headMesh);
+  let headPanel: HeadPanel | null = null;
+  const headStore = indexedDbHeadStore();
+  // the session's head and scalp painting (bridge and status are made below; the controller
+  // only calls them after a session change)
+  const heads: HeadController = new HeadController(head, {
+    viewer,
+    headMesh,
+    store: headStore,
+    setSolverHead: (m) => bridge.setHead(m),
+    setSolverScalpMask: (m) => bridge.setScalpMask(m),
+    note: (m) => status.note(m),
+    error: (m) => status.error(m),
+    headChanged: () => showHeadPanel(), // the bridge re-solves on the new head itself
+  });
 
   const grid = gridForPreset(opts.grid);
   const initial = applyPreset(
@@ -67,6 +87,7 @@ export function startApp(): void {
     grid: gridForSession(initial.grid, initial.curves),
     solver: opts.solver,
     scalp: head.scalpMesh(),
+    headBounds: () => heads.gridBounds,
     interactiveDetail: () => viewer.interactiveDetail,
     shownStrands: () => line.strands,
   });
@@ -76,11 +97,12 @@ export function startApp(): void {
 
   const tools = createTools({
     editor,
-    head,
+    head: () => heads.head,
     viewer,
     bridge,
     overlays,
     step: grid.step,
+    previewScalp: (stroke) => heads.previewStroke(stroke),
     notify: (m) => status.note(m),
     ponytailStage: (hint) => {
       if (editor.tool === 'ponytail') line.hint(hint);
@@ -100,6 +122,7 @@ export function startApp(): void {
     tool: () => tool,
     openDialog: () => toolbar.openFileDialog(),
     links,
+    heads: headStore,
     refresh: () => toolbar.refresh(),
   });
   let exporting: ExportWiring | null = null;
@@ -112,6 +135,13 @@ export function startApp(): void {
       toolbar.refresh();
     },
     detailPanelOpen: () => !!detailPanel?.open,
+    openHead: () => toolbar.openHeadDialog(),
+    toggleHeadPanel: () => {
+      headPanel?.toggle();
+      showHeadPanel();
+      toolbar.refresh();
+    },
+    headPanelOpen: () => !!headPanel?.open,
     display: (k) => overlays.display[k],
     setDisplay: (k, on) => overlays.setDisplay(k, on),
     qualityLabel: () => quality.label(),
@@ -122,7 +152,21 @@ export function startApp(): void {
   });
   const toolbar = buildToolbar(byId('toolbar'), actions, {
     hairColor: (css) => editor.run({ kind: 'setHairColor', color: css }),
-    openFile: (f) => void openSessionFile(editor, f).then((m) => m && status.note(m)),
+    // a session whose head is not stored: HeadController says which head it needs
+    openFile: (f) =>
+      void openSessionFileOutcome(editor, f, headStore).then(
+        (o) => o.kind === 'failed' && status.note(o.message),
+      ),
+    openHeadFile: (f) => {
+      status.task(`Opening the head ${f.name}…`);
+      void f
+        .arrayBuffer()
+        .then((bytes) => heads.openFile(editor, f.name, bytes))
+        .then(
+          (m) => status.taskDone(m, m.startsWith('Could not')),
+          (e) => status.taskDone(`Could not open the head: ${String(e)}.`, true),
+        );
+    },
   });
   toolbar.setHairColor(initial.hairColor);
   help = buildHelpOverlay(document.body, actions);
@@ -131,7 +175,8 @@ export function startApp(): void {
     viewer,
     bridge,
     status,
-    head,
+    head: () => heads.head,
+    headBounds: () => heads.gridBounds,
     solver: opts.solver,
     anchor: byId('toolbar'),
   });
@@ -150,6 +195,37 @@ export function startApp(): void {
     setDetail: (curveId, detail) => editor.run({ kind: 'setDetail', curveId, detail }),
   });
   detailPanel.show(editor.session, editor.selectedCurve);
+  headPanel = buildHeadPanel(byId('stage'), {
+    openHead: () => toolbar.openHeadDialog(),
+    useBuiltin: () => heads.useBuiltin(editor),
+    rotate: (axis) => {
+      const m = heads.rotate(editor, axis);
+      if (m) status.note(m);
+    },
+    setBrushRadius: (r) => {
+      tools.scalpBrush.setRadius(r);
+      showHeadPanel();
+    },
+    setPlane: (plane) => editor.run({ kind: 'setSymmetry', plane }),
+    fitPlane: () =>
+      editor.run({
+        kind: 'setSymmetry',
+        plane: editor.session.head === 'builtin' ? undefined : fitSymmetryPlane(heads.head).plane,
+      }),
+  });
+  function showHeadPanel(): void {
+    const h = heads.head;
+    const s = editor.session;
+    headPanel?.show({
+      session: s,
+      label:
+        s.head === 'builtin'
+          ? 'Built-in mannequin'
+          : `${s.head.name} · ${(h.mesh.indices.length / 3).toLocaleString('en-US')} triangles`,
+      missing: heads.missing ? heads.missing.name : null,
+      brushRadius: tools.scalpBrush.radius,
+    });
+  }
 
   const applyTool = (name: ToolName) => {
     tool.onCancel();
@@ -158,6 +234,8 @@ export function startApp(): void {
     line.hint(name === 'ponytail' ? PONYTAIL_STAGE_HINT[tools.ponytail.stage] : TOOL_HINTS[name]);
   };
   editor.listen((c) => {
+    heads.sessionChanged(c.session);
+    showHeadPanel();
     if (c.cause === 'tool') applyTool(c.tool);
     if (c.camera) viewer.setCamera(c.camera.position, c.camera.target);
     hair.editorChanged(c);
@@ -211,8 +289,8 @@ export function startApp(): void {
   line.set('loading', 'Loading the solver…');
   bridge.sync();
   if (window.location.hash.startsWith('#s='))
-    void openSessionLink(editor, window.location.hash).then((m) => {
-      if (m) status.error(m);
+    void openSessionLinkOutcome(editor, window.location.hash, headStore).then((o) => {
+      if (o.kind === 'failed') status.error(o.message);
       else links.markLinked(editor.session);
     });
   else links.schedule(); // the address bar carries the session from the start
@@ -220,13 +298,19 @@ export function startApp(): void {
 
   installTestApi({
     editor,
-    head,
+    head: () => heads.head,
+    headInfo: () => ({
+      name: editor.session.head === 'builtin' ? 'builtin' : editor.session.head.name,
+      missing: heads.missing ? heads.missing.name : null,
+      loading: heads.busy,
+    }),
     viewer,
     bridge,
     hair,
     overlays,
     ponytail: tools.ponytail,
     busy: () =>
+      heads.busy ||
       !!exporting?.busy() ||
       bridge.pending ||
       hair.awaitingFrame ||

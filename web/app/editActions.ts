@@ -1,6 +1,7 @@
 // What the toolbar's and keyboard's actions do to the editor, the camera and the session's
 // files: the ActionTarget of actions.ts, minus the view toggles the composition root adds.
 import type { Editor } from '../editor/editor';
+import type { HeadStore } from '../head/headStore';
 import type { Tool } from '../tools/tool';
 import type { Viewer } from '../viewer/viewer';
 import type { ActionTarget } from './actions';
@@ -14,6 +15,8 @@ export interface EditActionDeps {
   bridge: SolverBridge;
   status: StatusPresenter;
   links: LinkWriter;
+  /** Where loaded heads are kept ("Save" embeds the session's head file from here). */
+  heads: HeadStore;
   tool(): Tool;
   openDialog(): void;
   /** The toolbar reflects a state change (e.g. "Avoid scalp" busy). */
@@ -22,7 +25,15 @@ export interface EditActionDeps {
 
 export type EditActions = Omit<
   ActionTarget,
-  'toggleHelp' | 'display' | 'setDisplay' | 'exportMenu' | 'toggleDetailPanel' | 'detailPanelOpen'
+  | 'toggleHelp'
+  | 'display'
+  | 'setDisplay'
+  | 'exportMenu'
+  | 'toggleDetailPanel'
+  | 'detailPanelOpen'
+  | 'openHead'
+  | 'toggleHeadPanel'
+  | 'headPanelOpen'
 >;
 
 export function editActions(d: EditActionDeps): EditActions {
@@ -67,8 +78,10 @@ export function editActions(d: EditActionDeps): EditActions {
     avoidScalpOn: () => !!editor.session.avoidScalp,
     share: () => void d.links.share().then((m) => status.note(m)),
     save: () => {
-      downloadSession(editor.session, viewer.cameraState());
-      status.note(`Saved the session (${editor.session.curves.length} curves).`);
+      const n = editor.session.curves.length;
+      void downloadSession(editor.session, viewer.cameraState(), d.heads).then((m) =>
+        status.note(m ?? `Saved the session (${n} curves).`),
+      );
     },
     open: () => d.openDialog(),
     resetView: () => viewer.resetView(),

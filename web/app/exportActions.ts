@@ -2,6 +2,7 @@
 // viewer, each after the running solve (if any) has finished, with progress on the status line.
 import type { Editor } from '../editor/editor';
 import type { Head } from '../head/head';
+import type { gridForSession } from '../model/grid';
 import type { SolverName } from '../solver/protocol';
 import { buildExportMenu, type ExportMenu } from '../ui/exportMenu';
 import type { Viewer } from '../viewer/viewer';
@@ -21,7 +22,10 @@ export function wireExport(d: {
   viewer: Viewer;
   bridge: SolverBridge;
   status: StatusPresenter;
-  head: Head;
+  /** The head shown (it changes with Open head). */
+  head(): Head;
+  /** A loaded head's bounds for the grid (undefined: the built-in head). */
+  headBounds(): Parameters<typeof gridForSession>[2];
   solver: SolverName;
   anchor: HTMLElement;
 }): ExportWiring {
@@ -30,12 +34,12 @@ export function wireExport(d: {
   const exporter = new Exporter({
     editor: d.editor,
     solver: d.solver,
-    scalp: () => d.head.scalpMesh(),
-    head: () => ({
-      positions: d.head.mesh.positions,
-      indices: d.head.mesh.indices,
-      normals: d.head.mesh.normals,
-    }),
+    scalp: () => d.head().scalpMesh(),
+    headBounds: () => d.headBounds(),
+    head: () => {
+      const m = d.head().mesh;
+      return { positions: m.positions, indices: m.indices, normals: m.normals };
+    },
     solveSettled: () => bridge.whenIdle(),
     solving: () => bridge.pending,
     progress: (text) => status.task(text),

@@ -13,6 +13,8 @@ export interface ExporterDeps {
   solver: SolverName;
   scalp: () => ScalpMesh;
   head: () => ExportHead;
+  /** A loaded head's bounds for the bounding volume (gridForSession); undefined: built-in. */
+  headBounds?: () => Parameters<typeof gridForSession>[2];
   /** Resolves once no solve is pending (at once when idle). */
   solveSettled(): Promise<void>;
   solving(): boolean;
@@ -108,7 +110,7 @@ export class Exporter {
             type: 'export',
             format,
             session: parsed.value,
-            grid: gridForSession(parsed.value.grid, parsed.value.curves),
+            grid: gridForSession(parsed.value.grid, parsed.value.curves, this.d.headBounds?.()),
             solver: this.d.solver,
             scalp: this.d.scalp(),
             head: withHead ? this.d.head() : null,

@@ -19,7 +19,12 @@ export interface InputDeps {
 export function bindInput(d: InputDeps): void {
   const canvas = d.viewer.canvas;
   let captured: number | null = null;
-  const ptr = (e: PointerEvent) => ({ x: e.clientX, y: e.clientY, button: e.button });
+  const ptr = (e: PointerEvent) => ({
+    x: e.clientX,
+    y: e.clientY,
+    button: e.button,
+    shiftKey: e.shiftKey,
+  });
   canvas.addEventListener('pointerdown', (e) => {
     if (captured !== null) return;
     if (d.tool().onPointerDown(ptr(e))) {
@@ -46,6 +51,16 @@ export function bindInput(d: InputDeps): void {
   });
   canvas.addEventListener('pointercancel', (e) => end(e, true));
   canvas.addEventListener('contextmenu', (e) => e.preventDefault());
+  // a tool may take the wheel (the scalp brush's radius): caught before the camera controls
+  (canvas.parentElement ?? canvas).addEventListener(
+    'wheel',
+    (e) => {
+      if (e.target !== canvas || !d.tool().onWheel?.(e.deltaY)) return;
+      e.preventDefault();
+      e.stopPropagation();
+    },
+    { capture: true, passive: false },
+  );
 
   window.addEventListener('keydown', (e) => {
     if (typesText(e.target)) return;

@@ -62,7 +62,11 @@ export interface HairsketchTestApi {
   /** Displayed strand segments with a point (either end or the middle) deeper than `depth`
    *  world units inside the head (Head.signedDistance: exact for the built-in head), and the
    *  deepest value. */
-  segmentsInsideHead(depth: number): {
+  segmentsInsideHead(
+    depth: number,
+    /** Every stride-th strand only (a loaded head's inside test is slower). */
+    stride?: number,
+  ): {
     inside: number;
     segments: number;
     deepest: number;
@@ -71,6 +75,18 @@ export interface HairsketchTestApi {
     /** Deepest root (roots sit on the polygonised head, not the exact surface). */
     deepestRoot: number;
   };
+  /** The head shown: its name ('builtin' or the file name), triangles and scalp triangles, the
+   *  session's head when its file is missing, and whether a head is being loaded. */
+  head(): {
+    name: string;
+    triangles: number;
+    scalpTriangles: number;
+    missing: string | null;
+    loading: boolean;
+  };
+  /** Of the displayed strands' roots: how many lie within `distance` of the head's surface on a
+   *  scalp triangle (closest point), and how many there are. */
+  rootsOnScalp(distance: number): { onScalp: number; roots: number };
   select(id: string | null): void;
   /** Which ponytail stroke the Ponytail tool expects next. */
   ponytailStage(): string;
@@ -109,7 +125,10 @@ declare global {
 /** The parts of the app the hooks read. */
 export interface TestApiParts {
   editor: Editor;
-  head: Head;
+  /** The head shown (it changes with Open head). */
+  head(): Head;
+  /** What the app knows of the head: its file name, and the session's head when missing. */
+  headInfo(): { name: string; missing: string | null; loading: boolean };
   viewer: Viewer;
   bridge: SolverBridge;
   hair: HairPresenter;
@@ -123,11 +142,12 @@ export interface TestApiParts {
 }
 
 export function installTestApi(app: TestApiParts): void {
-  const { editor, head, viewer, hair } = app;
+  const { editor, viewer, hair } = app;
+  const head = () => app.head();
   window.hairsketch = {
     scalpToScreen(thetaDeg, phiDeg) {
-      const hit = head.scalpPoint(thetaDeg, phiDeg);
-      if (!hit?.scalp || !head.visibleFrom(viewer.eye(), hit.point)) return null;
+      const hit = head().scalpPoint(thetaDeg, phiDeg);
+      if (!hit?.scalp || !head().visibleFrom(viewer.eye(), hit.point)) return null;
       return viewer.worldToScreen(hit.point);
     },
     worldToScreen: (p) => viewer.worldToScreen(p),
@@ -162,7 +182,7 @@ export function installTestApi(app: TestApiParts): void {
       return d[0] * d[1] * d[2];
     },
     scalpCoverage: (view, radius) =>
-      scalpCoverage(head, hair.strands, { dir: VIEW_DIRECTIONS[view], radius }),
+      scalpCoverage(head(), hair.strands, { dir: VIEW_DIRECTIONS[view], radius }),
     frameMs(runs = 5) {
       const t: number[] = [];
       for (let i = 0; i < Math.max(1, runs); i++) t.push(viewer.measureFrame());
@@ -197,8 +217,10 @@ export function installTestApi(app: TestApiParts): void {
       const s = hair.strands;
       return s ? { points: Array.from(s.points), strandStart: Array.from(s.strandStart) } : null;
     },
-    segmentsInsideHead(depth) {
+    segmentsInsideHead(depth, stride = 1) {
       const s = hair.strands;
+      const h = head();
+      const every = Math.max(1, Math.floor(stride));
       let inside = 0;
       let segments = 0;
       let deepest = Number.POSITIVE_INFINITY;
@@ -206,9 +228,9 @@ export function installTestApi(app: TestApiParts): void {
       let deepestRoot = Number.POSITIVE_INFINITY;
       if (!s) return { inside, segments, deepest, atRoot, deepestRoot };
       const P = s.points;
-      const sd = (x: number, y: number, z: number) => head.signedDistance([x, y, z]);
+      const sd = (x: number, y: number, z: number) => h.signedDistance([x, y, z]);
       const at = (k: number) => sd(P[3 * k], P[3 * k + 1], P[3 * k + 2]);
-      for (let i = 0; i + 1 < s.strandStart.length; i++) {
+      for (let i = 0; i + 1 < s.strandStart.length; i += every) {
         deepestRoot = Math.min(deepestRoot, at(s.strandStart[i]));
         for (let k = s.strandStart[i]; k + 1 < s.strandStart[i + 1]; k++) {
           segments++;
@@ -226,6 +248,31 @@ export function installTestApi(app: TestApiParts): void {
         }
       }
       return { inside, segments, deepest, atRoot, deepestRoot };
+    },
+    head() {
+      const h = head();
+      const info = app.headInfo();
+      let scalpTriangles = 0;
+      for (const f of h.mesh.scalp) scalpTriangles += f;
+      return {
+        name: info.name,
+        triangles: h.mesh.indices.length / 3,
+        scalpTriangles,
+        missing: info.missing,
+        loading: info.loading,
+      };
+    },
+    rootsOnScalp(distance) {
+      const s = hair.strands;
+      const h = head();
+      let onScalp = 0;
+      const roots = s ? s.strandStart.length - 1 : 0;
+      for (let i = 0; s && i < roots; i++) {
+        const k = 3 * s.strandStart[i];
+        const c = h.closest([s.points[k], s.points[k + 1], s.points[k + 2]]);
+        if (c.distance <= distance && h.mesh.scalp[c.triangle] === 1) onScalp++;
+      }
+      return { onScalp, roots };
     },
     select: (id) => editor.select(id),
     ponytailStage: () => app.ponytail.stage,

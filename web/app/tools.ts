@@ -4,11 +4,13 @@
 import { curveSurface } from '../editor/curveSurface';
 import type { Editor, ToolName } from '../editor/editor';
 import type { Head } from '../head/head';
+import type { ScalpPaintStroke } from '../head/scalpPaint';
 import { DEFAULT_TIGHTNESS, defaultParams } from '../model/session';
 import type { Vec3 } from '../model/vec3';
 import type { StrokeSample } from '../tools/depthRule';
 import { DividingCurveTool } from '../tools/dividingCurveTool';
 import { PONYTAIL_STAGE_HINT, PonytailTool } from '../tools/ponytailTool';
+import { ScalpBrushTool } from '../tools/scalpBrushTool';
 import { SelectTool } from '../tools/selectTool';
 import { StreamCurveTool } from '../tools/streamCurveTool';
 import type { Tool } from '../tools/tool';
@@ -18,7 +20,8 @@ import type { SolverBridge } from './solverBridge';
 
 export interface ToolDeps {
   editor: Editor;
-  head: Head;
+  /** The head strokes land on (it changes when the user opens another). */
+  head(): Head;
   viewer: Viewer;
   bridge: SolverBridge;
   overlays: OverlayPresenter;
@@ -27,11 +30,14 @@ export interface ToolDeps {
   notify(message: string): void;
   /** The ponytail tool's next stroke changed (its hint line). */
   ponytailStage(hint: string): void;
+  /** Shows a scalp brush stroke painted while it is drawn (null: the preview ends). */
+  previewScalp(stroke: ScalpPaintStroke | null): void;
 }
 
 export interface ToolSet {
   readonly byName: Record<ToolName, Tool>;
   readonly ponytail: PonytailTool;
+  readonly scalpBrush: ScalpBrushTool;
 }
 
 export function createTools(d: ToolDeps): ToolSet {
@@ -42,7 +48,7 @@ export function createTools(d: ToolDeps): ToolSet {
     const ray = viewer.rayAt(x, y);
     const origin: Vec3 = [ray.origin.x, ray.origin.y, ray.origin.z];
     const direction: Vec3 = [ray.direction.x, ray.direction.y, ray.direction.z];
-    const hit = d.head.raycast(origin, direction);
+    const hit = d.head().raycast(origin, direction);
     return {
       origin,
       direction,
@@ -79,6 +85,24 @@ export function createTools(d: ToolDeps): ToolSet {
       }),
     notify: d.notify,
     stageChanged: (stage) => d.ponytailStage(PONYTAIL_STAGE_HINT[stage]),
+  });
+
+  const scalpBrush = new ScalpBrushTool({
+    hit: (x, y) => {
+      const ray = viewer.rayAt(x, y);
+      const hit = d
+        .head()
+        .raycast(
+          [ray.origin.x, ray.origin.y, ray.origin.z],
+          [ray.direction.x, ray.direction.y, ray.direction.z],
+        );
+      return hit ? hit.point : null;
+    },
+    preview: (stroke) => d.previewScalp(stroke),
+    commit: (stroke) =>
+      editor.run({ kind: 'paintScalp', stroke: { ...stroke, points: [...stroke.points] } }),
+    radiusChanged: (r) => d.notify(`Scalp brush radius ${Math.round(r * 100)} mm.`),
+    notify: d.notify,
   });
 
   const byName: Record<ToolName, Tool> = {
@@ -122,7 +146,7 @@ export function createTools(d: ToolDeps): ToolSet {
         const c = editor.selectedCurve;
         return c?.type === 'dividing' ? c : null;
       },
-      normalsAt: (pts) => pts.map((p) => d.head.normalAt(p)),
+      normalsAt: (pts) => pts.map((p) => d.head().normalAt(p)),
       showDraft,
       commit: (points, normals) =>
         editor.run({
@@ -150,6 +174,7 @@ export function createTools(d: ToolDeps): ToolSet {
       toScreen: (p) => viewer.worldToScreen(p),
       select: (id) => editor.select(id),
     }),
+    scalp: scalpBrush,
   };
-  return { byName, ponytail };
+  return { byName, ponytail, scalpBrush };
 }

@@ -2,14 +2,22 @@
 // function from (session, command) to the next session, the selection after it and a sentence
 // for the status line. The Editor (editor.ts) runs them through one path: history, then notify.
 import { detailIsOn, type HairDetail } from '../model/detail';
-import { isSelfMirror, mirrorCurve, syncMirrorTwins } from '../model/mirror';
+import {
+  isSelfMirror,
+  type MirrorPlane,
+  mirrorCurve,
+  syncMirrorTwins,
+  X_PLANE,
+} from '../model/mirror';
 import { ponytailCircles } from '../model/ponytailGeometry';
 import { quantizeSession } from '../model/quantize';
 import {
   addCurve,
   deleteCurve,
   findCurve,
+  type HeadRef,
   nextCurveId,
+  type ScalpStroke,
   type SessionState,
   type StyleCurve,
   updateCurve,
@@ -51,6 +59,14 @@ export type Command =
   /** Growth settings (strand density, cap, maximum length). */
   | { kind: 'setGrowth'; patch: Partial<GrowthParams> }
   | { kind: 'setHairColor'; color: string }
+  /** The head the hair grows on (Open head, Rotate, the built-in head). The scalp painting of
+   *  the previous head is dropped (it belongs to that mesh); `symmetry`: the new head's mirror
+   *  plane (absent: x = 0). */
+  | { kind: 'setHead'; head: 'builtin' | HeadRef; symmetry?: MirrorPlane; what: string }
+  /** A scalp brush stroke (painting or erasing scalp), applied over the strokes before it. */
+  | { kind: 'paintScalp'; stroke: ScalpStroke }
+  /** The mirror plane (Mirror editing); absent = x = 0. */
+  | { kind: 'setSymmetry'; plane: MirrorPlane | undefined }
   /** Replaces the whole session (a file, a link, a test hook). The page's grid is kept: curves
    *  are in world units. `camera`: the view the session was saved with, if any. */
   | {
@@ -82,7 +98,10 @@ export function applyCommand(s: SessionState, cmd: Command): CommandResult {
   const r = applyExact(s, cmd);
   if (r.session === s) return r;
   // Mirrored twins follow: one deleted takes the other, one edited remakes the other.
-  const synced = cmd.kind === 'loadSession' ? null : syncMirrorTwins(s.curves, r.session.curves);
+  const synced =
+    cmd.kind === 'loadSession'
+      ? null
+      : syncMirrorTwins(s.curves, r.session.curves, r.session.symmetry ?? X_PLANE);
   if (synced) r.session = { ...r.session, curves: synced };
   const next = quantizeSession(r.session);
   // A curve a tool made (or edited) must be one the session reader accepts, so the editor never
@@ -105,10 +124,11 @@ function applyExact(s: SessionState, cmd: Command): CommandResult {
     case 'addCurve': {
       const id = nextCurveId(s);
       const curve = { ...cmd.curve, id } as StyleCurve;
-      if (cmd.mirror && !isSelfMirror(curve)) {
+      const plane = s.symmetry ?? X_PLANE;
+      if (cmd.mirror && !isSelfMirror(curve, plane)) {
         const twinId = `c${Number(id.slice(1)) + 1}`;
         const first = { ...curve, mirror: twinId } as StyleCurve;
-        const twin = mirrorCurve(first, twinId, id);
+        const twin = mirrorCurve(first, twinId, id, plane);
         return {
           session: addCurve(addCurve(s, first), twin),
           selectedId: id,
@@ -274,6 +294,36 @@ function applyExact(s: SessionState, cmd: Command): CommandResult {
         return { session: s, message: `Hair colour "${cmd.color.slice(0, 20)}" is not #rrggbb.` };
       if (cmd.color === s.hairColor) return { session: s, message: `Hair colour ${cmd.color}.` };
       return { session: { ...s, hairColor: cmd.color }, message: `Hair colour ${cmd.color}.` };
+    }
+    case 'setHead': {
+      const { scalpPaint: _p, symmetry: _s, ...rest } = s;
+      const next: SessionState = { ...rest, head: cmd.head };
+      if (cmd.symmetry) next.symmetry = cmd.symmetry;
+      if (JSON.stringify(next.head) === JSON.stringify(s.head) && !s.scalpPaint)
+        if (JSON.stringify(next.symmetry) === JSON.stringify(s.symmetry))
+          return { session: s, message: `${cmd.what} (unchanged).` };
+      return { session: next, message: `${cmd.what}.` };
+    }
+    case 'paintScalp': {
+      const k = cmd.stroke;
+      if (!(k.radius > 0) || k.points.length === 0)
+        return { session: s, message: 'Scalp brush: the stroke missed the head.' };
+      const next = { ...s, scalpPaint: [...(s.scalpPaint ?? []), k] };
+      const check = parseSession({ ...next, curves: [] });
+      if (!check.ok) return { session: s, message: `Nothing changed: ${check.error}.` };
+      return {
+        session: next,
+        message: `${k.erase ? 'Erased' : 'Painted'} scalp (brush ${Math.round(k.radius * 100)} mm).`,
+      };
+    }
+    case 'setSymmetry': {
+      if (JSON.stringify(cmd.plane) === JSON.stringify(s.symmetry))
+        return { session: s, message: 'Mirror plane unchanged.' };
+      const { symmetry: _, ...rest } = s;
+      return {
+        session: cmd.plane ? { ...rest, symmetry: cmd.plane } : rest,
+        message: 'Mirror plane moved (new mirrored curves use it).',
+      };
     }
     case 'loadSession': {
       return {

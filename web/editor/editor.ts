@@ -8,7 +8,7 @@ import type { SessionState, StyleCurve, Viewpoint } from '../model/session';
 import { findCurve } from '../model/session';
 import { applyCommand, type Command } from './commands';
 
-export type ToolName = 'stream' | 'select' | 'dividing' | 'ponytail';
+export type ToolName = 'stream' | 'select' | 'dividing' | 'ponytail' | 'scalp';
 
 export type ChangeCause = 'command' | 'undo' | 'redo' | 'select' | 'tool';
 

@@ -3,6 +3,7 @@ export interface ToolPointer {
   x: number; // client coordinates
   y: number;
   button: number; // 0 = primary
+  shiftKey?: boolean;
 }
 
 export interface Tool {
@@ -14,4 +15,6 @@ export interface Tool {
   onPointerUp(p: ToolPointer): void;
   onCancel(): void;
   update(): void;
+  /** The wheel over the view; true when the tool used it (the camera then does not zoom). */
+  onWheel?(deltaY: number): boolean;
 }

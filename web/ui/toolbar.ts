@@ -7,6 +7,8 @@ import { type Action, displayShortcut } from '../app/actions';
 export interface ToolbarExtras {
   hairColor(css: string): void;
   openFile(file: File): void;
+  /** A head mesh file chosen with "Open head". */
+  openHeadFile(file: File): void;
 }
 
 export interface Toolbar {
@@ -14,6 +16,7 @@ export interface Toolbar {
   refresh(): void;
   setHairColor(css: string): void;
   openFileDialog(): void;
+  openHeadDialog(): void;
   /** Where the display toggles go. */
   readonly moreElement: HTMLElement;
 }
@@ -72,10 +75,21 @@ export function buildToolbar(
   picker.type = 'file';
   picker.accept = '.json,.usda,.glb,application/json';
   picker.hidden = true;
+  picker.setAttribute('aria-label', 'Session file');
   picker.addEventListener('change', () => {
     const f = picker.files?.[0];
     picker.value = '';
     if (f) extras.openFile(f);
+  });
+  const headPicker = document.createElement('input');
+  headPicker.type = 'file';
+  headPicker.accept = '.obj,.gltf,.glb,.ply,.stl';
+  headPicker.hidden = true;
+  headPicker.setAttribute('aria-label', 'Head file');
+  headPicker.addEventListener('change', () => {
+    const f = headPicker.files?.[0];
+    headPicker.value = '';
+    if (f) extras.openHeadFile(f);
   });
   const colorLabel = document.createElement('label');
   colorLabel.textContent = 'Hair colour';
@@ -83,7 +97,7 @@ export function buildToolbar(
   color.type = 'color';
   color.addEventListener('input', () => extras.hairColor(color.value));
   colorLabel.append(color);
-  more.append(separator(), colorLabel, picker);
+  more.append(separator(), colorLabel, picker, headPicker);
   root.append(main, more);
 
   // closes the menu on a press outside it
@@ -108,6 +122,9 @@ export function buildToolbar(
     },
     openFileDialog() {
       picker.click();
+    },
+    openHeadDialog() {
+      headPicker.click();
     },
   };
 }

@@ -32,12 +32,13 @@ export type HeadMeshArrays = Pick<
   'positions' | 'indices' | 'scalp' | 'normals' | 'parts'
 >;
 
-/** Indexed geometry with `position`, `normal` and `color` (linear RGB). A vertex's colour blends
- *  skin and scalp by the fraction of its triangles on the scalp. */
-export function createHeadGeometry(
+/** Per-vertex colours (linear RGB): a vertex blends skin and scalp by the fraction of its
+ *  triangles on the scalp; eyes and lips by part. */
+export function headVertexColors(
   head: HeadMeshArrays,
   colors: HeadColors = DEFAULT_HEAD_COLORS,
-): THREE.BufferGeometry {
+  out?: Float32Array,
+): Float32Array {
   const { positions, indices, scalp } = head;
   const vertices = positions.length / 3;
   const scalpCount = new Uint16Array(vertices);
@@ -55,7 +56,7 @@ export function createHeadGeometry(
   const white = new THREE.Color(colors.eyeWhite);
   const iris = new THREE.Color(colors.iris);
   const pupil = new THREE.Color(colors.pupil);
-  const rgb = new Float32Array(3 * vertices);
+  const rgb = out && out.length === 3 * vertices ? out : new Float32Array(3 * vertices);
   const c = new THREE.Color();
   for (let v = 0; v < vertices; v++) {
     const part = head.parts ? head.parts[v] : HeadPart.skin;
@@ -78,6 +79,17 @@ export function createHeadGeometry(
     rgb[3 * v + 1] = c.g;
     rgb[3 * v + 2] = c.b;
   }
+  return rgb;
+}
+
+/** Indexed geometry with `position`, `normal` and `color` (linear RGB, headVertexColors). */
+export function createHeadGeometry(
+  head: HeadMeshArrays,
+  colors: HeadColors = DEFAULT_HEAD_COLORS,
+): THREE.BufferGeometry {
+  const { positions, indices } = head;
+  const vertices = positions.length / 3;
+  const rgb = headVertexColors(head, colors);
   const geometry = new THREE.BufferGeometry();
   geometry.setAttribute('position', new THREE.BufferAttribute(positions, 3));
   geometry.setAttribute('color', new THREE.BufferAttribute(rgb, 3));
@@ -143,4 +155,20 @@ export function createHeadMesh(head: HeadMeshArrays): THREE.Mesh {
   const mesh = new THREE.Mesh(createHeadGeometry(head), createHeadMaterial());
   mesh.name = 'head';
   return mesh;
+}
+
+/** Shows another head on a mesh made by createHeadMesh (a loaded head): new geometry, the same
+ *  object and material (the hair view keeps its reference for the hair's shadow). */
+export function setHeadGeometry(mesh: THREE.Mesh, head: HeadMeshArrays): void {
+  const old = mesh.geometry;
+  mesh.geometry = createHeadGeometry(head);
+  old.dispose();
+}
+
+/** Recolours the head after its scalp mask changed (the scalp brush). */
+export function recolorHeadScalp(mesh: THREE.Mesh, head: HeadMeshArrays): void {
+  const a = mesh.geometry.getAttribute('color') as THREE.BufferAttribute | undefined;
+  if (!a) return;
+  headVertexColors(head, DEFAULT_HEAD_COLORS, a.array as Float32Array);
+  a.needsUpdate = true;
 }

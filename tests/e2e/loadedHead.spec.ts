@@ -1,0 +1,176 @@
+// Open head (issue 13) end to end, with a head generated here (an ellipsoid with a nose, written
+// as an OBJ in millimetres), not the built-in one: strokes drawn with real pointer events grow
+// hair from its scalp; with Avoid scalp no strand segment is inside it (the loaded mesh's own
+// signed distance: closest point plus the ray-voting inside test); a saved session file carries
+// the head and reopens it in a browser that never saw it; a link alone says which head it
+// needs; the scalp brush paints and erases scalp, and Undo restores it.
+import { expect, type Page, test } from '@playwright/test';
+import { ellipsoidHead, toObj } from '../support/generatedHead';
+import { settled, strokeFromScalp, watchConsole } from './helpers';
+
+/** The generated head in mm (1 app unit = 100 mm). */
+function headObj(): Buffer {
+  const m = ellipsoidHead(40);
+  const P = m.positions.map((v) => v * 100);
+  return Buffer.from(toObj({ positions: P, indices: m.indices }));
+}
+
+async function headInfo(page: Page) {
+  return page.evaluate(() => window.hairsketch.head());
+}
+
+async function openHead(page: Page, name = 'egg.obj') {
+  const before = await page.evaluate(() => window.hairsketch.session());
+  await page.getByLabel('Head file').setInputFiles({
+    name,
+    mimeType: 'text/plain',
+    buffer: headObj(),
+  });
+  await page.waitForFunction((n) => {
+    const h = window.hairsketch.head();
+    return h.name === n && !h.loading;
+  }, name);
+  return before;
+}
+
+test('a loaded head grows hair from its own scalp and keeps it outside', async ({ page }) => {
+  test.setTimeout(240_000);
+  const errors = watchConsole(page);
+  await page.goto('/?preset=empty&strands=3000');
+  const s0 = await settled(page);
+  await openHead(page);
+  const s1 = await settled(page, s0.revision);
+  const info = await headInfo(page);
+  expect(info.triangles).toBeGreaterThan(5000);
+  expect(info.scalpTriangles).toBeGreaterThan(200);
+  expect(s1.text).not.toContain('Could not');
+
+  await page.getByRole('button', { name: 'Stream curve' }).click();
+  await strokeFromScalp(page, 30, 40, 120, 170);
+  const s2 = await settled(page, s1.revision);
+  await strokeFromScalp(page, 30, -40, -120, 170);
+  const s3 = await settled(page, s2.revision);
+  expect(s3.curves).toBe(2);
+  expect(s3.strands).toBeGreaterThan(500);
+  // every root on the loaded head's scalp (closest point within 1 mm, on a scalp triangle)
+  const roots = await page.evaluate(() => window.hairsketch.rootsOnScalp(0.01));
+  expect(roots.roots).toBeGreaterThan(500);
+  expect(roots.onScalp).toBe(roots.roots);
+
+  await page.getByRole('button', { name: 'Avoid scalp' }).click();
+  await settled(page, s3.revision);
+  const inside = await page.evaluate(() => window.hairsketch.segmentsInsideHead(0.01, 7));
+  expect(inside.segments).toBeGreaterThan(5000);
+  expect(inside.inside).toBe(0);
+  expect(errors).toEqual([]);
+});
+
+test('the session file carries the head; a link alone asks for it', async ({ page, browser }) => {
+  test.setTimeout(240_000);
+  await page.goto('/?preset=empty&strands=2000');
+  const s0 = await settled(page);
+  await openHead(page, 'bust.obj');
+  const s1 = await settled(page, s0.revision);
+  await page.getByRole('button', { name: 'Stream curve' }).click();
+  await strokeFromScalp(page, 35, 20, 140, 190);
+  await settled(page, s1.revision);
+  const made = (await page.evaluate(() => window.hairsketch.session())) as {
+    head: { hash: string; name: string };
+    curves: unknown[];
+  };
+  expect(made.head.name).toBe('bust.obj');
+  expect(made.head.hash).toMatch(/^[0-9a-f]{64}$/);
+  const triangles = (await headInfo(page)).triangles;
+  await page.waitForFunction(() => window.location.hash.startsWith('#s='));
+  const href = await page.evaluate(() => window.location.href);
+  const [download] = await Promise.all([
+    page.waitForEvent('download'),
+    page.getByRole('button', { name: 'Save' }).click(),
+  ]);
+  const file = await download.path();
+
+  // a browser that never stored this head: the link says which head it needs
+  const fresh = await browser.newContext();
+  const other = await fresh.newPage();
+  await other.goto(href);
+  await other.waitForFunction(() => window.hairsketch.head().missing !== null);
+  await expect(other.getByTestId('status')).toContainText('bust.obj');
+  expect((await headInfo(other)).missing).toBe('bust.obj');
+
+  // the saved file brings the head along
+  const third = await (await browser.newContext()).newPage();
+  await third.goto('/?preset=empty&strands=2000');
+  const t0 = await settled(third);
+  await third.getByLabel('Session file').setInputFiles(file);
+  await third.waitForFunction(() => window.hairsketch.head().name === 'bust.obj');
+  await settled(third, t0.revision);
+  const info = await headInfo(third);
+  expect(info.missing).toBeNull();
+  expect(info.triangles).toBe(triangles);
+  const opened = (await third.evaluate(() => window.hairsketch.session())) as typeof made;
+  expect(opened.head).toEqual(made.head);
+  expect(opened.curves).toEqual(made.curves);
+  // and now the link opens there too (the head is stored)
+  const fourth = await third.context().newPage();
+  await fourth.goto(href);
+  await fourth.waitForFunction(() => {
+    const h = window.hairsketch.head();
+    return h.name === 'bust.obj' && !h.loading;
+  });
+  await settled(fourth);
+  expect((await headInfo(fourth)).missing).toBeNull();
+  await fresh.close();
+});
+
+test('a bad head file says why and changes nothing', async ({ page }) => {
+  await page.goto('/?strands=2000');
+  const s0 = await settled(page);
+  const before = await page.evaluate(() => window.hairsketch.session());
+  await page.getByLabel('Head file').setInputFiles({
+    name: 'broken.obj',
+    mimeType: 'text/plain',
+    buffer: Buffer.from('v 0 0 0\nv nan 1 0\nv 0 1 1\nf 1 2 3\n'),
+  });
+  await expect(page.getByTestId('status')).toContainText('Could not open the head');
+  expect(await page.evaluate(() => window.hairsketch.session())).toEqual(before);
+  expect((await headInfo(page)).name).toBe('builtin');
+  expect((await page.evaluate(() => window.hairsketch.head())).triangles).toBe(
+    (await headInfo(page)).triangles,
+  );
+  expect(s0.curves).toBeGreaterThan(0);
+});
+
+test('the scalp brush paints and erases scalp; Undo restores it', async ({ page }) => {
+  await page.goto('/?strands=2000');
+  const s0 = await settled(page);
+  const before = (await headInfo(page)).scalpTriangles;
+  await page.getByRole('button', { name: 'Scalp brush' }).click();
+  // paint across the forehead (below the hairline) with real pointer events
+  const from = await page.evaluate(() => window.hairsketch.scalpToScreen(75, 0));
+  const start = from ?? { x: 640, y: 300 };
+  const canvas = page.locator('canvas');
+  const box = await canvas.boundingBox();
+  if (!box) throw new Error('no canvas');
+  const cx = box.x + box.width / 2;
+  await page.mouse.move(cx - 60, start.y + 30);
+  await page.mouse.down();
+  for (let i = 1; i <= 12; i++) await page.mouse.move(cx - 60 + 10 * i, start.y + 30);
+  await page.mouse.up();
+  const s1 = await settled(page, s0.revision);
+  const painted = (await headInfo(page)).scalpTriangles;
+  expect(painted).toBeGreaterThan(before + 20);
+  expect(s1.text).toContain('Painted scalp');
+  // Shift+drag erases
+  await page.keyboard.down('Shift');
+  await page.mouse.move(cx - 60, start.y + 30);
+  await page.mouse.down();
+  for (let i = 1; i <= 12; i++) await page.mouse.move(cx - 60 + 10 * i, start.y + 30);
+  await page.mouse.up();
+  await page.keyboard.up('Shift');
+  await settled(page, s1.revision);
+  expect((await headInfo(page)).scalpTriangles).toBeLessThan(painted);
+  await page.getByRole('button', { name: 'Undo' }).click();
+  await page.getByRole('button', { name: 'Undo' }).click();
+  await settled(page);
+  expect((await headInfo(page)).scalpTriangles).toBe(before);
+});

@@ -1,0 +1,249 @@
+// Which head the app shows, sketches on and grows hair from: the session's `head` (the built-in
+// mannequin or a loaded mesh named by its file's SHA-256) with the session's scalp painting over
+// that head's default scalp. The session is the truth; this follows it:
+//  - a new head ref: the file's bytes come from the head store (IndexedDB), are loaded and
+//    turned as the ref says (loadHead.ts), and the new head goes to the viewer (same THREE.Mesh,
+//    new geometry), the tools (they read `head` on every stroke) and the solver (a worker
+//    restart with the new mesh). A ref whose bytes are not stored leaves the current head on
+//    screen and is reported as missing until the user opens that file;
+//  - new scalp strokes: the mask is recomputed (scalpPaint.ts), the head recoloured and the
+//    solver sent only the mask (roots redistribute; the head's distance field is kept).
+// Opening a file adds it to the store and runs one undoable `setHead` edit with the head's
+// fitted symmetry plane; Rotate does the same with one more quarter turn.
+import type * as THREE from 'three';
+import type { Editor } from '../editor/editor';
+import type { Head } from '../head/head';
+import type { HeadStore } from '../head/headStore';
+import { hashHeadBytes } from '../head/headStore';
+import { type Axis, type LoadedHead, loadHeadFile, rotateLoadedHead } from '../head/loadHead';
+import { applyScalpPaint, forEachCovered, type ScalpPaintStroke } from '../head/scalpPaint';
+import { fitSymmetryPlane } from '../head/symmetryPlane';
+import type { HeadRef, ScalpStroke, SessionState } from '../model/session';
+import type { ScalpMesh } from '../solver/protocol';
+import { recolorHeadScalp, setHeadGeometry } from '../viewer/headMaterial';
+import type { Viewer } from '../viewer/viewer';
+
+export interface HeadControllerDeps {
+  viewer: Viewer;
+  /** The displayed head (its geometry is replaced when the head changes). */
+  headMesh: THREE.Mesh;
+  store: HeadStore;
+  /** The solver gets a new head (worker restart) or only a new scalp mask. */
+  setSolverHead(scalp: ScalpMesh): void;
+  setSolverScalpMask(mask: Uint8Array): void;
+  note(message: string): void;
+  error(message: string): void;
+  /** After the head changed (grid fitting, overlays). */
+  headChanged?(head: Head): void;
+}
+
+interface Prepared {
+  head: Head;
+  defaultScalp: Uint8Array;
+}
+
+const refKey = (h: SessionState['head']): string =>
+  h === 'builtin'
+    ? 'builtin'
+    : `${h.hash}/${h.up}/${h.turns.map((t) => `${t.axis}${t.quarterTurns}`).join('')}`;
+
+/** Turns in their shortest form: consecutive turns about one axis add up (mod 4), zero turns
+ *  are dropped. */
+export function addTurn(turns: readonly HeadRef['turns'][number][], axis: Axis): HeadRef['turns'] {
+  const out = turns.map((t) => ({ ...t }));
+  const last = out[out.length - 1];
+  if (last && last.axis === axis) {
+    last.quarterTurns = (last.quarterTurns + 1) % 4;
+    if (last.quarterTurns === 0) out.pop();
+  } else out.push({ axis, quarterTurns: 1 });
+  return out;
+}
+
+export class HeadController {
+  private current: Prepared;
+  private key = 'builtin';
+  private paint: readonly ScalpStroke[] | undefined = undefined;
+  private readonly cache = new Map<string, Prepared>();
+  private generation = 0;
+  private latest: SessionState | null = null;
+  private switching: Promise<void> | null = null;
+  private missingRef: HeadRef | null = null;
+  /** The stroke being painted (its triangles shown painted before the edit is made). */
+  private previewMask: Uint8Array | null = null;
+
+  constructor(
+    builtin: Head,
+    private readonly d: HeadControllerDeps,
+  ) {
+    this.current = { head: builtin, defaultScalp: builtin.mesh.scalp.slice() };
+    this.cache.set('builtin', this.current);
+  }
+
+  /** The head strokes are drawn on and hair grows from. */
+  get head(): Head {
+    return this.current.head;
+  }
+
+  /** What the bounding volume must hold besides the curves: a loaded head's bounds (the
+   *  built-in head: none, the default box holds it). */
+  get gridBounds(): { min: [number, number, number]; max: [number, number, number] } | undefined {
+    return this.key === 'builtin' ? undefined : this.current.head.mesh.bounds;
+  }
+
+  /** A head is being loaded (the test API waits for it). */
+  get busy(): boolean {
+    return this.switching !== null;
+  }
+
+  /** The session's head when its file is not stored (the current head stays on screen). */
+  get missing(): HeadRef | null {
+    return this.missingRef;
+  }
+
+  /** The session changed (any edit, undo, a file, a link): follow its head and scalp. */
+  sessionChanged(s: SessionState): void {
+    this.latest = s;
+    if (this.switching) return; // the switch picks up the newest session when it ends
+    const key = refKey(s.head);
+    if (key !== this.key) {
+      const gen = ++this.generation;
+      this.switching = this.switchTo(s, key, gen).finally(() => {
+        this.switching = null;
+        if (this.latest && this.latest !== s) this.sessionChanged(this.latest);
+      });
+      return;
+    }
+    if (s.scalpPaint !== this.paint) this.applyPaint(s.scalpPaint);
+  }
+
+  /** "Open head": reads the file, keeps it in the store and makes it the session's head (one
+   *  undoable edit). A bad file changes nothing. Returns the status line's sentence. */
+  async openFile(editor: Editor, name: string, bytes: ArrayBuffer): Promise<string> {
+    const t0 = performance.now();
+    const r = await loadHeadFile(name, bytes);
+    if (!r.ok)
+      return `Could not open the head: ${r.error}. The head and the session are unchanged.`;
+    const hash = await hashHeadBytes(bytes);
+    await this.d.store.put({ hash, name, bytes });
+    const ref: HeadRef = {
+      kind: 'mesh',
+      name,
+      hash,
+      format: r.head.format,
+      up: r.head.up,
+      turns: [],
+    };
+    const prepared = this.prepare(r.head);
+    this.remember(refKey(ref), prepared);
+    const symmetry = fitSymmetryPlane(prepared.head).plane;
+    const ms = Math.round(performance.now() - t0);
+    // a link waiting for this very head: the session already names it
+    if (this.missingRef && this.missingRef.hash === hash && this.latest) {
+      this.missingRef = null;
+      this.key = '';
+      this.sessionChanged(this.latest);
+      return `${r.head.message} — the head this session needs (${ms} ms).`;
+    }
+    editor.run({ kind: 'setHead', head: ref, symmetry, what: `Opened head ${r.head.message}` });
+    return `${r.head.message} (${ms} ms).`;
+  }
+
+  /** "Rotate": the loaded head a quarter turn about `axis` (one undoable edit). */
+  rotate(editor: Editor, axis: Axis): string | null {
+    const ref = editor.session.head;
+    if (ref === 'builtin') return 'Rotate turns a loaded head; the built-in head is upright.';
+    const next: HeadRef = { ...ref, turns: addTurn(ref.turns, axis) };
+    editor.run({ kind: 'setHead', head: next, what: `Turned the head 90° about ${axis}` });
+    return null;
+  }
+
+  /** "Built-in head": back to the mannequin (one undoable edit). */
+  useBuiltin(editor: Editor): void {
+    editor.run({ kind: 'setHead', head: 'builtin', what: 'Built-in head' });
+  }
+
+  /** Shows `stroke` painted over the current scalp while it is drawn (no edit, no solve). */
+  previewStroke(stroke: ScalpPaintStroke | null): void {
+    const mesh = this.current.head.mesh;
+    if (stroke === null) {
+      if (this.previewMask) mesh.scalp.set(this.previewMask);
+      this.previewMask = null;
+      recolorHeadScalp(this.d.headMesh, mesh);
+      this.d.viewer.invalidateFrameCache();
+      return;
+    }
+    this.previewMask ??= mesh.scalp.slice();
+    mesh.scalp.set(this.previewMask);
+    const v = stroke.erase ? 0 : 1;
+    forEachCovered(mesh, stroke, (t) => {
+      mesh.scalp[t] = v;
+    });
+    recolorHeadScalp(this.d.headMesh, mesh);
+    this.d.viewer.invalidateFrameCache();
+  }
+
+  private applyPaint(strokes: readonly ScalpStroke[] | undefined): void {
+    this.paint = strokes;
+    this.previewMask = null;
+    const { head, defaultScalp } = this.current;
+    const mask = applyScalpPaint(head.mesh, defaultScalp, strokes ?? []);
+    head.mesh.scalp.set(mask);
+    recolorHeadScalp(this.d.headMesh, head.mesh);
+    this.d.viewer.invalidateFrameCache();
+    this.d.setSolverScalpMask(mask.slice());
+  }
+
+  private async switchTo(s: SessionState, key: string, gen: number): Promise<void> {
+    let prepared = this.cache.get(key) ?? null;
+    if (!prepared && s.head !== 'builtin') {
+      const ref = s.head;
+      const stored = await this.d.store.get(ref.hash);
+      if (gen !== this.generation) return;
+      if (!stored) {
+        this.missingRef = ref;
+        this.key = key; // wait for the file (openFile) rather than retry on every edit
+        this.d.error(
+          `This session needs the head “${ref.name}”, which this browser has not stored. Open head to load that file; until then the hair grows on the head shown.`,
+        );
+        return;
+      }
+      const r = await loadHeadFile(stored.name, stored.bytes, { up: ref.up });
+      if (gen !== this.generation) return;
+      if (!r.ok) {
+        this.key = key;
+        this.d.error(`The stored head “${ref.name}” could not be read: ${r.error}.`);
+        return;
+      }
+      let loaded: LoadedHead = r.head;
+      for (const t of ref.turns) loaded = rotateLoadedHead(loaded, t.axis, t.quarterTurns);
+      prepared = this.prepare(loaded);
+      this.remember(key, prepared);
+    }
+    if (!prepared) return;
+    this.missingRef = null;
+    this.key = key;
+    this.current = prepared;
+    this.previewMask = null;
+    this.paint = s.scalpPaint;
+    const mask = applyScalpPaint(prepared.head.mesh, prepared.defaultScalp, s.scalpPaint ?? []);
+    prepared.head.mesh.scalp.set(mask);
+    setHeadGeometry(this.d.headMesh, prepared.head.mesh);
+    this.d.viewer.invalidateFrameCache();
+    this.d.setSolverHead(prepared.head.scalpMesh());
+    this.d.headChanged?.(prepared.head);
+  }
+
+  private prepare(loaded: LoadedHead): Prepared {
+    return { head: loaded.head, defaultScalp: loaded.mesh.scalp.slice() };
+  }
+
+  /** Keeps the built-in head and the two most recent loaded heads (undo between them is quick). */
+  private remember(key: string, p: Prepared): void {
+    this.cache.delete(key);
+    this.cache.set(key, p);
+    for (const k of this.cache.keys()) {
+      if (this.cache.size <= 3) break;
+      if (k !== 'builtin' && k !== key && this.cache.get(k) !== this.current) this.cache.delete(k);
+    }
+  }
+}

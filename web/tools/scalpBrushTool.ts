@@ -1,0 +1,103 @@
+// The scalp brush (issue 13): drag on the head to paint scalp, Shift+drag to erase it; the wheel
+// sets the brush radius. The stroke is shown painted while it is drawn (a preview of the mask,
+// no solve) and becomes one undoable edit on release: the session keeps the stroke, and the
+// roots redistribute over the painted area when the solver gets the new mask.
+import type { ScalpPaintStroke } from '../head/scalpPaint';
+import type { Vec3 } from '../model/vec3';
+import type { Tool, ToolPointer } from './tool';
+
+export const BRUSH_RADIUS = { min: 0.05, max: 1.0, initial: 0.2 } as const;
+
+export interface ScalpBrushDeps {
+  /** The head surface under the pointer (any part), or null. */
+  hit(x: number, y: number): Vec3 | null;
+  /** Shows the stroke painted (null: the preview ends). */
+  preview(stroke: ScalpPaintStroke | null): void;
+  commit(stroke: ScalpPaintStroke): void;
+  /** The radius changed (status line). */
+  radiusChanged?(radius: number): void;
+  notify(message: string): void;
+}
+
+export class ScalpBrushTool implements Tool {
+  readonly name = 'scalp';
+  private points: Vec3[] = [];
+  private erase = false;
+  private active = false;
+  private dirty = false;
+  private r: number = BRUSH_RADIUS.initial;
+
+  constructor(private readonly d: ScalpBrushDeps) {}
+
+  get state(): string {
+    return this.active ? 'painting' : 'idle';
+  }
+
+  get radius(): number {
+    return this.r;
+  }
+
+  setRadius(r: number): void {
+    const next = Math.min(BRUSH_RADIUS.max, Math.max(BRUSH_RADIUS.min, r));
+    if (!Number.isFinite(next) || next === this.r) return;
+    this.r = next;
+    this.d.radiusChanged?.(next);
+  }
+
+  /** The wheel scales the radius (10 % a notch) instead of zooming. */
+  onWheel(deltaY: number): boolean {
+    this.setRadius(this.r * (deltaY < 0 ? 1.1 : 1 / 1.1));
+    return true;
+  }
+
+  onPointerDown(p: ToolPointer): boolean {
+    if (p.button !== 0) return false;
+    const hit = this.d.hit(p.x, p.y);
+    if (!hit) {
+      this.d.notify('Scalp brush: press on the head to paint.');
+      return false;
+    }
+    this.active = true;
+    this.erase = !!p.shiftKey;
+    this.points = [hit];
+    this.dirty = true;
+    return true;
+  }
+
+  onPointerMove(p: ToolPointer): void {
+    if (!this.active) return;
+    const hit = this.d.hit(p.x, p.y);
+    if (!hit) return;
+    const last = this.points[this.points.length - 1];
+    if (Math.hypot(hit[0] - last[0], hit[1] - last[1], hit[2] - last[2]) < this.r / 3) return;
+    this.points.push(hit);
+    this.dirty = true;
+  }
+
+  onPointerUp(p: ToolPointer): void {
+    if (!this.active) return;
+    this.onPointerMove(p);
+    const stroke = this.stroke();
+    this.active = false;
+    this.points = [];
+    this.d.preview(null);
+    this.d.commit(stroke);
+  }
+
+  onCancel(): void {
+    if (!this.active) return;
+    this.active = false;
+    this.points = [];
+    this.d.preview(null);
+  }
+
+  update(): void {
+    if (!this.active || !this.dirty) return;
+    this.dirty = false;
+    this.d.preview(this.stroke());
+  }
+
+  private stroke(): ScalpPaintStroke {
+    return { erase: this.erase, radius: this.r, points: [...this.points] };
+  }
+}
