@@ -174,3 +174,70 @@ test('the scalp brush paints and erases scalp; Undo restores it', async ({ page 
   await settled(page);
   expect((await headInfo(page)).scalpTriangles).toBe(before);
 });
+
+test('Mirror on a loaded head reflects across its fitted plane; Rotate turns it, Undo turns back', async ({
+  page,
+}) => {
+  test.setTimeout(180_000);
+  await page.goto('/?preset=empty&strands=2000');
+  const s0 = await settled(page);
+  await openHead(page);
+  const s1 = await settled(page, s0.revision);
+  const plane = (
+    (await page.evaluate(() => window.hairsketch.session())) as {
+      symmetry?: { normal: number[]; offset: number };
+    }
+  ).symmetry;
+  // the generated head is symmetric about its own x = 0: the fitted plane is that plane
+  expect(plane).toBeDefined();
+  if (!plane) return;
+  expect(plane.normal[0]).toBeGreaterThan(Math.cos((1 * Math.PI) / 180));
+  expect(Math.abs(plane.offset)).toBeLessThan(0.01);
+
+  await page.getByRole('button', { name: 'Mirror' }).click();
+  await page.getByRole('button', { name: 'Stream curve' }).click();
+  await strokeFromScalp(page, 30, 40, 120, 170);
+  await settled(page, s1.revision);
+  const s = (await page.evaluate(() => window.hairsketch.session())) as {
+    curves: { id: string; mirror?: string; points: number[][] }[];
+  };
+  expect(s.curves).toHaveLength(2);
+  const [a, b] = s.curves;
+  expect(a.mirror).toBe(b.id);
+  // b = a reflected across the plane (hand-computed reflection; 10 µm quantisation)
+  const n = plane.normal;
+  for (let i = 0; i < a.points.length; i++) {
+    const p = a.points[i];
+    const k = 2 * (n[0] * p[0] + n[1] * p[1] + n[2] * p[2] - plane.offset);
+    for (let ax = 0; ax < 3; ax++)
+      expect(Math.abs(b.points[i][ax] - (p[ax] - k * n[ax]))).toBeLessThan(1e-4);
+  }
+
+  // Rotate about Z: the head turns (its x and y extents swap), Undo turns it back
+  const extents = async () =>
+    page.evaluate(() => {
+      const b = window.hairsketch.head().bounds;
+      return [0, 1, 2].map((i) => b.max[i] - b.min[i]);
+    });
+  const before = await extents();
+  expect(before[1]).toBeGreaterThan(before[0] + 0.3);
+  await page.getByRole('button', { name: 'Head', exact: true }).click();
+  const panel = page.getByRole('region', { name: 'Head' });
+  await panel.getByRole('button', { name: 'Rotate about Z' }).click();
+  await page.waitForFunction(() => {
+    const s = window.hairsketch.session() as { head: { turns?: unknown[] } };
+    return (s.head.turns?.length ?? 0) === 1 && !window.hairsketch.head().loading;
+  });
+  await settled(page);
+  const turned = await extents();
+  expect(Math.abs(turned[0] - before[1])).toBeLessThan(1e-3);
+  expect(Math.abs(turned[1] - before[0])).toBeLessThan(1e-3);
+  await page.getByRole('button', { name: 'Undo' }).click();
+  await page.waitForFunction(() => {
+    const s = window.hairsketch.session() as { head: { turns?: unknown[] } };
+    return (s.head.turns?.length ?? 0) === 0 && !window.hairsketch.head().loading;
+  });
+  await settled(page);
+  const back = await extents();
+  for (let i = 0; i < 3; i++) expect(Math.abs(back[i] - before[i])).toBeLessThan(1e-6);
+});

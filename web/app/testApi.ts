@@ -83,6 +83,8 @@ export interface HairsketchTestApi {
     scalpTriangles: number;
     missing: string | null;
     loading: boolean;
+    /** The head's bounding box (world units). */
+    bounds: { min: Vec3; max: Vec3 };
   };
   /** Of the displayed strands' roots: how many lie within `distance` of the head's surface on a
    *  scalp triangle (closest point), and how many there are. */
@@ -260,6 +262,7 @@ export function installTestApi(app: TestApiParts): void {
         scalpTriangles,
         missing: info.missing,
         loading: info.loading,
+        bounds: { min: [...h.mesh.bounds.min], max: [...h.mesh.bounds.max] },
       };
     },
     rootsOnScalp(distance) {
