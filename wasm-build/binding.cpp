@@ -270,6 +270,29 @@ EMSCRIPTEN_KEEPALIVE int32_t hs_engine_set_scalp(EngineHandle* h, const HsScalpI
                                    Eigen::Vector3d(in->centerX, in->centerY, in->centerZ)));
 }
 
+// A new scalp mask for the head of the last set_scalp: scalp[triangle] = 1 on the scalp,
+// triangleCount = that head's (protocol.ts 'scalpMask'). A wrong count is refused and the old
+// mask stays.
+EMSCRIPTEN_KEEPALIVE int32_t hs_engine_set_scalp_mask(EngineHandle* h, const uint8_t* scalp,
+                                                      int32_t triangleCount) {
+  if (!h || triangleCount < 0) return fail(HS_INVALID_INPUT, "set_scalp_mask: no engine or count");
+  return report(h->engine.setScalpMask(scalp, size_t(triangleCount)));
+}
+
+// What the last set_scalp took (for benchmarks): out[0] ms building the root sampler, out[1] ms
+// building the head's distance grid, out[2] bytes the head keeps, out[3] cells of its distance
+// grid, out[4] bytes in use in the module (memory_budget.hpp memoryInUseBytes).
+EMSCRIPTEN_KEEPALIVE int32_t hs_engine_head_stats(EngineHandle* h, double* out) {
+  if (!h || !out) return fail(HS_INVALID_INPUT, "head_stats: no engine or output");
+  const HairEngine::HeadStats s = h->engine.headStats();
+  out[0] = s.samplerMs;
+  out[1] = s.distanceMs;
+  out[2] = double(s.bytes);
+  out[3] = double(s.distanceCells);
+  out[4] = double(memoryInUseBytes());
+  return HS_OK;
+}
+
 EMSCRIPTEN_KEEPALIVE int32_t hs_engine_set_curves(EngineHandle* h, const HsCurveSetHeader* in) {
   if (!h || !in) return fail(HS_INVALID_INPUT, "set_curves: no engine or input");
   CurveSetView v;

@@ -66,10 +66,14 @@ Status HairEngine::setScalp(const float* positions, size_t vertexCount, const ui
       ScalpSampler::estimateBytes(vertexCount, triangleCount) + HeadDistance::estimateBytes(view),
       availableMemoryBytes());
   if (!s.ok()) return s;
+  const auto t0 = Clock::now();
   s = scalp_.build(positions, vertexCount, indices, triangleCount, scalp, center);
   if (!s.ok()) return s;
+  const auto t1 = Clock::now();
   s = headDistance_.build(view);
   if (!s.ok()) scalp_ = ScalpSampler();
+  samplerMs_ = std::chrono::duration<double, std::milli>(t1 - t0).count();
+  distanceMs_ = std::chrono::duration<double, std::milli>(Clock::now() - t1).count();
   return s;
 }
 

@@ -67,6 +67,15 @@ class HairEngine {
   double growMs() const { return growMs_; }
   // The head's distance grid (built by setScalp): growth keeps hair outside it.
   const HeadDistance& headDistance() const { return headDistance_; }
+  // What the last setScalp took: milliseconds to build the root sampler and the distance grid,
+  // and the bytes the head keeps (sampler + distance grid).
+  struct HeadStats {
+    double samplerMs = 0, distanceMs = 0;
+    size_t bytes = 0, distanceCells = 0;
+  };
+  HeadStats headStats() const {
+    return {samplerMs_, distanceMs_, scalp_.bytes() + headDistance_.bytes(), headDistance_.cells()};
+  }
   const Grid& grid() const { return grid_; }
 
  private:
@@ -75,6 +84,7 @@ class HairEngine {
   std::unique_ptr<FieldSolver> solver_;
   ScalpSampler scalp_;  // also keeps the head mesh and its mask (scalp avoidance reads them)
   HeadDistance headDistance_;
+  double samplerMs_ = 0, distanceMs_ = 0;
   ConstraintSet constraints_;
   std::vector<uint8_t> colours_;
   Field field_;

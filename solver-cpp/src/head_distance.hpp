@@ -36,6 +36,11 @@ class HeadDistance {
   // mesh.scalp may be null (no scalp flags: scalpNear is false until setScalpMask).
   Status build(const HeadMeshView& mesh, double cell = 0.03, int bandCells = 3);
   bool built() const { return !d_.empty(); }
+  // Bytes kept (distances, nearest triangles, scalp flags) and the cells of the grid.
+  size_t bytes() const {
+    return d_.capacity() * sizeof(float) + tri_.capacity() * sizeof(int32_t) + scalp_.capacity();
+  }
+  size_t cells() const { return d_.size(); }
   void clear();
   // Replaces the scalp flags (scalp[triangle] != 0 on the scalp; count = the built mesh's
   // triangle count). A wrong count or no built head is refused and the old flags stay.

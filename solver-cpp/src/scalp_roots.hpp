@@ -42,6 +42,11 @@ class ScalpSampler {
   const std::vector<float>& positions() const { return positions_; }
   const std::vector<uint32_t>& indices() const { return indices_; }
   const std::vector<uint8_t>& scalpMask() const { return scalp_; }
+  // Bytes kept (the mesh copy and the bins).
+  size_t bytes() const {
+    return positions_.capacity() * sizeof(float) + indices_.capacity() * sizeof(uint32_t) +
+           scalp_.capacity() + (binStart_.capacity() + binTris_.capacity()) * sizeof(uint32_t);
+  }
 
  private:
   // Corner k of triangle t relative to the center, in double.

@@ -84,7 +84,15 @@ const result = (id: number, final = true): SolveResult => ({
   },
 });
 
-function setup() {
+/** A head of four triangles (the tests only count them), scalp everywhere. */
+const fourTriangles = (scalp = new Uint8Array([1, 1, 1, 1])): InitMessage['scalp'] => ({
+  positions: new Float32Array(18),
+  indices: new Uint32Array([0, 1, 2, 0, 2, 3, 0, 3, 4, 0, 4, 5]),
+  scalp,
+  center: [0, 0, 0],
+});
+
+function setup(initMessage: InitMessage = init) {
   const workers: FakeWorker[] = [];
   const shown: Array<{ id: number; cached: boolean }> = [];
   const errors: string[] = [];
@@ -95,7 +103,7 @@ function setup() {
       workers.push(w);
       return w as unknown as Worker;
     },
-    init,
+    initMessage,
     {
       onBusy() {},
       onResult: (r, _latest, cached) => shown.push({ id: r.id, cached }),
@@ -268,6 +276,89 @@ describe('SolverClient', () => {
     w.reply({ type: 'ready', gridPoints: 12, roots: 0 });
     expect(w.solves()).toHaveLength(1);
     expect(client.pending).toBe(true);
+  });
+
+  it('a result cached for one scalp mask is not shown for another; going back to it is', () => {
+    const { client, workers, shown } = setup({ ...init, scalp: fourTriangles() });
+    const w = workers[0];
+    w.reply({ type: 'ready', gridPoints: 8, roots: 0 });
+    client.request(curves(1), DEFAULT_GROWTH, opts(1));
+    const onA = w.solves()[0].id;
+    w.reply(result(onA));
+    const maskB = new Uint8Array([1, 0, 0, 1]);
+    client.setScalpMask(maskB);
+    // the worker is sent the mask and kept (no restart, no new init)
+    expect(workers).toHaveLength(1);
+    expect(w.sent.at(-1)).toEqual({ type: 'scalpMask', scalp: maskB });
+    client.request(curves(1), DEFAULT_GROWTH, opts(1)); // same curves, other scalp
+    expect(w.solves()).toHaveLength(2);
+    expect(shown.at(-1)).toEqual({ id: onA, cached: false });
+    const onB = w.solves()[1].id;
+    w.reply(result(onB));
+    expect(shown.at(-1)).toEqual({ id: onB, cached: false });
+    // back to the first mask (an undo): its hair from the cache, without the worker
+    client.setScalpMask(new Uint8Array([1, 1, 1, 1]));
+    client.request(curves(1), DEFAULT_GROWTH, opts(1));
+    expect(w.solves()).toHaveLength(2);
+    expect(shown.at(-1)).toEqual({ id: onA, cached: true });
+    client.setScalpMask(maskB);
+    client.request(curves(1), DEFAULT_GROWTH, opts(1));
+    expect(shown.at(-1)).toEqual({ id: onB, cached: true });
+  });
+
+  it('never caches a result asked for before the scalp changed (the worker may have grown it on either)', () => {
+    const { client, workers, shown } = setup({ ...init, scalp: fourTriangles() });
+    const w = workers[0];
+    w.reply({ type: 'ready', gridPoints: 8, roots: 0 });
+    client.request(curves(1), DEFAULT_GROWTH, opts(1));
+    client.setScalpMask(new Uint8Array([0, 1, 0, 1]));
+    client.setScalpMask(new Uint8Array([1, 1, 1, 1])); // back, before the answer came
+    w.reply(result(w.solves()[0].id));
+    client.request(curves(1), DEFAULT_GROWTH, opts(1));
+    expect(w.solves()).toHaveLength(2); // asked again, not answered from the cache
+    expect(shown.every((s) => !s.cached)).toBe(true);
+  });
+
+  it('a restart sends the scalp mask in force with the head; a mask of the wrong length changes nothing', () => {
+    const { client, workers, errors, kinds } = setup({ ...init, scalp: fourTriangles() });
+    workers[0].reply({ type: 'ready', gridPoints: 8, roots: 0 });
+    const mask = new Uint8Array([0, 0, 1, 1]);
+    client.setScalpMask(mask);
+    const sent = workers[0].sent.length;
+    client.setScalpMask(new Uint8Array(5));
+    expect(workers[0].sent).toHaveLength(sent);
+    expect(errors.at(-1)).toMatch(/5 triangles for a head of 4/);
+    expect(kinds.at(-1)).toBe('invalid_input');
+    workers[0].die();
+    expect(workers[1].sent[0]).toMatchObject({ type: 'init', scalp: { scalp: mask } });
+  });
+
+  it('setHead restarts the worker with the new head (and grid), drops the cache and solves the open request', () => {
+    const { client, workers } = setup({ ...init, scalp: fourTriangles() });
+    workers[0].reply({ type: 'ready', gridPoints: 8, roots: 0 });
+    client.request(curves(1), DEFAULT_GROWTH, opts(1));
+    workers[0].reply(result(workers[0].solves()[0].id));
+    const head = fourTriangles(new Uint8Array([1, 1, 1, 1]));
+    head.positions[0] = 0.5; // another head with the same scalp mask
+    const grid = {
+      dims: [3, 3, 3] as [number, number, number],
+      origin: [-1, -1, -1] as [number, number, number],
+      step: 1,
+    };
+    client.setHead(head, grid);
+    expect(workers[0].terminated).toBe(true);
+    expect(workers).toHaveLength(2);
+    const w = workers[1];
+    expect(w.sent).toHaveLength(1);
+    expect(w.sent[0]).toEqual({ ...init, grid, scalp: head });
+    expect(client.grid).toEqual(grid);
+    client.request(curves(1), DEFAULT_GROWTH, opts(1)); // same state: not from the old head's cache
+    expect(w.solves()).toHaveLength(0); // waits for the new worker
+    w.reply({ type: 'ready', gridPoints: 27, roots: 0 });
+    expect(w.solves()).toHaveLength(1);
+    // the grid stays when none is given; masks are now checked against the new head
+    client.setHead(fourTriangles(new Uint8Array(4)));
+    expect(workers[2].sent[0]).toMatchObject({ type: 'init', grid });
   });
 
   it('gives up after repeated deaths with a message that keeps the session', () => {

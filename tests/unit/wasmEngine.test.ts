@@ -326,6 +326,51 @@ describe('engine', () => {
     for (const x of [e, again.e, other.e]) x.dispose();
   });
 
+  it('setScalpMask grows the hair a fresh engine given that scalp grows; a wrong length is refused', async () => {
+    // the left half above the equator instead of the cap above y = 0.2
+    const left = new Uint8Array(head.scalp.length);
+    for (let t = 0; t < left.length; t++) {
+      let x = 0;
+      let y = 0;
+      for (let k = 0; k < 3; k++) {
+        x += head.positions[3 * head.indices[3 * t + k]];
+        y += head.positions[3 * head.indices[3 * t + k] + 1];
+      }
+      left[t] = x > 0 && y > 0 ? 1 : 0;
+    }
+    const grown = async (scalp: ScalpMesh, mask?: Uint8Array) => {
+      const e = await loadSolverEngine({ wasmBinary });
+      e.setGrid(grid, OMEGA, 'cg');
+      e.setScalp(scalp);
+      e.setCurves(curves);
+      e.solve();
+      const first = e.grow(growth);
+      if (mask) e.setScalpMask(mask);
+      return { e, first, strands: e.grow(growth) };
+    };
+    const changed = await grown(head, left);
+    const fresh = await grown({ ...head, scalp: left });
+    expect(changed.strands.points).toEqual(fresh.strands.points);
+    expect(changed.strands.strandStart).toEqual(fresh.strands.strandStart);
+    expect(changed.strands.points).not.toEqual(changed.first.points);
+    const e = changed.e;
+    const count = e.rootCount();
+    expect(() => e.setScalpMask(left.subarray(1))).toThrow(/flags for a head of/);
+    const refused = (() => {
+      try {
+        e.setScalpMask(new Uint8Array(left.length + 1));
+        return null;
+      } catch (err) {
+        return err;
+      }
+    })();
+    expect(refused).toBeInstanceOf(SolverError);
+    expect((refused as SolverError).kind).toBe('invalid_input');
+    expect(e.grow(growth).points).toEqual(fresh.strands.points); // the mask in force stayed
+    expect(e.rootCount()).toBe(count);
+    for (const x of [e, fresh.e]) x.dispose();
+  });
+
   it('throws SolverError with the C++ message on bad input', async () => {
     const e = await loadSolverEngine({ wasmBinary });
     expect(() => e.solve()).toThrow(/before setGrid/);

@@ -5,7 +5,7 @@ import { fileURLToPath } from 'node:url';
 import { describe, expect, it } from 'vitest';
 import { packCurves, packHairOptions } from '../../web/model/curveSet';
 import { DEFAULT_GROWTH } from '../../web/model/session';
-import type { IterateProgress, SolverEngine } from '../../web/solver/engine';
+import { type IterateProgress, type SolverEngine, SolverError } from '../../web/solver/engine';
 import type { FromWorker, HairOptions, ToWorker } from '../../web/solver/protocol';
 import { loadSolverEngine } from '../../web/solver/wasmEngine';
 import { DEFAULT_SCHEDULER, WorkerLogic } from '../../web/solver/workerLogic';
@@ -21,6 +21,10 @@ function scriptedEngine(log: string[], colours = new Uint8Array([0, 1, 3])): Sol
   return {
     setGrid: () => log.push('grid'),
     setScalp: () => log.push('scalp'),
+    setScalpMask: (m) => {
+      if (m.length !== 8) throw new SolverError(`mask of ${m.length} for 8`, 'invalid_input');
+      log.push(`mask:${Array.from(m).join('')}`);
+    },
     setDetail: (d) => log.push(`detail:${d.groups.length}:${d.groups[10]}`),
     setCurves: (c) => {
       it = 0;
@@ -333,6 +337,48 @@ function octahedron(c: [number, number, number], r: number) {
   };
 }
 
+describe('WorkerLogic: a new scalp mask', () => {
+  it('hands the mask to the engine at once; the next solve grows after it, no set-up again', async () => {
+    const h = harness();
+    await h.logic.handle(init);
+    h.log.length = 0;
+    await h.logic.handle({ type: 'scalpMask', scalp: new Uint8Array([1, 1, 0, 0, 1, 0, 1, 0]) });
+    expect(h.log).toEqual(['mask:11001010']);
+    expect(h.posted.filter((m) => m.type === 'error')).toEqual([]);
+    const done = h.logic.handle(solve(1, 'preview'));
+    await h.release();
+    await done;
+    expect(h.log.indexOf('mask:11001010')).toBeLessThan(h.log.indexOf(`grow:${LIGHT}`));
+    expect(h.log).not.toContain('grid');
+    expect(h.log).not.toContain('scalp');
+  });
+
+  it('reports a refused mask (id null, its kind) and keeps going', async () => {
+    const h = harness();
+    await h.logic.handle(init);
+    await h.logic.handle({ type: 'scalpMask', scalp: new Uint8Array(7) });
+    expect(h.posted.at(-1)).toMatchObject({ type: 'error', id: null, kind: 'invalid_input' });
+    expect((h.posted.at(-1) as { message: string }).message).toMatch(/^Scalp mask: mask of 7/);
+    const done = h.logic.handle(solve(2, 'preview'));
+    await h.release();
+    await done;
+    expect(h.results().map((r) => r.id)).toEqual([2]);
+  });
+
+  it('refuses a mask before init', async () => {
+    const h = harness();
+    await h.logic.handle({ type: 'scalpMask', scalp: new Uint8Array(8) });
+    expect(h.posted).toEqual([
+      {
+        type: 'error',
+        id: null,
+        message: 'Scalp mask: the solver is not initialised',
+        kind: 'not_ready',
+      },
+    ]);
+  });
+});
+
 describe('WorkerLogic over the real wasm engine', () => {
   it('colours a stream curve blue and its fading extension red, one colour per constraint', async () => {
     const wasmPath = fileURLToPath(new URL('../../web/generated/hairsolver.wasm', import.meta.url));
@@ -365,6 +411,63 @@ describe('WorkerLogic over the real wasm engine', () => {
     expect(c.colour.length).toBe(c.index.length);
     expect(new Set(c.colour)).toEqual(new Set([0, 1]));
     engine.dispose();
+  });
+
+  it('after a scalp mask, grows the hair a worker started with that scalp grows', async () => {
+    const wasmPath = fileURLToPath(new URL('../../web/generated/hairsolver.wasm', import.meta.url));
+    const wasmBinary = new Uint8Array(readFileSync(wasmPath));
+    const step = 0.25;
+    const setUp: ToWorker = {
+      ...init,
+      grid: { dims: [12, 12, 12], origin: [-1.5, -1.5, -1.5], step },
+      solver: 'cg',
+      scalp: octahedron([0, 0, 0], 1),
+    } as ToWorker;
+    const points: [number, number, number][] = [];
+    for (let i = 0; i < 8; i++) points.push([-0.9 + i * step, 1.1, 0]);
+    const curves = packCurves([
+      {
+        id: 'c1',
+        type: 'stream',
+        points,
+        extend: true,
+        viewpoint: { position: [0, 0, 5], target: [0, 0, 0] },
+      },
+    ]);
+    const growth = { ...DEFAULT_GROWTH, thetaStepDeg: 3, phiStepDeg: 3, maxStrands: 0 };
+    const full = (id: number) => ({ ...(solve(id, 'full') as SolveMsg), curves, growth });
+    const finals = (posted: FromWorker[]) =>
+      posted.filter((m): m is Extract<FromWorker, { type: 'result' }> =>
+        m.type === 'result' ? m.final : false,
+      );
+    const upper = new Uint8Array([1, 1, 0, 0, 1, 1, 0, 0]); // the faces round (0, 1, 0)
+
+    const engine = await loadSolverEngine({ wasmBinary });
+    const posted: FromWorker[] = [];
+    const logic = new WorkerLogic(engine, (m) => posted.push(m));
+    await logic.handle(setUp);
+    await logic.handle(full(1));
+    await logic.handle({ type: 'scalpMask', scalp: upper });
+    await logic.handle(full(2));
+    const [all, painted] = finals(posted);
+
+    const freshEngine = await loadSolverEngine({ wasmBinary });
+    const freshPosted: FromWorker[] = [];
+    const fresh = new WorkerLogic(freshEngine, (m) => freshPosted.push(m));
+    const scalp = (setUp as Extract<ToWorker, { type: 'init' }>).scalp;
+    await fresh.handle({ ...setUp, scalp: { ...scalp, scalp: upper } } as ToWorker);
+    await fresh.handle(full(1));
+    const [reference] = finals(freshPosted);
+
+    expect(posted.filter((m) => m.type === 'error')).toEqual([]);
+    expect(painted.strands.points).toEqual(reference.strands.points);
+    expect(painted.strands.strandStart).toEqual(reference.strands.strandStart);
+    expect(painted.strands.strandStart.length).toBeLessThan(all.strands.strandStart.length);
+    const s = painted.strands;
+    for (let k = 0; k + 1 < s.strandStart.length; k++)
+      expect(s.points[3 * s.strandStart[k] + 1]).toBeGreaterThan(-1e-3); // roots on the upper half
+    engine.dispose();
+    freshEngine.dispose();
   });
 
   it('posts the kind of a solver error: a non-finite curve point is non_finite', async () => {

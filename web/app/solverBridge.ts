@@ -31,6 +31,9 @@ export interface SolverBridgeOptions {
   grid: GridSpec;
   solver: SolverName;
   scalp: ScalpMesh;
+  /** A loaded head's bounds, which the grid must hold too (gridForSession); absent or undefined
+   *  for the built-in head. */
+  headBounds?: () => { min: Vec3; max: Vec3 } | undefined;
   /** Fraction of the hair the view can draw while interacting (1 on a fast GPU). */
   interactiveDetail: () => number;
   /** Strands on screen now (previews grow no more than the view can draw). */
@@ -87,10 +90,37 @@ export class SolverBridge {
     return this.client.grid;
   }
 
-  /** Sends the current session for a full solve (on the grid its curves need). */
+  /** The grid the current session needs: its curves and the head (gridForSession). */
+  private sessionGrid(): GridSpec {
+    const s = this.editor.session;
+    return gridForSession(s.grid, s.curves, this.opts.headBounds?.());
+  }
+
+  /** Another head (a loaded mesh, a turn of it, the built-in one), with its scalp mask: the
+   *  worker is restarted on it (on the grid the session needs with it, so at most one restart)
+   *  and the session is solved again. */
+  setHead(scalp: ScalpMesh): void {
+    const grid = this.sessionGrid();
+    const moved = !sameGrid(grid, this.client.grid);
+    this.client.setHead(scalp, grid);
+    if (moved) this.each((l) => l.gridChanged?.(grid));
+    this.drawing = false;
+    this.sync();
+  }
+
+  /** A new scalp on the same head (scalp[triangle] = 1): the worker changes it in place (no
+   *  restart, the head's distance grid is kept) and the session is solved again, its roots
+   *  spread over the new scalp. */
+  setScalpMask(mask: Uint8Array): void {
+    this.client.setScalpMask(mask);
+    this.drawing = false;
+    this.sync();
+  }
+
+  /** Sends the current session for a full solve (on the grid its curves and head need). */
   sync(): void {
     const s = this.editor.session;
-    const grid = gridForSession(s.grid, s.curves);
+    const grid = this.sessionGrid();
     if (!sameGrid(grid, this.client.grid)) {
       this.client.setGrid(grid);
       this.each((l) => l.gridChanged?.(grid));

@@ -17,8 +17,12 @@ import type {
 export interface SolverEngine {
   /** Analyse the grid and create the solver. Throws SolverError on bad input. */
   setGrid(grid: GridSpec, omega: number, solver: SolverName): void;
-  /** Store the scalp triangles used for root sampling. */
+  /** Store the head: its triangles for root sampling and its distance grid. */
   setScalp(mesh: ScalpMesh): void;
+  /** A new scalp mask for the head of setScalp (scalp[triangle] = 1 on the scalp, one flag per
+   *  triangle): the next grow samples roots over it; nothing else is rebuilt. Throws SolverError
+   *  (the old mask stays) on a wrong length. Optional (test fakes). */
+  setScalpMask?(scalp: Uint8Array): void;
   /** Detail applied by grow (curl, clump, frizz, length jitter); optional (test fakes). */
   setDetail?(detail: DetailArrays): void;
   /** Derive constraints from the curves and hand them to the solver (diffed in C++). */

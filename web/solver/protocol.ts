@@ -224,6 +224,13 @@ export type ToWorker =
       scalp: ScalpMesh;
     }
   | {
+      /** A new scalp on the same head (the scalp brush): solves after it grow their roots over
+       *  it; the head's distance grid, the grid and the field stay. Refused (an 'error' with id
+       *  null, the previous scalp kept) when its length is not the head's triangle count. */
+      type: 'scalpMask';
+      scalp: Uint8Array; // scalp[triangle] = 1 on the scalp; length = triangles of init's head
+    }
+  | {
       type: 'solve';
       id: number; // increases per request; results carry it back
       curves: CurveSet;

@@ -9,6 +9,10 @@
 //   was made (a late answer never undoes an edit the user made since).
 // Final results are cached by content (undo is instant and exact), and a worker that dies is
 // restarted and sent the session again.
+// The head and its scalp are part of that content: setHead restarts the worker on another head
+// (the cache is dropped), setScalpMask sends the worker a new scalp without a restart (the
+// mask's content is in the key, so undoing a scalp edit is answered from the cache). A result of
+// a request made before either change is never cached (the worker may have grown it on either).
 // The solved field is copied out of the worker only while `wantField` is set (the field display
 // is on); a cached result without it does not answer a request that wants it.
 import { contentKey } from '../model/curveSet';
@@ -17,6 +21,7 @@ import type {
   FromWorker,
   GrowthParams,
   HairOptions,
+  ScalpMesh,
   SolverErrorKind,
   ToWorker,
 } from './protocol';
@@ -46,6 +51,8 @@ interface Request {
   options: HairOptions;
   wantField: boolean;
   lightMaxStrands: number;
+  /** headRevision when it was made: its result is cached only if no head or scalp came since. */
+  headRevision: number;
 }
 
 const CACHE_SIZE = 4;
@@ -67,6 +74,11 @@ export class SolverClient {
   private readonly cache = new Map<string, SolveResult>();
   private restarts = 0;
   private ready = false;
+  /** Bumped by every setHead and setScalpMask. */
+  private headRevision = 0;
+  /** Which head (bumped by setHead) and the content of its scalp mask: part of the cache key. */
+  private headId = 0;
+  private maskKey: string;
   /** Ask the worker for the solved field with each result (for the field display). */
   wantField = false;
   constructor(
@@ -74,6 +86,7 @@ export class SolverClient {
     private init: InitMessage,
     private readonly events: SolverClientEvents,
   ) {
+    this.maskKey = contentKey(init.scalp.scalp);
     this.start();
   }
 
@@ -91,13 +104,53 @@ export class SolverClient {
    *  Cached results were grown on the old grid: dropped. */
   setGrid(grid: InitMessage['grid']): void {
     this.init = { ...this.init, grid };
+    this.restart('solving');
+  }
+
+  /** The head the worker grows on (protocol.ts ScalpMesh, its scalp mask included), and the grid
+   *  when that changes with it (default: the same): the worker is replaced by one set up on
+   *  them and the open request is sent to it when ready. Cached results were grown on the old
+   *  head: dropped. */
+  setHead(scalp: ScalpMesh, grid: InitMessage['grid'] = this.init.grid): void {
+    this.init = { ...this.init, grid, scalp };
+    this.headId++;
+    this.headRevision++;
+    this.maskKey = contentKey(scalp.scalp);
+    this.restart('loading');
+  }
+
+  /** A new scalp on the same head (mask[triangle] = 1 on the scalp): the worker changes it in
+   *  place (no restart) and a restart sends it with the head. Requests from now on are grown on
+   *  it; the caller asks again for what is on screen (SolverBridge does). A mask whose length is
+   *  not the head's triangle count changes nothing and is reported as an error. */
+  setScalpMask(mask: Uint8Array): void {
+    const triangles = this.init.scalp.scalp.length;
+    if (mask.length !== triangles) {
+      this.events.onError(
+        `Scalp mask of ${mask.length} triangles for a head of ${triangles}: not changed`,
+        false,
+        'invalid_input',
+      );
+      return;
+    }
+    this.init = { ...this.init, scalp: { ...this.init.scalp, scalp: mask } };
+    this.headRevision++;
+    this.maskKey = contentKey(mask);
+    const msg: ToWorker = { type: 'scalpMask', scalp: mask };
+    // A worker still loading handles it after its init (messages keep their order).
+    this.worker?.postMessage(msg);
+  }
+
+  /** Replaces the worker by a new one sent `init`; results cached for the old set-up are
+   *  dropped. */
+  private restart(phase: 'loading' | 'solving'): void {
     this.cache.clear();
     this.worker?.terminate();
     this.worker = null;
     this.ready = false;
     this.previewInFlight = null;
     this.previewWaiting = null;
-    this.start('solving');
+    this.start(phase);
   }
 
   /** Solves `curves` and grows `growth`; previews and a full solve's first look are grown with
@@ -110,7 +163,7 @@ export class SolverClient {
     mode: SolveMode = 'full',
     lightMaxStrands = 0,
   ): void {
-    const key = contentKey(
+    const key = `${contentKey(
       curves.points,
       curves.curveStart,
       curves.kinds,
@@ -123,7 +176,7 @@ export class SolverClient {
       new Uint8Array([options.avoidScalp ? 1 : 0]),
       options.detail.groups,
       options.detail.curveGroup,
-    );
+    )}|head ${this.headId}:${this.maskKey}`;
     const req: Request = {
       id: this.nextId++,
       key,
@@ -133,6 +186,7 @@ export class SolverClient {
       options,
       wantField: this.wantField,
       lightMaxStrands,
+      headRevision: this.headRevision,
     };
     this.latest = req;
     if (mode === 'preview') {
@@ -260,7 +314,7 @@ export class SolverClient {
         if (msg.final) {
           this.restarts = 0;
           const req = this.open && this.open.id === msg.id ? this.open : null;
-          if (req && req.mode === 'full') {
+          if (req && req.mode === 'full' && req.headRevision === this.headRevision) {
             this.cache.set(req.key, msg);
             while (this.cache.size > CACHE_SIZE) {
               const oldest = this.cache.keys().next().value as string;

@@ -198,7 +198,11 @@ export function boundaryLayoutMismatches(mod: HairSolverModule): string[] {
 function copyIn(mod: HairSolverModule, arr: ArrayBufferView): number {
   const bytes = new Uint8Array(arr.buffer, arr.byteOffset, arr.byteLength);
   const ptr = mod._malloc(Math.max(8, bytes.byteLength));
-  if (ptr === 0) throw new SolverError('out of wasm memory', 'over_memory_cap');
+  if (ptr === 0)
+    throw new SolverError(
+      `out of wasm memory: no room for ${(bytes.byteLength / 2 ** 20).toFixed(1)} MB of input (the module holds ${(mod.HEAPU8.length / 2 ** 20).toFixed(0)} MB)`,
+      'over_memory_cap',
+    );
   mod.HEAPU8.set(bytes, ptr);
   return ptr;
 }
@@ -392,6 +396,14 @@ class WasmEngine implements SolverEngine {
     });
   }
 
+  /** A new scalp mask (scalp[triangle] = 1) for the head of setScalp; the next grow samples
+   *  roots over it. The binding refuses a length other than the head's triangle count. */
+  setScalpMask(scalp: Uint8Array): void {
+    const h = this.h();
+    const m = this.mod;
+    withInputs(m, [scalp], ([p]) => check(m, m._hs_engine_set_scalp_mask(h, p, scalp.length)));
+  }
+
   /** Detail groups and each curve's group (protocol.ts DetailArrays), used by grow. */
   setDetail(d: DetailArrays): void {
     const h = this.h();
@@ -570,6 +582,7 @@ class WasmEngine implements SolverEngine {
 
 /** Engine with extras beyond SolverEngine (timings, root count). */
 export type WasmSolverEngine = SolverEngine & {
+  setScalpMask(scalp: Uint8Array): void;
   growMs(): number;
   rootCount(): number;
   scalpAvoidance(opts?: ScalpAvoidanceOptions): ScalpAvoidanceResult;

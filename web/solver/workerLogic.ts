@@ -9,6 +9,7 @@
 //                converged field gives the scalp-avoidance constraints (S4.7) and the field is
 //                solved again with them, warm-started from that field (growSession.ts does the
 //                same).
+// A 'scalpMask' message changes the scalp at once (no restart, nothing else rebuilt).
 import { resultLighting } from '../lighting/resultLighting';
 import { type IterateProgress, type SolverEngine, SolverError } from './engine';
 import {
@@ -105,6 +106,10 @@ export class WorkerLogic {
       }
       return Promise.resolve();
     }
+    if (msg.type === 'scalpMask') {
+      this.setScalpMask(msg.scalp);
+      return Promise.resolve();
+    }
     if (!this.initialised) {
       this.post({
         type: 'error',
@@ -116,6 +121,24 @@ export class WorkerLogic {
     }
     this.latest = msg;
     return this.running ? Promise.resolve() : this.run();
+  }
+
+  /** A new scalp on the init head: the next growth samples its roots over it (a job running now
+   *  grows its remaining results from it too; the app asks again after a scalp edit). The
+   *  lighting head keeps its triangles. A refused mask is reported and the old one stays. */
+  private setScalpMask(scalp: Uint8Array): void {
+    const fail = (message: string, kind: SolverErrorKind): void => {
+      this.post({ type: 'error', id: null, message: `Scalp mask: ${message}`, kind });
+    };
+    if (!this.initialised || !this.head) fail('the solver is not initialised', 'not_ready');
+    else if (!this.engine.setScalpMask) fail('this engine cannot change the scalp', 'internal');
+    else
+      try {
+        this.engine.setScalpMask(scalp);
+        this.head = { ...this.head, scalp };
+      } catch (e) {
+        fail(errorMessage(e), errorKind(e));
+      }
   }
 
   private async run(): Promise<void> {
