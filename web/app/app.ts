@@ -69,6 +69,8 @@ export function startApp(): void {
     setSolverScalpMask: (m) => bridge.setScalpMask(m),
     note: (m) => status.note(m),
     error: (m) => status.error(m),
+    task: (m) => status.task(m),
+    taskDone: (m, failed) => status.taskDone(m, failed),
     headChanged: () => showHeadPanel(), // the bridge re-solves on the new head itself
   });
 

@@ -33,6 +33,9 @@ export interface HeadControllerDeps {
   setSolverScalpMask(mask: Uint8Array): void;
   note(message: string): void;
   error(message: string): void;
+  /** Long work under way (a stored head being read), and its end. */
+  task(text: string): void;
+  taskDone(message: string, failed?: boolean): void;
   /** After the head changed (grid fitting, overlays). */
   headChanged?(head: Head): void;
 }
@@ -207,15 +210,18 @@ export class HeadController {
         );
         return;
       }
+      this.d.task(`Loading the head “${ref.name}”…`);
+      const t0 = performance.now();
       const r = await loadHeadFile(stored.name, stored.bytes, { up: ref.up });
       if (gen !== this.generation) return;
       if (!r.ok) {
         this.key = key;
-        this.d.error(`The stored head “${ref.name}” could not be read: ${r.error}.`);
+        this.d.taskDone(`The stored head “${ref.name}” could not be read: ${r.error}.`, true);
         return;
       }
       let loaded: LoadedHead = r.head;
       for (const t of ref.turns) loaded = rotateLoadedHead(loaded, t.axis, t.quarterTurns);
+      this.d.taskDone(`Head “${ref.name}” loaded (${Math.round(performance.now() - t0)} ms).`);
       prepared = this.prepare(loaded);
       this.remember(key, prepared);
     }
