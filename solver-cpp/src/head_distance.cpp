@@ -121,10 +121,15 @@ Status HeadDistance::build(const HeadMeshView& m, double cell, int bandCells) {
     tri[idx] = int32_t(t);
     return true;
   };
-  // Exact within one cell: each triangle splatted into its box grown by one cell.
+  // Exact within one cell: each triangle splatted into its box grown by one cell. A cell whose
+  // distance to the triangle's bounding sphere is already no less than its current distance
+  // cannot take it (most of the cells of a small triangle's box: the cheap test first).
   for (size_t t = 0; t < m.triangleCount; ++t) {
     const uint32_t* I = m.indices + 3 * t;
     const V3 a = vert(I[0]), b = vert(I[1]), c = vert(I[2]);
+    const V3 mid = (a + b + c) / 3;
+    const double r = std::sqrt(
+        std::max({(a - mid).squaredNorm(), (b - mid).squaredNorm(), (c - mid).squaredNorm()}));
     const V3 blo = (a.cwiseMin(b).cwiseMin(c).array() - cell - lo.array()) / cell;
     const V3 bhi = (a.cwiseMax(b).cwiseMax(c).array() + cell - lo.array()) / cell;
     const int i0 = std::max(0, int(std::ceil(blo.x()))), i1 = std::min(nx - 1, int(bhi.x()));
@@ -132,7 +137,11 @@ Status HeadDistance::build(const HeadMeshView& m, double cell, int bandCells) {
     const int k0 = std::max(0, int(std::ceil(blo.z()))), k1 = std::min(nz - 1, int(bhi.z()));
     for (int k = k0; k <= k1; ++k)
       for (int j = j0; j <= j1; ++j)
-        for (int i = i0; i <= i1; ++i) offer(i, j, k, uint32_t(t));
+        for (int i = i0; i <= i1; ++i) {
+          const double reach = std::min(double(std::fabs(d[at(i, j, k)])), band) + r;
+          if ((lo + cell * V3(i, j, k) - mid).squaredNorm() > reach * reach) continue;
+          offer(i, j, k, uint32_t(t));
+        }
   }
   // Out to the band: every cell offers its nearest triangle to its 26 neighbours; a neighbour
   // that takes it offers it on in turn (first in, first out, from the cells in index order).

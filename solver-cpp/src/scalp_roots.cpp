@@ -83,8 +83,9 @@ Status ScalpSampler::build(const float* pos, size_t nv, const uint32_t* idx, siz
   for (size_t v = 0; v < nv; ++v)
     radius_ = std::max(
         radius_, (Eigen::Vector3d(pos[3 * v], pos[3 * v + 1], pos[3 * v + 2]) - center).norm());
-  // Bins over (theta, phi): about 4 triangles' worth of area per bin, within limits.
-  const double target = std::sqrt(double(nt) / 2.0);
+  // Bins over (theta, phi): about 16 triangles' worth of area per bin, within limits (a triangle
+  // goes to every bin its cap touches: smaller bins take more memory than the rays save).
+  const double target = std::sqrt(double(nt) / 8.0);
   nTheta_ = std::clamp(int(target / 2), 8, 512);
   nPhi_ = 2 * nTheta_;
   const double dTheta = kPi / nTheta_, dPhi = 2 * kPi / nPhi_;
@@ -128,8 +129,10 @@ Status ScalpSampler::build(const float* pos, size_t nv, const uint32_t* idx, siz
         if (halfPhi < kPi) {
           double p0 = phiC - halfPhi;
           p0 -= 2 * kPi * std::floor(p0 / (2 * kPi));  // [0, 2 pi)
-          r.j0 = uint16_t(std::min(nPhi_ - 1, int(std::floor(p0 / dPhi))));
-          r.span = uint16_t(std::min(nPhi_ - 1, int(std::ceil(2 * halfPhi / dPhi)) + 1));
+          const int j0 = std::min(nPhi_ - 1, int(std::floor(p0 / dPhi)));
+          const int j1 = int(std::floor((p0 + 2 * halfPhi) / dPhi));  // may pass 2 pi: wraps
+          r.j0 = uint16_t(j0);
+          r.span = uint16_t(std::clamp(j1 - j0, 0, nPhi_ - 1));
         }
       }
     }
