@@ -105,6 +105,20 @@ TEST(HairEngine, CurveToStrandsIsDeterministicPerSeed) {
   EXPECT_NE(e.strands().points, first.points);
 }
 
+TEST(HairEngine, TheHeadsMemoryCheckCoversWhatTheHeadKeeps) {
+  Scene s;
+  HairEngine e;
+  ASSERT_TRUE(setup(e, s).ok());
+  const size_t nv = s.head.positions.size() / 3, nt = s.head.indices.size() / 3;
+  const HeadMeshView view{s.head.positions.data(), nv, s.head.indices.data(), nt,
+                          s.head.scalp.data()};
+  const HairEngine::HeadStats st = e.headStats();
+  EXPECT_GT(st.bytes, 12 * nv + 13 * nt);  // at least the mesh copy and its mask
+  EXPECT_GE(ScalpSampler::estimateBytes(nv, nt) + HeadDistance::estimateBytes(view),
+            double(st.bytes));
+  EXPECT_GT(st.distanceCells, 0u);
+}
+
 TEST(HairEngine, ErrorsAreStatusesNotCrashes) {
   Scene s;
   HairEngine e;

@@ -569,6 +569,23 @@ class WasmEngine implements SolverEngine {
     return this.mod.HEAPU8.length;
   }
 
+  /** What the last setScalp took, measured in wasm (benchmarks). */
+  headStats(): HeadStats {
+    const h = this.h();
+    const m = this.mod;
+    return withScratch(m, 40, (out) => {
+      check(m, m._hs_engine_head_stats(h, out));
+      const v = m.HEAPF64.slice(out >> 3, (out >> 3) + 5);
+      return {
+        samplerMs: v[0],
+        distanceMs: v[1],
+        headBytes: v[2],
+        distanceCells: v[3],
+        inUseBytes: v[4],
+      };
+    });
+  }
+
   /** Number of roots of the last grow. */
   rootCount(): number {
     return this.mod._hs_engine_root_count(this.h());
@@ -580,9 +597,19 @@ class WasmEngine implements SolverEngine {
   }
 }
 
+/** What the last setScalp took (HairEngine::HeadStats). */
+export interface HeadStats {
+  samplerMs: number; // building the root sampler (mesh copy, bins)
+  distanceMs: number; // building the head's distance grid
+  headBytes: number; // what the head keeps in wasm memory (sampler + distance grid)
+  distanceCells: number;
+  inUseBytes: number; // bytes malloc has handed out in the module (its whole state)
+}
+
 /** Engine with extras beyond SolverEngine (timings, root count). */
 export type WasmSolverEngine = SolverEngine & {
   setScalpMask(scalp: Uint8Array): void;
+  headStats(): HeadStats;
   growMs(): number;
   rootCount(): number;
   scalpAvoidance(opts?: ScalpAvoidanceOptions): ScalpAvoidanceResult;
