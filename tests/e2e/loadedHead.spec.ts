@@ -96,6 +96,11 @@ test('the session file carries the head; a link alone asks for it', async ({ pag
   await other.waitForFunction(() => window.hairsketch.head().missing !== null);
   await expect(other.getByTestId('status')).toContainText('bust.obj');
   expect((await headInfo(other)).missing).toBe('bust.obj');
+  // and offers Open head: the Head panel opens with it
+  const panel = other.getByRole('region', { name: 'Head' });
+  await expect(panel).toBeVisible();
+  await expect(panel).toContainText('bust.obj');
+  await expect(panel.getByRole('button', { name: 'Open head…' })).toBeVisible();
 
   // the saved file brings the head along
   const third = await (await browser.newContext()).newPage();

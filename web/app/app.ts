@@ -71,6 +71,11 @@ export function startApp(): void {
     error: (m) => status.error(m),
     task: (m) => status.task(m),
     taskDone: (m, failed) => status.taskDone(m, failed),
+    offerOpenHead: () => {
+      if (!headPanel?.open) headPanel?.toggle();
+      showHeadPanel();
+      toolbar.refresh();
+    },
     headChanged: () => showHeadPanel(), // the bridge re-solves on the new head itself
   });
 

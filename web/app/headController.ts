@@ -36,6 +36,8 @@ export interface HeadControllerDeps {
   /** Long work under way (a stored head being read), and its end. */
   task(text: string): void;
   taskDone(message: string, failed?: boolean): void;
+  /** The session's head is not stored: offer Open head (the Head panel). */
+  offerOpenHead?(): void;
   /** After the head changed (grid fitting, overlays). */
   headChanged?(head: Head): void;
 }
@@ -208,6 +210,7 @@ export class HeadController {
         this.d.error(
           `This session needs the head “${ref.name}”, which this browser has not stored. Open head to load that file; until then the hair grows on the head shown.`,
         );
+        this.d.offerOpenHead?.();
         return;
       }
       this.d.task(`Loading the head “${ref.name}”…`);
