@@ -14,8 +14,8 @@ import type * as THREE from 'three';
 import type { Editor } from '../editor/editor';
 import type { Head } from '../head/head';
 import type { HeadStore } from '../head/headStore';
-import { hashHeadBytes } from '../head/headStore';
-import { type Axis, type LoadedHead, loadHeadFile, rotateLoadedHead } from '../head/loadHead';
+import { hashHeadBytes, loadHeadRef } from '../head/headStore';
+import { type Axis, type LoadedHead, loadHeadFile } from '../head/loadHead';
 import { applyScalpPaint, forEachCovered, type ScalpPaintStroke } from '../head/scalpPaint';
 import { fitSymmetryPlane } from '../head/symmetryPlane';
 import type { HeadRef, ScalpStroke, SessionState } from '../model/session';
@@ -215,15 +215,14 @@ export class HeadController {
       }
       this.d.task(`Loading the head “${ref.name}”…`);
       const t0 = performance.now();
-      const r = await loadHeadFile(stored.name, stored.bytes, { up: ref.up });
+      const r = await loadHeadRef(ref, stored.bytes);
       if (gen !== this.generation) return;
       if (!r.ok) {
         this.key = key;
         this.d.taskDone(`The stored head “${ref.name}” could not be read: ${r.error}.`, true);
         return;
       }
-      let loaded: LoadedHead = r.head;
-      for (const t of ref.turns) loaded = rotateLoadedHead(loaded, t.axis, t.quarterTurns);
+      const loaded: LoadedHead = r.head;
       this.d.taskDone(`Head “${ref.name}” loaded (${Math.round(performance.now() - t0)} ms).`);
       prepared = this.prepare(loaded);
       this.remember(key, prepared);

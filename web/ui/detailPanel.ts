@@ -13,6 +13,7 @@ import {
 } from '../model/detail';
 import type { SessionState, StyleCurve } from '../model/session';
 import type { GrowthParams } from '../solver/protocol';
+import { numberInput } from './numberInput';
 
 /** Roots the built-in head's scalp gives at 1° × 1° sampling (S5.1): the strand count scales
  *  with 1 / (θ step · φ step). */
@@ -43,25 +44,6 @@ export interface DetailPanel {
   readonly open: boolean;
   toggle(): void;
   show(session: SessionState, selected: StyleCurve | null): void;
-}
-
-function numberInput(
-  spec: Pick<DetailParamSpec, 'min' | 'max' | 'step'>,
-  value: number,
-  onValue: (v: number) => void,
-): HTMLInputElement {
-  const input = document.createElement('input');
-  input.type = 'number';
-  input.min = String(spec.min);
-  input.max = String(spec.max);
-  input.step = String(spec.step);
-  input.value = String(Math.round(value * 1e4) / 1e4);
-  input.addEventListener('change', () => {
-    const v = Number(input.value);
-    if (input.value.trim() === '' || !Number.isFinite(v)) return;
-    onValue(Math.min(spec.max, Math.max(spec.min, v)));
-  });
-  return input;
 }
 
 export function buildDetailPanel(root: HTMLElement, events: DetailPanelEvents): DetailPanel {

@@ -6,6 +6,7 @@ import { planeAngles, planeNormal } from '../head/symmetryPlane';
 import type { MirrorPlane } from '../model/mirror';
 import type { SessionState } from '../model/session';
 import { BRUSH_RADIUS } from '../tools/scalpBrushTool';
+import { type NumberRange, numberInput } from './numberInput';
 
 type Axis = 'x' | 'y' | 'z';
 
@@ -35,24 +36,15 @@ export interface HeadPanel {
 
 const DEG = 180 / Math.PI;
 
-function numberInput(
+/** A labelled number input (the label is its accessible name). */
+function numberRow(
   label: string,
-  range: { min: number; max: number; step: number },
+  range: NumberRange,
   value: number,
   onValue: (v: number) => void,
 ): HTMLLabelElement {
-  const input = document.createElement('input');
-  input.type = 'number';
-  input.min = String(range.min);
-  input.max = String(range.max);
-  input.step = String(range.step);
-  input.value = String(Math.round(value * 100) / 100);
+  const input = numberInput(range, value, onValue, 2);
   input.setAttribute('aria-label', label);
-  input.addEventListener('change', () => {
-    const v = Number(input.value);
-    if (input.value.trim() === '' || !Number.isFinite(v)) return;
-    onValue(Math.min(range.max, Math.max(range.min, v)));
-  });
   const row = document.createElement('label');
   row.className = 'detail-row';
   row.append(label, input);
@@ -113,7 +105,7 @@ export function buildHeadPanel(root: HTMLElement, events: HeadPanelEvents): Head
     panel.append(
       brush,
       hint,
-      numberInput(
+      numberRow(
         'Brush radius (mm)',
         { min: BRUSH_RADIUS.min * 100, max: BRUSH_RADIUS.max * 100, step: 5 },
         st.brushRadius * 100,
@@ -128,13 +120,13 @@ export function buildHeadPanel(root: HTMLElement, events: HeadPanelEvents): Head
       events.setPlane({ normal: planeNormal(y, r), offset });
     panel.append(
       mirror,
-      numberInput('Offset (mm)', { min: -200, max: 200, step: 1 }, plane.offset * 100, (mm) =>
+      numberRow('Offset (mm)', { min: -200, max: 200, step: 1 }, plane.offset * 100, (mm) =>
         set(yaw, roll, mm / 100),
       ),
-      numberInput('Yaw (°)', { min: -30, max: 30, step: 0.5 }, yaw * DEG, (d) =>
+      numberRow('Yaw (°)', { min: -30, max: 30, step: 0.5 }, yaw * DEG, (d) =>
         set(d / DEG, roll, plane.offset),
       ),
-      numberInput('Roll (°)', { min: -30, max: 30, step: 0.5 }, roll * DEG, (d) =>
+      numberRow('Roll (°)', { min: -30, max: 30, step: 0.5 }, roll * DEG, (d) =>
         set(yaw, d / DEG, plane.offset),
       ),
     );
