@@ -5,7 +5,7 @@
 // (error against a reference from a second solver instance iterated to an error estimate of
 // 1e-14; the direct-solve agreement itself is tested in tests/native/multigrid_test.cpp on
 // smaller grids), where the error estimate stops, memory. Env: MG_SYM, MG_CSYM, MG_SWEEPS,
-// MG_COARSEST override MultigridOptions.
+// MG_COARSEST override MultigridOptions; MG_THREADS=N runs the solver on N threads (parallel.hpp).
 // Usage: mg_bench [N ...]   (default 29 37 47 63)
 //        mg_bench --app BEFORE.txt AFTER.txt   an app's constraint sets ("nx ny nz" then
 //          "index tx ty tz" lines): the edit BEFORE -> AFTER as the worker runs it (warm start to
@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "mg_pcg_solver.hpp"
+#include "parallel.hpp"
 
 using namespace hairsketch;
 using Clock = std::chrono::steady_clock;
@@ -74,6 +75,7 @@ static MultigridOptions optionsFromEnv() {
   if (const char* e = std::getenv("MG_COARSEST")) mo.coarsestMaxPoints = std::atoi(e);
   if (const char* e = std::getenv("MG_CSWEEPS")) mo.coarseSweeps = std::atoi(e);
   if (const char* e = std::getenv("MG_CYCLES")) mo.coarseCycles = std::atoi(e);
+  if (const char* e = std::getenv("MG_COLOURS")) mo.colours = std::atoi(e);
   return mo;
 }
 
@@ -137,6 +139,7 @@ static int appMode(const char* before, const char* after) {
 }
 
 int main(int argc, char** argv) {
+  if (const char* e = std::getenv("MG_THREADS")) parallel::setThreadCount(std::atoi(e));
   if (argc == 4 && std::string(argv[1]) == "--app") {
     std::printf(
         "| grid | n | constraints | levels | setup ms | MB | edit ms | warm it | warm ms | warm "

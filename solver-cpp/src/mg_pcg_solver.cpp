@@ -1,10 +1,12 @@
 #include "mg_pcg_solver.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 
 #include "multigrid_transfer.hpp"
+#include "parallel.hpp"
 
 namespace hairsketch {
 namespace {
@@ -17,18 +19,33 @@ double msSince(Clock::time_point t0) {
 constexpr double kEstimateSafety = 2.0;
 constexpr double kRhoMin = 0.3, kRhoMax = 0.95, kRhoFirst = 0.9;
 
+// Vector operations on padded n x 3 arrays, in parallel. Sums are ordered reductions over
+// fixed blocks of kBlockRows rows (parallel::sumBlocks), so every thread count gives the same
+// bits: the threaded and the single-threaded wasm modules give the same field.
+constexpr size_t kBlockRows = 2048;
+constexpr size_t kGrainBlocks = 4;  // blocks per thread at least (~100K values)
+
 // Column-wise dot products of two padded n x 3 arrays.
 void dots3(const std::vector<double>& a, const std::vector<double>& b, double out[3]) {
-  double s0 = 0, s1 = 0, s2 = 0;
-  const size_t n = a.size() / 3;
-  for (size_t i = 0; i < n; ++i) {
-    s0 += a[3 * i] * b[3 * i];
-    s1 += a[3 * i + 1] * b[3 * i + 1];
-    s2 += a[3 * i + 2] * b[3 * i + 2];
-  }
-  out[0] = s0;
-  out[1] = s1;
-  out[2] = s2;
+  const double* pa = a.data();
+  const double* pb = b.data();
+  const auto s =
+      parallel::sumBlocks<3>(a.size() / 3, kBlockRows, kGrainBlocks, [&](size_t i0, size_t i1) {
+        double s0 = 0, s1 = 0, s2 = 0;
+        for (size_t i = i0; i < i1; ++i) {
+          s0 += pa[3 * i] * pb[3 * i];
+          s1 += pa[3 * i + 1] * pb[3 * i + 1];
+          s2 += pa[3 * i + 2] * pb[3 * i + 2];
+        }
+        return std::array<double, 3>{s0, s1, s2};
+      });
+  for (int c = 0; c < 3; ++c) out[c] = s[c];
+}
+
+// fn(i0, i1) over row ranges in parallel chunks (no reduction).
+template <class F>
+void forRows(size_t rows, F&& fn) {
+  parallel::forRange(0, rows, kBlockRows * kGrainBlocks, fn);
 }
 
 }  // namespace
@@ -166,9 +183,13 @@ bool MgPcgSolver::forgetWarmStart() {
 
 Status MgPcgSolver::startRun() {
   mg_.applyFine(x_.data(), q_.data());
-  for (size_t i = 0; i < r_.size(); ++i) r_[i] = b_[i] - q_[i];
+  forRows(r_.size() / 3, [&](size_t i0, size_t i1) {
+    for (size_t i = 3 * i0; i < 3 * i1; ++i) r_[i] = b_[i] - q_[i];
+  });
   mg_.vcycle(r_.data(), z_.data());
-  p_ = z_;
+  forRows(p_.size() / 3, [&](size_t i0, size_t i1) {
+    std::copy(z_.begin() + 3 * i0, z_.begin() + 3 * i1, p_.begin() + 3 * i0);
+  });
   dots3(r_, z_, gamma_);
   double bb[3];
   dots3(b_, b_, bb);
@@ -195,15 +216,11 @@ void MgPcgSolver::updateEstimate() {
     const double e = h.back() * rho / (1.0 - rho);
     est2 += e * e;
   }
-  double xx[3];
-  dots3(x_, x_, xx);
-  const double xn = std::sqrt(xx[0] + xx[1] + xx[2]);
+  const double xn = std::sqrt(xx_[0] + xx_[1] + xx_[2]);
   const double est = kEstimateSafety * std::sqrt(est2);
   progress_.errorEstimate =
       est == 0 ? 0 : (xn > 0 ? est / xn : std::numeric_limits<double>::infinity());
-  double rr[3];
-  dots3(r_, r_, rr);
-  progress_.relResidual = bnorm2_ > 0 ? std::sqrt((rr[0] + rr[1] + rr[2]) / bnorm2_) : 0;
+  progress_.relResidual = bnorm2_ > 0 ? std::sqrt((rr_[0] + rr_[1] + rr_[2]) / bnorm2_) : 0;
 }
 
 Status MgPcgSolver::iterate(int maxIterations, double tolerance, MgProgress* out) {
@@ -226,20 +243,46 @@ Status MgPcgSolver::iterate(int maxIterations, double tolerance, MgProgress* out
   };
   while (done < maxIterations && !(tolerance > 0 && isConverged())) {
     mg_.applyFine(p_.data(), q_.data());
+    // p.q and p.p in one pass
+    const double* pv = p_.data();
+    const double* qv = q_.data();
+    const auto pqpp =
+        parallel::sumBlocks<6>(rows, kBlockRows, kGrainBlocks, [&](size_t i0, size_t i1) {
+          std::array<double, 6> s{};
+          for (size_t i = i0; i < i1; ++i)
+            for (int c = 0; c < 3; ++c) {
+              const double pc = pv[3 * i + c];
+              s[c] += pc * qv[3 * i + c];
+              s[3 + c] += pc * pc;
+            }
+          return s;
+        });
     double pq[3], pp[3], alpha[3];
-    dots3(p_, q_, pq);
-    dots3(p_, p_, pp);
+    for (int c = 0; c < 3; ++c) pq[c] = pqpp[c], pp[c] = pqpp[3 + c];
     for (int c = 0; c < 3; ++c) {
       alpha[c] = (gamma_[c] > 0 && pq[c] > 0 && std::isfinite(gamma_[c] / pq[c]))
                      ? gamma_[c] / pq[c]
                      : 0.0;
       steps_[c].push_back(std::abs(alpha[c]) * std::sqrt(pp[c]));
     }
-    for (size_t i = 0; i < rows; ++i)
-      for (int c = 0; c < 3; ++c) {
-        x_[3 * i + c] += alpha[c] * p_[3 * i + c];
-        r_[3 * i + c] -= alpha[c] * q_[3 * i + c];
-      }
+    // x += alpha p, r -= alpha q, and x.x, r.r of the results (for the estimate)
+    double* xv = x_.data();
+    double* rv = r_.data();
+    const auto xxrr =
+        parallel::sumBlocks<6>(rows, kBlockRows, kGrainBlocks, [&](size_t i0, size_t i1) {
+          std::array<double, 6> s{};
+          for (size_t i = i0; i < i1; ++i)
+            for (int c = 0; c < 3; ++c) {
+              const double xc = xv[3 * i + c] + alpha[c] * pv[3 * i + c];
+              const double rc = rv[3 * i + c] - alpha[c] * qv[3 * i + c];
+              xv[3 * i + c] = xc;
+              rv[3 * i + c] = rc;
+              s[c] += xc * xc;
+              s[3 + c] += rc * rc;
+            }
+          return s;
+        });
+    for (int c = 0; c < 3; ++c) xx_[c] = xxrr[c], rr_[c] = xxrr[3 + c];
     mg_.vcycle(r_.data(), z_.data());
     double g[3], beta[3];
     dots3(r_, z_, g);
@@ -247,8 +290,12 @@ Status MgPcgSolver::iterate(int maxIterations, double tolerance, MgProgress* out
       beta[c] = (gamma_[c] > 0 && alpha[c] != 0) ? g[c] / gamma_[c] : 0.0;
       gamma_[c] = alpha[c] != 0 ? g[c] : 0.0;
     }
-    for (size_t i = 0; i < rows; ++i)
-      for (int c = 0; c < 3; ++c) p_[3 * i + c] = z_[3 * i + c] + beta[c] * p_[3 * i + c];
+    const double* zv = z_.data();
+    double* pw = p_.data();
+    forRows(rows, [&](size_t i0, size_t i1) {
+      for (size_t i = i0; i < i1; ++i)
+        for (int c = 0; c < 3; ++c) pw[3 * i + c] = zv[3 * i + c] + beta[c] * pw[3 * i + c];
+    });
     ++done;
     ++progress_.iterations;
     updateEstimate();

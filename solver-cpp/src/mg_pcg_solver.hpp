@@ -1,7 +1,9 @@
 // FieldSolver "fast": conjugate gradients on (D^T D + omega^2 S) T = omega^2 S C (SPEC S2.3),
 // preconditioned by one symmetric geometric multigrid V-cycle per iteration
 // (multigrid_hierarchy.hpp), three right-hand sides (x, y, z) run together, warm-started from
-// the previous field.
+// the previous field. Every loop runs in parallel on parallel.hpp's threads (the V-cycle's, and
+// the CG vector operations with their dot products as ordered sums over fixed blocks), so any
+// thread count gives the same bits.
 //
 // Stopping. The relative residual is useless here (field error ~ 2e4 x it at 37^3, and the factor
 // grows like N^4 with the grid). Instead each column tracks the CG step lengths
@@ -96,7 +98,8 @@ class MgPcgSolver : public FieldSolver {
   bool runActive_ = false;
   double gamma_[3] = {0, 0, 0};
   double bnorm2_ = 0;
-  std::vector<double> steps_[3];  // u_k per column
+  double xx_[3] = {0, 0, 0}, rr_[3] = {0, 0, 0};  // column norms^2 of x and r (after an update)
+  std::vector<double> steps_[3];                  // u_k per column
   MgProgress progress_;
   SolveStats stats_;
 };

@@ -5,6 +5,13 @@
 // layer (ghost rows are always zero), so the 6-neighbour loops need no boundary tests; D and D^T
 // use a precomputed 1/|N(q)| per point (0 on ghosts). Gauss-Seidel keeps L = D x up to date, so
 // one point update reads and writes only 7 rows of L instead of the 25-point row of D^T D.
+// Smoothing is Gauss-Seidel in plane-multicolour order on every level: z planes k and k + C are
+// independent when the operator couples planes at most C - 1 apart (C >= 3 on the fine level and
+// the Galerkin levels; MultigridOptions::colours, 5), so colour c = the planes k = c mod C, swept
+// colour after colour, the planes of a colour in parallel (parallel.hpp), each plane
+// lexicographically. Every loop of a
+// V-cycle runs in parallel over planes or rows, each value computed as in a serial loop, so a
+// V-cycle gives the same bits with any thread count.
 // Levels l >= 1 are Galerkin operators A_{l+1} = P_l^T A_l P_l (A_1 = (D P_0)^T (D P_0) + P_0^T W
 // P_0) in CSR; the coarsest (at most `coarsestMaxPoints` points) is factored densely (LL^T).
 // A penalty change at fine point p by delta changes every coarse operator by delta * v v^T, v the
@@ -47,6 +54,12 @@ struct MultigridOptions {
   // Coarse corrections per visit of a coarse level l >= 1 (1: V-cycle, 2: W-cycle). The fine
   // level is always corrected once; the coarsest is solved exactly, once.
   int coarseCycles = 1;
+  // Plane colours of the Gauss-Seidel sweeps on every level (at least the 3 that decouple the
+  // planes of a colour). More colours sweep more like the lexicographic order: with 3, CG needed
+  // up to one iteration more than the lexicographic sweep (50K app grid 45 -> 46, 250K 50 -> 51,
+  // mg_bench 47^3 41 -> 42); with 5 it needs the same counts on every benchmark (mg_bench 29-47,
+  // --app 25K/50K/250K), and 5 still leaves 12-15 planes per colour at 250K for the threads.
+  int colours = 5;
 };
 
 class MultigridHierarchy {
@@ -93,13 +106,20 @@ class MultigridHierarchy {
   size_t memoryBytes() const;
 
  private:
+  // One colour pass of a Gauss-Seidel sweep: the planes of `colour`, rows forward or backward.
+  struct ColourPass {
+    int colour = 0;
+    bool forward = true;
+  };
   struct Level {
     int nx = 0, ny = 0, nz = 0;
-    Csr A;                          // l >= 1, or l = 0 when it is the only level
-    std::vector<double> base;       // A.val with W = 0 (resetPenalties)
-    std::vector<int64_t> diagPos;   // position of A(i, i) in A.val
-    std::vector<double> invDiag;    // 1 / A(i, i)
-    std::vector<double> x, b, res;  // n x 3 work vectors (l >= 1)
+    Csr A;                                      // l >= 1, or l = 0 when it is the only level
+    std::vector<double> base;                   // A.val with W = 0 (resetPenalties)
+    std::vector<int64_t> diagPos;               // position of A(i, i) in A.val
+    std::vector<double> invDiag;                // 1 / A(i, i)
+    std::vector<double> x, b, res;              // n x 3 work vectors (l >= 1)
+    int colours = 1;                            // planes k and k + colours never couple in A
+    std::vector<ColourPass> prePlan, postPlan;  // smoothing (levels between fine and coarsest)
   };
   struct Fine {
     int px = 0, py = 0, pz = 0;
@@ -118,17 +138,24 @@ class MultigridHierarchy {
     double w[2] = {0, 0};
   };
 
+  // Colours of the fine level: its 25-point operator couples planes at most 2 apart.
+  static constexpr int kFineColours = 3;
+  static void appendSweep(std::vector<ColourPass>& plan, int colours, bool forward);
+  // Pre-smoothing (pre) or its adjoint, the post-smoothing, as colour passes.
+  static std::vector<ColourPass> smoothingPlan(int colours, int sweeps, bool symmetric, bool pre);
+
   void computeL(const double* x, double* L) const;
   Status addPenaltyToLevels(int p, double delta);
-  void fineSweep(bool forward, double* x, const double* b);
+  void fineSweepPlane(int k, bool forward, double* x, const double* b);
+  void fineColourPass(int colour, bool forward, double* x, const double* b);
   void fineResidual(const double* x, const double* b, double* res) const;
-  void coarseSweep(int l, bool forward);
+  void coarseColourPass(int l, int colour, bool forward);
   void coarseResidual(int l);
   void cycle(int l);
   void solveCoarsest();
   Status refactorCoarsest();
   bool updateCoarsest();
-  static void finishLevel(Level& lv);
+  static void finishLevel(Level& lv, int minColours);
   // A penalty change at the coarsest level: delta * v v^T on at most 8 entries.
   struct CoarseTerm {
     int count = 0;
@@ -140,6 +167,8 @@ class MultigridHierarchy {
   Grid grid_;
   MultigridOptions opt_;
   Fine fine_;
+  int fineColours_ = kFineColours;
+  std::vector<ColourPass> finePre_, finePost_;
   std::vector<Level> levels_;
   std::vector<Transfer3D> transfers_;
   std::vector<std::vector<Comp1>> compX_, compY_, compZ_;  // per level

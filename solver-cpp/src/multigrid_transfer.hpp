@@ -8,14 +8,30 @@
 // from level to level, so the composite P of several levels also has at most 2 weights per axis.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
 #include "multigrid_sparse.hpp"
+#include "parallel.hpp"
 
 namespace hairsketch {
 
 int coarsenedSize(int n);
+
+// Values (doubles read or written) a parallel chunk should at least handle: below that a loop
+// runs serially, as waking a thread costs more than the work (tens of microseconds in wasm).
+constexpr int64_t kMinParallelValues = 32768;
+
+// fn(k0, k1) over planes [0, planes) (or any items) each costing about `perPlane` values, in
+// parallel chunks of at least kMinParallelValues values. Every item is handled exactly as in a
+// serial loop, so a caller whose items are independent gets the same bits with any thread count.
+template <class F>
+void forPlanes(int64_t planes, int64_t perPlane, F&& fn) {
+  const int64_t grain = std::max<int64_t>(1, kMinParallelValues / std::max<int64_t>(perPlane, 1));
+  parallel::forRange(0, size_t(std::max<int64_t>(planes, 0)), size_t(grain),
+                     [&](size_t b, size_t e) { fn(int64_t(b), int64_t(e)); });
+}
 
 // 1D weights: fine index i -> w0[i] * coarse[i0[i]] + w1[i] * coarse[i1[i]] (w1 = 0, i1 = i0
 // when i coincides with a coarse node).
@@ -48,6 +64,8 @@ struct TransferWork {
   std::vector<double> t1, t2;
 };
 
+// Both run in parallel over z planes (each output value is computed by one thread, in the same
+// order as serially).
 // fine += P coarse; coarse is dense (x.nc * y.nc * z.nc rows of 3), fine in `layout`.
 void prolongAdd(const Transfer3D& t, const double* coarse, double* fine, const BoxLayout& layout,
                 TransferWork& work);

@@ -7,8 +7,10 @@
 //
 // The thread count is 1 (serial) until setThreadCount() raises it. A loop split with forChunks
 // gets contiguous chunks [begin, end) in index order, so a caller that writes per-chunk results
-// and joins them in chunk order gets output independent of the thread count. A parallel loop
-// started from inside a parallel loop (or while another thread runs one) runs serially.
+// and joins them in chunk order gets output independent of the thread count; sumBlocks does that
+// for sums (fixed blocks, added in block order). A parallel loop started from inside a parallel
+// loop (or while another thread runs one) runs serially. The caller takes part in its loop and
+// never waits for a worker that has not started a task (on a loaded machine it does them all).
 //
 // Adopting it in a loop over n independent items:
 //   hairsketch::parallel::forRange(0, n, 4096, [&](size_t b, size_t e) {
@@ -17,16 +19,18 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
+#include <vector>
 
 #if !defined(__EMSCRIPTEN__) || defined(__EMSCRIPTEN_PTHREADS__)
 #define HAIRSKETCH_HAS_THREADS 1
 #include <condition_variable>
 #include <mutex>
 #include <thread>
-#include <vector>
 #else
 #define HAIRSKETCH_HAS_THREADS 0
 #endif
@@ -62,7 +66,9 @@ class ThreadPool {
 
   /** Runs task(0) … task(tasks - 1), each once, on the pool and the caller; returns when all
    *  are done. Serial when the pool has one thread, when called from a pool thread or while
-   *  another loop runs. */
+   *  another loop runs. Tasks are claimed one at a time, so the caller does them all itself
+   *  when the workers are slow to wake (a loaded machine) and then waits only for tasks a
+   *  worker has started, never for a worker that has not woken yet. */
   void run(int tasks, const std::function<void(int)>& task) {
     if (tasks <= 0) return;
     std::unique_lock<std::mutex> run(runMutex_, std::try_to_lock);
@@ -70,22 +76,27 @@ class ThreadPool {
       for (int t = 0; t < tasks; ++t) task(t);
       return;
     }
+    dispatched_.fetch_add(1, std::memory_order_relaxed);
+    task_.store(&task, std::memory_order_relaxed);
+    tasks_.store(tasks, std::memory_order_relaxed);
+    done_.store(0, std::memory_order_relaxed);
+    const uint64_t gen = ++generation_;
+    state_.store(gen << 32, std::memory_order_release);  // publishes the three above
     {
       std::lock_guard<std::mutex> lock(mutex_);
-      task_ = &task;
-      tasks_ = tasks;
-      next_.store(0);
-      busy_ = int(workers_.size());
-      ++generation_;
+      wakeGen_ = gen;
     }
     wake_.notify_all();
     insideLoop() = true;
-    work();
+    work(gen);
     insideLoop() = false;
+    if (done_.load(std::memory_order_acquire) == tasks) return;
     std::unique_lock<std::mutex> lock(mutex_);
-    done_.wait(lock, [this] { return busy_ == 0; });
-    task_ = nullptr;
+    finished_.wait(lock, [&] { return done_.load(std::memory_order_acquire) == tasks; });
   }
+
+  /** Loops handed to the workers so far (tests: did a loop really run in parallel?). */
+  unsigned long long dispatched() const { return dispatched_.load(std::memory_order_relaxed); }
 
   ~ThreadPool() {
     std::lock_guard<std::mutex> run(runMutex_);
@@ -100,23 +111,39 @@ class ThreadPool {
     return inside;
   }
 
-  void work() {
-    for (int t = next_.fetch_add(1); t < tasks_; t = next_.fetch_add(1)) (*task_)(t);
+  // Claims and runs tasks of loop `gen` until none is left. state_ holds the loop's generation
+  // (high 32 bits) and its next unclaimed task (low 32): a claim is a compare-and-swap on both,
+  // so a late worker can never take a task of a newer loop with the older loop's function.
+  void work(uint64_t gen) {
+    uint64_t s = state_.load(std::memory_order_acquire);
+    for (;;) {
+      if ((s >> 32) != gen) return;
+      const int tasks = tasks_.load(std::memory_order_relaxed);
+      const int t = int(uint32_t(s));
+      if (t >= tasks) return;
+      if (!state_.compare_exchange_weak(s, s + 1, std::memory_order_acq_rel,
+                                        std::memory_order_acquire))
+        continue;  // s reloaded
+      (*task_.load(std::memory_order_relaxed))(t);
+      if (done_.fetch_add(1, std::memory_order_acq_rel) + 1 == tasks) {
+        std::lock_guard<std::mutex> lock(mutex_);
+        finished_.notify_all();
+      }
+      s = state_.load(std::memory_order_acquire);
+    }
   }
 
   void workerLoop() {
     insideLoop() = true;
-    unsigned long long seen = 0;
+    uint64_t seen = 0;
     for (;;) {
       {
         std::unique_lock<std::mutex> lock(mutex_);
-        wake_.wait(lock, [&] { return stop_ || generation_ != seen; });
+        wake_.wait(lock, [&] { return stop_ || wakeGen_ != seen; });
         if (stop_) return;
-        seen = generation_;
+        seen = wakeGen_;
       }
-      work();
-      std::lock_guard<std::mutex> lock(mutex_);
-      if (--busy_ == 0) done_.notify_one();
+      work(seen);
     }
   }
 
@@ -132,13 +159,15 @@ class ThreadPool {
 
   std::mutex runMutex_;  // one loop at a time
   std::mutex mutex_;
-  std::condition_variable wake_, done_;
+  std::condition_variable wake_, finished_;
   std::vector<std::thread> workers_;
-  const std::function<void(int)>* task_ = nullptr;
-  int tasks_ = 0;
-  std::atomic<int> next_{0};
-  int busy_ = 0;
-  unsigned long long generation_ = 0;
+  std::atomic<const std::function<void(int)>*> task_{nullptr};
+  std::atomic<int> tasks_{0};
+  std::atomic<int> done_{0};
+  std::atomic<uint64_t> state_{0};  // generation << 32 | next task
+  std::atomic<unsigned long long> dispatched_{0};
+  uint64_t generation_ = 0;  // the caller's (under runMutex_)
+  uint64_t wakeGen_ = 0;     // the newest loop, for sleeping workers (under mutex_)
   bool stop_ = false;
 };
 
@@ -147,6 +176,8 @@ inline int setThreadCount(int n) { return ThreadPool::instance().resize(n); }
 inline void runTasks(int tasks, const std::function<void(int)>& task) {
   ThreadPool::instance().run(tasks, task);
 }
+/** Loops that ran on the pool's workers so far (not those run serially). */
+inline unsigned long long dispatchedLoops() { return ThreadPool::instance().dispatched(); }
 
 #else  // single-threaded wasm: everything serial
 
@@ -155,6 +186,7 @@ inline int setThreadCount(int) { return 1; }
 inline void runTasks(int tasks, const std::function<void(int)>& task) {
   for (int t = 0; t < tasks; ++t) task(t);
 }
+inline unsigned long long dispatchedLoops() { return 0; }
 
 #endif
 
@@ -183,6 +215,25 @@ void forRange(size_t begin, size_t end, size_t grain, F&& fn) {
     return;
   }
   forChunks(n, chunks, [&](int, size_t b, size_t e) { fn(begin + b, begin + e); });
+}
+
+/** Ordered reduction: fn(b, e) returns K partial sums over items [b, e); [0, n) is cut into
+ *  fixed blocks of `block` items (independent of the thread count), the blocks are summed in
+ *  parallel (groups of at least `grainBlocks` blocks per thread) and their sums added in block
+ *  order, so the result has the same bits with any thread count. */
+template <size_t K, class F>
+std::array<double, K> sumBlocks(size_t n, size_t block, size_t grainBlocks, F&& fn) {
+  std::array<double, K> total{};
+  if (n == 0) return total;
+  block = std::max<size_t>(block, 1);
+  const size_t blocks = (n + block - 1) / block;
+  std::vector<std::array<double, K>> part(blocks);
+  forRange(0, blocks, grainBlocks, [&](size_t b, size_t e) {
+    for (size_t k = b; k < e; ++k) part[k] = fn(k * block, std::min(n, (k + 1) * block));
+  });
+  for (const std::array<double, K>& p : part)
+    for (size_t c = 0; c < K; ++c) total[c] += p[c];
+  return total;
 }
 
 }  // namespace parallel

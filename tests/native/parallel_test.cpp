@@ -1,5 +1,7 @@
-// The thread pool (parallel.hpp): every index once, chunks in order, nested loops serial; and
-// growth (strands and keepOutsideHead) giving the same bytes with 1, 2 and 3 threads.
+// The thread pool (parallel.hpp): every index once, chunks in order, nested loops serial,
+// ordered sums; growth (strands and keepOutsideHead) and the multigrid solve ("fast": threaded
+// sweeps, transfers, mat-vecs and CG vector operations) giving the same bytes with 1, 2 and 3
+// threads.
 #include "parallel.hpp"
 
 #include <gtest/gtest.h>
@@ -7,9 +9,12 @@
 #include <atomic>
 #include <cmath>
 #include <cstring>
+#include <random>
+#include <set>
 #include <vector>
 
 #include "head_distance.hpp"
+#include "mg_pcg_solver.hpp"
 #include "sphere_mesh.hpp"
 #include "strand_growth.hpp"
 
@@ -59,6 +64,137 @@ TEST(Parallel, NestedLoopsRunSeriallyAndManyLoopsInARowFinish) {
   std::atomic<int> count{0};
   for (int k = 0; k < 2000; ++k) parallel::forChunks(2, 2, [&](int, size_t, size_t) { ++count; });
   EXPECT_EQ(count.load(), 4000);
+}
+
+TEST(Parallel, EveryTaskOnceInManyShortLoops) {
+  // Loops much shorter than a worker's wake-up: the caller claims what the workers have not, and
+  // a late worker must never run a task of a newer loop with an older loop's function.
+  Threads t(3);
+  std::vector<std::atomic<int>> hits(7);
+  const unsigned long long before = parallel::dispatchedLoops();
+  for (int loop = 1; loop <= 5000; ++loop) {
+    const int tasks = 2 + loop % 6;
+    parallel::runTasks(tasks, [&](int k) { hits[size_t(k)].fetch_add(1); });
+    for (int k = 0; k < tasks; ++k) ASSERT_EQ(hits[size_t(k)].exchange(0), 1) << loop;
+    for (int k = tasks; k < 7; ++k) ASSERT_EQ(hits[size_t(k)].load(), 0) << loop;
+  }
+  EXPECT_EQ(parallel::dispatchedLoops() - before, 5000u);
+}
+
+TEST(Parallel, SumBlocksAddsFixedBlocksInOrder) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<double> v(100003);
+  for (double& x : v) x = u(rng) * std::pow(10.0, double(int(rng() % 13)) - 6);
+  const size_t block = 1000;
+  // the reference: each block summed in index order, the block sums added in block order
+  double ref0 = 0, ref1 = 0;
+  for (size_t b = 0; b < v.size(); b += block) {
+    double s0 = 0, s1 = 0;
+    for (size_t i = b; i < std::min(v.size(), b + block); ++i) s0 += v[i], s1 += v[i] * v[i];
+    ref0 += s0;
+    ref1 += s1;
+  }
+  for (int threads : {1, 2, 3}) {
+    Threads t(threads);
+    const auto s = parallel::sumBlocks<2>(v.size(), block, 2, [&](size_t b, size_t e) {
+      double s0 = 0, s1 = 0;
+      for (size_t i = b; i < e; ++i) s0 += v[i], s1 += v[i] * v[i];
+      return std::array<double, 2>{s0, s1};
+    });
+    EXPECT_EQ(std::memcmp(&s[0], &ref0, sizeof(double)), 0) << threads << " threads";
+    EXPECT_EQ(std::memcmp(&s[1], &ref1, sizeof(double)), 0) << threads << " threads";
+  }
+}
+
+namespace {
+
+// Constraints along a random walk of unit steps with momentum (grid units): the 8 corners of the
+// cell round each sample get its direction.
+void addWalk(const Grid& g, std::mt19937& rng, int count, std::vector<Constraint>& out,
+             std::set<int>& used) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::normal_distribution<double> nrm(0.0, 0.3);
+  Eigen::Vector3d p(u(rng) * (g.nx - 1), u(rng) * (g.ny - 1), u(rng) * (g.nz - 1));
+  Eigen::Vector3d d = Eigen::Vector3d(nrm(rng), nrm(rng), 1).normalized();
+  int added = 0;
+  for (int guard = 0; added < count && guard < 20000; ++guard) {
+    d = (d + Eigen::Vector3d(nrm(rng), nrm(rng), nrm(rng))).normalized();
+    p += 0.7 * d;
+    for (int a = 0; a < 3; ++a) {
+      const double hi = (a == 0 ? g.nx : a == 1 ? g.ny : g.nz) - 1.001;
+      if (p[a] < 0 || p[a] > hi) d[a] = -d[a], p[a] = std::clamp(p[a], 0.0, hi);
+    }
+    for (int c = 0; c < 8 && added < count; ++c) {
+      const int i = std::min(int(p[0]) + (c & 1), g.nx - 1),
+                j = std::min(int(p[1]) + (c >> 1 & 1), g.ny - 1),
+                k = std::min(int(p[2]) + (c >> 2 & 1), g.nz - 1);
+      if (used.insert(g.index(i, j, k)).second) {
+        out.push_back({g.index(i, j, k), d});
+        ++added;
+      }
+    }
+  }
+}
+
+}  // namespace
+
+TEST(Parallel, MultigridSolveGivesTheSameBytesWithAnyThreadCount) {
+  // 40 x 36 x 44 (63K points, 4 levels): large enough that the sweeps, transfers, mat-vecs and
+  // CG sums of the fine and first coarse levels run in parallel chunks. An edit sequence as the
+  // app runs it: a solve, an edit warm-started, the history-free final solve from zero.
+  Grid g;
+  g.nx = 40;
+  g.ny = 36;
+  g.nz = 44;
+  std::mt19937 rng(11);
+  std::vector<Constraint> a;
+  std::set<int> used;
+  for (int c = 0; c < 8; ++c) addWalk(g, rng, 150, a, used);
+  std::vector<Constraint> b(a.begin() + 300, a.end());  // a curve and a half removed
+  addWalk(g, rng, 400, b, used);                        // a new one
+  const ConstraintSet A = normalizeConstraints(a), B = normalizeConstraints(b);
+  // 12 iterations per phase (the bits do not need convergence; the estimate's path does run).
+  auto solve = [&](int threads, unsigned long long& loops) {
+    Threads t(threads);
+    const unsigned long long before = parallel::dispatchedLoops();
+    std::vector<Field> out(3);
+    std::vector<double> estimates;
+    MgPcgSolver s;
+    MgProgress pr;
+    EXPECT_TRUE(s.setGrid(g, kDefaultOmega).ok());
+    EXPECT_TRUE(s.setConstraints(A).ok());
+    EXPECT_TRUE(s.iterate(12, 0, &pr).ok());
+    s.field(out[0]);
+    estimates.push_back(pr.errorEstimate);
+    EXPECT_TRUE(s.setConstraints(B).ok());
+    EXPECT_TRUE(s.iterate(12, 0, &pr).ok());
+    s.field(out[1]);
+    estimates.push_back(pr.errorEstimate);
+    EXPECT_TRUE(s.forgetWarmStart());
+    EXPECT_TRUE(s.iterate(12, 0, &pr).ok());
+    s.field(out[2]);
+    estimates.push_back(pr.errorEstimate);
+    loops = parallel::dispatchedLoops() - before;
+    return std::make_pair(out, estimates);
+  };
+  unsigned long long loops1 = 0;
+  const auto [one, est1] = solve(1, loops1);
+  EXPECT_EQ(loops1, 0u);
+  EXPECT_LT(est1[2], 1.0);  // on its way
+  for (int threads : {2, 3}) {
+    unsigned long long loops = 0;
+    const auto [many, est] = solve(threads, loops);
+    // every CG iteration hands dozens of loops to the workers
+    EXPECT_GT(loops, 20u * 36u) << threads << " threads";
+    EXPECT_EQ(est, est1) << threads << " threads";
+    for (size_t k = 0; k < one.size(); ++k) {
+      ASSERT_EQ(many[k].size(), one[k].size());
+      EXPECT_EQ(std::memcmp(many[k].data(), one[k].data(), size_t(one[k].size()) * sizeof(double)),
+                0)
+          << threads << " threads, phase " << k;
+    }
+  }
 }
 
 TEST(Parallel, ClampsTheThreadCount) {
