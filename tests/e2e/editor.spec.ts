@@ -179,12 +179,14 @@ test.describe('on a phone-sized screen', () => {
       'Share link',
       'Save',
       'Open',
+      'Open head',
+      'Head',
       'Reset view',
     ]) {
       await more.click();
-      await expect(page.getByRole('button', { name })).toBeVisible();
+      await expect(page.getByRole('button', { name, exact: true })).toBeVisible();
       await more.click(); // closes again
-      await expect(page.getByRole('button', { name })).toBeHidden();
+      await expect(page.getByRole('button', { name, exact: true })).toBeHidden();
     }
     const after = await page.evaluate(() => document.documentElement.scrollWidth);
     expect(after).toBeLessThanOrEqual(390);

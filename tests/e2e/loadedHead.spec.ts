@@ -97,7 +97,7 @@ test('the session file carries the head; a link alone asks for it', async ({ pag
   await expect(other.getByTestId('status')).toContainText('bust.obj');
   expect((await headInfo(other)).missing).toBe('bust.obj');
   // and offers Open head: the Head panel opens with it
-  const panel = other.getByRole('region', { name: 'Head' });
+  const panel = other.getByRole('region', { name: 'Head', exact: true });
   await expect(panel).toBeVisible();
   await expect(panel).toContainText('bust.obj');
   await expect(panel.getByRole('button', { name: 'Open head…' })).toBeVisible();
@@ -227,7 +227,7 @@ test('Mirror on a loaded head reflects across its fitted plane; Rotate turns it,
   const before = await extents();
   expect(before[1]).toBeGreaterThan(before[0] + 0.3);
   await page.getByRole('button', { name: 'Head', exact: true }).click();
-  const panel = page.getByRole('region', { name: 'Head' });
+  const panel = page.getByRole('region', { name: 'Head', exact: true });
   await panel.getByRole('button', { name: 'Rotate about Z' }).click();
   await page.waitForFunction(() => {
     const s = window.hairsketch.session() as { head: { turns?: unknown[] } };
