@@ -140,6 +140,15 @@ describe('computeHairLighting', () => {
     }
     // the top of the hair layer is lit
     expect(r.strand[2 * nearest(points, [0.5, 0.4, 0.5])]).toBeGreaterThan(0.9);
+    // without the head's shadow (a preview): the hair is lit the same, the head left unshadowed
+    const quick = computeHairLighting({ points, strandStart }, box, {
+      light: [0, 1, 0],
+      extinction: k,
+      resolution: 48,
+      headShadow: false,
+    });
+    expect(quick.strand).toEqual(r.strand);
+    expect(Array.from(quick.head)).toEqual(new Array(8).fill(1));
   });
 
   it('handles no hair and non-finite points', () => {

@@ -48,6 +48,10 @@ export interface HairLightingOptions {
   aoStrength?: number;
   /** Optical thickness per cell the head adds to the occlusion (0.35). */
   headAoOpacity?: number;
+  /** Compute the hair's shadow on every head vertex (step 5; default true). Previews skip it:
+   *  the view keeps the converged hair's shadow on the head while the pen moves, and on a
+   *  million-triangle head it is most of the cost. */
+  headShadow?: boolean;
 }
 
 export interface HairLightingInput {
@@ -268,7 +272,7 @@ export function computeHairLighting(
   }
 
   // ---- 5. head vertices: through the hair alone ----
-  if (head && typical > 0) {
+  if (head && typical > 0 && options.headShadow !== false) {
     const P = head.positions;
     for (let v = 0; v < headVertices; v++) {
       const gx = (P[3 * v] - ox) * inv;

@@ -261,7 +261,7 @@ export class WorkerLogic {
       strands,
       constraints: this.constraintsWithColours(),
       field: job.wantField ? this.engine.field() : null,
-      lighting: resultLighting(strands, this.head, this.opts.now),
+      lighting: resultLighting(strands, this.head, this.opts.now, final),
       stats,
       final,
     });
