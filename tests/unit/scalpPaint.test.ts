@@ -2,8 +2,13 @@
 // centroid, strokes applied in order, and the default mask left alone.
 import { describe, expect, it } from 'vitest';
 import { buildHead } from '../../web/head/buildHead';
-import { applyScalpPaint, type ScalpPaintStroke } from '../../web/head/scalpPaint';
+import { applyScalpPaint, forEachCovered, type ScalpPaintStroke } from '../../web/head/scalpPaint';
 import type { Vec3 } from '../../web/model/vec3';
+import {
+  createHeadMesh,
+  headVertexColors,
+  paintHeadTriangles,
+} from '../../web/viewer/headMaterial';
 
 const mesh = buildHead();
 const T = mesh.indices.length / 3;
@@ -84,5 +89,31 @@ describe('applyScalpPaint', () => {
       if (d < 0.299) expect(erased[t]).toBe(0);
       if (d > 0.301) expect(erased[t]).toBe(mesh.scalp[t]);
     }
+  });
+
+  it('painting a stroke segment by segment recolours the head as a full recolour does', () => {
+    const head = { ...buildHead(), scalp: buildHead().scalp.slice() };
+    const view = createHeadMesh(head);
+    const pts = stroke.points;
+    for (let k = 1; k < pts.length; k++) {
+      const covered: number[] = [];
+      forEachCovered(head, { ...stroke, points: pts.slice(k - 1, k + 1) }, (t) => covered.push(t));
+      paintHeadTriangles(view, head, covered, 1);
+    }
+    const erased: number[] = [];
+    forEachCovered(head, { erase: true, radius: 0.3, points: [[0, 1, 0]] }, (t) => erased.push(t));
+    paintHeadTriangles(view, head, erased, 0);
+    // the mask is what applyScalpPaint gives, and the colours what a full pass gives
+    expect(head.scalp).toEqual(
+      applyScalpPaint(mesh, mesh.scalp, [
+        stroke,
+        { erase: true, radius: 0.3, points: [[0, 1, 0]] },
+      ]),
+    );
+    const full = headVertexColors(head);
+    const shown = view.geometry.getAttribute('color').array as Float32Array;
+    let worst = 0;
+    for (let i = 0; i < full.length; i++) worst = Math.max(worst, Math.abs(full[i] - shown[i]));
+    expect(worst).toBeLessThan(1e-6);
   });
 });

@@ -20,7 +20,7 @@ import { applyScalpPaint, forEachCovered, type ScalpPaintStroke } from '../head/
 import { fitSymmetryPlane } from '../head/symmetryPlane';
 import type { HeadRef, ScalpStroke, SessionState } from '../model/session';
 import type { ScalpMesh } from '../solver/protocol';
-import { recolorHeadScalp, setHeadGeometry } from '../viewer/headMaterial';
+import { paintHeadTriangles, recolorHeadScalp, setHeadGeometry } from '../viewer/headMaterial';
 import type { Viewer } from '../viewer/viewer';
 
 export interface HeadControllerDeps {
@@ -75,6 +75,7 @@ export class HeadController {
   private missingRef: HeadRef | null = null;
   /** The stroke being painted (its triangles shown painted before the edit is made). */
   private previewMask: Uint8Array | null = null;
+  private previewPoints = 0;
 
   constructor(
     builtin: Head,
@@ -171,20 +172,34 @@ export class HeadController {
   previewStroke(stroke: ScalpPaintStroke | null): void {
     const mesh = this.current.head.mesh;
     if (stroke === null) {
-      if (this.previewMask) mesh.scalp.set(this.previewMask);
+      // undo what the preview painted (the edit, if any, follows as a new mask)
+      if (this.previewMask) {
+        const back: number[] = [];
+        for (let t = 0; t < mesh.scalp.length; t++)
+          if (mesh.scalp[t] !== this.previewMask[t]) back.push(t);
+        for (const value of [0, 1] as const)
+          paintHeadTriangles(
+            this.d.headMesh,
+            mesh,
+            back.filter((t) => this.previewMask?.[t] === value),
+            value,
+          );
+      }
       this.previewMask = null;
-      recolorHeadScalp(this.d.headMesh, mesh);
+      this.previewPoints = 0;
       this.d.viewer.invalidateFrameCache();
       return;
     }
     this.previewMask ??= mesh.scalp.slice();
-    mesh.scalp.set(this.previewMask);
-    const v = stroke.erase ? 0 : 1;
-    forEachCovered(mesh, stroke, (t) => {
-      mesh.scalp[t] = v;
+    // points are only appended while a stroke is drawn: paint the segments not painted yet
+    const from = Math.max(0, this.previewPoints - 1);
+    this.previewPoints = stroke.points.length;
+    const covered: number[] = [];
+    forEachCovered(mesh, { ...stroke, points: stroke.points.slice(from) }, (t) => {
+      covered.push(t);
     });
-    recolorHeadScalp(this.d.headMesh, mesh);
-    this.d.viewer.invalidateFrameCache();
+    if (paintHeadTriangles(this.d.headMesh, mesh, covered, stroke.erase ? 0 : 1) > 0)
+      this.d.viewer.invalidateFrameCache();
   }
 
   private applyPaint(strokes: readonly ScalpStroke[] | undefined): void {

@@ -39,17 +39,9 @@ export function headVertexColors(
   colors: HeadColors = DEFAULT_HEAD_COLORS,
   out?: Float32Array,
 ): Float32Array {
-  const { positions, indices, scalp } = head;
+  const { positions } = head;
   const vertices = positions.length / 3;
-  const scalpCount = new Uint16Array(vertices);
-  const triCount = new Uint16Array(vertices);
-  for (let t = 0; t < scalp.length; t++) {
-    for (let c = 0; c < 3; c++) {
-      const v = indices[3 * t + c];
-      triCount[v]++;
-      if (scalp[t]) scalpCount[v]++;
-    }
-  }
+  const { scalpCount, triCount } = scalpCounts(head);
   const skin = new THREE.Color(colors.skin);
   const scalpColor = new THREE.Color(colors.scalp);
   const lips = new THREE.Color(colors.lips);
@@ -80,6 +72,22 @@ export function headVertexColors(
     rgb[3 * v + 2] = c.b;
   }
   return rgb;
+}
+
+/** Per vertex: how many of its triangles there are, and how many are scalp. */
+function scalpCounts(head: HeadMeshArrays): { scalpCount: Uint16Array; triCount: Uint16Array } {
+  const { positions, indices, scalp } = head;
+  const vertices = positions.length / 3;
+  const scalpCount = new Uint16Array(vertices);
+  const triCount = new Uint16Array(vertices);
+  for (let t = 0; t < scalp.length; t++) {
+    for (let c = 0; c < 3; c++) {
+      const v = indices[3 * t + c];
+      triCount[v]++;
+      if (scalp[t]) scalpCount[v]++;
+    }
+  }
+  return { scalpCount, triCount };
 }
 
 /** Indexed geometry with `position`, `normal` and `color` (linear RGB, headVertexColors). */
@@ -171,4 +179,43 @@ export function recolorHeadScalp(mesh: THREE.Mesh, head: HeadMeshArrays): void {
   if (!a) return;
   headVertexColors(head, DEFAULT_HEAD_COLORS, a.array as Float32Array);
   a.needsUpdate = true;
+  delete mesh.geometry.userData.scalpCounts;
+}
+
+/** Sets `triangles`' scalp flags to `value` in `head.scalp` and recolours only their vertices
+ *  (the scalp brush while it is dragged: a million-triangle head is not recoloured per move).
+ *  Returns how many flags changed. Skin vertices only (eyes and lips keep their colour). */
+export function paintHeadTriangles(
+  mesh: THREE.Mesh,
+  head: HeadMeshArrays,
+  triangles: Iterable<number>,
+  value: 0 | 1,
+  colors: HeadColors = DEFAULT_HEAD_COLORS,
+): number {
+  const a = mesh.geometry.getAttribute('color') as THREE.BufferAttribute | undefined;
+  if (!a) return 0;
+  const g = mesh.geometry;
+  g.userData.scalpCounts ??= scalpCounts(head);
+  const { scalpCount, triCount } = g.userData.scalpCounts as ReturnType<typeof scalpCounts>;
+  const rgb = a.array as Float32Array;
+  const skin = new THREE.Color(colors.skin);
+  const scalpColor = new THREE.Color(colors.scalp);
+  const c = new THREE.Color();
+  let changed = 0;
+  for (const t of triangles) {
+    if (head.scalp[t] === value) continue;
+    head.scalp[t] = value;
+    changed++;
+    for (let k = 0; k < 3; k++) {
+      const v = head.indices[3 * t + k];
+      scalpCount[v] += value ? 1 : -1;
+      if (head.parts && head.parts[v] !== HeadPart.skin) continue;
+      c.copy(skin).lerp(scalpColor, triCount[v] ? scalpCount[v] / triCount[v] : 0);
+      rgb[3 * v] = c.r;
+      rgb[3 * v + 1] = c.g;
+      rgb[3 * v + 2] = c.b;
+    }
+  }
+  if (changed) a.needsUpdate = true;
+  return changed;
 }
