@@ -1,14 +1,18 @@
 // npm run bench:threads: the threaded wasm module against the single-threaded one, same run,
-// under Node (pthreads over worker_threads): the default preset solved from scratch on a grid
-// (default 250k) and grown with N strands (default 100,000). Prints one JSON line per module
-// and the speedups. BENCH_GRID=25k|50k|100k|250k, BENCH_STRANDS=N, BENCH_THREADS=N (default:
-// min(4, logical cores)), BENCH_REPEAT=N growths per engine, BENCH_ROUNDS=N alternating rounds
-// (best of each).
+// under Node (pthreads over worker_threads).
+// 1. Solve: the default preset solved from scratch (fresh engine, the app's pipeline to 1e-6) on
+//    each grid of BENCH_SOLVE_GRIDS (default 250k,50k; the grid fitted to the curves as in the
+//    app), BENCH_SOLVE_ROUNDS alternating rounds (default 3): one JSON line per solve, then per
+//    grid the medians, the iterations and the ratio single / threaded.
+// 2. Growth: the default preset grown with N strands (default 100,000) on BENCH_GRID (default
+//    250k), BENCH_ROUNDS alternating rounds (default 2), best of BENCH_REPEAT growths per
+//    engine: one JSON line per module and the speedups (BENCH_ROUNDS=0: no growth part).
+// BENCH_THREADS=N (default: min(4, logical cores)).
 import { availableParallelism } from 'node:os';
 import { presetSession } from '../web/cli/presetSession';
 import { growSessionHair } from '../web/export/growSession';
 import { Head } from '../web/head/head';
-import { type GridPreset, gridForPreset } from '../web/model/grid';
+import { type GridPreset, gridForPreset, gridForSession } from '../web/model/grid';
 import {
   singleNodeOptions,
   stopThreadWorkers,
@@ -57,9 +61,61 @@ async function run(label: string, load: LoadOptions) {
   return out;
 }
 
+const median = (v: number[]) => {
+  const s = [...v].sort((a, b) => a - b);
+  return s.length % 2 ? s[(s.length - 1) / 2] : (s[s.length / 2 - 1] + s[s.length / 2]) / 2;
+};
+
+/** Solve only (maxStrands 1: the growth is negligible), from a fresh engine. */
+async function solveOnce(load: LoadOptions, gridName: GridPreset) {
+  const s = presetSession('default', head, gridName, 0);
+  const engine = await loadSolverEngine(load);
+  try {
+    const hair = growSessionHair(engine, s, head.scalpMesh(), {
+      grid: gridForSession(gridName, s.curves),
+      solver: 'fast',
+      maxStrands: 1,
+    });
+    return { module: engine.moduleLabel(), solveMs: hair.solveMs, iterations: hair.iterations };
+  } finally {
+    engine.dispose();
+  }
+}
+
+const threadedLoad = await threadedNodeOptions(threads);
+const solveGrids = (process.env.BENCH_SOLVE_GRIDS ?? '250k,50k').split(',') as GridPreset[];
+const solveRounds = Number(process.env.BENCH_SOLVE_ROUNDS ?? 3);
+const solveSummary = [];
+for (const g of solveGrids.filter((x) => x)) {
+  const ms = { single: [] as number[], threaded: [] as number[] };
+  const its = { single: 0, threaded: 0 };
+  for (let r = 0; r < solveRounds; r++)
+    for (const [label, load] of [
+      ['single', singleNodeOptions()],
+      ['threaded', threadedLoad],
+    ] as const) {
+      const o = await solveOnce(load, g);
+      ms[label].push(o.solveMs);
+      its[label] = o.iterations;
+      console.log(JSON.stringify({ solve: g, label, ...o, solveMs: Math.round(o.solveMs) }));
+    }
+  const single = median(ms.single);
+  const threadedMs = median(ms.threaded);
+  const line = {
+    grid: g,
+    threads,
+    rounds: solveRounds,
+    singleMedianMs: Math.round(single),
+    threadedMedianMs: Math.round(threadedMs),
+    iterations: its,
+    ratio: +(single / threadedMs).toFixed(2),
+  };
+  solveSummary.push(line);
+  console.log(JSON.stringify({ solveMedians: line }));
+}
+
 // Alternating rounds, best of each (other load on the machine hits both alike).
 const rounds = Number(process.env.BENCH_ROUNDS ?? 2);
-const threadedLoad = await threadedNodeOptions(threads);
 const best = {
   single: { solveMs: Infinity, growMs: Infinity },
   threaded: { solveMs: Infinity, growMs: Infinity },
@@ -73,12 +129,18 @@ for (let r = 0; r < rounds; r++)
     best[label].solveMs = Math.min(best[label].solveMs, o.solveMs);
     best[label].growMs = Math.min(best[label].growMs, o.growMs);
   }
-console.log(
-  JSON.stringify({
-    threads,
-    best,
-    solveSpeedup: +(best.single.solveMs / best.threaded.solveMs).toFixed(2),
-    growSpeedup: +(best.single.growMs / best.threaded.growMs).toFixed(2),
-  }),
-);
+for (const l of solveSummary)
+  console.log(
+    `solve ${l.grid}: single ${l.singleMedianMs} ms, threaded (${threads}) ${l.threadedMedianMs} ms, ` +
+      `ratio ${l.ratio} (medians of ${l.rounds}; iterations ${l.iterations.single} / ${l.iterations.threaded})`,
+  );
+if (rounds > 0)
+  console.log(
+    JSON.stringify({
+      threads,
+      best,
+      solveSpeedup: +(best.single.solveMs / best.threaded.solveMs).toFixed(2),
+      growSpeedup: +(best.single.growMs / best.threaded.growMs).toFixed(2),
+    }),
+  );
 await stopThreadWorkers();

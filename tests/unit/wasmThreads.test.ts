@@ -1,6 +1,7 @@
 // The threaded wasm module (hairsolver-mt, pthreads over node:worker_threads here) against the
 // single-threaded one: the same field to 1e-12 on the wasm test problems (tests/fixtures, every
-// solver) and the same strands bit for bit (growth and keepOutsideHead run in parallel chunks).
+// solver, and a 63K-point edit sequence where the fast solver's multigrid loops run in parallel)
+// and the same strands bit for bit (growth and keepOutsideHead run in parallel chunks).
 import { readFileSync } from 'node:fs';
 import { afterAll, describe, expect, it } from 'vitest';
 import { presetSession } from '../../web/cli/presetSession';
@@ -49,6 +50,52 @@ async function fields(load: LoadOptions, solver: string, p: Problem): Promise<Fl
   }
 }
 
+/** A 40 x 36 x 44 problem (63K points): big enough that the fast solver's sweeps, transfers,
+ *  mat-vecs and CG sums run in parallel chunks (tests/native/parallel_test.cpp counts them at
+ *  this size). Step 0: 8 random walks of 150 points (the 8 corners of the cell round each step get
+ *  its direction); step 1: the first 300 removed and a walk of 400 added. */
+function walkProblem(): Problem {
+  const grid: [number, number, number] = [40, 36, 44];
+  let seed = 11;
+  const rand = () => {
+    seed = (seed + 0x6d2b79f5) | 0;
+    let t = Math.imul(seed ^ (seed >>> 15), 1 | seed);
+    t = (t + Math.imul(t ^ (t >>> 7), 61 | t)) ^ t;
+    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
+  };
+  const used = new Set<number>();
+  const walk = (count: number): number[][] => {
+    const out: number[][] = [];
+    const p = grid.map((n) => rand() * (n - 1));
+    let d = [rand() - 0.5, rand() - 0.5, 1];
+    for (let guard = 0; out.length < count && guard < 20000; guard++) {
+      d = d.map((x) => x + 0.6 * (rand() - 0.5));
+      const len = Math.hypot(d[0], d[1], d[2]);
+      d = d.map((x) => x / len);
+      for (let a = 0; a < 3; a++) {
+        p[a] += 0.7 * d[a];
+        const hi = grid[a] - 1.001;
+        if (p[a] < 0 || p[a] > hi) {
+          d[a] = -d[a];
+          p[a] = Math.min(hi, Math.max(0, p[a]));
+        }
+      }
+      for (let c = 0; c < 8 && out.length < count; c++) {
+        const ijk = [0, 1, 2].map((a) => Math.min(Math.floor(p[a]) + ((c >> a) & 1), grid[a] - 1));
+        const key = ijk[0] + grid[0] * (ijk[1] + grid[1] * ijk[2]);
+        if (used.has(key)) continue;
+        used.add(key);
+        out.push([...ijk, ...d]);
+      }
+    }
+    return out;
+  };
+  const first: number[][] = [];
+  for (let c = 0; c < 8; c++) first.push(...walk(150));
+  const removed = first.slice(0, 300).map(([i, j, k]) => [i, j, k]);
+  return { grid, omega: 100, steps: [{ set: first }, { unset: removed, set: walk(400) }] };
+}
+
 const bytes = (a: ArrayBufferView) => Buffer.from(a.buffer, a.byteOffset, a.byteLength);
 
 const maxDiff = (a: Float64Array, b: Float64Array) => {
@@ -81,6 +128,21 @@ describe('threaded wasm module', () => {
           expect(maxDiff(one[k], two[k])).toBeLessThanOrEqual(1e-12);
         }
       });
+
+  it('gives the single-threaded field to 1e-12 where the multigrid loops run in parallel: fast, 63K points', async () => {
+    const p = walkProblem();
+    expect(p.steps[0].set?.length).toBe(1200);
+    const one = await fields(singleNodeOptions(), 'fast', p);
+    for (const threads of [2, 3]) {
+      const many = await fields(await threadedNodeOptions(threads), 'fast', p);
+      expect(many.length).toBe(2);
+      for (let k = 0; k < one.length; k++) {
+        expect(many[k].length).toBe(one[k].length);
+        expect(maxDiff(one[k], many[k])).toBeLessThanOrEqual(1e-12);
+      }
+    }
+    expect(maxDiff(one[0], new Float64Array(one[0].length))).toBeGreaterThan(0.1); // not all zero
+  }, 240_000);
 
   const head = Head.builtin();
   const grid = gridForPreset('25k');

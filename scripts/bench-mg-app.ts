@@ -1,0 +1,63 @@
+// The fast solver's iteration counts on the app's constraints (solver-cpp/bench/mg_bench --app):
+// writes the default preset's constraint sets on each grid (BEFORE: without its last curve,
+// AFTER: the whole preset; "nx ny nz" then "index tx ty tz" lines, as the engine builds them from
+// the curves) and runs the native mg_bench on the edit BEFORE -> AFTER (warm start to 1e-6, then
+// the history-free solve from zero to 1e-6). MG_THREADS=N runs the solver on N threads.
+//   npx tsx scripts/bench-mg-app.ts [25k 50k 250k]
+// MG_BUILD: the cmake build dir (default build/native-h3; mg_bench is built there first), or
+// several separated by commas (compared in one run: each grid runs every build in turn, none is
+// rebuilt).
+import { execFileSync } from 'node:child_process';
+import { mkdirSync, writeFileSync } from 'node:fs';
+import { presetSession } from '../web/cli/presetSession';
+import { Head } from '../web/head/head';
+import { packCurves } from '../web/model/curveSet';
+import { type GridPreset, gridForSession } from '../web/model/grid';
+import type { SessionState } from '../web/model/session';
+import { singleNodeOptions } from '../web/solver/nodeThreads';
+import type { GridSpec } from '../web/solver/protocol';
+import { loadSolverEngine } from '../web/solver/wasmEngine';
+
+const builds = (process.env.MG_BUILD ?? 'build/native-h3').split(',');
+const grids = (
+  process.argv.slice(2).length ? process.argv.slice(2) : ['25k', '50k', '250k']
+) as GridPreset[];
+const head = Head.builtin();
+const dir = 'bench-results/mg-app';
+mkdirSync(dir, { recursive: true });
+if (builds.length === 1)
+  execFileSync('cmake', ['--build', builds[0], '--target', 'mg_bench'], { stdio: 'ignore' });
+
+async function write(session: SessionState, spec: GridSpec, file: string) {
+  const engine = await loadSolverEngine(singleNodeOptions());
+  try {
+    engine.setGrid(spec, 100, 'fast');
+    engine.setScalp(head.scalpMesh());
+    engine.setCurves(packCurves(session.curves));
+    const c = engine.constraints();
+    const lines = [spec.dims.join(' ')];
+    for (let e = 0; e < c.index.length; e++)
+      lines.push(`${c.index[e]} ${c.target[3 * e]} ${c.target[3 * e + 1]} ${c.target[3 * e + 2]}`);
+    writeFileSync(file, `${lines.join('\n')}\n`);
+  } finally {
+    engine.dispose();
+  }
+}
+
+let header = true;
+for (const grid of grids) {
+  const after = presetSession('default', head, grid, 0);
+  const before = { ...after, curves: after.curves.slice(0, -1) };
+  const [b, a] = [`${dir}/${grid}-before.txt`, `${dir}/${grid}-after.txt`];
+  const spec = gridForSession(grid, after.curves); // both on the whole preset's grid
+  await write(before, spec, b);
+  await write(after, spec, a);
+  for (const build of builds) {
+    const out = execFileSync(`${build}/mg_bench`, ['--app', b, a], { encoding: 'utf8' }).split(
+      '\n',
+    );
+    if (header) console.log(`| build ${out[0]}\n|---${out[1]}`);
+    console.log(`| ${build} ${out[2]}`);
+    header = false;
+  }
+}
