@@ -28,6 +28,7 @@
 
 #if !defined(__EMSCRIPTEN__) || defined(__EMSCRIPTEN_PTHREADS__)
 #define HAIRSKETCH_HAS_THREADS 1
+#include <chrono>
 #include <condition_variable>
 #include <mutex>
 #include <thread>
@@ -77,11 +78,15 @@ class ThreadPool {
       return;
     }
     dispatched_.fetch_add(1, std::memory_order_relaxed);
-    task_.store(&task, std::memory_order_relaxed);
-    tasks_.store(tasks, std::memory_order_relaxed);
-    done_.store(0, std::memory_order_relaxed);
+    // Close first: a late worker of the previous loop may have read the new task count while
+    // the state still named the previous loop; its claim must fail (it did not, once: a fourth
+    // task of a 3-task loop ran with the old function and the counts never matched).
     const uint64_t gen = ++generation_;
-    state_.store(gen << 32, std::memory_order_release);  // publishes the three above
+    state_.store((gen << 32) | kClosed);
+    task_.store(&task);
+    tasks_.store(tasks);
+    done_.store(0);
+    state_.store(gen << 32);  // open: task 0 is next
     bool sleeping;
     {
       std::lock_guard<std::mutex> lock(mutex_);
@@ -92,8 +97,10 @@ class ThreadPool {
     insideLoop() = true;
     work(gen);
     insideLoop() = false;
-    auto finished = [&] { return done_.load(std::memory_order_acquire) == tasks; };
-    if (finished()) return;
+    // Tasks still running on workers end soon (chunks are alike): spin for them a while
+    // rather than sleep (a sleeping caller is woken tens of microseconds late, more in wasm).
+    auto finished = [&] { return done_.load() == tasks; };
+    if (spinUntil(finished, kCallerSpinMicros)) return;
     std::unique_lock<std::mutex> lock(mutex_);
     finished_.wait(lock, finished);
   }
@@ -117,28 +124,41 @@ class ThreadPool {
   // Claims and runs tasks of loop `gen` until none is left. state_ holds the loop's generation
   // (high 32 bits) and its next unclaimed task (low 32): a claim is a compare-and-swap on both,
   // so a late worker can never take a task of a newer loop with the older loop's function.
+  // (All of state_, task_, tasks_ and done_ use sequentially consistent operations: a worker
+  // that sees the next loop's task count sees its closed state too.)
   void work(uint64_t gen) {
-    uint64_t s = state_.load(std::memory_order_acquire);
+    uint64_t s = state_.load();
     for (;;) {
       if ((s >> 32) != gen) return;
-      const int tasks = tasks_.load(std::memory_order_relaxed);
-      const int t = int(uint32_t(s));
-      if (t >= tasks) return;
-      if (!state_.compare_exchange_weak(s, s + 1, std::memory_order_acq_rel,
-                                        std::memory_order_acquire))
-        continue;  // s reloaded
-      (*task_.load(std::memory_order_relaxed))(t);
-      if (done_.fetch_add(1, std::memory_order_acq_rel) + 1 == tasks) {
+      const int tasks = tasks_.load();
+      const uint32_t t = uint32_t(s);
+      if (t >= uint32_t(tasks)) return;                       // all claimed, or closed
+      if (!state_.compare_exchange_weak(s, s + 1)) continue;  // s reloaded
+      (*task_.load())(int(t));
+      if (done_.fetch_add(1) + 1 == tasks) {
         std::lock_guard<std::mutex> lock(mutex_);
         finished_.notify_all();
       }
-      s = state_.load(std::memory_order_acquire);
+      s = state_.load();
     }
   }
 
-  // A worker sleeps on wake_ between loops. (Spinning a while first, as OpenMP runtimes do, was
-  // measured here: on this shared 2-core machine under a load of 5-6 it made the 50K solve 10-60 %
-  // slower with 2 threads, as the spinning thread takes the core the caller needs.)
+  // Busy-waits until pred() or `micros` have passed; returns pred().
+  template <class P>
+  static bool spinUntil(P&& pred, double micros) {
+    const auto t0 = std::chrono::steady_clock::now();
+    for (unsigned k = 1;; ++k) {
+      if (pred()) return true;
+      if (k % 64 == 0 &&
+          std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count() >
+              micros)
+        return pred();
+    }
+  }
+
+  // A worker sleeps on wake_ between loops. (Spinning a while first, as OpenMP runtimes do, gained
+  // little here at low load and, on this shared 2-core machine under a load of 5-6, made the 50K
+  // solve 10-60 % slower with 2 threads: the spinning worker takes the core the caller needs.)
   void workerLoop() {
     insideLoop() = true;
     uint64_t seen = 0;
@@ -172,12 +192,16 @@ class ThreadPool {
   std::atomic<const std::function<void(int)>*> task_{nullptr};
   std::atomic<int> tasks_{0};
   std::atomic<int> done_{0};
-  std::atomic<uint64_t> state_{0};  // generation << 32 | next task
+  std::atomic<uint64_t> state_{0};  // generation << 32 | next task (kClosed: being set up)
+  static constexpr uint64_t kClosed = 0xffffffffu;
   std::atomic<unsigned long long> dispatched_{0};
   uint64_t generation_ = 0;  // the caller's (under runMutex_)
   uint64_t wakeGen_ = 0;     // the newest loop, for sleeping workers (under mutex_)
   int sleepers_ = 0;         // workers waiting on wake_ (under mutex_)
   bool stop_ = false;
+  // How long the caller spins for the workers' last tasks before it sleeps (natively at low load,
+  // 2 threads: the 50K solve 590 -> 400 ms, 250K 3350 -> 2620 ms; neutral at a load of 5).
+  static constexpr double kCallerSpinMicros = 1000;
 };
 
 inline int threadCount() { return ThreadPool::instance().size(); }
