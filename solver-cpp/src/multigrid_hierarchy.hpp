@@ -173,8 +173,8 @@ class MultigridHierarchy {
   std::vector<Transfer3D> transfers_;
   std::vector<std::vector<Comp1>> compX_, compY_, compZ_;  // per level
   TransferWork work_;
-  Eigen::MatrixXd coarsestL_;  // lower Cholesky factor of the coarsest operator
-  Eigen::MatrixXd coarsestRhs_;
+  Eigen::MatrixXd coarsestL_;        // lower Cholesky factor of the coarsest operator
+  std::vector<double> coarseWork_;   // the coarsest solve's right-hand sides, column by column
   std::vector<CoarseTerm> pending_;  // changes not yet in coarsestL_
   bool factorValid_ = false;         // coarsestL_ + pending_ describe the coarsest operator
   bool coarsestDirty_ = true;
