@@ -15,7 +15,9 @@ const rows = readFileSync(input, 'utf8')
   .map((l) => JSON.parse(l));
 const keyOf = (r) => `${r.platform} ${r.N}`;
 const groups = new Map();
-for (const r of rows) {
+// scripts/bench-fast-vs-exact.ts's lines (the CLI's fast and exact solvers) have their own table
+const fastVsExact = rows.filter((r) => r.kind === 'fastVsExactSummary');
+for (const r of rows.filter((x) => !String(x.kind).startsWith('fastVsExact'))) {
   if (!groups.has(keyOf(r))) groups.set(keyOf(r), []);
   groups.get(keyOf(r)).push(r);
 }
@@ -84,6 +86,23 @@ const notes = rows.filter((r) => r.kind === 'note');
 if (notes.length) {
   out.push('');
   for (const n of notes) out.push(`- ${n.platform} ${n.N}³: ${n.text}`);
+}
+if (fastVsExact.length) {
+  if (groups.size === 0)
+    out.length = 0; // only the fast-vs-exact part was run
+  else out.push('');
+  out.push(
+    "`npx hairsketch solve --solver fast` against `--solver exact` (wasm, one thread) on the same edit sequences (scripts/bench-fast-vs-exact.ts: ~3000 constraints, then 100 / 300 / 1000 points added and removed; the steps' milliseconds as the CLI prints them, summed):",
+  );
+  out.push('');
+  out.push(
+    '| grid | sequences | exact | fast | fast / exact | target | wall time fast / exact | field difference |',
+  );
+  out.push('| --- | --- | --- | --- | --- | --- | --- | --- |');
+  for (const r of fastVsExact)
+    out.push(
+      `| ${r.N}³ | ${r.seeds} | ${s(r.exactMs)} | ${s(r.fastMs)} | ${r.ratio.toFixed(3)} | ≤ 0.15 | ${(r.fastWallMs / r.exactWallMs).toFixed(3)} | ${r.maxFieldDiff.toExponential(1)} |`,
+    );
 }
 const table = out.join('\n');
 console.log(table);
