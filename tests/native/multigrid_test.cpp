@@ -1,6 +1,7 @@
 // Multigrid-PCG solver ("fast"): against an independent direct solve (Eigen SimplicialLDLT of the
 // assembled D^T D + omega^2 S), Galerkin operators against Eigen sparse products, V-cycle
-// symmetry, the stopping criterion's error bound, and input guards.
+// symmetry (multicolour sweeps), the stopping criterion's error bound, and input guards. The
+// same solve on several threads: tests/native/parallel_test.cpp.
 #include <gtest/gtest.h>
 
 #include <Eigen/SparseCholesky>
@@ -132,11 +133,21 @@ TEST(MultigridHierarchy, GalerkinOperatorsEqualSparseProductsAfterLocalUpdates) 
 }
 
 TEST(MultigridHierarchy, VcycleIsSymmetricPositiveDefinite) {
-  for (bool sym : {true, false}) {
+  // The plane-multicolour sweeps: the post-smoother is the exact reverse of the pre-smoother for
+  // any colour count (3 = the fewest that decouple planes, 5 = the default, 9 = as many as the
+  // 9 planes: the lexicographic order) and sweep count.
+  struct Case {
+    bool sym;
+    int colours, sweeps;
+  };
+  for (const Case cs : {Case{true, 5, 1}, Case{false, 5, 1}, Case{true, 3, 2}, Case{false, 9, 2}}) {
+    const bool sym = cs.sym;
     const Grid g = box(13, 10, 9);
     MultigridOptions o;
     o.coarsestMaxPoints = 30;
     o.symmetricSweeps = sym;
+    o.colours = cs.colours;
+    o.sweeps = cs.sweeps;
     MultigridHierarchy h;
     ASSERT_TRUE(h.build(g, o).ok());
     std::mt19937 rng(3);
@@ -153,7 +164,8 @@ TEST(MultigridHierarchy, VcycleIsSymmetricPositiveDefinite) {
     h.fromPadded(by.data(), BY);
     for (int c = 0; c < 3; ++c) {
       const double xby = X.col(c).dot(BY.col(c)), ybx = Y.col(c).dot(BX.col(c));
-      EXPECT_NEAR(xby, ybx, 1e-11 * (std::abs(xby) + std::abs(ybx))) << sym;
+      EXPECT_NEAR(xby, ybx, 1e-11 * (std::abs(xby) + std::abs(ybx)))
+          << sym << " " << cs.colours << " colours, " << cs.sweeps << " sweeps";
       EXPECT_GT(X.col(c).dot(BX.col(c)), 0.0);
     }
     // The matrix-free fine apply equals the assembled operator.
