@@ -147,7 +147,10 @@ int main(int argc, char** argv) {
         "| forget ms | cold it | cold ms | cold err "
         "|\n|---|---|---|---|---|---|---|---|---|---|---|"
         "---|---|---|\n");
-    return appMode(argv[2], argv[3]);
+    const int r = appMode(argv[2], argv[3]);
+    if (parallel::threadCount() > 1)
+      std::fprintf(stderr, "loops handed to the threads: %llu\n", parallel::dispatchedLoops());
+    return r;
   }
   std::vector<int> sizes;
   for (int a = 1; a < argc; ++a) sizes.push_back(std::atoi(argv[a]));

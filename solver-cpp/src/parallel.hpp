@@ -45,6 +45,8 @@ constexpr int kMaxThreads = 8;
 #if HAIRSKETCH_HAS_THREADS
 
 class ThreadPool {
+  using Clock = std::chrono::steady_clock;
+
  public:
   static ThreadPool& instance() {
     static ThreadPool pool;
@@ -73,11 +75,14 @@ class ThreadPool {
   void run(int tasks, const std::function<void(int)>& task) {
     if (tasks <= 0) return;
     std::unique_lock<std::mutex> run(runMutex_, std::try_to_lock);
-    if (tasks == 1 || workers_.empty() || insideLoop() || !run.owns_lock()) {
+    const bool serial = tasks == 1 || workers_.empty() || insideLoop() || !run.owns_lock();
+    if (serial || (adaptive_ && serialLoops_ > 0)) {
+      if (!serial) --serialLoops_;
       for (int t = 0; t < tasks; ++t) task(t);
       return;
     }
     dispatched_.fetch_add(1, std::memory_order_relaxed);
+    const auto t0 = Clock::now();
     // Close first: a late worker of the previous loop may have read the new task count while
     // the state still named the previous loop; its claim must fail (it did not, once: a fourth
     // task of a 3-task loop ran with the old function and the counts never matched).
@@ -95,14 +100,25 @@ class ThreadPool {
     }
     if (sleeping) wake_.notify_all();
     insideLoop() = true;
-    work(gen);
+    double mine = 0;  // seconds the caller spent in its own tasks
+    int mineCount = 0;
+    work(gen, &mine, &mineCount);
     insideLoop() = false;
     // Tasks still running on workers end soon (chunks are alike): spin for them a while
     // rather than sleep (a sleeping caller is woken tens of microseconds late, more in wasm).
     auto finished = [&] { return done_.load() == tasks; };
-    if (spinUntil(finished, kCallerSpinMicros)) return;
-    std::unique_lock<std::mutex> lock(mutex_);
-    finished_.wait(lock, finished);
+    if (!spinUntil(finished, kCallerSpinMicros)) {
+      std::unique_lock<std::mutex> lock(mutex_);
+      finished_.wait(lock, finished);
+    }
+    judge(std::chrono::duration<double>(Clock::now() - t0).count(), mine, mineCount, tasks);
+  }
+
+  /** Adaptive (default): loops run serially for a while when threads did not pay lately. */
+  void setAdaptive(bool on) {
+    std::lock_guard<std::mutex> run(runMutex_);
+    adaptive_ = on;
+    serialLoops_ = 0;
   }
 
   /** Loops handed to the workers so far (tests: did a loop really run in parallel?). */
@@ -126,7 +142,8 @@ class ThreadPool {
   // so a late worker can never take a task of a newer loop with the older loop's function.
   // (All of state_, task_, tasks_ and done_ use sequentially consistent operations: a worker
   // that sees the next loop's task count sees its closed state too.)
-  void work(uint64_t gen) {
+  // The caller passes busy/count: the time it spent in its own tasks, and how many it ran.
+  void work(uint64_t gen, double* busy = nullptr, int* count = nullptr) {
     uint64_t s = state_.load();
     for (;;) {
       if ((s >> 32) != gen) return;
@@ -134,13 +151,38 @@ class ThreadPool {
       const uint32_t t = uint32_t(s);
       if (t >= uint32_t(tasks)) return;                       // all claimed, or closed
       if (!state_.compare_exchange_weak(s, s + 1)) continue;  // s reloaded
-      (*task_.load())(int(t));
+      if (busy) {
+        const auto t0 = Clock::now();
+        (*task_.load())(int(t));
+        *busy += std::chrono::duration<double>(Clock::now() - t0).count();
+        ++*count;
+      } else {
+        (*task_.load())(int(t));
+      }
       if (done_.fetch_add(1) + 1 == tasks) {
         std::lock_guard<std::mutex> lock(mutex_);
         finished_.notify_all();
       }
       s = state_.load();
     }
+  }
+
+  // Did threads pay? A loop's serial time is estimated as its task count times the caller's
+  // mean task time (chunks are alike); over a window of kWindow dispatched loops, when the loops
+  // took more than 1 / kMinGain of their serial estimate, the next kSerialLoops loops run
+  // serially, then threads are tried again. On a machine whose other cores are busy (here: a
+  // shared 2-core machine under a load of 3-5, or a page drawing on a software rasteriser) a
+  // worker that wakes late or shares a core made the 250K solve 15-20 % slower than serial;
+  // when the cores are free the loops run 1.5-1.9x faster and stay parallel. Serial or
+  // parallel, every loop gives the same bits.
+  void judge(double loop, double mine, int mineCount, int tasks) {
+    if (!adaptive_ || mineCount == 0) return;
+    windowSerial_ += mine / mineCount * tasks;
+    windowLoop_ += loop;
+    if (++windowLoops_ < kWindow) return;
+    if (windowSerial_ < kMinGain * windowLoop_) serialLoops_ = kSerialLoops;
+    windowSerial_ = windowLoop_ = 0;
+    windowLoops_ = 0;
   }
 
   // Busy-waits until pred() or `micros` have passed; returns pred().
@@ -202,6 +244,12 @@ class ThreadPool {
   // How long the caller spins for the workers' last tasks before it sleeps (natively at low load,
   // 2 threads: the 50K solve 590 -> 400 ms, 250K 3350 -> 2620 ms; neutral at a load of 5).
   static constexpr double kCallerSpinMicros = 1000;
+  // The adaptive switch (judge), all under runMutex_.
+  static constexpr int kWindow = 64, kSerialLoops = 1024;
+  static constexpr double kMinGain = 1.1;
+  bool adaptive_ = true;
+  int serialLoops_ = 0, windowLoops_ = 0;
+  double windowSerial_ = 0, windowLoop_ = 0;
 };
 
 inline int threadCount() { return ThreadPool::instance().size(); }
@@ -211,6 +259,9 @@ inline void runTasks(int tasks, const std::function<void(int)>& task) {
 }
 /** Loops that ran on the pool's workers so far (not those run serially). */
 inline unsigned long long dispatchedLoops() { return ThreadPool::instance().dispatched(); }
+/** Adaptive (default): loops run serially for a while when threads have not paid lately (tests
+ *  turn it off to know that their loops are handed to the workers). */
+inline void setAdaptive(bool on) { ThreadPool::instance().setAdaptive(on); }
 
 #else  // single-threaded wasm: everything serial
 
@@ -220,6 +271,7 @@ inline void runTasks(int tasks, const std::function<void(int)>& task) {
   for (int t = 0; t < tasks; ++t) task(t);
 }
 inline unsigned long long dispatchedLoops() { return 0; }
+inline void setAdaptive(bool) {}
 
 #endif
 

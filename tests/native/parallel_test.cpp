@@ -22,10 +22,17 @@ using namespace hairsketch;
 
 namespace {
 
-// Restores the serial default after a test.
+// Restores the serial default after a test. Not adaptive meanwhile: every loop of more than one
+// task goes to the workers, whatever the load of the machine.
 struct Threads {
-  explicit Threads(int n) { parallel::setThreadCount(n); }
-  ~Threads() { parallel::setThreadCount(1); }
+  explicit Threads(int n) {
+    parallel::setThreadCount(n);
+    parallel::setAdaptive(false);
+  }
+  ~Threads() {
+    parallel::setThreadCount(1);
+    parallel::setAdaptive(true);
+  }
 };
 
 }  // namespace
@@ -195,6 +202,21 @@ TEST(Parallel, MultigridSolveGivesTheSameBytesWithAnyThreadCount) {
           << threads << " threads, phase " << k;
     }
   }
+}
+
+TEST(Parallel, AdaptiveLoopsRunSeriallyWhenThreadsDoNotPay) {
+  // Tasks of a few nanoseconds: the workers' wake-up costs far more than the work, so after a
+  // window of dispatched loops the pool runs the next ones serially, then tries again.
+  Threads t(2);
+  parallel::setAdaptive(true);
+  std::atomic<int> sum{0};
+  const unsigned long long before = parallel::dispatchedLoops();
+  for (int loop = 0; loop < 3000; ++loop)
+    parallel::runTasks(2, [&](int k) { sum.fetch_add(k + 1, std::memory_order_relaxed); });
+  EXPECT_EQ(sum.load(), 3 * 3000);  // every task ran once either way
+  const unsigned long long dispatched = parallel::dispatchedLoops() - before;
+  EXPECT_GE(dispatched, 64u);    // one window at least
+  EXPECT_LT(dispatched, 1000u);  // then mostly serial
 }
 
 TEST(Parallel, ClampsTheThreadCount) {
