@@ -14,7 +14,7 @@ import type * as THREE from 'three';
 import type { Editor } from '../editor/editor';
 import type { Head } from '../head/head';
 import type { HeadStore } from '../head/headStore';
-import { hashHeadBytes, loadHeadRef } from '../head/headStore';
+import { hashHeadBytes, headRefOf, loadHeadRef } from '../head/headStore';
 import { type Axis, type LoadedHead, loadHeadFile } from '../head/loadHead';
 import { applyScalpPaint, forEachCovered, type ScalpPaintStroke } from '../head/scalpPaint';
 import { fitSymmetryPlane } from '../head/symmetryPlane';
@@ -131,14 +131,7 @@ export class HeadController {
       return `Could not open the head: ${r.error}. The head and the session are unchanged.`;
     const hash = await hashHeadBytes(bytes);
     await this.d.store.put({ hash, name, bytes });
-    const ref: HeadRef = {
-      kind: 'mesh',
-      name,
-      hash,
-      format: r.head.format,
-      up: r.head.up,
-      turns: [],
-    };
+    const ref = headRefOf(name, hash, r.head);
     const prepared = this.prepare(r.head);
     this.remember(refKey(ref), prepared);
     const symmetry = fitSymmetryPlane(prepared.head).plane;

@@ -13,7 +13,7 @@
 import { readFileSync, statSync } from 'node:fs';
 import { basename } from 'node:path';
 import { Head } from '../head/head';
-import { hashHeadBytes, loadHeadRef } from '../head/headStore';
+import { hashHeadBytes, headRefOf, loadHeadRef } from '../head/headStore';
 import { type LoadHeadResult, loadHeadFile } from '../head/loadHead';
 import { applyScalpPaint } from '../head/scalpPaint';
 import type { HeadRef, SessionState } from '../model/session';
@@ -97,14 +97,7 @@ export async function headForGrow(
       const r = await loadHeadUnderNode(() => loadHeadFile(name, bytes));
       if (!r.ok) throw new CliError(r.error);
       head = r.head.head;
-      const ref: HeadRef = {
-        kind: 'mesh',
-        name,
-        hash,
-        format: r.head.format,
-        up: r.head.up,
-        turns: [],
-      };
+      const ref = headRefOf(name, hash, r.head);
       s = { ...s, head: ref };
     }
     loaded = true;

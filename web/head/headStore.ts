@@ -7,7 +7,7 @@
 // instead, so the app still works within the page.
 import type { HeadRef } from '../model/session';
 import { hashBytes } from '../model/sessionFile';
-import { type LoadHeadResult, loadHeadFile, rotateLoadedHead } from './loadHead';
+import { type LoadedHead, type LoadHeadResult, loadHeadFile, rotateLoadedHead } from './loadHead';
 
 /** A head file as the user opened it. */
 export interface StoredHead {
@@ -33,6 +33,11 @@ export function hashHeadBytes(bytes: ArrayBuffer): Promise<string> {
 /** The head a session's HeadRef names, from its file's bytes: loadHeadFile with the ref's name
  *  and up axis, then each of its quarter turns in order (what the app showed when the session
  *  was made). The caller checks the hash (hashHeadBytes) when the bytes come from outside. */
+/** The session's name for a head file just loaded (no turns yet). */
+export function headRefOf(name: string, hash: string, loaded: LoadedHead): HeadRef {
+  return { kind: 'mesh', name, hash, format: loaded.format, up: loaded.up, turns: [] };
+}
+
 export async function loadHeadRef(ref: HeadRef, bytes: ArrayBuffer): Promise<LoadHeadResult> {
   const r = await loadHeadFile(ref.name, bytes, { up: ref.up });
   if (!r.ok) return r;
