@@ -6,7 +6,6 @@
 import { Editor, type ToolName } from '../editor/editor';
 import { Head } from '../head/head';
 import { indexedDbHeadStore } from '../head/headStore';
-import { fitSymmetryPlane } from '../head/symmetryPlane';
 import { gridForPreset, gridForSession } from '../model/grid';
 import { applyPreset } from '../model/presets';
 import { DEFAULT_GROWTH, emptySession } from '../model/session';
@@ -214,21 +213,12 @@ export function startApp(): void {
       showHeadPanel();
     },
     setPlane: (plane) => editor.run({ kind: 'setSymmetry', plane }),
-    fitPlane: () =>
-      editor.run({
-        kind: 'setSymmetry',
-        plane: editor.session.head === 'builtin' ? undefined : fitSymmetryPlane(heads.head).plane,
-      }),
+    fitPlane: () => heads.fitPlane(editor),
   });
   function showHeadPanel(): void {
-    const h = heads.head;
-    const s = editor.session;
     headPanel?.show({
-      session: s,
-      label:
-        s.head === 'builtin'
-          ? 'Built-in mannequin'
-          : `${s.head.name} · ${(h.mesh.indices.length / 3).toLocaleString('en-US')} triangles`,
+      session: editor.session,
+      label: heads.label(editor.session),
       missing: heads.missing ? heads.missing.name : null,
       brushRadius: tools.scalpBrush.radius,
     });

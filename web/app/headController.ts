@@ -156,6 +156,22 @@ export class HeadController {
     return null;
   }
 
+  /** "Fit": the loaded head's best symmetry plane again (x = 0 for the built-in head). */
+  fitPlane(editor: Editor): void {
+    const builtin = editor.session.head === 'builtin';
+    editor.run({
+      kind: 'setSymmetry',
+      plane: builtin ? undefined : fitSymmetryPlane(this.current.head).plane,
+    });
+  }
+
+  /** One line about the head shown, for the Head panel. */
+  label(s: SessionState): string {
+    if (s.head === 'builtin') return 'Built-in mannequin';
+    const triangles = this.current.head.mesh.indices.length / 3;
+    return `${s.head.name} · ${triangles.toLocaleString('en-US')} triangles`;
+  }
+
   /** "Built-in head": back to the mannequin (one undoable edit). */
   useBuiltin(editor: Editor): void {
     editor.run({ kind: 'setHead', head: 'builtin', what: 'Built-in head' });
