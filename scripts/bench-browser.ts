@@ -31,9 +31,23 @@ const trace = (m: string): void => {
     console.error(`[bench ${new Date().toISOString().slice(11, 23)}] ${m}`);
 };
 
+/** Where a revision's time went, from pointer-up: the worker's solve, growth and lighting, the
+ *  result's arrival on the page, and its first frame. */
+interface Breakdown {
+  solveMs: number;
+  growMs: number;
+  lightMs: number;
+  arrivedMs: number;
+  shownMs: number;
+}
+
 interface StrokeResult {
   firstMs: number | null;
   convergedMs: number | null;
+  first: Breakdown | null;
+  converged: Breakdown | null;
+  /** Medians over the previews shown while drawing. */
+  preview: (Omit<Breakdown, 'arrivedMs' | 'shownMs'> & { arrivedToShownMs: number }) | null;
   previewsPerSecond: number;
   method: string;
   /** Frames drawn while the stroke was drawn, by where each started (viewer/frameCache.ts):
@@ -56,6 +70,16 @@ const median = (xs: number[]): number | null => {
   const m = v.length >> 1;
   return v.length % 2 ? v[m] : (v[m - 1] + v[m]) / 2;
 };
+
+/** Field-by-field medians of the strokes' breakdowns. */
+function medianBreakdown<T extends object>(xs: Array<T | null>): Record<string, number | null> {
+  const have = xs.filter((x): x is T => x !== null);
+  const out: Record<string, number | null> = {};
+  if (have.length === 0) return out;
+  for (const k of Object.keys(have[0]))
+    out[k] = median(have.map((x) => (x as Record<string, number>)[k]));
+  return out;
+}
 
 async function settled(page: Page, timeout = 600_000): Promise<void> {
   await page.waitForFunction(
@@ -134,14 +158,39 @@ async function stroke(page: Page, i: number): Promise<StrokeResult> {
     }),
     [before],
   );
-  const during = r.log.filter((e) => e.time > t0 && e.time <= r.up).length;
+  const duringLog = r.log.filter((e) => e.time > t0 && e.time <= r.up);
+  const during = duringLog.length;
   const after = r.log.filter((e) => e.time > r.up);
   const first = after[0];
   const converged = after.find((e) => e.final);
+  type Entry = (typeof r.log)[number];
+  const breakdown = (e: Entry | undefined): Breakdown | null =>
+    e
+      ? {
+          solveMs: e.solveMs,
+          growMs: e.growMs,
+          lightMs: e.lightMs,
+          arrivedMs: e.arrived - r.up,
+          shownMs: e.time - r.up,
+        }
+      : null;
+  const med = (f: (e: Entry) => number) => median(duringLog.map(f)) ?? Number.NaN;
+  const preview =
+    during > 0
+      ? {
+          solveMs: med((e) => e.solveMs),
+          growMs: med((e) => e.growMs),
+          lightMs: med((e) => e.lightMs),
+          arrivedToShownMs: med((e) => e.time - e.arrived),
+        }
+      : null;
   const method = /(mg-pcg|auto:[a-z-]+|update|refactor|factor|cg|rhs)/.exec(r.text)?.[1] ?? '?';
   return {
     firstMs: first ? first.time - r.up : null,
     convergedMs: converged ? converged.time - r.up : null,
+    first: breakdown(first),
+    converged: breakdown(converged),
+    preview,
     previewsPerSecond: during / ((t1 - t0) / 1000),
     method,
     frames:
@@ -228,6 +277,9 @@ async function main(): Promise<void> {
         denseIdleFrameMs: dense?.frameMs ?? null,
         denseLightingMs: dense?.lightingMs ?? null,
         methods: strokes.map((s) => s.method),
+        firstBreakdown: medianBreakdown(strokes.map((s) => s.first)),
+        convergedBreakdown: medianBreakdown(strokes.map((s) => s.converged)),
+        previewBreakdown: medianBreakdown(strokes.map((s) => s.preview)),
         strokes,
       };
       rows.push(row);
@@ -250,6 +302,18 @@ async function main(): Promise<void> {
         ? `| ${r.grid} | ${r.solver} | ${String(r.error).slice(0, 80)} | | | | | | | | | | |`
         : `| ${r.grid} | ${r.solver} | ${f(r.loadToFirstHairMs)} | ${f(r.firstHairMedianMs)} | ${f(r.convergedMedianMs)} | ${f(r.previewsPerSecondMedian)} | ${f(r.heapMB)} | ${f(r.strands)} | ${f(r.idleFrameMs)} | ${f(r.lightingMs)} | ${f(r.denseStrands)} | ${f(r.denseIdleFrameMs)} | ${f(r.denseLightingMs)} |`,
     );
+  const b = (x: unknown) =>
+    Object.entries((x ?? {}) as Record<string, number | null>)
+      .map(([k, v]) => `${k.replace(/Ms$/, '')} ${f(v)}`)
+      .join(', ');
+  console.log(
+    '\nWhere the time went (ms, medians over the strokes; from pointer-up for first/converged):',
+  );
+  for (const r of rows)
+    if (!r.error)
+      console.log(
+        `- ${r.grid} ${r.solver}: first look: ${b(r.firstBreakdown)}; converged: ${b(r.convergedBreakdown)}; previews: ${b(r.previewBreakdown)}`,
+      );
 }
 
 await main();

@@ -11,9 +11,16 @@ import type { Viewer } from '../viewer/viewer';
 
 export interface HairRevision {
   revision: number;
+  /** When a frame first drew it (performance.now()). */
   time: number;
   final: boolean;
   strands: number;
+  /** When its result reached this thread (performance.now()), and the worker's times for it:
+   *  solve (set-up and iterations), growth, lighting precompute (ms). For benchmarks. */
+  arrived: number;
+  solveMs: number;
+  growMs: number;
+  lightMs: number;
 }
 
 export class HairPresenter {
@@ -52,6 +59,7 @@ export class HairPresenter {
   }
 
   result(r: SolveResult, final: boolean): void {
+    const arrived = performance.now();
     this.heapBytes = r.stats.heapBytes;
     if (this.shown !== r.strands) {
       this.shown = r.strands;
@@ -71,7 +79,15 @@ export class HairPresenter {
       const n = visibleStrands(r.strands);
       this.status.counts(n, this.status.curves);
       this.status.bumpRevision();
-      this.unstamped = { revision: this.status.revision, final, strands: n };
+      this.unstamped = {
+        revision: this.status.revision,
+        final,
+        strands: n,
+        arrived,
+        solveMs: r.stats.solveMs,
+        growMs: r.stats.growMs,
+        lightMs: r.lighting?.ms ?? 0,
+      };
     }
     // hair that is still settling is drawn at interactive detail, the final hair in full
     this.viewer.hold('settling', !final);

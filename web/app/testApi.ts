@@ -7,7 +7,7 @@ import type { Vec3 } from '../model/vec3';
 import type { PonytailTool } from '../tools/ponytailTool';
 import type { DisplayState } from '../ui/displayToggles';
 import type { Viewer } from '../viewer/viewer';
-import type { HairPresenter } from './hairPresenter';
+import type { HairPresenter, HairRevision } from './hairPresenter';
 import type { OverlayPresenter } from './overlayPresenter';
 import { isQualitySetting, type QualityControl } from './quality';
 import { loadSession } from './sessionIO';
@@ -24,7 +24,7 @@ export interface HairsketchTestApi {
   crashExport(): void;
   /** Benchmark probes: when each hair revision reached the screen, the last pointer-up time
    *  (both performance.now()), and the solver's wasm heap size. */
-  hairLog(): Array<{ revision: number; time: number; final: boolean; strands: number }>;
+  hairLog(): HairRevision[];
   lastPointerUp(): number;
   heapBytes(): number;
   /** Fraction of the hair's segments the last frame drew (1 = all; less while interacting on a
