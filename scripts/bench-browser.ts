@@ -1,6 +1,8 @@
 // npm run bench:browser — drives the built app in Debian's Chromium and measures, per grid preset
 // and solver: page load -> first hair, five strokes (pointer-up -> first new hair on screen and
-// -> converged hair, preview updates per second while dragging), and the wasm heap size.
+// -> the converged field's hair on screen (its first strands, posted before the rest) -> the
+// final hair with every strand, preview updates per second while dragging), the wasm heap size,
+// and where the time went (the worker's solve, growth and lighting; arrival; geometry build).
 // Also, per config: the idle full-hair frame time (the view drawn with every strand, median of
 // BENCH_FRAMES frames, GPU work included) and the lighting precompute time of the final hair; and,
 // unless BENCH_DENSE=0, the same two for a denser version of the session (roots every 0.55°
@@ -38,14 +40,18 @@ interface Breakdown {
   growMs: number;
   lightMs: number;
   arrivedMs: number;
+  buildMs: number;
   shownMs: number;
 }
 
 interface StrokeResult {
   firstMs: number | null;
   convergedMs: number | null;
+  /** Pointer-up -> the final hair (every strand) reached the screen. */
+  fullMs: number | null;
   first: Breakdown | null;
   converged: Breakdown | null;
+  full: Breakdown | null;
   /** Medians over the previews shown while drawing. */
   preview: (Omit<Breakdown, 'arrivedMs' | 'shownMs'> & { arrivedToShownMs: number }) | null;
   previewsPerSecond: number;
@@ -162,7 +168,10 @@ async function stroke(page: Page, i: number): Promise<StrokeResult> {
   const during = duringLog.length;
   const after = r.log.filter((e) => e.time > r.up);
   const first = after[0];
-  const converged = after.find((e) => e.final);
+  // converged: the converged field's hair on screen (its light growth, when the worker posts
+  // one, is the first); full: the final hair with every strand
+  const converged = after.find((e) => e.converged ?? e.final);
+  const full = after.find((e) => e.final);
   type Entry = (typeof r.log)[number];
   const breakdown = (e: Entry | undefined): Breakdown | null =>
     e
@@ -171,6 +180,7 @@ async function stroke(page: Page, i: number): Promise<StrokeResult> {
           growMs: e.growMs,
           lightMs: e.lightMs,
           arrivedMs: e.arrived - r.up,
+          buildMs: e.buildMs,
           shownMs: e.time - r.up,
         }
       : null;
@@ -181,6 +191,7 @@ async function stroke(page: Page, i: number): Promise<StrokeResult> {
           solveMs: med((e) => e.solveMs),
           growMs: med((e) => e.growMs),
           lightMs: med((e) => e.lightMs),
+          buildMs: med((e) => e.buildMs),
           arrivedToShownMs: med((e) => e.time - e.arrived),
         }
       : null;
@@ -188,8 +199,10 @@ async function stroke(page: Page, i: number): Promise<StrokeResult> {
   return {
     firstMs: first ? first.time - r.up : null,
     convergedMs: converged ? converged.time - r.up : null,
+    fullMs: full ? full.time - r.up : null,
     first: breakdown(first),
     converged: breakdown(converged),
+    full: breakdown(full),
     preview,
     previewsPerSecond: during / ((t1 - t0) / 1000),
     method,
@@ -267,6 +280,7 @@ async function main(): Promise<void> {
         loadToFirstHairMs: load,
         firstHairMedianMs: median(strokes.map((s) => s.firstMs ?? Number.NaN)),
         convergedMedianMs: median(strokes.map((s) => s.convergedMs ?? Number.NaN)),
+        fullHairMedianMs: median(strokes.map((s) => s.fullMs ?? Number.NaN)),
         previewsPerSecondMedian: median(strokes.map((s) => s.previewsPerSecond)),
         framesWhileDrawing: strokes.map((s) => s.frames),
         heapMB: heap / 2 ** 20,
@@ -279,6 +293,7 @@ async function main(): Promise<void> {
         methods: strokes.map((s) => s.method),
         firstBreakdown: medianBreakdown(strokes.map((s) => s.first)),
         convergedBreakdown: medianBreakdown(strokes.map((s) => s.converged)),
+        fullBreakdown: medianBreakdown(strokes.map((s) => s.full)),
         previewBreakdown: medianBreakdown(strokes.map((s) => s.preview)),
         strokes,
       };
@@ -293,14 +308,16 @@ async function main(): Promise<void> {
   writeFileSync('bench-results/browser.json', `${JSON.stringify(rows, null, 2)}\n`);
   const f = (x: unknown) => (typeof x === 'number' ? x.toFixed(x < 10 ? 1 : 0) : String(x ?? '—'));
   console.log(
-    '\n| grid | solver | load → first hair ms | pointer-up → first new hair ms (median) | → converged ms (median) | previews/s while drawing | wasm heap MB | strands | idle full-hair frame ms | lighting precompute ms | dense strands | dense frame ms | dense lighting ms |',
+    '\n| grid | solver | load → first hair ms | pointer-up → first new hair ms (median) | → converged ms (median) | → full hair ms (median) | previews/s while drawing | wasm heap MB | strands | idle full-hair frame ms | lighting precompute ms | dense strands | dense frame ms | dense lighting ms |',
   );
-  console.log('| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |');
+  console.log(
+    '| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |',
+  );
   for (const r of rows)
     console.log(
       r.error
-        ? `| ${r.grid} | ${r.solver} | ${String(r.error).slice(0, 80)} | | | | | | | | | | |`
-        : `| ${r.grid} | ${r.solver} | ${f(r.loadToFirstHairMs)} | ${f(r.firstHairMedianMs)} | ${f(r.convergedMedianMs)} | ${f(r.previewsPerSecondMedian)} | ${f(r.heapMB)} | ${f(r.strands)} | ${f(r.idleFrameMs)} | ${f(r.lightingMs)} | ${f(r.denseStrands)} | ${f(r.denseIdleFrameMs)} | ${f(r.denseLightingMs)} |`,
+        ? `| ${r.grid} | ${r.solver} | ${String(r.error).slice(0, 80)} | | | | | | | | | | | |`
+        : `| ${r.grid} | ${r.solver} | ${f(r.loadToFirstHairMs)} | ${f(r.firstHairMedianMs)} | ${f(r.convergedMedianMs)} | ${f(r.fullHairMedianMs)} | ${f(r.previewsPerSecondMedian)} | ${f(r.heapMB)} | ${f(r.strands)} | ${f(r.idleFrameMs)} | ${f(r.lightingMs)} | ${f(r.denseStrands)} | ${f(r.denseIdleFrameMs)} | ${f(r.denseLightingMs)} |`,
     );
   const b = (x: unknown) =>
     Object.entries((x ?? {}) as Record<string, number | null>)
@@ -312,7 +329,7 @@ async function main(): Promise<void> {
   for (const r of rows)
     if (!r.error)
       console.log(
-        `- ${r.grid} ${r.solver}: first look: ${b(r.firstBreakdown)}; converged: ${b(r.convergedBreakdown)}; previews: ${b(r.previewBreakdown)}`,
+        `- ${r.grid} ${r.solver}: first look: ${b(r.firstBreakdown)}; converged: ${b(r.convergedBreakdown)}; full hair: ${b(r.fullBreakdown)}; previews: ${b(r.previewBreakdown)}`,
       );
 }
 

@@ -103,7 +103,7 @@ const solve = (
   lightMaxStrands,
 });
 
-function harness(colours?: Uint8Array<ArrayBuffer>) {
+function harness(colours?: Uint8Array<ArrayBuffer>, convergedSample = false) {
   const log: string[] = [];
   const posted: FromWorker[] = [];
   let yields: Array<() => void> = [];
@@ -111,6 +111,7 @@ function harness(colours?: Uint8Array<ArrayBuffer>) {
     ...DEFAULT_SCHEDULER,
     firstLookIterations: 2,
     sliceIterations: 2,
+    convergedSample,
     yieldNow: () => new Promise<void>((r) => yields.push(r)),
   });
   const release = async () => {
@@ -214,6 +215,54 @@ describe('WorkerLogic', () => {
     await h.logic.handle(solve(5, 'full'));
     expect(h.posted).toEqual([
       { type: 'error', id: 5, message: 'Solver is not initialised', kind: 'not_ready' },
+    ]);
+  });
+
+  it("posts the converged field's hair light, then in full; a newer request between them drops the full growth", async () => {
+    const h = harness(undefined, true);
+    await h.logic.handle(init);
+    let done = h.logic.handle(solve(1, 'full'));
+    while (h.pendingYields() > 0) await h.release();
+    await done;
+    const rs = h.results();
+    // first look, the converged field grown light, then the final hair
+    expect(rs.map((r) => [r.id, r.final, r.converged])).toEqual([
+      [1, false, false],
+      [1, false, true],
+      [1, true, true],
+    ]);
+    expect(h.log.filter((l) => l.startsWith('grow'))).toEqual([
+      `grow:${LIGHT}`,
+      `grow:${LIGHT}`,
+      'grow:0',
+    ]);
+    // the sample is grown from the converged field: no iteration between it and the final hair
+    const log = h.log;
+    const at = log.lastIndexOf(`grow:${LIGHT}`);
+    expect(log.slice(at)).toEqual([`grow:${LIGHT}`, 'grow:0']);
+    expect(rs[1].stats.errorEstimate).toBeLessThanOrEqual(1e-6);
+
+    // a request that arrives after the sample was posted: the full growth is not done
+    const before = h.log.length;
+    done = h.logic.handle(solve(2, 'full'));
+    while (!h.results().some((r) => r.id === 2 && r.converged)) await h.release();
+    const newer = h.logic.handle(solve(3, 'preview'));
+    while (h.pendingYields() > 0) await h.release();
+    await Promise.all([done, newer]);
+    expect(h.results().filter((r) => r.id === 2 && r.final)).toEqual([]);
+    expect(h.log.slice(before).filter((l) => l === 'grow:0')).toEqual([]);
+    expect(h.results().at(-1)?.id).toBe(3);
+  });
+
+  it('posts no light growth of the converged field when the full hair is no heavier', async () => {
+    const h = harness(undefined, true);
+    await h.logic.handle(init);
+    const done = h.logic.handle(solve(1, 'full', 0)); // no light cap: the full hair is as light
+    while (h.pendingYields() > 0) await h.release();
+    await done;
+    expect(h.results().map((r) => [r.final, r.converged])).toEqual([
+      [false, false],
+      [true, true],
     ]);
   });
 

@@ -14,10 +14,14 @@ export interface HairRevision {
   /** When a frame first drew it (performance.now()). */
   time: number;
   final: boolean;
+  /** The converged field's hair: the final hair, or its light growth posted before it. */
+  converged: boolean;
   strands: number;
   /** When its result reached this thread (performance.now()), and the worker's times for it:
    *  solve (set-up and iterations), growth, lighting precompute (ms). For benchmarks. */
   arrived: number;
+  /** Main-thread time spent building its geometry (ms). */
+  buildMs: number;
   solveMs: number;
   growMs: number;
   lightMs: number;
@@ -66,6 +70,7 @@ export class HairPresenter {
       this.finalPending = final;
       // previews and first looks keep the head's shadow as the converged hair cast it: the head
       // stays in the frame cache while a stroke is drawn (viewer/frameCache.ts)
+      const b0 = performance.now();
       this.hair.show(
         r.strands,
         r.lighting,
@@ -76,14 +81,17 @@ export class HairPresenter {
         },
         final,
       );
+      const buildMs = performance.now() - b0;
       const n = visibleStrands(r.strands);
       this.status.counts(n, this.status.curves);
       this.status.bumpRevision();
       this.unstamped = {
         revision: this.status.revision,
         final,
+        converged: final || r.converged === true,
         strands: n,
         arrived,
+        buildMs,
         solveMs: r.stats.solveMs,
         growMs: r.stats.growMs,
         lightMs: r.lighting?.ms ?? 0,

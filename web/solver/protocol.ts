@@ -261,6 +261,9 @@ export type FromWorker =
       stats: SolveStats;
       /** True for the converged field's hair; false for a preview or a first look. */
       final: boolean;
+      /** The field is converged: true with `final`, and for the light growth of the converged
+       *  field posted before the full hair (final false); absent or false otherwise. */
+      converged?: boolean;
     }
   | { type: 'error'; id: number | null; message: string; kind: SolverErrorKind };
 

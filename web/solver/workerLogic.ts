@@ -8,7 +8,8 @@
 //                and grow the final hair when the field has converged. With "Avoid scalp" on, the
 //                converged field gives the scalp-avoidance constraints (S4.7) and the field is
 //                solved again with them, warm-started from that field (growSession.ts does the
-//                same).
+//                same). The converged field's hair is posted light first (its first strands, as
+//                a first look is grown: what a slow GPU draws of the hair first), then in full.
 // A 'scalpMask' message changes the scalp at once (no restart, nothing else rebuilt).
 import { resultLighting } from '../lighting/resultLighting';
 import { type IterateProgress, type SolverEngine, SolverError } from './engine';
@@ -47,6 +48,10 @@ export interface SchedulerOptions {
   firstLookIterations: number;
   sliceIterations: number;
   previewIterations: number;
+  /** Post the converged field's hair grown light (non-final, `converged`) before the full hair,
+   *  when the light cap is below the session's strand count: it is on screen a full growth and
+   *  lighting sooner. */
+  convergedSample: boolean;
   /** Resolves after pending messages have had a chance to run. */
   yieldNow: () => Promise<void>;
   now: () => number;
@@ -57,6 +62,7 @@ export const DEFAULT_SCHEDULER: SchedulerOptions = {
   firstLookIterations: 2,
   sliceIterations: 4,
   previewIterations: 3,
+  convergedSample: true,
   yieldNow: () => new Promise((r) => setTimeout(r, 0)),
   now: () => (typeof performance !== 'undefined' ? performance.now() : Date.now()),
 };
@@ -71,6 +77,12 @@ export function lightGrowth(job: SolveMsg): GrowthParams {
   const cap = job.lightMaxStrands > 0 ? Math.round(job.lightMaxStrands) : 0;
   if (cap === 0) return g;
   return { ...g, maxStrands: g.maxStrands > 0 ? Math.min(g.maxStrands, cap) : cap };
+}
+
+/** Whether a light growth of `job` grows fewer strands than its full growth may. */
+function lightenedGrowth(job: SolveMsg): boolean {
+  const light = lightGrowth(job).maxStrands;
+  return light > 0 && (job.growth.maxStrands <= 0 || light < job.growth.maxStrands);
 }
 
 export class WorkerLogic {
@@ -220,6 +232,11 @@ export class WorkerLogic {
         this.post({ type: 'progress', id: job.id, phase: 'solve', fraction: 0.95 });
       }
     }
+    if (o.convergedSample && lightenedGrowth(job)) {
+      this.emit(job, lightGrowth(job), p, false, t0, true);
+      await o.yieldNow();
+      if (this.superseded()) return;
+    }
     this.emit(job, job.growth, p, true, t0);
   }
 
@@ -242,6 +259,7 @@ export class WorkerLogic {
     p: IterateProgress,
     final: boolean,
     t0: number,
+    converged = final,
   ): void {
     this.post({ type: 'progress', id: job.id, phase: 'grow', fraction: 0.95 });
     const g0 = this.opts.now();
@@ -264,6 +282,7 @@ export class WorkerLogic {
       lighting: resultLighting(strands, this.head, this.opts.now, final),
       stats,
       final,
+      converged,
     });
   }
 }
