@@ -131,6 +131,8 @@ describe('WorkerLogic', () => {
     await h.logic.handle(init);
     const done = h.logic.handle(solve(1, 'preview'));
     await h.release(); // the job starts after one yield (a burst of messages coalesces)
+    expect(h.results()).toEqual([]); // and yields once more after its iterations
+    while (h.pendingYields() > 0) await h.release();
     await done;
     expect(h.results().map((r) => [r.id, r.final])).toEqual([[1, false]]);
     expect(h.log).toContain(`grow:${LIGHT}`);
@@ -190,11 +192,28 @@ describe('WorkerLogic', () => {
     expect(h.log.filter((l) => l.startsWith('curves'))).toHaveLength(1);
   });
 
+  it('drops a preview whose iterations a full request followed, without growing it', async () => {
+    const h = harness();
+    await h.logic.handle(init);
+    const preview = h.logic.handle(solve(1, 'preview'));
+    await h.release(); // the preview iterates, then yields before growing
+    expect(h.log).toContain(`iterate:${DEFAULT_SCHEDULER.previewIterations}`);
+    const full = h.logic.handle(solve(2, 'full'));
+    while (h.pendingYields() > 0) await h.release();
+    await Promise.all([preview, full]);
+    expect(h.results().map((r) => [r.id, r.final])).toEqual([
+      [2, false],
+      [2, true],
+    ]);
+    // grown: the full request's first look and final hair, not the preview
+    expect(h.log.filter((l) => l.startsWith('grow'))).toEqual([`grow:${LIGHT}`, 'grow:0']);
+  });
+
   it('sends each constraint with its colour, in the same order', async () => {
     const h = harness();
     await h.logic.handle(init);
     const done = h.logic.handle(solve(1, 'preview'));
-    await h.release();
+    while (h.pendingYields() > 0) await h.release();
     await done;
     const c = h.results()[0].constraints;
     expect(Array.from(c.index)).toEqual([4, 9, 12]);
@@ -205,7 +224,7 @@ describe('WorkerLogic', () => {
     const h = harness(new Uint8Array([2]));
     await h.logic.handle(init);
     const done = h.logic.handle(solve(1, 'preview'));
-    await h.release();
+    while (h.pendingYields() > 0) await h.release();
     await done;
     expect(Array.from(h.results()[0].constraints.colour)).toEqual([2, 4, 4]);
   });
@@ -270,7 +289,7 @@ describe('WorkerLogic', () => {
     const h = harness();
     await h.logic.handle(init);
     let done = h.logic.handle(solve(1, 'preview', 77));
-    await h.release();
+    while (h.pendingYields() > 0) await h.release();
     await done;
     done = h.logic.handle(solve(2, 'full', 0)); // 0: no light cap of its own
     while (h.pendingYields() > 0) await h.release();
@@ -359,7 +378,7 @@ describe('WorkerLogic', () => {
     await h.logic.handle(init);
     const options = packHairOptions({ detail: { lengthJitter: 0.25 } }, []);
     const done = h.logic.handle(solve(1, 'preview', LIGHT, options));
-    await h.release();
+    while (h.pendingYields() > 0) await h.release();
     await done;
     const d = h.log.indexOf('detail:11:0.25'); // one group of 11, lengthJitter 0.25
     expect(d).toBeGreaterThanOrEqual(0);
@@ -395,7 +414,7 @@ describe('WorkerLogic: a new scalp mask', () => {
     expect(h.log).toEqual(['mask:11001010']);
     expect(h.posted.filter((m) => m.type === 'error')).toEqual([]);
     const done = h.logic.handle(solve(1, 'preview'));
-    await h.release();
+    while (h.pendingYields() > 0) await h.release();
     await done;
     expect(h.log.indexOf('mask:11001010')).toBeLessThan(h.log.indexOf(`grow:${LIGHT}`));
     expect(h.log).not.toContain('grid');
@@ -409,7 +428,7 @@ describe('WorkerLogic: a new scalp mask', () => {
     expect(h.posted.at(-1)).toMatchObject({ type: 'error', id: null, kind: 'invalid_input' });
     expect((h.posted.at(-1) as { message: string }).message).toMatch(/^Scalp mask: mask of 7/);
     const done = h.logic.handle(solve(2, 'preview'));
-    await h.release();
+    while (h.pendingYields() > 0) await h.release();
     await done;
     expect(h.results().map((r) => r.id)).toEqual([2]);
   });

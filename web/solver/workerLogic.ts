@@ -2,7 +2,8 @@
 // browser worker and under Node tests with the real wasm module.
 //
 // Scheduling (one job at a time, the newest request supersedes the running one):
-//   preview job: a few iterations, light growth, one non-final result;
+//   preview job: a few iterations, light growth, one non-final result (none when a newer
+//                request came in during the iterations: the app no longer waits for it);
 //   full job:    a first look after a few iterations (non-final, light growth), then iterate in slices,
 //                yielding to the event loop between slices so a newer request can take over,
 //                and grow the final hair when the field has converged. With "Avoid scalp" on, the
@@ -184,6 +185,9 @@ export class WorkerLogic {
     this.engine.setCurves(job.curves);
     if (job.mode === 'preview') {
       const p = this.engine.iterate(o.previewIterations, o.tolerance);
+      // the pen may have lifted meanwhile: its full solve need not wait for this growth
+      await o.yieldNow();
+      if (this.superseded()) return;
       this.emit(job, lightGrowth(job), p, false, t0);
       return;
     }
