@@ -80,6 +80,7 @@ export class HairPresenter {
           this.onFinalShown?.();
         },
         final,
+        r.attributes ?? null,
       );
       const buildMs = performance.now() - b0;
       const n = visibleStrands(r.strands);

@@ -261,6 +261,10 @@ export type FromWorker =
       stats: SolveStats;
       /** True for the converged field's hair; false for a preview or a first look. */
       final: boolean;
+      /** The final hair's vertex attributes for the view, built in the worker with `lighting`
+       *  (viewer/strandAttributes.ts lineAttributes), so the page does not stall building them;
+       *  absent or null for previews and first looks (the page builds those). */
+      attributes?: StrandVertexArrays | null;
       /** The field is converged: true with `final`, and for the light growth of the converged
        *  field posted before the full hair (final false); absent or false otherwise. */
       converged?: boolean;
@@ -279,7 +283,25 @@ export function resultTransferables(msg: Extract<FromWorker, { type: 'result' }>
   if (msg.field) list.push(msg.field.vectors.buffer as ArrayBuffer);
   if (msg.lighting)
     list.push(msg.lighting.strand.buffer as ArrayBuffer, msg.lighting.head.buffer as ArrayBuffer);
+  const a = msg.attributes;
+  if (a)
+    for (const v of [a.tangent, a.along, a.random, a.light, a.box, a.index, a.lodCounts])
+      if (!list.includes(v.buffer as ArrayBuffer)) list.push(v.buffer as ArrayBuffer);
   return list;
+}
+
+/** The strands' vertex attributes for the view's line geometry (viewer/strandAttributes.ts
+ *  builds them: the worker for the final hair, the page for lighter hair). Per point of
+ *  StrandArrays (strand s owns points strandStart[s] .. strandStart[s + 1] − 1). */
+export interface StrandVertexArrays {
+  pointCount: number;
+  tangent: Int8Array; // tangent[3 * point + axis]: unit tangent × 127 (central differences)
+  along: Uint8Array; // along[point]: 0 at the root … 255 at the tip
+  random: Uint8Array; // random[4 * point + k]: the strand's value, hue, length look, highlight noise × 255
+  light: Uint8Array; // light[2 * point + k]: lighting.strand (transmittance, occlusion) × 255
+  box: Float32Array; // min x, y, z, max x, y, z of the points; empty without points
+  index: Uint32Array; // index[2 * segment + end]: point indices, strands in level-of-detail order
+  lodCounts: Uint32Array; // lodCounts[g]: index entries of the first g of the 64 LOD groups
 }
 
 /** Number of strands in a StrandArrays. */

@@ -8,6 +8,7 @@ import * as THREE from 'three';
 import type { HairLightingArrays, StrandArrays } from '../solver/protocol';
 import { DeepOpacityMaps } from './deepOpacity';
 import { setHeadHairShadow } from './headMaterial';
+import type { LineAttributes } from './strandAttributes';
 import {
   buildStrandGeometry,
   buildStrandStripGeometry,
@@ -24,7 +25,11 @@ export class HairView {
   private strips: StrandMaterial | null = null;
   private color = '#5a3825';
   private quality: ActiveQuality = 'fast';
-  private current: { strands: StrandArrays; lighting: HairLightingArrays | null } | null = null;
+  private current: {
+    strands: StrandArrays;
+    lighting: HairLightingArrays | null;
+    attributes: LineAttributes | null;
+  } | null = null;
   private object: THREE.Mesh | THREE.LineSegments | null = null;
   private dom: DeepOpacityMaps | null = null;
   private domDirty = false;
@@ -41,14 +46,17 @@ export class HairView {
   /** Replaces the hair on screen with `strands` (lit by `lighting` when given); `shown` runs
    *  once a frame has drawn it. `headShadow` (default true): the hair's shadow on the head is
    *  updated too; previews leave it as the last converged hair cast it, so the head (the frame
-   *  cache's static layer) is not drawn again for every preview. */
+   *  cache's static layer) is not drawn again for every preview. `attributes`: the strands'
+   *  vertex attributes as the worker built them with this lighting (strandAttributes.ts), so
+   *  they are not built here again. */
   show(
     strands: StrandArrays,
     lighting: HairLightingArrays | null | undefined,
     shown?: () => void,
     headShadow = true,
+    attributes: LineAttributes | null = null,
   ): void {
-    this.current = { strands, lighting: lighting ?? null };
+    this.current = { strands, lighting: lighting ?? null, attributes };
     this.lightingMs = lighting ? lighting.ms : null;
     if (this.head && lighting && headShadow) setHeadHairShadow(this.head, lighting.head);
     const hair = this.build();
@@ -87,14 +95,14 @@ export class HairView {
     const { points, strandStart } = c.strands;
     const light = c.lighting?.strand ?? null;
     if (this.quality === 'high') {
-      const geometry = buildStrandStripGeometry(points, strandStart, 0, light);
+      const geometry = buildStrandStripGeometry(points, strandStart, 0, light, c.attributes);
       this.strips ??= this.createStripMaterial();
       const mesh = new THREE.Mesh(geometry, this.strips);
       this.object = mesh;
       this.domDirty = this.dom !== null;
       return mesh;
     }
-    const geometry = buildStrandGeometry(points, strandStart, 0, light);
+    const geometry = buildStrandGeometry(points, strandStart, 0, light, c.attributes);
     this.lines ??= createStrandMaterial({ color: this.color, kind: 'lines' });
     const lines = new THREE.LineSegments(geometry, this.lines);
     this.object = lines;

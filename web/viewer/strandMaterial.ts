@@ -15,6 +15,15 @@
 // opacity maps: deepOpacity.ts).
 import * as THREE from 'three';
 import { FILL_LIGHT_DIRECTION, KEY_LIGHT_DIRECTION } from '../lighting/keyLight';
+import {
+  type LineAttributes,
+  lineAttributes,
+  lodIndex,
+  type PointAttributes,
+  pointAttributes,
+} from './strandAttributes';
+
+export { LOD_GROUPS } from './strandAttributes';
 
 const commonVertex = /* glsl */ `
 attribute vec3 tangent;
@@ -359,116 +368,19 @@ export function setLightDirection(material: StrandMaterial, x: number, y: number
   material.uniforms.keyDirection.value.set(x, y, z).normalize();
 }
 
-/** Strands are drawn in this many interleaved groups (see buildStrandGeometry). */
-export const LOD_GROUPS = 64;
-const LOD_ORDER = Array.from({ length: LOD_GROUPS }, (_, g) => {
-  let r = 0;
-  for (let b = 1, x = g; b < LOD_GROUPS; b <<= 1, x >>= 1) r = (r << 1) | (x & 1);
-  return r;
-});
-
-interface PointAttributes {
-  pointCount: number;
-  tangent: Int8Array;
-  along: Uint8Array;
-  random: Uint8Array; // 4 per point
-  light: Uint8Array; // 2 per point
-  box: THREE.Box3;
-}
-
-/** Per-point attributes shared by lines and strips (see buildStrandGeometry). */
-function pointAttributes(
-  points: Float32Array,
-  strandStart: Uint32Array,
-  colorSeed: number,
-  lighting: Float32Array | null,
-): PointAttributes {
-  const strands = Math.max(0, strandStart.length - 1);
-  const pointCount = strands > 0 ? strandStart[strands] : 0;
-  if (3 * pointCount > points.length) throw new Error('strandStart exceeds the points array');
-  const useLight = lighting !== null && lighting.length >= 2 * pointCount;
-  // compact, normalised attributes: tangent as signed bytes (÷127), the rest as unsigned bytes
-  // (÷255); the shader reads floats either way
-  const tangent = new Int8Array(3 * pointCount);
-  const along = new Uint8Array(pointCount);
-  const random = new Uint8Array(4 * pointCount);
-  const light = new Uint8Array(2 * pointCount);
-  const seedMix = Math.imul(colorSeed >>> 0, 0x9e3779b1);
-  let minX = Infinity;
-  let minY = Infinity;
-  let minZ = Infinity;
-  let maxX = -Infinity;
-  let maxY = -Infinity;
-  let maxZ = -Infinity;
-  for (let s = 0; s < strands; s++) {
-    const a = strandStart[s];
-    const b = strandStart[s + 1];
-    const n = b - a;
-    if (n <= 0) continue;
-    const h = hash32(s ^ seedMix);
-    const h2 = hash32(h ^ 0x5bd1e995);
-    const r0 = h >>> 24; // value
-    const r1 = (h >>> 16) & 255; // hue
-    const r2 = (h >>> 8) & 255; // length appearance
-    const r3 = h2 >>> 24; // highlight noise
-    const inv = n > 1 ? 255 / (n - 1) : 0;
-    let tx = 0;
-    let ty = 127;
-    let tz = 0;
-    for (let i = a; i < b; i++) {
-      const px = points[3 * i];
-      const py = points[3 * i + 1];
-      const pz = points[3 * i + 2];
-      if (px < minX) minX = px;
-      if (px > maxX) maxX = px;
-      if (py < minY) minY = py;
-      if (py > maxY) maxY = py;
-      if (pz < minZ) minZ = pz;
-      if (pz > maxZ) maxZ = pz;
-      const i0 = i > a ? i - 1 : i;
-      const i1 = i < b - 1 ? i + 1 : i;
-      const dx = points[3 * i1] - points[3 * i0];
-      const dy = points[3 * i1 + 1] - points[3 * i0 + 1];
-      const dz = points[3 * i1 + 2] - points[3 * i0 + 2];
-      const l = Math.sqrt(dx * dx + dy * dy + dz * dz);
-      if (l > 1e-12) {
-        const k = 127 / l;
-        tx = Math.round(dx * k);
-        ty = Math.round(dy * k);
-        tz = Math.round(dz * k);
-      }
-      tangent[3 * i] = tx;
-      tangent[3 * i + 1] = ty;
-      tangent[3 * i + 2] = tz;
-      along[i] = Math.round((i - a) * inv);
-      random[4 * i] = r0;
-      random[4 * i + 1] = r1;
-      random[4 * i + 2] = r2;
-      random[4 * i + 3] = r3;
-      if (useLight) {
-        light[2 * i] = Math.round(255 * clamp01(lighting[2 * i]));
-        light[2 * i + 1] = Math.round(255 * clamp01(lighting[2 * i + 1]));
-      } else {
-        light[2 * i] = 255;
-        light[2 * i + 1] = 255;
-      }
-    }
-  }
-  const box =
-    pointCount > 0
-      ? new THREE.Box3(new THREE.Vector3(minX, minY, minZ), new THREE.Vector3(maxX, maxY, maxZ))
-      : new THREE.Box3();
-  return { pointCount, tangent, along, random, light, box };
-}
-
-function setBounds(geometry: THREE.BufferGeometry, box: THREE.Box3, empty: boolean): void {
+function setBounds(geometry: THREE.BufferGeometry, b: Float32Array): void {
   // bounds from the attribute loop (three's computeBoundingSphere takes ~40× longer on 4M
   // points); the sphere around the box is conservative, which is all culling and picking need
-  geometry.boundingBox = box;
-  if (empty) {
+  if (b.length < 6) {
+    geometry.boundingBox = new THREE.Box3();
     geometry.boundingSphere = new THREE.Sphere(new THREE.Vector3(), 0);
     return;
   }
+  const box = new THREE.Box3(
+    new THREE.Vector3(b[0], b[1], b[2]),
+    new THREE.Vector3(b[3], b[4], b[5]),
+  );
+  geometry.boundingBox = box;
   const center = box.getCenter(new THREE.Vector3());
   const size = box.getSize(new THREE.Vector3());
   geometry.boundingSphere = new THREE.Sphere(center, 0.5 * size.length());
@@ -477,35 +389,40 @@ function setBounds(geometry: THREE.BufferGeometry, box: THREE.Box3, empty: boole
 /** Build indexed LineSegments geometry for strands. Strand s owns points
  *  strandStart[s] .. strandStart[s + 1] − 1 of `points` (points[3 * point + axis]); each pair of
  *  consecutive points is a segment. The `position` attribute views `points` (not copied: do not
- *  change it afterwards). Added per point: `tangent` (unit, central differences; one-sided at the
- *  ends; Int8 normalised), `along` (0 at the root … 1 at the tip; Uint8 normalised),
- *  `strandRandom` (4 values per strand, in [0, 1]: value, hue, length appearance, highlight
- *  noise; a hash of the strand index and `colorSeed`; Uint8 normalised) and `lighting`
- *  (transmittance, ambient occlusion from `lighting`, 2 per point as protocol.ts
- *  HairLightingArrays.strand; 1, 1 without it; Uint8 normalised).
- *  Level of detail: the index lists strands interleaved (stride LOD_GROUPS, groups in
- *  bit-reversed order), so any prefix of the groups is an even sample of the whole head of hair;
- *  `userData.lodCounts[g]` is the index count of the first g groups (a draw range). */
+ *  change it afterwards). Added per point (strandAttributes.ts): `tangent`, `along`,
+ *  `strandRandom` (a hash of the strand index and `colorSeed`) and `lighting` (from `lighting`,
+ *  2 per point as protocol.ts HairLightingArrays.strand; 1, 1 without it), all normalised.
+ *  `prebuilt`: those attributes and the index as lineAttributes made them for these strands
+ *  (by the worker), used as they are. Level of detail: any prefix of the index's groups is an
+ *  even sample of the whole head of hair; `userData.lodCounts[g]` is the index count of the first
+ *  g groups (a draw range). */
 export function buildStrandGeometry(
   points: Float32Array,
   strandStart: Uint32Array,
   colorSeed = 0,
   lighting: Float32Array | null = null,
+  prebuilt: LineAttributes | null = null,
 ): THREE.BufferGeometry {
-  const attrs = pointAttributes(points, strandStart, colorSeed, lighting);
-  const { pointCount } = attrs;
-  const { index, lodCounts } = lodIndex(strandStart, [0, 1]);
+  const attrs = prebuilt ?? lineAttributes(points, strandStart, colorSeed, lighting);
+  const { pointCount, index, lodCounts } = attrs;
   const geometry = new THREE.BufferGeometry();
   geometry.userData.lodCounts = lodCounts;
   const used = pointCount === points.length / 3 ? points : points.subarray(0, 3 * pointCount);
   geometry.setAttribute('position', new THREE.BufferAttribute(used, 3));
+  setPointAttributes(geometry, attrs);
+  geometry.setIndex(new THREE.BufferAttribute(index, 1));
+  setBounds(geometry, attrs.box);
+  return geometry;
+}
+
+function setPointAttributes(
+  geometry: THREE.BufferGeometry,
+  attrs: Pick<PointAttributes, 'tangent' | 'along' | 'random' | 'light'>,
+): void {
   geometry.setAttribute('tangent', new THREE.BufferAttribute(attrs.tangent, 3, true));
   geometry.setAttribute('along', new THREE.BufferAttribute(attrs.along, 1, true));
   geometry.setAttribute('strandRandom', new THREE.BufferAttribute(attrs.random, 4, true));
   geometry.setAttribute('lighting', new THREE.BufferAttribute(attrs.light, 2, true));
-  geometry.setIndex(new THREE.BufferAttribute(index, 1));
-  setBounds(geometry, attrs.box, pointCount === 0);
-  return geometry;
 }
 
 /** Strip geometry for the same strands: point i becomes vertices 2i and 2i + 1 (the two sides,
@@ -517,8 +434,9 @@ export function buildStrandStripGeometry(
   strandStart: Uint32Array,
   colorSeed = 0,
   lighting: Float32Array | null = null,
+  prebuilt: PointAttributes | null = null,
 ): THREE.BufferGeometry {
-  const attrs = pointAttributes(points, strandStart, colorSeed, lighting);
+  const attrs = prebuilt ?? pointAttributes(points, strandStart, colorSeed, lighting);
   const { pointCount } = attrs;
   const twice = <T extends Int8Array | Uint8Array | Float32Array>(src: T, size: number): T => {
     const out = new (src.constructor as { new (n: number): T })(2 * src.length);
@@ -538,54 +456,13 @@ export function buildStrandStripGeometry(
     'position',
     new THREE.BufferAttribute(twice(points.subarray(0, 3 * pointCount), 3), 3),
   );
-  geometry.setAttribute('tangent', new THREE.BufferAttribute(twice(attrs.tangent, 3), 3, true));
-  geometry.setAttribute('along', new THREE.BufferAttribute(twice(attrs.along, 1), 1, true));
-  geometry.setAttribute('strandRandom', new THREE.BufferAttribute(twice(attrs.random, 4), 4, true));
-  geometry.setAttribute('lighting', new THREE.BufferAttribute(twice(attrs.light, 2), 2, true));
+  setPointAttributes(geometry, {
+    tangent: twice(attrs.tangent, 3),
+    along: twice(attrs.along, 1),
+    random: twice(attrs.random, 4),
+    light: twice(attrs.light, 2),
+  });
   geometry.setIndex(new THREE.BufferAttribute(index, 1));
-  setBounds(geometry, attrs.box, pointCount === 0);
+  setBounds(geometry, attrs.box);
   return geometry;
-}
-
-/** The index of every segment in level-of-detail order (strands interleaved with stride
- *  LOD_GROUPS, groups in LOD_ORDER) and `lodCounts[g]`, the index count of the first g groups.
- *  Each segment from point i writes `pattern` offset by `verticesPerPoint * i`. */
-function lodIndex(
-  strandStart: Uint32Array,
-  pattern: readonly number[],
-  verticesPerPoint = 1,
-): { index: Uint32Array; lodCounts: Uint32Array } {
-  const strands = Math.max(0, strandStart.length - 1);
-  let segments = 0;
-  for (let s = 0; s < strands; s++) {
-    const n = strandStart[s + 1] - strandStart[s];
-    if (n > 1) segments += n - 1;
-  }
-  const index = new Uint32Array(pattern.length * segments);
-  const lodCounts = new Uint32Array(LOD_GROUPS + 1);
-  let w = 0;
-  for (let g = 0; g < LOD_GROUPS; g++) {
-    for (let s = LOD_ORDER[g]; s < strands; s += LOD_GROUPS)
-      for (let i = strandStart[s]; i + 1 < strandStart[s + 1]; i++) {
-        const a = verticesPerPoint * i;
-        for (const k of pattern) index[w++] = a + k;
-      }
-    lodCounts[g + 1] = w;
-  }
-  return { index, lodCounts };
-}
-
-function clamp01(v: number): number {
-  return v > 0 ? Math.min(v, 1) : 0;
-}
-
-/** 32-bit integer hash (lowbias32, Chris Wellons). */
-function hash32(x: number): number {
-  let h = x >>> 0;
-  h ^= h >>> 16;
-  h = Math.imul(h, 0x7feb352d);
-  h ^= h >>> 15;
-  h = Math.imul(h, 0x846ca68b);
-  h ^= h >>> 16;
-  return h >>> 0;
 }

@@ -1,0 +1,166 @@
+// The strands' vertex attributes, as typed arrays (no three.js: the solver worker builds them
+// for the final hair, the page for previews; strandMaterial.ts wraps them in a geometry).
+// Per point i of strand s (points strandStart[s] .. strandStart[s + 1] − 1):
+//   tangent[3i .. 3i+2]  unit tangent (central differences, one-sided at the ends), Int8 ÷ 127
+//   along[i]             0 at the root … 255 at the tip
+//   random[4i .. 4i+3]   per strand: value, hue, length appearance, highlight noise (a hash of s
+//                        and the colour seed), Uint8 ÷ 255
+//   light[2i .. 2i+1]    transmittance, ambient occlusion (protocol.ts HairLightingArrays.strand),
+//                        Uint8 ÷ 255; 255, 255 without lighting
+// Level of detail: the index lists strands interleaved (stride LOD_GROUPS, groups in bit-reversed
+// order), so any prefix of the groups is an even sample of the whole head of hair.
+import type { StrandVertexArrays } from '../solver/protocol';
+
+/** Strands are drawn in this many interleaved groups (see buildStrandGeometry). */
+export const LOD_GROUPS = 64;
+const LOD_ORDER = Array.from({ length: LOD_GROUPS }, (_, g) => {
+  let r = 0;
+  for (let b = 1, x = g; b < LOD_GROUPS; b <<= 1, x >>= 1) r = (r << 1) | (x & 1);
+  return r;
+});
+
+/** Per-point vertex attributes (protocol.ts StrandVertexArrays states the layouts). */
+export type PointAttributes = Omit<StrandVertexArrays, 'index' | 'lodCounts'>;
+
+/** Point attributes and the lines' level-of-detail index: everything a line geometry needs
+ *  besides the points (the worker builds them for the final hair, off the page's thread). */
+export type LineAttributes = StrandVertexArrays;
+
+/** The line geometry's attributes for the strands (buildStrandGeometry draws them). */
+export function lineAttributes(
+  points: Float32Array,
+  strandStart: Uint32Array,
+  colorSeed = 0,
+  lighting: Float32Array | null = null,
+): LineAttributes {
+  return {
+    ...pointAttributes(points, strandStart, colorSeed, lighting),
+    ...lodIndex(strandStart, [0, 1]),
+  };
+}
+
+/** Per-point attributes shared by lines and strips (see buildStrandGeometry). */
+export function pointAttributes(
+  points: Float32Array,
+  strandStart: Uint32Array,
+  colorSeed: number,
+  lighting: Float32Array | null,
+): PointAttributes {
+  const strands = Math.max(0, strandStart.length - 1);
+  const pointCount = strands > 0 ? strandStart[strands] : 0;
+  if (3 * pointCount > points.length) throw new Error('strandStart exceeds the points array');
+  const useLight = lighting !== null && lighting.length >= 2 * pointCount;
+  // compact, normalised attributes: tangent as signed bytes (÷127), the rest as unsigned bytes
+  // (÷255); the shader reads floats either way
+  const tangent = new Int8Array(3 * pointCount);
+  const along = new Uint8Array(pointCount);
+  const random = new Uint8Array(4 * pointCount);
+  const light = new Uint8Array(2 * pointCount);
+  const seedMix = Math.imul(colorSeed >>> 0, 0x9e3779b1);
+  let minX = Infinity;
+  let minY = Infinity;
+  let minZ = Infinity;
+  let maxX = -Infinity;
+  let maxY = -Infinity;
+  let maxZ = -Infinity;
+  for (let s = 0; s < strands; s++) {
+    const a = strandStart[s];
+    const b = strandStart[s + 1];
+    const n = b - a;
+    if (n <= 0) continue;
+    const h = hash32(s ^ seedMix);
+    const h2 = hash32(h ^ 0x5bd1e995);
+    const r0 = h >>> 24; // value
+    const r1 = (h >>> 16) & 255; // hue
+    const r2 = (h >>> 8) & 255; // length appearance
+    const r3 = h2 >>> 24; // highlight noise
+    const inv = n > 1 ? 255 / (n - 1) : 0;
+    let tx = 0;
+    let ty = 127;
+    let tz = 0;
+    for (let i = a; i < b; i++) {
+      const px = points[3 * i];
+      const py = points[3 * i + 1];
+      const pz = points[3 * i + 2];
+      if (px < minX) minX = px;
+      if (px > maxX) maxX = px;
+      if (py < minY) minY = py;
+      if (py > maxY) maxY = py;
+      if (pz < minZ) minZ = pz;
+      if (pz > maxZ) maxZ = pz;
+      const i0 = i > a ? i - 1 : i;
+      const i1 = i < b - 1 ? i + 1 : i;
+      const dx = points[3 * i1] - points[3 * i0];
+      const dy = points[3 * i1 + 1] - points[3 * i0 + 1];
+      const dz = points[3 * i1 + 2] - points[3 * i0 + 2];
+      const l = Math.sqrt(dx * dx + dy * dy + dz * dz);
+      if (l > 1e-12) {
+        const k = 127 / l;
+        tx = Math.round(dx * k);
+        ty = Math.round(dy * k);
+        tz = Math.round(dz * k);
+      }
+      tangent[3 * i] = tx;
+      tangent[3 * i + 1] = ty;
+      tangent[3 * i + 2] = tz;
+      along[i] = Math.round((i - a) * inv);
+      random[4 * i] = r0;
+      random[4 * i + 1] = r1;
+      random[4 * i + 2] = r2;
+      random[4 * i + 3] = r3;
+      if (useLight) {
+        light[2 * i] = Math.round(255 * clamp01(lighting[2 * i]));
+        light[2 * i + 1] = Math.round(255 * clamp01(lighting[2 * i + 1]));
+      } else {
+        light[2 * i] = 255;
+        light[2 * i + 1] = 255;
+      }
+    }
+  }
+  const box =
+    pointCount > 0 ? new Float32Array([minX, minY, minZ, maxX, maxY, maxZ]) : new Float32Array(0);
+  return { pointCount, tangent, along, random, light, box };
+}
+
+/** The index of every segment in level-of-detail order (strands interleaved with stride
+ *  LOD_GROUPS, groups in LOD_ORDER) and `lodCounts[g]`, the index count of the first g groups.
+ *  Each segment from point i writes `pattern` offset by `verticesPerPoint * i`. */
+export function lodIndex(
+  strandStart: Uint32Array,
+  pattern: readonly number[],
+  verticesPerPoint = 1,
+): { index: Uint32Array; lodCounts: Uint32Array } {
+  const strands = Math.max(0, strandStart.length - 1);
+  let segments = 0;
+  for (let s = 0; s < strands; s++) {
+    const n = strandStart[s + 1] - strandStart[s];
+    if (n > 1) segments += n - 1;
+  }
+  const index = new Uint32Array(pattern.length * segments);
+  const lodCounts = new Uint32Array(LOD_GROUPS + 1);
+  let w = 0;
+  for (let g = 0; g < LOD_GROUPS; g++) {
+    for (let s = LOD_ORDER[g]; s < strands; s += LOD_GROUPS)
+      for (let i = strandStart[s]; i + 1 < strandStart[s + 1]; i++) {
+        const a = verticesPerPoint * i;
+        for (const k of pattern) index[w++] = a + k;
+      }
+    lodCounts[g + 1] = w;
+  }
+  return { index, lodCounts };
+}
+
+function clamp01(v: number): number {
+  return v > 0 ? Math.min(v, 1) : 0;
+}
+
+/** 32-bit integer hash (lowbias32, Chris Wellons). */
+function hash32(x: number): number {
+  let h = x >>> 0;
+  h ^= h >>> 16;
+  h = Math.imul(h, 0x7feb352d);
+  h ^= h >>> 15;
+  h = Math.imul(h, 0x846ca68b);
+  h ^= h >>> 16;
+  return h >>> 0;
+}
