@@ -12,7 +12,7 @@
 //                same). The converged field's hair is posted light first (its first strands, as
 //                a first look is grown: what a slow GPU draws of the hair first), then in full.
 // A 'scalpMask' message changes the scalp at once (no restart, nothing else rebuilt).
-import { resultLighting } from '../lighting/resultLighting';
+import { ResultLighting } from '../lighting/resultLighting';
 import { type IterateProgress, type SolverEngine, SolverError } from './engine';
 import {
   type ConstraintArrays,
@@ -90,6 +90,8 @@ export class WorkerLogic {
   private initialised = false;
   /** The head from 'init': the hair's lighting is computed against it (resultLighting). */
   private head: ScalpMesh | null = null;
+  /** The hair's lighting against that head, on a grid over it and the solver's grid. */
+  private lighting: ResultLighting | null = null;
   private latest: SolveMsg | null = null;
   private running = false;
 
@@ -106,6 +108,7 @@ export class WorkerLogic {
         this.engine.setGrid(msg.grid, msg.omega, msg.solver);
         this.engine.setScalp(msg.scalp);
         this.head = msg.scalp;
+        this.lighting = new ResultLighting(msg.scalp, msg.grid);
         this.initialised = true;
         const n = msg.grid.dims[0] * msg.grid.dims[1] * msg.grid.dims[2];
         this.post({ type: 'ready', gridPoints: n, roots: 0 });
@@ -283,7 +286,7 @@ export class WorkerLogic {
       strands,
       constraints: this.constraintsWithColours(),
       field: job.wantField ? this.engine.field() : null,
-      lighting: resultLighting(strands, this.head, this.opts.now, final),
+      lighting: this.lighting?.of(strands, this.opts.now, final) ?? null,
       stats,
       final,
       converged,
