@@ -165,27 +165,19 @@ export function voxelizeHead(
   return box;
 }
 
-/** The parameters t ∈ [t0, t1] for which p + t·L lies in the open slab (lo, hi) on every axis
- *  (t1 < t0 when the ray misses). */
-function rayBoxSpan(
-  p: number[],
-  L: readonly number[],
-  lo: number[],
-  hi: number[],
-): [number, number] {
-  let t0 = -Infinity;
-  let t1 = Infinity;
-  for (let a = 0; a < 3; a++) {
-    if (L[a] === 0) {
-      if (!(p[a] > lo[a] && p[a] < hi[a])) return [1, 0];
-      continue;
-    }
-    const ta = (lo[a] - p[a]) / L[a];
-    const tb = (hi[a] - p[a]) / L[a];
-    t0 = Math.max(t0, Math.min(ta, tb));
-    t1 = Math.min(t1, Math.max(ta, tb));
+/** The ray parameters [t0, t1] along one axis for which p + t·l lies in the open slab
+ *  (lo, hi) (an empty span when the ray runs outside it). */
+function slabSpan(p: number, l: number, lo: number, hi: number, span: Float64Array): void {
+  if (l === 0) {
+    const inSlab = p > lo && p < hi;
+    span[0] = inSlab ? -Infinity : 1;
+    span[1] = inSlab ? Infinity : 0;
+    return;
   }
-  return [t0, t1];
+  const ta = (lo - p) / l;
+  const tb = (hi - p) / l;
+  span[0] = Math.min(ta, tb);
+  span[1] = Math.max(ta, tb);
 }
 
 /** The head's optical depth towards the light at every node: `opacity` times the trilinear
@@ -208,14 +200,20 @@ export function headDepthMarch(
   const [nx, ny, nz] = dims;
   const lo = insideBox.lo.map((v) => v - 1);
   const hi = insideBox.hi.map((v) => v + 1);
-  const p = [0, 0, 0];
-  for (let z = 0; z < nz; z++)
-    for (let y = 0; y < ny; y++)
+  const sx = new Float64Array(2);
+  const sy = new Float64Array(2);
+  const sz = new Float64Array(2);
+  for (let z = 0; z < nz; z++) {
+    slabSpan(z, L[2], lo[2], hi[2], sz);
+    for (let y = 0; y < ny; y++) {
+      slabSpan(y, L[1], lo[1], hi[1], sy);
+      const yz0 = Math.max(sy[0], sz[0]);
+      const yz1 = Math.min(sy[1], sz[1]);
+      if (yz1 < first || yz1 < yz0) continue;
       for (let x = 0; x < nx; x++) {
-        p[0] = x;
-        p[1] = y;
-        p[2] = z;
-        const [t0, t1] = rayBoxSpan(p, L, lo, hi);
+        slabSpan(x, L[0], lo[0], hi[0], sx);
+        const t0 = Math.max(sx[0], yz0);
+        const t1 = Math.min(sx[1], yz1);
         if (t1 < first || t1 < t0) continue;
         let tau = 0;
         for (let t = Math.max(first, Math.ceil(t0)); t <= t1; t++) {
@@ -228,6 +226,8 @@ export function headDepthMarch(
         }
         out[x + nx * (y + ny * z)] = tau;
       }
+    }
+  }
 }
 
 /** Per node of `box`: Σ over the (2r + 1)³ box around it of g (nodes outside the grid count 0),
