@@ -5,7 +5,8 @@
 // (error against a reference from a second solver instance iterated to an error estimate of
 // 1e-14; the direct-solve agreement itself is tested in tests/native/multigrid_test.cpp on
 // smaller grids), where the error estimate stops, memory. Env: MG_SYM, MG_CSYM, MG_SWEEPS,
-// MG_COARSEST override MultigridOptions; MG_THREADS=N runs the solver on N threads (parallel.hpp).
+// MG_COARSEST, MG_FMG (0: cold solve from zero), MG_FMG_CYCLES, MG_FMG_FINE override
+// MultigridOptions; MG_THREADS=N runs the solver on N threads (parallel.hpp).
 // Usage: mg_bench [N ...]   (default 29 37 47 63)
 //        mg_bench --app BEFORE.txt AFTER.txt   an app's constraint sets ("nx ny nz" then
 //          "index tx ty tz" lines): the edit BEFORE -> AFTER as the worker runs it (warm start to
@@ -76,6 +77,9 @@ static MultigridOptions optionsFromEnv() {
   if (const char* e = std::getenv("MG_CSWEEPS")) mo.coarseSweeps = std::atoi(e);
   if (const char* e = std::getenv("MG_CYCLES")) mo.coarseCycles = std::atoi(e);
   if (const char* e = std::getenv("MG_COLOURS")) mo.colours = std::atoi(e);
+  if (const char* e = std::getenv("MG_FMG")) mo.fmgStart = std::atoi(e) != 0;
+  if (const char* e = std::getenv("MG_FMG_CYCLES")) mo.fmgCycles = std::atoi(e);
+  if (const char* e = std::getenv("MG_FMG_FINE")) mo.fmgFineCycles = std::atoi(e);
   return mo;
 }
 

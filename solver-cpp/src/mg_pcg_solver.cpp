@@ -125,6 +125,7 @@ Status MgPcgSolver::setGrid(const Grid& grid, double omega) {
   const size_t m = 3 * size_t(mg_.paddedRows());
   for (auto* v : {&x_, &b_, &r_, &z_, &p_, &q_}) v->assign(m, 0.0);
   runActive_ = false;
+  coldStart_ = true;
   progress_ = MgProgress();
   progress_.errorEstimate = 0;
   progress_.converged = true;
@@ -157,6 +158,7 @@ Status MgPcgSolver::setConstraints(const ConstraintSet& input) {
   }
   if (set_.empty()) {
     std::fill(x_.begin(), x_.end(), 0.0);
+    coldStart_ = true;
   } else if (!(s = mg_.prepare()).ok()) {
     return s;
   }
@@ -175,13 +177,34 @@ bool MgPcgSolver::forgetWarmStart() {
   // the operators as a fresh solver builds them (no rounding of earlier edits), and a zero start
   if (!mg_.resetPenalties().ok() || !mg_.prepare().ok()) return false;
   std::fill(x_.begin(), x_.end(), 0.0);
+  coldStart_ = true;
   runActive_ = false;
   progress_ = MgProgress();
   stats_.iterations = 0;
   return true;
 }
 
+// A cold start begins at the full-multigrid solution (a function of the constraints and the
+// operators alone, which forgetWarmStart has rebuilt history-free), then fmgFineCycles V-cycle
+// corrections on the fine level; a warm one at the previous field.
+void MgPcgSolver::coldStartField() {
+  mg_.fullMultigrid(b_.data(), x_.data(), mgOptions_.fmgCycles);
+  const size_t rows = x_.size() / 3;
+  for (int c = 0; c < mgOptions_.fmgFineCycles; ++c) {
+    mg_.applyFine(x_.data(), q_.data());
+    forRows(rows, [&](size_t i0, size_t i1) {
+      for (size_t i = 3 * i0; i < 3 * i1; ++i) r_[i] = b_[i] - q_[i];
+    });
+    mg_.vcycle(r_.data(), z_.data());
+    forRows(rows, [&](size_t i0, size_t i1) {
+      for (size_t i = 3 * i0; i < 3 * i1; ++i) x_[i] += z_[i];
+    });
+  }
+}
+
 Status MgPcgSolver::startRun() {
+  if (coldStart_ && mgOptions_.fmgStart) coldStartField();
+  coldStart_ = false;
   mg_.applyFine(x_.data(), q_.data());
   forRows(r_.size() / 3, [&](size_t i0, size_t i1) {
     for (size_t i = 3 * i0; i < 3 * i1; ++i) r_[i] = b_[i] - q_[i];

@@ -81,6 +81,7 @@ class MgPcgSolver : public FieldSolver {
 
  private:
   Status startRun();
+  void coldStartField();
   void updateEstimate();
 
   MultigridOptions mgOptions_;
@@ -96,6 +97,9 @@ class MgPcgSolver : public FieldSolver {
   // residual, direction, M * direction.
   std::vector<double> x_, b_, r_, z_, p_, q_;
   bool runActive_ = false;
+  // The next run starts cold (after setGrid, forgetWarmStart, or an empty set zeroed the field):
+  // from the full-multigrid solution instead of the previous field (MultigridOptions::fmgStart).
+  bool coldStart_ = true;
   double gamma_[3] = {0, 0, 0};
   double bnorm2_ = 0;
   double xx_[3] = {0, 0, 0}, rr_[3] = {0, 0, 0};  // column norms^2 of x and r (after an update)

@@ -674,13 +674,13 @@ void MultigridHierarchy::solveCoarsest() {
   }
 }
 
-void MultigridHierarchy::cycle(int l) {
+void MultigridHierarchy::cycle(int l, bool zeroStart) {
   Level& lv = levels_[l];
   if (l + 1 == levels()) {
     solveCoarsest();
     return;
   }
-  fillParallel(lv.x.data(), lv.x.size());
+  if (zeroStart) fillParallel(lv.x.data(), lv.x.size());
   for (const ColourPass& c : lv.prePlan) coarseColourPass(l, c.colour, c.forward);
   const Transfer3D& t = transfers_[l];
   // More than one correction only when the next level is not the exact coarsest.
@@ -718,6 +718,36 @@ void MultigridHierarchy::vcycle(const double* r, double* z) {
   prolongAdd(transfers_[0], levels_[1].x.data(), z, f.layout, work_);
   computeL(z, f.L.data());
   for (const ColourPass& c : finePost_) fineColourPass(c.colour, c.forward, z, r);
+}
+
+// Full multigrid (Briggs, Henson, McCormick, "A Multigrid Tutorial", ch. 3: nested iteration,
+// FMG): the Galerkin levels are the problem's own coarse approximations (A_{l+1} = P^T A_l P,
+// b_{l+1} = P^T b_l), so each level's solution, interpolated, is a good start for the next finer
+// one, and a V-cycle there removes what the coarser level could not represent. Working storage:
+// levels_[l].b holds b_l until level l is done (cycles on level l overwrite only coarser b's),
+// levels_[l].x the level's solution.
+void MultigridHierarchy::fullMultigrid(const double* b, double* x, int cycles) {
+  Fine& f = fine_;
+  if (levels_.size() == 1) {  // the whole problem is small: exact solve
+    vcycle(b, x);
+    return;
+  }
+  restrictTranspose(transfers_[0], b, f.layout, levels_[1].b.data(), work_);
+  for (size_t l = 1; l + 1 < levels_.size(); ++l) {
+    const Level& lv = levels_[l];
+    restrictTranspose(transfers_[l], lv.b.data(), BoxLayout::dense(lv.nx, lv.ny, lv.nz),
+                      levels_[l + 1].b.data(), work_);
+  }
+  solveCoarsest();
+  for (int l = levels() - 2; l >= 1; --l) {
+    Level& lv = levels_[l];
+    fillParallel(lv.x.data(), lv.x.size());
+    prolongAdd(transfers_[l], levels_[l + 1].x.data(), lv.x.data(),
+               BoxLayout::dense(lv.nx, lv.ny, lv.nz), work_);
+    for (int c = 0; c < cycles; ++c) cycle(l, false);
+  }
+  fillParallel(x, 3 * size_t(f.rows));
+  prolongAdd(transfers_[0], levels_[1].x.data(), x, f.layout, work_);
 }
 
 }  // namespace hairsketch

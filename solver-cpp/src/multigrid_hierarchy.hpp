@@ -60,6 +60,14 @@ struct MultigridOptions {
   // mg_bench 47^3 41 -> 42); with 5 it needs the same counts on every benchmark (mg_bench 29-47,
   // --app 25K/50K/250K), and 5 still leaves 12-15 planes per colour at 250K for the threads.
   int colours = 5;
+  // Cold start (MgPcgSolver after setGrid or forgetWarmStart): full multigrid (nested
+  // iteration, fullMultigrid()) instead of a zero field (false: CG starts from zero). The
+  // right-hand side is restricted to every level, the coarsest level solved exactly, and on the
+  // way up each level starts from the interpolated coarser solution and runs `fmgCycles`
+  // V-cycles, the fine level `fmgFineCycles` (before CG's first iteration).
+  bool fmgStart = true;
+  int fmgCycles = 1;
+  int fmgFineCycles = 0;
 };
 
 class MultigridHierarchy {
@@ -97,6 +105,12 @@ class MultigridHierarchy {
   void applyFine(const double* x, double* y);
   // z = B r, one V-cycle from a zero initial guess (r, z padded, must not alias).
   void vcycle(const double* r, double* z);
+  // x ~ M^-1 b by full multigrid up to level 1 and interpolation to the fine level (b, x padded,
+  // must not alias; ghost rows of x are zero): b restricted down the levels (P^T), the coarsest
+  // level solved exactly, then on each level l >= 1 from the coarsest up: x_l = P x_{l+1} and
+  // `cycles` V-cycles on A_l x_l = b_l from there; x = P_0 x_1. cycles = 0: interpolated only.
+  // A function of b and the operators alone, the same bits with any thread count.
+  void fullMultigrid(const double* b, double* x, int cycles);
 
   // Galerkin operator of level l >= 1 (for the single-level case, level 0's assembled matrix).
   const Csr& levelMatrix(int l) const { return levels_[l].A; }
@@ -151,7 +165,8 @@ class MultigridHierarchy {
   void fineResidual(const double* x, const double* b, double* res) const;
   void coarseColourPass(int l, int colour, bool forward);
   void coarseResidual(int l);
-  void cycle(int l);
+  // One V-cycle on level l for levels_[l].b, from levels_[l].x (zeroStart: from zero).
+  void cycle(int l, bool zeroStart = true);
   void solveCoarsest();
   Status refactorCoarsest();
   bool updateCoarsest();
