@@ -9,6 +9,7 @@ import { type IterateProgress, type SolverEngine, SolverError } from '../../web/
 import type { FromWorker, HairOptions, ToWorker } from '../../web/solver/protocol';
 import { loadSolverEngine } from '../../web/solver/wasmEngine';
 import { DEFAULT_SCHEDULER, WorkerLogic } from '../../web/solver/workerLogic';
+import { lineAttributes } from '../../web/viewer/strandAttributes';
 
 /** An engine whose error falls by 10x per iteration from 1 (so 1e-6 takes 6 iterations). */
 function scriptedEngine(log: string[], colours = new Uint8Array([0, 1, 3])): SolverEngine {
@@ -528,6 +529,28 @@ describe('WorkerLogic over the real wasm engine', () => {
     const [reference] = finals(freshPosted);
 
     expect(posted.filter((m) => m.type === 'error')).toEqual([]);
+    // the final hair comes with its vertex attributes, as the page would build them from it
+    for (const r of [all, painted]) {
+      const a = r.attributes;
+      if (!a) throw new Error('a final result without vertex attributes');
+      const mine = lineAttributes(r.strands.points, r.strands.strandStart, 0, r.lighting?.strand);
+      expect(a).toEqual(mine);
+      // checked by hand too: roots at along 0, tips at 255, tangents along the segments
+      const { points: P, strandStart: S } = r.strands;
+      let segments = 0;
+      for (let k = 0; k + 1 < S.length; k++) {
+        const [i0, i1] = [S[k], S[k + 1] - 1];
+        if (i1 <= i0) continue;
+        segments += i1 - i0;
+        expect([a.along[i0], a.along[i1]]).toEqual([0, 255]);
+        const d = [0, 1, 2].map((c) => P[3 * (i0 + 1) + c] - P[3 * i0 + c]);
+        const t = [0, 1, 2].map((c) => a.tangent[3 * i0 + c] / 127);
+        const cos = (d[0] * t[0] + d[1] * t[1] + d[2] * t[2]) / Math.hypot(...d) / Math.hypot(...t);
+        expect(cos).toBeGreaterThan(0.99);
+      }
+      expect(a.index.length).toBe(2 * segments);
+    }
+    expect(posted.filter((m) => m.type === 'result' && !m.final && m.attributes)).toEqual([]);
     expect(painted.strands.points).toEqual(reference.strands.points);
     expect(painted.strands.strandStart).toEqual(reference.strands.strandStart);
     expect(painted.strands.strandStart.length).toBeLessThan(all.strands.strandStart.length);

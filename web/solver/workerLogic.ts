@@ -13,6 +13,7 @@
 //                a first look is grown: what a slow GPU draws of the hair first), then in full.
 // A 'scalpMask' message changes the scalp at once (no restart, nothing else rebuilt).
 import { ResultLighting } from '../lighting/resultLighting';
+import { lineAttributes } from '../viewer/strandAttributes';
 import { type IterateProgress, type SolverEngine, SolverError } from './engine';
 import {
   type ConstraintArrays,
@@ -280,13 +281,19 @@ export class WorkerLogic {
       growMs,
       heapBytes: this.engine.heapBytes(),
     };
+    const lighting = this.lighting?.of(strands, this.opts.now, final) ?? null;
     this.post({
       type: 'result',
       id: job.id,
       strands,
       constraints: this.constraintsWithColours(),
       field: job.wantField ? this.engine.field() : null,
-      lighting: this.lighting?.of(strands, this.opts.now, final) ?? null,
+      lighting,
+      // the full hair's vertex attributes are built here, not on the page (it would stall there
+      // for ~60 ms at 30K strands); lighter hair is quicker to build there than to send
+      attributes: final
+        ? lineAttributes(strands.points, strands.strandStart, 0, lighting?.strand ?? null)
+        : null,
       stats,
       final,
       converged,
