@@ -255,11 +255,12 @@ describe('SolverClient', () => {
     expect(w.solves()[0].curves.curveStart.length).toBe(3);
   });
 
-  it('moves to another grid: a new worker set up on it solves the open request; the cache is dropped', () => {
+  it('moves to another grid in place: the worker is sent the grid, then the request; the cache is dropped', () => {
     const { client, workers } = setup();
-    workers[0].reply({ type: 'ready', gridPoints: 8, roots: 0 });
+    const w = workers[0];
+    w.reply({ type: 'ready', gridPoints: 8, roots: 0 });
     client.request(curves(1), DEFAULT_GROWTH, opts(1));
-    workers[0].reply(result(workers[0].solves()[0].id));
+    w.reply(result(w.solves()[0].id));
     const bigger = {
       dims: [2, 3, 2] as [number, number, number],
       origin: [0, -1, 0] as [number, number, number],
@@ -267,15 +268,18 @@ describe('SolverClient', () => {
     };
     client.setGrid(bigger);
     expect(client.grid).toEqual(bigger);
-    expect(workers[0].terminated).toBe(true);
-    expect(workers).toHaveLength(2);
-    const w = workers[1];
-    expect(w.sent[0]).toMatchObject({ type: 'init', grid: bigger });
+    // no new worker: the grid goes to the one there is
+    expect(workers).toHaveLength(1);
+    expect(w.terminated).toBe(false);
+    expect(w.sent.at(-1)).toEqual({ type: 'grid', grid: bigger });
     client.request(curves(1), DEFAULT_GROWTH, opts(1)); // the same state: not from the old grid's cache
-    expect(w.solves()).toHaveLength(0); // waits for the new worker
-    w.reply({ type: 'ready', gridPoints: 12, roots: 0 });
-    expect(w.solves()).toHaveLength(1);
+    expect(w.solves()).toHaveLength(2);
+    expect(w.sent.at(-1)).toMatchObject({ type: 'solve' });
     expect(client.pending).toBe(true);
+    // a worker that dies later is replaced by one set up on the new grid
+    w.die();
+    expect(workers).toHaveLength(2);
+    expect(workers[1].sent[0]).toMatchObject({ type: 'init', grid: bigger });
   });
 
   it('a result cached for one scalp mask is not shown for another; going back to it is', () => {

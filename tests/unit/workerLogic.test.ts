@@ -6,7 +6,7 @@ import { describe, expect, it } from 'vitest';
 import { packCurves, packHairOptions } from '../../web/model/curveSet';
 import { DEFAULT_GROWTH } from '../../web/model/session';
 import { type IterateProgress, type SolverEngine, SolverError } from '../../web/solver/engine';
-import type { FromWorker, HairOptions, ToWorker } from '../../web/solver/protocol';
+import type { FromWorker, GridSpec, HairOptions, ToWorker } from '../../web/solver/protocol';
 import { loadSolverEngine } from '../../web/solver/wasmEngine';
 import { DEFAULT_SCHEDULER, WorkerLogic } from '../../web/solver/workerLogic';
 import { lineAttributes } from '../../web/viewer/strandAttributes';
@@ -20,7 +20,7 @@ function scriptedEngine(log: string[], colours = new Uint8Array([0, 1, 3])): Sol
     converged: 10 ** -it <= 1e-6,
   });
   return {
-    setGrid: () => log.push('grid'),
+    setGrid: (g, omega, solver) => log.push(`grid:${g.dims.join('x')}:${omega}:${solver}`),
     setScalp: () => log.push('scalp'),
     setScalpMask: (m) => {
       if (m.length !== 8) throw new SolverError(`mask of ${m.length} for 8`, 'invalid_input');
@@ -191,6 +191,26 @@ describe('WorkerLogic', () => {
       [3, true],
     ]);
     expect(h.log.filter((l) => l.startsWith('curves'))).toHaveLength(1);
+  });
+
+  it("moves the engine to another grid in place, with init's omega and solver, and drops the job running", async () => {
+    const h = harness();
+    await h.logic.handle(init);
+    const done = h.logic.handle(solve(1, 'full'));
+    await h.release(); // job 1: first look posted, waiting at a yield
+    expect(h.results().map((r) => r.id)).toEqual([1]);
+    await h.logic.handle({ type: 'grid', grid: { dims: [3, 4, 5], origin: [0, 0, 0], step: 1 } });
+    expect(h.log.at(-1)).toBe('grid:3x4x5:100:fast');
+    const next = h.logic.handle(solve(2, 'full'));
+    while (h.pendingYields() > 0) await h.release();
+    await Promise.all([done, next]);
+    // job 1 never finished; job 2 did, on the new grid
+    expect(h.results().map((r) => [r.id, r.final])).toEqual([
+      [1, false],
+      [2, false],
+      [2, true],
+    ]);
+    expect(h.posted.filter((m) => m.type === 'error')).toEqual([]);
   });
 
   it('drops a preview whose iterations a full request followed, without growing it', async () => {
@@ -418,7 +438,7 @@ describe('WorkerLogic: a new scalp mask', () => {
     while (h.pendingYields() > 0) await h.release();
     await done;
     expect(h.log.indexOf('mask:11001010')).toBeLessThan(h.log.indexOf(`grow:${LIGHT}`));
-    expect(h.log).not.toContain('grid');
+    expect(h.log.filter((l) => l.startsWith('grid'))).toEqual([]);
     expect(h.log).not.toContain('scalp');
   });
 
@@ -557,6 +577,60 @@ describe('WorkerLogic over the real wasm engine', () => {
     const s = painted.strands;
     for (let k = 0; k + 1 < s.strandStart.length; k++)
       expect(s.points[3 * s.strandStart[k] + 1]).toBeGreaterThan(-1e-3); // roots on the upper half
+    engine.dispose();
+    freshEngine.dispose();
+  });
+
+  it('after a grid message, grows the hair a worker started on that grid grows', async () => {
+    const wasmPath = fileURLToPath(new URL('../../web/generated/hairsolver.wasm', import.meta.url));
+    const wasmBinary = new Uint8Array(readFileSync(wasmPath));
+    const step = 0.25;
+    const small: GridSpec = { dims: [12, 12, 12], origin: [-1.5, -1.5, -1.5], step };
+    const big: GridSpec = { dims: [14, 13, 12], origin: [-1.75, -1.5, -1.5], step };
+    const setUp = (grid: GridSpec): ToWorker =>
+      ({ ...init, grid, solver: 'fast', scalp: octahedron([0, 0, 0], 1) }) as ToWorker;
+    const points: [number, number, number][] = [];
+    for (let i = 0; i < 8; i++) points.push([-0.9 + i * step, 1.1, 0]);
+    const curves = packCurves([
+      {
+        id: 'c1',
+        type: 'stream',
+        points,
+        extend: true,
+        viewpoint: { position: [0, 0, 5], target: [0, 0, 0] },
+      },
+    ]);
+    const growth = { ...DEFAULT_GROWTH, thetaStepDeg: 3, phiStepDeg: 3, maxStrands: 0 };
+    const full = (id: number) => ({ ...(solve(id, 'full') as SolveMsg), curves, growth });
+    const final = (posted: FromWorker[]) => {
+      const r = posted.filter((m) => m.type === 'result' && m.final).at(-1);
+      if (r?.type !== 'result') throw new Error(`no final result: ${JSON.stringify(posted)}`);
+      return r;
+    };
+
+    const engine = await loadSolverEngine({ wasmBinary });
+    const posted: FromWorker[] = [];
+    const logic = new WorkerLogic(engine, (m) => posted.push(m));
+    await logic.handle(setUp(small));
+    await logic.handle(full(1));
+    await logic.handle({ type: 'grid', grid: big });
+    await logic.handle(full(2));
+    const moved = final(posted);
+
+    const freshEngine = await loadSolverEngine({ wasmBinary });
+    const freshPosted: FromWorker[] = [];
+    const fresh = new WorkerLogic(freshEngine, (m) => freshPosted.push(m));
+    await fresh.handle(setUp(big));
+    await fresh.handle(full(1));
+    const reference = final(freshPosted);
+
+    expect(posted.filter((m) => m.type === 'error')).toEqual([]);
+    expect(moved.id).toBe(2);
+    expect(moved.strands.strandStart.length).toBeGreaterThan(10);
+    expect(moved.strands.points).toEqual(reference.strands.points);
+    expect(moved.strands.strandStart).toEqual(reference.strands.strandStart);
+    // the constraints are on the new grid: its point indices
+    expect(moved.constraints.index).toEqual(reference.constraints.index);
     engine.dispose();
     freshEngine.dispose();
   });

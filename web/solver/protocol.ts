@@ -231,6 +231,14 @@ export type ToWorker =
       scalp: Uint8Array; // scalp[triangle] = 1 on the scalp; length = triangles of init's head
     }
   | {
+      /** The solver moves to another grid (the session's bounding volume changed): the engine
+       *  is set up on it in place (no new worker; the head, its scalp and its distance grid
+       *  stay), the job running is dropped, and the field is zero until the next solve. A grid
+       *  the engine refuses (the memory cap) is reported as an 'error' with id null. */
+      type: 'grid';
+      grid: GridSpec;
+    }
+  | {
       type: 'solve';
       id: number; // increases per request; results carry it back
       curves: CurveSet;

@@ -100,11 +100,16 @@ export class SolverClient {
   }
 
   /** Moves the solver to another grid (the session's bounding volume grew or shrank): the
-   *  worker is replaced by one set up on it, and the open request is sent to it when ready.
-   *  Cached results were grown on the old grid: dropped. */
+   *  worker moves its engine there in place (a 'grid' message: no new worker, the head stays;
+   *  a worker still loading gets it after its init) and drops the job it runs; the caller asks
+   *  again (SolverBridge.sync). Cached results were grown on the old grid: dropped, and results
+   *  of requests made before are not cached. */
   setGrid(grid: InitMessage['grid']): void {
     this.init = { ...this.init, grid };
-    this.restart('solving');
+    this.cache.clear();
+    this.headRevision++;
+    const msg: ToWorker = { type: 'grid', grid };
+    this.worker?.postMessage(msg);
   }
 
   /** The head the worker grows on (protocol.ts ScalpMesh, its scalp mask included), and the grid

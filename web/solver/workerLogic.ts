@@ -11,7 +11,8 @@
 //                solved again with them, warm-started from that field (growSession.ts does the
 //                same). The converged field's hair is posted light first (its first strands, as
 //                a first look is grown: what a slow GPU draws of the hair first), then in full.
-// A 'scalpMask' message changes the scalp at once (no restart, nothing else rebuilt).
+// A 'scalpMask' message changes the scalp at once (no restart, nothing else rebuilt); a 'grid'
+// message moves the engine to another grid in place (the head stays).
 import { ResultLighting } from '../lighting/resultLighting';
 import { lineAttributes } from '../viewer/strandAttributes';
 import { type IterateProgress, type SolverEngine, SolverError } from './engine';
@@ -19,9 +20,11 @@ import {
   type ConstraintArrays,
   ConstraintColour,
   type FromWorker,
+  type GridSpec,
   type GrowthParams,
   type ScalpMesh,
   type SolverErrorKind,
+  type SolverName,
   type ToWorker,
 } from './protocol';
 
@@ -95,6 +98,11 @@ export class WorkerLogic {
   private lighting: ResultLighting | null = null;
   private latest: SolveMsg | null = null;
   private running = false;
+  /** The omega and solver of 'init' (a 'grid' message keeps them). */
+  private setup: { omega: number; solver: SolverName } | null = null;
+  /** Bumped by every grid change: a job started before it is dropped. */
+  private gridEpoch = 0;
+  private jobEpoch = 0;
 
   constructor(
     readonly engine: SolverEngine,
@@ -107,6 +115,7 @@ export class WorkerLogic {
     if (msg.type === 'init') {
       try {
         this.engine.setGrid(msg.grid, msg.omega, msg.solver);
+        this.setup = { omega: msg.omega, solver: msg.solver };
         this.engine.setScalp(msg.scalp);
         this.head = msg.scalp;
         this.lighting = new ResultLighting(msg.scalp, msg.grid);
@@ -125,6 +134,10 @@ export class WorkerLogic {
     }
     if (msg.type === 'scalpMask') {
       this.setScalpMask(msg.scalp);
+      return Promise.resolve();
+    }
+    if (msg.type === 'grid') {
+      this.setGrid(msg.grid);
       return Promise.resolve();
     }
     if (!this.initialised) {
@@ -158,6 +171,33 @@ export class WorkerLogic {
       }
   }
 
+  /** Another grid for the same head: the engine is set up on it in place and the job running
+   *  is dropped (its field was on the old grid). The hair's lighting keeps its head caches when
+   *  its grid still holds the new one (ResultLighting.forGrid). */
+  private setGrid(grid: GridSpec): void {
+    this.gridEpoch++;
+    if (!this.initialised || !this.setup) {
+      this.post({
+        type: 'error',
+        id: null,
+        message: 'Grid: the solver is not initialised',
+        kind: 'not_ready',
+      });
+      return;
+    }
+    try {
+      this.engine.setGrid(grid, this.setup.omega, this.setup.solver);
+      this.lighting = this.lighting?.forGrid(grid) ?? null;
+    } catch (e) {
+      this.post({
+        type: 'error',
+        id: null,
+        message: `Grid ${grid.dims.join('×')}: ${errorMessage(e)}`,
+        kind: errorKind(e),
+      });
+    }
+  }
+
   private async run(): Promise<void> {
     this.running = true;
     try {
@@ -166,6 +206,7 @@ export class WorkerLogic {
       while (this.latest) {
         const job: Job = this.latest;
         this.latest = null;
+        this.jobEpoch = this.gridEpoch;
         try {
           await this.runJob(job);
         } catch (e) {
@@ -178,7 +219,7 @@ export class WorkerLogic {
   }
 
   private superseded(): boolean {
-    return this.latest !== null;
+    return this.latest !== null || this.jobEpoch !== this.gridEpoch;
   }
 
   private async runJob(job: SolveMsg): Promise<void> {
