@@ -166,7 +166,9 @@ async function stroke(page: Page, i: number): Promise<StrokeResult> {
   );
   const duringLog = r.log.filter((e) => e.time > t0 && e.time <= r.up);
   const during = duringLog.length;
-  const after = r.log.filter((e) => e.time > r.up);
+  // hair answering the finished stroke: results that reached the page after pointer-up (a
+  // preview that arrived before it but was drawn after it does not count)
+  const after = r.log.filter((e) => e.time > r.up && e.arrived > r.up);
   const first = after[0];
   // converged: the converged field's hair on screen (its light growth, when the worker posts
   // one, is the first); full: the final hair with every strand
