@@ -217,11 +217,14 @@ describe('WorkerLogic', () => {
     const h = harness();
     await h.logic.handle(init);
     const preview = h.logic.handle(solve(1, 'preview'));
-    await h.release(); // the preview iterates, then yields before growing
-    expect(h.log).toContain(`iterate:${DEFAULT_SCHEDULER.previewIterations}`);
+    await h.release(); // the preview runs one iteration, then yields
+    expect(h.log.slice(-2)).toEqual(['curves:0:extra0', 'iterate:1']);
     const full = h.logic.handle(solve(2, 'full'));
     while (h.pendingYields() > 0) await h.release();
     await Promise.all([preview, full]);
+    // the preview stopped there: the next thing done is the full request's set-up
+    const at = h.log.indexOf('iterate:1');
+    expect(h.log.slice(at, at + 3)).toEqual(['iterate:1', 'detail:11:0', 'curves:0:extra0']);
     expect(h.results().map((r) => [r.id, r.final])).toEqual([
       [2, false],
       [2, true],

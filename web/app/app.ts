@@ -249,6 +249,9 @@ export function startApp(): void {
       hair.result(r, final);
       overlays.result(r);
       status.result(r, final);
+      // a preview answered: the pointer's newest samples go out as the next one now, not at
+      // the next frame (frames are slow on a software rasteriser; the worker would wait)
+      if (bridge.previewing) queueMicrotask(() => tool.update());
     },
     error: (m, kind, restarting) => status.solverError(m, kind, restarting),
     gridChanged: (g) => overlays.setGrid(g),

@@ -35,15 +35,20 @@ export function bindInput(d: InputDeps): void {
       captured = e.pointerId;
     }
   });
-  canvas.addEventListener('pointermove', (e) => {
-    if (e.pointerId === captured) d.tool().onPointerMove(ptr(e));
+  // Pointer samples as they come (pointerrawupdate, where the browser has it: not held until
+  // the next animation frame as pointermove is), so a preview can go out between frames.
+  const moves = 'onpointerrawupdate' in canvas ? 'pointerrawupdate' : 'pointermove';
+  canvas.addEventListener(moves, (e) => {
+    if (e instanceof PointerEvent && e.pointerId === captured) d.tool().onPointerMove(ptr(e));
   });
   const end = (e: PointerEvent, cancel: boolean) => {
     if (e.pointerId !== captured) return;
     captured = null;
-    d.viewer.hold('stroke', false);
+    // the tool first: its edit holds the view while the hair settles, so the view does not
+    // settle (a full-resolution, full-detail frame) in between
     if (cancel) d.tool().onCancel();
     else d.tool().onPointerUp(ptr(e));
+    d.viewer.hold('stroke', false);
   };
   canvas.addEventListener('pointerup', (e) => {
     d.pointerUp?.(performance.now());

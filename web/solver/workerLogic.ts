@@ -2,8 +2,8 @@
 // browser worker and under Node tests with the real wasm module.
 //
 // Scheduling (one job at a time, the newest request supersedes the running one):
-//   preview job: a few iterations, light growth, one non-final result (none when a newer
-//                request came in during the iterations: the app no longer waits for it);
+//   preview job: a few iterations (one per slice), light growth, one non-final result (none
+//                when a newer request came in meanwhile: the app no longer waits for it);
 //   full job:    a first look after a few iterations (non-final, light growth), then iterate in slices,
 //                yielding to the event loop between slices so a newer request can take over,
 //                and grow the final hair when the field has converged. With "Avoid scalp" on, the
@@ -229,10 +229,15 @@ export class WorkerLogic {
     this.engine.setDetail?.(job.options.detail);
     this.engine.setCurves(job.curves);
     if (job.mode === 'preview') {
-      const p = this.engine.iterate(o.previewIterations, o.tolerance);
-      // the pen may have lifted meanwhile: its full solve need not wait for this growth
-      await o.yieldNow();
-      if (this.superseded()) return;
+      // one iteration at a time: when the pen lifts meanwhile, its full solve need not wait
+      // for the rest of this preview, nor for its growth
+      let p = this.engine.iterate(1, o.tolerance);
+      for (let k = 1; ; k++) {
+        await o.yieldNow();
+        if (this.superseded()) return;
+        if (k >= o.previewIterations || p.converged) break;
+        p = this.engine.iterate(1, o.tolerance);
+      }
       this.emit(job, lightGrowth(job), p, false, t0);
       return;
     }

@@ -167,7 +167,7 @@ export class StreamCurveTool implements Tool {
   onPointerUp(p: ToolPointer): void {
     if (this.state === 'idle') return;
     this.raw.push({ x: p.x, y: p.y });
-    this.update();
+    this.update(false); // the stroke is final: its solve follows, no preview of it
     const hinting = this.state === 'hinting';
     this.state = 'idle';
     this.ctx.showDraft(null);
@@ -253,7 +253,9 @@ export class StreamCurveTool implements Tool {
     this.ctx.preview(null);
   }
 
-  update(): void {
+  /** Samples the pointer positions that came since the last call, shows the stroke so far and
+   *  (unless `preview` is false) asks for a preview of it. */
+  update(preview = true): void {
     if (this.state === 'idle' || this.raw.length === 0) return;
     for (const r of this.raw) {
       this.samples.push(this.ctx.sample(r.x, r.y));
@@ -283,6 +285,6 @@ export class StreamCurveTool implements Tool {
     const lifted = liftStroke(this.samples, this.eye, this.forward);
     if (!lifted.ok) return;
     this.ctx.showDraft(lifted.points);
-    this.ctx.preview(resamplePolyline(lifted.points, this.ctx.step()));
+    if (preview) this.ctx.preview(resamplePolyline(lifted.points, this.ctx.step()));
   }
 }
