@@ -8,7 +8,8 @@
 // unless BENCH_DENSE=0, the same two for a denser version of the session (roots every 0.55°
 // instead of 1°: ~100K strands with the default preset).
 // Writes bench-results/browser.json and prints a table. A benchmark, not a test: it asserts
-// nothing about speed. The drag is paced like a hand (about 60 pointer events per second).
+// nothing about speed. The drag is paced like a hand (a pointer event due every 16 ms; one that
+// came late, as the page acknowledges events only between frames, is not followed by a wait).
 // Each stroke's row also counts the frames drawn while drawing by where they started (the frame
 // cache: cached head and hair / cached head / nothing).
 // BENCH_DIST=<dir> serves another build (vite build --outDir <dir>) instead of dist/.
@@ -144,10 +145,15 @@ async function stroke(page: Page, i: number): Promise<StrokeResult> {
   await page.mouse.down();
   const t0 = await page.evaluate(() => performance.now());
   const f0 = await frameSources(page);
+  // a hand's pace: move k is due 16 ms after move k − 1 was (about 60 events per second); a
+  // move that is late (the page acknowledges each one only when its main thread is free) is not
+  // followed by a further wait
   const n = 60;
+  const due = Date.now();
   for (let k = 1; k <= n; k++) {
     await page.mouse.move(start.x + ((90 * k) / n) * (i % 2 ? -1 : 1), start.y + (170 * k) / n);
-    await page.waitForTimeout(16);
+    const wait = due + 16 * k - Date.now();
+    if (wait > 0) await page.waitForTimeout(wait);
   }
   const t1 = await page.evaluate(() => performance.now());
   const f1 = await frameSources(page);
