@@ -43,8 +43,11 @@ export interface CurveView {
   points: readonly Vec3[];
 }
 
-const INTERACTIVE_FRAME_MS = 40;
-const SLOW_FRAME_MS = 60;
+/** Interactive frames aim at this, and are slow past SLOW_FRAME_MS: frames are presented on
+ *  vsync (16.7 ms), so a frame that needs more than three (50 ms) runs at 15 per second or less,
+ *  and previews while drawing cannot be shown faster than frames are. */
+const INTERACTIVE_FRAME_MS = 32;
+const SLOW_FRAME_MS = 52;
 const FAST_FRAME_MS = 25;
 /** Resolution of interactive frames that stay slow with little hair, relative to the display. */
 const INTERACTIVE_RESOLUTION = 0.5;
