@@ -411,6 +411,24 @@ describe('WorkerLogic', () => {
 });
 
 /** A small octahedron, every face scalp: enough for root sampling. */
+/** A full solve of one stream curve over the octahedron head (octahedron(·, 1)) at grid step
+ *  `step`, grown densely with no cap: the real-wasm tests' request. */
+function fullOverOctahedron(id: number, step: number): SolveMsg {
+  const points: [number, number, number][] = [];
+  for (let i = 0; i < 8; i++) points.push([-0.9 + i * step, 1.1, 0]);
+  const curves = packCurves([
+    {
+      id: 'c1',
+      type: 'stream',
+      points,
+      extend: true,
+      viewpoint: { position: [0, 0, 5], target: [0, 0, 0] },
+    },
+  ]);
+  const growth = { ...DEFAULT_GROWTH, thetaStepDeg: 3, phiStepDeg: 3, maxStrands: 0 };
+  return { ...(solve(id, 'full') as SolveMsg), curves, growth };
+}
+
 function octahedron(c: [number, number, number], r: number) {
   const v = [
     [r, 0, 0],
@@ -515,19 +533,7 @@ describe('WorkerLogic over the real wasm engine', () => {
       solver: 'cg',
       scalp: octahedron([0, 0, 0], 1),
     } as ToWorker;
-    const points: [number, number, number][] = [];
-    for (let i = 0; i < 8; i++) points.push([-0.9 + i * step, 1.1, 0]);
-    const curves = packCurves([
-      {
-        id: 'c1',
-        type: 'stream',
-        points,
-        extend: true,
-        viewpoint: { position: [0, 0, 5], target: [0, 0, 0] },
-      },
-    ]);
-    const growth = { ...DEFAULT_GROWTH, thetaStepDeg: 3, phiStepDeg: 3, maxStrands: 0 };
-    const full = (id: number) => ({ ...(solve(id, 'full') as SolveMsg), curves, growth });
+    const full = (id: number) => fullOverOctahedron(id, step);
     const finals = (posted: FromWorker[]) =>
       posted.filter((m): m is Extract<FromWorker, { type: 'result' }> =>
         m.type === 'result' ? m.final : false,
@@ -592,19 +598,7 @@ describe('WorkerLogic over the real wasm engine', () => {
     const big: GridSpec = { dims: [14, 13, 12], origin: [-1.75, -1.5, -1.5], step };
     const setUp = (grid: GridSpec): ToWorker =>
       ({ ...init, grid, solver: 'fast', scalp: octahedron([0, 0, 0], 1) }) as ToWorker;
-    const points: [number, number, number][] = [];
-    for (let i = 0; i < 8; i++) points.push([-0.9 + i * step, 1.1, 0]);
-    const curves = packCurves([
-      {
-        id: 'c1',
-        type: 'stream',
-        points,
-        extend: true,
-        viewpoint: { position: [0, 0, 5], target: [0, 0, 0] },
-      },
-    ]);
-    const growth = { ...DEFAULT_GROWTH, thetaStepDeg: 3, phiStepDeg: 3, maxStrands: 0 };
-    const full = (id: number) => ({ ...(solve(id, 'full') as SolveMsg), curves, growth });
+    const full = (id: number) => fullOverOctahedron(id, step);
     const final = (posted: FromWorker[]) => {
       const r = posted.filter((m) => m.type === 'result' && m.final).at(-1);
       if (r?.type !== 'result') throw new Error(`no final result: ${JSON.stringify(posted)}`);
