@@ -66,7 +66,7 @@ export const DEFAULT_SCHEDULER: SchedulerOptions = {
   tolerance: 1e-6,
   firstLookIterations: 2,
   sliceIterations: 4,
-  previewIterations: 3,
+  previewIterations: 2,
   convergedSample: true,
   yieldNow: () => new Promise((r) => setTimeout(r, 0)),
   now: () => (typeof performance !== 'undefined' ? performance.now() : Date.now()),
