@@ -219,8 +219,30 @@ Status MgPcgSolver::startRun() {
   bnorm2_ = bb[0] + bb[1] + bb[2];
   for (auto& h : steps_) h.clear();
   progress_ = MgProgress();
+  directionPending_ = false;
   runActive_ = true;
   return Status::Ok();
+}
+
+// The direction after an update: z = M^-1 r (a V-cycle), p = z + beta p. Deferred to the start
+// of the next iteration, so a run that ends (converged, superseded by new constraints, or a
+// preview's last iteration) does not pay for a V-cycle whose direction is never used; the
+// iterates are the same as computing it at the end of each iteration.
+void MgPcgSolver::nextDirection() {
+  mg_.vcycle(r_.data(), z_.data());
+  double g[3], beta[3];
+  dots3(r_, z_, g);
+  for (int c = 0; c < 3; ++c) {
+    beta[c] = (gamma_[c] > 0 && alpha_[c] != 0) ? g[c] / gamma_[c] : 0.0;
+    gamma_[c] = alpha_[c] != 0 ? g[c] : 0.0;
+  }
+  const double* zv = z_.data();
+  double* pw = p_.data();
+  forRows(p_.size() / 3, [&](size_t i0, size_t i1) {
+    for (size_t i = i0; i < i1; ++i)
+      for (int c = 0; c < 3; ++c) pw[3 * i + c] = zv[3 * i + c] + beta[c] * pw[3 * i + c];
+  });
+  directionPending_ = false;
 }
 
 void MgPcgSolver::updateEstimate() {
@@ -265,6 +287,7 @@ Status MgPcgSolver::iterate(int maxIterations, double tolerance, MgProgress* out
            (progress_.iterations >= 2 || progress_.errorEstimate == 0);
   };
   while (done < maxIterations && !(tolerance > 0 && isConverged())) {
+    if (directionPending_) nextDirection();
     mg_.applyFine(p_.data(), q_.data());
     // p.q and p.p in one pass
     const double* pv = p_.data();
@@ -305,20 +328,8 @@ Status MgPcgSolver::iterate(int maxIterations, double tolerance, MgProgress* out
             }
           return s;
         });
-    for (int c = 0; c < 3; ++c) xx_[c] = xxrr[c], rr_[c] = xxrr[3 + c];
-    mg_.vcycle(r_.data(), z_.data());
-    double g[3], beta[3];
-    dots3(r_, z_, g);
-    for (int c = 0; c < 3; ++c) {
-      beta[c] = (gamma_[c] > 0 && alpha[c] != 0) ? g[c] / gamma_[c] : 0.0;
-      gamma_[c] = alpha[c] != 0 ? g[c] : 0.0;
-    }
-    const double* zv = z_.data();
-    double* pw = p_.data();
-    forRows(rows, [&](size_t i0, size_t i1) {
-      for (size_t i = i0; i < i1; ++i)
-        for (int c = 0; c < 3; ++c) pw[3 * i + c] = zv[3 * i + c] + beta[c] * pw[3 * i + c];
-    });
+    for (int c = 0; c < 3; ++c) xx_[c] = xxrr[c], rr_[c] = xxrr[3 + c], alpha_[c] = alpha[c];
+    directionPending_ = true;
     ++done;
     ++progress_.iterations;
     updateEstimate();

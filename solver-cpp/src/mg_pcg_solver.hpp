@@ -83,6 +83,7 @@ class MgPcgSolver : public FieldSolver {
   Status startRun();
   void coldStartField();
   void updateEstimate();
+  void nextDirection();
 
   MultigridOptions mgOptions_;
   MultigridHierarchy mg_;
@@ -101,6 +102,9 @@ class MgPcgSolver : public FieldSolver {
   // from the full-multigrid solution instead of the previous field (MultigridOptions::fmgStart).
   bool coldStart_ = true;
   double gamma_[3] = {0, 0, 0};
+  // The last iteration's step lengths; its direction update is still to do (nextDirection).
+  double alpha_[3] = {0, 0, 0};
+  bool directionPending_ = false;
   double bnorm2_ = 0;
   double xx_[3] = {0, 0, 0}, rr_[3] = {0, 0, 0};  // column norms^2 of x and r (after an update)
   std::vector<double> steps_[3];                  // u_k per column
