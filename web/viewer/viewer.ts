@@ -44,11 +44,14 @@ export interface CurveView {
 }
 
 /** Interactive frames aim at this, and are slow past SLOW_FRAME_MS: frames are presented on
- *  vsync (16.7 ms), so a frame that needs more than three (50 ms) runs at 15 per second or less,
- *  and previews while drawing cannot be shown faster than frames are. */
-const INTERACTIVE_FRAME_MS = 32;
-const SLOW_FRAME_MS = 52;
-const FAST_FRAME_MS = 25;
+ *  vsync (16.7 ms), so a frame that needs more than two (33 ms) runs at 20 per second or less,
+ *  and previews while drawing cannot be shown faster than frames are. On a software rasteriser
+ *  the page's main thread waits for each frame's pixels, so a preview's answer waits behind the
+ *  frame before it: a lighter frame (a sparser sample of the preview's strands) lets more
+ *  previews through. */
+const INTERACTIVE_FRAME_MS = 20;
+const SLOW_FRAME_MS = 36;
+const FAST_FRAME_MS = 15;
 /** Resolution of interactive frames that stay slow with little hair, relative to the display. */
 const INTERACTIVE_RESOLUTION = 0.5;
 /** Index entries (2 per segment) an interactive frame may always draw: ~250 strands. */
