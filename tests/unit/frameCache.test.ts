@@ -2,7 +2,14 @@
 // when a cached layer is stale. Expected values are worked out here, not read back from the code.
 import * as THREE from 'three';
 import { describe, expect, it } from 'vitest';
-import { drawableStamp, planFrame, sameLayer, viewKey } from '../../web/viewer/frameCache';
+import {
+  drawableStamp,
+  type FramePlan,
+  OverlayWait,
+  planFrame,
+  sameLayer,
+  viewKey,
+} from '../../web/viewer/frameCache';
 
 describe('planFrame', () => {
   it('draws everything when nothing is cached', () => {
@@ -141,5 +148,38 @@ describe('cache keys', () => {
     group.clear();
     group.add(new THREE.LineSegments(g, new THREE.LineBasicMaterial()));
     expect(drawableStamp([group])).not.toBe(h0);
+  });
+});
+
+describe('OverlayWait', () => {
+  const overlays: FramePlan = { source: 'hair', count: 100, fullDetailNext: false };
+  const hair: FramePlan = { source: 'static', count: 100, fullDetailNext: false };
+
+  it('holds overlay-only interactive frames for at most its time from the first expect', () => {
+    const w = new OverlayWait(50);
+    expect(w.waits(overlays, 'interactive', 0)).toBe(false); // nothing expected yet
+    w.expect(100);
+    expect(w.waits(overlays, 'interactive', 100)).toBe(true);
+    // later expects within the wait do not extend it: the stroke line moves at least every 50 ms
+    w.expect(120);
+    w.expect(149);
+    expect(w.waits(overlays, 'interactive', 149.9)).toBe(true);
+    expect(w.waits(overlays, 'interactive', 150)).toBe(false);
+    // the first expect after it ran out starts a new one
+    w.expect(151);
+    expect(w.waits(overlays, 'interactive', 200)).toBe(true);
+    expect(w.waits(overlays, 'interactive', 201)).toBe(false);
+  });
+
+  it('never holds a frame that draws hair, a settled frame, or after cancel', () => {
+    const w = new OverlayWait(50);
+    w.expect(0);
+    expect(w.waits(hair, 'interactive', 10)).toBe(false);
+    expect(w.waits({ ...hair, source: 'none' }, 'interactive', 10)).toBe(false);
+    expect(w.waits(overlays, 'settled', 10)).toBe(false);
+    expect(w.waits(overlays, 'full', 10)).toBe(false);
+    expect(w.waits(overlays, 'interactive', 10)).toBe(true);
+    w.cancel();
+    expect(w.waits(overlays, 'interactive', 10)).toBe(false);
   });
 });

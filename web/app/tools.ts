@@ -136,7 +136,10 @@ export function createTools(d: ToolDeps): ToolSet {
           mirror: editor.mirror,
         });
       },
-      preview: (points) => d.bridge.preview(points, camera()),
+      preview: (points) => {
+        viewer.expectHair(points !== null);
+        d.bridge.preview(points, camera());
+      },
       notify: d.notify,
     }),
     dividing: new DividingCurveTool({

@@ -62,6 +62,32 @@ export function planFrame(
   return { source: staticValid ? 'static' : 'none', ...want };
 }
 
+/** Overlay-only frames waiting for hair on its way (a stroke's preview). On a software
+ *  rasteriser each frame holds the page's main thread until its pixels are read back, and an
+ *  answer that arrives meanwhile waits behind it; the answer's frame draws the overlays too. The
+ *  wait lasts at most `ms` from the first expect() that found none running, so the overlays
+ *  (the stroke line) still move when answers are slow. Times in ms on one clock. */
+export class OverlayWait {
+  private until = 0;
+  constructor(private readonly ms: number) {}
+
+  /** Hair is on its way (again). */
+  expect(now: number): void {
+    if (now >= this.until) this.until = now + this.ms;
+  }
+
+  /** Nothing is on its way any more. */
+  cancel(): void {
+    this.until = 0;
+  }
+
+  /** Whether a frame planned as `plan` in `mode` waits: only interactive frames that would draw
+   *  the overlays alone, while a wait runs. */
+  waits(plan: FramePlan, mode: FrameMode, now: number): boolean {
+    return plan.source === 'hair' && mode === 'interactive' && now < this.until;
+  }
+}
+
 /** What a slot was drawn from; a slot is used only while its key equals the frame's. */
 export interface LayerKey {
   /** Camera matrices and drawing-buffer size (viewKey). */

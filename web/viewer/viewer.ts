@@ -21,6 +21,7 @@ import {
   FrameSlots,
   type HairKey,
   type LayerKey,
+  OverlayWait,
   planFrame,
   sameLayer,
   viewKey,
@@ -52,6 +53,10 @@ export interface CurveView {
 const INTERACTIVE_FRAME_MS = 20;
 const SLOW_FRAME_MS = 36;
 const FAST_FRAME_MS = 15;
+/** While a stroke's preview is on its way, frames that would redraw only the overlays (the stroke
+ *  line) wait for it this long at most, on a software rasteriser (frameCache.ts OverlayWait: a
+ *  frame there holds the page's main thread for 25-35 ms). */
+const OVERLAY_WAIT_MS = 50;
 /** Resolution of interactive frames that stay slow with little hair, relative to the display. */
 const INTERACTIVE_RESOLUTION = 0.5;
 /** Index entries (2 per segment) an interactive frame may always draw: ~250 strands. */
@@ -82,6 +87,8 @@ export class Viewer {
   private draft: THREE.Object3D | null = null;
   private hair: THREE.LineSegments | THREE.Mesh | null = null;
   private dirty = true;
+  /** Overlay-only frames waiting for hair on its way (expectHair). */
+  private readonly overlayWait = new OverlayWait(OVERLAY_WAIT_MS);
   /** WebGL runs on a software rasteriser (no GPU). */
   readonly software: boolean;
   /** The unmasked WebGL renderer (WEBGL_debug_renderer_info), or the masked one without it. */
@@ -171,8 +178,7 @@ export class Viewer {
       this.stepViewAnimation(now);
       for (const hook of this.frameHooks) hook();
       if (this.dirty) {
-        this.dirty = false;
-        this.renderFrame(now, this.holds.size > 0 ? 'interactive' : 'settled');
+        this.dirty = !this.renderFrame(now, this.holds.size > 0 ? 'interactive' : 'settled');
       } else if (this.fullDetailOwed && this.holds.size === 0 && this.fullDetailWait-- <= 0) {
         this.renderFrame(now, 'full');
       }
@@ -184,11 +190,13 @@ export class Viewer {
   /** Draws the scene. 'interactive': the hair at interactive detail; 'settled': all of it when a
    *  frame can afford it, else interactive detail now and all of it FULL_DETAIL_DELAY_FRAMES
    *  frames later ('full'). Through the frame cache, only what changed since the cached layers
-   *  were drawn is drawn again. */
-  private renderFrame(now: number, mode: FrameMode): void {
+   *  were drawn is drawn again. Returns false when the frame waits for hair on its way (only
+   *  overlays would be drawn, before the time expectHair allowed). */
+  private renderFrame(now: number, mode: FrameMode): boolean {
     const { all, interactive } = this.hairCounts();
     const keys = this.layerKeys();
     const plan = this.planFor(mode, all, interactive, keys);
+    if (this.overlayWait.waits(plan, mode, now)) return false;
     this.fullDetailOwed = plan.fullDetailNext;
     if (plan.fullDetailNext) this.fullDetailWait = FULL_DETAIL_DELAY_FRAMES;
     this.lastDetail = all > 0 ? plan.count / all : 1;
@@ -203,6 +211,16 @@ export class Viewer {
       this.shownHair = hair;
       if (hair) for (const cb of [...this.hairShownListeners]) cb(hair);
     }
+    return true;
+  }
+
+  /** New hair is on its way (a stroke's preview was asked for): on a software rasteriser, frames
+   *  that would only redraw the overlays wait for it, up to OVERLAY_WAIT_MS from the first ask
+   *  that found no wait running (so the stroke line still moves when previews are slow).
+   *  expectHair(false): nothing is on its way (the stroke ended); frames no longer wait. */
+  expectHair(on = true): void {
+    if (!on) this.overlayWait.cancel();
+    else if (this.software) this.overlayWait.expect(performance.now());
   }
 
   /** Whether frames go through the frame cache (on, and the canvas allows copies). */
