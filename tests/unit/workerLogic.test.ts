@@ -44,7 +44,10 @@ function scriptedEngine(log: string[], colours = new Uint8Array([0, 1, 3])): Sol
     },
     grow: (g) => {
       log.push(`grow:${g.maxStrands}`);
-      return { points: new Float32Array(3), strandStart: new Uint32Array([0, 1]) };
+      // one strand of 5 points along x: (0, 0, 0) … (4, 0, 0)
+      const points = new Float32Array(15);
+      for (let i = 0; i < 5; i++) points[3 * i] = i;
+      return { points, strandStart: new Uint32Array([0, 5]) };
     },
     constraints: () => ({ index: new Int32Array([4, 9, 12]), target: new Float32Array(9) }),
     constraintColours: () => colours,
@@ -137,6 +140,10 @@ describe('WorkerLogic', () => {
     await done;
     expect(h.results().map((r) => [r.id, r.final])).toEqual([[1, false]]);
     expect(h.log).toContain(`grow:${LIGHT}`);
+    // drawn with every other point of the grown strand, and its tip
+    const strands = h.results()[0].strands;
+    expect(Array.from(strands.strandStart)).toEqual([0, 3]);
+    expect(Array.from(strands.points)).toEqual([0, 0, 0, 2, 0, 0, 4, 0, 0]);
     expect(h.results()[0].stats.heapBytes).toBe(1 << 20);
     expect(h.log).toContain(`iterate:${DEFAULT_SCHEDULER.previewIterations}`);
   });
@@ -156,6 +163,8 @@ describe('WorkerLogic', () => {
       [1, true],
     ]);
     expect(rs[1].stats.errorEstimate).toBeLessThanOrEqual(1e-6);
+    // first look and final hair keep every grown point (only previews are thinned)
+    for (const r of rs) expect(Array.from(r.strands.strandStart)).toEqual([0, 5]);
     // The first look is grown light; the final hair with the session's settings (no cap).
     expect(h.log.filter((l) => l.startsWith('grow'))).toEqual([`grow:${LIGHT}`, 'grow:0']);
     expect(h.log.filter((l) => l.startsWith('iterate'))).toEqual([

@@ -260,6 +260,8 @@ export type FromWorker =
   | {
       type: 'result';
       id: number;
+      /** The grown strands; a preview's with every other point and the tip of each
+       *  (model/strandSubsample.ts everyOtherPoint), lighting per those points. */
       strands: StrandArrays;
       constraints: ConstraintArrays;
       field: FieldArrays | null;

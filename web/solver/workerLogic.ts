@@ -14,6 +14,7 @@
 // A 'scalpMask' message changes the scalp at once (no restart, nothing else rebuilt); a 'grid'
 // message moves the engine to another grid in place (the head stays).
 import { ResultLighting } from '../lighting/resultLighting';
+import { everyOtherPoint } from '../model/strandSubsample';
 import { lineAttributes } from '../viewer/strandAttributes';
 import { type IterateProgress, type SolverEngine, SolverError } from './engine';
 import {
@@ -317,7 +318,9 @@ export class WorkerLogic {
   ): void {
     this.post({ type: 'progress', id: job.id, phase: 'grow', fraction: 0.95 });
     const g0 = this.opts.now();
-    const strands = this.engine.grow(growth);
+    const grown = this.engine.grow(growth);
+    // a stroke's preview is drawn and lit with every other point: half the work on both sides
+    const strands = job.mode === 'preview' ? everyOtherPoint(grown) : grown;
     const growMs = this.opts.now() - g0;
     const stats = {
       ...this.engine.stats(),

@@ -395,7 +395,7 @@ function setBounds(geometry: THREE.BufferGeometry, b: Float32Array): void {
  *  `prebuilt`: those attributes and the index as lineAttributes made them for these strands
  *  (by the worker), used as they are. Level of detail: any prefix of the index's groups is an
  *  even sample of the whole head of hair; `userData.lodCounts[g]` is the index count of the first
- *  g groups (a draw range). */
+ *  g groups (a draw range), `userData.strands` the number of strands. */
 export function buildStrandGeometry(
   points: Float32Array,
   strandStart: Uint32Array,
@@ -407,6 +407,7 @@ export function buildStrandGeometry(
   const { pointCount, index, lodCounts } = attrs;
   const geometry = new THREE.BufferGeometry();
   geometry.userData.lodCounts = lodCounts;
+  geometry.userData.strands = Math.max(0, strandStart.length - 1);
   const used = pointCount === points.length / 3 ? points : points.subarray(0, 3 * pointCount);
   geometry.setAttribute('position', new THREE.BufferAttribute(used, 3));
   setPointAttributes(geometry, attrs);
@@ -452,6 +453,7 @@ export function buildStrandStripGeometry(
   const { index, lodCounts } = lodIndex(strandStart, [0, 1, 2, 1, 3, 2], 2);
   const geometry = new THREE.BufferGeometry();
   geometry.userData.lodCounts = lodCounts;
+  geometry.userData.strands = Math.max(0, strandStart.length - 1);
   geometry.setAttribute(
     'position',
     new THREE.BufferAttribute(twice(points.subarray(0, 3 * pointCount), 3), 3),

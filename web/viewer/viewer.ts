@@ -59,8 +59,11 @@ const FAST_FRAME_MS = 15;
 const OVERLAY_WAIT_MS = 50;
 /** Resolution of interactive frames that stay slow with little hair, relative to the display. */
 const INTERACTIVE_RESOLUTION = 0.5;
-/** Index entries (2 per segment) an interactive frame may always draw: ~250 strands. */
+/** Index entries (2 per segment) an interactive frame may always draw: ~270 strands of the
+ *  final hair's lines; fewer entries when MIN_HAIR_STRANDS strands need fewer (a stroke's
+ *  previews are drawn with every other point: the same strands for half the entries). */
 const MIN_HAIR_BUDGET = 30_000;
+const MIN_HAIR_STRANDS = 270;
 /** Hair budget before any frame was measured on a software rasteriser (a first look of 6,000
  *  strands drawn whole took ~1 s there). */
 const SOFTWARE_INITIAL_BUDGET = 2 * MIN_HAIR_BUDGET;
@@ -461,6 +464,15 @@ export class Viewer {
     return { all, interactive };
   }
 
+  /** The hair budget's floor for the current hair: MIN_HAIR_BUDGET, or MIN_HAIR_STRANDS of its
+   *  strands when they take fewer index entries. */
+  private minHairBudget(): number {
+    const lod = this.hair?.geometry.userData.lodCounts as Uint32Array | undefined;
+    const strands = this.hair?.geometry.userData.strands as number | undefined;
+    if (!lod || lod.length === 0 || !strands) return MIN_HAIR_BUDGET;
+    return Math.min(MIN_HAIR_BUDGET, (MIN_HAIR_STRANDS * lod[lod.length - 1]) / strands);
+  }
+
   private adaptBudget(frameMs: number, drawn: number): void {
     if (drawn < 0) return; // the frame drew no hair (the cached hair layer)
     // Interactive frames still slow with the hair at its floor: the cost is per pixel (a software
@@ -468,14 +480,14 @@ export class Viewer {
     if (
       this.holds.size > 0 &&
       frameMs > SLOW_FRAME_MS &&
-      (drawn <= MIN_HAIR_BUDGET || this.hairBudget <= MIN_HAIR_BUDGET)
+      (drawn <= this.minHairBudget() || this.hairBudget <= this.minHairBudget())
     )
       this.setResolutionScale(INTERACTIVE_RESOLUTION);
     if (drawn <= 0) return;
     if (frameMs > SLOW_FRAME_MS) {
       // cost scales with segments drawn: aim at the interactive frame time
       // (never below a floor: part of a slow frame is not the hair's, e.g. a busy CPU)
-      this.hairBudget = Math.max(MIN_HAIR_BUDGET, (drawn * INTERACTIVE_FRAME_MS) / frameMs);
+      this.hairBudget = Math.max(this.minHairBudget(), (drawn * INTERACTIVE_FRAME_MS) / frameMs);
     } else if (frameMs < FAST_FRAME_MS && drawn >= this.hairBudget * 0.5) {
       this.hairBudget = this.hairBudget * 1.5;
     }
