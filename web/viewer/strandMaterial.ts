@@ -15,6 +15,7 @@
 // opacity maps: deepOpacity.ts).
 import * as THREE from 'three';
 import { FILL_LIGHT_DIRECTION, KEY_LIGHT_DIRECTION } from '../lighting/keyLight';
+import { strandCount } from '../solver/protocol';
 import {
   type LineAttributes,
   lineAttributes,
@@ -407,7 +408,7 @@ export function buildStrandGeometry(
   const { pointCount, index, lodCounts } = attrs;
   const geometry = new THREE.BufferGeometry();
   geometry.userData.lodCounts = lodCounts;
-  geometry.userData.strands = Math.max(0, strandStart.length - 1);
+  geometry.userData.strands = strandCount({ points, strandStart });
   const used = pointCount === points.length / 3 ? points : points.subarray(0, 3 * pointCount);
   geometry.setAttribute('position', new THREE.BufferAttribute(used, 3));
   setPointAttributes(geometry, attrs);
@@ -453,7 +454,7 @@ export function buildStrandStripGeometry(
   const { index, lodCounts } = lodIndex(strandStart, [0, 1, 2, 1, 3, 2], 2);
   const geometry = new THREE.BufferGeometry();
   geometry.userData.lodCounts = lodCounts;
-  geometry.userData.strands = Math.max(0, strandStart.length - 1);
+  geometry.userData.strands = strandCount({ points, strandStart });
   geometry.setAttribute(
     'position',
     new THREE.BufferAttribute(twice(points.subarray(0, 3 * pointCount), 3), 3),

@@ -475,19 +475,20 @@ export class Viewer {
 
   private adaptBudget(frameMs: number, drawn: number): void {
     if (drawn < 0) return; // the frame drew no hair (the cached hair layer)
+    const floor = this.minHairBudget();
     // Interactive frames still slow with the hair at its floor: the cost is per pixel (a software
     // rasteriser, a large screen), so draw them at half resolution until the view settles.
     if (
       this.holds.size > 0 &&
       frameMs > SLOW_FRAME_MS &&
-      (drawn <= this.minHairBudget() || this.hairBudget <= this.minHairBudget())
+      (drawn <= floor || this.hairBudget <= floor)
     )
       this.setResolutionScale(INTERACTIVE_RESOLUTION);
     if (drawn <= 0) return;
     if (frameMs > SLOW_FRAME_MS) {
       // cost scales with segments drawn: aim at the interactive frame time
       // (never below a floor: part of a slow frame is not the hair's, e.g. a busy CPU)
-      this.hairBudget = Math.max(this.minHairBudget(), (drawn * INTERACTIVE_FRAME_MS) / frameMs);
+      this.hairBudget = Math.max(floor, (drawn * INTERACTIVE_FRAME_MS) / frameMs);
     } else if (frameMs < FAST_FRAME_MS && drawn >= this.hairBudget * 0.5) {
       this.hairBudget = this.hairBudget * 1.5;
     }
