@@ -9,7 +9,6 @@ import { indexedDbHeadStore } from '../head/headStore';
 import { gridForPreset, gridForSession } from '../model/grid';
 import { applyPreset } from '../model/presets';
 import { DEFAULT_GROWTH, emptySession } from '../model/session';
-import { PONYTAIL_STAGE_HINT } from '../tools/ponytailTool';
 import { buildCurvePanel } from '../ui/curvePanel';
 import { buildDetailPanel, type DetailPanel } from '../ui/detailPanel';
 import { buildDisplayToggles } from '../ui/displayToggles';
@@ -33,19 +32,8 @@ import { LinkWriter, openSessionFileOutcome, openSessionLinkOutcome } from './se
 import { SolverBridge } from './solverBridge';
 import { StatusPresenter } from './statusPresenter';
 import { installTestApi } from './testApi';
-import { createTools } from './tools';
+import { createTools, toolHint } from './tools';
 import { parseUrlOptions } from './urlOptions';
-
-const TOOL_HINTS: Record<Exclude<ToolName, 'ponytail'>, string> = {
-  stream:
-    'Drag from the scalp to draw a stream curve · a stroke starting on the selected curve cuts, extends or re-routes it · right-drag orbits · wheel zooms · ? lists shortcuts',
-  dividing:
-    'Drag on the scalp to draw a parting · a stroke starting beside the selected one tilts that side · right-drag orbits',
-  select:
-    'Click a curve to select it · drag orbits · wheel zooms · right-drag pans · ? lists shortcuts',
-  scalp:
-    'Drag on the head to paint scalp (where hair grows) · Shift+drag erases · wheel sets the brush radius · right-drag orbits',
-};
 
 export function startApp(): void {
   const opts = parseUrlOptions(window.location.search);
@@ -163,16 +151,7 @@ export function startApp(): void {
       void openSessionFileOutcome(editor, f, headStore).then(
         (o) => o.kind === 'failed' && status.note(o.message),
       ),
-    openHeadFile: (f) => {
-      status.task(`Opening the head ${f.name}…`);
-      void f
-        .arrayBuffer()
-        .then((bytes) => heads.openFile(editor, f.name, bytes))
-        .then(
-          (m) => status.taskDone(m, m.startsWith('Could not')),
-          (e) => status.taskDone(`Could not open the head: ${String(e)}.`, true),
-        );
-    },
+    openHeadFile: (f) => heads.openHeadFile(editor, f),
   });
   toolbar.setHairColor(initial.hairColor);
   help = buildHelpOverlay(document.body, actions);
@@ -228,7 +207,7 @@ export function startApp(): void {
     tool.onCancel();
     tool = tools.byName[name];
     setCameraButtons(viewer.controls, name !== 'select');
-    line.hint(name === 'ponytail' ? PONYTAIL_STAGE_HINT[tools.ponytail.stage] : TOOL_HINTS[name]);
+    line.hint(toolHint(name, tools.ponytail));
   };
   editor.listen((c) => {
     heads.sessionChanged(c.session);

@@ -122,6 +122,19 @@ export class HeadController {
     if (s.scalpPaint !== this.paint) this.applyPaint(s.scalpPaint);
   }
 
+  /** "Open head" from a file the user picked: openFile, with its progress and outcome on the
+   *  status line. */
+  openHeadFile(editor: Editor, file: File): void {
+    this.d.task(`Opening the head ${file.name}…`);
+    void file
+      .arrayBuffer()
+      .then((bytes) => this.openFile(editor, file.name, bytes))
+      .then(
+        (m) => this.d.taskDone(m, m.startsWith('Could not')),
+        (e) => this.d.taskDone(`Could not open the head: ${String(e)}.`, true),
+      );
+  }
+
   /** "Open head": reads the file, keeps it in the store and makes it the session's head (one
    *  undoable edit). A bad file changes nothing. Returns the status line's sentence. */
   async openFile(editor: Editor, name: string, bytes: ArrayBuffer): Promise<string> {

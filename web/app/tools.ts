@@ -18,6 +18,22 @@ import type { Viewer } from '../viewer/viewer';
 import type { OverlayPresenter } from './overlayPresenter';
 import type { SolverBridge } from './solverBridge';
 
+const TOOL_HINTS: Record<Exclude<ToolName, 'ponytail'>, string> = {
+  stream:
+    'Drag from the scalp to draw a stream curve · a stroke starting on the selected curve cuts, extends or re-routes it · right-drag orbits · wheel zooms · ? lists shortcuts',
+  dividing:
+    'Drag on the scalp to draw a parting · a stroke starting beside the selected one tilts that side · right-drag orbits',
+  select:
+    'Click a curve to select it · drag orbits · wheel zooms · right-drag pans · ? lists shortcuts',
+  scalp:
+    'Drag on the head to paint scalp (where hair grows) · Shift+drag erases · wheel sets the brush radius · right-drag orbits',
+};
+
+/** The hint line for the tool `name` (the ponytail's says which stroke comes next). */
+export function toolHint(name: ToolName, ponytail: PonytailTool): string {
+  return name === 'ponytail' ? PONYTAIL_STAGE_HINT[ponytail.stage] : TOOL_HINTS[name];
+}
+
 export interface ToolDeps {
   editor: Editor;
   /** The head strokes land on (it changes when the user opens another). */
