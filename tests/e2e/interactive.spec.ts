@@ -140,3 +140,34 @@ test('the exact solver on the 250K grid says it does not fit instead of running 
   });
   await expect(page.getByTestId('status')).toContainText('solver=fast');
 });
+
+test('while drawing the status says the hair is a preview; a cancelled stroke brings back the session hair', async ({
+  page,
+}) => {
+  const errors = watchConsole(page);
+  await page.goto('/?strands=1500');
+  const s0 = await settled(page);
+  const before = await page.evaluate(() => window.hairsketch.hairHash());
+  await page.getByRole('button', { name: 'Stream curve' }).click();
+  const start = await scalpPoint(page, 35, 20);
+  await page.mouse.move(start.x, start.y);
+  await page.mouse.down();
+  for (let i = 1; i <= 6; i++) await page.mouse.move(start.x + 10 * i, start.y + 16 * i);
+  await revisionPast(page, s0.revision);
+  // the worker goes idle between previews: the line must not read as the final hair
+  await page.waitForFunction(() => {
+    const el = document.querySelector('[data-testid="status"]') as HTMLElement;
+    return el.dataset.state === 'ready';
+  });
+  const drawing = await status(page);
+  expect(drawing.text).toMatch(/^Preview — [\d,]+ strands; release to grow all$/);
+  expect(await page.evaluate(() => window.hairsketch.hairHash())).not.toBe(before);
+  // the pointer is taken away mid-stroke (a touch interrupted; the mouse cannot send this)
+  await page.locator('canvas').first().dispatchEvent('pointercancel', { pointerId: 1 });
+  const after = await settled(page, drawing.revision);
+  expect(after.curves).toBe(s0.curves);
+  expect(after.text).toMatch(/^Ready — /);
+  expect(await page.evaluate(() => window.hairsketch.hairHash())).toBe(before);
+  await page.mouse.up();
+  expect(errors).toEqual([]);
+});

@@ -12,14 +12,18 @@ function fakeElement() {
   return { dataset: {} as Record<string, string>, textContent: '', title: '' };
 }
 
-function setup(pending = { now: true }) {
+function setup(pending = { now: true }, drawing = { now: false }) {
   const el = fakeElement();
   const line = new StatusLine(
     el as unknown as HTMLElement,
     fakeElement() as unknown as HTMLElement,
   );
-  const p = new StatusPresenter(line, () => pending.now);
-  return { el, line, p, pending };
+  const p = new StatusPresenter(
+    line,
+    () => pending.now,
+    () => drawing.now,
+  );
+  return { el, line, p, pending, drawing };
 }
 
 const percent = (text: string) => Number(/(\d+) %/.exec(text)?.[1] ?? Number.NaN);
@@ -87,6 +91,21 @@ describe('StatusPresenter', () => {
     expect(el.textContent).toBe('Ready — 30,000 strands');
     expect(el.title).toContain('mg-pcg, 40 iterations');
     expect(el.textContent).not.toContain('mg-pcg');
+  });
+
+  it("says a stroke's preview is one while drawing, and Ready once the stroke ends", () => {
+    const { el, line, p, pending, drawing } = setup();
+    pending.now = false;
+    drawing.now = true;
+    line.counts(800, 3);
+    p.result({ ...result(800), final: false } as SolveResult, false);
+    p.ready();
+    expect(el.dataset.state).toBe('ready');
+    expect(el.textContent).toBe('Preview — 800 strands; release to grow all');
+    drawing.now = false;
+    line.counts(30000, 3);
+    p.ready();
+    expect(el.textContent).toBe('Ready — 30,000 strands');
   });
 
   it('does not report strands on a bald head', () => {

@@ -85,7 +85,11 @@ export function startApp(): void {
     interactiveDetail: () => viewer.interactiveDetail,
     shownStrands: () => line.strands,
   });
-  const status = new StatusPresenter(line, () => bridge.pending);
+  const status = new StatusPresenter(
+    line,
+    () => bridge.pending,
+    () => bridge.previewing,
+  );
   const overlays = new OverlayPresenter(viewer, editor, bridge.grid);
   const links = new LinkWriter(editor);
 

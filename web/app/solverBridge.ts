@@ -45,6 +45,8 @@ export class SolverBridge {
   readonly client: SolverClient;
   /** A stroke is being drawn and previews are being solved. */
   private drawing = false;
+  /** A preview was asked for since the last full solve was (the hair may show a preview). */
+  private previewAsked = false;
   private readonly listeners: SolverBridgeEvents[] = [];
   private idleWaiters: Array<() => void> = [];
 
@@ -119,6 +121,7 @@ export class SolverBridge {
 
   /** Sends the current session for a full solve (on the grid its curves and head need). */
   sync(): void {
+    this.previewAsked = false;
     const s = this.editor.session;
     const grid = this.sessionGrid();
     if (!sameGrid(grid, this.client.grid)) {
@@ -139,10 +142,18 @@ export class SolverBridge {
   preview(points: Vec3[] | null, viewpoint: Viewpoint): void {
     if (points === null) {
       this.drawing = false;
+      // A stroke that ends without an edit (cancelled, or read as a hint that changes nothing)
+      // must not leave its preview on screen: the session's own hair comes back (from the
+      // client's cache, no solve). An edit that follows at once (a commit) solves anyway.
+      if (this.previewAsked)
+        queueMicrotask(() => {
+          if (this.previewAsked && !this.drawing) this.sync();
+        });
       return;
     }
     this.drawing = true;
     if (points.length < 3) return;
+    this.previewAsked = true;
     const s = this.editor.session;
     const draft = { id: '~draft', type: 'stream' as const, points, extend: true, viewpoint };
     const cap = this.lightCap(s);

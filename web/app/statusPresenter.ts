@@ -16,9 +16,12 @@ export class StatusPresenter {
   private progress = 0;
   private firstLook = false;
 
+  /** `pending`: the solver has work queued; `drawing`: a stroke is being drawn (the hair on
+   *  screen is its preview, a sample of the strands). */
   constructor(
     private readonly line: StatusLine,
     private readonly pending: () => boolean,
+    private readonly drawing: () => boolean = () => false,
   ) {}
 
   /** A sentence about what the user just did (kept beside "Ready"). */
@@ -119,6 +122,11 @@ export class StatusPresenter {
       return;
     }
     const l = this.line;
+    if (this.drawing() && l.strands > 0) {
+      // the worker is idle between a stroke's previews: what is shown is not the final hair
+      l.set('ready', `Preview — ${fmt(l.strands)} strands; release to grow all`);
+      return;
+    }
     const hair =
       l.strands > 0
         ? `${fmt(l.strands)} strands`
