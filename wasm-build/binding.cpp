@@ -381,6 +381,12 @@ EMSCRIPTEN_KEEPALIVE int32_t hs_engine_forget_warm_start(EngineHandle* h) {
   return h && h->engine.forgetWarmStart() ? 1 : 0;
 }
 
+// The next hs_engine_set_curves may leave the preconditioner's costliest update undone, for a
+// first look that hs_engine_forget_warm_start follows (FieldSolver::deferPreconditionerUpdate).
+EMSCRIPTEN_KEEPALIVE void hs_engine_defer_preconditioner_update(EngineHandle* h) {
+  if (h) h->engine.deferPreconditionerUpdate();
+}
+
 EMSCRIPTEN_KEEPALIVE int32_t hs_engine_grow(EngineHandle* h, const HsGrowthInput* in) {
   if (!h || !in) return fail(HS_INVALID_INPUT, "grow: no engine or input");
   if (!std::isfinite(in->seed)) return fail(HS_NON_FINITE, "grow: seed is not finite");

@@ -24,6 +24,9 @@ class AutoSolver : public FieldSolver {
   void setProgressHook(ProgressHook hook) override;
   Status setConstraints(const ConstraintSet& next) override;
   bool forgetWarmStart() override { return inner_ ? inner_->forgetWarmStart() : false; }
+  void deferPreconditionerUpdate() override {
+    if (inner_) inner_->deferPreconditionerUpdate();
+  }
   Status solve(Field& T) override;
   Status iterate(int maxIterations, double tolerance, Field& T, IterateProgress& progress) override;
   const SolveStats& stats() const override;

@@ -76,6 +76,12 @@ class FieldSolver {
   // share link then reopens bit-identical hair). Returns whether there was a warm start to
   // forget (direct solvers: false, their result never depends on history).
   virtual bool forgetWarmStart() { return false; }
+  // The next setConstraints may leave the solver's costliest incremental update to its
+  // preconditioner undone (MgPcgSolver: the coarsest factor), for a few iterations that
+  // forgetWarmStart follows (a first look): a weaker preconditioner for those, no update whose
+  // result the reset would throw away. A later setConstraints or forgetWarmStart catches up.
+  // The iterates stay a PCG run with a symmetric positive definite preconditioner.
+  virtual void deferPreconditionerUpdate() {}
 
  protected:
   bool keepGoing(const IterateProgress& p) const { return !hook_ || hook_(p); }

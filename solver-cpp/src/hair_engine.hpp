@@ -45,6 +45,11 @@ class HairEngine {
   // The next iterate() starts from zero (FieldSolver::forgetWarmStart); false for a direct
   // solver (nothing to forget) or before setGrid.
   bool forgetWarmStart() { return hasGrid_ && solver_ && solver_->forgetWarmStart(); }
+  // FieldSolver::deferPreconditionerUpdate for the next setCurves (a first look that
+  // forgetWarmStart follows).
+  void deferPreconditionerUpdate() {
+    if (solver_) solver_->deferPreconditionerUpdate();
+  }
   // Detail groups (group 0 the session's) and each curve's group (curves of the next setCurves,
   // in order; an empty list = every curve uses group 0). Validated by applyDetail at growth.
   Status setDetail(std::vector<DetailParams> groups, std::vector<int32_t> curveGroup);

@@ -137,6 +137,8 @@ Status MgPcgSolver::setGrid(const Grid& grid, double omega) {
 
 Status MgPcgSolver::setConstraints(const ConstraintSet& input) {
   if (!hasGrid_) return Status::Error(StatusCode::NotReady, "setGrid first");
+  const bool deferAsked = deferFactor_;  // for this call only, whatever its outcome
+  deferFactor_ = false;
   const auto t0 = Clock::now();
   Status s = validateConstraints(grid_, input);
   if (!s.ok()) return s;
@@ -151,14 +153,18 @@ Status MgPcgSolver::setConstraints(const ConstraintSet& input) {
   for (int p : d.added)
     if (!(s = mg_.setPenalty(p, w)).ok()) return s;
   set_ = next;
+  const bool defer = deferAsked && mg_.hasFactor() && !coldStart_;
   std::fill(b_.begin(), b_.end(), 0.0);
   for (const Constraint& c : set_) {
     const int64_t r = mg_.paddedRow(c.index);
     for (int k = 0; k < 3; ++k) b_[3 * r + k] = w * c.target[k];
   }
+  factorDeferred_ = false;
   if (set_.empty()) {
     std::fill(x_.begin(), x_.end(), 0.0);
     coldStart_ = true;
+  } else if (defer) {
+    factorDeferred_ = true;  // the next setConstraints' or forgetWarmStart's prepare() catches up
   } else if (!(s = mg_.prepare()).ok()) {
     return s;
   }
@@ -175,7 +181,9 @@ Status MgPcgSolver::setConstraints(const ConstraintSet& input) {
 
 bool MgPcgSolver::forgetWarmStart() {
   // the operators as a fresh solver builds them (no rounding of earlier edits), and a zero start
+  deferFactor_ = false;
   if (!mg_.resetPenalties().ok() || !mg_.prepare().ok()) return false;
+  factorDeferred_ = false;
   std::fill(x_.begin(), x_.end(), 0.0);
   coldStart_ = true;
   runActive_ = false;

@@ -56,6 +56,12 @@ class MgPcgSolver : public FieldSolver {
   // errorEstimate <= tolerance (tolerance 0: run exactly maxIterations).
   Status iterate(int maxIterations, double tolerance, MgProgress* progress = nullptr);
   bool forgetWarmStart() override;
+  // The next setConstraints changes the operators and their penalties but leaves the coarsest
+  // factor's rank-1 updates (or refactorisation) pending, when a factor exists: the run until
+  // the next prepare solves the coarsest level with the factor of the previous penalties.
+  void deferPreconditionerUpdate() override { deferFactor_ = true; }
+  // Whether the coarsest factor lags the constraints (tests).
+  bool factorDeferred() const { return factorDeferred_; }
   // FieldSolver's progressive interface: the call above, then field(T).
   Status iterate(int maxIterations, double tolerance, Field& T,
                  IterateProgress& progress) override {
@@ -101,6 +107,9 @@ class MgPcgSolver : public FieldSolver {
   // The next run starts cold (after setGrid, forgetWarmStart, or an empty set zeroed the field):
   // from the full-multigrid solution instead of the previous field (MultigridOptions::fmgStart).
   bool coldStart_ = true;
+  // deferPreconditionerUpdate was called / the last setConstraints left the factor behind.
+  bool deferFactor_ = false;
+  bool factorDeferred_ = false;
   double gamma_[3] = {0, 0, 0};
   // The last iteration's step lengths; its direction update is still to do (nextDirection).
   double alpha_[3] = {0, 0, 0};

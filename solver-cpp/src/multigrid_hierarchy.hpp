@@ -103,6 +103,11 @@ class MultigridHierarchy {
   Status prepare();
   // How the last prepare() that had work brought the factor up to date (tests, benchmarks).
   bool lastPrepareRefactored() const { return lastRefactored_; }
+  // Whether the coarsest factor is that of some earlier state of the coarsest operator (which is
+  // symmetric positive definite at every state): vcycle() may then run before prepare(), solving
+  // the coarsest level with that factor, and stays symmetric positive definite. False after
+  // build() and resetPenalties() until prepare().
+  bool hasFactor() const { return factorValid_; }
 
   // y = M x on padded fine vectors (x, y must not alias).
   void applyFine(const double* x, double* y);

@@ -38,6 +38,10 @@ export interface SolverEngine {
    *  before: share links, exports). False when there is nothing to forget (a direct solver).
    *  Optional (test fakes). */
   forgetWarmStart?(): boolean;
+  /** The next setCurves may leave the preconditioner's costliest update undone (the fast
+   *  solver's coarsest factor), for a first look of a few iterations that forgetWarmStart
+   *  follows: that reset would throw the update away. Optional (test fakes, direct solvers). */
+  deferPreconditionerUpdate?(): void;
   /** Sample roots (S5.1) and grow strands (S5.2) in the current field. Returns copies. */
   grow(params: GrowthParams): StrandArrays;
   /** The current constraints (sorted by grid index); their colours come from constraintColours. */

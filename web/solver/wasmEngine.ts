@@ -520,6 +520,10 @@ class WasmEngine implements SolverEngine {
     return this.mod._hs_engine_forget_warm_start(this.h()) === 1;
   }
 
+  deferPreconditionerUpdate(): void {
+    this.mod._hs_engine_defer_preconditioner_update(this.h());
+  }
+
   grow(g: GrowthParams): StrandArrays {
     const h = this.h();
     const m = this.mod;
