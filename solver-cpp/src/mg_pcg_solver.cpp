@@ -126,6 +126,7 @@ Status MgPcgSolver::setGrid(const Grid& grid, double omega) {
   for (auto* v : {&x_, &b_, &r_, &z_, &p_, &q_}) v->assign(m, 0.0);
   runActive_ = false;
   coldStart_ = true;
+  operatorsFresh_ = true;
   progress_ = MgProgress();
   progress_.errorEstimate = 0;
   progress_.converged = true;
@@ -147,6 +148,9 @@ Status MgPcgSolver::setConstraints(const ConstraintSet& input) {
   const ConstraintSet next = normal ? input : normalizeConstraints(input);
 
   const ConstraintDiff d = diffConstraints(set_, next);
+  // penalties added to fresh operators of an empty set, in ascending order, are what
+  // resetPenalties adds: the operators stay fresh; any other penalty change makes them not
+  if (!d.removed.empty() || (!d.added.empty() && !set_.empty())) operatorsFresh_ = false;
   const double w = omega_ * omega_;
   for (int p : d.removed)
     if (!(s = mg_.setPenalty(p, 0.0)).ok()) return s;
@@ -165,6 +169,7 @@ Status MgPcgSolver::setConstraints(const ConstraintSet& input) {
     coldStart_ = true;
   } else if (defer) {
     factorDeferred_ = true;  // the next setConstraints' or forgetWarmStart's prepare() catches up
+    operatorsFresh_ = false;
   } else if (!(s = mg_.prepare()).ok()) {
     return s;
   }
@@ -180,10 +185,15 @@ Status MgPcgSolver::setConstraints(const ConstraintSet& input) {
 }
 
 bool MgPcgSolver::forgetWarmStart() {
-  // the operators as a fresh solver builds them (no rounding of earlier edits), and a zero start
   deferFactor_ = false;
+  // a run that started cold on fresh operators (the first solve on a new grid) is already the
+  // solve a reset would start: it goes on (CG's iterates do not depend on how they are sliced)
+  lastForgetKept_ = operatorsFresh_ && !factorDeferred_ && (runActive_ ? runCold_ : coldStart_);
+  if (lastForgetKept_) return true;
+  // the operators as a fresh solver builds them (no rounding of earlier edits), and a zero start
   if (!mg_.resetPenalties().ok() || !mg_.prepare().ok()) return false;
   factorDeferred_ = false;
+  operatorsFresh_ = true;
   std::fill(x_.begin(), x_.end(), 0.0);
   coldStart_ = true;
   runActive_ = false;
@@ -212,6 +222,7 @@ void MgPcgSolver::coldStartField() {
 
 Status MgPcgSolver::startRun() {
   if (coldStart_ && mgOptions_.fmgStart) coldStartField();
+  runCold_ = coldStart_;
   coldStart_ = false;
   mg_.applyFine(x_.data(), q_.data());
   forRows(r_.size() / 3, [&](size_t i0, size_t i1) {

@@ -62,6 +62,8 @@ class MgPcgSolver : public FieldSolver {
   void deferPreconditionerUpdate() override { deferFactor_ = true; }
   // Whether the coarsest factor lags the constraints (tests).
   bool factorDeferred() const { return factorDeferred_; }
+  // Whether the last forgetWarmStart found the run already history-free and kept it (tests).
+  bool lastForgetKeptRun() const { return lastForgetKept_; }
   // FieldSolver's progressive interface: the call above, then field(T).
   Status iterate(int maxIterations, double tolerance, Field& T,
                  IterateProgress& progress) override {
@@ -110,6 +112,13 @@ class MgPcgSolver : public FieldSolver {
   // deferPreconditionerUpdate was called / the last setConstraints left the factor behind.
   bool deferFactor_ = false;
   bool factorDeferred_ = false;
+  // The operators and the coarsest factor are those a fresh hierarchy builds for the current
+  // penalties (setGrid, or forgetWarmStart, then at most the first constraints added to an
+  // empty set: the same additions in the same order), and the current run started cold with
+  // them: it is then already the history-free solve forgetWarmStart would start.
+  bool operatorsFresh_ = false;
+  bool runCold_ = false;
+  bool lastForgetKept_ = false;
   double gamma_[3] = {0, 0, 0};
   // The last iteration's step lengths; its direction update is still to do (nextDirection).
   double alpha_[3] = {0, 0, 0};

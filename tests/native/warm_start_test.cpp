@@ -138,6 +138,47 @@ TEST(WarmStart, ADeferredFactorUpdateStillConvergesAndLeavesNoTrace) {
   EXPECT_TRUE((again.array() == coldAfter.array()).all()) << "not bit-identical";
 }
 
+// The first solve on a new grid starts cold on freshly built operators: forgetWarmStart keeps
+// that run going instead of starting the same one again, and the field is bit-identical to an
+// unbroken fresh solve; after an incremental edit it resets as before.
+TEST(WarmStart, AColdRunOnFreshOperatorsIsKept) {
+  const Grid g = box14x12x10();
+  const ConstraintSet before = randomSet(g, 1, 120);
+  const ConstraintSet after = randomSet(g, 2, 150);
+  MgPcgSolver fresh;
+  ASSERT_TRUE(fresh.setGrid(g, 100).ok());
+  ASSERT_TRUE(fresh.setConstraints(after).ok());
+  const Field cold = converge(fresh);
+
+  MgPcgSolver s;
+  ASSERT_TRUE(s.setGrid(g, 100).ok());
+  ASSERT_TRUE(s.setConstraints(after).ok());
+  Field T;
+  IterateProgress p;
+  const Status first = s.iterate(2, 1e-6, T, p);  // a first look
+  EXPECT_TRUE(first.ok() || first.code == StatusCode::NotConverged) << first.message;
+  ASSERT_TRUE(s.forgetWarmStart());
+  EXPECT_TRUE(s.lastForgetKeptRun());
+  const Field kept = converge(s);
+  EXPECT_TRUE((kept.array() == cold.array()).all()) << "not bit-identical";
+
+  // an edit: the operators carry its rounding, the run is warm; the reset happens
+  ASSERT_TRUE(s.setConstraints(before).ok());
+  const Status look = s.iterate(2, 1e-6, T, p);
+  EXPECT_TRUE(look.ok() || look.code == StatusCode::NotConverged) << look.message;
+  ASSERT_TRUE(s.forgetWarmStart());
+  EXPECT_FALSE(s.lastForgetKeptRun());
+  // and right after that reset the solver is fresh again: a second forget keeps it
+  ASSERT_TRUE(s.forgetWarmStart());
+  EXPECT_TRUE(s.lastForgetKeptRun());
+  MgPcgSolver freshBefore;
+  ASSERT_TRUE(freshBefore.setGrid(g, 100).ok());
+  ASSERT_TRUE(freshBefore.setConstraints(before).ok());
+  const Field coldBefore = converge(freshBefore);
+  const Field reset = converge(s);
+  EXPECT_TRUE((reset.array() == coldBefore.array()).all()) << "not bit-identical";
+}
+
 TEST(WarmStart, ADirectSolverHasNothingToForget) {
   auto exact = makeFieldSolver("exact");
   Grid g;
