@@ -277,8 +277,9 @@ Status MultigridHierarchy::resetPenalties() {
 Status MultigridHierarchy::prepare() {
   if (!coarsestDirty_) return Status::Ok();
   // Rank-1 updates cost ~2 (m - first)^2 flops each, a refactorisation m^3 / 3 (plus the copy).
-  const double m = double(levels_.back().A.rows);
-  const bool update = factorValid_ && double(pending_.size()) * 6.0 < m;
+  // Within the band (lower bandwidth w): a rank-1 term costs ~2 w (m - first), m w on average,
+  // a refactorisation m w^2 / 2.
+  const bool update = factorValid_ && 2 * pending_.size() < size_t(std::max(coarsestBand_, 1));
   lastRefactored_ = !(update && updateCoarsest());
   pending_.clear();
   if (lastRefactored_) {
@@ -289,19 +290,40 @@ Status MultigridHierarchy::prepare() {
   return Status::Ok();
 }
 
+// The coarsest operator is banded in its lexicographic order (a Galerkin stencil reaches at
+// most 2 points along each axis): its Cholesky factor has no entry outside that band, so every
+// loop on the factor stays inside it (lower bandwidth w: m w^2 / 2 flops instead of m^3 / 3;
+// 25K's 9 x 10 x 9 level: w = 200 of m = 810). Right-looking, column by column, in a fixed order.
 Status MultigridHierarchy::refactorCoarsest() {
   factorValid_ = false;
   const Level& c = levels_.back();
   const int n = c.A.rows;
   coarsestL_.setZero(n, n);
+  int band = 0;
   for (int r = 0; r < n; ++r)
     for (int64_t e = c.A.ptr[r]; e < c.A.ptr[r + 1]; ++e)
-      if (c.A.col[e] <= r) coarsestL_(r, c.A.col[e]) = c.A.val[e];
-  Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>, Eigen::Lower> llt(coarsestL_);
-  if (llt.info() != Eigen::Success)
-    return Status::Error(StatusCode::NotPositiveDefinite,
-                         "coarsest level is not positive definite");
-  coarsestL_.triangularView<Eigen::StrictlyUpper>().setZero();
+      if (c.A.col[e] <= r) {
+        coarsestL_(r, c.A.col[e]) = c.A.val[e];
+        band = std::max(band, r - c.A.col[e]);
+      }
+  coarsestBand_ = band;
+  double* L = coarsestL_.data();
+  const int64_t ld = coarsestL_.outerStride();
+  for (int j = 0; j < n; ++j) {
+    double* __restrict cj = L + ld * j;
+    const int end = std::min(n, j + band + 1);
+    if (!(cj[j] > 0) || !std::isfinite(cj[j]))
+      return Status::Error(StatusCode::NotPositiveDefinite,
+                           "coarsest level is not positive definite");
+    const double ljj = std::sqrt(cj[j]);
+    cj[j] = ljj;
+    for (int i = j + 1; i < end; ++i) cj[i] /= ljj;
+    for (int k = j + 1; k < end; ++k) {
+      double* __restrict ck = L + ld * k;
+      const double lkj = cj[k];
+      for (int i = k; i < end; ++i) ck[i] -= cj[i] * lkj;
+    }
+  }
   factorValid_ = true;
   return Status::Ok();
 }
@@ -337,10 +359,11 @@ bool MultigridHierarchy::updateCoarsest() {
         const double gamma = dj * beta + su2;
         beta += su2 / dj;
         coarsestL_(j, j) = nljj;
-        const int rs = n - j - 1;
+        // u's support stays within [j, j + band] (the term's 8 entries span less than the band)
+        const int rs = std::min(n - j - 1, coarsestBand_);
         if (rs == 0) continue;
-        auto col = coarsestL_.col(j).tail(rs);
-        auto ut = u.tail(rs);
+        auto col = coarsestL_.col(j).segment(j + 1, rs);
+        auto ut = u.segment(j + 1, rs);
         ut -= (uj / ljj) * col;
         col = (nljj / ljj) * col + (nljj * sigma * uj / gamma) * ut;
       }
@@ -625,6 +648,7 @@ void MultigridHierarchy::solveCoarsest() {
   const int n = c.A.rows;
   const double* L = coarsestL_.data();
   const int64_t ld = coarsestL_.outerStride();
+  const int band = coarsestBand_;
   coarseWork_.resize(3 * size_t(n));
   double* __restrict y0 = coarseWork_.data();
   double* __restrict y1 = y0 + n;
@@ -640,7 +664,8 @@ void MultigridHierarchy::solveCoarsest() {
     y0[j] = a;
     y1[j] = b;
     y2[j] = d;
-    for (int i = j + 1; i < n; ++i) {
+    const int end = std::min(n, j + band + 1);
+    for (int i = j + 1; i < end; ++i) {
       const double l = col[i];
       y0[i] -= l * a;
       y1[i] -= l * b;
@@ -651,14 +676,15 @@ void MultigridHierarchy::solveCoarsest() {
     const double* __restrict col = L + ld * j;
     double s[3][4] = {};
     int i = j + 1;
-    for (; i + 3 < n; i += 4)
+    const int end = std::min(n, j + band + 1);
+    for (; i + 3 < end; i += 4)
       for (int u = 0; u < 4; ++u) {
         const double l = col[i + u];
         s[0][u] += l * y0[i + u];
         s[1][u] += l * y1[i + u];
         s[2][u] += l * y2[i + u];
       }
-    for (; i < n; ++i) {
+    for (; i < end; ++i) {
       s[0][0] += col[i] * y0[i];
       s[1][0] += col[i] * y1[i];
       s[2][0] += col[i] * y2[i];

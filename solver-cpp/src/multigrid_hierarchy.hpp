@@ -13,12 +13,13 @@
 // V-cycle runs in parallel over planes or rows, each value computed as in a serial loop, so a
 // V-cycle gives the same bits with any thread count.
 // Levels l >= 1 are Galerkin operators A_{l+1} = P_l^T A_l P_l (A_1 = (D P_0)^T (D P_0) + P_0^T W
-// P_0) in CSR; the coarsest (at most `coarsestMaxPoints` points) is factored densely (LL^T).
+// P_0) in CSR; the coarsest (at most `coarsestMaxPoints` points) is factored (LL^T, dense
+// storage, every loop kept inside the operator's band: lower bandwidth w, m w^2 / 2 flops).
 // A penalty change at fine point p by delta changes every coarse operator by delta * v v^T, v the
 // composite interpolation row of p (at most 8 entries): setPenalty updates those 64 entries per
 // level in place, so an edit costs O(#changed points * levels) plus, at the coarsest level,
-// rank-1 updates/downdates of its dense factor (one per changed point, O(m^2) each) or a
-// refactorisation (O(m^3)) when that is cheaper, or a downdate fails. build() and
+// rank-1 updates/downdates of its factor (one per changed point, O(m w) each) or a
+// refactorisation (O(m w^2)) when that is cheaper, or a downdate fails. build() and
 // resetPenalties() always refactor, so the factor then depends on the penalties alone.
 // vcycle() applies one symmetric V-cycle B (pre- and post-smoothing adjoint to each other, exact
 // coarsest solve), so B is symmetric positive definite and usable as a CG preconditioner.
@@ -200,6 +201,7 @@ class MultigridHierarchy {
   std::vector<double> coarseWork_;   // the coarsest solve's right-hand sides, column by column
   std::vector<CoarseTerm> pending_;  // changes not yet in coarsestL_
   bool factorValid_ = false;         // coarsestL_ + pending_ describe the coarsest operator
+  int coarsestBand_ = 0;             // lower bandwidth of the coarsest operator (and factor)
   bool coarsestDirty_ = true;
   bool lastRefactored_ = true;
 };
