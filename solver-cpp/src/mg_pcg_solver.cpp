@@ -188,7 +188,8 @@ bool MgPcgSolver::forgetWarmStart() {
   deferFactor_ = false;
   // a run that started cold on fresh operators (the first solve on a new grid) is already the
   // solve a reset would start: it goes on (CG's iterates do not depend on how they are sliced)
-  lastForgetKept_ = operatorsFresh_ && !factorDeferred_ && (runActive_ ? runCold_ : coldStart_);
+  // (a deferred factor update leaves the operators not fresh)
+  lastForgetKept_ = operatorsFresh_ && (runActive_ ? runCold_ : coldStart_);
   if (lastForgetKept_) return true;
   // the operators as a fresh solver builds them (no rounding of earlier edits), and a zero start
   if (!mg_.resetPenalties().ok() || !mg_.prepare().ok()) return false;

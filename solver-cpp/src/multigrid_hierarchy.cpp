@@ -276,7 +276,6 @@ Status MultigridHierarchy::resetPenalties() {
 
 Status MultigridHierarchy::prepare() {
   if (!coarsestDirty_) return Status::Ok();
-  // Rank-1 updates cost ~2 (m - first)^2 flops each, a refactorisation m^3 / 3 (plus the copy).
   // Within the band (lower bandwidth w): a rank-1 term costs ~2 w (m - first), m w on average,
   // a refactorisation m w^2 / 2.
   const bool update = factorValid_ && 2 * pending_.size() < size_t(std::max(coarsestBand_, 1));

@@ -38,11 +38,12 @@
 namespace hairsketch {
 
 struct MultigridOptions {
-  // Coarsen until a level has at most this many points; that level is factored densely. A
+  // Coarsen until a level has at most this many points; that level is factored exactly. A
   // large exact coarsest level matters on this operator: on the app's 250K grid ending at
   // 9 x 11 x 9 instead of 5 x 6 x 5 takes CG from ~127 to ~49 iterations. Past ~1000 points the
-  // dense triangular solves (m^2 per V-cycle) cost more than the iterations they save (the 50K
-  // grid's 10 x 12 x 10: 45 -> 35 iterations but 11 -> 16 ms per iteration natively).
+  // factor's work outgrows the iterations it saves: the 50K grid's 10 x 12 x 10 (1,200 points)
+  // takes 45 -> 36 cold iterations, but with a dearer reset the times were mixed even with the
+  // banded factor (mg_bench --app, native: 265-328 against 305-342 ms).
   int coarsestMaxPoints = 1000;
   int sweeps = 1;  // smoothing steps before and after the coarse correction
   // true: each step is a symmetric Gauss-Seidel sweep (forward then backward) on both sides;

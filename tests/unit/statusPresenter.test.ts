@@ -18,11 +18,14 @@ function setup(pending = { now: true }, drawing = { now: false }) {
     el as unknown as HTMLElement,
     fakeElement() as unknown as HTMLElement,
   );
-  const p = new StatusPresenter(
-    line,
-    () => pending.now,
-    () => drawing.now,
-  );
+  const p = new StatusPresenter(line, {
+    get pending() {
+      return pending.now;
+    },
+    get previewing() {
+      return drawing.now;
+    },
+  });
   return { el, line, p, pending, drawing };
 }
 

@@ -85,11 +85,7 @@ export function startApp(): void {
     interactiveDetail: () => viewer.interactiveDetail,
     shownStrands: () => line.strands,
   });
-  const status = new StatusPresenter(
-    line,
-    () => bridge.pending,
-    () => bridge.previewing,
-  );
+  const status = new StatusPresenter(line, bridge);
   const overlays = new OverlayPresenter(viewer, editor, bridge.grid);
   const links = new LinkWriter(editor);
 

@@ -16,12 +16,11 @@ export class StatusPresenter {
   private progress = 0;
   private firstLook = false;
 
-  /** `pending`: the solver has work queued; `drawing`: a stroke is being drawn (the hair on
-   *  screen is its preview, a sample of the strands). */
+  /** `solver.pending`: the solver has work queued; `solver.previewing`: a stroke is being drawn
+   *  (the hair on screen is its preview, a sample of the strands). The solver bridge. */
   constructor(
     private readonly line: StatusLine,
-    private readonly pending: () => boolean,
-    private readonly drawing: () => boolean = () => false,
+    private readonly solver: { readonly pending: boolean; readonly previewing: boolean },
   ) {}
 
   /** A sentence about what the user just did (kept beside "Ready"). */
@@ -116,13 +115,13 @@ export class StatusPresenter {
 
   /** The newest hair is on screen and nothing is pending. */
   ready(): void {
-    if (this.pending()) return;
+    if (this.solver.pending) return;
     if (this.taskText) {
       this.line.set('solving', this.taskText);
       return;
     }
     const l = this.line;
-    if (this.drawing() && l.strands > 0) {
+    if (this.solver.previewing && l.strands > 0) {
       // the worker is idle between a stroke's previews: what is shown is not the final hair
       l.set('ready', `Preview — ${fmt(l.strands)} strands; release to grow all`);
       return;
