@@ -293,6 +293,12 @@ EMSCRIPTEN_KEEPALIVE int32_t hs_engine_head_stats(EngineHandle* h, double* out) 
   return HS_OK;
 }
 
+// Natural fall on (1) or off (0) for the curves of the next set_curves (HairEngine::setFall).
+EMSCRIPTEN_KEEPALIVE int32_t hs_engine_set_fall(EngineHandle* h, int32_t on) {
+  if (!h) return fail(HS_INVALID_INPUT, "set_fall: no engine");
+  return report(h->engine.setFall(on != 0));
+}
+
 EMSCRIPTEN_KEEPALIVE int32_t hs_engine_set_curves(EngineHandle* h, const HsCurveSetHeader* in) {
   if (!h || !in) return fail(HS_INVALID_INPUT, "set_curves: no engine or input");
   CurveSetView v;

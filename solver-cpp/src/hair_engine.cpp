@@ -11,7 +11,22 @@ namespace hairsketch {
 
 namespace {
 using Clock = std::chrono::steady_clock;
+
+// Whether the head surface under curve point q is not scalp: q is carried towards the head (down
+// the distance gradient, or towards its centre away from the surface) until the distance grid
+// knows its nearest triangle; a point more than kOverReach from the head is in the air (true).
+bool offScalp(const HeadDistance& head, const double* q) {
+  constexpr float kOverReach = 0.6f, kStep = 0.04f, kKnown = 0.06f;
+  float p[3] = {float(q[0]), float(q[1]), float(q[2])};
+  for (float walked = 0; walked <= kOverReach; walked += kStep) {
+    float dir[3];
+    const float d = head.outward(p, dir);
+    if (d < kKnown) return !head.scalpNear(p[0], p[1], p[2]);
+    for (int e = 0; e < 3; ++e) p[e] -= kStep * dir[e];
+  }
+  return true;
 }
+}  // namespace
 
 // Per grid point the engine holds, besides its solver: field_ (24 bytes), fieldF_ (12), the
 // binding's float copy for JS (12) and toFloatField's temporary (12).
@@ -48,7 +63,33 @@ Status HairEngine::setGrid(const Grid& grid, double omega, const std::string& so
   fieldValid_ = true;  // no constraints: the zero field is the solution
   strands_ = Strands{};
   strands_.strandStart.assign(1, 0);
-  return Status::Ok();
+  priorSet_ = false;
+  reach_.clear();
+  footprints_.clear();
+  return applyPrior();
+}
+
+// The solver's prior follows the setting, the grid and the head: set when fall is on and there
+// is a head, cleared (only if it was set, so sessions without fall never see the call) otherwise.
+Status HairEngine::applyPrior() {
+  if (!hasGrid_ || !solver_) return Status::Ok();
+  if (fall_ && headDistance_.built()) {
+    Status s = solver_->setPrior(kFallWeight, fallDirections(grid_, headDistance_, centre_));
+    priorSet_ = s.ok();
+    if (!constraints_.empty()) fieldValid_ = false;
+    return s;
+  }
+  if (!priorSet_) return Status::Ok();
+  priorSet_ = false;
+  if (!constraints_.empty()) fieldValid_ = false;
+  return solver_->setPrior(0.0, Field());
+}
+
+Status HairEngine::setFall(bool on) {
+  if (on == fall_) return Status::Ok();
+  fall_ = on;
+  reach_.clear();
+  return applyPrior();
 }
 
 Status HairEngine::setScalp(const float* positions, size_t vertexCount, const uint32_t* indices,
@@ -74,7 +115,10 @@ Status HairEngine::setScalp(const float* positions, size_t vertexCount, const ui
   if (!s.ok()) scalp_ = ScalpSampler();
   samplerMs_ = std::chrono::duration<double, std::milli>(t1 - t0).count();
   distanceMs_ = std::chrono::duration<double, std::milli>(Clock::now() - t1).count();
-  return s;
+  centre_ = center;
+  footprints_.clear();  // the curves' stretches off the scalp depend on the head
+  if (!s.ok()) return s;
+  return applyPrior();
 }
 
 Status HairEngine::setScalpMask(const uint8_t* scalp, size_t triangleCount) {
@@ -137,7 +181,61 @@ Status HairEngine::setCurves(const CurveSetView& curves) {
   }
   ConstraintSet next;
   std::vector<uint8_t> nextColours;
-  Status s = curvesToConstraints(grid_, curves, next, &nextColours);
+  Status s;
+  if (fall_) {
+    // The reach of stream curves and ponytail spines ends their hair, in place of the fading
+    // extension; "extend" means the curve's hair grows on.
+    std::vector<ReachCurve> rc;
+    // the curves' stretches off the scalp (over the face, an ear, the neck, or in the air)
+    std::vector<uint8_t> overFace(curves.pointCount, 0);
+    if (headDistance_.built() && curves.points)
+      for (size_t k = 0; k < curves.pointCount; ++k)
+        overFace[k] = offScalp(headDistance_, curves.points + 3 * k) ? 1 : 0;
+    if (curves.kinds && curves.curveStart && curves.points)
+      for (size_t c = 0; c < curves.curveCount; ++c) {
+        const auto kind = CurveKindCode(curves.kinds[c]);
+        if (kind != CurveKindCode::Stream && kind != CurveKindCode::Ponytail) continue;
+        const size_t a = curves.curveStart[c], b = curves.curveStart[c + 1];
+        if (b <= a || b > curves.pointCount) continue;
+        rc.push_back({curves.points + 3 * a, b - a, curves.extend && curves.extend[c] != 0,
+                      headDistance_.built() ? overFace.data() + a : nullptr});
+      }
+    std::vector<uint8_t> noExtension(curves.curveCount, 0);
+    CurveSetView view = curves;
+    if (curves.extend) view.extend = noExtension.data();
+    s = curvesToConstraints(grid_, view, next, &nextColours);
+    if (s.ok()) {
+      // a curve's footprint is kept while the curve, its flags, the grid and the head stay
+      const Grid lattice = reachGrid(grid_);
+      std::vector<std::pair<uint64_t, CurveFootprint>> kept;
+      std::vector<const CurveFootprint*> parts;
+      kept.reserve(rc.size());
+      for (const ReachCurve& c : rc) {
+        uint64_t key = 1469598103934665603ull;
+        auto mix = [&](const void* data, size_t bytes) {
+          const auto* b = static_cast<const unsigned char*>(data);
+          for (size_t i = 0; i < bytes; ++i) key = (key ^ b[i]) * 1099511628211ull;
+        };
+        mix(c.points, 3 * c.count * sizeof(double));
+        mix(&c.growsOn, sizeof(bool));
+        if (c.offScalp) mix(c.offScalp, c.count);
+        auto found = std::find_if(footprints_.begin(), footprints_.end(),
+                                  [&](const auto& f) { return f.first == key; });
+        if (found != footprints_.end()) {
+          kept.emplace_back(key, std::move(found->second));
+          footprints_.erase(found);
+        } else {
+          kept.emplace_back(key, CurveFootprint());
+          curveFootprint(lattice, c, kept.back().second);
+        }
+      }
+      footprints_ = std::move(kept);
+      for (const auto& f : footprints_) parts.push_back(&f.second);
+      combineReach(lattice, parts, reach_);
+    }
+  } else {
+    s = curvesToConstraints(grid_, curves, next, &nextColours);
+  }
   if (!s.ok()) return s;
   s = solver_->setConstraints(next);
   if (!s.ok()) return s;
@@ -149,6 +247,7 @@ Status HairEngine::setCurves(const CurveSetView& curves) {
 
 Status HairEngine::solve() {
   if (!hasGrid_) return Status::Error(StatusCode::NotReady, "solve before setGrid");
+  if (priorSet_ && constraints_.empty()) return zeroField();
   Field T;
   Status s = solver_->solve(T);
   if (!s.ok()) return s;
@@ -160,11 +259,25 @@ Status HairEngine::solve() {
 
 Status HairEngine::iterate(int maxIterations, double tolerance, IterateProgress& progress) {
   if (!hasGrid_) return Status::Error(StatusCode::NotReady, "iterate before setGrid");
+  if (priorSet_ && constraints_.empty()) {
+    progress = IterateProgress();
+    progress.converged = true;
+    return zeroField();
+  }
   Field T;
   Status s = solver_->iterate(maxIterations, tolerance, T, progress);
   if (!s.ok() && s.code != StatusCode::NotConverged) return s;
   field_ = std::move(T);
   fieldF_ = toFloatField(field_);
+  fieldValid_ = true;
+  return Status::Ok();
+}
+
+// No curves: a bald head, with or without the prior (the prior alone would grow hair
+// everywhere).
+Status HairEngine::zeroField() {
+  field_ = Field::Zero(grid_.size(), 3);
+  fieldF_.assign(size_t(grid_.size()) * 3, 0.f);
   fieldValid_ = true;
   return Status::Ok();
 }
@@ -209,7 +322,8 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
     return fits;
   }
   const HeadDistance* head = headDistance_.built() ? &headDistance_ : nullptr;
-  Status s = growStrands(grid_, fieldF_, roots(), gp, strands_, size_t(24) << 20, head);
+  const CurveReach* reach = fall_ && !reach_.empty() ? &reach_ : nullptr;
+  Status s = growStrands(grid_, fieldF_, roots(), gp, strands_, size_t(24) << 20, head, reach);
   bool anyDetail = false;
   for (const DetailParams& d : detail_) anyDetail |= d.any();
   if (s.ok() && anyDetail) {

@@ -11,6 +11,7 @@
 #include "curve_set.hpp"
 #include "field_solver.hpp"
 #include "grid.hpp"
+#include "hair_fall.hpp"
 #include "head_distance.hpp"
 #include "scalp_avoidance.hpp"
 #include "scalp_roots.hpp"
@@ -37,6 +38,13 @@ class HairEngine {
   // grid, field and constraints stay. A wrong count (InvalidInput) or no head (NotReady) is
   // refused and the old mask stays in force.
   Status setScalpMask(const uint8_t* scalp, size_t triangleCount);
+  // Natural fall (hair_fall.hpp): the prior towards hanging hair joins the field energy (once
+  // there is a grid and a head), curves no longer append the fading extension (the curves' reach
+  // ends hair instead; "extend" lets a curve's hair grow on), and growth stops hair where its
+  // curve ends and lets a curve take hair over the face. Off (the default) is the paper's method
+  // exactly. Takes effect for the curves of the next setCurves.
+  Status setFall(bool on);
+  bool fall() const { return fall_; }
   // Curves -> constraints -> solver (the solver diffs against its previous set).
   Status setCurves(const CurveSetView& curves);
   Status solve();
@@ -107,6 +115,15 @@ class HairEngine {
   // Curve points subsampled for the nearest-curve lookup, with their curve's index.
   std::vector<Eigen::Vector3f> curvePoints_;
   std::vector<int32_t> curvePointCurve_;
+  // Natural fall: the setting, whether the solver holds a prior, the head's centre (the prior's
+  // vertical axis) and the reach of the last setCurves' curves.
+  bool fall_ = false;
+  bool priorSet_ = false;
+  Eigen::Vector3d centre_ = Eigen::Vector3d::Zero();
+  CurveReach reach_;
+  std::vector<std::pair<uint64_t, CurveFootprint>> footprints_;  // by a hash of each curve
+  Status applyPrior();
+  Status zeroField();
 };
 
 }  // namespace hairsketch

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "hair_fall.hpp"
 #include "parallel.hpp"
 
 namespace hairsketch {
@@ -136,6 +137,17 @@ struct GrowRange {
   double maxLen;
   int maxSegments;
   const std::vector<Eigen::Vector3f>& roots;
+  const CurveReach* reach;  // null: the paper's stopping rules only
+
+  // Whether a step from (x, y, z) to (nx, ny, nz) follows a curve over the face.
+  bool followsOverFace(float x, float y, float z, float nx, float ny, float nz) const {
+    if (!reach) return false;
+    float d[3] = {nx - x, ny - y, nz - z};
+    const float n = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    if (!(n > 0)) return false;
+    for (float& e : d) e /= n;
+    return reachOverFace(*reach, nx, ny, nz, d);
+  }
 
   bool operator()(size_t b, size_t e, PointBuffer& buf, size_t& used, uint32_t* ends,
                   size_t maxPoints) const {
@@ -150,6 +162,20 @@ struct GrowRange {
       *dst++ = y;
       *dst++ = z;
       double length = 0;
+      // With the curves' reach: a strand rooted where a curve's hair still has length ends
+      // where the remaining length runs out; one rooted past a curve's end (on the scalp beyond
+      // a stroke that ends there) is short near it and longer away from it.
+      double strandMax = maxLen;
+      bool endsWithCurve = false;
+      if (reach && s.inside(x, y, z)) {
+        const float r0 = reachRemaining(*reach, x, y, z, float(maxLen));
+        if (r0 > 0) {
+          endsWithCurve = true;
+        } else {
+          const float f = interpolateScalar(reach->grid, reach->far.data(), x, y, z);
+          strandMax = std::min(maxLen, double(f) * maxLen + double(1 - f) * kPastEndLength);
+        }
+      }
       if (s.inside(x, y, z)) {
         for (int seg = 0; seg < maxSegments; ++seg) {
           const F4 v = s.at(x, y, z);
@@ -160,7 +186,9 @@ struct GrowRange {
           if (head) {
             float grad[3];
             if (head->distance(nx, ny, nz, grad) < margin) {
-              if (seg > 0 && !head->scalpNear(nx, ny, nz)) break;  // not over the face
+              // not over the face, unless a curve takes the hair there
+              if (seg > 0 && !head->scalpNear(nx, ny, nz) && !followsOverFace(x, y, z, nx, ny, nz))
+                break;
               // Slide: drop the inward part of the step, then stand off at the margin.
               float st[3] = {nx - x, ny - y, nz - z};
               const float g2 = grad[0] * grad[0] + grad[1] * grad[1] + grad[2] * grad[2];
@@ -180,7 +208,8 @@ struct GrowRange {
             }
           }
           if (!s.inside(nx, ny, nz)) break;  // leaving the bounding volume
-          if (length + segLen > maxLen) break;
+          if (length + segLen > strandMax) break;
+          if (endsWithCurve && reachRemaining(*reach, nx, ny, nz, float(maxLen)) < 0) break;
           length += segLen;
           x = nx;
           y = ny;
@@ -202,7 +231,7 @@ struct GrowRange {
 
 Status growStrands(const Grid& g, const std::vector<float>& field,
                    const std::vector<Eigen::Vector3f>& roots, const GrowthParams& prm, Strands& out,
-                   size_t maxPoints, const HeadDistance* head) {
+                   size_t maxPoints, const HeadDistance* head, const CurveReach* reach) {
   // The point buffer keeps its capacity from the last call and is not zero-filled (see
   // UninitAllocator), so a repeated growth neither reallocates nor refills it.
   out.points.clear();
@@ -232,7 +261,8 @@ Status growStrands(const Grid& g, const std::vector<float>& field,
                        float(prm.minMagnitude * prm.minMagnitude),
                        prm.maxLength,
                        prm.maxSegments,
-                       roots};
+                       roots,
+                       reach && !reach->empty() ? reach : nullptr};
   out.strandStart.resize(roots.size() + 1);
   const size_t n = roots.size();
   const int threads = parallel::threadCount();

@@ -67,12 +67,20 @@ std::vector<float> toFloatField(const Field& T);
 // Trilinear interpolation of a float field at world point x (x inside the volume).
 Eigen::Vector3f interpolateField(const Grid& grid, const float* field, const Eigen::Vector3f& x);
 
+struct CurveReach;
+
+// A strand rooted past the end of a curve that ends hair (remaining length <= 0 at its root) is
+// at most this long beside that curve (world units), rising to the maximum length away from it.
+constexpr double kPastEndLength = 0.2;
+
 // Grows one strand per root. OverMemoryCap (and no strands) if the output would exceed
-// maxPoints points in total.
+// maxPoints points in total. With the curves' reach (hair_fall.hpp): a strand rooted where a
+// curve still has length stops where the remaining length there falls below zero, and a strand
+// where a curve governs the hair may slide over the face (the non-scalp head).
 Status growStrands(const Grid& grid, const std::vector<float>& field,
                    const std::vector<Eigen::Vector3f>& roots, const GrowthParams& params,
                    Strands& out, size_t maxPoints = size_t(24) << 20,
-                   const HeadDistance* head = nullptr);
+                   const HeadDistance* head = nullptr, const CurveReach* reach = nullptr);
 
 // Moves every point but the roots that lies closer to the head than `margin` out to it (after
 // detail has moved points). Returns how many points moved.

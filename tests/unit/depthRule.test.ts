@@ -108,3 +108,61 @@ describe('liftStroke (S4.2 depth rule)', () => {
     expect(moved).toBeGreaterThanOrEqual(2);
   });
 });
+
+describe('liftStroke from a camera looking down (a lock drawn hanging)', () => {
+  it('puts the off-head points on the vertical plane through the last scalp point', () => {
+    // A side camera (looking along -x) pitched 25° down; the stroke starts on a scalp point and
+    // runs straight down the screen past the head.
+    const pitch = (25 * Math.PI) / 180;
+    const forward: Vec3 = [-Math.cos(pitch), -Math.sin(pitch), 0];
+    const eye: Vec3 = [5 * Math.cos(pitch), 5 * Math.sin(pitch), 0];
+    const up: Vec3 = [-Math.sin(pitch), Math.cos(pitch), 0]; // the screen's up, square to forward
+    const anchor: Vec3 = [0.2, 0.9, -0.6];
+    const rayTo = (p: Vec3) => {
+      const d = sub(p, eye);
+      const n = Math.hypot(...d);
+      return [d[0] / n, d[1] / n, d[2] / n] as Vec3;
+    };
+    // screen-vertical steps: points of the plane square to the view through the anchor
+    const samples: StrokeSample[] = [{ origin: eye, direction: rayTo(anchor), scalpHit: anchor }];
+    for (let k = 1; k <= 8; k++) {
+      const p: Vec3 = [
+        anchor[0] - 0.2 * k * up[0],
+        anchor[1] - 0.2 * k * up[1],
+        anchor[2] - 0.2 * k * up[2],
+      ];
+      samples.push({ origin: eye, direction: rayTo(p), scalpHit: null });
+    }
+    const r = liftStroke(samples, eye, forward);
+    if (!r.ok) throw new Error('expected ok');
+    // every point keeps the anchor's x (the level depth), so seen from the front or behind the
+    // lock hangs plumb; the old rule (depth along the pitched view) moved it by up to 0.64
+    for (const p of r.points) expect(p[0]).toBeCloseTo(anchor[0], 10);
+    // and each stays on its own ray (where it was drawn in the drawing view)
+    r.points.forEach((p, i) => {
+      const d = rayTo(p);
+      const s = samples[i].direction;
+      expect(Math.hypot(d[0] - s[0], d[1] - s[1], d[2] - s[2])).toBeLessThan(1e-9);
+    });
+  });
+
+  it('keeps depth along the view when looking nearly straight down', () => {
+    const forward: Vec3 = [0, -1, 0];
+    const eye: Vec3 = [0, 5, 0];
+    const anchor: Vec3 = [0, 1, 0];
+    const r = liftStroke(
+      [
+        { origin: eye, direction: [0, -1, 0], scalpHit: anchor },
+        {
+          origin: eye,
+          direction: [0.1 / Math.hypot(0.1, 1), -1 / Math.hypot(0.1, 1), 0],
+          scalpHit: null,
+        },
+      ],
+      eye,
+      forward,
+    );
+    if (!r.ok) throw new Error('expected ok');
+    expect(r.points[1][1]).toBeCloseTo(1, 10);
+  });
+});

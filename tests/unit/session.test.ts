@@ -175,9 +175,13 @@ describe('packHairOptions (solve options: avoid scalp and detail groups)', () =>
     expect(g2[JITTER]).toBe(0);
   });
 
-  it('no detail anywhere: one group, every block off; avoid scalp absent is off', () => {
+  it('no detail anywhere: one group, every block off; avoid scalp and fall absent are off', () => {
     const o = packHairOptions({}, [stream, dividing]);
     expect(o.avoidScalp).toBe(false);
+    expect(o.fall).toBe(false);
+    expect(packHairOptions({ fall: false }, []).fall).toBe(false);
+    expect(packHairOptions({ fall: true }, []).fall).toBe(true);
+    expect(packHairOptions(emptySession('25k'), []).fall).toBe(true); // on in a new session
     expect(o.detail.groups.length).toBe(DETAIL_GROUP_STRIDE);
     expect(Array.from(o.detail.curveGroup)).toEqual([0, 0]);
     const g0 = group(o.detail, 0);

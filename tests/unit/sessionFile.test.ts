@@ -2,6 +2,7 @@ import { describe, expect, it } from 'vitest';
 import { emptySession, type SessionState } from '../../web/model/session';
 import { parseSession } from '../../web/model/sessionFile';
 import { decodeSessionLink, encodeSessionLink } from '../../web/model/sessionLink';
+import { SESSION_VERSION } from '../../web/model/sessionMigrations';
 import { CURVE_PARAMS } from '../../web/solver/protocol';
 
 const vp = {
@@ -10,7 +11,8 @@ const vp = {
 };
 
 function sample(): SessionState {
-  const s = emptySession('50k');
+  // the settings (avoidScalp, fall, detail) in the order the reader writes them
+  const { fall: _fall, ...s } = emptySession('50k');
   return {
     ...s,
     curves: [
@@ -45,6 +47,7 @@ function sample(): SessionState {
       },
     ],
     avoidScalp: true,
+    fall: true,
     detail: {
       curl: { radius: 0.05, frequency: 3, start: 0.15, randomOffset: 1 },
       frizz: { distance: 0.006, shape: 0.5 },
@@ -61,7 +64,7 @@ describe('parseSession', () => {
     if (r.ok) expect(r.value).toEqual(s);
   });
 
-  it('a Save file (session + camera) with avoidScalp and detail reads back as the session', () => {
+  it('a Save file (session + camera) with avoidScalp, fall and detail reads back as the session', () => {
     const s = sample();
     const text = JSON.stringify({ ...s, camera: vp }, null, 2);
     const r = parseSession(JSON.parse(text));
@@ -69,6 +72,7 @@ describe('parseSession', () => {
     if (!r.ok) return;
     expect(r.value).toEqual(s);
     expect(r.value.avoidScalp).toBe(true);
+    expect(r.value.fall).toBe(true);
     expect(r.value.detail?.curl?.frequency).toBe(3);
     expect(r.value.detail).not.toHaveProperty('clump');
     // and the file of what was read is the same file
@@ -91,9 +95,10 @@ describe('parseSession', () => {
     if (!r.ok) return;
     expect(r.value.curves[0]).not.toHaveProperty('surfaceMode');
     expect(r.value.curves[1]).toMatchObject({ sigma: 1, h: 0.5, alpha0: 0, alpha1: 0 });
-    expect(r.value.version).toBe(3);
+    expect(r.value.version).toBe(SESSION_VERSION);
     expect(r.value.head).toBe('builtin');
     expect(r.value).not.toHaveProperty('avoidScalp');
+    expect(r.value).not.toHaveProperty('fall'); // made before natural fall: the paper's hair
     expect(r.value).not.toHaveProperty('avoid');
     expect(r.value).not.toHaveProperty('detail');
     expect(r.value).not.toHaveProperty('camera');
@@ -125,7 +130,10 @@ describe('parseSession', () => {
     expect(bad((j) => (j.detail.curl.radius = 1))).toBe(
       'session.detail.curl.radius: must be between 0 and 0.5',
     );
-    expect(bad((j) => (j.version = 4))).toMatch(/version/);
+    expect(bad((j) => (j.version = SESSION_VERSION + 1))).toMatch(
+      /^session\.version: .*version 5 was made by a newer hairsketch/,
+    );
+    expect(bad((j) => (j.fall = 1))).toBe('session.fall: must be true or false');
     expect(parseSession(null)).toEqual({ ok: false, error: 'session: must be an object' });
   });
 });

@@ -26,6 +26,7 @@ import {
   toBase64Url,
   unpackSession,
 } from '../../web/model/sessionLink';
+import { SESSION_VERSION } from '../../web/model/sessionMigrations';
 import type { Vec3 } from '../../web/model/vec3';
 
 const head = Head.builtin();
@@ -166,15 +167,16 @@ describe('version 2 links', () => {
     expect(off).toEqual(reopened(plain));
   });
 
-  it('write the avoid slot empty: avoidScalp and detail travel in the JSON tail', () => {
+  it('write the avoid slot empty: avoidScalp, fall and detail travel in the JSON tail', () => {
     const s = everything();
     const data = unpackSession(packSession(s));
-    expect(data.version).toBe(3);
+    expect(data.version).toBe(SESSION_VERSION);
     expect(data).not.toHaveProperty('avoid');
     expect(data.avoidScalp).toBe(true);
+    expect(data.fall).toBe(true);
     expect(data.detail).toEqual(DETAIL);
     // without them the tail is empty: the body ends with the avoid slot 0, tail length 0, CRC
-    const { avoidScalp: _a, detail: _d, ...plain } = presetSession('default', head);
+    const { avoidScalp: _a, detail: _d, fall: _f, ...plain } = presetSession('default', head);
     const body = packSession(plain);
     expect(Array.from(body.subarray(body.length - 6, body.length - 4))).toEqual([0, 0]);
   });
@@ -245,7 +247,7 @@ describe('version 1 links', () => {
       `#${await encodeSessionLinkV1(v1 as unknown as SessionState)}`,
     );
     if (!r.ok) throw new Error(r.error);
-    expect(r.value.version).toBe(3);
+    expect(r.value.version).toBe(SESSION_VERSION);
     expect(r.value.avoidScalp).toBe(true);
     expect(r.value).not.toHaveProperty('avoid');
     expect({ ...r.value, curves: [] }).toEqual({ ...reopened(s), avoidScalp: true, curves: [] });

@@ -79,10 +79,17 @@ describe('every preset session passes the reader and round-trips', () => {
   });
 
   it('spells out the defaults of a minimal session, and keeps them on the next read', () => {
+    // a session made before version 4 has no natural fall (new sessions have it on)
+    const { fall, ...beforeFall } = emptySession('25k');
+    expect(fall).toBe(true);
     const back = expectRoundTrip({ version: 2, curves: [] });
-    expect(back).toEqual(emptySession('25k'));
+    expect(back).toEqual(beforeFall);
     // a minimal version 1 session reads as the same session
-    expect(expectRoundTrip({ version: 1, curves: [] })).toEqual(emptySession('25k'));
+    expect(expectRoundTrip({ version: 1, curves: [] })).toEqual(beforeFall);
+    // and a minimal current one with fall on as a new session
+    expect(expectRoundTrip({ version: SESSION_VERSION, curves: [], fall: true })).toEqual(
+      emptySession('25k'),
+    );
   });
 
   it('writes -0 as 0 (JSON cannot say -0)', () => {
@@ -156,7 +163,7 @@ describe('v1-to-v2: stored scalp-avoidance constraints become the avoidScalp set
     const r = parseSession(v1({ index: [3, 7], target: [0, 0.3, 0, 0.3, 0, 0] }));
     expect(r.ok).toBe(true);
     if (!r.ok) return;
-    expect(r.value.version).toBe(3);
+    expect(r.value.version).toBe(SESSION_VERSION);
     expect(r.value.avoidScalp).toBe(true);
     expect(Object.keys(r.value)).not.toContain('avoid');
     // exactly what the reader gives for the same session written as version 2
@@ -194,17 +201,25 @@ describe('v1-to-v2: stored scalp-avoidance constraints become the avoidScalp set
     const out = step.migrate(input);
     expect(JSON.stringify(input)).toBe(before);
     expect(out).toEqual({ version: 2, curves: [], avoidScalp: true });
+    // the chain goes on to the current version, each later step named
     expect(migrateSession(input)).toMatchObject({
       ok: true,
-      applied: [step.name, SESSION_MIGRATIONS[1].name],
+      value: { version: 4, curves: [], avoidScalp: true },
+      applied: [step.name, SESSION_MIGRATIONS[1].name, SESSION_MIGRATIONS[2].name],
     });
+    const r = migrateSession(input);
+    expect(r.ok && r.applied.map((n) => n.slice(0, 9))).toEqual([
+      'v1-to-v2:',
+      'v2-to-v3:',
+      'v3-to-v4:',
+    ]);
   });
 });
 
 describe('session versions (sessionMigrations.ts)', () => {
-  it('the current version is 3 and the table reaches it without gaps', () => {
-    expect(SESSION_VERSION).toBe(3);
-    expect(SESSION_MIGRATIONS.map((m) => m.from)).toEqual([1, 2]);
+  it('the current version is 4 and the table reaches it without gaps', () => {
+    expect(SESSION_VERSION).toBe(4);
+    expect(SESSION_MIGRATIONS.map((m) => m.from)).toEqual([1, 2, 3]);
     expect(emptySession('25k').version).toBe(SESSION_VERSION);
     const froms = SESSION_MIGRATIONS.map((m) => m.from);
     froms.forEach((f, i) => {
@@ -215,25 +230,25 @@ describe('session versions (sessionMigrations.ts)', () => {
   });
 
   it('refuses a newer version, saying it was made by a newer hairsketch', () => {
-    for (const version of [4, 17])
+    for (const version of [5, 17])
       expect(parseSession({ version, curves: [] })).toEqual({
         ok: false,
-        error: `session.version: must be an integer from 1 to 3; version ${version} was made by a newer hairsketch (update hairsketch to open it)`,
+        error: `session.version: must be an integer from 1 to 4; version ${version} was made by a newer hairsketch (update hairsketch to open it)`,
       });
   });
 
   it('refuses a missing, older or non-integer version', () => {
     expect(parseSession({ curves: [] })).toEqual({
       ok: false,
-      error: 'session.version: missing (must be an integer from 1 to 3)',
+      error: 'session.version: missing (must be an integer from 1 to 4)',
     });
     expect(parseSession({ version: 0, curves: [] })).toMatchObject({
       error:
-        'session.version: must be an integer from 1 to 3; version 0 is older than any hairsketch',
+        'session.version: must be an integer from 1 to 4; version 0 is older than any hairsketch',
     });
     for (const version of [1.5, '2', null, true, Number.NaN])
       expect(parseSession({ version, curves: [] })).toMatchObject({
-        error: 'session.version: must be an integer from 1 to 3',
+        error: 'session.version: must be an integer from 1 to 4',
       });
   });
 

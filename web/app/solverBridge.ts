@@ -5,7 +5,7 @@
 import type { Editor, EditorChange } from '../editor/editor';
 import { packCurves, packHairOptions } from '../model/curveSet';
 import { gridForSession, sameGrid } from '../model/grid';
-import type { SessionState, Viewpoint } from '../model/session';
+import { newCurveExtends, type SessionState, type Viewpoint } from '../model/session';
 import type { Vec3 } from '../model/vec3';
 import type { GridSpec, ScalpMesh, SolverErrorKind, SolverName } from '../solver/protocol';
 import { type SolveResult, SolverClient } from '../solver/solverClient';
@@ -155,7 +155,13 @@ export class SolverBridge {
     if (points.length < 3) return;
     this.previewAsked = true;
     const s = this.editor.session;
-    const draft = { id: '~draft', type: 'stream' as const, points, extend: true, viewpoint };
+    const draft = {
+      id: '~draft',
+      type: 'stream' as const,
+      points,
+      extend: newCurveExtends(s),
+      viewpoint,
+    };
     const cap = this.lightCap(s);
     const curves = [...s.curves, draft];
     this.client.request(
@@ -202,6 +208,7 @@ export class SolverBridge {
     if (
       p.curves === s.curves &&
       p.avoidScalp === s.avoidScalp &&
+      p.fall === s.fall &&
       p.detail === s.detail &&
       p.growth === s.growth
     )

@@ -50,6 +50,18 @@ export interface HairsketchTestApi {
     view: 'front' | 'back' | 'left' | 'right' | 'top',
     radius?: number,
   ): { points: number; bare: number; fraction: number; bareAt: [number, number][] };
+  /** scalpCoverage of any region of the head: head points within θ and φ ranges (degrees; φ = 0
+   *  at the front, 90 at the head's left), the scalp only or any surface (the forehead…). */
+  coverage(
+    view: 'front' | 'back' | 'left' | 'right' | 'top',
+    opts: {
+      theta: [number, number];
+      phi: [number, number];
+      surface?: 'scalp' | 'any';
+      radius?: number;
+      layers?: number;
+    },
+  ): { points: number; bare: number; fraction: number; bareAt: [number, number][] };
   /** The Quality setting ('auto' | 'fast' | 'high'), the drawing path active now and the
    *  unmasked WebGL renderer it was chosen from. */
   quality(): { setting: string; active: 'fast' | 'high'; renderer: string };
@@ -185,6 +197,14 @@ export function installTestApi(app: TestApiParts): void {
     },
     scalpCoverage: (view, radius) =>
       scalpCoverage(head(), hair.strands, { dir: VIEW_DIRECTIONS[view], radius }),
+    coverage: (view, o) =>
+      scalpCoverage(head(), hair.strands, {
+        dir: VIEW_DIRECTIONS[view],
+        radius: o.radius,
+        layers: o.layers,
+        region: { theta: o.theta, phi: o.phi },
+        surface: o.surface,
+      }),
     frameMs(runs = 5) {
       const t: number[] = [];
       for (let i = 0; i < Math.max(1, runs); i++) t.push(viewer.measureFrame());

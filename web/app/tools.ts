@@ -5,7 +5,7 @@ import { curveSurface } from '../editor/curveSurface';
 import type { Editor, ToolName } from '../editor/editor';
 import type { Head } from '../head/head';
 import type { ScalpPaintStroke } from '../head/scalpPaint';
-import { DEFAULT_TIGHTNESS, defaultParams } from '../model/session';
+import { DEFAULT_TIGHTNESS, defaultParams, newCurveExtends } from '../model/session';
 import type { Vec3 } from '../model/vec3';
 import type { StrokeSample } from '../tools/depthRule';
 import { DividingCurveTool } from '../tools/dividingCurveTool';
@@ -72,7 +72,9 @@ export function createTools(d: ToolDeps): ToolSet {
       headDistance: hit ? hit.distance : null,
     };
   };
-  const showDraft = (pts: readonly Vec3[] | null) => viewer.setDraft(pts);
+  // with natural fall a new curve's hair ends where the stroke ends: the draft marks it
+  const showDraft = (pts: readonly Vec3[] | null) =>
+    viewer.setDraft(pts, !newCurveExtends(editor.session));
   const eye = () => viewer.eye();
   const forward = () => viewer.viewForward();
 
@@ -89,7 +91,7 @@ export function createTools(d: ToolDeps): ToolSet {
         curve: {
           type: 'ponytail',
           points: p.spine,
-          extend: true,
+          extend: newCurveExtends(editor.session),
           viewpoint: camera(),
           crossSection: p.crossSection,
           profiles: p.profiles,
@@ -147,7 +149,12 @@ export function createTools(d: ToolDeps): ToolSet {
         d.bridge.preview(null, camera());
         editor.run({
           kind: 'addCurve',
-          curve: { type: 'stream', points, extend: true, viewpoint: camera() },
+          curve: {
+            type: 'stream',
+            points,
+            extend: newCurveExtends(editor.session),
+            viewpoint: camera(),
+          },
           what: `stream curve {id} (${points.length - 1} segments)`,
           mirror: editor.mirror,
         });

@@ -68,6 +68,7 @@ export function growSessionHair(
   const curves = packCurves(session.curves);
   const options = packHairOptions(session, session.curves);
   engine.setDetail?.(options.detail);
+  engine.setFall?.(options.fall);
   engine.setCurves(curves);
   let p = engine.iterate(SLICE_ITERATIONS, tolerance);
   let fraction = 0; // reported fractions never fall back (the error estimate is not monotonic)

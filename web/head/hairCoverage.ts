@@ -18,6 +18,11 @@ export interface CoverageOptions {
   stepDeg?: number;
   /** Different strands that must pass in front of a point to hide it (default 3). */
   layers?: number;
+  /** Only the head points in these ranges of θ (from the top) and φ (0 at the front, 90 at the
+   *  head's left; a range may wrap past 360), degrees (default: everywhere). */
+  region?: { theta: [number, number]; phi: [number, number] };
+  /** Which head points count: the scalp (default) or any (the forehead, cheeks, ears). */
+  surface?: 'scalp' | 'any';
 }
 
 export interface Coverage {
@@ -70,10 +75,18 @@ export function scalpCoverage(
       }
   let points = 0;
   const bareAt: [number, number][] = [];
+  const region = opts.region;
+  const inPhi = (phi: number) => {
+    if (!region) return true;
+    const [a, b] = region.phi;
+    const w = (x: number) => ((x % 360) + 360) % 360;
+    return w(phi - a) <= w(b - a);
+  };
   for (let theta = step / 2; theta < 180; theta += step)
     for (let phi = 0; phi < 360; phi += step) {
+      if (region && (theta < region.theta[0] || theta > region.theta[1] || !inPhi(phi))) continue;
       const hit = head.scalpPoint(theta, phi);
-      if (!hit?.scalp) continue;
+      if (!hit || (!hit.scalp && opts.surface !== 'any')) continue;
       const p = hit.point;
       // seen from the direction: the first head hit of the ray through p is p itself
       const far = 20;

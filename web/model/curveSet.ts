@@ -106,7 +106,7 @@ export function contentKey(...arrays: ArrayBufferView[]): string {
  *  perhaps with a stroke being drawn after them): group 0 is the session's detail, then one
  *  group per curve with a detail of its own. */
 export function packHairOptions(
-  s: Pick<SessionState, 'avoidScalp' | 'detail'>,
+  s: Pick<SessionState, 'avoidScalp' | 'detail' | 'fall'>,
   curves: readonly StyleCurve[],
 ): HairOptions {
   const own = curves.filter((c) => c.detail !== undefined);
@@ -120,5 +120,5 @@ export function packHairOptions(
     packDetailGroup(c.detail, groups, DETAIL_GROUP_STRIDE * g);
     curveGroup[i] = g;
   });
-  return { avoidScalp: !!s.avoidScalp, detail: { groups, curveGroup } };
+  return { avoidScalp: !!s.avoidScalp, fall: !!s.fall, detail: { groups, curveGroup } };
 }

@@ -34,7 +34,17 @@ function headPoint(ctx: PresetContext, thetaDeg: number, phiDeg: number): Vec3 |
   return ctx.head.scalpPoint(thetaDeg, phiDeg)?.point ?? null;
 }
 
-export const PRESET_NAMES = ['default', 'empty', 'fig6', 'fig7', 'fig8', 'fig1', 'curly'] as const;
+export const PRESET_NAMES = [
+  'default',
+  'empty',
+  'fig6',
+  'fig7',
+  'fig8',
+  'fig1',
+  'curly',
+  'bob',
+  'long',
+] as const;
 export type PresetName = (typeof PRESET_NAMES)[number];
 
 export function isPresetName(s: string): s is PresetName {
@@ -46,6 +56,7 @@ interface SweepSpec {
   phi: [number, number]; // φ from → to, degrees
   lift: number; // height above the head at the end of the sweep, world units
   fall: number; // length of the free fall below the sweep, world units
+  toY?: number; // or: fall until this height (world y), where the hair should end
 }
 
 // Shoulder-length hair swept back from the face and falling behind the ears.
@@ -78,9 +89,10 @@ function sweepCurve(ctx: PresetContext, spec: SweepSpec): Vec3[] | null {
   // Free fall: straight down, easing slightly outward.
   const last = dense[dense.length - 1];
   const out = sphericalDirection(90, spec.phi[1]);
-  for (let i = 1; i <= 40; i++) {
+  const fall = spec.toY === undefined ? spec.fall : Math.max(0, last[1] - spec.toY);
+  for (let i = 1; i <= 40 && fall > 0; i++) {
     const s = i / 40;
-    dense.push(add(last, add(scale([0, -1, 0], spec.fall * s), scale(out, 0.12 * s * s))));
+    dense.push(add(last, add(scale([0, -1, 0], fall * s), scale(out, 0.12 * s * s))));
   }
   return dense;
 }
@@ -298,6 +310,51 @@ const FIG1_SWEEPS: SweepSpec[] = [
   { theta: [112, 64], phi: [179, 179.5], lift: 0.05, fall: 0 },
 ];
 
+// bob: a chin-length bob with a straight fringe. The fringe strokes run from the top of the head
+// over the forehead, a centimetre above it, and end at the eyebrows (y = 0.06); the sides and the
+// back fall to the chin (y = -1.25), the back a little lower.
+const BOB_SWEEPS: SweepSpec[] = [
+  ...[-40, -27, -14, 0, 14, 27, 40].map(
+    (phi): SweepSpec => ({ theta: [24, 84], phi: [phi * 0.6, phi], lift: 0.1, fall: 0, toY: 0.06 }),
+  ),
+  ...[55, 80, 105, -55, -80, -105].map(
+    (phi): SweepSpec => ({
+      theta: [18, 92],
+      phi: [phi * 0.5, phi],
+      lift: 0.14,
+      fall: 0,
+      toY: -1.25,
+    }),
+  ),
+  ...[130, 155, 176, -130, -155, -176].map(
+    (phi): SweepSpec => ({ theta: [12, 104], phi: [phi, phi], lift: 0.14, fall: 0, toY: -1.35 }),
+  ),
+];
+
+// long: hair to the middle of the back with a side parting on the head's left (φ ≈ 30°): the
+// hair is combed away from the parting on both sides, a side-swept front falls past the right
+// of the face, and everything falls to y = -4.1 (about 50 cm below the top of the head).
+const LONG_PARTING: [number, number][] = [
+  [52, 30],
+  [38, 32],
+  [24, 36],
+  [12, 45],
+];
+const LONG_END = -4.1;
+const LONG_MAX = 6.5; // world units: 65 cm
+const LONG_SWEEPS: SweepSpec[] = [
+  // toward the left side, away from the parting
+  { theta: [44, 85], phi: [40, 90], lift: 0.1, fall: 0, toY: LONG_END },
+  { theta: [28, 95], phi: [48, 125], lift: 0.12, fall: 0, toY: LONG_END },
+  // across the top to the right side, past the right of the face
+  { theta: [50, 78], phi: [22, -55], lift: 0.12, fall: 0, toY: LONG_END + 0.3 },
+  { theta: [34, 90], phi: [24, -95], lift: 0.12, fall: 0, toY: LONG_END },
+  { theta: [22, 100], phi: [28, -135], lift: 0.12, fall: 0, toY: LONG_END },
+  // the back
+  { theta: [12, 106], phi: [160, 172], lift: 0.12, fall: 0, toY: LONG_END },
+  { theta: [12, 106], phi: [-160, -172], lift: 0.12, fall: 0, toY: LONG_END },
+];
+
 export function presetCurves(name: PresetName, ctx: PresetContext): StyleCurve[] {
   if (name === 'empty') return [];
   const curves: StyleCurve[] = [];
@@ -329,6 +386,13 @@ export function presetCurves(name: PresetName, ctx: PresetContext): StyleCurve[]
       for (const path of FIG1_PARTINGS) push(dividingFrom(ctx, path, nextId()));
       sweeps(FIG1_SWEEPS);
       break;
+    case 'bob':
+      sweeps(BOB_SWEEPS);
+      break;
+    case 'long':
+      push(dividingFrom(ctx, LONG_PARTING, nextId()));
+      sweeps(LONG_SWEEPS);
+      break;
   }
   return curves;
 }
@@ -341,8 +405,22 @@ export const CURLY_DETAIL: HairDetail = {
   lengthJitter: 0.15,
 };
 
+/** The paper's figures keep the paper's method (no natural fall), so they show what its figures
+ *  show; the other presets are sketched as a user of today's app would, with it. */
+const PAPER_FIGURES: readonly PresetName[] = ['fig6', 'fig7', 'fig8', 'fig1'];
+
 export function applyPreset(s: SessionState, name: PresetName, ctx: PresetContext): SessionState {
-  const { detail: _, ...rest } = s;
+  const { detail: _, fall: __, ...rest } = s;
   const detail = name === 'curly' ? { detail: CURLY_DETAIL } : {};
-  return quantizeSession({ ...rest, ...detail, curves: presetCurves(name, ctx) });
+  const fall = !PAPER_FIGURES.includes(name);
+  // sketched curves end where the hair should end: with fall that is what "extend" off means
+  const curves = presetCurves(name, ctx).map((c) =>
+    c.type === 'dividing' ? c : { ...c, extend: !fall },
+  );
+  // long hair needs a longer maximum than the default's
+  const growth =
+    name === 'long'
+      ? { ...rest.growth, maxLength: Math.max(rest.growth.maxLength, LONG_MAX) }
+      : rest.growth;
+  return quantizeSession({ ...rest, ...detail, ...(fall ? { fall } : {}), growth, curves });
 }

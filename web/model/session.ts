@@ -114,7 +114,7 @@ export interface ScalpStroke {
 }
 
 export interface SessionState {
-  version: 3;
+  version: 4;
   /** The built-in mannequin head, or a user's head mesh. */
   head: 'builtin' | HeadRef;
   grid: GridPreset;
@@ -124,6 +124,9 @@ export interface SessionState {
   /** "Avoid scalp" (S4.7) is on: the solver derives the avoidance constraints from the curves'
    *  field each time it solves them (absent = off). */
   avoidScalp?: boolean;
+  /** Natural fall (protocol.ts HairOptions.fall): on in every new session; absent = off, the
+   *  hair of sessions made before it (version 3 and older) exactly. */
+  fall?: boolean;
   /** Curl, clump, frizz and length jitter of every strand (absent = none). */
   detail?: HairDetail;
   /** Scalp brush strokes applied in order over the head's default scalp (absent = none). */
@@ -137,6 +140,12 @@ export function defaultParams<K extends CurveKindName>(k: K): CurveParamValues<K
   const out: Record<string, number> = {};
   for (const p of CURVE_PARAMS[k]) out[p.name] = p.default;
   return out as CurveParamValues<K>;
+}
+
+/** "Extend past the end" of a new stream curve or ponytail: with natural fall, off (the hair ends
+ *  where the curve ends; on lets it grow on); without it, the paper's fading extension (on). */
+export function newCurveExtends(s: Pick<SessionState, 'fall'>): boolean {
+  return !s.fall;
 }
 
 /** A new ponytail's tightness: the default of protocol.ts CURVE_PARAMS. */
@@ -158,7 +167,15 @@ export function emptySession(
   grid: GridPreset,
   growth: GrowthParams = DEFAULT_GROWTH,
 ): SessionState {
-  return { version: 3, head: 'builtin', grid, curves: [], growth, hairColor: '#5a3825' };
+  return {
+    version: 4,
+    head: 'builtin',
+    grid,
+    curves: [],
+    growth,
+    hairColor: '#5a3825',
+    fall: true,
+  };
 }
 
 export function addCurve(s: SessionState, c: StyleCurve): SessionState {

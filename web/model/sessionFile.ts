@@ -774,6 +774,7 @@ const SESSION_FIELDS = [
   'growth',
   'hairColor',
   'avoidScalp',
+  'fall',
   'detail',
   'scalpPaint',
   'symmetry',
@@ -817,6 +818,7 @@ function session(o: PlainRecord): SessionState {
   if (typeof hairColor !== 'string' || !/^#[0-9a-fA-F]{6}$/.test(hairColor))
     fail('session.hairColor', 'must be a colour like #5a3825');
   const avoidScalp = o.avoidScalp === undefined ? false : bool(o.avoidScalp, 'session.avoidScalp');
+  const fall = o.fall === undefined ? false : bool(o.fall, 'session.fall');
   return {
     version: SESSION_VERSION,
     head: h,
@@ -825,6 +827,7 @@ function session(o: PlainRecord): SessionState {
     growth: g,
     hairColor,
     ...(avoidScalp ? { avoidScalp } : {}),
+    ...(fall ? { fall } : {}),
     ...detail(o.detail, 'session.detail'),
     ...scalpPaint(o.scalpPaint, 'session.scalpPaint'),
     ...symmetry(o.symmetry, 'session.symmetry'),

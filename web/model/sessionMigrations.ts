@@ -16,7 +16,7 @@ export interface PlainRecord {
 }
 
 /** The session shape this build writes and reads. */
-export const SESSION_VERSION = 3 as const;
+export const SESSION_VERSION = 4 as const;
 
 /** One step: reads a session of version `from`, returns it as version `from + 1`. Pure: it must
  *  not modify its argument (the reader's copy may be shared with the caller's error path). */
@@ -60,6 +60,19 @@ export const SESSION_MIGRATIONS: readonly SessionMigration[] = [
       for (const [k, v] of Object.entries(s)) out[k] = v;
       if (s.head === undefined) out.head = 'builtin';
       out.version = 3;
+      return out;
+    },
+  },
+  {
+    name: 'v3-to-v4: natural fall is a setting; sessions made before it stay without it',
+    from: 3,
+    migrate(s) {
+      // Version 4 adds `fall` (hair no curve governs hangs, a curve's hair ends where the curve
+      // ends, curves may take hair over the face), on in new sessions. A version 3 session has
+      // no `fall`: it keeps the paper's method and so exactly the hair it had.
+      const out: PlainRecord = Object.create(null);
+      for (const [k, v] of Object.entries(s)) out[k] = v;
+      out.version = 4;
       return out;
     },
   },

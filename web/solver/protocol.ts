@@ -152,6 +152,10 @@ export interface HairOptions {
    *  the scalp whose field points inwards is turned along the surface (constraints of magnitude
    *  min(0.3, |v|)), and the field is solved again with them. Full solves only. */
   avoidScalp: boolean;
+  /** Natural fall (solver-cpp/src/hair_fall.hpp): hair no curve governs hangs from the scalp (a
+   *  weak prior in the field energy), a curve's hair ends where the curve ends, and curves may
+   *  take hair over the face. Off: the paper's method exactly (sessions made before it). */
+  fall: boolean;
   detail: DetailArrays;
 }
 

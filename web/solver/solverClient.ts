@@ -178,7 +178,7 @@ export class SolverClient {
       curves.extraIndex,
       curves.extraTarget,
       new Float64Array(Object.values(growth)),
-      new Uint8Array([options.avoidScalp ? 1 : 0]),
+      new Uint8Array([options.avoidScalp ? 1 : 0, options.fall ? 1 : 0]),
       options.detail.groups,
       options.detail.curveGroup,
     )}|head ${this.headId}:${this.maskKey}`;

@@ -524,6 +524,10 @@ class WasmEngine implements SolverEngine {
     this.mod._hs_engine_defer_preconditioner_update(this.h());
   }
 
+  setFall(on: boolean): void {
+    check(this.mod, this.mod._hs_engine_set_fall(this.h(), on ? 1 : 0));
+  }
+
   grow(g: GrowthParams): StrandArrays {
     const h = this.h();
     const m = this.mod;

@@ -228,6 +228,7 @@ export class WorkerLogic {
     const t0 = o.now();
     this.post({ type: 'progress', id: job.id, phase: 'constraints', fraction: 0 });
     this.engine.setDetail?.(job.options.detail);
+    this.engine.setFall?.(job.options.fall);
     // a full solve's first look runs a few warm iterations and forgetWarmStart then rebuilds the
     // preconditioner from the penalties alone: its incremental update would be thrown away
     if (job.mode !== 'preview') this.engine.deferPreconditionerUpdate?.();

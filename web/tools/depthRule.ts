@@ -1,6 +1,11 @@
 // SPEC S4.2: lifting a screen stroke onto the head. The first point takes the depth of its scalp
 // hit; each next point takes the scalp depth while over the scalp, else the depth of the last
-// scalp point. "Depth" is the distance along the camera's viewing direction. A point that depth
+// scalp point. "Depth" is the distance along the camera's viewing direction made level (its
+// horizontal part): a point off the head lies on the vertical plane through the last scalp point
+// that faces the camera, so a lock or a ponytail drawn hanging from one view hangs plumb in the
+// depth that view cannot show (from a camera looking a little down, the plane square to the view
+// would lean it towards or away from the camera). Looking nearly straight down or up there is no
+// level direction to speak of, and depth is along the view itself. A point that depth
 // would put inside the head (a stroke passing over the face, the ears, the neck) is brought
 // forward along its ray to STROKE_MARGIN in front of the head's surface instead, so style
 // curves never run inside the head.
@@ -16,6 +21,10 @@ export interface StrokeSample {
 /** World units (0.06 = 6 mm) kept along the ray in front of a head hit by a lifted point. */
 export const STROKE_MARGIN = 0.06;
 
+/** Below this horizontal part of the viewing direction (about 72° from level), depth is taken
+ *  along the view itself. */
+export const LEVEL_MIN = 0.3;
+
 export type LiftResult = { ok: true; points: Vec3[] } | { ok: false; reason: 'not-on-scalp' };
 
 /** `forward` is the unit viewing direction of the camera. */
@@ -23,15 +32,18 @@ export function liftStroke(samples: readonly StrokeSample[], eye: Vec3, forward:
   if (samples.length === 0 || samples[0].scalpHit === null)
     return { ok: false, reason: 'not-on-scalp' };
   const points: Vec3[] = [];
+  const level = Math.hypot(forward[0], forward[2]);
+  const depthAxis: Vec3 =
+    level >= LEVEL_MIN ? [forward[0] / level, 0, forward[2] / level] : forward;
   let depth = 0;
   for (const s of samples) {
     if (s.scalpHit) {
-      depth = dot(sub(s.scalpHit, eye), forward);
+      depth = dot(sub(s.scalpHit, eye), depthAxis);
       points.push(s.scalpHit);
     } else {
-      const along = dot(s.direction, forward);
-      if (along <= 1e-9) continue; // a ray parallel to the image plane has no point at that depth
-      let t = (depth - dot(sub(s.origin, eye), forward)) / along;
+      const along = dot(s.direction, depthAxis);
+      if (along <= 1e-9) continue; // a ray parallel to the depth plane has no point on it
+      let t = (depth - dot(sub(s.origin, eye), depthAxis)) / along;
       if (s.headDistance != null && t > s.headDistance - STROKE_MARGIN)
         t = Math.max(0, s.headDistance - STROKE_MARGIN);
       points.push(add(s.origin, scale(s.direction, t)));

@@ -641,15 +641,20 @@ export class Viewer {
     this.requestRender();
   }
 
-  /** The stroke being drawn (null: none), in the draft colour, over the curves. */
-  setDraft(points: readonly Vec3[] | null): void {
+  /** The stroke being drawn (null: none), in the draft colour, over the curves. With `endsHair`
+   *  a bar across its last point marks where the hair it governs will end. */
+  setDraft(points: readonly Vec3[] | null, endsHair = false): void {
     if (this.draft) {
       this.scene.remove(this.draft);
       disposeObject(this.draft);
       this.draft = null;
     }
     if (points && points.length >= 2) {
-      this.draft = overlayPolyline(points, OVERLAY_RGB.draft, OVERLAY_ORDER.draft);
+      const group = new THREE.Group();
+      group.add(overlayPolyline(points, OVERLAY_RGB.draft, OVERLAY_ORDER.draft));
+      const bar = endsHair ? endBar(points, this.viewForward()) : null;
+      if (bar) group.add(overlayPolyline(bar, OVERLAY_RGB.draft, OVERLAY_ORDER.draft));
+      this.draft = group;
       this.scene.add(this.draft);
     }
     this.requestRender();
@@ -811,4 +816,22 @@ function disposeObject(o: THREE.Object3D): void {
       g.dispose();
     }
   });
+}
+
+/** Half-length (world units: 1.5 cm) of the bar that marks where a stroke's hair ends. */
+const END_BAR_HALF = 0.15;
+
+/** A short bar across the stroke's last point, square to its last segment and to the view
+ *  (null when they are parallel). */
+export function endBar(points: readonly Vec3[], forward: Vec3): Vec3[] | null {
+  const a = points[points.length - 2];
+  const b = points[points.length - 1];
+  const t = new THREE.Vector3(b[0] - a[0], b[1] - a[1], b[2] - a[2]);
+  const across = t.cross(new THREE.Vector3(...forward));
+  if (!(across.length() > 1e-9)) return null;
+  across.setLength(END_BAR_HALF);
+  return [
+    [b[0] - across.x, b[1] - across.y, b[2] - across.z],
+    [b[0] + across.x, b[1] + across.y, b[2] + across.z],
+  ];
 }

@@ -1,0 +1,255 @@
+#include "hair_fall.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace hairsketch {
+
+namespace {
+
+double smoothstep(double a, double b, double x) {
+  const double t = std::clamp((x - a) / (b - a), 0.0, 1.0);
+  return t * t * (3 - 2 * t);
+}
+
+// Distance of every grid point to the head, approximately: the head's distance where it is
+// exact (within its band; 0 inside the head), carried outward by a two-pass 26-neighbour chamfer
+// transform (overestimates a straight-line distance by at most ~8 %).
+std::vector<float> headDistanceOnGrid(const Grid& g, const HeadDistance& head) {
+  const size_t n = size_t(g.size());
+  const float inf = std::numeric_limits<float>::infinity();
+  std::vector<float> d(n, inf);
+  constexpr float kExactBand = 0.08f;  // inside the head distance grid's exact band (0.09)
+  for (int k = 0; k < g.nz; ++k)
+    for (int j = 0; j < g.ny; ++j)
+      for (int i = 0; i < g.nx; ++i) {
+        const Eigen::Vector3d p = g.position(i, j, k);
+        const float h = head.distance(float(p.x()), float(p.y()), float(p.z()));
+        if (h < kExactBand) d[size_t(g.index(i, j, k))] = std::max(h, 0.f);
+      }
+  const float s = float(g.step);
+  const float w[4] = {0, s, s * std::sqrt(2.f), s * std::sqrt(3.f)};
+  auto pass = [&](int dir) {
+    const int k0 = dir > 0 ? 0 : g.nz - 1, k1 = dir > 0 ? g.nz : -1;
+    const int j0 = dir > 0 ? 0 : g.ny - 1, j1 = dir > 0 ? g.ny : -1;
+    const int i0 = dir > 0 ? 0 : g.nx - 1, i1 = dir > 0 ? g.nx : -1;
+    for (int k = k0; k != k1; k += dir)
+      for (int j = j0; j != j1; j += dir)
+        for (int i = i0; i != i1; i += dir) {
+          float& c = d[size_t(g.index(i, j, k))];
+          // the 13 neighbours already visited in this pass's order
+          for (int dk = -1; dk <= 0; ++dk)
+            for (int dj = -1; dj <= 1; ++dj)
+              for (int di = -1; di <= 1; ++di) {
+                if (dk == 0 && (dj > 0 || (dj == 0 && di >= 0))) continue;
+                const int a = i + dir * di, b = j + dir * dj, e = k + dir * dk;
+                if (!g.contains(a, b, e)) continue;
+                const float v = d[size_t(g.index(a, b, e))] + w[std::abs(di) + std::abs(dj) - dk];
+                if (v < c) c = v;
+              }
+        }
+  };
+  pass(1);
+  pass(-1);
+  return d;
+}
+
+// The remaining length near a curve whose hair grows on: past any maximum length.
+constexpr double kGrowsOnRemaining = 100.0;
+
+}  // namespace
+
+Field fallDirections(const Grid& g, const HeadDistance& head, const Eigen::Vector3d& centre) {
+  Field G(g.size(), 3);
+  const Eigen::Vector3d down(0, -1, 0);
+  const std::vector<float> dist = headDistanceOnGrid(g, head);
+  for (int k = 0; k < g.nz; ++k)
+    for (int j = 0; j < g.ny; ++j)
+      for (int i = 0; i < g.nx; ++i) {
+        const int p = g.index(i, j, k);
+        const Eigen::Vector3d x = g.position(i, j, k);
+        const float xf[3] = {float(x.x()), float(x.y()), float(x.z())};
+        float o[3];
+        head.outward(xf, o);
+        const Eigen::Vector3d nrm(o[0], o[1], o[2]);
+        Eigen::Vector3d h(x.x() - centre.x(), 0, x.z() - centre.z());
+        const double hn = h.norm();
+        h = hn > 1e-9 ? Eigen::Vector3d(h / hn) : Eigen::Vector3d::Zero();
+        const Eigen::Vector3d c = down + kFallSpread * h;
+        const Eigen::Vector3d t = c - c.dot(nrm) * nrm;
+        Eigen::Vector3d combed =
+            t.norm() > 1e-3 ? Eigen::Vector3d(t.normalized() + kFallLift * nrm) : nrm;
+        combed.normalize();
+        // straight down away from the head, but only where down does not lead back into it
+        // (below its widest part; above, combed hair runs over the head)
+        const double away =
+            std::isfinite(dist[size_t(p)]) ? smoothstep(0, kFallBlend, dist[size_t(p)]) : 1.0;
+        const double a = away * smoothstep(-0.3, 0.3, -nrm.y());
+        Eigen::Vector3d v = (1 - a) * combed + a * down;
+        const double vn = v.norm();
+        v = vn > 1e-9 ? Eigen::Vector3d(v / vn) : down;
+        G.row(p) = v.transpose();
+      }
+  return G;
+}
+
+Grid reachGrid(const Grid& g) {
+  Grid r;
+  r.step = std::max(g.step, kReachCell);
+  r.origin = g.origin;
+  const Eigen::Vector3d ext = g.maxCorner() - g.origin;
+  r.nx = std::max(2, int(std::ceil(ext.x() / r.step - 1e-9)) + 1);
+  r.ny = std::max(2, int(std::ceil(ext.y() / r.step - 1e-9)) + 1);
+  r.nz = std::max(2, int(std::ceil(ext.z() / r.step - 1e-9)) + 1);
+  return r;
+}
+
+void curveFootprint(const Grid& g, const ReachCurve& c, CurveFootprint& out) {
+  out = CurveFootprint();
+  out.growsOn = c.growsOn;
+  if (c.count < 2 || !c.points) return;
+  const double* q = c.points;
+  std::vector<double> s(c.count, 0);
+  for (size_t k = 1; k < c.count; ++k)
+    s[k] = s[k - 1] + std::hypot(q[3 * k] - q[3 * k - 3], q[3 * k + 1] - q[3 * k - 2],
+                                 q[3 * k + 2] - q[3 * k - 1]);
+  const double L = s.back();
+  if (!(L > 0)) return;
+  size_t lastSeg = c.count - 2;
+  while (lastSeg > 0 && !(s[lastSeg + 1] > s[lastSeg])) --lastSeg;
+  const double inf = std::numeric_limits<double>::infinity();
+  // per lattice point of the curve's neighbourhood: its slot in the footprint (-1: none yet)
+  std::vector<int> slot(size_t(g.size()), -1);
+  std::vector<double> d2s, face2;
+  const double R2 = kReachFar * kReachFar;
+  for (size_t k = 0; k + 1 < c.count; ++k) {
+    const double ax = q[3 * k], ay = q[3 * k + 1], az = q[3 * k + 2];
+    const double ex = q[3 * k + 3] - ax, ey = q[3 * k + 4] - ay, ez = q[3 * k + 5] - az;
+    const double len2 = ex * ex + ey * ey + ez * ez;
+    if (!(len2 > 0)) continue;
+    const double len = std::sqrt(len2);
+    auto lo = [&](double a, double b, double o) {
+      return std::max(0, int(std::ceil((std::min(a, b) - kReachFar - o) / g.step)));
+    };
+    auto hi = [&](double a, double b, double o, int n) {
+      return std::min(n - 1, int(std::floor((std::max(a, b) + kReachFar - o) / g.step)));
+    };
+    const int i0 = lo(ax, ax + ex, g.origin.x()), i1 = hi(ax, ax + ex, g.origin.x(), g.nx);
+    const int j0 = lo(ay, ay + ey, g.origin.y()), j1 = hi(ay, ay + ey, g.origin.y(), g.ny);
+    const int k0 = lo(az, az + ez, g.origin.z()), k1 = hi(az, az + ez, g.origin.z(), g.nz);
+    const bool last = k == lastSeg;
+    const bool offScalp = c.offScalp && (c.offScalp[k] || c.offScalp[k + 1]);
+    for (int kk = k0; kk <= k1; ++kk) {
+      const double rz = g.origin.z() + g.step * kk - az;
+      for (int jj = j0; jj <= j1; ++jj) {
+        const double ry = g.origin.y() + g.step * jj - ay;
+        for (int ii = i0; ii <= i1; ++ii) {
+          const double rx = g.origin.x() + g.step * ii - ax;
+          const double u = (rx * ex + ry * ey + rz * ez) / len2;
+          const double uc = std::clamp(u, 0.0, 1.0);
+          const double dx = rx - uc * ex, dy = ry - uc * ey, dz = rz - uc * ez;
+          const double d2 = dx * dx + dy * dy + dz * dz;
+          if (d2 > R2) continue;
+          const size_t p = size_t(g.index(ii, jj, kk));
+          int& at = slot[p];
+          if (at < 0) {
+            at = int(out.index.size());
+            out.index.push_back(int(p));
+            out.remaining.push_back(0.f);
+            out.faceTangent.insert(out.faceTangent.end(), {0.f, 0.f, 0.f});
+            d2s.push_back(inf);
+            face2.push_back(inf);
+          }
+          const size_t e = size_t(at);
+          if (offScalp && d2 < face2[e]) {
+            face2[e] = d2;
+            out.faceTangent[3 * e] = float(ex / len);
+            out.faceTangent[3 * e + 1] = float(ey / len);
+            out.faceTangent[3 * e + 2] = float(ez / len);
+          }
+          if (!(d2 < d2s[e])) continue;
+          d2s[e] = d2;
+          double r = L - (s[k] + uc * len);
+          if (last && u > 1) r -= (u - 1) * len;  // past the end
+          out.remaining[e] = float(r);
+        }
+      }
+    }
+  }
+  out.distance.resize(d2s.size());
+  out.faceDistance.resize(d2s.size());
+  for (size_t e = 0; e < d2s.size(); ++e) {
+    out.distance[e] = float(std::sqrt(d2s[e]));
+    out.faceDistance[e] = float(std::sqrt(face2[e]));
+  }
+}
+
+void combineReach(const Grid& g, const std::vector<const CurveFootprint*>& curves,
+                  CurveReach& out) {
+  const size_t n = size_t(g.size());
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<double> sumW(n, 0), sumWR(n, 0), dmin(n, inf), dface(n, inf);
+  out.grid = g;
+  out.faceTangent.assign(3 * n, 0.f);
+  const double twoSigma2 = 2 * kReachSigma * kReachSigma;
+  for (const CurveFootprint* c : curves)
+    for (size_t e = 0; e < c->index.size(); ++e) {
+      const size_t p = size_t(c->index[e]);
+      const double d = c->distance[e];
+      const double w = std::exp(-d * d / twoSigma2);
+      sumW[p] += w;
+      sumWR[p] += w * (c->growsOn ? kGrowsOnRemaining : double(c->remaining[e]));
+      dmin[p] = std::min(dmin[p], d);
+      if (c->faceDistance[e] < dface[p]) {
+        dface[p] = c->faceDistance[e];
+        std::copy(&c->faceTangent[3 * e], &c->faceTangent[3 * e] + 3, &out.faceTangent[3 * p]);
+      }
+    }
+  out.remaining.assign(n, 0.f);
+  out.far.assign(n, 1.f);
+  out.overFace.assign(n, 0.f);
+  for (size_t p = 0; p < n; ++p) {
+    if (!(sumW[p] > 0)) continue;
+    out.overFace[p] = float(1 - smoothstep(kFaceNear, kFaceFar, dface[p]));
+    out.remaining[p] = float(sumWR[p] / sumW[p]);
+    out.far[p] = float(smoothstep(kReachNear, kReachFar, dmin[p]));
+  }
+}
+
+void buildCurveReach(const Grid& solverGrid, const std::vector<ReachCurve>& curves,
+                     CurveReach& out) {
+  const Grid g = reachGrid(solverGrid);
+  std::vector<CurveFootprint> fp(curves.size());
+  std::vector<const CurveFootprint*> ptr;
+  for (size_t c = 0; c < curves.size(); ++c) {
+    curveFootprint(g, curves[c], fp[c]);
+    ptr.push_back(&fp[c]);
+  }
+  combineReach(g, ptr, out);
+}
+
+float interpolateScalar(const Grid& g, const float* f, float x, float y, float z, int stride,
+                        int offset) {
+  const float inv = float(1.0 / g.step);
+  float u = (x - float(g.origin.x())) * inv, v = (y - float(g.origin.y())) * inv,
+        w = (z - float(g.origin.z())) * inv;
+  u = std::clamp(u, 0.f, float(g.nx - 1));
+  v = std::clamp(v, 0.f, float(g.ny - 1));
+  w = std::clamp(w, 0.f, float(g.nz - 1));
+  const int i = std::min(int(u), g.nx - 2), j = std::min(int(v), g.ny - 2),
+            k = std::min(int(w), g.nz - 2);
+  const float a = u - float(i), b = v - float(j), c = w - float(k);
+  const size_t sx = size_t(stride), sy = sx * size_t(g.nx), sz = sy * size_t(g.ny);
+  const float* p =
+      f + offset +
+      sx * (size_t(i) + size_t(j) * size_t(g.nx) + size_t(k) * size_t(g.nx) * size_t(g.ny));
+  const float c00 = p[0] + a * (p[sx] - p[0]);
+  const float c10 = p[sy] + a * (p[sy + sx] - p[sy]);
+  const float c01 = p[sz] + a * (p[sz + sx] - p[sz]);
+  const float c11 = p[sz + sy] + a * (p[sz + sy + sx] - p[sz + sy]);
+  const float c0 = c00 + b * (c10 - c00), c1 = c01 + b * (c11 - c01);
+  return c0 + c * (c1 - c0);
+}
+
+}  // namespace hairsketch

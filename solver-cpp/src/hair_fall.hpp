@@ -1,0 +1,132 @@
+// Natural fall: what a session with the fall setting adds to the paper's method.
+//
+// 1. A prior direction field G over the grid (fallDirections), the target of a weak term
+//    beta^2 sum_i ||t_i - g_i||^2 in the field energy (FieldSolver::setPrior): hair that no
+//    curve governs hangs from the scalp as combed-down hair does. Near the head g is straight
+//    down combed along the scalp, with a slight spread away from the head's vertical axis (so
+//    the crown parts outward rather than standing up) and a slight lift off the surface;
+//    kFallBlend away from the head, below its widest part, it is straight down.
+// 2. The reach of the curves that end hair (stream curves and ponytail spines without
+//    "extend"): per grid point, the curves' remaining length there, blended between curves, and
+//    how far the point is from every such curve (buildCurveReach). Growth stops a strand where
+//    the remaining length reaches zero, so the hair a curve governs ends where the curve ends, and
+//    lets a strand governed by a curve slide over the face where ungoverned hair stops at the
+//    hairline.
+#pragma once
+
+#include <Eigen/Core>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "field_system.hpp"
+#include "grid.hpp"
+#include "head_distance.hpp"
+
+namespace hairsketch {
+
+// The prior's weight beta^2 (relative to the bi-Laplacian's unit weight; omega^2 = 1e4).
+constexpr double kFallWeight = 2e-3;
+// World units (1 unit = 10 cm) over which g turns from combed along the scalp to straight down.
+constexpr double kFallBlend = 0.6;
+// Horizontal spread away from the head's vertical axis, and lift off the scalp, mixed into the
+// combed direction.
+constexpr double kFallSpread = 0.5, kFallLift = 0.15;
+
+// g at every grid point (n x 3, unit length): head = the head's distance grid, centre = the
+// head's centre (its vertical axis passes through it).
+Field fallDirections(const Grid& grid, const HeadDistance& head, const Eigen::Vector3d& centre);
+
+// Reach of the curves that govern hair (stream curves and ponytail spines), on a lattice of its
+// own (reachGrid: the solver grid's box in cells of at least kReachCell; the reach is smooth, so
+// it need not follow the solver's resolution). A point within kReachNear of such a curve takes
+// the curves' blended remaining length; past kReachFar from every curve it is far (the hair there
+// grows to the maximum length); between, the far fraction rises smoothly, so hair between the
+// strokes of a style takes their length.
+constexpr double kReachNear = 0.4, kReachFar = 1.5, kReachCell = 0.15;
+// Width (world units) of the Gaussian weights that blend nearby curves' remaining lengths.
+constexpr double kReachSigma = 0.25;
+// Hair within kFaceNear of a curve's stretch off the scalp, and heading along it (within about
+// 60 degrees), may slide over the face; past kFaceFar it stops at the hairline as ungoverned hair
+// does.
+constexpr double kFaceNear = 0.2, kFaceFar = 0.35;
+constexpr float kFaceAlign = 0.5f;
+
+struct ReachCurve {
+  const double* points = nullptr;  // points[3 * k + axis]
+  size_t count = 0;
+  // "Extend past the end": the curve does not end the hair near it.
+  bool growsOn = false;
+  // Per point (count entries, or null for none): the curve runs there off the scalp (over the
+  // face, an ear, the neck, or in the air). Hair near such a stretch may follow it over the face.
+  const uint8_t* offScalp = nullptr;
+};
+
+// The reach lattice for a solver grid: the same box, cells of max(step, kReachCell).
+Grid reachGrid(const Grid& solverGrid);
+
+struct CurveReach {
+  Grid grid;                       // the reach lattice
+  std::vector<float> remaining;    // per lattice point: blended remaining length (world units)
+  std::vector<float> far;          // per lattice point: 0 near a curve .. 1 far from all
+  std::vector<float> overFace;     // per lattice point: 1 near a curve's stretch off the scalp .. 0
+  std::vector<float> faceTangent;  // 3 per lattice point: that stretch's unit direction
+  bool empty() const { return remaining.empty(); }
+  void clear() {
+    remaining.clear();
+    far.clear();
+    overFace.clear();
+    faceTangent.clear();
+  }
+};
+
+// One curve's part of the reach: the lattice points within kReachFar of it, with the distance to
+// it, its remaining length there (L - s, s the arc length of the closest point on the polyline,
+// less how far the point lies past the curve's end along its last segment), and the distance to
+// its nearest stretch off the scalp (infinite: none) with that stretch's direction. A curve's
+// footprint depends on it and the lattice alone, so the engine keeps it while the curve is
+// unchanged (a stroke's previews redo only the stroke's).
+struct CurveFootprint {
+  std::vector<int> index;
+  std::vector<float> distance, remaining, faceDistance, faceTangent;  // faceTangent: 3 each
+  bool growsOn = false;
+};
+void curveFootprint(const Grid& lattice, const ReachCurve& curve, CurveFootprint& out);
+
+// The reach of curves from their footprints: remaining lengths blended by Gaussian weights of
+// the distances (kReachSigma), the far fraction from the nearest curve, the over-face weight and
+// direction from the nearest stretch off the scalp.
+void combineReach(const Grid& lattice, const std::vector<const CurveFootprint*>& curves,
+                  CurveReach& out);
+
+// curveFootprint of each curve, then combineReach, on reachGrid(solverGrid).
+void buildCurveReach(const Grid& solverGrid, const std::vector<ReachCurve>& curves,
+                     CurveReach& out);
+
+// Trilinear interpolation of a per-grid-point scalar at x (clamped to the volume); stride and
+// offset pick one component of interleaved values.
+float interpolateScalar(const Grid& grid, const float* values, float x, float y, float z,
+                        int stride = 1, int offset = 0);
+
+// The remaining length at x for hair of at most maxLength: the curves' blend near them, the
+// maximum length far from them.
+inline float reachRemaining(const CurveReach& reach, float x, float y, float z, float maxLength) {
+  const float f = interpolateScalar(reach.grid, reach.far.data(), x, y, z);
+  const float r = interpolateScalar(reach.grid, reach.remaining.data(), x, y, z);
+  return (1.f - f) * r + f * maxLength;
+}
+
+// Whether hair at x heading along dir (unit) follows a curve over the face.
+inline bool reachOverFace(const CurveReach& reach, float x, float y, float z, const float dir[3]) {
+  if (interpolateScalar(reach.grid, reach.overFace.data(), x, y, z) < 0.5f) return false;
+  float t[3], n2 = 0;
+  for (int e = 0; e < 3; ++e) {
+    t[e] = interpolateScalar(reach.grid, reach.faceTangent.data(), x, y, z, 3, e);
+    n2 += t[e] * t[e];
+  }
+  const float along = dir[0] * t[0] + dir[1] * t[1] + dir[2] * t[2];
+  return n2 > 0 && along >= kFaceAlign * std::sqrt(n2);
+}
+
+}  // namespace hairsketch
