@@ -72,6 +72,29 @@ function slerpDir(a: Vec3, b: Vec3, t: number): Vec3 {
   return add3(scale3(a, ka), scale3(bb, kb));
 }
 
+/** An axis-aligned box (world units). */
+export interface Bounds {
+  min: Vec3;
+  max: Vec3;
+}
+
+/** The view that frames `bounds` as `home` frames `reference` (the built-in head in the default
+ *  view: the head fits below the toolbar with a margin): the same direction, the target at the
+ *  same place relative to the box, the distance scaled by the largest ratio of the boxes' sides,
+ *  so a box no larger than the reference in any direction fits as well. `reference` itself gives
+ *  `home`. */
+export function frameBounds(bounds: Bounds, reference: Bounds, home: CameraView): CameraView {
+  let s = 0;
+  for (let a = 0; a < 3; a++) {
+    const r = reference.max[a] - reference.min[a];
+    if (r > 0) s = Math.max(s, (bounds.max[a] - bounds.min[a]) / r);
+  }
+  if (!(s > 0 && Number.isFinite(s))) s = 1;
+  const centre = (b: Bounds): Vec3 => scale3(add3(b.min, b.max), 0.5);
+  const target = add3(centre(bounds), scale3(sub3(home.target, centre(reference)), s));
+  return { target, position: add3(target, scale3(sub3(home.position, home.target), s)) };
+}
+
 /** Whether two views are the same within `eps` world units. */
 export function sameView(a: CameraView, b: CameraView, eps = 1e-6): boolean {
   return len3(sub3(a.position, b.position)) <= eps && len3(sub3(a.target, b.target)) <= eps;
