@@ -88,19 +88,33 @@ describe('framing a head', () => {
     expect(sameView(v, home, 1e-12)).toBe(true);
   });
 
-  it('moves with the box and backs off by its largest ratio of sides', () => {
-    // twice as tall, moved up by 1: the same direction, twice the distance
-    const big = { min: [-0.8, -5.2, -1] as Vec3, max: [0.8, 2, 1.3] as Vec3 };
-    const v = frameBounds(big, builtin, home);
-    const d = (w: { position: Vec3; target: Vec3 }) =>
-      w.position.map((p, a) => p - w.target[a]) as Vec3;
-    for (let a = 0; a < 3; a++) expect(d(v)[a]).toBeCloseTo(2 * d(home)[a], 12);
+  const off = (w: { position: Vec3; target: Vec3 }) =>
+    w.position.map((p, a) => p - w.target[a]) as Vec3;
+
+  it('moves with the box and backs off as it is larger on screen', () => {
+    // twice as large, moved up by 1: the same direction, twice the distance
+    const big = { min: [-1.6, -5.2 + 1.6, -2] as Vec3, max: [1.6, 2 + 1.6, 2.6] as Vec3 };
+    const v = frameBounds(big, builtin, home, 1.6);
+    for (let a = 0; a < 3; a++) expect(off(v)[a]).toBeCloseTo(2 * off(home)[a], 12);
     // the target keeps its place relative to the box: twice the offset from the centre
-    expect(v.target[1]).toBeCloseTo(-1.6 + 2 * (-0.55 - -0.8), 12);
+    expect(v.target[1]).toBeCloseTo(-1.6 + 1.6 + 2 * (-0.55 - -0.8), 12);
     // a smaller box is framed closer; a degenerate one like the reference
     const small = frameBounds({ min: [-0.4, -1, -0.5], max: [0.4, 0.8, 0.65] }, builtin, home);
-    expect(Math.hypot(...d(small))).toBeLessThan(Math.hypot(...d(home)));
+    expect(Math.hypot(...off(small))).toBeLessThan(Math.hypot(...off(home)));
     const flat = frameBounds({ min: [0, 0, 0], max: [0, 0, 0] }, builtin, home);
-    expect(Math.hypot(...d(flat))).toBeCloseTo(Math.hypot(...d(home)), 12);
+    expect(Math.hypot(...off(flat))).toBeCloseTo(Math.hypot(...off(home)), 12);
+  });
+
+  it('uses the room a wide view leaves beside a tall head', () => {
+    // as tall as the reference, three times as wide: a wide view holds it nearly as close
+    const wide = { min: [-2.4, -2.6, -1] as Vec3, max: [2.4, 1, 1.3] as Vec3 };
+    const inWide = Math.hypot(...off(frameBounds(wide, builtin, home, 1.66)));
+    const inSquare = Math.hypot(...off(frameBounds(wide, builtin, home, 0.6)));
+    const d0 = Math.hypot(...off(home));
+    expect(inWide).toBeLessThan(1.5 * d0);
+    expect(inSquare).toBeGreaterThan(2 * d0);
+    // the reference stays where home puts it, whatever the aspect
+    for (const aspect of [0.5, 1, 2])
+      expect(sameView(frameBounds(builtin, builtin, home, aspect), home, 1e-12)).toBe(true);
   });
 });

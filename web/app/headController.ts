@@ -301,7 +301,9 @@ export class HeadController {
   private frameHead(key: string): void {
     const builtin = this.cache.get('builtin')?.head.mesh.bounds;
     const bounds = this.current.head.mesh.bounds;
-    const home = builtin ? frameBounds(bounds, builtin, DEFAULT_CAMERA) : DEFAULT_CAMERA;
+    const home = builtin
+      ? frameBounds(bounds, builtin, DEFAULT_CAMERA, this.d.viewer.camera.aspect)
+      : DEFAULT_CAMERA;
     this.d.viewer.setHomeView(home.position, home.target);
     if (this.frameOnArrival !== key) return;
     this.frameOnArrival = null;
