@@ -111,7 +111,7 @@ export function gridForSession(
   const length = Math.min(MAX_HAIR_LENGTH, Math.max(0, maxLength));
   const hang = steps(g.origin[1] - (SCALP_BOTTOM_Y - length - g.step));
   below[1] = Math.max(below[1], hang);
-  const side = Math.min(Math.round(HANG_SIDE_ROOM * hang), Math.floor(HANG_MAX_SIDE / g.step));
+  const side = Math.min(Math.floor(HANG_SIDE_ROOM * hang), Math.floor(HANG_MAX_SIDE / g.step));
   for (const a of [0, 2]) {
     below[a] = Math.max(below[a], side);
     above[a] = Math.max(above[a], side);
