@@ -15,7 +15,7 @@ import { loadSolverEngine } from '../web/solver/wasmEngine';
 const wasmBinary = new Uint8Array(readFileSync('web/generated/hairsolver.wasm'));
 const head = Head.builtin();
 const base = presetSession('default', head, '25k', Number(process.argv[2] ?? 0));
-const grid = gridForSession(base.grid, base.curves);
+const grid = gridForSession(base.grid, base.curves, undefined, base.growth.maxLength);
 const cases: Array<[string, HairDetail | undefined]> = [
   ['none', undefined],
   ['curl', { curl: CURLY_DETAIL.curl }],

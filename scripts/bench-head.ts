@@ -16,6 +16,7 @@ import { readFileSync } from 'node:fs';
 import { type LoadedHead, loadHeadFile } from '../web/head/loadHead';
 import { resultLighting } from '../web/lighting/resultLighting';
 import { gridForSession } from '../web/model/grid';
+import { DEFAULT_GROWTH } from '../web/model/session';
 import type { Vec3 } from '../web/model/vec3';
 import type { ScalpMesh } from '../web/solver/protocol';
 import { loadSolverEngine } from '../web/solver/wasmEngine';
@@ -138,7 +139,7 @@ async function measure(triangles: number): Promise<Row> {
   const nt = loaded.mesh.indices.length / 3;
 
   // JS signed distance at every point of the 50k grid fitted round the head.
-  const grid = gridForSession('50k', [], loaded.mesh.bounds);
+  const grid = gridForSession('50k', [], loaded.mesh.bounds, DEFAULT_GROWTH.maxLength);
   const [nx, ny, nz] = grid.dims;
   const band = 2 * grid.step;
   const s0 = performance.now();

@@ -331,7 +331,7 @@ function timed<T>(f: () => T): [T, number] {
 
 const head = Head.builtin();
 const session = presetSession('default', head, '25k', 0);
-const spec = gridForSession('25k', session.curves);
+const spec = gridForSession('25k', session.curves, undefined, session.growth.maxLength);
 const scalp = head.scalpMesh();
 const engine = await loadSolverEngine(singleNodeOptions());
 const grown = growSessionHair(engine, session, scalp, { grid: spec, solver: 'fast' });

@@ -49,7 +49,7 @@ for (const grid of grids) {
   const after = presetSession('default', head, grid, 0);
   const before = { ...after, curves: after.curves.slice(0, -1) };
   const [b, a] = [`${dir}/${grid}-before.txt`, `${dir}/${grid}-after.txt`];
-  const spec = gridForSession(grid, after.curves); // both on the whole preset's grid
+  const spec = gridForSession(grid, after.curves, undefined, after.growth.maxLength); // both on the whole preset's grid
   await write(before, spec, b);
   await write(after, spec, a);
   for (const build of builds) {

@@ -72,7 +72,7 @@ async function solveOnce(load: LoadOptions, gridName: GridPreset) {
   const engine = await loadSolverEngine(load);
   try {
     const hair = growSessionHair(engine, s, head.scalpMesh(), {
-      grid: gridForSession(gridName, s.curves),
+      grid: gridForSession(gridName, s.curves, undefined, s.growth.maxLength),
       solver: 'fast',
       maxStrands: 1,
     });

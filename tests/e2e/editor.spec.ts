@@ -110,7 +110,8 @@ test('Reset view brings the camera back; Surface mode shows the mode that is on'
   const before = (await session(page)).camera;
   const box = await page.getByTestId('viewport').boundingBox();
   if (!box) throw new Error('no viewport');
-  // orbit with the Select tool
+  // orbit with the Select tool (every preset starts with Stream curve)
+  await page.getByRole('button', { name: 'Select', exact: true }).click();
   await dragPath(page, [
     { x: box.x + box.width / 2, y: box.y + box.height / 2 },
     { x: box.x + box.width / 2 + 120, y: box.y + box.height / 2 + 10 },

@@ -136,6 +136,34 @@ describe('StatusPresenter', () => {
     expect(el.textContent).toContain('solver=fast');
     p.solverError('bad input', 'invalid_input', false);
     expect(el.textContent).not.toContain('solver=fast');
+    // the fast solver over the cap: the volume (long hair grows it) is what to shrink
+    p.solverError(
+      'fast solver: over the memory cap (needs ~2300 MB, cap 1900 MB)',
+      'over_memory_cap',
+      false,
+    );
+    expect(el.textContent).toContain('shorter Max length');
+    expect(el.textContent).not.toContain('solver=fast');
+    p.solverError('grow: too many strand points', 'over_memory_cap', false);
+    expect(el.textContent).toContain('fewer strands');
+  });
+
+  it('the tooltip says how many grid points the bounding volume has', () => {
+    const el = fakeElement();
+    const line = new StatusLine(
+      el as unknown as HTMLElement,
+      fakeElement() as unknown as HTMLElement,
+    );
+    const p = new StatusPresenter(line, {
+      pending: false,
+      previewing: false,
+      grid: { dims: [33, 65, 33], origin: [0, 0, 0], step: 0.1267 },
+    });
+    p.result(result(100), true);
+    line.counts(100, 1);
+    p.ready();
+    expect(el.title).toContain('bounding volume 70,785 grid points (33 × 65 × 33');
+    expect(el.textContent).not.toContain('grid points');
   });
 
   it('counts only strands that grew a segment (a bald head grows one-point strands)', () => {

@@ -3,6 +3,7 @@ import { describe, expect, it } from 'vitest';
 import type { Vec3 } from '../../web/model/vec3';
 import {
   easeInOut,
+  frameBounds,
   interpolateView,
   ORBIT_DEGREES_PER_WIDTH,
   orbitDegrees,
@@ -75,5 +76,45 @@ describe('view transition', () => {
     expect([easeInOut(0), easeInOut(0.5), easeInOut(1), easeInOut(2)]).toEqual([0, 0.5, 1, 1]);
     expect(easeInOut(0.1)).toBeLessThan(0.1);
     expect(easeInOut(0.9)).toBeGreaterThan(0.9);
+  });
+});
+
+describe('framing a head', () => {
+  const home = { position: [2.6, 0.9, 7.0] as Vec3, target: [0, -0.55, 0] as Vec3 };
+  const builtin = { min: [-0.8, -2.6, -1] as Vec3, max: [0.8, 1, 1.3] as Vec3 };
+
+  it('frames the reference box with the home view itself', () => {
+    const v = frameBounds(builtin, builtin, home);
+    expect(sameView(v, home, 1e-12)).toBe(true);
+  });
+
+  const off = (w: { position: Vec3; target: Vec3 }) =>
+    w.position.map((p, a) => p - w.target[a]) as Vec3;
+
+  it('moves with the box and backs off as it is larger on screen', () => {
+    // twice as large, moved up by 1: the same direction, twice the distance
+    const big = { min: [-1.6, -5.2 + 1.6, -2] as Vec3, max: [1.6, 2 + 1.6, 2.6] as Vec3 };
+    const v = frameBounds(big, builtin, home, 1.6);
+    for (let a = 0; a < 3; a++) expect(off(v)[a]).toBeCloseTo(2 * off(home)[a], 12);
+    // the target keeps its place relative to the box: twice the offset from the centre
+    expect(v.target[1]).toBeCloseTo(-1.6 + 1.6 + 2 * (-0.55 - -0.8), 12);
+    // a smaller box is framed closer; a degenerate one like the reference
+    const small = frameBounds({ min: [-0.4, -1, -0.5], max: [0.4, 0.8, 0.65] }, builtin, home);
+    expect(Math.hypot(...off(small))).toBeLessThan(Math.hypot(...off(home)));
+    const flat = frameBounds({ min: [0, 0, 0], max: [0, 0, 0] }, builtin, home);
+    expect(Math.hypot(...off(flat))).toBeCloseTo(Math.hypot(...off(home)), 12);
+  });
+
+  it('uses the room a wide view leaves beside a tall head', () => {
+    // as tall as the reference, three times as wide: a wide view holds it nearly as close
+    const wide = { min: [-2.4, -2.6, -1] as Vec3, max: [2.4, 1, 1.3] as Vec3 };
+    const inWide = Math.hypot(...off(frameBounds(wide, builtin, home, 1.66)));
+    const inSquare = Math.hypot(...off(frameBounds(wide, builtin, home, 0.6)));
+    const d0 = Math.hypot(...off(home));
+    expect(inWide).toBeLessThan(1.5 * d0);
+    expect(inSquare).toBeGreaterThan(2 * d0);
+    // the reference stays where home puts it, whatever the aspect
+    for (const aspect of [0.5, 1, 2])
+      expect(sameView(frameBounds(builtin, builtin, home, aspect), home, 1e-12)).toBe(true);
   });
 });

@@ -139,8 +139,8 @@ export function buildActions(t: ActionTarget): Action[] {
       shortcuts: ['delete', 'backspace'],
       group: 'edit',
       toolbar: 'main',
+      // always enabled: with nothing selected it says what to do first
       run: () => t.deleteSelected(),
-      enabled: () => t.hasSelection(),
     },
     {
       id: 'curve.viewpoint',

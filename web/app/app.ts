@@ -72,13 +72,14 @@ export function startApp(): void {
     opts.preset,
     { head, step: grid.step, viewpoint: viewer.cameraState() },
   );
-  const editor = new Editor(initial, opts.preset === 'empty' ? 'stream' : 'select');
+  // every preset starts with the tool a new user wants first: drawing a stream curve
+  const editor = new Editor(initial, 'stream');
 
   const hairView = new HairView(viewer, headMesh);
   const quality = new QualityControl(hairView, viewer);
   const hair = new HairPresenter(viewer, hairView, line, initial.hairColor);
   const bridge = new SolverBridge(editor, {
-    grid: gridForSession(initial.grid, initial.curves),
+    grid: gridForSession(initial.grid, initial.curves, undefined, initial.growth.maxLength),
     solver: opts.solver,
     scalp: head.scalpMesh(),
     headBounds: () => heads.gridBounds,
@@ -172,12 +173,15 @@ export function startApp(): void {
     toggles.set(overlays.display);
     if (key === 'field') bridge.setWantField(on, !!overlays.shownResult?.field);
   };
-  const panel = buildCurvePanel(byId('stage'), (id, patch) =>
-    editor.run({ kind: 'patchCurve', id, patch }),
+  const panel = buildCurvePanel(
+    byId('stage'),
+    (id, patch) => editor.run({ kind: 'patchCurve', id, patch }),
+    (m) => status.note(m),
   );
   detailPanel = buildDetailPanel(byId('stage'), {
     setGrowth: (patch) => editor.run({ kind: 'setGrowth', patch }),
     setDetail: (curveId, detail) => editor.run({ kind: 'setDetail', curveId, detail }),
+    say: (m) => status.note(m),
   });
   detailPanel.show(editor.session, editor.selectedCurve);
   headPanel = buildHeadPanel(byId('stage'), {
@@ -193,6 +197,7 @@ export function startApp(): void {
     },
     setPlane: (plane) => editor.run({ kind: 'setSymmetry', plane }),
     fitPlane: () => heads.fitPlane(editor),
+    say: (m) => status.note(m),
   });
   function showHeadPanel(): void {
     headPanel?.show({
@@ -290,6 +295,7 @@ export function startApp(): void {
     ponytail: tools.ponytail,
     busy: () =>
       heads.busy ||
+      viewer.viewAnimating ||
       !!exporting?.busy() ||
       bridge.pending ||
       hair.awaitingFrame ||

@@ -53,6 +53,7 @@ export function editActions(d: EditActionDeps): EditActions {
     },
     deleteSelected: () => {
       if (editor.selectedId) editor.run({ kind: 'deleteCurve', id: editor.selectedId });
+      else status.note('Select a curve first: Delete removes the selected curve.');
     },
     setViewpoint: () => {
       if (editor.selectedId)

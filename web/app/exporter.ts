@@ -110,7 +110,12 @@ export class Exporter {
             type: 'export',
             format,
             session: parsed.value,
-            grid: gridForSession(parsed.value.grid, parsed.value.curves, this.d.headBounds?.()),
+            grid: gridForSession(
+              parsed.value.grid,
+              parsed.value.curves,
+              this.d.headBounds?.(),
+              parsed.value.growth.maxLength,
+            ),
             solver: this.d.solver,
             scalp: this.d.scalp(),
             head: withHead ? this.d.head() : null,

@@ -10,6 +10,9 @@
 //    solver sent only the mask (roots redistribute; the head's distance field is kept).
 // Opening a file adds it to the store and runs one undoable `setHead` edit with the head's
 // fitted symmetry plane; Rotate does the same with one more quarter turn.
+// Every head shown sets the view Reset view returns to: the head framed as the built-in head is
+// in the default view (viewMath.ts frameBounds); Open head, Rotate and Built-in head also ease
+// the camera there once the head is on screen.
 import type * as THREE from 'three';
 import type { Editor } from '../editor/editor';
 import type { Head } from '../head/head';
@@ -21,7 +24,8 @@ import { fitSymmetryPlane } from '../head/symmetryPlane';
 import type { HeadRef, ScalpStroke, SessionState } from '../model/session';
 import type { ScalpMesh } from '../solver/protocol';
 import { paintHeadTriangles, recolorHeadScalp, setHeadGeometry } from '../viewer/headMaterial';
-import type { Viewer } from '../viewer/viewer';
+import { DEFAULT_CAMERA, type Viewer } from '../viewer/viewer';
+import { frameBounds } from '../viewer/viewMath';
 
 export interface HeadControllerDeps {
   viewer: Viewer;
@@ -76,6 +80,9 @@ export class HeadController {
   /** The stroke being painted (its triangles shown painted before the edit is made). */
   private previewMask: Uint8Array | null = null;
   private previewPoints = 0;
+  /** The head (refKey) whose arrival eases the camera to frame it (Open head, Rotate, Built-in
+   *  head); null: a head that comes otherwise (undo, a file, a link) leaves the camera alone. */
+  private frameOnArrival: string | null = null;
 
   constructor(
     builtin: Head,
@@ -151,11 +158,14 @@ export class HeadController {
     const ms = Math.round(performance.now() - t0);
     // a link waiting for this very head: the session already names it
     if (this.missingRef && this.missingRef.hash === hash && this.latest) {
+      const waited = refKey(this.missingRef);
       this.missingRef = null;
       this.key = '';
+      this.frameWhenShown(waited);
       this.sessionChanged(this.latest);
       return `${r.head.message} — the head this session needs (${ms} ms).`;
     }
+    this.frameWhenShown(refKey(ref));
     editor.run({ kind: 'setHead', head: ref, symmetry, what: `Opened head ${r.head.message}` });
     return `${r.head.message} (${ms} ms).`;
   }
@@ -165,6 +175,7 @@ export class HeadController {
     const ref = editor.session.head;
     if (ref === 'builtin') return 'Rotate turns a loaded head; the built-in head is upright.';
     const next: HeadRef = { ...ref, turns: addTurn(ref.turns, axis) };
+    this.frameWhenShown(refKey(next));
     editor.run({ kind: 'setHead', head: next, what: `Turned the head 90° about ${axis}` });
     return null;
   }
@@ -187,6 +198,7 @@ export class HeadController {
 
   /** "Built-in head": back to the mannequin (one undoable edit). */
   useBuiltin(editor: Editor): void {
+    this.frameWhenShown('builtin');
     editor.run({ kind: 'setHead', head: 'builtin', what: 'Built-in head' });
   }
 
@@ -276,6 +288,26 @@ export class HeadController {
     this.d.viewer.invalidateFrameCache();
     this.d.setSolverHead(prepared.head.scalpMesh());
     this.d.headChanged?.(prepared.head);
+    this.frameHead(key);
+  }
+
+  /** The camera frames the head `key` once it is on screen (at once when it already is). */
+  private frameWhenShown(key: string): void {
+    this.frameOnArrival = key;
+    if (key === this.key && !this.switching) this.frameHead(key);
+  }
+
+  /** Reset view's framing follows the head shown; the camera eases there when asked for. */
+  private frameHead(key: string): void {
+    const builtin = this.cache.get('builtin')?.head.mesh.bounds;
+    const bounds = this.current.head.mesh.bounds;
+    const home = builtin
+      ? frameBounds(bounds, builtin, DEFAULT_CAMERA, this.d.viewer.camera.aspect)
+      : DEFAULT_CAMERA;
+    this.d.viewer.setHomeView(home.position, home.target);
+    if (this.frameOnArrival !== key) return;
+    this.frameOnArrival = null;
+    this.d.viewer.resetView();
   }
 
   private prepare(loaded: LoadedHead): Prepared {

@@ -95,7 +95,7 @@ export class SolverBridge {
   /** The grid the current session needs: its curves and the head (gridForSession). */
   private sessionGrid(): GridSpec {
     const s = this.editor.session;
-    return gridForSession(s.grid, s.curves, this.opts.headBounds?.());
+    return gridForSession(s.grid, s.curves, this.opts.headBounds?.(), s.growth.maxLength);
   }
 
   /** Another head (a loaded mesh, a turn of it, the built-in one), with its scalp mask: the

@@ -2,12 +2,23 @@
 // strands"), the last thing the user did, and solver internals (method, iterations, times) in
 // the details tooltip only. Progress never goes backwards within one solve.
 import type { EditorChange } from '../editor/editor';
-import type { SolverErrorKind } from '../solver/protocol';
+import { gridPointCount } from '../model/grid';
+import type { GridSpec, SolverErrorKind } from '../solver/protocol';
 import type { SolveResult } from '../solver/solverClient';
 import type { StatusLine } from '../ui/status';
 import type { BusyPhase } from './solverBridge';
 
 const fmt = (n: number) => n.toLocaleString('en-US');
+
+/** What to do when the solver refuses work over its memory cap: the exact solver's factor, the
+ *  strands' points, or the bounding volume (which long hair grows). */
+function memoryAdvice(message: string): string {
+  if (/exact|factor/i.test(message))
+    return ' — the exact solver does not fit this grid; use ?solver=fast or a smaller ?grid';
+  if (/^growth|strand points/.test(message))
+    return ' — the strands do not fit in memory; use fewer strands or a shorter Max length';
+  return ' — the bounding volume does not fit in memory; use a shorter Max length or a smaller ?grid';
+}
 
 export class StatusPresenter {
   private lastMessage = '';
@@ -17,10 +28,15 @@ export class StatusPresenter {
   private firstLook = false;
 
   /** `solver.pending`: the solver has work queued; `solver.previewing`: a stroke is being drawn
-   *  (the hair on screen is its preview, a sample of the strands). The solver bridge. */
+   *  (the hair on screen is its preview, a sample of the strands); `solver.grid`: the bounding
+   *  volume's grid the hair was solved on (the tooltip says its size). The solver bridge. */
   constructor(
     private readonly line: StatusLine,
-    private readonly solver: { readonly pending: boolean; readonly previewing: boolean },
+    private readonly solver: {
+      readonly pending: boolean;
+      readonly previewing: boolean;
+      readonly grid?: GridSpec;
+    },
   ) {}
 
   /** A sentence about what the user just did (kept beside "Ready"). */
@@ -97,7 +113,11 @@ export class StatusPresenter {
     }
     this.progress = 0;
     this.firstLook = false;
-    this.details = `${st.constraints.toLocaleString('en-US')} constraints · ${st.method}, ${st.iterations} iterations, solve ${st.solveMs.toFixed(0)} ms, growth ${st.growMs.toFixed(0)} ms${st.module ? ` · ${st.module}` : ''}`;
+    const g = this.solver.grid;
+    const volume = g
+      ? ` · bounding volume ${fmt(gridPointCount(g))} grid points (${g.dims.join(' × ')}, step ${(g.step * 100).toFixed(1)} mm)`
+      : '';
+    this.details = `${st.constraints.toLocaleString('en-US')} constraints · ${st.method}, ${st.iterations} iterations, solve ${st.solveMs.toFixed(0)} ms, growth ${st.growMs.toFixed(0)} ms${volume}${st.module ? ` · ${st.module}` : ''}`;
   }
 
   solverError(message: string, kind: SolverErrorKind | undefined, restarting: boolean): void {
@@ -106,10 +126,7 @@ export class StatusPresenter {
       this.line.set('loading', message);
       return;
     }
-    const advice =
-      kind === 'over_memory_cap'
-        ? ' — the exact solver does not fit this grid; use ?solver=fast or a smaller ?grid'
-        : '';
+    const advice = kind === 'over_memory_cap' ? memoryAdvice(message) : '';
     this.error(`Error: ${message}${advice}`);
   }
 

@@ -274,7 +274,7 @@ export async function runGrow(
     const t0 = performance.now();
     let lastLine = t0;
     hair = growSessionHair(engine, session, scalp, {
-      grid: gridForSession(preset, session.curves, bounds),
+      grid: gridForSession(preset, session.curves, bounds, session.growth.maxLength),
       solver: args.solver,
       ...(args.strands !== null ? { maxStrands: args.strands } : {}),
       // between solver slices: progress on stderr now and then, and the time cap

@@ -54,17 +54,33 @@ export const FIT_MAX_GROWTH = 2.0;
 /** Room the default box leaves around the built-in head (x each side, above, z each side). */
 export const HEAD_ROOM: Vec3 = [0.9, 0.5, 0.5];
 
+/** The longest hair a session may ask for (growth.maxLength, world units: 100 cm). */
+export const MAX_HAIR_LENGTH = 10;
+/** Lowest y of the built-in head's scalp (its hairline at the nape, world units): hair of the
+ *  session's maximum length hangs from here. A loaded head's cranium is placed where the built-in
+ *  head's is (head/loadHead.ts) and its default scalp is the same region, so it ends about as
+ *  low; scalp painted lower than the nape may grow hair that reaches the floor sooner. */
+export const SCALP_BOTTOM_Y = -0.48;
+/** Room beside hair hanging below the default box, as a fraction of the depth it hangs past the
+ *  box's floor, per side in x and z (hair falling over the back and the chest drifts away from
+ *  the head as it falls), at most HANG_MAX_SIDE (world units) per side. */
+export const HANG_SIDE_ROOM = 0.1;
+export const HANG_MAX_SIDE = 0.5;
+
 /** The preset's grid, grown (same step, same lattice) until the bounding volume holds every
  *  point of `curves` with a step to spare and each curve's end with FIT_MARGIN_STEPS, so the
- *  hair the curves ask for is not cut flat where the default box ends. The default box when the
- *  curves fit in it. */
+ *  hair the curves ask for is not cut flat where the default box ends; and downward until hair
+ *  of `maxLength` hanging from the scalp's lowest root (SCALP_BOTTOM_Y) ends a step above the
+ *  floor, with room beside it (HANG_SIDE_ROOM). The default box when all of that fits in it. */
 export function gridForSession(
   preset: GridPreset,
   curves: readonly { points: readonly Vec3[] }[],
-  /** A loaded head's bounds (absent for the built-in head, which the default box holds): the
+  /** A loaded head's bounds (undefined for the built-in head, which the default box holds): the
    *  volume also holds the head above the box's floor with the built-in head's room around it
    *  (HEAD_ROOM), so long hair on a bigger head has space. */
-  headBounds?: { min: Vec3; max: Vec3 },
+  headBounds: { min: Vec3; max: Vec3 } | undefined,
+  /** The session's growth.maxLength (world units; at most MAX_HAIR_LENGTH is held). */
+  maxLength: number,
 ): GridSpec {
   const g = gridForPreset(preset);
   const lo: Vec3 = [...g.origin];
@@ -86,24 +102,22 @@ export function gridForSession(
     for (const p of c.points) hold(p, g.step);
     if (c.points.length) hold(c.points[c.points.length - 1], FIT_MARGIN_STEPS * g.step);
   }
-  const origin = [...g.origin] as Vec3;
-  const dims = [...g.dims] as [number, number, number];
-  for (let a = 0; a < 3; a++) {
-    const below = Math.min(
-      Math.ceil((g.origin[a] - lo[a]) / g.step - 1e-9),
-      Math.floor(FIT_MAX_GROWTH / g.step),
-    );
-    const top = g.origin[a] + g.step * (g.dims[a] - 1);
-    const above = Math.min(
-      Math.ceil((hi[a] - top) / g.step - 1e-9),
-      Math.floor(FIT_MAX_GROWTH / g.step),
-    );
-    if (below > 0) {
-      origin[a] = g.origin[a] - below * g.step;
-      dims[a] += below;
-    }
-    if (above > 0) dims[a] += above;
+  const steps = (need: number) => Math.max(0, Math.ceil(need / g.step - 1e-9));
+  const capped = (need: number) => Math.min(steps(need), Math.floor(FIT_MAX_GROWTH / g.step));
+  const below = [0, 1, 2].map((a) => capped(g.origin[a] - lo[a]));
+  const above = [0, 1, 2].map((a) => capped(hi[a] - (g.origin[a] + g.step * (g.dims[a] - 1))));
+  // long hair: the floor a step below its tips, and room beside it (not capped by
+  // FIT_MAX_GROWTH: the session reader caps maxLength at MAX_HAIR_LENGTH)
+  const length = Math.min(MAX_HAIR_LENGTH, Math.max(0, maxLength));
+  const hang = steps(g.origin[1] - (SCALP_BOTTOM_Y - length - g.step));
+  below[1] = Math.max(below[1], hang);
+  const side = Math.min(Math.floor(HANG_SIDE_ROOM * hang), Math.floor(HANG_MAX_SIDE / g.step));
+  for (const a of [0, 2]) {
+    below[a] = Math.max(below[a], side);
+    above[a] = Math.max(above[a], side);
   }
+  const origin = [0, 1, 2].map((a) => g.origin[a] - below[a] * g.step) as Vec3;
+  const dims = [0, 1, 2].map((a) => g.dims[a] + below[a] + above[a]) as [number, number, number];
   return { dims, origin, step: g.step };
 }
 

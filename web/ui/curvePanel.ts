@@ -4,6 +4,7 @@
 // in History).
 import type { StyleCurve } from '../model/session';
 import { CURVE_PARAMS, type CurveParamSpec } from '../solver/protocol';
+import { numberInput, type Say } from './numberInput';
 
 /** The fields a panel edit changes: scalar parameters by name (session units), or `extend`. */
 export type CurvePatch = Readonly<Record<string, number | boolean>>;
@@ -34,6 +35,8 @@ function paramValue(c: StyleCurve, s: CurveParamSpec): number {
 export function buildCurvePanel(
   root: HTMLElement,
   onChange: (id: string, patch: CurvePatch) => void,
+  /** A sentence for the status line (an entry clamped or rounded). */
+  say: Say,
 ): CurvePanel {
   const panel = document.createElement('section');
   panel.id = 'curve-panel';
@@ -64,18 +67,13 @@ export function buildCurvePanel(
       for (const s of specsOf(curve)) {
         const label = document.createElement('label');
         label.textContent = paramLabel(s);
-        const input = document.createElement('input');
-        input.type = 'number';
-        input.min = String(s.view.min);
-        input.max = String(s.view.max);
-        input.step = String(s.view.step);
-        input.value = String(Math.round(toView(s, paramValue(curve, s)) * 1000) / 1000);
-        input.addEventListener('change', () => {
-          const v = Number(input.value);
-          if (!Number.isFinite(v)) return;
-          const clamped = Math.min(s.view.max, Math.max(s.view.min, v));
-          onChange(curve.id, { [s.name]: fromView(s, clamped) });
-        });
+        const input = numberInput(
+          s.view,
+          toView(s, paramValue(curve, s)),
+          { label: s.label, unit: s.unit === 'rad' ? '°' : s.unit || undefined, decimals: 3 },
+          (v) => onChange(curve.id, { [s.name]: fromView(s, v) }),
+          say,
+        );
         label.append(input);
         panel.append(label);
       }

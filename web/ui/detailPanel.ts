@@ -11,16 +11,18 @@ import {
   type HairDetail,
   LENGTH_JITTER,
 } from '../model/detail';
-import type { SessionState, StyleCurve } from '../model/session';
+import { gridForPreset, MAX_HAIR_LENGTH } from '../model/grid';
+import { DEFAULT_GROWTH, type SessionState, type StyleCurve } from '../model/session';
+import { SESSION_LIMITS } from '../model/sessionFile';
 import type { GrowthParams } from '../solver/protocol';
-import { numberInput } from './numberInput';
+import { numberInput, type Say } from './numberInput';
 
 /** Roots the built-in head's scalp gives at 1° × 1° sampling (S5.1): the strand count scales
  *  with 1 / (θ step · φ step). */
 export const ROOTS_AT_ONE_DEGREE = 29_948;
 export const STRANDS_RANGE = { min: 1_000, max: 100_000, step: 1_000 };
 /** Maximum strand length in the panel, centimetres (world units × 10). */
-export const LENGTH_RANGE_CM = { min: 2, max: 36, step: 1 };
+export const LENGTH_RANGE_CM = { min: 2, max: MAX_HAIR_LENGTH * 10, step: 1 };
 
 /** The strand count the panel shows for a session's growth (before its cap). */
 export function strandsOf(g: GrowthParams): number {
@@ -28,14 +30,36 @@ export function strandsOf(g: GrowthParams): number {
   return g.maxStrands > 0 ? Math.min(g.maxStrands, n) : n;
 }
 
-/** Sampling steps (equal in θ and φ, on a 1e-4° grid) that give about `n` strands. */
+/** Sampling steps (equal in θ and φ, on a 1e-4° grid) that give at least `n` strands. */
 export function stepsForStrands(n: number): Pick<GrowthParams, 'thetaStepDeg' | 'phiStepDeg'> {
-  const step = Math.round(Math.sqrt(ROOTS_AT_ONE_DEGREE / n) * 1e4) / 1e4;
+  const step = Math.floor(Math.sqrt(ROOTS_AT_ONE_DEGREE / n) * 1e4) / 1e4;
   return { thetaStepDeg: step, phiStepDeg: step };
+}
+
+/** The growth for `n` strands: sampling steps that give at least n, and the cap at n when they
+ *  give more (the engine keeps an even subsample), so the panel shows the number typed. */
+export function growthForStrands(
+  n: number,
+): Pick<GrowthParams, 'thetaStepDeg' | 'phiStepDeg' | 'maxStrands'> {
+  const steps = stepsForStrands(n);
+  const count = strandsOf({ ...DEFAULT_GROWTH, ...steps, maxStrands: 0 });
+  return { ...steps, maxStrands: count > n ? n : 0 };
+}
+
+/** growth.maxSegments for strands of `maxLength` (world units) on a grid of step `step`: its
+ *  length in growth steps (stepFraction × step) twice over, since a step is that times the
+ *  field's magnitude, which falls below 1 where hair turns or a curve's end fades; never below
+ *  the default's nor above the session limit. The engine checks that every strand at this many
+ *  segments fits in memory, so it is not raised further. */
+export function segmentsForLength(maxLength: number, stepFraction: number, step: number): number {
+  const need = Math.ceil((2 * maxLength) / (stepFraction * step) - 1e-9);
+  return Math.min(SESSION_LIMITS.maxSegments, Math.max(DEFAULT_GROWTH.maxSegments, need));
 }
 
 export interface DetailPanelEvents {
   setGrowth(patch: Partial<GrowthParams>): void;
+  /** A sentence for the status line (an entry clamped or rounded). */
+  say: Say;
   /** curveId null: the session's detail. */
   setDetail(curveId: string | null, detail: HairDetail | undefined): void;
 }
@@ -70,14 +94,32 @@ export function buildDetailPanel(root: HTMLElement, events: DetailPanelEvents): 
     panel.append(
       row(
         'Strands',
-        numberInput(STRANDS_RANGE, strandsOf(s.growth), (n) =>
-          events.setGrowth({ ...stepsForStrands(n), maxStrands: 0 }),
+        numberInput(
+          STRANDS_RANGE,
+          strandsOf(s.growth),
+          { label: 'Strands', decimals: 0 },
+          (n) => events.setGrowth(growthForStrands(n)),
+          events.say,
         ),
       ),
       row(
         'Max length (cm)',
-        numberInput(LENGTH_RANGE_CM, s.growth.maxLength * 10, (cm) =>
-          events.setGrowth({ maxLength: Math.round(cm * 1e3) / 1e4 }),
+        numberInput(
+          LENGTH_RANGE_CM,
+          s.growth.maxLength * 10,
+          { label: 'Max length', unit: 'cm', decimals: 3 },
+          (cm) => {
+            const maxLength = Math.round(cm * 1e3) / 1e4;
+            events.setGrowth({
+              maxLength,
+              maxSegments: segmentsForLength(
+                maxLength,
+                s.growth.stepFraction,
+                gridForPreset(s.grid).step,
+              ),
+            });
+          },
+          events.say,
         ),
       ),
     );
@@ -110,10 +152,16 @@ export function buildDetailPanel(root: HTMLElement, events: DetailPanelEvents): 
     panel.append(
       row(
         LENGTH_JITTER.label,
-        numberInput(LENGTH_JITTER, detail.lengthJitter ?? 0, (v) => {
-          const { lengthJitter: _, ...rest } = detail;
-          set(v > 0 ? { ...rest, lengthJitter: v } : rest);
-        }),
+        numberInput(
+          LENGTH_JITTER,
+          detail.lengthJitter ?? 0,
+          { label: LENGTH_JITTER.label },
+          (v) => {
+            const { lengthJitter: _, ...rest } = detail;
+            set(v > 0 ? { ...rest, lengthJitter: v } : rest);
+          },
+          events.say,
+        ),
       ),
     );
   }
@@ -139,10 +187,15 @@ export function buildDetailPanel(root: HTMLElement, events: DetailPanelEvents): 
     group.append(legend);
     if (block)
       for (const p of DETAIL_PARAMS[b] as readonly DetailParamSpec[]) {
-        const input = numberInput(p, block[p.key], (v) =>
-          set({ ...detail, [b]: { ...block, [p.key]: v } }),
+        const label = `${name} ${p.label.toLowerCase()}`;
+        const input = numberInput(
+          p,
+          block[p.key],
+          { label },
+          (v) => set({ ...detail, [b]: { ...block, [p.key]: v } }),
+          events.say,
         );
-        input.setAttribute('aria-label', `${name} ${p.label.toLowerCase()}`);
+        input.setAttribute('aria-label', label);
         group.append(row(p.label, input));
       }
     return group;

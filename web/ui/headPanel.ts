@@ -6,7 +6,7 @@ import { planeAngles, planeNormal } from '../head/symmetryPlane';
 import type { MirrorPlane } from '../model/mirror';
 import type { SessionState } from '../model/session';
 import { BRUSH_RADIUS } from '../tools/scalpBrushTool';
-import { type NumberRange, numberInput } from './numberInput';
+import { type NumberRange, numberInput, type Say } from './numberInput';
 
 type Axis = 'x' | 'y' | 'z';
 
@@ -17,6 +17,8 @@ export interface HeadPanelEvents {
   setBrushRadius(radius: number): void;
   setPlane(plane: MirrorPlane | undefined): void;
   fitPlane(): void;
+  /** A sentence for the status line (an entry clamped or rounded). */
+  say: Say;
 }
 
 export interface HeadPanelState {
@@ -36,14 +38,17 @@ export interface HeadPanel {
 
 const DEG = 180 / Math.PI;
 
-/** A labelled number input (the label is its accessible name). */
+/** A labelled number input (the label, "Name (unit)", is its accessible name). */
 function numberRow(
   label: string,
   range: NumberRange,
   value: number,
   onValue: (v: number) => void,
+  say: Say,
 ): HTMLLabelElement {
-  const input = numberInput(range, value, onValue, 2);
+  const m = /^(.*) \((.*)\)$/.exec(label);
+  const field = m ? { label: m[1], unit: m[2], decimals: 2 } : { label, decimals: 2 };
+  const input = numberInput(range, value, field, onValue, say);
   input.setAttribute('aria-label', label);
   const row = document.createElement('label');
   row.className = 'detail-row';
@@ -110,6 +115,7 @@ export function buildHeadPanel(root: HTMLElement, events: HeadPanelEvents): Head
         { min: BRUSH_RADIUS.min * 100, max: BRUSH_RADIUS.max * 100, step: 5 },
         st.brushRadius * 100,
         (mm) => events.setBrushRadius(mm / 100),
+        events.say,
       ),
     );
     const mirror = document.createElement('h2');
@@ -120,14 +126,26 @@ export function buildHeadPanel(root: HTMLElement, events: HeadPanelEvents): Head
       events.setPlane({ normal: planeNormal(y, r), offset });
     panel.append(
       mirror,
-      numberRow('Offset (mm)', { min: -200, max: 200, step: 1 }, plane.offset * 100, (mm) =>
-        set(yaw, roll, mm / 100),
+      numberRow(
+        'Offset (mm)',
+        { min: -200, max: 200, step: 1 },
+        plane.offset * 100,
+        (mm) => set(yaw, roll, mm / 100),
+        events.say,
       ),
-      numberRow('Yaw (°)', { min: -30, max: 30, step: 0.5 }, yaw * DEG, (d) =>
-        set(d / DEG, roll, plane.offset),
+      numberRow(
+        'Yaw (°)',
+        { min: -30, max: 30, step: 0.5 },
+        yaw * DEG,
+        (d) => set(d / DEG, roll, plane.offset),
+        events.say,
       ),
-      numberRow('Roll (°)', { min: -30, max: 30, step: 0.5 }, roll * DEG, (d) =>
-        set(yaw, d / DEG, plane.offset),
+      numberRow(
+        'Roll (°)',
+        { min: -30, max: 30, step: 0.5 },
+        roll * DEG,
+        (d) => set(yaw, d / DEG, plane.offset),
+        events.say,
       ),
     );
     const fit = document.createElement('div');

@@ -72,6 +72,42 @@ function slerpDir(a: Vec3, b: Vec3, t: number): Vec3 {
   return add3(scale3(a, ka), scale3(bb, kb));
 }
 
+/** An axis-aligned box (world units). */
+export interface Bounds {
+  min: Vec3;
+  max: Vec3;
+}
+
+/** The view that frames `bounds` as `home` frames `reference` (the built-in head in the default
+ *  view: the head fits below the toolbar with a margin): the same direction, the target at the
+ *  same place relative to the box, the distance scaled so that the box's extent on screen fits
+ *  where the reference's does: its height by the reference's height, its width by the
+ *  reference's width or, when wider, by the room the view's `aspect` (width / height) leaves
+ *  beside it at the same fill. The extents are the boxes' sides projected on the camera's up and
+ *  right axes (world y up). `reference` itself gives `home`. */
+export function frameBounds(
+  bounds: Bounds,
+  reference: Bounds,
+  home: CameraView,
+  aspect = 1,
+): CameraView {
+  const forward = normalize3(sub3(home.target, home.position));
+  let right = cross3(forward, [0, 1, 0]);
+  right = len3(right) > 1e-9 ? normalize3(right) : [1, 0, 0];
+  const up = cross3(right, forward);
+  const extent = (b: Bounds, axis: Vec3) =>
+    [0, 1, 2].reduce((sum, a) => sum + Math.abs(axis[a]) * (b.max[a] - b.min[a]), 0);
+  const hRef = extent(reference, up);
+  const wRef = Math.max(extent(reference, right), hRef * (aspect > 0 ? aspect : 1));
+  let s = 0;
+  if (hRef > 0) s = Math.max(s, extent(bounds, up) / hRef);
+  if (wRef > 0) s = Math.max(s, extent(bounds, right) / wRef);
+  if (!(s > 0 && Number.isFinite(s))) s = 1;
+  const centre = (b: Bounds): Vec3 => scale3(add3(b.min, b.max), 0.5);
+  const target = add3(centre(bounds), scale3(sub3(home.target, centre(reference)), s));
+  return { target, position: add3(target, scale3(sub3(home.position, home.target), s)) };
+}
+
 /** Whether two views are the same within `eps` world units. */
 export function sameView(a: CameraView, b: CameraView, eps = 1e-6): boolean {
   return len3(sub3(a.position, b.position)) <= eps && len3(sub3(a.target, b.target)) <= eps;
@@ -82,6 +118,11 @@ const sub3 = (a: Vec3, b: Vec3): Vec3 => [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
 const scale3 = (a: Vec3, k: number): Vec3 => [a[0] * k, a[1] * k, a[2] * k];
 const dot3 = (a: Vec3, b: Vec3): number => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 const len3 = (a: Vec3): number => Math.sqrt(dot3(a, a));
+const cross3 = (a: Vec3, b: Vec3): Vec3 => [
+  a[1] * b[2] - a[2] * b[1],
+  a[2] * b[0] - a[0] * b[2],
+  a[0] * b[1] - a[1] * b[0],
+];
 const lerp3 = (a: Vec3, b: Vec3, t: number): Vec3 => [
   a[0] + (b[0] - a[0]) * t,
   a[1] + (b[1] - a[1]) * t,
