@@ -3,6 +3,7 @@
 // (the curly preset's values), printing growth time (roots, strands, detail, keeping points
 // outside the head), points, and the segments or segment midpoints inside the head (exact SDF).
 //   npx tsx scripts/bench-detail.ts [strands]     (default: every root, 29,948)
+
 import { readFileSync } from 'node:fs';
 import { presetSession } from '../web/cli/presetSession';
 import { growSessionHair } from '../web/export/growSession';
@@ -10,12 +11,13 @@ import { Head } from '../web/head/head';
 import type { HairDetail } from '../web/model/detail';
 import { gridForSession } from '../web/model/grid';
 import { CURLY_DETAIL } from '../web/model/presets';
+import { hangLength } from '../web/model/session';
 import { loadSolverEngine } from '../web/solver/wasmEngine';
 
 const wasmBinary = new Uint8Array(readFileSync('web/generated/hairsolver.wasm'));
 const head = Head.builtin();
 const base = presetSession('default', head, '25k', Number(process.argv[2] ?? 0));
-const grid = gridForSession(base.grid, base.curves, undefined, base.growth.maxLength);
+const grid = gridForSession(base.grid, base.curves, undefined, hangLength(base));
 const cases: Array<[string, HairDetail | undefined]> = [
   ['none', undefined],
   ['curl', { curl: CURLY_DETAIL.curl }],

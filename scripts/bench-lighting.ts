@@ -9,6 +9,7 @@
 // apart), and how far the new output is from the old: mean and 99th percentile of |Δ| of the
 // strands' transmittance and occlusion and of the head's transmittance.
 //   npx tsx scripts/bench-lighting.ts
+
 import { presetSession } from '../web/cli/presetSession';
 import { growSessionHair } from '../web/export/growSession';
 import { Head } from '../web/head/head';
@@ -16,6 +17,7 @@ import { KEY_LIGHT_DIRECTION } from '../web/lighting/keyLight';
 import { type HeadTriangles, voxelizeHead } from '../web/lighting/lightingKernels';
 import { ResultLighting } from '../web/lighting/resultLighting';
 import { gridForSession } from '../web/model/grid';
+import { hangLength } from '../web/model/session';
 import { singleNodeOptions } from '../web/solver/nodeThreads';
 import type { StrandArrays } from '../web/solver/protocol';
 import { loadSolverEngine } from '../web/solver/wasmEngine';
@@ -331,7 +333,7 @@ function timed<T>(f: () => T): [T, number] {
 
 const head = Head.builtin();
 const session = presetSession('default', head, '25k', 0);
-const spec = gridForSession('25k', session.curves, undefined, session.growth.maxLength);
+const spec = gridForSession('25k', session.curves, undefined, hangLength(session));
 const scalp = head.scalpMesh();
 const engine = await loadSolverEngine(singleNodeOptions());
 const grown = growSessionHair(engine, session, scalp, { grid: spec, solver: 'fast' });

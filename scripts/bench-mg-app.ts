@@ -13,7 +13,7 @@ import { presetSession } from '../web/cli/presetSession';
 import { Head } from '../web/head/head';
 import { packCurves } from '../web/model/curveSet';
 import { type GridPreset, gridForSession } from '../web/model/grid';
-import type { SessionState } from '../web/model/session';
+import { hangLength, type SessionState } from '../web/model/session';
 import { singleNodeOptions } from '../web/solver/nodeThreads';
 import type { GridSpec } from '../web/solver/protocol';
 import { loadSolverEngine } from '../web/solver/wasmEngine';
@@ -49,7 +49,7 @@ for (const grid of grids) {
   const after = presetSession('default', head, grid, 0);
   const before = { ...after, curves: after.curves.slice(0, -1) };
   const [b, a] = [`${dir}/${grid}-before.txt`, `${dir}/${grid}-after.txt`];
-  const spec = gridForSession(grid, after.curves, undefined, after.growth.maxLength); // both on the whole preset's grid
+  const spec = gridForSession(grid, after.curves, undefined, hangLength(after)); // both on the whole preset's grid
   await write(before, spec, b);
   await write(after, spec, a);
   for (const build of builds) {

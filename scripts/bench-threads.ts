@@ -8,11 +8,13 @@
 //    250k), BENCH_ROUNDS alternating rounds (default 2), best of BENCH_REPEAT growths per
 //    engine: one JSON line per module and the speedups (BENCH_ROUNDS=0: no growth part).
 // BENCH_THREADS=N (default: min(4, logical cores)).
+
 import { availableParallelism } from 'node:os';
 import { presetSession } from '../web/cli/presetSession';
 import { growSessionHair } from '../web/export/growSession';
 import { Head } from '../web/head/head';
 import { type GridPreset, gridForPreset, gridForSession } from '../web/model/grid';
+import { hangLength } from '../web/model/session';
 import {
   singleNodeOptions,
   stopThreadWorkers,
@@ -72,7 +74,7 @@ async function solveOnce(load: LoadOptions, gridName: GridPreset) {
   const engine = await loadSolverEngine(load);
   try {
     const hair = growSessionHair(engine, s, head.scalpMesh(), {
-      grid: gridForSession(gridName, s.curves, undefined, s.growth.maxLength),
+      grid: gridForSession(gridName, s.curves, undefined, hangLength(s)),
       solver: 'fast',
       maxStrands: 1,
     });

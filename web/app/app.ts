@@ -8,7 +8,7 @@ import { Head } from '../head/head';
 import { indexedDbHeadStore } from '../head/headStore';
 import { gridForPreset, gridForSession } from '../model/grid';
 import { applyPreset } from '../model/presets';
-import { DEFAULT_GROWTH, emptySession } from '../model/session';
+import { DEFAULT_GROWTH, emptySession, hangLength } from '../model/session';
 import { buildCurvePanel } from '../ui/curvePanel';
 import { buildDetailPanel, type DetailPanel } from '../ui/detailPanel';
 import { buildDisplayToggles } from '../ui/displayToggles';
@@ -79,7 +79,7 @@ export function startApp(): void {
   const quality = new QualityControl(hairView, viewer);
   const hair = new HairPresenter(viewer, hairView, line, initial.hairColor);
   const bridge = new SolverBridge(editor, {
-    grid: gridForSession(initial.grid, initial.curves, undefined, initial.growth.maxLength),
+    grid: gridForSession(initial.grid, initial.curves, undefined, hangLength(initial)),
     solver: opts.solver,
     scalp: head.scalpMesh(),
     headBounds: () => heads.gridBounds,

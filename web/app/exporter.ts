@@ -1,10 +1,12 @@
 // "Export": runs one export in its own worker (the page never freezes), shows progress on the
 // status line and downloads the file. Waits for a running solve to finish first, so the file
 // holds the converged hair of the session as it is. The PNG is drawn by the viewer.
+
 import type { Editor } from '../editor/editor';
 import type { FromExportWorker } from '../export/exportProtocol';
 import { EXPORT_FILE_NAMES, type ExportFormat, type ExportHead } from '../export/types';
 import { gridForSession } from '../model/grid';
+import { hangLength } from '../model/session';
 import { parseSession } from '../model/sessionFile';
 import type { ScalpMesh, SolverName } from '../solver/protocol';
 
@@ -114,7 +116,7 @@ export class Exporter {
               parsed.value.grid,
               parsed.value.curves,
               this.d.headBounds?.(),
-              parsed.value.growth.maxLength,
+              hangLength(parsed.value),
             ),
             solver: this.d.solver,
             scalp: this.d.scalp(),

@@ -5,7 +5,7 @@
 import type { Editor, EditorChange } from '../editor/editor';
 import { packCurves, packHairOptions } from '../model/curveSet';
 import { gridForSession, sameGrid } from '../model/grid';
-import { newCurveExtends, type SessionState, type Viewpoint } from '../model/session';
+import { hangLength, newCurveExtends, type SessionState, type Viewpoint } from '../model/session';
 import type { Vec3 } from '../model/vec3';
 import type { GridSpec, ScalpMesh, SolverErrorKind, SolverName } from '../solver/protocol';
 import { type SolveResult, SolverClient } from '../solver/solverClient';
@@ -95,7 +95,7 @@ export class SolverBridge {
   /** The grid the current session needs: its curves and the head (gridForSession). */
   private sessionGrid(): GridSpec {
     const s = this.editor.session;
-    return gridForSession(s.grid, s.curves, this.opts.headBounds?.(), s.growth.maxLength);
+    return gridForSession(s.grid, s.curves, this.opts.headBounds?.(), hangLength(s));
   }
 
   /** Another head (a loaded mesh, a turn of it, the built-in one), with its scalp mask: the

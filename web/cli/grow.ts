@@ -23,7 +23,7 @@ import { exportedCounts } from '../export/strandsForExport';
 import { EXPORT_FORMATS, type ExportFormat, type ExportHead } from '../export/types';
 import { formatFromFileName, writeExport } from '../export/writeExport';
 import { GRID_PRESETS, type GridPreset, gridForSession, isGridPreset } from '../model/grid';
-import type { SessionState } from '../model/session';
+import { hangLength, type SessionState } from '../model/session';
 import { type HeadFileData, readSessionFile } from '../model/sessionFile';
 import { decodeSessionLink } from '../model/sessionLink';
 import { SolverError } from '../solver/engine';
@@ -274,7 +274,7 @@ export async function runGrow(
     const t0 = performance.now();
     let lastLine = t0;
     hair = growSessionHair(engine, session, scalp, {
-      grid: gridForSession(preset, session.curves, bounds, session.growth.maxLength),
+      grid: gridForSession(preset, session.curves, bounds, hangLength(session)),
       solver: args.solver,
       ...(args.strands !== null ? { maxStrands: args.strands } : {}),
       // between solver slices: progress on stderr now and then, and the time cap

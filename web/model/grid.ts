@@ -79,7 +79,8 @@ export function gridForSession(
    *  volume also holds the head above the box's floor with the built-in head's room around it
    *  (HEAD_ROOM), so long hair on a bigger head has space. */
   headBounds: { min: Vec3; max: Vec3 } | undefined,
-  /** The session's growth.maxLength (world units; at most MAX_HAIR_LENGTH is held). */
+  /** How far hair may hang below the scalp (session.ts hangLength: the session's maximum length
+   *  with natural fall, 0 without; at most MAX_HAIR_LENGTH is held). */
   maxLength: number,
 ): GridSpec {
   const g = gridForPreset(preset);

@@ -148,6 +148,13 @@ export function newCurveExtends(s: Pick<SessionState, 'fall'>): boolean {
   return !s.fall;
 }
 
+/** How far hair may hang below the scalp, for the bounding volume (model/grid.ts
+ *  gridForSession): with natural fall, hair no curve governs grows to the maximum length; without
+ *  it (the paper's method) the curves alone decide, and the volume is what it always was. */
+export function hangLength(s: Pick<SessionState, 'fall' | 'growth'>): number {
+  return s.fall ? s.growth.maxLength : 0;
+}
+
 /** A new ponytail's tightness: the default of protocol.ts CURVE_PARAMS. */
 export const DEFAULT_TIGHTNESS: number = CURVE_PARAMS.ponytail[0].default;
 

@@ -40,7 +40,7 @@ import {
   type HairDetail,
   LENGTH_JITTER,
 } from './detail';
-import { BOX_MAX, BOX_MIN, type GridPreset, isGridPreset, MAX_HAIR_LENGTH } from './grid';
+import { BOX_MAX, BOX_MIN, type GridPreset, isGridPreset } from './grid';
 import type { MirrorPlane } from './mirror';
 import type { PonytailCircle } from './ponytailGeometry';
 import { POSITION_SCALE, toGridInt, unitNormal } from './quantize';
@@ -637,7 +637,7 @@ const GROWTH_RULES: Record<keyof GrowthParams, { min: number; max: number; integ
   seed: { min: 0, max: 2 ** 32 - 1, integer: true },
   stepFraction: { min: 0.05, max: 4 },
   minMagnitude: { min: 0, max: 1 },
-  maxLength: { min: 0.01, max: MAX_HAIR_LENGTH },
+  maxLength: { min: 0.01, max: 100 },
   maxSegments: { min: 1, max: L.maxSegments, integer: true },
   maxStrands: { min: 0, max: L.maxStrands, integer: true },
 };
