@@ -33,16 +33,18 @@
 //       inside (rho <= R), target = unit(a + s (rho / R) e) with s = (r_k+1 - r_k) / axial
 //       length -- the scaled meridian, so a strand keeps its relative place rho / R and the
 //       bunch keeps its round shape and fills the surface; in the shell, target = unit(a +
-//       (s - kHold (rho - R) / shell) e), an inward pull back into the surface. A grid point
-//       in two frusta (a bent spine) gets both; merging averages them.
+//       (s - kPonytailHold (rho - R) / shell) e), an inward pull back into the surface. A grid
+//       point in two frusta (a bent spine) gets both; merging averages them.
 //   (2) blue: as for 0.
 //   (3) green, the funnel: the paper's centripetal ring made solid and extended from C1's plane
 //       back to the scalp: every grid point with -L <= w <= 0 (L = the axial distance from C1
-//       back to the spine's first point, plus a step) and rho <= F(w) = max(1.9 r, r + 2 d) +
-//       kFunnelSlope (-w), target = tightness * unit(q - g), q = c_1 + r (rho / F(w)) e -- the
-//       point of C1's disc at the same relative radius. Hair flowing into the funnel is drawn
-//       into C1 from every side and arrives at the same relative place, so the hair of a patch
-//       of scalp fills the disc instead of passing C1 as a flat sheet.
+//       back to the spine point farthest behind it, plus a step) and rho <= F(w) = max(1.9 r, r + 2
+//       d) + kPonytailFunnelSlope (-w), target = tightness * unit(q - g), q = c_1 + r sqrt(rho /
+//       F(w)) e (along a_1 when g is within d / 4 of q) -- a point of C1's disc at the same
+//       angle; the square root spreads the hair, which enters mostly near the axis, over the
+//       whole disc (with rho / F it filled about its inner half). Hair flowing into the funnel
+//       is drawn into C1 from every side, so the hair of the scalp around the tail's base fills
+//       the disc instead of passing C1 as a flat sheet.
 #pragma once
 
 #include <Eigen/Core>
