@@ -21,7 +21,10 @@ enum DividingParam : size_t {
   kDividingParamCount
 };
 
-// Ponytails (S4.6): tightness (centripetal magnitude). Then the circle count m and 7 per circle.
-enum PonytailParam : size_t { kPonytailTightness, kPonytailParamCount };
+// Ponytails (S4.6): tightness (centripetal magnitude), gather (the constraint version: 0 the
+// paper's thin tubes and ring, 1 the gathered tail; ponytail_constraints.hpp). Then the circle
+// count m and 7 per circle. gather is optional: a block without it (the layout before gather
+// existed: tightness, m, 7 m) reads as gather = 0; the two layouts differ in size mod 7.
+enum PonytailParam : size_t { kPonytailTightness, kPonytailGather, kPonytailParamCount };
 
 }  // namespace hairsketch

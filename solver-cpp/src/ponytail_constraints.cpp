@@ -46,15 +46,20 @@ CircleCoords circleCoords(const PonytailCircle& c, const Eigen::Vector3d& q, dou
 }  // namespace
 
 Status parsePonytailParams(const double* p, size_t count, PonytailParams& out) {
-  constexpr size_t S = kPonytailParamCount;  // scalars, then the circle count m
-  if (count < S + 1)
-    return Status::Error(StatusCode::InvalidInput,
-                         "ponytail parameter block needs [tightness, circles, ...], has " +
-                             std::to_string(count) + " numbers");
+  // The layout (ponytail_constraints.hpp): 2 + 7 m numbers without gather, 3 + 7 m with it.
+  static_assert(kPonytailTightness == 0 && kPonytailGather == 1 && kPonytailParamCount == 2,
+                "the two ponytail layouts below assume tightness, gather");
+  if (count < 2)
+    return Status::Error(
+        StatusCode::InvalidInput,
+        "ponytail parameter block needs [tightness, (gather,) circles, ...], has " +
+            std::to_string(count) + " numbers");
   for (size_t i = 0; i < count; ++i)
     if (!std::isfinite(p[i]))
       return Status::Error(StatusCode::NonFinite,
                            "ponytail parameter " + std::to_string(i) + " is not finite");
+  const bool hasGather = count >= 3 && (count - 3) % 7 == 0;
+  const size_t S = hasGather ? 2 : 1;  // scalars, then the circle count m
   const double m = p[S];
   if (!(m >= 1) || std::floor(m) != m || m > 1e6)
     return Status::Error(StatusCode::InvalidInput,
@@ -65,6 +70,13 @@ Status parsePonytailParams(const double* p, size_t count, PonytailParams& out) {
                          "ponytail parameter block has " + std::to_string(count) +
                              " numbers, expected " + std::to_string(S + 1) + " + 7 * " +
                              std::to_string(circles) + " = " + std::to_string(S + 1 + 7 * circles));
+  out.gather = 0;
+  if (hasGather) {
+    const double g = p[kPonytailGather];
+    if (g != 0 && g != 1)
+      return Status::Error(StatusCode::InvalidInput, "ponytail gather must be 0 or 1");
+    out.gather = int(g);
+  }
   out.tightness = p[kPonytailTightness];
   out.circles.resize(circles);
   for (size_t k = 0; k < circles; ++k) {
@@ -112,9 +124,90 @@ size_t ponytailBlueStart(const double* spine, size_t n, const PonytailParams& pr
   return best;
 }
 
+namespace {
+
+// gather = 1 (ponytail_constraints.hpp): the body, the blue spine part and the funnel.
+void appendGatheredConstraints(const Grid& g, const double* spine, size_t n, bool extend,
+                               const PonytailParams& prm, std::vector<Constraint>& out,
+                               std::vector<ConstraintColour>* colours) {
+  const double tube = 0.5 * std::sqrt(3.0) * g.step;
+  const double tiny = 1e-9 * g.step;
+  const auto& C = prm.circles;
+  // (1) purple, the body: the frusta between consecutive circles (a lone circle: its disc).
+  for (size_t k = 0; k < C.size(); ++k) {
+    const PonytailCircle& A = C[k];
+    const PonytailCircle& B = C[k + 1 < C.size() ? k + 1 : k];
+    const Eigen::Vector3d seg = B.centre - A.centre;
+    const double len2 = seg.squaredNorm();
+    if (k + 1 == C.size() && C.size() > 1) break;
+    const double reach = std::max(A.radius, B.radius) * 1.5 + tube;
+    const Eigen::Vector3d mid = 0.5 * (A.centre + B.centre);
+    forPointsInBox(
+        g, mid, 0.5 * std::sqrt(len2) + reach, [&](int i, int j, int kk, const Eigen::Vector3d& q) {
+          double t = 0;
+          if (len2 > tiny * tiny) {
+            t = (q - A.centre).dot(seg) / len2;
+            if (t < 0 || t > 1) return;
+          }
+          const Eigen::Vector3d c = A.centre + t * seg;
+          const Eigen::Vector3d a = ((1 - t) * A.axis + t * B.axis).normalized();
+          const double R = (1 - t) * A.radius + t * B.radius;
+          const Eigen::Vector3d rel = q - c;
+          const double w = rel.dot(a);
+          if (len2 <= tiny * tiny && std::abs(w) > 0.5 * g.step) return;
+          const Eigen::Vector3d radial = rel - w * a;
+          const double rho = radial.norm();
+          const double shell = std::max(tube, 0.5 * R);
+          if (rho > R + shell) return;
+          const Eigen::Vector3d e =
+              rho > tiny ? Eigen::Vector3d(radial / rho) : Eigen::Vector3d::Zero();
+          const double axial = seg.dot(a);
+          const double slope = std::abs(axial) > 1e-12 ? (B.radius - A.radius) / axial : 0.0;
+          const double radialPart =
+              rho <= R ? slope * rho / R : slope - kPonytailHold * (rho - R) / shell;
+          out.push_back({g.index(i, j, kk), (a + radialPart * e).normalized()});
+          if (colours) colours->push_back(ConstraintColour::Purple);
+        });
+  }
+  // (2) blue, the spine from near the last circle on.
+  const size_t start = ponytailBlueStart(spine, n, prm);
+  if (n > start + 1) appendStreamConstraints(g, spine + 3 * start, n - start, extend, out, colours);
+  // (3) green, the funnel from C1 back to the scalp.
+  const PonytailCircle& c1 = C.front();
+  double back = 0;  // L: how far back (along -a) the funnel reaches
+  for (size_t i = 0; i < n; ++i) {
+    const Eigen::Vector3d p(spine[3 * i], spine[3 * i + 1], spine[3 * i + 2]);
+    back = std::max(back, -(p - c1.centre).dot(c1.axis));
+  }
+  back += g.step;
+  const double mouth = std::max(kPonytailRingOuter * c1.radius, c1.radius + 2 * g.step);
+  const double widest = mouth + kPonytailFunnelSlope * back;
+  forPointsInBox(g, c1.centre - 0.5 * back * c1.axis, std::hypot(0.5 * back, widest),
+                 [&](int i, int j, int k, const Eigen::Vector3d& q) {
+                   const CircleCoords cc = circleCoords(c1, q, tiny);
+                   if (cc.w > 0 || cc.w < -back) return;
+                   const double F = mouth + kPonytailFunnelSlope * -cc.w;
+                   if (cc.rho > F) return;
+                   const Eigen::Vector3d aim = c1.centre + c1.radius * std::sqrt(cc.rho / F) * cc.e;
+                   const Eigen::Vector3d d = aim - q;
+                   const double dn = d.norm();
+                   // on C1's disc itself: along the axis
+                   const Eigen::Vector3d dir =
+                       dn > 0.25 * g.step ? Eigen::Vector3d(d / dn) : c1.axis;
+                   out.push_back({g.index(i, j, k), prm.tightness * dir});
+                   if (colours) colours->push_back(ConstraintColour::Green);
+                 });
+}
+
+}  // namespace
+
 void appendPonytailConstraints(const Grid& g, const double* spine, size_t n, bool extend,
                                const PonytailParams& prm, std::vector<Constraint>& out,
                                std::vector<ConstraintColour>* colours) {
+  if (prm.gather == 1 && !prm.circles.empty()) {
+    appendGatheredConstraints(g, spine, n, extend, prm, out, colours);
+    return;
+  }
   const double tube = 0.5 * std::sqrt(3.0) * g.step;
   const double tiny = 1e-9 * g.step;
   const std::vector<double> slope = ponytailRadiusSlopes(prm);
