@@ -33,7 +33,7 @@ async function write(session: SessionState, spec: GridSpec, file: string) {
   try {
     engine.setGrid(spec, 100, 'fast');
     engine.setScalp(head.scalpMesh());
-    engine.setCurves(packCurves(session.curves));
+    engine.setCurves(packCurves(session.curves, null, !!session.fall));
     const c = engine.constraints();
     const lines = [spec.dims.join(' ')];
     for (let e = 0; e < c.index.length; e++)

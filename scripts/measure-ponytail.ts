@@ -8,6 +8,7 @@
 // --gather N puts the ponytail parameter `gather` = N into every ponytail block (after
 // tightness, solver-cpp/src/ponytail_constraints.hpp) before the solver sees it; without it the
 // blocks are the session's own.
+
 import { readFileSync } from 'node:fs';
 import { presetSession } from '../web/cli/presetSession';
 import { growSessionHair } from '../web/export/growSession';
@@ -15,6 +16,7 @@ import { Head } from '../web/head/head';
 import { type GridPreset, gridForSession } from '../web/model/grid';
 import type { PresetName } from '../web/model/presets';
 import type { PonytailCurve } from '../web/model/session';
+import { hangLength } from '../web/model/session';
 import type { CurveSet, StrandArrays } from '../web/solver/protocol';
 import { loadSolverEngine } from '../web/solver/wasmEngine';
 
@@ -86,8 +88,16 @@ function measure(c: PonytailCurve, s: StrandArrays, at = 0.5, window = 2.5) {
       if (i >= 0 && i < N && j >= 0 && j < N) cells[j * N + i]++;
     }
     const sym = (k: number) => (k === 0 ? '.' : k < 5 ? ':' : k < 20 ? 'o' : k < 80 ? 'O' : '#');
-    console.log(`  u (across) = ${u.map((x) => x.toFixed(2))}, v (down the page) = ${v.map((x) => x.toFixed(2))}, +-3 r`);
-    for (let j = 0; j < N; j++) console.log(`  |${cells.slice(j * N, j * N + N).map(sym).join('')}|`);
+    console.log(
+      `  u (across) = ${u.map((x) => x.toFixed(2))}, v (down the page) = ${v.map((x) => x.toFixed(2))}, +-3 r`,
+    );
+    for (let j = 0; j < N; j++)
+      console.log(
+        `  |${cells
+          .slice(j * N, j * N + N)
+          .map(sym)
+          .join('')}|`,
+      );
   }
   const m = pts.length;
   const mx = pts.reduce((t, p) => t + p[0], 0) / m;
@@ -163,7 +173,7 @@ async function main() {
       engine.setCurves = (cs: CurveSet) => set(withGather(cs, gather));
     }
     const scalp = head.scalpMesh();
-    const g = gridForSession(grid, session.curves);
+    const g = gridForSession(grid, session.curves, undefined, hangLength(session));
     const hair = growSessionHair(engine, session, scalp, { grid: g, solver: 'fast' });
     const tails = session.curves.filter((c): c is PonytailCurve => c.type === 'ponytail');
     tails.forEach((c, k) => {

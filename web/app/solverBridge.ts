@@ -129,7 +129,7 @@ export class SolverBridge {
       this.each((l) => l.gridChanged?.(grid));
     }
     this.client.request(
-      packCurves(s.curves),
+      packCurves(s.curves, null, !!s.fall),
       s.growth,
       packHairOptions(s, s.curves),
       'full',
@@ -165,7 +165,7 @@ export class SolverBridge {
     const cap = this.lightCap(s);
     const curves = [...s.curves, draft];
     this.client.request(
-      packCurves(curves),
+      packCurves(curves, null, !!s.fall),
       { ...s.growth, maxStrands: cap },
       packHairOptions(s, curves),
       'preview',

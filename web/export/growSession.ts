@@ -65,7 +65,7 @@ export function growSessionHair(
   report('solve', 0);
   engine.setGrid(opts.grid, GROW_OMEGA, opts.solver);
   engine.setScalp(scalp);
-  const curves = packCurves(session.curves);
+  const curves = packCurves(session.curves, null, !!session.fall);
   const options = packHairOptions(session, session.curves);
   engine.setDetail?.(options.detail);
   engine.setFall?.(options.fall);

@@ -38,14 +38,21 @@ function variableBlock(c: StyleCurve): number[] {
   }
 }
 
-/** The parameter block of a curve (protocol.ts CurveSet.params). */
-export function curveParams(c: StyleCurve): number[] {
-  return [...curveScalars(c), ...variableBlock(c)];
+/** The parameter block of a curve (protocol.ts CurveSet.params). A gathered ponytail (natural
+ *  fall: the tail a solid of revolution fed by a funnel, solver-cpp/src/ponytail_constraints.hpp)
+ *  carries its gather flag (1) after its tightness; without it the block is the paper's. */
+export function curveParams(c: StyleCurve, gather = false): number[] {
+  const scalars = curveScalars(c);
+  if (c.type === 'ponytail' && gather) scalars.push(1);
+  return [...scalars, ...variableBlock(c)];
 }
 
+/** The session's curves as the solver takes them; `fall` (the session's natural fall) gathers
+ *  ponytails into round tails. */
 export function packCurves(
   curves: readonly StyleCurve[],
   extras: ExtraConstraints | null = null,
+  fall = false,
 ): CurveSet {
   let total = 0;
   for (const c of curves) total += c.points.length;
@@ -54,7 +61,7 @@ export function packCurves(
   const kinds = new Uint8Array(curves.length);
   const extend = new Uint8Array(curves.length);
   const paramStart = new Uint32Array(curves.length + 1);
-  const blocks = curves.map(curveParams);
+  const blocks = curves.map((c) => curveParams(c, fall));
   let nParams = 0;
   for (const b of blocks) nParams += b.length;
   const params = new Float64Array(nParams);
