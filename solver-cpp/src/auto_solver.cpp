@@ -24,6 +24,11 @@ Status AutoSolver::setGrid(const Grid& grid, double omega) {
   return inner_->setGrid(grid, omega);
 }
 
+Status AutoSolver::setPrior(double beta2, const Field& G) {
+  if (!inner_) return Status::Error(StatusCode::NotReady, "setPrior before setGrid");
+  return inner_->setPrior(beta2, G);
+}
+
 Status AutoSolver::setConstraints(const ConstraintSet& next) {
   if (!inner_) return Status::Error(StatusCode::NotReady, "setConstraints before setGrid");
   return inner_->setConstraints(next);

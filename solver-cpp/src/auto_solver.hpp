@@ -22,6 +22,7 @@ class AutoSolver : public FieldSolver {
   // The estimate of the solver this grid gets.
   double estimateBytes(const Grid& grid) const override;
   void setProgressHook(ProgressHook hook) override;
+  Status setPrior(double beta2, const Field& G) override;
   Status setConstraints(const ConstraintSet& next) override;
   bool forgetWarmStart() override { return inner_ ? inner_->forgetWarmStart() : false; }
   void deferPreconditionerUpdate() override {

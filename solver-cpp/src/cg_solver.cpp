@@ -18,10 +18,10 @@ double msSince(Clock::time_point t0) {
 
 // Per grid point: 9 n x 3 double fields alive in solve() (previous_, work_, B, X, R, Z, P, Q
 // and the caller's T: 216 bytes), 5 double vectors (invCount_, biDiag_, penalty_, diag, invDiag:
-// 40 bytes), 8 bytes of penaltyDiagonal's temporary, and 24 of slack (a warm start copy):
-// 288 bytes per point, plus 1 MB (Lanczos tridiagonals, constraint set).
+// 40 bytes), 8 bytes of penaltyDiagonal's temporary, 24 of slack (a warm start copy) and 24 of
+// the prior's beta^2 G: 312 bytes per point, plus 1 MB (Lanczos tridiagonals, constraint set).
 double CgSolver::estimateBytes(const Grid& grid) const {
-  return bytesOf(double(grid.nx) * double(grid.ny) * double(grid.nz), 288) + double(1 << 20);
+  return bytesOf(double(grid.nx) * double(grid.ny) * double(grid.nz), 312) + double(1 << 20);
 }
 
 Status CgSolver::setGrid(const Grid& grid, double omega) {
@@ -62,6 +62,8 @@ Status CgSolver::setGrid(const Grid& grid, double omega) {
         biDiag_[p] = s;
       }
   penalty_ = Eigen::VectorXd::Zero(n);
+  beta2_ = 0;
+  priorRhs_.resize(0, 3);
   set_.clear();
   previous_.resize(0, 3);
   hasGrid_ = true;
@@ -82,9 +84,27 @@ Status CgSolver::setConstraints(const ConstraintSet& next) {
   stats_.removed = int(d.removed.size());
   stats_.changed = int(d.changed.size());
   const auto t0 = Clock::now();
-  penalty_ = penaltyDiagonal(grid_, next, omega_);
   set_ = next;
+  rebuildPenalty();
   stats_.setupMs = msSince(t0);
+  return Status::Ok();
+}
+
+void CgSolver::rebuildPenalty() {
+  penalty_ = penaltyDiagonal(grid_, set_, omega_);
+  if (beta2_ != 0) penalty_.array() += beta2_;
+}
+
+Status CgSolver::setPrior(double beta2, const Field& G) {
+  if (!hasGrid_) return Status::Error(StatusCode::NotReady, "setPrior before setGrid");
+  Status s = validatePrior(grid_, beta2, G);
+  if (!s.ok()) return s;
+  beta2_ = beta2;
+  if (beta2 != 0 && G.rows() > 0)
+    priorRhs_ = beta2 * G;
+  else
+    priorRhs_.resize(0, 3);
+  rebuildPenalty();
   return Status::Ok();
 }
 
@@ -187,13 +207,16 @@ Status CgSolver::solve(Field& T) {
   stats_.iterations = 0;
   stats_.residual = 0;
   errorEstimate_ = 0;
-  if (set_.empty()) {  // D^T D alone is singular; the field is zero by definition.
+  if (set_.empty() && priorRhs_.rows() == 0) {
+    // No right-hand side: the field is zero (by definition without a prior: D^T D alone is
+    // singular).
     T = Field::Zero(n, 3);
     previous_ = T;
     stats_.solveMs = msSince(t0);
     return Status::Ok();
   }
-  const Field B = assembleRhs(grid_, set_, omega_);
+  Field B = assembleRhs(grid_, set_, omega_);
+  if (priorRhs_.rows() > 0) B += priorRhs_;
   const Eigen::RowVector3d bNorm = B.colwise().norm();
   const Eigen::VectorXd diag = biDiag_ + penalty_;
   const Eigen::VectorXd invDiag = diag.cwiseInverse();

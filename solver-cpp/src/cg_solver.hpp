@@ -1,4 +1,5 @@
-// Jacobi-preconditioned conjugate gradient on M = D^T D + omega^2 S (SPEC S2.3), matrix-free,
+// Jacobi-preconditioned conjugate gradient on M = D^T D + omega^2 S (+ beta^2 I with a prior;
+// SPEC S2.3, FieldSolver::setPrior), matrix-free,
 // the three components (x, y, z) solved together with one operator pass per iteration.
 //
 // Stopping (SOLVER-NOTES "CG stopping trap"): the omega^2 rows dominate ||b||, so a small
@@ -35,6 +36,9 @@ class CgSolver : public FieldSolver {
 
   Status setGrid(const Grid& grid, double omega) override;
   double estimateBytes(const Grid& grid) const override;
+  // beta^2 joins the penalty diagonal (and the Jacobi preconditioner), beta^2 G the right-hand
+  // side; the warm start is kept (it is dropped column by column when worse than zero).
+  Status setPrior(double beta2, const Field& G) override;
   Status setConstraints(const ConstraintSet& next) override;
   Status solve(Field& T) override;
   const SolveStats& stats() const override { return stats_; }
@@ -46,11 +50,13 @@ class CgSolver : public FieldSolver {
   // Estimated relative error bound of the last solve (max over components).
   double errorEstimate() const { return errorEstimate_; }
 
-  // Y = (D^T D + omega^2 S) X for X: n x 3. Same result as applyBiLaplacian(X) + penalty * X,
-  // with the neighbour weights precomputed (the hot loop of the solver).
+  // Y = (D^T D + omega^2 S + beta^2 I) X for X: n x 3. Same result as applyBiLaplacian(X) +
+  // penalty * X, with the neighbour weights precomputed (the hot loop of the solver).
   void applyOperator(const Field& X, Field& Y) const;
 
  private:
+  void rebuildPenalty();  // penalty_ from set_ and beta2_
+
   CgOptions options_;
   Grid grid_;
   double omega_ = kDefaultOmega;
@@ -58,7 +64,9 @@ class CgSolver : public FieldSolver {
   ConstraintSet set_;
   Eigen::VectorXd invCount_;  // 1 / |N(p)|
   Eigen::VectorXd biDiag_;    // diagonal of D^T D
-  Eigen::VectorXd penalty_;   // omega^2 on constrained points
+  Eigen::VectorXd penalty_;   // omega^2 on constrained points, + beta^2 everywhere
+  double beta2_ = 0;          // the prior's weight
+  Field priorRhs_;            // beta^2 G (empty: no prior right-hand side)
   Field previous_;            // last solution (warm start)
   Field work_;                // L = D X in applyOperator
   SolveStats stats_;

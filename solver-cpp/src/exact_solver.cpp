@@ -21,13 +21,14 @@ double msSince(std::chrono::steady_clock::time_point t0) {
 //                 colSuper) + 4 rows + 48 supernodes   after the analysis
 //   factor      = 8 (storedEntries + peakWorkEntries) + 4 n   the values, the update matrices
 //                 alive at once during a factorisation (symbolic count), the row map
-//   solve       = 136 n   rhs, field, permuted copy, refinement residual and M T (24 n each),
-//                 the penalty vector (8 n) of a refactorisation, 8 n slack
+//   solve       = 160 n   rhs, field, permuted copy, refinement residual and M T (24 n each),
+//                 the penalty vector (8 n) of a refactorisation, 8 n slack, the prior's
+//                 beta^2 G (24 n)
 // Before the analysis the factor is estimated from the dims: with a <= b <= c the box's sides,
 // storedEntries ~ 22 n sqrt(a b) (measured 0.8-1.0x of the symbolic count on cubes 10^3-80^3,
 // 2 x 2 x 2000, 4 x 4 x 3000, 12 x 30 x 40, 100 x 100 x 10) and peakWorkEntries ~ 0.6 of it.
 namespace {
-constexpr double kAnalysisBytesPerPoint = 1200, kSolveBytesPerPoint = 136;
+constexpr double kAnalysisBytesPerPoint = 1200, kSolveBytesPerPoint = 160;
 
 double heldBytes(double n, double rows, double supernodes) {
   return 316 * n + 4 * rows + 48 * supernodes;
@@ -93,8 +94,9 @@ double ExactSolver::estimateUpdateFlops(const std::vector<int>& gridPoints) cons
 }
 
 Status ExactSolver::refactor() {
-  Eigen::VectorXd penalty = Eigen::VectorXd::Zero(grid_.size());
-  for (const Constraint& c : current_) penalty[c.index] = omega_ * omega_;
+  // beta^2 = 0: exactly the penalties without a prior (0 + omega^2 = omega^2).
+  Eigen::VectorXd penalty = Eigen::VectorXd::Constant(grid_.size(), beta2_);
+  for (const Constraint& c : current_) penalty[c.index] += omega_ * omega_;
   Status st = factor_.factorize(M_, penalty);
   factored_.clear();
   modified_ = false;
@@ -119,7 +121,7 @@ Status ExactSolver::setConstraints(const ConstraintSet& next) {
   stats_.changed = int(diff.changed.size());
   current_ = next;
 
-  if (current_.empty()) {
+  if (current_.empty() && beta2_ == 0) {
     // Zero field by definition; D^T D alone is singular, so the factor keeps its last state.
     stats_.method = "zero";
     stats_.setupMs = msSince(t0);
@@ -180,17 +182,46 @@ Status ExactSolver::setConstraints(const ConstraintSet& next) {
   return st;
 }
 
+Status ExactSolver::setPrior(double beta2, const Field& G) {
+  if (!hasGrid_) return Status::Error(StatusCode::NotReady, "exact: no grid");
+  Status v = validatePrior(grid_, beta2, G);
+  if (!v.ok()) return v;
+  const auto t0 = std::chrono::steady_clock::now();
+  if (beta2 != 0 && G.rows() > 0)
+    priorRhs_ = beta2 * G;
+  else
+    priorRhs_.resize(0, 3);
+  if (beta2 == beta2_) return Status::Ok();  // the matrix is unchanged
+  beta2_ = beta2;
+  stats_ = SolveStats();
+  // The factor holds the old beta^2: refactor now when a solve needs one (constraints, or a
+  // prior alone), else drop it so that the next constraints factor afresh.
+  Status st;
+  if (!current_.empty() || beta2_ != 0) {
+    stats_.method = "prior";
+    st = refactor();
+  } else {
+    factor_.invalidate();
+    factored_.clear();
+    modified_ = false;
+    stats_.method = "zero";
+  }
+  stats_.setupMs = msSince(t0);
+  return st;
+}
+
 Status ExactSolver::solve(Field& T) {
   if (!hasGrid_) return Status::Error(StatusCode::NotReady, "exact: no grid");
   const auto t0 = std::chrono::steady_clock::now();
-  if (current_.empty()) {
+  if (current_.empty() && priorRhs_.rows() == 0) {  // no right-hand side: the field is zero
     T = Field::Zero(grid_.size(), 3);
     stats_.solveMs = msSince(t0);
     return Status::Ok();
   }
   if (!factor_.valid())
     return Status::Error(StatusCode::NotPositiveDefinite, "exact: no valid factorisation");
-  const Field B = assembleRhs(grid_, current_, omega_);
+  Field B = assembleRhs(grid_, current_, omega_);
+  if (priorRhs_.rows() > 0) B += priorRhs_;
   T = B;
   factor_.solveInPlace(T);
   stats_.iterations = 0;
@@ -203,6 +234,7 @@ Status ExactSolver::solve(Field& T) {
     for (int it = 0; it < 3; ++it) {  // usually one step
       Field R = B - M_ * T;
       for (const Constraint& c : current_) R.row(c.index) -= w2 * T.row(c.index);
+      if (beta2_ != 0) R -= beta2_ * T;
       factor_.solveInPlace(R);
       T += R;
       stats_.iterations = it + 1;

@@ -6,7 +6,12 @@
 //   "refactor" refactorised (cheaper),         "rhs"     only targets changed (no factor work),
 //   "recover"  a downdate failed its pivot check (or refinement after updates did not settle)
 //              and M was refactorised from scratch,
-//   "zero"     no constraints: the field is zero (the factor is kept for the next edit).
+//   "zero"     no constraints and no prior: the field is zero (the factor is kept for the next
+//              edit),
+//   "prior"    setPrior refactorised M with the new beta^2.
+// With a prior (setPrior) the base matrix is D^T D + beta^2 I: beta^2 joins the diagonal of every
+// (re)factorisation and of the refinement's exact M; updates/downdates stay +-omega^2; with no
+// constraints the factor of the base matrix gives the prior's field.
 // After updates/downdates, solve() adds iterative refinement against the exact M (1-3 extra
 // solves; stats().iterations counts them, stats().residual is the last relative correction), so
 // the field equals that of a fresh factorisation to ~1e-12 however long the edit history.
@@ -55,6 +60,9 @@ class ExactSolver : public FieldSolver {
   Status setGrid(const Grid& grid, double omega) override;
   // From the dims before setGrid; from the symbolic count (analysedBytes) after it.
   double estimateBytes(const Grid& grid) const override;
+  // Refactors when beta2 changes (and a factor is needed); a new G alone changes only the
+  // right-hand side.
+  Status setPrior(double beta2, const Field& G) override;
   Status setConstraints(const ConstraintSet& next) override;
   Status solve(Field& T) override;
   const SolveStats& stats() const override { return stats_; }
@@ -77,7 +85,9 @@ class ExactSolver : public FieldSolver {
   Grid grid_;
   double omega_ = kDefaultOmega;
   bool hasGrid_ = false;
-  SparseMatrix M_;
+  SparseMatrix M_;  // D^T D (the prior's beta^2 I is added to the diagonal where M is used)
+  double beta2_ = 0;
+  Field priorRhs_;  // beta^2 G (empty: none)
   SupernodalFactor factor_;
   ConstraintSet current_;      // the constraint set of the next solve
   std::vector<int> factored_;  // grid points whose penalty is in the factor (sorted)

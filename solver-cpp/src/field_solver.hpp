@@ -1,8 +1,12 @@
-// One interface for every way of solving the field system (SPEC S2.3):
-//   (D^T D + omega^2 S) T = omega^2 S C.
+// One interface for every way of solving the field system (SPEC S2.3), with the optional weak
+// prior of a natural fall (hair_fall.hpp):
+//   (D^T D + omega^2 S + beta^2 I) T = omega^2 S C + beta^2 G,
+// the minimiser of E(T) = ||D T||^2 + omega^2 sum_{p in C} ||t_p - c_p||^2
+//                        + beta^2 sum_p ||t_p - g_p||^2   (fieldEnergy with the prior).
 // A solver is stateful: it caches whatever it has built (factor, hierarchy, previous field) and
 // is told the whole new constraint set on each edit; it works out the difference itself (S3.2).
-// Phases: setGrid (analyse) -> setConstraints (factorise / update / downdate) -> solve.
+// Phases: setGrid (analyse) -> setPrior (optional, rare: may rebuild / refactor) ->
+// setConstraints (factorise / update / downdate) -> solve.
 #pragma once
 
 #include <cstdint>
@@ -52,10 +56,22 @@ class FieldSolver {
   // call it.
   using ProgressHook = std::function<bool(const IterateProgress&)>;
   virtual void setProgressHook(ProgressHook hook) { hook_ = std::move(hook); }
+  // The prior: beta2 >= 0 and finite, G n x 3 and finite, or empty meaning zero; otherwise
+  // InvalidInput and nothing changes (NotReady before setGrid). beta2 = 0 (the default, and what
+  // setGrid restores) gives bit-identical fields to a solver that never had a prior. May be
+  // called again at any time (the head changed); the solver then rebuilds what depends on it
+  // (the direct solver refactors, the multigrid one rebuilds its coarse operators and starts its
+  // next solve cold). Constraints set before it are kept. This default accepts beta2 = 0 only.
+  virtual Status setPrior(double beta2, const Field& G) {
+    (void)G;
+    if (beta2 == 0) return Status::Ok();
+    return Status::Error(StatusCode::InvalidInput, name() + ": no prior term");
+  }
   // Replace the constraint set (normalised: sorted, unique, validated by the caller or here).
   virtual Status setConstraints(const ConstraintSet& next) = 0;
   // Solve for the field of the current constraints. T is resized to n x 3.
-  // With no constraints the field is zero by definition.
+  // With no constraints and no prior (beta2 = 0 or G = 0) the field is zero by definition; with
+  // a prior it is the prior's smooth fit (D^T D + beta^2 I) T = beta^2 G.
   virtual Status solve(Field& T) = 0;
   // Progressive solving: at most maxIterations more iterations, stopping once the estimated
   // relative field error is <= tolerance; T receives the current iterate. Direct solvers (and

@@ -1,5 +1,6 @@
 #include "field_system.hpp"
 
+#include <cmath>
 #include <vector>
 
 namespace hairsketch {
@@ -48,6 +49,23 @@ Field assembleRhs(const Grid& g, const ConstraintSet& set, double omega) {
   return B;
 }
 
+Field assembleRhs(const Grid& g, const ConstraintSet& set, double omega, double beta2,
+                  const Field& G) {
+  Field B = assembleRhs(g, set, omega);
+  if (beta2 != 0 && G.rows() > 0) B += beta2 * G;
+  return B;
+}
+
+Status validatePrior(const Grid& g, double beta2, const Field& G) {
+  if (!std::isfinite(beta2) || beta2 < 0)
+    return Status::Error(StatusCode::InvalidInput, "prior weight beta^2 must be finite and >= 0");
+  if (G.rows() != 0 && G.rows() != g.size())
+    return Status::Error(StatusCode::InvalidInput,
+                         "prior field must be empty or have one row per grid point");
+  if (!G.allFinite()) return Status::Error(StatusCode::InvalidInput, "prior field must be finite");
+  return Status::Ok();
+}
+
 Eigen::VectorXd penaltyDiagonal(const Grid& g, const ConstraintSet& set, double omega) {
   Eigen::VectorXd w = Eigen::VectorXd::Zero(g.size());
   for (const Constraint& c : set) w[c.index] = omega * omega;
@@ -60,6 +78,13 @@ double fieldEnergy(const Grid& g, const ConstraintSet& set, double omega, const 
   double e = DT.squaredNorm();
   for (const Constraint& c : set)
     e += omega * omega * (T.row(c.index).transpose() - c.target).squaredNorm();
+  return e;
+}
+
+double fieldEnergy(const Grid& g, const ConstraintSet& set, double omega, const Field& T,
+                   double beta2, const Field& G) {
+  double e = fieldEnergy(g, set, omega, T);
+  if (beta2 != 0) e += beta2 * (G.rows() > 0 ? Field(T - G).squaredNorm() : T.squaredNorm());
   return e;
 }
 
