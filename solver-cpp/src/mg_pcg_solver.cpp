@@ -53,7 +53,8 @@ void forRows(size_t rows, F&& fn) {
 // The peak is the larger of building the hierarchy and solving (n points, R = (nx+2)(ny+2)(nz+2)
 // padded fine rows, m_l points and s_l = prod_axis min(5, dim) stencil entries per row on coarse
 // level l, all in bytes):
-//   steady = 224 R   fine arrays (inv, diagK, w, invDiag, L, res: 80 R) + CG vectors (144 R)
+//   steady = 248 R   fine arrays (inv, diagK, w, invDiag, L, res: 80 R) + CG vectors (144 R)
+//                    + the prior's right-hand side beta^2 G (24 R)
 //          + sum_l (96 + 20 s_l) m_l   Galerkin CSR (12 per entry, 8 per row), its W = 0 copy
 //                                       (8 per entry) + diagPos, invDiag,
 //                                       x, b, res (96 per row)
@@ -66,7 +67,8 @@ void forRows(size_t rows, F&& fn) {
 //     with per-row bounds p = prod (2 on a coarsened axis, else 1) and g = the union of the
 //     coarse supports of D's 7-point row (3 x 2 x 2 per axis line, inclusion-exclusion: 20 in a
 //     full box); multiplyCsr and interpolationMatrix allocate exactly.
-//   + 56 (nx + ny + nz) per level: composite interpolation tables and 1D transfers.
+//   + 96 (nx + ny + nz) per level: composite interpolation tables, 1D transfers and the
+//     prior's 1D Gram bands (40).
 // Coarser Galerkin products (at most 1/8 of the fine rows) stay below the level-1 ones.
 double MgPcgSolver::estimateBytes(const Grid& grid) const {
   const double n = double(grid.nx) * grid.ny * grid.nz;
@@ -96,10 +98,10 @@ double MgPcgSolver::estimateBytes(const Grid& grid) const {
   const double g = s3Of(grid.nx) * uy * uz + ux * s3Of(grid.ny) * uz + ux * uy * s3Of(grid.nz) -
                    2 * ux * uy * uz;
   // Composite interpolation tables (32 bytes per fine index per axis and level) and 1D transfers.
-  const double tables = (32 + 24) * double(grid.nx + grid.ny + grid.nz) * count;
+  const double tables = (32 + 24 + 40) * double(grid.nx + grid.ny + grid.nz) * count;
   const double c0x = coarsenedSize(grid.nx), c0y = coarsenedSize(grid.ny);
   const double scratch = 24 * (c0x * grid.ny * grid.nz + c0x * c0y * grid.nz);
-  const double steady = 224 * R + levels + tables + 16 * coarsest * coarsest + scratch + 24 * n;
+  const double steady = 248 * R + levels + tables + 16 * coarsest * coarsest + scratch + 24 * n;
   const double t1 = 288 * n;
   const double t2 = 92 * n + (12 * p + 8) * n + (12 * g + 8) * n + 12 * m1;
   const double t3 = 92 * n + 2 * (12 * g + 8) * n + (12 * s1 + 8) * m1 + 12 * n;
@@ -116,6 +118,9 @@ Status MgPcgSolver::setGrid(const Grid& grid, double omega) {
   fits = checkMemory("fast solver", estimateBytes(grid), memoryCap());
   if (!fits.ok()) return fits;
   const auto t0 = Clock::now();
+  beta2_ = 0;  // a new grid has no prior (its G has the old grid's size)
+  prior_.clear();
+  prior_.shrink_to_fit();
   Status s = mg_.build(grid, mgOptions_);
   if (!s.ok()) return s;
   grid_ = grid;
@@ -148,23 +153,21 @@ Status MgPcgSolver::setConstraints(const ConstraintSet& input) {
   const ConstraintSet next = normal ? input : normalizeConstraints(input);
 
   const ConstraintDiff d = diffConstraints(set_, next);
-  // penalties added to fresh operators of an empty set, in ascending order, are what
-  // resetPenalties adds: the operators stay fresh; any other penalty change makes them not
-  if (!d.removed.empty() || (!d.added.empty() && !set_.empty())) operatorsFresh_ = false;
-  const double w = omega_ * omega_;
+  // penalties added to fresh operators of an empty set before their first factorisation, in
+  // ascending order, are what resetPenalties adds: the operators stay fresh; any other penalty
+  // change makes them not (an empty set with a prior has a factor: additions update it)
+  if (!d.removed.empty() || (!d.added.empty() && (!set_.empty() || mg_.hasFactor())))
+    operatorsFresh_ = false;
+  const double w = constrainedPenalty();
   for (int p : d.removed)
-    if (!(s = mg_.setPenalty(p, 0.0)).ok()) return s;
+    if (!(s = mg_.setPenalty(p, beta2_)).ok()) return s;
   for (int p : d.added)
     if (!(s = mg_.setPenalty(p, w)).ok()) return s;
   set_ = next;
   const bool defer = deferAsked && mg_.hasFactor() && !coldStart_;
-  std::fill(b_.begin(), b_.end(), 0.0);
-  for (const Constraint& c : set_) {
-    const int64_t r = mg_.paddedRow(c.index);
-    for (int k = 0; k < 3; ++k) b_[3 * r + k] = w * c.target[k];
-  }
+  assembleRhs();
   factorDeferred_ = false;
-  if (set_.empty()) {
+  if (!hasRhs()) {
     std::fill(x_.begin(), x_.end(), 0.0);
     coldStart_ = true;
   } else if (defer) {
@@ -179,6 +182,74 @@ Status MgPcgSolver::setConstraints(const ConstraintSet& input) {
   stats_.added = int(d.added.size());
   stats_.removed = int(d.removed.size());
   stats_.changed = int(d.changed.size());
+  stats_.iterations = 0;
+  stats_.setupMs = msSince(t0);
+  return Status::Ok();
+}
+
+void MgPcgSolver::assembleRhs() {
+  const double w2 = omega_ * omega_;
+  if (prior_.empty()) {
+    std::fill(b_.begin(), b_.end(), 0.0);
+    for (const Constraint& c : set_) {
+      const int64_t r = mg_.paddedRow(c.index);
+      for (int k = 0; k < 3; ++k) b_[3 * r + k] = w2 * c.target[k];
+    }
+    return;
+  }
+  std::copy(prior_.begin(), prior_.end(), b_.begin());
+  for (const Constraint& c : set_) {
+    const int64_t r = mg_.paddedRow(c.index);
+    for (int k = 0; k < 3; ++k) b_[3 * r + k] = w2 * c.target[k] + prior_[3 * r + k];
+  }
+}
+
+bool MgPcgSolver::samePrior(double beta2, const Field& G) const {
+  if (beta2 == 0 || G.rows() == 0) return prior_.empty();
+  if (prior_.empty()) return false;
+  for (int p = 0; p < int(grid_.size()); ++p) {
+    const int64_t r = mg_.paddedRow(p);
+    for (int k = 0; k < 3; ++k)
+      if (!(prior_[3 * r + k] == G(p, k) * beta2)) return false;
+  }
+  return true;
+}
+
+Status MgPcgSolver::setPrior(double beta2, const Field& G) {
+  if (!hasGrid_) return Status::Error(StatusCode::NotReady, "setGrid first");
+  Status s = validatePrior(grid_, beta2, G);
+  if (!s.ok()) return s;
+  if (beta2 == beta2_ && samePrior(beta2, G)) return Status::Ok();  // nothing to rebuild
+  const auto t0 = Clock::now();
+  // the operators of a fresh hierarchy with this base penalty, then the constraints' penalties
+  // in ascending order: what setGrid, setPrior and setConstraints(set_) build
+  if (!(s = mg_.setBasePenalty(beta2)).ok()) return s;
+  beta2_ = beta2;
+  if (beta2 != 0 && G.rows() > 0) {
+    prior_.assign(3 * size_t(mg_.paddedRows()), 0.0);
+    mg_.toPadded(G, prior_.data());
+    for (double& v : prior_) v *= beta2;  // as G(p, k) * beta2 (samePrior)
+  } else {
+    prior_.clear();
+    prior_.shrink_to_fit();
+  }
+  const double w = constrainedPenalty();
+  for (const Constraint& c : set_)
+    if (!(s = mg_.setPenalty(c.index, w)).ok()) return s;
+  assembleRhs();
+  // a history-free cold start; the coarsest factor is refactored when the run starts
+  deferFactor_ = false;
+  factorDeferred_ = false;
+  operatorsFresh_ = true;
+  std::fill(x_.begin(), x_.end(), 0.0);
+  coldStart_ = true;
+  runActive_ = false;
+  progress_ = MgProgress();
+  if (!hasRhs()) {
+    progress_.errorEstimate = 0;
+    progress_.converged = true;
+  }
+  stats_.method = "mg-pcg";
   stats_.iterations = 0;
   stats_.setupMs = msSince(t0);
   return Status::Ok();
@@ -222,6 +293,11 @@ void MgPcgSolver::coldStartField() {
 }
 
 Status MgPcgSolver::startRun() {
+  // no factor yet (setPrior, or a failed prepare): the first run brings it up to date
+  if (!mg_.hasFactor()) {
+    Status s = mg_.prepare();
+    if (!s.ok()) return s;
+  }
   if (coldStart_ && mgOptions_.fmgStart) coldStartField();
   runCold_ = coldStart_;
   coldStart_ = false;
@@ -291,14 +367,17 @@ void MgPcgSolver::updateEstimate() {
 Status MgPcgSolver::iterate(int maxIterations, double tolerance, MgProgress* out) {
   if (!hasGrid_) return Status::Error(StatusCode::NotReady, "setGrid first");
   const auto t0 = Clock::now();
-  if (set_.empty()) {  // no constraints: the field is zero by definition
+  if (!hasRhs()) {  // no constraints and no prior: the field is zero by definition
     progress_ = MgProgress();
     progress_.errorEstimate = 0;
     progress_.converged = true;
     if (out) *out = progress_;
     return Status::Ok();
   }
-  if (!runActive_) startRun();
+  if (!runActive_) {
+    Status s = startRun();
+    if (!s.ok()) return s;
+  }
   const size_t rows = r_.size() / 3;
   int done = 0;
   auto isConverged = [&] {
@@ -401,7 +480,8 @@ Status MgPcgSolver::solve(Field& T) {
 
 size_t MgPcgSolver::memoryBytes() const {
   return mg_.memoryBytes() +
-         (x_.size() + b_.size() + r_.size() + z_.size() + p_.size() + q_.size()) * sizeof(double) +
+         (x_.size() + b_.size() + r_.size() + z_.size() + p_.size() + q_.size() + prior_.size()) *
+             sizeof(double) +
          set_.size() * sizeof(Constraint);
 }
 

@@ -1,4 +1,6 @@
-// FieldSolver "fast": conjugate gradients on (D^T D + omega^2 S) T = omega^2 S C (SPEC S2.3),
+// FieldSolver "fast": conjugate gradients on (D^T D + omega^2 S) T = omega^2 S C (SPEC S2.3;
+// with a prior (D^T D + omega^2 S + beta^2 I) T = omega^2 S C + beta^2 G, beta^2 a base penalty
+// of the hierarchy at every point: MultigridHierarchy::setBasePenalty),
 // preconditioned by one symmetric geometric multigrid V-cycle per iteration
 // (multigrid_hierarchy.hpp), three right-hand sides (x, y, z) run together, warm-started from
 // the previous field. Every loop runs in parallel on parallel.hpp's threads (the V-cycle's, and
@@ -43,6 +45,11 @@ class MgPcgSolver : public FieldSolver {
 
   Status setGrid(const Grid& grid, double omega) override;
   double estimateBytes(const Grid& grid) const override;
+  // Rebuilds the coarse operators for the new beta^2 (the constraints' penalties added again in
+  // ascending order, as a fresh solver adds them), the right-hand side, and starts the next
+  // solve cold from a history-free state (as after forgetWarmStart); the coarsest factor is
+  // refactored when the next run starts. The same beta^2 and G again change nothing.
+  Status setPrior(double beta2, const Field& G) override;
   // Validates (InvalidInput on bad index / non-finite target, nothing changed then), normalises
   // an unsorted set, updates penalties on all levels for the added/removed points.
   Status setConstraints(const ConstraintSet& next) override;
@@ -89,6 +96,13 @@ class MgPcgSolver : public FieldSolver {
 
  private:
   Status startRun();
+  void assembleRhs();  // b_ from set_ and prior_
+  // prior_ is beta2 G (for the current beta2_): setPrior has nothing to do.
+  bool samePrior(double beta2, const Field& G) const;
+  // A field is to be solved for: constraints, or a prior with a right-hand side.
+  bool hasRhs() const { return !set_.empty() || !prior_.empty(); }
+  // Fine penalty of a constrained point (beta^2 = 0: omega^2 exactly).
+  double constrainedPenalty() const { return omega_ * omega_ + beta2_; }
   void coldStartField();
   void updateEstimate();
   void nextDirection();
@@ -99,6 +113,8 @@ class MgPcgSolver : public FieldSolver {
   double omega_ = kDefaultOmega;
   bool hasGrid_ = false;
   ConstraintSet set_;
+  double beta2_ = 0;           // the prior's weight (the hierarchy's base penalty)
+  std::vector<double> prior_;  // beta^2 G, padded n x 3 (empty: no prior right-hand side)
   double tolerance_ = 1e-6;
   int maxIterations_ = 500;
 

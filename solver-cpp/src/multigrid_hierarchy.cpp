@@ -3,6 +3,7 @@
 #include <Eigen/Cholesky>
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 namespace hairsketch {
 namespace {
@@ -150,6 +151,10 @@ Status MultigridHierarchy::build(const Grid& grid, const MultigridOptions& optio
     compY_[l] = compose(grid.ny, cy);
     compZ_[l] = compose(grid.nz, cz);
   }
+  gramX_.clear();
+  gramY_.clear();
+  gramZ_.clear();
+  basePenalty_ = 0;
   coarsestDirty_ = true;
   factorValid_ = false;
   pending_.clear();
@@ -260,16 +265,114 @@ Status MultigridHierarchy::resetPenalties() {
   for (size_t l = first; l < levels_.size(); ++l) {
     Level& lv = levels_[l];
     lv.A.val = lv.base;
-    for (int i = 0; i < lv.A.rows; ++i) lv.invDiag[i] = 1.0 / lv.A.val[lv.diagPos[i]];
+    if (basePenalty_ == 0)
+      for (int i = 0; i < lv.A.rows; ++i) lv.invDiag[i] = 1.0 / lv.A.val[lv.diagPos[i]];
   }
+  if (basePenalty_ != 0) addBaseToLevels();
   factorValid_ = false;  // refactor from the rebuilt operator: no trace of earlier updates
   pending_.clear();
   for (int p = 0; p < grid_.size(); ++p) {
-    const double w = fine_.w[paddedRow(p)];
-    if (w == 0.0) continue;
-    Status s = addPenaltyToLevels(p, w);
+    // setPenalty's delta from the base (without a base penalty: w itself)
+    const double delta = fine_.w[paddedRow(p)] - basePenalty_;
+    if (delta == 0.0) continue;
+    Status s = addPenaltyToLevels(p, delta);
     if (!s.ok()) return s;
   }
+  coarsestDirty_ = true;
+  return Status::Ok();
+}
+
+Status MultigridHierarchy::buildGrams() {
+  auto gram = [](const std::vector<Comp1>& comp, int coarse, std::vector<double>& g) {
+    g.assign(size_t(kGramWidth) * size_t(coarse), 0.0);
+    for (const Comp1& c : comp)
+      for (int a = 0; a < c.count; ++a)
+        for (int b = 0; b < c.count; ++b) {
+          const int d = c.idx[b] - c.idx[a];
+          if (d < -kGramReach || d > kGramReach) return false;
+          g[size_t(kGramWidth) * size_t(c.idx[a]) + size_t(d + kGramReach)] += c.w[a] * c.w[b];
+        }
+    return true;
+  };
+  const size_t L = levels_.size();
+  gramX_.assign(L, {});
+  gramY_.assign(L, {});
+  gramZ_.assign(L, {});
+  for (size_t l = 0; l < L; ++l) {
+    const Level& lv = levels_[l];
+    if (!gram(compX_[l], lv.nx, gramX_[l]) || !gram(compY_[l], lv.ny, gramY_[l]) ||
+        !gram(compZ_[l], lv.nz, gramZ_[l])) {
+      gramX_.clear();
+      gramY_.clear();
+      gramZ_.clear();
+      return Status::Error(StatusCode::InvalidInput, "interpolation wider than the Gram band");
+    }
+  }
+  return Status::Ok();
+}
+
+// (P^T P)(r, c) = Gx(r_x, c_x) Gy(r_y, c_y) Gz(r_z, c_z) for coarse points r, c; every such
+// product that is not zero comes from one fine point whose composite row holds both r and c,
+// so it lies in the pattern (as setPenalty's v v^T does).
+void MultigridHierarchy::addBaseToLevels() {
+  const double beta2 = basePenalty_;
+  const size_t first = levels_.size() == 1 ? 0 : 1;
+  for (size_t l = first; l < levels_.size(); ++l) {
+    Level& lv = levels_[l];
+    const int nx = lv.nx, ny = lv.ny, plane = lv.nx * lv.ny;
+    const double* gx = gramX_[l].data();
+    const double* gy = gramY_[l].data();
+    const double* gz = gramZ_[l].data();
+    const int64_t* ptr = lv.A.ptr.data();
+    const int* col = lv.A.col.data();
+    double* val = lv.A.val.data();
+    double* invDiag = lv.invDiag.data();
+    const int64_t* diagPos = lv.diagPos.data();
+    forPlanes(lv.A.rows, 2 * lv.A.nnz() / std::max(lv.A.rows, 1), [&](int64_t r0, int64_t r1) {
+      for (int64_t r = r0; r < r1; ++r) {
+        const int rx = int(r % nx), ry = int((r / nx) % ny), rz = int(r / plane);
+        for (int64_t e = ptr[r]; e < ptr[r + 1]; ++e) {
+          const int c = col[e];
+          const int dx = c % nx - rx, dy = (c / nx) % ny - ry, dz = c / plane - rz;
+          if (std::abs(dx) > kGramReach || std::abs(dy) > kGramReach || std::abs(dz) > kGramReach)
+            continue;
+          const double g = gx[kGramWidth * rx + dx + kGramReach] *
+                           gy[kGramWidth * ry + dy + kGramReach] *
+                           gz[kGramWidth * rz + dz + kGramReach];
+          val[e] += beta2 * g;
+        }
+        invDiag[r] = 1.0 / val[diagPos[r]];
+      }
+    });
+  }
+}
+
+Status MultigridHierarchy::setBasePenalty(double beta2) {
+  if (!std::isfinite(beta2) || beta2 < 0)
+    return Status::Error(StatusCode::InvalidInput, "base penalty must be finite and >= 0");
+  if (beta2 != 0 && gramX_.empty()) {
+    Status s = buildGrams();
+    if (!s.ok()) return s;
+  }
+  basePenalty_ = beta2;
+  Fine& f = fine_;
+  for (int k = 0; k < grid_.nz; ++k)
+    for (int j = 0; j < grid_.ny; ++j)
+      for (int i = 0; i < grid_.nx; ++i) {
+        const int64_t r = f.layout.offset + i + f.layout.sy * j + f.layout.sz * k;
+        f.w[r] = beta2;
+        f.invDiag[r] = 1.0 / (f.diagK[r] + beta2);
+      }
+  const size_t first = levels_.size() == 1 ? 0 : 1;
+  for (size_t l = first; l < levels_.size(); ++l) {
+    Level& lv = levels_[l];
+    lv.A.val = lv.base;
+    if (beta2 == 0)
+      for (int i = 0; i < lv.A.rows; ++i) lv.invDiag[i] = 1.0 / lv.A.val[lv.diagPos[i]];
+  }
+  if (beta2 != 0) addBaseToLevels();
+  factorValid_ = false;
+  pending_.clear();
   coarsestDirty_ = true;
   return Status::Ok();
 }
@@ -382,6 +485,8 @@ size_t MultigridHierarchy::memoryBytes() const {
     b += (t.x.n + t.y.n + t.z.n) * (2 * sizeof(int) + 2 * sizeof(double));
   for (size_t l = 0; l < compX_.size(); ++l)
     b += (compX_[l].size() + compY_[l].size() + compZ_[l].size()) * sizeof(Comp1);
+  for (size_t l = 0; l < gramX_.size(); ++l)
+    b += (gramX_[l].size() + gramY_[l].size() + gramZ_[l].size()) * sizeof(double);
   b += size_t(coarsestL_.size() + coarseWork_.size()) * sizeof(double) +
        pending_.capacity() * sizeof(CoarseTerm);
   return b;

@@ -1,5 +1,6 @@
 // Geometric multigrid hierarchy for M = D^T D + W (SPEC S2.3), W = diag(w), w_p = omega^2 on
-// constrained points, 0 elsewhere.
+// constrained points, 0 elsewhere, plus a base penalty beta^2 >= 0 at every point when the field
+// has a prior (setBasePenalty: w_p = beta^2 + omega^2 [p in C]).
 //
 // Level 0 (fine) is matrix-free: vectors are n x 3 row-major on a box padded with one ghost
 // layer (ghost rows are always zero), so the 6-neighbour loops need no boundary tests; D and D^T
@@ -93,12 +94,22 @@ class MultigridHierarchy {
   double penalty(int p) const { return fine_.w[paddedRow(p)]; }
   // Sets w_p (fine) and updates all coarse operators locally. Call prepare() before vcycle().
   Status setPenalty(int p, double w);
-  // Rebuilds every coarse operator from its W = 0 values plus the current fine penalties added
-  // in ascending point order: the same arithmetic, in the same order, as a fresh hierarchy given
-  // these penalties, so the operators no longer carry the rounding of earlier edits (the
-  // preconditioner, and with a zero start the whole solve, then depend on the penalties alone).
-  // Call prepare() after it.
+  // Rebuilds every coarse operator from its W = 0 values, plus the base penalty's
+  // beta^2 P_l^T P_l, plus the current fine penalties' excess over the base added in ascending
+  // point order: the same arithmetic, in the same order, as a fresh hierarchy given the base
+  // penalty (setBasePenalty) and then these penalties (setPenalty, ascending), so the operators
+  // no longer carry the rounding of earlier edits (the preconditioner, and with a zero start the
+  // whole solve, then depend on the penalties alone). Call prepare() after it.
   Status resetPenalties();
+  // A penalty beta2 >= 0 at every fine point (a prior's beta^2 I): every fine w_p becomes beta2
+  // (other penalties are dropped: the caller sets them again with setPenalty, in ascending
+  // order), every coarse operator its W = 0 values plus beta2 P_l^T P_l, with P_l the composite
+  // interpolation from the fine level to level l (a tensor product of 1D interpolations, so
+  // P_l^T P_l is the product of three banded 1D Gram matrices: O(nnz) per level, not 64
+  // updates per fine point), and the coarsest factor is invalid until prepare(). beta2 = 0
+  // gives back the operators of build(), bit for bit.
+  Status setBasePenalty(double beta2);
+  double basePenalty() const { return basePenalty_; }
   // Brings the coarsest factor up to date with the penalty changes since the last call: rank-1
   // updates of the factor, or a refactorisation (after build/resetPenalties, when cheaper, or
   // when an update fails its pivot check).
@@ -170,6 +181,10 @@ class MultigridHierarchy {
 
   void computeL(const double* x, double* L) const;
   Status addPenaltyToLevels(int p, double delta);
+  // A.val += basePenalty_ * P_l^T P_l on every coarse level (and the diagonal's inverse).
+  void addBaseToLevels();
+  // The 1D Gram matrices of the composite interpolation per level and axis (gramX_ ...).
+  Status buildGrams();
   void fineSweepPlane(int k, bool forward, double* x, const double* b);
   void fineColourPass(int colour, bool forward, double* x, const double* b);
   void fineResidual(const double* x, const double* b, double* res) const;
@@ -197,6 +212,12 @@ class MultigridHierarchy {
   std::vector<Level> levels_;
   std::vector<Transfer3D> transfers_;
   std::vector<std::vector<Comp1>> compX_, compY_, compZ_;  // per level
+  // Per level and axis, G = C^T C of the composite 1D interpolation C (fine axis -> level l),
+  // banded: G(a, a + d) at [kGramWidth * a + d + kGramReach], |d| <= kGramReach. Built on the
+  // first setBasePenalty with beta2 > 0.
+  static constexpr int kGramReach = 2, kGramWidth = 2 * kGramReach + 1;
+  std::vector<std::vector<double>> gramX_, gramY_, gramZ_;
+  double basePenalty_ = 0;
   TransferWork work_;
   Eigen::MatrixXd coarsestL_;        // lower Cholesky factor of the coarsest operator
   std::vector<double> coarseWork_;   // the coarsest solve's right-hand sides, column by column
