@@ -26,8 +26,15 @@
 
 namespace hairsketch {
 
-// The prior's weight beta^2 (relative to the bi-Laplacian's unit weight; omega^2 = 1e4).
-constexpr double kFallWeight = 2e-3;
+// The prior's weight beta^2 (relative to the bi-Laplacian's unit weight; omega^2 = 1e4) sets how
+// far a curve's pull reaches before the hair hangs: D^T D has the symbol ~ |k|^4 / 36 for a
+// wave of k radians per grid step, so beta^2 = (d / l)^4 / 36 makes a curve's influence fade
+// over about l world units whatever the grid step d. kFallReach = l: 5 cm.
+constexpr double kFallReach = 0.5;
+inline double fallWeight(double step) {
+  const double k = step / kFallReach;
+  return k * k * k * k / 36;
+}
 // World units (1 unit = 10 cm) over which g turns from combed along the scalp to straight down.
 constexpr double kFallBlend = 0.6;
 // Horizontal spread away from the head's vertical axis, and lift off the scalp, mixed into the
