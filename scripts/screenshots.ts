@@ -16,6 +16,10 @@ const VIEWS: Array<[string, V3]> = [
   ['side', [7.4, 0.6, -0.6]],
   ['back', [-4.2, 1.6, -5.6]],
 ];
+// Presets whose hair reaches far below the head are framed from farther away, aimed lower.
+const FRAMING: Record<string, { scale: number; target: V3 }> = {
+  long: { scale: 1.6, target: [0, -1.9, 0] },
+};
 const PORT = Number(process.env.SHOT_PORT ?? 4195);
 const BASE = `http://127.0.0.1:${PORT}`;
 
@@ -86,8 +90,10 @@ async function main(): Promise<void> {
       }
       // the hair alone (style curves are drawn over everything), from the front and the back
       await page.getByRole('checkbox', { name: 'Curves' }).uncheck();
+      const frame = FRAMING[preset] ?? { scale: 1, target: [0, -0.55, 0] as V3 };
       for (const [view, position] of VIEWS) {
-        await page.evaluate(([p]) => window.hairsketch.setCamera(p, [0, -0.55, 0]), [position]);
+        const p = position.map((v) => v * frame.scale) as V3;
+        await page.evaluate(([q, t]) => window.hairsketch.setCamera(q, t), [p, frame.target]);
         await page.evaluate(() => window.hairsketch.idle());
         const file = `${out}/${preset}-${view}.png`;
         await page.getByTestId('viewport').screenshot({ path: file });

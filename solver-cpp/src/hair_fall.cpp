@@ -73,8 +73,11 @@ Field fallDirections(const Grid& g, const HeadDistance& head, const Eigen::Vecto
         float o[3];
         head.outward(xf, o);
         const Eigen::Vector3d nrm(o[0], o[1], o[2]);
-        Eigen::Vector3d h(x.x() - centre.x(), 0, x.z() - centre.z());
-        const double hn = h.norm();
+        // away from the vertical axis; in front (the face's side) mostly sideways, so the hair
+        // of the front parts to the sides of the face rather than falling in front of it
+        const double fz = x.z() - centre.z();
+        Eigen::Vector3d h(x.x() - centre.x(), 0, fz > 0 ? kFallFrontSpread * fz : fz);
+        const double hn = std::hypot(x.x() - centre.x(), fz);
         h = hn > 1e-9 ? Eigen::Vector3d(h / hn) : Eigen::Vector3d::Zero();
         const Eigen::Vector3d c = down + kFallSpread * h;
         const Eigen::Vector3d t = c - c.dot(nrm) * nrm;

@@ -4,7 +4,8 @@
 //    beta^2 sum_i ||t_i - g_i||^2 in the field energy (FieldSolver::setPrior): hair that no
 //    curve governs hangs from the scalp as combed-down hair does. Near the head g is straight
 //    down combed along the scalp, with a slight spread away from the head's vertical axis (so
-//    the crown parts outward rather than standing up) and a slight lift off the surface;
+//    the crown parts outward rather than standing up, and the front parts to the sides of the
+//    face) and a slight lift off the surface;
 //    kFallBlend away from the head, below its widest part, it is straight down.
 // 2. The reach of the curves that end hair (stream curves and ponytail spines without
 //    "extend"): per grid point, the curves' remaining length there, blended between curves, and
@@ -40,6 +41,9 @@ constexpr double kFallBlend = 0.6;
 // Horizontal spread away from the head's vertical axis, and lift off the scalp, mixed into the
 // combed direction.
 constexpr double kFallSpread = 0.5, kFallLift = 0.15;
+// In front of the vertical axis (+z, the face's side) the spread's forward part is scaled by
+// this: the front hair parts sideways.
+constexpr double kFallFrontSpread = 0.2;
 
 // g at every grid point (n x 3, unit length): head = the head's distance grid, centre = the
 // head's centre (its vertical axis passes through it).
@@ -51,7 +55,7 @@ Field fallDirections(const Grid& grid, const HeadDistance& head, const Eigen::Ve
 // the curves' blended remaining length; past kReachFar from every curve it is far (the hair there
 // grows to the maximum length); between, the far fraction rises smoothly, so hair between the
 // strokes of a style takes their length.
-constexpr double kReachNear = 0.4, kReachFar = 1.5, kReachCell = 0.15;
+constexpr double kReachNear = 0.8, kReachFar = 1.5, kReachCell = 0.15;
 // Width (world units) of the Gaussian weights that blend nearby curves' remaining lengths.
 constexpr double kReachSigma = 0.25;
 // Hair within kFaceNear of a curve's stretch off the scalp, and heading along it (within about
