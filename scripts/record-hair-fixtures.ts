@@ -1,0 +1,67 @@
+// Records, from a build of the app, each listed preset's session and the hash of the hair it
+// grows, into tests/fixtures/hair-<label>.json; tests/e2e/oldSessions.spec.ts opens those sessions
+// in the current build and expects the same hair, byte for byte.
+//   RECORD_DIST=<dir> RECORD_LABEL=<label> npx tsx scripts/record-hair-fixtures.ts [preset ...]
+// RECORD_DIST is a `vite build --outDir <dir>` of the build to record (e.g. a worktree of an older
+// commit); the label names what it is (e.g. v3, the last session version before natural fall).
+import { type ChildProcess, spawn } from 'node:child_process';
+import { writeFileSync } from 'node:fs';
+import { chromium } from '@playwright/test';
+import { waitServer } from './previewServer';
+
+const PORT = Number(process.env.RECORD_PORT ?? 4197);
+const BASE = `http://127.0.0.1:${PORT}`;
+const STRANDS = 2000;
+
+async function main(): Promise<void> {
+  const dist = process.env.RECORD_DIST;
+  const label = process.env.RECORD_LABEL;
+  if (!dist || !label || !/^[a-z0-9-]+$/.test(label)) {
+    console.error('RECORD_DIST=<dir> and RECORD_LABEL=<[a-z0-9-]+> are needed');
+    process.exit(2);
+  }
+  const presets = process.argv.slice(2).length
+    ? process.argv.slice(2)
+    : ['default', 'fig8', 'curly'];
+  const server: ChildProcess = spawn(
+    'node_modules/.bin/vite',
+    ['preview', '--port', String(PORT), '--strictPort', '--outDir', dist],
+    { stdio: ['ignore', 'ignore', 'inherit'] },
+  );
+  const browser = await chromium.launch({
+    executablePath: process.env.CHROMIUM_PATH ?? '/usr/bin/chromium',
+    args: ['--no-sandbox', '--disable-gpu', '--enable-unsafe-swiftshader', '--no-first-run'],
+  });
+  const out: { preset: string; strands: number; session: unknown; hairHash: string }[] = [];
+  try {
+    await waitServer(BASE);
+    for (const preset of presets) {
+      const page = await browser.newPage({ viewport: { width: 800, height: 600 } });
+      await page.goto(`${BASE}/?preset=${preset}&strands=${STRANDS}`);
+      await page.waitForFunction(
+        () => {
+          const el = document.querySelector('[data-testid="status"]') as HTMLElement | null;
+          return !!el && el.dataset.state === 'ready' && Number(el.dataset.strands) > 0;
+        },
+        null,
+        { timeout: 300_000, polling: 100 },
+      );
+      await page.evaluate(() => window.hairsketch.idle());
+      const session = await page.evaluate(() => window.hairsketch.session());
+      const hairHash = await page.evaluate(() => window.hairsketch.hairHash());
+      const strands = Number(await page.getByTestId('status').getAttribute('data-strands'));
+      if (!hairHash) throw new Error(`${preset}: no hair`);
+      out.push({ preset, strands, session, hairHash });
+      console.log(`${preset}: ${strands} strands, hair ${hairHash}`);
+      await page.close();
+    }
+  } finally {
+    await browser.close();
+    server.kill();
+  }
+  const file = `tests/fixtures/hair-${label}.json`;
+  writeFileSync(file, `${JSON.stringify(out, null, 1)}\n`);
+  console.log(`wrote ${file}`);
+}
+
+await main();
