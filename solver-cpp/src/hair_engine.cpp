@@ -74,7 +74,8 @@ Status HairEngine::setGrid(const Grid& grid, double omega, const std::string& so
 Status HairEngine::applyPrior() {
   if (!hasGrid_ || !solver_) return Status::Ok();
   if (fall_ && headDistance_.built()) {
-    Status s = solver_->setPrior(fallWeight(grid_.step), fallDirections(grid_, headDistance_, centre_));
+    Status s =
+        solver_->setPrior(fallWeight(grid_.step), fallDirections(grid_, headDistance_, centre_));
     priorSet_ = s.ok();
     if (!constraints_.empty()) fieldValid_ = false;
     return s;
