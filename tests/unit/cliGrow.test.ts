@@ -162,12 +162,12 @@ describe('hairsketch grow: bad input', () => {
         'invalid session (version)',
         () => [
           badSession((s) => {
-            s.version = 4;
+            s.version = 5;
           }),
           '--out',
           join(dir, 'never.usda'),
         ],
-        /session\.version: must be an integer from 1 to 3; version 4 was made by a newer hairsketch/,
+        /session\.version: must be an integer from 1 to 4; version 5 was made by a newer hairsketch/,
       ],
       [
         'an export with no session',

@@ -392,17 +392,26 @@ describe('damaged links say what is wrong', () => {
   });
 
   it('truncated, extended, flipped', async () => {
-    const link = `#${await encodeSessionLink(presetSession('fig1', head))}`;
+    const original = presetSession('fig1', head);
+    const link = `#${await encodeSessionLink(original)}`;
     for (const cut of [1, 2, 4, 8, 100, link.length - 8]) await bad(link.slice(0, -cut), /damaged/);
     await bad(link.slice(0, -4), /cut short \(\d+ of \d+ bytes\)/);
     await bad(`${link}AAAA`, /3 bytes too many at the end/);
     await bad(`${link}x`, /cut short\?|too many at the end/);
-    // one character changed anywhere: never a throw, never a wrong session
+    // one character changed anywhere: never a throw, never a wrong session (a change in the
+    // deflate stream's unused last bits inflates to the same bytes: the same session is right)
     const alphabet = 'ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789-_';
+    let damaged = 0;
     for (let i = 8; i < link.length; i += 7) {
       const c = alphabet[(alphabet.indexOf(link[i]) + 1 + (i % 63)) % 64];
-      await bad(`${link.slice(0, i)}${c}${link.slice(i + 1)}`, /damaged/);
+      const r = await decodeSessionLink(`${link.slice(0, i)}${c}${link.slice(i + 1)}`);
+      if (r.ok) expect(r.value, `changed at ${i} of ${link.length}`).toEqual(original);
+      else {
+        expect(r.error).toMatch(/damaged/);
+        damaged++;
+      }
     }
+    expect(damaged).toBeGreaterThan(100);
   });
 
   it('a body that inflates but does not fit the layout', async () => {
