@@ -1,4 +1,4 @@
-// window.hairsketch: the hooks automated browser tests use (README, "Test contract").
+// window.hairsketch: the hooks automated browser tests use (docs/testing.md, "Test contract").
 import type { Editor } from '../editor/editor';
 import { scalpCoverage, VIEW_DIRECTIONS } from '../head/hairCoverage';
 import type { Head } from '../head/head';

@@ -59,7 +59,7 @@ import type { Vec3 } from './vec3';
 
 export type Parsed<T> = { ok: true; value: T } | { ok: false; error: string };
 
-/** Every bound the reader enforces (the README's session-file table mirrors this). */
+/** Every bound the reader enforces (docs/session-format.md, "Whatever comes in", lists them). */
 export const SESSION_LIMITS = {
   /** Style curves per session. */
   maxCurves: 200,

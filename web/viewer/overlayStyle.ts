@@ -27,7 +27,7 @@ export const OVERLAY_RGB: Readonly<Record<OverlayKind, number>> = {
   stream: 0x00b7d4, // cyan
   dividing: 0xff2f86, // pink
   ponytail: 0x7a3cff, // violet
-  ponytailGuide: 0xc58aff, // light purple (the README's purple circles)
+  ponytailGuide: 0xc58aff, // light purple (the purple circles of docs/user-guide.md)
   draft: 0x1f6bff, // blue
   selected: 0xffc400, // amber
 };
