@@ -1,5 +1,6 @@
-// The hair export writers, each checked against an independent reader written here from
-// ../shared/FORMATS.md (or, for glTF, Khronos' validator), never against numbers printed once.
+// The hair export writers, each checked against an independent reader written here from the
+// formats' published layouts (docs/export.md; for glTF, Khronos' validator), never against
+// numbers printed once.
 import { createRequire } from 'node:module';
 import { describe, expect, it } from 'vitest';
 import { CHUNK_BYTES, formatFloat } from '../../web/export/chunkSink';

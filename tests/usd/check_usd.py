@@ -4,7 +4,7 @@ usage: check_usd.py FILE.usda --box XMIN YMIN ZMIN XMAX YMAX ZMAX
 
 Opens the stage with pxr.Usd.Stage.Open and checks, on the BasisCurves prim /hairsketch/hair:
   - curveVertexCounts: every count 2..255, their sum = the number of points (usd-core's own
-    validators do not check this, see ../shared/FORMATS.md);
+    validators do not check this, see docs/export.md);
   - type "linear", widths: one per point, finite and > 0;
   - points: finite and inside the box;
   - primvars:displayColor: one colour per curve;

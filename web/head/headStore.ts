@@ -1,4 +1,4 @@
-// The head files the browser keeps (issue 13): a share link names a loaded head only by the
+// The head files the browser keeps: a share link names a loaded head only by the
 // SHA-256 of its file, so the app keeps every head file it opened (or read from a session file)
 // by that hash, in IndexedDB, and finds it again when a link or an undo names it.
 //

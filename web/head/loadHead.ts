@@ -1,4 +1,4 @@
-// Loading a user's head mesh (issue 13, "Open head"): OBJ, glTF/GLB, PLY or STL bytes are read
+// Loading a user's head mesh ("Open head"): OBJ, glTF/GLB, PLY or STL bytes are read
 // with three.js's loaders, every mesh is merged (world transforms applied) into one welded,
 // indexed triangle mesh, and the result is normalised the way the built-in head is placed:
 //  - units: the longest extent tells mm, cm, dm (the app's own unit, 10 cm) or m (a head with or
@@ -29,7 +29,7 @@ export type HeadFormat = 'obj' | 'gltf' | 'glb' | 'ply' | 'stl';
 export type HeadUnit = 'mm' | 'cm' | 'dm' | 'm' | 'unknown';
 export type Axis = 'x' | 'y' | 'z';
 
-/** The most triangles a loaded head may have (issue 13). */
+/** The most triangles a loaded head may have (a bound on the memory and time of loading). */
 export const MAX_HEAD_TRIANGLES = 2_000_000;
 
 export interface LoadHeadOptions {

@@ -1,4 +1,4 @@
-// The scalp brush's effect on a head's scalp mask (issue 13). A session keeps the brush strokes,
+// The scalp brush's effect on a head's scalp mask. A session keeps the brush strokes,
 // not the mask: each stroke is a polyline of surface points with a radius, painting scalp or
 // erasing it, applied in order over the head's default scalp. A triangle is covered by a stroke
 // when its centroid lies within the radius of the polyline (a ball swept along it: on a head the
