@@ -239,12 +239,7 @@ Status MgPcgSolver::setPrior(double beta2, const Field& G) {
   assembleRhs();
   // a history-free cold start; the coarsest factor is refactored when the run starts
   deferFactor_ = false;
-  factorDeferred_ = false;
-  operatorsFresh_ = true;
-  std::fill(x_.begin(), x_.end(), 0.0);
-  coldStart_ = true;
-  runActive_ = false;
-  progress_ = MgProgress();
+  startFromZero();
   if (!hasRhs()) {
     progress_.errorEstimate = 0;
     progress_.converged = true;
@@ -253,6 +248,16 @@ Status MgPcgSolver::setPrior(double beta2, const Field& G) {
   stats_.iterations = 0;
   stats_.setupMs = msSince(t0);
   return Status::Ok();
+}
+
+// Fresh operators and a zero start: the next run starts cold (setPrior, forgetWarmStart).
+void MgPcgSolver::startFromZero() {
+  factorDeferred_ = false;
+  operatorsFresh_ = true;
+  std::fill(x_.begin(), x_.end(), 0.0);
+  coldStart_ = true;
+  runActive_ = false;
+  progress_ = MgProgress();
 }
 
 bool MgPcgSolver::forgetWarmStart() {
@@ -264,12 +269,7 @@ bool MgPcgSolver::forgetWarmStart() {
   if (lastForgetKept_) return true;
   // the operators as a fresh solver builds them (no rounding of earlier edits), and a zero start
   if (!mg_.resetPenalties().ok() || !mg_.prepare().ok()) return false;
-  factorDeferred_ = false;
-  operatorsFresh_ = true;
-  std::fill(x_.begin(), x_.end(), 0.0);
-  coldStart_ = true;
-  runActive_ = false;
-  progress_ = MgProgress();
+  startFromZero();
   stats_.iterations = 0;
   return true;
 }

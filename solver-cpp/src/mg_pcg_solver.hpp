@@ -104,6 +104,7 @@ class MgPcgSolver : public FieldSolver {
   // Fine penalty of a constrained point (beta^2 = 0: omega^2 exactly).
   double constrainedPenalty() const { return omega_ * omega_ + beta2_; }
   void coldStartField();
+  void startFromZero();
   void updateEstimate();
   void nextDirection();
 
