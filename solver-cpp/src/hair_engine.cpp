@@ -6,6 +6,7 @@
 #include <string>
 
 #include "memory_budget.hpp"
+#include "ponytail_constraints.hpp"
 
 namespace hairsketch {
 
@@ -183,6 +184,17 @@ Status HairEngine::setCurves(const CurveSetView& curves) {
   ConstraintSet next;
   std::vector<uint8_t> nextColours;
   Status s;
+  std::vector<GatheredTail> nextTails;
+  if (fall_ && curves.kinds && curves.curveStart && curves.points && curves.paramStart)
+    for (size_t c = 0; c < curves.curveCount; ++c) {
+      if (CurveKindCode(curves.kinds[c]) != CurveKindCode::Ponytail) continue;
+      const size_t a = curves.curveStart[c], b = curves.curveStart[c + 1];
+      const size_t pa = curves.paramStart[c], pb = curves.paramStart[c + 1];
+      PonytailParams pp;
+      if (b <= a || b > curves.pointCount || pb < pa || pb > curves.paramCount) continue;
+      if (!parsePonytailParams(curves.params + pa, pb - pa, pp).ok() || pp.gather != 1) continue;
+      nextTails.push_back(gatheredTail(curves.points + 3 * a, b - a, pp));
+    }
   if (fall_) {
     // The reach of stream curves and ponytail spines ends their hair, in place of the fading
     // extension; "extend" means the curve's hair grows on.
@@ -242,6 +254,7 @@ Status HairEngine::setCurves(const CurveSetView& curves) {
   if (!s.ok()) return s;
   constraints_ = std::move(next);
   colours_ = std::move(nextColours);
+  tails_ = std::move(nextTails);
   fieldValid_ = false;
   return Status::Ok();
 }
@@ -325,13 +338,20 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
   const HeadDistance* head = headDistance_.built() ? &headDistance_ : nullptr;
   const CurveReach* reach = fall_ && !reach_.empty() ? &reach_ : nullptr;
   Status s = growStrands(grid_, fieldF_, roots(), gp, strands_, size_t(24) << 20, head, reach);
+  const std::vector<Eigen::Vector3f>& R = roots();
+  const size_t n = R.size(), total = roots_.size();
+  // a strand's seed key: its index in the full root set (previews take a stride of it)
+  std::vector<uint32_t> key(n);
+  for (size_t k = 0; k < n; ++k) key[k] = uint32_t(capped_ ? k * total / n : k);
+  if (s.ok() && !tails_.empty()) {
+    const TailStats ts = gatherTails(tails_, R, key, rp.seed, float(gp.stepFraction * grid_.step),
+                                     size_t(std::max(gp.maxSegments, 1)) + 1, strands_);
+    if (head && ts.captured > 0) keepOutsideHead(*head, float(gp.margin), strands_);
+  }
   bool anyDetail = false;
   for (const DetailParams& d : detail_) anyDetail |= d.any();
   if (s.ok() && anyDetail) {
-    const std::vector<Eigen::Vector3f>& R = roots();
-    const size_t n = R.size(), total = roots_.size();
-    std::vector<uint32_t> groupOf(n, 0), key(n);
-    for (size_t k = 0; k < n; ++k) key[k] = uint32_t(capped_ ? k * total / n : k);
+    std::vector<uint32_t> groupOf(n, 0);
     bool perCurve = false;
     for (int32_t g : curveGroup_) perCurve |= g != 0;
     if (perCurve && !curvePoints_.empty())

@@ -10,6 +10,7 @@
 #include "constraints.hpp"
 #include "curve_set.hpp"
 #include "field_solver.hpp"
+#include "gathered_tail.hpp"
 #include "grid.hpp"
 #include "hair_fall.hpp"
 #include "head_distance.hpp"
@@ -122,6 +123,7 @@ class HairEngine {
   Eigen::Vector3d centre_ = Eigen::Vector3d::Zero();
   CurveReach reach_;
   std::vector<std::pair<uint64_t, CurveFootprint>> footprints_;  // by a hash of each curve
+  std::vector<GatheredTail> tails_;  // the gathered ponytails of the last setCurves (with fall)
   Status applyPrior();
   Status zeroField();
 };

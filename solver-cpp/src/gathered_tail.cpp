@@ -1,0 +1,324 @@
+#include "gathered_tail.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "ponytail_constraints.hpp"
+#include "rng.hpp"
+
+namespace hairsketch {
+
+GatheredTail gatheredTail(const double* spine, size_t n, const PonytailParams& params) {
+  GatheredTail t;
+  if (params.circles.empty() || n == 0) return t;
+  auto pointAt = [&](size_t i) {
+    return Eigen::Vector3f(float(spine[3 * i]), float(spine[3 * i + 1]), float(spine[3 * i + 2]));
+  };
+  auto nearest = [&](const Eigen::Vector3d& c) {
+    size_t best = 0;
+    double bestD = 1e300;
+    for (size_t i = 0; i < n; ++i) {
+      const double d = (pointAt(i).cast<double>() - c).squaredNorm();
+      if (d < bestD) {
+        bestD = d;
+        best = i;
+      }
+    }
+    return best;
+  };
+  const PonytailCircle& c1 = params.circles.front();
+  const size_t start = nearest(c1.centre);
+  t.axis = c1.axis.normalized().cast<float>();
+  t.spine.push_back(c1.centre.cast<float>());
+  for (size_t i = start + 1; i < n; ++i) t.spine.push_back(pointAt(i));
+  if (t.spine.size() < 2) t.spine.push_back(t.spine[0] + t.axis);  // C1 at the tip: hang on
+  // arc length of each spine point, and of each circle (at its nearest spine point)
+  std::vector<float> s(t.spine.size(), 0.f);
+  for (size_t i = 1; i < s.size(); ++i) s[i] = s[i - 1] + (t.spine[i] - t.spine[i - 1]).norm();
+  std::vector<std::pair<float, float>> at;  // (arc length, radius), by arc length
+  for (const PonytailCircle& c : params.circles) {
+    const size_t i = nearest(c.centre);
+    at.emplace_back(i <= start ? 0.f : s[std::min(i - start, s.size() - 1)], float(c.radius));
+  }
+  std::stable_sort(at.begin(), at.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  t.radius.resize(s.size());
+  for (size_t i = 0; i < s.size(); ++i) {
+    float r = at.back().second;
+    if (s[i] <= at.front().first) {
+      r = at.front().second;
+    } else {
+      for (size_t k = 0; k + 1 < at.size(); ++k)
+        if (s[i] <= at[k + 1].first) {
+          const float span = at[k + 1].first - at[k].first;
+          const float f = span > 0 ? (s[i] - at[k].first) / span : 1.f;
+          r = at[k].second + f * (at[k + 1].second - at[k].second);
+          break;
+        }
+    }
+    t.radius[i] = r;
+  }
+  return t;
+}
+
+namespace {
+
+struct Capture {
+  uint32_t strand;
+  uint32_t keep;  // points kept (the root .. the point before the crossing)
+  Eigen::Vector3f q;
+  float remaining;  // the strand's length after q
+  float s0;         // arc length along the spine where q is
+};
+
+// The spine with a frame at every point, transported without twist.
+struct SpineFrames {
+  std::vector<Eigen::Vector3f> p, t, e1, e2;
+  std::vector<float> s, r;
+  Eigen::Vector3f lo, hi;  // the body's box: the spine grown by the capture distance
+
+  explicit SpineFrames(const GatheredTail& tail) : p(tail.spine), r(tail.radius) {
+    const size_t n = p.size();
+    lo = hi = p[0];
+    for (size_t i = 0; i < n; ++i) {
+      const Eigen::Vector3f g = Eigen::Vector3f::Constant(kTailCapture * r[i]);
+      lo = lo.cwiseMin(p[i] - g);
+      hi = hi.cwiseMax(p[i] + g);
+    }
+    s.assign(n, 0.f);
+    for (size_t i = 1; i < n; ++i) s[i] = s[i - 1] + (p[i] - p[i - 1]).norm();
+    t.resize(n);
+    for (size_t i = 0; i < n; ++i) {
+      const Eigen::Vector3f d = p[std::min(i + 1, n - 1)] - p[i > 0 ? i - 1 : 0];
+      t[i] = d.norm() > 0 ? d.normalized() : tail.axis;
+    }
+    e1.resize(n);
+    e2.resize(n);
+    // C1's own plane at the start: the frame the crossings are measured in
+    const Eigen::Vector3f a = tail.axis;
+    Eigen::Vector3f u =
+        std::abs(a.y()) < 0.9f ? Eigen::Vector3f::UnitY() : Eigen::Vector3f::UnitX();
+    e1[0] = a.cross(u).normalized();
+    e2[0] = a.cross(e1[0]);
+    for (size_t i = 1; i < n; ++i) {
+      Eigen::Vector3f v = e1[i - 1] - e1[i - 1].dot(t[i]) * t[i];
+      if (!(v.norm() > 1e-6f)) v = e2[i - 1] - e2[i - 1].dot(t[i]) * t[i];
+      e1[i] = v.normalized();
+      e2[i] = t[i].cross(e1[i]);
+    }
+  }
+
+  // Whether x lies beside the body (past C1, within kTailCapture r(s) of the spine); s its arc
+  // length there and d2 its squared distance.
+  bool nearBody(const Eigen::Vector3f& x, float& sx, float& d2) const {
+    if ((x.array() < lo.array()).any() || (x.array() > hi.array()).any()) return false;
+    d2 = 1e30f;
+    sx = 0;
+    float rad = r[0];
+    for (size_t k = 0; k + 1 < p.size(); ++k) {
+      const Eigen::Vector3f d = p[k + 1] - p[k];
+      const float len2 = d.squaredNorm();
+      const float f = len2 > 0 ? std::clamp((x - p[k]).dot(d) / len2, 0.f, 1.f) : 0.f;
+      const float e2 = (x - p[k] - f * d).squaredNorm();
+      if (e2 < d2) {
+        d2 = e2;
+        sx = s[k] + f * (s[k + 1] - s[k]);
+        rad = r[k] + f * (r[k + 1] - r[k]);
+      }
+    }
+    const float capture = kTailCapture * rad;
+    return sx > 0 && d2 <= capture * capture;
+  }
+
+  // Point, frame and radius at arc length x (past the end: straight on).
+  void at(float x, Eigen::Vector3f& pos, Eigen::Vector3f& f1, Eigen::Vector3f& f2,
+          float& rad) const {
+    const size_t n = p.size();
+    if (x >= s[n - 1]) {
+      pos = p[n - 1] + (x - s[n - 1]) * t[n - 1];
+      f1 = e1[n - 1];
+      f2 = e2[n - 1];
+      rad = r[n - 1];
+      return;
+    }
+    const size_t i = size_t(std::upper_bound(s.begin(), s.end(), std::max(x, 0.f)) - s.begin());
+    const size_t k = std::min(std::max<size_t>(i, 1), n - 1) - 1;
+    const float span = s[k + 1] - s[k];
+    const float f = span > 0 ? std::clamp((x - s[k]) / span, 0.f, 1.f) : 0.f;
+    pos = p[k] + f * (p[k + 1] - p[k]);
+    f1 = (e1[k] + f * (e1[k + 1] - e1[k])).normalized();
+    f2 = (e2[k] + f * (e2[k + 1] - e2[k])).normalized();
+    rad = r[k] + f * (r[k + 1] - r[k]);
+  }
+};
+
+float smoothstep(float x) {
+  x = std::clamp(x, 0.f, 1.f);
+  return x * x * (3 - 2 * x);
+}
+
+constexpr float kTwoPi = 6.28318530717958647692f;
+
+}  // namespace
+
+TailStats gatherTails(const std::vector<GatheredTail>& tails,
+                      const std::vector<Eigen::Vector3f>& roots, const std::vector<uint32_t>& key,
+                      uint64_t seed, float step, size_t maxPoints, Strands& strands) {
+  TailStats stats;
+  const size_t nS = strands.strandStart.empty() ? 0 : strands.strandStart.size() - 1;
+  if (tails.empty() || nS == 0 || !(step > 0)) return stats;
+  std::vector<SpineFrames> frames;
+  for (const GatheredTail& t : tails) frames.emplace_back(t);
+  // capture: the first crossing of a C1 plane near its axis, or the first point beside a body
+  std::vector<std::vector<Capture>> caught(tails.size());
+  const float* P = strands.points.data();
+  for (size_t st = 0; st < nS; ++st) {
+    const uint32_t a = strands.strandStart[st], b = strands.strandStart[st + 1];
+    int tail = -1;
+    uint32_t at = b;  // the first point after q
+    Eigen::Vector3f q;
+    float s0 = 0;
+    uint32_t keep = 0;  // points before q
+    for (size_t k = 0; k < tails.size(); ++k) {
+      const SpineFrames& F = frames[k];
+      const Eigen::Vector3f c = F.p[0], ax = tails[k].axis;
+      const float capture = kTailCapture * F.r[0];
+      float w0 = (Eigen::Vector3f(P[3 * a], P[3 * a + 1], P[3 * a + 2]) - c).dot(ax);
+      for (uint32_t p = a; p + 1 < b && p + 2 <= at; ++p) {
+        const Eigen::Vector3f p1(P[3 * p + 3], P[3 * p + 4], P[3 * p + 5]);
+        const float w1 = (p1 - c).dot(ax);
+        if (w0 < 0 && w1 >= 0) {
+          const Eigen::Vector3f p0(P[3 * p], P[3 * p + 1], P[3 * p + 2]);
+          const Eigen::Vector3f x = p0 + (w0 / (w0 - w1)) * (p1 - p0);
+          const Eigen::Vector3f off = (x - c) - (x - c).dot(ax) * ax;
+          if (off.norm() <= capture) {
+            tail = int(k);
+            at = p + 1;
+            keep = p + 1 - a;
+            q = x;
+            s0 = 0;
+            break;
+          }
+        }
+        float sx, d2;
+        if (w1 >= 0 && p + 2 < at && F.nearBody(p1, sx, d2)) {
+          tail = int(k);
+          at = p + 2;
+          keep = p + 1 - a;
+          q = p1;
+          s0 = sx;
+          break;
+        }
+        w0 = w1;
+      }
+    }
+    if (tail < 0) continue;
+    float remaining = 0;
+    Eigen::Vector3f prev = q;
+    for (uint32_t p = at; p < b; ++p) {
+      const Eigen::Vector3f x(P[3 * p], P[3 * p + 1], P[3 * p + 2]);
+      remaining += (x - prev).norm();
+      prev = x;
+    }
+    caught[size_t(tail)].push_back({uint32_t(st), keep, q, remaining, s0});
+  }
+  // seats, then the new strands
+  std::vector<std::vector<Eigen::Vector3f>> laid(nS);
+  std::vector<char> isLaid(nS, 0);
+  for (size_t k = 0; k < tails.size(); ++k) {
+    const std::vector<Capture>& cs = caught[k];
+    const size_t N = cs.size();
+    if (N == 0) continue;
+    const SpineFrames& F = frames[k];
+    const Eigen::Vector3f c = F.p[0];
+    std::vector<float> angle(N), dist(N);
+    for (size_t i = 0; i < N; ++i) {
+      const Eigen::Vector3f v = roots[cs[i].strand] - c;
+      angle[i] = std::atan2(v.dot(F.e2[0]), v.dot(F.e1[0]));
+      dist[i] = (v - v.dot(tails[k].axis) * tails[k].axis).norm();
+    }
+    std::vector<uint32_t> byAngle(N), byDist(N);
+    std::iota(byAngle.begin(), byAngle.end(), 0u);
+    std::iota(byDist.begin(), byDist.end(), 0u);
+    std::stable_sort(byAngle.begin(), byAngle.end(),
+                     [&](uint32_t x, uint32_t y) { return angle[x] < angle[y]; });
+    std::stable_sort(byDist.begin(), byDist.end(),
+                     [&](uint32_t x, uint32_t y) { return dist[x] < dist[y]; });
+    // start after the widest gap between neighbouring angles (the wrap included)
+    size_t first = 0;
+    float widest = angle[byAngle[0]] + kTwoPi - angle[byAngle[N - 1]];
+    for (size_t i = 1; i < N; ++i) {
+      const float gap = angle[byAngle[i]] - angle[byAngle[i - 1]];
+      if (gap > widest) {
+        widest = gap;
+        first = i;
+      }
+    }
+    const float theta0 = angle[byAngle[first]];
+    std::vector<float> theta(N), rho(N);
+    for (size_t i = 0; i < N; ++i) {
+      const uint32_t m = byAngle[(first + i) % N];
+      Pcg32 rng(seed ^ (uint64_t(key[cs[m].strand]) * 0x9e3779b97f4a7c15ULL), 0x7a11ULL);
+      theta[m] = theta0 + kTwoPi * (float(i) + float(rng.uniform())) / float(N);
+    }
+    for (size_t j = 0; j < N; ++j) rho[byDist[j]] = std::sqrt((float(j) + 0.5f) / float(N));
+    for (size_t i = 0; i < N; ++i) {
+      const Capture& cap = cs[i];
+      const size_t room = maxPoints > cap.keep + 1 ? maxPoints - cap.keep - 1 : 0;
+      if (room == 0) continue;
+      const size_t segs =
+          std::min(room, std::max<size_t>(1, size_t(std::ceil(cap.remaining / step))));
+      Eigen::Vector3f pq, g1, g2;
+      float rq;
+      F.at(cap.s0, pq, g1, g2, rq);
+      const float xq = (cap.q - pq).dot(g1), yq = (cap.q - pq).dot(g2);
+      const float xs = rho[i] * std::cos(theta[i]), ys = rho[i] * std::sin(theta[i]);
+      std::vector<Eigen::Vector3f>& out = laid[cap.strand];
+      out.reserve(segs + 1);
+      for (size_t j = 0; j <= segs; ++j) {
+        const float s = cap.remaining * float(j) / float(segs);
+        Eigen::Vector3f pos, f1, f2;
+        float rad;
+        F.at(cap.s0 + s, pos, f1, f2, rad);
+        const float bl = smoothstep(s / kTailBlend), sc = rad;
+        const float x = xq + (xs * sc - xq) * bl, y = yq + (ys * sc - yq) * bl;
+        out.push_back(pos + x * f1 + y * f2);
+      }
+      isLaid[cap.strand] = 1;
+      ++stats.captured;
+    }
+  }
+  if (stats.captured == 0) return stats;
+  // rebuild the buffers: kept prefixes and laid tails in strand order
+  std::vector<uint32_t> keepOf(nS, 0);
+  for (const auto& cs : caught)
+    for (const Capture& cap : cs) keepOf[cap.strand] = cap.keep;
+  decltype(Strands::points) points;
+  size_t total = 0;
+  for (size_t st = 0; st < nS; ++st)
+    total += isLaid[st] ? keepOf[st] + laid[st].size()
+                        : strands.strandStart[st + 1] - strands.strandStart[st];
+  points.resize(3 * total);
+  std::vector<uint32_t> start(nS + 1, 0);
+  size_t w = 0;
+  for (size_t st = 0; st < nS; ++st) {
+    const uint32_t a = strands.strandStart[st], b = strands.strandStart[st + 1];
+    const uint32_t kept = isLaid[st] ? keepOf[st] : b - a;
+    std::copy(P + 3 * size_t(a), P + 3 * size_t(a + kept), points.begin() + std::ptrdiff_t(3 * w));
+    w += kept;
+    if (isLaid[st])
+      for (const Eigen::Vector3f& x : laid[st]) {
+        points[3 * w] = x.x();
+        points[3 * w + 1] = x.y();
+        points[3 * w + 2] = x.z();
+        ++w;
+      }
+    start[st + 1] = uint32_t(w);
+  }
+  strands.points = std::move(points);
+  strands.strandStart = std::move(start);
+  return stats;
+}
+
+}  // namespace hairsketch

@@ -1,0 +1,68 @@
+// Gathered tails in the growth step: the hair a gathered ponytail (gather = 1,
+// ponytail_constraints.hpp) draws in is laid out as a round bunch along the ponytail's spine.
+//
+// Why a growth step: the field is smooth, so the hair of a 2D patch of scalp reaches the tail's
+// first circle C1 as a thin sheet (neighbouring strands stay neighbours along the flow), and a
+// field alone keeps that sheet flat all the way down (ratio of principal widths about 0.3). A
+// band round a real ponytail re-seats each hair: hair from the far hairline ends on the outside
+// of the bunch, hair from beside the band in its core, all round. That is a reordering of
+// strands across the tail, which no direction field can express, so it happens here, after the
+// strands have grown through the field up to C1, seeded and deterministic like detail.
+//
+// For a tail with circles C_1..C_m (centre c_k, unit axis a_k, radius r_k) on a spine polyline:
+//   Capture: a strand is captured by the first tail it reaches along its path: where it crosses
+//     C1's plane going along a_1 (w = (p - c_1) . a_1 goes from < 0 to >= 0 between two points)
+//     at a distance from the axis rho <= kTailCapture r_1, or at its first point past C1 that lies
+//     within kTailCapture r(s) of the spine (hair hanging beside the tail joins it, so the bunch
+//     stands clear of the loose hair around it). That point q splits the strand: the path up to q
+//     is kept; s_q is q's arc length along the spine (0 at C1's plane).
+//   Seat: the captured strands' roots, projected on C1's plane around c_1, are ranked by angle
+//     (starting after the widest empty gap of angles, so roots from one side of the head spread
+//     round the whole bunch) and, independently, by distance from c_1. The strand of angle rank
+//     i and distance rank j of N gets the seat
+//       theta = 2 pi (i + 0.5 + jitter) / N,  rho' = r sqrt((j + 0.5) / N)  (a uniform disc),
+//     jitter in [-0.5, 0.5) from the strand's key (Pcg32), so the bunch has no visible spiral.
+//   Lay: from q on, the strand follows the spine S(s) (arc length s from c_1, from s_q on; past
+//     the spine's end, straight on along its last direction) at the offset
+//       o(s) = o_q + (seat(s) - o_q) smoothstep((s - s_q) / kTailBlend),
+//     seat(s) = rho' r(s) / r_1 (cos theta E1(s) + sin theta E2(s)) with (E1, E2) a frame
+//     transported along the spine without twist (double reflection) and r(s) the circles' radius
+//     interpolated along the spine (r_m past C_m), o_q the crossing's own offset in that frame.
+//     It keeps the length it had after q (so hair still ends where its curve ends), sampled at
+//     the growth step, within the strand's point budget.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+#include "strand_growth.hpp"
+
+namespace hairsketch {
+
+constexpr float kTailCapture = 2.5f;  // x r_1: how far from the axis a crossing is taken in
+constexpr float kTailBlend = 0.3f;    // world units (3 cm): from the crossing to the seat
+
+struct GatheredTail {
+  std::vector<Eigen::Vector3f> spine;               // from c_1 to the spine's tip
+  std::vector<float> radius;                        // r(s) at each spine point
+  Eigen::Vector3f axis = Eigen::Vector3f::UnitY();  // a_1 (unit): C1's plane is normal to it
+};
+
+// The tail of a gathered ponytail: spine = the curve's points from the one nearest C1's centre
+// (replaced by that centre) to the tip; radii interpolated between the circles by arc length.
+struct PonytailParams;
+GatheredTail gatheredTail(const double* spine, size_t pointCount, const PonytailParams& params);
+
+struct TailStats {
+  size_t captured = 0;  // strands laid into a tail
+};
+
+// Re-lays the captured strands of every tail (see above). key[s] is strand s's seed key (its root
+// index in the full root set), roots[s] its root; step is the growth step (world units);
+// maxPoints caps a strand's points. Strands that no tail captures are left bit-identical.
+TailStats gatherTails(const std::vector<GatheredTail>& tails,
+                      const std::vector<Eigen::Vector3f>& roots, const std::vector<uint32_t>& key,
+                      uint64_t seed, float step, size_t maxPoints, Strands& strands);
+
+}  // namespace hairsketch
