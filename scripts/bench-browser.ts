@@ -7,15 +7,15 @@
 // BENCH_FRAMES frames, GPU work included) and the lighting precompute time of the final hair; and,
 // unless BENCH_DENSE=0, the same two for a denser version of the session (roots every 0.55°
 // instead of 1°: ~100K strands with the default preset).
-// Writes bench-results/browser.json and prints a table. A benchmark, not a test: it asserts
+// Writes bench-results/browser.{json,md} and prints the table. A benchmark, not a test: it asserts
 // nothing about speed. The drag is paced like a hand (a pointer event due every 16 ms; one that
 // came late, as the page acknowledges events only between frames, is not followed by a wait).
 // Each stroke's row also counts the frames drawn while drawing by where they started (the frame
 // cache: cached head and hair / cached head / nothing).
 // BENCH_DIST=<dir> serves another build (vite build --outDir <dir>) instead of dist/.
 import { type ChildProcess, spawn } from 'node:child_process';
-import { mkdirSync, writeFileSync } from 'node:fs';
 import { chromium, type Page } from '@playwright/test';
+import { writeBenchResults } from './benchResults.mjs';
 import { waitServer } from './previewServer';
 
 const PORT = Number(process.env.BENCH_PORT ?? 4190);
@@ -222,7 +222,6 @@ async function stroke(page: Page, i: number): Promise<StrokeResult> {
 }
 
 async function main(): Promise<void> {
-  mkdirSync('bench-results', { recursive: true });
   const server: ChildProcess = spawn(
     'node_modules/.bin/vite',
     [
@@ -313,16 +312,13 @@ async function main(): Promise<void> {
     await browser.close();
     server.kill();
   }
-  writeFileSync('bench-results/browser.json', `${JSON.stringify(rows, null, 2)}\n`);
   const f = (x: unknown) => (typeof x === 'number' ? x.toFixed(x < 10 ? 1 : 0) : String(x ?? '—'));
-  console.log(
-    '\n| grid | solver | load → first hair ms | pointer-up → first new hair ms (median) | → converged ms (median) | → full hair ms (median) | previews/s while drawing | wasm heap MB | strands | idle full-hair frame ms | lighting precompute ms | dense strands | dense frame ms | dense lighting ms |',
-  );
-  console.log(
+  const out: string[] = [
+    '| grid | solver | load → first hair ms | pointer-up → first new hair ms (median) | → converged ms (median) | → full hair ms (median) | previews/s while drawing | wasm heap MB | strands | idle full-hair frame ms | lighting precompute ms | dense strands | dense frame ms | dense lighting ms |',
     '| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |',
-  );
+  ];
   for (const r of rows)
-    console.log(
+    out.push(
       r.error
         ? `| ${r.grid} | ${r.solver} | ${String(r.error).slice(0, 80)} | | | | | | | | | | | |`
         : `| ${r.grid} | ${r.solver} | ${f(r.loadToFirstHairMs)} | ${f(r.firstHairMedianMs)} | ${f(r.convergedMedianMs)} | ${f(r.fullHairMedianMs)} | ${f(r.previewsPerSecondMedian)} | ${f(r.heapMB)} | ${f(r.strands)} | ${f(r.idleFrameMs)} | ${f(r.lightingMs)} | ${f(r.denseStrands)} | ${f(r.denseIdleFrameMs)} | ${f(r.denseLightingMs)} |`,
@@ -331,14 +327,41 @@ async function main(): Promise<void> {
     Object.entries((x ?? {}) as Record<string, number | null>)
       .map(([k, v]) => `${k.replace(/Ms$/, '')} ${f(v)}`)
       .join(', ');
-  console.log(
-    '\nWhere the time went (ms, medians over the strokes; from pointer-up for first/converged):',
+  out.push(
+    '',
+    'Where the time went (ms, medians over the strokes; from pointer-up for first/converged):',
+    '',
   );
   for (const r of rows)
     if (!r.error)
-      console.log(
+      out.push(
         `- ${r.grid} ${r.solver}: first look: ${b(r.firstBreakdown)}; converged: ${b(r.convergedBreakdown)}; full hair: ${b(r.fullBreakdown)}; previews: ${b(r.previewBreakdown)}`,
       );
+  console.log(`\n${out.join('\n')}`);
+  writeBenchResults('browser', {
+    title: 'Browser: from a stroke to hair on screen, per grid and solver',
+    script: 'scripts/bench-browser.ts',
+    command: 'npm run bench:browser',
+    measures:
+      "The built app in Debian's Chromium (headless, software WebGL through SwiftShader), " +
+      `default preset, ${STROKES} strokes per configuration drawn at a hand's pace. Per ` +
+      'configuration: page load → first hair; pointer-up → first new hair, → the converged ' +
+      "field's hair, → the final hair with every strand (medians, from the page's data-revision " +
+      'stamps taken when drawn); preview updates per second while drawing; the wasm heap; the ' +
+      `idle frame with every strand (median of ${FRAMES}, GPU work included) and the lighting ` +
+      'precompute, for the session and (unless BENCH_DENSE=0) a denser one with roots every ' +
+      "0.55°; and where the time went (the worker's solve, growth, lighting, arrival, geometry " +
+      'build, on screen).',
+    config: {
+      configs,
+      strokes: STROKES,
+      frames: FRAMES,
+      dense: DENSE,
+      dist: process.env.BENCH_DIST ?? 'dist',
+    },
+    results: rows,
+    table: out.join('\n'),
+  });
 }
 
 await main();

@@ -1,13 +1,14 @@
-// Formats the JSON lines of solver-cpp/bench/exact_bench into a markdown table.
-// Usage: node scripts/bench-exact-table.mjs bench-results/exact-<time>.jsonl [--json OUT.json]
-// With --json, also writes one JSON document: the machine, every measurement, and the table.
+// Formats the JSON lines of solver-cpp/bench/exact_bench (and of scripts/bench-fast-vs-exact.ts)
+// into markdown tables, prints them, and writes bench-results/<NAME>.{json,md} (the run's date,
+// commit and machine, every measurement, the tables; NAME defaults to exact).
+// Usage: node scripts/bench-exact-table.mjs build/bench/exact.jsonl [--name NAME]
 import { execSync } from 'node:child_process';
-import { readFileSync, writeFileSync } from 'node:fs';
-import { cpus, totalmem } from 'node:os';
+import { readFileSync } from 'node:fs';
+import { writeBenchResults } from './benchResults.mjs';
 
 const input = process.argv[2];
-const jsonAt = process.argv.indexOf('--json');
-const jsonOut = jsonAt > 0 ? process.argv[jsonAt + 1] : undefined;
+const nameAt = process.argv.indexOf('--name');
+const name = nameAt > 0 ? process.argv[nameAt + 1] : 'exact';
 
 const rows = readFileSync(input, 'utf8')
   .split('\n')
@@ -107,28 +108,29 @@ if (fastVsExact.length) {
 const table = out.join('\n');
 console.log(table);
 
-if (jsonOut) {
-  const tryRun = (cmd) => {
-    try {
-      return execSync(cmd, { encoding: 'utf8', stdio: ['ignore', 'pipe', 'ignore'] }).trim();
-    } catch {
-      return null;
-    }
-  };
-  const doc = {
-    date: new Date().toISOString(),
+const tryRun = (cmd) => {
+  try {
+    return execSync(cmd, { encoding: 'utf8', stdio: ['ignore', 'pipe', 'ignore'] }).trim();
+  } catch {
+    return null;
+  }
+};
+writeBenchResults(name, {
+  title: "The exact solver (the paper's incremental factorisation), native and wasm",
+  script: 'scripts/bench-exact.sh, scripts/bench-exact-table.mjs',
+  command: 'npm run bench',
+  measures:
+    'Boxes of 29³ (24,389 points) and 37³ (50,653) with ~3000 constraints, natively and in wasm ' +
+    'under Node (one thread): analyse, factor, 3-right-hand-side solve and peak memory; edits ' +
+    "adding then removing a curve's 100, 300 and 1000 clustered points, with the method the cost " +
+    "model chose and the time of both methods; Eigen's SimplicialLDLT refactorisation (AMD " +
+    'ordering) as the naive baseline, in its own process; and, after a full `npm run bench`, the ' +
+    'fast solver against the exact one through `hairsketch solve` (see fast-vs-exact.md).',
+  config: {
     source: input,
-    machine: {
-      cpu: cpus()[0]?.model ?? null,
-      cores: cpus().length,
-      memoryMB: Math.round(totalmem() / 1048576),
-      node: process.version,
-      emcc: tryRun('emcc --version')?.split('\n')[0] ?? null,
-      cxx: tryRun('c++ --version')?.split('\n')[0] ?? null,
-      commit: tryRun('git rev-parse HEAD'),
-    },
-    rows,
-    table,
-  };
-  writeFileSync(jsonOut, `${JSON.stringify(doc, null, 2)}\n`);
-}
+    emcc: tryRun('emcc --version')?.split('\n')[0] ?? null,
+    cxx: tryRun('c++ --version')?.split('\n')[0] ?? null,
+  },
+  results: rows,
+  table,
+});

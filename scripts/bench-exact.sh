@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# Benchmark of the exact solver (issue 3), natively and in wasm under Node, on the 29^3 and 37^3
-# boxes. Writes BASE.jsonl (one JSON object per measurement) and BASE.md (the table), and prints
-# the table; BASE defaults to bench-results/exact-<time>.
+# Benchmark of the exact solver, natively and in wasm under Node, on the 29^3 and 37^3 boxes.
+# Writes BASE.jsonl (one JSON object per measurement; BASE defaults to build/bench/exact), prints
+# the table, and writes bench-results/exact.{json,md} (scripts/bench-exact-table.mjs).
 #   scripts/bench-exact.sh [--no-wasm] [--baseline37] [--baseline37-wasm] [--sizes "29 37"]
 #                          [--out BASE]
 # Every edit is timed with both methods (--force-both): the one the cost model chose, and the
@@ -15,8 +15,7 @@ wasm=1
 base37=0
 base37wasm=0
 sizes="29 37"
-stamp="$(date -u +%Y%m%dT%H%M%SZ)"
-base="bench-results/exact-$stamp"
+base="build/bench/exact"
 while [ $# -gt 0 ]; do
   case "$1" in
     --no-wasm) wasm=0 ;;
@@ -73,5 +72,4 @@ for n in $sizes; do
   if [ "$wasm" = 1 ]; then run wasm "$n"; fi
 done
 
-node scripts/bench-exact-table.mjs "$out" | tee "$base.md"
-echo "wrote $out and $base.md" >&2
+node scripts/bench-exact-table.mjs "$out" --name exact

@@ -2,12 +2,13 @@
 // the download and the file size per format, for the default preset's ~30K strands and a denser
 // ~100K-strand version of it (roots every 0.55° instead of 1°); then `hairsketch grow` on the
 // same sessions (wall time and size). A benchmark, not a test: it asserts nothing about speed.
-// Writes bench-results/export.json and prints a table.
+// Writes bench-results/export.{json,md} and prints the table.
 import { type ChildProcess, execFileSync, spawn } from 'node:child_process';
-import { mkdirSync, mkdtempSync, statSync, writeFileSync } from 'node:fs';
+import { mkdtempSync, statSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { chromium, type Page } from '@playwright/test';
+import { writeBenchResults } from './benchResults.mjs';
 import { waitServer } from './previewServer';
 
 const PORT = Number(process.env.BENCH_PORT ?? 4192);
@@ -119,17 +120,29 @@ async function main(): Promise<void> {
   } finally {
     server.kill();
   }
-  mkdirSync('bench-results', { recursive: true });
-  writeFileSync('bench-results/export.json', JSON.stringify(rows, null, 2));
   const mb = (n: number) => (n / 1024 / 1024).toFixed(1);
-  console.log(
-    '\n| strands | format | browser click → download s | size MB | `hairsketch grow` s | size MB |',
-  );
-  console.log('| --- | --- | --- | --- | --- | --- |');
+  const out = [
+    '| strands | format | browser click → download s | size MB | `hairsketch grow` s | size MB |',
+    '| --- | --- | --- | --- | --- | --- |',
+  ];
   for (const r of rows)
-    console.log(
+    out.push(
       `| ${r.strands.toLocaleString('en-US')} | ${r.format} | ${(r.browserMs / 1000).toFixed(1)} | ${mb(r.browserBytes)} | ${(r.cliMs / 1000).toFixed(1)} | ${mb(r.cliBytes)} |`,
     );
+  console.log(`\n${out.join('\n')}`);
+  writeBenchResults('export', {
+    title: 'Export: time and size per format, in the browser and from the command line',
+    script: 'scripts/bench-export.ts',
+    command: 'npm run bench:export',
+    measures:
+      'The default preset (~30K strands) and a denser version of it (roots every 0.55°, ~100K ' +
+      'strands). Browser: headless Chromium, from the click on the Export menu item to the ' +
+      'download, the solve from scratch included. Command line: `hairsketch grow` wall time, ' +
+      'Node start-up included. Sizes of both files (they are the same bytes). One run.',
+    config: { formats: ITEMS.map(([f]) => f) },
+    results: rows,
+    table: out.join('\n'),
+  });
 }
 
 await main();

@@ -1,13 +1,14 @@
-// npm run bench:lighting — the solver worker's hair lighting (web/lighting/) against the
-// implementation it replaced (kept below as marchLighting: a fresh grid over hair and head per
-// call, the head voxelised every call, a march of trilinear samples from every node near hair,
-// a box blur over the whole grid). The default preset's hair is grown on the built-in head with
-// the real wasm engine under Node (growSessionHair, 25k grid), then lit as the worker lights it:
-// previews capped at 800 and 6000 strands without the head's shadow, the full hair with it.
-// Printed per case: medians of BENCH_RUNS runs (default 7) of the old and the new lighting
+// npm run bench:lighting — the solver worker's hair lighting (web/lighting/) against a
+// straightforward reference (marchLighting below: a fresh grid over hair and head per call, the
+// head voxelised every call, a march of trilinear samples from every node near hair, a box blur
+// over the whole grid). The default preset's hair is grown on the built-in head with the real
+// wasm engine under Node (growSessionHair, 25k grid), then lit as the worker lights it: previews
+// capped at 800 and 6000 strands without the head's shadow, the full hair with it. Printed per
+// case: medians of BENCH_RUNS runs (default 7) of the reference and of the app's lighting
 // (ResultLighting, as the worker holds it: its head caches are built by a first call, timed
-// apart), and how far the new output is from the old: mean and 99th percentile of |Δ| of the
-// strands' transmittance and occlusion and of the head's transmittance.
+// apart), and how far the app's output is from the reference: mean and 99th percentile of |Δ| of
+// the strands' transmittance and occlusion and of the head's transmittance.
+// Writes bench-results/lighting.{json,md}.
 //   npx tsx scripts/bench-lighting.ts
 
 import { presetSession } from '../web/cli/presetSession';
@@ -21,11 +22,12 @@ import { hangLength } from '../web/model/session';
 import { singleNodeOptions } from '../web/solver/nodeThreads';
 import type { StrandArrays } from '../web/solver/protocol';
 import { loadSolverEngine } from '../web/solver/wasmEngine';
+import { writeBenchResults } from './benchResults.mjs';
 
 const RUNS = Math.max(1, Number(process.env.BENCH_RUNS ?? 7));
 
-// ---- the lighting as it was computed before HairLightingContext (hairLighting.ts before it;
-// voxelizeHead, unchanged, now lives in lightingKernels.ts) ----
+// ---- the reference: every call builds its own grid and voxelises the head
+// (voxelizeHead from lightingKernels.ts) ----
 
 interface MarchOptions {
   light: readonly [number, number, number];
@@ -352,12 +354,17 @@ const march = (c: (typeof cases)[number]) =>
 const lighting = new ResultLighting(scalp, spec);
 const [, firstMs] = timed(() => lighting.of(cases[0].strands, undefined, false));
 const g = lighting.context.grid;
+const lines = [
+  `Lighting grid ${g.dims.join('×')}, step ${g.step.toFixed(4)}; the context's head caches, built by the first result: ${firstMs.toFixed(1)} ms.`,
+  '',
+  '| case | strands | points | reference march ms | app (ResultLighting) ms | T |Δ| | AO |Δ| | head T |Δ| |',
+  '| --- | --- | --- | --- | --- | --- | --- | --- |',
+];
+const results: unknown[] = [];
 console.log(
-  `default preset, 25k grid, built-in head (${scalp.positions.length / 3} vertices); lighting grid ${g.dims.join('×')}, step ${g.step.toFixed(4)}; medians of ${RUNS}`,
+  `default preset, 25k grid, built-in head (${scalp.positions.length / 3} vertices); medians of ${RUNS}`,
 );
-console.log(`context's head caches, built by the first result: ${firstMs.toFixed(1)} ms`);
-console.log('| case | strands | points | old ms | new ms | T |Δ| | AO |Δ| | head T |Δ| |');
-console.log('| --- | --- | --- | --- | --- | --- | --- | --- |');
+for (const l of lines) console.log(l);
 for (const c of cases) {
   const oldMs: number[] = [];
   const newMs: number[] = [];
@@ -373,8 +380,36 @@ for (const c of cases) {
   const strands = c.strands.strandStart.length - 1;
   const points = c.strands.points.length / 3;
   const headDiff = c.headShadow ? difference(now.head, old.head, 0, 1) : '–';
-  console.log(
-    `| ${c.name} | ${strands} | ${points} | ${median(oldMs).toFixed(1)} | ${median(newMs).toFixed(1)} | ${difference(now.strand, old.strand, 0, 2)} | ${difference(now.strand, old.strand, 1, 2)} | ${headDiff} |`,
-  );
+  const row = {
+    case: c.name,
+    strands,
+    points,
+    referenceMs: median(oldMs),
+    appMs: median(newMs),
+    transmittanceDiff: difference(now.strand, old.strand, 0, 2),
+    occlusionDiff: difference(now.strand, old.strand, 1, 2),
+    headTransmittanceDiff: headDiff,
+  };
+  results.push(row);
+  const line = `| ${c.name} | ${strands} | ${points} | ${row.referenceMs.toFixed(1)} | ${row.appMs.toFixed(1)} | ${row.transmittanceDiff} | ${row.occlusionDiff} | ${headDiff} |`;
+  console.log(line);
+  lines.push(line);
 }
+writeBenchResults('lighting', {
+  title: "The worker's hair lighting against a reference march",
+  script: 'scripts/bench-lighting.ts',
+  command: 'npm run bench:lighting',
+  measures:
+    "The default preset's hair grown on the built-in head (wasm under Node, 25k grid) and lit " +
+    'as the solver worker lights it: previews capped at 800 and 6,000 strands without the ' +
+    "head's shadow, the full hair with it. Per case, medians of BENCH_RUNS runs of the app's " +
+    'lighting (ResultLighting, its head caches built by a first call timed apart) and of a ' +
+    'straightforward reference (a fresh grid and head voxelisation per call, a march of ' +
+    'trilinear samples, a box blur over the whole grid), and how far the two outputs are apart: ' +
+    "mean and 99th percentile of |Δ| of the strands' transmittance (T) and occlusion (AO) and " +
+    "of the head's transmittance.",
+  config: { preset: 'default', grid: '25k', runs: RUNS },
+  results,
+  table: lines.join('\n'),
+});
 process.exit(0);

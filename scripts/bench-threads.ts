@@ -7,7 +7,7 @@
 // 2. Growth: the default preset grown with N strands (default 100,000) on BENCH_GRID (default
 //    250k), BENCH_ROUNDS alternating rounds (default 2), best of BENCH_REPEAT growths per
 //    engine: one JSON line per module and the speedups (BENCH_ROUNDS=0: no growth part).
-// BENCH_THREADS=N (default: min(4, logical cores)).
+// BENCH_THREADS=N (default: min(4, logical cores)). Writes bench-results/threads.{json,md}.
 
 import { availableParallelism } from 'node:os';
 import { presetSession } from '../web/cli/presetSession';
@@ -21,6 +21,7 @@ import {
   threadedNodeOptions,
 } from '../web/solver/nodeThreads';
 import { chooseThreads, type LoadOptions, loadSolverEngine } from '../web/solver/wasmEngine';
+import { writeBenchResults } from './benchResults.mjs';
 
 const gridName = (process.env.BENCH_GRID ?? '250k') as GridPreset;
 const strands = Number(process.env.BENCH_STRANDS ?? 100_000);
@@ -131,18 +132,47 @@ for (let r = 0; r < rounds; r++)
     best[label].solveMs = Math.min(best[label].solveMs, o.solveMs);
     best[label].growMs = Math.min(best[label].growMs, o.growMs);
   }
+const table = [
+  '| part | grid | single-threaded ms | threaded ms | single / threaded | iterations (single / threaded) |',
+  '| --- | --- | --- | --- | --- | --- |',
+];
 for (const l of solveSummary)
-  console.log(
-    `solve ${l.grid}: single ${l.singleMedianMs} ms, threaded (${threads}) ${l.threadedMedianMs} ms, ` +
-      `ratio ${l.ratio} (medians of ${l.rounds}; iterations ${l.iterations.single} / ${l.iterations.threaded})`,
+  table.push(
+    `| solve (median of ${l.rounds}) | ${l.grid} | ${l.singleMedianMs} | ${l.threadedMedianMs} | ${l.ratio} | ${l.iterations.single} / ${l.iterations.threaded} |`,
   );
-if (rounds > 0)
-  console.log(
-    JSON.stringify({
-      threads,
-      best,
-      solveSpeedup: +(best.single.solveMs / best.threaded.solveMs).toFixed(2),
-      growSpeedup: +(best.single.growMs / best.threaded.growMs).toFixed(2),
-    }),
+const growth =
+  rounds > 0
+    ? {
+        threads,
+        best,
+        solveSpeedup: +(best.single.solveMs / best.threaded.solveMs).toFixed(2),
+        growSpeedup: +(best.single.growMs / best.threaded.growMs).toFixed(2),
+      }
+    : null;
+if (growth)
+  table.push(
+    `| growth of ${strands.toLocaleString('en-US')} strands (best of ${rounds} × ${repeat}) | ${gridName} | ${Math.round(best.single.growMs)} | ${Math.round(best.threaded.growMs)} | ${growth.growSpeedup} | |`,
   );
+console.log(table.join('\n'));
+writeBenchResults('threads', {
+  title: 'Threads: the threaded wasm module against the single-threaded one',
+  script: 'scripts/bench-threads.ts',
+  command: 'npm run bench:threads',
+  measures:
+    `Both wasm modules under Node in the same run, the threaded one with ${threads} threads. ` +
+    "Solve: the default preset solved from scratch (fresh engine, the app's pipeline to 1e-6) on " +
+    'each grid, alternating rounds, medians. Growth: the default preset grown with many strands ' +
+    '(roots every 0.55° above 30,000), best of the rounds and repeats.',
+  config: {
+    threads,
+    solveGrids,
+    solveRounds,
+    growthGrid: gridName,
+    strands,
+    rounds,
+    repeat,
+  },
+  results: { solve: solveSummary, growth },
+  table: table.join('\n'),
+});
 await stopThreadWorkers();

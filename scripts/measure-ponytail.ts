@@ -1,4 +1,4 @@
-// Measures how round a preset's ponytails are (SPEC S4.6), through the same pipeline as
+// Measures how round a preset's ponytails are (method S4.6), through the same pipeline as
 // `hairsketch grow` (the real wasm solver). For each ponytail: the strands crossing the plane
 // normal to the spine at mid-length between C1 and the spine's end (within 2.5 x the local
 // circle radius of the spine), their PCA widths (2 std along each principal axis), the ratio

@@ -1,5 +1,5 @@
 // Jacobi-preconditioned conjugate gradient on M = D^T D + omega^2 S (+ beta^2 I with a prior;
-// SPEC S2.3, FieldSolver::setPrior), matrix-free,
+// method S2.3, FieldSolver::setPrior), matrix-free,
 // the three components (x, y, z) solved together with one operator pass per iteration.
 //
 // Stopping (SOLVER-NOTES "CG stopping trap"): the omega^2 rows dominate ||b||, so a small

@@ -1,4 +1,4 @@
-// A set of field constraints (SPEC S2.3): grid point index p -> target direction c_p.
+// A set of field constraints (method S2.3): grid point index p -> target direction c_p.
 // Every constraint carries the weight omega^2; only the set and the targets change while
 // editing (S2.4).
 #pragma once
@@ -25,7 +25,7 @@ ConstraintSet normalizeConstraints(std::vector<Constraint> raw);
 // InvalidInput when an index is out of range or a target is not finite.
 Status validateConstraints(const Grid& grid, const ConstraintSet& set);
 
-// Difference between two normalised sets (SPEC S3.2).
+// Difference between two normalised sets (method S3.2).
 struct ConstraintDiff {
   std::vector<int> added;    // in next, not in prev
   std::vector<int> removed;  // in prev, not in next

@@ -1,4 +1,4 @@
-// Dividing-curve constraints (SPEC S4.5, paper §5 and Fig. 4): a parting line on the scalp.
+// Dividing-curve constraints (method S4.5, paper §5 and Fig. 4): a parting line on the scalp.
 //
 // Frame at unit point p_i (i = 0..n-1) of the curve:
 //   y = n_i / |n_i|                      (scalp normal from the parameter block)

@@ -1,4 +1,4 @@
-// FieldSolver "exact": the paper's §4.2 method (SPEC S3). Nested-dissection ordering of the box,
+// FieldSolver "exact": the paper's §4.2 method (method S3). Nested-dissection ordering of the box,
 // supernodal LDL^T of M = D^T D + omega^2 S, and on each edit either a multiple-rank
 // update/downdate of the factor or a refactorisation, whichever the cost model says is cheaper
 // (both are exact). stats().method records the choice:

@@ -1,4 +1,4 @@
-// Multiple-rank update/downdate of a supernodal LDL^T factor on the diagonal (SPEC S3.2,
+// Multiple-rank update/downdate of a supernodal LDL^T factor on the diagonal (method S3.2,
 // paper §4.2). Clean-room from Gill, Golub, Murray & Saunders (1974), method C1, and Davis &
 // Hager (1999, 2001): a term alpha * e_p e_p^T changes only the columns on the elimination-tree
 // path from p to the root, and the pattern of L never changes.

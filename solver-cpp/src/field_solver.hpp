@@ -1,4 +1,4 @@
-// One interface for every way of solving the field system (SPEC S2.3), with the optional weak
+// One interface for every way of solving the field system (method S2.3), with the optional weak
 // prior of a natural fall (hair_fall.hpp):
 //   (D^T D + omega^2 S + beta^2 I) T = omega^2 S C + beta^2 G,
 // the minimiser of E(T) = ||D T||^2 + omega^2 sum_{p in C} ||t_p - c_p||^2

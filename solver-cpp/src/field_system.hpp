@@ -1,4 +1,4 @@
-// The linear system of SPEC S2 on a grid:
+// The linear system of method S2 on a grid:
 //   D: n x n discrete Laplacian, (D t)_i = sum_{j in N(i)} (t_j - t_i) / |N(i)|, N(i) the face
 //      neighbours that exist in the grid (S2.2);
 //   M = D^T D + omega^2 S, S = diag(1 on constrained points), right-hand side

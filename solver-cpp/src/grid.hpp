@@ -1,4 +1,4 @@
-// Uniform 3D grid over the bounding volume (SPEC S1.2).
+// Uniform 3D grid over the bounding volume (method S1.2).
 // Grid point (i, j, k) has index p = i + nx * (j + ny * k); its position is
 // origin + step * (i, j, k), in world units.
 #pragma once

@@ -1,4 +1,4 @@
-// Geometric nested dissection of a full box grid, for the 25-point matrix D^T D (SPEC S2).
+// Geometric nested dissection of a full box grid, for the 25-point matrix D^T D (method S2).
 //
 // D couples face neighbours, so D^T D couples every pair of points at L1 distance <= 2 (e.g.
 // (i-1, j, k) and (i+1, j, k)). A plane separator must therefore be 2 points thick: a 1-thick

@@ -1,4 +1,4 @@
-// The memory cap every solver, the engine and growth check BEFORE allocating (SPEC: nothing a
+// The memory cap every solver, the engine and growth check BEFORE allocating (so that nothing a
 // user makes is lost to an out-of-memory abort).
 //
 // The wasm module may grow to kMaxMemoryBytes (-sMAXIMUM_MEMORY=2GB in wasm-build/build.sh);

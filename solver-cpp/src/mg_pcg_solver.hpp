@@ -1,4 +1,4 @@
-// FieldSolver "fast": conjugate gradients on (D^T D + omega^2 S) T = omega^2 S C (SPEC S2.3;
+// FieldSolver "fast": conjugate gradients on (D^T D + omega^2 S) T = omega^2 S C (method S2.3;
 // with a prior (D^T D + omega^2 S + beta^2 I) T = omega^2 S C + beta^2 G, beta^2 a base penalty
 // of the hierarchy at every point: MultigridHierarchy::setBasePenalty),
 // preconditioned by one symmetric geometric multigrid V-cycle per iteration

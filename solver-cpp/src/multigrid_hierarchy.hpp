@@ -1,4 +1,4 @@
-// Geometric multigrid hierarchy for M = D^T D + W (SPEC S2.3), W = diag(w), w_p = omega^2 on
+// Geometric multigrid hierarchy for M = D^T D + W (method S2.3), W = diag(w), w_p = omega^2 on
 // constrained points, 0 elsewhere, plus a base penalty beta^2 >= 0 at every point when the field
 // has a prior (setBasePenalty: w_p = beta^2 + omega^2 [p in C]).
 //
@@ -40,18 +40,16 @@ namespace hairsketch {
 
 struct MultigridOptions {
   // Coarsen until a level has at most this many points; that level is factored exactly. A
-  // large exact coarsest level matters on this operator: on the app's 250K grid ending at
-  // 9 x 11 x 9 instead of 5 x 6 x 5 takes CG from ~127 to ~49 iterations. Past ~1000 points the
-  // factor's work outgrows the iterations it saves: the 50K grid's 10 x 12 x 10 (1,200 points)
-  // takes 45 -> 36 cold iterations, but with a dearer reset the times were mixed even with the
-  // banded factor (mg_bench --app, native: 265-328 against 305-342 ms).
+  // large exact coarsest level matters on this operator (the constrained points, weighted by
+  // omega^2, act almost as fixed values, which coarse levels cannot represent): on the app's
+  // 250K grid it more than halves CG's iterations. Past ~1000 points the factor's work
+  // outgrows the iterations it saves (scripts/bench-mg-app.ts measures both).
   int coarsestMaxPoints = 1000;
   int sweeps = 1;  // smoothing steps before and after the coarse correction
   // true: each step is a symmetric Gauss-Seidel sweep (forward then backward) on both sides;
   // false: pre-smoothing forward, post-smoothing backward (also symmetric overall, cheaper).
-  // On the fine level false is faster: half the sweeps for a few more iterations (the app's
-  // edits, mg_bench --app, native, history-free solve: 25K 32 -> 36 iterations, 155-177 ->
-  // 142-152 ms; 50K 44 -> 45, 348-357 -> 309-326; 250K 48 -> 51, 2339-2414 -> 2166-2247).
+  // On the fine level false is faster: half the sweeps for a few more iterations, on every
+  // grid of the app (scripts/bench-mg-app.ts).
   bool symmetricSweeps = false;
   // The same choice for the coarse (CSR) levels, where a sweep costs more per point.
   bool coarseSymmetricSweeps = true;
@@ -61,10 +59,10 @@ struct MultigridOptions {
   // level is always corrected once; the coarsest is solved exactly, once.
   int coarseCycles = 1;
   // Plane colours of the Gauss-Seidel sweeps on every level (at least the 3 that decouple the
-  // planes of a colour). More colours sweep more like the lexicographic order: with 3, CG needed
-  // up to one iteration more than the lexicographic sweep (50K app grid 45 -> 46, 250K 50 -> 51,
-  // mg_bench 47^3 41 -> 42); with 5 it needs the same counts on every benchmark (mg_bench 29-47,
-  // --app 25K/50K/250K), and 5 still leaves 12-15 planes per colour at 250K for the threads.
+  // planes of a colour). More colours sweep more like the lexicographic order: with 3, CG may
+  // need one iteration more than with the lexicographic sweep; with 5 it needs the same counts
+  // on every benchmark (mg_bench, bench-mg-app.ts), and 5 still leaves 12-15 planes per colour
+  // at 250K for the threads.
   int colours = 5;
   // Cold start (MgPcgSolver after setGrid or forgetWarmStart): full multigrid (nested
   // iteration, fullMultigrid()) instead of a zero field (false: CG starts from zero). The

@@ -241,8 +241,9 @@ class ThreadPool {
   uint64_t wakeGen_ = 0;     // the newest loop, for sleeping workers (under mutex_)
   int sleepers_ = 0;         // workers waiting on wake_ (under mutex_)
   bool stop_ = false;
-  // How long the caller spins for the workers' last tasks before it sleeps (natively at low load,
-  // 2 threads: the 50K solve 590 -> 400 ms, 250K 3350 -> 2620 ms; neutral at a load of 5).
+  // How long the caller spins for the workers' last tasks before it sleeps: at low load a loop's
+  // end comes sooner than a sleep and wake-up would take (the solves of npm run bench:threads);
+  // under heavy load it costs nothing measurable.
   static constexpr double kCallerSpinMicros = 1000;
   // The adaptive switch (judge), all under runMutex_.
   static constexpr int kWindow = 64, kSerialLoops = 1024;

@@ -1,4 +1,4 @@
-// Scalp penetration avoidance (SPEC S4.7, paper §6), run once on request:
+// Scalp penetration avoidance (method S4.7, paper §6), run once on request:
 //   for every grid point g within band * d of the scalp and outside the head,
 //     q   = the nearest point of the scalp triangles to g (brute force over the triangles whose
 //           box grown by band * d contains g),

@@ -1,4 +1,4 @@
-// Hair roots sampled on the scalp over spherical coordinates (SPEC S5.1).
+// Hair roots sampled on the scalp over spherical coordinates (method S5.1).
 // Direction of (theta, phi) from the mesh center: (sin t sin p, cos t, sin t cos p)
 // (y up, +z the face's front, +x the head's left). Each ray takes the outermost hit on the head
 // mesh; when that triangle is scalp, the hit (pushed out along the normal) is a root.

@@ -1,4 +1,4 @@
-// Hair growth in the vector field (SPEC S5.2): from each root, append segments l * v(p),
+// Hair growth in the vector field (method S5.2): from each root, append segments l * v(p),
 // l = stepFraction * d, v trilinearly interpolated from the field and not normalised (paper §6).
 // A strand stops when |v(p)| < minMagnitude, when the next point would leave the bounding
 // volume, when the next segment would take its length past maxLength, or after maxSegments.

@@ -1,4 +1,4 @@
-// Stream-curve constraints (SPEC S4.1). The whole curve set is dispatched in curve_set.hpp.
+// Stream-curve constraints (method S4.1). The whole curve set is dispatched in curve_set.hpp.
 #pragma once
 
 #include <cstddef>

@@ -1,4 +1,4 @@
-// Numeric supernodal LDL^T factorisation of M = D^T D + diag(penalty) (SPEC S3.1) and the
+// Numeric supernodal LDL^T factorisation of M = D^T D + diag(penalty) (method S3.1) and the
 // 3-right-hand-side solve. Multifrontal: each supernode's front is assembled from M and the
 // children's update matrices, its own block is factored with dense kernels (Eigen LLT, TRSM,
 // SYRK), and its update matrix is passed to the parent. The stored factor is LDL^T: the block

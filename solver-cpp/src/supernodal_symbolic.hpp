@@ -1,4 +1,4 @@
-// Symbolic analysis of M = D^T D + W^T W for a supernodal factorisation (SPEC S3.1).
+// Symbolic analysis of M = D^T D + W^T W for a supernodal factorisation (method S3.1).
 //
 // Supernodes are the nodes of a nested-dissection tree (separator slabs and leaf boxes). The
 // rows of supernode s are its own columns J_s (ascending positions) followed by its boundary

@@ -1,4 +1,4 @@
-// Display toggles (SPEC S6.2) end to end: real clicks on the checkboxes and the 1–5 shortcuts,
+// Display toggles (method S6.2) end to end: real clicks on the checkboxes and the 1–5 shortcuts,
 // checked through window.hairsketch.display() / displayInfo(), with the app staying ready.
 import { expect, type Page, test } from '@playwright/test';
 import { settled, visibleCurvePoint, watchConsole } from './helpers';

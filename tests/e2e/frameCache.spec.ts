@@ -1,4 +1,4 @@
-// Frames that cost only what changed (issue 15, viewer/frameCache.ts): a frame drawn from the
+// Frames that cost only what changed (viewer/frameCache.ts): a frame drawn from the
 // cached head (and hair) plus what changed must look like the same state drawn whole. Real
 // pointer events; waits on status attributes and the test API, never on fixed sleeps.
 import { writeFileSync } from 'node:fs';

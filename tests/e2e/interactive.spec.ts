@@ -1,4 +1,4 @@
-// Interactive path (issue 4): live preview while drawing, strokes made while a solve runs, and
+// Interactive path: live preview while drawing, strokes made while a solve runs, and
 // the large grids. Real pointer events; waits on status attributes, never on fixed sleeps.
 import { type Browser, expect, type Page, test } from '@playwright/test';
 import { settled, status, strokeFromScalp, watchConsole } from './helpers';

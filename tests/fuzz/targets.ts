@@ -1,6 +1,6 @@
 // Fuzz targets: everything that reads what comes in from outside (a session file, a share link,
 // a CLI problem, an exported file) and every export writer, each with its arbitraries and its
-// property (the issue "Nothing a user makes is lost, whatever comes in"):
+// property ("nothing a user makes is lost, whatever comes in"):
 //   - no throw escapes a reader or a writer;
 //   - accepted inputs round-trip (a session read back after JSON, a link re-encoded, the
 //     session carried by an export);
@@ -37,7 +37,7 @@ import {
 
 export type Outcome = 'accepted' | 'rejected';
 
-/** The code under test threw (the issue: none may escape). */
+/** The code under test threw (none may escape). */
 export class EscapedThrow extends Error {}
 /** The code under test answered, wrongly (a round trip changed the data, an error names
  *  nothing, an output invariant broke). */

@@ -1,4 +1,4 @@
-// CG against an independent dense solve of the normal equations (SPEC S2.3).
+// CG against an independent dense solve of the normal equations (method S2.3).
 #include "cg_solver.hpp"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Dividing-curve constraints (SPEC S4.5) on a straight curve over a flat "scalp", against values
+// Dividing-curve constraints (method S4.5) on a straight curve over a flat "scalp", against values
 // worked out by hand from the header's formulas.
 #include "dividing_constraints.hpp"
 

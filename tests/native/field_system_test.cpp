@@ -1,4 +1,4 @@
-// D^T D against a brute-force build from SPEC S2.2 on irregular boxes, boundary included.
+// D^T D against a brute-force build from method S2.2 on irregular boxes, boundary included.
 #include "field_system.hpp"
 
 #include <gtest/gtest.h>

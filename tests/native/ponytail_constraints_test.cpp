@@ -1,4 +1,4 @@
-// Ponytail constraints (SPEC S4.6): circles, the purple longitudinal directions, the blue spine
+// Ponytail constraints (method S4.6): circles, the purple longitudinal directions, the blue spine
 // part from C2 on and the green centripetal ring of C1, checked against brute force.
 #include "ponytail_constraints.hpp"
 

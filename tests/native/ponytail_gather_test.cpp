@@ -1,4 +1,4 @@
-// Ponytail gathering end to end (SPEC S4.6): a sphere head, a ponytail (or two mirror twins)
+// Ponytail gathering end to end (method S4.6): a sphere head, a ponytail (or two mirror twins)
 // with circles computed the way web/model/ponytailGeometry.ts does, solve, grow, and measure
 // the tail's cross-section at mid-length (between C1 and the spine's end): the strands crossing
 // the plane normal to the spine there, their PCA widths (2 std along each principal axis) and

@@ -1,4 +1,4 @@
-// Scalp penetration avoidance (SPEC S4.7) on a sphere "head", and the curve-set dispatch of the
+// Scalp penetration avoidance (method S4.7) on a sphere "head", and the curve-set dispatch of the
 // new kinds and explicit extra constraints.
 #include "scalp_avoidance.hpp"
 

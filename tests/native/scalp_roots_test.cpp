@@ -1,4 +1,4 @@
-// Root sampling on spheres (SPEC S5.1), against brute-force ray casting.
+// Root sampling on spheres (method S5.1), against brute-force ray casting.
 #include "scalp_roots.hpp"
 
 #include <gtest/gtest.h>

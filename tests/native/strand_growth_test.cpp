@@ -1,4 +1,4 @@
-// Growth stop rules of SPEC S5.2 in hand-built fields.
+// Growth stop rules of method S5.2 in hand-built fields.
 #include "strand_growth.hpp"
 
 #include <gtest/gtest.h>

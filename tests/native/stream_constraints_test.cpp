@@ -1,4 +1,4 @@
-// Stream-curve constraints (SPEC S4.1) for hand-computed curves.
+// Stream-curve constraints (method S4.1) for hand-computed curves.
 #include "stream_constraints.hpp"
 
 #include <gtest/gtest.h>

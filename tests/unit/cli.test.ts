@@ -1,4 +1,4 @@
-// `hairsketch solve` against an independent dense solve of SPEC S2.3 written here from S2.2.
+// `hairsketch solve` against an independent dense solve of method S2.3 written here from S2.2.
 import { mkdtempSync, readFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';

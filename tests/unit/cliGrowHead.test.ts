@@ -1,4 +1,4 @@
-// `hairsketch grow` on a user's head (issue 13): a ball written here as an OBJ in mm. With
+// `hairsketch grow` on a user's head: a ball written here as an OBJ in mm. With
 // --head the hair's roots lie on that ball (distance to its mesh by three-mesh-bvh's closest
 // point), not on the built-in head; a session file that embeds the ball grows the same bytes
 // without --head; the session's scalp strokes erase roots where they say; a head file that is

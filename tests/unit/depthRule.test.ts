@@ -1,4 +1,4 @@
-// SPEC S4.2 against a sphere "scalp" (the whole sphere is scalp here), ray-traced by hand.
+// method S4.2 against a sphere "scalp" (the whole sphere is scalp here), ray-traced by hand.
 import { describe, expect, it } from 'vitest';
 import { dot, normalize, sub, type Vec3 } from '../../web/model/vec3';
 import { liftStroke, STROKE_MARGIN, type StrokeSample } from '../../web/tools/depthRule';

@@ -1,4 +1,4 @@
-// The display modules' pure parts (SPEC S6.2): constraint colours and glyph arrays, field glyph
+// The display modules' pure parts (method S6.2): constraint colours and glyph arrays, field glyph
 // subsampling and its count cap, the bounding box edges, and supporting-surface meshes. Expected
 // values are built here by hand or by brute force, not read back from the code under test.
 import { describe, expect, it } from 'vitest';

@@ -1,4 +1,4 @@
-// Dividing curves on the TS side (SPEC S4.5): normals from the mesh, frames, hint tilt, packing.
+// Dividing curves on the TS side (method S4.5): normals from the mesh, frames, hint tilt, packing.
 
 import { describe, expect, it } from 'vitest';
 import { vertexNormals } from '../../web/head/buildHead';

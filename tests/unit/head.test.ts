@@ -1,4 +1,4 @@
-// The built-in head (SPEC S1.1): a closed, outward-oriented mesh in the agreed frame, with a
+// The built-in head (method S1.1): a closed, outward-oriented mesh in the agreed frame, with a
 // recognisable face, ears, neck and a scalp region that rays from the centre cross once.
 import { beforeAll, describe, expect, it } from 'vitest';
 import { buildHead } from '../../web/head/buildHead';

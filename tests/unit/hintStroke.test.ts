@@ -1,4 +1,4 @@
-// Hint strokes (SPEC S4.4, Fig. 3c–h): constructed strokes on a straight curve's strip surface,
+// Hint strokes (method S4.4, Fig. 3c–h): constructed strokes on a straight curve's strip surface,
 // one per operation, and strokes that fit none.
 import { describe, expect, it } from 'vitest';
 import { resamplePolyline } from '../../web/model/resample';

@@ -1,4 +1,4 @@
-// Ponytail cross sections (SPEC S4.6): circles between the profiles with the right radii, C1
+// Ponytail cross sections (method S4.6): circles between the profiles with the right radii, C1
 // nearest the scalp, the cross-section curve's scale, and the protocol block.
 
 import { describe, expect, it } from 'vitest';

@@ -1,4 +1,4 @@
-// The scalp brush's effect on the hair (issue 13): painting adds roots only inside the painted
+// The scalp brush's effect on the hair: painting adds roots only inside the painted
 // area, erasing removes every root there, and undo gives back the default scalp's roots. The
 // real wasm solver grows the default preset on the built-in head with each mask; roots are the
 // strands' first points, and which triangle a root is on comes from the head's BVH (closest

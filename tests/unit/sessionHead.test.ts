@@ -1,4 +1,4 @@
-// Session version 3 (issue 13): a loaded head (HeadRef), scalp brush strokes and a mirror plane.
+// Session version 3: a loaded head (HeadRef), scalp brush strokes and a mirror plane.
 // A session file embeds the head file and reads back the same session and the same bytes
 // (checked by their SHA-256, computed here with node:crypto); a link carries the head's
 // reference, the strokes and the plane and reopens the same session; version 2 sessions and

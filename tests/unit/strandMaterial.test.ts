@@ -1,5 +1,5 @@
 // Strand geometry for LineSegments (tangents, `along`, per-strand variation) and the Kajiya–Kay
-// material's uniforms (SPEC S6.1). The shader itself compiles only in a browser (checked with a
+// material's uniforms (method S6.1). The shader itself compiles only in a browser (checked with a
 // headless Chromium render); here the geometry layout is checked against direct computation.
 import { describe, expect, it } from 'vitest';
 import {

@@ -1,4 +1,4 @@
-// Supporting surfaces (SPEC S4.3): ruled quads lie in their segment's eye plane, strip lines are
+// Supporting surfaces (method S4.3): ruled quads lie in their segment's eye plane, strip lines are
 // orthogonal to the segment-eye triangle, and ray hits report the right surface coordinates.
 import { describe, expect, it } from 'vitest';
 import {

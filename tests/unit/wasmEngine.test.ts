@@ -15,7 +15,7 @@ beforeAll(() => {
 
 const OMEGA = 100;
 
-/** Dense (DᵀD + ω²S) T = ω² S C from SPEC S2.2/S2.3, solved by Cholesky. T[3p + axis]. */
+/** Dense (DᵀD + ω²S) T = ω² S C from method S2.2/S2.3, solved by Cholesky. T[3p + axis]. */
 function denseFieldSolve(
   dims: [number, number, number],
   index: ArrayLike<number>,

@@ -1,4 +1,4 @@
-// The wasm engine's style primitives (SPEC S4.5–S4.7): dividing and ponytail parameter blocks,
+// The wasm engine's style primitives (method S4.5–S4.7): dividing and ponytail parameter blocks,
 // explicit extra constraints and scalp avoidance, under Node. Assumes wasm-build/build.sh ran.
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';

@@ -1,5 +1,5 @@
 // What the view shows besides head and hair: the style curves, the construction guides (the
-// ponytail being built, or the selected ponytail's circles) and the display overlays of SPEC
+// ponytail being built, or the selected ponytail's circles) and the display overlays of method
 // S6.2 (constraints, field, supporting surface, box). View state: the display toggles are not in
 // the undo history or the session. Each overlay is rebuilt only when what it draws changes.
 import { curveSurface } from '../editor/curveSurface';

@@ -38,7 +38,7 @@ export interface HairsketchTestApi {
   /** Replaces the session with a plain-JSON one from session() (an undoable edit); for
    *  comparing a session's hair against a fresh solve in another page. */
   replaceSession(session: unknown): void;
-  /** The display toggles (SPEC S6.2): which of curves, constraints, surface, field, box show. */
+  /** The display toggles (method S6.2): which of curves, constraints, surface, field, box show. */
   display(): DisplayState;
   /** What the shown overlays draw: constraints, field glyphs, surface triangles (0 when off). */
   displayInfo(): { constraints: number; glyphs: number; surfaceTriangles: number };

@@ -1,4 +1,4 @@
-// The built-in head (SPEC S1.1): the signed distance function of headSdf.ts polygonised by
+// The built-in head (method S1.1): the signed distance function of headSdf.ts polygonised by
 // surface nets into one closed, consistently oriented triangle mesh, with smoothed normals and a
 // scalp flag per triangle. World units ≈ 10 cm; y up; the face looks toward +z; +x is the head's
 // left; the scalp-parameterisation centre is the origin.

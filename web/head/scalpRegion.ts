@@ -1,4 +1,4 @@
-// The scalp: the hair-bearing part of the cranium (SPEC S1.1), described as a region of
+// The scalp: the hair-bearing part of the cranium (method S1.1), described as a region of
 // directions seen from the scalp-parameterisation centre. Spherical angles as in S5.1: θ from +y
 // (0 = top of the head), φ = 0 toward +z (the face), φ = 90° toward +x (the head's left); the
 // direction is (sinθ sinφ, cosθ, sinθ cosφ). The hairline is θ_max(|φ|): a direction is scalp
@@ -98,7 +98,7 @@ export function markScalpTriangles(
   return scalp;
 }
 
-/** Scalp of a user-loaded head (SPEC S1.1): triangles whose centroid lies on the side of the
+/** Scalp of a user-loaded head (method S1.1): triangles whose centroid lies on the side of the
  *  plane that `planeNormal` points to. The normal need not be unit. */
 export function scalpFromPlane(
   mesh: TriangleSoup,

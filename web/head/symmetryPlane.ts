@@ -1,4 +1,4 @@
-// A loaded head's left–right symmetry plane (issue 13, Mirror): the plane that maps the head onto
+// A loaded head's left–right symmetry plane (for Mirror): the plane that maps the head onto
 // itself best. Vertices (at most SAMPLES, an even stride of the mesh) are reflected across a
 // candidate plane and the cost is their mean distance to the mesh (closest point by the head's
 // BVH), each capped at CAP so that an asymmetric part (a shoulder, an ear ring) cannot dominate.

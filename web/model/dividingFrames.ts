@@ -1,4 +1,4 @@
-// Dividing curves on the TypeScript side (SPEC S4.5; their scalp normals come from
+// Dividing curves on the TypeScript side (method S4.5; their scalp normals come from
 // head/head.ts Head.normalAt): the local frames (the same formulas as solver-cpp/src/
 // dividing_constraints.hpp, for display: the yellow lines of Fig. 2), the tilt a hint stroke
 // asks for.

@@ -1,4 +1,4 @@
-// Grid presets over the fixed bounding volume of the built-in head (SPEC S1.2).
+// Grid presets over the fixed bounding volume of the built-in head (method S1.2).
 import type { GridSpec } from '../solver/protocol';
 import type { Vec3 } from './vec3';
 

@@ -1,4 +1,4 @@
-// Ponytail cross sections (SPEC S4.6, paper §5 and Fig. 5) from its four sketched curves, and
+// Ponytail cross sections (method S4.6, paper §5 and Fig. 5) from its four sketched curves, and
 // packing to the protocol's ponytail parameter block.
 //
 // For each spine point s_i (every `every`-th, counted from the root) with unit tangent t_i

@@ -1,4 +1,4 @@
-// Stroke resampling at a fixed world-space step (SPEC S4: segments of length d).
+// Stroke resampling at a fixed world-space step (method S4: segments of length d).
 import { distance, dot, isFiniteVec, sub, type Vec3 } from './vec3';
 
 /**

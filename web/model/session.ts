@@ -87,7 +87,7 @@ export interface HeadTurn {
   quarterTurns: number;
 }
 
-/** A user's head mesh (issue 13), named by its file's content: the normalised mesh is
+/** A user's head mesh, named by its file's content: the normalised mesh is
  *  loadHeadFile(name, bytes, { up }) turned by each of `turns` in order (head/headStore.ts
  *  loadHeadRef), where `bytes` are the file whose SHA-256 is `hash`. The session does not hold
  *  the bytes: a session file embeds them beside it (sessionFile.ts), a link does not, and the

@@ -1,4 +1,4 @@
-// Supporting surface of a stream curve (SPEC S4.3, paper §5 and Fig. 3a/b), relative to the
+// Supporting surface of a stream curve (method S4.3, paper §5 and Fig. 3a/b), relative to the
 // curve's own viewpoint (eye). Two modes:
 //
 //  'ruled': the degenerate ruled surface between the curve and the eye. Segment i (p_i -> p_i+1)

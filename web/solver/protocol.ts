@@ -2,7 +2,7 @@
 // every typed array that crosses the boundary. Arrays are flat; the comment on each field gives
 // its index formula. Arrays sent by the worker are transferred (not copied).
 
-/** Uniform grid over the bounding volume (SPEC S1.2). Point (i, j, k) has index
+/** Uniform grid over the bounding volume (method S1.2). Point (i, j, k) has index
  *  p = i + nx * (j + ny * k) and world position origin + step * (i, j, k). */
 export interface GridSpec {
   dims: [number, number, number]; // nx, ny, nz
@@ -10,7 +10,7 @@ export interface GridSpec {
   step: number; // d, world units
 }
 
-/** The head as the solver needs it: triangles with a scalp flag (SPEC S1.1). */
+/** The head as the solver needs it: triangles with a scalp flag (method S1.1). */
 export interface ScalpMesh {
   positions: Float32Array; // positions[3 * vertex + axis]
   indices: Uint32Array; // indices[3 * triangle + corner]
@@ -121,7 +121,7 @@ export interface CurveSet {
   extraTarget: Float64Array; // extraTarget[3 * e + axis]
 }
 
-/** Hair growth settings (SPEC S5). */
+/** Hair growth settings (method S5). */
 export interface GrowthParams {
   thetaStepDeg: number; // sampling step of θ ∈ [0, 180)
   phiStepDeg: number; // sampling step of φ ∈ [0, 360)
@@ -188,7 +188,7 @@ export interface FieldArrays {
 export const ConstraintColour = { blue: 0, red: 1, purple: 2, green: 3, extra: 4 } as const;
 export type ConstraintColourName = keyof typeof ConstraintColour;
 
-/** The constraint set derived from the curves (SPEC S2.3). */
+/** The constraint set derived from the curves (method S2.3). */
 export interface ConstraintArrays {
   index: Int32Array; // index[c] = grid point p of constraint c (sorted, unique)
   target: Float32Array; // target[3 * c + axis] = c_p

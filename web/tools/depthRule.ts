@@ -1,4 +1,4 @@
-// SPEC S4.2: lifting a screen stroke onto the head. The first point takes the depth of its scalp
+// Method S4.2: lifting a screen stroke onto the head. The first point takes the depth of its scalp
 // hit; each next point takes the scalp depth while over the scalp, else the depth of the last
 // scalp point. "Depth" is the distance along the camera's viewing direction made level (its
 // horizontal part): a point off the head lies on the vertical plane through the last scalp point

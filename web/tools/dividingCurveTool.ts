@@ -1,4 +1,4 @@
-// The "Dividing curve" tool (SPEC S4.5): Idle -> Drawing -> Idle.
+// The "Dividing curve" tool (method S4.5): Idle -> Drawing -> Idle.
 // A stroke on the scalp (every sample projected onto the head where the pointer is over the
 // scalp) makes a dividing curve. A stroke that starts within HINT_RADIUS grid steps of the
 // selected dividing curve may instead be a tilt hint, which sets the tilt of that side

@@ -1,4 +1,4 @@
-// Hint strokes on a stream curve's supporting surface (SPEC S4.4, paper Fig. 3c–h): lifting the
+// Hint strokes on a stream curve's supporting surface (method S4.4, paper Fig. 3c–h): lifting the
 // stroke's rays onto the surface, recognising the operation, and applying it to the curve.
 //
 // Thresholds, in grid steps d (HintThresholds):

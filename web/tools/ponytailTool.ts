@@ -1,4 +1,4 @@
-// The "Ponytail" tool (SPEC S4.6): four strokes make one ponytail.
+// The "Ponytail" tool (method S4.6): four strokes make one ponytail.
 //   stage 'spine':    a stroke from the scalp, lifted like a stream curve (S4.2);
 //   (the user may orbit the view: the right button orbits with any drawing tool)
 //   stage 'cross':    a stroke across the spine: the cross-section curve;

@@ -1,4 +1,4 @@
-// The scalp brush (issue 13): drag on the head to paint scalp, Shift+drag to erase it; the wheel
+// The scalp brush: drag on the head to paint scalp, Shift+drag to erase it; the wheel
 // sets the brush radius. The stroke is shown painted while it is drawn (a preview of the mask,
 // no solve) and becomes one undoable edit on release: the session keeps the stroke, and the
 // roots redistribute over the painted area when the solver gets the new mask.

@@ -1,4 +1,4 @@
-// The "Stream curve" tool (SPEC S4.1–S4.4): Idle -> Drawing | Hinting -> Idle.
+// The "Stream curve" tool (method S4.1–S4.4): Idle -> Drawing | Hinting -> Idle.
 //
 // Which strokes draw and which edit (hintStroke.ts has the thresholds):
 //  - A press off the scalp on the selected stream curve's supporting surface (in front of the

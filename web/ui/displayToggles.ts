@@ -1,4 +1,4 @@
-// Display toggles (SPEC S6.2): a compact row of checkboxes with accessible names "Curves",
+// Display toggles (method S6.2): a compact row of checkboxes with accessible names "Curves",
 // "Constraints", "Surface", "Field", "Box" (keys 1–5: the actions table, app/actions.ts). The state is view
 // state, not part of the session: it is neither in the undo history nor in share links.
 

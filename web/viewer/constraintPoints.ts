@@ -1,4 +1,4 @@
-// The constraints of the current solve (SPEC S6.2): a point at each constrained grid point and a
+// The constraints of the current solve (method S6.2): a point at each constrained grid point and a
 // short segment along its target direction, coloured by kind as in the paper's Figs. 2, 4, 5.
 // The segment's length is proportional to the target's magnitude (the red 0.3 constraints of a
 // dividing curve are short), and it fades towards white at its tip to show the direction.

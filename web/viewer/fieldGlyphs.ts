@@ -1,4 +1,4 @@
-// The solved vector field as glyphs (SPEC S6.2, the paper's Fig. 2): a short line segment at
+// The solved vector field as glyphs (method S6.2, the paper's Fig. 2): a short line segment at
 // grid points of a subsampled grid (every `stride`-th point along each axis), only where the
 // field is not negligible (|v| > minMagnitude, the growth stop threshold), and never more than
 // `maxGlyphs` of them (an even sample when there are more), so the display stays light on a

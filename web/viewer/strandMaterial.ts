@@ -1,4 +1,4 @@
-// Hair strands (SPEC S6.1): geometry and shading.
+// Hair strands (method S6.1): geometry and shading.
 // Shading: Kajiya–Kay diffuse and two highlights on shifted tangents (Scheuermann 2004, AMD
 // TressFX): T' = normalize(T + shift·N), N the strand's normal (outward from the head,
 // perpendicular to T); a white primary tilted towards the root and a hair-coloured secondary

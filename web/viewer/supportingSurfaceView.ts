@@ -1,4 +1,4 @@
-// The supporting surface of the selected stream curve (SPEC S4.3, S6.2; the paper's Fig. 3a/b),
+// The supporting surface of the selected stream curve (method S4.3, S6.2; the paper's Fig. 3a/b),
 // as a translucent two-sided mesh. The surface itself is web/model/supportingSurface.ts; the
 // caller chooses the curve, its viewpoint and the mode.
 import * as THREE from 'three';

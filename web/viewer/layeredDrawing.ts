@@ -1,0 +1,150 @@
+// Drawing a frame in layers through the frame cache (frameCache.ts): which scene objects belong
+// to which layer, what the cached layers must match, and the draw itself (a cached slot, then
+// only the layers that changed), plus a test probe that compares a cached frame with a whole one.
+import * as THREE from 'three';
+import {
+  drawableStamp,
+  type FrameMode,
+  type FramePlan,
+  FrameSlots,
+  type HairKey,
+  type LayerKey,
+  planFrame,
+  sameLayer,
+  viewKey,
+} from './frameCache';
+import type { DrawnHair } from './hairLevelOfDetail';
+
+type Layer = 'static' | 'hair' | 'overlay' | 'light';
+export type LayerKeys = { layer: LayerKey; hair: string };
+
+/** What the drawing reads from the viewer's scene. */
+export interface LayeredScene {
+  readonly renderer: THREE.WebGLRenderer;
+  readonly scene: THREE.Scene;
+  readonly camera: THREE.PerspectiveCamera;
+  /** The group that holds the hair object (its only child, or none). */
+  readonly hairGroup: THREE.Group;
+  /** The hair object drawn at a level of detail (its draw range is set per frame). */
+  hair(): DrawnHair;
+  /** Whether a child of the scene is an overlay (curves, draft, guides, displays). */
+  isOverlay(o: THREE.Object3D): boolean;
+}
+
+export class LayeredDrawing {
+  /** Frames are drawn through the frame cache when it is available (false: every frame is
+   *  drawn whole; a test and benchmark switch). */
+  enabled = true;
+  /** The cache's slots (made with the first frame) and what each holds. */
+  private slots: FrameSlots | null = null;
+  private staticKey: LayerKey | null = null;
+  private hairKey: HairKey | null = null;
+  /** Bumped by invalidate: changes the slots' stamps cannot see (uniforms). */
+  private epoch = 0;
+
+  constructor(private readonly s: LayeredScene) {}
+
+  /** Whether frames go through the frame cache (on, and the canvas allows copies). */
+  get active(): boolean {
+    this.slots ??= new FrameSlots(this.s.renderer);
+    return this.enabled && this.slots.available;
+  }
+
+  /** Forgets the cached layers (the caller requests a frame). */
+  invalidate(): void {
+    this.epoch++;
+  }
+
+  /** What the cached layers must match: the view, the static part's stamp, the hair's. */
+  keys(): LayerKeys {
+    const { camera, renderer, scene } = this.s;
+    camera.updateMatrixWorld();
+    const size = renderer.getDrawingBufferSize(new THREE.Vector2());
+    const statics = scene.children.filter((c) => this.layerOf(c) === 'static');
+    return {
+      layer: {
+        view: viewKey(
+          camera.matrixWorld.elements,
+          camera.projectionMatrix.elements,
+          size.x,
+          size.y,
+        ),
+        scene: `${this.epoch}|${drawableStamp(statics)}`,
+      },
+      hair: drawableStamp([this.s.hairGroup]),
+    };
+  }
+
+  plan(mode: FrameMode, all: number, interactive: number, keys: LayerKeys): FramePlan {
+    if (!this.active) return planFrame(mode, all, interactive, false, null);
+    const cachedHair =
+      this.hairKey && sameLayer(this.hairKey, keys.layer) && this.hairKey.hair === keys.hair
+        ? this.hairKey.count
+        : null;
+    return planFrame(mode, all, interactive, sameLayer(this.staticKey, keys.layer), cachedHair);
+  }
+
+  /** Whether the static slot holds the view `keys` describe. */
+  staticValid(keys: LayerKeys): boolean {
+    return this.active && sameLayer(this.staticKey, keys.layer);
+  }
+
+  private layerOf(o: THREE.Object3D): Layer {
+    if (o === this.s.hairGroup) return 'hair';
+    if (this.s.isOverlay(o)) return 'overlay';
+    return o instanceof THREE.Light ? 'light' : 'static';
+  }
+
+  /** Draws the scene's objects of the given layers (lights always stay: hiding one would change
+   *  the lit materials' programs). */
+  private renderLayers(layers: ReadonlyArray<'static' | 'hair' | 'overlay'>): void {
+    const hidden: THREE.Object3D[] = [];
+    for (const c of this.s.scene.children) {
+      const layer = this.layerOf(c);
+      if (layer === 'light' || layers.includes(layer) || !c.visible) continue;
+      c.visible = false;
+      hidden.push(c);
+    }
+    try {
+      this.s.renderer.render(this.s.scene, this.s.camera);
+    } finally {
+      for (const c of hidden) c.visible = true;
+    }
+  }
+
+  /** Draws a frame as `plan` says, into the canvas; `save`: keep the layers drawn in the cache.
+   *  Returns where the frame started from (a cached slot, or 'none'). */
+  draw(plan: FramePlan, all: number, keys: LayerKeys, save: boolean): FramePlan['source'] {
+    const r = this.s.renderer;
+    const hair = this.s.hair();
+    if (hair && all > 0 && plan.source !== 'hair') hair.geometry.setDrawRange(0, plan.count);
+    if (!this.active || !this.slots) {
+      r.render(this.s.scene, this.s.camera);
+      return 'none';
+    }
+    const slots = this.slots;
+    const size = r.getDrawingBufferSize(new THREE.Vector2());
+    let source = plan.source;
+    if (source !== 'none' && !slots.copy(source, 'restore', size.x, size.y)) source = 'none';
+    if (source === 'none' && plan.source === 'hair' && hair && all > 0)
+      hair.geometry.setDrawRange(0, plan.count);
+    const autoClear = r.autoClear;
+    try {
+      if (source === 'none') {
+        r.autoClear = true;
+        this.renderLayers(['static']);
+        if (save && slots.copy('static', 'save', size.x, size.y)) this.staticKey = keys.layer;
+      }
+      r.autoClear = false;
+      if (source !== 'hair') {
+        this.renderLayers(['hair']);
+        if (save && slots.copy('hair', 'save', size.x, size.y))
+          this.hairKey = { ...keys.layer, hair: keys.hair, count: plan.count };
+      }
+      this.renderLayers(['overlay']);
+    } finally {
+      r.autoClear = autoClear;
+    }
+    return source;
+  }
+}
