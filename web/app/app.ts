@@ -127,7 +127,6 @@ export function startApp(): void {
   const edits = editActions({
     editor,
     viewer,
-    bridge,
     status,
     view,
     cancelTool: () => active.cancel(),

@@ -5,14 +5,12 @@ import type { HeadStore } from '../head/headStore';
 import type { Viewer } from '../viewer/viewer';
 import type { ActionTarget } from './actions';
 import { downloadSession, type LinkWriter } from './sessionIO';
-import type { SolverBridge } from './solverBridge';
 import type { StatusPresenter } from './statusPresenter';
 import type { ViewStore } from './viewState';
 
 export interface EditActionDeps {
   editor: Editor;
   viewer: Viewer;
-  bridge: SolverBridge;
   status: StatusPresenter;
   links: LinkWriter;
   /** Where loaded heads are kept ("Save" embeds the session's head file from here). */
