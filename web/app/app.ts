@@ -1,14 +1,15 @@
 // The composition root. Data flows one way:
-//   pointer → tool (tools.ts) → editor command (editor/) → solver bridge → worker → result →
-//   hair / overlay / status presenters → viewer.
-// Everything that reacts to an edit subscribes to the editor; this file only builds the parts
-// and connects them.
-import { Editor, type ToolName } from '../editor/editor';
+//   pointer → tool (tools.ts) → editor (commands, and the stroke being drawn) → solver bridge →
+//   worker → result → hair / overlay / status presenters → viewer.
+// Everything that reacts to an edit subscribes to the editor, and everything that shows view
+// state to the view store; this file only builds the parts and connects them.
+import { Editor } from '../editor/editor';
 import { Head } from '../head/head';
 import { indexedDbHeadStore } from '../head/headStore';
 import { gridForPreset, gridForSession } from '../model/grid';
 import { applyPreset } from '../model/presets';
 import { DEFAULT_GROWTH, emptySession, hangLength } from '../model/session';
+import { PONYTAIL_STAGE_HINT } from '../tools/ponytailTool';
 import { buildCurvePanel } from '../ui/curvePanel';
 import { buildDetailPanel, type DetailPanel } from '../ui/detailPanel';
 import { buildDisplayToggles } from '../ui/displayToggles';
@@ -16,24 +17,26 @@ import { buildHeadPanel, type HeadPanel } from '../ui/headPanel';
 import { buildHelpOverlay, type HelpOverlay } from '../ui/helpOverlay';
 import { StatusLine } from '../ui/status';
 import { buildToolbar } from '../ui/toolbar';
-import { setCameraButtons } from '../viewer/cameraButtons';
 import { HairView } from '../viewer/hairView';
 import { createHeadMesh } from '../viewer/headMaterial';
 import { Viewer } from '../viewer/viewer';
 import { buildActions } from './actions';
+import { ActiveTool } from './activeTool';
 import { editActions } from './editActions';
 import { type ExportWiring, wireExport } from './exportActions';
 import { HairPresenter } from './hairPresenter';
 import { HeadController } from './headController';
 import { bindInput } from './input';
 import { OverlayPresenter } from './overlayPresenter';
-import { QualityControl } from './quality';
+import { bindPageControls } from './pageControls';
+import { loadQualitySetting, QualityControl } from './quality';
 import { LinkWriter, openSessionFileOutcome, openSessionLinkOutcome } from './sessionIO';
 import { SolverBridge } from './solverBridge';
 import { StatusPresenter } from './statusPresenter';
 import { installTestApi } from './testApi';
-import { createTools, toolHint } from './tools';
+import { createTools } from './tools';
 import { parseUrlOptions } from './urlOptions';
+import { ViewStore } from './viewState';
 
 export function startApp(): void {
   const opts = parseUrlOptions(window.location.search);
@@ -74,47 +77,59 @@ export function startApp(): void {
   );
   // every preset starts with the tool a new user wants first: drawing a stream curve
   const editor = new Editor(initial, 'stream');
+  const view = new ViewStore({ quality: loadQualitySetting() });
 
   const hairView = new HairView(viewer, headMesh);
-  const quality = new QualityControl(hairView, viewer);
-  const hair = new HairPresenter(viewer, hairView, line, initial.hairColor);
+  const quality = new QualityControl(hairView, viewer, view);
+  // the bridge hears of each edit first: a result it answers from its cache at once comes
+  // before the presenters' own reaction to the edit
   const bridge = new SolverBridge(editor, {
     grid: gridForSession(initial.grid, initial.curves, undefined, hangLength(initial)),
     solver: opts.solver,
     scalp: head.scalpMesh(),
     headBounds: () => heads.gridBounds,
     interactiveDetail: () => viewer.interactiveDetail,
-    shownStrands: () => line.strands,
+    shownStrands: () => hair.shownStrands,
   });
+  editor.listen((c) => {
+    if (c.sessionChanged) heads.sessionChanged(c.session);
+    if (c.camera) viewer.setCamera(c.camera.position, c.camera.target);
+  });
+  const hair = new HairPresenter(viewer, hairView, line, editor);
+  const overlays = new OverlayPresenter(viewer, editor, view, bridge.grid);
   const status = new StatusPresenter(line, bridge);
-  const overlays = new OverlayPresenter(viewer, editor, bridge.grid);
+  editor.listen((c) => status.editorChanged(c));
   const links = new LinkWriter(editor);
 
   const tools = createTools({
     editor,
     head: () => heads.head,
     viewer,
-    bridge,
-    overlays,
     step: grid.step,
+    mirror: () => view.state.mirror,
+    curvesShown: () => view.state.display.curves,
+    showGuides: (lines) => overlays.setToolGuides(lines),
     previewScalp: (stroke) => heads.previewStroke(stroke),
     notify: (m) => status.note(m),
-    ponytailStage: (hint) => {
-      if (editor.tool === 'ponytail') line.hint(hint);
-      status.note(hint);
+    ponytailStage: (stage) => {
+      view.update({ ponytailStage: stage });
+      status.note(PONYTAIL_STAGE_HINT[stage]);
     },
   });
-  let tool = tools.byName[editor.tool];
-  viewer.onFrame(() => tool.update());
+  const active = new ActiveTool({
+    editor,
+    tools: tools.byName,
+    onFrame: (hook) => viewer.onFrame(hook),
+  });
 
   let help: HelpOverlay | null = null;
   let detailPanel: DetailPanel | null = null;
   const edits = editActions({
     editor,
     viewer,
-    bridge,
     status,
-    tool: () => tool,
+    view,
+    cancelTool: () => active.cancel(),
     openDialog: () => toolbar.openFileDialog(),
     links,
     heads: headStore,
@@ -137,13 +152,10 @@ export function startApp(): void {
       toolbar.refresh();
     },
     headPanelOpen: () => !!headPanel?.open,
-    display: (k) => overlays.display[k],
-    setDisplay: (k, on) => overlays.setDisplay(k, on),
+    display: (k) => view.state.display[k],
+    setDisplay: (k, on) => view.setDisplay(k, on),
     qualityLabel: () => quality.label(),
-    cycleQuality: () => {
-      quality.cycle();
-      toolbar.refresh();
-    },
+    cycleQuality: () => quality.cycle(),
   });
   const toolbar = buildToolbar(byId('toolbar'), actions, {
     hairColor: (css) => editor.run({ kind: 'setHairColor', color: css }),
@@ -154,7 +166,6 @@ export function startApp(): void {
       ),
     openHeadFile: (f) => heads.openHeadFile(editor, f),
   });
-  toolbar.setHairColor(initial.hairColor);
   help = buildHelpOverlay(document.body, actions);
   exporting = wireExport({
     editor,
@@ -166,14 +177,14 @@ export function startApp(): void {
     solver: opts.solver,
     anchor: byId('toolbar'),
   });
-  const toggles = buildDisplayToggles(toolbar.moreElement, overlays.display, (k, on) =>
-    overlays.setDisplay(k, on),
+  const toggles = buildDisplayToggles(toolbar.moreElement, view.state.display, (k, on) =>
+    view.setDisplay(k, on),
   );
-  overlays.onDisplayChanged = (key, on) => {
-    toggles.set(overlays.display);
-    if (key === 'field') bridge.setWantField(on, !!overlays.shownResult?.field);
-  };
-  const panel = buildCurvePanel(
+  view.listen(({ state, previous }) => {
+    const on = state.display.field;
+    if (on !== previous.display.field) bridge.setWantField(on, !!overlays.shownResult?.field);
+  });
+  const curvePanel = buildCurvePanel(
     byId('stage'),
     (id, patch) => editor.run({ kind: 'patchCurve', id, patch }),
     (m) => status.note(m),
@@ -183,7 +194,6 @@ export function startApp(): void {
     setDetail: (curveId, detail) => editor.run({ kind: 'setDetail', curveId, detail }),
     say: (m) => status.note(m),
   });
-  detailPanel.show(editor.session, editor.selectedCurve);
   headPanel = buildHeadPanel(byId('stage'), {
     openHead: () => toolbar.openHeadDialog(),
     useBuiltin: () => heads.useBuiltin(editor),
@@ -208,24 +218,16 @@ export function startApp(): void {
     });
   }
 
-  const applyTool = (name: ToolName) => {
-    tool.onCancel();
-    tool = tools.byName[name];
-    setCameraButtons(viewer.controls, name !== 'select');
-    line.hint(toolHint(name, tools.ponytail));
-  };
-  editor.listen((c) => {
-    heads.sessionChanged(c.session);
-    showHeadPanel();
-    if (c.cause === 'tool') applyTool(c.tool);
-    if (c.camera) viewer.setCamera(c.camera.position, c.camera.target);
-    hair.editorChanged(c);
-    overlays.editorChanged(c);
-    status.editorChanged(c);
-    if (c.session.hairColor !== c.previous.hairColor) toolbar.setHairColor(c.session.hairColor);
-    panel.show(editor.selectedCurve);
-    detailPanel?.show(c.session, editor.selectedCurve);
-    toolbar.refresh();
+  bindPageControls({
+    editor,
+    view,
+    viewer,
+    line,
+    toolbar,
+    toggles,
+    curvePanel,
+    detailPanel,
+    showHeadPanel,
   });
   bridge.subscribe({
     busy: (phase, fraction, previewing) => status.busy(phase, fraction, previewing),
@@ -233,9 +235,7 @@ export function startApp(): void {
       hair.result(r, final);
       overlays.result(r);
       status.result(r, final);
-      // a preview answered: the pointer's newest samples go out as the next one now, not at
-      // the next frame (frames are slow on a software rasteriser; the worker would wait)
-      if (bridge.previewing) queueMicrotask(() => tool.update());
+      active.previewAnswered();
     },
     error: (m, kind, restarting) => status.solverError(m, kind, restarting),
     gridChanged: (g) => overlays.setGrid(g),
@@ -250,7 +250,7 @@ export function startApp(): void {
   let lastPointerUp = 0;
   bindInput({
     viewer,
-    tool: () => tool,
+    tool: () => active.current,
     actions,
     overlayKey: (key) => {
       if (key === 'escape' && exporting?.menu.open) {
@@ -266,9 +266,7 @@ export function startApp(): void {
     },
   });
 
-  applyTool(editor.tool);
   overlays.syncCurves();
-  toolbar.refresh();
   line.counts(0, initial.curves.length);
   line.set('loading', 'Loading the solver…');
   bridge.sync();
@@ -292,6 +290,7 @@ export function startApp(): void {
     bridge,
     hair,
     overlays,
+    view,
     ponytail: tools.ponytail,
     busy: () =>
       heads.busy ||
@@ -299,7 +298,7 @@ export function startApp(): void {
       !!exporting?.busy() ||
       bridge.pending ||
       hair.awaitingFrame ||
-      (tool.state !== 'idle' && tool.state !== 'pressed'),
+      active.busy,
     lastPointerUp: () => lastPointerUp,
     quality,
     exporter: exporting.exporter,

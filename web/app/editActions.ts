@@ -2,22 +2,22 @@
 // files: the ActionTarget of actions.ts, minus the view toggles the composition root adds.
 import type { Editor } from '../editor/editor';
 import type { HeadStore } from '../head/headStore';
-import type { Tool } from '../tools/tool';
 import type { Viewer } from '../viewer/viewer';
 import type { ActionTarget } from './actions';
 import { downloadSession, type LinkWriter } from './sessionIO';
-import type { SolverBridge } from './solverBridge';
 import type { StatusPresenter } from './statusPresenter';
+import type { ViewStore } from './viewState';
 
 export interface EditActionDeps {
   editor: Editor;
   viewer: Viewer;
-  bridge: SolverBridge;
   status: StatusPresenter;
   links: LinkWriter;
   /** Where loaded heads are kept ("Save" embeds the session's head file from here). */
   heads: HeadStore;
-  tool(): Tool;
+  view: ViewStore;
+  /** Abandons what the active tool is doing. */
+  cancelTool(): void;
   openDialog(): void;
   /** The toolbar reflects a state change (e.g. "Avoid scalp" busy). */
   refresh(): void;
@@ -72,8 +72,8 @@ export function editActions(d: EditActionDeps): EditActions {
           mode: (c.surfaceMode ?? 'ruled') === 'ruled' ? 'strip' : 'ruled',
         });
     },
-    mirror: () => editor.mirror,
-    setMirror: (on) => editor.setMirror(on),
+    mirror: () => d.view.state.mirror,
+    setMirror: (on) => d.view.update({ mirror: on }),
     /** S4.7 as a setting of the session, an undoable edit. */
     toggleAvoidScalp: () => editor.run({ kind: 'setAvoidScalp', on: !editor.session.avoidScalp }),
     avoidScalpOn: () => !!editor.session.avoidScalp,
@@ -92,7 +92,7 @@ export function editActions(d: EditActionDeps): EditActions {
       status.note(`Orbit speed ×${f}.`);
     },
     cancel: () => {
-      d.tool().onCancel();
+      d.cancelTool();
       editor.select(null);
     },
   };

@@ -2,7 +2,7 @@
 // strand count and revision on the status line, the hair colour from the session, and when
 // each revision reached the screen (for benchmarks). Holds the view at interactive detail while
 // the hair is still settling.
-import type { EditorChange } from '../editor/editor';
+import type { Editor } from '../editor/editor';
 import type { StrandArrays } from '../solver/protocol';
 import type { SolveResult } from '../solver/solverClient';
 import type { StatusLine } from '../ui/status';
@@ -29,6 +29,8 @@ export interface HairRevision {
 
 export class HairPresenter {
   private shown: StrandArrays | null = null;
+  /** Strands with at least one segment in the hair shown (visibleStrands). */
+  private strandCount = 0;
   /** When each displayed hair revision reached the screen (performance.now()). */
   readonly log: HairRevision[] = [];
   private unstamped: Omit<HairRevision, 'time'> | null = null;
@@ -42,24 +44,28 @@ export class HairPresenter {
     private readonly viewer: Viewer,
     private readonly hair: HairView,
     private readonly status: StatusLine,
-    hairColor: string,
+    editor: Editor,
   ) {
-    hair.setColor(hairColor);
+    hair.setColor(editor.session.hairColor);
     viewer.onRendered = () => this.stamp();
+    editor.listen((c) => {
+      this.hair.setColor(c.session.hairColor); // a no-op when it is the same colour
+      if (c.sessionChanged) this.viewer.hold('settling', true); // until the final hair is shown
+    });
   }
 
   get strands(): StrandArrays | null {
     return this.shown;
   }
 
+  /** Strands in the hair on screen (those with at least one segment). */
+  get shownStrands(): number {
+    return this.strandCount;
+  }
+
   /** Converged hair is waiting for its first frame. */
   get awaitingFrame(): boolean {
     return this.finalPending;
-  }
-
-  editorChanged(c: EditorChange): void {
-    this.hair.setColor(c.session.hairColor); // a no-op when it is the same colour
-    if (c.sessionChanged) this.viewer.hold('settling', true); // until the final hair is shown
   }
 
   result(r: SolveResult, final: boolean): void {
@@ -84,6 +90,7 @@ export class HairPresenter {
       );
       const buildMs = performance.now() - b0;
       const n = visibleStrands(r.strands);
+      this.strandCount = n;
       this.status.counts(n, this.status.curves);
       this.status.bumpRevision();
       this.unstamped = {

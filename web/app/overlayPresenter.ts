@@ -1,21 +1,22 @@
 // What the view shows besides head and hair: the style curves, the construction guides (the
 // ponytail being built, or the selected ponytail's circles) and the display overlays of method
-// S6.2 (constraints, field, supporting surface, box). View state: the display toggles are not in
-// the undo history or the session. Each overlay is rebuilt only when what it draws changes.
+// S6.2 (constraints, field, supporting surface, box). Which show is view state (the view store,
+// viewState.ts), not in the undo history or the session. Each overlay is rebuilt only when what
+// it draws changes.
 import { curveSurface } from '../editor/curveSurface';
-import type { Editor, EditorChange } from '../editor/editor';
+import type { Editor } from '../editor/editor';
 import { normalize, type Vec3 } from '../model/vec3';
 import type { GridSpec } from '../solver/protocol';
 import type { SolveResult } from '../solver/solverClient';
-import { DEFAULT_DISPLAY, type DisplayKey, type DisplayState } from '../ui/displayToggles';
+import type { DisplayState } from '../ui/displayToggles';
 import { BoundingVolumeView } from '../viewer/boundingVolume';
 import { ConstraintPointsView } from '../viewer/constraintPoints';
 import { FieldGlyphsView } from '../viewer/fieldGlyphs';
 import { SupportingSurfaceView } from '../viewer/supportingSurfaceView';
 import type { Viewer } from '../viewer/viewer';
+import type { ViewStore } from './viewState';
 
 export class OverlayPresenter {
-  readonly display: DisplayState = { ...DEFAULT_DISPLAY };
   /** Construction lines of the ponytail being built (empty: none). */
   private toolGuides: Vec3[][] = [];
   /** The result whose constraints / field the overlays draw. */
@@ -32,15 +33,25 @@ export class OverlayPresenter {
     field: null as unknown,
     surface: null as unknown,
   };
-  /** Called when a display is switched (the toggles reflect it; the bridge wants the field). */
-  onDisplayChanged: ((key: DisplayKey, on: boolean) => void) | null = null;
 
   constructor(
     private readonly viewer: Viewer,
     private readonly editor: Editor,
+    private readonly view: ViewStore,
     private grid: GridSpec,
   ) {
     this.views.box = new BoundingVolumeView(grid);
+    editor.listen((c) => {
+      if (c.sessionChanged || c.selectionChanged) this.syncCurves();
+    });
+    view.listen((c) => {
+      if (c.state.display !== c.previous.display) this.update();
+    });
+  }
+
+  /** Which overlays show (the view store's). */
+  get display(): Readonly<DisplayState> {
+    return this.view.state.display;
   }
 
   /** The bounding volume moved (gridForSession): the box and later results use the new grid. */
@@ -53,20 +64,8 @@ export class OverlayPresenter {
     return this.shown;
   }
 
-  editorChanged(c: EditorChange): void {
-    if (c.sessionChanged || c.selectionChanged) this.syncCurves();
-  }
-
   result(r: SolveResult): void {
     this.shown = r;
-    this.update();
-  }
-
-  /** Turns one display on or off (checkboxes, keys 1–5, tests). */
-  setDisplay(key: DisplayKey, on: boolean): void {
-    if (this.display[key] === on) return;
-    this.display[key] = on;
-    this.onDisplayChanged?.(key, on);
     this.update();
   }
 

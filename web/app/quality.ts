@@ -66,41 +66,48 @@ export interface QualityTarget {
   readonly lightingMs: number | null;
 }
 
-/** The setting, persisted, applied to the hair view. */
-export class QualityControl {
-  private current: QualitySetting;
+/** Where the setting is held (the view store, viewState.ts). */
+export interface QualityState {
+  readonly state: { readonly quality: QualitySetting };
+  update(patch: { quality: QualitySetting }): void;
+  listen(listener: (c: { state: { quality: QualitySetting } }) => void): void;
+}
 
+/** Applies the view store's setting to the hair view, and keeps it in localStorage. */
+export class QualityControl {
   constructor(
     private readonly hair: QualityTarget,
     private readonly renderer: { software: boolean; rendererName: string },
-    initial: QualitySetting = loadQualitySetting(),
+    private readonly store: QualityState,
   ) {
-    this.current = initial;
-    this.hair.setQuality(activeQuality(initial, renderer.software));
+    this.hair.setQuality(activeQuality(store.state.quality, renderer.software));
+    store.listen(({ state }) => {
+      const active = activeQuality(state.quality, this.renderer.software);
+      if (active !== this.hair.activeQuality) this.hair.setQuality(active);
+    });
   }
 
   get setting(): QualitySetting {
-    return this.current;
+    return this.store.state.quality;
   }
 
   set(s: QualitySetting): void {
-    this.current = s;
     saveQualitySetting(s);
-    this.hair.setQuality(activeQuality(s, this.renderer.software));
+    this.store.update({ quality: s });
   }
 
   cycle(): void {
-    this.set(nextQuality(this.current));
+    this.set(nextQuality(this.setting));
   }
 
   label(): string {
-    return qualityLabel(this.current, this.hair.activeQuality);
+    return qualityLabel(this.setting, this.hair.activeQuality);
   }
 
   /** For the test API: the setting, the path drawing now, and the unmasked renderer. */
   info(): { setting: QualitySetting; active: ActiveQuality; renderer: string } {
     return {
-      setting: this.current,
+      setting: this.setting,
       active: this.hair.activeQuality,
       renderer: this.renderer.rendererName,
     };

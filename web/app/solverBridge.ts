@@ -1,11 +1,13 @@
-// The bridge between the editor and the solver worker. It alone decides what the worker is
-// asked: the session after every change (a full solve), the stroke being drawn (previews, at
-// most one in flight: SolverClient paces them) and how many strands previews and first looks
-// grow. Results and progress go to whoever subscribed (hair presenter, overlays, status line).
-import type { Editor, EditorChange } from '../editor/editor';
+// The bridge between the editor and the solver worker, with one input: the editor's state (the
+// committed session and the stroke being drawn). It alone decides what the worker is asked: the
+// session after every change that matters to the hair (a full solve), the session with the
+// stroke while one is drawn (previews, at most one in flight: SolverClient paces them), and how
+// many strands previews and first looks grow. Results and progress go to whoever subscribed
+// (hair presenter, overlays, status line, the active tool).
+import type { Editor, EditorChange, StrokeInProgress } from '../editor/editor';
 import { packCurves, packHairOptions } from '../model/curveSet';
 import { gridForSession, sameGrid } from '../model/grid';
-import { hangLength, newCurveExtends, type SessionState, type Viewpoint } from '../model/session';
+import { hangLength, newCurveExtends, type SessionState } from '../model/session';
 import type { Vec3 } from '../model/vec3';
 import type { GridSpec, ScalpMesh, SolverErrorKind, SolverName } from '../solver/protocol';
 import { type SolveResult, SolverClient } from '../solver/solverClient';
@@ -18,10 +20,10 @@ export const MIN_PREVIEW_STRANDS = 800;
 export type BusyPhase = 'loading' | 'solving' | 'growing';
 
 export interface SolverBridgeEvents {
-  busy(phase: BusyPhase, fraction: number, previewing: boolean): void;
-  result(r: SolveResult, final: boolean): void;
-  error(message: string, kind: SolverErrorKind | undefined, restarting: boolean): void;
-  idle(): void;
+  busy?(phase: BusyPhase, fraction: number, previewing: boolean): void;
+  result?(r: SolveResult, final: boolean): void;
+  error?(message: string, kind: SolverErrorKind | undefined, restarting: boolean): void;
+  idle?(): void;
   /** The bounding volume changed (results from now on are on this grid). */
   gridChanged?(grid: GridSpec): void;
 }
@@ -36,17 +38,16 @@ export interface SolverBridgeOptions {
   headBounds?: () => { min: Vec3; max: Vec3 } | undefined;
   /** Fraction of the hair the view can draw while interacting (1 on a fast GPU). */
   interactiveDetail: () => number;
-  /** Strands on screen now (previews grow no more than the view can draw). */
+  /** Strands of the hair on screen now (previews grow no more than the view can draw). */
   shownStrands: () => number;
   makeWorker?: () => Worker;
 }
 
 export class SolverBridge {
   readonly client: SolverClient;
-  /** A stroke is being drawn and previews are being solved. */
-  private drawing = false;
-  /** A preview was asked for since the last full solve was (the hair may show a preview). */
-  private previewAsked = false;
+  /** What the worker was last asked for: a preview leaves a stroke's hair on screen, which the
+   *  session's own hair must replace when the stroke ends without an edit. */
+  private lastAsked: 'full' | 'preview' = 'full';
   private readonly listeners: SolverBridgeEvents[] = [];
   private idleWaiters: Array<() => void> = [];
 
@@ -59,12 +60,12 @@ export class SolverBridge {
         (() => new Worker(new URL('../solver/worker.ts', import.meta.url), { type: 'module' })),
       { type: 'init', grid: opts.grid, omega: 100, solver: opts.solver, scalp: opts.scalp },
       {
-        onBusy: (phase, fraction) => this.each((l) => l.busy(phase, fraction, this.drawing)),
-        onResult: (r, final) => this.each((l) => l.result(r, final)),
+        onBusy: (phase, fraction) => this.each((l) => l.busy?.(phase, fraction, this.previewing)),
+        onResult: (r, final) => this.each((l) => l.result?.(r, final)),
         onError: (message, restarting, kind) =>
-          this.each((l) => l.error(message, kind, restarting)),
+          this.each((l) => l.error?.(message, kind, restarting)),
         onIdle: () => {
-          this.each((l) => l.idle());
+          this.each((l) => l.idle?.());
           for (const w of this.idleWaiters.splice(0)) w();
         },
       },
@@ -83,8 +84,9 @@ export class SolverBridge {
   get pending(): boolean {
     return this.client.pending;
   }
+  /** A stroke is being drawn: the hair on screen is (or will be) its preview. */
   get previewing(): boolean {
-    return this.drawing;
+    return this.editor.stroke !== null;
   }
 
   /** The grid the solver works on: the session's bounding volume (gridForSession). */
@@ -106,7 +108,6 @@ export class SolverBridge {
     const moved = !sameGrid(grid, this.client.grid);
     this.client.setHead(scalp, grid);
     if (moved) this.each((l) => l.gridChanged?.(grid));
-    this.drawing = false;
     this.sync();
   }
 
@@ -115,13 +116,12 @@ export class SolverBridge {
    *  spread over the new scalp. */
   setScalpMask(mask: Uint8Array): void {
     this.client.setScalpMask(mask);
-    this.drawing = false;
     this.sync();
   }
 
   /** Sends the current session for a full solve (on the grid its curves and head need). */
   sync(): void {
-    this.previewAsked = false;
+    this.lastAsked = 'full';
     const s = this.editor.session;
     const grid = this.sessionGrid();
     if (!sameGrid(grid, this.client.grid)) {
@@ -137,30 +137,18 @@ export class SolverBridge {
     );
   }
 
-  /** The stroke being drawn (resampled points), solved with the session's curves as a preview;
-   *  null when the stroke ends. */
-  preview(points: Vec3[] | null, viewpoint: Viewpoint): void {
-    if (points === null) {
-      this.drawing = false;
-      // A stroke that ends without an edit (cancelled, or read as a hint that changes nothing)
-      // must not leave its preview on screen: the session's own hair comes back (from the
-      // client's cache, no solve). An edit that follows at once (a commit) solves anyway.
-      if (this.previewAsked)
-        queueMicrotask(() => {
-          if (this.previewAsked && !this.drawing) this.sync();
-        });
-      return;
-    }
-    this.drawing = true;
-    if (points.length < 3) return;
-    this.previewAsked = true;
+  /** The session with the stroke being drawn, solved as a preview (a stroke of fewer than three
+   *  points is not one yet). */
+  private preview(stroke: StrokeInProgress): void {
+    if (stroke.points.length < 3) return;
+    this.lastAsked = 'preview';
     const s = this.editor.session;
     const draft = {
       id: '~draft',
       type: 'stream' as const,
-      points,
+      points: stroke.points as Vec3[],
       extend: newCurveExtends(s),
-      viewpoint,
+      viewpoint: stroke.viewpoint,
     };
     const cap = this.lightCap(s);
     const curves = [...s.curves, draft];
@@ -176,7 +164,7 @@ export class SolverBridge {
   /** Shows the solved field in results (the field display), re-solving when it is missing. */
   setWantField(on: boolean, haveField: boolean): void {
     this.client.wantField = on;
-    if (on && !haveField && !this.drawing) this.sync();
+    if (on && !haveField && !this.previewing) this.sync();
   }
 
   /** Resolves once no solve is pending (at once when idle). */
@@ -201,19 +189,28 @@ export class SolverBridge {
   }
 
   private onEditorChange(c: EditorChange): void {
-    if (!c.sessionChanged) return;
-    // a change of colour alone needs no solve
-    const p = c.previous;
-    const s = c.session;
-    if (
-      p.curves === s.curves &&
-      p.avoidScalp === s.avoidScalp &&
-      p.fall === s.fall &&
-      p.detail === s.detail &&
-      p.growth === s.growth
-    )
+    if (c.stroke) {
+      if (c.strokeChanged) this.preview(c.stroke);
       return;
-    this.drawing = false;
-    this.sync();
+    }
+    if (c.sessionChanged && solverInputChanged(c.previous, c.session)) {
+      this.sync();
+      return;
+    }
+    // A stroke that ends without an edit (cancelled, or read as a hint that changes nothing)
+    // must not leave its preview on screen: the session's own hair comes back (from the
+    // client's cache, no solve).
+    if (c.strokeChanged && this.lastAsked === 'preview') this.sync();
   }
+}
+
+/** Whether the hair may differ between two sessions (a change of colour alone needs no solve). */
+function solverInputChanged(p: SessionState, s: SessionState): boolean {
+  return !(
+    p.curves === s.curves &&
+    p.avoidScalp === s.avoidScalp &&
+    p.fall === s.fall &&
+    p.detail === s.detail &&
+    p.growth === s.growth
+  );
 }

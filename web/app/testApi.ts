@@ -12,6 +12,7 @@ import type { OverlayPresenter } from './overlayPresenter';
 import { isQualitySetting, type QualityControl } from './quality';
 import { loadSession } from './sessionIO';
 import type { SolverBridge } from './solverBridge';
+import type { ViewStore } from './viewState';
 
 export interface HairsketchTestApi {
   scalpToScreen(thetaDeg: number, phiDeg: number): { x: number; y: number } | null;
@@ -147,6 +148,7 @@ export interface TestApiParts {
   bridge: SolverBridge;
   hair: HairPresenter;
   overlays: OverlayPresenter;
+  view: ViewStore;
   ponytail: PonytailTool;
   /** Work is pending (a solve, an avoidance request, a stroke being drawn). */
   busy(): boolean;
@@ -226,7 +228,7 @@ export function installTestApi(app: TestApiParts): void {
       const r = loadSession(editor, session, { kind: 'test' });
       if (!r.ok) throw new Error(`replaceSession: ${r.error}`);
     },
-    display: () => ({ ...app.overlays.display }),
+    display: () => ({ ...app.view.state.display }),
     displayInfo: () => app.overlays.info(),
     quality: () =>
       app.quality?.info() ?? { setting: 'fast', active: 'fast', renderer: viewer.rendererName },
@@ -298,7 +300,7 @@ export function installTestApi(app: TestApiParts): void {
       return { onScalp, roots };
     },
     select: (id) => editor.select(id),
-    ponytailStage: () => app.ponytail.stage,
+    ponytailStage: () => app.view.state.ponytailStage,
     setCamera: (position, target) => viewer.setCamera(position, target),
     rayAt(x, y) {
       const r = viewer.rayAt(x, y);

@@ -1,6 +1,7 @@
 // Builds the sketching tools with what each needs to know (stroke samples from the head, the
 // camera, the selected curve) and what each may do: every edit is an editor command; the
-// stroke being drawn goes to the solver bridge as a preview; drafts and guides go to the view.
+// stream curve being drawn is the editor's stroke in progress (the solver previews it from
+// there); drafts and guides go to the view.
 import { curveSurface } from '../editor/curveSurface';
 import type { Editor, ToolName } from '../editor/editor';
 import type { Head } from '../head/head';
@@ -9,14 +10,12 @@ import { DEFAULT_TIGHTNESS, defaultParams, newCurveExtends } from '../model/sess
 import type { Vec3 } from '../model/vec3';
 import type { StrokeSample } from '../tools/depthRule';
 import { DividingCurveTool } from '../tools/dividingCurveTool';
-import { PONYTAIL_STAGE_HINT, PonytailTool } from '../tools/ponytailTool';
+import { PONYTAIL_STAGE_HINT, type PonytailStage, PonytailTool } from '../tools/ponytailTool';
 import { ScalpBrushTool } from '../tools/scalpBrushTool';
 import { SelectTool } from '../tools/selectTool';
 import { StreamCurveTool } from '../tools/streamCurveTool';
 import type { Tool } from '../tools/tool';
 import type { Viewer } from '../viewer/viewer';
-import type { OverlayPresenter } from './overlayPresenter';
-import type { SolverBridge } from './solverBridge';
 
 const TOOL_HINTS: Record<Exclude<ToolName, 'ponytail'>, string> = {
   stream:
@@ -30,8 +29,8 @@ const TOOL_HINTS: Record<Exclude<ToolName, 'ponytail'>, string> = {
 };
 
 /** The hint line for the tool `name` (the ponytail's says which stroke comes next). */
-export function toolHint(name: ToolName, ponytail: PonytailTool): string {
-  return name === 'ponytail' ? PONYTAIL_STAGE_HINT[ponytail.stage] : TOOL_HINTS[name];
+export function toolHint(name: ToolName, ponytailStage: PonytailStage): string {
+  return name === 'ponytail' ? PONYTAIL_STAGE_HINT[ponytailStage] : TOOL_HINTS[name];
 }
 
 export interface ToolDeps {
@@ -39,13 +38,17 @@ export interface ToolDeps {
   /** The head strokes land on (it changes when the user opens another). */
   head(): Head;
   viewer: Viewer;
-  bridge: SolverBridge;
-  overlays: OverlayPresenter;
   step: number;
+  /** Mirror editing is on: new curves get a twin. */
+  mirror(): boolean;
+  /** The style curves are shown (hidden curves cannot be picked). */
+  curvesShown(): boolean;
+  /** Construction lines of the ponytail being built (empty: none). */
+  showGuides(lines: readonly (readonly Vec3[])[]): void;
   /** A sentence for the status line. */
   notify(message: string): void;
-  /** The ponytail tool's next stroke changed (its hint line). */
-  ponytailStage(hint: string): void;
+  /** The ponytail tool's next stroke changed. */
+  ponytailStage(stage: PonytailStage): void;
   /** Shows a scalp brush stroke painted while it is drawn (null: the preview ends). */
   previewScalp(stroke: ScalpPaintStroke | null): void;
 }
@@ -84,7 +87,7 @@ export function createTools(d: ToolDeps): ToolSet {
     forward,
     step,
     showDraft,
-    showGuides: (lines) => d.overlays.setToolGuides(lines),
+    showGuides: (lines) => d.showGuides(lines),
     commit: (p) =>
       editor.run({
         kind: 'addCurve',
@@ -99,10 +102,10 @@ export function createTools(d: ToolDeps): ToolSet {
           tightness: DEFAULT_TIGHTNESS,
         },
         what: `ponytail {id} (${p.circles.length} circles)`,
-        mirror: editor.mirror,
+        mirror: d.mirror(),
       }),
     notify: d.notify,
-    stageChanged: (stage) => d.ponytailStage(PONYTAIL_STAGE_HINT[stage]),
+    stageChanged: (stage) => d.ponytailStage(stage),
   });
 
   const scalpBrush = new ScalpBrushTool({
@@ -145,8 +148,8 @@ export function createTools(d: ToolDeps): ToolSet {
         }
         editor.run({ kind: 'hintEdit', id: c.id, op: r.op.kind, points: r.points });
       },
+      // the commit ends the stroke in progress in the same change (one solve follows)
       commit: (points) => {
-        d.bridge.preview(null, camera());
         editor.run({
           kind: 'addCurve',
           curve: {
@@ -156,12 +159,12 @@ export function createTools(d: ToolDeps): ToolSet {
             viewpoint: camera(),
           },
           what: `stream curve {id} (${points.length - 1} segments)`,
-          mirror: editor.mirror,
+          mirror: d.mirror(),
         });
       },
       preview: (points) => {
         viewer.expectHair(points !== null);
-        d.bridge.preview(points, camera());
+        editor.setStroke(points && { points, viewpoint: camera() });
       },
       notify: d.notify,
     }),
@@ -185,7 +188,7 @@ export function createTools(d: ToolDeps): ToolSet {
             viewpoint: camera(),
           },
           what: `dividing curve {id} (${points.length - 1} segments)`,
-          mirror: editor.mirror,
+          mirror: d.mirror(),
         }),
       setTilt: (end, alpha, side) => {
         const c = editor.selectedCurve;
@@ -196,7 +199,7 @@ export function createTools(d: ToolDeps): ToolSet {
     ponytail,
     select: new SelectTool({
       // hidden curves (Curves display off) cannot be picked
-      curves: () => (d.overlays.display.curves ? editor.session.curves : []),
+      curves: () => (d.curvesShown() ? editor.session.curves : []),
       toScreen: (p) => viewer.worldToScreen(p),
       select: (id) => editor.select(id),
     }),

@@ -1,16 +1,28 @@
 // The editor: the one owner of what the user is making. It holds the session history, the
-// selection and the current tool, and changes them only through `run(command)`, `undo`,
-// `redo`, `select` and `setTool`. Each change goes one way: history, then one notification to
-// every subscriber (solver bridge, hair and overlay presenters, link writer, status line, UI).
-// No DOM, no three.js: it runs as is in unit tests.
+// selection, the current tool and the stroke being drawn, and changes them only through
+// `run(command)`, `undo`, `redo`, `select`, `setTool` and `setStroke`. Each change goes one way:
+// history, then one notification to every subscriber (solver bridge, hair and overlay
+// presenters, link writer, status line, UI). No DOM, no three.js: it runs as is in unit tests.
 import { History } from '../model/history';
 import type { SessionState, StyleCurve, Viewpoint } from '../model/session';
 import { findCurve } from '../model/session';
+import type { Vec3 } from '../model/vec3';
 import { applyCommand, type Command } from './commands';
 
 export type ToolName = 'stream' | 'select' | 'dividing' | 'ponytail' | 'scalp';
 
-export type ChangeCause = 'command' | 'undo' | 'redo' | 'select' | 'tool';
+export type ChangeCause = 'command' | 'undo' | 'redo' | 'select' | 'tool' | 'stroke';
+
+/** The stream curve being drawn, as the hair previews it: transient instance state (as tldraw
+ *  keeps its instance state), never in the undo history, the session or its links. Any change of
+ *  the session ends it: the stroke was committed (or the work under it changed), and the tool
+ *  sets it again with its next samples if it is still drawing. */
+export interface StrokeInProgress {
+  /** The stroke so far, lifted and resampled at the grid step. */
+  readonly points: readonly Vec3[];
+  /** The camera it is drawn from (its curve's viewpoint). */
+  readonly viewpoint: Viewpoint;
+}
 
 /** One change, as subscribers see it. */
 export interface EditorChange {
@@ -24,6 +36,9 @@ export interface EditorChange {
   selectedId: string | null;
   selectionChanged: boolean;
   tool: ToolName;
+  /** The stroke being drawn (null: none). */
+  stroke: StrokeInProgress | null;
+  strokeChanged: boolean;
   /** A sentence for the status line. */
   message: string;
   /** A loaded session's saved view, for the camera to take. */
@@ -41,7 +56,7 @@ export class Editor {
   private readonly history: History<SessionState>;
   private selected: string | null = null;
   private currentTool: ToolName;
-  private mirrorOn = false;
+  private currentStroke: StrokeInProgress | null = null;
   private readonly listeners = new Set<EditorListener>();
   private lastCoalesce: { key: string; time: number } | null = null;
 
@@ -66,9 +81,8 @@ export class Editor {
   get tool(): ToolName {
     return this.currentTool;
   }
-  /** Mirror editing (view state, not in the session or the history): new curves get a twin. */
-  get mirror(): boolean {
-    return this.mirrorOn;
+  get stroke(): StrokeInProgress | null {
+    return this.currentStroke;
   }
   get canUndo(): boolean {
     return this.history.canUndo;
@@ -142,14 +156,16 @@ export class Editor {
     });
   }
 
-  setMirror(on: boolean): void {
-    if (on === this.mirrorOn) return;
-    this.mirrorOn = on;
+  /** The stroke being drawn changed (null: it ended). Not an edit: nothing is recorded. */
+  setStroke(stroke: StrokeInProgress | null): void {
+    if (stroke === this.currentStroke) return;
+    this.currentStroke = stroke;
     this.emit({
-      cause: 'tool',
+      cause: 'stroke',
       previous: this.history.current,
-      message: on ? 'Mirror on: new curves get a twin across the head.' : 'Mirror off.',
+      message: '',
       selectionChanged: false,
+      strokeChanged: true,
     });
   }
 
@@ -188,15 +204,22 @@ export class Editor {
   private emit(
     c: Pick<EditorChange, 'cause' | 'command' | 'previous' | 'message' | 'selectionChanged'> & {
       camera?: Viewpoint;
+      strokeChanged?: boolean;
     },
   ): void {
     const session = this.history.current;
+    const sessionChanged = session !== c.previous;
+    // a commit and the end of its stroke are one change (the solver hears of them once)
+    const ended = sessionChanged && this.currentStroke !== null;
+    if (ended) this.currentStroke = null;
     const change: EditorChange = {
       ...c,
       session,
-      sessionChanged: session !== c.previous,
+      sessionChanged,
       selectedId: this.selected,
       tool: this.currentTool,
+      stroke: this.currentStroke,
+      strokeChanged: ended || !!c.strokeChanged,
     };
     for (const l of [...this.listeners]) l(change);
   }

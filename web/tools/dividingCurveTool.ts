@@ -58,54 +58,75 @@ export interface DividingContext {
   notify(message: string): void;
 }
 
+/** One stroke, from press to release; it goes when the stroke ends (end()). */
+interface Stroke {
+  /** 'hinting': pressed near the selected dividing curve, so it may be a tilt hint. */
+  mode: 'drawing' | 'hinting';
+  /** Pointer positions not sampled yet (update() samples them). */
+  raw: Array<{ x: number; y: number }>;
+  /** The stroke's samples over the scalp. */
+  points: Vec3[];
+}
+
 export class DividingCurveTool implements Tool {
   readonly name = 'dividing';
-  state: 'idle' | 'drawing' | 'hinting' = 'idle';
-  private raw: Array<{ x: number; y: number }> = [];
-  private points: Vec3[] = [];
+  private stroke: Stroke | null = null;
 
   constructor(private readonly ctx: DividingContext) {}
 
+  get state(): 'idle' | 'drawing' | 'hinting' {
+    return this.stroke?.mode ?? 'idle';
+  }
+
   onPointerDown(p: ToolPointer): boolean {
     if (p.button !== 0) return false;
-    const first = this.ctx.sample(p.x, p.y);
-    if (!first.scalpHit) {
+    const hit = this.ctx.sample(p.x, p.y).scalpHit;
+    if (!hit) {
       this.ctx.notify('A dividing curve is drawn on the scalp: nothing was created.');
       return true;
     }
     const sel = this.ctx.selected();
-    const hit = first.scalpHit;
     const reach = HINT_RADIUS * this.ctx.step();
     const near = !!sel && distanceToPolyline(hit, sel.points) <= reach;
-    this.state = near ? 'hinting' : 'drawing';
-    this.points = [first.scalpHit];
-    this.raw = [];
+    this.stroke = { mode: near ? 'hinting' : 'drawing', raw: [], points: [hit] };
     return true;
   }
 
   onPointerMove(p: ToolPointer): void {
-    if (this.state !== 'idle') this.raw.push({ x: p.x, y: p.y });
+    this.stroke?.raw.push({ x: p.x, y: p.y });
   }
 
   onPointerUp(p: ToolPointer): void {
-    if (this.state === 'idle') return;
-    this.raw.push({ x: p.x, y: p.y });
+    const k = this.stroke;
+    if (!k) return;
+    k.raw.push({ x: p.x, y: p.y });
     this.update();
-    const hinting = this.state === 'hinting';
-    this.state = 'idle';
+    this.end();
+    this.finish(k);
+  }
+
+  onCancel(): void {
+    this.end();
+  }
+
+  /** Leaving the stroke: its data and its draft go. */
+  private end(): void {
+    this.stroke = null;
     this.ctx.showDraft(null);
-    const stroke = this.points;
-    this.points = [];
-    if (hinting) {
+  }
+
+  /** What a released stroke does: a tilt, a new dividing curve, or a sentence saying why not. */
+  private finish(k: Stroke): void {
+    if (k.mode === 'hinting') {
       const sel = this.ctx.selected();
-      const t = sel && tiltFromHint(sel.points, sel.normals, stroke);
-      if (sel && t && isTiltHint(sel.points, stroke, this.ctx.step(), t.alpha)) {
+      const t = sel && tiltFromHint(sel.points, sel.normals, k.points);
+      if (sel && t && isTiltHint(sel.points, k.points, this.ctx.step(), t.alpha)) {
         this.ctx.setTilt(t.end, t.alpha, t.side);
         return;
       }
       // not clearly a tilt hint: a new dividing curve
     }
-    const points = resamplePolyline(stroke, this.ctx.step());
+    const points = resamplePolyline(k.points, this.ctx.step());
     if (points.length < 3) {
       this.ctx.notify('A dividing curve needs at least two grid steps on the scalp: ignored.');
       return;
@@ -113,21 +134,15 @@ export class DividingCurveTool implements Tool {
     this.ctx.commit(points, this.ctx.normalsAt(points));
   }
 
-  onCancel(): void {
-    this.state = 'idle';
-    this.raw = [];
-    this.points = [];
-    this.ctx.showDraft(null);
-  }
-
   update(): void {
-    if (this.state === 'idle' || this.raw.length === 0) return;
+    const k = this.stroke;
+    if (!k || k.raw.length === 0) return;
     // only samples over the scalp: the curve lies on the head
-    for (const r of this.raw) {
+    for (const r of k.raw) {
       const hit = this.ctx.sample(r.x, r.y).scalpHit;
-      if (hit) this.points.push(hit);
+      if (hit) k.points.push(hit);
     }
-    this.raw = [];
-    this.ctx.showDraft(this.points);
+    k.raw = [];
+    this.ctx.showDraft(k.points);
   }
 }

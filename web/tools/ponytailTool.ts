@@ -50,20 +50,32 @@ export const PONYTAIL_STAGE_HINT: Record<PonytailStage, string> = {
   profileB: 'Ponytail 4/4: draw the second profile along the other side of the spine',
 };
 
+/** One stroke, from press to release; it goes when the stroke ends (end()). */
+interface Stroke {
+  /** Pointer positions not sampled yet (update() samples them). */
+  raw: Array<{ x: number; y: number }>;
+  samples: StrokeSample[];
+  /** The camera when the stroke began. */
+  eye: Vec3;
+  forward: Vec3;
+  /** The spine's supporting surface from that camera (null while drawing the spine). */
+  surface: SupportingSurface | null;
+}
+
 export class PonytailTool implements Tool {
   readonly name = 'ponytail';
-  state: 'idle' | 'drawing' = 'idle';
   stage: PonytailStage = 'spine';
-  private raw: Array<{ x: number; y: number }> = [];
-  private samples: StrokeSample[] = [];
-  private eye: Vec3 = [0, 0, 0];
-  private forward: Vec3 = [0, 0, -1];
-  private surface: SupportingSurface | null = null;
+  private stroke: Stroke | null = null;
+  /** The ponytail's strokes so far (kept between strokes, dropped by reset()). */
   private spine: Vec3[] = [];
   private cross: Vec3[] = [];
   private profileA: Vec3[] = [];
 
   constructor(private readonly ctx: PonytailContext) {}
+
+  get state(): 'idle' | 'drawing' {
+    return this.stroke ? 'drawing' : 'idle';
+  }
 
   /** The spine drawn so far (empty at stage 'spine'). */
   get spinePoints(): readonly Vec3[] {
@@ -77,35 +89,41 @@ export class PonytailTool implements Tool {
       this.ctx.notify('A ponytail spine must start on the scalp: nothing was created.');
       return true;
     }
-    this.eye = this.ctx.eye();
-    this.forward = this.ctx.forward();
-    this.surface =
+    const eye = this.ctx.eye();
+    const surface =
       this.stage === 'spine'
         ? null
         : buildSupportingSurface(
             this.spine,
-            this.eye,
+            eye,
             'strip',
             PONYTAIL_SURFACE_HALF_WIDTH * this.ctx.step(),
           );
-    this.samples = [first];
-    this.raw = [];
-    this.state = 'drawing';
+    this.stroke = { raw: [], samples: [first], eye, forward: this.ctx.forward(), surface };
     return true;
   }
 
   onPointerMove(p: ToolPointer): void {
-    if (this.state === 'drawing') this.raw.push({ x: p.x, y: p.y });
+    this.stroke?.raw.push({ x: p.x, y: p.y });
   }
 
   onPointerUp(p: ToolPointer): void {
-    if (this.state !== 'drawing') return;
-    this.raw.push({ x: p.x, y: p.y });
+    const k = this.stroke;
+    if (!k) return;
+    k.raw.push({ x: p.x, y: p.y });
     this.update();
-    this.state = 'idle';
+    this.end();
+    this.finish(this.lifted(k));
+  }
+
+  /** Leaving the stroke: its data and its draft go. */
+  private end(): void {
+    this.stroke = null;
     this.ctx.showDraft(null);
-    const pts = this.lifted();
-    this.samples = [];
+  }
+
+  /** A released stroke, lifted: the ponytail's next part, or a sentence saying why not. */
+  private finish(pts: Vec3[] | null): void {
     const step = this.ctx.step();
     const line = pts ? resamplePolyline(pts, step / 2) : [];
     if (line.length < 2) {
@@ -160,6 +178,7 @@ export class PonytailTool implements Tool {
     this.ctx.stageChanged(stage);
   }
 
+  /** Abandons the ponytail: its strokes so far go. */
   private reset(): void {
     this.spine = [];
     this.cross = [];
@@ -167,32 +186,30 @@ export class PonytailTool implements Tool {
     this.setStage('spine');
   }
 
-  private lifted(): Vec3[] | null {
+  private lifted(k: Stroke): Vec3[] | null {
     if (this.stage === 'spine') {
-      const l = liftStroke(this.samples, this.eye, this.forward);
+      const l = liftStroke(k.samples, k.eye, k.forward);
       return l.ok ? l.points : null;
     }
-    if (!this.surface) return null;
-    const rays = this.samples.map((s) => ({ origin: s.origin, direction: s.direction }));
-    return liftHintStroke(rays, this.surface, this.eye, this.forward).map((h) => h.point);
+    if (!k.surface) return null;
+    const rays = k.samples.map((s) => ({ origin: s.origin, direction: s.direction }));
+    return liftHintStroke(rays, k.surface, k.eye, k.forward).map((h) => h.point);
   }
 
   onCancel(): void {
-    const drawing = this.state === 'drawing';
-    this.state = 'idle';
-    this.raw = [];
-    this.samples = [];
-    this.ctx.showDraft(null);
+    const drawing = this.stroke !== null;
+    this.end();
     // cancelling a stroke keeps the ponytail's earlier strokes; cancelling between strokes
     // (Escape, another tool) abandons the ponytail
     if (!drawing && this.stage !== 'spine') this.reset();
   }
 
   update(): void {
-    if (this.state !== 'drawing' || this.raw.length === 0) return;
-    for (const r of this.raw) this.samples.push(this.ctx.sample(r.x, r.y));
-    this.raw = [];
-    const pts = this.lifted();
+    const k = this.stroke;
+    if (!k || k.raw.length === 0) return;
+    for (const r of k.raw) k.samples.push(this.ctx.sample(r.x, r.y));
+    k.raw = [];
+    const pts = this.lifted(k);
     if (pts) this.ctx.showDraft(pts);
   }
 }

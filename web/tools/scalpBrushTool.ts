@@ -19,18 +19,23 @@ export interface ScalpBrushDeps {
   notify(message: string): void;
 }
 
+/** One brush stroke, from press to release; it goes when the stroke ends (end()). */
+interface Stroke {
+  erase: boolean;
+  points: Vec3[];
+  /** Points came since the preview was last shown. */
+  dirty: boolean;
+}
+
 export class ScalpBrushTool implements Tool {
   readonly name = 'scalp';
-  private points: Vec3[] = [];
-  private erase = false;
-  private active = false;
-  private dirty = false;
+  private stroke: Stroke | null = null;
   private r: number = BRUSH_RADIUS.initial;
 
   constructor(private readonly d: ScalpBrushDeps) {}
 
   get state(): string {
-    return this.active ? 'painting' : 'idle';
+    return this.stroke ? 'painting' : 'idle';
   }
 
   get radius(): number {
@@ -57,47 +62,47 @@ export class ScalpBrushTool implements Tool {
       this.d.notify('Scalp brush: press on the head to paint.');
       return false;
     }
-    this.active = true;
-    this.erase = !!p.shiftKey;
-    this.points = [hit];
-    this.dirty = true;
+    this.stroke = { erase: !!p.shiftKey, points: [hit], dirty: true };
     return true;
   }
 
   onPointerMove(p: ToolPointer): void {
-    if (!this.active) return;
+    const k = this.stroke;
+    if (!k) return;
     const hit = this.d.hit(p.x, p.y);
     if (!hit) return;
-    const last = this.points[this.points.length - 1];
+    const last = k.points[k.points.length - 1];
     if (Math.hypot(hit[0] - last[0], hit[1] - last[1], hit[2] - last[2]) < this.r / 3) return;
-    this.points.push(hit);
-    this.dirty = true;
+    k.points.push(hit);
+    k.dirty = true;
   }
 
   onPointerUp(p: ToolPointer): void {
-    if (!this.active) return;
+    const k = this.stroke;
+    if (!k) return;
     this.onPointerMove(p);
-    const stroke = this.stroke();
-    this.active = false;
-    this.points = [];
-    this.d.preview(null);
-    this.d.commit(stroke);
+    this.end();
+    this.d.commit(this.painted(k));
   }
 
   onCancel(): void {
-    if (!this.active) return;
-    this.active = false;
-    this.points = [];
+    if (this.stroke) this.end();
+  }
+
+  /** Leaving the stroke: its data and its preview go. */
+  private end(): void {
+    this.stroke = null;
     this.d.preview(null);
   }
 
   update(): void {
-    if (!this.active || !this.dirty) return;
-    this.dirty = false;
-    this.d.preview(this.stroke());
+    const k = this.stroke;
+    if (!k?.dirty) return;
+    k.dirty = false;
+    this.d.preview(this.painted(k));
   }
 
-  private stroke(): ScalpPaintStroke {
-    return { erase: this.erase, radius: this.r, points: [...this.points] };
+  private painted(k: Stroke): ScalpPaintStroke {
+    return { erase: k.erase, radius: this.r, points: [...k.points] };
   }
 }

@@ -101,35 +101,39 @@ function screenDistanceToPolyline(
   return best;
 }
 
+/** One stroke of the tool, from press to release: everything the stroke gathers lives here and
+ *  goes when it ends (end()), so no field outlives its stroke. */
+interface Stroke {
+  mode: 'drawing' | 'hinting';
+  /** Pointer positions not sampled yet (update() samples them). */
+  raw: Array<{ x: number; y: number }>;
+  samples: StrokeSample[];
+  /** The pointer position of each sample (for screen distances). */
+  pointers: Array<{ x: number; y: number }>;
+  /** The camera when the stroke began (the depth rule lifts it from there). */
+  eye: Vec3;
+  forward: Vec3;
+  /** Hinting: the selected curve the stroke edits. Drawing from the scalp on the selected
+   *  curve's surface: the curve the stroke may be a hint for (null: it is a new curve). */
+  target: Target | null;
+  /** The candidate curve's image (with toScreen), and each sample's distance from it (px). */
+  curveImage: Array<{ x: number; y: number } | null> | null;
+  screenDistances: number[];
+}
+
 export class StreamCurveTool implements Tool {
   readonly name = 'stream';
-  state: 'idle' | 'drawing' | 'hinting' = 'idle';
-  private raw: Array<{ x: number; y: number }> = [];
-  private samples: StrokeSample[] = [];
-  /** The pointer position of each sample (for screen distances). */
-  private pointers: Array<{ x: number; y: number }> = [];
-  private target: Target | null = null;
-  /** Drawing from the scalp on the selected curve's surface: the stroke may be a hint for it. */
-  private candidate: Target | null = null;
-  /** The candidate curve's image (with toScreen), and each sample's distance from it (px). */
-  private curveImage: Array<{ x: number; y: number } | null> | null = null;
-  private screenDistances: number[] = [];
-  private eye: Vec3 = [0, 0, 0];
-  private forward: Vec3 = [0, 0, -1];
+  private stroke: Stroke | null = null;
 
   constructor(private readonly ctx: StrokeContext) {}
+
+  get state(): 'idle' | 'drawing' | 'hinting' {
+    return this.stroke?.mode ?? 'idle';
+  }
 
   onPointerDown(p: ToolPointer): boolean {
     if (p.button !== 0) return false;
     const first = this.ctx.sample(p.x, p.y);
-    this.eye = this.ctx.eye();
-    this.forward = this.ctx.forward();
-    this.samples = [first];
-    this.pointers = [{ x: p.x, y: p.y }];
-    this.raw = [];
-    this.candidate = null;
-    this.curveImage = null;
-    this.screenDistances = [];
     const target = this.ctx.hintTarget?.() ?? null;
     let onSurface = false;
     if (target) {
@@ -138,59 +142,65 @@ export class StreamCurveTool implements Tool {
       // on the surface, and not behind the head (a step of slack: curves lie on the scalp)
       onSurface = !!hit && (!first.scalpHit || hit.rayT <= head + this.ctx.step());
     }
-    if (target && onSurface && !first.scalpHit) {
-      this.state = 'hinting';
-      this.target = target;
-      return true;
-    }
-    if (!first.scalpHit) {
-      this.samples = [];
-      this.pointers = [];
+    const hinting = !!target && onSurface && !first.scalpHit;
+    if (!hinting && !first.scalpHit) {
       this.ctx.notify('A stream curve must start on the scalp: nothing was created.');
       return true; // the press is still the tool's: it must not orbit the camera
     }
-    this.state = 'drawing';
-    if (target && onSurface) {
-      this.candidate = target;
-      if (this.ctx.toScreen) {
-        const toScreen = this.ctx.toScreen.bind(this.ctx);
-        this.curveImage = target.points.map((q) => toScreen(q));
-      }
-    }
+    const candidate = target && onSurface ? target : null;
+    const toScreen = this.ctx.toScreen?.bind(this.ctx);
+    this.stroke = {
+      mode: hinting ? 'hinting' : 'drawing',
+      raw: [],
+      samples: [first],
+      pointers: [{ x: p.x, y: p.y }],
+      eye: this.ctx.eye(),
+      forward: this.ctx.forward(),
+      target: candidate,
+      curveImage:
+        !hinting && candidate && toScreen ? candidate.points.map((q) => toScreen(q)) : null,
+      screenDistances: [],
+    };
     return true;
   }
 
   onPointerMove(p: ToolPointer): void {
-    if (this.state !== 'idle') this.raw.push({ x: p.x, y: p.y });
+    this.stroke?.raw.push({ x: p.x, y: p.y });
   }
 
   onPointerUp(p: ToolPointer): void {
-    if (this.state === 'idle') return;
-    this.raw.push({ x: p.x, y: p.y });
+    const k = this.stroke;
+    if (!k) return;
+    k.raw.push({ x: p.x, y: p.y });
     this.update(false); // the stroke is final: its solve follows, no preview of it
-    const hinting = this.state === 'hinting';
-    this.state = 'idle';
+    // the edit first, then the stroke ends: a commit ends the stroke's preview with it
+    this.finish(k);
+    this.end();
+  }
+
+  onCancel(): void {
+    this.end();
+  }
+
+  /** Leaving the stroke: its data goes, and so do its draft and preview. */
+  private end(): void {
+    this.stroke = null;
     this.ctx.showDraft(null);
     this.ctx.preview(null);
-    const samples = this.samples;
-    const candidate = this.candidate;
-    const hint = candidate && !hinting ? this.scalpHint(samples, candidate) : null;
-    this.samples = [];
-    this.pointers = [];
-    this.candidate = null;
-    this.curveImage = null;
-    this.screenDistances = [];
-    if (hinting) {
-      const target = this.target;
-      this.target = null;
-      if (target) this.finishHint(samples, target);
+  }
+
+  /** What a released stroke does: a hint's edit, a new curve, or a sentence saying why not. */
+  private finish(k: Stroke): void {
+    if (k.mode === 'hinting') {
+      if (k.target) this.finishHint(k, k.target);
       return;
     }
+    const hint = k.target ? this.scalpHint(k, k.target) : null;
     if (hint) {
       this.ctx.applyHint?.(hint);
       return;
     }
-    const lifted = liftStroke(samples, this.eye, this.forward);
+    const lifted = liftStroke(k.samples, k.eye, k.forward);
     if (!lifted.ok) return;
     const points = resamplePolyline(lifted.points, this.ctx.step());
     if (points.length < 2) {
@@ -200,89 +210,69 @@ export class StreamCurveTool implements Tool {
     this.ctx.commit(points);
   }
 
-  private finishHint(samples: readonly StrokeSample[], target: Target): void {
-    const rays: StrokeRay[] = samples.map((s) => ({ origin: s.origin, direction: s.direction }));
-    const lifted = liftHintStroke(rays, target.surface, this.eye, this.forward);
-    const result = editWithHintStroke(target.points, lifted, this.ctx.step());
+  private finishHint(k: Stroke, target: Target): void {
+    const result = editWithHintStroke(target.points, this.liftOnto(k, target), this.ctx.step());
     this.ctx.applyHint?.(result);
+  }
+
+  private liftOnto(k: Stroke, target: Target): HintSample[] {
+    const rays: StrokeRay[] = k.samples.map((s) => ({ origin: s.origin, direction: s.direction }));
+    return liftHintStroke(rays, target.surface, k.eye, k.forward);
   }
 
   /** Distance (pixels) of a sample, taken at `pointer`, from the candidate curve's image. */
   private screenDistance(
+    k: Stroke,
     s: StrokeSample,
     pointer: { x: number; y: number } | undefined,
     target: Target,
   ): number {
-    if (this.curveImage && pointer) return screenDistanceToPolyline(pointer, this.curveImage);
+    if (k.curveImage && pointer) return screenDistanceToPolyline(pointer, k.curveImage);
     const c = target.points;
     let best = Number.POSITIVE_INFINITY;
-    for (let k = 0; k + 1 < c.length; k++)
-      best = Math.min(best, rayAngleToSegment(s.origin, s.direction, c[k], c[k + 1]));
+    for (let i = 0; i + 1 < c.length; i++)
+      best = Math.min(best, rayAngleToSegment(s.origin, s.direction, c[i], c[i + 1]));
     if (c.length === 1) best = rayAngleToSegment(s.origin, s.direction, c[0], c[0]);
     return best / RADIANS_PER_PIXEL;
   }
 
   /** A stroke pressed on the scalp: the hint it clearly is (scalpHintEdit), or null. */
-  private scalpHint(samples: readonly StrokeSample[], target: Target): HintResult | null {
-    for (let i = this.screenDistances.length; i < samples.length; i++)
-      this.screenDistances.push(this.screenDistance(samples[i], this.pointers[i], target));
-    const rays: StrokeRay[] = samples.map((s) => ({ origin: s.origin, direction: s.direction }));
+  private scalpHint(k: Stroke, target: Target): HintResult | null {
+    const samples = k.samples;
+    for (let i = k.screenDistances.length; i < samples.length; i++)
+      k.screenDistances.push(this.screenDistance(k, samples[i], k.pointers[i], target));
     const step = this.ctx.step();
     // samples whose surface point is behind the head (a step of slack) are marked hidden
-    const lifted = liftHintStroke(rays, target.surface, this.eye, this.forward).map(
-      (h): HintSample => {
-        const s = samples[h.ray ?? 0];
-        if (!h.onSurface || s.headDistance == null) return h;
-        return { ...h, hidden: distance(h.point, s.origin) > s.headDistance + step };
-      },
-    );
-    const screen = lifted.map((h, i) => this.screenDistances[h.ray ?? i]);
+    const lifted = this.liftOnto(k, target).map((h): HintSample => {
+      const s = samples[h.ray ?? 0];
+      if (!h.onSurface || s.headDistance == null) return h;
+      return { ...h, hidden: distance(h.point, s.origin) > s.headDistance + step };
+    });
+    const screen = lifted.map((h, i) => k.screenDistances[h.ray ?? i]);
     return scalpHintEdit(target.points, lifted, screen, step);
-  }
-
-  onCancel(): void {
-    this.state = 'idle';
-    this.raw = [];
-    this.samples = [];
-    this.pointers = [];
-    this.target = null;
-    this.candidate = null;
-    this.curveImage = null;
-    this.screenDistances = [];
-    this.ctx.showDraft(null);
-    this.ctx.preview(null);
   }
 
   /** Samples the pointer positions that came since the last call, shows the stroke so far and
    *  (unless `preview` is false) asks for a preview of it. */
   update(preview = true): void {
-    if (this.state === 'idle' || this.raw.length === 0) return;
-    for (const r of this.raw) {
-      this.samples.push(this.ctx.sample(r.x, r.y));
-      this.pointers.push(r);
+    const k = this.stroke;
+    if (!k || k.raw.length === 0) return;
+    for (const r of k.raw) {
+      k.samples.push(this.ctx.sample(r.x, r.y));
+      k.pointers.push(r);
     }
-    this.raw = [];
-    if (this.state === 'hinting') {
-      const t = this.target;
-      if (!t) return;
-      const rays = this.samples.map((s) => ({ origin: s.origin, direction: s.direction }));
-      this.ctx.showDraft(
-        liftHintStroke(rays, t.surface, this.eye, this.forward).map((h) => h.point),
-      );
+    k.raw = [];
+    if (k.mode === 'hinting') {
+      if (k.target) this.ctx.showDraft(this.liftOnto(k, k.target).map((h) => h.point));
       return;
     }
     // a stroke from the scalp that reads as a hint so far shows the edit's stroke
-    const hint = this.candidate && this.scalpHint(this.samples, this.candidate);
-    if (hint) {
-      const rays = this.samples.map((s) => ({ origin: s.origin, direction: s.direction }));
-      const t = this.candidate as Target;
+    if (k.target && this.scalpHint(k, k.target)) {
       this.ctx.preview(null);
-      this.ctx.showDraft(
-        liftHintStroke(rays, t.surface, this.eye, this.forward).map((h) => h.point),
-      );
+      this.ctx.showDraft(this.liftOnto(k, k.target).map((h) => h.point));
       return;
     }
-    const lifted = liftStroke(this.samples, this.eye, this.forward);
+    const lifted = liftStroke(k.samples, k.eye, k.forward);
     if (!lifted.ok) return;
     this.ctx.showDraft(lifted.points);
     if (preview) this.ctx.preview(resamplePolyline(lifted.points, this.ctx.step()));
