@@ -27,4 +27,16 @@ enum DividingParam : size_t {
 // existed: tightness, m, 7 m) reads as gather = 0; the two layouts differ in size mod 7.
 enum PonytailParam : size_t { kPonytailTightness, kPonytailGather, kPonytailParamCount };
 
+// Braids (braid_bun.hpp): width, crossings per unit length, tightness, tail length. No block.
+enum BraidParam : size_t {
+  kBraidWidth,
+  kBraidCrossings,
+  kBraidTightness,
+  kBraidTailLength,
+  kBraidParamCount
+};
+
+// Buns (braid_bun.hpp): radius (0: the drawn loop's size), height, turns. No block.
+enum BunParam : size_t { kBunRadius, kBunHeight, kBunTurns, kBunParamCount };
+
 }  // namespace hairsketch

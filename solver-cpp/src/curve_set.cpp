@@ -4,6 +4,7 @@
 #include <string>
 #include <unordered_map>
 
+#include "braid_bun.hpp"
 #include "dividing_constraints.hpp"
 #include "ponytail_constraints.hpp"
 #include "stream_constraints.hpp"
@@ -78,6 +79,26 @@ Status curvesToConstraints(const Grid& g, const CurveSetView& cs, ConstraintSet&
         Status s = parsePonytailParams(prm, pn, pp);
         if (!s.ok()) return Status::Error(s.code, name + " (ponytail): " + s.message);
         appendPonytailConstraints(g, pts, n, cs.extend[c] != 0, pp, raw, rc);
+        break;
+      }
+      case uint8_t(CurveKindCode::Braid): {
+        BraidParams bp;
+        Status s = parseBraidParams(prm, pn, bp);
+        if (!s.ok()) return Status::Error(s.code, name + " (braid): " + s.message);
+        if (n == 0) break;
+        const size_t gather = braidGatherIndex(cs.offScalp ? cs.offScalp + begin : nullptr, n);
+        appendPonytailConstraints(g, pts, n, cs.extend[c] != 0, braidAsPonytail(pts, n, gather, bp),
+                                  raw, rc);
+        break;
+      }
+      case uint8_t(CurveKindCode::Bun): {
+        BunParams bp;
+        Status s = parseBunParams(prm, pn, bp);
+        if (!s.ok()) return Status::Error(s.code, name + " (bun): " + s.message);
+        if (n == 0) break;
+        std::vector<double> spine;
+        const PonytailParams pp = bunAsPonytail(bunFrame(pts, n, bp, cs.headCentre), bp, spine);
+        appendPonytailConstraints(g, spine.data(), 2, false, pp, raw, rc);
         break;
       }
       default:

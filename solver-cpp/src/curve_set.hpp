@@ -3,6 +3,7 @@
 // and the explicit extra constraints. Scalar parameter indices: curve_params.hpp.
 #pragma once
 
+#include <Eigen/Core>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -16,7 +17,7 @@
 namespace hairsketch {
 
 // Kind values of CurveSet.kinds (protocol.ts CurveKind).
-enum class CurveKindCode : uint8_t { Stream = 0, Dividing = 1, Ponytail = 2 };
+enum class CurveKindCode : uint8_t { Stream = 0, Dividing = 1, Ponytail = 2, Braid = 3, Bun = 4 };
 
 // Non-owning view of protocol.ts CurveSet.
 struct CurveSetView {
@@ -32,6 +33,11 @@ struct CurveSetView {
   const double* params = nullptr;
   size_t paramCount = 0;
   const uint32_t* paramStart = nullptr;  // curveCount + 1 entries, [0] = 0, last = paramCount
+  // Optional, from the head (the engine fills them): offScalp[point] != 0 where a point lies off
+  // the scalp (a braid gathers at its first such point), and the head's centre (a bun's axis
+  // turns away from it). Without them a braid gathers at its first point and a bun faces +y.
+  const uint8_t* offScalp = nullptr;  // pointCount entries
+  const Eigen::Vector3d* headCentre = nullptr;
   // Explicit constraints (scalp avoidance, S4.7), added to the derived ones before merging.
   const int32_t* extraIndex = nullptr;  // extraCount grid indices
   const double* extraTarget = nullptr;  // extraCount x 3

@@ -160,6 +160,82 @@ float smoothstep(float x) {
 
 constexpr float kTwoPi = 6.28318530717958647692f;
 
+// Round and braided tails: the strand follows the spine from its capture at its seat's offset.
+void layAlongSpine(const GatheredTail& T, const SpineFrames& F, const Capture& cap, float theta,
+                   float rho, int bundle, float step, size_t room,
+                   std::vector<Eigen::Vector3f>& out) {
+  const bool braid = T.shape == TailShape::Braid;
+  const float period = braid ? float(6.0 / T.braid.crossings) : 0.f;
+  // a braid's period gets at least 16 points where the cap allows
+  const float ds = braid ? std::min(step, period / 16) : step;
+  const size_t segs = std::min(room, std::max<size_t>(1, size_t(std::ceil(cap.remaining / ds))));
+  Eigen::Vector3f pq, g1, g2;
+  float rq;
+  F.at(cap.s0, pq, g1, g2, rq);
+  const float xq = (cap.q - pq).dot(g1), yq = (cap.q - pq).dot(g2);
+  const float ct = std::cos(theta), st = std::sin(theta);
+  const float Lb = T.braidLength, tau = float(T.braid.tightness);
+  auto width = [&](float S) {
+    const float f = Lb > 0 ? std::clamp(S / Lb, 0.f, 1.f) : 1.f;
+    return float(T.braid.width) * (1 - 0.4f * f);
+  };
+  out.reserve(segs + 1);
+  for (size_t j = 0; j <= segs; ++j) {
+    const float s = cap.remaining * float(j) / float(segs), S = cap.s0 + s;
+    Eigen::Vector3f pos, f1, f2;
+    float rad;
+    F.at(S, pos, f1, f2, rad);
+    float x = rho * ct * rad, y = rho * st * rad;
+    if (braid) {
+      const float W = width(S), rb = W / 6, A = W / 2 - rb, B = rb * (1.5f - 0.8f * tau);
+      const float t = kTwoPi * (S / period + float(bundle) / 3);
+      x = A * std::sin(t) + rb * rho * ct;
+      y = B * std::sin(2 * t) + rb * rho * st;
+      if (S > Lb) {  // the tie, then the loose tail
+        const float loose = 0.45f * width(Lb) * rho, w = smoothstep((S - Lb) / kBraidTie);
+        x += (loose * ct - x) * w;
+        y += (loose * st - y) * w;
+      }
+    }
+    const float bl = smoothstep(s / kTailBlend);
+    out.push_back(pos + (xq + (x - xq) * bl) * f1 + (yq + (y - yq) * bl) * f2);
+  }
+}
+
+// A bun: the strand coils round the axis from its seat angle, over the dome, then tucks under.
+void layBun(const GatheredTail& T, const SpineFrames& F, const Capture& cap, float theta, float rho,
+            float step, size_t room, std::vector<Eigen::Vector3f>& out) {
+  const float R = T.bunRadius, H = float(T.bun.height), K = float(T.bun.turns);
+  const float L = std::max(cap.remaining, 1e-4f);
+  const float shell = R * (0.45f + 0.55f * rho);
+  // K turns round the dome are about 0.8 (2 pi r K) long: short hair coils tighter
+  const float r0 = std::min(shell, L / (0.8f * kTwoPi * K));
+  const size_t segs =
+      std::min(room, std::max<size_t>({1, size_t(std::ceil(L / step)), size_t(std::ceil(16 * K))}));
+  const Eigen::Vector3f n = T.axis, base = T.bunCentre, e1 = F.e1[0], e2 = F.e2[0];
+  auto coil = [&](float u) {
+    float z, r, phi;
+    if (u <= kBunTuckAt) {
+      const float v = u / kBunTuckAt;
+      z = H * v;
+      r = r0 * std::sqrt(1 - 0.8f * v * v);
+      phi = theta + kTwoPi * K * v;
+    } else {
+      const float w = (u - kBunTuckAt) / (1 - kBunTuckAt);
+      z = H * (1 - 0.7f * w);
+      r = r0 * std::sqrt(0.2f) * (1 - 0.7f * w);
+      phi = theta + kTwoPi * K + 0.25f * kTwoPi * w;
+    }
+    return Eigen::Vector3f(base + z * n + r * (std::cos(phi) * e1 + std::sin(phi) * e2));
+  };
+  const Eigen::Vector3f from = cap.q - coil(0);
+  out.reserve(segs + 1);
+  for (size_t j = 0; j <= segs; ++j) {
+    const float u = float(j) / float(segs);
+    out.push_back(coil(u) + (1 - smoothstep(u * L / kTailBlend)) * from);
+  }
+}
+
 }  // namespace
 
 TailStats gatherTails(const std::vector<GatheredTail>& tails,
@@ -256,35 +332,45 @@ TailStats gatherTails(const std::vector<GatheredTail>& tails,
       }
     }
     const float theta0 = angle[byAngle[first]];
-    std::vector<float> theta(N), rho(N);
-    for (size_t i = 0; i < N; ++i) {
-      const uint32_t m = byAngle[(first + i) % N];
+    const GatheredTail& T = tails[k];
+    auto jitter = [&](uint32_t m) {
       Pcg32 rng(seed ^ (uint64_t(key[cs[m].strand]) * 0x9e3779b97f4a7c15ULL), 0x7a11ULL);
-      theta[m] = theta0 + kTwoPi * (float(i) + float(rng.uniform())) / float(N);
+      return float(rng.uniform());
+    };
+    // seats: an angle theta and a radius rho in the unit disc (for a braid, in its bundle's)
+    std::vector<float> theta(N), rho(N);
+    std::vector<uint8_t> bundle(N, 0);
+    if (T.shape == TailShape::Braid) {
+      std::vector<std::vector<uint32_t>> members(3);
+      for (size_t i = 0; i < N; ++i) {
+        const uint32_t m = byAngle[(first + i) % N];
+        bundle[m] = uint8_t(3 * i / N);
+        members[bundle[m]].push_back(m);  // in angle order
+      }
+      for (std::vector<uint32_t>& mb : members) {
+        const size_t nb = mb.size();
+        for (size_t i = 0; i < nb; ++i)
+          theta[mb[i]] = kTwoPi * (float(i) + jitter(mb[i])) / float(nb);
+        std::stable_sort(mb.begin(), mb.end(),
+                         [&](uint32_t x, uint32_t y) { return dist[x] < dist[y]; });
+        for (size_t j = 0; j < nb; ++j) rho[mb[j]] = std::sqrt((float(j) + 0.5f) / float(nb));
+      }
+    } else {
+      for (size_t i = 0; i < N; ++i) {
+        const uint32_t m = byAngle[(first + i) % N];
+        theta[m] = theta0 + kTwoPi * (float(i) + jitter(m)) / float(N);
+      }
+      for (size_t j = 0; j < N; ++j) rho[byDist[j]] = std::sqrt((float(j) + 0.5f) / float(N));
     }
-    for (size_t j = 0; j < N; ++j) rho[byDist[j]] = std::sqrt((float(j) + 0.5f) / float(N));
     for (size_t i = 0; i < N; ++i) {
       const Capture& cap = cs[i];
       const size_t room = maxPoints > cap.keep + 1 ? maxPoints - cap.keep - 1 : 0;
       if (room == 0) continue;
-      const size_t segs =
-          std::min(room, std::max<size_t>(1, size_t(std::ceil(cap.remaining / step))));
-      Eigen::Vector3f pq, g1, g2;
-      float rq;
-      F.at(cap.s0, pq, g1, g2, rq);
-      const float xq = (cap.q - pq).dot(g1), yq = (cap.q - pq).dot(g2);
-      const float xs = rho[i] * std::cos(theta[i]), ys = rho[i] * std::sin(theta[i]);
       std::vector<Eigen::Vector3f>& out = laid[cap.strand];
-      out.reserve(segs + 1);
-      for (size_t j = 0; j <= segs; ++j) {
-        const float s = cap.remaining * float(j) / float(segs);
-        Eigen::Vector3f pos, f1, f2;
-        float rad;
-        F.at(cap.s0 + s, pos, f1, f2, rad);
-        const float bl = smoothstep(s / kTailBlend), sc = rad;
-        const float x = xq + (xs * sc - xq) * bl, y = yq + (ys * sc - yq) * bl;
-        out.push_back(pos + x * f1 + y * f2);
-      }
+      if (T.shape == TailShape::Bun)
+        layBun(T, F, cap, theta[i], rho[i], step, room, out);
+      else
+        layAlongSpine(T, F, cap, theta[i], rho[i], bundle[i], step, room, out);
       isLaid[cap.strand] = 1;
       ++stats.captured;
     }

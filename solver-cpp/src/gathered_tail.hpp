@@ -36,17 +36,31 @@
 #include <cstdint>
 #include <vector>
 
+#include "braid_bun.hpp"
 #include "strand_growth.hpp"
 
 namespace hairsketch {
 
 constexpr float kTailCapture = 2.5f;  // x r_1: how far from the axis a crossing is taken in
 constexpr float kTailBlend = 0.3f;    // world units (3 cm): from the crossing to the seat
+constexpr float kBraidTie = 0.1f;     // world units: the bundles meet into the loose tail
+constexpr float kBunTuckAt = 0.85f;   // of a bun strand's coil: from there its tip turns under
+
+// Round: a ponytail's bunch. Braid, Bun: braid_bun.hpp, laid as described there.
+enum class TailShape : uint8_t { Round, Braid, Bun };
 
 struct GatheredTail {
   std::vector<Eigen::Vector3f> spine;               // from c_1 to the spine's tip
   std::vector<float> radius;                        // r(s) at each spine point
   Eigen::Vector3f axis = Eigen::Vector3f::UnitY();  // a_1 (unit): C1's plane is normal to it
+  // Away from the head at C1 (zero: unknown): the frame's E2 points that way, E1 across.
+  Eigen::Vector3f out = Eigen::Vector3f::Zero();
+  TailShape shape = TailShape::Round;
+  BraidParams braid;
+  float braidLength = 0;  // from C1 to where the loose tail starts
+  BunParams bun;
+  Eigen::Vector3f bunCentre = Eigen::Vector3f::Zero();  // on the scalp
+  float bunRadius = 0;
 };
 
 // The tail of a gathered ponytail: spine = the curve's points from the one nearest C1's centre

@@ -5,6 +5,7 @@
 #include <limits>
 #include <string>
 
+#include "braid_bun.hpp"
 #include "memory_budget.hpp"
 #include "ponytail_constraints.hpp"
 
@@ -184,37 +185,80 @@ Status HairEngine::setCurves(const CurveSetView& curves) {
   ConstraintSet next;
   std::vector<uint8_t> nextColours;
   Status s;
+  // the curves' stretches off the scalp (over the face, an ear, the neck, or in the air): where
+  // a braid gathers, and where a curve may take hair over the face
+  std::vector<uint8_t> overFace(curves.pointCount, 0);
+  if (headDistance_.built() && curves.points)
+    for (size_t k = 0; k < curves.pointCount; ++k)
+      overFace[k] = offScalp(headDistance_, curves.points + 3 * k) ? 1 : 0;
+  CurveSetView withHead = curves;
+  if (headDistance_.built()) {
+    withHead.offScalp = overFace.data();
+    withHead.headCentre = &centre_;
+  }
+  // the tails laid in growth: gathered ponytails (with fall), braids and buns
   std::vector<GatheredTail> nextTails;
-  if (fall_ && curves.kinds && curves.curveStart && curves.points && curves.paramStart)
+  if (curves.kinds && curves.curveStart && curves.points && curves.paramStart)
     for (size_t c = 0; c < curves.curveCount; ++c) {
-      if (CurveKindCode(curves.kinds[c]) != CurveKindCode::Ponytail) continue;
+      const auto kind = CurveKindCode(curves.kinds[c]);
       const size_t a = curves.curveStart[c], b = curves.curveStart[c + 1];
       const size_t pa = curves.paramStart[c], pb = curves.paramStart[c + 1];
-      PonytailParams pp;
       if (b <= a || b > curves.pointCount || pb < pa || pb > curves.paramCount) continue;
-      if (!parsePonytailParams(curves.params + pa, pb - pa, pp).ok() || pp.gather != 1) continue;
-      nextTails.push_back(gatheredTail(curves.points + 3 * a, b - a, pp));
+      const double* pts = curves.points + 3 * a;
+      const double* prm = curves.params + pa;
+      const Eigen::Vector3f away = (Eigen::Map<const Eigen::Vector3d>(pts) - centre_).cast<float>();
+      if (kind == CurveKindCode::Ponytail && fall_) {
+        PonytailParams pp;
+        if (!parsePonytailParams(prm, pb - pa, pp).ok() || pp.gather != 1) continue;
+        nextTails.push_back(gatheredTail(pts, b - a, pp));
+      } else if (kind == CurveKindCode::Braid) {
+        BraidParams bp;
+        if (!parseBraidParams(prm, pb - pa, bp).ok()) continue;
+        double length = 0;
+        const size_t gather =
+            braidGatherIndex(withHead.offScalp ? overFace.data() + a : nullptr, b - a);
+        GatheredTail t = gatheredTail(pts, b - a, braidAsPonytail(pts, b - a, gather, bp, &length));
+        t.shape = TailShape::Braid;
+        t.braid = bp;
+        t.braidLength = float(length);
+        t.out = headDistance_.built() ? away : Eigen::Vector3f::Zero();
+        nextTails.push_back(std::move(t));
+      } else if (kind == CurveKindCode::Bun) {
+        BunParams bp;
+        if (!parseBunParams(prm, pb - pa, bp).ok()) continue;
+        const BunFrame f = bunFrame(pts, b - a, bp, withHead.headCentre);
+        std::vector<double> spine;
+        const PonytailParams pp = bunAsPonytail(f, bp, spine);
+        GatheredTail t;
+        t.axis = f.axis.cast<float>();
+        for (const PonytailCircle& k : pp.circles) {
+          t.spine.push_back(k.centre.cast<float>());
+          t.radius.push_back(float(k.radius));
+        }
+        t.shape = TailShape::Bun;
+        t.bun = bp;
+        t.bunCentre = f.centre.cast<float>();
+        t.bunRadius = float(f.radius);
+        nextTails.push_back(std::move(t));
+      }
     }
   if (fall_) {
-    // The reach of stream curves and ponytail spines ends their hair, in place of the fading
-    // extension; "extend" means the curve's hair grows on.
+    // The reach of stream curves, ponytail spines and braids ends their hair, in place of the
+    // fading extension; "extend" means the curve's hair grows on.
     std::vector<ReachCurve> rc;
-    // the curves' stretches off the scalp (over the face, an ear, the neck, or in the air)
-    std::vector<uint8_t> overFace(curves.pointCount, 0);
-    if (headDistance_.built() && curves.points)
-      for (size_t k = 0; k < curves.pointCount; ++k)
-        overFace[k] = offScalp(headDistance_, curves.points + 3 * k) ? 1 : 0;
     if (curves.kinds && curves.curveStart && curves.points)
       for (size_t c = 0; c < curves.curveCount; ++c) {
         const auto kind = CurveKindCode(curves.kinds[c]);
-        if (kind != CurveKindCode::Stream && kind != CurveKindCode::Ponytail) continue;
+        if (kind != CurveKindCode::Stream && kind != CurveKindCode::Ponytail &&
+            kind != CurveKindCode::Braid)
+          continue;
         const size_t a = curves.curveStart[c], b = curves.curveStart[c + 1];
         if (b <= a || b > curves.pointCount) continue;
         rc.push_back({curves.points + 3 * a, b - a, curves.extend && curves.extend[c] != 0,
                       headDistance_.built() ? overFace.data() + a : nullptr});
       }
     std::vector<uint8_t> noExtension(curves.curveCount, 0);
-    CurveSetView view = curves;
+    CurveSetView view = withHead;
     if (curves.extend) view.extend = noExtension.data();
     s = curvesToConstraints(grid_, view, next, &nextColours);
     if (s.ok()) {
@@ -247,7 +291,7 @@ Status HairEngine::setCurves(const CurveSetView& curves) {
       combineReach(lattice, parts, reach_);
     }
   } else {
-    s = curvesToConstraints(grid_, curves, next, &nextColours);
+    s = curvesToConstraints(grid_, withHead, next, &nextColours);
   }
   if (!s.ok()) return s;
   s = solver_->setConstraints(next);
