@@ -6,6 +6,7 @@ import type { Editor, EditorChange } from '../editor/editor';
 import { packCurves, packHairOptions } from '../model/curveSet';
 import { gridForSession, sameGrid } from '../model/grid';
 import { hangLength, newCurveExtends, type SessionState, type Viewpoint } from '../model/session';
+import { needsSolve } from '../model/sessionSchema';
 import type { Vec3 } from '../model/vec3';
 import type { GridSpec, ScalpMesh, SolverErrorKind, SolverName } from '../solver/protocol';
 import { type SolveResult, SolverClient } from '../solver/solverClient';
@@ -202,17 +203,8 @@ export class SolverBridge {
 
   private onEditorChange(c: EditorChange): void {
     if (!c.sessionChanged) return;
-    // a change of colour alone needs no solve
-    const p = c.previous;
-    const s = c.session;
-    if (
-      p.curves === s.curves &&
-      p.avoidScalp === s.avoidScalp &&
-      p.fall === s.fall &&
-      p.detail === s.detail &&
-      p.growth === s.growth
-    )
-      return;
+    // a change of colour alone needs no solve (sessionSchema.ts says which fields do)
+    if (!needsSolve(c.previous, c.session)) return;
     this.drawing = false;
     this.sync();
   }
