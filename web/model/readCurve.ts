@@ -51,28 +51,10 @@ function scalars<K extends CurveKindName>(
   return out as CurveParamValues<K>;
 }
 
+/** A curve's fields besides its kind's scalar parameters (curveFields adds those). */
 const CURVE_FIELDS = {
-  stream: [
-    'id',
-    'type',
-    'points',
-    'extend',
-    'viewpoint',
-    'surfaceMode',
-    'detail',
-    'mirror',
-    ...curveParamNames('stream'),
-  ],
-  dividing: [
-    'id',
-    'type',
-    'points',
-    'normals',
-    'viewpoint',
-    'detail',
-    'mirror',
-    ...curveParamNames('dividing'),
-  ],
+  stream: ['id', 'type', 'points', 'extend', 'viewpoint', 'surfaceMode', 'detail', 'mirror'],
+  dividing: ['id', 'type', 'points', 'normals', 'viewpoint', 'detail', 'mirror'],
   ponytail: [
     'id',
     'type',
@@ -84,9 +66,11 @@ const CURVE_FIELDS = {
     'circles',
     'detail',
     'mirror',
-    ...curveParamNames('ponytail'),
   ],
 } as const satisfies Record<CurveKindName, readonly string[]>;
+
+/** Every field a curve of kind `k` may have (its scalar parameters as the table has them now). */
+const curveFields = (k: CurveKindName): string[] => [...CURVE_FIELDS[k], ...curveParamNames(k)];
 
 /** A detail object: blocks of DETAIL_PARAMS (each key required, within its range) and
  *  lengthJitter; absent = none. */
@@ -129,7 +113,7 @@ export function curve(v: Plain, path: string): StyleCurve {
   const type = v.type;
   if (type !== 'stream' && type !== 'dividing' && type !== 'ponytail')
     fail(`${path}.type`, 'must be "stream", "dividing" or "ponytail"');
-  const o = record(v, path, CURVE_FIELDS[type]);
+  const o = record(v, path, curveFields(type));
   if (typeof o.id !== 'string' || !/^[A-Za-z0-9_~-]{1,32}$/.test(o.id))
     fail(`${path}.id`, 'must be a short identifier (1 to 32 of A-Z a-z 0-9 _ ~ -)');
   const id = o.id;
