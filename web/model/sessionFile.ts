@@ -19,6 +19,7 @@ import type { SessionState, Viewpoint } from './session';
 import { SESSION_LIMITS as L, type Parsed } from './sessionLimits';
 import type { Plain, PlainRecord } from './sessionMigrations';
 import { readInput } from './sessionRead';
+import { SESSION_FIELD_NAMES } from './sessionSchema';
 
 // where the reader and its limits were first defined: callers import them from here
 export { MAX_HEAD_FILE_BYTES, type Parsed, SESSION_LIMITS } from './sessionLimits';
@@ -124,7 +125,10 @@ export async function writeSessionFile(
   s: SessionState,
   options: WriteSessionFileOptions = {},
 ): Promise<string> {
-  const out: Record<string, unknown> = { ...s };
+  // the session's fields in the schema's order (a file's key order), then what goes beside it
+  const out: Record<string, unknown> = {};
+  const fields = s as unknown as Record<string, unknown>;
+  for (const k of SESSION_FIELD_NAMES) if (fields[k] !== undefined) out[k] = fields[k];
   if (options.camera) out.camera = options.camera;
   if (s.head !== 'builtin' && options.headBytes) {
     const bytes = new Uint8Array(options.headBytes);
