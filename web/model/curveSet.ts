@@ -128,6 +128,8 @@ export function packHairOptions(
   return { ...settingValues(s), detail: { groups, curveGroup } };
 }
 
+const UTF8 = new TextEncoder();
+
 /** The content key of a solve request (the result cache's key): every array of the curve set,
  *  every growth setting and every solve option, whatever fields they have (keys in sorted order,
  *  numbers and flags as f64, arrays by their bytes), so a field added to any of them is part of
@@ -139,7 +141,7 @@ export function hairRequestKey(
 ): string {
   const parts: ArrayBufferView[] = [];
   const add = (v: unknown, name: string) => {
-    parts.push(new TextEncoder().encode(name));
+    parts.push(UTF8.encode(name));
     if (ArrayBuffer.isView(v)) parts.push(v);
     else if (typeof v === 'number' || typeof v === 'boolean')
       parts.push(new Float64Array([Number(v)]));
