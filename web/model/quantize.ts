@@ -104,7 +104,8 @@ function quantizeCircle(c: PonytailCircle): PonytailCircle {
     : { ...c, centre, axis, radius, spineIndex };
 }
 
-/** A curve with every number on the grid (the curve itself when already so). */
+/** A curve with every number on the grid and each scalar parameter of its kind present (its
+ *  default when missing); the curve itself when already so. */
 export function quantizeCurve<C extends StyleCurve>(c: C): C {
   const patch: Record<string, unknown> = {};
   const set = (key: string, was: unknown, now: unknown) => {
@@ -113,9 +114,12 @@ export function quantizeCurve<C extends StyleCurve>(c: C): C {
   set('points', c.points, positions(c.points));
   set('viewpoint', c.viewpoint, quantizeViewpoint(c.viewpoint));
   const rec = c as unknown as Record<string, number>;
-  for (const spec of curveParamSpecs(c.type))
-    if (typeof rec[spec.name] === 'number')
-      set(spec.name, rec[spec.name], quantize(rec[spec.name], quantumScale(spec)));
+  // every scalar parameter of its kind spelled out, as the reader spells it out: a curve made
+  // in code before a parameter existed (a preset, a tool) is the curve a file or link reopens
+  for (const spec of curveParamSpecs(c.type)) {
+    const v = rec[spec.name];
+    set(spec.name, v, typeof v === 'number' ? quantize(v, quantumScale(spec)) : spec.default);
+  }
   if (c.type === 'dividing') set('normals', c.normals, directions(c.normals));
   if (c.type === 'ponytail') {
     set('crossSection', c.crossSection, positions(c.crossSection));
