@@ -3,7 +3,7 @@
 // (solver/protocol.ts CurveSet.params carries them to solver-cpp, which reads them at the
 // indices of solver-cpp/src/curve_params.hpp).
 
-/** Style curve kinds, as stored in CurveSet.kinds (protocol.ts). */
+/** Style curve kinds, as stored in CurveSet.kinds (hairArrays.ts). */
 export const CurveKind = { stream: 0, dividing: 1, ponytail: 2 } as const;
 export type CurveKindName = keyof typeof CurveKind;
 

@@ -1,6 +1,6 @@
 // The session's growth settings (SPEC S5): one table gives each its default, its accepted range
-// and whether it is a whole number; the session reader, the share link and the solver's
-// GROWTH_INPUT struct (solver/protocol.ts) follow it.
+// and whether it is a whole number; the session reader and the share link follow it, and the
+// solver's GROWTH_INPUT struct (solver/protocol.ts, mirrored in wasm-build/binding.cpp) carries it.
 
 /** Hair growth settings (SPEC S5). */
 export interface GrowthParams {
