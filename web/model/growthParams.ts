@@ -1,8 +1,8 @@
-// The session's growth settings (SPEC S5): one table gives each its default, its accepted range
+// The session's growth settings (method S5): one table gives each its default, its accepted range
 // and whether it is a whole number; the session reader and the share link follow it, and the
 // solver's GROWTH_INPUT struct (solver/protocol.ts, mirrored in wasm-build/binding.cpp) carries it.
 
-/** Hair growth settings (SPEC S5). */
+/** Hair growth settings (method S5). */
 export interface GrowthParams {
   thetaStepDeg: number; // sampling step of θ ∈ [0, 180)
   phiStepDeg: number; // sampling step of φ ∈ [0, 360)

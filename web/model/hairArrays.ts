@@ -3,7 +3,7 @@
 // re-exports them); the index formula of every array is on its field.
 import type { SessionSettingValues } from './sessionSchema';
 
-/** Uniform grid over the bounding volume (SPEC S1.2). Point (i, j, k) has index
+/** Uniform grid over the bounding volume (method S1.2). Point (i, j, k) has index
  *  p = i + nx * (j + ny * k) and world position origin + step * (i, j, k). */
 export interface GridSpec {
   dims: [number, number, number]; // nx, ny, nz
