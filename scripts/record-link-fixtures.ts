@@ -8,8 +8,9 @@
 // fixture is what people hold. `links 1` and `links 2` were run on the build before link
 // version 3 (version 2 written, version 1's encoder kept); `links 3` on the build that writes
 // version 3. RECORD_DIST is a `vite build --outDir <dir>` of a build from before the links'
-// format changed, so the hash is the hair the link opened to then. Every link is opened with
-// `?strands=2000` (the e2e scenes' cap).
+// format changed, so the hash is the hair the link opened to then. Every link is opened at
+// `?strands=2000`, as the e2e scenes are; the link's own growth settings (no strand cap in these
+// sessions) decide how many strands grow.
 import { type ChildProcess, spawn } from 'node:child_process';
 import { existsSync, readFileSync, writeFileSync } from 'node:fs';
 import { chromium } from '@playwright/test';
