@@ -1,4 +1,4 @@
-// Share links, version 2 (web/model/sessionLink.ts): the default preset plus one stroke makes
+// Share links, version 3 (web/model/sessionLink.ts): the default preset plus one stroke makes
 // an address-bar link short enough for a chat (≤ 2,000 characters, URL-safe), and that link
 // opened in a fresh page holds the identical session (the editor keeps every number on the
 // link's grid, web/model/quantize.ts) and grows the identical hair (the same hairHash) with the
@@ -26,7 +26,7 @@ async function strokeAndReopen(page: Page, context: BrowserContext, scene: strin
   await settled(page, s0.revision);
   // the address bar follows the session about 400 ms after an edit
   await page.waitForFunction(
-    (old) => window.location.hash.startsWith('#s=2.') && window.location.hash !== old,
+    (old) => window.location.hash.startsWith('#s=3.') && window.location.hash !== old,
     before,
   );
   const { hash, href } = await page.evaluate(() => ({
@@ -56,7 +56,7 @@ test('the default preset with a stroke: a short link that reopens the identical 
 }) => {
   const { hash, other } = await strokeAndReopen(page, context, '/?strands=30000&solver=exact');
   console.log(`default preset + one stroke: link fragment ${hash.length} characters`);
-  expect(hash).toMatch(/^#s=2\.[A-Za-z0-9_-]+$/);
+  expect(hash).toMatch(/^#s=3\.[A-Za-z0-9_-]+$/);
   expect(hash.length).toBeLessThanOrEqual(2000);
   const a = await page.evaluate(() => window.hairsketch.hairHash());
   expect(a).not.toBeNull();
@@ -79,7 +79,7 @@ test('a link cut short says so and the preset loads instead', async ({ page }) =
   await page.getByRole('button', { name: 'Stream curve' }).click();
   await strokeFromScalp(page, 35, 20, 140, 190);
   await settled(page, s0.revision);
-  await page.waitForFunction(() => window.location.hash.startsWith('#s=2.'));
+  await page.waitForFunction(() => window.location.hash.startsWith('#s=3.'));
   const href = await page.evaluate(() => window.location.href);
   const other = await page.context().newPage();
   await other.goto(href.slice(0, -12));

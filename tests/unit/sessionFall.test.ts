@@ -38,7 +38,7 @@ function read(v: unknown): SessionState {
 
 async function linkRoundTrip(s: SessionState): Promise<SessionState> {
   const link = await encodeSessionLink(s);
-  expect(link).toMatch(/^s=2\.[A-Za-z0-9_-]+$/);
+  expect(link).toMatch(/^s=3\.[A-Za-z0-9_-]+$/);
   const r = await decodeSessionLink(`#${link}`);
   if (!r.ok) throw new Error(r.error);
   return r.value;

@@ -188,7 +188,7 @@ describe('session links', () => {
   it('round-trip a session (numbers to 1e-5)', async () => {
     const s = sample();
     const link = await encodeSessionLink(s);
-    expect(link).toMatch(/^s=2\.[A-Za-z0-9_-]+$/);
+    expect(link).toMatch(/^s=3\.[A-Za-z0-9_-]+$/);
     const r = await decodeSessionLink(`#${link}`);
     expect(r.ok).toBe(true);
     if (r.ok) {

@@ -1,4 +1,4 @@
-// Share links (web/model/sessionLink.ts): version 2 reopens every preset deep-equal to its
+// Share links (web/model/sessionLink.ts): version 3 reopens every preset deep-equal to its
 // quantised session (quantize.ts) in a link short enough for a chat; version 1 links still
 // open; deflate bombs and over-long links are refused fast; every kind of damage gives a
 // sentence, never a throw.
@@ -43,7 +43,7 @@ const DETAIL = {
 
 async function roundTrip(s: SessionState): Promise<SessionState> {
   const link = await encodeSessionLink(s);
-  expect(link).toMatch(/^s=2\.[A-Za-z0-9_-]+$/);
+  expect(link).toMatch(/^s=3\.[A-Za-z0-9_-]+$/);
   const r = await decodeSessionLink(`#${link}`);
   if (!r.ok) throw new Error(r.error);
   return r.value;
@@ -209,12 +209,12 @@ describe('version 2 links', () => {
     const v2 = await encodeSessionLink(s);
     const v1 = await encodeSessionLinkV1(s);
     console.log(
-      `default preset link: version 2 ${v2.length + 1} characters (#${v2.slice(0, 12)}…), version 1 ${v1.length + 1}`,
+      `default preset link: version 3 ${v2.length + 1} characters (#${v2.slice(0, 12)}…), version 1 ${v1.length + 1}`,
     );
     for (const name of PRESET_NAMES)
       console.log(`  ${name}: ${(await encodeSessionLink(presetSession(name, head))).length + 1}`);
     expect(v2.length + 1).toBeLessThanOrEqual(2000); // with the '#'
-    expect(v2).toMatch(/^s=2\.[A-Za-z0-9_-]+$/); // URL-safe, no line breaks
+    expect(v2).toMatch(/^s=3\.[A-Za-z0-9_-]+$/); // URL-safe, no line breaks
   });
 });
 
@@ -272,7 +272,7 @@ describe('version 2 links made before session version 2 (constraints in the avoi
 
   it('open as version 1 sessions with avoidScalp on', async () => {
     const s = presetSession('fig7', head);
-    const body = packSession(s);
+    const body = packSession(s, 2);
     // no tail: the body ends with the avoid slot (0), the tail length (0) and the CRC
     const before = body.subarray(0, body.length - 6);
     expect(Array.from(body.subarray(body.length - 6, body.length - 4))).toEqual([0, 0]);
@@ -289,7 +289,7 @@ describe('version 2 links made before session version 2 (constraints in the avoi
       ...zigzag(-1500 - 0),
     ];
     const old = new Uint8Array([...before, ...avoid, 0]);
-    const data = unpackSession(withCrc(old));
+    const data = unpackSession(withCrc(old), 2);
     expect(data.version).toBe(1);
     expect(data.avoid).toEqual({ index: [3, 7], target: [0, 0.3, 0, 0.3, 0, -0.15] });
     const r = await decodeSessionLink(await linkOf(withCrc(old)));
@@ -387,7 +387,7 @@ describe('damaged links say what is wrong', () => {
     await bad('#s=2.abcd\nefgh', /damaged \(not base64url\)/);
     await bad('#s=2.abcde', /cut short/);
     await bad('#s=2.', /damaged \(not base64url\)/);
-    await bad('#s=3.AAAA', /version 3; this app opens versions 1 and 2/);
+    await bad('#s=4.AAAA', /version 4; this app opens versions 1, 2 and 3/);
     await bad('#s=0.AAAA', /version 0/);
   });
 
@@ -415,14 +415,14 @@ describe('damaged links say what is wrong', () => {
   });
 
   it('a body that inflates but does not fit the layout', async () => {
-    const body = packSession(presetSession('fig8', head));
+    const body = packSession(presetSession('fig8', head), 2);
     const link = linkOf;
     const payload = body.subarray(0, body.length - 4);
     // after the JSON tail: the optional parts (a mask), then nothing
     await bad(await link(withCrc(new Uint8Array([...payload, 8]))), /parts this app does not know/);
     await bad(await link(withCrc(new Uint8Array([...payload, 0]))), /parts this app does not know/);
     await bad(await link(withCrc(new Uint8Array([...payload, 7]))), /ends too early/);
-    const withPlane = packSession({ ...presetSession('fig8', head), symmetry: X_PLANE });
+    const withPlane = packSession({ ...presetSession('fig8', head), symmetry: X_PLANE }, 2);
     await bad(
       await link(withCrc(new Uint8Array([...withPlane.subarray(0, withPlane.length - 4), 1]))),
       /data past its end/,

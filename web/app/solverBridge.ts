@@ -8,6 +8,7 @@ import type { Editor, EditorChange, StrokeInProgress } from '../editor/editor';
 import { packCurves, packHairOptions } from '../model/curveSet';
 import { gridForSession, sameGrid } from '../model/grid';
 import { hangLength, newCurveExtends, type SessionState } from '../model/session';
+import { needsSolve } from '../model/sessionSchema';
 import type { Vec3 } from '../model/vec3';
 import type { GridSpec, ScalpMesh, SolverErrorKind, SolverName } from '../solver/protocol';
 import { type SolveResult, SolverClient } from '../solver/solverClient';
@@ -193,7 +194,7 @@ export class SolverBridge {
       if (c.strokeChanged) this.preview(c.stroke);
       return;
     }
-    if (c.sessionChanged && solverInputChanged(c.previous, c.session)) {
+    if (c.sessionChanged && needsSolve(c.previous, c.session)) {
       this.sync();
       return;
     }
@@ -202,15 +203,4 @@ export class SolverBridge {
     // client's cache, no solve).
     if (c.strokeChanged && this.lastAsked === 'preview') this.sync();
   }
-}
-
-/** Whether the hair may differ between two sessions (a change of colour alone needs no solve). */
-function solverInputChanged(p: SessionState, s: SessionState): boolean {
-  return !(
-    p.curves === s.curves &&
-    p.avoidScalp === s.avoidScalp &&
-    p.fall === s.fall &&
-    p.detail === s.detail &&
-    p.growth === s.growth
-  );
 }

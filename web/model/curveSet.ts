@@ -1,17 +1,15 @@
-// Packs the session's curves into the protocol's flat CurveSet layout (protocol.ts): each curve's
-// parameter block is its kind's scalars from protocol.ts CURVE_PARAMS (by name, in table order,
-// the table's default for a curve without the field), then the kind's variable block.
-import {
-  CURVE_PARAMS,
-  CurveKind,
-  type CurveSet,
-  DETAIL_GROUP_STRIDE,
-  type HairOptions,
-} from '../solver/protocol';
-import { packDetailGroup } from './detail';
+// Packs the session's curves into the flat CurveSet layout (hairArrays.ts): each curve's
+// parameter block is its kind's scalars from curveParams.ts CURVE_PARAMS (by name, in table
+// order, the table's default for a curve without the field), then the kind's variable block.
+// Also the session's solve options, and the key that tells solve requests apart.
+import { CURVE_PARAMS, CurveKind } from './curveParams';
+import { DETAIL_GROUP_STRIDE, packDetailGroup } from './detail';
+import type { GrowthParams } from './growthParams';
+import type { CurveSet, HairOptions } from './hairArrays';
 import type { SessionState, StyleCurve } from './session';
+import { type SessionSettings, settingValues } from './sessionSchema';
 
-/** Constraints stated directly (protocol.ts CurveSet.extraIndex / extraTarget). */
+/** Constraints stated directly (hairArrays.ts CurveSet.extraIndex / extraTarget). */
 export interface ExtraConstraints {
   index: ArrayLike<number>;
   target: ArrayLike<number>;
@@ -26,7 +24,7 @@ export function curveScalars(c: StyleCurve): number[] {
   });
 }
 
-/** The variable block that follows a curve's scalars (protocol.ts CurveSet.params). */
+/** The variable block that follows a curve's scalars (hairArrays.ts CurveSet.params). */
 function variableBlock(c: StyleCurve): number[] {
   switch (c.type) {
     case 'stream':
@@ -38,7 +36,7 @@ function variableBlock(c: StyleCurve): number[] {
   }
 }
 
-/** The parameter block of a curve (protocol.ts CurveSet.params). A gathered ponytail (natural
+/** The parameter block of a curve (hairArrays.ts CurveSet.params). A gathered ponytail (natural
  *  fall: the tail a solid of revolution fed by a funnel, solver-cpp/src/ponytail_constraints.hpp)
  *  carries its gather flag (1) after its tightness; without it the block is the paper's. */
 export function curveParams(c: StyleCurve, gather = false): number[] {
@@ -94,7 +92,7 @@ export function packCurves(
     extraTarget: Float64Array.from(extras?.target ?? []),
   };
 }
-/** A content key for a curve set + growth settings (for the result cache). FNV-1a over bytes. */
+/** A content key over typed arrays (FNV-1a over their bytes). */
 export function contentKey(...arrays: ArrayBufferView[]): string {
   let h1 = 0x811c9dc5;
   let h2 = 0x01000193;
@@ -109,11 +107,11 @@ export function contentKey(...arrays: ArrayBufferView[]): string {
   return `${(h1 >>> 0).toString(16)}-${(h2 >>> 0).toString(16)}`;
 }
 
-/** The solve options of a session (protocol.ts HairOptions) for `curves` (the session's curves,
- *  perhaps with a stroke being drawn after them): group 0 is the session's detail, then one
- *  group per curve with a detail of its own. */
+/** The solve options of a session (hairArrays.ts HairOptions) for `curves` (the session's curves,
+ *  perhaps with a stroke being drawn after them): its settings (sessionSchema.ts), and its detail:
+ *  group 0 is the session's, then one group per curve with a detail of its own. */
 export function packHairOptions(
-  s: Pick<SessionState, 'avoidScalp' | 'detail' | 'fall'>,
+  s: SessionSettings & Pick<SessionState, 'detail'>,
   curves: readonly StyleCurve[],
 ): HairOptions {
   const own = curves.filter((c) => c.detail !== undefined);
@@ -127,5 +125,32 @@ export function packHairOptions(
     packDetailGroup(c.detail, groups, DETAIL_GROUP_STRIDE * g);
     curveGroup[i] = g;
   });
-  return { avoidScalp: !!s.avoidScalp, fall: !!s.fall, detail: { groups, curveGroup } };
+  return { ...settingValues(s), detail: { groups, curveGroup } };
+}
+
+const UTF8 = new TextEncoder();
+
+/** The content key of a solve request (the result cache's key): every array of the curve set,
+ *  every growth setting and every solve option, whatever fields they have (keys in sorted order,
+ *  numbers and flags as f64, arrays by their bytes), so a field added to any of them is part of
+ *  the key without a list to keep. */
+export function hairRequestKey(
+  curves: CurveSet,
+  growth: GrowthParams,
+  options: HairOptions,
+): string {
+  const parts: ArrayBufferView[] = [];
+  const add = (v: unknown, name: string) => {
+    parts.push(UTF8.encode(name));
+    if (ArrayBuffer.isView(v)) parts.push(v);
+    else if (typeof v === 'number' || typeof v === 'boolean')
+      parts.push(new Float64Array([Number(v)]));
+    else if (typeof v === 'object' && v !== null)
+      for (const k of Object.keys(v).sort()) add((v as Record<string, unknown>)[k], `${name}.${k}`);
+    else parts.push(new Uint8Array([v === undefined ? 0 : 1]));
+  };
+  add(curves, 'curves');
+  add(growth, 'growth');
+  add(options, 'options');
+  return contentKey(...parts);
 }

@@ -67,6 +67,11 @@ export const LENGTH_JITTER: DetailParamSpec = {
   step: 0.01,
 };
 
+/** Numbers per detail group (hairArrays.ts DetailArrays; solver-cpp/src/strand_detail.hpp): every
+ *  block's parameters in DETAIL_PARAMS order, then lengthJitter. */
+export const DETAIL_GROUP_STRIDE: number =
+  DETAIL_BLOCKS.reduce((n, b) => n + DETAIL_PARAMS[b].length, 0) + 1;
+
 /** A block with Blender's defaults. */
 export function defaultBlock<B extends DetailBlock>(b: B): NonNullable<HairDetail[B]> {
   const out: Record<string, number> = {};
@@ -74,7 +79,7 @@ export function defaultBlock<B extends DetailBlock>(b: B): NonNullable<HairDetai
   return out as unknown as NonNullable<HairDetail[B]>;
 }
 
-/** Writes one detail group (protocol.ts DetailArrays, DETAIL_GROUP_STRIDE numbers) at `at`:
+/** Writes one detail group (hairArrays.ts DetailArrays, DETAIL_GROUP_STRIDE numbers) at `at`:
  *  curl radius, frequency, start, randomOffset; clump factor, shape, tipSpread, guideDistance;
  *  frizz distance, shape; lengthJitter. An absent block is written as off (radius, factor,
  *  distance 0). */

@@ -1,5 +1,5 @@
 // Grid presets over the fixed bounding volume of the built-in head (method S1.2).
-import type { GridSpec } from '../solver/protocol';
+import type { GridSpec } from './hairArrays';
 import type { Vec3 } from './vec3';
 
 export const BOX_MIN: Vec3 = [-1.7, -2.9, -1.7];

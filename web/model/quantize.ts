@@ -6,8 +6,9 @@
 //   positions (curve points, cross-sections, profiles, circle centres and radii,
 //   viewpoint positions and targets): 1e-4 world units (10 µm)
 //   directions (dividing-curve normals, ponytail circle axes, scalp-avoidance targets): 1e-4
-//   curve parameters (CURVE_PARAMS): angles (alpha0, alpha1) 1e-5 rad; the others
-//   (sigma, h in grid steps, tightness) 1e-4
+//   curve parameters: each its row's quantum in curveParams.ts CURVE_PARAMS (angles alpha0,
+//   alpha1 1e-5 rad; sigma, h in grid steps, tightness 1e-4)
+//   the session's number settings: their quantum in sessionSchema.ts SESSION_SETTINGS
 //   indices (circle spineIndex: rounded; avoid grid index: truncated, as Int32Array does)
 //   growth settings and the hair colour: exact (the colour as lowercase #rrggbb)
 //   scalp brush strokes (points, radius): positions
@@ -19,26 +20,29 @@
 // outside any head), so it prints as a short decimal, and quantising twice changes nothing.
 // Every function returns its argument itself when it is already on the grid: quantising an
 // unchanged curve keeps its identity (the solver bridge compares curves by identity).
-import { CURVE_PARAMS, type CurveParamSpec } from '../solver/protocol';
+import { CURVE_KINDS, curveParamSpecs, quantumScale } from './curveParams';
 import type { MirrorPlane } from './mirror';
 import type { PonytailCircle } from './ponytailGeometry';
 import type { ScalpStroke, SessionState, StyleCurve, Viewpoint } from './session';
+import { SETTING_NAMES, type SessionSettings, settingSpec } from './sessionSchema';
 import type { Vec3 } from './vec3';
 
 /** Integers per world unit for positions (1e-4 world units = 10 µm). */
 export const POSITION_SCALE = 1e4;
 /** Integers per unit for direction components (normals, axes, avoid targets). */
 export const DIRECTION_SCALE = 1e4;
-/** Integers per radian for curve angles. */
+/** Integers per radian for curve angles (their rows' quantum, 1e-5). */
 export const ANGLE_SCALE = 1e5;
-/** Integers per unit for the other curve parameters (sigma, h, tightness). */
+/** Integers per unit for the other curve parameters (sigma, h, tightness: quantum 1e-4). */
 export const PARAM_SCALE = 1e4;
 /** Numbers are clamped to ±LIMIT before quantising (keeps every integer far below 2^53). */
 export const LIMIT = 1e6;
 
-/** The grid step of curve parameter `name` (CURVE_PARAMS), as integers per unit. */
+/** The grid of curve parameter `name` (its row's quantum in CURVE_PARAMS), as integers per unit. */
 export function paramScale(name: string): number {
-  return name.startsWith('alpha') ? ANGLE_SCALE : PARAM_SCALE;
+  for (const k of CURVE_KINDS)
+    for (const spec of curveParamSpecs(k)) if (spec.name === name) return quantumScale(spec);
+  return PARAM_SCALE;
 }
 
 /** The integer a number is stored as: round(clamp(x) * scale), never -0. */
@@ -100,7 +104,8 @@ function quantizeCircle(c: PonytailCircle): PonytailCircle {
     : { ...c, centre, axis, radius, spineIndex };
 }
 
-/** A curve with every number on the grid (the curve itself when already so). */
+/** A curve with every number on the grid and each scalar parameter of its kind present (its
+ *  default when missing); the curve itself when already so. */
 export function quantizeCurve<C extends StyleCurve>(c: C): C {
   const patch: Record<string, unknown> = {};
   const set = (key: string, was: unknown, now: unknown) => {
@@ -109,9 +114,12 @@ export function quantizeCurve<C extends StyleCurve>(c: C): C {
   set('points', c.points, positions(c.points));
   set('viewpoint', c.viewpoint, quantizeViewpoint(c.viewpoint));
   const rec = c as unknown as Record<string, number>;
-  for (const spec of CURVE_PARAMS[c.type] as readonly CurveParamSpec[])
-    if (typeof rec[spec.name] === 'number')
-      set(spec.name, rec[spec.name], quantize(rec[spec.name], paramScale(spec.name)));
+  // every scalar parameter of its kind spelled out, as the reader spells it out: a curve made
+  // in code before a parameter existed (a preset, a tool) is the curve a file or link reopens
+  for (const spec of curveParamSpecs(c.type)) {
+    const v = rec[spec.name];
+    set(spec.name, v, typeof v === 'number' ? quantize(v, quantumScale(spec)) : spec.default);
+  }
   if (c.type === 'dividing') set('normals', c.normals, directions(c.normals));
   if (c.type === 'ponytail') {
     set('crossSection', c.crossSection, positions(c.crossSection));
@@ -156,11 +164,13 @@ export function quantizeSession(s: SessionState): SessionState {
   const hairColor = s.hairColor.toLowerCase();
   const scalpPaint = s.scalpPaint && mapSame(s.scalpPaint, quantizeStroke);
   const symmetry = s.symmetry && quantizePlane(s.symmetry);
+  const settings = quantizeSettings(s);
   if (
     curves === s.curves &&
     hairColor === s.hairColor &&
     scalpPaint === s.scalpPaint &&
-    symmetry === s.symmetry
+    symmetry === s.symmetry &&
+    settings === null
   )
     return s;
   return {
@@ -169,5 +179,24 @@ export function quantizeSession(s: SessionState): SessionState {
     hairColor,
     ...(scalpPaint ? { scalpPaint } : {}),
     ...(symmetry ? { symmetry } : {}),
+    ...settings,
   };
+}
+
+/** The number settings (sessionSchema.ts) that are off their quantum's grid, put on it; null
+ *  when every one is on it. */
+function quantizeSettings(s: SessionSettings): Record<string, number> | null {
+  let out: Record<string, number> | null = null;
+  const values = s as Record<string, unknown>;
+  for (const k of SETTING_NAMES) {
+    const spec = settingSpec(k);
+    const v = values[k];
+    if (spec.type !== 'number' || typeof v !== 'number') continue;
+    const q = quantize(v, Math.round(1 / spec.quantum));
+    if (!Object.is(q, v)) {
+      out ??= {};
+      out[k] = q;
+    }
+  }
+  return out;
 }

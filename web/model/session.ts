@@ -1,17 +1,14 @@
 // The session model: everything the user made, as plain immutable JSON-able data.
 
 import type { Axis, HeadFormat } from '../head/loadHead';
-import {
-  CURVE_PARAMS,
-  type CurveKindName,
-  type CurveParamValues,
-  type GrowthParams,
-} from '../solver/protocol';
+import { CURVE_PARAMS, type CurveKindName, type CurveParamValues } from './curveParams';
 import type { HairDetail } from './detail';
 import type { DividingSettings } from './dividingFrames';
 import type { GridPreset } from './grid';
+import { DEFAULT_GROWTH, type GrowthParams } from './growthParams';
 import type { MirrorPlane } from './mirror';
 import type { PonytailCircle } from './ponytailGeometry';
+import type { SessionSettings } from './sessionSchema';
 import type { SurfaceMode } from './supportingSurface';
 import type { Vec3 } from './vec3';
 
@@ -113,7 +110,9 @@ export interface ScalpStroke {
   points: Vec3[];
 }
 
-export interface SessionState {
+/** A session (sessionSchema.ts lists its fields; the settings, avoidScalp and fall among them,
+ *  come from its SESSION_SETTINGS). */
+export interface SessionState extends SessionSettings {
   version: 4;
   /** The built-in mannequin head, or a user's head mesh. */
   head: 'builtin' | HeadRef;
@@ -121,12 +120,6 @@ export interface SessionState {
   curves: readonly StyleCurve[];
   growth: GrowthParams;
   hairColor: string; // CSS hex colour
-  /** "Avoid scalp" (S4.7) is on: the solver derives the avoidance constraints from the curves'
-   *  field each time it solves them (absent = off). */
-  avoidScalp?: boolean;
-  /** Natural fall (protocol.ts HairOptions.fall): on in every new session; absent = off, the
-   *  hair of sessions made before it (version 3 and older) exactly. */
-  fall?: boolean;
   /** Curl, clump, frizz and length jitter of every strand (absent = none). */
   detail?: HairDetail;
   /** Scalp brush strokes applied in order over the head's default scalp (absent = none). */
@@ -135,7 +128,7 @@ export interface SessionState {
   symmetry?: MirrorPlane;
 }
 
-/** The scalar parameters of a new curve of kind `k`: the defaults of protocol.ts CURVE_PARAMS. */
+/** The scalar parameters of a new curve of kind `k`: the defaults of curveParams.ts CURVE_PARAMS. */
 export function defaultParams<K extends CurveKindName>(k: K): CurveParamValues<K> {
   const out: Record<string, number> = {};
   for (const p of CURVE_PARAMS[k]) out[p.name] = p.default;
@@ -155,20 +148,10 @@ export function hangLength(s: Pick<SessionState, 'fall' | 'growth'>): number {
   return s.fall ? s.growth.maxLength : 0;
 }
 
-/** A new ponytail's tightness: the default of protocol.ts CURVE_PARAMS. */
+/** A new ponytail's tightness: the default of curveParams.ts CURVE_PARAMS. */
 export const DEFAULT_TIGHTNESS: number = CURVE_PARAMS.ponytail[0].default;
 
-export const DEFAULT_GROWTH: GrowthParams = {
-  thetaStepDeg: 1.0,
-  phiStepDeg: 1.0,
-  jitter: 0.8,
-  seed: 20070807,
-  stepFraction: 0.5,
-  minMagnitude: 0.05,
-  maxLength: 3.2,
-  maxSegments: 120,
-  maxStrands: 0,
-};
+export { DEFAULT_GROWTH };
 
 export function emptySession(
   grid: GridPreset,

@@ -2,7 +2,7 @@
 // each strand, and always its last, so a strand keeps its root, tip and shape with about half
 // the segments. The strands are grown at the paper's step all the same (S4); only what is drawn
 // and lit is thinner.
-import { type StrandArrays, strandCount } from '../solver/protocol';
+import { type StrandArrays, strandCount } from './hairArrays';
 
 /** Whether everyOtherPoint keeps point i of a strand of n points. */
 const kept = (i: number, n: number): boolean => i % 2 === 0 || i === n - 1;

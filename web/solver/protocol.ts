@@ -2,13 +2,39 @@
 // every typed array that crosses the boundary. Arrays are flat; the comment on each field gives
 // its index formula. Arrays sent by the worker are transferred (not copied).
 
-/** Uniform grid over the bounding volume (method S1.2). Point (i, j, k) has index
- *  p = i + nx * (j + ny * k) and world position origin + step * (i, j, k). */
-export interface GridSpec {
-  dims: [number, number, number]; // nx, ny, nz
-  origin: [number, number, number]; // world position of point (0, 0, 0)
-  step: number; // d, world units
-}
+// The session's domain (curve kinds and their parameters, growth settings, the detail layout)
+// and the flat arrays a session becomes live in web/model/; this protocol carries them and
+// re-exports them for the solver's side. Their layouts, in short (each field's comment in
+// web/model/hairArrays.ts has its index formula):
+//   GridSpec: point (i, j, k) has index p = i + nx * (j + ny * k), position origin + step * (i, j, k).
+//   CurveSet: points[3 * point + axis]; curve c owns points curveStart[c] .. curveStart[c + 1] - 1
+//     and params[paramStart[c] .. paramStart[c + 1] - 1]: its kind's CURVE_PARAMS scalars in
+//     table order, then its kind's variable block (dividing: a normal per point, 3 numbers;
+//     ponytail: the circle count, then cx, cy, cz, ax, ay, az, r per circle); extraIndex[e],
+//     extraTarget[3 * e + axis].
+//   DetailArrays: groups[DETAIL_GROUP_STRIDE * g + k] (model/detail.ts has k's order),
+//     curveGroup[c].
+//   StrandArrays: points[3 * point + axis]; strand s owns strandStart[s] .. strandStart[s + 1] - 1.
+export {
+  CURVE_PARAMS,
+  CurveKind,
+  type CurveKindName,
+  type CurveParamSpec,
+  type CurveParamValues,
+} from '../model/curveParams';
+export { DETAIL_GROUP_STRIDE } from '../model/detail';
+export type { GrowthParams } from '../model/growthParams';
+export {
+  type CurveSet,
+  type DetailArrays,
+  type GridSpec,
+  type HairOptions,
+  type StrandArrays,
+  strandCount,
+} from '../model/hairArrays';
+
+import type { GrowthParams } from '../model/growthParams';
+import type { CurveSet, GridSpec, HairOptions, StrandArrays } from '../model/hairArrays';
 
 /** The head as the solver needs it: triangles with a scalp flag (method S1.1). */
 export interface ScalpMesh {
@@ -16,154 +42,6 @@ export interface ScalpMesh {
   indices: Uint32Array; // indices[3 * triangle + corner]
   scalp: Uint8Array; // scalp[triangle] = 1 when the triangle is part of the scalp
   center: [number, number, number]; // origin of the spherical root parameterisation (S5.1)
-}
-
-/** Style curve kinds, as stored in CurveSet.kinds. */
-export const CurveKind = { stream: 0, dividing: 1, ponytail: 2 } as const;
-export type CurveKindName = keyof typeof CurveKind;
-
-/** One scalar parameter of a curve kind: the session field `name` (StyleCurve[name], in the
- *  unit below), packed in table order at the start of the curve's CurveSet.params block and read
- *  by solver-cpp at the index named in solver-cpp/src/curve_params.hpp. The session reader
- *  accepts [min, max] (a saved curve without the field gets `default`); the curve panel offers
- *  `view` (in degrees when unit is 'rad'). */
-export interface CurveParamSpec {
-  readonly name: string;
-  readonly label: string; // curve panel label, without the unit
-  readonly unit: 'grid steps' | 'rad' | '';
-  readonly default: number;
-  readonly min: number; // accepted range, session units
-  readonly max: number;
-  readonly view: { readonly min: number; readonly max: number; readonly step: number };
-}
-
-/** The scalar parameters of each curve kind, in pack order (solver-cpp/src/curve_params.hpp
- *  has the same order). Adding one: a row here, its index there, and the C++ that reads it. */
-export const CURVE_PARAMS = {
-  /** S4.1: none yet. */
-  stream: [],
-  /** S4.5: the parting's Gaussian profile (sigma, h) and tilt at both ends (alpha0, alpha1). */
-  dividing: [
-    {
-      name: 'sigma',
-      label: 'σ',
-      unit: 'grid steps',
-      default: 1,
-      min: 0.05,
-      max: 20,
-      view: { min: 0.25, max: 4, step: 0.05 },
-    },
-    {
-      name: 'h',
-      label: 'h',
-      unit: 'grid steps',
-      default: 0.5,
-      min: 0,
-      max: 20,
-      view: { min: 0, max: 3, step: 0.05 },
-    },
-    {
-      name: 'alpha0',
-      label: 'α0',
-      unit: 'rad',
-      default: 0,
-      min: -Math.PI,
-      max: Math.PI,
-      view: { min: -80, max: 80, step: 1 },
-    },
-    {
-      name: 'alpha1',
-      label: 'α1',
-      unit: 'rad',
-      default: 0,
-      min: -Math.PI,
-      max: Math.PI,
-      view: { min: -80, max: 80, step: 1 },
-    },
-  ],
-  /** S4.6: the centripetal magnitude of the green ring. */
-  ponytail: [
-    {
-      name: 'tightness',
-      label: 'Tightness',
-      unit: '',
-      default: 0.6,
-      min: 0,
-      max: 10,
-      view: { min: 0, max: 1, step: 0.05 },
-    },
-  ],
-} as const satisfies Record<CurveKindName, readonly CurveParamSpec[]>;
-
-/** The scalar parameter values of a curve kind, by name. */
-export type CurveParamValues<K extends CurveKindName> = {
-  [P in (typeof CURVE_PARAMS)[K][number]['name']]: number;
-};
-
-/** All style curves of a session, flattened. Curve c owns points
- *  curveStart[c] .. curveStart[c + 1] - 1; its segments have length ≈ grid step (S4). */
-export interface CurveSet {
-  points: Float64Array; // points[3 * point + axis], world units
-  curveStart: Uint32Array; // length = curves + 1; curveStart[0] = 0
-  kinds: Uint8Array; // kinds[c]: a CurveKind value
-  extend: Uint8Array; // extend[c] = 1: append fading extrapolated segments (S4.1)
-  /** Parameter blocks: curve c owns params[paramStart[c] .. paramStart[c + 1] - 1]: first the
-   *  scalars of its kind in CURVE_PARAMS order, then its kind's variable block:
-   *  stream: none.
-   *  dividing (S4.5): per point of the curve the scalp normal at it: nx, ny, nz (3 per point).
-   *  ponytail (S4.6): points are the spine; the circle count m, then per cross-section circle
-   *    (C1 first, C2 last): cx, cy, cz, ax, ay, az (unit axis along the spine), r (7 per circle). */
-  params: Float64Array;
-  paramStart: Uint32Array; // length = curves + 1
-  /** Constraints stated directly (e.g. scalp avoidance, S4.7): grid index and target. They are
-   *  added to those the curves derive; duplicates are averaged. */
-  extraIndex: Int32Array; // extraIndex[e] = grid point p
-  extraTarget: Float64Array; // extraTarget[3 * e + axis]
-}
-
-/** Hair growth settings (method S5). */
-export interface GrowthParams {
-  thetaStepDeg: number; // sampling step of θ ∈ [0, 180)
-  phiStepDeg: number; // sampling step of φ ∈ [0, 360)
-  jitter: number; // random offset as a fraction of a step, 0..1
-  seed: number; // uint32: the same seed grows the same roots
-  stepFraction: number; // l / d (paper: 0.5)
-  minMagnitude: number; // stop when |v(p)| falls below this (paper: 0.05)
-  maxLength: number; // world units: stop a strand at this length
-  maxSegments: number; // stop a strand after this many segments
-  maxStrands: number; // cap on the number of roots used (0 = no cap)
-}
-
-/** Hair detail for growth (web/model/detail.ts; solver-cpp/src/strand_detail.hpp): groups of
- *  DETAIL_GROUP_STRIDE (11) numbers: curl radius, frequency, start, randomOffset; clump factor,
- *  shape, tipSpread, guideDistance; frizz distance, shape; lengthJitter (radius, factor and
- *  distance 0 = that block off). Group 0 is the session's; a strand uses the group of the curve
- *  nearest its root. */
-export const DETAIL_GROUP_STRIDE = 11;
-
-export interface DetailArrays {
-  groups: Float64Array; // groups[11 * g + k]
-  curveGroup: Int32Array; // curveGroup[c] = group of curve c of the CurveSet (length = curves)
-}
-
-/** What a solve applies besides the curves and growth. */
-export interface HairOptions {
-  /** S4.7, recomputed with the hair: after the curves' field converges, every grid point near
-   *  the scalp whose field points inwards is turned along the surface (constraints of magnitude
-   *  min(0.3, |v|)), and the field is solved again with them. Full solves only. */
-  avoidScalp: boolean;
-  /** Natural fall (solver-cpp/src/hair_fall.hpp): hair no curve governs hangs from the scalp (a
-   *  weak prior in the field energy), a curve's hair ends where the curve ends, and curves may
-   *  take hair over the face. Off: the paper's method exactly (sessions made before it). */
-  fall: boolean;
-  detail: DetailArrays;
-}
-
-/** Grown strands. Strand s owns points strandStart[s] .. strandStart[s + 1] - 1; the first is
- *  its root on the scalp. */
-export interface StrandArrays {
-  points: Float32Array; // points[3 * point + axis]
-  strandStart: Uint32Array; // length = strands + 1
 }
 
 /** Lighting precomputed for a hair revision towards the fixed key light
@@ -316,11 +194,6 @@ export interface StrandVertexArrays {
   box: Float32Array; // min x, y, z, max x, y, z of the points; empty without points
   index: Uint32Array; // index[2 * segment + end]: point indices, strands in level-of-detail order
   lodCounts: Uint32Array; // lodCounts[g]: index entries of the first g of the 64 LOD groups
-}
-
-/** Number of strands in a StrandArrays. */
-export function strandCount(s: StrandArrays): number {
-  return Math.max(0, s.strandStart.length - 1);
 }
 
 // ---- the wasm boundary ----------------------------------------------------------------------

@@ -15,7 +15,7 @@
 // a request made before either change is never cached (the worker may have grown it on either).
 // The solved field is copied out of the worker only while `wantField` is set (the field display
 // is on); a cached result without it does not answer a request that wants it.
-import { contentKey } from '../model/curveSet';
+import { contentKey, hairRequestKey } from '../model/curveSet';
 import type {
   CurveSet,
   FromWorker,
@@ -168,20 +168,7 @@ export class SolverClient {
     mode: SolveMode = 'full',
     lightMaxStrands = 0,
   ): void {
-    const key = `${contentKey(
-      curves.points,
-      curves.curveStart,
-      curves.kinds,
-      curves.extend,
-      curves.params,
-      curves.paramStart,
-      curves.extraIndex,
-      curves.extraTarget,
-      new Float64Array(Object.values(growth)),
-      new Uint8Array([options.avoidScalp ? 1 : 0, options.fall ? 1 : 0]),
-      options.detail.groups,
-      options.detail.curveGroup,
-    )}|head ${this.headId}:${this.maskKey}`;
+    const key = `${hairRequestKey(curves, growth, options)}|head ${this.headId}:${this.maskKey}`;
     const req: Request = {
       id: this.nextId++,
       key,

@@ -1,0 +1,114 @@
+// The scalar parameters of each style-curve kind: one table that the session reader, the
+// quantiser, the share link, the curve panel, the editor and the solver packing all read
+// (solver/protocol.ts CurveSet.params carries them to solver-cpp, which reads them at the
+// indices of solver-cpp/src/curve_params.hpp).
+
+/** Style curve kinds, as stored in CurveSet.kinds (hairArrays.ts). */
+export const CurveKind = { stream: 0, dividing: 1, ponytail: 2 } as const;
+export type CurveKindName = keyof typeof CurveKind;
+
+/** One scalar parameter of a curve kind: the session field `name` (StyleCurve[name], in the
+ *  unit below), packed in table order at the start of the curve's CurveSet.params block and read
+ *  by solver-cpp at the index named in solver-cpp/src/curve_params.hpp. The session reader
+ *  accepts [min, max] (a saved curve without the field gets `default`); the editor and share
+ *  links keep it on a grid of `quantum` (quantize.ts); the curve panel offers `view` (in degrees
+ *  when unit is 'rad'). */
+export interface CurveParamSpec {
+  readonly name: string;
+  readonly label: string; // curve panel label, without the unit
+  readonly unit: 'grid steps' | 'rad' | '';
+  readonly default: number;
+  readonly min: number; // accepted range, session units
+  readonly max: number;
+  /** The step of its grid, session units (a power of ten: links store value / quantum as an
+   *  integer). Fixed once shipped: links hold the integers. */
+  readonly quantum: number;
+  readonly view: { readonly min: number; readonly max: number; readonly step: number };
+}
+
+/** The scalar parameters of each curve kind, in pack order (solver-cpp/src/curve_params.hpp
+ *  has the same order). Adding one: a row at the end of its kind (links store the rows in this
+ *  order, so never insert or reorder), its index in curve_params.hpp, and the C++ that reads it. */
+export const CURVE_PARAMS = {
+  /** S4.1: none yet. */
+  stream: [],
+  /** S4.5: the parting's Gaussian profile (sigma, h) and tilt at both ends (alpha0, alpha1). */
+  dividing: [
+    {
+      name: 'sigma',
+      label: 'σ',
+      unit: 'grid steps',
+      default: 1,
+      min: 0.05,
+      max: 20,
+      quantum: 1e-4,
+      view: { min: 0.25, max: 4, step: 0.05 },
+    },
+    {
+      name: 'h',
+      label: 'h',
+      unit: 'grid steps',
+      default: 0.5,
+      min: 0,
+      max: 20,
+      quantum: 1e-4,
+      view: { min: 0, max: 3, step: 0.05 },
+    },
+    {
+      name: 'alpha0',
+      label: 'α0',
+      unit: 'rad',
+      default: 0,
+      min: -Math.PI,
+      max: Math.PI,
+      quantum: 1e-5,
+      view: { min: -80, max: 80, step: 1 },
+    },
+    {
+      name: 'alpha1',
+      label: 'α1',
+      unit: 'rad',
+      default: 0,
+      min: -Math.PI,
+      max: Math.PI,
+      quantum: 1e-5,
+      view: { min: -80, max: 80, step: 1 },
+    },
+  ],
+  /** S4.6: the centripetal magnitude of the green ring. */
+  ponytail: [
+    {
+      name: 'tightness',
+      label: 'Tightness',
+      unit: '',
+      default: 0.6,
+      min: 0,
+      max: 10,
+      quantum: 1e-4,
+      view: { min: 0, max: 1, step: 0.05 },
+    },
+  ],
+} as const satisfies Record<CurveKindName, readonly CurveParamSpec[]>;
+
+/** The curve kinds in CurveKind order. */
+export const CURVE_KINDS = Object.keys(CurveKind) as CurveKindName[];
+
+/** The scalar parameter values of a curve kind, by name. */
+export type CurveParamValues<K extends CurveKindName> = {
+  [P in (typeof CURVE_PARAMS)[K][number]['name']]: number;
+};
+
+/** A kind's rows, as the plain spec type. */
+export function curveParamSpecs(kind: CurveKindName): readonly CurveParamSpec[] {
+  return CURVE_PARAMS[kind];
+}
+
+/** The names of a kind's scalar parameters, in table order. */
+export function curveParamNames(kind: CurveKindName): string[] {
+  return curveParamSpecs(kind).map((p) => p.name);
+}
+
+/** Integers per unit of a parameter's grid (1 / quantum, exact for a power of ten). */
+export function quantumScale(spec: Pick<CurveParamSpec, 'quantum'>): number {
+  return Math.round(1 / spec.quantum);
+}

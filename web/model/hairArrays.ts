@@ -1,0 +1,65 @@
+// The flat arrays a session becomes for the solver (the grid, the curves, the hair options) and
+// the strands it grows. solver/protocol.ts carries them between the app and the worker (and
+// re-exports them); the index formula of every array is on its field.
+import type { SessionSettingValues } from './sessionSchema';
+
+/** Uniform grid over the bounding volume (method S1.2). Point (i, j, k) has index
+ *  p = i + nx * (j + ny * k) and world position origin + step * (i, j, k). */
+export interface GridSpec {
+  dims: [number, number, number]; // nx, ny, nz
+  origin: [number, number, number]; // world position of point (0, 0, 0)
+  step: number; // d, world units
+}
+
+/** All style curves of a session, flattened. Curve c owns points
+ *  curveStart[c] .. curveStart[c + 1] - 1; its segments have length ≈ grid step (S4). */
+export interface CurveSet {
+  points: Float64Array; // points[3 * point + axis], world units
+  curveStart: Uint32Array; // length = curves + 1; curveStart[0] = 0
+  kinds: Uint8Array; // kinds[c]: a CurveKind value (curveParams.ts)
+  extend: Uint8Array; // extend[c] = 1: append fading extrapolated segments (S4.1)
+  /** Parameter blocks: curve c owns params[paramStart[c] .. paramStart[c + 1] - 1]: first the
+   *  scalars of its kind in CURVE_PARAMS order (curveParams.ts), then its kind's variable block:
+   *  stream: none.
+   *  dividing (S4.5): per point of the curve the scalp normal at it: nx, ny, nz (3 per point).
+   *  ponytail (S4.6): points are the spine; the circle count m, then per cross-section circle
+   *    (C1 first, C2 last): cx, cy, cz, ax, ay, az (unit axis along the spine), r (7 per circle). */
+  params: Float64Array;
+  paramStart: Uint32Array; // length = curves + 1
+  /** Constraints stated directly (e.g. scalp avoidance, S4.7): grid index and target. They are
+   *  added to those the curves derive; duplicates are averaged. */
+  extraIndex: Int32Array; // extraIndex[e] = grid point p
+  extraTarget: Float64Array; // extraTarget[3 * e + axis]
+}
+
+/** Hair detail for growth (detail.ts; solver-cpp/src/strand_detail.hpp): groups of
+ *  DETAIL_GROUP_STRIDE (11) numbers: curl radius, frequency, start, randomOffset; clump factor,
+ *  shape, tipSpread, guideDistance; frizz distance, shape; lengthJitter (radius, factor and
+ *  distance 0 = that block off). Group 0 is the session's; a strand uses the group of the curve
+ *  nearest its root. */
+export interface DetailArrays {
+  groups: Float64Array; // groups[DETAIL_GROUP_STRIDE * g + k]
+  curveGroup: Int32Array; // curveGroup[c] = group of curve c of the CurveSet (length = curves)
+}
+
+/** What a solve applies besides the curves and growth: the session's settings that shape the
+ *  hair (sessionSchema.ts SESSION_SETTINGS, by name: avoidScalp, fall, …) and its detail.
+ *  avoidScalp (S4.7), recomputed with the hair: after the curves' field converges, every grid
+ *  point near the scalp whose field points inwards is turned along the surface (constraints of
+ *  magnitude min(0.3, |v|)), and the field is solved again with them. Full solves only.
+ *  fall (solver-cpp/src/hair_fall.hpp): hair no curve governs hangs from the scalp (a weak prior
+ *  in the field energy), a curve's hair ends where the curve ends, and curves may take hair over
+ *  the face. Off: the paper's method exactly (sessions made before it). */
+export type HairOptions = SessionSettingValues & { detail: DetailArrays };
+
+/** Grown strands. Strand s owns points strandStart[s] .. strandStart[s + 1] - 1; the first is
+ *  its root on the scalp. */
+export interface StrandArrays {
+  points: Float32Array; // points[3 * point + axis]
+  strandStart: Uint32Array; // length = strands + 1
+}
+
+/** Number of strands in a StrandArrays. */
+export function strandCount(s: StrandArrays): number {
+  return Math.max(0, s.strandStart.length - 1);
+}

@@ -1,0 +1,205 @@
+// Writes a session as the binary body of a share link (linkFormat.ts has the layout).
+import { curveParamNames, curveParamSpecs, quantumScale } from './curveParams';
+import { DEFAULT_GROWTH, GROWTH_KEYS } from './growthParams';
+import { crc32, Writer, writePolyline, writeVec } from './linkBytes';
+import {
+  AXES,
+  GRIDS,
+  KNOWN_CURVE,
+  KNOWN_TOP,
+  LINK_VERSION,
+  MODES,
+  PART_HEAD,
+  PART_SCALP_PAINT,
+  PART_SYMMETRY,
+  TYPES,
+  V2_PARAM_COUNTS,
+} from './linkFormat';
+import { DIRECTION_SCALE as DIR, POSITION_SCALE as POS, toGridInt } from './quantize';
+import {
+  HEAD_FORMATS,
+  type HeadRef,
+  type ScalpStroke,
+  type SessionState,
+  type StyleCurve,
+} from './session';
+
+function rest(o: object, known: readonly string[]): Record<string, unknown> | null {
+  const out: Record<string, unknown> = {};
+  let any = false;
+  for (const [k, v] of Object.entries(o))
+    if (!known.includes(k) && v !== undefined) {
+      out[k] = v;
+      any = true;
+    }
+  return any ? out : null;
+}
+
+function colourBytes(c: string): [number, number, number] | null {
+  const m = /^#([0-9a-fA-F]{2})([0-9a-fA-F]{2})([0-9a-fA-F]{2})$/.exec(c);
+  return m ? [parseInt(m[1], 16), parseInt(m[2], 16), parseInt(m[3], 16)] : null;
+}
+
+/** The body (before deflate) of a session in link version `version` (3, written; 2 for tests
+ *  that need the layout of version 2, which holds V2_PARAM_COUNTS parameters per curve kind);
+ *  its numbers go on the grid of quantize.ts as they are written. */
+export function packSession(s: SessionState, version: 2 | 3 = LINK_VERSION): Uint8Array {
+  const w = new Writer();
+  const counts = TYPES.map((k) => (version === 2 ? V2_PARAM_COUNTS[k] : curveParamSpecs(k).length));
+  if (version === 3) {
+    w.varint(TYPES.length);
+    for (const n of counts) w.varint(n);
+  }
+  const tail: {
+    session?: Record<string, unknown>;
+    growth?: Record<string, unknown>;
+    curves?: [number, Record<string, unknown>][];
+  } = {};
+  const top = rest(s, KNOWN_TOP) ?? {};
+  const head = packableHead(s.head);
+  if (s.head !== 'builtin' && !head) top.head = s.head; // not a head reference: the reader says so
+  const grid = GRIDS.indexOf(s.grid);
+  if (grid < 0) top.grid = s.grid;
+  w.u8(Math.max(0, grid));
+  const rgb = colourBytes(s.hairColor);
+  if (!rgb) top.hairColor = s.hairColor;
+  for (const b of rgb ?? [0, 0, 0]) w.u8(b);
+  if (Object.keys(top).length) tail.session = top;
+
+  let mask = 0;
+  GROWTH_KEYS.forEach((k, i) => {
+    if (!Object.is(s.growth[k], DEFAULT_GROWTH[k])) mask += 2 ** i;
+  });
+  w.varint(mask);
+  GROWTH_KEYS.forEach((k, i) => {
+    if (Math.floor(mask / 2 ** i) % 2) w.f64(s.growth[k]);
+  });
+  const growthRest = rest(s.growth, GROWTH_KEYS);
+  if (growthRest) tail.growth = growthRest;
+
+  w.varint(s.curves.length);
+  let prevVp: StyleCurve['viewpoint'] | null = null;
+  s.curves.forEach((c, ci) => {
+    const mode = c.type === 'stream' ? MODES.indexOf(c.surfaceMode) : 0;
+    const idNum = /^c([1-9]\d{0,14})$/.exec(c.id);
+    const sameVp =
+      prevVp !== null &&
+      [0, 1, 2].every(
+        (a) =>
+          prevVp !== null &&
+          toGridInt(prevVp.position[a], POS) === toGridInt(c.viewpoint.position[a], POS) &&
+          toGridInt(prevVp.target[a], POS) === toGridInt(c.viewpoint.target[a], POS),
+      );
+    const extend = c.type !== 'dividing' && c.extend;
+    w.u8(
+      TYPES.indexOf(c.type) |
+        (extend ? 4 : 0) |
+        (Math.max(0, mode) << 3) |
+        (sameVp ? 32 : 0) |
+        (idNum ? 64 : 0),
+    );
+    if (idNum) w.varint(Number(idNum[1]));
+    else {
+      const id = new TextEncoder().encode(c.id);
+      w.varint(id.length);
+      w.bytes(id);
+    }
+    if (!sameVp) {
+      writeVec(w, c.viewpoint.position, POS);
+      writeVec(w, c.viewpoint.target, POS);
+    }
+    prevVp = c.viewpoint;
+    const rec = c as unknown as Record<string, number>;
+    for (const spec of curveParamSpecs(c.type).slice(0, counts[TYPES.indexOf(c.type)]))
+      w.zigzag(toGridInt(rec[spec.name] ?? spec.default, quantumScale(spec)));
+    writePolyline(w, c.points, POS);
+    const known = [
+      ...KNOWN_CURVE[c.type],
+      ...curveParamNames(c.type).slice(0, counts[TYPES.indexOf(c.type)]),
+    ];
+    const extra = rest(c, known) ?? {};
+    if (c.type === 'stream' && mode < 0) extra.surfaceMode = c.surfaceMode;
+    if (c.type === 'dividing') writePolyline(w, c.normals, DIR);
+    if (c.type === 'ponytail') {
+      writePolyline(w, c.crossSection, POS);
+      writePolyline(w, c.profiles[0], POS);
+      writePolyline(w, c.profiles[1], POS);
+      w.varint(c.circles.length);
+      const prev = [0, 0, 0, 0, 0, 0, 0, 0];
+      for (const q of c.circles) {
+        const now = [
+          toGridInt(q.spineIndex, 1),
+          ...q.centre.map((x) => toGridInt(x, POS)),
+          ...q.axis.map((x) => toGridInt(x, DIR)),
+          toGridInt(q.radius, POS),
+        ];
+        now.forEach((k, i) => {
+          w.zigzag(k - prev[i]);
+          prev[i] = k;
+        });
+      }
+    }
+    if (Object.keys(extra).length) {
+      tail.curves ??= [];
+      tail.curves.push([ci, extra]);
+    }
+  });
+
+  // The slot of version 1's scalp-avoidance constraints: empty since version 2 (avoidScalp is
+  // a setting, carried in the JSON tail).
+  w.varint(0);
+
+  if (Object.keys(tail).length) {
+    const json = new TextEncoder().encode(JSON.stringify(tail));
+    w.varint(json.length);
+    w.bytes(json);
+  } else w.varint(0);
+
+  const strokes = s.scalpPaint ?? [];
+  const parts =
+    (head ? PART_HEAD : 0) |
+    (strokes.length > 0 ? PART_SCALP_PAINT : 0) |
+    (s.symmetry ? PART_SYMMETRY : 0);
+  if (parts) {
+    w.varint(parts);
+    if (head) writeHead(w, head);
+    if (strokes.length > 0) {
+      w.varint(strokes.length);
+      for (const st of strokes) writeStroke(w, st);
+    }
+    if (s.symmetry) {
+      for (const x of s.symmetry.normal) w.f64(x);
+      w.zigzag(toGridInt(s.symmetry.offset, POS));
+    }
+  }
+  w.u32(crc32(w.done()));
+  return w.done();
+}
+
+/** The head when it is a reference the layout can hold, else null. */
+function packableHead(h: SessionState['head']): HeadRef | null {
+  if (typeof h !== 'object' || h === null || h.kind !== 'mesh') return null;
+  if (typeof h.hash !== 'string' || !/^[0-9a-f]{64}$/.test(h.hash)) return null;
+  if (typeof h.name !== 'string' || !HEAD_FORMATS.includes(h.format)) return null;
+  if ((h.up !== 'y' && h.up !== 'z') || !Array.isArray(h.turns)) return null;
+  const turnOk = (t: HeadRef['turns'][number]) =>
+    AXES.includes(t?.axis) && Number.isInteger(t.quarterTurns) && t.quarterTurns >= 0;
+  return h.turns.every((t) => turnOk(t) && t.quarterTurns <= 3) ? h : null;
+}
+
+function writeHead(w: Writer, h: HeadRef) {
+  for (let i = 0; i < 64; i += 2) w.u8(parseInt(h.hash.slice(i, i + 2), 16));
+  const name = new TextEncoder().encode(h.name);
+  w.varint(name.length);
+  w.bytes(name);
+  w.u8(HEAD_FORMATS.indexOf(h.format));
+  w.u8(h.up === 'y' ? 0 : 1);
+  w.varint(h.turns.length);
+  for (const t of h.turns) w.u8(4 * AXES.indexOf(t.axis) + t.quarterTurns);
+}
+
+function writeStroke(w: Writer, st: ScalpStroke) {
+  w.u8(st.erase ? 1 : 0);
+  w.varint(Math.max(0, toGridInt(st.radius, POS)));
+  writePolyline(w, st.points, POS);
+}

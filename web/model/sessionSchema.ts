@@ -1,0 +1,120 @@
+// The session schema: every field a session holds, declared once with what it does to the hair
+// and where a share link keeps it. The reader (sessionRead.ts), the quantiser (quantize.ts), the
+// file writer (sessionFile.ts), the link codec (linkPack.ts, linkUnpack.ts), the solve options
+// (curveSet.ts packHairOptions), "does this change need a solve" (needsSolve) and the hair
+// cache key (curveSet.ts hairRequestKey) all follow it.
+//
+// Settings (SESSION_SETTINGS) are the simple fields, a flag or a number: adding a row here is
+// all the session side needs: SessionState and the solver's HairOptions gain the field, the
+// reader checks it (a number within [min, max], absent = the default), files and links carry it
+// (a link in its JSON tail), the editor and links keep a number on its quantum's grid, and a
+// setting with hair: 'request' reaches every solve, is compared by needsSolve and is part of the
+// cache key. The curves' scalar parameters have their own table (curveParams.ts), the growth
+// settings theirs (growthParams.ts), hair detail its own (detail.ts).
+
+/** What a field does to the hair:
+ *  'request': it is part of what every solve is asked (curves, growth, options): a change needs
+ *    a solve, and the result cache tells results apart by it;
+ *  'setup': it changes what the solver is set up on (head, scalp, bounding volume): the head
+ *    controller and the solver bridge set it up again, then solve;
+ *  false: the hair does not depend on it (the colour is drawn, the mirror plane aids editing). */
+export type HairEffect = 'request' | 'setup' | false;
+
+/** Where a share link keeps a field: a place in its binary layout, or the JSON tail that carries
+ *  every field the layout has no place for (linkFormat.ts). */
+export type LinkPlace = 'layout' | 'tail';
+
+export interface FieldSpec {
+  readonly hair: HairEffect;
+  readonly link: LinkPlace;
+}
+
+/** A simple setting of the session. A flag: absent = false, written only when true. A number:
+ *  absent = `default`, written only when it differs; accepted within [min, max] (whole numbers
+ *  when `integer`), kept on a grid of `quantum` (a power of ten, or 1 for whole numbers). */
+export type SettingSpec =
+  | { readonly type: 'flag'; readonly hair: HairEffect }
+  | {
+      readonly type: 'number';
+      readonly hair: HairEffect;
+      readonly default: number;
+      readonly min: number;
+      readonly max: number;
+      readonly quantum: number;
+      readonly integer?: boolean;
+    };
+
+/** The session's settings, in the order a file writes them. */
+export const SESSION_SETTINGS = {
+  /** "Avoid scalp" (S4.7): the solver derives the avoidance constraints from the curves' field
+   *  each time it solves them. */
+  avoidScalp: { type: 'flag', hair: 'request' },
+  /** Natural fall (hairArrays.ts HairOptions): on in every new session; off, the hair of
+   *  sessions made before it (version 3 and older) exactly. */
+  fall: { type: 'flag', hair: 'request' },
+} as const satisfies Record<string, SettingSpec>;
+
+export type SessionSettingName = keyof typeof SESSION_SETTINGS;
+type SettingValue<S> = S extends { type: 'flag' } ? boolean : number;
+type Settings = typeof SESSION_SETTINGS;
+
+/** The settings as a session holds them (absent = the default). */
+export type SessionSettings = {
+  [K in SessionSettingName]?: SettingValue<Settings[K]>;
+};
+
+/** The settings every solve is given (hair: 'request'), defaults spelled out. */
+export type SessionSettingValues = {
+  [K in SessionSettingName as Settings[K]['hair'] extends 'request' ? K : never]: SettingValue<
+    Settings[K]
+  >;
+};
+
+export const SETTING_NAMES = Object.keys(SESSION_SETTINGS) as SessionSettingName[];
+
+/** A setting's row, as the plain spec type. */
+export const settingSpec = (k: SessionSettingName): SettingSpec => SESSION_SETTINGS[k];
+
+/** Every field of a session, in the order the reader writes them (a file's key order). */
+export const SESSION_FIELDS: Readonly<Record<string, FieldSpec>> = {
+  version: { hair: false, link: 'layout' },
+  head: { hair: 'setup', link: 'layout' },
+  grid: { hair: 'setup', link: 'layout' },
+  curves: { hair: 'request', link: 'layout' },
+  growth: { hair: 'request', link: 'layout' },
+  hairColor: { hair: false, link: 'layout' },
+  ...Object.fromEntries(
+    SETTING_NAMES.map((k) => [k, { hair: SESSION_SETTINGS[k].hair, link: 'tail' as const }]),
+  ),
+  detail: { hair: 'request', link: 'tail' },
+  scalpPaint: { hair: 'setup', link: 'layout' },
+  symmetry: { hair: false, link: 'layout' },
+};
+
+export const SESSION_FIELD_NAMES = Object.keys(SESSION_FIELDS);
+
+/** The fields every solve is asked with. */
+export const REQUEST_FIELDS = SESSION_FIELD_NAMES.filter(
+  (k) => SESSION_FIELDS[k].hair === 'request',
+);
+
+/** Whether going from `prev` to `next` changes what the solver is asked (a change of colour or
+ *  mirror plane alone does not; head and scalp changes are set up by the head controller). The
+ *  editor replaces what it changes, so fields compare by identity. */
+export function needsSolve(prev: object, next: object): boolean {
+  const p = prev as Record<string, unknown>;
+  const n = next as Record<string, unknown>;
+  return REQUEST_FIELDS.some((k) => p[k] !== n[k]);
+}
+
+/** A session's settings with defaults spelled out, for a solve (HairOptions without detail). */
+export function settingValues(s: SessionSettings): SessionSettingValues {
+  const out: Record<string, boolean | number> = {};
+  for (const k of SETTING_NAMES) {
+    const spec = settingSpec(k);
+    if (spec.hair !== 'request') continue;
+    const v = s[k];
+    out[k] = spec.type === 'flag' ? !!v : typeof v === 'number' ? v : spec.default;
+  }
+  return out as SessionSettingValues;
+}
