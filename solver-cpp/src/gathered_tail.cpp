@@ -62,6 +62,33 @@ GatheredTail gatheredTail(const double* spine, size_t n, const PonytailParams& p
   return t;
 }
 
+GatheredTail braidTail(const double* spine, size_t n, size_t gather, const BraidParams& prm,
+                       const Eigen::Vector3f& out) {
+  double length = 0;
+  GatheredTail t = gatheredTail(spine, n, braidAsPonytail(spine, n, gather, prm, &length));
+  t.shape = TailShape::Braid;
+  t.braid = prm;
+  t.braidLength = float(length);
+  t.out = out;
+  return t;
+}
+
+GatheredTail bunTail(const BunFrame& f, const BunParams& prm) {
+  std::vector<double> spine;
+  const PonytailParams pp = bunAsPonytail(f, prm, spine);
+  GatheredTail t;
+  t.axis = f.axis.cast<float>();
+  for (const PonytailCircle& k : pp.circles) {
+    t.spine.push_back(k.centre.cast<float>());
+    t.radius.push_back(float(k.radius));
+  }
+  t.shape = TailShape::Bun;
+  t.bun = prm;
+  t.bunCentre = f.centre.cast<float>();
+  t.bunRadius = float(f.radius);
+  return t;
+}
+
 namespace {
 
 struct Capture {
@@ -97,10 +124,16 @@ struct SpineFrames {
     e2.resize(n);
     // C1's own plane at the start: the frame the crossings are measured in
     const Eigen::Vector3f a = tail.axis;
-    Eigen::Vector3f u =
-        std::abs(a.y()) < 0.9f ? Eigen::Vector3f::UnitY() : Eigen::Vector3f::UnitX();
-    e1[0] = a.cross(u).normalized();
-    e2[0] = a.cross(e1[0]);
+    const Eigen::Vector3f away = tail.out - tail.out.dot(a) * a;
+    if (away.norm() > 1e-3f) {  // E2 away from the head, E1 across it
+      e2[0] = away.normalized();
+      e1[0] = e2[0].cross(a);
+    } else {
+      const Eigen::Vector3f u =
+          std::abs(a.y()) < 0.9f ? Eigen::Vector3f::UnitY() : Eigen::Vector3f::UnitX();
+      e1[0] = a.cross(u).normalized();
+      e2[0] = a.cross(e1[0]);
+    }
     for (size_t i = 1; i < n; ++i) {
       Eigen::Vector3f v = e1[i - 1] - e1[i - 1].dot(t[i]) * t[i];
       if (!(v.norm() > 1e-6f)) v = e2[i - 1] - e2[i - 1].dot(t[i]) * t[i];

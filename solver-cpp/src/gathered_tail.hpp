@@ -68,6 +68,13 @@ struct GatheredTail {
 struct PonytailParams;
 GatheredTail gatheredTail(const double* spine, size_t pointCount, const PonytailParams& params);
 
+// A braid's tail (braid_bun.hpp): the gathered ponytail of braidAsPonytail, laid as a plait.
+// out: away from the head at the gather (zero: unknown).
+GatheredTail braidTail(const double* spine, size_t pointCount, size_t gather,
+                       const BraidParams& params, const Eigen::Vector3f& out);
+// A bun's tail: its two circles as the spine, laid as a coil.
+GatheredTail bunTail(const BunFrame& frame, const BunParams& params);
+
 struct TailStats {
   size_t captured = 0;  // strands laid into a tail
 };

@@ -214,32 +214,14 @@ Status HairEngine::setCurves(const CurveSetView& curves) {
       } else if (kind == CurveKindCode::Braid) {
         BraidParams bp;
         if (!parseBraidParams(prm, pb - pa, bp).ok()) continue;
-        double length = 0;
         const size_t gather =
             braidGatherIndex(withHead.offScalp ? overFace.data() + a : nullptr, b - a);
-        GatheredTail t = gatheredTail(pts, b - a, braidAsPonytail(pts, b - a, gather, bp, &length));
-        t.shape = TailShape::Braid;
-        t.braid = bp;
-        t.braidLength = float(length);
-        t.out = headDistance_.built() ? away : Eigen::Vector3f::Zero();
-        nextTails.push_back(std::move(t));
+        nextTails.push_back(braidTail(pts, b - a, gather, bp,
+                                      headDistance_.built() ? away : Eigen::Vector3f::Zero()));
       } else if (kind == CurveKindCode::Bun) {
         BunParams bp;
         if (!parseBunParams(prm, pb - pa, bp).ok()) continue;
-        const BunFrame f = bunFrame(pts, b - a, bp, withHead.headCentre);
-        std::vector<double> spine;
-        const PonytailParams pp = bunAsPonytail(f, bp, spine);
-        GatheredTail t;
-        t.axis = f.axis.cast<float>();
-        for (const PonytailCircle& k : pp.circles) {
-          t.spine.push_back(k.centre.cast<float>());
-          t.radius.push_back(float(k.radius));
-        }
-        t.shape = TailShape::Bun;
-        t.bun = bp;
-        t.bunCentre = f.centre.cast<float>();
-        t.bunRadius = float(f.radius);
-        nextTails.push_back(std::move(t));
+        nextTails.push_back(bunTail(bunFrame(pts, b - a, bp, withHead.headCentre), bp));
       }
     }
   if (fall_) {
