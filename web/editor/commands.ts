@@ -155,7 +155,7 @@ function applyExact(s: SessionState, cmd: Command): CommandResult {
     }
     case 'hintEdit': {
       const c = findCurve(s, cmd.id);
-      if (!c || c.type === 'dividing')
+      if (!c || c.type === 'dividing' || c.type === 'bun')
         return { session: s, message: `No curve ${cmd.id} to edit.` };
       if (c.type === 'ponytail') {
         // the circles follow the edited spine, between the profiles as drawn
