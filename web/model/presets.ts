@@ -426,7 +426,7 @@ const LONG_SWEEPS: SweepSpec[] = [
 
 // braid: one braid down the back from the crown; the top and sides combed back into it and the
 // back combed up into it (fig1's strokes without the loose locks).
-const BRAID_SPEC = { base: [58, 180] as [number, number], out: 0.25, fall: 3.2 };
+const BRAID_SPEC = { base: [58, 180] as [number, number], out: 0.25, fall: 2.7 };
 const BRAID_SWEEPS: SweepSpec[] = FIG1_SWEEPS.filter((_, i) => i !== 6 && i !== 7);
 
 // bun: a top bun a little behind the crown, the rest combed up into it: stream curves from the
