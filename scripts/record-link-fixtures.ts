@@ -48,6 +48,7 @@ function paperEverything(): SessionState {
   const curves = s.curves.map((c): StyleCurve => {
     if (c.type === 'dividing') return { ...c, sigma: 1.5, h: 0.75, alpha0: 0.3, alpha1: -0.2 };
     if (c.type === 'ponytail') return { ...c, tightness: 0.8 };
+    if (c.type !== 'stream') return c;
     streams++;
     if (streams === 1) return { ...c, surfaceMode: 'strip' };
     if (streams === 2) return { ...c, surfaceMode: 'ruled', extend: !c.extend };

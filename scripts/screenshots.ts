@@ -19,6 +19,8 @@ const VIEWS: Array<[string, V3]> = [
 // Presets whose hair reaches far below the head are framed from farther away, aimed lower.
 const FRAMING: Record<string, { scale: number; target: V3 }> = {
   long: { scale: 1.6, target: [0, -1.9, 0] },
+  braid: { scale: 1.35, target: [0, -1.3, 0] },
+  'pigtail-braids': { scale: 1.25, target: [0, -1.0, 0] },
 };
 const PORT = Number(process.env.SHOT_PORT ?? 4195);
 const BASE = `http://127.0.0.1:${PORT}`;

@@ -6,6 +6,6 @@ bash scripts/build.sh
 port="${PORT:-5173}"
 echo ""
 echo "hairsketch is served at  http://127.0.0.1:${port}/   (Ctrl+C stops it)"
-echo "  options: ?preset=default|empty|bob|long|fig6|fig7|fig8|fig1|curly  ?grid=25k|50k|100k|250k  ?solver=fast|exact|auto|cg  ?strands=N"
+echo "  options: ?preset=default|empty|bob|long|fig6|fig7|fig8|fig1|curly|braid|bun|pigtail-braids  ?grid=25k|50k|100k|250k  ?solver=fast|exact|auto|cg  ?strands=N"
 echo ""
 exec npx vite preview --port "$port" --strictPort

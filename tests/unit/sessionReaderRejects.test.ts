@@ -172,7 +172,7 @@ describe('curve geometry', () => {
       /^session\.curves\[1\]\.id: must be a short identifier/,
     );
     expect(errorOf((j) => (j.curves[D].type = 'spiral'))).toBe(
-      `session.curves[${D}].type: must be "stream", "dividing" or "ponytail"`,
+      `session.curves[${D}].type: must be "stream", "dividing", "ponytail", "braid" or "bun"`,
     );
     expect(errorOf((j) => (j.curves[S].surfaceMode = 'wavy'))).toBe(
       `session.curves[${S}].surfaceMode: must be "ruled" or "strip"`,

@@ -12,6 +12,7 @@ import { presetSession } from '../../web/cli/presetSession';
 import { readExportedSession } from '../../web/export/readExport';
 import { Head } from '../../web/head/head';
 import { BOX_MAX, BOX_MIN } from '../../web/model/grid';
+import { hangLength } from '../../web/model/session';
 import { parseSession } from '../../web/model/sessionFile';
 
 const PYTHON = 'build/usd-venv/bin/python';
@@ -27,43 +28,53 @@ function python(): string {
   return PYTHON;
 }
 
-function check(file: string) {
-  const r = spawnSync(python(), [CHECK, file, '--box', ...BOX], { encoding: 'utf8' });
+function check(file: string, box: string[] = BOX) {
+  const r = spawnSync(python(), [CHECK, file, '--box', ...box], { encoding: 'utf8' });
   return { status: r.status, stdout: r.stdout, stderr: r.stderr };
 }
 
 describe('USD export read by usd-core', () => {
-  it('the default preset at 2000 strands passes check_usd.py and carries its session', async () => {
-    const dir = mkdtempSync(join(tmpdir(), 'hs-usd-'));
-    const session = presetSession('default', Head.builtin());
-    const sessionFile = join(dir, 'default.hairsketch.json');
-    writeFileSync(sessionFile, JSON.stringify(session));
-    const file = join(dir, 'hairstyle.usda');
-    const lines: string[] = [];
-    const rep = await runGrow(
-      [sessionFile, '--out', file, '--strands', '2000'],
-      { wasmBinary: new Uint8Array(readFileSync('web/generated/hairsolver.wasm')) },
-      (l) => lines.push(l),
-    );
-    expect(rep.strands).toBe(2000);
+  // default: stream curves; braid: a braid (its three bundles and loose tail, gathered_tail.hpp)
+  it.each(['default', 'braid'] as const)(
+    'the %s preset at 2000 strands passes check_usd.py and carries its session',
+    async (name) => {
+      const dir = mkdtempSync(join(tmpdir(), 'hs-usd-'));
+      const session = presetSession(name, Head.builtin());
+      const sessionFile = join(dir, `${name}.hairsketch.json`);
+      writeFileSync(sessionFile, JSON.stringify(session));
+      const file = join(dir, 'hairstyle.usda');
+      const lines: string[] = [];
+      const rep = await runGrow(
+        [sessionFile, '--out', file, '--strands', '2000'],
+        { wasmBinary: new Uint8Array(readFileSync('web/generated/hairsolver.wasm')) },
+        (l) => lines.push(l),
+      );
+      expect(rep.strands).toBe(2000);
 
-    const r = check(file);
-    expect(r.stderr).toBe(`check_usd: ok, ${rep.strands} curves, ${rep.points} points\n`);
-    expect(r.status).toBe(0);
-    const out = r.stdout.trim().split('\n');
-    expect(out).toHaveLength(1);
-    const embedded = JSON.parse(out[0]);
-    // exactly the session exported (the saved file as the app's reader gives it), and the app
-    // reads it back unchanged
-    const exported = parseSession(JSON.parse(readFileSync(sessionFile, 'utf8')));
-    if (!exported.ok) throw new Error(exported.error);
-    expect(embedded).toEqual(JSON.parse(JSON.stringify(exported.value)));
-    const reread = parseSession(embedded);
-    expect(reread.ok && reread.value).toEqual(exported.value);
-    // the app's own reader of exports finds the same session in the file
-    const mine = readExportedSession(readFileSync(file));
-    expect(mine?.ok && mine.session).toEqual(embedded);
-  });
+      // with natural fall the volume grows by the hang length (model/grid.ts gridForSession):
+      // a braid's hair reaches past the fixed box (below it and behind the head)
+      const hang = hangLength(session);
+      const box = [...BOX_MIN, ...BOX_MAX].map((v, i) =>
+        i === 4 ? v : i < 3 ? v - hang : v + hang,
+      );
+      const r = check(file, box.map(String));
+      expect(r.stderr).toBe(`check_usd: ok, ${rep.strands} curves, ${rep.points} points\n`);
+      expect(r.status).toBe(0);
+      const out = r.stdout.trim().split('\n');
+      expect(out).toHaveLength(1);
+      const embedded = JSON.parse(out[0]);
+      // exactly the session exported (the saved file as the app's reader gives it), and the app
+      // reads it back unchanged
+      const exported = parseSession(JSON.parse(readFileSync(sessionFile, 'utf8')));
+      if (!exported.ok) throw new Error(exported.error);
+      expect(embedded).toEqual(JSON.parse(JSON.stringify(exported.value)));
+      const reread = parseSession(embedded);
+      expect(reread.ok && reread.value).toEqual(exported.value);
+      // the app's own reader of exports finds the same session in the file
+      const mine = readExportedSession(readFileSync(file));
+      expect(mine?.ok && mine.session).toEqual(embedded);
+    },
+  );
 
   it('check_usd.py rejects a file whose counts do not sum to the points, or outside the box', () => {
     const dir = mkdtempSync(join(tmpdir(), 'hs-usd-bad-'));

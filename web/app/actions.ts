@@ -2,6 +2,7 @@
 // its keyboard shortcut and when it is enabled or pressed. The toolbar, the keyboard and the
 // help overlay ("?") all read this table (in the manner of tldraw's actions).
 import type { ToolName } from '../editor/editor';
+import type { CurveType } from '../model/session';
 import { DISPLAY_TOGGLES, type DisplayKey } from '../ui/displayToggles';
 
 export type ActionGroup = 'tools' | 'curve' | 'edit' | 'file' | 'view' | 'display';
@@ -36,7 +37,7 @@ export interface ActionTarget {
   undo(): void;
   redo(): void;
   hasSelection(): boolean;
-  selectedKind(): 'stream' | 'dividing' | 'ponytail' | null;
+  selectedKind(): CurveType | null;
   surfaceMode(): 'ruled' | 'strip' | null;
   deleteSelected(): void;
   setViewpoint(): void;
@@ -104,6 +105,18 @@ export function buildActions(t: ActionTarget): Action[] {
       'Ponytail',
       'p',
       'Four strokes: spine from the scalp, then cross-section and two profiles',
+    ),
+    tool(
+      'braid',
+      'Braid',
+      'k',
+      'One stroke from the scalp along where the braid should hang, scalp to tip; the hair near it is gathered into a three-strand braid',
+    ),
+    tool(
+      'bun',
+      'Bun',
+      'u',
+      'Draw a loop on the head where the bun sits; the hair near it is gathered and coiled into it',
     ),
     tool('select', 'Select', 'v', 'Select a curve; drag to orbit'),
     tool(

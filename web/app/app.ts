@@ -188,6 +188,7 @@ export function startApp(): void {
     byId('stage'),
     (id, patch) => editor.run({ kind: 'patchCurve', id, patch }),
     (m) => status.note(m),
+    (id) => editor.run({ kind: 'braidTail', id }),
   );
   detailPanel = buildDetailPanel(byId('stage'), {
     setGrowth: (patch) => editor.run({ kind: 'setGrowth', patch }),

@@ -8,6 +8,7 @@ import type { Head } from '../head/head';
 import type { ScalpPaintStroke } from '../head/scalpPaint';
 import { DEFAULT_TIGHTNESS, defaultParams, newCurveExtends } from '../model/session';
 import type { Vec3 } from '../model/vec3';
+import { BunTool } from '../tools/bunTool';
 import type { StrokeSample } from '../tools/depthRule';
 import { DividingCurveTool } from '../tools/dividingCurveTool';
 import { PONYTAIL_STAGE_HINT, type PonytailStage, PonytailTool } from '../tools/ponytailTool';
@@ -24,6 +25,9 @@ const TOOL_HINTS: Record<Exclude<ToolName, 'ponytail'>, string> = {
     'Drag on the scalp to draw a parting · a stroke starting beside the selected one tilts that side · right-drag orbits',
   select:
     'Click a curve to select it · drag orbits · wheel zooms · right-drag pans · ? lists shortcuts',
+  braid:
+    'Drag from the scalp along where the braid should hang, scalp to tip · right-drag orbits · ? lists shortcuts',
+  bun: 'Draw a loop on the head where the bun sits · right-drag orbits · ? lists shortcuts',
   scalp:
     'Drag on the head to paint scalp (where hair grows) · Shift+drag erases · wheel sets the brush radius · right-drag orbits',
 };
@@ -197,6 +201,50 @@ export function createTools(d: ToolDeps): ToolSet {
       notify: d.notify,
     }),
     ponytail,
+    // a braid's stroke is drawn as a stream curve is (the depth rule past the scalp), without
+    // hint strokes and without a stream curve's preview
+    braid: new StreamCurveTool({
+      sample,
+      eye,
+      forward,
+      step,
+      showDraft,
+      noun: 'A braid',
+      commit: (points) =>
+        editor.run({
+          kind: 'addCurve',
+          curve: {
+            type: 'braid',
+            points,
+            extend: newCurveExtends(editor.session),
+            viewpoint: camera(),
+            ...defaultParams('braid'),
+          },
+          what: `braid {id} (${points.length - 1} segments)`,
+          mirror: d.mirror(),
+        }),
+      preview: () => {},
+      notify: d.notify,
+    }),
+    bun: new BunTool({
+      sample,
+      step,
+      showDraft,
+      commit: (points) =>
+        editor.run({
+          kind: 'addCurve',
+          curve: {
+            type: 'bun',
+            points,
+            extend: newCurveExtends(editor.session),
+            viewpoint: camera(),
+            ...defaultParams('bun'),
+          },
+          what: `bun {id} (a loop of ${points.length} points)`,
+          mirror: d.mirror(),
+        }),
+      notify: d.notify,
+    }),
     select: new SelectTool({
       // hidden curves (Curves display off) cannot be picked
       curves: () => (d.curvesShown() ? editor.session.curves : []),

@@ -13,10 +13,13 @@ import { ponytailCircles } from '../model/ponytailGeometry';
 import { quantizeSession } from '../model/quantize';
 import {
   addCurve,
+  type BraidCurve,
+  defaultParams,
   deleteCurve,
   findCurve,
   type HeadRef,
   nextCurveId,
+  type PonytailCurve,
   type ScalpStroke,
   type SessionState,
   type StyleCurve,
@@ -50,6 +53,9 @@ export type Command =
   /** A dividing curve's tilt from a tilt hint (S4.5). */
   | { kind: 'setTilt'; id: string; end: 'alpha0' | 'alpha1'; alpha: number; side: 1 | -1 }
   | { kind: 'patchCurve'; id: string; patch: CurveParamPatch }
+  /** "Braid the tail": the ponytail `id` becomes a braid on its spine (same id, extend, viewpoint,
+   *  detail and twin), as wide as twice its circles' mean radius. */
+  | { kind: 'braidTail'; id: string }
   | { kind: 'setViewpoint'; id: string; viewpoint: Viewpoint }
   | { kind: 'setSurfaceMode'; id: string; mode: SurfaceMode }
   /** "Avoid scalp" (S4.7) on or off: a setting the solver applies whenever it solves. */
@@ -85,6 +91,25 @@ export interface CommandResult {
   /** The selection after the command (undefined: unchanged). */
   selectedId?: string | null;
   message: string;
+}
+
+/** The braid that replaces ponytail `c` ("Braid the tail"): its spine, width twice the mean
+ *  circle radius (within the table's range), the other parameters the table's defaults. */
+export function braidOfPonytail(c: PonytailCurve): BraidCurve {
+  const spec = CURVE_PARAMS.braid[0];
+  const mean = c.circles.reduce((a, q) => a + q.radius, 0) / Math.max(1, c.circles.length);
+  const width = Math.min(spec.max, Math.max(spec.min, 2 * mean));
+  return {
+    id: c.id,
+    type: 'braid',
+    points: c.points,
+    extend: c.extend,
+    viewpoint: c.viewpoint,
+    ...defaultParams('braid'),
+    width,
+    ...(c.detail ? { detail: c.detail } : {}),
+    ...(c.mirror ? { mirror: c.mirror } : {}),
+  };
 }
 
 const deg = (rad: number) => Math.round((rad * 180) / Math.PI);
@@ -155,7 +180,7 @@ function applyExact(s: SessionState, cmd: Command): CommandResult {
     }
     case 'hintEdit': {
       const c = findCurve(s, cmd.id);
-      if (!c || c.type === 'dividing')
+      if (!c || c.type === 'dividing' || c.type === 'bun')
         return { session: s, message: `No curve ${cmd.id} to edit.` };
       if (c.type === 'ponytail') {
         // the circles follow the edited spine, between the profiles as drawn
@@ -189,6 +214,16 @@ function applyExact(s: SessionState, cmd: Command): CommandResult {
       return {
         session: updateCurve(s, c.id, () => ({ ...c, [cmd.end]: cmd.alpha })),
         message: `Tilt: ${cmd.end} of ${c.id} = ${deg(cmd.alpha)}° (stroke on the ${cmd.side > 0 ? '+x' : '−x'} side).`,
+      };
+    }
+    case 'braidTail': {
+      const c = findCurve(s, cmd.id);
+      if (c?.type !== 'ponytail') return { session: s, message: `No ponytail ${cmd.id}.` };
+      const braid = braidOfPonytail(c);
+      return {
+        session: updateCurve(s, c.id, () => braid),
+        selectedId: c.id,
+        message: `Braided the tail of ${c.id}: a braid ${Math.round(braid.width * 100) / 10} cm wide.`,
       };
     }
     case 'patchCurve': {

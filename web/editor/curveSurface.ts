@@ -9,10 +9,10 @@ export const SURFACE_HALF_WIDTH = 6;
 
 const cache = new WeakMap<StyleCurve, { step: number; surface: SupportingSurface }>();
 
-/** The supporting surface of a stream curve or ponytail spine; null for a dividing curve (it
- *  lies on the scalp) or a curve with fewer than two points. */
+/** The supporting surface of a stream curve, ponytail spine or braid; null for a dividing curve
+ *  or a bun (they lie on the head) or a curve with fewer than two points. */
 export function curveSurface(c: StyleCurve, step: number): SupportingSurface | null {
-  if (c.type === 'dividing' || c.points.length < 2) return null;
+  if (c.type === 'dividing' || c.type === 'bun' || c.points.length < 2) return null;
   const hit = cache.get(c);
   if (hit && hit.step === step) return hit.surface;
   const mode = c.type === 'stream' ? (c.surfaceMode ?? 'ruled') : 'ruled';

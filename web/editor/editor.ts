@@ -9,7 +9,7 @@ import { findCurve } from '../model/session';
 import type { Vec3 } from '../model/vec3';
 import { applyCommand, type Command } from './commands';
 
-export type ToolName = 'stream' | 'select' | 'dividing' | 'ponytail' | 'scalp';
+export type ToolName = 'stream' | 'select' | 'dividing' | 'ponytail' | 'braid' | 'bun' | 'scalp';
 
 export type ChangeCause = 'command' | 'undo' | 'redo' | 'select' | 'tool' | 'stroke';
 

@@ -4,7 +4,7 @@
 // indices of solver-cpp/src/curve_params.hpp).
 
 /** Style curve kinds, as stored in CurveSet.kinds (hairArrays.ts). */
-export const CurveKind = { stream: 0, dividing: 1, ponytail: 2 } as const;
+export const CurveKind = { stream: 0, dividing: 1, ponytail: 2, braid: 3, bun: 4 } as const;
 export type CurveKindName = keyof typeof CurveKind;
 
 /** One scalar parameter of a curve kind: the session field `name` (StyleCurve[name], in the
@@ -12,11 +12,13 @@ export type CurveKindName = keyof typeof CurveKind;
  *  by solver-cpp at the index named in solver-cpp/src/curve_params.hpp. The session reader
  *  accepts [min, max] (a saved curve without the field gets `default`); the editor and share
  *  links keep it on a grid of `quantum` (quantize.ts); the curve panel offers `view` (in degrees
- *  when unit is 'rad'). */
+ *  when unit is 'rad', in centimetres when it is 'cm'). */
 export interface CurveParamSpec {
   readonly name: string;
   readonly label: string; // curve panel label, without the unit
-  readonly unit: 'grid steps' | 'rad' | '';
+  /** 'cm': a length in world units (1 = 10 cm), shown in centimetres (× 10); 'per 10 cm': a
+   *  count per world unit, shown as it is. */
+  readonly unit: 'grid steps' | 'rad' | 'cm' | 'per 10 cm' | '';
   readonly default: number;
   readonly min: number; // accepted range, session units
   readonly max: number;
@@ -86,6 +88,85 @@ export const CURVE_PARAMS = {
       max: 10,
       quantum: 1e-4,
       view: { min: 0, max: 1, step: 0.05 },
+    },
+  ],
+  /** A three-strand braid (solver-cpp/src/braid_bun.hpp): its width, bundle crossings per 10 cm
+   *  (all three bundles counted), tightness (how flat the bundles lie) and the loose tail's
+   *  length. Lengths in world units (1 = 10 cm). */
+  braid: [
+    {
+      name: 'width',
+      label: 'Width',
+      unit: 'cm',
+      default: 0.5,
+      min: 1e-4,
+      max: 3,
+      quantum: 1e-4,
+      view: { min: 0.5, max: 30, step: 0.1 },
+    },
+    {
+      name: 'crossings',
+      label: 'Crossings',
+      unit: 'per 10 cm',
+      default: 6,
+      min: 1e-4,
+      max: 40,
+      quantum: 1e-4,
+      view: { min: 0.5, max: 40, step: 0.5 },
+    },
+    {
+      name: 'tightness',
+      label: 'Tightness',
+      unit: '',
+      default: 0.5,
+      min: 0,
+      max: 1,
+      quantum: 1e-4,
+      view: { min: 0, max: 1, step: 0.05 },
+    },
+    {
+      name: 'tailLength',
+      label: 'Tail length',
+      unit: 'cm',
+      default: 0.4,
+      min: 0,
+      max: 20,
+      quantum: 1e-4,
+      view: { min: 0, max: 200, step: 0.5 },
+    },
+  ],
+  /** A bun (solver-cpp/src/braid_bun.hpp): its radius (0: the drawn loop's size), height and
+   *  the turns each strand coils. Lengths in world units (1 = 10 cm). */
+  bun: [
+    {
+      name: 'radius',
+      label: 'Radius',
+      unit: 'cm',
+      default: 0,
+      min: 0,
+      max: 2,
+      quantum: 1e-4,
+      view: { min: 0, max: 20, step: 0.1 },
+    },
+    {
+      name: 'height',
+      label: 'Height',
+      unit: 'cm',
+      default: 0.35,
+      min: 1e-4,
+      max: 2,
+      quantum: 1e-4,
+      view: { min: 0.1, max: 20, step: 0.1 },
+    },
+    {
+      name: 'turns',
+      label: 'Turns',
+      unit: '',
+      default: 2.5,
+      min: 1e-4,
+      max: 10,
+      quantum: 1e-4,
+      view: { min: 0.25, max: 10, step: 0.25 },
     },
   ],
 } as const satisfies Record<CurveKindName, readonly CurveParamSpec[]>;

@@ -33,6 +33,9 @@ function variableBlock(c: StyleCurve): number[] {
       return c.normals.flatMap((n) => [n[0], n[1], n[2]]);
     case 'ponytail':
       return [c.circles.length, ...c.circles.flatMap((q) => [...q.centre, ...q.axis, q.radius])];
+    case 'braid':
+    case 'bun':
+      return []; // exactly its scalars (solver-cpp/src/curve_params.hpp BraidParam, BunParam)
   }
 }
 

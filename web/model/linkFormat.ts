@@ -17,15 +17,19 @@
 //
 //   (version 3 only)
 //   varint    number of curve kinds k; then k varints: the scalar parameter count of each kind
-//             (CURVE_KINDS order: stream, dividing, ponytail); a count above this build's table
-//             is refused (a newer hairsketch made it)
+//             (CURVE_KINDS order: stream, dividing, ponytail, braid, bun); a count above this
+//             build's table is refused (a newer hairsketch made it). k is 3 unless the session
+//             has a braid (4) or a bun (5), so a link without them is byte for byte what the
+//             build before braids and buns wrote (and opens there); a curve whose kind is not
+//             among the first k is refused
 //   u8        grid preset: 0 25k, 1 50k, 2 100k, 3 250k
 //   u8 × 3    hair colour r, g, b
 //   varint    growth mask: bit i set when GROWTH_KEYS[i] (growthParams.ts, rows added at the
 //             end only) differs from DEFAULT_GROWTH;
 //             then for each set bit, in order, the value as f64 little-endian (exact)
 //   varint    curve count; per curve:
-//     u8        bits 0-1 type (0 stream, 1 dividing, 2 ponytail); bit 2 extend;
+//     u8        bits 0-1 and 7 type (bits 0-1 + 4 × bit 7: 0 stream, 1 dividing, 2 ponytail,
+//               3 braid, 4 bun; version 2 has only the first three); bit 2 extend;
 //               bits 3-4 surfaceMode (0 absent, 1 ruled, 2 strip); bit 5 viewpoint as the
 //               previous curve's; bit 6 the id is "c<n>" (then n as varint, else a
 //               varint length and the id's bytes)
@@ -35,6 +39,7 @@
 //               kind's CURVE_PARAMS in order, zigzag varints (their rows' quantum)
 //     points    a polyline (below)
 //     dividing: normals: a polyline on the direction grid
+//     braid, bun: nothing more (their parameters are scalars)
 //     ponytail: crossSection, profiles[0], profiles[1]: polylines; circle count (varint);
 //               per circle, each a zigzag varint of the difference from the previous circle
 //               (the first from zero): spineIndex, centre x y z, axis x y z, radius
@@ -88,7 +93,22 @@ export const V2_PARAM_COUNTS: Readonly<Record<CurveKindName, number>> = {
   stream: 0,
   dividing: 4,
   ponytail: 1,
+  braid: 0, // no braids or buns in version 2
+  bun: 0,
 };
+
+/** Curve kinds a version 2 link can hold, and the fewest a version 3 link states. */
+export const V2_KINDS = 3;
+
+/** The type bits of a curve's flags byte: bits 0-1 the kind's low bits, bit 7 its bit 2. */
+export function typeBits(kind: number): number {
+  return (kind & 3) | ((kind >> 2) << 7);
+}
+
+/** The kind in a curve's flags byte (typeBits undone). */
+export function kindOfFlags(flags: number): number {
+  return (flags & 3) | ((flags >> 7) << 2);
+}
 
 export const GRIDS = Object.keys(GRID_PRESETS) as GridPreset[];
 export const TYPES = CURVE_KINDS;
@@ -110,4 +130,6 @@ export const KNOWN_CURVE: Record<StyleCurve['type'], string[]> = {
   stream: ['id', 'type', 'points', 'extend', 'viewpoint', 'surfaceMode'],
   dividing: ['id', 'type', 'points', 'normals', 'viewpoint'],
   ponytail: ['id', 'type', 'points', 'extend', 'viewpoint', 'crossSection', 'profiles', 'circles'],
+  braid: ['id', 'type', 'points', 'extend', 'viewpoint'],
+  bun: ['id', 'type', 'points', 'extend', 'viewpoint'],
 };

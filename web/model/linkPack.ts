@@ -13,6 +13,8 @@ import {
   PART_SCALP_PAINT,
   PART_SYMMETRY,
   TYPES,
+  typeBits,
+  V2_KINDS,
   V2_PARAM_COUNTS,
 } from './linkFormat';
 import { DIRECTION_SCALE as DIR, POSITION_SCALE as POS, toGridInt } from './quantize';
@@ -47,8 +49,11 @@ export function packSession(s: SessionState, version: 2 | 3 = LINK_VERSION): Uin
   const w = new Writer();
   const counts = TYPES.map((k) => (version === 2 ? V2_PARAM_COUNTS[k] : curveParamSpecs(k).length));
   if (version === 3) {
-    w.varint(TYPES.length);
-    for (const n of counts) w.varint(n);
+    // the kinds up to the last one used (at least the first three, as before braids and buns)
+    let kinds = V2_KINDS;
+    for (const c of s.curves) kinds = Math.max(kinds, TYPES.indexOf(c.type) + 1);
+    w.varint(kinds);
+    for (const n of counts.slice(0, kinds)) w.varint(n);
   }
   const tail: {
     session?: Record<string, unknown>;
@@ -92,7 +97,7 @@ export function packSession(s: SessionState, version: 2 | 3 = LINK_VERSION): Uin
       );
     const extend = c.type !== 'dividing' && c.extend;
     w.u8(
-      TYPES.indexOf(c.type) |
+      typeBits(TYPES.indexOf(c.type)) |
         (extend ? 4 : 0) |
         (Math.max(0, mode) << 3) |
         (sameVp ? 32 : 0) |

@@ -6,12 +6,14 @@ import { crc32, LinkError, Reader, readPolyline, readVec } from './linkBytes';
 import {
   AXES,
   GRIDS,
+  kindOfFlags,
   MODES,
   PART_HEAD,
   PART_SCALP_PAINT,
   PART_SYMMETRY,
   PARTS,
   TYPES,
+  V2_KINDS,
   V2_PARAM_COUNTS,
 } from './linkFormat';
 import { DIRECTION_SCALE as DIR, POSITION_SCALE as POS } from './quantize';
@@ -38,7 +40,10 @@ export function unpackSession(body: Uint8Array, version: 2 | 3 = 3): Record<stri
   if (crc32(body.subarray(0, body.length - 4)) !== crc)
     throw new LinkError('its checksum does not match');
   const r = new Reader(body.subarray(0, body.length - 4));
-  const counts = version === 2 ? TYPES.map((k) => V2_PARAM_COUNTS[k]) : paramCounts(r);
+  const { counts, kinds } =
+    version === 2
+      ? { counts: TYPES.map((k) => V2_PARAM_COUNTS[k]), kinds: V2_KINDS }
+      : paramCounts(r);
   const gridIndex = r.u8();
   if (gridIndex >= GRIDS.length) throw new LinkError('unknown grid');
   const hex = [r.u8(), r.u8(), r.u8()].map((b) => b.toString(16).padStart(2, '0')).join('');
@@ -53,9 +58,10 @@ export function unpackSession(body: Uint8Array, version: 2 | 3 = 3): Record<stri
   let prevVp: { position: Vec3; target: Vec3 } | null = null;
   for (let ci = 0; ci < nCurves; ci++) {
     const flags = r.u8();
-    const type = TYPES[flags & 3];
+    const kind = kindOfFlags(flags);
+    const type = kind < kinds ? TYPES[kind] : undefined;
     const mode = (flags >> 3) & 3;
-    if (!type || mode >= MODES.length || flags & 128) throw new LinkError(`curve ${ci} is unknown`);
+    if (!type || mode >= MODES.length) throw new LinkError(`curve ${ci} is unknown`);
     let id: string;
     if (flags & 64) id = `c${r.varint()}`;
     else {
@@ -70,7 +76,7 @@ export function unpackSession(body: Uint8Array, version: 2 | 3 = 3): Record<stri
     prevVp = viewpoint;
     const c: Record<string, unknown> = { id, type, viewpoint };
     // parameters the link's writer did not have are left out: the reader gives them defaults
-    for (const spec of curveParamSpecs(type).slice(0, counts[flags & 3]))
+    for (const spec of curveParamSpecs(type).slice(0, counts[kind]))
       c[spec.name] = r.zigzag() / quantumScale(spec) + 0;
     c.points = readPolyline(r, POS);
     if (type !== 'dividing') c.extend = (flags & 4) !== 0;
@@ -148,11 +154,11 @@ export function unpackSession(body: Uint8Array, version: 2 | 3 = 3): Record<stri
 
 /** Version 3's parameter count per curve kind; refused when it has more kinds or parameters
  *  than this build's tables (a newer hairsketch wrote it: its values would be misread). */
-function paramCounts(r: Reader): number[] {
+function paramCounts(r: Reader): { counts: number[]; kinds: number } {
   const kinds = r.varint();
   if (kinds > TYPES.length)
     throw new LinkError('it has curve kinds this app does not know (made by a newer hairsketch?)');
-  return TYPES.map((k, i) => {
+  const counts = TYPES.map((k, i) => {
     const n = i < kinds ? r.varint() : 0;
     if (n > CURVE_PARAMS[k].length)
       throw new LinkError(
@@ -160,6 +166,7 @@ function paramCounts(r: Reader): number[] {
       );
     return n;
   });
+  return { counts, kinds };
 }
 
 /** The optional parts after the JSON tail (head, scalpPaint, symmetry) into `session`. */

@@ -53,6 +53,8 @@ export function mirrorCurve(
   };
   switch (c.type) {
     case 'stream':
+    case 'braid':
+    case 'bun':
       return base as StyleCurve;
     case 'dividing':
       return {

@@ -4,13 +4,17 @@
 // profile strokes beside it, from which the circles are computed as for drawn strokes (S4.6).
 // The paper's figures: fig6 (ten stream curves), fig7 (seven stream curves and a short parting),
 // fig8 (two ponytails and eight stream curves that comb each half of the head to its ponytail), fig1 (thirteen stream curves, four dividing curves and one ponytail); and
-// `curly`, the default style with curl, clumps and a little frizz (model/detail.ts).
+// `curly`, the default style with curl, clumps and a little frizz (model/detail.ts); `braid`,
+// `bun` and `pigtail-braids`, the braid and bun curve kinds (solver-cpp/src/braid_bun.hpp).
 import type { Head } from '../head/head';
 import type { HairDetail } from './detail';
+import { mirrorCurve } from './mirror';
 import { ponytailCircles } from './ponytailGeometry';
 import { quantizeSession } from './quantize';
 import { resamplePolyline } from './resample';
 import {
+  type BraidCurve,
+  type BunCurve,
   DEFAULT_TIGHTNESS,
   type DividingCurve,
   defaultParams,
@@ -44,6 +48,9 @@ export const PRESET_NAMES = [
   'curly',
   'bob',
   'long',
+  'braid',
+  'bun',
+  'pigtail-braids',
 ] as const;
 export type PresetName = (typeof PRESET_NAMES)[number];
 
@@ -149,14 +156,12 @@ interface PonytailSpec {
   width: number; // radius of the tail below the gather, world units
 }
 
-/** A ponytail sketched as the paper's four strokes: the spine (out from the scalp, then down),
- *  a cross-section across it at the gather, and two profiles beside it, widening below the
- *  gather and tapering to the tip. */
-function ponytailFrom(ctx: PresetContext, spec: PonytailSpec, id: string): PonytailCurve | null {
+/** A spine stroke as drawn from the scalp: out of the head, slanting down, then bending gently
+ *  until it hangs straight down (a ponytail's spine, a braid). */
+function spineFrom(ctx: PresetContext, spec: Pick<PonytailSpec, 'base' | 'out' | 'fall'>): Vec3[] {
   const root = headPoint(ctx, spec.base[0], spec.base[1]);
-  if (!root) return null;
+  if (!root) return [];
   const outDir = sphericalDirection(spec.base[0], spec.base[1]);
-  // out of the head, slanting down, then bending gently until it hangs straight down
   const dense: Vec3[] = [root];
   let dir = normalize(add(outDir, [0, -0.5, 0]));
   let p = root;
@@ -166,7 +171,71 @@ function ponytailFrom(ctx: PresetContext, spec: PonytailSpec, id: string): Ponyt
     p = add(p, scale(dir, ds));
     dense.push(p);
   }
-  const spine = resamplePolyline(dense, ctx.step);
+  return resamplePolyline(dense, ctx.step);
+}
+
+/** A braid: one stroke from the scalp along where it hangs (drawn as a ponytail's spine). */
+function braidFrom(
+  ctx: PresetContext,
+  spec: Pick<PonytailSpec, 'base' | 'out' | 'fall'>,
+  id: string,
+): BraidCurve | null {
+  const points = spineFrom(ctx, spec);
+  if (points.length < 5) return null;
+  return {
+    id,
+    type: 'braid',
+    points,
+    extend: true,
+    viewpoint: ctx.viewpoint,
+    ...defaultParams('braid'),
+  };
+}
+
+/** A bun: a loop drawn on the head round (θ, φ), `size` degrees from it as seen from the head's
+ *  centre. */
+function bunFrom(
+  ctx: PresetContext,
+  centre: [number, number],
+  size: number,
+  id: string,
+): BunCurve | null {
+  const d0 = sphericalDirection(centre[0], centre[1]);
+  const e1 = normalize(Math.abs(d0[1]) < 0.9 ? [d0[2], 0, -d0[0]] : [1, 0, 0]);
+  const e2: Vec3 = [
+    d0[1] * e1[2] - d0[2] * e1[1],
+    d0[2] * e1[0] - d0[0] * e1[2],
+    d0[0] * e1[1] - d0[1] * e1[0],
+  ];
+  const r = Math.tan((size * Math.PI) / 180);
+  const dense: Vec3[] = [];
+  for (let i = 0; i <= 72; i++) {
+    const a = (2 * Math.PI * i) / 72;
+    const d = normalize(add(d0, add(scale(e1, r * Math.cos(a)), scale(e2, r * Math.sin(a)))));
+    const theta = (Math.acos(Math.max(-1, Math.min(1, d[1]))) * 180) / Math.PI;
+    const phi = (Math.atan2(d[0], d[2]) * 180) / Math.PI;
+    const hit = headPoint(ctx, theta, phi);
+    if (!hit) return null;
+    dense.push(hit);
+  }
+  const points = resamplePolyline(dense, ctx.step);
+  if (points.length < 6) return null;
+  return {
+    id,
+    type: 'bun',
+    points,
+    extend: true,
+    viewpoint: ctx.viewpoint,
+    ...defaultParams('bun'),
+  };
+}
+
+/** A ponytail sketched as the paper's four strokes: the spine (out from the scalp, then down),
+ *  a cross-section across it at the gather, and two profiles beside it, widening below the
+ *  gather and tapering to the tip. */
+function ponytailFrom(ctx: PresetContext, spec: PonytailSpec, id: string): PonytailCurve | null {
+  const outDir = sphericalDirection(spec.base[0], spec.base[1]);
+  const spine = spineFrom(ctx, spec);
   if (spine.length < 5) return null;
   // The side the profiles are drawn on: across the spine, horizontally.
   const side = normalize([outDir[2], 0, -outDir[0]]);
@@ -355,6 +424,34 @@ const LONG_SWEEPS: SweepSpec[] = [
   { theta: [12, 106], phi: [-160, -172], lift: 0.12, fall: 0, toY: LONG_END },
 ];
 
+// braid: one braid down the back from the crown; the top and sides combed back into it and the
+// back combed up into it (fig1's strokes without the loose locks).
+const BRAID_SPEC = { base: [58, 180] as [number, number], out: 0.25, fall: 2.7 };
+const BRAID_SWEEPS: SweepSpec[] = FIG1_SWEEPS.filter((_, i) => i !== 6 && i !== 7);
+
+// bun: a top bun a little behind the crown, the rest combed up into it: stream curves from the
+// hairline all round up to the bun's loop (a negative θ goes on over the top of the head).
+const BUN_CENTRE: [number, number] = [20, 180];
+const BUN_SWEEPS: SweepSpec[] = [
+  { theta: [55, -10], phi: [0, 0], lift: 0.05, fall: 0 },
+  ...[40, -40].map(
+    (phi): SweepSpec => ({ theta: [60, -8], phi: [phi, phi * 0.75], lift: 0.05, fall: 0 }),
+  ),
+  ...[80, -80].map(
+    (phi): SweepSpec => ({ theta: [88, 22], phi: [phi, phi * 1.9], lift: 0.05, fall: 0 }),
+  ),
+  ...[120, -120].map(
+    (phi): SweepSpec => ({ theta: [100, 26], phi: [phi, phi * 1.4], lift: 0.05, fall: 0 }),
+  ),
+  ...[160, -160].map(
+    (phi): SweepSpec => ({ theta: [110, 30], phi: [phi, phi * 1.1], lift: 0.05, fall: 0 }),
+  ),
+];
+
+// pigtail-braids: two braids behind the ears, the second the first's mirror image (as Mirror
+// editing makes it), and fig8's strokes combing each half of the head to its braid.
+const PIGTAIL_SPEC = { base: [74, 115] as [number, number], out: 0.3, fall: 2.4 };
+
 export function presetCurves(name: PresetName, ctx: PresetContext): StyleCurve[] {
   if (name === 'empty') return [];
   const curves: StyleCurve[] = [];
@@ -393,6 +490,22 @@ export function presetCurves(name: PresetName, ctx: PresetContext): StyleCurve[]
       push(dividingFrom(ctx, LONG_PARTING, nextId()));
       sweeps(LONG_SWEEPS);
       break;
+    case 'braid':
+      push(braidFrom(ctx, BRAID_SPEC, nextId()));
+      sweeps(BRAID_SWEEPS);
+      break;
+    case 'bun':
+      push(bunFrom(ctx, BUN_CENTRE, 16, nextId()));
+      sweeps(BUN_SWEEPS);
+      break;
+    case 'pigtail-braids': {
+      const left = braidFrom(ctx, PIGTAIL_SPEC, 'c1');
+      if (left) {
+        curves.push({ ...left, mirror: 'c2' }, mirrorCurve(left, 'c2', 'c1'));
+      }
+      sweeps(FIG8_SWEEPS);
+      break;
+    }
   }
   return curves;
 }

@@ -67,6 +67,8 @@ const CURVE_FIELDS = {
     'detail',
     'mirror',
   ],
+  braid: ['id', 'type', 'points', 'extend', 'viewpoint', 'detail', 'mirror'],
+  bun: ['id', 'type', 'points', 'extend', 'viewpoint', 'detail', 'mirror'],
 } as const satisfies Record<CurveKindName, readonly string[]>;
 
 /** Every field a curve of kind `k` may have (its scalar parameters as the table has them now). */
@@ -111,8 +113,14 @@ function mirrorOf(v: Plain | undefined, path: string): { mirror?: string } {
 export function curve(v: Plain, path: string): StyleCurve {
   if (typeof v !== 'object' || v === null || Array.isArray(v)) fail(path, 'must be an object');
   const type = v.type;
-  if (type !== 'stream' && type !== 'dividing' && type !== 'ponytail')
-    fail(`${path}.type`, 'must be "stream", "dividing" or "ponytail"');
+  if (
+    type !== 'stream' &&
+    type !== 'dividing' &&
+    type !== 'ponytail' &&
+    type !== 'braid' &&
+    type !== 'bun'
+  )
+    fail(`${path}.type`, 'must be "stream", "dividing", "ponytail", "braid" or "bun"');
   const o = record(v, path, curveFields(type));
   if (typeof o.id !== 'string' || !/^[A-Za-z0-9_~-]{1,32}$/.test(o.id))
     fail(`${path}.id`, 'must be a short identifier (1 to 32 of A-Z a-z 0-9 _ ~ -)');
@@ -208,6 +216,22 @@ export function curve(v: Plain, path: string): StyleCurve {
         ...detail(o.detail, `${path}.detail`),
         ...mirrorOf(o.mirror, `${path}.mirror`),
       };
+    }
+    case 'braid':
+    case 'bun': {
+      const extend = bool(o.extend, `${path}.extend`);
+      const vp = viewpoint(o.viewpoint, `${path}.viewpoint`);
+      const common = {
+        id,
+        points,
+        extend,
+        viewpoint: vp,
+        ...detail(o.detail, `${path}.detail`),
+        ...mirrorOf(o.mirror, `${path}.mirror`),
+      };
+      return type === 'braid'
+        ? { ...common, type, ...scalars(o, 'braid', path) }
+        : { ...common, type, ...scalars(o, 'bun', path) };
     }
   }
 }

@@ -61,7 +61,32 @@ export interface PonytailCurve {
   mirror?: string;
 }
 
-export type StyleCurve = StreamCurve | DividingCurve | PonytailCurve;
+/** A braid (solver-cpp/src/braid_bun.hpp): `points` is the stroke from the scalp along the
+ *  braid, scalp to tip (drawn like a ponytail's spine); its scalar parameters are those of
+ *  curveParams.ts CURVE_PARAMS.braid (lengths in world units, crossings per world unit). */
+export interface BraidCurve extends CurveParamValues<'braid'> {
+  id: string;
+  type: 'braid';
+  points: Vec3[];
+  extend: boolean;
+  viewpoint: Viewpoint;
+  detail?: HairDetail;
+  mirror?: string;
+}
+
+/** A bun (solver-cpp/src/braid_bun.hpp): `points` is a loop drawn on the head where the bun
+ *  sits; its scalar parameters are those of CURVE_PARAMS.bun (radius 0: the loop's size). */
+export interface BunCurve extends CurveParamValues<'bun'> {
+  id: string;
+  type: 'bun';
+  points: Vec3[];
+  extend: boolean;
+  viewpoint: Viewpoint;
+  detail?: HairDetail;
+  mirror?: string;
+}
+
+export type StyleCurve = StreamCurve | DividingCurve | PonytailCurve | BraidCurve | BunCurve;
 export type CurveType = StyleCurve['type'];
 
 /** The head file formats a session can name (loadHead.ts HeadFormat, every one of them). */

@@ -50,6 +50,9 @@ export interface StrokeContext {
    * and the curve instead (RADIANS_PER_PIXEL).
    */
   toScreen?(p: Vec3): { x: number; y: number } | null;
+  /** What the stroke draws, for the status line ('A stream curve' when absent; the Braid tool
+   *  draws its stroke with this tool and no hint target). */
+  noun?: string;
 }
 
 /** Without ctx.toScreen, an angle of this many radians counts as one pixel (a 35° field of view
@@ -144,7 +147,9 @@ export class StreamCurveTool implements Tool {
     }
     const hinting = !!target && onSurface && !first.scalpHit;
     if (!hinting && !first.scalpHit) {
-      this.ctx.notify('A stream curve must start on the scalp: nothing was created.');
+      this.ctx.notify(
+        `${this.ctx.noun ?? 'A stream curve'} must start on the scalp: nothing was created.`,
+      );
       return true; // the press is still the tool's: it must not orbit the camera
     }
     const candidate = target && onSurface ? target : null;

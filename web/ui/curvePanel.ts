@@ -1,6 +1,7 @@
 // A small panel with the selected curve's parameters, built from protocol.ts CURVE_PARAMS (label,
-// unit, range; angles in degrees in the panel, radians in the session), plus "Extend past the
-// end" for stream curves and ponytails. Every change is reported as one edit (the app records it
+// unit, range; angles in degrees in the panel, radians in the session; lengths in centimetres in
+// the panel, world units in the session), plus "Extend past the
+// end" for every curve but dividing ones, and "Braid the tail" for a ponytail. Every change is reported as one edit (the app records it
 // in History).
 import type { StyleCurve } from '../model/session';
 import { CURVE_PARAMS, type CurveParamSpec } from '../solver/protocol';
@@ -15,9 +16,10 @@ export interface CurvePanel {
 
 const DEG = 180 / Math.PI;
 
-/** Session value -> panel value, and back (degrees for angles). */
-const toView = (s: CurveParamSpec, v: number) => (s.unit === 'rad' ? v * DEG : v);
-const fromView = (s: CurveParamSpec, v: number) => (s.unit === 'rad' ? v / DEG : v);
+/** Session value -> panel value, and back (degrees for angles, centimetres for lengths). */
+const VIEW_SCALE: Partial<Record<CurveParamSpec['unit'], number>> = { rad: DEG, cm: 10 };
+const toView = (s: CurveParamSpec, v: number) => v * (VIEW_SCALE[s.unit] ?? 1);
+const fromView = (s: CurveParamSpec, v: number) => v / (VIEW_SCALE[s.unit] ?? 1);
 
 /** The panel label: the table's label and its unit as shown. */
 export function paramLabel(s: CurveParamSpec): string {
@@ -37,6 +39,8 @@ export function buildCurvePanel(
   onChange: (id: string, patch: CurvePatch) => void,
   /** A sentence for the status line (an entry clamped or rounded). */
   say: Say,
+  /** "Braid the tail" of a ponytail (absent: no button). */
+  braidTail?: (id: string) => void,
 ): CurvePanel {
   const panel = document.createElement('section');
   panel.id = 'curve-panel';
@@ -63,6 +67,14 @@ export function buildCurvePanel(
         box.addEventListener('change', () => onChange(curve.id, { extend: box.checked }));
         label.append(box, ' Extend past the end');
         panel.append(label);
+      }
+      if (curve.type === 'ponytail' && braidTail) {
+        const button = document.createElement('button');
+        button.type = 'button';
+        button.textContent = 'Braid the tail';
+        button.title = 'Replace this ponytail by a braid on its spine';
+        button.addEventListener('click', () => braidTail(curve.id));
+        panel.append(button);
       }
       for (const s of specsOf(curve)) {
         const label = document.createElement('label');

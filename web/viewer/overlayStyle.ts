@@ -36,7 +36,8 @@ export const OVERLAY_RGB: Readonly<Record<OverlayKind, number>> = {
 export function curveRgb(type: string | undefined, selected: boolean): number {
   if (selected) return OVERLAY_RGB.selected;
   if (type === 'dividing') return OVERLAY_RGB.dividing;
-  if (type === 'ponytail') return OVERLAY_RGB.ponytail;
+  // braids and buns are gathered tails too
+  if (type === 'ponytail' || type === 'braid' || type === 'bun') return OVERLAY_RGB.ponytail;
   return OVERLAY_RGB.stream;
 }
 

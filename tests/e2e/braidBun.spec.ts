@@ -1,0 +1,127 @@
+// Braids and buns with real pointer strokes on an empty head: the Braid tool's stroke from the
+// scalp and the Bun tool's loop on the head make curves the session holds, the hair changes, Undo
+// takes them away; Mirror doubles a braid; a loop that leaves the head makes nothing and says why.
+// Waits on the status attributes and the session, never on fixed sleeps.
+import { expect, type Page, test } from '@playwright/test';
+import { settled, status, strokeFromScalp } from './helpers';
+
+type V3 = [number, number, number];
+interface Curve {
+  id: string;
+  type: string;
+  points: V3[];
+  extend: boolean;
+  mirror?: string;
+  [param: string]: unknown;
+}
+
+const curves = (page: Page) =>
+  page.evaluate(() => (window.hairsketch.session() as { curves: Curve[] }).curves);
+
+/** An empty head seen from `camera`, settled; its hair's hash and status revision. */
+async function emptyHead(page: Page, camera: { position: V3; target: V3 }) {
+  await page.goto('/?preset=empty&strands=4000');
+  await settled(page);
+  await page.evaluate(
+    ([p, t]) => window.hairsketch.setCamera(p as V3, t as V3),
+    [camera.position, camera.target],
+  );
+  await page.evaluate(() => window.hairsketch.idle());
+  const rev = (await status(page)).revision;
+  const hash = await page.evaluate(() => window.hairsketch.hairHash());
+  expect(hash).not.toBeNull();
+  return { rev, hash };
+}
+
+const curveCount = (page: Page, n: number) =>
+  page.waitForFunction(
+    (k) => (window.hairsketch.session() as { curves: unknown[] }).curves.length === k,
+    n,
+  );
+
+const SIDE = { position: [7.4, 0.8, -0.6] as V3, target: [0, -0.3, 0] as V3 };
+const ABOVE = { position: [0, 7.2, -2.2] as V3, target: [0, 0.4, 0] as V3 };
+
+test('a braid drawn from the scalp: the session holds it, the hair changes, Undo removes it', async ({
+  page,
+}) => {
+  const empty = await emptyHead(page, SIDE);
+  await page.getByRole('button', { name: 'Braid' }).click();
+  await strokeFromScalp(page, 60, 150, 70, 240);
+  await curveCount(page, 1);
+  const after = await settled(page, empty.rev);
+  const [braid] = await curves(page);
+  expect(braid.type).toBe('braid');
+  expect(braid.points.length).toBeGreaterThan(5);
+  expect(braid.extend).toBe(false); // natural fall: the hair ends where the stroke ends
+  expect([braid.width, braid.crossings, braid.tightness, braid.tailLength]).toEqual([
+    0.5, 6, 0.5, 0.4,
+  ]);
+  const hash = await page.evaluate(() => window.hairsketch.hairHash());
+  expect(hash).not.toBe(empty.hash);
+
+  await page.getByRole('button', { name: 'Undo' }).click();
+  await curveCount(page, 0);
+  await settled(page, after.revision);
+  expect(await page.evaluate(() => window.hairsketch.hairHash())).toBe(empty.hash);
+});
+
+test('Mirror doubles a braid: two braids, twins of each other', async ({ page }) => {
+  const empty = await emptyHead(page, SIDE);
+  await page.getByRole('button', { name: 'Mirror' }).click();
+  await page.getByRole('button', { name: 'Braid' }).click();
+  await strokeFromScalp(page, 78, 135, 90, 230);
+  await curveCount(page, 2);
+  await settled(page, empty.rev);
+  const [a, b] = await curves(page);
+  expect([a.type, b.type]).toEqual(['braid', 'braid']);
+  expect(a.mirror).toBe(b.id);
+  expect(b.mirror).toBe(a.id);
+  // the twin is the reflection across x = 0
+  for (let i = 0; i < a.points.length; i++) {
+    expect(b.points[i][0]).toBeCloseTo(-a.points[i][0], 4);
+    expect(b.points[i][1]).toBeCloseTo(a.points[i][1], 4);
+  }
+});
+
+test('a bun drawn as a loop on the head: the session holds it, the hair changes, Undo removes it; a loop off the head is refused', async ({
+  page,
+}) => {
+  const empty = await emptyHead(page, ABOVE);
+  await page.getByRole('button', { name: 'Bun' }).click();
+  const c = await page.evaluate(() => window.hairsketch.scalpToScreen(20, 180));
+  expect(c, 'the bun’s place on screen').not.toBeNull();
+  if (!c) return;
+  // a loop of 45 px round the bun's place, with real mouse events
+  const loop = (r: number) => {
+    const pts: { x: number; y: number }[] = [];
+    for (let i = 0; i <= 48; i++) {
+      const a = (2 * Math.PI * i) / 48;
+      pts.push({ x: c.x + r * Math.cos(a), y: c.y + r * Math.sin(a) });
+    }
+    return pts;
+  };
+  const drag = async (pts: { x: number; y: number }[]) => {
+    await page.mouse.move(pts[0].x, pts[0].y);
+    await page.mouse.down();
+    for (const p of pts.slice(1)) await page.mouse.move(p.x, p.y);
+    await page.mouse.up();
+  };
+  await drag(loop(45));
+  await curveCount(page, 1);
+  const after = await settled(page, empty.rev);
+  const [bun] = await curves(page);
+  expect(bun.type).toBe('bun');
+  expect([bun.radius, bun.height, bun.turns]).toEqual([0, 0.35, 2.5]);
+  expect(await page.evaluate(() => window.hairsketch.hairHash())).not.toBe(empty.hash);
+
+  // a loop far larger than the head leaves it: nothing is made, the status line says why
+  await drag(loop(2000).map((p) => ({ x: Math.max(2, p.x), y: Math.max(2, p.y) })));
+  await expect(page.getByTestId('status')).toContainText(/bun/i);
+  expect((await curves(page)).length).toBe(1);
+
+  await page.getByRole('button', { name: 'Undo' }).click();
+  await curveCount(page, 0);
+  await settled(page, after.revision);
+  expect(await page.evaluate(() => window.hairsketch.hairHash())).toBe(empty.hash);
+});
