@@ -10,7 +10,7 @@
 //   first one off the scalp (the gather; the first point when the whole stroke lies on the
 //   scalp) to the braid's end at T before the stroke's end, of radius W(s) / 2, tapering linearly
 //   from W at the gather to 0.6 W at the braid's end. In growth (gathered_tail.cpp) the captured
-//   hair is split by root angle into three bundles of radius r_b = W(s) / 6 whose centres, in the
+//   hair is split by root angle into three bundles of radius r_b = W(s) / 4.5 whose centres, in the
 //   spine's frame (E1 across the head, E2 away from it), are
 //     x_b = A sin(t_b), y_b = B sin(2 t_b),  t_b = 2 pi s / P + 2 pi b / 3,  b = 0, 1, 2,
 //     A = W(s) / 2 - r_b, B = r_b (1.5 - 0.8 tau), P = 6 / c (each bundle crosses x = 0 twice per
@@ -18,7 +18,7 @@
 //   the classic three-strand plait: each outer bundle passes over the middle in turn. Two centres
 //   at the same s are at least sqrt(3) B >= 1.2 r_b apart (equal x happens at equal |sin|; then
 //   |y_i - y_j| = sqrt(3) B at the least). Past the braid's end the bundles meet over 1 cm into a
-//   loose tail of radius 0.45 W(end).
+//   loose tail of radius 0.7 W(end).
 //
 // Bun: the curve's points are a loop drawn on the head where the bun sits. Its centre c is the
 //   loop's mean, its axis n the loop's plane normal (least-variance direction) turned away from

@@ -96,6 +96,7 @@ struct Capture {
   uint32_t keep;  // points kept (the root .. the point before the crossing)
   Eigen::Vector3f q;
   float remaining;  // the strand's length after q
+  float before;     // its length up to q
   float s0;         // arc length along the spine where q is
 };
 
@@ -201,7 +202,10 @@ void layAlongSpine(const GatheredTail& T, const SpineFrames& F, const Capture& c
   const float period = braid ? float(6.0 / T.braid.crossings) : 0.f;
   // a braid's period gets at least 16 points where the cap allows
   const float ds = braid ? std::min(step, period / 16) : step;
-  const size_t segs = std::min(room, std::max<size_t>(1, size_t(std::ceil(cap.remaining / ds))));
+  // the hair ends at the spine's end unless its curve lets it grow on
+  const float remaining =
+      T.growsOn ? cap.remaining : std::max(0.f, std::min(cap.remaining, F.s.back() - cap.s0));
+  const size_t segs = std::min(room, std::max<size_t>(1, size_t(std::ceil(remaining / ds))));
   Eigen::Vector3f pq, g1, g2;
   float rq;
   F.at(cap.s0, pq, g1, g2, rq);
@@ -214,18 +218,18 @@ void layAlongSpine(const GatheredTail& T, const SpineFrames& F, const Capture& c
   };
   out.reserve(segs + 1);
   for (size_t j = 0; j <= segs; ++j) {
-    const float s = cap.remaining * float(j) / float(segs), S = cap.s0 + s;
+    const float s = remaining * float(j) / float(segs), S = cap.s0 + s;
     Eigen::Vector3f pos, f1, f2;
     float rad;
     F.at(S, pos, f1, f2, rad);
     float x = rho * ct * rad, y = rho * st * rad;
     if (braid) {
-      const float W = width(S), rb = W / 6, A = W / 2 - rb, B = rb * (1.5f - 0.8f * tau);
+      const float W = width(S), rb = W * kBraidBundle, A = W / 2 - rb, B = rb * (1.5f - 0.8f * tau);
       const float t = kTwoPi * (S / period + float(bundle) / 3);
       x = A * std::sin(t) + rb * rho * ct;
       y = B * std::sin(2 * t) + rb * rho * st;
       if (S > Lb) {  // the tie, then the loose tail
-        const float loose = 0.45f * width(Lb) * rho, w = smoothstep((S - Lb) / kBraidTie);
+        const float loose = kBraidLoose * width(Lb) * rho, w = smoothstep((S - Lb) / kBraidTie);
         x += (loose * ct - x) * w;
         y += (loose * st - y) * w;
       }
@@ -237,10 +241,13 @@ void layAlongSpine(const GatheredTail& T, const SpineFrames& F, const Capture& c
 
 // A bun: the strand coils round the axis from its seat angle, over the dome, then tucks under.
 void layBun(const GatheredTail& T, const SpineFrames& F, const Capture& cap, float theta, float rho,
-            float step, size_t room, std::vector<Eigen::Vector3f>& out) {
+            float step, size_t room, float maxLength, std::vector<Eigen::Vector3f>& out) {
   const float R = T.bunRadius, H = float(T.bun.height), K = float(T.bun.turns);
-  const float L = std::max(cap.remaining, 1e-4f);
   const float shell = R * (0.45f + 0.55f * rho);
+  // the hair's budget after q (the field walk stops at the bun's top), up to a full coil
+  const float budget = maxLength > 0 ? maxLength - cap.before : cap.remaining;
+  const float full = 0.8f * kTwoPi * K * shell + 0.5f * H;
+  const float L = std::max(std::min(std::max(budget, cap.remaining), full), 1e-4f);
   // K turns round the dome are about 0.8 (2 pi r K) long: short hair coils tighter
   const float r0 = std::min(shell, L / (0.8f * kTwoPi * K));
   const size_t segs =
@@ -273,7 +280,8 @@ void layBun(const GatheredTail& T, const SpineFrames& F, const Capture& cap, flo
 
 TailStats gatherTails(const std::vector<GatheredTail>& tails,
                       const std::vector<Eigen::Vector3f>& roots, const std::vector<uint32_t>& key,
-                      uint64_t seed, float step, size_t maxPoints, Strands& strands) {
+                      uint64_t seed, float step, size_t maxPoints, Strands& strands,
+                      float maxLength) {
   TailStats stats;
   const size_t nS = strands.strandStart.empty() ? 0 : strands.strandStart.size() - 1;
   if (tails.empty() || nS == 0 || !(step > 0)) return stats;
@@ -292,7 +300,8 @@ TailStats gatherTails(const std::vector<GatheredTail>& tails,
     for (size_t k = 0; k < tails.size(); ++k) {
       const SpineFrames& F = frames[k];
       const Eigen::Vector3f c = F.p[0], ax = tails[k].axis;
-      const float capture = kTailCapture * F.r[0];
+      const float capture =
+          (tails[k].shape == TailShape::Bun ? kBunCapture : kTailCapture) * F.r[0];
       float w0 = (Eigen::Vector3f(P[3 * a], P[3 * a + 1], P[3 * a + 2]) - c).dot(ax);
       for (uint32_t p = a; p + 1 < b && p + 2 <= at; ++p) {
         const Eigen::Vector3f p1(P[3 * p + 3], P[3 * p + 4], P[3 * p + 5]);
@@ -330,7 +339,16 @@ TailStats gatherTails(const std::vector<GatheredTail>& tails,
       remaining += (x - prev).norm();
       prev = x;
     }
-    caught[size_t(tail)].push_back({uint32_t(st), keep, q, remaining, s0});
+    float before = 0;
+    for (uint32_t p = a + 1; p < a + keep; ++p)
+      before += (Eigen::Vector3f(P[3 * p], P[3 * p + 1], P[3 * p + 2]) -
+                 Eigen::Vector3f(P[3 * p - 3], P[3 * p - 2], P[3 * p - 1]))
+                    .norm();
+    if (keep > 0)
+      before += (q - Eigen::Vector3f(P[3 * (a + keep - 1)], P[3 * (a + keep - 1) + 1],
+                                     P[3 * (a + keep - 1) + 2]))
+                    .norm();
+    caught[size_t(tail)].push_back({uint32_t(st), keep, q, remaining, before, s0});
   }
   // seats, then the new strands
   std::vector<std::vector<Eigen::Vector3f>> laid(nS);
@@ -401,7 +419,7 @@ TailStats gatherTails(const std::vector<GatheredTail>& tails,
       if (room == 0) continue;
       std::vector<Eigen::Vector3f>& out = laid[cap.strand];
       if (T.shape == TailShape::Bun)
-        layBun(T, F, cap, theta[i], rho[i], step, room, out);
+        layBun(T, F, cap, theta[i], rho[i], step, room, maxLength, out);
       else
         layAlongSpine(T, F, cap, theta[i], rho[i], bundle[i], step, room, out);
       isLaid[cap.strand] = 1;

@@ -41,10 +41,13 @@
 
 namespace hairsketch {
 
-constexpr float kTailCapture = 2.5f;  // x r_1: how far from the axis a crossing is taken in
-constexpr float kTailBlend = 0.3f;    // world units (3 cm): from the crossing to the seat
-constexpr float kBraidTie = 0.1f;     // world units: the bundles meet into the loose tail
-constexpr float kBunTuckAt = 0.85f;   // of a bun strand's coil: from there its tip turns under
+constexpr float kTailCapture = 2.5f;      // x r_1: how far from the axis a crossing is taken in
+constexpr float kBunCapture = 5.0f;       // the same for a bun (x its circles' 0.6 R: 3 R)
+constexpr float kBraidBundle = 1 / 4.5f;  // a braid bundle's radius, x the braid's width
+constexpr float kBraidLoose = 0.7f;       // the loose tail's radius, x the width at the tie
+constexpr float kTailBlend = 0.3f;        // world units (3 cm): from the crossing to the seat
+constexpr float kBraidTie = 0.1f;         // world units: the bundles meet into the loose tail
+constexpr float kBunTuckAt = 0.85f;       // of a bun strand's coil: from there its tip turns under
 
 // Round: a ponytail's bunch. Braid, Bun: braid_bun.hpp, laid as described there.
 enum class TailShape : uint8_t { Round, Braid, Bun };
@@ -61,6 +64,8 @@ struct GatheredTail {
   BunParams bun;
   Eigen::Vector3f bunCentre = Eigen::Vector3f::Zero();  // on the scalp
   float bunRadius = 0;
+  // A round tail's or braid's hair ends at the spine's end unless its curve lets hair grow on.
+  bool growsOn = false;
 };
 
 // The tail of a gathered ponytail: spine = the curve's points from the one nearest C1's centre
@@ -81,9 +86,12 @@ struct TailStats {
 
 // Re-lays the captured strands of every tail (see above). key[s] is strand s's seed key (its root
 // index in the full root set), roots[s] its root; step is the growth step (world units);
-// maxPoints caps a strand's points. Strands that no tail captures are left bit-identical.
+// maxPoints caps a strand's points. maxLength (world units; 0: unknown) is the hair's length
+// budget: a bun's strand coils up to it (the field walk ends at the bun's top). Strands that no
+// tail captures are left bit-identical.
 TailStats gatherTails(const std::vector<GatheredTail>& tails,
                       const std::vector<Eigen::Vector3f>& roots, const std::vector<uint32_t>& key,
-                      uint64_t seed, float step, size_t maxPoints, Strands& strands);
+                      uint64_t seed, float step, size_t maxPoints, Strands& strands,
+                      float maxLength = 0);
 
 }  // namespace hairsketch

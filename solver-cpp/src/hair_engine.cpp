@@ -211,6 +211,7 @@ Status HairEngine::setCurves(const CurveSetView& curves) {
         PonytailParams pp;
         if (!parsePonytailParams(prm, pb - pa, pp).ok() || pp.gather != 1) continue;
         nextTails.push_back(gatheredTail(pts, b - a, pp));
+        nextTails.back().growsOn = curves.extend && curves.extend[c] != 0;
       } else if (kind == CurveKindCode::Braid) {
         BraidParams bp;
         if (!parseBraidParams(prm, pb - pa, bp).ok()) continue;
@@ -218,6 +219,7 @@ Status HairEngine::setCurves(const CurveSetView& curves) {
             braidGatherIndex(withHead.offScalp ? overFace.data() + a : nullptr, b - a);
         nextTails.push_back(braidTail(pts, b - a, gather, bp,
                                       headDistance_.built() ? away : Eigen::Vector3f::Zero()));
+        nextTails.back().growsOn = curves.extend && curves.extend[c] != 0;
       } else if (kind == CurveKindCode::Bun) {
         BunParams bp;
         if (!parseBunParams(prm, pb - pa, bp).ok()) continue;
@@ -371,7 +373,8 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
   for (size_t k = 0; k < n; ++k) key[k] = uint32_t(capped_ ? k * total / n : k);
   if (s.ok() && !tails_.empty()) {
     const TailStats ts = gatherTails(tails_, R, key, rp.seed, float(gp.stepFraction * grid_.step),
-                                     size_t(std::max(gp.maxSegments, 1)) + 1, strands_);
+                                     size_t(std::max(gp.maxSegments, 1)) + 1, strands_,
+                                     float(std::min(gp.maxLength, 1e6)));
     if (head && ts.captured > 0) keepOutsideHead(*head, float(gp.margin), strands_);
   }
   bool anyDetail = false;

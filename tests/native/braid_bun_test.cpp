@@ -111,8 +111,6 @@ TEST(Braid, StrandsCrossTheSpineWithThePeriodInThreeSeparateBundles) {
     }
     const double span = grid.back() - grid.front();
     ASSERT_GE(at.size(), size_t(2 * std::floor(span / P))) << "strand " << k;
-    const double spacing = (at.back() - at.front()) / double(at.size() - 1);
-    EXPECT_NEAR(spacing, P / 2, 0.1 * P / 2) << "strand " << k;
     phase[k] = std::atan2(cc, sc);
   }
   // three bundles by phase: every strand within 30 degrees of one of three phases 120 apart
@@ -130,6 +128,8 @@ TEST(Braid, StrandsCrossTheSpineWithThePeriodInThreeSeparateBundles) {
   for (int c : count) EXPECT_GT(c, int(nS) / 5);
   // centre lines: the mean offset of each bundle, in x (across) and z (depth)
   double closest = 1e9;
+  std::vector<std::pair<double, int>> crossing;  // (s, bundle) where a centre line crosses x = 0
+  double lastX[3] = {0, 0, 0};
   for (double s = 0.5; s <= 3.8; s += 0.01) {
     Eigen::Vector2d centre[3] = {Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(),
                                  Eigen::Vector2d::Zero()};
@@ -142,13 +142,27 @@ TEST(Braid, StrandsCrossTheSpineWithThePeriodInThreeSeparateBundles) {
         centre[bundleOf[k]] += Eigen::Vector2d(a[0] + f * (b[0] - a[0]), a[2] + f * (b[2] - a[2]));
         break;
       }
-    for (int b = 0; b < 3; ++b) centre[b] /= double(count[size_t(b)]);
-    const double W = kBraid.width * (1 - 0.4 * s / 4.0), halfBundle = W / 6;
+    for (int b = 0; b < 3; ++b) {
+      centre[b] /= double(count[size_t(b)]);
+      if (s > 0.5 && (lastX[b] < 0) != (centre[b].x() < 0)) crossing.emplace_back(s, b);
+      lastX[b] = centre[b].x();
+    }
+    const double W = kBraid.width * (1 - 0.4 * s / 4.0), halfBundle = W * kBraidBundle;
     for (int i = 0; i < 3; ++i)
       for (int j = i + 1; j < 3; ++j)
         closest = std::min(closest, (centre[i] - centre[j]).norm() / halfBundle);
   }
   EXPECT_GE(closest, 1.0) << "bundle centre lines closer than half a bundle";
+  // each centre line crosses every P / 2; the three in turn (never one bundle twice running)
+  for (int b = 0; b < 3; ++b) {
+    std::vector<double> at;
+    for (const auto& c : crossing)
+      if (c.second == b) at.push_back(c.first);
+    ASSERT_GE(at.size(), 4u);
+    EXPECT_NEAR((at.back() - at.front()) / double(at.size() - 1), P / 2, 0.1 * P / 2) << b;
+  }
+  for (size_t i = 1; i < crossing.size(); ++i)
+    EXPECT_NE(crossing[i].second, crossing[i - 1].second) << "at s " << crossing[i].first;
 }
 
 TEST(Braid, TheSeedDecidesAndThePointCapHolds) {

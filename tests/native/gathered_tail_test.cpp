@@ -4,13 +4,14 @@
 // along every axis), the kept part of each strand is bit-identical, lengths are kept, strands
 // passing far away are untouched, hair hanging beside the tail joins it, the point cap holds and
 // the seed decides the layout.
+#include "gathered_tail.hpp"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
 #include <cmath>
 #include <vector>
 
-#include "gathered_tail.hpp"
 #include "ponytail_constraints.hpp"
 
 using namespace hairsketch;
