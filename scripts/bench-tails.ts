@@ -20,7 +20,9 @@ const head = Head.builtin();
 const strandCap = Number(process.argv[2] ?? 0);
 const TAIL_KINDS = new Set(['braid', 'bun']);
 
-async function growMs(session: SessionState): Promise<{ ms: number[]; strands: number; points: number }> {
+async function growMs(
+  session: SessionState,
+): Promise<{ ms: number[]; strands: number; points: number }> {
   const grid = gridForSession(session.grid, session.curves, undefined, hangLength(session));
   const ms: number[] = [];
   let strands = 0;
@@ -57,7 +59,13 @@ async function main(): Promise<void> {
     const line = `| ${name} | ${withTails.strands} | ${withTails.points} | ${a.toFixed(0)} | ${b.toFixed(0)} | ${(a - b).toFixed(0)} |`;
     console.log(line);
     lines.push(line);
-    results.push({ preset: name, ...withTails, medianMs: a, withoutTailsMs: plain.ms, medianWithoutMs: b });
+    results.push({
+      preset: name,
+      ...withTails,
+      medianMs: a,
+      withoutTailsMs: plain.ms,
+      medianWithoutMs: b,
+    });
   }
   writeBenchResults('tails', {
     title: 'Braids and buns: their cost in the growth step',

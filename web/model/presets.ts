@@ -444,8 +444,10 @@ const BUN_SWEEPS: SweepSpec[] = [
     (phi): SweepSpec => ({ theta: [100, 26], phi: [phi, phi * 1.4], lift: 0.05, fall: 0 }),
   ),
   ...[160, -160].map(
-    (phi): SweepSpec => ({ theta: [110, 30], phi: [phi, phi * 1.1], lift: 0.05, fall: 0 }),
+    (phi): SweepSpec => ({ theta: [118, 30], phi: [phi, phi * 1.1], lift: 0.05, fall: 0 }),
   ),
+  // the nape straight up the back
+  { theta: [124, 32], phi: [180, 180], lift: 0.05, fall: 0 },
 ];
 
 // pigtail-braids: two braids behind the ears, the second the first's mirror image (as Mirror
