@@ -47,7 +47,7 @@ async function main(): Promise<void> {
   ];
   for (const l of lines) console.log(l);
   const results = [];
-  for (const name of ['braid', 'bun', 'pigtail-braids']) {
+  for (const name of ['braid', 'bun', 'pigtail-braids'] as const) {
     const session = presetSession(name, head, '25k', strandCap);
     const withTails = await growMs(session);
     const plain = await growMs({
