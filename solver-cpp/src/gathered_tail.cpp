@@ -455,6 +455,8 @@ TailStats gatherTails(const std::vector<GatheredTail>& tails,
   }
   strands.points = std::move(points);
   strands.strandStart = std::move(start);
+  for (size_t st = 0; st < nS; ++st)
+    if (isLaid[st]) stats.strands.push_back(uint32_t(st));
   return stats;
 }
 

@@ -81,7 +81,8 @@ GatheredTail braidTail(const double* spine, size_t pointCount, size_t gather,
 GatheredTail bunTail(const BunFrame& frame, const BunParams& params);
 
 struct TailStats {
-  size_t captured = 0;  // strands laid into a tail
+  size_t captured = 0;            // strands laid into a tail
+  std::vector<uint32_t> strands;  // which, in increasing order
 };
 
 // Re-lays the captured strands of every tail (see above). key[s] is strand s's seed key (its root

@@ -375,7 +375,8 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
     const TailStats ts = gatherTails(tails_, R, key, rp.seed, float(gp.stepFraction * grid_.step),
                                      size_t(std::max(gp.maxSegments, 1)) + 1, strands_,
                                      float(std::min(gp.maxLength, 1e6)));
-    if (head && ts.captured > 0) keepOutsideHead(*head, float(gp.margin), strands_);
+    // growth kept the rest outside already
+    if (head && ts.captured > 0) keepOutsideHead(*head, float(gp.margin), strands_, &ts.strands);
   }
   bool anyDetail = false;
   for (const DetailParams& d : detail_) anyDetail |= d.any();

@@ -316,15 +316,19 @@ Status growStrands(const Grid& g, const std::vector<float>& field,
 static void keepStrandOutside(const HeadDistance& head, float margin, Strands& strands, size_t st,
                               size_t& moved);
 
-size_t keepOutsideHead(const HeadDistance& head, float margin, Strands& strands) {
+size_t keepOutsideHead(const HeadDistance& head, float margin, Strands& strands,
+                       const std::vector<uint32_t>* only) {
   if (!head.built()) return 0;
-  const size_t nS = strands.strandStart.empty() ? 0 : strands.strandStart.size() - 1;
+  const size_t nS = only                          ? only->size()
+                    : strands.strandStart.empty() ? 0
+                                                  : strands.strandStart.size() - 1;
   // Strands are independent: chunks of them in parallel, each counting its own moves.
   const int chunks = int(std::min<size_t>(size_t(parallel::threadCount()) * 4, nS / 256 + 1));
   std::vector<size_t> movedBy(size_t(std::max(chunks, 1)), 0);
   parallel::forChunks(nS, chunks, [&](int c, size_t s0, size_t s1) {
     size_t& moved = movedBy[size_t(c)];
-    for (size_t st = s0; st < s1; ++st) keepStrandOutside(head, margin, strands, st, moved);
+    for (size_t i = s0; i < s1; ++i)
+      keepStrandOutside(head, margin, strands, only ? (*only)[i] : i, moved);
   });
   size_t moved = 0;
   for (size_t m : movedBy) moved += m;

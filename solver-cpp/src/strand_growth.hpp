@@ -83,7 +83,9 @@ Status growStrands(const Grid& grid, const std::vector<float>& field,
                    const HeadDistance* head = nullptr, const CurveReach* reach = nullptr);
 
 // Moves every point but the roots that lies closer to the head than `margin` out to it (after
-// detail has moved points). Returns how many points moved.
-size_t keepOutsideHead(const HeadDistance& head, float margin, Strands& strands);
+// detail has moved points), of every strand or of the strands listed in `only`. Returns how
+// many points moved.
+size_t keepOutsideHead(const HeadDistance& head, float margin, Strands& strands,
+                       const std::vector<uint32_t>* only = nullptr);
 
 }  // namespace hairsketch
