@@ -3,8 +3,38 @@
 # unit tests (with the real wasm under Node) and browser tests against Debian's Chromium.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-start=$(date +%s)
-step() { echo ""; echo "== $* ($(( $(date +%s) - start )) s)"; }
+# Each phase's wall time goes into a table printed at the end (also when a phase fails), so it
+# is plain where the run's time goes.
+now_ms() { local t=${EPOCHREALTIME/[.,]/}; echo $(( t / 1000 )); }
+secs() { printf '%d.%d' $(( $1 / 1000 )) $(( ($1 % 1000) / 100 )); }
+start=$(now_ms)
+phases=()
+phase_name=""
+phase_start=0
+end_phase() {
+  if [ -n "$phase_name" ]; then
+    phases+=("$(printf '%8s s  %s' "$(secs $(( $(now_ms) - phase_start )))" "$phase_name")")
+  fi
+  phase_name=""
+}
+step() {
+  end_phase
+  phase_name="$*"
+  phase_start=$(now_ms)
+  echo ""
+  echo "== $* ($(( (phase_start - start) / 1000 )) s)"
+}
+timing_table() {  # [failed]
+  local failed=""
+  if [ "${1:-}" = failed ]; then failed="$phase_name"; fi
+  end_phase
+  echo ""
+  echo "npm test, wall time per phase:"
+  printf '  %s\n' "${phases[@]}"
+  printf '  %8s s  total\n' "$(secs $(( $(now_ms) - start )))"
+  if [ -n "$failed" ]; then echo "npm test: failed in \"$failed\""; fi
+}
+trap 'if [ -n "$phase_name" ]; then timing_table failed; fi' EXIT
 
 step setup
 bash scripts/setup.sh test
@@ -34,5 +64,5 @@ npx vite build --logLevel warn
 step "browser tests (Playwright, Debian Chromium)"
 npx playwright test
 
-echo ""
-echo "npm test: all passed in $(( $(date +%s) - start )) s"
+timing_table
+echo "npm test: all passed"
