@@ -14,6 +14,7 @@ import * as THREE from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { KEY_LIGHT_POSITION } from '../lighting/keyLight';
 import type { Vec3 } from '../model/vec3';
+import { DEFAULT_CAMERA } from './defaultCamera';
 import {
   drawableStamp,
   type FrameMode,
@@ -72,8 +73,6 @@ const SOFTWARE_INITIAL_BUDGET = 2 * MIN_HAIR_BUDGET;
 const FULL_DETAIL_DELAY_FRAMES = 1;
 /** Duration of resetView's animation. */
 const RESET_VIEW_MS = 450;
-
-export const DEFAULT_CAMERA = { position: [2.6, 0.9, 7.0] as Vec3, target: [0, -0.55, 0] as Vec3 };
 
 export { type FrameMode, frameDetail } from './frameCache';
 
