@@ -32,6 +32,8 @@ export default defineConfig({
     target: 'node20',
     minify: false,
     reportCompressedSize: false,
+    // Read from disk by node, never downloaded: grow's chunk (three.js inside) may be large.
+    chunkSizeWarningLimit: 4096,
     rollupOptions: {
       input: { hairsketch: 'web/cli/main.ts' },
       output: { format: 'es', entryFileNames: '[name].mjs', chunkFileNames: '[name]-[hash].mjs' },
