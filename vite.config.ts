@@ -79,6 +79,8 @@ export default defineConfig({
   test: {
     root: '.',
     include: ['tests/unit/**/*.test.ts'],
+    // CLI tests run the bundled command line: built here when missing or stale.
+    globalSetup: ['tests/unit/cliBundleSetup.ts'],
     environment: 'node',
     testTimeout: 60_000,
   },

@@ -53,11 +53,10 @@ if [ "$major" -lt 20 ]; then
   exit 1
 fi
 
-if [ ! -f node_modules/.package-lock.json ] || [ package-lock.json -nt node_modules/.package-lock.json ]; then
-  # npm install, not npm ci: the registry mirror here lacks some other-platform optional
-  # packages (e.g. @biomejs/cli-win32-x64), which makes `npm ci` refuse the lock file.
-  echo "setup: installing npm packages (npm install, from package-lock.json)"
-  npm install --no-audit --no-fund
+if ! node scripts/lock-installed.mjs; then
+  # npm ci installs exactly what package-lock.json pins and never rewrites it (npm install may).
+  echo "setup: installing npm packages (npm ci, from package-lock.json)"
+  npm ci --no-audit --no-fund
 fi
 
 if [ "$mode" = test ]; then

@@ -1,38 +1,116 @@
 #!/usr/bin/env bash
-# npm test: set up what is missing, then format + lint + types, native tests, wasm build,
-# unit tests (with the real wasm under Node) and browser tests against Debian's Chromium.
+# npm test: set up what is missing, then format + lint + types, native build and tests, wasm
+# build, unit tests (with the real wasm under Node, and the bundled command line) and browser
+# tests against Debian's Chromium.
+# After set-up two lanes run at once, since neither keeps both cores busy all the time: the wasm
+# module, types and the app and CLI builds; and format, lint and the native build and tests. The
+# unit tests need both (the native fields, the wasm module, the CLI bundle); the browser tests
+# need the app build.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-start=$(date +%s)
-step() { echo ""; echo "== $* ($(( $(date +%s) - start )) s)"; }
 
-step setup
-bash scripts/setup.sh test
-# Pixar's USD reader for tests/unit/usdExport.test.ts (tests/usd/check_usd.py), made by setup
-build/usd-venv/bin/python -c 'from pxr import Usd; print("usd-core", ".".join(map(str, Usd.GetVersion())))'
+# Each phase's wall time and CPU time (of the processes it ran, user + system: on a shared machine
+# the CPU figure moves less than the wall time) go into a table printed at the end (also when a
+# phase fails), so it is plain where the run's time goes. Phases of the two lanes overlap: the
+# table gives when each started.
+now_ms() { local t=${EPOCHREALTIME/[.,]/}; echo $(( t / 1000 )); }
+cpu_now() {  # cpu=CPU ms of this (sub)shell's finished children (cutime + cstime in /proc)
+  local f
+  read -r -a f < "/proc/$BASHPID/stat"
+  cpu=$(( (f[15] + f[16]) * 1000 / ticks ))
+}
+ticks=$(getconf CLK_TCK 2>/dev/null || echo 100)
+secs() { printf '%d.%d' $(( $1 / 1000 )) $(( ($1 % 1000) / 100 )); }
+start=$(now_ms)
+mkdir -p build
+table=build/test-phases.txt
+: > "$table"
 
-step "wasm build (its type declarations are needed by tsc)"
-bash wasm-build/build.sh
+phase() {  # name command...: runs the command as one phase of the table
+  local name="$1"
+  shift
+  local s c cpu rc=0
+  s=$(now_ms)
+  cpu_now
+  c=$cpu
+  echo ""
+  echo "== $name ($(( (s - start) / 1000 )) s)"
+  # In a subshell of its own so that set -e holds within it (a `cmd || …` would switch it off)
+  set +e
+  (
+    set -e
+    "$@"
+  )
+  rc=$?
+  set -e
+  cpu_now
+  printf '%s\t%s\t%s\t%s\t%s\n' "$(( s - start ))" "$(( $(now_ms) - s ))" "$(( cpu - c ))" \
+    "$name" "$([ "$rc" = 0 ] || echo failed)" >> "$table"
+  return "$rc"
+}
 
-step "format and lint"
-mapfile -t cxx < <(git ls-files 'solver-cpp/*.cpp' 'solver-cpp/*.hpp' 'wasm-build/*.cpp' 'tests/native/*.cpp' 2>/dev/null || true)
-if [ ${#cxx[@]} -gt 0 ]; then clang-format --dry-run -Werror "${cxx[@]}"; fi
-npx biome check web tests scripts vite.config.ts playwright.config.ts
-npx tsc --noEmit -p tsconfig.json
+timing_table() {
+  local cpu
+  cpu_now
+  echo ""
+  echo "npm test, time per phase (lanes overlap: see where each starts):"
+  printf '  %8s %10s %10s  %s\n' start wall cpu phase
+  sort -n "$table" | while IFS=$'\t' read -r s w c name failed; do
+    printf '  %6s s %8s s %8s s  %s%s\n' "$(( s / 1000 ))" "$(secs "$w")" "$(secs "$c")" "$name" \
+      "${failed:+  (failed)}"
+  done
+  printf '  %6s   %8s s %8s s  total\n' "" "$(secs $(( $(now_ms) - start )))" "$(secs "$cpu")"
+}
+trap 'status=$?; timing_table; if [ "$status" != 0 ]; then echo "npm test: failed"; fi' EXIT
 
-step "native build and tests"
-cmake -S solver-cpp -B build/native -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build/native
-ctest --test-dir build/native --output-on-failure -j2
+setup() {
+  bash scripts/setup.sh test
+  # Pixar's USD reader for tests/unit/usdExport.test.ts (tests/usd/check_usd.py), made by setup
+  build/usd-venv/bin/python -c 'from pxr import Usd; print("usd-core", ".".join(map(str, Usd.GetVersion())))'
+}
+format_lint() {
+  local cxx
+  mapfile -t cxx < <(git ls-files 'solver-cpp/*.cpp' 'solver-cpp/*.hpp' 'wasm-build/*.cpp' 'tests/native/*.cpp' 2>/dev/null || true)
+  if [ ${#cxx[@]} -gt 0 ]; then clang-format --dry-run -Werror "${cxx[@]}"; fi
+  npx biome check web tests scripts vite.config.ts vite.cli.config.ts playwright.config.ts
+}
+native_build() {
+  cmake -S solver-cpp -B build/native -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake --build build/native
+}
+web_build() {
+  npx vite build --logLevel warn
+  npx vite build -c vite.cli.config.ts
+}
+lane_wasm_web() {
+  phase "wasm build" bash wasm-build/build.sh
+  phase "types (tsc; needs the wasm module's declarations)" npx tsc --noEmit -p tsconfig.json
+  phase "web build (app, CLI bundle)" web_build
+}
+lane_native() {
+  phase "format and lint" format_lint
+  phase "native build" native_build
+  phase "native tests (ctest)" ctest --test-dir build/native --output-on-failure -j2
+}
+lanes() {  # runs both lanes at once; prints each lane's output whole, when it is done
+  local logs=build/test-logs a b ra=0 rb=0
+  mkdir -p "$logs"
+  lane_wasm_web > "$logs/wasm-web.log" 2>&1 &
+  a=$!
+  lane_native > "$logs/native.log" 2>&1 &
+  b=$!
+  wait "$a" || ra=$?
+  cat "$logs/wasm-web.log"
+  wait "$b" || rb=$?
+  cat "$logs/native.log"
+  [ "$ra" = 0 ] && [ "$rb" = 0 ]
+}
 
-step "unit tests (vitest, Node, real wasm)"
-npx vitest run
+phase setup setup
+lanes
+phase "unit tests (vitest, Node, real wasm)" npx vitest run
+phase "browser tests (Playwright, Debian Chromium)" npx playwright test
 
-step "web build"
-npx vite build --logLevel warn
-
-step "browser tests (Playwright, Debian Chromium)"
-npx playwright test
-
-echo ""
-echo "npm test: all passed in $(( $(date +%s) - start )) s"
+trap - EXIT
+timing_table
+echo "npm test: all passed"

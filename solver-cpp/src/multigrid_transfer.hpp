@@ -62,6 +62,7 @@ Transfer3D makeTransfer(int nx, int ny, int nz);
 // Scratch space of the axis-by-axis transfers (reused between calls).
 struct TransferWork {
   std::vector<double> t1, t2;
+  std::vector<int> zFirst, zLast;  // restrictTranspose: the fine planes each coarse plane reads
 };
 
 // Both run in parallel over z planes (each output value is computed by one thread, in the same

@@ -3,8 +3,11 @@ import { mkdtempSync, readFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
-import { main } from '../../web/cli/main';
 import { constraintStates, decodeProblem, type Problem } from '../../web/cli/problem';
+import { bundledCli } from './cliBundle';
+
+// The bundled command line (what `npx hairsketch` runs), built from web/cli/.
+const { main } = await bundledCli();
 
 const FIXTURE = 'tests/fixtures/problem-small.json';
 

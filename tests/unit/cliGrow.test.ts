@@ -14,10 +14,13 @@ import {
 import { tmpdir } from 'node:os';
 import { join, resolve } from 'node:path';
 import { afterEach, beforeAll, beforeEach, describe, expect, it, vi } from 'vitest';
-import { main } from '../../web/cli/main';
 import { presetSession } from '../../web/cli/presetSession';
 import { Head } from '../../web/head/head';
 import { encodeSessionLink } from '../../web/model/sessionLink';
+import { bundledCli } from './cliBundle';
+
+// The bundled command line (what `npx hairsketch` runs), built from web/cli/.
+const { main } = await bundledCli();
 
 const head = Head.builtin();
 const session = presetSession('default', head, '25k', 0);

@@ -1,6 +1,7 @@
 // `hairsketch grow` when writing fails half-way (the writer throws after its first chunk): exit
 // code 1 (an internal error), one line on stderr, and neither the output nor its temporary file
-// is left behind; an existing file at --out keeps its contents.
+// is left behind; an existing file at --out keeps its contents. It runs the sources, not the
+// bundled command line: the failing writer is a mock of a source module.
 import { mkdtempSync, readdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';

@@ -10,13 +10,16 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { afterEach, beforeAll, beforeEach, describe, expect, it, vi } from 'vitest';
 import { loadHeadUnderNode } from '../../web/cli/head';
-import { main } from '../../web/cli/main';
 import { presetSession } from '../../web/cli/presetSession';
 import { Head } from '../../web/head/head';
 import { type LoadedHead, loadHeadFile } from '../../web/head/loadHead';
 import type { HeadRef, SessionState } from '../../web/model/session';
 import { writeSessionFile } from '../../web/model/sessionFile';
 import type { Vec3 } from '../../web/model/vec3';
+import { bundledCli } from './cliBundle';
+
+// The bundled command line (what `npx hairsketch` runs), built from web/cli/.
+const { main } = await bundledCli();
 
 const builtin = Head.builtin();
 const base = presetSession('default', builtin, '25k', 0);

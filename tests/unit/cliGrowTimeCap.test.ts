@@ -4,9 +4,12 @@ import { mkdtempSync, readdirSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { afterEach, expect, it, vi } from 'vitest';
-import { main } from '../../web/cli/main';
 import { presetSession } from '../../web/cli/presetSession';
 import { Head } from '../../web/head/head';
+import { bundledCli } from './cliBundle';
+
+// The bundled command line (what `npx hairsketch` runs), built from web/cli/.
+const { main } = await bundledCli();
 
 afterEach(() => vi.restoreAllMocks());
 

@@ -24,7 +24,7 @@ import {
   SESSION_MIGRATIONS,
   SESSION_VERSION,
 } from '../../web/model/sessionMigrations';
-import { DEFAULT_CAMERA } from '../../web/viewer/viewer';
+import { DEFAULT_CAMERA } from '../../web/viewer/defaultCamera';
 
 const head = Head.builtin();
 

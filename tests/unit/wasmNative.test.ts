@@ -1,12 +1,15 @@
 // The wasm module gives the same fields as the native build (<= 1e-12 relative) on shared
 // fixtures. The native fields come from tests/native/solve_problem.cpp, which ctest runs (npm test
 // runs ctest before vitest) into build/native/native-fields/<fixture>/; the wasm fields come from
-// `hairsketch solve` (web/cli/main.ts, the real wasm under Node) on the same PROBLEM.json.
+// `hairsketch solve` (the bundled command line, the real wasm under Node) on the same PROBLEM.json.
 import { existsSync, mkdtempSync, readFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
-import { main } from '../../web/cli/main';
+import { bundledCli } from './cliBundle';
+
+// The bundled command line (what `npx hairsketch` runs), built from web/cli/.
+const { main } = await bundledCli();
 
 const NATIVE_DIR = 'build/native/native-fields';
 const FIXTURES = ['problem-small', 'problem-edits'];

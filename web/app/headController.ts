@@ -23,8 +23,9 @@ import { applyScalpPaint, forEachCovered, type ScalpPaintStroke } from '../head/
 import { fitSymmetryPlane } from '../head/symmetryPlane';
 import type { HeadRef, ScalpStroke, SessionState } from '../model/session';
 import type { ScalpMesh } from '../solver/protocol';
+import { DEFAULT_CAMERA } from '../viewer/defaultCamera';
 import { paintHeadTriangles, recolorHeadScalp, setHeadGeometry } from '../viewer/headMaterial';
-import { DEFAULT_CAMERA, type Viewer } from '../viewer/viewer';
+import type { Viewer } from '../viewer/viewer';
 import { frameBounds } from '../viewer/viewMath';
 
 export interface HeadControllerDeps {

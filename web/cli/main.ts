@@ -12,7 +12,6 @@ import { fileURLToPath } from 'node:url';
 import { SolverError } from '../solver/engine';
 import { loadRawSolver, type RawSolveProgress } from '../solver/wasmEngine';
 import { CliError, parseSeconds } from './errors';
-import { runGrow } from './grow';
 import { constraintStates, decodeProblem } from './problem';
 
 const SOLVE_USAGE =
@@ -66,15 +65,23 @@ function parseArgs(argv: string[]): {
   return { command, problem, out, solver, maxSeconds, progressSeconds };
 }
 
-/** The wasm module's bytes (built by wasm-build/build.sh into web/generated/). */
+// Set by the bundle's build (vite.cli.config.ts), which puts the wasm module beside the bundle.
+declare const __CLI_WASM_BESIDE__: string | undefined;
+
+/** The wasm module's bytes (built by wasm-build/build.sh into web/generated/; the bundled
+ *  command line carries a copy beside itself). */
 function wasmBinary(): Uint8Array {
   const here = dirname(fileURLToPath(import.meta.url));
-  return readFileSync(resolve(here, '../generated/hairsolver.wasm'));
+  const beside = typeof __CLI_WASM_BESIDE__ === 'string' ? __CLI_WASM_BESIDE__ : null;
+  return readFileSync(resolve(here, beside ?? '../generated/hairsolver.wasm'));
 }
 
 export async function main(argv: string[]): Promise<number> {
   try {
     if (argv[0] === 'grow') {
+      // Loaded only for `grow`: it brings the head code (three.js and its loaders), which `solve`
+      // does not need and would otherwise pay for at every start.
+      const { runGrow } = await import('./grow');
       await runGrow(argv.slice(1), { wasmBinary: wasmBinary() }, (line) =>
         process.stdout.write(`${line}\n`),
       );

@@ -5,7 +5,7 @@ import type { Head } from '../head/head';
 import { type GridPreset, gridForPreset } from '../model/grid';
 import { applyPreset, type PresetName } from '../model/presets';
 import { DEFAULT_GROWTH, emptySession, type SessionState } from '../model/session';
-import { DEFAULT_CAMERA } from '../viewer/viewer';
+import { DEFAULT_CAMERA } from '../viewer/defaultCamera';
 
 export function presetSession(
   name: PresetName,

@@ -20,6 +20,7 @@ import type { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js
 import { KEY_LIGHT_POSITION } from '../lighting/keyLight';
 import type { Vec3 } from '../model/vec3';
 import { CameraRig } from './cameraRig';
+import { DEFAULT_CAMERA } from './defaultCamera';
 import { type FrameMode, type FramePlan, OverlayWait } from './frameCache';
 import { HairLevelOfDetail, INTERACTIVE_RESOLUTION } from './hairLevelOfDetail';
 import { LayeredDrawing } from './layeredDrawing';
@@ -35,8 +36,6 @@ const OVERLAY_WAIT_MS = 50;
 /** Frames between a settled view drawn at interactive detail and its full-detail frame: the
  *  former is presented (with whatever the page changed meanwhile) before the latter's GPU work. */
 const FULL_DETAIL_DELAY_FRAMES = 1;
-
-export const DEFAULT_CAMERA = { position: [2.6, 0.9, 7.0] as Vec3, target: [0, -0.55, 0] as Vec3 };
 
 export { type FrameMode, frameDetail } from './frameCache';
 export type { CurveView } from './overlayLayer';
