@@ -13,6 +13,8 @@
 // Each stroke's row also counts the frames drawn while drawing by where they started (the frame
 // cache: cached head and hair / cached head / nothing).
 // BENCH_DIST=<dir> serves another build (vite build --outDir <dir>) instead of dist/.
+// BENCH_TOOL=Braid draws the strokes with the Braid tool (its previews solve the braid being
+// drawn) and writes bench-results/browser-braid.{json,md}.
 import { type ChildProcess, spawn } from 'node:child_process';
 import { chromium, type Page } from '@playwright/test';
 import { writeBenchResults } from './benchResults.mjs';
@@ -29,6 +31,7 @@ const configs = (process.env.BENCH_CONFIGS ?? '25k:fast,50k:fast,250k:fast,25k:e
 const STROKES = Number(process.env.BENCH_STROKES ?? 5);
 const FRAMES = Number(process.env.BENCH_FRAMES ?? 5);
 const DENSE = process.env.BENCH_DENSE !== '0';
+const TOOL = process.env.BENCH_TOOL ?? 'Stream curve';
 const trace = (m: string): void => {
   if (process.env.BENCH_TRACE)
     console.error(`[bench ${new Date().toISOString().slice(11, 23)}] ${m}`);
@@ -270,7 +273,7 @@ async function main(): Promise<void> {
       }
       const idle = await frameFigures(page);
       trace(`idle frame ${idle.frameMs.toFixed(0)} ms`);
-      await page.getByRole('button', { name: 'Stream curve' }).click();
+      await page.getByRole('button', { name: TOOL, exact: true }).click();
       await page.evaluate(() => window.hairsketch.idle());
       const strokes: StrokeResult[] = [];
       for (let i = 0; i < STROKES; i++) strokes.push(await stroke(page, i));
@@ -338,13 +341,14 @@ async function main(): Promise<void> {
         `- ${r.grid} ${r.solver}: first look: ${b(r.firstBreakdown)}; converged: ${b(r.convergedBreakdown)}; full hair: ${b(r.fullBreakdown)}; previews: ${b(r.previewBreakdown)}`,
       );
   console.log(`\n${out.join('\n')}`);
-  writeBenchResults('browser', {
+  writeBenchResults(TOOL === 'Braid' ? 'browser-braid' : 'browser', {
     title: 'Browser: from a stroke to hair on screen, per grid and solver',
     script: 'scripts/bench-browser.ts',
     command: 'npm run bench:browser',
     measures:
       "The built app in Debian's Chromium (headless, software WebGL through SwiftShader), " +
-      `default preset, ${STROKES} strokes per configuration drawn at a hand's pace. Per ` +
+      `default preset, ${STROKES} strokes per configuration drawn at a hand's pace with the ` +
+      `${TOOL} tool. Per ` +
       'configuration: page load → first hair; pointer-up → first new hair, → the converged ' +
       "field's hair, → the final hair with every strand (medians, from the page's data-revision " +
       'stamps taken when drawn); preview updates per second while drawing; the wasm heap; the ' +
@@ -357,6 +361,7 @@ async function main(): Promise<void> {
       strokes: STROKES,
       frames: FRAMES,
       dense: DENSE,
+      tool: TOOL,
       dist: process.env.BENCH_DIST ?? 'dist',
     },
     results: rows,

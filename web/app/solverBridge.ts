@@ -7,7 +7,13 @@
 import type { Editor, EditorChange, StrokeInProgress } from '../editor/editor';
 import { packCurves, packHairOptions } from '../model/curveSet';
 import { gridForSession, sameGrid } from '../model/grid';
-import { hangLength, newCurveExtends, type SessionState } from '../model/session';
+import {
+  defaultParams,
+  hangLength,
+  newCurveExtends,
+  type SessionState,
+  type StyleCurve,
+} from '../model/session';
 import { needsSolve } from '../model/sessionSchema';
 import type { Vec3 } from '../model/vec3';
 import type { GridSpec, ScalpMesh, SolverErrorKind, SolverName } from '../solver/protocol';
@@ -144,13 +150,16 @@ export class SolverBridge {
     if (stroke.points.length < 3) return;
     this.lastAsked = 'preview';
     const s = this.editor.session;
-    const draft = {
+    const base = {
       id: '~draft',
-      type: 'stream' as const,
       points: stroke.points as Vec3[],
       extend: newCurveExtends(s),
       viewpoint: stroke.viewpoint,
     };
+    const draft: StyleCurve =
+      stroke.kind === 'braid'
+        ? { ...base, type: 'braid', ...defaultParams('braid') }
+        : { ...base, type: 'stream' };
     const cap = this.lightCap(s);
     const curves = [...s.curves, draft];
     this.client.request(

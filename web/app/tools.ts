@@ -202,7 +202,7 @@ export function createTools(d: ToolDeps): ToolSet {
     }),
     ponytail,
     // a braid's stroke is drawn as a stream curve is (the depth rule past the scalp), without
-    // hint strokes and without a stream curve's preview
+    // hint strokes; its preview is the braid it will make
     braid: new StreamCurveTool({
       sample,
       eye,
@@ -223,7 +223,10 @@ export function createTools(d: ToolDeps): ToolSet {
           what: `braid {id} (${points.length - 1} segments)`,
           mirror: d.mirror(),
         }),
-      preview: () => {},
+      preview: (points) => {
+        viewer.expectHair(points !== null);
+        editor.setStroke(points && { points, viewpoint: camera(), kind: 'braid' });
+      },
       notify: d.notify,
     }),
     bun: new BunTool({

@@ -22,6 +22,8 @@ export interface StrokeInProgress {
   readonly points: readonly Vec3[];
   /** The camera it is drawn from (its curve's viewpoint). */
   readonly viewpoint: Viewpoint;
+  /** The curve it will make (default: a stream curve); previews solve it as that kind. */
+  readonly kind?: 'stream' | 'braid';
 }
 
 /** One change, as subscribers see it. */
