@@ -293,6 +293,14 @@ EMSCRIPTEN_KEEPALIVE int32_t hs_engine_head_stats(EngineHandle* h, double* out) 
   return HS_OK;
 }
 
+// The session's settings (solver-cpp/src/engine_settings.hpp): count numbers at values.
+EMSCRIPTEN_KEEPALIVE int32_t hs_engine_set_settings(EngineHandle* h, const double* values,
+                                                    int32_t count) {
+  if (!h) return fail(HS_INVALID_INPUT, "set_settings: no engine");
+  if (count < 0) return fail(HS_INVALID_INPUT, "set_settings: negative count");
+  return report(h->engine.setSettings(values, size_t(count)));
+}
+
 // Natural fall on (1) or off (0) for the curves of the next set_curves (HairEngine::setFall).
 EMSCRIPTEN_KEEPALIVE int32_t hs_engine_set_fall(EngineHandle* h, int32_t on) {
   if (!h) return fail(HS_INVALID_INPUT, "set_fall: no engine");

@@ -51,6 +51,7 @@ export interface HairSolverModule {
   _hs_engine_forget_warm_start(h: number): number; // 1: the next iterate starts from zero
   _hs_engine_defer_preconditioner_update(h: number): void;
   _hs_engine_set_fall(h: number, on: number): number;
+  _hs_engine_set_settings(h: number, values: number, count: number): number;
   _hs_engine_grow(h: number, growthIn: number): number; // GROWTH_INPUT
   _hs_engine_strand_points(h: number): number;
   _hs_engine_strand_point_count(h: number): number;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <limits>
 #include <string>
 
@@ -164,6 +165,18 @@ Status HairEngine::setDetail(std::vector<DetailParams> groups, std::vector<int32
   detail_ = std::move(groups);
   curveGroup_ = std::move(curveGroup);
   return Status::Ok();
+}
+
+Status HairEngine::setSettings(const double* values, size_t count) {
+  if (count != kEngineSettingCount || (count > 0 && !values))
+    return Status::Error(StatusCode::InvalidInput,
+                         "settings: " + std::to_string(kEngineSettingCount) + " numbers, not " +
+                             std::to_string(count));
+  for (size_t k = 0; k < count; ++k)
+    if (!std::isfinite(values[k]))
+      return Status::Error(StatusCode::NonFinite,
+                           "settings: value " + std::to_string(k) + " is not finite");
+  return setFall(values[kSettingFall] != 0);
 }
 
 Status HairEngine::setCurves(const CurveSetView& curves) {

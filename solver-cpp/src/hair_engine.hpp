@@ -9,6 +9,7 @@
 
 #include "constraints.hpp"
 #include "curve_set.hpp"
+#include "engine_settings.hpp"
 #include "field_solver.hpp"
 #include "gathered_tail.hpp"
 #include "grid.hpp"
@@ -45,6 +46,10 @@ class HairEngine {
   // curve ends and lets a curve take hair over the face. Off (the default) is the paper's method
   // exactly. Takes effect for the curves of the next setCurves.
   Status setFall(bool on);
+  // The session's settings (engine_settings.hpp: kEngineSettingCount numbers, finite), each
+  // handed to what reads it (fall: setFall). A wrong count or a non-finite value is refused and
+  // nothing changes.
+  Status setSettings(const double* values, size_t count);
   bool fall() const { return fall_; }
   // Curves -> constraints -> solver (the solver diffs against its previous set).
   Status setCurves(const CurveSetView& curves);

@@ -8,6 +8,7 @@
 // session's growth parameters (the strand cap replaced when the caller gives one).
 import { packCurves, packHairOptions } from '../model/curveSet';
 import type { SessionState } from '../model/session';
+import { engineSettings } from '../model/sessionSchema';
 import { type SolverEngine, SolverError } from '../solver/engine';
 import type { GridSpec, ScalpMesh, SolverName, StrandArrays } from '../solver/protocol';
 import { avoidanceOptions } from '../solver/workerLogic';
@@ -68,7 +69,7 @@ export function growSessionHair(
   const curves = packCurves(session.curves, null, !!session.fall);
   const options = packHairOptions(session, session.curves);
   engine.setDetail?.(options.detail);
-  engine.setFall?.(options.fall);
+  engine.setSettings?.(engineSettings(options));
   engine.setCurves(curves);
   let p = engine.iterate(SLICE_ITERATIONS, tolerance);
   let fraction = 0; // reported fractions never fall back (the error estimate is not monotonic)

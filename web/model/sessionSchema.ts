@@ -108,6 +108,14 @@ export function needsSolve(prev: object, next: object): boolean {
 }
 
 /** A session's settings with defaults spelled out, for a solve (HairOptions without detail). */
+/** The settings a solve request carries, as the engine reads them (solver-cpp/src/
+ *  engine_settings.hpp): one number per 'request' setting in table order, flags as 0 or 1. */
+export function engineSettings(v: SessionSettingValues): Float64Array {
+  const names = SETTING_NAMES.filter((k) => settingSpec(k).hair === 'request');
+  const values = v as Record<string, boolean | number>;
+  return Float64Array.from(names, (k) => Number(values[k]));
+}
+
 export function settingValues(s: SessionSettings): SessionSettingValues {
   const out: Record<string, boolean | number> = {};
   for (const k of SETTING_NAMES) {

@@ -25,10 +25,10 @@ export interface SolverEngine {
   setScalpMask?(scalp: Uint8Array): void;
   /** Detail applied by grow (curl, clump, frizz, length jitter); optional (test fakes). */
   setDetail?(detail: DetailArrays): void;
-  /** Natural fall (solver-cpp/src/hair_fall.hpp) for the curves of the next setCurves: the
-   *  prior towards hanging hair, curves' hair ending where they end, curves taking hair over the
-   *  face. Off is the paper's method exactly. Optional (test fakes). */
-  setFall?(on: boolean): void;
+  /** The session's settings for the curves of the next setCurves, as
+   *  sessionSchema.ts engineSettings packs them (solver-cpp/src/engine_settings.hpp reads them:
+   *  natural fall, for one). Optional (test fakes). */
+  setSettings?(values: Float64Array): void;
   /** Derive constraints from the curves and hand them to the solver (diffed in C++). */
   setCurves(curves: CurveSet): void;
   /** Solve the field for the current constraints. */

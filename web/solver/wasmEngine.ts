@@ -246,8 +246,10 @@ class WasmEngine implements SolverEngine {
     this.mod._hs_engine_defer_preconditioner_update(this.h());
   }
 
-  setFall(on: boolean): void {
-    check(this.mod, this.mod._hs_engine_set_fall(this.h(), on ? 1 : 0));
+  setSettings(values: Float64Array): void {
+    const h = this.h();
+    const m = this.mod;
+    withInputs(m, [values], ([v]) => check(m, m._hs_engine_set_settings(h, v, values.length)));
   }
 
   grow(g: GrowthParams): StrandArrays {

@@ -14,6 +14,7 @@
 // A 'scalpMask' message changes the scalp at once (no restart, nothing else rebuilt); a 'grid'
 // message moves the engine to another grid in place (the head stays).
 import { ResultLighting } from '../lighting/resultLighting';
+import { engineSettings } from '../model/sessionSchema';
 import { everyOtherPoint } from '../model/strandSubsample';
 import { lineAttributes } from '../viewer/strandAttributes';
 import { type IterateProgress, type SolverEngine, SolverError } from './engine';
@@ -228,7 +229,7 @@ export class WorkerLogic {
     const t0 = o.now();
     this.post({ type: 'progress', id: job.id, phase: 'constraints', fraction: 0 });
     this.engine.setDetail?.(job.options.detail);
-    this.engine.setFall?.(job.options.fall);
+    this.engine.setSettings?.(engineSettings(job.options));
     // a full solve's first look runs a few warm iterations and forgetWarmStart then rebuilds the
     // preconditioner from the penalties alone: its incremental update would be thrown away
     if (job.mode !== 'preview') this.engine.deferPreconditionerUpdate?.();

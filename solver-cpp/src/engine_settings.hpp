@@ -1,0 +1,17 @@
+// The session's settings the engine reads, as one array of numbers (flags 0 or 1): their index,
+// in the order of web/model/sessionSchema.ts SESSION_SETTINGS (every setting that goes with a
+// solve request, flags included). Adding a setting that changes the hair: a row there, an index
+// here (before the count), and the code that reads it.
+#pragma once
+
+#include <cstddef>
+
+namespace hairsketch {
+
+enum EngineSetting : size_t {
+  kSettingAvoidScalp,  // read by the worker (scalp avoidance), not by the engine
+  kSettingFall,        // natural fall (HairEngine::setFall)
+  kEngineSettingCount
+};
+
+}  // namespace hairsketch

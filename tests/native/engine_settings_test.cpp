@@ -1,0 +1,26 @@
+// HairEngine::setSettings: the session's settings as one array (engine_settings.hpp). A wrong
+// count or a non-finite value is refused and changes nothing; the fall entry sets natural fall.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "hair_engine.hpp"
+
+using namespace hairsketch;
+
+TEST(EngineSettings, FallFollowsItsEntryAndBadArraysChangeNothing) {
+  HairEngine e;
+  double v[kEngineSettingCount] = {};
+  v[kSettingFall] = 1;
+  ASSERT_TRUE(e.setSettings(v, kEngineSettingCount).ok());
+  EXPECT_TRUE(e.fall());
+  v[kSettingFall] = 0;
+  EXPECT_EQ(e.setSettings(v, kEngineSettingCount - 1).code, StatusCode::InvalidInput);
+  EXPECT_TRUE(e.fall());
+  v[kSettingAvoidScalp] = std::nan("");
+  EXPECT_EQ(e.setSettings(v, kEngineSettingCount).code, StatusCode::NonFinite);
+  EXPECT_TRUE(e.fall());
+  v[kSettingAvoidScalp] = 1;
+  ASSERT_TRUE(e.setSettings(v, kEngineSettingCount).ok());
+  EXPECT_FALSE(e.fall());
+}
