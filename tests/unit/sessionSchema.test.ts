@@ -10,6 +10,7 @@ import { X_PLANE } from '../../web/model/mirror';
 import type { SessionState } from '../../web/model/session';
 import { parseSession } from '../../web/model/sessionFile';
 import {
+  engineSettings,
   needsSolve,
   REQUEST_FIELDS,
   SESSION_FIELD_NAMES,
@@ -77,5 +78,12 @@ describe('session schema', () => {
     const params = curves.params.slice();
     params[0] += 1e-4;
     expect(hairRequestKey({ ...curves, params }, s.growth, options)).not.toBe(key);
+  });
+});
+
+describe('engine settings', () => {
+  it("pack every 'request' setting in table order, flags as 0 or 1 (engine_settings.hpp)", () => {
+    expect([...engineSettings({ avoidScalp: true, fall: false })]).toEqual([1, 0]);
+    expect([...engineSettings({ avoidScalp: false, fall: true })]).toEqual([0, 1]);
   });
 });
