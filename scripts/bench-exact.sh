@@ -31,7 +31,7 @@ mkdir -p "$(dirname "$base")"
 out="$base.jsonl"
 : > "$out"
 
-cmake -S solver-cpp -B build/native -G Ninja -DCMAKE_BUILD_TYPE=Release > /dev/null
+cmake -S solver-cpp -B build/native -G Ninja -DCMAKE_BUILD_TYPE=Release -DHAIRSKETCH_BENCH=ON > /dev/null
 cmake --build build/native --target exact_bench > /dev/null
 if [ "$wasm" = 1 ]; then bash wasm-build/bench.sh "$root/build/wasm-bench" > /dev/null; fi
 

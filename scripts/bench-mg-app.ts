@@ -27,8 +27,13 @@ const grids = (
 const head = Head.builtin();
 const dir = 'build/bench/mg-app';
 mkdirSync(dir, { recursive: true });
-if (builds.length === 1)
+if (builds.length === 1) {
+  // npm test configures build/native without the benchmarks
+  execFileSync('cmake', ['-S', 'solver-cpp', '-B', builds[0], '-DHAIRSKETCH_BENCH=ON'], {
+    stdio: 'ignore',
+  });
   execFileSync('cmake', ['--build', builds[0], '--target', 'mg_bench'], { stdio: 'ignore' });
+}
 
 async function write(session: SessionState, spec: GridSpec, file: string) {
   const engine = await loadSolverEngine(singleNodeOptions());

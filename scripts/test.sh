@@ -75,7 +75,7 @@ format_lint() {
   npx biome check web tests scripts vite.config.ts vite.cli.config.ts playwright.config.ts
 }
 native_build() {
-  cmake -S solver-cpp -B build/native -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake -S solver-cpp -B build/native -G Ninja -DCMAKE_BUILD_TYPE=Release -DHAIRSKETCH_BENCH=OFF >/dev/null
   cmake --build build/native
 }
 web_build() {

@@ -125,3 +125,22 @@ test('a bun drawn as a loop on the head: the session holds it, the hair changes,
   await settled(page, after.revision);
   expect(await page.evaluate(() => window.hairsketch.hairHash())).toBe(empty.hash);
 });
+
+for (const preset of ['braid', 'bun', 'pigtail-braids']) {
+  test(`${preset}: no hair inside the head, also with curl`, async ({ page }) => {
+    await page.goto(`/?preset=${preset}&strands=3000`);
+    const first = await settled(page);
+    expect(first.strands).toBeGreaterThan(2000);
+    const inside = await page.evaluate(() => window.hairsketch.segmentsInsideHead(0.01));
+    console.log(`${preset}: ${JSON.stringify(inside)} segments deeper than 1 mm in the head`);
+    expect(inside.inside).toBe(0);
+    // detail on top of the laid tails keeps the same rule
+    await page.getByRole('button', { name: 'Detail' }).click();
+    await page
+      .getByRole('region', { name: 'Hair detail' })
+      .getByRole('checkbox', { name: 'Curl' })
+      .check();
+    await settled(page, first.revision);
+    expect(await page.evaluate(() => window.hairsketch.segmentsInsideHead(0.01).inside)).toBe(0);
+  });
+}
