@@ -385,9 +385,10 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
   std::vector<uint32_t> key(n);
   for (size_t k = 0; k < n; ++k) key[k] = uint32_t(capped_ ? k * total / n : k);
   if (s.ok() && !tails_.empty()) {
+    // laid strands keep to the 255 points engines take (detail's cap too)
     const TailStats ts = gatherTails(tails_, R, key, rp.seed, float(gp.stepFraction * grid_.step),
-                                     size_t(std::max(gp.maxSegments, 1)) + 1, strands_,
-                                     float(std::min(gp.maxLength, 1e6)));
+                                     std::min<size_t>(size_t(std::max(gp.maxSegments, 1)) + 1, 255),
+                                     strands_, float(std::min(gp.maxLength, 1e6)));
     // growth kept the rest outside already
     if (head && ts.captured > 0) keepOutsideHead(*head, float(gp.margin), strands_, &ts.strands);
   }
