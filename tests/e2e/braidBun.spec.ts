@@ -3,7 +3,7 @@
 // takes them away; Mirror doubles a braid; a loop that leaves the head makes nothing and says why.
 // Waits on the status attributes and the session, never on fixed sleeps.
 import { expect, type Page, test } from '@playwright/test';
-import { settled, status, strokeFromScalp } from './helpers';
+import { settled, shoot, status, strokeFromScalp } from './helpers';
 
 type V3 = [number, number, number];
 interface Curve {
@@ -59,6 +59,7 @@ test('a braid drawn from the scalp: the session holds it, the hair changes, Undo
   ]);
   const hash = await page.evaluate(() => window.hairsketch.hairHash());
   expect(hash).not.toBe(empty.hash);
+  await shoot(page, 'hand-braid');
 
   await page.getByRole('button', { name: 'Undo' }).click();
   await curveCount(page, 0);
@@ -73,6 +74,7 @@ test('Mirror doubles a braid: two braids, twins of each other', async ({ page })
   await strokeFromScalp(page, 78, 135, 90, 230);
   await curveCount(page, 2);
   await settled(page, empty.rev);
+  await shoot(page, 'hand-braids-mirrored');
   const [a, b] = await curves(page);
   expect([a.type, b.type]).toEqual(['braid', 'braid']);
   expect(a.mirror).toBe(b.id);
@@ -119,6 +121,7 @@ test('a bun drawn as a loop on the head: the session holds it, the hair changes,
   await drag(loop(2000).map((p) => ({ x: Math.max(2, p.x), y: Math.max(2, p.y) })));
   await expect(page.getByTestId('status')).toContainText(/bun/i);
   expect((await curves(page)).length).toBe(1);
+  await shoot(page, 'hand-bun');
 
   await page.getByRole('button', { name: 'Undo' }).click();
   await curveCount(page, 0);

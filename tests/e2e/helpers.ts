@@ -75,3 +75,23 @@ export async function visibleCurvePoint(page: Page): Promise<{ id: string; x: nu
   if (!target) throw new Error('no curve on screen');
   return target;
 }
+
+/** With SHOT_DIR set, pictures of the hair from the front, the side and the back (for a person
+ *  to look at; nothing is compared). */
+export async function shoot(page: Page, name: string): Promise<void> {
+  const dir = process.env.SHOT_DIR;
+  if (!dir) return;
+  const views: [string, [number, number, number]][] = [
+    ['front', [0.6, 0.6, 7.5]],
+    ['side', [7.5, 0.6, -0.4]],
+    ['back', [-0.6, 1.2, -7.5]],
+  ];
+  for (const [view, p] of views) {
+    await page.evaluate(
+      (q) => window.hairsketch.setCamera(q as [number, number, number], [0, -0.6, 0]),
+      p,
+    );
+    await page.evaluate(() => window.hairsketch.idle());
+    await page.getByTestId('viewport').screenshot({ path: `${dir}/${name}-${view}.png` });
+  }
+}

@@ -3,7 +3,7 @@
 // forehead covers it, a ponytail spine drawn from the side hangs plumb seen from behind. Every
 // figure is printed. Waits on the status attributes, never on fixed sleeps.
 import { expect, type Page, test } from '@playwright/test';
-import { settled, status } from './helpers';
+import { settled, shoot, status } from './helpers';
 
 type V3 = [number, number, number];
 interface Curve {
@@ -50,23 +50,6 @@ async function emptyHead(page: Page, camera?: { position: V3; target: V3 }): Pro
   await page.evaluate(() => window.hairsketch.idle());
   await page.getByRole('button', { name: 'Stream curve' }).click();
   return (await status(page)).revision;
-}
-
-/** With SHOT_DIR set, pictures of the hair from the front, the side and the back (for a person
- *  to look at; nothing is compared). */
-async function shoot(page: Page, name: string): Promise<void> {
-  const dir = process.env.SHOT_DIR;
-  if (!dir) return;
-  const views: [string, V3][] = [
-    ['front', [0.6, 0.6, 7.5]],
-    ['side', [7.5, 0.6, -0.4]],
-    ['back', [-0.6, 1.2, -7.5]],
-  ];
-  for (const [view, p] of views) {
-    await page.evaluate((q) => window.hairsketch.setCamera(q as V3, [0, -0.6, 0]), p);
-    await page.evaluate(() => window.hairsketch.idle());
-    await page.getByTestId('viewport').screenshot({ path: `${dir}/${name}-${view}.png` });
-  }
 }
 
 /** No strand segment deeper than 1 mm inside the head (as hairOutside.spec.ts), and the count
