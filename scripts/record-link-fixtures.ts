@@ -7,7 +7,7 @@
 // Links are made once, by the encoder of the build that wrote that format, and never again: the
 // fixture is what people hold. `links 1` and `links 2` were run on the build before link
 // version 3 (version 2 written, version 1's encoder kept); `links 3` on the build that writes
-// version 3. RECORD_DIST is a `vite build --outDir <dir>` of a build from before the links'
+// version 3. RECORD_DIST (an absolute path: vite's root is web/) is a `vite build --outDir <dir>` of a build from before the links'
 // format changed, so the hash is the hair the link opened to then. Every link is opened at
 // `?strands=2000`, as the e2e scenes are; the link's own growth settings (no strand cap in these
 // sessions) decide how many strands grow.
@@ -104,6 +104,15 @@ function versionOne(): SessionState {
   } as unknown as SessionState;
 }
 
+/** Braids and buns (link version 3 with five curve kinds): mirrored braids behind the ears and a
+ *  top bun, natural fall. */
+function tailsEverything(): SessionState {
+  const s = presetSession('pigtail-braids', head);
+  const bun = presetSession('bun', head).curves.find((c) => c.type === 'bun');
+  if (!bun) throw new Error('the bun preset has no bun');
+  return quantizeSession({ ...s, curves: [...s.curves, { ...bun, id: 'bun1', height: 0.4 }] });
+}
+
 const SESSIONS: Record<string, { make: () => SessionState; covers: string; formats: number[] }> = {
   'paper-everything': {
     make: paperEverything,
@@ -116,6 +125,11 @@ const SESSIONS: Record<string, { make: () => SessionState; covers: string; forma
     covers:
       'natural fall, dividing and stream curves, mirrored twins, scalpPaint, symmetry, curly detail',
     formats: [1, 2, 3],
+  },
+  'tails-everything': {
+    make: tailsEverything,
+    covers: 'braids (mirrored twins) and a bun with its own height, natural fall',
+    formats: [3],
   },
   'version-one': {
     make: versionOne,
