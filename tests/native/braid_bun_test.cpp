@@ -16,47 +16,19 @@
 
 #include "curve_params.hpp"
 #include "gathered_tail.hpp"
+#include "hand_strands.hpp"
 
 using namespace hairsketch;
 
 namespace {
 
-constexpr float kStep = 0.05f;
+using hand_strands::kStep;
 constexpr double kPi = 3.14159265358979323846;
 
-void addStrand(const std::vector<Eigen::Vector3f>& corners, Strands& out) {
-  if (out.strandStart.empty()) out.strandStart.push_back(0);
-  for (size_t k = 0; k + 1 < corners.size(); ++k) {
-    const Eigen::Vector3f a = corners[k], b = corners[k + 1];
-    const int n = std::max(1, int(std::ceil((b - a).norm() / kStep)));
-    for (int i = (k == 0 ? 0 : 1); i <= n; ++i) {
-      const Eigen::Vector3f p = a + (float(i) / float(n)) * (b - a);
-      out.points.insert(out.points.end(), {p.x(), p.y(), p.z()});
-    }
-  }
-  out.strandStart.push_back(uint32_t(out.points.size() / 3));
-}
-
-struct Hair {
-  Strands strands;
-  std::vector<Eigen::Vector3f> roots;
-  std::vector<uint32_t> key;
-};
-
+using hand_strands::addStrand;
+using hand_strands::Hair;
 // A sheet of 41 x 3 strands from above, through a thin line at the origin, down to y = -4.5.
-Hair sheet() {
-  Hair h;
-  for (int i = 0; i <= 40; ++i)
-    for (int j = 0; j < 3; ++j) {
-      const float x = -1.f + 0.05f * float(i), z = 0.3f + 0.1f * float(j);
-      const Eigen::Vector3f root(x, 1.f, z), at(0.1f * x, 0.f, 0.02f * z);
-      h.roots.push_back(root);
-      addStrand({root, at + Eigen::Vector3f(0, 0.05f, 0), Eigen::Vector3f(at.x(), -4.5f, at.z())},
-                h.strands);
-      h.key.push_back(uint32_t(h.key.size()));
-    }
-  return h;
-}
+Hair sheet() { return hand_strands::sheet(-4.5f); }
 
 // A braid hanging straight down from the origin for 4.5 units; the head is behind it (+z).
 const BraidParams kBraid{0.6, 6, 0.5, 0.5};  // P = 1

@@ -12,13 +12,14 @@
 #include <cmath>
 #include <vector>
 
+#include "hand_strands.hpp"
 #include "ponytail_constraints.hpp"
 
 using namespace hairsketch;
 
 namespace {
 
-constexpr float kStep = 0.05f;
+using hand_strands::kStep;
 constexpr double kR = 0.15;
 
 // A spine hanging straight down from the origin to y = -3, circles of radius kR at y = 0 and -1.
@@ -32,40 +33,9 @@ GatheredTail tail() {
   return gatheredTail(spine.data(), spine.size() / 3, pp);
 }
 
-void addStrand(const std::vector<Eigen::Vector3f>& corners, Strands& out) {
-  if (out.strandStart.empty()) out.strandStart.push_back(0);
-  for (size_t k = 0; k + 1 < corners.size(); ++k) {
-    const Eigen::Vector3f a = corners[k], b = corners[k + 1];
-    const int n = std::max(1, int(std::ceil((b - a).norm() / kStep)));
-    for (int i = (k == 0 ? 0 : 1); i <= n; ++i) {
-      const Eigen::Vector3f p = a + (float(i) / float(n)) * (b - a);
-      out.points.insert(out.points.end(), {p.x(), p.y(), p.z()});
-    }
-  }
-  out.strandStart.push_back(uint32_t(out.points.size() / 3));
-}
-
-// A sheet: roots on a 41 x 3 patch above the tail, each strand running to a point of a thin line
-// on C1's plane, then straight down to y = -2.5.
-struct Sheet {
-  Strands strands;
-  std::vector<Eigen::Vector3f> roots;
-  std::vector<uint32_t> key;
-};
-
-Sheet sheet() {
-  Sheet s;
-  for (int i = 0; i <= 40; ++i)
-    for (int j = 0; j < 3; ++j) {
-      const float x = -1.f + 0.05f * float(i), z = 0.3f + 0.1f * float(j);
-      const Eigen::Vector3f root(x, 1.f, z), at(0.1f * x, 0.f, 0.02f * z);
-      s.roots.push_back(root);
-      addStrand({root, at + Eigen::Vector3f(0, 0.05f, 0), Eigen::Vector3f(at.x(), -2.5f, at.z())},
-                s.strands);
-      s.key.push_back(uint32_t(s.key.size()));
-    }
-  return s;
-}
+using hand_strands::addStrand;
+using Sheet = hand_strands::Hair;
+Sheet sheet() { return hand_strands::sheet(-2.5f); }
 
 float strandLength(const Strands& s, size_t st) {
   float L = 0;
