@@ -7,7 +7,7 @@
 import { type ChildProcess, spawn } from 'node:child_process';
 import { writeFileSync } from 'node:fs';
 import { chromium } from '@playwright/test';
-import { waitServer } from './previewServer';
+import { openWhenHairReady, waitServer } from './previewServer';
 
 const PORT = Number(process.env.RECORD_PORT ?? 4197);
 const BASE = `http://127.0.0.1:${PORT}`;
@@ -36,17 +36,7 @@ async function main(): Promise<void> {
   try {
     await waitServer(BASE);
     for (const preset of presets) {
-      const page = await browser.newPage({ viewport: { width: 800, height: 600 } });
-      await page.goto(`${BASE}/?preset=${preset}&strands=${STRANDS}`);
-      await page.waitForFunction(
-        () => {
-          const el = document.querySelector('[data-testid="status"]') as HTMLElement | null;
-          return !!el && el.dataset.state === 'ready' && Number(el.dataset.strands) > 0;
-        },
-        null,
-        { timeout: 300_000, polling: 100 },
-      );
-      await page.evaluate(() => window.hairsketch.idle());
+      const page = await openWhenHairReady(browser, `${BASE}/?preset=${preset}&strands=${STRANDS}`);
       const session = await page.evaluate(() => window.hairsketch.session());
       const hairHash = await page.evaluate(() => window.hairsketch.hairHash());
       const strands = Number(await page.getByTestId('status').getAttribute('data-strands'));

@@ -20,7 +20,7 @@ import { CURLY_DETAIL } from '../web/model/presets';
 import { quantizeSession } from '../web/model/quantize';
 import type { SessionState, StyleCurve } from '../web/model/session';
 import * as link from '../web/model/sessionLink';
-import { waitServer } from './previewServer';
+import { openWhenHairReady, waitServer } from './previewServer';
 
 const FILE = 'tests/fixtures/links.json';
 const STRANDS = 2000;
@@ -184,17 +184,10 @@ async function recordHashes() {
     await waitServer(`http://127.0.0.1:${PORT}`);
     for (const f of list) {
       if (f.hairHash) continue;
-      const page = await browser.newPage({ viewport: { width: 800, height: 600 } });
-      await page.goto(`http://127.0.0.1:${PORT}/?strands=${f.strands}${f.link}`);
-      await page.waitForFunction(
-        () => {
-          const el = document.querySelector('[data-testid="status"]') as HTMLElement | null;
-          return !!el && el.dataset.state === 'ready' && Number(el.dataset.strands) > 0;
-        },
-        null,
-        { timeout: 300_000, polling: 100 },
+      const page = await openWhenHairReady(
+        browser,
+        `http://127.0.0.1:${PORT}/?strands=${f.strands}${f.link}`,
       );
-      await page.evaluate(() => window.hairsketch.idle());
       const hash = await page.evaluate(() => window.hairsketch.hairHash());
       if (!hash) throw new Error(`${f.name} v${f.format}: no hair`);
       f.hairHash = hash;
