@@ -1,7 +1,7 @@
-// Hair detail on grown strands: length jitter, clump, curl, frizz (FORMATS.md "Detail parameters
-// as Blender names them"), applied in that order. World units (1 = 10 cm). For a strand with points
-// p_0 (root) .. p_{n-1}, arc length s_i along its current path, length L = s_{n-1} and normalised
-// arc length x_i = s_i / L (0 root .. 1 tip):
+// Hair detail on grown strands: length jitter, clump, curl, frizz (parameters as Blender names
+// them; docs/user-guide.md "Detail"), applied in that order. World units (1 = 10 cm). For a strand
+// with points p_0 (root) .. p_{n-1}, arc length s_i along its current path, length L = s_{n-1} and
+// normalised arc length x_i = s_i / L (0 root .. 1 tip):
 //
 // Shape falloff S(x; s): s = 0 -> 1; else a = min(|s|, 1), x' = x if s > 0 else 1 - x, and
 //   S = x'^(-log2(1 - a))            for a <= 0.5,

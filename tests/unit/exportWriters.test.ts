@@ -241,7 +241,7 @@ describe('formatFloat and file names', () => {
 
 // ---- .hair -------------------------------------------------------------------------------------
 
-/** An independent .hair reader from the FORMATS.md table. */
+/** An independent .hair reader from the layout in docs/export.md. */
 function parseHair(b: Uint8Array) {
   const dv = new DataView(b.buffer, b.byteOffset, b.byteLength);
   const magic = String.fromCharCode(b[0], b[1], b[2], b[3]);
@@ -265,7 +265,7 @@ function parseHair(b: Uint8Array) {
 }
 
 describe('.hair writer', () => {
-  it('matches the FORMATS.md layout exactly', () => {
+  it('matches the docs/export.md layout exactly', () => {
     const inp = input();
     const ref = strandsForExport(inp.strands, inp.session);
     const { bytes } = collect('hair', inp);

@@ -1,4 +1,4 @@
-// Cem Yuksel's `.hair` (binary, little-endian; ../shared/FORMATS.md): a 128-byte header, then
+// Cem Yuksel's `.hair` (binary, little-endian; docs/export.md "File layouts"): a 128-byte header, then
 // segments uint16[N] (points − 1 per strand), points float32[3P], thickness float32[P] (the
 // diameter, = the USD width) and colours float32[3P] (linear RGB, the strand's colour at each of
 // its points). No transparency array.

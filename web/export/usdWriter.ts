@@ -1,5 +1,5 @@
 // USD `.usda` (plain text): the hair as one linear BasisCurves prim, the head as an optional Mesh,
-// the session in the layer's customLayerData (../shared/FORMATS.md, "USD BasisCurves"). Numbers
+// the session in the layer's customLayerData (docs/export.md, "File layouts"). Numbers
 // with 6 significant digits (formatFloat); the text comes out in chunks of at most CHUNK_BYTES.
 import { formatFloat, type Progress, TextSink } from './chunkSink';
 import type { ExportStrands } from './strandsForExport';

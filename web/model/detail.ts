@@ -1,6 +1,6 @@
 // Hair detail (curl, clump, frizz, length jitter), applied to grown strands by the solver's growth
-// step (solver-cpp/src/strand_detail.hpp). Parameter names and defaults are Blender's (FORMATS.md
-// "Detail parameters"), in world units (1 unit = 10 cm). One table states every parameter: the
+// step (solver-cpp/src/strand_detail.hpp). Parameter names and defaults are Blender's
+// (docs/user-guide.md "Detail"), in world units (1 unit = 10 cm). One table states every parameter: the
 // session reader, the Detail panel and the packing for the wasm engine all read it.
 
 export interface CurlDetail {
