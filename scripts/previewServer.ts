@@ -1,6 +1,8 @@
 // Shared by the browser benchmarks: wait until `vite preview` answers at `base`.
+
+import { type ChildProcess, spawn } from 'node:child_process';
 import http from 'node:http';
-import type { Page } from '@playwright/test';
+import { type Browser, chromium, type Page } from '@playwright/test';
 
 export async function waitServer(base: string): Promise<void> {
   for (let i = 0; i < 300; i++) {
@@ -34,4 +36,23 @@ export async function openWhenHairReady(
   );
   await page.evaluate(() => window.hairsketch.idle());
   return page;
+}
+
+/** `vite preview` of the build in `dist` (an absolute path: vite's root is web/) on `port`, and
+ *  Debian's Chromium (CHROMIUM_PATH overrides) with software WebGL, as the fixture recorders use
+ *  them. */
+export async function previewAndBrowser(
+  dist: string,
+  port: number,
+): Promise<{ server: ChildProcess; browser: Browser }> {
+  const server = spawn(
+    'node_modules/.bin/vite',
+    ['preview', '--port', String(port), '--strictPort', '--outDir', dist],
+    { stdio: ['ignore', 'ignore', 'inherit'] },
+  );
+  const browser = await chromium.launch({
+    executablePath: process.env.CHROMIUM_PATH ?? '/usr/bin/chromium',
+    args: ['--no-sandbox', '--disable-gpu', '--enable-unsafe-swiftshader', '--no-first-run'],
+  });
+  return { server, browser };
 }

@@ -4,10 +4,8 @@
 //   RECORD_DIST=<dir> RECORD_LABEL=<label> npx tsx scripts/record-hair-fixtures.ts [preset ...]
 // RECORD_DIST is a `vite build --outDir <dir>` of the build to record (e.g. a worktree of an older
 // commit); the label names what it is (e.g. v3, the last session version before natural fall).
-import { type ChildProcess, spawn } from 'node:child_process';
 import { writeFileSync } from 'node:fs';
-import { chromium } from '@playwright/test';
-import { openWhenHairReady, waitServer } from './previewServer';
+import { openWhenHairReady, previewAndBrowser, waitServer } from './previewServer';
 
 const PORT = Number(process.env.RECORD_PORT ?? 4197);
 const BASE = `http://127.0.0.1:${PORT}`;
@@ -23,15 +21,7 @@ async function main(): Promise<void> {
   const presets = process.argv.slice(2).length
     ? process.argv.slice(2)
     : ['default', 'fig8', 'curly'];
-  const server: ChildProcess = spawn(
-    'node_modules/.bin/vite',
-    ['preview', '--port', String(PORT), '--strictPort', '--outDir', dist],
-    { stdio: ['ignore', 'ignore', 'inherit'] },
-  );
-  const browser = await chromium.launch({
-    executablePath: process.env.CHROMIUM_PATH ?? '/usr/bin/chromium',
-    args: ['--no-sandbox', '--disable-gpu', '--enable-unsafe-swiftshader', '--no-first-run'],
-  });
+  const { server, browser } = await previewAndBrowser(dist, PORT);
   const out: { preset: string; strands: number; session: unknown; hairHash: string }[] = [];
   try {
     await waitServer(BASE);

@@ -11,16 +11,14 @@
 // format changed, so the hash is the hair the link opened to then. Every link is opened at
 // `?strands=2000`, as the e2e scenes are; the link's own growth settings (no strand cap in these
 // sessions) decide how many strands grow.
-import { type ChildProcess, spawn } from 'node:child_process';
 import { existsSync, readFileSync, writeFileSync } from 'node:fs';
-import { chromium } from '@playwright/test';
 import { presetSession } from '../web/cli/presetSession';
 import { Head } from '../web/head/head';
 import { CURLY_DETAIL } from '../web/model/presets';
 import { quantizeSession } from '../web/model/quantize';
 import type { SessionState, StyleCurve } from '../web/model/session';
 import * as link from '../web/model/sessionLink';
-import { openWhenHairReady, waitServer } from './previewServer';
+import { openWhenHairReady, previewAndBrowser, waitServer } from './previewServer';
 
 const FILE = 'tests/fixtures/links.json';
 const STRANDS = 2000;
@@ -171,15 +169,7 @@ async function recordHashes() {
   const dist = process.env.RECORD_DIST;
   if (!dist) throw new Error('RECORD_DIST=<dir> is needed');
   const list = load();
-  const server: ChildProcess = spawn(
-    'node_modules/.bin/vite',
-    ['preview', '--port', String(PORT), '--strictPort', '--outDir', dist],
-    { stdio: ['ignore', 'ignore', 'inherit'] },
-  );
-  const browser = await chromium.launch({
-    executablePath: process.env.CHROMIUM_PATH ?? '/usr/bin/chromium',
-    args: ['--no-sandbox', '--disable-gpu', '--enable-unsafe-swiftshader', '--no-first-run'],
-  });
+  const { server, browser } = await previewAndBrowser(dist, PORT);
   try {
     await waitServer(`http://127.0.0.1:${PORT}`);
     for (const f of list) {
