@@ -14,6 +14,9 @@ export default defineConfig({
   // Two workers, one per core of the test machine (E2E_WORKERS overrides): on 13 tests they took
   // 0.6-1.0x the time of one worker on the loaded two-core machine, and no test was less stable.
   workers: Number(process.env.E2E_WORKERS ?? 2),
+  // Tests, not files, are shared out to the workers: every test opens its own page, and a file of
+  // a few long tests (strokeSays) would otherwise keep one worker busy long after the other ends.
+  fullyParallel: true,
   retries: 0,
   reporter: [['list']],
   use: {

@@ -2,10 +2,10 @@
 # npm test: set up what is missing, then format + lint + types, native build and tests, wasm
 # build, unit tests (with the real wasm under Node, and the bundled command line) and browser
 # tests against Debian's Chromium.
-# After set-up two lanes run at once, since neither keeps both cores busy all the time: the wasm
-# module, types and the app and CLI builds; and format, lint and the native build and tests. The
-# unit tests need both (the native fields, the wasm module, the CLI bundle); the browser tests
-# need the app build.
+# After set-up two lanes run at once, since neither keeps both cores busy all the time: the app
+# lane builds the wasm module, checks types, builds the app and the CLI and runs the browser
+# tests; the checks lane runs format and lint, the native build and tests, and then (once the app
+# lane has built the wasm module and the CLI bundle) the unit tests.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -82,34 +82,47 @@ web_build() {
   npx vite build --logLevel warn
   npx vite build -c vite.cli.config.ts
 }
-lane_wasm_web() {
-  phase "wasm build" bash wasm-build/build.sh
-  phase "types (tsc; needs the wasm module's declarations)" npx tsc --noEmit -p tsconfig.json
-  phase "web build (app, CLI bundle)" web_build
+logs=build/test-logs
+built="$logs/app-built"  # the app lane writes ok or failed here once its builds are done
+lane_app() {
+  local rc=0
+  phase "wasm build" bash wasm-build/build.sh || rc=$?
+  [ "$rc" = 0 ] && { phase "types (tsc; needs the wasm module's declarations)" npx tsc --noEmit -p tsconfig.json || rc=$?; }
+  [ "$rc" = 0 ] && { phase "web build (app, CLI bundle)" web_build || rc=$?; }
+  if [ "$rc" = 0 ]; then echo ok > "$built"; else echo failed > "$built"; return "$rc"; fi
+  phase "browser tests (Playwright, Debian Chromium)" npx playwright test
 }
-lane_native() {
+unit_tests() {
+  until [ -s "$built" ]; do sleep 1; done
+  if [ "$(cat "$built")" != ok ]; then
+    echo "unit tests not run: they need the wasm module and the CLI bundle, whose build failed" >&2
+    return 1
+  fi
+  npx vitest run
+}
+lane_checks() {
   phase "format and lint" format_lint
   phase "native build" native_build
   phase "native tests (ctest)" ctest --test-dir build/native --output-on-failure -j2
+  phase "unit tests (vitest, Node, real wasm; waits for the app lane's builds)" unit_tests
 }
 lanes() {  # runs both lanes at once; prints each lane's output whole, when it is done
-  local logs=build/test-logs a b ra=0 rb=0
+  local a b ra=0 rb=0
   mkdir -p "$logs"
-  lane_wasm_web > "$logs/wasm-web.log" 2>&1 &
+  rm -f "$built"
+  lane_app > "$logs/app.log" 2>&1 &
   a=$!
-  lane_native > "$logs/native.log" 2>&1 &
+  lane_checks > "$logs/checks.log" 2>&1 &
   b=$!
-  wait "$a" || ra=$?
-  cat "$logs/wasm-web.log"
   wait "$b" || rb=$?
-  cat "$logs/native.log"
+  cat "$logs/checks.log"
+  wait "$a" || ra=$?
+  cat "$logs/app.log"
   [ "$ra" = 0 ] && [ "$rb" = 0 ]
 }
 
 phase setup setup
 lanes
-phase "unit tests (vitest, Node, real wasm)" npx vitest run
-phase "browser tests (Playwright, Debian Chromium)" npx playwright test
 
 trap - EXIT
 timing_table
