@@ -32,7 +32,7 @@ export default defineConfig({
     target: 'node20',
     minify: false,
     reportCompressedSize: false,
-    // Read from disk by node, never downloaded: grow's chunk (three.js inside) may be large.
+    // Read from disk by node, never downloaded: the head-file chunk (three.js inside) is large.
     chunkSizeWarningLimit: 4096,
     rollupOptions: {
       input: { hairsketch: 'web/cli/main.ts' },

@@ -1,8 +1,9 @@
 // The bundled command line (build/cli/) runs with plain node: it imports nothing but Node's own
-// modules and its chunks, and what `solve` loads holds no three.js (the head code that needs it
-// is in the chunk `grow` loads on demand), so the command starts fast.
+// modules and its chunks, and neither `solve` nor `grow` on the built-in head loads three.js:
+// only reading a head file does (cli/headFile.ts, a chunk loaded on demand), so commands start
+// fast.
 import { readFileSync } from 'node:fs';
-import { dirname, join } from 'node:path';
+import { basename, dirname, join } from 'node:path';
 import { describe, expect, it } from 'vitest';
 import { CLI_BUNDLE } from './cliBundle';
 
@@ -16,14 +17,18 @@ function importsOf(file: string): { statics: string[]; dynamics: string[] } {
   return { statics, dynamics };
 }
 
-/** Every module of the bundle reachable from `entry`, following static imports only or all. */
-function graph(entry: string, followDynamic: boolean): string[] {
+/** Every module of the bundle reachable from `entry`, following static imports only or all
+ *  (but for dynamic imports of chunks whose name starts with `skip`). */
+function graph(entry: string, followDynamic: boolean, skip?: string): string[] {
   const seen = new Set<string>();
   const visit = (file: string) => {
     if (seen.has(file)) return;
     seen.add(file);
     const { statics, dynamics } = importsOf(file);
-    for (const s of followDynamic ? [...statics, ...dynamics] : statics)
+    const followed = followDynamic
+      ? dynamics.filter((d) => !(skip && d.startsWith(`./${skip}`)))
+      : [];
+    for (const s of [...statics, ...followed])
       if (s.startsWith('./')) visit(join(dirname(file), s));
   };
   visit(entry);
@@ -46,10 +51,19 @@ describe('the bundled command line', () => {
     }
   });
 
-  it('loads no three.js for solve; grow brings it on demand', () => {
+  it('loads no three.js for solve or for grow on the built-in head; a head file brings it', () => {
     const solve = graph(CLI_BUNDLE, false);
     for (const f of solve) expect(hasThree(f), `${f} holds three.js`).toBe(false);
-    // the check finds three.js where it is: in what grow loads
-    expect(graph(CLI_BUNDLE, true).some(hasThree)).toBe(true);
+    const withoutHeadFiles = graph(CLI_BUNDLE, true, 'headFile');
+    expect(
+      withoutHeadFiles.some((f) => /\/grow-[^/]*\.mjs$/.test(f)),
+      'grow is a chunk',
+    ).toBe(true);
+    for (const f of withoutHeadFiles) expect(hasThree(f), `${f} holds three.js`).toBe(false);
+    // the check finds three.js where it is: in what reading a head file loads
+    const all = graph(CLI_BUNDLE, true);
+    expect(all.filter(hasThree).map((f) => basename(f))).toEqual([
+      expect.stringMatching(/^headFile-.*\.mjs$/),
+    ]);
   });
 });

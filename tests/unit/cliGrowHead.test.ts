@@ -9,7 +9,7 @@ import { existsSync, mkdtempSync, readdirSync, readFileSync, writeFileSync } fro
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { afterEach, beforeAll, beforeEach, describe, expect, it, vi } from 'vitest';
-import { loadHeadUnderNode } from '../../web/cli/head';
+import { loadHeadUnderNode } from '../../web/cli/headFile';
 import { presetSession } from '../../web/cli/presetSession';
 import { Head } from '../../web/head/head';
 import { type LoadedHead, loadHeadFile } from '../../web/head/loadHead';
@@ -256,7 +256,7 @@ describe('hairsketch grow --head: refusals (exit 2, one line, no file)', () => {
   });
 });
 
-describe('three.js loaders under Node (cli/head.ts)', () => {
+describe('three.js loaders under Node (cli/headFile.ts)', () => {
   it('a textured GLB loads (its image is skipped), and the globals are put back', async () => {
     const glb = texturedGlb(ball.head.mesh.positions, ball.head.mesh.indices);
     const hadSelf = 'self' in globalThis;

@@ -256,14 +256,14 @@ export async function runGrow(
 ): Promise<GrowReport> {
   const args = parseGrowArgs(argv);
   const read = await readSessionArg(args.session);
-  const { head, scalp, bounds, session } = await headForGrow(
+  const { mesh, scalp, bounds, session } = await headForGrow(
     read.session,
     read.headFile,
     args.headFile,
   );
   const preset = args.grid ?? session.grid;
   const exportHead: ExportHead | null = args.head
-    ? { positions: head.mesh.positions, indices: head.mesh.indices, normals: head.mesh.normals }
+    ? { positions: mesh.positions, indices: mesh.indices, normals: mesh.normals }
     : null;
 
   checkWritable(args.out);
