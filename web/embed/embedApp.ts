@@ -17,7 +17,7 @@ import { SolverClient } from '../solver/solverClient';
 import { setCameraButtons } from '../viewer/cameraButtons';
 import { HairView } from '../viewer/hairView';
 import { createHeadMesh, recolorHeadScalp, setHeadGeometry } from '../viewer/headMaterial';
-import { namedView } from '../viewer/namedViews';
+import { namedView, type ViewName } from '../viewer/namedViews';
 import { Viewer } from '../viewer/viewer';
 import { editorUrlFor, parseEmbedOptions } from './embedOptions';
 
@@ -26,9 +26,9 @@ const FIRST_LOOK_STRANDS = 6000;
 
 declare global {
   interface Window {
-    /** For `hairsketch render` and tests: the view as a PNG (base64), drawn as Export → PNG
-     *  draws it, at the canvas's size times `scale`. */
-    hairsketchEmbed?: { capture(scale?: number): Promise<string> };
+    /** For `hairsketch render` and tests: the view (or the still view `view` of the hair shown)
+     *  as a PNG (base64), drawn as Export → PNG draws it, at the canvas's size times `scale`. */
+    hairsketchEmbed?: { capture(scale?: number, view?: ViewName): Promise<string> };
   }
 }
 
@@ -85,6 +85,7 @@ export async function startEmbed(): Promise<void> {
     moved = true;
   });
   let framed = false;
+  let lowest = head.mesh.bounds.min[1];
   const bounds = s.head === 'builtin' ? undefined : head.mesh.bounds;
   const grid = gridForSession(s.grid, s.curves, bounds, hangLength(s));
   say('loading', 'Growing the hair…');
@@ -94,12 +95,10 @@ export async function startEmbed(): Promise<void> {
     {
       onBusy: () => {},
       onResult: (r, final) => {
+        if (final) lowest = lowestPoint(r.strands, head.mesh.bounds.min[1]);
         if (final && !framed && !moved) {
           framed = true;
-          const v = namedView(
-            opts.view ?? 'front',
-            lowestPoint(r.strands, head.mesh.bounds.min[1]),
-          );
+          const v = namedView(opts.view ?? 'front', lowest);
           viewer.setCamera(v.position, v.target);
           viewer.setHomeView(v.position, v.target);
         }
@@ -131,7 +130,11 @@ export async function startEmbed(): Promise<void> {
   );
 
   window.hairsketchEmbed = {
-    capture: async (scale = 1) => {
+    capture: async (scale = 1, view) => {
+      if (view) {
+        const v = namedView(view, lowest);
+        viewer.setCamera(v.position, v.target);
+      }
       const blob = await viewer.captureImage({ scale });
       const bytes = new Uint8Array(await blob.arrayBuffer());
       let bin = '';
