@@ -42,7 +42,8 @@ async function main(): Promise<void> {
         quality,
         timeoutMs: 600_000,
       });
-      VIEW_NAMES.forEach((view, i) => writeFileSync(`${out}/${preset}-${view}.png`, still.png[i]));
+      for (const [i, view] of VIEW_NAMES.entries())
+        writeFileSync(`${out}/${preset}-${view}.png`, still.png[i]);
       console.log(
         `${preset}: ${out}/${preset}-{${VIEW_NAMES.join(',')}}.png (${still.strands} strands, ${(still.ms / 1000).toFixed(1)} s)`,
       );
