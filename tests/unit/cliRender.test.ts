@@ -1,12 +1,17 @@
 // `hairsketch render`: a preset's session becomes a PNG of the size asked for, drawn by the
 // built app's embed in Chromium; the hair shows (its pixels differ from the bald head's, read
 // back with a PNG reader of our own); bad arguments get one line and exit 2, writing nothing.
+
+import { createHash } from 'node:crypto';
 import { existsSync, mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { afterEach, beforeAll, beforeEach, describe, expect, it, vi } from 'vitest';
 import { presetSession } from '../../web/cli/presetSession';
 import { Head } from '../../web/head/head';
+import { writeSessionFile } from '../../web/model/sessionFile';
+import { encodeSessionLink } from '../../web/model/sessionLink';
+import { ellipsoidHead, toObj } from '../support/generatedHead';
 import { bundledCli } from './cliBundle';
 import { readPng } from './pngPixels';
 
@@ -16,8 +21,9 @@ const DIST_BUILT = existsSync(new URL('../../dist/embed.html', import.meta.url))
 let dir: string;
 let out: string[] = [];
 let err: string[] = [];
+let eggLink = '';
 
-beforeAll(() => {
+beforeAll(async () => {
   dir = mkdtempSync(join(tmpdir(), 'hs-render-'));
   const head = Head.builtin();
   for (const name of ['bob', 'empty'] as const)
@@ -25,6 +31,22 @@ beforeAll(() => {
       join(dir, `${name}.json`),
       JSON.stringify(presetSession(name, head, '25k', 1500)),
     );
+  // bob on a head of its own (an OBJ in mm), saved as "Save" writes it: the head file inside
+  const soup = ellipsoidHead(24);
+  const egg = toObj({ positions: soup.positions.map((v) => v * 100), indices: soup.indices });
+  const onEgg = {
+    ...presetSession('bob', head, '25k', 1500),
+    head: {
+      kind: 'mesh' as const,
+      name: 'egg.obj',
+      hash: createHash('sha256').update(new Uint8Array(egg)).digest('hex'),
+      format: 'obj' as const,
+      up: 'y' as const,
+      turns: [],
+    },
+  };
+  writeFileSync(join(dir, 'egg.json'), await writeSessionFile(onEgg, { headBytes: egg }));
+  eggLink = await encodeSessionLink(onEgg);
 });
 beforeEach(() => {
   out = [];
@@ -78,7 +100,7 @@ describe('hairsketch render', () => {
         ]);
         expect(code, err.join('')).toBe(0);
         const report = JSON.parse(out.join(''));
-        expect(report).toMatchObject({ width: 320, height: 240, view: 'side' });
+        expect(report).toMatchObject({ width: 320, height: 240, view: 'side', head: 'builtin' });
         expect(report.ms).toBeGreaterThan(0);
         return { report, pixels: readPng(readFileSync(file)) };
       };
@@ -104,6 +126,23 @@ describe('hairsketch render', () => {
       }
       expect(notBackground).toBeGreaterThan(0.03 * 320 * 240);
       expect(differ).toBeGreaterThan(0.03 * 320 * 240);
+    },
+    180_000,
+  );
+
+  it.runIf(DIST_BUILT)(
+    'draws a session on a loaded head from the file that embeds it; a link alone is refused',
+    async () => {
+      const file = join(dir, 'egg.png');
+      out = [];
+      const code = await main(['render', join(dir, 'egg.json'), '--out', file, '--size', '64x48']);
+      expect(code, err.join('')).toBe(0);
+      expect(JSON.parse(out.join(''))).toMatchObject({ head: 'egg.obj', width: 64, height: 48 });
+      expect(JSON.parse(out.join('')).strands).toBeGreaterThan(1000);
+      expect(readPng(readFileSync(file)).width).toBe(64);
+      err = [];
+      expect(await main(['render', `#${eggLink.replace(/^#/, '')}`, '--out', file])).toBe(2);
+      expect(err.join('')).toMatch(/needs the head file “egg\.obj”/);
     },
     180_000,
   );

@@ -10,6 +10,7 @@ import { basename, dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import type { QualitySetting } from '../app/quality';
 import type { SessionState } from '../model/session';
+import type { HeadFileData } from '../model/sessionFile';
 import { encodeSessionLink } from '../model/sessionLink';
 import { isViewName, VIEW_NAMES, type ViewName } from '../viewer/namedViews';
 import { CliError, parseSeconds } from './errors';
@@ -71,6 +72,8 @@ export function parseRenderArgs(argv: readonly string[]): RenderArgs {
 export interface Still {
   png: Uint8Array[];
   strands: number;
+  /** The head drawn: 'builtin' or the loaded head's file name. */
+  head: string;
   ms: number;
 }
 
@@ -83,6 +86,8 @@ export interface StillOptions {
   timeoutMs?: number;
   /** The app's Quality setting (default Auto: Fast on a software rasteriser). */
   quality?: QualitySetting;
+  /** The loaded head's file, for a session on one (a saved session file embeds it). */
+  headFile?: HeadFileData;
 }
 
 export interface StillRenderer {
@@ -129,15 +134,26 @@ export async function openStillRenderer(): Promise<StillRenderer> {
     );
   }
   return {
-    async render(session, { views, width, height, timeoutMs = 300_000, quality = 'auto' }) {
-      if (session.head !== 'builtin')
+    async render(
+      session,
+      { views, width, height, timeoutMs = 300_000, quality = 'auto', headFile },
+    ) {
+      if (session.head !== 'builtin' && headFile?.hash !== session.head.hash)
         throw new CliError(
-          `render draws sessions on the built-in head; this one needs the head “${session.head.name}”`,
+          `this session needs the head file “${session.head.name}”: render the saved session file that embeds it`,
         );
       const t0 = performance.now();
       const link = await encodeSessionLink(session);
       const page = await browser.newPage({ viewport: { width, height }, deviceScaleFactor: 1 });
       try {
+        if (headFile) {
+          // into the page's head store, where the embed looks for the head the link names
+          await page.goto(`${server.base}/embed.html?still`);
+          await page.evaluate(
+            ([name, hash, base64]) => window.hairsketchEmbed?.storeHead(name, hash, base64),
+            [headFile.name, headFile.hash, Buffer.from(headFile.bytes).toString('base64')],
+          );
+        }
         await page.goto(
           `${server.base}/embed.html?still&view=${views[0]}&quality=${quality}#${link.replace(/^#/, '')}`,
         );
@@ -160,6 +176,10 @@ export async function openStillRenderer(): Promise<StillRenderer> {
         if ((await status.getAttribute('data-state')) === 'error')
           throw new CliError(`the viewer could not draw it: ${await status.textContent()}`);
         const strands = Number(await status.getAttribute('data-strands'));
+        const drawnOn = await status.getAttribute('data-head');
+        const wanted = session.head === 'builtin' ? 'builtin' : session.head.name;
+        if (drawnOn !== wanted)
+          throw new Error(`the viewer drew the head “${drawnOn}” instead of “${wanted}”`);
         const png: Uint8Array[] = [];
         for (const view of views) {
           const base64 = await page.evaluate((v) => {
@@ -169,7 +189,7 @@ export async function openStillRenderer(): Promise<StillRenderer> {
           }, view);
           png.push(new Uint8Array(Buffer.from(base64, 'base64')));
         }
-        return { png, strands, ms: performance.now() - t0 };
+        return { png, strands, head: wanted, ms: performance.now() - t0 };
       } finally {
         await page.close();
       }
@@ -181,7 +201,8 @@ export async function openStillRenderer(): Promise<StillRenderer> {
   };
 }
 
-/** Runs `hairsketch render`; prints one JSON line: file, width, height, view, strands, ms. */
+/** Runs `hairsketch render`; prints one JSON line: file, width, height, view, strands, head,
+ *  ms. */
 export async function runRender(argv: readonly string[], print: (line: string) => void) {
   const args = parseRenderArgs(argv);
   const out = resolve(args.out);
@@ -193,7 +214,7 @@ export async function runRender(argv: readonly string[], print: (line: string) =
   }
   if (!outDir?.isDirectory())
     throw new CliError(`cannot write ${args.out}: its directory does not exist`);
-  const { session } = await readSessionArg(args.session);
+  const { session, headFile } = await readSessionArg(args.session);
   const t0 = performance.now();
   const renderer = await openStillRenderer();
   try {
@@ -202,6 +223,7 @@ export async function runRender(argv: readonly string[], print: (line: string) =
       width: args.width,
       height: args.height,
       timeoutMs: 1000 * args.maxSeconds,
+      headFile,
     });
     // written beside FILE and renamed into place: a failed run leaves no half-written picture
     const temp = join(dirname(out), `.${basename(out)}.${process.pid}.tmp`);
@@ -219,6 +241,7 @@ export async function runRender(argv: readonly string[], print: (line: string) =
         height: args.height,
         view: args.view,
         strands: still.strands,
+        head: still.head,
         ms: Math.round(performance.now() - t0),
       }),
     );

@@ -28,7 +28,12 @@ declare global {
   interface Window {
     /** For `hairsketch render` and tests: the view (or the still view `view` of the hair shown)
      *  as a PNG (base64), drawn as Export → PNG draws it, at the canvas's size times `scale`. */
-    hairsketchEmbed?: { capture(scale?: number, view?: ViewName): Promise<string> };
+    hairsketchEmbed?: {
+      capture(scale?: number, view?: ViewName): Promise<string>;
+      /** For `hairsketch render`: keeps a head file (base64) in this page's head store, where
+       *  a link naming it finds it. */
+      storeHead(name: string, hash: string, base64: string): Promise<void>;
+    };
   }
 }
 
@@ -44,6 +49,18 @@ export async function startEmbed(): Promise<void> {
   open.href = editorUrlFor(window.location.href);
   if (opts.still) document.body.classList.add('still');
 
+  const api: NonNullable<Window['hairsketchEmbed']> = {
+    capture: () => Promise.reject(new Error('no hair on screen yet')),
+    storeHead: async (name, hash, base64) => {
+      const { storeHeadFile } = await import('./embedHead');
+      await storeHeadFile(
+        name,
+        hash,
+        Uint8Array.from(atob(base64), (c) => c.charCodeAt(0)),
+      );
+    },
+  };
+  window.hairsketchEmbed = api;
   const decoded = window.location.hash.startsWith('#s=')
     ? await decodeSessionLink(window.location.hash)
     : null;
@@ -63,6 +80,7 @@ export async function startEmbed(): Promise<void> {
   const headMesh = createHeadMesh(head.mesh);
   viewer.addHead(headMesh);
   let note = '';
+  status.dataset.head = 'builtin'; // the head drawn: 'builtin' or the loaded head's file name
   if (s.head !== 'builtin') {
     const { storedHead } = await import('./embedHead');
     const loaded = await storedHead(s.head);
@@ -70,6 +88,7 @@ export async function startEmbed(): Promise<void> {
     else {
       head = loaded.head;
       setHeadGeometry(headMesh, head.mesh);
+      status.dataset.head = s.head.name;
     }
   }
   if (s.scalpPaint?.length) {
@@ -129,19 +148,17 @@ export async function startEmbed(): Promise<void> {
       : FIRST_LOOK_STRANDS,
   );
 
-  window.hairsketchEmbed = {
-    capture: async (scale = 1, view) => {
-      if (view) {
-        const v = namedView(view, lowest);
-        viewer.setCamera(v.position, v.target);
-      }
-      const blob = await viewer.captureImage({ scale });
-      const bytes = new Uint8Array(await blob.arrayBuffer());
-      let bin = '';
-      for (let i = 0; i < bytes.length; i += 0x8000)
-        bin += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
-      return btoa(bin);
-    },
+  api.capture = async (scale = 1, view) => {
+    if (view) {
+      const v = namedView(view, lowest);
+      viewer.setCamera(v.position, v.target);
+    }
+    const blob = await viewer.captureImage({ scale });
+    const bytes = new Uint8Array(await blob.arrayBuffer());
+    let bin = '';
+    for (let i = 0; i < bytes.length; i += 0x8000)
+      bin += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
+    return btoa(bin);
   };
 }
 
