@@ -5,7 +5,8 @@ import { defineConfig } from 'vite';
 // The `hairsketch` command line, bundled like the app: one ES module for Node (build/cli/
 // hairsketch.mjs, exporting main) with every dependency inside, so scripts/hairsketch.mjs runs it
 // with plain node. `grow` and the head code it brings (three.js) are a chunk of their own, loaded
-// only by `grow`, so `solve` starts without them. The wasm module goes beside the bundle.
+// only by `grow`, so `solve` starts without them; `render` and its browser launcher likewise.
+// The wasm module goes beside the bundle.
 const WASM = 'hairsolver.wasm';
 
 const wasmBeside = (): Plugin => ({
@@ -35,6 +36,8 @@ export default defineConfig({
     // Read from disk by node, never downloaded: the head-file chunk (three.js inside) is large.
     chunkSizeWarningLimit: 4096,
     rollupOptions: {
+      // render's browser launcher stays a package import (it finds its own files at run time)
+      external: ['playwright-core'],
       input: { hairsketch: 'web/cli/main.ts' },
       output: { format: 'es', entryFileNames: '[name].mjs', chunkFileNames: '[name]-[hash].mjs' },
     },

@@ -1,4 +1,6 @@
 import { readFile } from 'node:fs/promises';
+import type { ServerResponse } from 'node:http';
+import { fileURLToPath } from 'node:url';
 import type { Plugin } from 'vite';
 import { defineConfig } from 'vitest/config';
 
@@ -17,6 +19,8 @@ const CSP = [
   "form-action 'none'",
   "frame-ancestors 'none'",
 ].join('; ');
+// The embeddable viewer (embed.html) may be framed by any site; every other page refuses.
+const EMBED_CSP = CSP.replace("frame-ancestors 'none'", 'frame-ancestors *');
 // Cross-origin isolation (COOP + COEP): SharedArrayBuffer, hence the threaded solver module
 // (web/solver/worker.ts). Everything the app loads is same-origin, so require-corp costs nothing.
 // HAIRSKETCH_NO_ISOLATION=1 serves without them (the e2e fallback project: single-threaded).
@@ -61,14 +65,43 @@ const rawThreadedModule = (): Plugin => ({
   },
 });
 
+// The embed's response carries EMBED_CSP (and may be loaded by an isolated framing page):
+// whoever sets the CSP header later (vite's static server applies `headers` as it sends the
+// file) sets the embed's instead.
+const framableEmbed = (): Plugin => {
+  const use = (req: { url?: string }, res: ServerResponse, next: () => void): void => {
+    const path = (req.url ?? '').split(/[?#]/)[0];
+    if (path === '/embed.html') {
+      const set = res.setHeader.bind(res);
+      res.setHeader = (name, value) =>
+        set(name, name.toLowerCase() === 'content-security-policy' ? EMBED_CSP : value);
+      res.setHeader('Content-Security-Policy', EMBED_CSP);
+      res.setHeader('Cross-Origin-Resource-Policy', 'cross-origin');
+    }
+    next();
+  };
+  return {
+    name: 'hairsketch-framable-embed',
+    configureServer: (server) => void server.middlewares.use(use),
+    configurePreviewServer: (server) => void server.middlewares.use(use),
+  };
+};
+
 export default defineConfig({
-  plugins: [rawThreadedModule()],
+  plugins: [rawThreadedModule(), framableEmbed()],
   root: 'web',
   publicDir: '../public',
   build: {
     outDir: '../dist',
     emptyOutDir: true,
     target: 'es2022',
+    // the editor, and the embeddable viewer with only what it needs (web/embed/)
+    rollupOptions: {
+      input: {
+        main: fileURLToPath(new URL('./web/index.html', import.meta.url)),
+        embed: fileURLToPath(new URL('./web/embed.html', import.meta.url)),
+      },
+    },
     // The threaded module's loader and pthread worker script stay files (a data: URL worker
     // would be cross-origin, and the CSP allows same-origin workers only).
     assetsInlineLimit: (file: string) => (/hairsolver/.test(file) ? false : undefined),

@@ -47,6 +47,7 @@ function target() {
       mirrorOn = on;
     },
     share: () => calls.push('share'),
+    copyEmbed: () => calls.push('copyEmbed'),
     save: () => calls.push('save'),
     open: () => calls.push('open'),
     exportMenu: () => calls.push('export'),

@@ -1,7 +1,8 @@
 // The bundled command line (build/cli/) runs with plain node: it imports nothing but Node's own
-// modules and its chunks, and neither `solve` nor `grow` on the built-in head loads three.js:
-// only reading a head file does (cli/headFile.ts, a chunk loaded on demand), so commands start
-// fast.
+// modules and its chunks (and `render`, on demand, the browser launcher playwright-core), and
+// neither `solve` nor `grow` on the built-in head loads three.js (only reading a head file does:
+// cli/headFile.ts, a chunk loaded on demand), nor does `solve` load the browser launcher, so
+// commands start fast.
 import { readFileSync } from 'node:fs';
 import { basename, dirname, join } from 'node:path';
 import { describe, expect, it } from 'vitest';
@@ -41,14 +42,26 @@ const hasThree = (file: string) =>
   /node_modules\/three\/|\bclass BufferGeometry\b/.test(readFileSync(file, 'utf8'));
 
 describe('the bundled command line', () => {
-  it('imports only node: modules and its own chunks', () => {
+  it('imports only node: modules and its own chunks (and the browser launcher on demand)', () => {
     const all = graph(CLI_BUNDLE, true);
-    expect(all.length).toBeGreaterThan(1); // grow's chunk
+    expect(all.length).toBeGreaterThan(2); // grow's and render's chunks
+    let launcher = 0;
     for (const f of all) {
       const { statics, dynamics } = importsOf(f);
-      for (const s of [...statics, ...dynamics])
-        expect(s, `${f} imports ${s}`).toMatch(/^(node:|\.\/)/);
+      for (const s of statics) expect(s, `${f} imports ${s}`).toMatch(/^(node:|\.\/)/);
+      for (const s of dynamics) {
+        if (s === 'playwright-core') launcher++;
+        else expect(s, `${f} imports ${s}`).toMatch(/^(node:|\.\/)/);
+      }
     }
+    expect(launcher).toBe(1);
+  });
+
+  it('loads no browser launcher for solve', () => {
+    const solve = graph(CLI_BUNDLE, false);
+    const mentions = (f: string) => /playwright/.test(readFileSync(f, 'utf8'));
+    for (const f of solve) expect(mentions(f), `${f} mentions playwright`).toBe(false);
+    expect(graph(CLI_BUNDLE, true).some(mentions)).toBe(true);
   });
 
   it('loads no three.js for solve or for grow on the built-in head; a head file brings it', () => {

@@ -462,7 +462,7 @@ describe('bad files are refused, saying why', () => {
             buffers: [{ uri: 'head.bin', byteLength: 12 }],
           }),
         ).buffer,
-      /separate file \(head\.bin\)/,
+      /separate file \(“head\.bin”\): pick the \.gltf together with it/,
     ],
     [
       'draco.gltf',

@@ -47,6 +47,8 @@ export interface ActionTarget {
   toggleAvoidScalp(): void;
   avoidScalpOn(): boolean;
   share(): void;
+  /** "Copy embed code": an <iframe> snippet showing this session (embed.html). */
+  copyEmbed(): void;
   save(): void;
   open(): void;
   exportMenu(): void;
@@ -198,6 +200,15 @@ export function buildActions(t: ActionTarget): Action[] {
       group: 'file',
       toolbar: 'more',
       run: () => t.share(),
+    },
+    {
+      id: 'file.embed',
+      label: 'Copy embed code',
+      title:
+        'Copy an <iframe> snippet that shows this hairstyle in another page (orbit and zoom, no editing)',
+      group: 'file',
+      toolbar: 'more',
+      run: () => t.copyEmbed(),
     },
     {
       id: 'file.save',

@@ -164,7 +164,7 @@ export function startApp(): void {
       void openSessionFileOutcome(editor, f, headStore).then(
         (o) => o.kind === 'failed' && status.note(o.message),
       ),
-    openHeadFile: (f) => heads.openHeadFile(editor, f),
+    openHeadFiles: (files) => heads.openHeadFiles(editor, files),
   });
   help = buildHelpOverlay(document.body, actions);
   exporting = wireExport({

@@ -78,6 +78,7 @@ export function editActions(d: EditActionDeps): EditActions {
     toggleAvoidScalp: () => editor.run({ kind: 'setAvoidScalp', on: !editor.session.avoidScalp }),
     avoidScalpOn: () => !!editor.session.avoidScalp,
     share: () => void d.links.share().then((m) => status.note(m)),
+    copyEmbed: () => void d.links.copyEmbed().then((m) => status.note(m)),
     save: () => {
       const n = editor.session.curves.length;
       void downloadSession(editor.session, viewer.cameraState(), d.heads).then((m) =>

@@ -16,6 +16,7 @@
 import type * as THREE from 'three';
 import type { Editor } from '../editor/editor';
 import type { Head } from '../head/head';
+import { headFromPicked } from '../head/headFiles';
 import type { HeadStore } from '../head/headStore';
 import { hashHeadBytes, headRefOf, loadHeadRef } from '../head/headStore';
 import { type Axis, type LoadedHead, loadHeadFile } from '../head/loadHead';
@@ -130,13 +131,19 @@ export class HeadController {
     if (s.scalpPaint !== this.paint) this.applyPaint(s.scalpPaint);
   }
 
-  /** "Open head" from a file the user picked: openFile, with its progress and outcome on the
-   *  status line. */
-  openHeadFile(editor: Editor, file: File): void {
-    this.d.task(`Opening the head ${file.name}…`);
-    void file
-      .arrayBuffer()
-      .then((bytes) => this.openFile(editor, file.name, bytes))
+  /** "Open head" from the files the user picked (a head file, or a .gltf with its .bin and
+   *  textures): openFile, with its progress and outcome on the status line. */
+  openHeadFiles(editor: Editor, files: readonly File[]): void {
+    const first = files.find((f) => /\.(obj|gltf|glb|ply|stl)$/i.test(f.name)) ?? files[0];
+    if (!first) return;
+    this.d.task(`Opening the head ${first.name}…`);
+    void Promise.all(files.map(async (f) => ({ name: f.name, bytes: await f.arrayBuffer() })))
+      .then((picked) => {
+        const h = headFromPicked(picked);
+        return h.ok
+          ? this.openFile(editor, h.head.name, h.head.bytes)
+          : `Could not open the head: ${h.error}. The head and the session are unchanged.`;
+      })
       .then(
         (m) => this.d.taskDone(m, m.startsWith('Could not')),
         (e) => this.d.taskDone(`Could not open the head: ${String(e)}.`, true),

@@ -282,6 +282,31 @@ export class LinkWriter {
       return 'The link is in the address bar (the clipboard is not available here).';
     }
   }
+
+  /** "Copy embed code": the <iframe> snippet for this session, copied to the clipboard; the
+   *  sentence to show. */
+  async copyEmbed(): Promise<string> {
+    let href: string;
+    try {
+      href = await this.write();
+    } catch {
+      return 'This browser cannot make session links (no CompressionStream); use Save.';
+    }
+    try {
+      await navigator.clipboard.writeText(embedCode(href));
+      return 'Embed code copied: paste the <iframe> into a page to show this hairstyle there.';
+    } catch {
+      return 'The clipboard is not available here: the embed is embed.html with the address bar’s #s= link.';
+    }
+  }
+}
+
+/** The <iframe> snippet that shows the session of the editor link `href` in another page. */
+export function embedCode(href: string): string {
+  const u = new URL(href);
+  const src = `${u.origin}${u.pathname.replace(/[^/]*$/, '')}embed.html${u.hash}`;
+  const attr = src.replace(/&/g, '&amp;').replace(/"/g, '&quot;');
+  return `<iframe src="${attr}" width="640" height="480" style="border:0" title="Hairstyle (hairsketch)" loading="lazy" allowfullscreen></iframe>`;
 }
 
 function savedCamera(data: unknown): Viewpoint | undefined {

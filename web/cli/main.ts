@@ -2,6 +2,7 @@
 //   hairsketch solve PROBLEM.json --out DIR [--solver exact|fast|auto|cg] [--max-seconds N]
 //                    [--progress-seconds N]
 //   hairsketch grow SESSION --out FILE [--format …] [--grid …] [--solver …] [--strands N] (grow.ts)
+//   hairsketch render SESSION|LINK --out FILE.png [--view …] [--size WxH] (render.ts)
 // Exit codes: 0 done, 2 bad input (a one-line message on stderr; a grid over the memory cap is
 // refused by the solver's estimate before it allocates), 3 stopped at the --max-seconds time cap,
 // 1 internal error. Iterative solves print a JSON progress line to stderr every
@@ -34,8 +35,8 @@ function parseArgs(argv: string[]): {
   if (command !== 'solve')
     throw new CliError(
       command
-        ? `unknown command "${command}" (solve or grow); ${SOLVE_USAGE}`
-        : `no command (solve or grow); ${SOLVE_USAGE}`,
+        ? `unknown command "${command}" (solve, grow or render); ${SOLVE_USAGE}`
+        : `no command (solve, grow or render); ${SOLVE_USAGE}`,
     );
   let problem = '';
   let out = '';
@@ -85,6 +86,12 @@ export async function main(argv: string[]): Promise<number> {
       await runGrow(argv.slice(1), { wasmBinary: wasmBinary() }, (line) =>
         process.stdout.write(`${line}\n`),
       );
+      return 0;
+    }
+    if (argv[0] === 'render') {
+      // Loaded only for `render`: it brings the browser launcher.
+      const { runRender } = await import('./render');
+      await runRender(argv.slice(1), (line) => process.stdout.write(`${line}\n`));
       return 0;
     }
     const args = parseArgs(argv);

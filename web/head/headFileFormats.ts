@@ -1,11 +1,13 @@
 // Head file formats: which format a file is (by name and first bytes), and reading it into a
 // three.js scene with three.js's loaders, after checks that turn what the loaders would do with a
-// bad or oversized file (cryptic messages, fetches, huge allocations) into a plain refusal.
+// bad or oversized file (cryptic messages, fetches, huge allocations) into a plain refusal. glTF
+// goes through gltfPack.ts first (its buffers decoded here, never fetched).
 import * as THREE from 'three';
 import { GLTFLoader } from 'three/examples/jsm/loaders/GLTFLoader.js';
 import { OBJLoader } from 'three/examples/jsm/loaders/OBJLoader.js';
 import { PLYLoader } from 'three/examples/jsm/loaders/PLYLoader.js';
 import { STLLoader } from 'three/examples/jsm/loaders/STLLoader.js';
+import { type GltfResources, selfContainedGlb } from './gltfPack';
 import { capCheck, HeadFileError } from './headFileError';
 
 export type HeadFormat = 'obj' | 'gltf' | 'glb' | 'ply' | 'stl';
@@ -32,6 +34,8 @@ export async function parse(
   format: HeadFormat,
   bytes: ArrayBuffer,
   maxTriangles: number,
+  /** Files picked with a .gltf (its .bin), by name. */
+  resources?: GltfResources,
 ): Promise<THREE.Object3D> {
   switch (format) {
     case 'obj': {
@@ -46,9 +50,9 @@ export async function parse(
     }
     case 'gltf':
     case 'glb': {
-      if (format === 'gltf') checkGltfJson(new TextDecoder().decode(bytes));
-      else checkGlb(bytes);
-      const gltf = await new GLTFLoader().parseAsync(bytes, '');
+      // buffers decoded here, so the loader fetches nothing (gltfPack.ts)
+      const glb = selfContainedGlb(format, bytes, resources);
+      const gltf = await new GLTFLoader().parseAsync(glb, '');
       return gltf.scene;
     }
     case 'ply': {
@@ -80,40 +84,4 @@ function plyFaceCount(bytes: ArrayBuffer): number {
   const faces = m ? Number(m[1]) : 0;
   if (faces === 0) throw new HeadFileError('it has no faces (a point cloud, not a mesh)');
   return faces;
-}
-
-function checkGlb(bytes: ArrayBuffer): void {
-  const view = new DataView(bytes);
-  if (bytes.byteLength < 20) throw new HeadFileError('not a readable GLB file (truncated)');
-  const jsonLength = view.getUint32(12, true);
-  if (view.getUint32(16, true) !== 0x4e4f534a || 20 + jsonLength > bytes.byteLength)
-    throw new HeadFileError('not a readable GLB file (bad JSON chunk)');
-  checkGltfJson(new TextDecoder().decode(new Uint8Array(bytes, 20, jsonLength)));
-}
-
-/** glTF refusals the loader would give cryptic messages (or fetches) for. */
-function checkGltfJson(text: string): void {
-  let json: {
-    buffers?: { uri?: string }[];
-    extensionsRequired?: string[];
-  };
-  try {
-    json = JSON.parse(text);
-  } catch {
-    throw new HeadFileError('not a readable glTF file (bad JSON)');
-  }
-  if (typeof json !== 'object' || json === null)
-    throw new HeadFileError('not a readable glTF file');
-  for (const b of json.buffers ?? [])
-    if (typeof b.uri === 'string' && !b.uri.startsWith('data:'))
-      throw new HeadFileError(
-        `it refers to a separate file (${b.uri.slice(0, 60)}): save it as .glb`,
-      );
-  const unsupported = (json.extensionsRequired ?? []).filter(
-    (e) => e === 'KHR_draco_mesh_compression' || e === 'EXT_meshopt_compression',
-  );
-  if (unsupported.length > 0)
-    throw new HeadFileError(
-      `it is compressed with ${unsupported.join(', ')}: save it uncompressed`,
-    );
 }

@@ -18,6 +18,7 @@
 import * as THREE from 'three';
 import type { Vec3 } from '../model/vec3';
 import { vertexNormals } from './buildHead';
+import type { GltfResources } from './gltfPack';
 import { Head, type HeadMesh } from './head';
 import { HeadFileError } from './headFileError';
 import { detectFormat, type HeadFormat, parse } from './headFileFormats';
@@ -36,6 +37,19 @@ import { collectTriangles } from './sceneTriangles';
 import { type IndexedTriangles, orientPartsOutward, weldByPosition } from './weldMesh';
 
 export type { HeadFormat } from './headFileFormats';
+
+/** A loader's own message, cut to one short line without anything taken from the file: long
+ *  runs of letters and digits (encoded data) and quoted text are left out. */
+export function loaderReason(e: unknown): string {
+  const text = String(e instanceof Error ? e.message : e).split('\n')[0];
+  const plain = text
+    .replace(/data:\S*/g, '…')
+    .replace(/["'`“][^"'`”]*["'`”]/g, '…')
+    .replace(/[A-Za-z0-9+/=_-]{40,}/g, '…')
+    .slice(0, 120)
+    .trim();
+  return plain || 'the reader refused it';
+}
 export { type Axis, BUILTIN_CRANIUM, type HeadUnit } from './headPlacement';
 
 /** The most triangles a loaded head may have (a bound on the memory and time of loading). */
@@ -46,6 +60,8 @@ export interface LoadHeadOptions {
   maxTriangles?: number;
   /** Which file axis is up; 'auto' (default) guesses. */
   up?: 'auto' | 'y' | 'z';
+  /** Files picked together with a .gltf (its .bin), by name. */
+  resources?: GltfResources;
 }
 
 /** A loaded, normalised head, ready to become the app's head. */
@@ -128,7 +144,7 @@ async function load(
     throw new HeadFileError('the file is empty');
   const t0 = performance.now();
   const format = detectFormat(name, bytes);
-  const root = await parse(format, bytes, maxTriangles);
+  const root = await parse(format, bytes, maxTriangles, options.resources);
   const soup = collectTriangles(root, maxTriangles);
   const t1 = performance.now();
   const welded = weldByPosition(soup.positions, soup.indices);
@@ -246,11 +262,6 @@ function keepOutermostScalp(head: Head): void {
 }
 
 function oneLine(name: string, e: unknown): string {
-  const why =
-    e instanceof HeadFileError
-      ? e.message
-      : `it could not be read (${String(e instanceof Error ? e.message : e)
-          .split('\n')[0]
-          .slice(0, 160)})`;
+  const why = e instanceof HeadFileError ? e.message : `it could not be read (${loaderReason(e)})`;
   return `Cannot open ${name}: ${why.replace(/\s+/g, ' ').trim()}`;
 }

@@ -8,7 +8,8 @@ export interface ToolbarExtras {
   hairColor(css: string): void;
   openFile(file: File): void;
   /** A head mesh file chosen with "Open head". */
-  openHeadFile(file: File): void;
+  /** The files picked in "Open head" (a head file, or a .gltf with its .bin and textures). */
+  openHeadFiles(files: File[]): void;
 }
 
 export interface Toolbar {
@@ -83,13 +84,14 @@ export function buildToolbar(
   });
   const headPicker = document.createElement('input');
   headPicker.type = 'file';
-  headPicker.accept = '.obj,.gltf,.glb,.ply,.stl';
+  headPicker.accept = '.obj,.gltf,.glb,.ply,.stl,.bin,.png,.jpg,.jpeg,.webp,.ktx2';
+  headPicker.multiple = true; // a .gltf with its .bin and textures
   headPicker.hidden = true;
   headPicker.setAttribute('aria-label', 'Head file');
   headPicker.addEventListener('change', () => {
-    const f = headPicker.files?.[0];
+    const files = [...(headPicker.files ?? [])];
     headPicker.value = '';
-    if (f) extras.openHeadFile(f);
+    if (files.length) extras.openHeadFiles(files);
   });
   const colorLabel = document.createElement('label');
   colorLabel.textContent = 'Hair colour';

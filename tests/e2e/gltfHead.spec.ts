@@ -1,0 +1,85 @@
+// glTF heads as Blender writes them open through Open head's real file chooser: a .gltf whose
+// buffers and texture are data: URIs (the page's CSP allows no data: fetch, so they must be
+// decoded in code), and a .gltf picked together with its .bin and texture; a .gltf picked
+// without its .bin is refused in one sentence and changes nothing. Hair grows on each.
+import { expect, type Page, test } from '@playwright/test';
+import { ellipsoidHead } from '../support/generatedHead';
+import { blenderGltf, TINY_PNG } from '../support/gltfHead';
+import { settled, watchConsole } from './helpers';
+
+type Files = Parameters<import('@playwright/test').FileChooser['setFiles']>[0];
+
+async function pickHead(page: Page, files: Files): Promise<void> {
+  const chosen = page.waitForEvent('filechooser');
+  await page.getByRole('button', { name: 'Open head', exact: true }).click();
+  const chooser = await chosen;
+  expect(chooser.isMultiple()).toBe(true);
+  await chooser.setFiles(files);
+}
+
+test('a .gltf with embedded buffers, and a .gltf with its .bin, open as heads', async ({
+  page,
+}) => {
+  test.setTimeout(180_000);
+  const errors = watchConsole(page);
+  const soup = ellipsoidHead(24);
+  const triangles = soup.indices.length / 3;
+  await page.goto('/?strands=1500');
+  let s = await settled(page);
+  const more = page.getByRole('button', { name: 'More' });
+  const openMenu = async () => {
+    if (!(await page.getByRole('button', { name: 'Open head', exact: true }).isVisible()))
+      await more.click();
+  };
+
+  // without its .bin: one sentence, nothing changed
+  const separate = blenderGltf(soup, 'Pair');
+  const before = await page.evaluate(() => window.hairsketch.session());
+  await openMenu();
+  await pickHead(page, {
+    name: 'Pair.gltf',
+    mimeType: 'model/gltf+json',
+    buffer: Buffer.from(separate.gltf),
+  });
+  const status = page.getByTestId('status');
+  await expect(status).toContainText('Could not open the head');
+  expect(await status.textContent()).toMatch(/\(“Pair\.bin”\): pick the \.gltf together with it/);
+  expect(await page.evaluate(() => window.hairsketch.session())).toEqual(before);
+
+  // embedded: buffers and texture as data: URIs
+  const embedded = blenderGltf(soup, 'Embedded', { embedded: true });
+  await openMenu();
+  await pickHead(page, {
+    name: 'Embedded.gltf',
+    mimeType: 'model/gltf+json',
+    buffer: Buffer.from(embedded.gltf),
+  });
+  await page.waitForFunction(() => {
+    const h = window.hairsketch.head();
+    return h.name === 'Embedded.gltf' && !h.loading;
+  });
+  expect((await page.evaluate(() => window.hairsketch.head())).triangles).toBe(triangles);
+  expect(await status.textContent()).not.toMatch(/base64|data:/);
+  s = await settled(page, s.revision);
+  expect(s.strands).toBeGreaterThan(0);
+
+  // the .gltf, its .bin and its texture picked together
+  await openMenu();
+  await pickHead(page, [
+    { name: 'Pair.gltf', mimeType: 'model/gltf+json', buffer: Buffer.from(separate.gltf) },
+    ...[...separate.files].map(([name, b]) => ({
+      name,
+      mimeType: 'application/octet-stream',
+      buffer: Buffer.from(b),
+    })),
+    { name: 'skin.png', mimeType: 'image/png', buffer: Buffer.from(TINY_PNG) },
+  ]);
+  await page.waitForFunction(() => {
+    const h = window.hairsketch.head();
+    return h.name === 'Pair.gltf' && !h.loading;
+  });
+  expect((await page.evaluate(() => window.hairsketch.head())).triangles).toBe(triangles);
+  s = await settled(page, s.revision);
+  expect(s.strands).toBeGreaterThan(0);
+  expect(errors).toEqual([]);
+});

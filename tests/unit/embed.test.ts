@@ -1,0 +1,47 @@
+// The embed's pieces that are plain logic: its query options, the editor address its link
+// opens, the <iframe> snippet "Copy embed code" writes, and the still views' framing.
+import { describe, expect, it } from 'vitest';
+import { embedCode } from '../../web/app/sessionIO';
+import { editorUrlFor, parseEmbedOptions } from '../../web/embed/embedOptions';
+import { DEFAULT_CAMERA } from '../../web/viewer/defaultCamera';
+import { namedView } from '../../web/viewer/namedViews';
+
+describe('the embed', () => {
+  it('reads its options, ignoring unknown values', () => {
+    expect(parseEmbedOptions('?still&view=side&quality=high')).toEqual({
+      view: 'side',
+      quality: 'high',
+      still: true,
+    });
+    expect(parseEmbedOptions('?view=top&quality=ultra')).toEqual({
+      view: null,
+      quality: 'auto',
+      still: false,
+    });
+  });
+
+  it('links to the editor with the same session, and is framed by the snippet', () => {
+    expect(editorUrlFor('https://x.org/app/embed.html?still#s=3.abc')).toBe(
+      'https://x.org/app/#s=3.abc',
+    );
+    expect(embedCode('https://x.org/app/?preset=bob#s=3.a"b&c')).toBe(
+      '<iframe src="https://x.org/app/embed.html#s=3.a%22b&amp;c" width="640" height="480" style="border:0" title="Hairstyle (hairsketch)" loading="lazy" allowfullscreen></iframe>',
+    );
+  });
+
+  it("frames the front view as the app's starting view, and long hair from farther away", () => {
+    const front = namedView('front', -1);
+    for (let a = 0; a < 3; a++) {
+      expect(front.position[a]).toBeCloseTo(DEFAULT_CAMERA.position[a], 9);
+      expect(front.target[a]).toBeCloseTo(DEFAULT_CAMERA.target[a], 9);
+    }
+    const dist = (v: { position: number[]; target: number[] }) =>
+      Math.hypot(...v.position.map((p, a) => p - v.target[a]));
+    // hair down to y = -6: the picture's height grows from 3.6 to 7.2 units, so twice as far
+    const long = namedView('front', -6);
+    expect(dist(long) / dist(front)).toBeCloseTo(2, 6);
+    expect(long.target[1]).toBeCloseTo(DEFAULT_CAMERA.target[1] - 1.8, 6);
+    for (const v of ['side', 'back'] as const)
+      expect(dist(namedView(v, -1))).toBeGreaterThan(0.5 * dist(front));
+  });
+});

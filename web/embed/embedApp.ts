@@ -1,0 +1,171 @@
+// The embeddable viewer (embed.html): the head and the hair of the session a link carries, with
+// orbit and zoom and nothing to edit, and a link that opens the session in the editor. It uses
+// the app's viewer, hair view and solver worker, and none of its editor, tools or panels. The
+// worker runs single-threaded unless the page is cross-origin isolated (a framing page usually
+// is not).
+
+import { visibleStrands } from '../app/hairPresenter';
+import { activeQuality } from '../app/quality';
+import { Head } from '../head/head';
+import { applyScalpPaint } from '../head/scalpPaint';
+import { packCurves, packHairOptions } from '../model/curveSet';
+import { gridForSession } from '../model/grid';
+import { hangLength, type SessionState } from '../model/session';
+import { decodeSessionLink } from '../model/sessionLink';
+import type { StrandArrays } from '../solver/protocol';
+import { SolverClient } from '../solver/solverClient';
+import { setCameraButtons } from '../viewer/cameraButtons';
+import { HairView } from '../viewer/hairView';
+import { createHeadMesh, recolorHeadScalp, setHeadGeometry } from '../viewer/headMaterial';
+import { namedView, type ViewName } from '../viewer/namedViews';
+import { Viewer } from '../viewer/viewer';
+import { editorUrlFor, parseEmbedOptions } from './embedOptions';
+
+/** Strands the first look grows before the full hair (as the editor's first look). */
+const FIRST_LOOK_STRANDS = 6000;
+
+declare global {
+  interface Window {
+    /** For `hairsketch render` and tests: the view (or the still view `view` of the hair shown)
+     *  as a PNG (base64), drawn as Export → PNG draws it, at the canvas's size times `scale`. */
+    hairsketchEmbed?: {
+      capture(scale?: number, view?: ViewName): Promise<string>;
+      /** For `hairsketch render`: keeps a head file (base64) in this page's head store, where
+       *  a link naming it finds it. */
+      storeHead(name: string, hash: string, base64: string): Promise<void>;
+    };
+  }
+}
+
+export async function startEmbed(): Promise<void> {
+  const opts = parseEmbedOptions(window.location.search);
+  const byId = (id: string) => document.getElementById(id) as HTMLElement;
+  const status = byId('status');
+  const say = (state: 'loading' | 'ready' | 'error', text: string) => {
+    status.dataset.state = state;
+    status.textContent = text;
+  };
+  const open = byId('open-editor') as HTMLAnchorElement;
+  open.href = editorUrlFor(window.location.href);
+  if (opts.still) document.body.classList.add('still');
+
+  const api: NonNullable<Window['hairsketchEmbed']> = {
+    capture: () => Promise.reject(new Error('no hair on screen yet')),
+    storeHead: async (name, hash, base64) => {
+      const { storeHeadFile } = await import('./embedHead');
+      await storeHeadFile(
+        name,
+        hash,
+        Uint8Array.from(atob(base64), (c) => c.charCodeAt(0)),
+      );
+    },
+  };
+  window.hairsketchEmbed = api;
+  const decoded = window.location.hash.startsWith('#s=')
+    ? await decodeSessionLink(window.location.hash)
+    : null;
+  if (!decoded) {
+    say('error', 'This page shows a hairstyle from a hairsketch link (#s=…); this one has none.');
+    return;
+  }
+  if (!decoded.ok) {
+    say('error', `Could not open the link: ${decoded.error}.`);
+    return;
+  }
+  const s: SessionState = decoded.value;
+
+  const viewer = new Viewer(byId('viewport') as HTMLCanvasElement);
+  setCameraButtons(viewer.controls, false); // nothing to draw: the primary button orbits
+  let head = Head.builtin();
+  const headMesh = createHeadMesh(head.mesh);
+  viewer.addHead(headMesh);
+  let note = '';
+  status.dataset.head = 'builtin'; // the head drawn: 'builtin' or the loaded head's file name
+  if (s.head !== 'builtin') {
+    const { storedHead } = await import('./embedHead');
+    const loaded = await storedHead(s.head);
+    if (typeof loaded === 'string') note = loaded;
+    else {
+      head = loaded.head;
+      setHeadGeometry(headMesh, head.mesh);
+      status.dataset.head = s.head.name;
+    }
+  }
+  if (s.scalpPaint?.length) {
+    head.mesh.scalp.set(applyScalpPaint(head.mesh, head.mesh.scalp.slice(), s.scalpPaint));
+    recolorHeadScalp(headMesh, head.mesh);
+  }
+  const hair = new HairView(viewer, headMesh);
+  hair.setQuality(activeQuality(opts.quality, viewer.software));
+  hair.setColor(s.hairColor);
+
+  let moved = false;
+  viewer.controls.addEventListener('start', () => {
+    moved = true;
+  });
+  let framed = false;
+  let lowest = head.mesh.bounds.min[1];
+  const bounds = s.head === 'builtin' ? undefined : head.mesh.bounds;
+  const grid = gridForSession(s.grid, s.curves, bounds, hangLength(s));
+  say('loading', 'Growing the hair…');
+  const client = new SolverClient(
+    () => new Worker(new URL('../solver/worker.ts', import.meta.url), { type: 'module' }),
+    { type: 'init', grid, omega: 100, solver: 'fast', scalp: head.scalpMesh() },
+    {
+      onBusy: () => {},
+      onResult: (r, final) => {
+        if (final) lowest = lowestPoint(r.strands, head.mesh.bounds.min[1]);
+        if (final && !framed && !moved) {
+          framed = true;
+          const v = namedView(opts.view ?? 'front', lowest);
+          viewer.setCamera(v.position, v.target);
+          viewer.setHomeView(v.position, v.target);
+        }
+        hair.show(
+          r.strands,
+          r.lighting,
+          () => {
+            status.dataset.strands = String(visibleStrands(r.strands));
+            if (final) say('ready', note);
+          },
+          final,
+          r.attributes ?? null,
+        );
+      },
+      onError: (message, restarting) => {
+        if (!restarting) say('error', `The hair could not be grown: ${message}.`);
+      },
+      onIdle: () => {},
+    },
+  );
+  client.request(
+    packCurves(s.curves, null, !!s.fall),
+    s.growth,
+    packHairOptions(s, s.curves),
+    'full',
+    s.growth.maxStrands > 0
+      ? Math.min(s.growth.maxStrands, FIRST_LOOK_STRANDS)
+      : FIRST_LOOK_STRANDS,
+  );
+
+  api.capture = async (scale = 1, view) => {
+    if (view) {
+      const v = namedView(view, lowest);
+      viewer.setCamera(v.position, v.target);
+    }
+    const blob = await viewer.captureImage({ scale });
+    const bytes = new Uint8Array(await blob.arrayBuffer());
+    let bin = '';
+    for (let i = 0; i < bytes.length; i += 0x8000)
+      bin += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
+    return btoa(bin);
+  };
+}
+
+/** The lowest height the hair reaches (the head's bottom when there is no hair). */
+function lowestPoint(strands: StrandArrays, headBottom: number): number {
+  let low = headBottom;
+  const p = strands.points;
+  for (let i = 1; i < p.length; i += 3) if (p[i] < low) low = p[i];
+  return low;
+}
