@@ -89,6 +89,8 @@ export const SESSION_FIELDS: Readonly<Record<string, FieldSpec>> = {
   detail: { hair: 'request', link: 'tail' },
   scalpPaint: { hair: 'setup', link: 'layout' },
   symmetry: { hair: false, link: 'layout' },
+  /** Reference pictures (referenceImage.ts): drawn behind the head, never part of a solve. */
+  references: { hair: false, link: 'tail' },
 };
 
 export const SESSION_FIELD_NAMES = Object.keys(SESSION_FIELDS);
