@@ -288,6 +288,7 @@ export class Viewer {
     if (scale === this.resolutionScale) return;
     this.resolutionScale = scale;
     this.renderer.setPixelRatio(basePixelRatio() * scale);
+    this.requestRender(); // resizing the drawing buffer cleared it
   }
 
   // ---- level of detail -----------------------------------------------------------------------
