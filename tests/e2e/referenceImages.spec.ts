@@ -117,6 +117,14 @@ test('a picture shows behind the head, under strokes, through reload and Save/Op
   await expect(panel(page)).toHaveAttribute('data-shown', '1');
   await front(page);
   expect(await countColour(page, MAGENTA)).toBeGreaterThan(withStroke * 0.9);
+  // it fades as the camera leaves the front: gone 60° round (the plane itself is still in view)
+  const a = Math.PI / 3;
+  await page.evaluate((p) => window.hairsketch.setCamera(p, [0, -0.55, 0]), [
+    9 * Math.sin(a),
+    -0.55,
+    9 * Math.cos(a),
+  ] as [number, number, number]);
+  expect(await countColour(page, MAGENTA, 60)).toBe(0);
 
   // Save / Open into a browser that never stored the picture
   const other = await (await browser.newContext()).newPage();
@@ -164,4 +172,34 @@ test('bad picture files say why and change nothing', async ({ page }) => {
     expect(await page.evaluate(() => window.hairsketch.session())).toEqual(before);
   }
   await expect(panel(page)).toBeHidden();
+
+  // a good picture opened from the side faces the side; "Place for this view" turns it to the
+  // front; a second picture is placed beside it
+  await page.evaluate(() => window.hairsketch.setCamera([9, -0.55, 0.5], [0, -0.55, 0]));
+  await page.getByLabel('Reference image file').setInputFiles({
+    name: 'side.png',
+    mimeType: 'image/png',
+    buffer: pngFile(20, 30, () => [0, 200, 255]),
+  });
+  await expect(panel(page)).toHaveAttribute('data-shown', '1');
+  const views = async () =>
+    (
+      (await page.evaluate(() => window.hairsketch.session())) as { references: { view: string }[] }
+    ).references.map((r) => r.view);
+  expect(await views()).toEqual(['side']);
+  await front(page);
+  await panel(page).getByRole('button', { name: 'Place for this view' }).click();
+  await expect.poll(views).toEqual(['front']);
+  await page.getByLabel('Reference image file').setInputFiles({
+    name: 'wide.png',
+    mimeType: 'image/png',
+    buffer: wide,
+  });
+  await expect(panel(page)).toHaveAttribute('data-shown', '2');
+  expect(await views()).toEqual(['front', 'front']);
+  // none of it touched the hair: the curves and settings are those of the preset
+  const after = (await page.evaluate(() => window.hairsketch.session())) as Record<string, unknown>;
+  const { references: _r, camera: _c, ...rest } = after;
+  const { camera: _c0, ...start } = before as Record<string, unknown>;
+  expect(rest).toEqual(start);
 });
