@@ -148,7 +148,9 @@ test('a picture shows behind the head, under strokes, through reload and Save/Op
   await other.context().close();
 });
 
-test('bad picture files say why and change nothing', async ({ page }) => {
+test('bad picture files say why and change nothing; PNG, JPEG and WebP place for the view', async ({
+  page,
+}) => {
   await page.goto('/?strands=1000');
   await settled(page);
   const before = await page.evaluate(() => window.hairsketch.session());
@@ -197,6 +199,33 @@ test('bad picture files say why and change nothing', async ({ page }) => {
   });
   await expect(panel(page)).toHaveAttribute('data-shown', '2');
   expect(await views()).toEqual(['front', 'front']);
+  // a JPEG and a WebP as Chromium's own encoders write them
+  for (const [type, name] of [
+    ['image/jpeg', 'photo.jpg'],
+    ['image/webp', 'photo.webp'],
+  ] as const) {
+    const b64 = await page.evaluate(async (t) => {
+      const c = new OffscreenCanvas(48, 32);
+      const g = c.getContext('2d') as OffscreenCanvasRenderingContext2D;
+      g.fillStyle = '#20a0ff';
+      g.fillRect(0, 0, 48, 32);
+      const bytes = new Uint8Array(await (await c.convertToBlob({ type: t })).arrayBuffer());
+      return btoa(String.fromCharCode(...bytes));
+    }, type);
+    await page.getByLabel('Reference image file').setInputFiles({
+      name,
+      mimeType: type,
+      buffer: Buffer.from(b64, 'base64'),
+    });
+    await expect(page.getByTestId('status')).toContainText(
+      `Placed the picture “${name}” (48 × 32)`,
+    );
+  }
+  await expect(panel(page)).toHaveAttribute('data-shown', '4');
+  const formats = (
+    (await page.evaluate(() => window.hairsketch.session())) as { references: { format: string }[] }
+  ).references.map((r) => r.format);
+  expect(formats).toEqual(['png', 'png', 'jpeg', 'webp']);
   // none of it touched the hair: the curves and settings are those of the preset
   const after = (await page.evaluate(() => window.hairsketch.session())) as Record<string, unknown>;
   const { references: _r, camera: _c, ...rest } = after;

@@ -10,6 +10,7 @@ import { X_PLANE } from '../../web/model/mirror';
 import type { SessionState } from '../../web/model/session';
 import { parseSession } from '../../web/model/sessionFile';
 import {
+  changesHair,
   engineSettings,
   needsSolve,
   REQUEST_FIELDS,
@@ -70,6 +71,12 @@ describe('session schema', () => {
     expect(needsSolve(s, { ...s, references: [] })).toBe(false);
     const { references: _r, ...noPictures } = s;
     expect(needsSolve(s, noPictures)).toBe(false);
+    // and no new hair is on its way after them (the view does not wait for one)
+    expect(changesHair(s, noPictures)).toBe(false);
+    expect(changesHair(s, { ...s, hairColor: '#000000' })).toBe(false);
+    expect(changesHair(s, { ...s, curves: s.curves.slice(1) })).toBe(true);
+    expect(changesHair(s, { ...s, scalpPaint: [] })).toBe(true);
+    expect(changesHair(s, { ...s, head: 'builtin' as const })).toBe(false); // the same value
   });
 
   it('gives every setting that shapes the hair to each solve, defaults spelled out', () => {
