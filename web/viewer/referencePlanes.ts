@@ -4,12 +4,7 @@
 // camera leaves its view (viewFade). The planes never take part in picking: tools cast rays at
 // the head's own geometry, and each plane's raycast is empty besides.
 import * as THREE from 'three';
-import {
-  REFERENCE_CENTRE,
-  type ReferenceImage,
-  VIEW_DIRECTIONS,
-  viewFade,
-} from '../model/referenceImage';
+import { REFERENCE_CENTRE, type ReferenceImage, viewFade } from '../model/referenceImage';
 import type { Vec3 } from '../model/vec3';
 
 /** Drawn first: before the head (renderOrder 0) in the opaque pass. */
@@ -108,5 +103,4 @@ function place(mesh: THREE.Mesh<THREE.PlaneGeometry, THREE.MeshBasicMaterial>, r
     const d = camera.position.clone().sub(centre).normalize();
     mesh.material.opacity = opacity * viewFade(view, [d.x, d.y, d.z] as Vec3);
   };
-  void VIEW_DIRECTIONS;
 }
