@@ -144,6 +144,16 @@ test('a picture shows behind the head, under strokes, through reload and Save/Op
   await third.goto(href);
   await expect(panel(third)).toHaveAttribute('data-missing', '1');
   await expect(third.getByTestId('status')).toContainText('needs the picture “wide.png”');
+  // opening that file fills it in (it is not placed a second time)
+  const linked = await third.evaluate(() => window.hairsketch.session());
+  await third.getByLabel('Reference image file').setInputFiles({
+    name: 'wide.png',
+    mimeType: 'image/png',
+    buffer: wide,
+  });
+  await expect(panel(third)).toHaveAttribute('data-shown', '1');
+  await expect(panel(third)).toHaveAttribute('data-missing', '0');
+  expect(await third.evaluate(() => window.hairsketch.session())).toEqual(linked);
   await third.context().close();
   await other.context().close();
 });
