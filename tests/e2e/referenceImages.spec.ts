@@ -4,6 +4,7 @@
 // it and Undo brings it back; it survives a reload (the link names it, IndexedDB holds it) and a
 // Save/Open round trip into a browser that never saw it, and a link alone says which picture it
 // needs. Bad files (not an image, over 50 megapixels, a damaged PNG) say why and change nothing.
+import { readFileSync } from 'node:fs';
 import { expect, type Locator, type Page, test } from '@playwright/test';
 import { pngFile, pngHeaderOnly } from '../support/pictureFiles';
 import { settled, strokeFromScalp } from './helpers';
@@ -13,11 +14,20 @@ const MAGENTA: [number, number, number] = [255, 0, 255];
 const wide = pngFile(120, 60, () => MAGENTA);
 const FRONT: [number, number, number] = [0, -0.55, 9];
 
-/** Pixels of the view's screenshot within `tol` of `rgb` in every channel (decoded by the
- *  browser's own PNG decoder). */
+/** Pixels of the view's screenshot within `tol` of `rgb` in every channel. */
 async function countColour(page: Page, rgb: [number, number, number], tol = 10): Promise<number> {
   await page.evaluate(() => window.hairsketch.idle());
-  const png = (await page.getByTestId('viewport').screenshot()).toString('base64');
+  return countInPng(page, await page.getByTestId('viewport').screenshot(), rgb, tol);
+}
+
+/** Pixels of a PNG within `tol` of `rgb` in every channel (decoded by the browser's own PNG
+ *  decoder). */
+async function countInPng(
+  page: Page,
+  png: Buffer,
+  rgb: [number, number, number],
+  tol: number,
+): Promise<number> {
   return page.evaluate(
     async ([b64, c, t]) => {
       const bytes = Uint8Array.from(atob(b64 as string), (ch) => ch.charCodeAt(0));
@@ -37,7 +47,7 @@ async function countColour(page: Page, rgb: [number, number, number], tol = 10):
           n++;
       return n;
     },
-    [png, rgb, tol] as const,
+    [png.toString('base64'), rgb, tol] as const,
   );
 }
 
@@ -98,6 +108,15 @@ test('a picture shows behind the head, under strokes, through reload and Save/Op
   await expect(panel(page)).toHaveAttribute('data-shown', '1');
   const withStroke = await countColour(page, MAGENTA);
   expect(withStroke).toBeGreaterThan(5000);
+  // the PNG export is the hair, not the picture behind it
+  await page.getByRole('button', { name: 'Export' }).click();
+  const [png] = await Promise.all([
+    page.waitForEvent('download'),
+    page.getByRole('menuitem', { name: 'PNG image', exact: true }).click(),
+  ]);
+  const exported = readFileSync(await png.path());
+  expect(exported.subarray(1, 4).toString()).toBe('PNG');
+  expect(await countInPng(page, exported, MAGENTA, 60)).toBe(0);
   if (process.env.SHOT_DIR)
     await page
       .getByTestId('viewport')
