@@ -130,13 +130,15 @@ export class ReferenceController {
       return refuse(`a session holds at most ${L.maxReferences} pictures`);
     }
     await this.d.store.put({ hash, name, bytes });
+    const wasMissing = this.missingHashes.delete(hash);
     this.images.get(hash)?.close();
     this.images.set(hash, decoded.image);
-    this.missingHashes.delete(hash);
     this.selected = hash;
     if (had) {
       this.show();
-      return `“${had.name}” is the picture this session needs; it is shown.`;
+      return wasMissing
+        ? `“${had.name}” is the picture this session needs; it is shown.`
+        : `“${had.name}” is placed already (for the ${had.view} view).`;
     }
     const { width, height } = decoded.image;
     const r = newReference(
