@@ -7,6 +7,7 @@
 //   - rejected inputs say what is wrong on one short line (the session reader names a field).
 // tests/unit/fuzz.test.ts runs each with a fixed seed and a bounded count (npm test);
 // tests/fuzz/run.ts (npm run fuzz) runs 100,000 cases each with random seeds and counts.
+import { createHash } from 'node:crypto';
 import { deflateRawSync } from 'node:zlib';
 import fc from 'fast-check';
 import { presetSession } from '../../web/cli/presetSession';
@@ -20,9 +21,10 @@ import { Head } from '../../web/head/head';
 import { PRESET_NAMES } from '../../web/model/presets';
 import { quantizeSession } from '../../web/model/quantize';
 import type { SessionState } from '../../web/model/session';
-import { parseSession } from '../../web/model/sessionFile';
+import { parseSession, readSessionFile, writeSessionFile } from '../../web/model/sessionFile';
 import { decodeSessionLink, encodeSessionLink, MAX_LINK_BYTES } from '../../web/model/sessionLink';
 import type { StrandArrays } from '../../web/solver/protocol';
+import { pngFile } from '../support/pictureFiles';
 import {
   applyMutations,
   type Mutation,
@@ -142,6 +144,8 @@ export interface FuzzContext {
   problems: { json: unknown; places: Places }[];
   /** A .usda and a .glb export of a small hair with each preset session. */
   exports: Uint8Array[];
+  /** Saved session files (JSON) that embed reference picture files. */
+  sessionFiles: { name: string; json: unknown; places: Places }[];
 }
 
 function concat(chunks: Uint8Array[]): Uint8Array {
@@ -204,6 +208,48 @@ export async function makeContext(): Promise<FuzzContext> {
       symmetry: { normal: [0.9986295347545738, 0.05233595624294383, 0], offset: 0.012 },
     }),
   });
+  // reference pictures (one hidden, one moved) on the empty preset, so that most of the places a
+  // mutation picks are theirs
+  const pictures = [pngFile(4, 6, () => [255, 0, 255]), pngFile(3, 3, (x) => [x * 80, 200, 0])];
+  const sha = (b: Uint8Array) => createHash('sha256').update(b).digest('hex');
+  const withPictures = quantizeSession({
+    ...presetSession('empty', head),
+    references: [
+      {
+        name: 'front photo.jpg',
+        hash: sha(pictures[0]),
+        format: 'png',
+        width: 4,
+        height: 6,
+        view: 'front',
+        opacity: 0.6,
+        scale: 3.2,
+        offset: [0, 0.15],
+      },
+      {
+        name: 'side.webp',
+        hash: sha(pictures[1]),
+        format: 'png',
+        width: 3,
+        height: 3,
+        view: 'side',
+        opacity: 1,
+        scale: 2.5,
+        offset: [-0.4, 0],
+        hidden: true,
+      },
+    ],
+  });
+  built.push({ name: 'empty+reference pictures', session: withPictures });
+  const fileText = await writeSessionFile(withPictures, {
+    pictureBytes: new Map(
+      pictures.map((b) => [sha(b), new Uint8Array(b).slice().buffer as ArrayBuffer]),
+    ),
+  });
+  const fileJson = JSON.parse(fileText);
+  const sessionFiles = [
+    { name: 'session file with pictures', json: fileJson, places: placesOf(fileJson) },
+  ];
   const sessions = built.map(({ name, session }) => {
     const json = JSON.parse(JSON.stringify(session));
     return { name, json, places: placesOf(json) };
@@ -232,7 +278,7 @@ export async function makeContext(): Promise<FuzzContext> {
   for (const { session } of built)
     for (const format of ['usda', 'glb'] as const)
       exports.push(concat([...writeExport(format, { strands, session, head: null })]));
-  return { sessions, links, problems, exports };
+  return { sessions, links, problems, exports, sessionFiles };
 }
 
 export function packStrands(strands: number[][]): StrandArrays {
@@ -341,6 +387,43 @@ export function sessionTarget(ctx: FuzzContext): FuzzTarget<SessionCase> {
         return 'rejected';
       }
       checkReadsBack(r.value, 'parseSession');
+      return 'accepted';
+    },
+  };
+}
+
+// ---- 1b. session files (embedded picture files) ----------------------------------------------
+
+export type SessionFileCase = { base: number; mutations: Mutation[] };
+
+export function sessionFileTarget(ctx: FuzzContext): FuzzTarget<SessionFileCase> {
+  const make = (c: SessionFileCase) => {
+    const base = ctx.sessionFiles[c.base];
+    return applyMutations(base.json, base.places, c.mutations, SESSION_MUTATIONS, 'session');
+  };
+  return {
+    name: 'session file reader',
+    arbitrary: fc.record({
+      base: fc.nat(ctx.sessionFiles.length - 1),
+      mutations: fc.array(mutation(SESSION_MUTATIONS), { maxLength: 4 }),
+    }),
+    explain: (c) => make(c).log.join('; '),
+    async run(c) {
+      const { input } = make(c);
+      const r = await guardAsync('readSessionFile', () => readSessionFile(input));
+      if (!r.ok) {
+        checkMessage(r.error, 'readSessionFile');
+        check(SESSION_FIELD.test(r.error), () => `the error names no field: ${show(r.error)}`);
+        return 'rejected';
+      }
+      checkReadsBack(r.value.session, 'readSessionFile');
+      // every embedded file is one the session names, with the bytes its hash says
+      const named = new Set((r.value.session.references ?? []).map((p) => p.hash));
+      for (const f of r.value.pictureFiles ?? []) {
+        check(named.has(f.hash), () => `picture file ${f.hash} is no picture of the session`);
+        const h = createHash('sha256').update(new Uint8Array(f.bytes)).digest('hex');
+        check(h === f.hash, () => `picture file ${f.name}: its bytes hash to ${h}, not ${f.hash}`);
+      }
       return 'accepted';
     },
   };
@@ -1116,6 +1199,7 @@ export async function loadTargets(): Promise<FuzzTarget<never>[]> {
   const ctx = await makeContext();
   return [
     sessionTarget(ctx),
+    sessionFileTarget(ctx),
     linkTarget(ctx),
     problemTarget(ctx),
     exportTarget(ctx),

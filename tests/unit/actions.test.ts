@@ -59,6 +59,7 @@ function target() {
     cancel: () => calls.push('cancel'),
     toggleHelp: () => calls.push('help'),
     openHead: () => calls.push('openHead'),
+    openReference: () => calls.push('openReference'),
     toggleHeadPanel: () => calls.push('headPanel'),
     headPanelOpen: () => false,
     toggleDetailPanel: () => {

@@ -11,6 +11,7 @@ const SEED = 20070807;
 /** Cases per target (about 2 s each here). */
 const RUNS: Record<string, number> = {
   'session reader': 1000,
+  'session file reader': 1500,
   'link codec': 400,
   'CLI problem reader': 5000,
   'export writers': 450,

@@ -10,6 +10,7 @@ import { X_PLANE } from '../../web/model/mirror';
 import type { SessionState } from '../../web/model/session';
 import { parseSession } from '../../web/model/sessionFile';
 import {
+  changesHair,
   engineSettings,
   needsSolve,
   REQUEST_FIELDS,
@@ -30,6 +31,19 @@ function full(): SessionState {
     detail: { lengthJitter: 0.2 },
     scalpPaint: [{ erase: true, radius: 0.3, points: [[0, 1, 0]] }],
     symmetry: X_PLANE,
+    references: [
+      {
+        name: 'front.png',
+        hash: 'a'.repeat(64),
+        format: 'png',
+        width: 40,
+        height: 60,
+        view: 'front',
+        opacity: 0.5,
+        scale: 3,
+        offset: [0, 0.1],
+      },
+    ],
   };
 }
 
@@ -53,6 +67,16 @@ describe('session schema', () => {
     const { fall: _f, ...noFall } = s;
     expect(needsSolve(s, noFall)).toBe(true);
     expect(needsSolve(s, { ...s, detail: { lengthJitter: 0.3 } })).toBe(true);
+    // reference pictures are drawn, never solved: placing, hiding or removing one is no solve
+    expect(needsSolve(s, { ...s, references: [] })).toBe(false);
+    const { references: _r, ...noPictures } = s;
+    expect(needsSolve(s, noPictures)).toBe(false);
+    // and no new hair is on its way after them (the view does not wait for one)
+    expect(changesHair(s, noPictures)).toBe(false);
+    expect(changesHair(s, { ...s, hairColor: '#000000' })).toBe(false);
+    expect(changesHair(s, { ...s, curves: s.curves.slice(1) })).toBe(true);
+    expect(changesHair(s, { ...s, scalpPaint: [] })).toBe(true);
+    expect(changesHair(s, { ...s, head: 'builtin' as const })).toBe(false); // the same value
   });
 
   it('gives every setting that shapes the hair to each solve, defaults spelled out', () => {
@@ -70,6 +94,9 @@ describe('session schema', () => {
     const options = packHairOptions(s, s.curves);
     const key = hairRequestKey(curves, s.growth, options);
     expect(hairRequestKey(curves, { ...s.growth }, packHairOptions(s, s.curves))).toBe(key);
+    // the pictures are not part of the request: its key is that of the session without them
+    const { references: _r, ...noPictures } = s;
+    expect(hairRequestKey(curves, s.growth, packHairOptions(noPictures, s.curves))).toBe(key);
     expect(hairRequestKey(curves, s.growth, { ...options, avoidScalp: false })).not.toBe(key);
     expect(hairRequestKey(curves, s.growth, { ...options, fall: false })).not.toBe(key);
     expect(hairRequestKey(curves, { ...s.growth, maxStrands: 9 }, options)).not.toBe(key);

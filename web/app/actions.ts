@@ -67,6 +67,8 @@ export interface ActionTarget {
   openHead(): void;
   toggleHeadPanel(): void;
   headPanelOpen(): boolean;
+  /** "Reference image": the picture file dialog. */
+  openReference(): void;
   display(key: DisplayKey): boolean;
   setDisplay(key: DisplayKey, on: boolean): void;
 }
@@ -236,6 +238,15 @@ export function buildActions(t: ActionTarget): Action[] {
       group: 'file',
       toolbar: 'more',
       run: () => t.openHead(),
+    },
+    {
+      id: 'file.reference',
+      label: 'Reference image',
+      title:
+        'Open a picture (PNG, JPEG or WebP) to sketch over: shown behind the head for the current view; it stays in this browser',
+      group: 'file',
+      toolbar: 'more',
+      run: () => t.openReference(),
     },
     {
       id: 'file.export',

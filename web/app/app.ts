@@ -9,16 +9,19 @@ import { indexedDbHeadStore } from '../head/headStore';
 import { gridForPreset, gridForSession } from '../model/grid';
 import { applyPreset } from '../model/presets';
 import { DEFAULT_GROWTH, emptySession, hangLength } from '../model/session';
+import { indexedDbPictureStore } from '../reference/pictureStore';
 import { PONYTAIL_STAGE_HINT } from '../tools/ponytailTool';
 import { buildCurvePanel } from '../ui/curvePanel';
 import { buildDetailPanel, type DetailPanel } from '../ui/detailPanel';
 import { buildDisplayToggles } from '../ui/displayToggles';
 import { buildHeadPanel, type HeadPanel } from '../ui/headPanel';
 import { buildHelpOverlay, type HelpOverlay } from '../ui/helpOverlay';
+import { buildReferencePanel, type ReferencePanel } from '../ui/referencePanel';
 import { StatusLine } from '../ui/status';
 import { buildToolbar } from '../ui/toolbar';
 import { HairView } from '../viewer/hairView';
 import { createHeadMesh } from '../viewer/headMaterial';
+import { ReferencePlanes } from '../viewer/referencePlanes';
 import { Viewer } from '../viewer/viewer';
 import { buildActions } from './actions';
 import { ActiveTool } from './activeTool';
@@ -30,6 +33,7 @@ import { bindInput } from './input';
 import { OverlayPresenter } from './overlayPresenter';
 import { bindPageControls } from './pageControls';
 import { loadQualitySetting, QualityControl } from './quality';
+import { ReferenceController } from './referenceController';
 import { LinkWriter, openSessionFileOutcome, openSessionLinkOutcome } from './sessionIO';
 import { SolverBridge } from './solverBridge';
 import { StatusPresenter } from './statusPresenter';
@@ -69,6 +73,20 @@ export function startApp(): void {
     headChanged: () => showHeadPanel(), // the bridge re-solves on the new head itself
   });
 
+  // reference pictures behind the head (the panel is made below; it is only shown after a change)
+  const pictureStore = indexedDbPictureStore();
+  const planes = new ReferencePlanes();
+  viewer.addBackdrop(planes.group);
+  let referencePanel: ReferencePanel | null = null;
+  const references = new ReferenceController({
+    planes,
+    store: pictureStore,
+    camera: () => viewer.cameraState(),
+    redraw: () => viewer.invalidateFrameCache(),
+    error: (m) => status.error(m),
+    changed: () => showReferencePanel(),
+  });
+
   const grid = gridForPreset(opts.grid);
   const initial = applyPreset(
     emptySession(opts.grid, { ...DEFAULT_GROWTH, maxStrands: opts.maxStrands }),
@@ -93,6 +111,7 @@ export function startApp(): void {
   });
   editor.listen((c) => {
     if (c.sessionChanged) heads.sessionChanged(c.session);
+    if (c.sessionChanged) references.sessionChanged(c.session);
     if (c.camera) viewer.setCamera(c.camera.position, c.camera.target);
   });
   const hair = new HairPresenter(viewer, hairView, line, editor);
@@ -133,6 +152,7 @@ export function startApp(): void {
     openDialog: () => toolbar.openFileDialog(),
     links,
     heads: headStore,
+    pictures: pictureStore,
     refresh: () => toolbar.refresh(),
   });
   let exporting: ExportWiring | null = null;
@@ -146,6 +166,7 @@ export function startApp(): void {
     },
     detailPanelOpen: () => !!detailPanel?.open,
     openHead: () => toolbar.openHeadDialog(),
+    openReference: () => toolbar.openReferenceDialog(),
     toggleHeadPanel: () => {
       headPanel?.toggle();
       showHeadPanel();
@@ -161,10 +182,20 @@ export function startApp(): void {
     hairColor: (css) => editor.run({ kind: 'setHairColor', color: css }),
     // a session whose head is not stored: HeadController says which head it needs
     openFile: (f) =>
-      void openSessionFileOutcome(editor, f, headStore).then(
+      void openSessionFileOutcome(editor, f, headStore, pictureStore).then(
         (o) => o.kind === 'failed' && status.note(o.message),
       ),
     openHeadFiles: (files) => heads.openHeadFiles(editor, files),
+    openReferenceFile: (f) => {
+      status.task(`Opening the picture ${f.name}…`);
+      void f
+        .arrayBuffer()
+        .then((bytes) => references.openFile(editor, f.name, bytes))
+        .then(
+          (m) => status.taskDone(m, m.startsWith('Could not')),
+          (e) => status.taskDone(`Could not open the picture: ${String(e)}.`, true),
+        );
+    },
   });
   help = buildHelpOverlay(document.body, actions);
   exporting = wireExport({
@@ -210,6 +241,32 @@ export function startApp(): void {
     fitPlane: () => heads.fitPlane(editor),
     say: (m) => status.note(m),
   });
+  referencePanel = buildReferencePanel(byId('stage'), {
+    open: () => toolbar.openReferenceDialog(),
+    select: (hash) => {
+      references.selected = hash;
+      showReferencePanel();
+    },
+    placeForView: () => references.placeForView(editor),
+    setHidden: (hidden) =>
+      references.update(
+        editor,
+        { hidden: hidden || undefined },
+        hidden ? 'Hid the picture' : 'Showed the picture',
+      ),
+    remove: () => references.remove(editor),
+    patch: (patch, what) => references.update(editor, patch, what),
+    say: (m) => status.note(m),
+  });
+  function showReferencePanel(): void {
+    referencePanel?.show({
+      pictures: references.pictures,
+      selected: references.selected,
+      missing: references.missing.map((r) => r.hash),
+      shown: references.shown,
+      busy: references.busy,
+    });
+  }
   function showHeadPanel(): void {
     headPanel?.show({
       session: editor.session,
@@ -295,6 +352,7 @@ export function startApp(): void {
     ponytail: tools.ponytail,
     busy: () =>
       heads.busy ||
+      references.busy ||
       viewer.viewAnimating ||
       !!exporting?.busy() ||
       bridge.pending ||

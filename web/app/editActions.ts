@@ -2,6 +2,7 @@
 // files: the ActionTarget of actions.ts, minus the view toggles the composition root adds.
 import type { Editor } from '../editor/editor';
 import type { HeadStore } from '../head/headStore';
+import type { PictureStore } from '../reference/pictureStore';
 import type { Viewer } from '../viewer/viewer';
 import type { ActionTarget } from './actions';
 import { downloadSession, type LinkWriter } from './sessionIO';
@@ -15,6 +16,8 @@ export interface EditActionDeps {
   links: LinkWriter;
   /** Where loaded heads are kept ("Save" embeds the session's head file from here). */
   heads: HeadStore;
+  /** Where reference pictures are kept ("Save" embeds the session's picture files). */
+  pictures?: PictureStore;
   view: ViewStore;
   /** Abandons what the active tool is doing. */
   cancelTool(): void;
@@ -34,6 +37,7 @@ export type EditActions = Omit<
   | 'openHead'
   | 'toggleHeadPanel'
   | 'headPanelOpen'
+  | 'openReference'
 >;
 
 export function editActions(d: EditActionDeps): EditActions {
@@ -81,7 +85,7 @@ export function editActions(d: EditActionDeps): EditActions {
     copyEmbed: () => void d.links.copyEmbed().then((m) => status.note(m)),
     save: () => {
       const n = editor.session.curves.length;
-      void downloadSession(editor.session, viewer.cameraState(), d.heads).then((m) =>
+      void downloadSession(editor.session, viewer.cameraState(), d.heads, d.pictures).then((m) =>
         status.note(m ?? `Saved the session (${n} curves).`),
       );
     },

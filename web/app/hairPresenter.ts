@@ -3,6 +3,7 @@
 // each revision reached the screen (for benchmarks). Holds the view at interactive detail while
 // the hair is still settling.
 import type { Editor } from '../editor/editor';
+import { changesHair } from '../model/sessionSchema';
 import type { StrandArrays } from '../solver/protocol';
 import type { SolveResult } from '../solver/solverClient';
 import type { StatusLine } from '../ui/status';
@@ -50,7 +51,9 @@ export class HairPresenter {
     viewer.onRendered = () => this.stamp();
     editor.listen((c) => {
       this.hair.setColor(c.session.hairColor); // a no-op when it is the same colour
-      if (c.sessionChanged) this.viewer.hold('settling', true); // until the final hair is shown
+      // until the final hair is shown; a change the hair does not depend on brings none
+      if (c.sessionChanged && changesHair(c.previous, c.session))
+        this.viewer.hold('settling', true);
     });
   }
 

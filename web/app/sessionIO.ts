@@ -7,14 +7,18 @@
 // session is applied, so the app finds it there. A link (or a file saved without its head, or an
 // export) carries only the name: when the store does not hold that head the session is still
 // applied (the app keeps showing the head it has) and the outcome says which head it needs
-// (`needsHead`), so the app can say so and offer "Open head".
+// (`needsHead`), so the app can say so and offer "Open head". Reference pictures travel the
+// same way: a file embeds them (into the picture store before the session is applied), a link
+// names them by hash (the reference controller says which picture is missing).
 import type { Editor } from '../editor/editor';
 import { readExportedSession } from '../export/readExport';
 import type { HeadStore } from '../head/headStore';
+import { sha256Hex } from '../model/bytes';
 import type { SessionState, Viewpoint } from '../model/session';
 import { type Parsed, parseSession, readSessionFile, writeSessionFile } from '../model/sessionFile';
 import { decodeSessionLink, encodeSessionLink } from '../model/sessionLink';
 import type { Vec3 } from '../model/vec3';
+import type { PictureStore } from '../reference/pictureStore';
 
 export type LoadSource = { kind: 'file'; name: string } | { kind: 'link' } | { kind: 'test' };
 
@@ -106,11 +110,12 @@ async function openParsed(
 
 /** Reads a session file the user chose (a saved session, or an exported USD / glTF that
  *  carries one). A saved session's embedded head file goes into `heads` before the session is
- *  applied. */
+ *  applied, and its embedded picture files into `pictures`. */
 export async function openSessionFileOutcome(
   editor: Editor,
   file: File,
   heads?: HeadStore,
+  pictures?: PictureStore,
 ): Promise<OpenOutcome> {
   const failed = (why: string): OpenOutcome => ({
     kind: 'failed',
@@ -136,7 +141,13 @@ export async function openSessionFileOutcome(
   }
   const r = await readSessionFile(data);
   if (!r.ok) return failed(r.error);
-  const { session, headFile } = r.value;
+  const { session, headFile, pictureFiles } = r.value;
+  for (const p of pictureFiles ?? [])
+    try {
+      await pictures?.put(p);
+    } catch {
+      // a store that fails: the picture is reported missing when the session is shown
+    }
   if (headFile && heads) {
     try {
       await heads.put({ hash: headFile.hash, name: headFile.name, bytes: headFile.bytes });
@@ -190,9 +201,11 @@ export async function sessionFileText(
   s: SessionState,
   camera: Viewpoint,
   heads?: HeadStore,
+  pictures?: PictureStore,
 ): Promise<{ text: string; headMissing: HeadNeeded | null }> {
+  const pictureBytes = await storedPictures(s, pictures);
   if (s.head === 'builtin')
-    return { text: await writeSessionFile(s, { camera }), headMissing: null };
+    return { text: await writeSessionFile(s, { camera, pictureBytes }), headMissing: null };
   const needed = { name: s.head.name, hash: s.head.hash };
   let headBytes: ArrayBuffer | undefined;
   try {
@@ -202,11 +215,32 @@ export async function sessionFileText(
   }
   if (headBytes)
     try {
-      return { text: await writeSessionFile(s, { camera, headBytes }), headMissing: null };
+      return {
+        text: await writeSessionFile(s, { camera, headBytes, pictureBytes }),
+        headMissing: null,
+      };
     } catch {
       // the stored bytes are not the head's (a damaged store): save without them
     }
-  return { text: await writeSessionFile(s, { camera }), headMissing: needed };
+  return { text: await writeSessionFile(s, { camera, pictureBytes }), headMissing: needed };
+}
+
+/** The files of the session's pictures that `pictures` holds and whose bytes are theirs (a
+ *  damaged store's are left out), by hash. */
+async function storedPictures(
+  s: SessionState,
+  pictures?: PictureStore,
+): Promise<Map<string, ArrayBuffer>> {
+  const out = new Map<string, ArrayBuffer>();
+  for (const r of s.references ?? []) {
+    try {
+      const p = await pictures?.get(r.hash);
+      if (p && (await sha256Hex(p.bytes)) === r.hash) out.set(r.hash, p.bytes);
+    } catch {
+      // a store that fails holds nothing
+    }
+  }
+  return out;
 }
 
 /** "Save": the session and the camera (and, on a loaded head, its file from `heads`) as a JSON
@@ -215,8 +249,9 @@ export async function downloadSession(
   s: SessionState,
   camera: Viewpoint,
   heads?: HeadStore,
+  pictures?: PictureStore,
 ): Promise<string | null> {
-  const { text: json, headMissing } = await sessionFileText(s, camera, heads);
+  const { text: json, headMissing } = await sessionFileText(s, camera, heads, pictures);
   const a = document.createElement('a');
   a.href = URL.createObjectURL(new Blob([json], { type: 'application/json' }));
   a.download = 'hairstyle.hairsketch.json';

@@ -11,6 +11,7 @@ import {
 } from '../model/mirror';
 import { ponytailCircles } from '../model/ponytailGeometry';
 import { quantizeSession } from '../model/quantize';
+import type { ReferenceImage } from '../model/referenceImage';
 import {
   addCurve,
   type BraidCurve,
@@ -73,6 +74,8 @@ export type Command =
   | { kind: 'paintScalp'; stroke: ScalpStroke }
   /** The mirror plane (Mirror editing); absent = x = 0. */
   | { kind: 'setSymmetry'; plane: MirrorPlane | undefined }
+  /** The reference pictures (added, placed, adjusted, hidden or removed); `what` says which. */
+  | { kind: 'setReferences'; references: ReferenceImage[]; what: string }
   /** Replaces the whole session (a file, a link, a test hook). The page's grid is kept: curves
    *  are in world units. `camera`: the view the session was saved with, if any. */
   | {
@@ -358,6 +361,15 @@ function applyExact(s: SessionState, cmd: Command): CommandResult {
       return {
         session: cmd.plane ? { ...rest, symmetry: cmd.plane } : rest,
         message: 'Mirror plane moved (new mirrored curves use it).',
+      };
+    }
+    case 'setReferences': {
+      if (JSON.stringify(cmd.references) === JSON.stringify(s.references ?? []))
+        return { session: s, message: `${cmd.what} (unchanged).` };
+      const { references: _, ...rest } = s;
+      return {
+        session: cmd.references.length > 0 ? { ...rest, references: cmd.references } : rest,
+        message: `${cmd.what}.`,
       };
     }
     case 'loadSession': {

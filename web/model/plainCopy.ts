@@ -4,7 +4,7 @@
 // array or an oversized array is refused with the path where it was found. Nothing of the
 // caller's is read twice or after this pass.
 import { fail, isOurs, keyStep } from './readFailure';
-import { SESSION_LIMITS as L, MAX_HEAD_FILE_DATA } from './sessionLimits';
+import { SESSION_LIMITS as L, MAX_HEAD_FILE_DATA, MAX_PICTURE_FILE_DATA } from './sessionLimits';
 import type { Plain, PlainRecord } from './sessionMigrations';
 
 /** Array size caps by the key holding the array (the session's big arrays); other arrays hold
@@ -49,6 +49,11 @@ function capFor(at: readonly (string | number)[], depth: number, key: string): C
  *  MAX_HEAD_FILE_DATA characters). */
 const isHeadFileData = (at: readonly (string | number)[]) =>
   at.length === 2 && at[0] === 'headFile' && at[1] === 'data';
+
+/** Whether the string at path `at` is an embedded picture file's data (allowed up to
+ *  MAX_PICTURE_FILE_DATA characters). */
+const isPictureFileData = (at: readonly (string | number)[]) =>
+  at.length === 3 && at[0] === 'pictureFiles' && at[2] === 'data';
 
 interface CopyBudget {
   nodes: number;
@@ -98,7 +103,11 @@ function copyPlain(v: unknown, b: CopyBudget, cap?: Cap): Plain | undefined {
     case 'number':
       return v === 0 ? 0 : v; // -0 as JSON writes it
     case 'string': {
-      const max = isHeadFileData(b.at) ? MAX_HEAD_FILE_DATA : L.maxString;
+      const max = isHeadFileData(b.at)
+        ? MAX_HEAD_FILE_DATA
+        : isPictureFileData(b.at)
+          ? MAX_PICTURE_FILE_DATA
+          : L.maxString;
       if (v.length > max) fail(where(b), `is longer than ${max} characters`);
       return v;
     }

@@ -23,6 +23,7 @@
 import { CURVE_KINDS, curveParamSpecs, quantumScale } from './curveParams';
 import type { MirrorPlane } from './mirror';
 import type { PonytailCircle } from './ponytailGeometry';
+import { REFERENCE_RANGES, type ReferenceImage } from './referenceImage';
 import type { ScalpStroke, SessionState, StyleCurve, Viewpoint } from './session';
 import { SETTING_NAMES, type SessionSettings, settingSpec } from './sessionSchema';
 import type { Vec3 } from './vec3';
@@ -165,11 +166,13 @@ export function quantizeSession(s: SessionState): SessionState {
   const scalpPaint = s.scalpPaint && mapSame(s.scalpPaint, quantizeStroke);
   const symmetry = s.symmetry && quantizePlane(s.symmetry);
   const settings = quantizeSettings(s);
+  const references = s.references && mapSame(s.references, quantizeReference);
   if (
     curves === s.curves &&
     hairColor === s.hairColor &&
     scalpPaint === s.scalpPaint &&
     symmetry === s.symmetry &&
+    references === s.references &&
     settings === null
   )
     return s;
@@ -179,8 +182,28 @@ export function quantizeSession(s: SessionState): SessionState {
     hairColor,
     ...(scalpPaint ? { scalpPaint } : {}),
     ...(symmetry ? { symmetry } : {}),
+    ...(references ? { references } : {}),
     ...settings,
   };
+}
+
+/** A reference picture's numbers on their grids (referenceImage.ts REFERENCE_RANGES); the same
+ *  object when they already are. */
+export function quantizeReference(r: ReferenceImage): ReferenceImage {
+  const q = (x: number, k: keyof typeof REFERENCE_RANGES) =>
+    quantize(x, Math.round(1 / REFERENCE_RANGES[k].quantum));
+  const opacity = q(r.opacity, 'opacity');
+  const scale = q(r.scale, 'scale');
+  const ox = q(r.offset[0], 'offset');
+  const oy = q(r.offset[1], 'offset');
+  if (
+    Object.is(opacity, r.opacity) &&
+    Object.is(scale, r.scale) &&
+    Object.is(ox, r.offset[0]) &&
+    Object.is(oy, r.offset[1])
+  )
+    return r;
+  return { ...r, opacity, scale, offset: [ox, oy] };
 }
 
 /** The number settings (sessionSchema.ts) that are off their quantum's grid, put on it; null

@@ -8,6 +8,7 @@ import type { GridPreset } from './grid';
 import { DEFAULT_GROWTH, type GrowthParams } from './growthParams';
 import type { MirrorPlane } from './mirror';
 import type { PonytailCircle } from './ponytailGeometry';
+import type { ReferenceImage } from './referenceImage';
 import type { SessionSettings } from './sessionSchema';
 import type { SurfaceMode } from './supportingSurface';
 import type { Vec3 } from './vec3';
@@ -151,6 +152,8 @@ export interface SessionState extends SessionSettings {
   scalpPaint?: ScalpStroke[];
   /** The mirror plane n·p = offset (unit n); absent = x = 0 (the built-in head's). */
   symmetry?: MirrorPlane;
+  /** Reference pictures shown behind the head (absent = none); they do not affect the hair. */
+  references?: ReferenceImage[];
 }
 
 /** The scalar parameters of a new curve of kind `k`: the defaults of curveParams.ts CURVE_PARAMS. */

@@ -9,12 +9,18 @@
 // bytes' SHA-256 is the hash the session's head names. A file without it reads fine: the app
 // finds the head by its hash in the browser's store or asks for it.
 //
+// The reference pictures a session places (session.references, named by SHA-256 too) are
+// embedded the same way, each file once, as plain base64 (pictures are compressed already):
+//   "pictureFiles": [{"name": "front.png", "hash": "<64 hex>", "encoding": "base64",
+//                     "data": "<base64 of the file's bytes>"}]
+// each checked against its hash and a picture of the session, at most maxPictureFileBytes.
+//
 // The file's session is the session's own fields, in the reader's order (sessionSchema.ts
 // SESSION_FIELDS): what the reader accepts, written as it is, reads back the same.
 
 import { deflateRaw, fromBase64, inflateCapped, sha256Hex, toBase64 } from './bytes';
 import { fail, failed } from './readFailure';
-import { fileName, record, sha256Of } from './readValues';
+import { array, fileName, record, sha256Of } from './readValues';
 import type { SessionState, Viewpoint } from './session';
 import { SESSION_LIMITS as L, type Parsed } from './sessionLimits';
 import type { Plain, PlainRecord } from './sessionMigrations';
@@ -35,10 +41,15 @@ export interface HeadFileData {
   bytes: ArrayBuffer;
 }
 
-/** What a session file holds: the session, and the head file when it embeds one. */
+/** The encoding of pictureFiles[i].data. */
+export const PICTURE_FILE_ENCODING = 'base64';
+
+/** What a session file holds: the session, the head file and the picture files it embeds. */
 export interface SessionFileContents {
   session: SessionState;
   headFile?: HeadFileData;
+  /** Files of the session's reference pictures (by hash), those the file embeds. */
+  pictureFiles?: HeadFileData[];
 }
 
 /** The SHA-256 of bytes as 64 lowercase hex digits (the content hash that names a head). */
@@ -52,13 +63,22 @@ export async function readSessionFile(data: unknown): Promise<Parsed<SessionFile
   let top: PlainRecord;
   let value: SessionState;
   let embedded: { name: string; hash: string; data: string } | null;
+  let pictures: { name: string; hash: string; data: string }[];
   try {
     ({ top, session: value } = readInput(data));
     embedded = headFileRecord(top.headFile, value);
+    pictures = pictureFileRecords(top.pictureFiles, value);
   } catch (e) {
     return failed(e);
   }
-  if (!embedded) return { ok: true, value: { session: value } };
+  const pictureFiles: HeadFileData[] = [];
+  for (let i = 0; i < pictures.length; i++) {
+    const r = await pictureBytes(pictures[i], `session.pictureFiles[${i}]`);
+    if (!r.ok) return r;
+    pictureFiles.push(r.value);
+  }
+  const withPictures = pictureFiles.length > 0 ? { pictureFiles } : {};
+  if (!embedded) return { ok: true, value: { session: value, ...withPictures } };
   const at = 'session.headFile';
   const deflated = fromBase64(embedded.data);
   if (!deflated) return { ok: false, error: `${at}.data: must be base64 text` };
@@ -82,8 +102,66 @@ export async function readSessionFile(data: unknown): Promise<Parsed<SessionFile
       : (inflated.slice().buffer as ArrayBuffer);
   return {
     ok: true,
-    value: { session: value, headFile: { name: embedded.name, hash: embedded.hash, bytes } },
+    value: {
+      session: value,
+      headFile: { name: embedded.name, hash: embedded.hash, bytes },
+      ...withPictures,
+    },
   };
+}
+
+/** One embedded picture file's bytes, checked against its hash. */
+async function pictureBytes(
+  p: { name: string; hash: string; data: string },
+  at: string,
+): Promise<Parsed<HeadFileData>> {
+  const bytes = fromBase64(p.data);
+  if (!bytes) return { ok: false, error: `${at}.data: must be base64 text` };
+  if (bytes.byteLength > L.maxPictureFileBytes)
+    return {
+      ok: false,
+      error: `${at}.data: is more than ${L.maxPictureFileBytes / (1 << 20)} MiB (the cap)`,
+    };
+  const hash = await sha256Hex(bytes);
+  if (hash !== p.hash)
+    return {
+      ok: false,
+      error: `${at}.hash: does not match the data (the SHA-256 of the data is ${hash}): the file is damaged`,
+    };
+  const buffer =
+    bytes.byteOffset === 0 && bytes.byteLength === bytes.buffer.byteLength
+      ? (bytes.buffer as ArrayBuffer)
+      : (bytes.slice().buffer as ArrayBuffer);
+  return { ok: true, value: { name: p.name, hash, bytes: buffer } };
+}
+
+/** The pictureFiles records' fields, each naming a picture of the session once ([] when
+ *  absent). */
+function pictureFileRecords(
+  v: Plain | undefined,
+  s: SessionState,
+): { name: string; hash: string; data: string }[] {
+  if (v === undefined) return [];
+  const path = 'session.pictureFiles';
+  const a = array(v, path, 'picture files');
+  const refs = s.references ?? [];
+  if (a.length > refs.length)
+    fail(path, `has ${a.length} files for ${refs.length} pictures (session.references)`);
+  const seen = new Set<string>();
+  return a.map((item, i) => {
+    const at = `${path}[${i}]`;
+    const o = record(item, at, ['name', 'hash', 'encoding', 'data']);
+    const name = fileName(o.name, `${at}.name`);
+    const hash = sha256Of(o.hash, `${at}.hash`);
+    if (o.encoding !== PICTURE_FILE_ENCODING)
+      fail(`${at}.encoding`, `must be "${PICTURE_FILE_ENCODING}"`);
+    if (typeof o.data !== 'string') fail(`${at}.data`, 'must be base64 text');
+    if (!refs.some((r) => r.hash === hash))
+      fail(`${at}.hash`, 'must be the hash of a picture of the session (session.references)');
+    if (seen.has(hash)) fail(`${at}.hash`, 'names the same file as an earlier one');
+    seen.add(hash);
+    return { name, hash, data: o.data };
+  });
 }
 
 /** The headFile record's fields, checked against the session's head (null when absent). */
@@ -116,6 +194,9 @@ export interface WriteSessionFileOptions {
   headBytes?: ArrayBuffer;
   /** Written beside the session as `camera` ("Save" keeps the view). */
   camera?: Viewpoint;
+  /** The files of the session's reference pictures, by hash (each SHA-256 checked); those
+   *  not given are left out. */
+  pictureBytes?: ReadonlyMap<string, ArrayBuffer>;
 }
 
 /** A session file's text (JSON): the session, the camera and, for a session on a loaded head
@@ -144,5 +225,16 @@ export async function writeSessionFile(
       data: toBase64(await deflateRaw(bytes)),
     };
   }
+  const pictures: Record<string, string>[] = [];
+  for (const r of s.references ?? []) {
+    const b = options.pictureBytes?.get(r.hash);
+    if (!b) continue;
+    const bytes = new Uint8Array(b);
+    const hash = await sha256Hex(bytes);
+    if (hash !== r.hash)
+      throw new Error(`writeSessionFile: the picture bytes' SHA-256 ${hash} is not ${r.hash}`);
+    pictures.push({ name: r.name, hash, encoding: PICTURE_FILE_ENCODING, data: toBase64(bytes) });
+  }
+  if (pictures.length > 0) out.pictureFiles = pictures;
   return JSON.stringify(out);
 }

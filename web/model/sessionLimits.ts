@@ -60,6 +60,11 @@ export const SESSION_LIMITS = {
   /** Bytes of a head file a session file embeds, after inflating (refused past it while
    *  inflating). */
   maxHeadFileBytes: 256 * 1024 * 1024,
+  /** Reference pictures per session; pixels of one picture (50 megapixels); bytes of one
+   *  picture file (a session file embeds each once). */
+  maxReferences: 8,
+  maxPicturePixels: 50_000_000,
+  maxPictureFileBytes: 64 * 1024 * 1024,
   /** Characters in any string (but headFile.data: maxHeadFileData); nesting depth and values of
    *  the whole input. */
   maxString: 1024,
@@ -69,6 +74,9 @@ export const SESSION_LIMITS = {
 const L = SESSION_LIMITS;
 /** MAX_HEAD_FILE_BYTES, as the reader's limits name it. */
 export const MAX_HEAD_FILE_BYTES = L.maxHeadFileBytes;
+/** Characters of pictureFiles[i].data: the base64 of a picture file of at most
+ *  maxPictureFileBytes. */
+export const MAX_PICTURE_FILE_DATA = 4 * Math.ceil(L.maxPictureFileBytes / 3);
 /** Characters of headFile.data: the base64 of a deflate stream of at most maxHeadFileBytes
  *  (stored blocks add 5 bytes per 64 KiB to incompressible data). */
 export const MAX_HEAD_FILE_DATA = 4 * Math.ceil((L.maxHeadFileBytes * 1.001 + 1024) / 3);

@@ -22,6 +22,7 @@ import { plainCopy } from './plainCopy';
 import { POSITION_SCALE, toGridInt, unitNormal } from './quantize';
 import { curve, detail } from './readCurve';
 import { fail, failed, refuse } from './readFailure';
+import { references } from './readReference';
 import {
   array,
   bool,
@@ -150,10 +151,10 @@ function symmetry(v: Plain | undefined, path: string): { symmetry?: MirrorPlane 
   return { symmetry: { normal, offset } };
 }
 
-/** Written beside the session by "Save" (camera, headFile) and the test hook (camera,
+/** Written beside the session by "Save" (camera, headFile, pictureFiles) and the test hook (camera,
  *  selected); the reader leaves them out of the session (app/sessionIO.ts reads the saved
  *  camera, readSessionFile the head file). */
-const SIDE_FIELDS = ['camera', 'selected', 'headFile'];
+const SIDE_FIELDS = ['camera', 'selected', 'headFile', 'pictureFiles'];
 
 function curves(v: Plain | undefined, path: string): StyleCurve[] {
   const cs = array(v, path, 'curves');
@@ -216,6 +217,7 @@ const FIELD_READERS: Readonly<
   detail,
   scalpPaint,
   symmetry,
+  references,
 };
 
 // every field of the schema is read, by its reader or as a setting

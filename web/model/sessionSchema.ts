@@ -89,6 +89,8 @@ export const SESSION_FIELDS: Readonly<Record<string, FieldSpec>> = {
   detail: { hair: 'request', link: 'tail' },
   scalpPaint: { hair: 'setup', link: 'layout' },
   symmetry: { hair: false, link: 'layout' },
+  /** Reference pictures (referenceImage.ts): drawn behind the head, never part of a solve. */
+  references: { hair: false, link: 'tail' },
 };
 
 export const SESSION_FIELD_NAMES = Object.keys(SESSION_FIELDS);
@@ -107,7 +109,15 @@ export function needsSolve(prev: object, next: object): boolean {
   return REQUEST_FIELDS.some((k) => p[k] !== n[k]);
 }
 
-/** A session's settings with defaults spelled out, for a solve (HairOptions without detail). */
+/** Whether going from `prev` to `next` changes anything the hair depends on (a 'request' or a
+ *  'setup' field): after such a change new hair is on its way; after any other (colour, mirror
+ *  plane, reference pictures) the hair shown stays the session's. */
+export function changesHair(prev: object, next: object): boolean {
+  const p = prev as Record<string, unknown>;
+  const n = next as Record<string, unknown>;
+  return SESSION_FIELD_NAMES.some((k) => SESSION_FIELDS[k].hair !== false && p[k] !== n[k]);
+}
+
 /** The settings a solve request carries, as the engine reads them (solver-cpp/src/
  *  engine_settings.hpp): one number per 'request' setting in table order, flags as 0 or 1. */
 export function engineSettings(v: SessionSettingValues): Float64Array {

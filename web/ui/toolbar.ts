@@ -10,6 +10,8 @@ export interface ToolbarExtras {
   /** A head mesh file chosen with "Open head". */
   /** The files picked in "Open head" (a head file, or a .gltf with its .bin and textures). */
   openHeadFiles(files: File[]): void;
+  /** A picture file chosen with "Reference image". */
+  openReferenceFile(file: File): void;
 }
 
 export interface Toolbar {
@@ -18,6 +20,7 @@ export interface Toolbar {
   setHairColor(css: string): void;
   openFileDialog(): void;
   openHeadDialog(): void;
+  openReferenceDialog(): void;
   /** Where the display toggles go. */
   readonly moreElement: HTMLElement;
 }
@@ -93,13 +96,23 @@ export function buildToolbar(
     headPicker.value = '';
     if (files.length) extras.openHeadFiles(files);
   });
+  const referencePicker = document.createElement('input');
+  referencePicker.type = 'file';
+  referencePicker.accept = '.png,.jpg,.jpeg,.webp,image/png,image/jpeg,image/webp';
+  referencePicker.hidden = true;
+  referencePicker.setAttribute('aria-label', 'Reference image file');
+  referencePicker.addEventListener('change', () => {
+    const f = referencePicker.files?.[0];
+    referencePicker.value = '';
+    if (f) extras.openReferenceFile(f);
+  });
   const colorLabel = document.createElement('label');
   colorLabel.textContent = 'Hair colour';
   const color = document.createElement('input');
   color.type = 'color';
   color.addEventListener('input', () => extras.hairColor(color.value));
   colorLabel.append(color);
-  more.append(separator(), colorLabel, picker, headPicker);
+  more.append(separator(), colorLabel, picker, headPicker, referencePicker);
   root.append(main, more);
 
   // closes the menu on a press outside it
@@ -127,6 +140,9 @@ export function buildToolbar(
     },
     openHeadDialog() {
       headPicker.click();
+    },
+    openReferenceDialog() {
+      referencePicker.click();
     },
   };
 }

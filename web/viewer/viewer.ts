@@ -79,6 +79,8 @@ export class Viewer {
   readonly frameSources: Record<FramePlan['source'], number> = { hair: 0, static: 0, none: 0 };
   /** Drawing-buffer resolution relative to the display's (interactive frames may lower it). */
   private resolutionScale = 1;
+  /** Objects left out of captures (addBackdrop). */
+  private readonly backdrops: THREE.Object3D[] = [];
 
   constructor(readonly canvas: HTMLCanvasElement) {
     // Multisampling costs ~2x per frame on a software rasteriser (SwiftShader, llvmpipe), where
@@ -286,6 +288,7 @@ export class Viewer {
     if (scale === this.resolutionScale) return;
     this.resolutionScale = scale;
     this.renderer.setPixelRatio(basePixelRatio() * scale);
+    this.requestRender(); // resizing the drawing buffer cleared it
   }
 
   // ---- level of detail -----------------------------------------------------------------------
@@ -368,6 +371,14 @@ export class Viewer {
     this.requestRender();
   }
 
+  /** Adds what is drawn behind the head (reference pictures): part of the view, left out of
+   *  the PNG capture. */
+  addBackdrop(object: THREE.Object3D): void {
+    this.backdrops.push(object);
+    this.scene.add(object);
+    this.requestRender();
+  }
+
   /** Replaces the displayed hair. */
   setHair(object: THREE.Object3D | null): void {
     for (const child of [...this.hairGroup.children]) {
@@ -428,9 +439,14 @@ export class Viewer {
   /** The current view as a PNG at `scale` × the canvas's resolution, with every strand drawn
    *  (not the level-of-detail sample), on a transparent background when asked. */
   captureImage(opts: { scale?: number; transparent?: boolean } = {}): Promise<Blob> {
-    const png = captureImage(this.captureSource(), opts);
-    this.requestRender();
-    return png;
+    const shown = this.backdrops.filter((o) => o.visible);
+    for (const o of shown) o.visible = false;
+    try {
+      return captureImage(this.captureSource(), opts);
+    } finally {
+      for (const o of shown) o.visible = true;
+      this.requestRender();
+    }
   }
 
   /** Benchmark probe: draws the current view once with every strand and returns its time in
