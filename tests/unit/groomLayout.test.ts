@@ -77,26 +77,32 @@ describe('groom layout', () => {
     expect(guides.length).toBeGreaterThan(50);
     expect(guides.length).toBeLessThan(roots.length / 4);
     const dist = (a: number, b: number) => Math.hypot(...roots[a].map((v, c) => v - roots[b][c]));
+    // plain loops, one expect per property (hundreds of thousands of pairs)
+    let closePairs = 0;
     for (let i = 0; i < guides.length; i++)
       for (let j = i + 1; j < guides.length; j++)
-        expect(dist(guides[i], guides[j])).toBeGreaterThanOrEqual(GUIDE_SPACING * (1 - 1e-6));
+        if (dist(guides[i], guides[j]) < GUIDE_SPACING * (1 - 1e-6)) closePairs++;
+    expect(closePairs).toBe(0);
     const isGuide = new Set(guides);
+    const wrong: string[] = [];
     for (let s = 0; s < roots.length; s++) {
       const byDist = guides.map((q) => ({ q, d: dist(s, q) })).sort((x, y) => x.d - y.d);
       // maximal: every strand is within the spacing of a guide
-      expect(byDist[0].d).toBeLessThan(GUIDE_SPACING);
+      if (!(byDist[0].d < GUIDE_SPACING)) wrong.push(`${s}: no guide within the spacing`);
       const ids = [...g.closestGuides.slice(3 * s, 3 * s + 3)];
       const w = [...g.guideWeights.slice(3 * s, 3 * s + 3)];
-      if (isGuide.has(s)) {
-        expect(ids).toEqual([g.ids[s], g.ids[s], g.ids[s]]);
-        expect(w).toEqual([1, 0, 0]);
-        continue;
-      }
-      expect(ids).toEqual(byDist.slice(0, 3).map((x) => g.ids[x.q]));
-      const inv = byDist.slice(0, 3).map((x) => 1 / x.d);
-      const sum = inv[0] + inv[1] + inv[2];
-      for (let k = 0; k < 3; k++) expect(w[k]).toBeCloseTo(inv[k] / sum, 5);
+      const want = isGuide.has(s)
+        ? { ids: [g.ids[s], g.ids[s], g.ids[s]], w: [1, 0, 0] }
+        : (() => {
+            const inv = byDist.slice(0, 3).map((x) => 1 / x.d);
+            const sum = inv[0] + inv[1] + inv[2];
+            return { ids: byDist.slice(0, 3).map((x) => g.ids[x.q]), w: inv.map((v) => v / sum) };
+          })();
+      if (ids.join() !== want.ids.join()) wrong.push(`${s}: guides ${ids} not ${want.ids}`);
+      if (w.some((v, k) => Math.abs(v - want.w[k]) > 1e-5))
+        wrong.push(`${s}: weights ${w} not ${want.w}`);
     }
+    expect(wrong.slice(0, 5)).toEqual([]);
     for (let k = 0; k < g.rootUv.length; k++) {
       expect(g.rootUv[k]).toBeGreaterThanOrEqual(0);
       expect(g.rootUv[k]).toBeLessThanOrEqual(1);
@@ -142,5 +148,35 @@ describe('groom layout', () => {
     for (let s = 0; s < roots.length; s++)
       for (let k = 0; k < 3; k++)
         expect(groupOfId.get(g.closestGuides[3 * s + k])).toBe(g.groupOf[s]);
+  });
+
+  it("takes a field ponytail's strands by where they cross its first circle's plane", () => {
+    const ponytail = {
+      id: 't',
+      type: 'ponytail',
+      points: [[0, 2, 0]],
+      circles: [{ centre: [0, 2, 0], axis: [0, 1, 0], radius: 0.1, spineIndex: 0 }],
+    } as unknown as StyleCurve;
+    // crossing y = 2 upwards at 0.05 and 0.2 from the axis (within 2.5 radii), at 0.3 (not), and
+    // one going down through the circle (against the axis: not)
+    const line = (x: number, y0: number, y1: number) => [x, y0, 0, x, (y0 + y1) / 2, 0, x, y1, 0];
+    const pts = [
+      line(0.05, 1.5, 2.5),
+      line(0.2, 1.5, 2.5),
+      line(0.3, 1.5, 2.5),
+      line(0.05, 2.5, 1.5),
+    ];
+    const src = {
+      points: new Float32Array(pts.flat()),
+      strandStart: Uint32Array.from([0, 3, 6, 9, 12]),
+    };
+    const e = strandsForExport(src, { hairColor: '#5a3825', growth: DEFAULT_GROWTH });
+    const g = groomLayout(e, {}, session([ponytail]));
+    expect([...g.groupOf].map((k) => g.groupNames[k])).toEqual([
+      'ponytail1',
+      'ponytail1',
+      'hair',
+      'hair',
+    ]);
   });
 });

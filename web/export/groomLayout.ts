@@ -7,8 +7,8 @@
 //    + phi column), so a strand keeps its id when curves elsewhere change; without rootIds, the
 //    strand's index in the grown hair.
 //  - group: the gathered ponytail, braid or bun that laid the strand (the growth says which:
-//    StrandArrays.tailCurves); a ponytail the growth does not gather takes the strands that pass
-//    through its first circle; the rest go to a side of the nearest parting (dividing curve)
+//    StrandArrays.tailCurves); a ponytail the growth does not gather takes the strands that cross
+//    its first circle's plane near it (as the growth would capture them); the rest go to a side of the nearest parting (dividing curve)
 //    by their root, or to "hair" when there is no parting.
 //  - guides: per group, a greedy Poisson-disc pass over the roots (GUIDE_SPACING apart) in a
 //    seeded order of their ids. A guide is a copy of its strand and has the strand's id.
@@ -24,6 +24,10 @@ import { type ExportStrands, strandHash } from './strandsForExport';
 /** The scalp parameterisation's centre: the origin for the built-in head and for loaded heads
  *  (head/loadHead.ts places them so). */
 export const HEAD_CENTER: readonly [number, number, number] = [0, 0, 0];
+
+/** How far from a ponytail's axis, in radii of its first circle, a strand crossing that circle's
+ *  plane joins it (solver-cpp/src/gathered_tail.hpp kTailCapture). */
+const TAIL_CAPTURE = 2.5;
 
 /** Closest distance between two guide roots, world units (1 cm). */
 export const GUIDE_SPACING = 0.1;
@@ -117,21 +121,38 @@ export function groomLayout(
     const t = tails ? tails[strands.source[s]] : -1;
     if (t >= 0 && tailName.has(t)) key[s] = `tail:${t}`;
   }
-  // ponytails the growth did not gather: the strands through their first circle
+  // ponytails the growth did not gather: the strands that cross their first circle's plane
+  // going along its axis within TAIL_CAPTURE radii of its centre (the growth's capture rule,
+  // solver-cpp/src/gathered_tail.hpp)
   curves.forEach((c, i) => {
     if (c.type !== 'ponytail' || laid.has(i) || c.circles.length === 0) return;
-    const { centre, radius } = c.circles[0];
-    const r2 = radius * radius;
+    const { centre, axis, radius } = c.circles[0];
+    const reach2 = (TAIL_CAPTURE * radius) ** 2;
     for (let s = 0; s < n; s++) {
       if (key[s] !== undefined) continue;
+      let w0 = Number.NaN;
       for (let p = strandStart[s]; p < strandStart[s + 1]; p++) {
         const dx = points[3 * p] - centre[0];
         const dy = points[3 * p + 1] - centre[1];
         const dz = points[3 * p + 2] - centre[2];
-        if (dx * dx + dy * dy + dz * dz <= r2) {
-          key[s] = `tail:${i}`;
-          break;
+        const w1 = dx * axis[0] + dy * axis[1] + dz * axis[2];
+        if (w0 < 0 && w1 >= 0) {
+          // the crossing, interpolated on the segment
+          const t = w0 / (w0 - w1);
+          const q = [0, 1, 2].map(
+            (k) =>
+              points[3 * (p - 1) + k] +
+              t * (points[3 * p + k] - points[3 * (p - 1) + k]) -
+              centre[k],
+          );
+          const along = q[0] * axis[0] + q[1] * axis[1] + q[2] * axis[2];
+          const r2 = q[0] ** 2 + q[1] ** 2 + q[2] ** 2 - along * along;
+          if (r2 <= reach2) {
+            key[s] = `tail:${i}`;
+            break;
+          }
         }
+        w0 = w1;
       }
     }
   });
