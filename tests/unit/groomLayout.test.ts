@@ -4,10 +4,17 @@
 // brute force, the groups follow tails and parting sides, ids follow the roots.
 import { describe, expect, it } from 'vitest';
 import { GUIDE_SPACING, groomLayout } from '../../web/export/groomLayout';
-import { scalpUvAt } from '../../web/export/scalpUv';
+import { scalpUvAt, scalpUvs } from '../../web/export/scalpUv';
 import { strandsForExport } from '../../web/export/strandsForExport';
+import type { GroomSummary } from '../../web/export/usdWriter';
+import { writeExport } from '../../web/export/writeExport';
 import { DEFAULT_GROWTH } from '../../web/model/growthParams';
-import type { DividingCurve, SessionState, StyleCurve } from '../../web/model/session';
+import {
+  type DividingCurve,
+  emptySession,
+  type SessionState,
+  type StyleCurve,
+} from '../../web/model/session';
 
 /** Strands of two points rooted at `roots` on a unit sphere, growing outwards. */
 function strandsAt(roots: number[][]) {
@@ -178,5 +185,54 @@ describe('groom layout', () => {
       'hair',
       'hair',
     ]);
+  });
+
+  it("writes the built-in head's UV layout as its st and says where root UVs come from", () => {
+    const head = {
+      positions: new Float32Array([0, 1, 0, 1, 0, 0, 0, 0, 1, -1, 0, 0]),
+      indices: new Uint32Array([0, 2, 1, 0, 3, 2]),
+    };
+    const write = (session: SessionState) => {
+      let groom: GroomSummary | null = null;
+      const parts = [
+        ...writeExport('usda', {
+          strands: src,
+          session,
+          head,
+          onGroom: (g) => {
+            groom = g;
+          },
+        }),
+      ];
+      const text = new TextDecoder().decode(Buffer.concat(parts));
+      return { text, groom: groom as GroomSummary | null };
+    };
+    const builtin = write(emptySession('25k'));
+    expect(builtin.groom).toMatchObject({ strands: roots.length, rootUv: 'builtin-head' });
+    const st = /texCoord2f\[\] primvars:st = \[([^\]]*)\]/.exec(builtin.text);
+    expect(st).not.toBeNull();
+    const got = (st?.[1].match(/-?[\d.e-]+/g) ?? []).map(Number);
+    const want = [...scalpUvs(head.positions, [0, 0, 0])];
+    expect(got.length).toBe(want.length);
+    for (let k = 0; k < got.length; k++) expect(got[k]).toBeCloseTo(want[k], 5);
+    const loaded = write({
+      ...emptySession('25k'),
+      head: {
+        kind: 'mesh',
+        name: 'h.obj',
+        hash: '0'.repeat(64),
+        format: 'obj',
+        up: 'y',
+        turns: [],
+      },
+    });
+    expect(loaded.groom?.rootUv).toBe('projection');
+    expect(loaded.text).not.toMatch(/primvars:st/);
+    // the roots' UVs are the layout's either way
+    const uv = /float2\[\] primvars:groom_root_uv = \[\(([^,]+), ([^)]+)\)/.exec(loaded.text);
+    const first = new Float32Array(2);
+    scalpUvAt(roots[0][0], roots[0][1], roots[0][2], [0, 0, 0], first, 0);
+    expect(Number(uv?.[1])).toBeCloseTo(first[0], 5);
+    expect(Number(uv?.[2])).toBeCloseTo(first[1], 5);
   });
 });
