@@ -74,4 +74,18 @@ if [ "$mode" = test ]; then
     fi
     "$venv/bin/python" -c 'import pxr.Usd'
   fi
+  # Blender's Python module (bpy, PyPI) imports the .usda export as Blender does
+  # (tests/usd/check_blender.py): a virtual environment of its own (bpy pins its Python and numpy).
+  # The version the tests were written against; its wheels are for CPython 3.11.
+  venv=build/bpy-venv
+  if ! "$venv/bin/python" -c 'import importlib.util, sys; sys.exit(importlib.util.find_spec("bpy") is None)' >/dev/null 2>&1; then
+    echo "setup: creating $venv with bpy (pip install bpy, from PyPI; about 370 MB)"
+    rm -rf "$venv"
+    mkdir -p build
+    /usr/bin/python3 -m venv "$venv"
+    if ! "$venv/bin/pip" install --disable-pip-version-check -q bpy==5.0.1; then
+      echo "setup: could not install bpy into $venv (pip install bpy==5.0.1; it needs CPython 3.11 on x86-64 Linux or macOS/Windows)." >&2
+      exit 1
+    fi
+  fi
 fi

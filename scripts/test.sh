@@ -67,6 +67,8 @@ setup() {
   bash scripts/setup.sh test
   # Pixar's USD reader for tests/unit/usdExport.test.ts (tests/usd/check_usd.py), made by setup
   build/usd-venv/bin/python -c 'from pxr import Usd; print("usd-core", ".".join(map(str, Usd.GetVersion())))'
+  # and Blender's, bpy (tests/usd/check_blender.py)
+  build/bpy-venv/bin/python -c 'import bpy; print("bpy", bpy.app.version_string)'
 }
 format_lint() {
   local cxx

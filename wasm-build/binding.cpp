@@ -436,6 +436,20 @@ EMSCRIPTEN_KEEPALIVE int32_t hs_engine_strand_start_count(EngineHandle* h) {
 EMSCRIPTEN_KEEPALIVE int32_t hs_engine_root_count(EngineHandle* h) {
   return int32_t(h->engine.roots().size());
 }
+// Per strand of the last grow (hs_engine_strand_root_id_count entries, the strand count when
+// the grow succeeded): its root's sample index, and the curve whose tail laid it (-1: none).
+EMSCRIPTEN_KEEPALIVE const uint32_t* hs_engine_strand_root_ids(EngineHandle* h) {
+  return h->engine.strandRootIds().data();
+}
+EMSCRIPTEN_KEEPALIVE int32_t hs_engine_strand_root_id_count(EngineHandle* h) {
+  return int32_t(h->engine.strandRootIds().size());
+}
+EMSCRIPTEN_KEEPALIVE const int32_t* hs_engine_strand_tail_curves(EngineHandle* h) {
+  return h->engine.strandTailCurves().data();
+}
+EMSCRIPTEN_KEEPALIVE int32_t hs_engine_strand_tail_curve_count(EngineHandle* h) {
+  return int32_t(h->engine.strandTailCurves().size());
+}
 
 // Fills the flat constraint arrays; returns the number of constraints.
 EMSCRIPTEN_KEEPALIVE int32_t hs_engine_prepare_constraints(EngineHandle* h) {

@@ -58,6 +58,10 @@ export interface HairSolverModule {
   _hs_engine_strand_start(h: number): number;
   _hs_engine_strand_start_count(h: number): number;
   _hs_engine_root_count(h: number): number;
+  _hs_engine_strand_root_ids(h: number): number; // uint32 per strand
+  _hs_engine_strand_root_id_count(h: number): number;
+  _hs_engine_strand_tail_curves(h: number): number; // int32 per strand
+  _hs_engine_strand_tail_curve_count(h: number): number;
   _hs_engine_prepare_constraints(h: number): number;
   _hs_engine_constraint_index(h: number): number;
   _hs_engine_constraint_target(h: number): number;

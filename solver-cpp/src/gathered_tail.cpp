@@ -353,6 +353,7 @@ TailStats gatherTails(const std::vector<GatheredTail>& tails,
   // seats, then the new strands
   std::vector<std::vector<Eigen::Vector3f>> laid(nS);
   std::vector<char> isLaid(nS, 0);
+  std::vector<uint32_t> laidBy(nS, 0);
   for (size_t k = 0; k < tails.size(); ++k) {
     const std::vector<Capture>& cs = caught[k];
     const size_t N = cs.size();
@@ -423,6 +424,7 @@ TailStats gatherTails(const std::vector<GatheredTail>& tails,
       else
         layAlongSpine(T, F, cap, theta[i], rho[i], bundle[i], step, room, out);
       isLaid[cap.strand] = 1;
+      laidBy[cap.strand] = uint32_t(k);
       ++stats.captured;
     }
   }
@@ -456,7 +458,10 @@ TailStats gatherTails(const std::vector<GatheredTail>& tails,
   strands.points = std::move(points);
   strands.strandStart = std::move(start);
   for (size_t st = 0; st < nS; ++st)
-    if (isLaid[st]) stats.strands.push_back(uint32_t(st));
+    if (isLaid[st]) {
+      stats.strands.push_back(uint32_t(st));
+      stats.tail.push_back(laidBy[st]);
+    }
   return stats;
 }
 

@@ -83,6 +83,7 @@ GatheredTail bunTail(const BunFrame& frame, const BunParams& params);
 struct TailStats {
   size_t captured = 0;            // strands laid into a tail
   std::vector<uint32_t> strands;  // which, in increasing order
+  std::vector<uint32_t> tail;     // tail[i]: the index in `tails` of the one that laid strands[i]
 };
 
 // Re-lays the captured strands of every tail (see above). key[s] is strand s's seed key (its root

@@ -101,6 +101,7 @@ Status HairEngine::setScalp(const float* positions, size_t vertexCount, const ui
                             const Eigen::Vector3d& center) {
   rootsValid_ = false;
   roots_.clear();
+  rootIds_.clear();
   capped_ = false;
   // The previous head is released first: its memory is what the new one may use.
   scalp_ = ScalpSampler();
@@ -138,6 +139,7 @@ Status HairEngine::setScalpMask(const uint8_t* scalp, size_t triangleCount) {
   // Roots are sampled again over the new scalp at the next grow.
   rootsValid_ = false;
   roots_.clear();
+  rootIds_.clear();
   capped_ = false;
   return Status::Ok();
 }
@@ -211,6 +213,7 @@ Status HairEngine::setCurves(const CurveSetView& curves) {
   }
   // the tails laid in growth: gathered ponytails (with fall), braids and buns
   std::vector<GatheredTail> nextTails;
+  std::vector<int32_t> nextTailCurves;
   if (curves.kinds && curves.curveStart && curves.points && curves.paramStart)
     for (size_t c = 0; c < curves.curveCount; ++c) {
       const auto kind = CurveKindCode(curves.kinds[c]);
@@ -225,6 +228,7 @@ Status HairEngine::setCurves(const CurveSetView& curves) {
         if (!parsePonytailParams(prm, pb - pa, pp).ok() || pp.gather != 1) continue;
         nextTails.push_back(gatheredTail(pts, b - a, pp));
         nextTails.back().growsOn = curves.extend && curves.extend[c] != 0;
+        nextTailCurves.push_back(int32_t(c));
       } else if (kind == CurveKindCode::Braid) {
         BraidParams bp;
         if (!parseBraidParams(prm, pb - pa, bp).ok()) continue;
@@ -233,10 +237,12 @@ Status HairEngine::setCurves(const CurveSetView& curves) {
         nextTails.push_back(braidTail(pts, b - a, gather, bp,
                                       headDistance_.built() ? away : Eigen::Vector3f::Zero()));
         nextTails.back().growsOn = curves.extend && curves.extend[c] != 0;
+        nextTailCurves.push_back(int32_t(c));
       } else if (kind == CurveKindCode::Bun) {
         BunParams bp;
         if (!parseBunParams(prm, pb - pa, bp).ok()) continue;
         nextTails.push_back(bunTail(bunFrame(pts, b - a, bp, withHead.headCentre), bp));
+        nextTailCurves.push_back(int32_t(c));
       }
     }
   if (fall_) {
@@ -296,6 +302,7 @@ Status HairEngine::setCurves(const CurveSetView& curves) {
   constraints_ = std::move(next);
   colours_ = std::move(nextColours);
   tails_ = std::move(nextTails);
+  tailCurves_ = std::move(nextTailCurves);
   fieldValid_ = false;
   return Status::Ok();
 }
@@ -351,7 +358,7 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
     rootsValid_ = false;
     RootParams all = rp;
     all.maxStrands = 0;
-    Status s = scalp_.sample(all, roots_);
+    Status s = scalp_.sample(all, roots_, &rootIds_);
     if (!s.ok()) return s;
     rootKey_ = all;
     rootsValid_ = true;
@@ -360,7 +367,11 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
   if (capped_) {
     const size_t m = size_t(rp.maxStrands), total = roots_.size();
     cappedRoots_.resize(m);
-    for (size_t k = 0; k < m; ++k) cappedRoots_[k] = roots_[k * total / m];
+    cappedRootIds_.resize(m);
+    for (size_t k = 0; k < m; ++k) {
+      cappedRoots_[k] = roots_[k * total / m];
+      cappedRootIds_[k] = rootIds_[k * total / m];
+    }
   }
   // The strand buffers for every root at maxSegments must fit: the point buffer (12 bytes a
   // point) is grown by doubling up to that bound, so it and its previous copy may both be live.
@@ -384,11 +395,14 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
   // a strand's seed key: its index in the full root set (previews take a stride of it)
   std::vector<uint32_t> key(n);
   for (size_t k = 0; k < n; ++k) key[k] = uint32_t(capped_ ? k * total / n : k);
+  strandTailCurve_.assign(n, -1);
   if (s.ok() && !tails_.empty()) {
     // laid strands keep to the 255 points engines take (detail's cap too)
     const TailStats ts = gatherTails(tails_, R, key, rp.seed, float(gp.stepFraction * grid_.step),
                                      std::min<size_t>(size_t(std::max(gp.maxSegments, 1)) + 1, 255),
                                      strands_, float(std::min(gp.maxLength, 1e6)));
+    for (size_t i = 0; i < ts.strands.size(); ++i)
+      strandTailCurve_[ts.strands[i]] = tailCurves_[ts.tail[i]];
     // growth kept the rest outside already
     if (head && ts.captured > 0) keepOutsideHead(*head, float(gp.margin), strands_, &ts.strands);
   }

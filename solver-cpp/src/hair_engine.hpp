@@ -80,6 +80,12 @@ class HairEngine {
   const std::vector<uint8_t>& constraintColours() const { return colours_; }
   const Field& field() const { return field_; }
   const Strands& strands() const { return strands_; }
+  // Per strand of the last growth: its root's sample index (ScalpSampler::sample), which names
+  // the strand across edits that keep the growth settings and the head.
+  const std::vector<uint32_t>& strandRootIds() const { return capped_ ? cappedRootIds_ : rootIds_; }
+  // Per strand of the last growth: the curve whose gathered tail (ponytail, braid, bun) laid it,
+  // or -1.
+  const std::vector<int32_t>& strandTailCurves() const { return strandTailCurve_; }
   // The roots of the last growth (the cached set, or its capped stride).
   const std::vector<Eigen::Vector3f>& roots() const { return capped_ ? cappedRoots_ : roots_; }
   SolveStats stats() const;
@@ -111,8 +117,10 @@ class HairEngine {
   std::vector<float> fieldF_;
   bool rootsValid_ = false;
   RootParams rootKey_;
-  std::vector<Eigen::Vector3f> roots_;        // all roots of rootKey_
-  std::vector<Eigen::Vector3f> cappedRoots_;  // an even stride of roots_ when capped
+  std::vector<Eigen::Vector3f> roots_;             // all roots of rootKey_
+  std::vector<Eigen::Vector3f> cappedRoots_;       // an even stride of roots_ when capped
+  std::vector<uint32_t> rootIds_, cappedRootIds_;  // sample indices of roots_, cappedRoots_
+  std::vector<int32_t> strandTailCurve_;
   bool capped_ = false;
   Strands strands_;
   double growMs_ = 0;
@@ -129,6 +137,7 @@ class HairEngine {
   CurveReach reach_;
   std::vector<std::pair<uint64_t, CurveFootprint>> footprints_;  // by a hash of each curve
   std::vector<GatheredTail> tails_;  // the gathered ponytails of the last setCurves (with fall)
+  std::vector<int32_t> tailCurves_;  // the curve of each of tails_
   Status applyPrior();
   Status zeroField();
 };

@@ -188,8 +188,10 @@ bool ScalpSampler::castOutermost(const Eigen::Vector3d& dir, double& tBest, int&
   return triBest >= 0;
 }
 
-Status ScalpSampler::sample(const RootParams& p, std::vector<Eigen::Vector3f>& roots) const {
+Status ScalpSampler::sample(const RootParams& p, std::vector<Eigen::Vector3f>& roots,
+                            std::vector<uint32_t>* sampleIds) const {
   roots.clear();
+  if (sampleIds) sampleIds->clear();
   if (!built()) return Status::Error(StatusCode::NotReady, "no scalp mesh set");
   if (!(p.thetaStepDeg > 0) || !(p.phiStepDeg > 0) || !std::isfinite(p.thetaStepDeg) ||
       !std::isfinite(p.phiStepDeg))
@@ -205,6 +207,7 @@ Status ScalpSampler::sample(const RootParams& p, std::vector<Eigen::Vector3f>& r
   const double pushOut = 1e-5 * radius_;
   Pcg32 rng(p.seed);
   std::vector<Eigen::Vector3f> all;
+  std::vector<uint32_t> ids;
   for (int i = 0; i < nT; ++i)
     for (int j = 0; j < nP; ++j) {
       // Always two draws per sample, so the sequence does not depend on the jitter.
@@ -217,13 +220,19 @@ Status ScalpSampler::sample(const RootParams& p, std::vector<Eigen::Vector3f>& r
       if (!castOutermost(dir, t, tri) || !scalp_[size_t(tri)]) continue;
       const Eigen::Vector3d hit = center_ + t * dir + pushOut * normal(size_t(tri));
       all.push_back(hit.cast<float>());
+      ids.push_back(uint32_t(i) * uint32_t(nP) + uint32_t(j));
     }
   if (p.maxStrands > 0 && all.size() > size_t(p.maxStrands)) {
     const size_t m = size_t(p.maxStrands), total = all.size();
     roots.resize(m);
     for (size_t k = 0; k < m; ++k) roots[k] = all[k * total / m];
+    if (sampleIds) {
+      sampleIds->resize(m);
+      for (size_t k = 0; k < m; ++k) (*sampleIds)[k] = ids[k * total / m];
+    }
   } else {
     roots.swap(all);
+    if (sampleIds) sampleIds->swap(ids);
   }
   return Status::Ok();
 }

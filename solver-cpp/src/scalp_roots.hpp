@@ -32,8 +32,11 @@ class ScalpSampler {
   Status setScalpMask(const uint8_t* scalp, size_t triangleCount);
   // Bytes build keeps and its temporaries, for a memory check before building.
   static double estimateBytes(size_t vertexCount, size_t triangleCount);
-  // Roots in deterministic order (theta rows, then phi), at most maxStrands of them.
-  Status sample(const RootParams& params, std::vector<Eigen::Vector3f>& roots) const;
+  // Roots in deterministic order (theta rows, then phi), at most maxStrands of them. sampleIds
+  // (optional) gets each root's sample index i * nPhi + j (theta row i, phi column j): it names
+  // the root whatever the scalp mask, the cap or the other roots.
+  Status sample(const RootParams& params, std::vector<Eigen::Vector3f>& roots,
+                std::vector<uint32_t>* sampleIds = nullptr) const;
   // Outermost hit along the ray center + t * dir (t > 0). Returns false when nothing is hit.
   bool castOutermost(const Eigen::Vector3d& dir, double& t, int& triangle) const;
   bool built() const { return !scalp_.empty(); }

@@ -55,6 +55,11 @@ test('each export item downloads its file, equal to `hairsketch grow` on the sav
     expect(bytes.length).toBeGreaterThan(1000);
     files[name] = bytes;
     await expect(page.getByTestId('status')).toContainText(`Exported ${name}`);
+    // the USD groom in the status line, as the worker wrote it
+    if (name === 'hairstyle.usda')
+      await expect(page.getByTestId('status')).toContainText(
+        /groom of \d+ groups? \(hair\), [\d,]+ guides, root UVs from the built-in head's scalp UV layout/,
+      );
   }
   expect(files['hairstyle.usda'].subarray(0, 5).toString()).toBe('#usda');
   expect(files['hairstyle.hair'].subarray(0, 4).toString()).toBe('HAIR');

@@ -81,6 +81,9 @@ TEST(GatheredTail, ASheetLeavesAsARoundBunchOfTheRadius) {
   ASSERT_LT(before.y() / before.x(), 0.1) << "the input is a flat sheet";
   const TailStats st = gatherTails({tail()}, s.roots, s.key, 7, kStep, 255, s.strands);
   EXPECT_EQ(st.captured, s.roots.size());
+  // each laid strand names the tail that laid it
+  ASSERT_EQ(st.tail.size(), st.strands.size());
+  for (uint32_t t : st.tail) EXPECT_EQ(t, 0u);
   const std::vector<Eigen::Vector2d> xs = crossings(s.strands, -1.f);
   ASSERT_EQ(xs.size(), s.roots.size());
   const Eigen::Vector2d w = principalWidths(xs);

@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 
 #include "sphere_mesh.hpp"
 
@@ -215,4 +217,60 @@ TEST(ScalpRoots, HundredThousandRaysOnThirtyThousandTriangles) {
   std::printf("[ info ] %zu triangles, 101250 rays, %zu roots: %.1f ms\n", s.triangleCount(),
               roots.size(), ms);
   EXPECT_GT(roots.size(), 45000u);
+}
+
+TEST(ScalpRoots, SampleIdsNameEachRootsThetaRowAndPhiColumnWhateverTheMaskOrCap) {
+  const Eigen::Vector3d c(0, 0, 0);
+  Mesh m = hairsketch_test::uvSphere(c.x(), c.y(), c.z(), 1.0, 24, 48);
+  hairsketch_test::markScalpAbove(m, c.y());
+  ScalpSampler s;
+  ASSERT_TRUE(s.build(m.positions.data(), m.positions.size() / 3, m.indices.data(),
+                      m.indices.size() / 3, m.scalp.data(), c)
+                  .ok());
+  RootParams p;
+  p.thetaStepDeg = 4;
+  p.phiStepDeg = 5;
+  p.jitter = 0.8;
+  p.seed = 3;
+  std::vector<Eigen::Vector3f> roots;
+  std::vector<uint32_t> ids;
+  ASSERT_TRUE(s.sample(p, roots, &ids).ok());
+  ASSERT_EQ(ids.size(), roots.size());
+  const int nP = 72;
+  const double kDeg = 180.0 / 3.14159265358979323846;
+  for (size_t k = 0; k < roots.size(); ++k) {
+    const Eigen::Vector3d d = roots[k].cast<double>().normalized();
+    const double theta = std::acos(d.y()) * kDeg;
+    const double phi = std::fmod(std::atan2(d.x(), d.z()) * kDeg + 360.0, 360.0);
+    EXPECT_EQ(int(theta / p.thetaStepDeg), int(ids[k] / nP)) << k;
+    EXPECT_EQ(int(phi / p.phiStepDeg), int(ids[k] % nP)) << k;
+    if (k > 0) EXPECT_LT(ids[k - 1], ids[k]);
+  }
+  // a cap takes the same stride of roots and of ids
+  RootParams capped = p;
+  capped.maxStrands = 100;
+  std::vector<Eigen::Vector3f> some;
+  std::vector<uint32_t> someIds;
+  ASSERT_TRUE(s.sample(capped, some, &someIds).ok());
+  ASSERT_EQ(someIds.size(), 100u);
+  for (size_t k = 0; k < 100; ++k) {
+    EXPECT_EQ(someIds[k], ids[k * roots.size() / 100]);
+    EXPECT_EQ(some[k], roots[k * roots.size() / 100]);
+  }
+  // less scalp: the roots left keep their ids (and positions)
+  std::vector<uint8_t> mask = m.scalp;
+  for (size_t t = 0; t < mask.size(); t += 2) mask[t] = 0;
+  ASSERT_TRUE(s.setScalpMask(mask.data(), mask.size()).ok());
+  std::vector<Eigen::Vector3f> fewer;
+  std::vector<uint32_t> fewerIds;
+  ASSERT_TRUE(s.sample(p, fewer, &fewerIds).ok());
+  ASSERT_LT(fewer.size(), roots.size());
+  size_t shifted = 0;
+  for (size_t k = 0; k < fewer.size(); ++k) {
+    const auto at = std::find(ids.begin(), ids.end(), fewerIds[k]);
+    ASSERT_NE(at, ids.end());
+    EXPECT_EQ(fewer[k], roots[size_t(at - ids.begin())]);
+    shifted += size_t(at - ids.begin()) != k;
+  }
+  EXPECT_GT(shifted, 0u);
 }

@@ -479,9 +479,15 @@ describe('USD writer', () => {
     expect(header).toMatch(/\n\s*upAxis = "Y"\n/);
     expect(header).toMatch(/\n\s*defaultPrim = "hairsketch"\n/);
     expect(header).toMatch(/customLayerData = \{\s*string "hairsketch:session" = "/);
-    expect(usd).toMatch(/def Xform "hairsketch"\n\{\n\s*def BasisCurves "hair"/);
+    expect(usd).toMatch(
+      /def Xform "hairsketch"\n\{\n\s*def Xform "groom" \(\n\s*prepend apiSchemas = \["GroomAPI"\]\n\s*\)\n\s*\{\n\s*def BasisCurves "hair"/,
+    );
 
-    const curves = usd.slice(usd.indexOf('def BasisCurves "hair"'), usd.indexOf('def Mesh "head"'));
+    const curves = usd.slice(
+      usd.indexOf('def BasisCurves "hair"'),
+      usd.indexOf('def BasisCurves "guides"'),
+    );
+    expect(usd.indexOf('def BasisCurves "guides"')).toBeLessThan(usd.indexOf('def Mesh "head"'));
     expect(curves).toMatch(/uniform token type = "linear"/);
     expect(curves).toMatch(/uniform token wrap = "nonperiodic"/);
     const counts = usdArray(curves, 'int[] curveVertexCounts');

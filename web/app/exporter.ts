@@ -5,6 +5,7 @@
 import type { Editor } from '../editor/editor';
 import type { FromExportWorker } from '../export/exportProtocol';
 import { EXPORT_FILE_NAMES, type ExportFormat, type ExportHead } from '../export/types';
+import type { GroomSummary } from '../export/usdWriter';
 import { gridForSession } from '../model/grid';
 import { hangLength } from '../model/session';
 import { parseSession } from '../model/sessionFile';
@@ -127,7 +128,7 @@ export class Exporter {
       download(new Blob(chunks as BlobPart[], { type: mimeOf(format) }), name);
       const ms = performance.now() - t0;
       this.d.done(
-        `Exported ${name} (${done.strands.toLocaleString('en-US')} strands, ${formatBytes(done.bytes)}, ${(ms / 1000).toFixed(1)} s).`,
+        `Exported ${name} (${done.strands.toLocaleString('en-US')} strands, ${formatBytes(done.bytes)}, ${(ms / 1000).toFixed(1)} s)${done.groom ? `; ${groomNote(done.groom)}` : ''}.`,
       );
       return { name, bytes: done.bytes, strands: done.strands, ms };
     } catch (e) {
@@ -158,6 +159,15 @@ function mimeOf(f: ExportFormat): string {
     : f === 'obj' || f === 'usda'
       ? 'text/plain'
       : 'application/octet-stream';
+}
+
+/** The USD groom in the status line: groups, guides, and where the root UVs come from. */
+export function groomNote(g: GroomSummary): string {
+  const uv =
+    g.rootUv === 'builtin-head'
+      ? "root UVs from the built-in head's scalp UV layout"
+      : "root UVs from the built-in head's scalp layout projected from the head's centre (this head's own UVs are not read)";
+  return `groom of ${g.groups.length} group${g.groups.length === 1 ? '' : 's'} (${g.groups.join(', ')}), ${g.guides.toLocaleString('en-US')} guides, ${uv}`;
 }
 
 export function formatBytes(n: number): string {

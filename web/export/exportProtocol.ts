@@ -4,6 +4,7 @@
 import type { SessionState } from '../model/session';
 import type { GridSpec, ScalpMesh, SolverErrorKind, SolverName } from '../solver/protocol';
 import type { ExportFormat, ExportHead } from './types';
+import type { GroomSummary } from './usdWriter';
 
 export interface ExportRequest {
   type: 'export';
@@ -27,5 +28,7 @@ export type FromExportWorker =
       solveMs: number;
       growMs: number;
       writeMs: number;
+      /** The USD groom's groups, guides and root-UV source (USD only). */
+      groom?: GroomSummary;
     }
   | { type: 'error'; message: string; kind: SolverErrorKind | 'export' };

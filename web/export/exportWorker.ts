@@ -7,6 +7,7 @@ import { loadSolverEngine } from '../solver/wasmEngine';
 import type { ExportRequest, FromExportWorker } from './exportProtocol';
 import { growSessionHair } from './growSession';
 import { exportedCounts } from './strandsForExport';
+import type { GroomSummary } from './usdWriter';
 import { writeExport } from './writeExport';
 
 const scope = self as unknown as {
@@ -38,9 +39,17 @@ async function run(req: ExportRequest): Promise<void> {
     let bytes = 0;
     const { strands } = exportedCounts(hair.strands);
     let lastProgress = 0;
+    let groom: GroomSummary | undefined;
     for (const chunk of writeExport(
       req.format,
-      { strands: hair.strands, session: req.session, head: req.head },
+      {
+        strands: hair.strands,
+        session: req.session,
+        head: req.head,
+        onGroom: (g) => {
+          groom = g;
+        },
+      },
       (f) => {
         // at most ~50 progress messages
         if (f - lastProgress >= 0.02 || f === 1) {
@@ -60,6 +69,7 @@ async function run(req: ExportRequest): Promise<void> {
       solveMs: hair.solveMs,
       growMs: hair.growMs,
       writeMs: performance.now() - t0,
+      ...(groom ? { groom } : {}),
     });
   } finally {
     engine.dispose();

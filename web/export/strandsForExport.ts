@@ -26,6 +26,8 @@ export interface ExportStrands {
   widths: Float32Array; // widths[point]
   /** Linear RGB per strand. */
   colors: Float32Array; // colors[3 * strand + channel]
+  /** The input strand (StrandArrays index) each exported strand comes from. */
+  source: Uint32Array; // source[strand]
   /** Bounds of points (exact float32 values), [0, 0, 0] for both when there are no points. */
   min: [number, number, number];
   max: [number, number, number];
@@ -98,6 +100,7 @@ export function strandsForExport(
   const widths = new Float32Array(pOut);
   const colors = new Float32Array(3 * nOut);
   const strandStart = new Uint32Array(nOut + 1);
+  const source = new Uint32Array(nOut);
   const seed = session.growth.seed;
   const base = parseHexColor(session.hairColor);
   const cum = new Float64Array(Math.max(2, maxStrandLength(start)));
@@ -160,6 +163,7 @@ export function strandsForExport(
     colors[3 * so + 1] = srgbToLinear(Math.min(1, base[1] * f));
     colors[3 * so + 2] = srgbToLinear(Math.min(1, base[2] * f));
     po += Math.min(n, cap);
+    source[so] = s;
     so++;
     strandStart[so] = po;
   }
@@ -178,7 +182,7 @@ export function strandsForExport(
         if (v > max[c]) max[c] = v;
       }
   }
-  return { points, strandStart, widths, colors, min, max };
+  return { points, strandStart, widths, colors, source, min, max };
 }
 
 function maxStrandLength(start: Uint32Array): number {

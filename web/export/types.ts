@@ -3,6 +3,7 @@
 // export worker and in `hairsketch grow` under Node, so the same session gives the same bytes.
 import type { SessionState } from '../model/session';
 import type { StrandArrays } from '../solver/protocol';
+import type { GroomSummary } from './usdWriter';
 
 export type ExportFormat = 'usda' | 'hair' | 'obj' | 'glb';
 
@@ -42,6 +43,8 @@ export interface ExportInput {
   session: SessionState;
   /** The head, or null to leave it out. */
   head: ExportHead | null;
+  /** Told what the USD groom holds (groups, guides, where root UVs come from). */
+  onGroom?: (groom: GroomSummary) => void;
 }
 
 /** Progress of a long export, 0..1. */

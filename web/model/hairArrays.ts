@@ -57,6 +57,12 @@ export type HairOptions = SessionSettingValues & { detail: DetailArrays };
 export interface StrandArrays {
   points: Float32Array; // points[3 * point + axis]
   strandStart: Uint32Array; // length = strands + 1
+  /** rootIds[s]: strand s's root sample index i * nPhi + j (theta row i, phi column j of the
+   *  growth's root sampling): the same root keeps it across edits of curves and scalp.
+   *  Absent where only shapes matter (previews, views). */
+  rootIds?: Uint32Array; // length = strands
+  /** tailCurves[s]: the curve whose gathered ponytail, braid or bun laid strand s, or -1. */
+  tailCurves?: Int32Array; // length = strands
 }
 
 /** Number of strands in a StrandArrays. */

@@ -14,7 +14,9 @@
 //     extraTarget[3 * e + axis].
 //   DetailArrays: groups[DETAIL_GROUP_STRIDE * g + k] (model/detail.ts has k's order),
 //     curveGroup[c].
-//   StrandArrays: points[3 * point + axis]; strand s owns strandStart[s] .. strandStart[s + 1] - 1.
+//   StrandArrays: points[3 * point + axis]; strand s owns strandStart[s] .. strandStart[s + 1] - 1;
+//     optional rootIds[s] (its root's sample index), tailCurves[s] (the curve whose tail laid it,
+//     or -1).
 export {
   CURVE_PARAMS,
   CurveKind,

@@ -256,10 +256,16 @@ class WasmEngine implements SolverEngine {
     const h = this.h();
     const m = this.mod;
     callWith(m, GROWTH_INPUT, g, (p) => m._hs_engine_grow(h, p));
-    return {
+    const strands: StrandArrays = {
       points: f32(m, m._hs_engine_strand_points(h), 3 * m._hs_engine_strand_point_count(h)),
       strandStart: u32(m, m._hs_engine_strand_start(h), m._hs_engine_strand_start_count(h)),
     };
+    const n = strands.strandStart.length - 1;
+    if (n > 0 && m._hs_engine_strand_root_id_count(h) === n)
+      strands.rootIds = u32(m, m._hs_engine_strand_root_ids(h), n);
+    if (n > 0 && m._hs_engine_strand_tail_curve_count(h) === n)
+      strands.tailCurves = i32(m, m._hs_engine_strand_tail_curves(h), n);
+    return strands;
   }
 
   constraints(): Omit<ConstraintArrays, 'colour'> {
