@@ -176,6 +176,8 @@ export function startApp(): void {
     headBounds: () => heads.gridBounds,
     solver: opts.solver,
     anchor: byId('toolbar'),
+    cardCount: () => view.state.cardCount,
+    setCardCount: (n) => view.update({ cardCount: n }),
   });
   const toggles = buildDisplayToggles(toolbar.moreElement, view.state.display, (k, on) =>
     view.setDisplay(k, on),

@@ -28,6 +28,9 @@ export function wireExport(d: {
   headBounds(): Parameters<typeof gridForSession>[2];
   solver: SolverName;
   anchor: HTMLElement;
+  /** The hair cards' count (view state: the Cards view shows the same cards). */
+  cardCount(): number;
+  setCardCount(n: number): void;
 }): ExportWiring {
   const { status, bridge } = d;
   let png = false;
@@ -46,26 +49,31 @@ export function wireExport(d: {
     done: (m) => status.taskDone(m),
     failed: (m) => status.taskDone(m, true),
   });
-  const menu = buildExportMenu(d.anchor, {
-    exportFile: (format, withHead) => void exporter.export(format, withHead),
-    exportPng: async (transparent) => {
-      if (png) return;
-      png = true;
-      try {
-        if (bridge.pending) {
-          status.task('PNG image: waiting for the solve to finish…');
-          await bridge.whenIdle();
+  const menu = buildExportMenu(
+    d.anchor,
+    {
+      exportFile: (format, withHead) => void exporter.export(format, withHead, d.cardCount()),
+      setCardCount: (n) => d.setCardCount(n),
+      exportPng: async (transparent) => {
+        if (png) return;
+        png = true;
+        try {
+          if (bridge.pending) {
+            status.task('PNG image: waiting for the solve to finish…');
+            await bridge.whenIdle();
+          }
+          status.task('PNG image: drawing every strand…');
+          const blob = await d.viewer.captureImage({ scale: 2, transparent });
+          download(blob, 'hairstyle.png');
+          status.taskDone(`Exported hairstyle.png (${formatBytes(blob.size)}).`);
+        } catch (e) {
+          status.taskDone(`PNG image failed: ${e instanceof Error ? e.message : String(e)}.`, true);
+        } finally {
+          png = false;
         }
-        status.task('PNG image: drawing every strand…');
-        const blob = await d.viewer.captureImage({ scale: 2, transparent });
-        download(blob, 'hairstyle.png');
-        status.taskDone(`Exported hairstyle.png (${formatBytes(blob.size)}).`);
-      } catch (e) {
-        status.taskDone(`PNG image failed: ${e instanceof Error ? e.message : String(e)}.`, true);
-      } finally {
-        png = false;
-      }
+      },
     },
-  });
+    d.cardCount(),
+  );
   return { menu, exporter, busy: () => png || exporter.busy };
 }

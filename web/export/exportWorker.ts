@@ -40,7 +40,7 @@ async function run(req: ExportRequest): Promise<void> {
     let lastProgress = 0;
     for (const chunk of writeExport(
       req.format,
-      { strands: hair.strands, session: req.session, head: req.head },
+      { strands: hair.strands, session: req.session, head: req.head, cards: req.cards },
       (f) => {
         // at most ~50 progress messages
         if (f - lastProgress >= 0.02 || f === 1) {

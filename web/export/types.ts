@@ -4,9 +4,9 @@
 import type { SessionState } from '../model/session';
 import type { StrandArrays } from '../solver/protocol';
 
-export type ExportFormat = 'usda' | 'hair' | 'obj' | 'glb';
+export type ExportFormat = 'usda' | 'hair' | 'obj' | 'glb' | 'cards';
 
-export const EXPORT_FORMATS: readonly ExportFormat[] = ['usda', 'hair', 'obj', 'glb'];
+export const EXPORT_FORMATS: readonly ExportFormat[] = ['usda', 'hair', 'obj', 'glb', 'cards'];
 
 /** File name of each format's download (`hairstyle.usda`, …). */
 export const EXPORT_FILE_NAMES: Readonly<Record<ExportFormat, string>> = {
@@ -14,6 +14,7 @@ export const EXPORT_FILE_NAMES: Readonly<Record<ExportFormat, string>> = {
   hair: 'hairstyle.hair',
   obj: 'hairstyle.obj',
   glb: 'hairstyle.glb',
+  cards: 'hairstyle-cards.glb',
 };
 
 /** Unreal's groom importer keeps at most this many points per strand. */
@@ -42,6 +43,9 @@ export interface ExportInput {
   session: SessionState;
   /** The head, or null to leave it out. */
   head: ExportHead | null;
+  /** Hair cards: how many cards to cut the hair into (cardsWriter.ts DEFAULT_CARD_COUNT when
+   *  absent); the other formats ignore it. */
+  cards?: number;
 }
 
 /** Progress of a long export, 0..1. */

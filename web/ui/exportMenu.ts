@@ -1,10 +1,13 @@
 // The "Export" menu: one item per file format (exact accessible names, the test contract relies
 // on them), "Include head" (indeterminate = each format's default: with USD and glTF, without
 // OBJ; a .hair file has no meshes) and "Transparent background" for the PNG.
+import { CARD_COUNT_MAX, CARD_COUNT_MIN, DEFAULT_CARD_COUNT } from '../export/cardCount';
 import type { ExportFormat } from '../export/types';
 
 export interface ExportMenuActions {
   exportFile(format: ExportFormat, withHead: boolean): void;
+  /** The hair cards' count changed (a whole number in range; the Cards view uses it too). */
+  setCardCount(n: number): void;
   exportPng(transparent: boolean): void;
 }
 
@@ -27,6 +30,11 @@ const ITEMS: ReadonlyArray<{ label: string; format: ExportFormat | 'png'; title:
     format: 'glb',
     title: 'Lines with colour and width: web viewers, Blender',
   },
+  {
+    label: 'Hair cards (.glb)',
+    format: 'cards',
+    title: 'Textured cards for game engines: the count is set below',
+  },
   { label: 'PNG image', format: 'png', title: 'The current view at twice the canvas resolution' },
 ];
 
@@ -36,9 +44,14 @@ export const HEAD_BY_DEFAULT: Readonly<Record<ExportFormat, boolean>> = {
   glb: true,
   obj: false,
   hair: false,
+  cards: true,
 };
 
-export function buildExportMenu(anchor: HTMLElement, actions: ExportMenuActions): ExportMenu {
+export function buildExportMenu(
+  anchor: HTMLElement,
+  actions: ExportMenuActions,
+  cardCount = DEFAULT_CARD_COUNT,
+): ExportMenu {
   const menu = document.createElement('div');
   menu.className = 'export-menu';
   menu.id = 'export-menu';
@@ -70,7 +83,7 @@ export function buildExportMenu(anchor: HTMLElement, actions: ExportMenuActions)
     });
     menu.append(b);
   }
-  menu.append(head.label, transparent.label);
+  menu.append(head.label, transparent.label, cardCountField(cardCount, actions.setCardCount));
   anchor.append(menu);
   document.addEventListener('pointerdown', (e) => {
     const t = e.target as HTMLElement | null;
@@ -95,4 +108,27 @@ function checkbox(text: string, title: string) {
   input.type = 'checkbox';
   label.append(input, text);
   return { label, input };
+}
+
+/** "Cards": the hair cards' count; out-of-range input is put back to the last good value. */
+function cardCountField(initial: number, set: (n: number) => void): HTMLElement {
+  const label = document.createElement('label');
+  label.title = `Hair cards: ${CARD_COUNT_MIN}–${CARD_COUNT_MAX.toLocaleString('en-US')} (default ${DEFAULT_CARD_COUNT.toLocaleString('en-US')}); the Cards view shows the same`;
+  const input = document.createElement('input');
+  input.type = 'number';
+  input.min = String(CARD_COUNT_MIN);
+  input.max = String(CARD_COUNT_MAX);
+  input.step = '100';
+  input.value = String(initial);
+  input.dataset.testid = 'card-count';
+  let good = initial;
+  input.addEventListener('change', () => {
+    const n = Number(input.value);
+    if (Number.isInteger(n) && n >= CARD_COUNT_MIN && n <= CARD_COUNT_MAX) {
+      good = n;
+      set(n);
+    } else input.value = String(good);
+  });
+  label.append('Cards ', input);
+  return label;
 }
