@@ -22,6 +22,7 @@ import { createHeadMesh } from '../viewer/headMaterial';
 import { Viewer } from '../viewer/viewer';
 import { buildActions } from './actions';
 import { ActiveTool } from './activeTool';
+import { wireCardsView } from './cardsPresenter';
 import { editActions } from './editActions';
 import { type ExportWiring, wireExport } from './exportActions';
 import { HairPresenter } from './hairPresenter';
@@ -96,6 +97,7 @@ export function startApp(): void {
     if (c.camera) viewer.setCamera(c.camera.position, c.camera.target);
   });
   const hair = new HairPresenter(viewer, hairView, line, editor);
+  wireCardsView({ view, editor, hairView, statusElement: byId('status') });
   const overlays = new OverlayPresenter(viewer, editor, view, bridge.grid);
   const status = new StatusPresenter(line, bridge);
   editor.listen((c) => status.editorChanged(c));

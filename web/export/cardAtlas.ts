@@ -141,53 +141,43 @@ export function drawCardAtlas(
         const t0 = i / (np - 1);
         const width =
           LINE_WIDTH_ROOT + (LINE_WIDTH_TIP - LINE_WIDTH_ROOT) * ((t0 * 2 + 1 / (np - 1)) / 2);
-        drawSegment(xs[i], ys[i], xs[i + 1], ys[i + 1], width / 2, (px, cov, along) => {
-          const d = ds[i] + (ds[i + 1] - ds[i]) * along;
-          cover[px] = 1 - (1 - cover[px]) * (1 - cov);
-          if (cov >= 0.25 && d > top[px]) {
-            top[px] = d;
-            colour[4 * px] = rgb[0];
-            colour[4 * px + 1] = rgb[1];
-            colour[4 * px + 2] = rgb[2];
-            const tt = (cum[i] + (cum[i + 1] - cum[i]) * along) / (total > 0 ? total : 1);
-            rootTip[px] = Math.round(255 * Math.min(1, Math.max(0, tt)));
-            depth[px] = Math.round(128 + 127 * Math.min(1, Math.max(-1, d / DEPTH_RANGE)));
+        // every pixel whose centre is within half the width + 0.5 of the segment, its coverage
+        // falling off linearly over the last pixel (pixel centres at +0.5)
+        const x0 = xs[i];
+        const y0 = ys[i];
+        const dx = xs[i + 1] - x0;
+        const dy = ys[i + 1] - y0;
+        const len2 = dx * dx + dy * dy;
+        const reach = width / 2 + 0.5;
+        const xa = Math.max(0, Math.floor(Math.min(x0, x0 + dx) - reach));
+        const xb = Math.min(S - 1, Math.floor(Math.max(x0, x0 + dx) + reach));
+        const ya = Math.max(0, Math.floor(Math.min(y0, y0 + dy) - reach));
+        const yb = Math.min(S - 1, Math.floor(Math.max(y0, y0 + dy) + reach));
+        for (let y = ya; y <= yb; y++)
+          for (let x = xa; x <= xb; x++) {
+            const qx = x + 0.5 - x0;
+            const qy = y + 0.5 - y0;
+            const along = len2 > 0 ? Math.min(1, Math.max(0, (qx * dx + qy * dy) / len2)) : 0;
+            const ex = qx - along * dx;
+            const ey = qy - along * dy;
+            const cov = Math.min(1, reach - Math.sqrt(ex * ex + ey * ey));
+            if (!(cov > 0)) continue;
+            const px = x + S * y;
+            const d = ds[i] + (ds[i + 1] - ds[i]) * along;
+            cover[px] = 1 - (1 - cover[px]) * (1 - cov);
+            if (cov >= 0.25 && d > top[px]) {
+              top[px] = d;
+              colour[4 * px] = rgb[0];
+              colour[4 * px + 1] = rgb[1];
+              colour[4 * px + 2] = rgb[2];
+              const tt = (cum[i] + (cum[i + 1] - cum[i]) * along) / (total > 0 ? total : 1);
+              rootTip[px] = Math.round(255 * Math.min(1, Math.max(0, tt)));
+              depth[px] = Math.round(128 + 127 * Math.min(1, Math.max(-1, d / DEPTH_RANGE)));
+            }
           }
-        });
       }
     }
   }
   for (let i = 0; i < S * S; i++) colour[4 * i + 3] = Math.round(255 * cover[i]);
   return { size: S, colour, rootTip, depth };
-}
-
-/** Calls plot(pixel, coverage, fraction along) for each atlas pixel within halfWidth + 0.5 of the
- *  segment (x0, y0)–(x1, y1) (pixel centres at +0.5). */
-function drawSegment(
-  x0: number,
-  y0: number,
-  x1: number,
-  y1: number,
-  halfWidth: number,
-  plot: (pixel: number, coverage: number, along: number) => void,
-): void {
-  const reach = halfWidth + 0.5;
-  const xa = Math.max(0, Math.floor(Math.min(x0, x1) - reach));
-  const xb = Math.min(ATLAS_SIZE - 1, Math.floor(Math.max(x0, x1) + reach));
-  const ya = Math.max(0, Math.floor(Math.min(y0, y1) - reach));
-  const yb = Math.min(ATLAS_SIZE - 1, Math.floor(Math.max(y0, y1) + reach));
-  const dx = x1 - x0;
-  const dy = y1 - y0;
-  const len2 = dx * dx + dy * dy;
-  for (let y = ya; y <= yb; y++)
-    for (let x = xa; x <= xb; x++) {
-      const px = x + 0.5 - x0;
-      const py = y + 0.5 - y0;
-      const f = len2 > 0 ? Math.min(1, Math.max(0, (px * dx + py * dy) / len2)) : 0;
-      const ex = px - f * dx;
-      const ey = py - f * dy;
-      const dist = Math.sqrt(ex * ex + ey * ey);
-      const cov = Math.min(1, reach - dist);
-      if (cov > 0) plot(x + ATLAS_SIZE * y, cov, f);
-    }
 }

@@ -110,7 +110,7 @@ function checkbox(text: string, title: string) {
   return { label, input };
 }
 
-/** "Cards": the hair cards' count; out-of-range input is put back to the last good value. */
+/** "Card count": the hair cards' count; out-of-range input is put back to the last good value. */
 function cardCountField(initial: number, set: (n: number) => void): HTMLElement {
   const label = document.createElement('label');
   label.title = `Hair cards: ${CARD_COUNT_MIN}–${CARD_COUNT_MAX.toLocaleString('en-US')} (default ${DEFAULT_CARD_COUNT.toLocaleString('en-US')}); the Cards view shows the same`;
@@ -129,6 +129,6 @@ function cardCountField(initial: number, set: (n: number) => void): HTMLElement 
       set(n);
     } else input.value = String(good);
   });
-  label.append('Cards ', input);
+  label.append('Card count ', input);
   return label;
 }
