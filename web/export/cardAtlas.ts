@@ -1,15 +1,18 @@
 // The hair cards' texture atlas, drawn in TypeScript from the clusters' strands (no GPU: the same
 // pixels in the browser and under Node). ATLAS_TILES tiles of TILE_W × TILE_H pixels; tile j is
-// drawn from the strands of cards j, j + ATLAS_TILES, j + 2 · ATLAS_TILES, … (at most
-// CLUSTERS_PER_TILE of them), each strand mapped into its own card's coordinates (across: 0 at the
+// drawn from the strands of cards j, j + ATLAS_TILES, j + 2 · ATLAS_TILES, … until it holds
+// TILE_STRANDS strands, each strand mapped into its own card's coordinates (across: 0 at the
 // card's lo edge .. 1 at its hi edge; along: its fraction of its length, root at the tile's top),
 // so one tile suits any card; card c uses tile c mod ATLAS_TILES. Three images, same layout:
-//   colour    RGBA, the strands' colour (sRGB) and their coverage as alpha;
+//   colour    RGBA, the strands' colour (sRGB; × 0.7 .. 1 from the deepest to the highest in the
+//             clump) and their coverage as alpha;
 //   root–tip  grey, 0 at the root .. 255 at the tip, of the strand nearest the viewer outside;
 //   depth     grey, 128 + 127 · d / DEPTH_RANGE (clamped): d the height of that strand above the
 //             card along its normal (above = out from the head).
-// Strands are drawn as antialiased lines LINE_WIDTH_ROOT → LINE_WIDTH_TIP pixels wide (real hair
-// is well under a pixel here: the lines stand for the strands a card hides behind its front).
+// Strands are drawn as antialiased lines LINE_WIDTH_ROOT → LINE_WIDTH_TIP pixels wide, and a tile
+// holds more strands than one cluster has: a card stands for the whole depth of its clump, and
+// an alpha-tested texture must stay mostly opaque in its smaller mipmaps (a sparse tile averages
+// below the cutoff and the card vanishes at a distance).
 import { strandArc } from './cardClusters';
 import type { Cards } from './cardMesh';
 import { type ExportStrands, srgbToLinear } from './strandsForExport';
@@ -22,9 +25,10 @@ export const TILE_W = ATLAS_SIZE / TILE_COLUMNS; // 128
 export const TILE_H = ATLAS_SIZE / TILE_ROWS; // 512
 /** Transparent border inside each tile, pixels (mipmaps do not bleed between tiles at once). */
 export const TILE_PAD = 2;
-export const CLUSTERS_PER_TILE = 4;
-export const LINE_WIDTH_ROOT = 1.6;
-export const LINE_WIDTH_TIP = 0.9;
+/** Strands drawn into each tile (at least; whole clusters are drawn). */
+export const TILE_STRANDS = 160;
+export const LINE_WIDTH_ROOT = 2.4;
+export const LINE_WIDTH_TIP = 1.2;
 /** Depth map: ±this height above the card (world units, 1 cm) spans 1..255. */
 export const DEPTH_RANGE = 0.1;
 
@@ -102,8 +106,11 @@ export function drawCardAtlas(
   const ys = new Float64Array(longest);
   const ds = new Float64Array(longest);
 
-  for (let c = 0; c < Math.min(cards.count, CLUSTERS_PER_TILE * ATLAS_TILES); c++) {
+  const drawn = new Int32Array(ATLAS_TILES);
+  for (let c = 0; c < cards.count; c++) {
     const j = c % ATLAS_TILES;
+    if (drawn[j] >= TILE_STRANDS) continue;
+    drawn[j] += members.start[c + 1] - members.start[c];
     const tx = (j % TILE_COLUMNS) * TILE_W + TILE_PAD;
     const ty = Math.floor(j / TILE_COLUMNS) * TILE_H + TILE_PAD;
     const r0 = cards.rowStart[c];
@@ -167,9 +174,12 @@ export function drawCardAtlas(
             cover[px] = 1 - (1 - cover[px]) * (1 - cov);
             if (cov >= 0.25 && d > top[px]) {
               top[px] = d;
-              colour[4 * px] = rgb[0];
-              colour[4 * px + 1] = rgb[1];
-              colour[4 * px + 2] = rgb[2];
+              // strands deeper in the clump are darker (the light they lose to the ones above),
+              // so a card shows strands, not a flat colour
+              const lit = 0.7 + 0.3 * Math.min(1, Math.max(0, (d / DEPTH_RANGE + 1) / 2));
+              colour[4 * px] = Math.round(rgb[0] * lit);
+              colour[4 * px + 1] = Math.round(rgb[1] * lit);
+              colour[4 * px + 2] = Math.round(rgb[2] * lit);
               const tt = (cum[i] + (cum[i + 1] - cum[i]) * along) / (total > 0 ? total : 1);
               rootTip[px] = Math.round(255 * Math.min(1, Math.max(0, tt)));
               depth[px] = Math.round(128 + 127 * Math.min(1, Math.max(-1, d / DEPTH_RANGE)));
