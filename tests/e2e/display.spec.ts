@@ -84,6 +84,7 @@ test('each display toggle switches with a click and with its shortcut, and the a
     surface: false,
     field: false,
     box: false,
+    cards: false,
   });
   for (const name of ['Constraints', 'Surface', 'Field', 'Box'])
     await expect(box(name)).not.toBeChecked();
