@@ -49,31 +49,28 @@ export function wireExport(d: {
     done: (m) => status.taskDone(m),
     failed: (m) => status.taskDone(m, true),
   });
-  const menu = buildExportMenu(
-    d.anchor,
-    {
-      exportFile: (format, withHead) => void exporter.export(format, withHead, d.cardCount()),
-      setCardCount: (n) => d.setCardCount(n),
-      exportPng: async (transparent) => {
-        if (png) return;
-        png = true;
-        try {
-          if (bridge.pending) {
-            status.task('PNG image: waiting for the solve to finish…');
-            await bridge.whenIdle();
-          }
-          status.task('PNG image: drawing every strand…');
-          const blob = await d.viewer.captureImage({ scale: 2, transparent });
-          download(blob, 'hairstyle.png');
-          status.taskDone(`Exported hairstyle.png (${formatBytes(blob.size)}).`);
-        } catch (e) {
-          status.taskDone(`PNG image failed: ${e instanceof Error ? e.message : String(e)}.`, true);
-        } finally {
-          png = false;
+  const menu = buildExportMenu(d.anchor, {
+    exportFile: (format, withHead) => void exporter.export(format, withHead, d.cardCount()),
+    cardCount: () => d.cardCount(),
+    setCardCount: (n) => d.setCardCount(n),
+    exportPng: async (transparent) => {
+      if (png) return;
+      png = true;
+      try {
+        if (bridge.pending) {
+          status.task('PNG image: waiting for the solve to finish…');
+          await bridge.whenIdle();
         }
-      },
+        status.task('PNG image: drawing every strand…');
+        const blob = await d.viewer.captureImage({ scale: 2, transparent });
+        download(blob, 'hairstyle.png');
+        status.taskDone(`Exported hairstyle.png (${formatBytes(blob.size)}).`);
+      } catch (e) {
+        status.taskDone(`PNG image failed: ${e instanceof Error ? e.message : String(e)}.`, true);
+      } finally {
+        png = false;
+      }
     },
-    d.cardCount(),
-  );
+  });
   return { menu, exporter, busy: () => png || exporter.busy };
 }

@@ -1,12 +1,15 @@
 // The "Export" menu: one item per file format (exact accessible names, the test contract relies
 // on them), "Include head" (indeterminate = each format's default: with USD and glTF, without
-// OBJ; a .hair file has no meshes) and "Transparent background" for the PNG.
+// OBJ; a .hair file has no meshes), "Transparent background" for the PNG and "Card count" for the
+// hair cards.
 import { CARD_COUNT_MAX, CARD_COUNT_MIN, DEFAULT_CARD_COUNT } from '../export/cardCount';
 import type { ExportFormat } from '../export/types';
 
 export interface ExportMenuActions {
   exportFile(format: ExportFormat, withHead: boolean): void;
-  /** The hair cards' count changed (a whole number in range; the Cards view uses it too). */
+  /** The hair cards' count, and a change of it (a whole number in range; the Cards view uses it
+   *  too). */
+  cardCount(): number;
   setCardCount(n: number): void;
   exportPng(transparent: boolean): void;
 }
@@ -47,11 +50,7 @@ export const HEAD_BY_DEFAULT: Readonly<Record<ExportFormat, boolean>> = {
   cards: true,
 };
 
-export function buildExportMenu(
-  anchor: HTMLElement,
-  actions: ExportMenuActions,
-  cardCount = DEFAULT_CARD_COUNT,
-): ExportMenu {
+export function buildExportMenu(anchor: HTMLElement, actions: ExportMenuActions): ExportMenu {
   const menu = document.createElement('div');
   menu.className = 'export-menu';
   menu.id = 'export-menu';
@@ -83,7 +82,11 @@ export function buildExportMenu(
     });
     menu.append(b);
   }
-  menu.append(head.label, transparent.label, cardCountField(cardCount, actions.setCardCount));
+  menu.append(
+    head.label,
+    transparent.label,
+    cardCountField(actions.cardCount(), actions.setCardCount),
+  );
   anchor.append(menu);
   document.addEventListener('pointerdown', (e) => {
     const t = e.target as HTMLElement | null;
