@@ -133,6 +133,7 @@ export class HairView {
         this.cards.count,
       );
       this.object = made.object;
+      this.domDirty = false; // the deep opacity maps are the strips'
       this.cardsShown = { cards: made.cards, triangles: made.triangles, ms: made.ms };
       return made.object;
     }
