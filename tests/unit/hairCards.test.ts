@@ -414,6 +414,37 @@ describe('hair cards (.glb)', () => {
     expect(() => collect('cards', { ...inp, cards: 99.5 })).toThrow(/card count/);
   });
 
+  it('stays valid on degenerate hair: one strand, identical strands, zero-length strands, straight out', async () => {
+    const pack = (strands: number[][]): StrandArrays => {
+      const strandStart = new Uint32Array(strands.length + 1);
+      strands.forEach((st, i) => {
+        strandStart[i + 1] = strandStart[i] + st.length / 3;
+      });
+      return { points: new Float32Array(strands.flat()), strandStart };
+    };
+    const still = [0.2, 1, 0.1, 0.2, 1, 0.1, 0.2, 1, 0.1];
+    const down = [0, 1, 0.5, 0, 0.5, 0.6, 0, 0, 0.7];
+    const out = [0, 1.2, 0, 0, 1.5, 0, 0, 1.8, 0]; // along the line from the roots' centroid
+    const cases: Record<string, number[][]> = {
+      'one strand': [down],
+      'identical strands': Array.from({ length: 300 }, () => down),
+      'zero-length strands': Array.from({ length: 200 }, () => still),
+      'straight out and down': [
+        ...Array.from({ length: 150 }, () => out),
+        ...Array.from({ length: 150 }, () => down),
+      ],
+    };
+    for (const [name, strands] of Object.entries(cases)) {
+      const bytes = collect('cards', { ...inputs.bob, strands: pack(strands), cards: 100 });
+      const report = await validator.validateBytes(bytes);
+      const notes = report.issues.messages.map((m) => `${m.code} ${m.pointer ?? ''}: ${m.message}`);
+      expect(report.issues.numErrors, `${name}: ${notes.join('; ')}`).toBe(0);
+      const g = readGlb(bytes);
+      const pos = accessorData(g, primitive(g, 'cards').attributes.POSITION);
+      expect(pos.every(Number.isFinite), name).toBe(true);
+    }
+  });
+
   it('writes a valid file from no strands', async () => {
     const empty: ExportInput = {
       ...inputs.bob,
