@@ -1,6 +1,7 @@
 // The Cards view end to end: a real click on the "Cards" display toggle draws the hair as the
 // hair cards export cuts it (the status carries data-cards) and the view shows about as much
-// hair as the strands did, and a second click brings the strands back. With SHOT_DIR set, pictures of the strands
+// hair as the strands did; the Export menu's "Card count" cuts them again (a count out of range
+// is refused in words); a second click brings the strands back. With SHOT_DIR set, pictures of the strands
 // and of the cards from the front and the side (for a person to look at).
 import { expect, type Page, test } from '@playwright/test';
 import { settled, watchConsole } from './helpers';
@@ -63,6 +64,19 @@ test('the Cards view shows the hair as cards and toggles back to strands', async
   expect(withCards).toBeGreaterThan(0.6 * strands);
   expect(withCards).toBeLessThan(1.6 * strands);
   await shots(page, 'cards');
+
+  // the Export menu's card count cuts the cards again; a count out of range is refused in words
+  await page.getByRole('button', { name: 'Export' }).click();
+  const count = page.getByRole('spinbutton', { name: 'Card count' });
+  await count.fill('50');
+  await count.press('Enter');
+  await expect(status).toContainText('The card count must be a whole number from 100 to 5,000');
+  await expect(count).toHaveValue('1000');
+  expect(Number(await status.getAttribute('data-cards'))).toBe(cards);
+  await count.fill('300');
+  await count.press('Enter');
+  await expect(status).toHaveAttribute('data-cards', /^(2[0-9]{2}|300)$/);
+  await page.keyboard.press('Escape');
   await toggle.click();
   await expect(status).not.toHaveAttribute('data-cards', /.*/);
   await shots(page, 'strands');

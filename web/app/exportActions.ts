@@ -53,6 +53,7 @@ export function wireExport(d: {
     exportFile: (format, withHead) => void exporter.export(format, withHead, d.cardCount()),
     cardCount: () => d.cardCount(),
     setCardCount: (n) => d.setCardCount(n),
+    say: (m) => status.note(m),
     exportPng: async (transparent) => {
       if (png) return;
       png = true;

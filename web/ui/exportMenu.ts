@@ -2,7 +2,12 @@
 // on them), "Include head" (indeterminate = each format's default: with USD and glTF, without
 // OBJ; a .hair file has no meshes), "Transparent background" for the PNG and "Card count" for the
 // hair cards.
-import { CARD_COUNT_MAX, CARD_COUNT_MIN, DEFAULT_CARD_COUNT } from '../export/cardCount';
+import {
+  CARD_COUNT_MAX,
+  CARD_COUNT_MIN,
+  cardCountProblem,
+  DEFAULT_CARD_COUNT,
+} from '../export/cardCount';
 import type { ExportFormat } from '../export/types';
 
 export interface ExportMenuActions {
@@ -11,6 +16,8 @@ export interface ExportMenuActions {
    *  too). */
   cardCount(): number;
   setCardCount(n: number): void;
+  /** One sentence for the status line (a card count out of range). */
+  say(message: string): void;
   exportPng(transparent: boolean): void;
 }
 
@@ -85,7 +92,7 @@ export function buildExportMenu(anchor: HTMLElement, actions: ExportMenuActions)
   menu.append(
     head.label,
     transparent.label,
-    cardCountField(actions.cardCount(), actions.setCardCount),
+    cardCountField(actions.cardCount(), actions.setCardCount, actions.say),
   );
   anchor.append(menu);
   document.addEventListener('pointerdown', (e) => {
@@ -113,8 +120,13 @@ function checkbox(text: string, title: string) {
   return { label, input };
 }
 
-/** "Card count": the hair cards' count; out-of-range input is put back to the last good value. */
-function cardCountField(initial: number, set: (n: number) => void): HTMLElement {
+/** "Card count": the hair cards' count; out-of-range input is put back to the last good value
+ *  and said so. */
+function cardCountField(
+  initial: number,
+  set: (n: number) => void,
+  say: (message: string) => void,
+): HTMLElement {
   const label = document.createElement('label');
   label.title = `Hair cards: ${CARD_COUNT_MIN}–${CARD_COUNT_MAX.toLocaleString('en-US')} (default ${DEFAULT_CARD_COUNT.toLocaleString('en-US')}); the Cards view shows the same`;
   const input = document.createElement('input');
@@ -126,11 +138,17 @@ function cardCountField(initial: number, set: (n: number) => void): HTMLElement 
   input.dataset.testid = 'card-count';
   let good = initial;
   input.addEventListener('change', () => {
-    const n = Number(input.value);
-    if (Number.isInteger(n) && n >= CARD_COUNT_MIN && n <= CARD_COUNT_MAX) {
+    const n = input.value.trim() === '' ? Number.NaN : Number(input.value);
+    const problem = cardCountProblem(n);
+    if (problem === null) {
       good = n;
       set(n);
-    } else input.value = String(good);
+    } else {
+      input.value = String(good);
+      say(
+        `The card count must be a whole number from ${CARD_COUNT_MIN} to ${CARD_COUNT_MAX.toLocaleString('en-US')}; it stays ${good.toLocaleString('en-US')}.`,
+      );
+    }
   });
   label.append('Card count ', input);
   return label;
