@@ -5,11 +5,12 @@
 import { readFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import { fileURLToPath } from 'node:url';
-import { inflateSync, crc32 as zlibCrc32 } from 'node:zlib';
+import { inflateRawSync, inflateSync, crc32 as zlibCrc32 } from 'node:zlib';
 import { beforeAll, describe, expect, it } from 'vitest';
 import { presetSession } from '../../web/cli/presetSession';
 import { clusterStrands, strandFeatures } from '../../web/export/cardClusters';
 import { CARD_COUNT_MAX, DEFAULT_CARD_COUNT } from '../../web/export/cardCount';
+import { deflateFixed } from '../../web/export/deflate';
 import { growSessionHair } from '../../web/export/growSession';
 import { encodePng } from '../../web/export/png';
 import { strandsForExport } from '../../web/export/strandsForExport';
@@ -270,9 +271,39 @@ function readPng(b: Uint8Array) {
 
 // ---- the tests --------------------------------------------------------------------------------
 
+describe('deflate', () => {
+  it('compresses what node:zlib inflates back exactly: empty, short, runs, noise, long matches', () => {
+    const noise = new Uint8Array(100_000);
+    let x = 12345;
+    for (let i = 0; i < noise.length; i++) {
+      x = (Math.imul(x, 1103515245) + 12345) >>> 0;
+      noise[i] = x >>> 24;
+    }
+    const runs = new Uint8Array(300_000);
+    for (let i = 0; i < runs.length; i++) runs[i] = i % 4 === 3 ? 0 : [90, 56, 37][i % 4];
+    const mixed = new Uint8Array(200_000);
+    for (let i = 0; i < mixed.length; i++)
+      mixed[i] = (i >> 9) % 3 === 0 ? noise[i % 5000] : (i * 7) & 15;
+    const cases: Record<string, Uint8Array> = {
+      empty: new Uint8Array(0),
+      'two bytes': new Uint8Array([1, 2]),
+      'one run of 100K zeros': new Uint8Array(100_000),
+      'RGBA runs': runs,
+      noise,
+      'repeats 5,000 bytes back and small values': mixed,
+    };
+    for (const [name, data] of Object.entries(cases)) {
+      const packed = deflateFixed(data);
+      const back = inflateRawSync(packed);
+      expect(Buffer.compare(back, data), name).toBe(0);
+      if (name === 'RGBA runs') expect(packed.length).toBeLessThan(data.length / 50);
+    }
+  });
+});
+
 describe('PNG encoder', () => {
   it('writes a PNG that node:zlib inflates to the same pixels', () => {
-    const px = new Uint8Array(70_000 * 4).map((_, i) => (i * 7) & 255); // more than one stored block
+    const px = new Uint8Array(70_000 * 4).map((_, i) => (i * 7) & 255);
     const png = readPng(encodePng(350, 200, 4, px));
     expect([png.w, png.h, png.channels]).toEqual([350, 200, 4]);
     for (let y = 0; y < 200; y++) {

@@ -1,15 +1,12 @@
 // A small PNG encoder (8-bit greyscale or RGBA, no interlace, filter "None" on every row) whose
-// zlib stream uses stored (uncompressed) deflate blocks. No compressor is involved, so the
-// bytes are the same in the browser and under Node (node:zlib is not in the browser, and the
-// browser's CompressionStream is asynchronous and not specified byte for byte). The cost is
-// size: width × height × channels bytes plus ~5 bytes per 64 KB block.
+// zlib stream comes from deflate.ts, our own deterministic compressor, so the bytes are the same
+// in the browser and under Node (node:zlib is not in the browser, and the browser's
+// CompressionStream is asynchronous and not specified byte for byte).
 // Layout from the PNG specification (ISO/IEC 15948): signature, IHDR, IDAT, IEND, each chunk
-// length, type, data, CRC-32 of type + data; zlib from RFC 1950, stored blocks from RFC 1951.
+// length, type, data, CRC-32 of type + data; the zlib wrapper from RFC 1950.
+import { deflateFixed } from './deflate';
 
 const SIGNATURE = [0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a];
-/** The longest stored deflate block (LEN is 16 bits). */
-const STORED_MAX = 65535;
-
 let crcTable: Uint32Array | null = null;
 
 function crc32Table(): Uint32Array {
@@ -49,29 +46,19 @@ export function adler32(bytes: Uint8Array): number {
   return ((b << 16) | a) >>> 0;
 }
 
-/** A zlib stream of `raw` in stored deflate blocks. */
-export function zlibStored(raw: Uint8Array): Uint8Array {
-  const blocks = Math.max(1, Math.ceil(raw.length / STORED_MAX));
-  const out = new Uint8Array(2 + 5 * blocks + raw.length + 4);
+/** A zlib stream of `raw` (RFC 1950: header, deflate data, Adler-32). */
+export function zlibCompress(raw: Uint8Array): Uint8Array {
+  const body = deflateFixed(raw);
+  const out = new Uint8Array(2 + body.length + 4);
   out[0] = 0x78; // deflate, 32 KB window
-  out[1] = 0x01; // check bits: 0x7801 is a multiple of 31, no dictionary, fastest level
-  let o = 2;
-  for (let k = 0; k < blocks; k++) {
-    const a = k * STORED_MAX;
-    const len = Math.min(STORED_MAX, raw.length - a);
-    out[o++] = k === blocks - 1 ? 1 : 0; // BFINAL, BTYPE 00
-    out[o++] = len & 255;
-    out[o++] = len >>> 8;
-    out[o++] = ~len & 255;
-    out[o++] = (~len >>> 8) & 255;
-    out.set(raw.subarray(a, a + len), o);
-    o += len;
-  }
+  out[1] = 0x01; // check bits: 0x7801 is a multiple of 31; no dictionary
+  out.set(body, 2);
   const ad = adler32(raw);
-  out[o++] = ad >>> 24;
-  out[o++] = (ad >>> 16) & 255;
-  out[o++] = (ad >>> 8) & 255;
-  out[o++] = ad & 255;
+  const o = 2 + body.length;
+  out[o] = ad >>> 24;
+  out[o + 1] = (ad >>> 16) & 255;
+  out[o + 2] = (ad >>> 8) & 255;
+  out[o + 3] = ad & 255;
   return out;
 }
 
@@ -90,7 +77,7 @@ export function encodePng(
     raw[y * (rowBytes + 1)] = 0; // filter None
     raw.set(pixels.subarray(y * rowBytes, (y + 1) * rowBytes), y * (rowBytes + 1) + 1);
   }
-  const idat = zlibStored(raw);
+  const idat = zlibCompress(raw);
   const ihdr = new Uint8Array(13);
   const dv = new DataView(ihdr.buffer);
   dv.setUint32(0, width);
