@@ -44,7 +44,8 @@ async function main(): Promise<void> {
   const server: ChildProcess = spawn(
     'npx',
     ['vite', 'preview', '--port', String(PORT), '--strictPort'],
-    { stdio: 'ignore' },
+    // its own process group: npx starts vite as a child, and both must stop at the end
+    { stdio: 'ignore', detached: true },
   );
   const dir = mkdtempSync(join(tmpdir(), 'hairsketch-bench-export-'));
   const rows: Row[] = [];
@@ -120,7 +121,7 @@ async function main(): Promise<void> {
     }
     await browser.close();
   } finally {
-    server.kill();
+    if (server.pid) process.kill(-server.pid);
   }
   const mb = (n: number) => (n / 1024 / 1024).toFixed(1);
   const out = [
