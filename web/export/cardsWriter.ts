@@ -204,7 +204,7 @@ export function* writeCardsGlb(
         extras: {
           rootTipTexture: 1,
           depthTexture: 2,
-          depthRange: DEPTH_RANGE * METERS_PER_UNIT,
+          depthRange: Number((DEPTH_RANGE * METERS_PER_UNIT).toPrecision(6)), // metres
           atlas: { size: ATLAS_SIZE, tiles: ATLAS_TILES },
         },
       },
