@@ -28,6 +28,7 @@ test('each display toggle switches with a click and with its shortcut, and the a
     surface: false,
     field: false,
     box: false,
+    cards: false,
   });
   const box = (name: string) => page.getByRole('checkbox', { name, exact: true });
   await expect(box('Curves')).toBeChecked();
@@ -83,6 +84,7 @@ test('each display toggle switches with a click and with its shortcut, and the a
     surface: false,
     field: false,
     box: false,
+    cards: false,
   });
   for (const name of ['Constraints', 'Surface', 'Field', 'Box'])
     await expect(box(name)).not.toBeChecked();

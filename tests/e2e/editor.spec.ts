@@ -161,7 +161,7 @@ test.describe('on a phone-sized screen', () => {
     // everything else is in "More": each display toggle can be switched from there
     const more = page.getByRole('button', { name: 'More' });
     await more.click();
-    for (const name of ['Curves', 'Constraints', 'Surface', 'Field', 'Box']) {
+    for (const name of ['Curves', 'Constraints', 'Surface', 'Field', 'Box', 'Cards']) {
       const box = page.getByRole('checkbox', { name, exact: true });
       await expect(box).toBeVisible();
       const size = await box.evaluate((el) => {

@@ -1,4 +1,4 @@
-// "Export" end to end: every menu item downloads its file; the USD, .hair and glTF bytes equal
+// "Export" end to end: every menu item downloads its file; the USD, .hair, glTF and hair cards bytes equal
 // `hairsketch grow` run on the same session saved through "Save"; "Open" on the exported USD and
 // glTF restores the session; the PNG is twice the canvas size. Real clicks; waits on downloads
 // and the status attributes, never on fixed sleeps.
@@ -47,6 +47,7 @@ test('each export item downloads its file, equal to `hairsketch grow` on the sav
     'Cem Yuksel (.hair)': 'hairstyle.hair',
     'OBJ (.obj)': 'hairstyle.obj',
     'glTF (.glb)': 'hairstyle.glb',
+    'Hair cards (.glb)': 'hairstyle-cards.glb',
   };
   const files: Record<string, Buffer> = {};
   for (const [item, name] of Object.entries(expected)) {
@@ -64,13 +65,15 @@ test('each export item downloads its file, equal to `hairsketch grow` on the sav
   expect(files['hairstyle.usda'].subarray(0, 5).toString()).toBe('#usda');
   expect(files['hairstyle.hair'].subarray(0, 4).toString()).toBe('HAIR');
   expect(files['hairstyle.glb'].subarray(0, 4).toString()).toBe('glTF');
+  expect(files['hairstyle-cards.glb'].subarray(0, 4).toString()).toBe('glTF');
 
   // the command line on the saved session gives the same bytes (same wasm, same seeded growth)
-  for (const name of ['hairstyle.usda', 'hairstyle.hair', 'hairstyle.glb']) {
+  for (const name of ['hairstyle.usda', 'hairstyle.hair', 'hairstyle.glb', 'hairstyle-cards.glb']) {
     const out = join(dir, `cli-${name}`);
+    const format = name === 'hairstyle-cards.glb' ? ['--format', 'cards'] : [];
     const line = execFileSync(
       process.execPath,
-      ['scripts/hairsketch.mjs', 'grow', sessionFile, '--out', out, '--grid', '25k'],
+      ['scripts/hairsketch.mjs', 'grow', sessionFile, '--out', out, '--grid', '25k', ...format],
       { encoding: 'utf8' },
     );
     expect(JSON.parse(line.trim().split('\n').at(-1) ?? '{}').bytes).toBe(files[name].length);

@@ -1,5 +1,5 @@
 // The actions table: one entry per command with unique ids and shortcuts, keys map to the right
-// action (display toggles 1–5, Ctrl+Shift+Z, "?"), and running an action calls its target.
+// action (display toggles 1–6, Ctrl+Shift+Z, "?"), and running an action calls its target.
 import { describe, expect, it } from 'vitest';
 import {
   type ActionTarget,
@@ -18,6 +18,7 @@ function target() {
     surface: false,
     field: false,
     box: false,
+    cards: false,
   };
   let speed = 1;
   let avoidOn = false;
@@ -104,7 +105,7 @@ describe('actions', () => {
     expect(displayShortcut('mod+shift+z')).toBe('Ctrl+Shift+Z');
   });
 
-  it('shortcuts run their actions: tools, undo/redo, display toggles 1–5, help', () => {
+  it('shortcuts run their actions: tools, undo/redo, display toggles 1–6, help', () => {
     const { t, calls, display } = target();
     const actions = buildActions(t);
     const run = (s: string | null) => {
@@ -119,15 +120,16 @@ describe('actions', () => {
     run(key('?', { shift: true }));
     run(key('Escape'));
     expect(calls).toEqual(['tool:stream', 'undo', 'redo', 'redo', 'help', 'cancel']);
-    for (const k of ['1', '2', '3', '4', '5']) run(key(k));
+    for (const k of ['1', '2', '3', '4', '5', '6']) run(key(k));
     expect(display).toEqual({
       curves: false,
       constraints: true,
       surface: true,
       field: true,
       box: true,
+      cards: true,
     });
-    for (const k of ['0', '6', '9', 'F1'])
+    for (const k of ['0', '7', '9', 'F1'])
       expect(actionForShortcut(actions, key(k) ?? '')).toBeNull();
   });
 

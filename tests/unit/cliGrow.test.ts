@@ -222,6 +222,21 @@ describe('hairsketch grow: bad input', () => {
         /unknown solver "cg"/,
       ],
       [
+        'cards too few',
+        (d) => [sessionFile, '--out', join(d, 'o.glb'), '--format', 'cards', '--cards', '99'],
+        /--cards: the card count must be a whole number from 100 to 5,000, got "99"/,
+      ],
+      [
+        'cards not a number',
+        (d) => [sessionFile, '--out', join(d, 'o.glb'), '--format', 'cards', '--cards', '1e3'],
+        /--cards: the card count .* got "1e3"/,
+      ],
+      [
+        'cards without --format cards',
+        (d) => [sessionFile, '--out', join(d, 'o.glb'), '--cards', '600'],
+        /--cards needs --format cards/,
+      ],
+      [
         'strands 0',
         (d) => [sessionFile, '--out', join(d, 'o.usda'), '--strands', '0'],
         /--strands must be an integer from 1 to 1,000,000, got "0"/,
@@ -391,6 +406,33 @@ describe('hairsketch grow: output', () => {
     expect(b.readUInt32LE(0)).toBe(0x46546c67);
     expect(b.readUInt32LE(8)).toBe(b.length);
     expect(rep.bytes).toBe(b.length);
+  });
+
+  it('cards (--format cards --cards N): a GLB with the cards asked for and the head', async () => {
+    const d = freshDir();
+    const f = join(d, 'cards.glb');
+    const rep = await growOk(
+      sessionFile,
+      '--out',
+      f,
+      '--strands',
+      '2000',
+      '--format',
+      'cards',
+      '--cards',
+      '150',
+    );
+    const b = readFileSync(f);
+    expect(rep.format).toBe('cards');
+    expect(b.readUInt32LE(0)).toBe(0x46546c67);
+    expect(b.readUInt32LE(8)).toBe(b.length);
+    expect(rep.bytes).toBe(b.length);
+    const json = JSON.parse(b.subarray(20, 20 + b.readUInt32LE(12)).toString());
+    const cards = json.asset.extras.hairsketch.cards;
+    expect(cards.asked).toBe(150);
+    expect(cards.made).toBeGreaterThan(120);
+    expect(cards.made).toBeLessThanOrEqual(150);
+    expect(json.meshes.map((m: { name: string }) => m.name)).toEqual(['cards', 'head']);
   });
 
   it("--strands caps the session's strands; without it the session's own cap applies", async () => {

@@ -173,13 +173,14 @@ describe('supporting surface mesh', () => {
 });
 
 describe('display toggles', () => {
-  it('defaults to curves only, labels the five toggles and maps keys 1–5 to them in order', () => {
+  it('defaults to curves only, labels the six toggles and maps keys 1–6 to them in order', () => {
     expect(DEFAULT_DISPLAY).toEqual({
       curves: true,
       constraints: false,
       surface: false,
       field: false,
       box: false,
+      cards: false,
     });
     expect(DISPLAY_TOGGLES.map((t) => t.label)).toEqual([
       'Curves',
@@ -187,6 +188,7 @@ describe('display toggles', () => {
       'Surface',
       'Field',
       'Box',
+      'Cards',
     ]);
   });
 });

@@ -25,6 +25,7 @@ import { ReferencePlanes } from '../viewer/referencePlanes';
 import { Viewer } from '../viewer/viewer';
 import { buildActions } from './actions';
 import { ActiveTool } from './activeTool';
+import { wireCardsView } from './cardsPresenter';
 import { editActions } from './editActions';
 import { type ExportWiring, wireExport } from './exportActions';
 import { HairPresenter } from './hairPresenter';
@@ -115,6 +116,7 @@ export function startApp(): void {
     if (c.camera) viewer.setCamera(c.camera.position, c.camera.target);
   });
   const hair = new HairPresenter(viewer, hairView, line, editor);
+  wireCardsView({ view, editor, hairView, statusElement: byId('status') });
   const overlays = new OverlayPresenter(viewer, editor, view, bridge.grid);
   const status = new StatusPresenter(line, bridge);
   editor.listen((c) => status.editorChanged(c));
@@ -207,6 +209,8 @@ export function startApp(): void {
     headBounds: () => heads.gridBounds,
     solver: opts.solver,
     anchor: byId('toolbar'),
+    cardCount: () => view.state.cardCount,
+    setCardCount: (n) => view.update({ cardCount: n }),
   });
   const toggles = buildDisplayToggles(toolbar.moreElement, view.state.display, (k, on) =>
     view.setDisplay(k, on),

@@ -28,6 +28,9 @@ export function wireExport(d: {
   headBounds(): Parameters<typeof gridForSession>[2];
   solver: SolverName;
   anchor: HTMLElement;
+  /** The hair cards' count (view state: the Cards view shows the same cards). */
+  cardCount(): number;
+  setCardCount(n: number): void;
 }): ExportWiring {
   const { status, bridge } = d;
   let png = false;
@@ -47,7 +50,10 @@ export function wireExport(d: {
     failed: (m) => status.taskDone(m, true),
   });
   const menu = buildExportMenu(d.anchor, {
-    exportFile: (format, withHead) => void exporter.export(format, withHead),
+    exportFile: (format, withHead) => void exporter.export(format, withHead, d.cardCount()),
+    cardCount: () => d.cardCount(),
+    setCardCount: (n) => d.setCardCount(n),
+    say: (m) => status.note(m),
     exportPng: async (transparent) => {
       if (png) return;
       png = true;

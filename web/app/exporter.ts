@@ -40,6 +40,7 @@ const LABEL: Record<ExportFormat, string> = {
   hair: '.hair',
   obj: 'OBJ',
   glb: 'glTF',
+  cards: 'hair cards',
 };
 
 export class Exporter {
@@ -59,8 +60,13 @@ export class Exporter {
     this.abort?.(new Error('the export worker stopped'));
   }
 
-  /** Exports the session's full hair as `format`; the head when `withHead`. */
-  async export(format: ExportFormat, withHead: boolean): Promise<ExportOutcome | null> {
+  /** Exports the session's full hair as `format`; the head when `withHead`; hair cards cut into
+   *  `cards` cards (the default when absent). */
+  async export(
+    format: ExportFormat,
+    withHead: boolean,
+    cards?: number,
+  ): Promise<ExportOutcome | null> {
     if (this.running) {
       this.d.failed('An export is already running; wait for it to finish.');
       return null;
@@ -122,6 +128,7 @@ export class Exporter {
             solver: this.d.solver,
             scalp: this.d.scalp(),
             head: withHead ? this.d.head() : null,
+            ...(format === 'cards' && cards !== undefined ? { cards } : {}),
           });
         },
       );
@@ -154,7 +161,7 @@ export function download(blob: Blob, name: string): void {
 }
 
 function mimeOf(f: ExportFormat): string {
-  return f === 'glb'
+  return f === 'glb' || f === 'cards'
     ? 'model/gltf-binary'
     : f === 'obj' || f === 'usda'
       ? 'text/plain'

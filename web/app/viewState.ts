@@ -4,6 +4,7 @@
 // localStorage, by QualityControl). The toolbar, the display toggles, the hint line and the
 // overlays derive what they show from it. The camera is not here: the viewer's orbit controls
 // move it every frame, and the editor hands the viewer a loaded session's saved view.
+import { DEFAULT_CARD_COUNT } from '../export/cardCount';
 import type { PonytailStage } from '../tools/ponytailTool';
 import { DEFAULT_DISPLAY, type DisplayKey, type DisplayState } from '../ui/displayToggles';
 import type { QualitySetting } from './quality';
@@ -15,6 +16,8 @@ export interface ViewState {
   readonly mirror: boolean;
   /** The ponytail stroke the Ponytail tool expects next. */
   readonly ponytailStage: PonytailStage;
+  /** How many hair cards the Cards view and the hair cards export cut the hair into. */
+  readonly cardCount: number;
 }
 
 /** What changed, for subscribers that react to one part only. */
@@ -30,6 +33,7 @@ export class ViewStore {
       quality: 'auto',
       mirror: false,
       ponytailStage: 'spine',
+      cardCount: DEFAULT_CARD_COUNT,
       ...initial,
     };
   }

@@ -1,8 +1,8 @@
 // `hairsketch grow`: a saved session (or a share link, or an export that carries one) to a hair
 // file, through the same pipeline as the app's export (export/growSession.ts, then
 // export/writeExport.ts), so the same session gives the same file.
-//   hairsketch grow SESSION --out FILE [--format usda|hair|obj|glb] [--grid 25k|50k|100k|250k]
-//                   [--solver fast|exact] [--strands N] [--with-head|--no-head] [--head FILE]
+//   hairsketch grow SESSION --out FILE [--format usda|hair|obj|glb|cards] [--grid 25k|50k|100k|250k]
+//                   [--solver fast|exact] [--strands N] [--cards N] [--with-head|--no-head] [--head FILE]
 // The head is the session's (cli/head.ts): the built-in one, or a loaded head's file embedded in
 // the session file or given with --head FILE (OBJ, glTF/GLB, PLY, STL).
 // The file is written to a temporary name beside FILE and renamed into place only when complete.
@@ -17,6 +17,7 @@ import {
   writeSync,
 } from 'node:fs';
 import { basename, dirname, join, resolve } from 'node:path';
+import { cardCountProblem } from '../export/cardCount';
 import { growSessionHair } from '../export/growSession';
 import { readExportedSession } from '../export/readExport';
 import { exportedCounts } from '../export/strandsForExport';
@@ -32,7 +33,7 @@ import { CliError, parseSeconds } from './errors';
 import { headForGrow } from './head';
 
 export const GROW_USAGE =
-  'usage: hairsketch grow SESSION --out FILE [--format usda|hair|obj|glb] [--grid 25k|50k|100k|250k] [--solver fast|exact] [--strands N] [--with-head|--no-head] [--head FILE] [--max-seconds N] [--progress-seconds N]';
+  'usage: hairsketch grow SESSION --out FILE [--format usda|hair|obj|glb|cards] [--grid 25k|50k|100k|250k] [--solver fast|exact] [--strands N] [--cards N] [--with-head|--no-head] [--head FILE] [--max-seconds N] [--progress-seconds N]';
 
 const GROW_SOLVERS = ['fast', 'exact'] as const;
 type GrowSolver = (typeof GROW_SOLVERS)[number];
@@ -49,6 +50,8 @@ export interface GrowArgs {
   grid: GridPreset | null; // null: the session's grid
   solver: GrowSolver;
   strands: number | null; // null: the session's growth.maxStrands
+  /** --cards N: hair cards to cut the hair into (null: the default). */
+  cards: number | null;
   /** Write the head mesh into the file (--with-head / --no-head). */
   head: boolean;
   /** --head FILE: the head file to grow on (null: the session's own). */
@@ -79,6 +82,7 @@ export function parseGrowArgs(argv: readonly string[]): GrowArgs {
   let grid: string | null = null;
   let solver = 'fast';
   let strands: string | null = null;
+  let cards: string | null = null;
   let head: boolean | null = null;
   let headFile: string | null = null;
   let maxSeconds = 600;
@@ -92,6 +96,7 @@ export function parseGrowArgs(argv: readonly string[]): GrowArgs {
     '--max-seconds',
     '--progress-seconds',
     '--head',
+    '--cards',
   ];
   for (let i = 0; i < argv.length; i++) {
     const a = argv[i];
@@ -105,6 +110,7 @@ export function parseGrowArgs(argv: readonly string[]): GrowArgs {
       else if (a === '--max-seconds') maxSeconds = parseSeconds(a, v);
       else if (a === '--progress-seconds') progressSeconds = parseSeconds(a, v);
       else if (a === '--head') headFile = v;
+      else if (a === '--cards') cards = v;
       else strands = v;
     } else if (a === '--with-head' || a === '--no-head') {
       head = a === '--with-head';
@@ -142,14 +148,22 @@ export function parseGrowArgs(argv: readonly string[]): GrowArgs {
         `--strands must be an integer from 1 to ${MAX_STRANDS_OPTION.toLocaleString('en-US')}, got "${strands}"`,
       );
   }
+  let cardCount: number | null = null;
+  if (cards !== null) {
+    cardCount = /^[0-9]{1,7}$/.test(cards) ? Number(cards) : Number.NaN;
+    const problem = cardCountProblem(cardCount);
+    if (problem) throw new CliError(`--cards: ${problem.replace(/got .*$/, `got "${cards}"`)}`);
+    if (fmt !== 'cards') throw new CliError('--cards needs --format cards');
+  }
   return {
     session,
     out,
     format: fmt,
+    cards: cardCount,
     grid: grid as GridPreset | null,
     solver: solver as GrowSolver,
     strands: n,
-    head: head ?? (fmt === 'usda' || fmt === 'glb'),
+    head: head ?? (fmt === 'usda' || fmt === 'glb' || fmt === 'cards'),
     headFile,
     maxSeconds,
     progressSeconds,
@@ -320,6 +334,7 @@ export async function runGrow(
       strands: hair.strands,
       session,
       head: exportHead,
+      ...(args.cards !== null ? { cards: args.cards } : {}),
     })) {
       writeAll(fd, chunk);
       bytes += chunk.byteLength;

@@ -15,6 +15,8 @@ export interface ExportRequest {
   scalp: ScalpMesh;
   /** The head mesh to include in the file, or null. */
   head: ExportHead | null;
+  /** Hair cards: the card count (absent: the default). */
+  cards?: number;
 }
 
 export type FromExportWorker =

@@ -5,9 +5,9 @@ import type { SessionState } from '../model/session';
 import type { StrandArrays } from '../solver/protocol';
 import type { GroomSummary } from './usdWriter';
 
-export type ExportFormat = 'usda' | 'hair' | 'obj' | 'glb';
+export type ExportFormat = 'usda' | 'hair' | 'obj' | 'glb' | 'cards';
 
-export const EXPORT_FORMATS: readonly ExportFormat[] = ['usda', 'hair', 'obj', 'glb'];
+export const EXPORT_FORMATS: readonly ExportFormat[] = ['usda', 'hair', 'obj', 'glb', 'cards'];
 
 /** File name of each format's download (`hairstyle.usda`, …). */
 export const EXPORT_FILE_NAMES: Readonly<Record<ExportFormat, string>> = {
@@ -15,6 +15,7 @@ export const EXPORT_FILE_NAMES: Readonly<Record<ExportFormat, string>> = {
   hair: 'hairstyle.hair',
   obj: 'hairstyle.obj',
   glb: 'hairstyle.glb',
+  cards: 'hairstyle-cards.glb',
 };
 
 /** Unreal's groom importer keeps at most this many points per strand. */
@@ -45,6 +46,9 @@ export interface ExportInput {
   head: ExportHead | null;
   /** Told what the USD groom holds (groups, guides, where root UVs come from). */
   onGroom?: (groom: GroomSummary) => void;
+  /** Hair cards: how many cards to cut the hair into (cardsWriter.ts DEFAULT_CARD_COUNT when
+   *  absent); the other formats ignore it. */
+  cards?: number;
 }
 
 /** Progress of a long export, 0..1. */

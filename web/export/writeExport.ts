@@ -1,6 +1,7 @@
 // The export entry point: one format, one input, the file as a sequence of chunks (each at most
 // CHUNK_BYTES). Pure TypeScript (typed arrays and TextEncoder only): it runs the same in the
 // browser's export worker and under Node, and the same input gives byte-identical output.
+import { writeCardsGlb } from './cardsWriter';
 import { CHUNK_BYTES, Progress } from './chunkSink';
 import { writeGlb } from './glbWriter';
 import { writeHair } from './hairWriter';
@@ -33,6 +34,9 @@ export function* writeExport(
       return;
     case 'glb':
       yield* writeGlb(strands, input, progress);
+      return;
+    case 'cards':
+      yield* writeCardsGlb(strands, input, progress);
       return;
     default: {
       const never: never = format;

@@ -1,5 +1,6 @@
 // Display toggles (method S6.2): a compact row of checkboxes with accessible names "Curves",
-// "Constraints", "Surface", "Field", "Box" (keys 1–5: the actions table, app/actions.ts). The state is view
+// "Constraints", "Surface", "Field", "Box" and "Cards" (the hair as hair cards; keys 1–6: the
+// actions table, app/actions.ts). The state is view
 // state, not part of the session: it is neither in the undo history nor in share links.
 
 export interface DisplayState {
@@ -8,6 +9,7 @@ export interface DisplayState {
   surface: boolean; // the supporting surface of the selected stream curve
   field: boolean; // the solved vector field as glyphs
   box: boolean; // the bounding volume (the grid's box)
+  cards: boolean; // the hair as the hair cards export cuts it, instead of the strands
 }
 export type DisplayKey = keyof DisplayState;
 
@@ -17,15 +19,21 @@ export const DEFAULT_DISPLAY: Readonly<DisplayState> = {
   surface: false,
   field: false,
   box: false,
+  cards: false,
 };
 
-/** Order of the checkboxes, their labels and their shortcut keys ("1" .. "5"). */
+/** Order of the checkboxes, their labels and their shortcut keys ("1" .. "6"). */
 export const DISPLAY_TOGGLES: ReadonlyArray<{ key: DisplayKey; label: string; title: string }> = [
   { key: 'curves', label: 'Curves', title: 'Show the style curves' },
   { key: 'constraints', label: 'Constraints', title: 'Show the constraints the curves make' },
   { key: 'surface', label: 'Surface', title: "Show the selected curve's supporting surface" },
   { key: 'field', label: 'Field', title: 'Show the vector field as glyphs' },
   { key: 'box', label: 'Box', title: 'Show the bounding volume' },
+  {
+    key: 'cards',
+    label: 'Cards',
+    title: 'Show the hair as the hair cards a game draws (Export → Hair cards), not as strands',
+  },
 ];
 
 export interface DisplayToggles {

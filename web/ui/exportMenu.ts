@@ -1,10 +1,23 @@
 // The "Export" menu: one item per file format (exact accessible names, the test contract relies
 // on them), "Include head" (indeterminate = each format's default: with USD and glTF, without
-// OBJ; a .hair file has no meshes) and "Transparent background" for the PNG.
+// OBJ; a .hair file has no meshes), "Transparent background" for the PNG and "Card count" for the
+// hair cards.
+import {
+  CARD_COUNT_MAX,
+  CARD_COUNT_MIN,
+  cardCountProblem,
+  DEFAULT_CARD_COUNT,
+} from '../export/cardCount';
 import type { ExportFormat } from '../export/types';
 
 export interface ExportMenuActions {
   exportFile(format: ExportFormat, withHead: boolean): void;
+  /** The hair cards' count, and a change of it (a whole number in range; the Cards view uses it
+   *  too). */
+  cardCount(): number;
+  setCardCount(n: number): void;
+  /** One sentence for the status line (a card count out of range). */
+  say(message: string): void;
   exportPng(transparent: boolean): void;
 }
 
@@ -27,6 +40,11 @@ const ITEMS: ReadonlyArray<{ label: string; format: ExportFormat | 'png'; title:
     format: 'glb',
     title: 'Lines with colour and width: web viewers, Blender',
   },
+  {
+    label: 'Hair cards (.glb)',
+    format: 'cards',
+    title: 'Textured cards for game engines: the count is set below',
+  },
   { label: 'PNG image', format: 'png', title: 'The current view at twice the canvas resolution' },
 ];
 
@@ -36,6 +54,7 @@ export const HEAD_BY_DEFAULT: Readonly<Record<ExportFormat, boolean>> = {
   glb: true,
   obj: false,
   hair: false,
+  cards: true,
 };
 
 export function buildExportMenu(anchor: HTMLElement, actions: ExportMenuActions): ExportMenu {
@@ -70,7 +89,11 @@ export function buildExportMenu(anchor: HTMLElement, actions: ExportMenuActions)
     });
     menu.append(b);
   }
-  menu.append(head.label, transparent.label);
+  menu.append(
+    head.label,
+    transparent.label,
+    cardCountField(actions.cardCount(), actions.setCardCount, actions.say),
+  );
   anchor.append(menu);
   document.addEventListener('pointerdown', (e) => {
     const t = e.target as HTMLElement | null;
@@ -95,4 +118,38 @@ function checkbox(text: string, title: string) {
   input.type = 'checkbox';
   label.append(input, text);
   return { label, input };
+}
+
+/** "Card count": the hair cards' count; out-of-range input is put back to the last good value
+ *  and said so. */
+function cardCountField(
+  initial: number,
+  set: (n: number) => void,
+  say: (message: string) => void,
+): HTMLElement {
+  const label = document.createElement('label');
+  label.title = `Hair cards: ${CARD_COUNT_MIN}–${CARD_COUNT_MAX.toLocaleString('en-US')} (default ${DEFAULT_CARD_COUNT.toLocaleString('en-US')}); the Cards view shows the same`;
+  const input = document.createElement('input');
+  input.type = 'number';
+  input.min = String(CARD_COUNT_MIN);
+  input.max = String(CARD_COUNT_MAX);
+  input.step = '100';
+  input.value = String(initial);
+  input.dataset.testid = 'card-count';
+  let good = initial;
+  input.addEventListener('change', () => {
+    const n = input.value.trim() === '' ? Number.NaN : Number(input.value);
+    const problem = cardCountProblem(n);
+    if (problem === null) {
+      good = n;
+      set(n);
+    } else {
+      input.value = String(good);
+      say(
+        `The card count must be a whole number from ${CARD_COUNT_MIN} to ${CARD_COUNT_MAX.toLocaleString('en-US')}; it stays ${good.toLocaleString('en-US')}.`,
+      );
+    }
+  });
+  label.append('Card count ', input);
+  return label;
 }

@@ -5,7 +5,9 @@
 // shared across revisions (a new material would compile its shader again). The head receives the
 // hair's shadow (per-vertex transmittance, headMaterial.ts).
 import * as THREE from 'three';
+import type { GrowthParams } from '../model/growthParams';
 import type { HairLightingArrays, StrandArrays } from '../solver/protocol';
+import { buildCardsObject } from './cardsView';
 import { DeepOpacityMaps } from './deepOpacity';
 import { setHeadHairShadow } from './headMaterial';
 import type { LineAttributes } from './strandAttributes';
@@ -29,7 +31,15 @@ export class HairView {
     strands: StrandArrays;
     lighting: HairLightingArrays | null;
     attributes: LineAttributes | null;
+    /** Converged hair (previews are drawn as strands also in the Cards view). */
+    final: boolean;
   } | null = null;
+  /** The Cards view: the hair drawn as the hair cards export cuts it (null: as strands). */
+  private cards: { count: number; growth: GrowthParams } | null = null;
+  /** What the Cards view shows now (null: strands are shown). */
+  cardsShown: { cards: number; triangles: number; ms: number } | null = null;
+  /** Called after each rebuild of the shown hair with what the Cards view shows (null: strands). */
+  onCards: ((shown: { cards: number; triangles: number; ms: number } | null) => void) | null = null;
   private object: THREE.Mesh | THREE.LineSegments | null = null;
   private dom: DeepOpacityMaps | null = null;
   private domDirty = false;
@@ -56,7 +66,7 @@ export class HairView {
     headShadow = true,
     attributes: LineAttributes | null = null,
   ): void {
-    this.current = { strands, lighting: lighting ?? null, attributes };
+    this.current = { strands, lighting: lighting ?? null, attributes, final: headShadow };
     this.lightingMs = lighting ? lighting.ms : null;
     if (this.head && lighting && headShadow) setHeadHairShadow(this.head, lighting.head);
     const hair = this.build();
@@ -78,6 +88,21 @@ export class HairView {
     this.viewer.requestRender();
   }
 
+  /** The Cards view on (the card count and the session's growth settings, whose seed the export
+   *  uses) or off (null). */
+  setCards(cards: { count: number; growth: GrowthParams } | null): void {
+    const same =
+      cards === this.cards ||
+      (cards &&
+        this.cards &&
+        cards.count === this.cards.count &&
+        cards.growth.seed === this.cards.growth.seed);
+    if (same) return;
+    this.cards = cards;
+    if (this.current) this.viewer.setHair(this.build());
+    this.viewer.requestRender();
+  }
+
   get activeQuality(): ActiveQuality {
     return this.quality;
   }
@@ -86,12 +111,32 @@ export class HairView {
     if (css === this.color) return;
     this.color = css;
     for (const m of [this.lines, this.strips]) if (m) setHairColor(m, css);
+    // the cards' colour is in their atlas
+    if (this.cardsShown && this.current) this.viewer.setHair(this.build());
     this.viewer.invalidateFrameCache(); // a uniform: the cached hair layer cannot see it
   }
 
   private build(): THREE.Object3D {
+    const o = this.buildHair();
+    this.onCards?.(this.cardsShown);
+    return o;
+  }
+
+  private buildHair(): THREE.Object3D {
     const c = this.current;
     if (!c) throw new Error('no hair to build');
+    this.cardsShown = null;
+    if (this.cards && c.final) {
+      const made = buildCardsObject(
+        c.strands,
+        { hairColor: this.color, growth: this.cards.growth },
+        this.cards.count,
+      );
+      this.object = made.object;
+      this.domDirty = false; // the deep opacity maps are the strips'
+      this.cardsShown = { cards: made.cards, triangles: made.triangles, ms: made.ms };
+      return made.object;
+    }
     const { points, strandStart } = c.strands;
     const light = c.lighting?.strand ?? null;
     if (this.quality === 'high') {
