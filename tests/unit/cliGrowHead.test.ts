@@ -103,7 +103,8 @@ async function grow(...args: string[]) {
 }
 
 async function growOk(...args: string[]) {
-  const r = await grow(...args);
+  // no progress lines on stderr however slow the machine (progress has its own test)
+  const r = await grow(...args, '--progress-seconds', '100000');
   expect(r.stderr).toBe('');
   expect(r.code).toBe(0);
   return JSON.parse(r.stdout.trim()) as { strands: number; file: string };
