@@ -75,7 +75,8 @@ if [ "$mode" = test ]; then
     "$venv/bin/python" -c 'import pxr.Usd'
   fi
   # Blender's Python module (bpy, PyPI) imports the .usda export as Blender does
-  # (tests/usd/check_blender.py): a virtual environment of its own (bpy pins its Python and numpy).
+  # (tests/usd/check_blender.py) and exports the glTF heads Open head is tested on
+  # (tests/usd/blender_gltf_head.py): a virtual environment of its own (bpy pins its Python and numpy).
   # The version the tests were written against; its wheels are for CPython 3.11.
   venv=build/bpy-venv
   if ! "$venv/bin/python" -c 'import importlib.util, sys; sys.exit(importlib.util.find_spec("bpy") is None)' >/dev/null 2>&1; then

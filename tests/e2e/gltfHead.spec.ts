@@ -1,10 +1,10 @@
-// glTF heads as Blender writes them open through Open head's real file chooser: a .gltf whose
-// buffers and texture are data: URIs (the page's CSP allows no data: fetch, so they must be
-// decoded in code), and a .gltf picked together with its .bin and texture; a .gltf picked
-// without its .bin is refused in one sentence and changes nothing. Hair grows on each.
+// glTF heads written by Blender's own exporter at test time (tests/support/blenderGltf.ts) open
+// through Open head's real file chooser: a .gltf whose buffers and texture are data: URIs (the
+// page's CSP allows no data: fetch, so they must be decoded in code), and a .gltf picked together
+// with its .bin and texture; the .gltf picked without its .bin is refused in one sentence and
+// changes nothing. Hair grows on each.
 import { expect, type Page, test } from '@playwright/test';
-import { ellipsoidHead } from '../support/generatedHead';
-import { blenderGltf, TINY_PNG } from '../support/gltfHead';
+import { blenderHeads } from '../support/blenderGltf';
 import { settled, watchConsole } from './helpers';
 
 type Files = Parameters<import('@playwright/test').FileChooser['setFiles']>[0];
@@ -22,10 +22,20 @@ test('a .gltf with embedded buffers, and a .gltf with its .bin, open as heads', 
 }) => {
   test.setTimeout(180_000);
   const errors = watchConsole(page);
-  const soup = ellipsoidHead(24);
-  const triangles = soup.indices.length / 3;
+  // Blender exports while the page loads
+  const exporting = blenderHeads();
+  exporting.catch(() => {}); // awaited below; this only keeps an early failure from going unhandled
   await page.goto('/?strands=1500');
   let s = await settled(page);
+  const heads = await exporting;
+  const triangles = heads.triangles;
+  const mime = (name: string) =>
+    name.endsWith('.gltf')
+      ? 'model/gltf+json'
+      : name.endsWith('.png')
+        ? 'image/png'
+        : 'application/octet-stream';
+  const file = (name: string) => ({ name, mimeType: mime(name), buffer: heads.read(name) });
   const more = page.getByRole('button', { name: 'More' });
   const openMenu = async () => {
     if (!(await page.getByRole('button', { name: 'Open head', exact: true }).isVisible()))
@@ -33,27 +43,17 @@ test('a .gltf with embedded buffers, and a .gltf with its .bin, open as heads', 
   };
 
   // without its .bin: one sentence, nothing changed
-  const separate = blenderGltf(soup, 'Pair');
   const before = await page.evaluate(() => window.hairsketch.session());
   await openMenu();
-  await pickHead(page, {
-    name: 'Pair.gltf',
-    mimeType: 'model/gltf+json',
-    buffer: Buffer.from(separate.gltf),
-  });
+  await pickHead(page, file('Head.gltf'));
   const status = page.getByTestId('status');
   await expect(status).toContainText('Could not open the head');
-  expect(await status.textContent()).toMatch(/\(“Pair\.bin”\): pick the \.gltf together with it/);
+  expect(await status.textContent()).toMatch(/\(“Head\.bin”\): pick the \.gltf together with it/);
   expect(await page.evaluate(() => window.hairsketch.session())).toEqual(before);
 
   // embedded: buffers and texture as data: URIs
-  const embedded = blenderGltf(soup, 'Embedded', { embedded: true });
   await openMenu();
-  await pickHead(page, {
-    name: 'Embedded.gltf',
-    mimeType: 'model/gltf+json',
-    buffer: Buffer.from(embedded.gltf),
-  });
+  await pickHead(page, file('Embedded.gltf'));
   await page.waitForFunction(() => {
     const h = window.hairsketch.head();
     return h.name === 'Embedded.gltf' && !h.loading;
@@ -65,18 +65,11 @@ test('a .gltf with embedded buffers, and a .gltf with its .bin, open as heads', 
 
   // the .gltf, its .bin and its texture picked together
   await openMenu();
-  await pickHead(page, [
-    { name: 'Pair.gltf', mimeType: 'model/gltf+json', buffer: Buffer.from(separate.gltf) },
-    ...[...separate.files].map(([name, b]) => ({
-      name,
-      mimeType: 'application/octet-stream',
-      buffer: Buffer.from(b),
-    })),
-    { name: 'skin.png', mimeType: 'image/png', buffer: Buffer.from(TINY_PNG) },
-  ]);
+  expect(heads.files.separate).toEqual(['Head.bin', 'Head.gltf', 'skin.png']);
+  await pickHead(page, heads.files.separate.map(file));
   await page.waitForFunction(() => {
     const h = window.hairsketch.head();
-    return h.name === 'Pair.gltf' && !h.loading;
+    return h.name === 'Head.gltf' && !h.loading;
   });
   expect((await page.evaluate(() => window.hairsketch.head())).triangles).toBe(triangles);
   s = await settled(page, s.revision);

@@ -1,8 +1,9 @@
-// A head written as Blender's glTF exporter writes one ("glTF Separate": Head.gltf + Head.bin +
-// its texture; "glTF Embedded": one .gltf with every buffer and image as a data: URI): metres,
-// Y up, a node with the mesh, POSITION / NORMAL / TEXCOORD_0 and unsigned-short indices, a
-// material with a base-colour texture. Written by hand from the glTF 2.0 specification, for the
-// loader's unit tests and the Playwright tests of Open head.
+// A head in the layout of Blender's glTF exporter ("glTF Separate": Head.gltf + Head.bin + its
+// texture; embedded: one .gltf with the buffer and the image each as a data: URI, as several
+// tools write it, where Blender 5.0 keeps the image inside the buffer): metres, Y up, a node with
+// the mesh, POSITION / NORMAL / TEXCOORD_0 and unsigned-short indices, a material with a
+// base-colour texture. Written by hand from the glTF 2.0 specification, for the loader's unit
+// tests of variants and broken files; tests/support/blenderGltf.ts has Blender write real ones.
 import type { Soup } from './generatedHead';
 
 /** A 1 x 1 PNG (a texture the head does not need, as a real export carries one). */
