@@ -1,0 +1,210 @@
+// A loaded head's own UVs at points on (or near) it: the closest point on the mesh, found through
+// a uniform grid of the triangles' bounding boxes searched in growing rings, and the corner UVs
+// of its triangle interpolated there (barycentric: exact for a UV that is affine on the
+// triangle, and each side of a UV seam keeps its own corners). Plain typed arrays, no three.js:
+// it runs in the export worker and in `hairsketch grow` alike.
+
+/** A triangle mesh with UVs per corner (HeadMesh.cornerUvs: 6 per triangle, v up). */
+export interface UvSurface {
+  positions: Float32Array; // positions[3 * vertex + axis]
+  indices: Uint32Array; // indices[3 * triangle + corner]
+  cornerUvs: Float32Array; // cornerUvs[6 * triangle + 2 * corner + k]
+}
+
+/** A UV in [0, 1] as a texture with repeat wrapping reads it: values in [0, 1] as they are,
+ *  others by their fractional part (a UDIM tile's UV becomes its place in the tile). */
+export function wrapUv(x: number): number {
+  return x >= 0 && x <= 1 ? x : x - Math.floor(x);
+}
+
+/** Closest-point and UV queries on `surface`. */
+export class SurfaceUvLookup {
+  private readonly lo = [0, 0, 0];
+  private readonly dims = [1, 1, 1];
+  private readonly cell: number;
+  /** Triangles of grid cell c: list[first[c] .. first[c + 1]). */
+  private readonly first: Uint32Array;
+  private readonly list: Uint32Array;
+  private readonly w = new Float64Array(3);
+
+  constructor(private readonly s: UvSurface) {
+    const P = s.positions;
+    const I = s.indices;
+    const triangles = I.length / 3;
+    const hi = [-Infinity, -Infinity, -Infinity];
+    this.lo.fill(Infinity);
+    for (let i = 0; i < P.length; i++) {
+      const a = i % 3;
+      if (P[i] < this.lo[a]) this.lo[a] = P[i];
+      if (P[i] > hi[a]) hi[a] = P[i];
+    }
+    if (triangles === 0 || !(hi[0] >= this.lo[0])) this.lo.fill(0);
+    const size = [0, 1, 2].map((a) => Math.max(hi[a] - this.lo[a], 0));
+    // about one triangle a cell over the box (at most 2^21 cells)
+    const volume = Math.max(size[0] * size[1] * size[2], 1e-30);
+    const cells = Math.min(Math.max(triangles, 1), 1 << 21);
+    const longest = Math.max(size[0], size[1], size[2]);
+    this.cell = Math.max(Math.cbrt(volume / cells), longest / 256, 1e-9);
+    for (let a = 0; a < 3; a++)
+      this.dims[a] = Math.min(1024, Math.max(1, Math.ceil(size[a] / this.cell)));
+    const [nx, ny] = this.dims;
+    const total = this.dims[0] * this.dims[1] * this.dims[2];
+    const count = new Uint32Array(total + 1);
+    const box = new Int32Array(6);
+    const visit = (t: number, f: (c: number) => void) => {
+      this.triangleCells(t, box);
+      for (let k = box[2]; k <= box[5]; k++)
+        for (let j = box[1]; j <= box[4]; j++)
+          for (let i = box[0]; i <= box[3]; i++) f(i + nx * (j + ny * k));
+    };
+    for (let t = 0; t < triangles; t++) visit(t, (c) => count[c + 1]++);
+    for (let c = 0; c < total; c++) count[c + 1] += count[c];
+    this.first = count;
+    this.list = new Uint32Array(count[total]);
+    const fill = count.slice(0, total);
+    for (let t = 0; t < triangles; t++)
+      visit(t, (c) => {
+        this.list[fill[c]++] = t;
+      });
+  }
+
+  /** The UV at the point of the surface closest to (x, y, z), wrapped into [0, 1], written to
+   *  out[at], out[at + 1]. */
+  uvAt(x: number, y: number, z: number, out: Float32Array, at: number): void {
+    const t = this.closestTriangle(x, y, z);
+    const U = this.s.cornerUvs;
+    const w = this.w;
+    for (let k = 0; k < 2; k++) {
+      const o = 6 * t + k;
+      out[at + k] = wrapUv(w[0] * U[o] + w[1] * U[o + 2] + w[2] * U[o + 4]);
+    }
+  }
+
+  /** The triangle closest to p, with the barycentric weights of the closest point in this.w
+   *  (ties: the lower triangle index). */
+  closestTriangle(x: number, y: number, z: number): number {
+    const [nx, ny, nz] = this.dims;
+    const ci = this.cellOf(x, 0);
+    const cj = this.cellOf(y, 1);
+    const ck = this.cellOf(z, 2);
+    let best = Infinity;
+    let bestT = -1;
+    const bw = [1, 0, 0];
+    const reach = Math.max(nx, ny, nz);
+    const visit = (c: number) => {
+      for (let e = this.first[c]; e < this.first[c + 1]; e++) {
+        const t = this.list[e];
+        const d = this.distanceTo(t, x, y, z);
+        if (d < best || (d === best && t < bestT)) {
+          best = d;
+          bestT = t;
+          bw[0] = this.w[0];
+          bw[1] = this.w[1];
+          bw[2] = this.w[2];
+        }
+      }
+    };
+    for (let r = 0; r <= reach; r++) {
+      // the cells r steps away (Chebyshev) from p's cell
+      for (let k = Math.max(0, ck - r); k <= Math.min(nz - 1, ck + r); k++)
+        for (let j = Math.max(0, cj - r); j <= Math.min(ny - 1, cj + r); j++) {
+          const row = nx * (j + ny * k);
+          if (Math.abs(k - ck) === r || Math.abs(j - cj) === r) {
+            for (let i = Math.max(0, ci - r); i <= Math.min(nx - 1, ci + r); i++) visit(i + row);
+          } else {
+            if (ci - r >= 0) visit(ci - r + row);
+            if (ci + r < nx) visit(ci + r + row);
+          }
+        }
+      // every triangle in a cell beyond ring r is at least r cells away
+      if (bestT >= 0 && Math.sqrt(best) < r * this.cell) break;
+    }
+    if (bestT < 0) throw new Error('the head has no triangles');
+    this.w[0] = bw[0];
+    this.w[1] = bw[1];
+    this.w[2] = bw[2];
+    return bestT;
+  }
+
+  private cellOf(v: number, a: number): number {
+    const c = Math.floor((v - this.lo[a]) / this.cell);
+    return Math.min(this.dims[a] - 1, Math.max(0, c));
+  }
+
+  /** Cell range of triangle t's bounding box: box = [i0, j0, k0, i1, j1, k1]. */
+  private triangleCells(t: number, box: Int32Array): void {
+    const P = this.s.positions;
+    const I = this.s.indices;
+    for (let a = 0; a < 3; a++) {
+      const p0 = P[3 * I[3 * t] + a];
+      const p1 = P[3 * I[3 * t + 1] + a];
+      const p2 = P[3 * I[3 * t + 2] + a];
+      box[a] = this.cellOf(Math.min(p0, p1, p2), a);
+      box[a + 3] = this.cellOf(Math.max(p0, p1, p2), a);
+    }
+  }
+
+  /** Squared distance from p to triangle t; the closest point's barycentric weights in this.w
+   *  (the region tests of Ericson, Real-Time Collision Detection, 5.1.5). */
+  private distanceTo(t: number, px: number, py: number, pz: number): number {
+    const P = this.s.positions;
+    const I = this.s.indices;
+    const a = 3 * I[3 * t];
+    const b = 3 * I[3 * t + 1];
+    const c = 3 * I[3 * t + 2];
+    const abx = P[b] - P[a];
+    const aby = P[b + 1] - P[a + 1];
+    const abz = P[b + 2] - P[a + 2];
+    const acx = P[c] - P[a];
+    const acy = P[c + 1] - P[a + 1];
+    const acz = P[c + 2] - P[a + 2];
+    const apx = px - P[a];
+    const apy = py - P[a + 1];
+    const apz = pz - P[a + 2];
+    const d1 = abx * apx + aby * apy + abz * apz;
+    const d2 = acx * apx + acy * apy + acz * apz;
+    const w = this.w;
+    const set = (u: number, v: number, s: number) => {
+      w[0] = u;
+      w[1] = v;
+      w[2] = s;
+      const qx = px - (P[a] + v * abx + s * acx);
+      const qy = py - (P[a + 1] + v * aby + s * acy);
+      const qz = pz - (P[a + 2] + v * abz + s * acz);
+      return qx * qx + qy * qy + qz * qz;
+    };
+    if (d1 <= 0 && d2 <= 0) return set(1, 0, 0);
+    const bpx = px - P[b];
+    const bpy = py - P[b + 1];
+    const bpz = pz - P[b + 2];
+    const d3 = abx * bpx + aby * bpy + abz * bpz;
+    const d4 = acx * bpx + acy * bpy + acz * bpz;
+    if (d3 >= 0 && d4 <= d3) return set(0, 1, 0);
+    const vc = d1 * d4 - d3 * d2;
+    if (vc <= 0 && d1 >= 0 && d3 <= 0) {
+      const v = d1 / (d1 - d3);
+      return set(1 - v, v, 0);
+    }
+    const cpx = px - P[c];
+    const cpy = py - P[c + 1];
+    const cpz = pz - P[c + 2];
+    const d5 = abx * cpx + aby * cpy + abz * cpz;
+    const d6 = acx * cpx + acy * cpy + acz * cpz;
+    if (d6 >= 0 && d5 <= d6) return set(0, 0, 1);
+    const vb = d5 * d2 - d1 * d6;
+    if (vb <= 0 && d2 >= 0 && d6 <= 0) {
+      const s = d2 / (d2 - d6);
+      return set(1 - s, 0, s);
+    }
+    const va = d3 * d6 - d5 * d4;
+    if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) {
+      const s = (d4 - d3) / (d4 - d3 + (d5 - d6));
+      return set(0, 1 - s, s);
+    }
+    const den = va + vb + vc;
+    if (!(den > 0)) return set(1, 0, 0); // a degenerate triangle: its first corner
+    const v = vb / den;
+    const s = vc / den;
+    return set(1 - v - s, v, s);
+  }
+}
