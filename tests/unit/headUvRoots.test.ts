@@ -6,7 +6,7 @@
 // The same head as STL (no UVs) gets the projection, and the export says which.
 import { describe, expect, it } from 'vitest';
 import { groomNote } from '../../web/app/exporter';
-import type { UvSurface } from '../../web/export/surfaceUv';
+import { SurfaceUvLookup, type UvSurface } from '../../web/export/surfaceUv';
 import type { GroomSummary } from '../../web/export/usdWriter';
 import { writeExport } from '../../web/export/writeExport';
 import { type LoadedHead, loadHeadFile } from '../../web/head/loadHead';
@@ -34,12 +34,13 @@ function uvOf(side: number, p: number[]): [number, number] {
   return [u, v];
 }
 
-function toObj(withUv: boolean): ArrayBuffer {
+/** As OBJ; `clockwise`: every face wound the other way (the loader turns the head outward). */
+function toObj(withUv: boolean, clockwise = false): ArrayBuffer {
   const lines = ['# a head with its own UVs, metres'];
   for (let i = 0; i < soup.positions.length; i += 3)
     lines.push(`v ${soup.positions[i]} ${soup.positions[i + 1]} ${soup.positions[i + 2]}`);
   for (let t = 0; t < T; t++) {
-    const c = [0, 1, 2].map((k) => soup.indices[3 * t + k]);
+    const c = (clockwise ? [0, 2, 1] : [0, 1, 2]).map((k) => soup.indices[3 * t + k]);
     if (!withUv) {
       lines.push(`f ${c.map((v) => v + 1).join(' ')}`);
       continue;
@@ -253,10 +254,12 @@ function maxUvError(head: LoadedHead, points: number[], uv: number[], seam: numb
 describe("root UVs from a loaded head's own UVs", () => {
   for (const [name, make] of [
     ['uv-head.obj', () => toObj(true)],
+    ['uv-head-clockwise.obj', () => toObj(true, true)],
     ['uv-head.glb', toGlb],
   ] as const) {
     it(`${name}: every root's UV is the head's UV function at the root, across the seam`, async () => {
       const head = await load(name, make());
+      expect(head.flippedParts).toBe(name.includes('clockwise') ? 1 : 0);
       expect(head.mesh.cornerUvs?.length).toBe(6 * (head.mesh.indices.length / 3));
       const strands = rootsOn(head, 3000, 0);
       const out = exportUsd(head, strands, true);
@@ -304,5 +307,67 @@ describe("root UVs from a loaded head's own UVs", () => {
       expect(groomNote(out.groom as GroomSummary)).toContain('projected');
       expect(out.text).not.toMatch(/primvars:st/);
     }
+  });
+});
+
+describe('closest triangle through the grid', () => {
+  it('is the brute-force closest, for points near the surface, inside and far outside', () => {
+    const surface: UvSurface = {
+      positions: soup.positions,
+      indices: soup.indices,
+      cornerUvs: new Float32Array(6 * T),
+    };
+    const lookup = new SurfaceUvLookup(surface);
+    const P = soup.positions;
+    const I = soup.indices;
+    // squared distance to a triangle by dense sampling is too coarse; use the plane, edges and
+    // corners directly: the minimum over the plane foot (when inside) and the three segments
+    const d2 = (t: number, p: number[]) => {
+      const c = [0, 1, 2].map((k) => [...P.subarray(3 * I[3 * t + k], 3 * I[3 * t + k] + 3)]);
+      const sub = (a: number[], b: number[]) => a.map((v, i) => v - b[i]);
+      const dot = (a: number[], b: number[]) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+      const seg = (a: number[], b: number[]) => {
+        const ab = sub(b, a);
+        const t0 = Math.min(1, Math.max(0, dot(sub(p, a), ab) / dot(ab, ab)));
+        const q = a.map((v, i) => v + t0 * ab[i]);
+        return dot(sub(p, q), sub(p, q));
+      };
+      let best = Math.min(seg(c[0], c[1]), seg(c[1], c[2]), seg(c[2], c[0]));
+      const e1 = sub(c[1], c[0]);
+      const e2 = sub(c[2], c[0]);
+      const n = [
+        e1[1] * e2[2] - e1[2] * e2[1],
+        e1[2] * e2[0] - e1[0] * e2[2],
+        e1[0] * e2[1] - e1[1] * e2[0],
+      ];
+      const h = dot(sub(p, c[0]), n) / Math.sqrt(dot(n, n));
+      const nn = n.map((v) => v / Math.sqrt(dot(n, n)));
+      const f = p.map((v, i) => v - h * nn[i]);
+      // inside when the foot is on the inner side of every edge
+      const inside = [0, 1, 2].every((k) => {
+        const a = c[k];
+        const b = c[(k + 1) % 3];
+        const e = sub(b, a);
+        const x = [
+          e[1] * (f[2] - a[2]) - e[2] * (f[1] - a[1]),
+          e[2] * (f[0] - a[0]) - e[0] * (f[2] - a[2]),
+          e[0] * (f[1] - a[1]) - e[1] * (f[0] - a[0]),
+        ];
+        return dot(x, n) >= 0;
+      });
+      if (inside) best = Math.min(best, h * h);
+      return best;
+    };
+    const rand = rng(3);
+    let wrong = 0;
+    for (let q = 0; q < 90; q++) {
+      const scale = q < 30 ? 0.11 : q < 60 ? 0.05 : 0.6; // near, inside, far outside
+      const p = [0, 1, 2].map(() => (2 * rand() - 1) * scale);
+      const t = lookup.closestTriangle(p[0], p[1], p[2]);
+      let best = Infinity;
+      for (let u = 0; u < T; u++) best = Math.min(best, d2(u, p));
+      if (Math.abs(d2(t, p) - best) > 1e-9 * (1 + best)) wrong++;
+    }
+    expect(wrong).toBe(0);
   });
 });
