@@ -87,43 +87,63 @@ export class SurfaceUvLookup {
     const ci = this.cellOf(x, 0);
     const cj = this.cellOf(y, 1);
     const ck = this.cellOf(z, 2);
-    let best = Infinity;
-    let bestT = -1;
-    const bw = [1, 0, 0];
+    // how far p is from the faces of its cell (0 when outside the grid on that side): a
+    // triangle in a cell r + 1 rings out is at least r cells plus that far away
+    const h = this.cell;
+    const lo = this.lo;
+    const margin = Math.max(
+      0,
+      Math.min(
+        x - (lo[0] + ci * h),
+        lo[0] + (ci + 1) * h - x,
+        y - (lo[1] + cj * h),
+        lo[1] + (cj + 1) * h - y,
+        z - (lo[2] + ck * h),
+        lo[2] + (ck + 1) * h - z,
+      ),
+    );
+    this.best = Infinity;
+    this.bestT = -1;
     const reach = Math.max(nx, ny, nz);
-    const visit = (c: number) => {
-      for (let e = this.first[c]; e < this.first[c + 1]; e++) {
-        const t = this.list[e];
-        const d = this.distanceTo(t, x, y, z);
-        if (d < best || (d === best && t < bestT)) {
-          best = d;
-          bestT = t;
-          bw[0] = this.w[0];
-          bw[1] = this.w[1];
-          bw[2] = this.w[2];
-        }
-      }
-    };
     for (let r = 0; r <= reach; r++) {
       // the cells r steps away (Chebyshev) from p's cell
       for (let k = Math.max(0, ck - r); k <= Math.min(nz - 1, ck + r); k++)
         for (let j = Math.max(0, cj - r); j <= Math.min(ny - 1, cj + r); j++) {
           const row = nx * (j + ny * k);
           if (Math.abs(k - ck) === r || Math.abs(j - cj) === r) {
-            for (let i = Math.max(0, ci - r); i <= Math.min(nx - 1, ci + r); i++) visit(i + row);
+            const i1 = Math.min(nx - 1, ci + r);
+            for (let i = Math.max(0, ci - r); i <= i1; i++) this.visit(i + row, x, y, z);
           } else {
-            if (ci - r >= 0) visit(ci - r + row);
-            if (ci + r < nx) visit(ci + r + row);
+            if (ci - r >= 0) this.visit(ci - r + row, x, y, z);
+            if (ci + r < nx) this.visit(ci + r + row, x, y, z);
           }
         }
-      // every triangle in a cell beyond ring r is at least r cells away
-      if (bestT >= 0 && Math.sqrt(best) < r * this.cell) break;
+      if (this.bestT >= 0 && Math.sqrt(this.best) < r * h + margin) break;
     }
-    if (bestT < 0) throw new Error('the head has no triangles');
-    this.w[0] = bw[0];
-    this.w[1] = bw[1];
-    this.w[2] = bw[2];
-    return bestT;
+    if (this.bestT < 0) throw new Error('the head has no triangles');
+    this.w[0] = this.bw[0];
+    this.w[1] = this.bw[1];
+    this.w[2] = this.bw[2];
+    return this.bestT;
+  }
+
+  private best = Infinity;
+  private bestT = -1;
+  private readonly bw = new Float64Array(3);
+
+  private visit(c: number, x: number, y: number, z: number): void {
+    const end = this.first[c + 1];
+    for (let e = this.first[c]; e < end; e++) {
+      const t = this.list[e];
+      const d = this.distanceTo(t, x, y, z);
+      if (d < this.best || (d === this.best && t < this.bestT)) {
+        this.best = d;
+        this.bestT = t;
+        this.bw[0] = this.w[0];
+        this.bw[1] = this.w[1];
+        this.bw[2] = this.w[2];
+      }
+    }
   }
 
   private cellOf(v: number, a: number): number {
@@ -142,6 +162,30 @@ export class SurfaceUvLookup {
       box[a] = this.cellOf(Math.min(p0, p1, p2), a);
       box[a + 3] = this.cellOf(Math.max(p0, p1, p2), a);
     }
+  }
+
+  /** Squared distance from p to the point (u, v, s) of triangle t, the weights kept in this.w. */
+  private settle(
+    t: number,
+    px: number,
+    py: number,
+    pz: number,
+    u: number,
+    v: number,
+    s: number,
+  ): number {
+    const P = this.s.positions;
+    const I = this.s.indices;
+    const a = 3 * I[3 * t];
+    const b = 3 * I[3 * t + 1];
+    const c = 3 * I[3 * t + 2];
+    this.w[0] = u;
+    this.w[1] = v;
+    this.w[2] = s;
+    const qx = px - (u * P[a] + v * P[b] + s * P[c]);
+    const qy = py - (u * P[a + 1] + v * P[b + 1] + s * P[c + 1]);
+    const qz = pz - (u * P[a + 2] + v * P[b + 2] + s * P[c + 2]);
+    return qx * qx + qy * qy + qz * qz;
   }
 
   /** Squared distance from p to triangle t; the closest point's barycentric weights in this.w
@@ -163,48 +207,38 @@ export class SurfaceUvLookup {
     const apz = pz - P[a + 2];
     const d1 = abx * apx + aby * apy + abz * apz;
     const d2 = acx * apx + acy * apy + acz * apz;
-    const w = this.w;
-    const set = (u: number, v: number, s: number) => {
-      w[0] = u;
-      w[1] = v;
-      w[2] = s;
-      const qx = px - (P[a] + v * abx + s * acx);
-      const qy = py - (P[a + 1] + v * aby + s * acy);
-      const qz = pz - (P[a + 2] + v * abz + s * acz);
-      return qx * qx + qy * qy + qz * qz;
-    };
-    if (d1 <= 0 && d2 <= 0) return set(1, 0, 0);
+    if (d1 <= 0 && d2 <= 0) return this.settle(t, px, py, pz, 1, 0, 0);
     const bpx = px - P[b];
     const bpy = py - P[b + 1];
     const bpz = pz - P[b + 2];
     const d3 = abx * bpx + aby * bpy + abz * bpz;
     const d4 = acx * bpx + acy * bpy + acz * bpz;
-    if (d3 >= 0 && d4 <= d3) return set(0, 1, 0);
+    if (d3 >= 0 && d4 <= d3) return this.settle(t, px, py, pz, 0, 1, 0);
     const vc = d1 * d4 - d3 * d2;
     if (vc <= 0 && d1 >= 0 && d3 <= 0) {
       const v = d1 / (d1 - d3);
-      return set(1 - v, v, 0);
+      return this.settle(t, px, py, pz, 1 - v, v, 0);
     }
     const cpx = px - P[c];
     const cpy = py - P[c + 1];
     const cpz = pz - P[c + 2];
     const d5 = abx * cpx + aby * cpy + abz * cpz;
     const d6 = acx * cpx + acy * cpy + acz * cpz;
-    if (d6 >= 0 && d5 <= d6) return set(0, 0, 1);
+    if (d6 >= 0 && d5 <= d6) return this.settle(t, px, py, pz, 0, 0, 1);
     const vb = d5 * d2 - d1 * d6;
     if (vb <= 0 && d2 >= 0 && d6 <= 0) {
       const s = d2 / (d2 - d6);
-      return set(1 - s, 0, s);
+      return this.settle(t, px, py, pz, 1 - s, 0, s);
     }
     const va = d3 * d6 - d5 * d4;
     if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) {
       const s = (d4 - d3) / (d4 - d3 + (d5 - d6));
-      return set(0, 1 - s, s);
+      return this.settle(t, px, py, pz, 0, 1 - s, s);
     }
     const den = va + vb + vc;
-    if (!(den > 0)) return set(1, 0, 0); // a degenerate triangle: its first corner
+    if (!(den > 0)) return this.settle(t, px, py, pz, 1, 0, 0); // a degenerate triangle: its first corner
     const v = vb / den;
     const s = vc / den;
-    return set(1 - v - s, v, s);
+    return this.settle(t, px, py, pz, 1 - v - s, v, s);
   }
 }
