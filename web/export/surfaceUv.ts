@@ -1,5 +1,6 @@
 // A loaded head's own UVs at points on (or near) it: the closest point on the mesh, found through
-// a uniform grid of the triangles' bounding boxes searched in growing rings, and the corner UVs
+// a uniform grid of the triangles' bounding boxes (its occupied cells hashed) searched in growing
+// rings, and the corner UVs
 // of its triangle interpolated there (barycentric: exact for a UV that is affine on the
 // triangle, and each side of a UV seam keeps its own corners). Plain typed arrays, no three.js:
 // it runs in the export worker and in `hairsketch grow` alike.
@@ -22,7 +23,11 @@ export class SurfaceUvLookup {
   private readonly lo = [0, 0, 0];
   private readonly dims = [1, 1, 1];
   private readonly cell: number;
-  /** Triangles of grid cell c: list[first[c] .. first[c + 1]). */
+  /** Occupied cells only (a head is a surface: most of its box is empty), in an open-addressed
+   *  hash: table[slot] = cell id + 1 (0: empty), keys[cell id] = the cell's linear index. */
+  private table: Int32Array;
+  private readonly keys: Float64Array;
+  /** Triangles of cell id c: list[first[c] .. first[c + 1]). */
   private readonly first: Uint32Array;
   private readonly list: Uint32Array;
   private readonly w = new Float64Array(3);
@@ -40,32 +45,130 @@ export class SurfaceUvLookup {
     }
     if (triangles === 0 || !(hi[0] >= this.lo[0])) this.lo.fill(0);
     const size = [0, 1, 2].map((a) => Math.max(hi[a] - this.lo[a], 0));
-    // about one triangle a cell over the box (at most 2^21 cells)
-    const volume = Math.max(size[0] * size[1] * size[2], 1e-30);
-    const cells = Math.min(Math.max(triangles, 1), 1 << 21);
     const longest = Math.max(size[0], size[1], size[2]);
-    this.cell = Math.max(Math.cbrt(volume / cells), longest / 256, 1e-9);
-    for (let a = 0; a < 3; a++)
-      this.dims[a] = Math.min(1024, Math.max(1, Math.ceil(size[a] / this.cell)));
-    const [nx, ny] = this.dims;
-    const total = this.dims[0] * this.dims[1] * this.dims[2];
-    const count = new Uint32Array(total + 1);
+    // cells whose face holds about eight triangles (by the mean area), at most 2048 a side; larger
+    // while the triangles' boxes would cover more than 8 cells a triangle on average
+    let area = 0;
+    for (let t = 0; t < triangles; t++) area += this.triangleArea(t);
+    let cell = Math.max(Math.sqrt((8 * area) / Math.max(triangles, 1)), longest / 2048, 1e-9);
     const box = new Int32Array(6);
-    const visit = (t: number, f: (c: number) => void) => {
+    for (;;) {
+      this.cell = cell;
+      for (let a = 0; a < 3; a++) this.dims[a] = Math.max(1, Math.ceil(size[a] / cell));
+      let pairs = 0;
+      for (let t = 0; t < triangles; t++) {
+        this.triangleCells(t, box);
+        pairs += (box[3] - box[0] + 1) * (box[4] - box[1] + 1) * (box[5] - box[2] + 1);
+      }
+      if (pairs <= 8 * triangles + 65536) break;
+      cell *= 1.5;
+    }
+    const [nx, ny] = this.dims;
+    // at most half full: doubled (and filled again) as cells come
+    this.table = new Int32Array(1 << 12);
+    let keys = new Float64Array(1024);
+    let counts = new Uint32Array(1024);
+    let used = 0;
+    for (let t = 0; t < triangles; t++) {
       this.triangleCells(t, box);
       for (let k = box[2]; k <= box[5]; k++)
         for (let j = box[1]; j <= box[4]; j++)
-          for (let i = box[0]; i <= box[3]; i++) f(i + nx * (j + ny * k));
-    };
-    for (let t = 0; t < triangles; t++) visit(t, (c) => count[c + 1]++);
-    for (let c = 0; c < total; c++) count[c + 1] += count[c];
-    this.first = count;
-    this.list = new Uint32Array(count[total]);
-    const fill = count.slice(0, total);
-    for (let t = 0; t < triangles; t++)
-      visit(t, (c) => {
-        this.list[fill[c]++] = t;
-      });
+          for (let i = box[0]; i <= box[3]; i++) {
+            const key = i + nx * (j + ny * k);
+            let slot = this.slotOf(i, j, k);
+            let id = -1;
+            for (;;) {
+              const e = this.table[slot];
+              if (e === 0) break;
+              if (keys[e - 1] === key) {
+                id = e - 1;
+                break;
+              }
+              slot = (slot + 1) & (this.table.length - 1);
+            }
+            if (id < 0) {
+              if (2 * (used + 1) > this.table.length) {
+                this.rehash(keys, used, 2 * this.table.length);
+                slot = this.slotOf(i, j, k);
+                while (this.table[slot] !== 0) slot = (slot + 1) & (this.table.length - 1);
+              }
+              if (used === keys.length) {
+                const k2 = new Float64Array(2 * used);
+                k2.set(keys);
+                keys = k2;
+                const c2 = new Uint32Array(2 * used);
+                c2.set(counts);
+                counts = c2;
+              }
+              id = used++;
+              keys[id] = key;
+              this.table[slot] = id + 1;
+            }
+            counts[id]++;
+          }
+    }
+    this.keys = keys.slice(0, used);
+    this.first = new Uint32Array(used + 1);
+    for (let c = 0; c < used; c++) this.first[c + 1] = this.first[c] + counts[c];
+    this.list = new Uint32Array(this.first[used]);
+    const fill = this.first.slice(0, used);
+    for (let t = 0; t < triangles; t++) {
+      this.triangleCells(t, box);
+      for (let k = box[2]; k <= box[5]; k++)
+        for (let j = box[1]; j <= box[4]; j++)
+          for (let i = box[0]; i <= box[3]; i++) this.list[fill[this.cellId(i, j, k)]++] = t;
+    }
+  }
+
+  /** A table of `size` slots holding the first `used` cells of `keys`. */
+  private rehash(keys: Float64Array, used: number, size: number): void {
+    const [nx, ny] = this.dims;
+    this.table = new Int32Array(size);
+    for (let c = 0; c < used; c++) {
+      const key = keys[c];
+      const i = key % nx;
+      const j = Math.floor(key / nx) % ny;
+      const k = Math.floor(key / (nx * ny));
+      let slot = this.slotOf(i, j, k);
+      while (this.table[slot] !== 0) slot = (slot + 1) & (size - 1);
+      this.table[slot] = c + 1;
+    }
+  }
+
+  /** The first hash slot of cell (i, j, k). */
+  private slotOf(i: number, j: number, k: number): number {
+    let h = Math.imul(i, 0x9e3779b1) ^ Math.imul(j, 0x85ebca77) ^ Math.imul(k, 0xc2b2ae3d);
+    h ^= h >>> 15;
+    return h & (this.table.length - 1);
+  }
+
+  /** The id of cell (i, j, k), or -1 when no triangle touches it. */
+  private cellId(i: number, j: number, k: number): number {
+    const key = i + this.dims[0] * (j + this.dims[1] * k);
+    const mask = this.table.length - 1;
+    for (let slot = this.slotOf(i, j, k); ; slot = (slot + 1) & mask) {
+      const e = this.table[slot];
+      if (e === 0) return -1;
+      if (this.keys[e - 1] === key) return e - 1;
+    }
+  }
+
+  private triangleArea(t: number): number {
+    const P = this.s.positions;
+    const I = this.s.indices;
+    const a = 3 * I[3 * t];
+    const b = 3 * I[3 * t + 1];
+    const c = 3 * I[3 * t + 2];
+    const ux = P[b] - P[a];
+    const uy = P[b + 1] - P[a + 1];
+    const uz = P[b + 2] - P[a + 2];
+    const vx = P[c] - P[a];
+    const vy = P[c + 1] - P[a + 1];
+    const vz = P[c + 2] - P[a + 2];
+    const nx = uy * vz - uz * vy;
+    const ny = uz * vx - ux * vz;
+    const nz = ux * vy - uy * vx;
+    return 0.5 * Math.sqrt(nx * nx + ny * ny + nz * nz);
   }
 
   /** The UV at the point of the surface closest to (x, y, z), wrapped into [0, 1], written to
@@ -109,13 +212,12 @@ export class SurfaceUvLookup {
       // the cells r steps away (Chebyshev) from p's cell
       for (let k = Math.max(0, ck - r); k <= Math.min(nz - 1, ck + r); k++)
         for (let j = Math.max(0, cj - r); j <= Math.min(ny - 1, cj + r); j++) {
-          const row = nx * (j + ny * k);
           if (Math.abs(k - ck) === r || Math.abs(j - cj) === r) {
             const i1 = Math.min(nx - 1, ci + r);
-            for (let i = Math.max(0, ci - r); i <= i1; i++) this.visit(i + row, x, y, z);
+            for (let i = Math.max(0, ci - r); i <= i1; i++) this.visit(i, j, k, x, y, z);
           } else {
-            if (ci - r >= 0) this.visit(ci - r + row, x, y, z);
-            if (ci + r < nx) this.visit(ci + r + row, x, y, z);
+            if (ci - r >= 0) this.visit(ci - r, j, k, x, y, z);
+            if (ci + r < nx) this.visit(ci + r, j, k, x, y, z);
           }
         }
       if (this.bestT >= 0 && Math.sqrt(this.best) < r * h + margin) break;
@@ -131,7 +233,9 @@ export class SurfaceUvLookup {
   private bestT = -1;
   private readonly bw = new Float64Array(3);
 
-  private visit(c: number, x: number, y: number, z: number): void {
+  private visit(i: number, j: number, k: number, x: number, y: number, z: number): void {
+    const c = this.cellId(i, j, k);
+    if (c < 0) return;
     const end = this.first[c + 1];
     for (let e = this.first[c]; e < end; e++) {
       const t = this.list[e];
