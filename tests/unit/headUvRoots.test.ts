@@ -4,6 +4,10 @@
 // groom_root_uv at each root (read from the file's text) must be that function at the root's
 // position in the file's space (wrapped into [0, 1]); on the seam either side's value will do.
 // The same head as STL (no UVs) gets the projection, and the export says which.
+import { spawnSync } from 'node:child_process';
+import { existsSync, mkdtempSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
 import { describe, expect, it } from 'vitest';
 import { groomNote } from '../../web/app/exporter';
 import { SurfaceUvLookup, type UvSurface } from '../../web/export/surfaceUv';
@@ -251,6 +255,35 @@ function maxUvError(head: LoadedHead, points: number[], uv: number[], seam: numb
   return worst;
 }
 
+const PYTHON = 'build/usd-venv/bin/python';
+
+/** usd-core reads the file: tests/usd/check_usd.py passes (groom primvars, root UVs in
+ *  [0, 1]) and the head's st is a faceVarying texCoord2f with one value per face corner. */
+function readByUsdCore(text: string): void {
+  if (!existsSync(PYTHON))
+    throw new Error(`${PYTHON} is missing: run \`bash scripts/setup.sh test\` before vitest.`);
+  const file = join(mkdtempSync(join(tmpdir(), 'hs-head-uv-')), 'head-uv.usda');
+  writeFileSync(file, text);
+  const box = ['-5', '-5', '-5', '5', '5', '5'];
+  const check = spawnSync(PYTHON, ['tests/usd/check_usd.py', file, '--box', ...box], {
+    encoding: 'utf8',
+  });
+  expect(check.stderr).toMatch(/^check_usd: ok, 3000 curves/);
+  const script = [
+    'import sys, json',
+    'from pxr import Usd, UsdGeom',
+    'stage = Usd.Stage.Open(sys.argv[1])',
+    'm = UsdGeom.Mesh(stage.GetPrimAtPath("/hairsketch/head"))',
+    'pv = UsdGeom.PrimvarsAPI(m).GetPrimvar("st")',
+    'print(json.dumps([pv.GetInterpolation(), str(pv.GetTypeName()), len(pv.Get()), len(m.GetFaceVertexIndicesAttr().Get())]))',
+  ].join('\n');
+  const r = spawnSync(PYTHON, ['-c', script, file], { encoding: 'utf8' });
+  expect(r.stderr).toBe('');
+  const [interpolation, type, values, corners] = JSON.parse(r.stdout.trim());
+  expect([interpolation, type]).toEqual(['faceVarying', 'texCoord2f[]']);
+  expect(values).toBe(corners);
+}
+
 describe("root UVs from a loaded head's own UVs", () => {
   for (const [name, make] of [
     ['uv-head.obj', () => toObj(true)],
@@ -292,6 +325,7 @@ describe("root UVs from a loaded head's own UVs", () => {
         );
       expect(st).not.toBeNull();
       expect(lifted.text).not.toMatch(/primvars:st/);
+      if (name === 'uv-head.obj') readByUsdCore(out.text);
     });
   }
 
