@@ -85,6 +85,8 @@ export class Exporter {
     this.running = worker;
     const name = EXPORT_FILE_NAMES[format];
     const chunks: Uint8Array[] = [];
+    // the USD groom's root UVs read from a loaded head's own UVs
+    const headUv = format === 'usda' ? this.d.headUv?.() : null;
     try {
       const done = await new Promise<Extract<FromExportWorker, { type: 'done' }>>(
         (resolve, reject) => {
@@ -131,7 +133,7 @@ export class Exporter {
             solver: this.d.solver,
             scalp: this.d.scalp(),
             head: withHead ? this.d.head() : null,
-            ...(format === 'usda' && this.d.headUv?.() ? { headUv: this.d.headUv() } : {}),
+            ...(headUv ? { headUv } : {}),
             ...(format === 'cards' && cards !== undefined ? { cards } : {}),
           });
         },
