@@ -2,7 +2,12 @@
 // through Open head's real file chooser: a .gltf whose buffers and texture are data: URIs (the
 // page's CSP allows no data: fetch, so they must be decoded in code), and a .gltf picked together
 // with its .bin and texture; the .gltf picked without its .bin is refused in one sentence and
-// changes nothing. Hair grows on each.
+// changes nothing. Hair grows on each; a USD export on the last takes its roots' UVs from the
+// head's TEXCOORD_0, as `hairsketch grow` does.
+import { execFileSync } from 'node:child_process';
+import { mkdtempSync, readFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
 import { expect, type Page, test } from '@playwright/test';
 import { blenderHeads } from '../support/blenderGltf';
 import { settled, watchConsole } from './helpers';
@@ -74,5 +79,27 @@ test('a .gltf with embedded buffers, and a .gltf with its .bin, open as heads', 
   expect((await page.evaluate(() => window.hairsketch.head())).triangles).toBe(triangles);
   s = await settled(page, s.revision);
   expect(s.strands).toBeGreaterThan(0);
+
+  // USD on this head (it has TEXCOORD_0): the roots' UVs are its own, the status says so, and
+  // `hairsketch grow` on the saved session (which carries the head) writes the same bytes
+  const dir = mkdtempSync(join(tmpdir(), 'hairsketch-gltf-uv-'));
+  const sessionFile = join(dir, 'session.json');
+  const [saved] = await Promise.all([
+    page.waitForEvent('download'),
+    page.getByRole('button', { name: 'Save', exact: true }).click(),
+  ]);
+  await saved.saveAs(sessionFile);
+  await page.getByRole('button', { name: 'Export' }).click();
+  const [usd] = await Promise.all([
+    page.waitForEvent('download'),
+    page.getByRole('menuitem', { name: 'USD (.usda)', exact: true }).click(),
+  ]);
+  const browserUsd = readFileSync(await usd.path());
+  await expect(status).toContainText("root UVs from the head's own UV map");
+  const cliUsd = join(dir, 'cli.usda');
+  execFileSync(process.execPath, ['scripts/hairsketch.mjs', 'grow', sessionFile, '--out', cliUsd], {
+    encoding: 'utf8',
+  });
+  expect(readFileSync(cliUsd).equals(browserUsd), 'browser and CLI bytes differ').toBe(true);
   expect(errors).toEqual([]);
 });

@@ -43,6 +43,12 @@ export function wireExport(d: {
       const m = d.head().mesh;
       return { positions: m.positions, indices: m.indices, normals: m.normals };
     },
+    headUv: () => {
+      const m = d.head().mesh;
+      return m.cornerUvs
+        ? { positions: m.positions, indices: m.indices, cornerUvs: m.cornerUvs }
+        : null;
+    },
     solveSettled: () => bridge.whenIdle(),
     solving: () => bridge.pending,
     progress: (text) => status.task(text),

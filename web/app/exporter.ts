@@ -4,6 +4,7 @@
 
 import type { Editor } from '../editor/editor';
 import type { FromExportWorker } from '../export/exportProtocol';
+import type { UvSurface } from '../export/surfaceUv';
 import { EXPORT_FILE_NAMES, type ExportFormat, type ExportHead } from '../export/types';
 import type { GroomSummary } from '../export/usdWriter';
 import { gridForSession } from '../model/grid';
@@ -16,6 +17,8 @@ export interface ExporterDeps {
   solver: SolverName;
   scalp: () => ScalpMesh;
   head: () => ExportHead;
+  /** The head's own UVs, when it is a loaded head whose file has them. */
+  headUv?: () => UvSurface | null;
   /** A loaded head's bounds for the bounding volume (gridForSession); undefined: built-in. */
   headBounds?: () => Parameters<typeof gridForSession>[2];
   /** Resolves once no solve is pending (at once when idle). */
@@ -82,6 +85,8 @@ export class Exporter {
     this.running = worker;
     const name = EXPORT_FILE_NAMES[format];
     const chunks: Uint8Array[] = [];
+    // the USD groom's root UVs read from a loaded head's own UVs
+    const headUv = format === 'usda' ? this.d.headUv?.() : null;
     try {
       const done = await new Promise<Extract<FromExportWorker, { type: 'done' }>>(
         (resolve, reject) => {
@@ -128,6 +133,7 @@ export class Exporter {
             solver: this.d.solver,
             scalp: this.d.scalp(),
             head: withHead ? this.d.head() : null,
+            ...(headUv ? { headUv } : {}),
             ...(format === 'cards' && cards !== undefined ? { cards } : {}),
           });
         },
@@ -173,7 +179,9 @@ export function groomNote(g: GroomSummary): string {
   const uv =
     g.rootUv === 'builtin-head'
       ? "root UVs from the built-in head's scalp UV layout"
-      : "root UVs from the built-in head's scalp layout projected from the head's centre (this head's own UVs are not read)";
+      : g.rootUv === 'head-uv'
+        ? "root UVs from the head's own UV map"
+        : "root UVs from the built-in head's scalp layout projected from the head's centre (this head's file has no UVs)";
   return `groom of ${g.groups.length} group${g.groups.length === 1 ? '' : 's'} (${g.groups.join(', ')}), ${g.guides.toLocaleString('en-US')} guides, ${uv}`;
 }
 

@@ -334,6 +334,9 @@ export async function runGrow(
       strands: hair.strands,
       session,
       head: exportHead,
+      headUv: mesh.cornerUvs
+        ? { positions: mesh.positions, indices: mesh.indices, cornerUvs: mesh.cornerUvs }
+        : null,
       ...(args.cards !== null ? { cards: args.cards } : {}),
     })) {
       writeAll(fd, chunk);

@@ -3,6 +3,7 @@
 // chunks (transferred), so a 100K-strand export never blocks the page or builds one giant string.
 import type { SessionState } from '../model/session';
 import type { GridSpec, ScalpMesh, SolverErrorKind, SolverName } from '../solver/protocol';
+import type { UvSurface } from './surfaceUv';
 import type { ExportFormat, ExportHead } from './types';
 import type { GroomSummary } from './usdWriter';
 
@@ -15,6 +16,8 @@ export interface ExportRequest {
   scalp: ScalpMesh;
   /** The head mesh to include in the file, or null. */
   head: ExportHead | null;
+  /** A loaded head's own UVs (USD root UVs), when its file has them. */
+  headUv?: UvSurface;
   /** Hair cards: the card count (absent: the default). */
   cards?: number;
 }

@@ -46,6 +46,7 @@ async function run(req: ExportRequest): Promise<void> {
         strands: hair.strands,
         session: req.session,
         head: req.head,
+        headUv: req.headUv ?? null,
         cards: req.cards,
         onGroom: (g) => {
           groom = g;

@@ -15,11 +15,14 @@
 //  - closest guides: the three nearest guide roots of the strand's group, weights ∝ 1 / distance
 //    summing to 1 (a guide's own strand: itself, weight 1); with fewer than three guides in
 //    the group the nearest one is repeated with weight 0.
-//  - root UV: the scalp layout (scalpUv.ts) at the root.
+//  - root UV: on a head with its own UVs (a loaded head whose file has them), those UVs at the
+//    closest point of the head to the root (surfaceUv.ts); otherwise the scalp layout
+//    (scalpUv.ts) at the root: the built-in head's UVs, a projection on a loaded head.
 import type { SessionState, StyleCurve } from '../model/session';
 import type { StrandArrays } from '../solver/protocol';
 import { scalpUvAt } from './scalpUv';
 import { type ExportStrands, strandHash } from './strandsForExport';
+import { SurfaceUvLookup, type UvSurface } from './surfaceUv';
 
 /** The scalp parameterisation's centre: the origin for the built-in head and for loaded heads
  *  (head/loadHead.ts places them so). */
@@ -40,6 +43,8 @@ export interface GroomLayout {
   groupNames: string[];
   /** rootUv[2 * s + k]. */
   rootUv: Float32Array;
+  /** Where rootUv comes from: the head's own UVs, or the scalp layout. */
+  rootUvFrom: 'head-uv' | 'scalp-layout';
   /** The exported strands that are also guides, in increasing order. */
   guides: Uint32Array;
   /** closestGuides[3 * s + k]: the groom_id of a guide (as a float, as Unreal reads it). */
@@ -83,11 +88,13 @@ function parting(curve: Extract<StyleCurve, { type: 'dividing' }>, index: number
   return { curve: index, points: P.map((p) => [...p]), sides, names } satisfies Parting;
 }
 
-/** Builds the layout of `strands` (grown as `source`) for `session`. */
+/** Builds the layout of `strands` (grown as `source`) for `session`; `headUv`: the head with
+ *  its own UVs, when it has them. */
 export function groomLayout(
   strands: ExportStrands,
   source: Pick<StrandArrays, 'rootIds' | 'tailCurves'>,
   session: Pick<SessionState, 'curves' | 'growth'>,
+  headUv: UvSurface | null = null,
 ): GroomLayout {
   const { points, strandStart } = strands;
   const n = strandStart.length - 1;
@@ -283,14 +290,17 @@ export function groomLayout(
   }
 
   const rootUv = new Float32Array(2 * n);
+  const surface = headUv && headUv.indices.length > 0 ? new SurfaceUvLookup(headUv) : null;
   for (let s = 0; s < n; s++)
-    scalpUvAt(rootOf(s, 0), rootOf(s, 1), rootOf(s, 2), HEAD_CENTER, rootUv, 2 * s);
+    if (surface) surface.uvAt(rootOf(s, 0), rootOf(s, 1), rootOf(s, 2), rootUv, 2 * s);
+    else scalpUvAt(rootOf(s, 0), rootOf(s, 1), rootOf(s, 2), HEAD_CENTER, rootUv, 2 * s);
 
   return {
     ids,
     groupOf,
     groupNames,
     rootUv,
+    rootUvFrom: surface ? 'head-uv' : 'scalp-layout',
     guides: Uint32Array.from(guides),
     closestGuides,
     guideWeights,

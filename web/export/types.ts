@@ -3,6 +3,7 @@
 // export worker and in `hairsketch grow` under Node, so the same session gives the same bytes.
 import type { SessionState } from '../model/session';
 import type { StrandArrays } from '../solver/protocol';
+import type { UvSurface } from './surfaceUv';
 import type { GroomSummary } from './usdWriter';
 
 export type ExportFormat = 'usda' | 'hair' | 'obj' | 'glb' | 'cards';
@@ -44,6 +45,10 @@ export interface ExportInput {
   session: SessionState;
   /** The head, or null to leave it out. */
   head: ExportHead | null;
+  /** A loaded head's own UVs (its mesh with HeadMesh.cornerUvs), whether or not the head is
+   *  included: the USD groom's root UVs are read from them. Absent: the built-in head's
+   *  scalp layout (on a loaded head, as a projection). */
+  headUv?: UvSurface | null;
   /** Told what the USD groom holds (groups, guides, where root UVs come from). */
   onGroom?: (groom: GroomSummary) => void;
   /** Hair cards: how many cards to cut the hair into (cardsWriter.ts DEFAULT_CARD_COUNT when

@@ -93,9 +93,9 @@ export interface GroomSummary {
   strands: number;
   guides: number;
   groups: string[];
-  /** Where the root UVs come from: the built-in head's scalp layout, or that layout as a
-   *  projection onto a loaded head (whose own UVs are not read). */
-  rootUv: 'builtin-head' | 'projection';
+  /** Where the root UVs come from: the built-in head's scalp layout, a loaded head's own UV
+   *  map, or (a loaded head without UVs) the scalp layout as a projection onto it. */
+  rootUv: 'builtin-head' | 'head-uv' | 'projection';
 }
 
 /** Indents: a prim's properties, and the lines of a long array. */
@@ -115,22 +115,42 @@ export function* writeUsda(
   const headVerts = head ? head.positions.length / 3 : 0;
   const headTris = head ? head.indices.length / 3 : 0;
   const builtinHead = input.session.head === 'builtin';
-  const groom = groomLayout(strands, input.strands, input.session);
+  // the built-in head's UVs are the scalp layout itself
+  const groom = groomLayout(
+    strands,
+    input.strands,
+    input.session,
+    builtinHead ? null : (input.headUv ?? null),
+  );
   const nGuides = groom.guides.length;
   let guidePoints = 0;
   for (const g of groom.guides) guidePoints += strandStart[g + 1] - strandStart[g];
+  // a loaded head's own UVs on its Mesh (per corner), the map its roots' UVs are read from
+  const headCornerUvs =
+    head && !builtinHead && groom.rootUvFrom === 'head-uv' && input.headUv
+      ? input.headUv.cornerUvs
+      : null;
+  if (headCornerUvs && headCornerUvs.length !== 2 * headTris * 3)
+    throw new Error("the head's UVs do not match its triangles");
   input.onGroom?.({
     strands: nStrands,
     guides: nGuides,
     groups: groom.groupNames,
-    rootUv: builtinHead ? 'builtin-head' : 'projection',
+    rootUv: builtinHead
+      ? 'builtin-head'
+      : groom.rootUvFrom === 'head-uv'
+        ? 'head-uv'
+        : 'projection',
   });
   // Progress in numbers written: per strand 16, per point 7 (strands and guides), the head.
   const total =
     16 * (nStrands + nGuides) +
     7 * (nPoints + guidePoints) +
     (head
-      ? headTris * 4 + headVerts * (head.normals ? 6 : 3) + (builtinHead ? 2 * headVerts : 0)
+      ? headTris * 4 +
+        headVerts * (head.normals ? 6 : 3) +
+        (builtinHead ? 2 * headVerts : 0) +
+        (headCornerUvs ? 6 * headTris : 0)
       : 0) +
     1;
   let done = 0;
@@ -359,6 +379,21 @@ export function* writeUsda(
         yield* out.drain();
       }
       out.write('] (\n            interpolation = "vertex"\n        )\n');
+    } else if (headCornerUvs) {
+      // the file's UVs as they are (unwrapped), one per face corner: seams stay seams
+      out.write('        texCoord2f[] primvars:st = [');
+      for (let t0 = 0; t0 < headTris; t0 += ROWS) {
+        const t1 = Math.min(headTris, t0 + ROWS);
+        const parts: string[] = [];
+        for (let i = 3 * t0; i < 3 * t1; i++)
+          parts.push(
+            `(${formatFloat(headCornerUvs[2 * i])}, ${formatFloat(headCornerUvs[2 * i + 1])})`,
+          );
+        out.write((t0 > 0 ? ', ' : '') + parts.join(', '));
+        tick(6 * (t1 - t0));
+        yield* out.drain();
+      }
+      out.write('] (\n            interpolation = "faceVarying"\n        )\n');
     }
     // A polygonal head: no subdivision (with subdivision the normals would be ignored).
     out.write('        uniform token subdivisionScheme = "none"\n');

@@ -23,6 +23,9 @@ export interface HeadMesh {
   scalp: Uint8Array; // scalp[triangle] = 1 on the hair-bearing region
   parts?: Uint8Array; // parts[vertex]: a HeadPart value (skin, eye, lips), for colouring
   center: Vec3; // origin of the scalp parameterisation (S5.1)
+  /** A loaded head's own texture coordinates, per corner: cornerUvs[6 * triangle + 2 * corner
+   *  + k], v up (OBJ's and USD's convention); absent when its file has none. */
+  cornerUvs?: Float32Array;
   bounds: { min: Vec3; max: Vec3 };
 }
 

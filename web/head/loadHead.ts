@@ -9,7 +9,8 @@
 //    `rotateLoadedHead` turns by quarter turns about x, y or z for files in other conventions;
 //  - position: the cranium (the top 10 cm of the head, scaled with the head's size) sits where
 //    the built-in head's does, so the scalp-parameterisation centre is the origin.
-// Parts are turned outward, normals are area-weighted, the default scalp is the built-in
+// The file's texture coordinates, when it has them, stay with the triangles as corner UVs
+// (HeadMesh.cornerUvs; the USD export's root UVs). Parts are turned outward, normals are area-weighted, the default scalp is the built-in
 // hairline region seen from the centre (outermost triangles only), and the signed distance takes
 // its sign from a ray-voting inside test that tolerates holes and separate parts (meshInside.ts).
 // Nothing here throws at the caller: every failure is a one-line message.
@@ -114,11 +115,12 @@ export function rotateLoadedHead(loaded: LoadedHead, axis: Axis, quarterTurns: n
   const positions = loaded.mesh.positions.slice();
   rotateQuarter(positions, axis, q);
   const indices = loaded.mesh.indices.slice();
+  const cornerUvs = loaded.mesh.cornerUvs?.slice();
   const t0 = performance.now();
   const unitScale = loaded.unit === 'unknown' ? null : 1;
   const { scale } = place(positions, unitScale);
   return finish(
-    { positions, indices },
+    { positions, indices, cornerUvs },
     {
       name: loaded.name,
       format: loaded.format,
@@ -145,9 +147,9 @@ async function load(
   const t0 = performance.now();
   const format = detectFormat(name, bytes);
   const root = await parse(format, bytes, maxTriangles, options.resources);
-  const soup = collectTriangles(root, maxTriangles);
+  const soup = collectTriangles(root, maxTriangles, format === 'gltf' || format === 'glb');
   const t1 = performance.now();
-  const welded = weldByPosition(soup.positions, soup.indices);
+  const welded = weldByPosition(soup.positions, soup.indices, soup.uvs);
   if (welded.indices.length === 0) throw new HeadFileError('its triangles all have zero size');
   const { parts, flipped } = orientPartsOutward(welded);
 
@@ -180,7 +182,7 @@ async function load(
   if (parts > 1) notes.push(`${parts} parts`);
   if (flipped > 0) notes.push(`${flipped} inside-out part${flipped > 1 ? 's' : ''} turned outward`);
   return finish(
-    { positions, indices: welded.indices },
+    { positions, indices: welded.indices, cornerUvs: welded.cornerUvs },
     {
       name,
       format,
@@ -211,6 +213,7 @@ function finish(m: IndexedTriangles, info: Info): LoadedHead {
     scalp: new Uint8Array(indices.length / 3),
     center,
     bounds: ext,
+    ...(m.cornerUvs ? { cornerUvs: m.cornerUvs } : {}),
   };
   let inside: MeshInside | null = null;
   const signed = (x: number, y: number, z: number) =>

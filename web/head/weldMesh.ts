@@ -1,16 +1,25 @@
 // Triangle-soup helpers for loaded heads: weld vertices that share a position (STL and the OBJ
 // loader give one vertex per corner; glTF splits vertices at UV seams) into one indexed mesh,
 // drop triangles that collapse, and turn every connected part outward (positive signed volume).
+// Texture coordinates go per triangle corner (cornerUvs), so welding across a UV seam keeps each
+// side's UVs, and they follow the triangles that are dropped or turned.
 
 /** An indexed triangle mesh: positions[3 * vertex + axis], indices[3 * triangle + corner]. */
 export interface IndexedTriangles {
   positions: Float32Array;
   indices: Uint32Array;
+  /** cornerUvs[6 * triangle + 2 * corner + k]: the file's UV at each corner, when it has UVs. */
+  cornerUvs?: Float32Array;
 }
 
 /** Merge vertices with bit-identical positions (after Float32 rounding; -0 equals 0) and drop
- *  triangles that use one vertex twice. `indices` refers to `positions`' vertices. */
-export function weldByPosition(positions: Float32Array, indices: Uint32Array): IndexedTriangles {
+ *  triangles that use one vertex twice. `indices` refers to `positions`' vertices; `uvs`
+ *  (uvs[2 * vertex + k], optional) become the kept triangles' cornerUvs. */
+export function weldByPosition(
+  positions: Float32Array,
+  indices: Uint32Array,
+  uvs?: Float32Array,
+): IndexedTriangles {
   const sourceVertices = positions.length / 3;
   const bits = new Uint32Array(3);
   const f = new Float32Array(bits.buffer);
@@ -49,22 +58,32 @@ export function weldByPosition(positions: Float32Array, indices: Uint32Array): I
     }
   }
   const kept = new Uint32Array(indices.length);
+  const corners = uvs ? new Float32Array(2 * indices.length) : null;
   let k = 0;
   for (let t = 0; t < indices.length; t += 3) {
     const a = remap[indices[t]];
     const b = remap[indices[t + 1]];
     const c = remap[indices[t + 2]];
     if (a === b || b === c || a === c) continue;
+    if (corners && uvs)
+      for (let j = 0; j < 3; j++) {
+        corners[2 * (k + j)] = uvs[2 * indices[t + j]];
+        corners[2 * (k + j) + 1] = uvs[2 * indices[t + j] + 1];
+      }
     kept[k++] = a;
     kept[k++] = b;
     kept[k++] = c;
   }
-  return { positions: out.slice(0, 3 * count), indices: kept.slice(0, k) };
+  return {
+    positions: out.slice(0, 3 * count),
+    indices: kept.slice(0, k),
+    ...(corners ? { cornerUvs: corners.slice(0, 2 * k) } : {}),
+  };
 }
 
 /** Flip, in place, the triangles of every edge-connected part whose signed volume is negative
- *  (a part modelled inside out, or a whole file with clockwise winding). Returns how many parts
- *  there are and how many were flipped. */
+ *  (a part modelled inside out, or a whole file with clockwise winding), their cornerUvs with
+ *  them. Returns how many parts there are and how many were flipped. */
 export function orientPartsOutward(mesh: IndexedTriangles): { parts: number; flipped: number } {
   const { positions: P, indices: I } = mesh;
   const vertices = P.length / 3;
@@ -130,6 +149,13 @@ export function orientPartsOutward(mesh: IndexedTriangles): { parts: number; fli
       const b = I[3 * t + 1];
       I[3 * t + 1] = I[3 * t + 2];
       I[3 * t + 2] = b;
+      const U = mesh.cornerUvs;
+      if (U)
+        for (let k = 0; k < 2; k++) {
+          const u = U[6 * t + 2 + k];
+          U[6 * t + 2 + k] = U[6 * t + 4 + k];
+          U[6 * t + 4 + k] = u;
+        }
     }
   }
   return { parts, flipped };
