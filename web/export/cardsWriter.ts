@@ -15,18 +15,19 @@ import { clusterStrands, strandFeatures } from './cardClusters';
 import { cardCountProblem, DEFAULT_CARD_COUNT } from './cardCount';
 import { buildCards, type CardGeometry, cardGeometry } from './cardMesh';
 import { BinarySink, type Progress } from './chunkSink';
+import {
+  ARRAY_BUFFER,
+  bounds,
+  ELEMENT_ARRAY_BUFFER,
+  FLOAT,
+  TRIANGLES,
+  UNSIGNED_INT,
+  writeGlbStart,
+} from './glbContainer';
 import { encodePng } from './png';
 import type { ExportStrands } from './strandsForExport';
 import { type ExportInput, METERS_PER_UNIT } from './types';
 
-const GLB_MAGIC = 0x46546c67;
-const CHUNK_JSON = 0x4e4f534a;
-const CHUNK_BIN = 0x004e4942;
-const FLOAT = 5126;
-const UNSIGNED_INT = 5125;
-const ARRAY_BUFFER = 34962;
-const ELEMENT_ARRAY_BUFFER = 34963;
-const TRIANGLES = 4;
 const LINEAR = 9729;
 const LINEAR_MIPMAP_LINEAR = 9987;
 const CLAMP_TO_EDGE = 33071;
@@ -49,17 +50,6 @@ export function makeHairCards(strands: ExportStrands, count: number, seed: numbe
     atlas: drawCardAtlas(strands, cards, clusters),
     cards: cards.count,
   };
-}
-
-function bounds(positions: Float32Array): { min: number[]; max: number[] } {
-  const min = [positions[0], positions[1], positions[2]];
-  const max = [...min];
-  for (let i = 3; i < positions.length; i += 3)
-    for (let c = 0; c < 3; c++) {
-      min[c] = Math.min(min[c], positions[i + c]);
-      max[c] = Math.max(max[c], positions[i + c]);
-    }
-  return { min, max };
 }
 
 export function* writeCardsGlb(
@@ -245,20 +235,10 @@ export function* writeCardsGlb(
     gltf.buffers = [{ byteLength: offset }];
   }
 
-  const jsonBytes = new TextEncoder().encode(JSON.stringify(gltf));
-  const jsonPadded = (jsonBytes.length + 3) & ~3;
-  const total = 12 + 8 + jsonPadded + (offset > 0 ? 8 + offset : 0);
+  // every part is padded to 4 bytes (view()), so the BIN chunk needs no padding of its own
   const out = new BinarySink();
-  out.u32(GLB_MAGIC);
-  out.u32(2);
-  out.u32(total);
-  out.u32(jsonPadded);
-  out.u32(CHUNK_JSON);
-  out.raw(jsonBytes);
-  out.raw(new Uint8Array(jsonPadded - jsonBytes.length).fill(0x20));
+  writeGlbStart(out, gltf, offset);
   if (offset > 0) {
-    out.u32(offset);
-    out.u32(CHUNK_BIN);
     for (const p of parts) {
       out.raw(p);
       yield* out.drain();

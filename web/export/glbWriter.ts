@@ -6,18 +6,19 @@
 // is in asset.extras.hairsketch.session. All lengths are computed first; the BIN chunk is then
 // written in pieces.
 import { BinarySink, type Progress, writeStrandFloats } from './chunkSink';
+import {
+  ARRAY_BUFFER,
+  bounds,
+  ELEMENT_ARRAY_BUFFER,
+  FLOAT,
+  LINES,
+  TRIANGLES,
+  UNSIGNED_INT,
+  writeGlbStart,
+} from './glbContainer';
 import type { ExportStrands } from './strandsForExport';
 import { type ExportInput, METERS_PER_UNIT } from './types';
 
-const GLB_MAGIC = 0x46546c67; // "glTF"
-const CHUNK_JSON = 0x4e4f534a; // "JSON"
-const CHUNK_BIN = 0x004e4942; // "BIN\0"
-const FLOAT = 5126;
-const UNSIGNED_INT = 5125;
-const ARRAY_BUFFER = 34962;
-const ELEMENT_ARRAY_BUFFER = 34963;
-const LINES = 1;
-const TRIANGLES = 4;
 const BATCH = 4096;
 const ROWS = 16384;
 
@@ -35,18 +36,6 @@ interface Accessor {
   type: 'SCALAR' | 'VEC3';
   min?: number[];
   max?: number[];
-}
-
-function bounds(positions: Float32Array): { min: number[]; max: number[] } {
-  const min = [positions[0], positions[1], positions[2]];
-  const max = [...min];
-  for (let i = 3; i < positions.length; i += 3)
-    for (let c = 0; c < 3; c++) {
-      const v = positions[i + c];
-      if (v < min[c]) min[c] = v;
-      if (v > max[c]) max[c] = v;
-    }
-  return { min, max };
 }
 
 export function* writeGlb(
@@ -161,20 +150,9 @@ export function* writeGlb(
     gltf.bufferViews = views;
     gltf.buffers = [{ byteLength: binLength }];
   }
-  const jsonBytes = new TextEncoder().encode(JSON.stringify(gltf));
-  const jsonPadded = (jsonBytes.length + 3) & ~3;
-  const binPadded = (binLength + 3) & ~3;
-  const total = 12 + 8 + jsonPadded + (binLength > 0 ? 8 + binPadded : 0);
-
   const out = new BinarySink();
+  const total = writeGlbStart(out, gltf, binLength);
   const report = () => progress.at(out.bytes / total);
-  out.u32(GLB_MAGIC);
-  out.u32(2);
-  out.u32(total);
-  out.u32(jsonPadded);
-  out.u32(CHUNK_JSON);
-  out.raw(jsonBytes);
-  out.raw(new Uint8Array(jsonPadded - jsonBytes.length).fill(0x20));
   report();
   yield* out.drain();
   if (binLength === 0) {
@@ -182,8 +160,6 @@ export function* writeGlb(
     progress.at(1);
     return;
   }
-  out.u32(binPadded);
-  out.u32(CHUNK_BIN);
 
   if (n > 0) {
     yield* writeStrandFloats(out, strands, 'points', report);
@@ -219,7 +195,7 @@ export function* writeGlb(
       yield* out.drain();
     }
   }
-  out.zeros(binPadded - binLength);
+  out.zeros(((binLength + 3) & ~3) - binLength);
   yield* out.end();
   progress.at(1);
 }
