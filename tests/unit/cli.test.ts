@@ -2,8 +2,9 @@
 import { mkdtempSync, readFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
-import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
+import { beforeEach, describe, expect, it } from 'vitest';
 import { constraintStates, decodeProblem, type Problem } from '../../web/cli/problem';
+import { captureOutput } from './captureOutput';
 import { bundledCli } from './cliBundle';
 
 // The bundled command line (what `npx hairsketch` runs), built from web/cli/.
@@ -93,16 +94,11 @@ describe('hairsketch solve', () => {
   beforeEach(() => {
     out = [];
     err = [];
-    vi.spyOn(process.stdout, 'write').mockImplementation((s) => {
-      out.push(String(s));
-      return true;
-    });
-    vi.spyOn(process.stderr, 'write').mockImplementation((s) => {
-      err.push(String(s));
-      return true;
-    });
   });
-  afterEach(() => vi.restoreAllMocks());
+  captureOutput(
+    (s) => out.push(s),
+    (s) => err.push(s),
+  );
 
   // Exact factorisation: rounding only. Iterative paths: their stopping bound (1e-6 or tighter).
   const tolerance: Record<string, number> = { cg: 1e-6, exact: 1e-10, fast: 1e-6, auto: 1e-6 };

@@ -13,10 +13,11 @@ import {
 } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join, resolve } from 'node:path';
-import { afterEach, beforeAll, beforeEach, describe, expect, it, vi } from 'vitest';
+import { beforeAll, beforeEach, describe, expect, it } from 'vitest';
 import { presetSession } from '../../web/cli/presetSession';
 import { Head } from '../../web/head/head';
 import { encodeSessionLink } from '../../web/model/sessionLink';
+import { captureOutput } from './captureOutput';
 import { bundledCli } from './cliBundle';
 
 // The bundled command line (what `npx hairsketch` runs), built from web/cli/.
@@ -41,16 +42,11 @@ beforeAll(() => {
 beforeEach(() => {
   out = [];
   err = [];
-  vi.spyOn(process.stdout, 'write').mockImplementation((s) => {
-    out.push(String(s));
-    return true;
-  });
-  vi.spyOn(process.stderr, 'write').mockImplementation((s) => {
-    err.push(String(s));
-    return true;
-  });
 });
-afterEach(() => vi.restoreAllMocks());
+captureOutput(
+  (s) => out.push(s),
+  (s) => err.push(s),
+);
 
 /** A fresh directory holding only what the test puts there. */
 function freshDir(): string {

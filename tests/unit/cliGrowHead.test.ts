@@ -8,7 +8,7 @@ import { createHash } from 'node:crypto';
 import { existsSync, mkdtempSync, readdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
-import { afterEach, beforeAll, beforeEach, describe, expect, it, vi } from 'vitest';
+import { beforeAll, describe, expect, it } from 'vitest';
 import { loadHeadUnderNode } from '../../web/cli/headFile';
 import { presetSession } from '../../web/cli/presetSession';
 import { Head } from '../../web/head/head';
@@ -16,6 +16,7 @@ import { type LoadedHead, loadHeadFile } from '../../web/head/loadHead';
 import type { HeadRef, SessionState } from '../../web/model/session';
 import { writeSessionFile } from '../../web/model/sessionFile';
 import type { Vec3 } from '../../web/model/vec3';
+import { captureOutput } from './captureOutput';
 import { bundledCli } from './cliBundle';
 
 // The bundled command line (what `npx hairsketch` runs), built from web/cli/.
@@ -83,17 +84,10 @@ beforeAll(async () => {
   };
 });
 
-beforeEach(() => {
-  vi.spyOn(process.stdout, 'write').mockImplementation((s) => {
-    out.push(String(s));
-    return true;
-  });
-  vi.spyOn(process.stderr, 'write').mockImplementation((s) => {
-    err.push(String(s));
-    return true;
-  });
-});
-afterEach(() => vi.restoreAllMocks());
+captureOutput(
+  (s) => out.push(s),
+  (s) => err.push(s),
+);
 
 async function grow(...args: string[]) {
   out = [];

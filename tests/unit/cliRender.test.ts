@@ -6,12 +6,13 @@ import { createHash } from 'node:crypto';
 import { existsSync, mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
-import { afterEach, beforeAll, beforeEach, describe, expect, it, vi } from 'vitest';
+import { beforeAll, beforeEach, describe, expect, it } from 'vitest';
 import { presetSession } from '../../web/cli/presetSession';
 import { Head } from '../../web/head/head';
 import { writeSessionFile } from '../../web/model/sessionFile';
 import { encodeSessionLink } from '../../web/model/sessionLink';
 import { ellipsoidHead, toObj } from '../support/generatedHead';
+import { captureOutput } from './captureOutput';
 import { bundledCli } from './cliBundle';
 import { readPng } from './pngPixels';
 
@@ -51,16 +52,11 @@ beforeAll(async () => {
 beforeEach(() => {
   out = [];
   err = [];
-  vi.spyOn(process.stdout, 'write').mockImplementation((s) => {
-    out.push(String(s));
-    return true;
-  });
-  vi.spyOn(process.stderr, 'write').mockImplementation((s) => {
-    err.push(String(s));
-    return true;
-  });
 });
-afterEach(() => vi.restoreAllMocks());
+captureOutput(
+  (s) => out.push(s),
+  (s) => err.push(s),
+);
 
 describe('hairsketch render', () => {
   it('refuses bad arguments in one line, writing nothing', async () => {
