@@ -85,7 +85,9 @@ export function startApp(): void {
     camera: () => viewer.cameraState(),
     redraw: () => viewer.invalidateFrameCache(),
     error: (m) => status.error(m),
-    changed: () => showReferencePanel(),
+    task: (m) => status.task(m),
+    taskDone: (m, failed) => status.taskDone(m, failed),
+    changed: () => referencePanel?.show(references.panelState()),
   });
 
   const grid = gridForPreset(opts.grid);
@@ -188,16 +190,7 @@ export function startApp(): void {
         (o) => o.kind === 'failed' && status.note(o.message),
       ),
     openHeadFiles: (files) => heads.openHeadFiles(editor, files),
-    openReferenceFile: (f) => {
-      status.task(`Opening the picture ${f.name}…`);
-      void f
-        .arrayBuffer()
-        .then((bytes) => references.openFile(editor, f.name, bytes))
-        .then(
-          (m) => status.taskDone(m, m.startsWith('Could not')),
-          (e) => status.taskDone(`Could not open the picture: ${String(e)}.`, true),
-        );
-    },
+    openReferenceFile: (f) => references.openPickedFile(editor, f),
   });
   help = buildHelpOverlay(document.body, actions);
   exporting = wireExport({
@@ -245,32 +238,13 @@ export function startApp(): void {
     fitPlane: () => heads.fitPlane(editor),
     say: (m) => status.note(m),
   });
-  referencePanel = buildReferencePanel(byId('stage'), {
-    open: () => toolbar.openReferenceDialog(),
-    select: (hash) => {
-      references.selected = hash;
-      showReferencePanel();
-    },
-    placeForView: () => references.placeForView(editor),
-    setHidden: (hidden) =>
-      references.update(
-        editor,
-        { hidden: hidden || undefined },
-        hidden ? 'Hid the picture' : 'Showed the picture',
-      ),
-    remove: () => references.remove(editor),
-    patch: (patch, what) => references.update(editor, patch, what),
-    say: (m) => status.note(m),
-  });
-  function showReferencePanel(): void {
-    referencePanel?.show({
-      pictures: references.pictures,
-      selected: references.selected,
-      missing: references.missing.map((r) => r.hash),
-      shown: references.shown,
-      busy: references.busy,
-    });
-  }
+  referencePanel = buildReferencePanel(
+    byId('stage'),
+    references.panelEvents(editor, {
+      open: () => toolbar.openReferenceDialog(),
+      say: (m) => status.note(m),
+    }),
+  );
   function showHeadPanel(): void {
     headPanel?.show({
       session: editor.session,

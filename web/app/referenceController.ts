@@ -20,6 +20,7 @@ import type { Vec3 } from '../model/vec3';
 import { decodePicture } from '../reference/decodePicture';
 import { checkPictureFile } from '../reference/pictureFile';
 import type { PictureStore } from '../reference/pictureStore';
+import type { ReferencePanelEvents, ReferencePanelState } from '../ui/referencePanel';
 import type { ReferencePlanes } from '../viewer/referencePlanes';
 
 export interface ReferenceControllerDeps {
@@ -30,6 +31,9 @@ export interface ReferenceControllerDeps {
   /** The view must be drawn again (the cached head layer included). */
   redraw(): void;
   error(message: string): void;
+  /** A long task starts / ends on the status line (failed: said as an error). */
+  task(message: string): void;
+  taskDone(message: string, failed: boolean): void;
   /** The pictures or their state changed (the panel shows them). */
   changed(): void;
 }
@@ -110,6 +114,53 @@ export class ReferenceController {
     this.d.planes.show(this.refs, this.images);
     this.d.redraw();
     this.d.changed();
+  }
+
+  /** What the panel shows. */
+  panelState(): ReferencePanelState {
+    return {
+      pictures: this.pictures,
+      selected: this.selected,
+      missing: this.missing.map((r) => r.hash),
+      shown: this.shown,
+      busy: this.busy,
+    };
+  }
+
+  /** The panel's buttons and fields, acting on `editor`'s session. */
+  panelEvents(
+    editor: Editor,
+    ui: Pick<ReferencePanelEvents, 'open' | 'say'>,
+  ): ReferencePanelEvents {
+    return {
+      ...ui,
+      select: (hash) => {
+        this.selected = hash;
+        this.d.changed();
+      },
+      placeForView: () => this.placeForView(editor),
+      setHidden: (hidden) =>
+        this.update(
+          editor,
+          { hidden: hidden || undefined },
+          hidden ? 'Hid the picture' : 'Showed the picture',
+        ),
+      remove: () => this.remove(editor),
+      patch: (patch, what) => this.update(editor, patch, what),
+    };
+  }
+
+  /** The file picked with "Reference image", opened (openFile) with its progress and outcome on
+   *  the status line. */
+  openPickedFile(editor: Editor, file: File): void {
+    this.d.task(`Opening the picture ${file.name}…`);
+    void file
+      .arrayBuffer()
+      .then((bytes) => this.openFile(editor, file.name, bytes))
+      .then(
+        (m) => this.d.taskDone(m, m.startsWith('Could not')),
+        (e) => this.d.taskDone(`Could not open the picture: ${String(e)}.`, true),
+      );
   }
 
   /** "Reference image": checks the file, keeps it and places it for the camera's nearest view
