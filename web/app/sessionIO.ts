@@ -303,24 +303,30 @@ export class LinkWriter {
   }
 
   /** "Share link": the link, copied to the clipboard when allowed; the sentence to show. */
-  async share(): Promise<string> {
-    let href: string;
-    try {
-      href = await this.write();
-    } catch {
-      return 'This browser cannot make session links (no CompressionStream); use Save.';
-    }
-    try {
-      await navigator.clipboard.writeText(href);
-      return `Link copied (${Math.round(href.length / 1024)} KB).`;
-    } catch {
-      return 'The link is in the address bar (the clipboard is not available here).';
-    }
+  share(): Promise<string> {
+    return this.copy(
+      (href) => href,
+      (href) => `Link copied (${Math.round(href.length / 1024)} KB).`,
+      'The link is in the address bar (the clipboard is not available here).',
+    );
   }
 
   /** "Copy embed code": the <iframe> snippet for this session, copied to the clipboard; the
    *  sentence to show. */
-  async copyEmbed(): Promise<string> {
+  copyEmbed(): Promise<string> {
+    return this.copy(
+      embedCode,
+      () => 'Embed code copied: paste the <iframe> into a page to show this hairstyle there.',
+      'The clipboard is not available here: the embed is embed.html with the address bar’s #s= link.',
+    );
+  }
+
+  /** Writes the link, then copies `text(link)` to the clipboard; the sentence to show. */
+  private async copy(
+    text: (href: string) => string,
+    copied: (href: string) => string,
+    noClipboard: string,
+  ): Promise<string> {
     let href: string;
     try {
       href = await this.write();
@@ -328,10 +334,10 @@ export class LinkWriter {
       return 'This browser cannot make session links (no CompressionStream); use Save.';
     }
     try {
-      await navigator.clipboard.writeText(embedCode(href));
-      return 'Embed code copied: paste the <iframe> into a page to show this hairstyle there.';
+      await navigator.clipboard.writeText(text(href));
+      return copied(href);
     } catch {
-      return 'The clipboard is not available here: the embed is embed.html with the address bar’s #s= link.';
+      return noClipboard;
     }
   }
 }

@@ -90,23 +90,34 @@ export async function readSessionFile(data: unknown): Promise<Parsed<SessionFile
     };
   if (inflated === 'damaged')
     return { ok: false, error: `${at}.data: does not inflate (damaged deflate data)` };
-  const hash = await sha256Hex(inflated);
-  if (hash !== embedded.hash)
-    return {
-      ok: false,
-      error: `${at}.hash: does not match the data (the SHA-256 of the data is ${hash}): the file is damaged`,
-    };
-  const bytes =
-    inflated.byteOffset === 0 && inflated.byteLength === inflated.buffer.byteLength
-      ? (inflated.buffer as ArrayBuffer)
-      : (inflated.slice().buffer as ArrayBuffer);
+  const bytes = await hashChecked(inflated, embedded.hash, at);
+  if (!bytes.ok) return bytes;
   return {
     ok: true,
     value: {
       session: value,
-      headFile: { name: embedded.name, hash: embedded.hash, bytes },
+      headFile: { name: embedded.name, hash: embedded.hash, bytes: bytes.value },
       ...withPictures,
     },
+  };
+}
+
+/** An embedded file's bytes as an ArrayBuffer of their own, if their SHA-256 is `hash`. */
+async function hashChecked(
+  bytes: Uint8Array,
+  hash: string,
+  at: string,
+): Promise<Parsed<ArrayBuffer>> {
+  const actual = await sha256Hex(bytes);
+  if (actual !== hash)
+    return {
+      ok: false,
+      error: `${at}.hash: does not match the data (the SHA-256 of the data is ${actual}): the file is damaged`,
+    };
+  const whole = bytes.byteOffset === 0 && bytes.byteLength === bytes.buffer.byteLength;
+  return {
+    ok: true,
+    value: (whole ? bytes.buffer : bytes.slice().buffer) as ArrayBuffer,
   };
 }
 
@@ -122,17 +133,9 @@ async function pictureBytes(
       ok: false,
       error: `${at}.data: is more than ${L.maxPictureFileBytes / (1 << 20)} MiB (the cap)`,
     };
-  const hash = await sha256Hex(bytes);
-  if (hash !== p.hash)
-    return {
-      ok: false,
-      error: `${at}.hash: does not match the data (the SHA-256 of the data is ${hash}): the file is damaged`,
-    };
-  const buffer =
-    bytes.byteOffset === 0 && bytes.byteLength === bytes.buffer.byteLength
-      ? (bytes.buffer as ArrayBuffer)
-      : (bytes.slice().buffer as ArrayBuffer);
-  return { ok: true, value: { name: p.name, hash, bytes: buffer } };
+  const buffer = await hashChecked(bytes, p.hash, at);
+  if (!buffer.ok) return buffer;
+  return { ok: true, value: { name: p.name, hash: p.hash, bytes: buffer.value } };
 }
 
 /** The pictureFiles records' fields, each naming a picture of the session once ([] when
