@@ -4,8 +4,11 @@
 #   hairsolver-mt.{mjs,wasm,worker.js}      threaded: -pthread, shared memory, a pthread pool of
 #                                           Module.hsPoolSize workers (the loader sets it); only
 #                                           for cross-origin isolated pages (SharedArrayBuffer)
-# Both are built at once (in parallel). Skips the build when every input is older than every
-# output (FORCE=1 rebuilds anyway).
+# Each source file is compiled to an object of its own (build/wasm/{st,mt}/), with the Eigen and
+# standard headers parsed once per variant into a precompiled header (wasm-build/pch.hpp; the
+# code emitted is the same without it), on every core at once (JOBS overrides), and only when it
+# or a header changed; then both modules are linked. Skips everything when every input is older
+# than every output (FORCE=1 rebuilds everything anyway).
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/.." && pwd)"
@@ -31,7 +34,7 @@ fi
 mkdir -p "$out"
 cp "$here/hairsolver.d.mts" "$out/hairsolver.d.mts"
 
-inputs=("$root"/solver-cpp/src/*.cpp "$root"/solver-cpp/src/*.hpp "$here/binding.cpp" "$here/build.sh")
+inputs=("$root"/solver-cpp/src/*.cpp "$root"/solver-cpp/src/*.hpp "$here/binding.cpp" "$here/pch.hpp" "$here/build.sh")
 have=1
 for o in "${outputs[@]}"; do [ -f "$o" ] || have=0; done
 if [ "${FORCE:-0}" != 1 ] && [ "$have" = 1 ]; then
@@ -58,32 +61,82 @@ done
 
 echo "wasm-build: emcc $(emcc --version | head -1 | grep -o '[0-9]\+\.[0-9]\+\.[0-9]\+' | head -1) -> $mjs, $mtMjs"
 start=$(date +%s)
-# ENVIRONMENT=web,worker: the loader then never touches node's require (emcc 3.1.6 + EXPORT_ES6
-# breaks there); under Node the caller passes wasmBinary and the loader does not fetch (and, for
-# the threaded module, a Worker over node:worker_threads: web/solver/nodeWorkerShim.ts).
-common=(-std=c++17 -O3 -msimd128 -DNDEBUG -DEIGEN_NO_DEBUG -fno-exceptions
-  -I"$root/solver-cpp/src" -I"$eigen"
-  "$root"/solver-cpp/src/*.cpp "$here/binding.cpp"
+objs="$root/build/wasm"
+if [ "${FORCE:-0}" = 1 ]; then rm -rf "$objs"; fi
+sources=("$root"/solver-cpp/src/*.cpp "$here/binding.cpp")
+cflags=(-std=c++17 -O3 -msimd128 -DNDEBUG -DEIGEN_NO_DEBUG -fno-exceptions
+  -I"$root/solver-cpp/src" -I"$eigen")
+# Every object depends on every header, the precompiled header's list and this script.
+common_inputs=("$root"/solver-cpp/src/*.hpp "$here/pch.hpp" "$here/build.sh")
+newer_than() {  # file inputs...: whether any input is newer than file (or file is missing)
+  local f="$1" i
+  shift
+  [ -f "$f" ] || return 0
+  for i in "$@"; do [ "$i" -nt "$f" ] && return 0; done
+  return 1
+}
+variant_flags() {  # st|mt
+  if [ "$1" = mt ]; then echo -pthread; fi
+}
+export -f variant_flags
+# 1. the precompiled header of each variant (its flags must be the objects' own)
+for v in st mt; do
+  mkdir -p "$objs/$v"
+  pch="$objs/$v/pch.hpp.pch"
+  if newer_than "$pch" "${common_inputs[@]}"; then
+    # shellcheck disable=SC2046
+    em++ "${cflags[@]}" $(variant_flags "$v") -x c++-header "$here/pch.hpp" -o "$pch" &
+  fi
+done
+status=0
+for job in $(jobs -p); do wait "$job" || status=$?; done
+if [ "$status" != 0 ]; then
+  echo "wasm-build: emcc failed on the precompiled header ($status)" >&2
+  exit "$status"
+fi
+# 2. the objects that are missing or older than their source or a common input, on JOBS cores
+todo=()
+for v in st mt; do
+  for src in "${sources[@]}"; do
+    o="$objs/$v/$(basename "$src").o"
+    if newer_than "$o" "$src" "${common_inputs[@]}" "$objs/$v/pch.hpp.pch"; then todo+=("$v" "$src" "$o"); fi
+  done
+done
+if [ ${#todo[@]} -gt 0 ]; then
+  printf '%s\0' "${todo[@]}" |
+    xargs -0 -n 3 -P "${JOBS:-$(nproc)}" bash -c \
+      'v=${*: -3:1} src=${*: -2:1} o=${*: -1}
+       em++ "${@:1:$#-3}" $(variant_flags "$v") -include-pch "$(dirname "$o")/pch.hpp.pch" -c "$src" -o "$o" ||
+         { echo "wasm-build: emcc failed on $src ($v)" >&2; exit 255; }' _ "${cflags[@]}" ||
+    { echo "wasm-build: compiling failed" >&2; exit 1; }
+fi
+# 3. link. ENVIRONMENT=web,worker: the loader then never touches node's require (emcc 3.1.6 +
+# EXPORT_ES6 breaks there); under Node the caller passes wasmBinary and the loader does not
+# fetch (and, for the threaded module, a Worker over node:worker_threads: web/solver/nodeWorkerShim.ts).
+objects() { for src in "${sources[@]}"; do echo "$objs/$1/$(basename "$src").o"; done; }
+link=(-O3 -msimd128
   -sMODULARIZE=1 -sEXPORT_ES6=1 -sEXPORT_NAME=createHairSolver
   -sENVIRONMENT=web,worker
   -sALLOW_MEMORY_GROWTH=1 -sINITIAL_MEMORY=33554432 -sMAXIMUM_MEMORY=2GB
   -sEXPORTED_FUNCTIONS="$exports"
   -sEXPORTED_RUNTIME_METHODS=UTF8ToString
   -sFILESYSTEM=0 -sASSERTIONS=0)
-emcc "${common[@]}" -o "$mjs" &
+mapfile -t stObjects < <(objects st)
+mapfile -t mtObjects < <(objects mt)
+em++ "${link[@]}" "${stObjects[@]}" -o "$mjs" &
 single=$!
 # Threaded: the pool is created with the module (PTHREAD_POOL_SIZE evaluated at load time), so
 # std::thread never waits for a worker to start (that needs the event loop the caller blocks).
 # Growth of shared memory is allowed; JS reads the heap through views refreshed on growth
 # (wasmEngine.ts). -Wno-pthreads-mem-growth: the warning is about JS heap access, see there.
-emcc "${common[@]}" -pthread -sPTHREAD_POOL_SIZE='Module.hsPoolSize||1' \
+em++ "${link[@]}" "${mtObjects[@]}" -pthread -sPTHREAD_POOL_SIZE='Module.hsPoolSize||1' \
   -Wno-pthreads-mem-growth -o "$mtMjs" &
 threaded=$!
 status=0
 wait "$single" || status=$?
 wait "$threaded" || status=$?
 if [ "$status" != 0 ]; then
-  echo "wasm-build: emcc failed ($status)" >&2
+  echo "wasm-build: linking failed ($status)" >&2
   exit "$status"
 fi
 touch "${outputs[@]}"
