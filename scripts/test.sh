@@ -2,10 +2,11 @@
 # npm test: set up what is missing, then format + lint + types, native build and tests, wasm
 # build, unit tests (with the real wasm under Node, and the bundled command line) and browser
 # tests against Debian's Chromium.
-# After set-up two lanes run at once, since neither keeps both cores busy all the time: the app
-# lane builds the wasm module, checks types, builds the app and the CLI and runs the browser
-# tests; the checks lane runs format and lint, the native build and tests, and then (once the app
-# lane has built the wasm module and the CLI bundle) the unit tests.
+# After the Debian packages two lanes run at once, since neither keeps both cores busy all the
+# time: the app lane builds the wasm module (while npm's packages install), checks types, builds
+# the app and the CLI and runs the browser tests; the checks lane installs npm's and Python's
+# packages, runs format and lint, the native build and tests, and then (once the app lane has
+# built the wasm module and the CLI bundle) the unit tests.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -63,12 +64,13 @@ timing_table() {
 }
 trap 'status=$?; timing_table; if [ "$status" != 0 ]; then echo "npm test: failed"; fi' EXIT
 
-setup() {
-  bash scripts/setup.sh test
+packages() {
+  bash scripts/setup.sh test packages
   # Pixar's USD reader for tests/unit/usdExport.test.ts (tests/usd/check_usd.py), made by setup
   build/usd-venv/bin/python -c 'from pxr import Usd; print("usd-core", ".".join(map(str, Usd.GetVersion())))'
   # and Blender's, bpy (tests/usd/check_blender.py)
   build/bpy-venv/bin/python -c 'import bpy; print("bpy", bpy.app.version_string)'
+  echo ok > "$installed"
 }
 format_lint() {
   local cxx
@@ -86,9 +88,20 @@ web_build() {
 }
 logs=build/test-logs
 built="$logs/app-built"  # the app lane writes ok or failed here once its builds are done
+installed="$logs/packages-installed"  # the checks lane writes ok here once npm's packages are in
+wait_for_packages() {
+  until [ -s "$installed" ]; do
+    if [ -s "$logs/packages-failed" ]; then
+      echo "not run: the npm and Python packages could not be installed" >&2
+      return 1
+    fi
+    sleep 1
+  done
+}
 lane_app() {
   local rc=0
   phase "wasm build" bash wasm-build/build.sh || rc=$?
+  [ "$rc" = 0 ] && { wait_for_packages || rc=$?; }
   [ "$rc" = 0 ] && { phase "types (tsc; needs the wasm module's declarations)" npx tsc --noEmit -p tsconfig.json || rc=$?; }
   [ "$rc" = 0 ] && { phase "web build (app, CLI bundle)" web_build || rc=$?; }
   if [ "$rc" = 0 ]; then echo ok > "$built"; else echo failed > "$built"; return "$rc"; fi
@@ -103,6 +116,7 @@ unit_tests() {
   npx vitest run
 }
 lane_checks() {
+  phase "setup: npm and Python packages" packages || { echo failed > "$logs/packages-failed"; return 1; }
   phase "format and lint" format_lint
   phase "native build" native_build
   phase "native tests (ctest)" ctest --test-dir build/native --output-on-failure -j2
@@ -111,7 +125,7 @@ lane_checks() {
 lanes() {  # runs both lanes at once; prints each lane's output whole, when it is done
   local a b ra=0 rb=0
   mkdir -p "$logs"
-  rm -f "$built"
+  rm -f "$built" "$installed" "$logs/packages-failed"
   lane_app > "$logs/app.log" 2>&1 &
   a=$!
   lane_checks > "$logs/checks.log" 2>&1 &
@@ -123,7 +137,7 @@ lanes() {  # runs both lanes at once; prints each lane's output whole, when it i
   [ "$ra" = 0 ] && [ "$rb" = 0 ]
 }
 
-phase setup setup
+phase "setup: Debian packages" bash scripts/setup.sh test system
 lanes
 
 trap - EXIT
