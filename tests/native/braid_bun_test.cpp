@@ -18,6 +18,9 @@
 #include "gathered_tail.hpp"
 #include "hand_strands.hpp"
 
+// Each test file is a namespace of its own: the build compiles several files as one (unity).
+namespace braid_bun_test {
+
 using namespace hairsketch;
 
 namespace {
@@ -246,3 +249,5 @@ TEST(BraidBun, ParameterLimits) {
       EXPECT_FALSE(parseBunParams(p, kBunParamCount, un).ok()) << i << " " << bad;
     }
 }
+
+}  // namespace braid_bun_test

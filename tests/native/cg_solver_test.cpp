@@ -10,6 +10,9 @@
 #include "field_system.hpp"
 #include "rng.hpp"
 
+// Each test file is a namespace of its own: the build compiles several files as one (unity).
+namespace cg_solver_test {
+
 using namespace hairsketch;
 
 namespace {
@@ -169,3 +172,5 @@ TEST(CgSolver, FactoryMakesCg) {
   EXPECT_EQ(s->name(), "cg");
   EXPECT_FALSE(makeFieldSolver("nope"));
 }
+
+}  // namespace cg_solver_test

@@ -6,6 +6,9 @@
 #include <cmath>
 #include <vector>
 
+// Each test file is a namespace of its own: the build compiles several files as one (unity).
+namespace curve_set_test {
+
 using namespace hairsketch;
 
 namespace {
@@ -68,3 +71,5 @@ TEST(CurveSet, MergesCurvesAndRejectsBadInput) {
   ASSERT_TRUE(curvesToConstraints(g, v, out).ok());
   EXPECT_TRUE(out.empty());
 }
+
+}  // namespace curve_set_test

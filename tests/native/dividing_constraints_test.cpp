@@ -8,6 +8,9 @@
 #include <map>
 #include <tuple>
 
+// Each test file is a namespace of its own: the build compiles several files as one (unity).
+namespace dividing_constraints_test {
+
 using namespace hairsketch;
 
 namespace {
@@ -170,3 +173,5 @@ TEST(DividingConstraints, ParamValidation) {
   prm[5] = 0;  // zero normal at point 0
   EXPECT_EQ(parseDividingParams(prm.data(), prm.size(), 2, p).code, StatusCode::InvalidInput);
 }
+
+}  // namespace dividing_constraints_test

@@ -6,6 +6,9 @@
 
 #include "hair_engine.hpp"
 
+// Each test file is a namespace of its own: the build compiles several files as one (unity).
+namespace engine_settings_test {
+
 using namespace hairsketch;
 
 TEST(EngineSettings, FallFollowsItsEntryAndBadArraysChangeNothing) {
@@ -24,3 +27,5 @@ TEST(EngineSettings, FallFollowsItsEntryAndBadArraysChangeNothing) {
   ASSERT_TRUE(e.setSettings(v, kEngineSettingCount).ok());
   EXPECT_FALSE(e.fall());
 }
+
+}  // namespace engine_settings_test

@@ -8,7 +8,8 @@
 
 #include "exact_reference.hpp"
 
-namespace hairsketch {
+namespace exact_solver_test {
+using namespace hairsketch;
 namespace {
 
 using testref::box;
@@ -221,9 +222,10 @@ TEST(ExactSolver, ResidualAndEnergyMinimum) {
 }
 
 }  // namespace
-}  // namespace hairsketch
+}  // namespace exact_solver_test
 
-namespace hairsketch {
+namespace exact_solver_test {
+using namespace hairsketch;
 namespace {
 
 TEST(ExactSolver, CostModelPrefersUpdateForSmallEditsAndRefactorForHugeOnes) {
@@ -264,4 +266,4 @@ TEST(ExactSolver, CostModelPrefersUpdateForSmallEditsAndRefactorForHugeOnes) {
 }
 
 }  // namespace
-}  // namespace hairsketch
+}  // namespace exact_solver_test

@@ -6,7 +6,8 @@
 
 #include "exact_reference.hpp"
 
-namespace hairsketch {
+namespace factor_update_test {
+using namespace hairsketch;
 namespace {
 
 using testref::box;
@@ -178,4 +179,4 @@ TEST(FactorUpdate, CostEstimateCountsPathFlops) {
 }
 
 }  // namespace
-}  // namespace hairsketch
+}  // namespace factor_update_test

@@ -5,6 +5,11 @@
 
 #include <Eigen/Dense>
 
+#include "auto_solver.hpp"
+
+// Each test file is a namespace of its own: the build compiles several files as one (unity).
+namespace field_system_test {
+
 using namespace hairsketch;
 
 namespace {
@@ -62,8 +67,6 @@ TEST(FieldSystem, ConstraintDiffSeparatesAddedRemovedChanged) {
   EXPECT_EQ(d.changed, std::vector<int>{9});
 }
 
-#include "auto_solver.hpp"
-
 TEST(AutoSolver, PicksExactOnSmallGridsAndFastOnLargeOnesAndRecordsIt) {
   Grid small;
   small.nx = small.ny = small.nz = 10;
@@ -80,3 +83,5 @@ TEST(AutoSolver, PicksExactOnSmallGridsAndFastOnLargeOnesAndRecordsIt) {
   ASSERT_TRUE(b.setGrid(large, kDefaultOmega).ok());
   EXPECT_EQ(b.chosen(), "fast");
 }
+
+}  // namespace field_system_test

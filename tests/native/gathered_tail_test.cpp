@@ -15,6 +15,9 @@
 #include "hand_strands.hpp"
 #include "ponytail_constraints.hpp"
 
+// Each test file is a namespace of its own: the build compiles several files as one (unity).
+namespace gathered_tail_test {
+
 using namespace hairsketch;
 
 namespace {
@@ -137,3 +140,5 @@ TEST(GatheredTail, ThePointCapHoldsAndTheSeedDecides) {
   EXPECT_EQ(a.strands.points, b.strands.points);
   EXPECT_NE(a.strands.points, c.strands.points);
 }
+
+}  // namespace gathered_tail_test

@@ -8,7 +8,8 @@
 #include "field_system.hpp"
 #include "supernodal_symbolic.hpp"
 
-namespace hairsketch {
+namespace grid_ordering_test {
+using namespace hairsketch;
 namespace {
 
 Grid box(int nx, int ny, int nz) {
@@ -114,4 +115,4 @@ TEST(Ordering, PlanesFillLessThanBoxes) {
 }
 
 }  // namespace
-}  // namespace hairsketch
+}  // namespace grid_ordering_test

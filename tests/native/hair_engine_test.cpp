@@ -5,6 +5,9 @@
 
 #include "sphere_mesh.hpp"
 
+// Each test file is a namespace of its own: the build compiles several files as one (unity).
+namespace hair_engine_test {
+
 using namespace hairsketch;
 
 namespace {
@@ -210,3 +213,5 @@ TEST(HairEngine, ANewScalpMaskGrowsWhatAFreshEngineWithThatScalpGrows) {
   ASSERT_TRUE(none.setGrid(s.grid, kDefaultOmega, "cg").ok());
   EXPECT_EQ(none.setScalpMask(mask.data(), mask.size()).code, StatusCode::NotReady);
 }
+
+}  // namespace hair_engine_test

@@ -10,6 +10,9 @@
 #include "sphere_mesh.hpp"
 #include "strand_growth.hpp"
 
+// Each test file is a namespace of its own: the build compiles several files as one (unity).
+namespace hair_fall_test {
+
 using namespace hairsketch;
 
 namespace {
@@ -254,3 +257,5 @@ TEST(FallEngine, NoCurvesIsBaldAndFarHairHangs) {
   ASSERT_GT(front, 5);
   EXPECT_GE(hanging, front * 8 / 10) << hanging << " of " << front;
 }
+
+}  // namespace hair_fall_test

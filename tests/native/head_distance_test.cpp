@@ -11,6 +11,9 @@
 #include "sphere_mesh.hpp"
 #include "strand_growth.hpp"
 
+// Each test file is a namespace of its own: the build compiles several files as one (unity).
+namespace head_distance_test {
+
 using namespace hairsketch;
 
 namespace {
@@ -263,3 +266,5 @@ TEST(HeadDistance, PushOutBringsADeepPointJustOutsideNearWhereItWas) {
     EXPECT_GT(q.normalized().dot(dir), 0.999f) << depth;  // straight out from the centre
   }
 }
+
+}  // namespace head_distance_test

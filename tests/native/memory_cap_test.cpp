@@ -8,6 +8,9 @@
 #include "hair_engine.hpp"
 #include "memory_budget.hpp"
 
+// Each test file is a namespace of its own: the build compiles several files as one (unity).
+namespace memory_cap_test {
+
 using namespace hairsketch;
 
 namespace {
@@ -65,3 +68,5 @@ TEST(MemoryCap, EngineRefusesTheSameWay) {
   small.step = 0.1;
   EXPECT_TRUE(e.setGrid(small, 100, "fast").ok());
 }
+
+}  // namespace memory_cap_test

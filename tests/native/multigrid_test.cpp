@@ -16,6 +16,9 @@
 #include "multigrid_hierarchy.hpp"
 #include "multigrid_transfer.hpp"
 
+// Each test file is a namespace of its own: the build compiles several files as one (unity).
+namespace multigrid_test {
+
 using namespace hairsketch;
 
 namespace {
@@ -531,3 +534,5 @@ TEST(MgPcgSolver, ColdStartsMatchDirectSolveAndEstimateBoundsError) {
     }
   EXPECT_EQ(checked, expected);
 }
+
+}  // namespace multigrid_test

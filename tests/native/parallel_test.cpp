@@ -18,6 +18,9 @@
 #include "sphere_mesh.hpp"
 #include "strand_growth.hpp"
 
+// Each test file is a namespace of its own: the build compiles several files as one (unity).
+namespace parallel_test {
+
 using namespace hairsketch;
 
 namespace {
@@ -285,3 +288,5 @@ TEST(Parallel, GrowthGivesTheSameBytesWithAnyThreadCount) {
   EXPECT_FALSE(std::get<0>(grow(3, cap)));
   EXPECT_TRUE(std::get<0>(grow(3, cap + 1)));
 }
+
+}  // namespace parallel_test

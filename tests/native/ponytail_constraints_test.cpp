@@ -10,6 +10,9 @@
 #include "hair_engine.hpp"
 #include "sphere_mesh.hpp"
 
+// Each test file is a namespace of its own: the build compiles several files as one (unity).
+namespace ponytail_constraints_test {
+
 using namespace hairsketch;
 
 namespace {
@@ -214,3 +217,5 @@ TEST(PonytailConstraints, StrandsGatherThroughC1OnASphereHead) {
   ASSERT_GT(near, 5);
   EXPECT_GE(through, near * 3 / 4) << through << " of " << near;
 }
+
+}  // namespace ponytail_constraints_test

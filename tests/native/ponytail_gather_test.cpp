@@ -16,6 +16,9 @@
 #include "ponytail_constraints.hpp"
 #include "sphere_mesh.hpp"
 
+// Each test file is a namespace of its own: the build compiles several files as one (unity).
+namespace ponytail_gather_test {
+
 using namespace hairsketch;
 using Eigen::Vector3d;
 
@@ -380,3 +383,5 @@ TEST(PonytailGather, LayoutsAndTheOldConstraintsUnchanged) {
   EXPECT_EQ(p.gather, 0);
   EXPECT_EQ(p.circles[0].radius, 0.3);
 }
+
+}  // namespace ponytail_gather_test

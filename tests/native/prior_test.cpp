@@ -24,6 +24,9 @@
 #include "multigrid_hierarchy.hpp"
 #include "multigrid_transfer.hpp"
 
+// Each test file is a namespace of its own: the build compiles several files as one (unity).
+namespace prior_test {
+
 using namespace hairsketch;
 
 namespace {
@@ -471,3 +474,5 @@ TEST(Prior, ForgettingTheWarmStartIsHistoryFree) {
     EXPECT_TRUE(bitIdentical(converge(*priorLater), cold)) << "prior set last";
   }
 }
+
+}  // namespace prior_test

@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+// Each test file is a namespace of its own: the build compiles several files as one (unity).
+namespace rng_test {
+
 using hairsketch::Pcg32;
 
 TEST(Rng, SameSeedSameSequenceOtherSeedDiffers) {
@@ -39,3 +42,5 @@ TEST(Rng, UniformIsInUnitIntervalWithPlausibleMean) {
   EXPECT_LT(lo, 1e-3);
   EXPECT_GT(hi, 1 - 1e-3);
 }
+
+}  // namespace rng_test

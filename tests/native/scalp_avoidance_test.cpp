@@ -10,6 +10,9 @@
 #include "hair_engine.hpp"
 #include "sphere_mesh.hpp"
 
+// Each test file is a namespace of its own: the build compiles several files as one (unity).
+namespace scalp_avoidance_test {
+
 using namespace hairsketch;
 
 namespace {
@@ -237,3 +240,5 @@ TEST(CurveSetDispatch, KindsParamBlocksAndExtras) {
   expectError("curve 1 (dividing)");
   ASSERT_TRUE(curvesToConstraints(g, v, out).code == StatusCode::InvalidInput);
 }
+
+}  // namespace scalp_avoidance_test

@@ -10,6 +10,9 @@
 
 #include "sphere_mesh.hpp"
 
+// Each test file is a namespace of its own: the build compiles several files as one (unity).
+namespace scalp_roots_test {
+
 using namespace hairsketch;
 using hairsketch_test::Mesh;
 
@@ -274,3 +277,5 @@ TEST(ScalpRoots, SampleIdsNameEachRootsThetaRowAndPhiColumnWhateverTheMaskOrCap)
   }
   EXPECT_GT(shifted, 0u);
 }
+
+}  // namespace scalp_roots_test

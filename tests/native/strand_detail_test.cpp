@@ -13,6 +13,9 @@
 #include <limits>
 #include <string>
 
+// Each test file is a namespace of its own: the build compiles several files as one (unity).
+namespace strand_detail_test {
+
 using namespace hairsketch;
 using V3 = Eigen::Vector3d;
 
@@ -608,3 +611,5 @@ TEST(StrandDetail, ClumpLeavesAStrandWhosePathPartsFromItsGuide) {
     for (size_t i = 0; i < in[k].size(); ++i)
       EXPECT_LT((strandOf(s, k)[i] - in[k][i]).norm(), 1e-6) << k << " " << i;
 }
+
+}  // namespace strand_detail_test

@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+// Each test file is a namespace of its own: the build compiles several files as one (unity).
+namespace strand_growth_test {
+
 using namespace hairsketch;
 
 namespace {
@@ -130,3 +133,5 @@ TEST(StrandGrowth, RejectsBadParamsAndMissingField) {
   EXPECT_EQ(growStrands(g, v, {Eigen::Vector3f(0, 1, 0)}, prm, s, 3).code,
             StatusCode::OverMemoryCap);
 }
+
+}  // namespace strand_growth_test

@@ -6,6 +6,9 @@
 #include <cmath>
 #include <map>
 
+// Each test file is a namespace of its own: the build compiles several files as one (unity).
+namespace stream_constraints_test {
+
 using namespace hairsketch;
 
 namespace {
@@ -85,3 +88,5 @@ TEST(StreamConstraints, OutsideAndZeroLengthSegmentsAreSkippedUpperFaceIsLastCel
     for (int j = 1; j <= 2; ++j)
       for (int i = 2; i <= 3; ++i) EXPECT_EQ(m.count(g.index(i, j, k)), 1u);
 }
+
+}  // namespace stream_constraints_test

@@ -7,7 +7,8 @@
 
 #include "exact_reference.hpp"
 
-namespace hairsketch {
+namespace supernodal_factor_test {
+using namespace hairsketch;
 namespace {
 
 using testref::box;
@@ -85,4 +86,4 @@ TEST(SupernodalFactor, IndefiniteMatrixIsRejected) {
 }
 
 }  // namespace
-}  // namespace hairsketch
+}  // namespace supernodal_factor_test

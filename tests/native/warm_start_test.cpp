@@ -11,6 +11,9 @@
 #include "field_solver.hpp"
 #include "mg_pcg_solver.hpp"
 
+// Each test file is a namespace of its own: the build compiles several files as one (unity).
+namespace warm_start_test {
+
 using namespace hairsketch;
 
 namespace {
@@ -186,3 +189,5 @@ TEST(WarmStart, ADirectSolverHasNothingToForget) {
   ASSERT_TRUE(exact->setGrid(g, 100).ok());
   EXPECT_FALSE(exact->forgetWarmStart());
 }
+
+}  // namespace warm_start_test
