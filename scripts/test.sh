@@ -2,11 +2,11 @@
 # npm test: set up what is missing, then format + lint + types, native build and tests, wasm
 # build, unit tests (with the real wasm under Node, and the bundled command line) and browser
 # tests against Debian's Chromium.
-# After the Debian packages two lanes run at once, since neither keeps both cores busy all the
+# After the Debian packages three lanes run at once, since none keeps both cores busy all the
 # time: the app lane builds the wasm module (while npm's packages install), checks types, builds
-# the app and the CLI and runs the browser tests; the checks lane installs npm's and Python's
-# packages, runs format and lint, the native build and tests, and then (once the app lane has
-# built the wasm module and the CLI bundle) the unit tests.
+# the app and the CLI and runs the browser tests; the native lane builds and runs the native
+# tests; the checks lane installs npm's and Python's packages, runs format and lint, and then
+# (once the app lane has built the wasm module and the CLI bundle) the unit tests.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -87,54 +87,69 @@ web_build() {
   npx vite build -c vite.cli.config.ts
 }
 logs=build/test-logs
-built="$logs/app-built"  # the app lane writes ok or failed here once its builds are done
-installed="$logs/packages-installed"  # the checks lane writes ok here once npm's packages are in
-wait_for_packages() {
-  until [ -s "$installed" ]; do
-    if [ -s "$logs/packages-failed" ]; then
-      echo "not run: the npm and Python packages could not be installed" >&2
-      return 1
-    fi
-    sleep 1
-  done
+# Lanes tell each other what is done through files in $logs holding ok or failed.
+built="$logs/app-built"            # the app lane: the wasm module, the app and the CLI bundle
+installed="$logs/packages-installed"  # the checks lane: npm's and Python's packages
+native_done="$logs/native-tested"  # the native lane: ctest, which writes the native fields
+wait_for() {  # file what: waits until the file says; fails unless it says ok
+  until [ -s "$1" ]; do sleep 1; done
+  if [ "$(cat "$1")" != ok ]; then
+    echo "not run: it needs $2, which failed" >&2
+    return 1
+  fi
 }
 lane_app() {
   local rc=0
   phase "wasm build" bash wasm-build/build.sh || rc=$?
-  [ "$rc" = 0 ] && { wait_for_packages || rc=$?; }
+  [ "$rc" = 0 ] && { wait_for "$installed" "npm's packages" || rc=$?; }
   [ "$rc" = 0 ] && { phase "types (tsc; needs the wasm module's declarations)" npx tsc --noEmit -p tsconfig.json || rc=$?; }
   [ "$rc" = 0 ] && { phase "web build (app, CLI bundle)" web_build || rc=$?; }
   if [ "$rc" = 0 ]; then echo ok > "$built"; else echo failed > "$built"; return "$rc"; fi
   phase "browser tests (Playwright, Debian Chromium)" npx playwright test
 }
+lane_native() {
+  local rc=0
+  phase "native build" native_build || rc=$?
+  [ "$rc" = 0 ] && { phase "native tests (ctest)" ctest --test-dir build/native --output-on-failure -j2 || rc=$?; }
+  if [ "$rc" = 0 ]; then echo ok > "$native_done"; else echo failed > "$native_done"; fi
+  return "$rc"
+}
+# tests/unit/wasmNative.test.ts compares the wasm module's fields with the native build's, which
+# ctest writes: it runs once the native lane is done, every other unit test as soon as the app
+# lane has built the wasm module and the CLI bundle.
 unit_tests() {
-  until [ -s "$built" ]; do sleep 1; done
-  if [ "$(cat "$built")" != ok ]; then
-    echo "unit tests not run: they need the wasm module and the CLI bundle, whose build failed" >&2
-    return 1
-  fi
-  npx vitest run
+  wait_for "$built" "the wasm module and the CLI bundle"
+  npx vitest run --exclude tests/unit/wasmNative.test.ts
+}
+unit_tests_native() {
+  wait_for "$built" "the wasm module"
+  wait_for "$native_done" "the native build and ctest"
+  npx vitest run tests/unit/wasmNative.test.ts
 }
 lane_checks() {
-  phase "setup: npm and Python packages" packages || { echo failed > "$logs/packages-failed"; return 1; }
+  local rc=0
+  phase "setup: npm and Python packages" packages || rc=$?
+  if [ "$rc" != 0 ]; then echo failed > "$installed"; return "$rc"; fi
   phase "format and lint" format_lint
-  phase "native build" native_build
-  phase "native tests (ctest)" ctest --test-dir build/native --output-on-failure -j2
   phase "unit tests (vitest, Node, real wasm; waits for the app lane's builds)" unit_tests
+  phase "unit tests against the native fields (waits for ctest)" unit_tests_native
 }
-lanes() {  # runs both lanes at once; prints each lane's output whole, when it is done
-  local a b ra=0 rb=0
+lanes() {  # runs the three lanes at once; prints each lane's output whole, when it is done
+  local pids=() names=(checks native app) name rc=0
   mkdir -p "$logs"
-  rm -f "$built" "$installed" "$logs/packages-failed"
-  lane_app > "$logs/app.log" 2>&1 &
-  a=$!
+  rm -f "$built" "$installed" "$native_done"
   lane_checks > "$logs/checks.log" 2>&1 &
-  b=$!
-  wait "$b" || rb=$?
-  cat "$logs/checks.log"
-  wait "$a" || ra=$?
-  cat "$logs/app.log"
-  [ "$ra" = 0 ] && [ "$rb" = 0 ]
+  pids+=($!)
+  lane_native > "$logs/native.log" 2>&1 &
+  pids+=($!)
+  lane_app > "$logs/app.log" 2>&1 &
+  pids+=($!)
+  for i in 0 1 2; do
+    name=${names[$i]}
+    wait "${pids[$i]}" || rc=1
+    cat "$logs/$name.log"
+  done
+  return "$rc"
 }
 
 phase "setup: Debian packages" bash scripts/setup.sh test system
