@@ -5,6 +5,7 @@
 import { describe, expect, it } from 'vitest';
 import { visibleStrands } from '../../web/app/hairPresenter';
 import { StatusPresenter } from '../../web/app/statusPresenter';
+import type { EditorChange } from '../../web/editor/editor';
 import type { SolveResult } from '../../web/solver/solverClient';
 import { StatusLine } from '../../web/ui/status';
 
@@ -109,6 +110,39 @@ describe('StatusPresenter', () => {
     line.counts(30000, 3);
     p.ready();
     expect(el.textContent).toBe('Ready — 30,000 strands');
+  });
+
+  it('says Solving as soon as an edit that asked for a solve is counted, before any progress', () => {
+    const { el, line, p, pending, drawing } = setup();
+    // a stroke's preview is on screen and the worker is idle
+    pending.now = false;
+    drawing.now = true;
+    line.counts(800, 3);
+    p.ready();
+    expect(el.dataset.state).toBe('ready');
+    // pointer-up: the bridge (which hears first) has asked for the new curve's solve
+    drawing.now = false;
+    pending.now = true;
+    const session = { curves: [{}, {}, {}, {}] } as unknown as EditorChange['session'];
+    p.editorChanged({
+      cause: 'command',
+      sessionChanged: true,
+      session,
+      message: 'Added a curve',
+    } as EditorChange);
+    expect(el.dataset.curves).toBe('4');
+    expect(el.dataset.state).toBe('solving');
+    expect(el.textContent).toBe('Solving… 0 % · Added a curve');
+    // an edit that needs no solve (the hair came from the cache) stays Ready
+    pending.now = false;
+    p.ready();
+    p.editorChanged({
+      cause: 'command',
+      sessionChanged: true,
+      session,
+      message: 'Undone',
+    } as EditorChange);
+    expect(el.dataset.state).toBe('ready');
   });
 
   it('does not report strands on a bald head', () => {

@@ -77,6 +77,11 @@ export class StatusPresenter {
       this.line.counts(this.line.strands, c.session.curves.length);
       this.progress = 0;
       this.firstLook = false;
+      // The solver bridge hears of the edit first: when it asked for a solve, the line says so
+      // now, not at the worker's first progress message (until then it would still say Ready,
+      // or Preview after a stroke, with the new curve already counted).
+      if (this.solver.pending && !this.solver.previewing && this.line.state === 'ready')
+        this.line.set('solving', this.busyText());
     }
     if (c.cause !== 'tool' && c.cause !== 'select') this.note(c.message);
   }
