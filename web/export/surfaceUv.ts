@@ -5,6 +5,8 @@
 // triangle, and each side of a UV seam keeps its own corners). Plain typed arrays, no three.js:
 // it runs in the export worker and in `hairsketch grow` alike.
 
+import { triangleNormal } from '../head/triangleNormal';
+
 /** A triangle mesh with UVs per corner (HeadMesh.cornerUvs: 6 per triangle, v up). */
 export interface UvSurface {
   positions: Float32Array; // positions[3 * vertex + axis]
@@ -31,6 +33,7 @@ export class SurfaceUvLookup {
   private readonly first: Uint32Array;
   private readonly list: Uint32Array;
   private readonly w = new Float64Array(3);
+  private readonly normal = new Float64Array(3); // triangleArea's scratch
 
   constructor(private readonly s: UvSurface) {
     const P = s.positions;
@@ -154,21 +157,15 @@ export class SurfaceUvLookup {
   }
 
   private triangleArea(t: number): number {
-    const P = this.s.positions;
     const I = this.s.indices;
-    const a = 3 * I[3 * t];
-    const b = 3 * I[3 * t + 1];
-    const c = 3 * I[3 * t + 2];
-    const ux = P[b] - P[a];
-    const uy = P[b + 1] - P[a + 1];
-    const uz = P[b + 2] - P[a + 2];
-    const vx = P[c] - P[a];
-    const vy = P[c + 1] - P[a + 1];
-    const vz = P[c + 2] - P[a + 2];
-    const nx = uy * vz - uz * vy;
-    const ny = uz * vx - ux * vz;
-    const nz = ux * vy - uy * vx;
-    return 0.5 * Math.sqrt(nx * nx + ny * ny + nz * nz);
+    const n = triangleNormal(
+      this.s.positions,
+      3 * I[3 * t],
+      3 * I[3 * t + 1],
+      3 * I[3 * t + 2],
+      this.normal,
+    );
+    return 0.5 * Math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
   }
 
   /** The UV at the point of the surface closest to (x, y, z), wrapped into [0, 1], written to

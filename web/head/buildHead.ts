@@ -7,6 +7,7 @@ import type { HeadMesh } from './head';
 import { HeadPart, headPartAt, headSdf } from './headSdf';
 import { markScalpTriangles } from './scalpRegion';
 import { sampleField, surfaceNets, type TriangleMesh } from './surfaceNets';
+import { triangleNormal } from './triangleNormal';
 
 export interface BuildHeadOptions {
   /** Grid cells per world unit (10 cm) of the polygonisation; default 24 (≈ 30K triangles). */
@@ -67,23 +68,16 @@ export function buildHead(options: BuildHeadOptions = {}): HeadMesh {
 /** Area-weighted vertex normals, normalised. */
 export function vertexNormals(positions: Float32Array, indices: Uint32Array): Float32Array {
   const n = new Float32Array(positions.length);
+  const face = new Float64Array(3);
   for (let t = 0; t < indices.length; t += 3) {
     const a = 3 * indices[t];
     const b = 3 * indices[t + 1];
     const c = 3 * indices[t + 2];
-    const ux = positions[b] - positions[a];
-    const uy = positions[b + 1] - positions[a + 1];
-    const uz = positions[b + 2] - positions[a + 2];
-    const vx = positions[c] - positions[a];
-    const vy = positions[c + 1] - positions[a + 1];
-    const vz = positions[c + 2] - positions[a + 2];
-    const nx = uy * vz - uz * vy;
-    const ny = uz * vx - ux * vz;
-    const nz = ux * vy - uy * vx;
+    triangleNormal(positions, a, b, c, face);
     for (const v of [a, b, c]) {
-      n[v] += nx;
-      n[v + 1] += ny;
-      n[v + 2] += nz;
+      n[v] += face[0];
+      n[v + 1] += face[1];
+      n[v + 2] += face[2];
     }
   }
   for (let v = 0; v < n.length; v += 3) {

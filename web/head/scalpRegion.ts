@@ -4,6 +4,7 @@
 // direction is (sinθ sinφ, cosθ, sinθ cosφ). The hairline is θ_max(|φ|): a direction is scalp
 // when θ < θ_max(|φ|).
 import type { TriangleSoup } from './head';
+import { triangleNormal } from './triangleNormal';
 
 const DEG = Math.PI / 180;
 
@@ -74,6 +75,7 @@ export function markScalpTriangles(
   const { positions: P, indices: I } = mesh;
   const triangles = I.length / 3;
   const scalp = new Uint8Array(triangles);
+  const n = new Float64Array(3);
   for (let t = 0; t < triangles; t++) {
     const a = 3 * I[3 * t];
     const b = 3 * I[3 * t + 1];
@@ -84,16 +86,8 @@ export function markScalpTriangles(
     const [theta, phi] = directionAngles(cx, cy, cz);
     if (!isScalpDirection(theta, phi)) continue;
     // face normal (unnormalised) · radial direction
-    const ux = P[b] - P[a];
-    const uy = P[b + 1] - P[a + 1];
-    const uz = P[b + 2] - P[a + 2];
-    const vx = P[c] - P[a];
-    const vy = P[c + 1] - P[a + 1];
-    const vz = P[c + 2] - P[a + 2];
-    const nx = uy * vz - uz * vy;
-    const ny = uz * vx - ux * vz;
-    const nz = ux * vy - uy * vx;
-    if (nx * cx + ny * cy + nz * cz > 0) scalp[t] = 1;
+    triangleNormal(P, a, b, c, n);
+    if (n[0] * cx + n[1] * cy + n[2] * cz > 0) scalp[t] = 1;
   }
   return scalp;
 }
