@@ -6,7 +6,8 @@ import { planeAngles, planeNormal } from '../head/symmetryPlane';
 import type { MirrorPlane } from '../model/mirror';
 import type { SessionState } from '../model/session';
 import { BRUSH_RADIUS } from '../tools/scalpBrushTool';
-import { type NumberRange, numberInput, type Say } from './numberInput';
+import type { Say } from './numberInput';
+import { panelButton as button, numberRow } from './panelControls';
 
 type Axis = 'x' | 'y' | 'z';
 
@@ -37,33 +38,6 @@ export interface HeadPanel {
 }
 
 const DEG = 180 / Math.PI;
-
-/** A labelled number input (the label, "Name (unit)", is its accessible name). */
-function numberRow(
-  label: string,
-  range: NumberRange,
-  value: number,
-  onValue: (v: number) => void,
-  say: Say,
-): HTMLLabelElement {
-  const m = /^(.*) \((.*)\)$/.exec(label);
-  const field = m ? { label: m[1], unit: m[2], decimals: 2 } : { label, decimals: 2 };
-  const input = numberInput(range, value, field, onValue, say);
-  input.setAttribute('aria-label', label);
-  const row = document.createElement('label');
-  row.className = 'detail-row';
-  row.append(label, input);
-  return row;
-}
-
-function button(label: string, title: string, run: () => void): HTMLButtonElement {
-  const b = document.createElement('button');
-  b.type = 'button';
-  b.textContent = label;
-  b.title = title;
-  b.addEventListener('click', run);
-  return b;
-}
 
 export function buildHeadPanel(root: HTMLElement, events: HeadPanelEvents): HeadPanel {
   const panel = document.createElement('section');
@@ -111,7 +85,9 @@ export function buildHeadPanel(root: HTMLElement, events: HeadPanelEvents): Head
       brush,
       hint,
       numberRow(
-        'Brush radius (mm)',
+        'Brush radius',
+        'mm',
+        2,
         { min: BRUSH_RADIUS.min * 100, max: BRUSH_RADIUS.max * 100, step: 5 },
         st.brushRadius * 100,
         (mm) => events.setBrushRadius(mm / 100),
@@ -127,21 +103,27 @@ export function buildHeadPanel(root: HTMLElement, events: HeadPanelEvents): Head
     panel.append(
       mirror,
       numberRow(
-        'Offset (mm)',
+        'Offset',
+        'mm',
+        2,
         { min: -200, max: 200, step: 1 },
         plane.offset * 100,
         (mm) => set(yaw, roll, mm / 100),
         events.say,
       ),
       numberRow(
-        'Yaw (°)',
+        'Yaw',
+        '°',
+        2,
         { min: -30, max: 30, step: 0.5 },
         yaw * DEG,
         (d) => set(d / DEG, roll, plane.offset),
         events.say,
       ),
       numberRow(
-        'Roll (°)',
+        'Roll',
+        '°',
+        2,
         { min: -30, max: 30, step: 0.5 },
         roll * DEG,
         (d) => set(yaw, d / DEG, plane.offset),

@@ -5,7 +5,8 @@
 // wait on them): data-pictures (placed), data-shown (drawn), data-missing, data-busy.
 import type { ReferenceImage } from '../model/referenceImage';
 import { REFERENCE_RANGES as R } from '../model/referenceImage';
-import { numberInput, type Say } from './numberInput';
+import type { Say } from './numberInput';
+import { panelButton as button, numberRow } from './panelControls';
 
 export interface ReferencePanelEvents {
   open(): void;
@@ -27,31 +28,6 @@ export interface ReferencePanelState {
 
 export interface ReferencePanel {
   show(state: ReferencePanelState): void;
-}
-
-function button(label: string, title: string, run: () => void): HTMLButtonElement {
-  const b = document.createElement('button');
-  b.type = 'button';
-  b.textContent = label;
-  b.title = title;
-  b.addEventListener('click', run);
-  return b;
-}
-
-function row(
-  label: string,
-  unit: string,
-  range: { min: number; max: number; step: number },
-  value: number,
-  onValue: (v: number) => void,
-  say: Say,
-): HTMLLabelElement {
-  const input = numberInput(range, value, { label, unit, decimals: 1 }, onValue, say);
-  input.setAttribute('aria-label', `${label} (${unit})`);
-  const r = document.createElement('label');
-  r.className = 'detail-row';
-  r.append(`${label} (${unit})`, input);
-  return r;
 }
 
 export function buildReferencePanel(
@@ -102,33 +78,37 @@ export function buildReferencePanel(
     panel.append(
       about,
       acts,
-      row(
+      numberRow(
         'Opacity',
         '%',
+        1,
         { min: 0, max: 100, step: 5 },
         sel.opacity * 100,
         (v) => patch({ opacity: v / 100 }, 'Picture opacity'),
         events.say,
       ),
-      row(
+      numberRow(
         'Size',
         'cm',
+        1,
         { min: R.scale.min * 10, max: R.scale.max * 10, step: 0.5 },
         sel.scale * 10,
         (v) => patch({ scale: v / 10 }, 'Picture size'),
         events.say,
       ),
-      row(
+      numberRow(
         'Right',
         'cm',
+        1,
         { min: R.offset.min * 10, max: R.offset.max * 10, step: 0.5 },
         sel.offset[0] * 10,
         (v) => patch({ offset: [v / 10, sel.offset[1]] }, 'Picture moved'),
         events.say,
       ),
-      row(
+      numberRow(
         'Up',
         'cm',
+        1,
         { min: R.offset.min * 10, max: R.offset.max * 10, step: 0.5 },
         sel.offset[1] * 10,
         (v) => patch({ offset: [sel.offset[0], v / 10] }, 'Picture moved'),
