@@ -13,9 +13,8 @@
 // holds more strands than one cluster has: a card stands for the whole depth of its clump, and
 // an alpha-tested texture must stay mostly opaque in its smaller mipmaps (a sparse tile averages
 // below the cutoff and the card vanishes at a distance).
-import { strandArc } from './cardClusters';
 import type { Cards } from './cardMesh';
-import { type ExportStrands, srgbToLinear } from './strandsForExport';
+import { type ExportStrands, srgbToLinear, strandArc } from './strandsForExport';
 
 export const ATLAS_SIZE = 1024;
 export const TILE_COLUMNS = 8;

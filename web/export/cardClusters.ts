@@ -5,7 +5,7 @@
 // its cluster and that cluster's nearest centres (found through a grid over the centres' roots),
 // which keeps 100K strands × 5,000 cards to a fraction of a second. Plain float64 arithmetic
 // (+, −, ×, ÷, √ only): the same clusters in every JS engine.
-import { strandHash } from './strandsForExport';
+import { strandArc, strandHash } from './strandsForExport';
 
 /** Numbers describing a strand's shape: 4 points × 3 coordinates. */
 export const FEATURES = 12;
@@ -54,26 +54,6 @@ export function pointAtFraction(
   out[o] = points[p] + (points[p + 3] - points[p]) * f;
   out[o + 1] = points[p + 1] + (points[p + 4] - points[p + 1]) * f;
   out[o + 2] = points[p + 2] + (points[p + 5] - points[p + 2]) * f;
-}
-
-/** Cumulative arc lengths of strand s into cum[0 .. n − 1]; returns n. */
-export function strandArc(
-  points: Float32Array,
-  strandStart: Uint32Array,
-  s: number,
-  cum: Float64Array,
-): number {
-  const a = strandStart[s];
-  const n = strandStart[s + 1] - a;
-  cum[0] = 0;
-  for (let i = 1; i < n; i++) {
-    const p = 3 * (a + i);
-    const dx = points[p] - points[p - 3];
-    const dy = points[p + 1] - points[p - 2];
-    const dz = points[p + 2] - points[p - 1];
-    cum[i] = cum[i - 1] + Math.sqrt(dx * dx + dy * dy + dz * dz);
-  }
-  return n;
 }
 
 /** The shape features of every strand (every strand has at least 2 points). */

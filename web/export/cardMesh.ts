@@ -4,8 +4,8 @@
 // across direction, normal, extent across) at every row, so the atlas (cardAtlas.ts) can draw a
 // cluster's strands in the card's own coordinates. Plain float64 arithmetic (+, −, ×, ÷, √):
 // the same cards in every JS engine.
-import { type CardClusters, pointAtFraction, strandArc } from './cardClusters';
-import type { ExportStrands } from './strandsForExport';
+import { type CardClusters, pointAtFraction } from './cardClusters';
+import { type ExportStrands, strandArc } from './strandsForExport';
 
 /** A quad along the card per this length (world units: 1.5 cm), within QUADS_MIN..QUADS_MAX. */
 export const QUAD_LENGTH = 0.15;

@@ -112,15 +112,7 @@ export function strandsForExport(
     const n = start[s + 1] - a;
     if (n < 2) continue;
 
-    // Cumulative arc length along the input strand (float64).
-    cum[0] = 0;
-    for (let i = 1; i < n; i++) {
-      const p = 3 * (a + i);
-      const dx = src[p] - src[p - 3];
-      const dy = src[p + 1] - src[p - 2];
-      const dz = src[p + 2] - src[p - 1];
-      cum[i] = cum[i - 1] + Math.sqrt(dx * dx + dy * dy + dz * dz);
-    }
+    strandArc(src, start, s, cum); // float64
     const total = cum[n - 1];
 
     if (n <= cap) {
@@ -204,4 +196,24 @@ export function exportedCounts(s: StrandArrays): { strands: number; points: numb
     points += Math.min(n, MAX_POINTS_PER_STRAND);
   }
   return { strands, points };
+}
+
+/** Cumulative arc lengths of strand s into cum[0 .. n − 1]; returns n. */
+export function strandArc(
+  points: Float32Array,
+  strandStart: Uint32Array,
+  s: number,
+  cum: Float64Array,
+): number {
+  const a = strandStart[s];
+  const n = strandStart[s + 1] - a;
+  cum[0] = 0;
+  for (let i = 1; i < n; i++) {
+    const p = 3 * (a + i);
+    const dx = points[p] - points[p - 3];
+    const dy = points[p + 1] - points[p - 2];
+    const dz = points[p + 2] - points[p - 1];
+    cum[i] = cum[i - 1] + Math.sqrt(dx * dx + dy * dy + dz * dz);
+  }
+  return n;
 }
