@@ -25,6 +25,7 @@ import { parseSession, readSessionFile, writeSessionFile } from '../../web/model
 import { decodeSessionLink, encodeSessionLink, MAX_LINK_BYTES } from '../../web/model/sessionLink';
 import type { StrandArrays } from '../../web/solver/protocol';
 import { pngFile } from '../support/pictureFiles';
+import { rng } from '../support/seededRandom';
 import {
   applyMutations,
   type Mutation,
@@ -796,18 +797,6 @@ export interface HairCase {
   style: 'small' | 'still' | 'extreme' | 'mixed';
   seed: number;
   specials: number[];
-}
-
-/** A deterministic PRNG (mulberry32) for coordinates: a case is its seed, not 10⁴ numbers. */
-function rng(seed: number): () => number {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
 }
 
 const FLOAT32_MAX = 3.4028234663852886e38;

@@ -16,6 +16,7 @@ import { writeExport } from '../../web/export/writeExport';
 import { type LoadedHead, loadHeadFile, rotateLoadedHead } from '../../web/head/loadHead';
 import { emptySession, type SessionState } from '../../web/model/session';
 import { ellipsoidHead } from '../support/generatedHead';
+import { rng } from '../support/seededRandom';
 
 /** The head in metres (a head-sized ellipsoid, y up, face +z). */
 const soup = (() => {
@@ -161,18 +162,6 @@ async function load(name: string, bytes: ArrayBuffer): Promise<LoadedHead> {
   if (!r.ok) throw new Error(r.error);
   expect(r.head.up).toBe('y');
   return r.head;
-}
-
-/** A seeded generator (mulberry32). */
-function rng(seed: number) {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
 }
 
 /** `n` roots on the loaded head's scalp triangles (seeded), each pushed `lift` app units out
