@@ -1,5 +1,6 @@
 // The three.js view: head, hair strands, style curves, the stroke being drawn. Renders on demand,
-// once per animation frame at most. This file holds the frame schedule and the scene's content;
+// once per animation frame at most, and asks for no frames while idle. This file holds the frame
+// schedule and the scene's content;
 // the parts it delegates to:
 //   cameraRig.ts          camera, orbit controls, reset-view animation, screen <-> world
 //   hairLevelOfDetail.ts  how much of the hair an interactive frame draws (measured frame times)
@@ -118,24 +119,45 @@ export class Viewer {
 
     new ResizeObserver(() => this.resize()).observe(canvas);
     this.resize();
-    const loop = (now: number) => {
-      // the frame after a rendered one shows what that frame cost (the browser throttles frames
-      // while the GPU is behind)
-      if (this.lastRender) this.adaptDetail(now - this.lastRender.time, this.lastRender.drawn);
-      this.lastRender = null;
-      this.rig.stepViewAnimation(now);
-      for (const hook of this.frameHooks) hook();
-      if (this.dirty) {
-        this.dirty = !this.renderFrame(now, this.holds.size > 0 ? 'interactive' : 'settled');
-      } else if (this.fullDetailOwed && this.holds.size === 0 && this.fullDetailWait-- <= 0) {
-        this.renderFrame(now, 'full');
-      }
-      requestAnimationFrame(loop);
-    };
-    requestAnimationFrame(loop);
+    this.scheduleFrame();
   }
 
   // ---- frame schedule ------------------------------------------------------------------------
+
+  /** An animation frame is asked for and has not run yet. */
+  private frameScheduled = false;
+
+  /** Asks for an animation frame unless one is on its way. Frames run only while there is
+   *  something to do (see needsFrame): an idle view asks the browser for none. */
+  private scheduleFrame(): void {
+    if (this.frameScheduled) return;
+    this.frameScheduled = true;
+    requestAnimationFrame(this.frame);
+  }
+
+  /** Whether the next animation frame has work: a frame to draw (or one waiting for hair), the
+   *  full-detail frame owed, the view interactive (a stroke, an orbit, the camera animating,
+   *  hair settling: the active tool's update() runs each frame), or the cost of the frame just
+   *  drawn still to be measured (at the next frame). */
+  private needsFrame(): boolean {
+    return this.dirty || this.fullDetailOwed || this.holds.size > 0 || this.lastRender !== null;
+  }
+
+  private readonly frame = (now: number): void => {
+    this.frameScheduled = false;
+    // the frame after a rendered one shows what that frame cost (the browser throttles frames
+    // while the GPU is behind)
+    if (this.lastRender) this.adaptDetail(now - this.lastRender.time, this.lastRender.drawn);
+    this.lastRender = null;
+    this.rig.stepViewAnimation(now);
+    for (const hook of this.frameHooks) hook();
+    if (this.dirty) {
+      this.dirty = !this.renderFrame(now, this.holds.size > 0 ? 'interactive' : 'settled');
+    } else if (this.fullDetailOwed && this.holds.size === 0 && this.fullDetailWait-- <= 0) {
+      this.renderFrame(now, 'full');
+    }
+    if (this.needsFrame()) this.scheduleFrame();
+  };
 
   /** Draws the scene. 'interactive': the hair at interactive detail; 'settled': all of it when a
    *  frame can afford it, else interactive detail now and all of it FULL_DETAIL_DELAY_FRAMES
@@ -259,13 +281,15 @@ export class Viewer {
     return this.fullDetailOwed;
   }
 
-  /** Runs `hook` once per animation frame, before rendering. */
+  /** Runs `hook` at the start of each animation frame the view runs (frames run while it has
+   *  work: see needsFrame; requestRender asks for one). */
   onFrame(hook: () => void): void {
     this.frameHooks.push(hook);
   }
 
   requestRender(): void {
     this.dirty = true;
+    this.scheduleFrame();
   }
 
   get renderPending(): boolean {
@@ -278,6 +302,7 @@ export class Viewer {
     const had = this.holds.size > 0;
     if (on) this.holds.add(reason);
     else this.holds.delete(reason);
+    this.scheduleFrame();
     if (had !== this.holds.size > 0) {
       if (!on) this.setResolutionScale(1); // the settled view in full resolution
       this.requestRender();
