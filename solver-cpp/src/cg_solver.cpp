@@ -1,20 +1,12 @@
 #include "cg_solver.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 
+#include "elapsed.hpp"
+
 namespace hairsketch {
-
-namespace {
-
-using Clock = std::chrono::steady_clock;
-double msSince(Clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
-
-}  // namespace
 
 // Per grid point: 9 n x 3 double fields alive in solve() (previous_, work_, B, X, R, Z, P, Q
 // and the caller's T: 216 bytes), 5 double vectors (invCount_, biDiag_, penalty_, diag, invDiag:

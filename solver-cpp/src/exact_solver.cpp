@@ -1,19 +1,12 @@
 #include "exact_solver.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <iterator>
 
+#include "elapsed.hpp"
+
 namespace hairsketch {
-namespace {
-
-double msSince(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-}
-
-}  // namespace
-
 // Memory of the exact path (bytes; n points):
 //   analysis   <= 1200 n   assembling M = D^T D (triplets, D, D^T, the product), the
 //                          dissection and the supernodal rows (measured 680-1090 n)
@@ -68,7 +61,7 @@ Status ExactSolver::setGrid(const Grid& grid, double omega) {
   const double rough = estimateBytes(grid);
   if (kAnalysisBytesPerPoint * n > double(cap) || rough > 2 * double(cap))
     return checkMemory("exact solver", std::max(rough, double(cap) + 1), cap);
-  const auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = Clock::now();
   M_ = assembleBiLaplacian(grid);
   factor_.analyse(M_, boxNestedDissection(grid, opt_.dissection));
   const double bytes = analysedBytes();
@@ -113,7 +106,7 @@ Status ExactSolver::setConstraints(const ConstraintSet& next) {
     if (next[i - 1].index >= next[i].index)
       return Status::Error(StatusCode::InvalidInput,
                            "exact: constraints must be sorted by index and unique");
-  const auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = Clock::now();
   const ConstraintDiff diff = diffConstraints(current_, next);
   stats_ = SolveStats();
   stats_.added = int(diff.added.size());
@@ -186,7 +179,7 @@ Status ExactSolver::setPrior(double beta2, const Field& G) {
   if (!hasGrid_) return Status::Error(StatusCode::NotReady, "exact: no grid");
   Status v = validatePrior(grid_, beta2, G);
   if (!v.ok()) return v;
-  const auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = Clock::now();
   if (beta2 != 0 && G.rows() > 0)
     priorRhs_ = beta2 * G;
   else
@@ -212,7 +205,7 @@ Status ExactSolver::setPrior(double beta2, const Field& G) {
 
 Status ExactSolver::solve(Field& T) {
   if (!hasGrid_) return Status::Error(StatusCode::NotReady, "exact: no grid");
-  const auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = Clock::now();
   if (current_.empty() && priorRhs_.rows() == 0) {  // no right-hand side: the field is zero
     T = Field::Zero(grid_.size(), 3);
     stats_.solveMs = msSince(t0);

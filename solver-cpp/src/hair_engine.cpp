@@ -1,19 +1,18 @@
 #include "hair_engine.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <string>
 
 #include "braid_bun.hpp"
+#include "elapsed.hpp"
 #include "memory_budget.hpp"
 #include "ponytail_constraints.hpp"
 
 namespace hairsketch {
 
 namespace {
-using Clock = std::chrono::steady_clock;
 
 // Whether the head surface under curve point q is not scalp: q is carried towards the head (down
 // the distance gradient, or towards its centre away from the surface) until the distance grid
@@ -118,8 +117,8 @@ Status HairEngine::setScalp(const float* positions, size_t vertexCount, const ui
   const auto t1 = Clock::now();
   s = headDistance_.build(view);
   if (!s.ok()) scalp_ = ScalpSampler();
-  samplerMs_ = std::chrono::duration<double, std::milli>(t1 - t0).count();
-  distanceMs_ = std::chrono::duration<double, std::milli>(Clock::now() - t1).count();
+  samplerMs_ = msBetween(t0, t1);
+  distanceMs_ = msSince(t1);
   centre_ = center;
   footprints_.clear();  // the curves' stretches off the scalp depend on the head
   if (!s.ok()) return s;
@@ -429,7 +428,7 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
     s = applyDetail(detail_, groupOf, key, rp.seed, strands_, 255);
     if (head) keepOutsideHead(*head, float(gp.margin), strands_);
   }
-  growMs_ = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+  growMs_ = msSince(t0);
   return s;
 }
 

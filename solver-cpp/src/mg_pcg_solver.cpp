@@ -2,19 +2,14 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 
+#include "elapsed.hpp"
 #include "multigrid_transfer.hpp"
 #include "parallel.hpp"
 
 namespace hairsketch {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double msSince(Clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
 
 constexpr double kEstimateSafety = 2.0;
 constexpr double kRhoMin = 0.3, kRhoMax = 0.95, kRhoFirst = 0.9;
