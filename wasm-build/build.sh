@@ -4,10 +4,14 @@
 #   hairsolver-mt.{mjs,wasm,worker.js}      threaded: -pthread, shared memory, a pthread pool of
 #                                           Module.hsPoolSize workers (the loader sets it); only
 #                                           for cross-origin isolated pages (SharedArrayBuffer)
-# Each source file is compiled to an object of its own (build/wasm/{st,mt}/), with the Eigen and
-# standard headers parsed once per variant into a precompiled header (wasm-build/pch.hpp; the
-# code emitted is the same without it), on every core at once (JOBS overrides), and only when it
-# or a header changed; then both modules are linked. Skips everything when every input is older
+# The core's sources are compiled as two unity units (build/wasm/core-{a,b}.cpp, each including
+# half of them, which then share their Eigen instantiations) and the binding as a third, each to
+# an object per variant (build/wasm/{st,mt}/), with the Eigen and standard headers parsed once per
+# variant into a precompiled header (wasm-build/pch.hpp; the code emitted is the same without
+# it), on every core at once (JOBS overrides), and only when a unit's sources or a header
+# changed; then both modules are linked. As in the native build (solver-cpp/CMakeLists.txt), a
+# name in one file's anonymous namespace must not clash with, or overload, another file's.
+# Skips everything when every input is older
 # than every output (FORCE=1 rebuilds everything anyway).
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
@@ -63,7 +67,20 @@ echo "wasm-build: emcc $(emcc --version | head -1 | grep -o '[0-9]\+\.[0-9]\+\.[
 start=$(date +%s)
 objs="$root/build/wasm"
 if [ "${FORCE:-0}" = 1 ]; then rm -rf "$objs"; fi
-sources=("$root"/solver-cpp/src/*.cpp "$here/binding.cpp")
+# the C locale's order, as CMake's (the same files share a unit in both builds)
+mapfile -t core < <(printf '%s\n' "$root"/solver-cpp/src/*.cpp | LC_ALL=C sort)
+half=$(((${#core[@]} + 1) / 2))
+units=(core-a core-b binding)
+unit_source() {  # unit: the file compiled for it
+  if [ "$1" = binding ]; then echo "$here/binding.cpp"; else echo "$objs/$1.cpp"; fi
+}
+unit_members() {  # unit: the sources it compiles
+  case "$1" in
+    core-a) printf '%s\n' "${core[@]:0:half}" ;;
+    core-b) printf '%s\n' "${core[@]:half}" ;;
+    binding) echo "$here/binding.cpp" ;;
+  esac
+}
 cflags=(-std=c++17 -O3 -msimd128 -DNDEBUG -DEIGEN_NO_DEBUG -fno-exceptions
   -I"$root/solver-cpp/src" -I"$eigen")
 # Every object depends on every header, the precompiled header's list and this script.
@@ -94,12 +111,24 @@ if [ "$status" != 0 ]; then
   echo "wasm-build: emcc failed on the precompiled header ($status)" >&2
   exit "$status"
 fi
-# 2. the objects that are missing or older than their source or a common input, on JOBS cores
+# 2. the unity files, rewritten only when their list of sources changed (a rewrite rebuilds
+# the unit)
+for u in core-a core-b; do
+  f="$objs/$u.cpp"
+  unit_members "$u" | sed 's/.*/#include "&"/' > "$f.new"
+  if cmp -s "$f.new" "$f"; then rm "$f.new"; else mv "$f.new" "$f"; fi
+done
+# 3. the objects that are missing or older than a source of theirs or a common input, on JOBS
+# cores
 todo=()
 for v in st mt; do
-  for src in "${sources[@]}"; do
-    o="$objs/$v/$(basename "$src").o"
-    if newer_than "$o" "$src" "${common_inputs[@]}" "$objs/$v/pch.hpp.pch"; then todo+=("$v" "$src" "$o"); fi
+  for u in "${units[@]}"; do
+    src="$(unit_source "$u")"
+    o="$objs/$v/$u.o"
+    mapfile -t members < <(unit_members "$u")
+    if newer_than "$o" "$src" "${members[@]}" "${common_inputs[@]}" "$objs/$v/pch.hpp.pch"; then
+      todo+=("$v" "$src" "$o")
+    fi
   done
 done
 if [ ${#todo[@]} -gt 0 ]; then
@@ -110,10 +139,10 @@ if [ ${#todo[@]} -gt 0 ]; then
          { echo "wasm-build: emcc failed on $src ($v)" >&2; exit 255; }' _ "${cflags[@]}" ||
     { echo "wasm-build: compiling failed" >&2; exit 1; }
 fi
-# 3. link. ENVIRONMENT=web,worker: the loader then never touches node's require (emcc 3.1.6 +
+# 4. link. ENVIRONMENT=web,worker: the loader then never touches node's require (emcc 3.1.6 +
 # EXPORT_ES6 breaks there); under Node the caller passes wasmBinary and the loader does not
 # fetch (and, for the threaded module, a Worker over node:worker_threads: web/solver/nodeWorkerShim.ts).
-objects() { for src in "${sources[@]}"; do echo "$objs/$1/$(basename "$src").o"; done; }
+objects() { for u in "${units[@]}"; do echo "$objs/$1/$u.o"; done; }
 link=(-O3 -msimd128
   -sMODULARIZE=1 -sEXPORT_ES6=1 -sEXPORT_NAME=createHairSolver
   -sENVIRONMENT=web,worker

@@ -187,7 +187,7 @@ struct SpineFrames {
   }
 };
 
-float smoothstep(float x) {
+float smoothstepf(float x) {
   x = std::clamp(x, 0.f, 1.f);
   return x * x * (3 - 2 * x);
 }
@@ -229,12 +229,12 @@ void layAlongSpine(const GatheredTail& T, const SpineFrames& F, const Capture& c
       x = A * std::sin(t) + rb * rho * ct;
       y = B * std::sin(2 * t) + rb * rho * st;
       if (S > Lb) {  // the tie, then the loose tail
-        const float loose = kBraidLoose * width(Lb) * rho, w = smoothstep((S - Lb) / kBraidTie);
+        const float loose = kBraidLoose * width(Lb) * rho, w = smoothstepf((S - Lb) / kBraidTie);
         x += (loose * ct - x) * w;
         y += (loose * st - y) * w;
       }
     }
-    const float bl = smoothstep(s / kTailBlend);
+    const float bl = smoothstepf(s / kTailBlend);
     out.push_back(pos + (xq + (x - xq) * bl) * f1 + (yq + (y - yq) * bl) * f2);
   }
 }
@@ -272,7 +272,7 @@ void layBun(const GatheredTail& T, const SpineFrames& F, const Capture& cap, flo
   out.reserve(segs + 1);
   for (size_t j = 0; j <= segs; ++j) {
     const float u = float(j) / float(segs);
-    out.push_back(coil(u) + (1 - smoothstep(u * L / kTailBlend)) * from);
+    out.push_back(coil(u) + (1 - smoothstepf(u * L / kTailBlend)) * from);
   }
 }
 
