@@ -27,7 +27,8 @@ system_packages() {
     # bench: the native build of build/native (its CMake project also configures the tests).
     want cmake cmake
     want ninja ninja-build
-    want g++ g++
+    want g++ g++  # its C++ library; the compiler is clang++-14 (solver-cpp/CMakeLists.txt)
+    want clang++-14 clang-14
     want_file /usr/include/gtest/gtest.h libgtest-dev
   fi
   if [ "$mode" = test ]; then

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 
+#include "random_vector.hpp"
 #include "sphere_mesh.hpp"
 #include "strand_growth.hpp"
 
@@ -51,7 +52,7 @@ TEST(HeadDistance, MatchesTheSpheresDistanceNearTheSurfaceAndItsSignEverywhere) 
       state = state * 6364136223846793005ull + 1442695040888963407ull;
       return double(state >> 11) / double(1ull << 53);
     };
-    const Eigen::Vector3d p(4 * u() - 2, 4 * u() - 2, 4 * u() - 2);
+    const Eigen::Vector3d p = hairsketch_test::drawVector([&](int) { return 4 * u() - 2; });
     const double exact = p.norm() - 1;
     float g[3];
     const float d = hd.distance(float(p.x()), float(p.y()), float(p.z()), g);
@@ -132,7 +133,8 @@ TEST(HeadDistance, MatchesBruteForceBetweenTwoNearlyTouchingParts) {
   };
   int compared = 0;
   for (int t = 0; t < 3000; ++t) {
-    const Eigen::Vector3d p(2.4 * u() - 1.2, 1.2 * u() - 0.6, 1.2 * u() - 0.6);
+    const Eigen::Vector3d p = hairsketch_test::drawVector(
+        [&](int axis) { return axis == 0 ? 2.4 * u() - 1.2 : 1.2 * u() - 0.6; });
     const double da = (p - Eigen::Vector3d(-0.54, 0, 0)).norm() - 0.5;
     const double db = (p - Eigen::Vector3d(0.54, 0.05, 0)).norm() - 0.5;
     // skip where the nearest sphere changes within two cells (the distance has a kink there)

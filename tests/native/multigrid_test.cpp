@@ -15,6 +15,7 @@
 #include "mg_pcg_solver.hpp"
 #include "multigrid_hierarchy.hpp"
 #include "multigrid_transfer.hpp"
+#include "random_vector.hpp"
 
 // Each test file is a namespace of its own: the build compiles several files as one (unity).
 namespace multigrid_test {
@@ -36,11 +37,13 @@ void addStroke(const Grid& g, std::mt19937& rng, int count, std::vector<Constrai
                std::set<int>& used) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
   std::normal_distribution<double> nrm(0.0, 0.25);
-  Eigen::Vector3d p(u(rng) * (g.nx - 1), u(rng) * (g.ny - 1), u(rng) * (g.nz - 1));
-  Eigen::Vector3d d = Eigen::Vector3d(nrm(rng), nrm(rng), nrm(rng)).normalized();
+  Eigen::Vector3d p = hairsketch_test::drawVector([&](int axis) {
+    return u(rng) * ((axis == 0 ? g.nx : axis == 1 ? g.ny : g.nz) - 1);
+  });
+  Eigen::Vector3d d = hairsketch_test::drawVector([&](int) { return nrm(rng); }).normalized();
   int added = 0;
   for (int guard = 0; added < count && guard < 20000; ++guard) {
-    d = (d + 0.5 * Eigen::Vector3d(nrm(rng), nrm(rng), nrm(rng))).normalized();
+    d = (d + 0.5 * hairsketch_test::drawVector([&](int) { return nrm(rng); })).normalized();
     Eigen::Vector3d q = p + 0.7 * d;
     const double hi[3] = {g.nx - 1.001, g.ny - 1.001, g.nz - 1.001};
     for (int a = 0; a < 3; ++a)

@@ -15,6 +15,7 @@
 
 #include "head_distance.hpp"
 #include "mg_pcg_solver.hpp"
+#include "random_vector.hpp"
 #include "sphere_mesh.hpp"
 #include "strand_growth.hpp"
 
@@ -125,11 +126,15 @@ void addWalk(const Grid& g, std::mt19937& rng, int count, std::vector<Constraint
              std::set<int>& used) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
   std::normal_distribution<double> nrm(0.0, 0.3);
-  Eigen::Vector3d p(u(rng) * (g.nx - 1), u(rng) * (g.ny - 1), u(rng) * (g.nz - 1));
-  Eigen::Vector3d d = Eigen::Vector3d(nrm(rng), nrm(rng), 1).normalized();
+  Eigen::Vector3d p = hairsketch_test::drawVector([&](int axis) {
+    return u(rng) * ((axis == 0 ? g.nx : axis == 1 ? g.ny : g.nz) - 1);
+  });
+  Eigen::Vector3d d = hairsketch_test::drawVector([&](int axis) {
+                        return axis == 2 ? 1.0 : nrm(rng);
+                      }).normalized();
   int added = 0;
   for (int guard = 0; added < count && guard < 20000; ++guard) {
-    d = (d + Eigen::Vector3d(nrm(rng), nrm(rng), nrm(rng))).normalized();
+    d = (d + hairsketch_test::drawVector([&](int) { return nrm(rng); })).normalized();
     p += 0.7 * d;
     for (int a = 0; a < 3; ++a) {
       const double hi = (a == 0 ? g.nx : a == 1 ? g.ny : g.nz) - 1.001;

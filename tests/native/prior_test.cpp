@@ -23,6 +23,7 @@
 #include "mg_pcg_solver.hpp"
 #include "multigrid_hierarchy.hpp"
 #include "multigrid_transfer.hpp"
+#include "random_vector.hpp"
 
 // Each test file is a namespace of its own: the build compiles several files as one (unity).
 namespace prior_test {
@@ -47,7 +48,8 @@ ConstraintSet randomSet(const Grid& g, unsigned seed, int count) {
   std::normal_distribution<double> n(0.0, 1.0);
   std::vector<Constraint> raw;
   for (int c = 0; c < count; ++c)
-    raw.push_back({pick(rng), Eigen::Vector3d(n(rng), n(rng), n(rng)).normalized()});
+    raw.push_back(
+        {pick(rng), hairsketch_test::drawVector([&](int) { return n(rng); }).normalized()});
   return normalizeConstraints(raw);
 }
 
@@ -57,7 +59,10 @@ Field randomPrior(const Grid& g, unsigned seed) {
   std::normal_distribution<double> n(0.0, 0.4);
   Field G(g.size(), 3);
   for (int p = 0; p < int(g.size()); ++p)
-    G.row(p) = Eigen::RowVector3d(n(rng), -1.0 + n(rng), n(rng)).normalized();
+    G.row(p) =
+        hairsketch_test::drawVector([&](int axis) { return (axis == 1 ? -1.0 : 0.0) + n(rng); })
+            .normalized()
+            .transpose();
   return G;
 }
 

@@ -10,6 +10,7 @@
 #include "constraints.hpp"
 #include "field_solver.hpp"
 #include "mg_pcg_solver.hpp"
+#include "random_vector.hpp"
 
 // Each test file is a namespace of its own: the build compiles several files as one (unity).
 namespace warm_start_test {
@@ -24,7 +25,8 @@ ConstraintSet randomSet(const Grid& g, unsigned seed, int count) {
   std::normal_distribution<double> n(0.0, 1.0);
   std::vector<Constraint> raw;
   for (int c = 0; c < count; ++c)
-    raw.push_back({pick(rng), Eigen::Vector3d(n(rng), n(rng), n(rng)).normalized()});
+    raw.push_back(
+        {pick(rng), hairsketch_test::drawVector([&](int) { return n(rng); }).normalized()});
   return normalizeConstraints(raw);
 }
 
