@@ -88,6 +88,19 @@ const framableEmbed = (): Plugin => {
   };
 };
 
+/** Unit test files that mock modules or replace globals (see test.projects below). */
+const ISOLATED_TESTS = [
+  'tests/unit/cli.test.ts',
+  'tests/unit/cliGrow.test.ts',
+  'tests/unit/cliGrowFailure.test.ts',
+  'tests/unit/cliGrowHead.test.ts',
+  'tests/unit/cliGrowTimeCap.test.ts',
+  'tests/unit/cliMemoryCap.test.ts',
+  'tests/unit/cliRender.test.ts',
+  'tests/unit/gltfBlender.test.ts',
+  'tests/unit/wasmNative.test.ts',
+];
+
 export default defineConfig({
   plugins: [rawThreadedModule(), framableEmbed()],
   root: 'web',
@@ -112,7 +125,6 @@ export default defineConfig({
   preview: { host: '127.0.0.1', port: 4173, strictPort: false, headers },
   test: {
     root: '.',
-    include: ['tests/unit/**/*.test.ts'],
     // CLI tests run the bundled command line: built here when missing or stale.
     globalSetup: ['tests/unit/cliBundleSetup.ts'],
     environment: 'node',
@@ -121,5 +133,17 @@ export default defineConfig({
     // leaves a core idle whenever the unit tests are all that is left of npm test (160 CPU-s of
     // tests took 135 s on one worker, 84 s on two).
     maxWorkers: Math.max(2, availableParallelism() - 1),
+    // Most test files share a worker's module cache (isolate: false): each file would otherwise
+    // import three.js, the model and the engine afresh. Files that mock modules or replace
+    // globals (vi.mock, vi.stubGlobal, vi.spyOn on process.stdout, directly or through
+    // captureOutput.ts) run isolated, so nothing they change reaches another file.
+    projects: [
+      {
+        extends: true,
+        test: { name: 'unit', include: ['tests/unit/**/*.test.ts'], exclude: ISOLATED_TESTS },
+      },
+      { extends: true, test: { name: 'unit-isolated', include: ISOLATED_TESTS, isolate: true } },
+    ],
+    isolate: false,
   },
 });

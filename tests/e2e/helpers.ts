@@ -19,12 +19,18 @@ export async function status(page: Page): Promise<StatusAttrs> {
   }));
 }
 
-/** Waits until the app is ready and idle with a hair revision past `after`. */
+/** Waits until the app is ready and idle with a hair revision past `after`. Polls every 50 ms:
+ *  polling at every animation frame (Playwright's default) would make an idle page draw frames
+ *  for as long as a solve takes. */
 export async function settled(page: Page, after = -1): Promise<StatusAttrs> {
-  await page.waitForFunction((rev) => {
-    const el = document.querySelector('[data-testid="status"]') as HTMLElement | null;
-    return !!el && el.dataset.state === 'ready' && Number(el.dataset.revision) > rev;
-  }, after);
+  await page.waitForFunction(
+    (rev) => {
+      const el = document.querySelector('[data-testid="status"]') as HTMLElement | null;
+      return !!el && el.dataset.state === 'ready' && Number(el.dataset.revision) > rev;
+    },
+    after,
+    { polling: 50 },
+  );
   await page.evaluate(() => window.hairsketch.idle());
   return status(page);
 }

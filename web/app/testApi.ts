@@ -179,7 +179,8 @@ export function installTestApi(app: TestApiParts): void {
       new Promise<void>((resolve) => {
         const check = () => {
           if (!app.busy() && !viewer.renderPending) resolve();
-          else requestAnimationFrame(check);
+          // a timer, not an animation frame: asking for frames would keep an idle view drawing
+          else setTimeout(check, 16);
         };
         check();
       }),
