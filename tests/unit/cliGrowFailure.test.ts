@@ -23,6 +23,9 @@ vi.mock('../../web/export/writeExport', async (importOriginal) => {
 
 afterEach(() => vi.restoreAllMocks());
 
+/** No progress lines on stderr however slow the machine (progress has its own test). */
+const QUIET = ['--progress-seconds', '100000'];
+
 it('a writer failing after its first chunk leaves no file, exit 1', async () => {
   const err: string[] = [];
   vi.spyOn(process.stderr, 'write').mockImplementation((s) => {
@@ -39,6 +42,7 @@ it('a writer failing after its first chunk leaves no file, exit 1', async () => 
     join(d, 'new.usda'),
     '--strands',
     '20',
+    ...QUIET,
   ]);
   expect(code).toBe(1);
   expect(err.join('')).toBe('hairsketch: the disk caught fire\n');
@@ -47,7 +51,15 @@ it('a writer failing after its first chunk leaves no file, exit 1', async () => 
   writeFileSync(join(d, 'old.usda'), 'old contents');
   err.length = 0;
   expect(
-    await main(['grow', join(d, 's.json'), '--out', join(d, 'old.usda'), '--strands', '20']),
+    await main([
+      'grow',
+      join(d, 's.json'),
+      '--out',
+      join(d, 'old.usda'),
+      '--strands',
+      '20',
+      ...QUIET,
+    ]),
   ).toBe(1);
   expect(readFileSync(join(d, 'old.usda'), 'utf8')).toBe('old contents');
   expect(readdirSync(d).sort()).toEqual(['old.usda', 's.json']);
