@@ -33,7 +33,9 @@ system_packages() {
   fi
   if [ "$mode" = test ]; then
     want clang-format clang-format
-    want_file "${CHROMIUM_PATH:-/usr/bin/chromium}" chromium
+    want_file /usr/bin/chromium chromium  # the CLI's render command (tests/unit/cliRender)
+    # the browser tests' browser (playwright.config.ts)
+    want_file "${CHROMIUM_PATH:-/usr/lib/chromium/chromium-headless-shell}" chromium-headless-shell
     # Debian's Python with venv (ensurepip), for Pixar's USD reader (usd-core) in build/usd-venv
     if ! /usr/bin/python3 -c 'import ensurepip, venv' >/dev/null 2>&1; then
       need_cmd+=("python3 -m venv"); pkgs+=(python3-venv)
