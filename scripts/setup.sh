@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Installs what is missing: Debian packages (when root and apt-get exist) and npm packages.
 # Usage: scripts/setup.sh runtime|test|bench [system|packages]
-#   system: only the Debian packages (what the native and wasm builds need); packages: only npm's
-#   and, for test, Python's. Both when not given. npm test builds while packages install.
+#   system: only the Debian packages the native and wasm builds need; packages: only npm's and,
+#   for test, the browsers (Debian's) and Python's. Both when not given. npm test builds while
+#   the packages part installs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 mode="${1:-runtime}"
@@ -15,33 +16,13 @@ case "$part" in
     ;;
 esac
 
-system_packages() {
-  need_cmd=()   # commands that must exist
-  pkgs=()       # Debian packages providing them
-  want() { if ! command -v "$1" >/dev/null 2>&1; then need_cmd+=("$1"); pkgs+=("$2"); fi; }
-  want_file() { if [ ! -e "$1" ]; then need_cmd+=("$1"); pkgs+=("$2"); fi; }
+need_cmd=()  # commands or files that must exist
+pkgs=()      # Debian packages providing them
+want() { if ! command -v "$1" >/dev/null 2>&1; then need_cmd+=("$1"); pkgs+=("$2"); fi; }
+want_file() { if [ ! -e "$1" ]; then need_cmd+=("$1"); pkgs+=("$2"); fi; }
 
-  want emcc emscripten
-  want_file /usr/include/eigen3/Eigen/Core libeigen3-dev
-  if [ "$mode" = test ] || [ "$mode" = bench ]; then
-    # bench: the native build of build/native (its CMake project also configures the tests).
-    want cmake cmake
-    want ninja ninja-build
-    want g++ g++  # its C++ library; the compiler is clang++-14 (solver-cpp/CMakeLists.txt)
-    want clang++-14 clang-14
-    want_file /usr/include/gtest/gtest.h libgtest-dev
-  fi
-  if [ "$mode" = test ]; then
-    want clang-format clang-format
-    want_file /usr/bin/chromium chromium  # the CLI's render command (tests/unit/cliRender)
-    # the browser tests' browser (playwright.config.ts)
-    want_file "${CHROMIUM_PATH:-/usr/lib/chromium/chromium-headless-shell}" chromium-headless-shell
-    # Debian's Python with venv (ensurepip), for Pixar's USD reader (usd-core) in build/usd-venv
-    if ! /usr/bin/python3 -c 'import ensurepip, venv' >/dev/null 2>&1; then
-      need_cmd+=("python3 -m venv"); pkgs+=(python3-venv)
-    fi
-  fi
-
+# Installs the Debian packages asked for by want/want_file, if any.
+install_wanted() {
   if [ ${#pkgs[@]} -gt 0 ]; then
     # shellcheck disable=SC2207
     uniq_pkgs=($(printf '%s\n' "${pkgs[@]}" | sort -u))
@@ -60,6 +41,38 @@ system_packages() {
       exit 1
     fi
   fi
+  need_cmd=()
+  pkgs=()
+}
+
+# What the builds need (npm test builds while the packages part installs the rest).
+system_packages() {
+  want emcc emscripten
+  want_file /usr/include/eigen3/Eigen/Core libeigen3-dev
+  if [ "$mode" = test ] || [ "$mode" = bench ]; then
+    # bench: the native build of build/native (its CMake project also configures the tests).
+    want cmake cmake
+    want ninja ninja-build
+    want g++ g++  # its C++ library; the compiler is clang++-14 (solver-cpp/CMakeLists.txt)
+    want clang++-14 clang-14
+    want_file /usr/include/gtest/gtest.h libgtest-dev
+  fi
+  if [ "$mode" = test ]; then
+    want clang-format clang-format
+    # Debian's Python with venv (ensurepip), for Pixar's USD reader (usd-core) in build/usd-venv
+    if ! /usr/bin/python3 -c 'import ensurepip, venv' >/dev/null 2>&1; then
+      need_cmd+=("python3 -m venv"); pkgs+=(python3-venv)
+    fi
+  fi
+  install_wanted
+}
+
+# The browsers the tests run, which no build needs.
+browser_packages() {
+  want_file /usr/bin/chromium chromium  # the CLI's render command (tests/unit/cliRender)
+  # the browser tests' browser (playwright.config.ts)
+  want_file "${CHROMIUM_PATH:-/usr/lib/chromium/chromium-headless-shell}" chromium-headless-shell
+  install_wanted
 }
 
 # python_venv DIR CHECK SPEC NOTE: a virtual environment DIR with pip's SPEC in it, made unless
@@ -92,6 +105,7 @@ packages() {
   fi
 
   if [ "$mode" = test ]; then
+    browser_packages
     # Pixar's USD reader checks the .usda export (tests/usd/check_usd.py, run by
     # tests/unit/usdExport.test.ts): usd-core from PyPI in a virtual environment of its own.
     python_venv build/usd-venv 'import pxr.Usd' usd-core ""
