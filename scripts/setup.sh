@@ -69,9 +69,16 @@ system_packages() {
 
 # The browsers the tests run, which no build needs.
 browser_packages() {
-  want_file /usr/bin/chromium chromium  # the CLI's render command (tests/unit/cliRender)
-  # the browser tests' browser (playwright.config.ts)
-  want_file "${CHROMIUM_PATH:-/usr/lib/chromium/chromium-headless-shell}" chromium-headless-shell
+  if [ -n "${CHROMIUM_PATH:-}" ]; then  # a Chromium of your choice runs both
+    if [ ! -x "$CHROMIUM_PATH" ]; then
+      echo "setup: CHROMIUM_PATH=$CHROMIUM_PATH is not an executable; unset it to use Debian's Chromium" >&2
+      exit 1
+    fi
+  else
+    want_file /usr/bin/chromium chromium  # the CLI's render command (tests/unit/cliRender)
+    # the browser tests' browser (playwright.config.ts)
+    want_file /usr/lib/chromium/chromium-headless-shell chromium-headless-shell
+  fi
   install_wanted
 }
 
