@@ -23,7 +23,7 @@ Status inRange(const char* what, double v, double lo, double hi, bool openLo) {
 }  // namespace
 
 Status parseBraidParams(const double* p, size_t count, BraidParams& out) {
-  if (count != kBraidParamCount)
+  if (count != kBraidParamCount && count != kBraidSection)
     return Status::Error(StatusCode::InvalidInput, "a braid has " +
                                                        std::to_string(kBraidParamCount) +
                                                        " parameters, not " + std::to_string(count));
@@ -32,19 +32,25 @@ Status parseBraidParams(const double* p, size_t count, BraidParams& out) {
   if (!(s = inRange("crossings", p[kBraidCrossings], 0, 40, true)).ok()) return s;
   if (!(s = inRange("tightness", p[kBraidTightness], 0, 1, false)).ok()) return s;
   if (!(s = inRange("tail length", p[kBraidTailLength], 0, 20, false)).ok()) return s;
-  out = {p[kBraidWidth], p[kBraidCrossings], p[kBraidTightness], p[kBraidTailLength]};
+  const double section = count > kBraidSection ? p[kBraidSection] : 0;
+  if (section != 0 && section != 1)
+    return Status::Error(StatusCode::InvalidInput, "braid section must be 0 or 1");
+  out = {p[kBraidWidth], p[kBraidCrossings], p[kBraidTightness], p[kBraidTailLength], section != 0};
   return Status::Ok();
 }
 
 Status parseBunParams(const double* p, size_t count, BunParams& out) {
-  if (count != kBunParamCount)
+  if (count != kBunParamCount && count != kBunSection)
     return Status::Error(StatusCode::InvalidInput, "a bun has " + std::to_string(kBunParamCount) +
                                                        " parameters, not " + std::to_string(count));
   Status s;
   if (!(s = inRange("radius", p[kBunRadius], 0, 2, false)).ok()) return s;
   if (!(s = inRange("height", p[kBunHeight], 0, 2, true)).ok()) return s;
   if (!(s = inRange("turns", p[kBunTurns], 0, 10, true)).ok()) return s;
-  out = {p[kBunRadius], p[kBunHeight], p[kBunTurns]};
+  const double section = count > kBunSection ? p[kBunSection] : 0;
+  if (section != 0 && section != 1)
+    return Status::Error(StatusCode::InvalidInput, "bun section must be 0 or 1");
+  out = {p[kBunRadius], p[kBunHeight], p[kBunTurns], section != 0};
   return Status::Ok();
 }
 

@@ -47,16 +47,19 @@ struct BraidParams {
   double crossings = 6;    // c, per world unit (10 cm)
   double tightness = 0.5;  // tau
   double tailLength = 0.4;
+  bool section = false;  // gathers its whole scalp section (gathered_tail.hpp)
 };
 
 struct BunParams {
   double radius = 0;  // R; 0 = the loop's size
   double height = 0.35;
   double turns = 2.5;
+  bool section = false;  // gathers its whole scalp section (gathered_tail.hpp)
 };
 
 // Limits (the strict reader's too): width in (0, 3], crossings in (0, 40], tightness in [0, 1],
-// tail length in [0, 20]; radius in [0, 2], height in (0, 2], turns in (0, 10].
+// tail length in [0, 20]; radius in [0, 2], height in (0, 2], turns in (0, 10]; section 0 or 1
+// (optional, last: a block without it reads as 0).
 Status parseBraidParams(const double* params, size_t count, BraidParams& out);
 Status parseBunParams(const double* params, size_t count, BunParams& out);
 

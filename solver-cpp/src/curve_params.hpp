@@ -22,21 +22,31 @@ enum DividingParam : size_t {
 };
 
 // Ponytails (S4.6): tightness (centripetal magnitude), gather (the constraint version: 0 the
-// paper's thin tubes and ring, 1 the gathered tail; ponytail_constraints.hpp). Then the circle
-// count m and 7 per circle. gather is optional: a block without it (the layout before gather
-// existed: tightness, m, 7 m) reads as gather = 0; the two layouts differ in size mod 7.
-enum PonytailParam : size_t { kPonytailTightness, kPonytailGather, kPonytailParamCount };
+// paper's thin tubes and ring, 1 the gathered tail; ponytail_constraints.hpp), section (1: the
+// tie gathers its whole scalp section, scalp_sections.hpp; 0: the hair that reaches it). Then
+// the circle count m and 7 per circle. gather and section are optional: a block without them
+// (tightness, m, 7 m) reads as gather = 0, one with gather alone (tightness, gather, m, 7 m) as
+// section = 0; the three layouts differ in size mod 7.
+enum PonytailParam : size_t {
+  kPonytailTightness,
+  kPonytailGather,
+  kPonytailSection,
+  kPonytailParamCount
+};
 
-// Braids (braid_bun.hpp): width, crossings per unit length, tightness, tail length. No block.
+// Braids (braid_bun.hpp): width, crossings per unit length, tightness, tail length, section
+// (as a ponytail's; optional: a block without it reads as 0). No block.
 enum BraidParam : size_t {
   kBraidWidth,
   kBraidCrossings,
   kBraidTightness,
   kBraidTailLength,
+  kBraidSection,
   kBraidParamCount
 };
 
-// Buns (braid_bun.hpp): radius (0: the drawn loop's size), height, turns. No block.
-enum BunParam : size_t { kBunRadius, kBunHeight, kBunTurns, kBunParamCount };
+// Buns (braid_bun.hpp): radius (0: the drawn loop's size), height, turns, section (as a
+// braid's). No block.
+enum BunParam : size_t { kBunRadius, kBunHeight, kBunTurns, kBunSection, kBunParamCount };
 
 }  // namespace hairsketch

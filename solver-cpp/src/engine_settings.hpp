@@ -11,6 +11,7 @@ namespace hairsketch {
 enum EngineSetting : size_t {
   kSettingAvoidScalp,  // read by the worker (scalp avoidance), not by the engine
   kSettingFall,        // natural fall (HairEngine::setFall)
+  kSettingSections,    // ties may gather their whole scalp section (HairEngine::setSections)
   kEngineSettingCount
 };
 

@@ -1,9 +1,11 @@
 #include "gathered_tail.hpp"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <numeric>
 
+#include "head_distance.hpp"
 #include "ponytail_constraints.hpp"
 #include "rng.hpp"
 
@@ -95,9 +97,10 @@ struct Capture {
   uint32_t strand;
   uint32_t keep;  // points kept (the root .. the point before the crossing)
   Eigen::Vector3f q;
-  float remaining;  // the strand's length after q
-  float before;     // its length up to q
-  float s0;         // arc length along the spine where q is
+  float remaining;      // the strand's length after q
+  float before;         // its length up to q
+  float s0;             // arc length along the spine where q is
+  bool combed = false;  // taken by a whole-section tie: laid anew from its root (q = the root)
 };
 
 // The spine with a frame at every point, transported without twist.
@@ -194,10 +197,77 @@ float smoothstepf(float x) {
 
 constexpr float kTwoPi = 6.28318530717958647692f;
 
-// Round and braided tails: the strand follows the spine from its capture at its seat's offset.
+// A point put `lift` off the head (outside it) along the head's distance gradient, or on the
+// sphere about the centre through `onSphere` when there is no head.
+Eigen::Vector3f offHead(const SectionGather& g, Eigen::Vector3f x, float lift, float sphere) {
+  if (!g.head) return g.centre + (x - g.centre).normalized() * (sphere + lift);
+  for (int it = 0; it < 3; ++it) {
+    float dir[3];
+    const float d = g.head->outward(x.data(), dir);
+    x += (lift - d) * Eigen::Vector3f(dir[0], dir[1], dir[2]);
+  }
+  return x;
+}
+
+// A whole-section strand's way from its root over the scalp to the foot of its seat point P,
+// then up to P (gathered_tail.hpp); out gets the points after the root, up to P. Returns the
+// path's length.
+float combPath(const SectionGather& g, const Eigen::Vector3f& root, const Eigen::Vector3f& P,
+               float lambda, float step, size_t maxPoints, std::vector<Eigen::Vector3f>& out) {
+  const Eigen::Vector3f c = g.centre;
+  const float sphere = (root - c).norm();
+  const Eigen::Vector3f foot = offHead(g, P, g.margin, sphere);
+  const float ra = (root - c).norm(), rb = (foot - c).norm();
+  const Eigen::Vector3f a = (root - c).normalized(), b = (foot - c).normalized();
+  const float ang = std::acos(std::clamp(a.dot(b), -1.f, 1.f));
+  Eigen::Vector3f axis = a.cross(b);
+  if (!(axis.norm() > 1e-5f)) axis = a.cross(Eigen::Vector3f::UnitY());
+  if (!(axis.norm() > 1e-5f)) axis = a.cross(Eigen::Vector3f::UnitX());
+  axis.normalize();
+  const float arc = ang * 0.5f * (ra + rb) + (P - foot).norm();
+  const float ds = std::max(step, arc / float(std::max<size_t>(maxPoints, 2)));
+  const size_t n = std::max<size_t>(1, size_t(std::ceil(ang * 0.5f * (ra + rb) / ds)));
+  const float top = kCombLift * lambda;
+  Eigen::Vector3f prev = root;
+  float length = 0;
+  for (size_t i = 1; i <= n; ++i) {
+    const float t = float(i) / float(n);
+    const Eigen::Vector3f d = Eigen::AngleAxisf(t * ang, axis) * a;
+    const Eigen::Vector3f x =
+        offHead(g, c + d * (ra + t * (rb - ra)), g.margin + top * smoothstepf(t), sphere);
+    length += (x - prev).norm();
+    out.push_back(x);
+    prev = x;
+  }
+  const size_t up = size_t(std::ceil((P - prev).norm() / ds));
+  const Eigen::Vector3f from = prev;
+  for (size_t i = 1; i <= up; ++i) {
+    const Eigen::Vector3f x = from + (P - from) * (float(i) / float(up));
+    length += (x - prev).norm();
+    out.push_back(x);
+    prev = x;
+  }
+  return length;
+}
+
+// A seat's offset in the spine's frame at arc length S (as layAlongSpine lays it).
+Eigen::Vector2f seatOffset(const GatheredTail& T, float S, float rad, float theta, float rho,
+                           int bundle) {
+  const float ct = std::cos(theta), st = std::sin(theta);
+  if (T.shape != TailShape::Braid) return Eigen::Vector2f(rho * ct * rad, rho * st * rad);
+  const float Lb = T.braidLength, tau = float(T.braid.tightness);
+  const float f = Lb > 0 ? std::clamp(S / Lb, 0.f, 1.f) : 1.f;
+  const float W = float(T.braid.width) * (1 - 0.4f * f), rb = W * kBraidBundle;
+  const float A = W / 2 - rb, B = rb * (1.5f - 0.8f * tau);
+  const float t = kTwoPi * (S / float(6.0 / T.braid.crossings) + float(bundle) / 3);
+  return Eigen::Vector2f(A * std::sin(t) + rb * rho * ct, B * std::sin(2 * t) + rb * rho * st);
+}
+
+// Round and braided tails: the strand follows the spine from its capture at its seat's offset
+// (seated: from its seat at once, q being the seat's point).
 void layAlongSpine(const GatheredTail& T, const SpineFrames& F, const Capture& cap, float theta,
                    float rho, int bundle, float step, size_t room,
-                   std::vector<Eigen::Vector3f>& out) {
+                   std::vector<Eigen::Vector3f>& out, bool seated = false) {
   const bool braid = T.shape == TailShape::Braid;
   const float period = braid ? float(6.0 / T.braid.crossings) : 0.f;
   // a braid's period gets at least 16 points where the cap allows
@@ -234,7 +304,7 @@ void layAlongSpine(const GatheredTail& T, const SpineFrames& F, const Capture& c
         y += (loose * st - y) * w;
       }
     }
-    const float bl = smoothstepf(s / kTailBlend);
+    const float bl = seated ? 1.f : smoothstepf(s / kTailBlend);
     out.push_back(pos + (xq + (x - xq) * bl) * f1 + (yq + (y - yq) * bl) * f2);
   }
 }
@@ -242,13 +312,16 @@ void layAlongSpine(const GatheredTail& T, const SpineFrames& F, const Capture& c
 // A bun: the strand coils round the axis from its seat angle, over the dome, then tucks under.
 void layBun(const GatheredTail& T, const SpineFrames& F, const Capture& cap, float theta, float rho,
             float step, size_t room, float maxLength, std::vector<Eigen::Vector3f>& out) {
-  const float R = T.bunRadius, H = float(T.bun.height), K = float(T.bun.turns);
+  const float R = T.bunRadius, H = float(T.bun.height), Kp = float(T.bun.turns);
   const float shell = R * (0.45f + 0.55f * rho);
   // the hair's budget after q (the field walk stops at the bun's top), up to a full coil
   const float budget = maxLength > 0 ? maxLength - cap.before : cap.remaining;
-  const float full = 0.8f * kTwoPi * K * shell + 0.5f * H;
-  const float L = std::max(std::min(std::max(budget, cap.remaining), full), 1e-4f);
-  // K turns round the dome are about 0.8 (2 pi r K) long: short hair coils tighter
+  const float full = 0.8f * kTwoPi * Kp * shell + 0.5f * H;
+  const float L0 = std::max(std::min(std::max(budget, cap.remaining), full), 1e-4f);
+  // K turns round the dome are about 0.8 (2 pi r K) long: short hair coils tighter, or (a
+  // whole-section bun, whose size is its hair's) winds fewer turns
+  const float K = T.section ? std::min(Kp, std::max(0.5f, L0 / (0.8f * kTwoPi * shell))) : Kp;
+  const float L = T.section ? std::min(L0, 0.8f * kTwoPi * K * shell + 0.5f * H) : L0;
   const float r0 = std::min(shell, L / (0.8f * kTwoPi * K));
   const size_t segs =
       std::min(room, std::max<size_t>({1, size_t(std::ceil(L / step)), size_t(std::ceil(16 * K))}));
@@ -276,28 +349,145 @@ void layBun(const GatheredTail& T, const SpineFrames& F, const Capture& cap, flo
   }
 }
 
+// A whole-section strand: combed over the scalp to its seat, then laid as its tail lays hair.
+void layCombed(const GatheredTail& T, const SpineFrames& F, const SectionGather& g,
+               const Capture& cap, float theta, float rho, int bundle, float lambda, float u,
+               float step, size_t room, float maxLength, std::vector<Eigen::Vector3f>& out) {
+  // the seat's point on C1's plane (a bun: on its base circle)
+  Eigen::Vector3f seat;
+  if (T.shape == TailShape::Bun) {
+    const float shell = T.bunRadius * (0.45f + 0.55f * rho);
+    seat = T.bunCentre + shell * (std::cos(theta) * F.e1[0] + std::sin(theta) * F.e2[0]);
+  } else {
+    const Eigen::Vector2f o = seatOffset(T, 0, F.r[0], theta, rho, bundle);
+    seat = F.p[0] + o.x() * F.e1[0] + o.y() * F.e2[0];
+  }
+  std::vector<Eigen::Vector3f> path;
+  const float way = combPath(g, cap.q, seat, lambda, step, room / 2, path);
+  const float L = cap.remaining;              // the hair's whole length
+  if (way >= L || path.size() + 1 >= room) {  // too short to reach the tie: combed towards it
+    float walked = 0;
+    Eigen::Vector3f prev = cap.q;
+    for (const Eigen::Vector3f& x : path) {
+      const float d = (x - prev).norm();
+      if (walked + d > L || out.size() + 1 >= room) {
+        if (d > 0 && out.size() + 1 < room) out.push_back(prev + (x - prev) * ((L - walked) / d));
+        break;
+      }
+      walked += d;
+      out.push_back(x);
+      prev = x;
+    }
+    if (out.empty()) out.push_back(cap.q);
+    return;
+  }
+  out = path;
+  Capture tail = cap;
+  tail.q = seat;
+  tail.before = way;
+  tail.s0 = 0;
+  // a tail ends at its spine's end, less a seeded 0-8 % (ends not cut straight), unless it grows on
+  tail.remaining = L - way;
+  if (!T.growsOn) tail.remaining = std::min(tail.remaining, F.s.back() * (1 - 0.08f * u));
+  std::vector<Eigen::Vector3f> laid;
+  const size_t left = room - path.size();
+  if (T.shape == TailShape::Bun)
+    layBun(T, F, tail, theta, rho, step, left, maxLength, laid);
+  else
+    layAlongSpine(T, F, tail, theta, rho, bundle, step, left, laid, true);
+  out.insert(out.end(), laid.begin() + (laid.empty() ? 0 : 1), laid.end());
+}
+
 }  // namespace
+
+float sectionTailRadius(float share) { return kTailRadius * std::sqrt(std::max(share, 0.f)); }
+
+float sectionBunRadius(float share, float lengthAfterTie) {
+  // The hair's volume: a full head's tail (kTailRadius) times its length, coiled into a dome of
+  // radius R and height 0.6 R whose strands lie a little looser: R = 0.63 (A L)^(1/3) in
+  // centimetres, 4.5 cm for a whole head of 30 cm of hair past the tie.
+  const float areaCm2 = 3.14159265f * 400 * kTailRadius * kTailRadius * std::max(share, 0.f);
+  const float cm = 0.63f * std::cbrt(areaCm2 * 10 * std::max(lengthAfterTie, 0.f));
+  return cm / 10;
+}
 
 TailStats gatherTails(const std::vector<GatheredTail>& tails,
                       const std::vector<Eigen::Vector3f>& roots, const std::vector<uint32_t>& key,
                       uint64_t seed, float step, size_t maxPoints, Strands& strands,
-                      float maxLength) {
+                      float maxLength, const SectionGather* sections) {
   TailStats stats;
   const size_t nS = strands.strandStart.empty() ? 0 : strands.strandStart.size() - 1;
   if (tails.empty() || nS == 0 || !(step > 0)) return stats;
+  const float* P = strands.points.data();
+  auto point = [&](uint32_t p) { return Eigen::Vector3f(P[3 * p], P[3 * p + 1], P[3 * p + 2]); };
+  auto grownLength = [&](size_t st) {
+    float len = 0;
+    for (uint32_t p = strands.strandStart[st] + 1; p < strands.strandStart[st + 1]; ++p)
+      len += (point(p) - point(p - 1)).norm();
+    return len;
+  };
+  // whole-section ties: their strands, and their size from the hair they hold
+  const bool bySection = sections && sections->assigned.size() == nS;
+  auto sectionTie = [&](size_t st) {
+    const int32_t k = bySection ? sections->assigned[st] : -1;
+    return k >= 0 && size_t(k) < tails.size() && tails[size_t(k)].section ? k : -1;
+  };
+  auto hairLength = [&](size_t st) {
+    return maxLength > 0 && maxLength < 1e5f ? maxLength : grownLength(st);
+  };
+  std::vector<GatheredTail> T(tails);
+  {
+    std::vector<size_t> held(tails.size(), 0);
+    std::vector<double> after(tails.size(), 0);
+    for (size_t st = 0; st < nS; ++st) {
+      const int32_t k = sectionTie(st);
+      if (k < 0) continue;
+      ++held[size_t(k)];
+      const float way = 1.2f * (roots[st] - tails[size_t(k)].anchor).norm();
+      after[size_t(k)] += std::max(0.f, hairLength(st) - way);
+    }
+    for (size_t k = 0; k < T.size(); ++k) {
+      if (!T[k].section || held[k] == 0) continue;
+      const float share = float(held[k]) / float(nS);
+      GatheredTail& t = T[k];
+      if (t.shape == TailShape::Bun) {
+        t.bunRadius = std::max(t.bunRadius, sectionBunRadius(share, float(after[k] / held[k])));
+        t.bun.height = std::max(t.bun.height, 0.6 * t.bunRadius);
+      } else if (t.shape == TailShape::Braid) {
+        t.braid.width = std::max(t.braid.width, 3.0 * double(sectionTailRadius(share)));
+      } else {
+        float arc = 0, total = 0;
+        for (size_t i = 1; i < t.spine.size(); ++i) total += (t.spine[i] - t.spine[i - 1]).norm();
+        const float tie = kTieRadius * std::sqrt(share), body = sectionTailRadius(share);
+        for (size_t i = 0; i < t.spine.size(); ++i) {
+          if (i > 0) arc += (t.spine[i] - t.spine[i - 1]).norm();
+          const float hold = tie + (body - tie) * smoothstepf(arc / kTailBlend);
+          const float spread =
+              total > 0 ? 1 + 0.3f * smoothstepf((arc - 0.7f * total) / (0.3f * total)) : 1.f;
+          t.radius[i] = std::max(t.radius[i], hold) * spread;
+        }
+      }
+    }
+  }
   std::vector<SpineFrames> frames;
-  for (const GatheredTail& t : tails) frames.emplace_back(t);
+  for (const GatheredTail& t : T) frames.emplace_back(t);
   // capture: the first crossing of a C1 plane near its axis, or the first point beside a body
   std::vector<std::vector<Capture>> caught(tails.size());
-  const float* P = strands.points.data();
   for (size_t st = 0; st < nS; ++st) {
     const uint32_t a = strands.strandStart[st], b = strands.strandStart[st + 1];
+    if (const int32_t k = sectionTie(st); k >= 0) {
+      Capture cap{uint32_t(st), 1, roots[st], hairLength(st), 0, 0};
+      cap.combed = true;
+      caught[size_t(k)].push_back(cap);
+      continue;
+    }
     int tail = -1;
     uint32_t at = b;  // the first point after q
     Eigen::Vector3f q;
     float s0 = 0;
     uint32_t keep = 0;  // points before q
     for (size_t k = 0; k < tails.size(); ++k) {
+      if (tails[k].section) continue;  // takes its section's hair alone
       const SpineFrames& F = frames[k];
       const Eigen::Vector3f c = F.p[0], ax = tails[k].axis;
       const float capture =
@@ -384,7 +574,9 @@ TailStats gatherTails(const std::vector<GatheredTail>& tails,
       }
     }
     const float theta0 = angle[byAngle[first]];
-    const GatheredTail& T = tails[k];
+    const GatheredTail& Tk = T[k];
+    std::vector<float> distRank(N, 0.f);
+    for (size_t j = 0; j < N; ++j) distRank[byDist[j]] = (float(j) + 0.5f) / float(N);
     auto jitter = [&](uint32_t m) {
       Pcg32 rng(seed ^ (uint64_t(key[cs[m].strand]) * 0x9e3779b97f4a7c15ULL), 0x7a11ULL);
       return float(rng.uniform());
@@ -392,7 +584,7 @@ TailStats gatherTails(const std::vector<GatheredTail>& tails,
     // seats: an angle theta and a radius rho in the unit disc (for a braid, in its bundle's)
     std::vector<float> theta(N), rho(N);
     std::vector<uint8_t> bundle(N, 0);
-    if (T.shape == TailShape::Braid) {
+    if (Tk.shape == TailShape::Braid) {
       std::vector<std::vector<uint32_t>> members(3);
       for (size_t i = 0; i < N; ++i) {
         const uint32_t m = byAngle[(first + i) % N];
@@ -419,10 +611,14 @@ TailStats gatherTails(const std::vector<GatheredTail>& tails,
       const size_t room = maxPoints > cap.keep + 1 ? maxPoints - cap.keep - 1 : 0;
       if (room == 0) continue;
       std::vector<Eigen::Vector3f>& out = laid[cap.strand];
-      if (T.shape == TailShape::Bun)
-        layBun(T, F, cap, theta[i], rho[i], step, room, maxLength, out);
-      else
-        layAlongSpine(T, F, cap, theta[i], rho[i], bundle[i], step, room, out);
+      if (cap.combed) {
+        layCombed(Tk, F, *sections, cap, theta[i], rho[i], bundle[i], distRank[i],
+                  jitter(uint32_t(i)), step, room, maxLength, out);
+      } else if (Tk.shape == TailShape::Bun) {
+        layBun(Tk, F, cap, theta[i], rho[i], step, room, maxLength, out);
+      } else {
+        layAlongSpine(Tk, F, cap, theta[i], rho[i], bundle[i], step, room, out);
+      }
       isLaid[cap.strand] = 1;
       laidBy[cap.strand] = uint32_t(k);
       ++stats.captured;

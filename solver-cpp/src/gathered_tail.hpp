@@ -30,6 +30,20 @@
 //     interpolated along the spine (r_m past C_m), o_q the crossing's own offset in that frame.
 //     It keeps the length it had after q (so hair still ends where its curve ends), sampled at
 //     the growth step, within the strand's point budget.
+//
+// Whole sections (a tie with `section` set, scalp_sections.hpp): the tie takes every strand the
+// caller assigns it, whatever path the field gave it. Such a strand is laid anew from its root:
+//   Combed: from the root over the scalp to the foot of its seat (the head's point nearest
+//     P = c_1 + rho' r_1 (cos theta E1 + sin theta E2), its seat on C1's plane): directions from
+//     the head's centre slerped from the root's to the foot's, each point put at
+//     margin + kCombLift lambda smoothstep(t) off the head (lambda the root's distance rank:
+//     hair from farther away lies on top), then straight up to P.
+//   Tail: from P along the spine as above, the circles' radii scaled so the tail holds its hair
+//     (at least sectionTailRadius at the tie, its 1 2/3 below it, spreading by up to 30 % over
+//     the last 30 % of the spine), its length what the hair has left (maxLength less the combed
+//     path), ending at the spine's end (less a seeded 0-8 % so the ends are not cut straight)
+//     unless the curve lets it grow on. A bun's radius is at least sectionBunRadius and its
+//     height 0.6 of it; its strands wind as many turns (up to K) as their length allows.
 #pragma once
 
 #include <Eigen/Core>
@@ -66,6 +80,10 @@ struct GatheredTail {
   float bunRadius = 0;
   // A round tail's or braid's hair ends at the spine's end unless its curve lets hair grow on.
   bool growsOn = false;
+  // Gathers its whole scalp section (see "Whole sections" above); anchor: where it meets the
+  // head (the scalp point nearest C1's centre).
+  bool section = false;
+  Eigen::Vector3f anchor = Eigen::Vector3f::Zero();
 };
 
 // The tail of a gathered ponytail: spine = the curve's points from the one nearest C1's centre
@@ -80,6 +98,26 @@ GatheredTail braidTail(const double* spine, size_t pointCount, size_t gather,
 // A bun's tail: its two circles as the spine, laid as a coil.
 GatheredTail bunTail(const BunFrame& frame, const BunParams& params);
 
+class HeadDistance;
+
+// Whole sections: which tie each strand belongs to (assigned[s]: an index in `tails` of a tail
+// with section set, or -1), and the head the combed hair lies on.
+struct SectionGather {
+  std::vector<int32_t> assigned;
+  const HeadDistance* head = nullptr;  // null: the hair is combed over the sphere about centre
+  Eigen::Vector3f centre = Eigen::Vector3f::Zero();
+  float margin = 0.02f;  // kept off the head, world units
+};
+
+// The radius of a round tail at its tie and in its body, and a bun's, for a tie holding `share`
+// of the whole head's hair (a full head: kTieRadius, kTailRadius), world units. A bun's radius
+// also grows with the length of hair it coils (lengthAfterTie, world units).
+constexpr float kTieRadius = 0.12f;  // 1.2 cm: the whole head's hair held by a band
+constexpr float kTailRadius = 0.2f;  // 2 cm: the same hair hanging below it
+constexpr float kCombLift = 0.07f;   // 7 mm: the top layer of combed hair over the scalp
+float sectionTailRadius(float share);
+float sectionBunRadius(float share, float lengthAfterTie);
+
 struct TailStats {
   size_t captured = 0;            // strands laid into a tail
   std::vector<uint32_t> strands;  // which, in increasing order
@@ -91,9 +129,11 @@ struct TailStats {
 // maxPoints caps a strand's points. maxLength (world units; 0: unknown) is the hair's length
 // budget: a bun's strand coils up to it (the field walk ends at the bun's top). Strands that no
 // tail captures are left bit-identical.
+// sections (may be null) names the strands whole-section ties take; no other tail captures
+// them, and a whole-section tie captures no other strand.
 TailStats gatherTails(const std::vector<GatheredTail>& tails,
                       const std::vector<Eigen::Vector3f>& roots, const std::vector<uint32_t>& key,
                       uint64_t seed, float step, size_t maxPoints, Strands& strands,
-                      float maxLength = 0);
+                      float maxLength = 0, const SectionGather* sections = nullptr);
 
 }  // namespace hairsketch

@@ -177,6 +177,7 @@ Status HairEngine::setSettings(const double* values, size_t count) {
     if (!std::isfinite(values[k]))
       return Status::Error(StatusCode::NonFinite,
                            "settings: value " + std::to_string(k) + " is not finite");
+  setSections(values[kSettingSections] != 0);
   return setFall(values[kSettingFall] != 0);
 }
 
@@ -227,6 +228,7 @@ Status HairEngine::setCurves(const CurveSetView& curves) {
         if (!parsePonytailParams(prm, pb - pa, pp).ok() || pp.gather != 1) continue;
         nextTails.push_back(gatheredTail(pts, b - a, pp));
         nextTails.back().growsOn = curves.extend && curves.extend[c] != 0;
+        nextTails.back().section = pp.section;
         nextTailCurves.push_back(int32_t(c));
       } else if (kind == CurveKindCode::Braid) {
         BraidParams bp;
@@ -236,14 +238,40 @@ Status HairEngine::setCurves(const CurveSetView& curves) {
         nextTails.push_back(braidTail(pts, b - a, gather, bp,
                                       headDistance_.built() ? away : Eigen::Vector3f::Zero()));
         nextTails.back().growsOn = curves.extend && curves.extend[c] != 0;
+        nextTails.back().section = bp.section;
         nextTailCurves.push_back(int32_t(c));
       } else if (kind == CurveKindCode::Bun) {
         BunParams bp;
         if (!parseBunParams(prm, pb - pa, bp).ok()) continue;
         nextTails.push_back(bunTail(bunFrame(pts, b - a, bp, withHead.headCentre), bp));
+        nextTails.back().section = bp.section;
         nextTailCurves.push_back(int32_t(c));
       }
     }
+  // partings: the dividing curves, which bound the scalp's sections
+  std::vector<std::vector<Eigen::Vector3f>> nextPartings;
+  if (curves.kinds && curves.curveStart && curves.points)
+    for (size_t c = 0; c < curves.curveCount; ++c) {
+      const size_t a = curves.curveStart[c], b = curves.curveStart[c + 1];
+      if (CurveKindCode(curves.kinds[c]) != CurveKindCode::Dividing || b <= a ||
+          b > curves.pointCount)
+        continue;
+      std::vector<Eigen::Vector3f>& line = nextPartings.emplace_back();
+      for (size_t k = a; k < b; ++k)
+        line.emplace_back(float(curves.points[3 * k]), float(curves.points[3 * k + 1]),
+                          float(curves.points[3 * k + 2]));
+    }
+  // where each tie meets the head: the head point nearest its first circle's centre
+  for (GatheredTail& t : nextTails) {
+    Eigen::Vector3f x = t.shape == TailShape::Bun ? t.bunCentre : t.spine.front();
+    if (headDistance_.built())
+      for (int it = 0; it < 3; ++it) {
+        float dir[3];
+        const float d = headDistance_.outward(x.data(), dir);
+        x -= d * Eigen::Vector3f(dir[0], dir[1], dir[2]);
+      }
+    t.anchor = x;
+  }
   if (fall_) {
     // The reach of stream curves, ponytail spines and braids ends their hair, in place of the
     // fading extension; "extend" means the curve's hair grows on.
@@ -302,6 +330,7 @@ Status HairEngine::setCurves(const CurveSetView& curves) {
   colours_ = std::move(nextColours);
   tails_ = std::move(nextTails);
   tailCurves_ = std::move(nextTailCurves);
+  partings_ = std::move(nextPartings);
   fieldValid_ = false;
   return Status::Ok();
 }
@@ -397,9 +426,42 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
   strandTailCurve_.assign(n, -1);
   if (s.ok() && !tails_.empty()) {
     // laid strands keep to the 255 points engines take (detail's cap too)
-    const TailStats ts = gatherTails(tails_, R, key, rp.seed, float(gp.stepFraction * grid_.step),
-                                     std::min<size_t>(size_t(std::max(gp.maxSegments, 1)) + 1, 255),
-                                     strands_, float(std::min(gp.maxLength, 1e6)));
+    // whole-section ties (with sections on): each strand goes to the nearest such tie in its
+    // root's section; without sections every tie takes the hair that reaches it
+    std::vector<GatheredTail> tails = tails_;
+    SectionGather sg;
+    bool bySection = false;
+    for (GatheredTail& t : tails) {
+      t.section = t.section && sections_;
+      bySection |= t.section;
+    }
+    if (bySection) {
+      ScalpSections sections;
+      sections.build(roots_, centre_.cast<float>(), partings_);
+      std::vector<int> tieSection(tails.size(), -1);
+      for (size_t k = 0; k < tails.size(); ++k)
+        if (tails[k].section) tieSection[k] = sections.section(tails[k].anchor);
+      sg.assigned.assign(n, -1);
+      for (size_t st = 0; st < n; ++st) {
+        const int here = sections.section(R[st]);
+        float best = std::numeric_limits<float>::infinity();
+        for (size_t k = 0; k < tails.size(); ++k) {
+          if (tieSection[k] != here) continue;
+          const float d = (R[st] - tails[k].anchor).squaredNorm();
+          if (d < best) {
+            best = d;
+            sg.assigned[st] = int32_t(k);
+          }
+        }
+      }
+      sg.head = head;
+      sg.centre = centre_.cast<float>();
+      sg.margin = float(gp.margin);
+    }
+    const TailStats ts =
+        gatherTails(tails, R, key, rp.seed, float(gp.stepFraction * grid_.step),
+                    std::min<size_t>(size_t(std::max(gp.maxSegments, 1)) + 1, 255), strands_,
+                    float(std::min(gp.maxLength, 1e6)), bySection ? &sg : nullptr);
     for (size_t i = 0; i < ts.strands.size(); ++i)
       strandTailCurve_[ts.strands[i]] = tailCurves_[ts.tail[i]];
     // growth kept the rest outside already

@@ -17,6 +17,7 @@
 #include "head_distance.hpp"
 #include "scalp_avoidance.hpp"
 #include "scalp_roots.hpp"
+#include "scalp_sections.hpp"
 #include "status.hpp"
 #include "strand_detail.hpp"
 #include "strand_growth.hpp"
@@ -51,6 +52,12 @@ class HairEngine {
   // nothing changes.
   Status setSettings(const double* values, size_t count);
   bool fall() const { return fall_; }
+  // Sections (scalp_sections.hpp): a tie whose parameters ask for it gathers every strand rooted
+  // in its scalp section (gathered_tail.hpp "Whole sections"); off (the default), every tie
+  // takes the hair that reaches it, as sessions made before sections did. Takes effect at the
+  // next grow.
+  void setSections(bool on) { sections_ = on; }
+  bool sections() const { return sections_; }
   // Curves -> constraints -> solver (the solver diffs against its previous set).
   Status setCurves(const CurveSetView& curves);
   Status solve();
@@ -138,6 +145,8 @@ class HairEngine {
   std::vector<std::pair<uint64_t, CurveFootprint>> footprints_;  // by a hash of each curve
   std::vector<GatheredTail> tails_;  // the gathered ponytails of the last setCurves (with fall)
   std::vector<int32_t> tailCurves_;  // the curve of each of tails_
+  bool sections_ = false;
+  std::vector<std::vector<Eigen::Vector3f>> partings_;  // the dividing curves of the last setCurves
   Status applyPrior();
   Status zeroField();
 };

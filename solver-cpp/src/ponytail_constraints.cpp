@@ -46,9 +46,11 @@ CircleCoords circleCoords(const PonytailCircle& c, const Eigen::Vector3d& q, dou
 }  // namespace
 
 Status parsePonytailParams(const double* p, size_t count, PonytailParams& out) {
-  // The layout (ponytail_constraints.hpp): 2 + 7 m numbers without gather, 3 + 7 m with it.
-  static_assert(kPonytailTightness == 0 && kPonytailGather == 1 && kPonytailParamCount == 2,
-                "the two ponytail layouts below assume tightness, gather");
+  // The layout (curve_params.hpp): 2 + 7 m numbers without gather, 3 + 7 m with it, 4 + 7 m with
+  // gather and section.
+  static_assert(kPonytailTightness == 0 && kPonytailGather == 1 && kPonytailSection == 2 &&
+                    kPonytailParamCount == 3,
+                "the three ponytail layouts below assume tightness, gather, section");
   if (count < 2)
     return Status::Error(
         StatusCode::InvalidInput,
@@ -58,8 +60,9 @@ Status parsePonytailParams(const double* p, size_t count, PonytailParams& out) {
     if (!std::isfinite(p[i]))
       return Status::Error(StatusCode::NonFinite,
                            "ponytail parameter " + std::to_string(i) + " is not finite");
-  const bool hasGather = count >= 3 && (count - 3) % 7 == 0;
-  const size_t S = hasGather ? 2 : 1;  // scalars, then the circle count m
+  const bool hasSection = count >= 4 && (count - 4) % 7 == 0;
+  const bool hasGather = hasSection || (count >= 3 && (count - 3) % 7 == 0);
+  const size_t S = hasSection ? 3 : hasGather ? 2 : 1;  // scalars, then the circle count m
   const double m = p[S];
   if (!(m >= 1) || std::floor(m) != m || m > 1e6)
     return Status::Error(StatusCode::InvalidInput,
@@ -76,6 +79,13 @@ Status parsePonytailParams(const double* p, size_t count, PonytailParams& out) {
     if (g != 0 && g != 1)
       return Status::Error(StatusCode::InvalidInput, "ponytail gather must be 0 or 1");
     out.gather = int(g);
+  }
+  out.section = false;
+  if (hasSection) {
+    const double v = p[kPonytailSection];
+    if (v != 0 && v != 1)
+      return Status::Error(StatusCode::InvalidInput, "ponytail section must be 0 or 1");
+    out.section = v != 0;
   }
   out.tightness = p[kPonytailTightness];
   out.circles.resize(circles);

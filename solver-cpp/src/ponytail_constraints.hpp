@@ -76,11 +76,12 @@ struct PonytailCircle {
 struct PonytailParams {
   double tightness = kPonytailDefaultTightness;
   int gather = 0;                       // constraint version (0 or 1), see above
+  bool section = false;                 // the tie gathers its whole scalp section (growth only)
   std::vector<PonytailCircle> circles;  // C1 first
 };
 
-// Checks the block's size (2 + 7 m or 3 + 7 m, m >= 1 an integer), finiteness (NonFinite),
-// gather 0 or 1, radius > 0, non-zero axes.
+// Checks the block's size (2 + 7 m, 3 + 7 m or 4 + 7 m, m >= 1 an integer), finiteness
+// (NonFinite), gather and section 0 or 1, radius > 0, non-zero axes.
 // The message does not name the curve (the caller prefixes it).
 Status parsePonytailParams(const double* params, size_t paramCount, PonytailParams& out);
 

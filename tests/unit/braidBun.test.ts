@@ -65,8 +65,9 @@ describe('braid and bun curves', () => {
       crossings: 6,
       tightness: 0.5,
       tailLength: 0.4,
+      section: 1,
     });
-    expect(defaultParams('bun')).toEqual({ radius: 0, height: 0.35, turns: 2.5 });
+    expect(defaultParams('bun')).toEqual({ radius: 0, height: 0.35, turns: 2.5, section: 1 });
   });
 
   it('the reader accepts them within the limits and refuses them outside', () => {
@@ -105,8 +106,8 @@ describe('braid and bun curves', () => {
     const set = packCurves([braid({ width: 0.7 }), bun({ turns: 3 })], null, true);
     expect(Array.from(set.kinds)).toEqual([CurveKind.braid, CurveKind.bun]);
     expect([CurveKind.braid, CurveKind.bun]).toEqual([3, 4]);
-    expect(Array.from(set.paramStart)).toEqual([0, 4, 7]);
-    expect(Array.from(set.params)).toEqual([0.7, 6, 0.5, 0.4, 0, 0.35, 3]);
+    expect(Array.from(set.paramStart)).toEqual([0, 5, 9]);
+    expect(Array.from(set.params)).toEqual([0.7, 6, 0.5, 0.4, 1, 0, 0.35, 3, 1]);
   });
 
   it('travel in version 3 links and come back equal', async () => {

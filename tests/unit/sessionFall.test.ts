@@ -122,10 +122,21 @@ describe('the reader and session.fall', () => {
     expect(s.fall).toBe(true);
     expect(packHairOptions(s, s.curves).fall).toBe(true);
     expect(read(JSON.parse(JSON.stringify(s)))).toEqual(s);
-    // one key order, whatever the input's: avoidScalp, fall, then detail
-    const all = read({ detail: { lengthJitter: 0.1 }, fall: true, avoidScalp: true, ...base() });
+    // one key order, whatever the input's: avoidScalp, fall, sections, then detail
+    const all = read({
+      detail: { lengthJitter: 0.1 },
+      sections: true,
+      fall: true,
+      avoidScalp: true,
+      ...base(),
+    });
     const keys = Object.keys(all);
-    expect(keys.slice(keys.indexOf('avoidScalp'))).toEqual(['avoidScalp', 'fall', 'detail']);
+    expect(keys.slice(keys.indexOf('avoidScalp'))).toEqual([
+      'avoidScalp',
+      'fall',
+      'sections',
+      'detail',
+    ]);
   });
 
   it('accepts fall: false, written as absent', () => {

@@ -11,8 +11,8 @@ const vp = {
 };
 
 function sample(): SessionState {
-  // the settings (avoidScalp, fall, detail) in the order the reader writes them
-  const { fall: _fall, ...s } = emptySession('50k');
+  // the settings (avoidScalp, fall, sections, detail) in the order the reader writes them
+  const { fall: _fall, sections: _sections, ...s } = emptySession('50k');
   return {
     ...s,
     curves: [
@@ -48,6 +48,7 @@ function sample(): SessionState {
     ],
     avoidScalp: true,
     fall: true,
+    sections: true,
     detail: {
       curl: { radius: 0.05, frequency: 3, start: 0.15, randomOffset: 1 },
       frizz: { distance: 0.006, shape: 0.5 },
@@ -180,6 +181,7 @@ describe('curve parameters (protocol.ts CURVE_PARAMS)', () => {
     ]);
     expect(CURVE_PARAMS.ponytail.map((p) => [p.name, p.default, p.min, p.max])).toEqual([
       ['tightness', 0.6, 0, 10],
+      ['section', 1, 0, 1],
     ]);
   });
 });

@@ -176,7 +176,13 @@ describe('version 2 links', () => {
     expect(data.fall).toBe(true);
     expect(data.detail).toEqual(DETAIL);
     // without them the tail is empty: the body ends with the avoid slot 0, tail length 0, CRC
-    const { avoidScalp: _a, detail: _d, fall: _f, ...plain } = presetSession('default', head);
+    const {
+      avoidScalp: _a,
+      detail: _d,
+      fall: _f,
+      sections: _s,
+      ...plain
+    } = presetSession('default', head);
     const body = packSession(plain);
     expect(Array.from(body.subarray(body.length - 6, body.length - 4))).toEqual([0, 0]);
   });

@@ -28,6 +28,7 @@ function full(): SessionState {
     ...s,
     avoidScalp: true,
     fall: true,
+    sections: true,
     detail: { lengthJitter: 0.2 },
     scalpPaint: [{ erase: true, radius: 0.3, points: [[0, 1, 0]] }],
     symmetry: X_PLANE,
@@ -57,7 +58,14 @@ describe('session schema', () => {
 
   it('asks for a solve exactly when a field of the request changes', () => {
     const s = full();
-    expect(REQUEST_FIELDS).toEqual(['curves', 'growth', 'avoidScalp', 'fall', 'detail']);
+    expect(REQUEST_FIELDS).toEqual([
+      'curves',
+      'growth',
+      'avoidScalp',
+      'fall',
+      'sections',
+      'detail',
+    ]);
     expect(needsSolve(s, { ...s })).toBe(false);
     expect(needsSolve(s, { ...s, hairColor: '#000000' })).toBe(false);
     expect(needsSolve(s, { ...s, symmetry: { normal: [1, 0, 0], offset: 0.1 } })).toBe(false);
@@ -66,6 +74,8 @@ describe('session schema', () => {
     expect(needsSolve(s, { ...s, avoidScalp: false })).toBe(true);
     const { fall: _f, ...noFall } = s;
     expect(needsSolve(s, noFall)).toBe(true);
+    const { sections: _s, ...noSections } = s;
+    expect(needsSolve(s, noSections)).toBe(true);
     expect(needsSolve(s, { ...s, detail: { lengthJitter: 0.3 } })).toBe(true);
     // reference pictures are drawn, never solved: placing, hiding or removing one is no solve
     expect(needsSolve(s, { ...s, references: [] })).toBe(false);
@@ -110,7 +120,11 @@ describe('session schema', () => {
 
 describe('engine settings', () => {
   it("pack every 'request' setting in table order, flags as 0 or 1 (engine_settings.hpp)", () => {
-    expect([...engineSettings({ avoidScalp: true, fall: false })]).toEqual([1, 0]);
-    expect([...engineSettings({ avoidScalp: false, fall: true })]).toEqual([0, 1]);
+    expect([...engineSettings({ avoidScalp: true, fall: false, sections: false })]).toEqual([
+      1, 0, 0,
+    ]);
+    expect([...engineSettings({ avoidScalp: false, fall: true, sections: true })]).toEqual([
+      0, 1, 1,
+    ]);
   });
 });

@@ -17,8 +17,10 @@ export interface CurveParamSpec {
   readonly name: string;
   readonly label: string; // curve panel label, without the unit
   /** 'cm': a length in world units (1 = 10 cm), shown in centimetres (× 10); 'per 10 cm': a
-   *  count per world unit, shown as it is. */
-  readonly unit: 'grid steps' | 'rad' | 'cm' | 'per 10 cm' | '';
+   *  count per world unit, shown as it is; 'choice': a whole number naming one of `choices`. */
+  readonly unit: 'grid steps' | 'rad' | 'cm' | 'per 10 cm' | 'choice' | '';
+  /** unit 'choice': the name of each whole value from 0, shown as a drop-down. */
+  readonly choices?: readonly string[];
   readonly default: number;
   readonly min: number; // accepted range, session units
   readonly max: number;
@@ -89,6 +91,17 @@ export const CURVE_PARAMS = {
       quantum: 1e-4,
       view: { min: 0, max: 1, step: 0.05 },
     },
+    {
+      name: 'section',
+      label: 'Gather',
+      unit: 'choice',
+      choices: ['nearby hair only', 'whole section'],
+      default: 1,
+      min: 0,
+      max: 1,
+      quantum: 1,
+      view: { min: 0, max: 1, step: 1 },
+    },
   ],
   /** A three-strand braid (solver-cpp/src/braid_bun.hpp): its width, bundle crossings per 10 cm
    *  (all three bundles counted), tightness (how flat the bundles lie) and the loose tail's
@@ -134,6 +147,17 @@ export const CURVE_PARAMS = {
       quantum: 1e-4,
       view: { min: 0, max: 200, step: 0.5 },
     },
+    {
+      name: 'section',
+      label: 'Gather',
+      unit: 'choice',
+      choices: ['nearby hair only', 'whole section'],
+      default: 1,
+      min: 0,
+      max: 1,
+      quantum: 1,
+      view: { min: 0, max: 1, step: 1 },
+    },
   ],
   /** A bun (solver-cpp/src/braid_bun.hpp): its radius (0: the drawn loop's size), height and
    *  the turns each strand coils. Lengths in world units (1 = 10 cm). */
@@ -167,6 +191,17 @@ export const CURVE_PARAMS = {
       max: 10,
       quantum: 1e-4,
       view: { min: 0.25, max: 10, step: 0.25 },
+    },
+    {
+      name: 'section',
+      label: 'Gather',
+      unit: 'choice',
+      choices: ['nearby hair only', 'whole section'],
+      default: 1,
+      min: 0,
+      max: 1,
+      quantum: 1,
+      view: { min: 0, max: 1, step: 1 },
     },
   ],
 } as const satisfies Record<CurveKindName, readonly CurveParamSpec[]>;

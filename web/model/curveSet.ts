@@ -41,10 +41,16 @@ function variableBlock(c: StyleCurve): number[] {
 
 /** The parameter block of a curve (hairArrays.ts CurveSet.params). A gathered ponytail (natural
  *  fall: the tail a solid of revolution fed by a funnel, solver-cpp/src/ponytail_constraints.hpp)
- *  carries its gather flag (1) after its tightness; without it the block is the paper's. */
+ *  carries its gather flag (1) and then its section flag after its tightness; without them the
+ *  block is the paper's. */
 export function curveParams(c: StyleCurve, gather = false): number[] {
   const scalars = curveScalars(c);
-  if (c.type === 'ponytail' && gather) scalars.push(1);
+  if (c.type === 'ponytail') {
+    // solver-cpp/src/curve_params.hpp PonytailParam: [tightness] (the paper's) or [tightness,
+    // gather = 1, section] (gathered)
+    const [tightness, section] = scalars;
+    return [...(gather ? [tightness, 1, section] : [tightness]), ...variableBlock(c)];
+  }
   return [...scalars, ...variableBlock(c)];
 }
 

@@ -193,6 +193,7 @@ export function emptySession(
     growth,
     hairColor: '#5a3825',
     fall: true,
+    sections: true,
   };
 }
 

@@ -52,6 +52,10 @@ export const SESSION_SETTINGS = {
   /** Natural fall (hairArrays.ts HairOptions): on in every new session; off, the hair of
    *  sessions made before it (version 3 and older) exactly. */
   fall: { type: 'flag', hair: 'request' },
+  /** Sections (solver-cpp/src/scalp_sections.hpp): partings split the scalp and a tie whose
+   *  `section` parameter is on gathers every strand rooted in its section; on in every new
+   *  session; off, every tie takes the hair that reaches it, as in sessions made before. */
+  sections: { type: 'flag', hair: 'request' },
 } as const satisfies Record<string, SettingSpec>;
 
 export type SessionSettingName = keyof typeof SESSION_SETTINGS;

@@ -24,6 +24,7 @@ const fromView = (s: CurveParamSpec, v: number) => v / (VIEW_SCALE[s.unit] ?? 1)
 /** The panel label: the table's label and its unit as shown. */
 export function paramLabel(s: CurveParamSpec): string {
   if (s.unit === 'rad') return `${s.label} (°)`;
+  if (s.unit === 'choice') return s.label;
   return s.unit ? `${s.label} (${s.unit})` : s.label;
 }
 
@@ -79,6 +80,18 @@ export function buildCurvePanel(
       for (const s of specsOf(curve)) {
         const label = document.createElement('label');
         label.textContent = paramLabel(s);
+        if (s.unit === 'choice') {
+          const select = document.createElement('select');
+          (s.choices ?? []).forEach((name, i) => {
+            select.append(new Option(name, String(i), false, paramValue(curve, s) === i));
+          });
+          select.addEventListener('change', () =>
+            onChange(curve.id, { [s.name]: Number(select.value) }),
+          );
+          label.append(' ', select);
+          panel.append(label);
+          continue;
+        }
         const input = numberInput(
           s.view,
           toView(s, paramValue(curve, s)),

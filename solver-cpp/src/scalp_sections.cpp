@@ -1,0 +1,159 @@
+#include "scalp_sections.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+
+namespace hairsketch {
+
+namespace {
+constexpr float kSectionPi = 3.14159265358979323846f;
+}  // namespace
+
+Eigen::Vector2f ScalpSections::plane(const Eigen::Vector3f& p) const {
+  const Eigen::Vector3f v = p - centre_;
+  const float n = v.norm();
+  if (!(n > 0)) return Eigen::Vector2f::Zero();
+  const Eigen::Vector3f d = v / n;
+  const float ang = std::acos(std::clamp(d.y(), -1.f, 1.f));
+  const float h = std::hypot(d.x(), d.z());
+  if (!(h > 1e-7f)) return Eigen::Vector2f::Zero();
+  return Eigen::Vector2f(ang * d.x() / h, ang * d.z() / h);
+}
+
+int ScalpSections::cellOf(const Eigen::Vector2f& uv) const {
+  auto index = [](float x) {
+    return std::clamp(int(std::floor((x + kSectionPi) / (2 * kSectionPi) * float(kGrid))), 0,
+                      kGrid - 1);
+  };
+  return index(uv.y()) * kGrid + index(uv.x());
+}
+
+void ScalpSections::build(const std::vector<Eigen::Vector3f>& roots, const Eigen::Vector3f& centre,
+                          const std::vector<std::vector<Eigen::Vector3f>>& partings) {
+  centre_ = centre;
+  constexpr int N = kGrid;
+  const float cellsPerRad = float(N) / (2 * kSectionPi);
+  std::vector<uint8_t> scalp(size_t(N) * N, 0), wall(size_t(N) * N, 0);
+  std::vector<int> rootCell(roots.size());
+  float meanRadius = 0;
+  for (size_t k = 0; k < roots.size(); ++k) {
+    rootCell[k] = cellOf(plane(roots[k]));
+    meanRadius += (roots[k] - centre).norm();
+  }
+  meanRadius = roots.empty() ? 1.f : meanRadius / float(roots.size());
+  for (int c : rootCell) {
+    const int i = c % N, j = c / N;
+    for (int dj = -kDilate; dj <= kDilate; ++dj)
+      for (int di = -kDilate; di <= kDilate; ++di) {
+        const int x = i + di, y = j + dj;
+        if (x >= 0 && y >= 0 && x < N && y < N) scalp[size_t(y) * N + x] = 1;
+      }
+  }
+  // walls: a disc stamped along each segment, in cells
+  auto stamp = [&](const Eigen::Vector2f& a, const Eigen::Vector2f& b) {
+    const Eigen::Vector2f A = (a + Eigen::Vector2f::Constant(kSectionPi)) * cellsPerRad;
+    const Eigen::Vector2f B = (b + Eigen::Vector2f::Constant(kSectionPi)) * cellsPerRad;
+    const int steps = std::max(1, int(std::ceil((B - A).norm() * 2)));
+    const int r = int(std::ceil(kWallRadius));
+    for (int s = 0; s <= steps; ++s) {
+      const Eigen::Vector2f P = A + (B - A) * (float(s) / float(steps));
+      for (int dy = -r; dy <= r; ++dy)
+        for (int dx = -r; dx <= r; ++dx) {
+          const int x = int(std::floor(P.x())) + dx, y = int(std::floor(P.y())) + dy;
+          if (x < 0 || y < 0 || x >= N || y >= N) continue;
+          const float cx = float(x) + 0.5f - P.x(), cy = float(y) + 0.5f - P.y();
+          if (cx * cx + cy * cy <= (kWallRadius + 0.5f) * (kWallRadius + 0.5f))
+            wall[size_t(y) * N + x] = 1;
+        }
+    }
+  };
+  const float reach = kPartingReach / std::max(meanRadius, 1e-3f);  // radians
+  for (const std::vector<Eigen::Vector3f>& line : partings) {
+    if (line.size() < 2) continue;
+    std::vector<Eigen::Vector2f> uv;
+    for (const Eigen::Vector3f& p : line) uv.push_back(plane(p));
+    for (size_t k = 0; k + 1 < uv.size(); ++k) stamp(uv[k], uv[k + 1]);
+    // each end carried on along its direction over its last ~1.5 cm
+    for (int end = 0; end < 2; ++end) {
+      const size_t last = end == 0 ? 0 : uv.size() - 1;
+      size_t back = last;
+      const float want = 0.15f / std::max(meanRadius, 1e-3f);
+      while (true) {
+        const size_t next = end == 0 ? back + 1 : back - 1;
+        if (end == 0 ? next >= uv.size() : back == 0) break;
+        back = next;
+        if ((uv[back] - uv[last]).norm() >= want) break;
+      }
+      const Eigen::Vector2f dir = uv[last] - uv[back];
+      if (!(dir.norm() > 1e-6f)) continue;
+      stamp(uv[last], uv[last] + dir.normalized() * reach);
+    }
+  }
+  // sections: 4-connected components of scalp cells off the walls
+  std::vector<int32_t> comp(size_t(N) * N, -1);
+  std::vector<size_t> members;  // roots per component
+  std::deque<int> queue;
+  const int nb[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+  int found = 0;
+  for (int c0 = 0; c0 < N * N; ++c0) {
+    if (!scalp[c0] || wall[c0] || comp[c0] >= 0) continue;
+    comp[c0] = found;
+    queue.push_back(c0);
+    while (!queue.empty()) {
+      const int c = queue.front();
+      queue.pop_front();
+      for (const auto& d : nb) {
+        const int x = c % N + d[0], y = c / N + d[1];
+        if (x < 0 || y < 0 || x >= N || y >= N) continue;
+        const int e = y * N + x;
+        if (scalp[e] && !wall[e] && comp[e] < 0) {
+          comp[e] = found;
+          queue.push_back(e);
+        }
+      }
+    }
+    ++found;
+  }
+  members.assign(size_t(found), 0);
+  for (int c : rootCell)
+    if (comp[c] >= 0) ++members[size_t(comp[c])];
+  // components large enough become sections, numbered in raster order
+  std::vector<int32_t> section(size_t(found), -1);
+  count_ = 0;
+  for (int k = 0; k < found; ++k)
+    if (float(members[size_t(k)]) >= kMinShare * float(roots.size()) && members[size_t(k)] > 0)
+      section[size_t(k)] = count_++;
+  label_.assign(size_t(N) * N, -1);
+  for (int c = 0; c < N * N; ++c)
+    if (comp[c] >= 0 && section[size_t(comp[c])] >= 0) {
+      label_[c] = int16_t(section[size_t(comp[c])]);
+      queue.push_back(c);
+    }
+  if (count_ == 0) {  // no roots, or all in slivers: one section
+    count_ = 1;
+    std::fill(label_.begin(), label_.end(), int16_t(0));
+    return;
+  }
+  // every other cell: the nearest section's (breadth-first from all sections at once)
+  while (!queue.empty()) {
+    const int c = queue.front();
+    queue.pop_front();
+    for (const auto& d : nb) {
+      const int x = c % N + d[0], y = c / N + d[1];
+      if (x < 0 || y < 0 || x >= N || y >= N) continue;
+      const int e = y * N + x;
+      if (label_[e] < 0) {
+        label_[e] = label_[c];
+        queue.push_back(e);
+      }
+    }
+  }
+}
+
+int ScalpSections::section(const Eigen::Vector3f& p) const {
+  if (label_.empty()) return 0;
+  return label_[size_t(cellOf(plane(p)))];
+}
+
+}  // namespace hairsketch

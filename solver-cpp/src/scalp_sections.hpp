@@ -1,0 +1,55 @@
+// Sections of the scalp: partings (dividing curves, method S4.5) split the scalp into regions,
+// as a hairdresser's partings do; a tie that gathers its whole section (gathered_tail.hpp) takes
+// every strand rooted in it.
+//
+// The scalp is mapped to a plane by the azimuthal equidistant projection about the head's up
+// axis through its centre c: a point p, d = (p - c) / |p - c|, goes to
+//   (u, v) = acos(d_y) (d_x, d_z) / |(d_x, d_z)|
+// (the crown at the origin, the one singular direction straight down, under the neck, where no
+// scalp is). On a kGrid x kGrid raster of [-pi, pi]^2:
+//   scalp cells: cells holding a root, grown by kDilate cells (so the raster has no gaps between
+//     roots);
+//   walls: each parting's polyline drawn with a disc of kWallRadius cells, each end carried on
+//     along its direction by kPartingReach (world units, as an angle at the head's radius), so a
+//     parting that stops short of the scalp's edge still reaches it;
+//   sections: the 4-connected components of scalp cells that are not walls; a component holding
+//     less than kMinShare of the roots is no section of its own (it joins its neighbour);
+//   every other cell (walls, off the scalp) takes the section of the nearest cell that has one
+//     (breadth-first, 4-connected).
+// So a parting that is closed, or runs from edge to edge (ear to ear over the crown, forehead to
+// nape), bounds a section, and one that does not leaves the scalp in one piece. No parting: one
+// section. Deterministic (no randomness).
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+namespace hairsketch {
+
+class ScalpSections {
+ public:
+  static constexpr int kGrid = 256;
+  static constexpr int kDilate = 2;
+  static constexpr float kWallRadius = 1.0f;
+  static constexpr float kPartingReach = 0.35f;  // world units (3.5 cm)
+  static constexpr float kMinShare = 0.01f;
+
+  // roots: every root of the hair (the full set, so previews and full growth agree); partings:
+  // the dividing curves' polylines.
+  void build(const std::vector<Eigen::Vector3f>& roots, const Eigen::Vector3f& centre,
+             const std::vector<std::vector<Eigen::Vector3f>>& partings);
+  // The section of a point on or near the scalp (or of the scalp under it, seen from the centre);
+  // 0 before build.
+  int section(const Eigen::Vector3f& p) const;
+  int count() const { return count_; }
+
+ private:
+  Eigen::Vector3f centre_ = Eigen::Vector3f::Zero();
+  std::vector<int16_t> label_;  // per cell: its section (every cell has one after build)
+  int count_ = 0;
+  Eigen::Vector2f plane(const Eigen::Vector3f& p) const;
+  int cellOf(const Eigen::Vector2f& uv) const;
+};
+
+}  // namespace hairsketch
