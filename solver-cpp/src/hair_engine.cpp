@@ -272,24 +272,61 @@ Status HairEngine::setCurves(const CurveSetView& curves) {
       }
     t.anchor = x;
   }
+  // Whole-section ties lay all their hair in growth, so the field does not see them (their
+  // funnel would pull the loose hair of other sections up into them).
+  std::vector<char> drop(curves.curveCount, 0);
+  bool dropAny = false;
+  for (size_t i = 0; i < nextTails.size(); ++i)
+    if (sections_ && nextTails[i].section) dropAny = drop[size_t(nextTailCurves[i])] = 1;
+  std::vector<double> keptPoints, keptParams;
+  std::vector<uint32_t> keptStart{0}, keptParamStart{0};
+  std::vector<uint8_t> keptKinds, keptExtend, keptOff;
+  CurveSetView fv = withHead;
+  if (dropAny && curves.curveStart && curves.points && curves.kinds) {
+    for (size_t c = 0; c < curves.curveCount; ++c) {
+      const size_t a = curves.curveStart[c], b = curves.curveStart[c + 1];
+      if (drop[c] || b < a || b > curves.pointCount) continue;
+      keptPoints.insert(keptPoints.end(), curves.points + 3 * a, curves.points + 3 * b);
+      if (withHead.offScalp)
+        keptOff.insert(keptOff.end(), overFace.begin() + std::ptrdiff_t(a),
+                       overFace.begin() + std::ptrdiff_t(b));
+      if (curves.paramStart && curves.params)
+        keptParams.insert(keptParams.end(), curves.params + curves.paramStart[c],
+                          curves.params + curves.paramStart[c + 1]);
+      keptStart.push_back(uint32_t(keptPoints.size() / 3));
+      keptParamStart.push_back(uint32_t(keptParams.size()));
+      keptKinds.push_back(curves.kinds[c]);
+      keptExtend.push_back(curves.extend ? curves.extend[c] : 0);
+    }
+    fv.points = keptPoints.data();
+    fv.pointCount = keptPoints.size() / 3;
+    fv.curveStart = keptStart.data();
+    fv.curveCount = keptKinds.size();
+    fv.kinds = keptKinds.data();
+    fv.extend = curves.extend ? keptExtend.data() : nullptr;
+    fv.params = curves.params ? keptParams.data() : nullptr;
+    fv.paramCount = keptParams.size();
+    fv.paramStart = curves.paramStart ? keptParamStart.data() : nullptr;
+    fv.offScalp = withHead.offScalp ? keptOff.data() : nullptr;
+  }
   if (fall_) {
     // The reach of stream curves, ponytail spines and braids ends their hair, in place of the
     // fading extension; "extend" means the curve's hair grows on.
     std::vector<ReachCurve> rc;
-    if (curves.kinds && curves.curveStart && curves.points)
-      for (size_t c = 0; c < curves.curveCount; ++c) {
-        const auto kind = CurveKindCode(curves.kinds[c]);
+    if (fv.kinds && fv.curveStart && fv.points)
+      for (size_t c = 0; c < fv.curveCount; ++c) {
+        const auto kind = CurveKindCode(fv.kinds[c]);
         if (kind != CurveKindCode::Stream && kind != CurveKindCode::Ponytail &&
             kind != CurveKindCode::Braid)
           continue;
-        const size_t a = curves.curveStart[c], b = curves.curveStart[c + 1];
-        if (b <= a || b > curves.pointCount) continue;
-        rc.push_back({curves.points + 3 * a, b - a, curves.extend && curves.extend[c] != 0,
-                      headDistance_.built() ? overFace.data() + a : nullptr});
+        const size_t a = fv.curveStart[c], b = fv.curveStart[c + 1];
+        if (b <= a || b > fv.pointCount) continue;
+        rc.push_back({fv.points + 3 * a, b - a, fv.extend && fv.extend[c] != 0,
+                      fv.offScalp ? fv.offScalp + a : nullptr});
       }
-    std::vector<uint8_t> noExtension(curves.curveCount, 0);
-    CurveSetView view = withHead;
-    if (curves.extend) view.extend = noExtension.data();
+    std::vector<uint8_t> noExtension(fv.curveCount, 0);
+    CurveSetView view = fv;
+    if (fv.extend) view.extend = noExtension.data();
     s = curvesToConstraints(grid_, view, next, &nextColours);
     if (s.ok()) {
       // a curve's footprint is kept while the curve, its flags, the grid and the head stay
@@ -321,7 +358,7 @@ Status HairEngine::setCurves(const CurveSetView& curves) {
       combineReach(lattice, parts, reach_);
     }
   } else {
-    s = curvesToConstraints(grid_, withHead, next, &nextColours);
+    s = curvesToConstraints(grid_, fv, next, &nextColours);
   }
   if (!s.ok()) return s;
   s = solver_->setConstraints(next);

@@ -320,6 +320,35 @@ test('pigtails made with Mirror leave no bare stripe behind, and each gathers ro
   });
   await test.step('a gathered pigtail has a round cross-section of its radius', () =>
     expectRoundTails(page, tails));
+  await test.step('each pigtail gathers its own half of the head (sections: the nearer tie)', async () => {
+    const h = (await page.evaluate(() => window.hairsketch.strands())) as Strands & {
+      tailCurves: number[];
+    };
+    const side = (s: number) => Math.sign(h.points[3 * h.strandStart[s]]);
+    for (const [i, tail] of tails.entries()) {
+      const own = Math.sign(tail.points[tail.points.length - 1][0]);
+      let mine = 0;
+      let mineTaken = 0;
+      let other = 0;
+      let otherTaken = 0;
+      for (let s = 0; s + 1 < h.strandStart.length; s++) {
+        if (Math.abs(h.points[3 * h.strandStart[s]]) < 0.05) continue; // on the midline
+        const taken = h.tailCurves[s] === i ? 1 : 0;
+        if (side(s) === own) {
+          mine++;
+          mineTaken += taken;
+        } else {
+          other++;
+          otherTaken += taken;
+        }
+      }
+      console.log(
+        `pigtail ${tail.id}: ${((100 * mineTaken) / mine).toFixed(1)} % of its side, ${((100 * otherTaken) / other).toFixed(1)} % of the other`,
+      );
+      expect(mineTaken / mine).toBeGreaterThanOrEqual(0.95);
+      expect(otherTaken / other).toBeLessThan(0.05);
+    }
+  });
 });
 
 const dot3 = (a: V3, b: V3) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];

@@ -71,7 +71,9 @@ export interface HairsketchTestApi {
   /** Benchmark probe: the lighting precompute time (ms, in the worker) of the hair shown. */
   lightingMs(): number | null;
   /** The displayed strands as plain arrays (layout of protocol.ts StrandArrays). */
-  strands(): { points: number[]; strandStart: number[] } | null;
+  /** The hair drawn: its points, where each strand starts, and (tailCurves) the index of the
+   *  curve whose tie laid each strand, or -1. */
+  strands(): { points: number[]; strandStart: number[]; tailCurves: number[] } | null;
   /** Displayed strand segments with a point (either end or the middle) deeper than `depth`
    *  world units inside the head (Head.signedDistance: exact for the built-in head), and the
    *  deepest value. */
@@ -240,7 +242,13 @@ export function installTestApi(app: TestApiParts): void {
     lightingMs: () => app.quality?.lightingMs() ?? null,
     strands() {
       const s = hair.strands;
-      return s ? { points: Array.from(s.points), strandStart: Array.from(s.strandStart) } : null;
+      return s
+        ? {
+            points: Array.from(s.points),
+            strandStart: Array.from(s.strandStart),
+            tailCurves: Array.from(s.tailCurves ?? []),
+          }
+        : null;
     },
     segmentsInsideHead(depth, stride = 1) {
       const s = hair.strands;
