@@ -316,7 +316,10 @@ test('pigtails made with Mirror leave no bare stripe behind, and each gathers ro
       `Mirror pigtails: ${back.bare} of ${back.points} scalp points bare from behind (${(100 * back.fraction).toFixed(1)} %)`,
     );
     await shoot(page, 'pigtails');
-    expect(back.fraction).toBeLessThanOrEqual(0.02);
+    // each pigtail now takes its whole half (sections), so the back parts down the middle as
+    // real pigtails do: the parting line and the nape below it show (10.3 % when this was
+    // written; 2 % before sections, when each tie took only the hair that reached it)
+    expect(back.fraction).toBeLessThanOrEqual(0.13);
   });
   await test.step('a gathered pigtail has a round cross-section of its radius', () =>
     expectRoundTails(page, tails));
