@@ -450,6 +450,13 @@ EMSCRIPTEN_KEEPALIVE const int32_t* hs_engine_strand_tail_curves(EngineHandle* h
 EMSCRIPTEN_KEEPALIVE int32_t hs_engine_strand_tail_curve_count(EngineHandle* h) {
   return int32_t(h->engine.strandTailCurves().size());
 }
+// Per strand, with sections on: its root's scalp section (empty otherwise).
+EMSCRIPTEN_KEEPALIVE const uint8_t* hs_engine_strand_sections(EngineHandle* h) {
+  return h->engine.strandSections().data();
+}
+EMSCRIPTEN_KEEPALIVE int32_t hs_engine_strand_section_count(EngineHandle* h) {
+  return int32_t(h->engine.strandSections().size());
+}
 
 // Fills the flat constraint arrays; returns the number of constraints.
 EMSCRIPTEN_KEEPALIVE int32_t hs_engine_prepare_constraints(EngineHandle* h) {

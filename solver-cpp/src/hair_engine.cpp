@@ -461,6 +461,14 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
   std::vector<uint32_t> key(n);
   for (size_t k = 0; k < n; ++k) key[k] = uint32_t(capped_ ? k * total / n : k);
   strandTailCurve_.assign(n, -1);
+  strandSection_.clear();
+  ScalpSections sections;
+  if (sections_) {
+    sections.build(roots_, centre_.cast<float>(), partings_);
+    strandSection_.resize(n);
+    for (size_t st = 0; st < n; ++st)
+      strandSection_[st] = uint8_t(std::min(sections.section(R[st]), 255));
+  }
   if (s.ok() && !tails_.empty()) {
     // laid strands keep to the 255 points engines take (detail's cap too)
     // whole-section ties (with sections on): each strand goes to the nearest such tie in its
@@ -473,14 +481,12 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
       bySection |= t.section;
     }
     if (bySection) {
-      ScalpSections sections;
-      sections.build(roots_, centre_.cast<float>(), partings_);
       std::vector<int> tieSection(tails.size(), -1);
       for (size_t k = 0; k < tails.size(); ++k)
         if (tails[k].section) tieSection[k] = sections.section(tails[k].anchor);
       sg.assigned.assign(n, -1);
       for (size_t st = 0; st < n; ++st) {
-        const int here = sections.section(R[st]);
+        const int here = strandSection_[st];
         float best = std::numeric_limits<float>::infinity();
         for (size_t k = 0; k < tails.size(); ++k) {
           if (tieSection[k] != here) continue;

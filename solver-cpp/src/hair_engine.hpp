@@ -93,6 +93,9 @@ class HairEngine {
   // Per strand of the last growth: the curve whose gathered tail (ponytail, braid, bun) laid it,
   // or -1.
   const std::vector<int32_t>& strandTailCurves() const { return strandTailCurve_; }
+  // Per strand of the last growth with sections on: the scalp section its root is in
+  // (scalp_sections.hpp; at most 255), for showing the sections; empty with sections off.
+  const std::vector<uint8_t>& strandSections() const { return strandSection_; }
   // The roots of the last growth (the cached set, or its capped stride).
   const std::vector<Eigen::Vector3f>& roots() const { return capped_ ? cappedRoots_ : roots_; }
   SolveStats stats() const;
@@ -128,6 +131,7 @@ class HairEngine {
   std::vector<Eigen::Vector3f> cappedRoots_;       // an even stride of roots_ when capped
   std::vector<uint32_t> rootIds_, cappedRootIds_;  // sample indices of roots_, cappedRoots_
   std::vector<int32_t> strandTailCurve_;
+  std::vector<uint8_t> strandSection_;
   bool capped_ = false;
   Strands strands_;
   double growMs_ = 0;

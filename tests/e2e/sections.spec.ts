@@ -103,9 +103,14 @@ test('half-up: an ear-to-ear parting and a bun on the top section gather the top
   console.log(
     `half-up: the bun gathers ${(100 * top).toFixed(1)} % of the top section and ${(100 * rest).toFixed(1)} % of the rest (parting at z = ${zAt.toFixed(2)})`,
   );
-  await shoot(page, 'sections-half-up');
   expect(top).toBeGreaterThanOrEqual(0.95);
   expect(rest).toBeLessThan(0.05);
+  // the Bun tool is active: the scalp shows its sections; another tool: the head's own colours
+  await page.waitForFunction(() => window.hairsketch.sectionsTinted() > 0);
+  await shoot(page, 'sections-half-up-tinted');
+  await page.getByRole('button', { name: 'Stream curve' }).click();
+  await page.waitForFunction(() => window.hairsketch.sectionsTinted() === 0);
+  await shoot(page, 'sections-half-up');
 
   // Undo takes the bun away, Redo brings back the same hair, a reload of the link keeps it
   const hash = await page.evaluate(() => window.hairsketch.hairHash());

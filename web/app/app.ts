@@ -35,6 +35,7 @@ import { OverlayPresenter } from './overlayPresenter';
 import { bindPageControls } from './pageControls';
 import { loadQualitySetting, QualityControl } from './quality';
 import { ReferenceController } from './referenceController';
+import { SectionTintPresenter } from './sectionTintPresenter';
 import { LinkWriter, openSessionFileOutcome, openSessionLinkOutcome } from './sessionIO';
 import { SolverBridge } from './solverBridge';
 import { StatusPresenter } from './statusPresenter';
@@ -118,6 +119,13 @@ export function startApp(): void {
     if (c.camera) viewer.setCamera(c.camera.position, c.camera.target);
   });
   const hair = new HairPresenter(viewer, hairView, line, editor);
+  const sectionTint = new SectionTintPresenter({
+    editor,
+    viewer,
+    headMesh,
+    head: () => heads.head.mesh,
+    hair,
+  });
   wireCardsView({ view, editor, hairView, statusElement: byId('status') });
   const overlays = new OverlayPresenter(viewer, editor, view, bridge.grid);
   const status = new StatusPresenter(line, bridge);
@@ -269,6 +277,7 @@ export function startApp(): void {
     busy: (phase, fraction, previewing) => status.busy(phase, fraction, previewing),
     result: (r, final) => {
       hair.result(r, final);
+      sectionTint.update();
       overlays.result(r);
       status.result(r, final);
       active.previewAnswered();
@@ -328,6 +337,7 @@ export function startApp(): void {
     overlays,
     view,
     ponytail: tools.ponytail,
+    sectionsTinted: () => sectionTint.tinted,
     busy: () =>
       heads.busy ||
       references.busy ||

@@ -131,6 +131,8 @@ export interface HairsketchTestApi {
   frameSource(): string;
   /** Frames drawn since the page loaded, by where each started from (benchmark probe). */
   frameSources(): { hair: number; static: number; none: number };
+  /** Scalp vertices tinted by section (while a tie tool is active; 0 otherwise). */
+  sectionsTinted(): number;
 }
 
 declare global {
@@ -152,6 +154,8 @@ export interface TestApiParts {
   overlays: OverlayPresenter;
   view: ViewStore;
   ponytail: PonytailTool;
+  /** Scalp vertices tinted by section now (a tie tool is active). */
+  sectionsTinted(): number;
   /** Work is pending (a solve, an avoidance request, a stroke being drawn). */
   busy(): boolean;
   lastPointerUp(): number;
@@ -330,6 +334,7 @@ export function installTestApi(app: TestApiParts): void {
     },
     frameSource: () => viewer.lastFrameSource,
     frameSources: () => ({ ...viewer.frameSources }),
+    sectionsTinted: () => app.sectionsTinted(),
   };
 }
 

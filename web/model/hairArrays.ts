@@ -63,6 +63,9 @@ export interface StrandArrays {
   rootIds?: Uint32Array; // length = strands
   /** tailCurves[s]: the curve whose gathered ponytail, braid or bun laid strand s, or -1. */
   tailCurves?: Int32Array; // length = strands
+  /** rootSections[s]: the scalp section strand s's root is in (solver-cpp/src/
+   *  scalp_sections.hpp), with the session's sections on; absent otherwise. */
+  rootSections?: Uint8Array; // length = strands
 }
 
 /** Number of strands in a StrandArrays. */

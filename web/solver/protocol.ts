@@ -16,7 +16,7 @@
 //     curveGroup[c].
 //   StrandArrays: points[3 * point + axis]; strand s owns strandStart[s] .. strandStart[s + 1] - 1;
 //     optional rootIds[s] (its root's sample index), tailCurves[s] (the curve whose tail laid it,
-//     or -1).
+//     or -1), rootSections[s] (its root's scalp section, with sections on).
 export {
   CURVE_PARAMS,
   CurveKind,

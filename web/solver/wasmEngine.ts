@@ -36,6 +36,7 @@ import {
   f64,
   i32,
   num,
+  u8,
   u32,
   withInputs,
   withScratch,
@@ -265,6 +266,8 @@ class WasmEngine implements SolverEngine {
       strands.rootIds = u32(m, m._hs_engine_strand_root_ids(h), n);
     if (n > 0 && m._hs_engine_strand_tail_curve_count(h) === n)
       strands.tailCurves = i32(m, m._hs_engine_strand_tail_curves(h), n);
+    if (n > 0 && m._hs_engine_strand_section_count(h) === n)
+      strands.rootSections = u8(m, m._hs_engine_strand_sections(h), n);
     return strands;
   }
 

@@ -131,3 +131,5 @@ export const u32 = (mod: HairSolverModule, ptr: number, n: number): Uint32Array 
   n === 0 ? new Uint32Array(0) : mod.HEAPU32.slice(ptr >> 2, (ptr >> 2) + n);
 export const i32 = (mod: HairSolverModule, ptr: number, n: number): Int32Array =>
   n === 0 ? new Int32Array(0) : mod.HEAP32.slice(ptr >> 2, (ptr >> 2) + n);
+export const u8 = (mod: HairSolverModule, ptr: number, n: number): Uint8Array =>
+  n === 0 ? new Uint8Array(0) : mod.HEAPU8.slice(ptr, ptr + n);
