@@ -5,6 +5,27 @@
 import { expect, type Page, test } from '@playwright/test';
 import { settled, shoot, status, strokeFromScalp } from './helpers';
 
+/** Of the hair shown, the share of the strands rooted where `side` says that curve `curve`'s tie
+ *  laid (sections: a tie takes its whole section). */
+async function tieShare(page: Page, curve: number, side: 'all' | 'left' | 'right' = 'all') {
+  return page.evaluate(
+    ([c, sd]) => {
+      const h = window.hairsketch.strands();
+      if (!h) return 0;
+      let n = 0;
+      let taken = 0;
+      for (let s = 0; s + 1 < h.strandStart.length; s++) {
+        const x = h.points[3 * h.strandStart[s]];
+        if ((sd === 'left' && x < 0.05) || (sd === 'right' && x > -0.05)) continue;
+        n++;
+        if (h.tailCurves[s] === c) taken++;
+      }
+      return n ? taken / n : 0;
+    },
+    [curve, side] as const,
+  );
+}
+
 type V3 = [number, number, number];
 interface Curve {
   id: string;
@@ -60,6 +81,10 @@ test('a braid drawn from the scalp: the session holds it, the hair changes, Undo
   const hash = await page.evaluate(() => window.hairsketch.hairHash());
   expect(hash).not.toBe(empty.hash);
   await shoot(page, 'hand-braid');
+  // with no parting the braid gathers the whole head (sections)
+  const all = await tieShare(page, 0);
+  console.log(`one braid, no parting: ${(100 * all).toFixed(1)} % of the strands`);
+  expect(all).toBeGreaterThanOrEqual(0.95);
 
   await page.getByRole('button', { name: 'Undo' }).click();
   await curveCount(page, 0);
@@ -76,6 +101,16 @@ test('Mirror doubles a braid: two braids, twins of each other', async ({ page })
   await settled(page, empty.rev);
   await shoot(page, 'hand-braids-mirrored');
   const [a, b] = await curves(page);
+  // two braids share the head, each its own half (the nearer tie)
+  const aSide = a.points[a.points.length - 1][0] > 0 ? 'left' : 'right';
+  const bSide = aSide === 'left' ? 'right' : 'left';
+  const own = [await tieShare(page, 0, aSide), await tieShare(page, 1, bSide)];
+  const other = [await tieShare(page, 0, bSide), await tieShare(page, 1, aSide)];
+  console.log(
+    `two braids: each ${own.map((f) => (100 * f).toFixed(1)).join(' / ')} % of its side, ${other.map((f) => (100 * f).toFixed(1)).join(' / ')} % of the other`,
+  );
+  for (const f of own) expect(f).toBeGreaterThanOrEqual(0.95);
+  for (const f of other) expect(f).toBeLessThan(0.05);
   expect([a.type, b.type]).toEqual(['braid', 'braid']);
   expect(a.mirror).toBe(b.id);
   expect(b.mirror).toBe(a.id);
@@ -116,6 +151,10 @@ test('a bun drawn as a loop on the head: the session holds it, the hair changes,
   expect(bun.type).toBe('bun');
   expect([bun.radius, bun.height, bun.turns]).toEqual([0, 0.35, 2.5]);
   expect(await page.evaluate(() => window.hairsketch.hairHash())).not.toBe(empty.hash);
+  // with no parting the bun coils the whole head's hair (sections)
+  const all = await tieShare(page, 0);
+  console.log(`one bun, no parting: ${(100 * all).toFixed(1)} % of the strands`);
+  expect(all).toBeGreaterThanOrEqual(0.95);
 
   // a loop far larger than the head leaves it: nothing is made, the status line says why
   await drag(loop(2000).map((p) => ({ x: Math.max(2, p.x), y: Math.max(2, p.y) })));

@@ -1,6 +1,7 @@
 // Sections and ties with real pointer strokes on an empty head: a tie gathers the hair of its
-// whole scalp section (solver-cpp/src/scalp_sections.hpp). Half-up (an ear-to-ear parting over
-// the crown and a bun on the top section) and a braid at the back; the fractions are measured
+// whole scalp section (solver-cpp/src/scalp_sections.hpp). Half-up: an ear-to-ear parting over
+// the crown and a bun on the top section (a braid, a bun and two braids with no parting:
+// braidBun.spec.ts; Mirror pigtails: strokeSays.spec.ts); the fractions are measured
 // from the strands' roots against the side of the parting they grow on (not from the app's own
 // sections), and Undo, Redo and the link keep the hair. Waits on the status attributes.
 import { expect, type Page, test } from '@playwright/test';
@@ -125,19 +126,4 @@ test('half-up: an ear-to-ear parting and a bun on the top section gather the top
   await page.reload();
   await settled(page);
   expect(await page.evaluate(() => window.hairsketch.hairHash())).toBe(hash);
-});
-
-test('a braid at the back with no parting gathers the whole head', async ({ page }) => {
-  const rev = await emptyHead(page, { position: [-0.6, 1.0, -7.4], target: [0, -0.3, 0] });
-  await page.getByRole('button', { name: 'Braid' }).click();
-  const start = await scalpAt(page, 95, 180);
-  await drag(page, line(start, { x: start.x, y: start.y + 220 }));
-  await curveCount(page, 1);
-  await settled(page, rev);
-  const h = await hair(page);
-  if (!h) throw new Error('no hair');
-  const all = share(h, 0, () => true);
-  console.log(`one braid at the back gathers ${(100 * all).toFixed(1)} % of the strands`);
-  await shoot(page, 'sections-braid');
-  expect(all).toBeGreaterThanOrEqual(0.95);
 });
