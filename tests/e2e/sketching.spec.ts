@@ -399,6 +399,14 @@ test('a ponytail from four strokes gathers strands through its first cross-secti
     return count;
   }, c1);
   expect(through).toBeGreaterThan(20);
+  // with no parting the ponytail takes the whole head's hair (sections)
+  const gathered = await page.evaluate(() => {
+    const st = window.hairsketch.strands();
+    if (!st) return 0;
+    return st.tailCurves.filter((c) => c === 0).length / (st.strandStart.length - 1);
+  });
+  console.log(`a ponytail, no parting: ${(100 * gathered).toFixed(1)} % of the strands`);
+  expect(gathered).toBeGreaterThanOrEqual(0.95);
   expect(errors).toEqual([]);
 });
 
