@@ -71,9 +71,14 @@ export interface HairsketchTestApi {
   /** Benchmark probe: the lighting precompute time (ms, in the worker) of the hair shown. */
   lightingMs(): number | null;
   /** The displayed strands as plain arrays (layout of protocol.ts StrandArrays). */
-  /** The hair drawn: its points, where each strand starts, and (tailCurves) the index of the
-   *  curve whose tie laid each strand, or -1. */
-  strands(): { points: number[]; strandStart: number[]; tailCurves: number[] } | null;
+  /** The hair drawn: its points, where each strand starts, the index of the curve whose tie
+   *  laid each strand (or -1), and the scalp section of each root (empty with sections off). */
+  strands(): {
+    points: number[];
+    strandStart: number[];
+    tailCurves: number[];
+    rootSections: number[];
+  } | null;
   /** Displayed strand segments with a point (either end or the middle) deeper than `depth`
    *  world units inside the head (Head.signedDistance: exact for the built-in head), and the
    *  deepest value. */
@@ -251,6 +256,7 @@ export function installTestApi(app: TestApiParts): void {
             points: Array.from(s.points),
             strandStart: Array.from(s.strandStart),
             tailCurves: Array.from(s.tailCurves ?? []),
+            rootSections: Array.from(s.rootSections ?? []),
           }
         : null;
     },
