@@ -119,11 +119,39 @@ test('Reset view brings the camera back; Surface mode shows the mode that is on'
   ]);
   const moved = (await session(page)).camera;
   expect(moved.position).not.toEqual(before.position);
+  await expect(page.getByTestId('view-label')).toHaveText('View: free');
   await page.getByRole('button', { name: 'Reset view' }).click();
   await page.waitForFunction((p) => {
     const c = (window.hairsketch.session() as Session).camera.position;
     return Math.hypot(c[0] - p[0], c[1] - p[1], c[2] - p[2]) < 1e-3;
   }, before.position);
+  // the starting view says which it is
+  await expect(page.getByTestId('view-label')).toHaveText('View: three-quarter front');
+
+  // named views at a key each (and the Front button): where the camera looks from, measured
+  // from the camera (the unit direction from the target to the eye)
+  const views: [string, string, (d: number[]) => number][] = [
+    ['f', 'front', (d) => d[2]],
+    ['Shift+F', 'back', (d) => -d[2]],
+    ['l', 'left', (d) => d[0]],
+    ['Shift+L', 'right', (d) => -d[0]],
+    ['t', 'top', (d) => d[1]],
+  ];
+  for (const [key, name, along] of views) {
+    await page.keyboard.press(key);
+    await expect(page.getByTestId('view-label')).toHaveText(`View: ${name}`);
+    await page.evaluate(() => window.hairsketch.idle());
+    const c = (await session(page)).camera;
+    const v = c.position.map((x: number, i: number) => x - c.target[i]);
+    const n = Math.hypot(v[0], v[1], v[2]);
+    const deg = (Math.acos(along(v.map((x: number) => x / n))) * 180) / Math.PI;
+    console.log(`${name} view (${key}): ${deg.toFixed(1)}° off the ${name} axis`);
+    expect(deg).toBeLessThan(name === 'top' ? 2 : 10);
+  }
+  await page.getByRole('button', { name: 'Front view' }).click();
+  await expect(page.getByTestId('view-label')).toHaveText('View: front');
+  await page.getByRole('button', { name: 'Reset view' }).click();
+  await expect(page.getByTestId('view-label')).toHaveText('View: three-quarter front');
 
   // select a stream curve: the surface mode button says which mode it is in
   const s = await session(page);

@@ -157,7 +157,23 @@ test('the scalp brush paints and erases scalp; Undo restores it', async ({ page 
   const box = await canvas.boundingBox();
   if (!box) throw new Error('no canvas');
   const cx = box.x + box.width / 2;
+  // hovering shows the brush's ring; the wheel changes its radius, 5 % a notch, said in cm
   await page.mouse.move(cx - 60, start.y + 30);
+  await page.waitForFunction(() => window.hairsketch.brushRing() !== null);
+  const ring0 = await page.evaluate(() => window.hairsketch.brushRing());
+  expect(ring0?.erase).toBe(false);
+  await page.mouse.wheel(0, -100);
+  await page.waitForFunction(
+    (r) => (window.hairsketch.brushRing()?.radius ?? 0) > r,
+    ring0?.radius ?? 0,
+  );
+  const ring1 = await page.evaluate(() => window.hairsketch.brushRing());
+  expect((ring1?.radius ?? 0) / (ring0?.radius ?? 1)).toBeCloseTo(1.05, 6);
+  await expect(page.getByTestId('status')).toContainText(
+    `Scalp brush radius ${((ring1?.radius ?? 0) * 10).toFixed(1)} cm`,
+  );
+  await page.mouse.wheel(0, 100);
+  await page.waitForFunction((r) => window.hairsketch.brushRing()?.radius === r, ring0?.radius);
   await page.mouse.down();
   for (let i = 1; i <= 12; i++) await page.mouse.move(cx - 60 + 10 * i, start.y + 30);
   await page.mouse.up();
@@ -171,9 +187,14 @@ test('the scalp brush paints and erases scalp; Undo restores it', async ({ page 
   await page.mouse.down();
   for (let i = 1; i <= 12; i++) await page.mouse.move(cx - 60 + 10 * i, start.y + 30);
   await page.mouse.up();
+  // the ring says it erased (red) while Shift was held
+  expect(await page.evaluate(() => window.hairsketch.brushRing()?.erase)).toBe(true);
   await page.keyboard.up('Shift');
   await settled(page, s1.revision);
   expect((await headInfo(page)).scalpTriangles).toBeLessThan(painted);
+  // another tool puts the brush down: no ring
+  await page.getByRole('button', { name: 'Stream curve' }).click();
+  await page.waitForFunction(() => window.hairsketch.brushRing() === null);
   await page.getByRole('button', { name: 'Undo' }).click();
   await page.getByRole('button', { name: 'Undo' }).click();
   await settled(page);

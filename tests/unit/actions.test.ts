@@ -53,6 +53,7 @@ function target() {
     open: () => calls.push('open'),
     exportMenu: () => calls.push('export'),
     resetView: () => calls.push('reset'),
+    showView: (name) => calls.push(`view:${name}`),
     orbitSpeed: () => speed,
     setOrbitSpeed: (f) => {
       speed = f;
@@ -171,6 +172,23 @@ describe('actions', () => {
     a?.run();
     expect(a?.pressed?.()).toBe(false);
     expect(calls).toEqual(['detail', 'detail']);
+  });
+
+  it('named views at a key each: F front, Shift+F back, L left, Shift+L right, T top', () => {
+    const { t, calls } = target();
+    const actions = buildActions(t);
+    for (const [k, shift] of [
+      ['f', false],
+      ['f', true],
+      ['l', false],
+      ['l', true],
+      ['t', false],
+    ] as const) {
+      const s = key(k, { shift });
+      const a = s ? actionForShortcut(actions, s) : null;
+      a?.run();
+    }
+    expect(calls).toEqual(['view:front', 'view:back', 'view:left', 'view:right', 'view:top']);
   });
 
   it('"x" toggles Mirror; its button is pressed while on', () => {

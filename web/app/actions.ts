@@ -4,6 +4,7 @@
 import type { ToolName } from '../editor/editor';
 import type { CurveType } from '../model/session';
 import { DISPLAY_TOGGLES, type DisplayKey } from '../ui/displayToggles';
+import type { AppViewName } from '../viewer/namedViews';
 
 export type ActionGroup = 'tools' | 'curve' | 'edit' | 'file' | 'view' | 'display';
 
@@ -53,6 +54,8 @@ export interface ActionTarget {
   open(): void;
   exportMenu(): void;
   resetView(): void;
+  /** Eases the camera to a named view (viewer/namedViews.ts). */
+  showView(name: AppViewName): void;
   orbitSpeed(): number;
   setOrbitSpeed(factor: number): void;
   cancel(): void;
@@ -266,6 +269,16 @@ export function buildActions(t: ActionTarget): Action[] {
       toolbar: 'more',
       run: () => t.resetView(),
     },
+    ...NAMED_VIEWS.map(
+      (v): Action => ({
+        id: `view.${v.name}`,
+        label: v.label,
+        title: v.title,
+        shortcuts: [v.key],
+        group: 'view',
+        run: () => t.showView(v.name),
+      }),
+    ),
     ...(t.cycleQuality && t.qualityLabel
       ? [
           {
@@ -359,6 +372,21 @@ export function buildActions(t: ActionTarget): Action[] {
     ),
   ];
 }
+
+/** The named views (the view control's buttons, ui/viewControl.ts), and their keys: Shift turns
+ *  a view round to its opposite. */
+export const NAMED_VIEWS: ReadonlyArray<{
+  name: AppViewName;
+  label: string;
+  key: string;
+  title: string;
+}> = [
+  { name: 'front', label: 'Front view', key: 'f', title: 'Look at the face, straight on' },
+  { name: 'back', label: 'Back view', key: 'shift+f', title: 'Look at the back of the head' },
+  { name: 'left', label: 'Left view', key: 'l', title: "The head's left side (its left ear)" },
+  { name: 'right', label: 'Right view', key: 'shift+l', title: "The head's right side" },
+  { name: 'top', label: 'Top view', key: 't', title: 'Look down on the crown' },
+];
 
 /** The shortcut a key event spells ('mod+shift+z', 'delete', '?', 's'…). */
 export function shortcutOf(e: {

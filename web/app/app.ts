@@ -19,11 +19,13 @@ import { buildHelpOverlay, type HelpOverlay } from '../ui/helpOverlay';
 import { buildReferencePanel, type ReferencePanel } from '../ui/referencePanel';
 import { StatusLine } from '../ui/status';
 import { buildToolbar } from '../ui/toolbar';
+import { buildViewControl } from '../ui/viewControl';
 import { HairView } from '../viewer/hairView';
 import { createHeadMesh } from '../viewer/headMaterial';
+import { viewLabel } from '../viewer/namedViews';
 import { ReferencePlanes } from '../viewer/referencePlanes';
 import { Viewer } from '../viewer/viewer';
-import { buildActions } from './actions';
+import { buildActions, NAMED_VIEWS } from './actions';
 import { ActiveTool } from './activeTool';
 import { wireCardsView } from './cardsPresenter';
 import { editActions } from './editActions';
@@ -200,6 +202,20 @@ export function startApp(): void {
     openHeadFiles: (files) => heads.openHeadFiles(editor, files),
     openReferenceFile: (f) => references.openPickedFile(editor, f),
   });
+  // the scalp brush's ring goes with the tool
+  editor.listen(() => {
+    if (editor.tool !== 'scalp') tools.scalpBrush.hideRing();
+  });
+  const views = buildViewControl(
+    byId('stage'),
+    actions.filter((a) => NAMED_VIEWS.some((v) => a.id === `view.${v.name}`)),
+  );
+  const followView = () => {
+    const c = viewer.cameraState();
+    views.setLabel(viewLabel(c.position, c.target));
+  };
+  followView();
+  viewer.renderedListeners.add(followView);
   help = buildHelpOverlay(document.body, actions);
   exporting = wireExport({
     editor,

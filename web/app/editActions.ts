@@ -91,6 +91,7 @@ export function editActions(d: EditActionDeps): EditActions {
     },
     open: () => d.openDialog(),
     resetView: () => viewer.resetView(),
+    showView: (name) => viewer.showView(name),
     orbitSpeed: () => viewer.orbitSpeed,
     setOrbitSpeed: (f) => {
       viewer.setOrbitSpeed(f);

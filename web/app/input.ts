@@ -41,6 +41,13 @@ export function bindInput(d: InputDeps): void {
   canvas.addEventListener(moves, (e) => {
     if (e instanceof PointerEvent && e.pointerId === captured) d.tool().onPointerMove(ptr(e));
   });
+  // hovering (no press): a tool may show where it would act (the scalp brush's ring)
+  canvas.addEventListener('pointermove', (e) => {
+    if (captured === null) d.tool().onHover?.(ptr(e));
+  });
+  canvas.addEventListener('pointerleave', () => {
+    if (captured === null) d.tool().onHover?.(null);
+  });
   const end = (e: PointerEvent, cancel: boolean) => {
     if (e.pointerId !== captured) return;
     captured = null;

@@ -138,6 +138,9 @@ export interface HairsketchTestApi {
   frameSources(): { hair: number; static: number; none: number };
   /** Scalp vertices tinted by section (while a tie tool is active; 0 otherwise). */
   sectionsTinted(): number;
+  /** The scalp brush's ring on the head (its radius, world units, and whether it erases), or
+   *  null when none is shown. */
+  brushRing(): { radius: number; erase: boolean } | null;
 }
 
 declare global {
@@ -341,6 +344,7 @@ export function installTestApi(app: TestApiParts): void {
     frameSource: () => viewer.lastFrameSource,
     frameSources: () => ({ ...viewer.frameSources }),
     sectionsTinted: () => app.sectionsTinted(),
+    brushRing: () => viewer.brushRing,
   };
 }
 

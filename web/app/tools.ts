@@ -126,7 +126,16 @@ export function createTools(d: ToolDeps): ToolSet {
     preview: (stroke) => d.previewScalp(stroke),
     commit: (stroke) =>
       editor.run({ kind: 'paintScalp', stroke: { ...stroke, points: [...stroke.points] } }),
-    radiusChanged: (r) => d.notify(`Scalp brush radius ${Math.round(r * 100)} mm.`),
+    radiusChanged: (r) =>
+      d.notify(`Scalp brush radius ${(r * 10).toFixed(1)} cm (wheel: 5 % a notch).`),
+    ring: (at) => {
+      if (!at) {
+        viewer.setBrushRing(null);
+        return;
+      }
+      const { normal } = d.head().closest(at.point);
+      viewer.setBrushRing({ centre: at.point, normal, radius: at.radius, erase: at.erase });
+    },
     notify: d.notify,
   });
 

@@ -1,5 +1,6 @@
 // The scalp brush: drag on the head to paint scalp, Shift+drag to erase it; the wheel
-// sets the brush radius. The stroke is shown painted while it is drawn (a preview of the mask,
+// sets the brush radius (5 % a notch). A ring on the head under the pointer shows the brush's
+// size and whether it paints or erases (Shift held). The stroke is shown painted while it is drawn (a preview of the mask,
 // no solve) and becomes one undoable edit on release: the session keeps the stroke, and the
 // roots redistribute over the painted area when the solver gets the new mask.
 import type { ScalpPaintStroke } from '../head/scalpPaint';
@@ -16,6 +17,8 @@ export interface ScalpBrushDeps {
   commit(stroke: ScalpPaintStroke): void;
   /** The radius changed (status line). */
   radiusChanged?(radius: number): void;
+  /** Shows the brush's ring at a head point (null: hides it). */
+  ring?(at: { point: Vec3; radius: number; erase: boolean } | null): void;
   notify(message: string): void;
 }
 
@@ -31,6 +34,8 @@ export class ScalpBrushTool implements Tool {
   readonly name = 'scalp';
   private stroke: Stroke | null = null;
   private r: number = BRUSH_RADIUS.initial;
+  /** Where the ring is shown (the last head point under the pointer), and its mode. */
+  private ringAt: { point: Vec3; erase: boolean } | null = null;
 
   constructor(private readonly d: ScalpBrushDeps) {}
 
@@ -47,12 +52,30 @@ export class ScalpBrushTool implements Tool {
     if (!Number.isFinite(next) || next === this.r) return;
     this.r = next;
     this.d.radiusChanged?.(next);
+    this.showRing();
   }
 
-  /** The wheel scales the radius (10 % a notch) instead of zooming. */
+  /** The wheel scales the radius (5 % a notch) instead of zooming. */
   onWheel(deltaY: number): boolean {
-    this.setRadius(this.r * (deltaY < 0 ? 1.1 : 1 / 1.1));
+    this.setRadius(this.r * (deltaY < 0 ? 1.05 : 1 / 1.05));
     return true;
+  }
+
+  onHover(p: ToolPointer | null): void {
+    const hit = p ? this.d.hit(p.x, p.y) : null;
+    this.ringAt = hit && p ? { point: hit, erase: !!p.shiftKey } : null;
+    this.showRing();
+  }
+
+  /** The tool is put down: the ring goes. */
+  hideRing(): void {
+    this.ringAt = null;
+    this.showRing();
+  }
+
+  private showRing(): void {
+    const a = this.ringAt;
+    this.d.ring?.(a ? { point: a.point, radius: this.r, erase: a.erase } : null);
   }
 
   onPointerDown(p: ToolPointer): boolean {
@@ -63,6 +86,8 @@ export class ScalpBrushTool implements Tool {
       return false;
     }
     this.stroke = { erase: !!p.shiftKey, points: [hit], dirty: true };
+    this.ringAt = { point: hit, erase: !!p.shiftKey };
+    this.showRing();
     return true;
   }
 
@@ -71,6 +96,8 @@ export class ScalpBrushTool implements Tool {
     if (!k) return;
     const hit = this.d.hit(p.x, p.y);
     if (!hit) return;
+    this.ringAt = { point: hit, erase: k.erase };
+    this.showRing();
     const last = k.points[k.points.length - 1];
     if (Math.hypot(hit[0] - last[0], hit[1] - last[1], hit[2] - last[2]) < this.r / 3) return;
     k.points.push(hit);

@@ -17,4 +17,6 @@ export interface Tool {
   update(): void;
   /** The wheel over the view; true when the tool used it (the camera then does not zoom). */
   onWheel?(deltaY: number): boolean;
+  /** The pointer moved over the view with no press (null: it left the view). */
+  onHover?(p: ToolPointer | null): void;
 }

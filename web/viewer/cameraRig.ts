@@ -61,10 +61,12 @@ export class CameraRig {
    *  animated over ~0.45 s unless `animate` is false. Orbiting, setCamera or another resetView
    *  during the animation takes over from it. */
   resetView(animate = true): void {
-    const to: CameraView = {
-      position: [...this.homeView.position],
-      target: [...this.homeView.target],
-    };
+    this.easeTo(this.homeView.position, this.homeView.target, animate);
+  }
+
+  /** Moves the camera to `position`, looking at `target`, eased as resetView is (a named view). */
+  easeTo(position: Vec3, target: Vec3, animate = true): void {
+    const to: CameraView = { position: [...position], target: [...target] };
     this.stopViewAnimation();
     if (!animate) {
       this.placeCamera(to.position, to.target);
@@ -73,6 +75,11 @@ export class CameraRig {
     this.viewAnimation = { from: this.cameraState(), to, start: -1, ms: RESET_VIEW_MS };
     this.host.hold('view-animation', true); // interactive detail while the camera moves
     this.host.requestRender();
+  }
+
+  /** The framing resetView returns to. */
+  get home(): CameraView {
+    return { position: [...this.homeView.position], target: [...this.homeView.target] };
   }
 
   /** Sets the framing resetView returns to. */

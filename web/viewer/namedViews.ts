@@ -36,3 +36,61 @@ export function namedView(view: ViewName, lowest: number): { position: Vec3; tar
   );
   return { position: position as Vec3, target };
 }
+
+/** The views the app's view control and keys give (app/actions.ts): straight at the head from
+ *  the front, either side, the back and above, a little above eye level, at the starting view's
+ *  distance. The person faces +z, so their left side is +x. */
+export const APP_VIEW_NAMES = ['front', 'left', 'right', 'back', 'top'] as const;
+export type AppViewName = (typeof APP_VIEW_NAMES)[number];
+
+const ELEVATION = (8 * Math.PI) / 180;
+const DIRECTIONS: Record<AppViewName, Vec3> = {
+  front: [0, Math.sin(ELEVATION), Math.cos(ELEVATION)],
+  left: [Math.cos(ELEVATION), Math.sin(ELEVATION), 0],
+  right: [-Math.cos(ELEVATION), Math.sin(ELEVATION), 0],
+  back: [0, Math.sin(ELEVATION), -Math.cos(ELEVATION)],
+  // straight down, the face towards the bottom of the picture
+  top: [0, Math.cos(0.01), Math.sin(0.01)],
+};
+
+/** Where the camera stands for an app view, looking at `target` from `distance`. */
+export function appView(
+  name: AppViewName,
+  target: Vec3 = DEFAULT_CAMERA.target,
+  distance = startDistance(),
+): { position: Vec3; target: Vec3 } {
+  const d = DIRECTIONS[name];
+  return {
+    position: [
+      target[0] + distance * d[0],
+      target[1] + distance * d[1],
+      target[2] + distance * d[2],
+    ],
+    target: [...target] as Vec3,
+  };
+}
+
+function startDistance(): number {
+  const p = DEFAULT_CAMERA.position;
+  const t = DEFAULT_CAMERA.target;
+  return Math.hypot(p[0] - t[0], p[1] - t[1], p[2] - t[2]);
+}
+
+/** What a view from `position` towards `target` is called: an app view's name when the camera
+ *  looks along it (within 3°), "three-quarter front" for the starting view's direction (20° to
+ *  the right of the front), else null (a free view). */
+export function viewLabel(position: Vec3, target: Vec3): string | null {
+  const v: Vec3 = [position[0] - target[0], position[1] - target[1], position[2] - target[2]];
+  const n = Math.hypot(v[0], v[1], v[2]);
+  if (!(n > 0)) return null;
+  const close = (d: Vec3) => {
+    const m = Math.hypot(d[0], d[1], d[2]);
+    const c = (v[0] * d[0] + v[1] * d[1] + v[2] * d[2]) / (n * m);
+    return c >= Math.cos((3 * Math.PI) / 180);
+  };
+  for (const name of APP_VIEW_NAMES) if (close(DIRECTIONS[name])) return name;
+  const p = DEFAULT_CAMERA.position;
+  const t = DEFAULT_CAMERA.target;
+  if (close([p[0] - t[0], p[1] - t[1], p[2] - t[2]])) return 'three-quarter front';
+  return null;
+}

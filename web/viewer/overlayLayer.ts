@@ -27,6 +27,7 @@ export class OverlayLayer {
   private readonly displayGroup = new THREE.Group();
   private readonly guideGroup = new THREE.Group();
   private draft: THREE.Object3D | null = null;
+  private ring: THREE.Object3D | null = null;
 
   /** `scene`: where the draft goes (the groups are added by the viewer, in groups' order);
    *  `viewForward`: the view direction, for the draft's end bar. */
@@ -43,7 +44,11 @@ export class OverlayLayer {
   /** Whether a child of the scene is an overlay. */
   holds(o: THREE.Object3D): boolean {
     return (
-      o === this.curveGroup || o === this.displayGroup || o === this.guideGroup || o === this.draft
+      o === this.curveGroup ||
+      o === this.displayGroup ||
+      o === this.guideGroup ||
+      o === this.draft ||
+      o === this.ring
     );
   }
 
@@ -104,5 +109,44 @@ export class OverlayLayer {
       this.draft = group;
       this.scene.add(this.draft);
     }
+  }
+
+  /** The scalp brush's ring (null: none): a circle of the brush's radius round `centre`, square to
+   *  the head's normal there, lifted 2 mm off it; blue while it paints, red while it erases. */
+  setBrushRing(ring: { centre: Vec3; normal: Vec3; radius: number; erase: boolean } | null): void {
+    if (this.ring) {
+      this.scene.remove(this.ring);
+      disposeObject(this.ring);
+      this.ring = null;
+    }
+    if (!ring) return;
+    const n = new THREE.Vector3(...ring.normal).normalize();
+    const u = new THREE.Vector3(Math.abs(n.y) < 0.9 ? 0 : 1, Math.abs(n.y) < 0.9 ? 1 : 0, 0)
+      .cross(n)
+      .normalize();
+    const v = n.clone().cross(u);
+    const c = new THREE.Vector3(...ring.centre).addScaledVector(n, 0.02);
+    const pts: Vec3[] = [];
+    for (let i = 0; i <= 64; i++) {
+      const a = (2 * Math.PI * i) / 64;
+      const p = c
+        .clone()
+        .addScaledVector(u, ring.radius * Math.cos(a))
+        .addScaledVector(v, ring.radius * Math.sin(a));
+      pts.push([p.x, p.y, p.z]);
+    }
+    this.ring = overlayPolyline(
+      pts,
+      ring.erase ? OVERLAY_RGB.brushErase : OVERLAY_RGB.brushPaint,
+      OVERLAY_ORDER.draft,
+      0.85, // seen through the hair over the scalp
+    );
+    this.ring.userData.brushRing = { radius: ring.radius, erase: ring.erase };
+    this.scene.add(this.ring);
+  }
+
+  /** The brush ring shown (radius, mode), or null. */
+  get brushRing(): { radius: number; erase: boolean } | null {
+    return (this.ring?.userData.brushRing as { radius: number; erase: boolean }) ?? null;
   }
 }

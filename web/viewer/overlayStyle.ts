@@ -19,6 +19,8 @@ export type OverlayKind =
   | 'ponytail' // a ponytail's spine
   | 'ponytailGuide' // its strokes and circles
   | 'draft' // the stroke being drawn
+  | 'brushPaint' // the scalp brush's ring while it paints
+  | 'brushErase' // and while it erases
   | 'selected'; // the selected curve, whatever its type
 
 /** sRGB colour (0xRRGGBB) of each kind: distinct hues that read against skin, hair and the grey
@@ -29,6 +31,8 @@ export const OVERLAY_RGB: Readonly<Record<OverlayKind, number>> = {
   ponytail: 0x7a3cff, // violet
   ponytailGuide: 0xc58aff, // light purple (the purple circles of docs/user-guide.md)
   draft: 0x1f6bff, // blue
+  brushPaint: 0x1f6bff, // blue, as the stroke being drawn
+  brushErase: 0xff3b30, // red
   selected: 0xffc400, // amber
 };
 

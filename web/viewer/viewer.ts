@@ -25,6 +25,7 @@ import { DEFAULT_CAMERA } from './defaultCamera';
 import { type FrameMode, type FramePlan, OverlayWait } from './frameCache';
 import { HairLevelOfDetail, INTERACTIVE_RESOLUTION } from './hairLevelOfDetail';
 import { LayeredDrawing } from './layeredDrawing';
+import { type AppViewName, appView } from './namedViews';
 import { type CurveView, OverlayLayer } from './overlayLayer';
 import { basePixelRatio, glRendererName, isSoftwareRenderer } from './rendererProbe';
 import { disposeObject } from './sceneObjects';
@@ -67,6 +68,8 @@ export class Viewer {
   private frameHooks: Array<() => void> = [];
   /** Called after each rendered frame (e.g. to count displayed hair revisions). */
   onRendered: (() => void) | null = null;
+  /** Also called after each rendered frame (the view control's label follows the camera). */
+  readonly renderedListeners = new Set<() => void>();
   /** The settled view was drawn at interactive detail; its full-detail frame is still to come
    *  (in fullDetailWait more frames). */
   private fullDetailOwed = false;
@@ -178,6 +181,7 @@ export class Viewer {
     // a frame that drew no hair says nothing about what hair costs
     this.lastRender = { time: now, drawn: source === 'hair' ? -1 : plan.count };
     this.onRendered?.();
+    for (const cb of this.renderedListeners) cb();
     const hair = this.hairGroup.children[0] ?? null;
     if (hair !== this.shownHair) {
       this.shownHair = hair;
@@ -346,6 +350,19 @@ export class Viewer {
     this.rig.resetView(animate);
   }
 
+  /** Eases the camera to a named view (namedViews.ts appView) of the home framing's target,
+   *  at its distance, as resetView eases home. */
+  showView(name: AppViewName): void {
+    const home = this.rig.home;
+    const d = Math.hypot(
+      home.position[0] - home.target[0],
+      home.position[1] - home.target[1],
+      home.position[2] - home.target[2],
+    );
+    const v = appView(name, home.target, d);
+    this.rig.easeTo(v.position, v.target);
+  }
+
   /** Sets the framing resetView returns to (default: DEFAULT_CAMERA). */
   setHomeView(position: Vec3, target: Vec3): void {
     this.rig.setHomeView(position, target);
@@ -442,6 +459,18 @@ export class Viewer {
 
   /** The stroke being drawn (null: none), in the draft colour, over the curves. With `endsHair`
    *  a bar across its last point marks where the hair it governs will end. */
+  /** The scalp brush's ring (overlayLayer.ts setBrushRing; null hides it). */
+  setBrushRing(ring: { centre: Vec3; normal: Vec3; radius: number; erase: boolean } | null): void {
+    if (!ring && !this.overlays.brushRing) return;
+    this.overlays.setBrushRing(ring);
+    this.requestRender();
+  }
+
+  /** The brush ring shown, or null. */
+  get brushRing(): { radius: number; erase: boolean } | null {
+    return this.overlays.brushRing;
+  }
+
   setDraft(points: readonly Vec3[] | null, endsHair = false): void {
     this.overlays.setDraft(points, endsHair);
     this.requestRender();
