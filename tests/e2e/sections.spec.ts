@@ -55,7 +55,7 @@ function share(h: Hair, curve: number, side: (r: V3) => boolean): number {
 }
 
 async function emptyHead(page: Page, camera: { position: V3; target: V3 }) {
-  await page.goto('/?preset=empty&strands=3000');
+  await page.goto('/?preset=empty&strands=2000');
   await settled(page);
   await page.evaluate(
     ([p, t]) => window.hairsketch.setCamera(p as V3, t as V3),
@@ -86,7 +86,7 @@ test('half-up: an ear-to-ear parting and a bun on the top section gather the top
     })),
   );
   await curveCount(page, 2);
-  const done = await settled(page, rev);
+  await settled(page, rev);
   const s = (await page.evaluate(() => window.hairsketch.session())) as {
     curves: { type: string; points: V3[]; section?: number }[];
     sections?: boolean;
@@ -115,6 +115,7 @@ test('half-up: an ear-to-ear parting and a bun on the top section gather the top
 
   // Undo takes the bun away, Redo brings back the same hair, a reload of the link keeps it
   const hash = await page.evaluate(() => window.hairsketch.hairHash());
+  const done = await status(page);
   await page.keyboard.press('Control+z');
   await curveCount(page, 1);
   const undone = await settled(page, done.revision);
