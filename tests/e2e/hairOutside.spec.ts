@@ -74,6 +74,17 @@ test('the Detail panel curls the hair, and Undo restores it exactly', async ({ p
     detail?: { curl?: { radius: number } };
   };
   expect(session.detail?.curl?.radius).toBe(0.1); // Blender's default radius
+  // lengths show in centimetres: 0.1 world units is 1 cm
+  await expect(panel.getByRole('spinbutton', { name: 'Curl radius' })).toHaveValue('1');
+  await expect(panel.getByText('Radius (cm)')).toBeVisible();
+  // with a curve selected the whole head's detail stays, the curve's own below it
+  const firstCurve = (
+    (await page.evaluate(() => window.hairsketch.session())) as { curves: { id: string }[] }
+  ).curves[0].id;
+  await page.evaluate((id) => window.hairsketch.select(id), firstCurve);
+  await expect(panel.getByRole('checkbox', { name: 'Curl', exact: true })).toBeChecked();
+  await expect(panel.getByRole('checkbox', { name: `Own detail for ${firstCurve}` })).toBeVisible();
+  await page.evaluate(() => window.hairsketch.select(null));
   const hash = await page.evaluate(() => window.hairsketch.hairHash());
   expect(hash).not.toBe(before);
   expect(await page.evaluate(() => window.hairsketch.segmentsInsideHead(0.01).inside)).toBe(0);

@@ -32,6 +32,10 @@ export type DetailBlock = 'curl' | 'clump' | 'frizz';
 export interface DetailParamSpec {
   key: string;
   label: string;
+  /** How the Hair panel shows it: 'cm' a length in world units shown in centimetres (× 10);
+   *  'turns per 10 cm' per world unit; 'of length', 'of a turn' fractions; absent: a plain
+   *  number. */
+  unit?: 'cm' | 'turns per 10 cm' | 'of length' | 'of a turn';
   default: number;
   min: number;
   max: number;
@@ -40,19 +44,51 @@ export interface DetailParamSpec {
 
 export const DETAIL_PARAMS = {
   curl: [
-    { key: 'radius', label: 'Radius', default: 0.1, min: 0, max: 0.5, step: 0.005 },
-    { key: 'frequency', label: 'Frequency', default: 1, min: 0, max: 20, step: 0.1 },
-    { key: 'start', label: 'Start', default: 0.1, min: 0, max: 1, step: 0.01 },
-    { key: 'randomOffset', label: 'Random offset', default: 0.25, min: 0, max: 1, step: 0.01 },
+    { key: 'radius', label: 'Radius', unit: 'cm', default: 0.1, min: 0, max: 0.5, step: 0.005 },
+    {
+      key: 'frequency',
+      label: 'Frequency',
+      unit: 'turns per 10 cm',
+      default: 1,
+      min: 0,
+      max: 20,
+      step: 0.1,
+    },
+    { key: 'start', label: 'Start', unit: 'of length', default: 0.1, min: 0, max: 1, step: 0.01 },
+    {
+      key: 'randomOffset',
+      label: 'Random offset',
+      unit: 'of a turn',
+      default: 0.25,
+      min: 0,
+      max: 1,
+      step: 0.01,
+    },
   ],
   clump: [
     { key: 'factor', label: 'Factor', default: 1, min: 0, max: 1, step: 0.01 },
     { key: 'shape', label: 'Shape', default: 0.5, min: -1, max: 1, step: 0.01 },
-    { key: 'tipSpread', label: 'Tip spread', default: 0, min: 0, max: 1, step: 0.005 },
-    { key: 'guideDistance', label: 'Guide distance', default: 0.1, min: 0.01, max: 2, step: 0.01 },
+    { key: 'tipSpread', label: 'Tip spread', unit: 'cm', default: 0, min: 0, max: 1, step: 0.005 },
+    {
+      key: 'guideDistance',
+      label: 'Guide distance',
+      unit: 'cm',
+      default: 0.1,
+      min: 0.01,
+      max: 2,
+      step: 0.01,
+    },
   ],
   frizz: [
-    { key: 'distance', label: 'Distance', default: 0.01, min: 0, max: 0.5, step: 0.002 },
+    {
+      key: 'distance',
+      label: 'Distance',
+      unit: 'cm',
+      default: 0.01,
+      min: 0,
+      max: 0.5,
+      step: 0.002,
+    },
     { key: 'shape', label: 'Shape', default: 0.5, min: -1, max: 1, step: 0.01 },
   ],
 } as const satisfies Record<DetailBlock, readonly DetailParamSpec[]>;

@@ -1,6 +1,6 @@
 // The "Hair" panel: strand count and maximum length (growth settings), and the detail (curl,
-// clump, frizz, length jitter) of the whole head or, with a curve selected, of the strands that
-// curve governs. Built from model/detail.ts DETAIL_PARAMS; every change is one undoable edit
+// clump, frizz, length jitter) of the whole head and, with a curve selected, below it that
+// curve's own (of the strands it governs). Lengths in centimetres. Built from model/detail.ts DETAIL_PARAMS; every change is one undoable edit
 // (the app runs it as an editor command).
 import {
   DETAIL_BLOCKS,
@@ -123,39 +123,52 @@ export function buildDetailPanel(root: HTMLElement, events: DetailPanelEvents): 
         ),
       ),
     );
-    const own = selected?.detail !== undefined;
-    const scope = document.createElement('h2');
-    scope.textContent = selected ? `Detail: ${selected.id}` : 'Detail: whole head';
-    panel.append(scope);
-    if (selected) {
-      const box = document.createElement('input');
-      box.type = 'checkbox';
-      box.checked = own;
-      box.addEventListener('change', () =>
-        events.setDetail(selected.id, box.checked ? (s.detail ?? {}) : undefined),
-      );
-      const label = document.createElement('label');
-      label.className = 'detail-row';
-      label.append(box, ` Own detail for ${selected.id}`);
-      panel.append(label);
-      if (!own) {
-        const note = document.createElement('p');
-        note.textContent = 'Uses the whole head’s detail.';
-        panel.append(note);
-        return;
-      }
+    // the whole head's detail is always here; a selected curve's own detail follows it
+    panel.append(heading('Detail: whole head'));
+    detailEditors(s.detail ?? {}, (d) => events.setDetail(null, d), '');
+    if (!selected) return;
+    const own = selected.detail !== undefined;
+    panel.append(heading(`Detail: curve ${selected.id} only`));
+    const box = document.createElement('input');
+    box.type = 'checkbox';
+    box.checked = own;
+    box.addEventListener('change', () =>
+      events.setDetail(selected.id, box.checked ? (s.detail ?? {}) : undefined),
+    );
+    const label = document.createElement('label');
+    label.className = 'detail-row';
+    label.append(box, ` Own detail for ${selected.id}`);
+    panel.append(label);
+    if (!own) {
+      const note = document.createElement('p');
+      note.textContent = `Curve ${selected.id} uses the whole head’s detail.`;
+      panel.append(note);
+      return;
     }
-    const curveId = selected ? selected.id : null;
-    const detail: HairDetail = (selected ? selected.detail : s.detail) ?? {};
-    const set = (d: HairDetail) => events.setDetail(curveId, d);
-    for (const b of DETAIL_BLOCKS) panel.append(blockEditor(b, detail, set));
+    detailEditors(
+      selected.detail ?? {},
+      (d) => events.setDetail(selected.id, d),
+      `${selected.id} `,
+    );
+  }
+
+  function heading(text: string): HTMLElement {
+    const h = document.createElement('h2');
+    h.textContent = text;
+    return h;
+  }
+
+  /** The curl, clump and frizz editors and length jitter of one detail; `prefix` starts every
+   *  accessible name (empty for the whole head's, so its names stay "Curl", "Curl radius"…). */
+  function detailEditors(detail: HairDetail, set: (d: HairDetail) => void, prefix: string): void {
+    for (const b of DETAIL_BLOCKS) panel.append(blockEditor(b, detail, set, prefix));
     panel.append(
       row(
         LENGTH_JITTER.label,
         numberInput(
           LENGTH_JITTER,
           detail.lengthJitter ?? 0,
-          { label: LENGTH_JITTER.label },
+          { label: `${prefix}${LENGTH_JITTER.label}` },
           (v) => {
             const { lengthJitter: _, ...rest } = detail;
             set(v > 0 ? { ...rest, lengthJitter: v } : rest);
@@ -170,6 +183,7 @@ export function buildDetailPanel(root: HTMLElement, events: DetailPanelEvents): 
     b: DetailBlock,
     detail: HairDetail,
     set: (d: HairDetail) => void,
+    prefix: string,
   ): HTMLElement {
     const group = document.createElement('fieldset');
     const legend = document.createElement('legend');
@@ -178,7 +192,7 @@ export function buildDetailPanel(root: HTMLElement, events: DetailPanelEvents): 
     const block = detail[b] as Record<string, number> | undefined;
     box.checked = block !== undefined;
     const name = b[0].toUpperCase() + b.slice(1);
-    box.setAttribute('aria-label', name);
+    box.setAttribute('aria-label', `${prefix}${name}`);
     box.addEventListener('change', () => {
       const { [b]: _, ...rest } = detail;
       set(box.checked ? { ...rest, [b]: defaultBlock(b) } : rest);
@@ -187,16 +201,18 @@ export function buildDetailPanel(root: HTMLElement, events: DetailPanelEvents): 
     group.append(legend);
     if (block)
       for (const p of DETAIL_PARAMS[b] as readonly DetailParamSpec[]) {
-        const label = `${name} ${p.label.toLowerCase()}`;
+        const label = `${prefix}${name} ${p.label.toLowerCase()}`;
+        // lengths in centimetres (world units × 10)
+        const k = p.unit === 'cm' ? 10 : 1;
         const input = numberInput(
-          p,
-          block[p.key],
-          { label },
-          (v) => set({ ...detail, [b]: { ...block, [p.key]: v } }),
+          { min: p.min * k, max: p.max * k, step: p.step * k },
+          block[p.key] * k,
+          { label, unit: p.unit === 'cm' ? 'cm' : undefined },
+          (v) => set({ ...detail, [b]: { ...block, [p.key]: v / k } }),
           events.say,
         );
         input.setAttribute('aria-label', label);
-        group.append(row(p.label, input));
+        group.append(row(p.unit ? `${p.label} (${p.unit})` : p.label, input));
       }
     return group;
   }
