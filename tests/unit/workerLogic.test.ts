@@ -294,9 +294,10 @@ describe('WorkerLogic', () => {
     expect(log.slice(at)).toEqual([`grow:${LIGHT}`, 'grow:0']);
     expect(rs[1].stats.errorEstimate).toBeLessThanOrEqual(1e-6);
 
-    // a request that arrives after the sample was posted: the full growth is not done
+    // a request (for other settings: a field to solve) that arrives after the sample was
+    // posted: the full growth is not done
     const before = h.log.length;
-    done = h.logic.handle(solve(2, 'full'));
+    done = h.logic.handle(solve(2, 'full', LIGHT, { ...NO_OPTIONS, fall: true }));
     while (!h.results().some((r) => r.id === 2 && r.converged)) await h.release();
     const newer = h.logic.handle(solve(3, 'preview'));
     while (h.pendingYields() > 0) await h.release();
@@ -304,6 +305,36 @@ describe('WorkerLogic', () => {
     expect(h.results().filter((r) => r.id === 2 && r.final)).toEqual([]);
     expect(h.log.slice(before).filter((l) => l === 'grow:0')).toEqual([]);
     expect(h.results().at(-1)?.id).toBe(3);
+  });
+
+  it('a change of growth or detail alone grows from the field it has, without solving again', async () => {
+    const h = harness();
+    await h.logic.handle(init);
+    let done = h.logic.handle(solve(1, 'full'));
+    while (h.pendingYields() > 0) await h.release();
+    await done;
+    // the same curves and settings, another detail: no iteration, no new curves, one final growth
+    const before = h.log.length;
+    const curly = { ...NO_OPTIONS, detail: { ...NO_OPTIONS.detail, groups: new Float64Array(11) } };
+    curly.detail.groups[10] = 0.3;
+    done = h.logic.handle(solve(2, 'full', LIGHT, curly));
+    while (h.pendingYields() > 0) await h.release();
+    await done;
+    const after = h.log.slice(before);
+    expect(after.filter((l) => l.startsWith('iterate') || l.startsWith('curves'))).toEqual([]);
+    expect(after.filter((l) => l.startsWith('grow'))).toEqual(['grow:0']);
+    expect(
+      h
+        .results()
+        .filter((r) => r.id === 2)
+        .map((r) => r.final),
+    ).toEqual([true]);
+    // other settings (a different field): solved again
+    const again = h.log.length;
+    done = h.logic.handle(solve(3, 'full', LIGHT, { ...NO_OPTIONS, fall: true }));
+    while (h.pendingYields() > 0) await h.release();
+    await done;
+    expect(h.log.slice(again).some((l) => l.startsWith('iterate'))).toBe(true);
   });
 
   it('posts no light growth of the converged field when the full hair is no heavier', async () => {

@@ -14,6 +14,7 @@
 // A 'scalpMask' message changes the scalp at once (no restart, nothing else rebuilt); a 'grid'
 // message moves the engine to another grid in place (the head stays).
 import { ResultLighting } from '../lighting/resultLighting';
+import { contentKey } from '../model/curveSet';
 import { engineSettings } from '../model/sessionSchema';
 import { everyOtherPoint } from '../model/strandSubsample';
 import { lineAttributes } from '../viewer/strandAttributes';
@@ -105,6 +106,10 @@ export class WorkerLogic {
   /** Bumped by every grid change: a job started before it is dropped. */
   private gridEpoch = 0;
   private jobEpoch = 0;
+  /** The field the engine holds is the converged full solve of the curves and settings of this
+   *  key (fieldKey) on grid epoch `epoch`: a job asking for the same field (a change of growth or
+   *  detail alone) grows from it without solving again. Null once anything else touched it. */
+  private solved: { key: string; epoch: number; progress: IterateProgress } | null = null;
 
   constructor(
     readonly engine: SolverEngine,
@@ -115,6 +120,7 @@ export class WorkerLogic {
   /** Handles one message; solve jobs run asynchronously. Returns when the job queue is empty. */
   handle(msg: ToWorker): Promise<void> {
     if (msg.type === 'init') {
+      this.solved = null;
       try {
         this.engine.setGrid(msg.grid, msg.omega, msg.solver);
         this.setup = { omega: msg.omega, solver: msg.solver };
@@ -159,6 +165,7 @@ export class WorkerLogic {
    *  grows its remaining results from it too; the app asks again after a scalp edit). The
    *  lighting head keeps its triangles. A refused mask is reported and the old one stays. */
   private setScalpMask(scalp: Uint8Array): void {
+    this.solved = null; // which curve points lie off the scalp (and so the constraints) may change
     const fail = (message: string, kind: SolverErrorKind): void => {
       this.post({ type: 'error', id: null, message: `Scalp mask: ${message}`, kind });
     };
@@ -178,6 +185,7 @@ export class WorkerLogic {
    *  its grid still holds the new one (ResultLighting.forGrid). */
   private setGrid(grid: GridSpec): void {
     this.gridEpoch++;
+    this.solved = null;
     if (!this.initialised || !this.setup) {
       this.post({
         type: 'error',
@@ -230,6 +238,14 @@ export class WorkerLogic {
     this.post({ type: 'progress', id: job.id, phase: 'constraints', fraction: 0 });
     this.engine.setDetail?.(job.options.detail);
     this.engine.setSettings?.(engineSettings(job.options));
+    const key = fieldKey(job);
+    const kept = this.solved;
+    if (job.mode !== 'preview' && kept && kept.key === key && kept.epoch === this.jobEpoch) {
+      // the same field as the last full solve (only growth or detail changed): grow from it
+      this.emit(job, job.growth, kept.progress, true, t0);
+      return;
+    }
+    this.solved = null;
     // a full solve's first look runs a few warm iterations and forgetWarmStart then rebuilds the
     // preconditioner from the penalties alone: its incremental update would be thrown away
     if (job.mode !== 'preview') this.engine.deferPreconditionerUpdate?.();
@@ -292,6 +308,7 @@ export class WorkerLogic {
         this.post({ type: 'progress', id: job.id, phase: 'solve', fraction: 0.95 });
       }
     }
+    this.solved = { key, epoch: this.jobEpoch, progress: p };
     if (o.convergedSample && lightenedGrowth(job)) {
       this.emit(job, lightGrowth(job), p, false, t0, true);
       await o.yieldNow();
@@ -353,4 +370,21 @@ export class WorkerLogic {
       converged,
     });
   }
+}
+
+/** What a job's field depends on: its curves (every array of the set) and its settings (natural
+ *  fall's prior, scalp avoidance, sections); growth and detail are not part of it. */
+function fieldKey(job: SolveMsg): string {
+  const c = job.curves;
+  return contentKey(
+    c.points,
+    c.curveStart,
+    c.kinds,
+    c.extend,
+    c.params,
+    c.paramStart,
+    c.extraIndex,
+    c.extraTarget,
+    engineSettings(job.options),
+  );
 }
