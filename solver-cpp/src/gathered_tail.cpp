@@ -406,7 +406,7 @@ float sectionBunRadius(float share, float lengthAfterTie) {
   // The hair's volume: a full head's tail (kTailRadius) times its length, coiled into a dome of
   // radius R and height 0.6 R whose strands lie a little looser: R = 0.63 (A L)^(1/3) in
   // centimetres, 4.5 cm for a whole head of 30 cm of hair past the tie.
-  const float areaCm2 = 3.14159265f * 400 * kTailRadius * kTailRadius * std::max(share, 0.f);
+  const float areaCm2 = 3.14159265f * 100 * kTailRadius * kTailRadius * std::max(share, 0.f);
   const float cm = 0.63f * std::cbrt(areaCm2 * 10 * std::max(lengthAfterTie, 0.f));
   return cm / 10;
 }

@@ -251,6 +251,27 @@ TEST(SectionTies, WithNoPartingEveryTieKindGathersTheWholeHead) {
     const double got = share(e, 0, all);
     std::printf("[sections] kind %d gathers %.1f %% of the head\n", kind, 100 * got);
     EXPECT_GE(got, 0.95) << "kind " << kind;
+    if (kind == 2) {
+      // a whole head of 40 cm hair coils into a bun about 8-10 cm across: the widest extent of
+      // its strands' points square to the bun's axis (off the scalp, more than 1 cm out)
+      const Vector3d axis = back.normalized();
+      const Vector3d c = axis * 1.0;
+      const Strands& st = e.strands();
+      double widest = 0;
+      for (size_t k = 0; k + 1 < st.strandStart.size(); ++k) {
+        if (e.strandTailCurves()[k] != 0) continue;
+        for (uint32_t q = st.strandStart[k]; q < st.strandStart[k + 1]; ++q) {
+          const Vector3d p(st.points[3 * q], st.points[3 * q + 1], st.points[3 * q + 2]);
+          if ((p - c).dot(axis) < 0.1) continue;
+          const Vector3d r = (p - c) - (p - c).dot(axis) * axis;
+          widest = std::max(widest, r.norm());
+        }
+      }
+      std::printf("[sections] the bun of a whole head of 40 cm hair: %.1f cm across\n",
+                  20 * widest);
+      EXPECT_GE(20 * widest, 7.0);
+      EXPECT_LE(20 * widest, 11.0);
+    }
   }
 }
 

@@ -4,6 +4,7 @@
 import * as THREE from 'three';
 import type { Vec3 } from '../model/vec3';
 import {
+  BRUSH_RING_RGB,
   curveRgb,
   HIDDEN_OPACITY,
   OVERLAY_ORDER,
@@ -137,7 +138,7 @@ export class OverlayLayer {
     }
     this.ring = overlayPolyline(
       pts,
-      ring.erase ? OVERLAY_RGB.brushErase : OVERLAY_RGB.brushPaint,
+      ring.erase ? BRUSH_RING_RGB.erase : BRUSH_RING_RGB.paint,
       OVERLAY_ORDER.draft,
       0.85, // seen through the hair over the scalp
     );

@@ -19,8 +19,6 @@ export type OverlayKind =
   | 'ponytail' // a ponytail's spine
   | 'ponytailGuide' // its strokes and circles
   | 'draft' // the stroke being drawn
-  | 'brushPaint' // the scalp brush's ring while it paints
-  | 'brushErase' // and while it erases
   | 'selected'; // the selected curve, whatever its type
 
 /** sRGB colour (0xRRGGBB) of each kind: distinct hues that read against skin, hair and the grey
@@ -31,10 +29,12 @@ export const OVERLAY_RGB: Readonly<Record<OverlayKind, number>> = {
   ponytail: 0x7a3cff, // violet
   ponytailGuide: 0xc58aff, // light purple (the purple circles of docs/user-guide.md)
   draft: 0x1f6bff, // blue
-  brushPaint: 0x1f6bff, // blue, as the stroke being drawn
-  brushErase: 0xff3b30, // red
   selected: 0xffc400, // amber
 };
+
+/** The scalp brush's ring (overlayLayer.ts setBrushRing): the draft's blue while it paints, red
+ *  while it erases. */
+export const BRUSH_RING_RGB = { paint: OVERLAY_RGB.draft, erase: 0xff3b30 } as const;
 
 /** Colour of a session curve of `type` (selected or not). Unknown types draw as stream curves. */
 export function curveRgb(type: string | undefined, selected: boolean): number {
