@@ -109,8 +109,10 @@ lane_app() {
 }
 lane_native() {
   local rc=0
-  phase "native build" native_build || rc=$?
-  [ "$rc" = 0 ] && { phase "native tests (ctest)" ctest --test-dir build/native --output-on-failure -j2 || rc=$?; }
+  # niced: the native lane has time to spare (it ends long before the browser tests), and the
+  # app lane's wasm build and browser tests are the run's critical path, so they get the CPU first
+  phase "native build" nice -n 10 bash -c "set -e; $(declare -f native_build); native_build" || rc=$?
+  [ "$rc" = 0 ] && { phase "native tests (ctest)" nice -n 10 ctest --test-dir build/native --output-on-failure -j2 || rc=$?; }
   if [ "$rc" = 0 ]; then echo ok > "$native_done"; else echo failed > "$native_done"; fi
   return "$rc"
 }
