@@ -91,7 +91,6 @@ logs=build/test-logs
 built="$logs/app-built"            # the app lane: the wasm module, the app and the CLI bundle
 installed="$logs/packages-installed"  # the checks lane: npm's and Python's packages
 native_done="$logs/native-tested"  # the native lane: ctest, which writes the native fields
-wasm_built="$logs/wasm-built"      # the app lane: the wasm module (the native lane starts then)
 wait_for() {  # file what: waits until the file says; fails unless it says ok
   until [ -s "$1" ]; do sleep 1; done
   if [ "$(cat "$1")" != ok ]; then
@@ -102,7 +101,6 @@ wait_for() {  # file what: waits until the file says; fails unless it says ok
 lane_app() {
   local rc=0
   phase "wasm build" bash wasm-build/build.sh || rc=$?
-  if [ "$rc" = 0 ]; then echo ok > "$wasm_built"; else echo failed > "$wasm_built"; fi
   [ "$rc" = 0 ] && { wait_for "$installed" "npm's packages" || rc=$?; }
   [ "$rc" = 0 ] && { phase "types (tsc; needs the wasm module's declarations)" npx tsc --noEmit -p tsconfig.json || rc=$?; }
   [ "$rc" = 0 ] && { phase "web build (app, CLI bundle)" web_build || rc=$?; }
@@ -111,10 +109,7 @@ lane_app() {
 }
 lane_native() {
   local rc=0
-  # after the wasm build: the native lane has time to spare (it ends long before the browser
-  # tests), and the wasm build, which the browser tests wait for, is the run's critical path
-  wait_for "$wasm_built" "the wasm build" || rc=$?
-  [ "$rc" = 0 ] && { phase "native build" native_build || rc=$?; }
+  phase "native build" native_build || rc=$?
   [ "$rc" = 0 ] && { phase "native tests (ctest)" ctest --test-dir build/native --output-on-failure -j2 || rc=$?; }
   if [ "$rc" = 0 ]; then echo ok > "$native_done"; else echo failed > "$native_done"; fi
   return "$rc"
@@ -142,7 +137,7 @@ lane_checks() {
 lanes() {  # runs the three lanes at once; prints each lane's output whole, when it is done
   local pids=() names=(checks native app) name rc=0
   mkdir -p "$logs"
-  rm -f "$built" "$installed" "$native_done" "$wasm_built"
+  rm -f "$built" "$installed" "$native_done"
   lane_checks > "$logs/checks.log" 2>&1 &
   pids+=($!)
   lane_native > "$logs/native.log" 2>&1 &
