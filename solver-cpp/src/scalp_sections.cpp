@@ -94,25 +94,29 @@ void ScalpSections::build(const std::vector<Eigen::Vector3f>& roots, const Eigen
   std::vector<int32_t> comp(size_t(N) * N, -1);
   std::vector<size_t> members;  // roots per component
   std::deque<int> queue;
-  const int nb[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
-  int found = 0;
-  for (int c0 = 0; c0 < N * N; ++c0) {
-    if (!scalp[c0] || wall[c0] || comp[c0] >= 0) continue;
-    comp[c0] = found;
-    queue.push_back(c0);
+  // breadth-first over the queue: `take(from, to)` says whether cell `to` joins from `from`
+  auto spread = [&](auto take) {
+    const int nb[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
     while (!queue.empty()) {
       const int c = queue.front();
       queue.pop_front();
       for (const auto& d : nb) {
         const int x = c % N + d[0], y = c / N + d[1];
         if (x < 0 || y < 0 || x >= N || y >= N) continue;
-        const int e = y * N + x;
-        if (scalp[e] && !wall[e] && comp[e] < 0) {
-          comp[e] = found;
-          queue.push_back(e);
-        }
+        if (take(c, y * N + x)) queue.push_back(y * N + x);
       }
     }
+  };
+  int found = 0;
+  for (int c0 = 0; c0 < N * N; ++c0) {
+    if (!scalp[c0] || wall[c0] || comp[c0] >= 0) continue;
+    comp[c0] = found;
+    queue.push_back(c0);
+    spread([&](int, int e) {
+      if (!scalp[e] || wall[e] || comp[e] >= 0) return false;
+      comp[e] = found;
+      return true;
+    });
     ++found;
   }
   members.assign(size_t(found), 0);
@@ -136,19 +140,11 @@ void ScalpSections::build(const std::vector<Eigen::Vector3f>& roots, const Eigen
     return;
   }
   // every other cell: the nearest section's (breadth-first from all sections at once)
-  while (!queue.empty()) {
-    const int c = queue.front();
-    queue.pop_front();
-    for (const auto& d : nb) {
-      const int x = c % N + d[0], y = c / N + d[1];
-      if (x < 0 || y < 0 || x >= N || y >= N) continue;
-      const int e = y * N + x;
-      if (label_[e] < 0) {
-        label_[e] = label_[c];
-        queue.push_back(e);
-      }
-    }
-  }
+  spread([&](int c, int e) {
+    if (label_[e] >= 0) return false;
+    label_[e] = label_[c];
+    return true;
+  });
 }
 
 int ScalpSections::section(const Eigen::Vector3f& p) const {

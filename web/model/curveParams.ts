@@ -30,6 +30,20 @@ export interface CurveParamSpec {
   readonly view: { readonly min: number; readonly max: number; readonly step: number };
 }
 
+/** A tie's (ponytail, braid, bun) last row: 1 gathers every strand of its scalp section
+ *  (solver-cpp/src/scalp_sections.hpp), 0 the hair that reaches it. */
+const GATHER_SECTION = {
+  name: 'section',
+  label: 'Gather',
+  unit: 'choice',
+  choices: ['nearby hair only', 'whole section'],
+  default: 1,
+  min: 0,
+  max: 1,
+  quantum: 1,
+  view: { min: 0, max: 1, step: 1 },
+} as const;
+
 /** The scalar parameters of each curve kind, in pack order (solver-cpp/src/curve_params.hpp
  *  has the same order). Adding one: a row at the end of its kind (links store the rows in this
  *  order, so never insert or reorder), its index in curve_params.hpp, and the C++ that reads it. */
@@ -91,17 +105,7 @@ export const CURVE_PARAMS = {
       quantum: 1e-4,
       view: { min: 0, max: 1, step: 0.05 },
     },
-    {
-      name: 'section',
-      label: 'Gather',
-      unit: 'choice',
-      choices: ['nearby hair only', 'whole section'],
-      default: 1,
-      min: 0,
-      max: 1,
-      quantum: 1,
-      view: { min: 0, max: 1, step: 1 },
-    },
+    GATHER_SECTION,
   ],
   /** A three-strand braid (solver-cpp/src/braid_bun.hpp): its width, bundle crossings per 10 cm
    *  (all three bundles counted), tightness (how flat the bundles lie) and the loose tail's
@@ -147,17 +151,7 @@ export const CURVE_PARAMS = {
       quantum: 1e-4,
       view: { min: 0, max: 200, step: 0.5 },
     },
-    {
-      name: 'section',
-      label: 'Gather',
-      unit: 'choice',
-      choices: ['nearby hair only', 'whole section'],
-      default: 1,
-      min: 0,
-      max: 1,
-      quantum: 1,
-      view: { min: 0, max: 1, step: 1 },
-    },
+    GATHER_SECTION,
   ],
   /** A bun (solver-cpp/src/braid_bun.hpp): its radius (0: the drawn loop's size), height and
    *  the turns each strand coils. Lengths in world units (1 = 10 cm). */
@@ -192,17 +186,7 @@ export const CURVE_PARAMS = {
       quantum: 1e-4,
       view: { min: 0.25, max: 10, step: 0.25 },
     },
-    {
-      name: 'section',
-      label: 'Gather',
-      unit: 'choice',
-      choices: ['nearby hair only', 'whole section'],
-      default: 1,
-      min: 0,
-      max: 1,
-      quantum: 1,
-      view: { min: 0, max: 1, step: 1 },
-    },
+    GATHER_SECTION,
   ],
 } as const satisfies Record<CurveKindName, readonly CurveParamSpec[]>;
 
