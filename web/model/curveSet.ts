@@ -148,6 +148,12 @@ export function hairRequestKey(
   growth: GrowthParams,
   options: HairOptions,
 ): string {
+  return structuredKey({ curves, growth, options });
+}
+
+/** The content key of named values walked whole (keys in sorted order, numbers and flags as
+ *  f64, arrays by their bytes), so a field added to any of them is part of the key. */
+export function structuredKey(values: Record<string, unknown>): string {
   const parts: ArrayBufferView[] = [];
   const add = (v: unknown, name: string) => {
     parts.push(UTF8.encode(name));
@@ -158,8 +164,6 @@ export function hairRequestKey(
       for (const k of Object.keys(v).sort()) add((v as Record<string, unknown>)[k], `${name}.${k}`);
     else parts.push(new Uint8Array([v === undefined ? 0 : 1]));
   };
-  add(curves, 'curves');
-  add(growth, 'growth');
-  add(options, 'options');
+  for (const k of Object.keys(values)) add(values[k], k);
   return contentKey(...parts);
 }

@@ -14,7 +14,7 @@
 // A 'scalpMask' message changes the scalp at once (no restart, nothing else rebuilt); a 'grid'
 // message moves the engine to another grid in place (the head stays).
 import { ResultLighting } from '../lighting/resultLighting';
-import { contentKey } from '../model/curveSet';
+import { structuredKey } from '../model/curveSet';
 import { engineSettings } from '../model/sessionSchema';
 import { everyOtherPoint } from '../model/strandSubsample';
 import { lineAttributes } from '../viewer/strandAttributes';
@@ -372,19 +372,8 @@ export class WorkerLogic {
   }
 }
 
-/** What a job's field depends on: its curves (every array of the set) and its settings (natural
+/** What a job's field depends on: its curves (every field of the set) and its settings (natural
  *  fall's prior, scalp avoidance, sections); growth and detail are not part of it. */
 function fieldKey(job: SolveMsg): string {
-  const c = job.curves;
-  return contentKey(
-    c.points,
-    c.curveStart,
-    c.kinds,
-    c.extend,
-    c.params,
-    c.paramStart,
-    c.extraIndex,
-    c.extraTarget,
-    engineSettings(job.options),
-  );
+  return structuredKey({ curves: job.curves, settings: engineSettings(job.options) });
 }
