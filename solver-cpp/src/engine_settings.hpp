@@ -12,6 +12,7 @@ enum EngineSetting : size_t {
   kSettingAvoidScalp,  // read by the worker (scalp avoidance), not by the engine
   kSettingFall,        // natural fall (HairEngine::setFall)
   kSettingSections,    // ties may gather their whole scalp section (HairEngine::setSections)
+  kSettingFinish,      // finished edges: ends spread near a cut line (HairEngine::setFinish)
   kEngineSettingCount
 };
 

@@ -178,6 +178,7 @@ Status HairEngine::setSettings(const double* values, size_t count) {
       return Status::Error(StatusCode::NonFinite,
                            "settings: value " + std::to_string(k) + " is not finite");
   setSections(values[kSettingSections] != 0);
+  setFinish(values[kSettingFinish] != 0);
   return setFall(values[kSettingFall] != 0);
 }
 
@@ -512,11 +513,17 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
   }
   bool anyDetail = false;
   for (const DetailParams& d : detail_) anyDetail |= d.any();
-  if (s.ok() && anyDetail) {
+  std::vector<float> endSpread;
+  if (finish_) {
+    endSpread.assign(n, kEndSpread);
+    for (size_t st = 0; st < n; ++st)
+      if (strandTailCurve_[st] >= 0) endSpread[st] = 0;
+  }
+  if (s.ok() && (anyDetail || finish_)) {
     std::vector<uint32_t> groupOf(n, 0);
     bool perCurve = false;
     for (int32_t g : curveGroup_) perCurve |= g != 0;
-    if (perCurve && !curvePoints_.empty())
+    if (anyDetail && perCurve && !curvePoints_.empty())
       for (size_t k = 0; k < n; ++k) {
         float best = std::numeric_limits<float>::infinity();
         int32_t curve = -1;
@@ -530,8 +537,10 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
         if (curve >= 0 && size_t(curve) < curveGroup_.size())
           groupOf[k] = uint32_t(curveGroup_[curve]);
       }
-    s = applyDetail(detail_, groupOf, key, rp.seed, strands_, 255);
-    if (head) keepOutsideHead(*head, float(gp.margin), strands_);
+    s = applyDetail(detail_.empty() ? std::vector<DetailParams>{DetailParams{}} : detail_, groupOf,
+                    key, rp.seed, strands_, 255, finish_ ? &endSpread : nullptr);
+    // cutting ends back moves no point: only detail needs keeping outside again
+    if (head && anyDetail) keepOutsideHead(*head, float(gp.margin), strands_);
   }
   growMs_ = msSince(t0);
   return s;

@@ -58,6 +58,10 @@ class HairEngine {
   // next grow.
   void setSections(bool on) { sections_ = on; }
   bool sections() const { return sections_; }
+  // Finished edges: every strand not laid into a tie ends up to kEndSpread short of where it
+  // grew to (strand_detail.hpp applyDetail's endSpread), seeded per strand.
+  void setFinish(bool on) { finish_ = on; }
+  bool finish() const { return finish_; }
   // Curves -> constraints -> solver (the solver diffs against its previous set).
   Status setCurves(const CurveSetView& curves);
   Status solve();
@@ -150,6 +154,7 @@ class HairEngine {
   std::vector<GatheredTail> tails_;  // the gathered ponytails of the last setCurves (with fall)
   std::vector<int32_t> tailCurves_;  // the curve of each of tails_
   bool sections_ = false;
+  bool finish_ = false;
   std::vector<std::vector<Eigen::Vector3f>> partings_;  // the dividing curves of the last setCurves
   Status applyPrior();
   Status zeroField();

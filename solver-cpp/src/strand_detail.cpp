@@ -24,6 +24,7 @@ constexpr uint64_t kStreamOrder = 0x13198a2e03707344ULL;
 constexpr uint64_t kStreamSpread = 0xa4093822299f31d0ULL;
 constexpr uint64_t kStreamCurl = 0x082efa98ec4e6c89ULL;
 constexpr uint64_t kStreamFrizz = 0x452821e638d01377ULL;
+constexpr uint64_t kStreamEndSpread = 0xbe5466cf34e90c6cULL;
 
 Pcg32 strandRng(uint32_t seed, uint32_t key, uint64_t stream) {
   return Pcg32((uint64_t(seed) << 32) | key, stream);
@@ -439,8 +440,8 @@ Status validateDetail(const DetailParams& d) {
 }
 
 Status applyDetail(const std::vector<DetailParams>& groups, const std::vector<uint32_t>& groupOf,
-                   const std::vector<uint32_t>& key, uint32_t seed, Strands& strands,
-                   int maxPoints) {
+                   const std::vector<uint32_t>& key, uint32_t seed, Strands& strands, int maxPoints,
+                   const std::vector<float>* endSpread) {
   auto invalid = [](std::string m) {
     return Status::Error(StatusCode::InvalidInput, std::move(m));
   };
@@ -452,6 +453,9 @@ Status applyDetail(const std::vector<DetailParams>& groups, const std::vector<ui
                    std::to_string(nS) + " strands");
   if (key.size() != nS)
     return invalid("detail: key has " + std::to_string(key.size()) + " entries for " +
+                   std::to_string(nS) + " strands");
+  if (endSpread && endSpread->size() != nS)
+    return invalid("detail: endSpread has " + std::to_string(endSpread->size()) + " entries for " +
                    std::to_string(nS) + " strands");
   if (nS == 0) return Status::Ok();
   if (start[0] != 0 || size_t(start[nS]) * 3 != strands.points.size())
@@ -471,12 +475,16 @@ Status applyDetail(const std::vector<DetailParams>& groups, const std::vector<ui
                      std::to_string(groupOf[s]) + " of " + std::to_string(groups.size()));
 
   const size_t cap = size_t(maxPoints);
+  auto spreadOf = [&](size_t s) -> double {
+    const float v = endSpread ? (*endSpread)[s] : 0.f;
+    return std::isfinite(v) && v > 0 ? double(v) : 0.0;
+  };
   bool work = false, anyCurl = false, anyClump = false, anyCurlOrFrizz = false;
   for (size_t s = 0; s < nS; ++s) {
     const size_t count = start[s + 1] - start[s];
     const DetailParams& d = groups[groupOf[s]];
     const bool active = count >= 2 && d.any();
-    work |= active || count > cap;
+    work |= active || count > cap || (count >= 2 && spreadOf(s) > 0);
     anyCurl |= active && d.curl.radius > 0;
     anyClump |= active && d.clump.factor > 0 && d.clump.guideDistance > 0;
     anyCurlOrFrizz |= active && (d.curl.radius > 0 || d.frizz.distance > 0);
@@ -484,7 +492,8 @@ Status applyDetail(const std::vector<DetailParams>& groups, const std::vector<ui
   if (!work) return Status::Ok();
   Work w;
 
-  // 1. Length jitter, and the cap for strands that came in too long (compacting in place).
+  // 1. Length jitter, end spread, and the cap for strands that came in too long (compacting in
+  // place).
   {
     float* P = strands.points.data();
     size_t out = 0;
@@ -493,16 +502,20 @@ Status applyDetail(const std::vector<DetailParams>& groups, const std::vector<ui
       start[s] = uint32_t(out);
       const DetailParams& d = groups[groupOf[s]];
       const bool jitter = count >= 2 && d.any() && d.lengthJitter > 0;
-      if (!jitter && count <= cap) {
+      const double spread = count >= 2 ? spreadOf(s) : 0.0;
+      if (!jitter && spread == 0 && count <= cap) {
         if (out != b) std::memmove(P + 3 * out, P + 3 * b, 3 * count * sizeof(float));
         out += count;
         continue;
       }
       load(P + 3 * b, count, w.p);
       const double L = arcLengths(w.p, w.s);
-      if (jitter && L > 0)
-        cutAt(w.p, w.s,
-              L * (1 - d.lengthJitter * strandRng(seed, key[s], kStreamJitter).uniform()));
+      double keep = L;
+      if (jitter) keep *= 1 - d.lengthJitter * strandRng(seed, key[s], kStreamJitter).uniform();
+      if (spread > 0)
+        keep -= std::min(spread, kEndSpreadShare * L) *
+                strandRng(seed, key[s], kStreamEndSpread).uniform();
+      if (keep < L && L > 0) cutAt(w.p, w.s, keep);
       if (w.p.size() > cap) {
         resampleEven(w.p, w.s, cap, w.q);
         std::swap(w.p, w.q);

@@ -94,9 +94,16 @@ Status validateDetail(const DetailParams& d);
 // key[s]: a stable per-strand key (the root's index in the full root set) that seeds that strand's
 // randomness; seed: the session's seed. No strand ends with more than maxPoints (>= 2) points.
 // InvalidInput (strands untouched) on a bad parameter, size mismatch, group out of range or
-// malformed strands.
+// malformed strands. endSpread (optional, one per strand, world units): strand s is cut back by
+// u · min(endSpread[s], kEndSpreadShare · its length), u uniform in [0, 1) seeded by its key, so
+// hair that ends at one line (a bob, a fringe, a length cap) ends over a little band instead.
 Status applyDetail(const std::vector<DetailParams>& groups, const std::vector<uint32_t>& groupOf,
                    const std::vector<uint32_t>& key, uint32_t seed, Strands& strands,
-                   int maxPoints = 255);
+                   int maxPoints = 255, const std::vector<float>* endSpread = nullptr);
+
+// The end spread of sessions with finished edges (world units: 1.2 cm), and the most of a
+// strand's length it may take.
+constexpr float kEndSpread = 0.12f;
+constexpr double kEndSpreadShare = 0.15;
 
 }  // namespace hairsketch

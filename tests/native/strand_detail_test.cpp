@@ -612,4 +612,43 @@ TEST(StrandDetail, ClumpLeavesAStrandWhosePathPartsFromItsGuide) {
       EXPECT_LT((strandOf(s, k)[i] - in[k][i]).norm(), 1e-6) << k << " " << i;
 }
 
+// Finished edges' end spread: strands that grew to one line end over a band below it. Each kept
+// length lies in [L - min(spread, 15 % L), L], the band is used (not all cut alike), a strand
+// given no spread keeps every point bit for bit, and the same keys give the same cuts.
+TEST(StrandDetail, EndSpreadCutsEndsOverABand) {
+  const int n = 200;
+  std::vector<Strand> list;
+  for (int k = 0; k < n; ++k) list.push_back(straight(V3(0.01 * k, 0, 0), V3(0, -1, 0), 41, 0.05));
+  list.push_back(straight(V3(0, 0, 1), V3(0, -1, 0), 3, 0.01));  // 2 cm: the 15 % cap governs
+  const double L = 2.0, spread = 0.12;
+  std::vector<float> spreadOf(n + 1, float(spread));
+  spreadOf[0] = 0;  // strand 0 is kept as it grew
+  Strands s = makeStrands(list), again = makeStrands(list);
+  ASSERT_TRUE(applyDetail({DetailParams{}}, std::vector<uint32_t>(n + 1, 0), iota(n + 1), 9, s, 255,
+                          &spreadOf)
+                  .ok());
+  ASSERT_TRUE(applyDetail({DetailParams{}}, std::vector<uint32_t>(n + 1, 0), iota(n + 1), 9, again,
+                          255, &spreadOf)
+                  .ok());
+  EXPECT_TRUE(sameBits(s, again));
+  EXPECT_EQ(strandOf(s, 0), strandOf(makeStrands(list), 0));
+  double lo = L, hi = 0;
+  for (int k = 1; k < n; ++k) {
+    const double len = polyLength(strandOf(s, size_t(k)));
+    EXPECT_LE(len, L + 1e-6);
+    EXPECT_GE(len, L - spread - 1e-6);
+    lo = std::min(lo, len);
+    hi = std::max(hi, len);
+  }
+  EXPECT_GT(hi - lo, 0.8 * spread);  // 199 uniform draws span most of the band
+  EXPECT_GE(polyLength(strandOf(s, size_t(n))), 0.02 * (1 - 0.15) - 1e-6);
+  // a wrong-sized spread list is refused, strands untouched
+  std::vector<float> shortList(3, 0.1f);
+  Strands t = makeStrands(list);
+  EXPECT_EQ(applyDetail({DetailParams{}}, std::vector<uint32_t>(n + 1, 0), iota(n + 1), 9, t, 255,
+                        &shortList)
+                .code,
+            StatusCode::InvalidInput);
+}
+
 }  // namespace strand_detail_test

@@ -11,8 +11,8 @@ const vp = {
 };
 
 function sample(): SessionState {
-  // the settings (avoidScalp, fall, sections, detail) in the order the reader writes them
-  const { fall: _fall, sections: _sections, ...s } = emptySession('50k');
+  // the settings (avoidScalp, fall, sections, finish, detail) in the order the reader writes them
+  const { fall: _fall, sections: _sections, finish: _finish, ...s } = emptySession('50k');
   return {
     ...s,
     curves: [

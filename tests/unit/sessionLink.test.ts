@@ -181,6 +181,7 @@ describe('version 2 links', () => {
       detail: _d,
       fall: _f,
       sections: _s,
+      finish: _e,
       ...plain
     } = presetSession('default', head);
     const body = packSession(plain);

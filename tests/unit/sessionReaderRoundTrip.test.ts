@@ -79,18 +79,25 @@ describe('every preset session passes the reader and round-trips', () => {
   });
 
   it('spells out the defaults of a minimal session, and keeps them on the next read', () => {
-    // a session made before version 4 has no natural fall and no sections (new sessions have
-    // them on)
-    const { fall, sections, ...beforeFall } = emptySession('25k');
+    // a session made before version 4 has no natural fall, sections or finished edges (new
+    // sessions have them on)
+    const { fall, sections, finish, ...beforeFall } = emptySession('25k');
     expect(fall).toBe(true);
     expect(sections).toBe(true);
+    expect(finish).toBe(true);
     const back = expectRoundTrip({ version: 2, curves: [] });
     expect(back).toEqual(beforeFall);
     // a minimal version 1 session reads as the same session
     expect(expectRoundTrip({ version: 1, curves: [] })).toEqual(beforeFall);
-    // and a minimal current one with fall and sections on as a new session
+    // and a minimal current one with fall, sections and finished edges on as a new session
     expect(
-      expectRoundTrip({ version: SESSION_VERSION, curves: [], fall: true, sections: true }),
+      expectRoundTrip({
+        version: SESSION_VERSION,
+        curves: [],
+        fall: true,
+        sections: true,
+        finish: true,
+      }),
     ).toEqual(emptySession('25k'));
   });
 

@@ -29,6 +29,7 @@ function full(): SessionState {
     avoidScalp: true,
     fall: true,
     sections: true,
+    finish: true,
     detail: { lengthJitter: 0.2 },
     scalpPaint: [{ erase: true, radius: 0.3, points: [[0, 1, 0]] }],
     symmetry: X_PLANE,
@@ -64,6 +65,7 @@ describe('session schema', () => {
       'avoidScalp',
       'fall',
       'sections',
+      'finish',
       'detail',
     ]);
     expect(needsSolve(s, { ...s })).toBe(false);
@@ -120,11 +122,11 @@ describe('session schema', () => {
 
 describe('engine settings', () => {
   it("pack every 'request' setting in table order, flags as 0 or 1 (engine_settings.hpp)", () => {
-    expect([...engineSettings({ avoidScalp: true, fall: false, sections: false })]).toEqual([
-      1, 0, 0,
-    ]);
-    expect([...engineSettings({ avoidScalp: false, fall: true, sections: true })]).toEqual([
-      0, 1, 1,
-    ]);
+    expect([
+      ...engineSettings({ avoidScalp: true, fall: false, sections: false, finish: true }),
+    ]).toEqual([1, 0, 0, 1]);
+    expect([
+      ...engineSettings({ avoidScalp: false, fall: true, sections: true, finish: false }),
+    ]).toEqual([0, 1, 1, 0]);
   });
 });

@@ -99,6 +99,7 @@ export function startApp(): void {
     opts.preset,
     { head, step: grid.step, viewpoint: viewer.cameraState() },
   );
+  heads.startWith(initial);
   // every preset starts with the tool a new user wants first: drawing a stream curve
   const editor = new Editor(initial, 'stream');
   const view = new ViewStore({ quality: loadQualitySetting() });

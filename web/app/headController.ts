@@ -20,7 +20,7 @@ import { headFromPicked } from '../head/headFiles';
 import type { HeadStore } from '../head/headStore';
 import { hashHeadBytes, headRefOf, loadHeadRef } from '../head/headStore';
 import { type Axis, type LoadedHead, loadHeadFile } from '../head/loadHead';
-import { applyScalpPaint, forEachCovered, type ScalpPaintStroke } from '../head/scalpPaint';
+import { forEachCovered, type ScalpPaintStroke, sessionScalpMask } from '../head/scalpPaint';
 import { fitSymmetryPlane } from '../head/symmetryPlane';
 import type { HeadRef, ScalpStroke, SessionState } from '../model/session';
 import type { ScalpMesh } from '../solver/protocol';
@@ -74,6 +74,7 @@ export class HeadController {
   private current: Prepared;
   private key = 'builtin';
   private paint: readonly ScalpStroke[] | undefined = undefined;
+  private finish = false;
   private readonly cache = new Map<string, Prepared>();
   private generation = 0;
   private latest: SessionState | null = null;
@@ -115,6 +116,17 @@ export class HeadController {
     return this.missingRef;
   }
 
+  /** The built-in head's scalp for the first session (before the solver is told of any): its
+   *  finished edges and strokes, on the head drawn and in the head the solver starts from. */
+  startWith(s: SessionState): void {
+    if (s.head !== 'builtin') return; // a loaded head arrives through sessionChanged
+    this.paint = s.scalpPaint;
+    this.finish = !!s.finish;
+    const { head, defaultScalp } = this.current;
+    head.mesh.scalp.set(sessionScalpMask(head.mesh, defaultScalp, s.scalpPaint ?? [], this.finish));
+    recolorHeadScalp(this.d.headMesh, head.mesh);
+  }
+
   /** The session changed (any edit, undo, a file, a link): follow its head and scalp. */
   sessionChanged(s: SessionState): void {
     this.latest = s;
@@ -128,7 +140,8 @@ export class HeadController {
       });
       return;
     }
-    if (s.scalpPaint !== this.paint) this.applyPaint(s.scalpPaint);
+    if (s.scalpPaint !== this.paint || !!s.finish !== this.finish)
+      this.applyPaint(s.scalpPaint, !!s.finish);
   }
 
   /** "Open head" from the files the user picked (a head file, or a .gltf with its .bin and
@@ -244,11 +257,12 @@ export class HeadController {
       this.d.viewer.invalidateFrameCache();
   }
 
-  private applyPaint(strokes: readonly ScalpStroke[] | undefined): void {
+  private applyPaint(strokes: readonly ScalpStroke[] | undefined, finish: boolean): void {
     this.paint = strokes;
+    this.finish = finish;
     this.previewMask = null;
     const { head, defaultScalp } = this.current;
-    const mask = applyScalpPaint(head.mesh, defaultScalp, strokes ?? []);
+    const mask = sessionScalpMask(head.mesh, defaultScalp, strokes ?? [], finish);
     head.mesh.scalp.set(mask);
     recolorHeadScalp(this.d.headMesh, head.mesh);
     this.d.viewer.invalidateFrameCache();
@@ -290,7 +304,13 @@ export class HeadController {
     this.current = prepared;
     this.previewMask = null;
     this.paint = s.scalpPaint;
-    const mask = applyScalpPaint(prepared.head.mesh, prepared.defaultScalp, s.scalpPaint ?? []);
+    this.finish = !!s.finish;
+    const mask = sessionScalpMask(
+      prepared.head.mesh,
+      prepared.defaultScalp,
+      s.scalpPaint ?? [],
+      this.finish,
+    );
     prepared.head.mesh.scalp.set(mask);
     setHeadGeometry(this.d.headMesh, prepared.head.mesh);
     this.d.viewer.invalidateFrameCache();

@@ -10,7 +10,7 @@
 import { readFileSync, statSync } from 'node:fs';
 import { buildHead } from '../head/buildHead';
 import type { HeadMesh } from '../head/head';
-import { applyScalpPaint } from '../head/scalpPaint';
+import { sessionScalpMask } from '../head/scalpPaint';
 import type { SessionState } from '../model/session';
 import type { HeadFileData } from '../model/sessionFile';
 import type { ScalpMesh } from '../solver/protocol';
@@ -73,7 +73,7 @@ export async function headForGrow(
     mesh = await file.loadRef(s.head, embedded.bytes, 'the head in the session file: ');
     loaded = true;
   } else mesh = buildHead();
-  const mask = applyScalpPaint(mesh, mesh.scalp, s.scalpPaint ?? []);
+  const mask = sessionScalpMask(mesh, mesh.scalp, s.scalpPaint ?? [], !!s.finish);
   // what Head.scalpMesh() gives, with the painted mask
   const scalp: ScalpMesh = {
     positions: mesh.positions.slice(),

@@ -7,7 +7,7 @@
 import { visibleStrands } from '../app/hairPresenter';
 import { activeQuality } from '../app/quality';
 import { Head } from '../head/head';
-import { applyScalpPaint } from '../head/scalpPaint';
+import { sessionScalpMask } from '../head/scalpPaint';
 import { packCurves, packHairOptions } from '../model/curveSet';
 import { gridForSession } from '../model/grid';
 import { hangLength, type SessionState } from '../model/session';
@@ -91,8 +91,10 @@ export async function startEmbed(): Promise<void> {
       status.dataset.head = s.head.name;
     }
   }
-  if (s.scalpPaint?.length) {
-    head.mesh.scalp.set(applyScalpPaint(head.mesh, head.mesh.scalp.slice(), s.scalpPaint));
+  if (s.scalpPaint?.length || s.finish) {
+    head.mesh.scalp.set(
+      sessionScalpMask(head.mesh, head.mesh.scalp.slice(), s.scalpPaint ?? [], !!s.finish),
+    );
     recolorHeadScalp(headMesh, head.mesh);
   }
   const hair = new HairView(viewer, headMesh);

@@ -4,7 +4,7 @@
 // left; the scalp-parameterisation centre is the origin.
 
 import type { HeadMesh } from './head';
-import { HeadPart, headPartAt, headSdf } from './headSdf';
+import { earDistance, HeadPart, headPartAt, headSdf } from './headSdf';
 import { markScalpTriangles } from './scalpRegion';
 import { sampleField, surfaceNets, type TriangleMesh } from './surfaceNets';
 import { triangleNormal } from './triangleNormal';
@@ -19,6 +19,9 @@ export { HeadPart };
 // Sampling box: the head lies inside with a margin so that the surface never touches the border.
 const BOX_MIN: [number, number, number] = [-1.05, -2.75, -1.2];
 const BOX_MAX: [number, number, number] = [1.05, 1.15, 1.5];
+
+// How far (world units) the natural hairline stays from the ear.
+const EAR_MARGIN = 0.08;
 
 export function buildHead(options: BuildHeadOptions = {}): HeadMesh {
   const resolution = options.resolution ?? 24;
@@ -62,7 +65,29 @@ export function buildHead(options: BuildHeadOptions = {}): HeadMesh {
   }
   const center: [number, number, number] = [0, 0, 0];
   const scalp = markScalpTriangles(mesh, center);
-  return { positions, normals, indices, scalp, parts, center, bounds: { min, max } };
+  const naturalScalp = markScalpTriangles(mesh, center, 'natural');
+  // the natural hairline wraps the ear: the ear and a few millimetres round it stay bare
+  for (let t = 0; t < naturalScalp.length; t++) {
+    if (!naturalScalp[t] || scalp[t]) continue;
+    const c = [0, 1, 2].map(
+      (a) =>
+        (positions[3 * indices[3 * t] + a] +
+          positions[3 * indices[3 * t + 1] + a] +
+          positions[3 * indices[3 * t + 2] + a]) /
+        3,
+    );
+    if (earDistance(c[0], c[1], c[2]) < EAR_MARGIN) naturalScalp[t] = 0;
+  }
+  return {
+    positions,
+    normals,
+    indices,
+    scalp,
+    naturalScalp,
+    parts,
+    center,
+    bounds: { min, max },
+  };
 }
 
 /** Area-weighted vertex normals, normalised. */

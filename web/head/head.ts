@@ -21,6 +21,9 @@ export interface HeadMesh {
   normals: Float32Array; // normals[3 * vertex + axis], unit, outward (area-weighted)
   indices: Uint32Array; // indices[3 * triangle + corner], counter-clockwise seen from outside
   scalp: Uint8Array; // scalp[triangle] = 1 on the hair-bearing region
+  /** The built-in head's scalp with the natural hairline (scalpRegion.ts), which sessions with
+   *  finished edges (`finish`) start from; absent on a loaded head. */
+  naturalScalp?: Uint8Array;
   parts?: Uint8Array; // parts[vertex]: a HeadPart value (skin, eye, lips), for colouring
   center: Vec3; // origin of the scalp parameterisation (S5.1)
   /** A loaded head's own texture coordinates, per corner: cornerUvs[6 * triangle + 2 * corner

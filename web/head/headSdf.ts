@@ -166,6 +166,12 @@ export function headSdf(x: number, y: number, z: number): number {
   return d;
 }
 
+/** Distance-like value of the ear at (x, y, z) (either side; negative inside the ear), large
+ *  away from it: where the natural hairline leaves the ear bare. */
+export function earDistance(x: number, y: number, z: number): number {
+  return ear(y, z, Math.abs(x));
+}
+
 /** Surface part labels, for colouring (HeadModel.parts). */
 export const HeadPart = { skin: 0, eye: 1, lips: 2 } as const;
 

@@ -149,3 +149,115 @@ export function applyScalpPaint(
   }
   return mask;
 }
+
+/** The scalp mask a session gives (what every caller uses: the app, the CLI, the embed): its
+ *  strokes over the head's default scalp. With finished edges (`finish`) the built-in head starts
+ *  from its natural hairline, and an erase leaves no lone hair: a triangle the erasing left with
+ *  fewer than two scalp neighbours goes, as does a scrap of scalp under 2 cm² cut off by it. Both
+ *  only touch scalp next to erased scalp, so painting the erased part back gives the mask exactly
+ *  as before the erase. */
+export function sessionScalpMask(
+  mesh: TriangleSoup & { naturalScalp?: Uint8Array },
+  defaultScalp: Uint8Array,
+  strokes: readonly ScalpPaintStroke[],
+  finish: boolean,
+): Uint8Array {
+  const base = finish && mesh.naturalScalp ? mesh.naturalScalp : defaultScalp;
+  const mask = applyScalpPaint(mesh, base, strokes);
+  if (finish && strokes.some((s) => s.erase)) removeLoneScalp(mesh, base, mask);
+  return mask;
+}
+
+// Scraps of scalp smaller than this (world units², 2 cm²) cut off by an erase go with it.
+const SCRAP_AREA = 0.02;
+// Peeling rounds: a strip up to about two triangles wide left between erased parts goes.
+const PEEL_ROUNDS = 3;
+
+interface EdgeAdjacency {
+  /** neighbours[start[t] .. start[t + 1]]: the triangles sharing an edge with t. */
+  start: Uint32Array;
+  neighbours: Uint32Array;
+  area: Float64Array;
+}
+
+const adjacencyCache = new WeakMap<Uint32Array, EdgeAdjacency>();
+
+function edgeAdjacency(mesh: TriangleSoup): EdgeAdjacency {
+  const hit = adjacencyCache.get(mesh.indices);
+  if (hit) return hit;
+  const { positions: P, indices: I } = mesh;
+  const n = I.length / 3;
+  const byEdge = new Map<number, number[]>();
+  const vertices = P.length / 3;
+  for (let t = 0; t < n; t++)
+    for (let k = 0; k < 3; k++) {
+      const a = I[3 * t + k];
+      const b = I[3 * t + ((k + 1) % 3)];
+      const key = Math.min(a, b) * vertices + Math.max(a, b);
+      const list = byEdge.get(key);
+      if (list) list.push(t);
+      else byEdge.set(key, [t]);
+    }
+  const lists: number[][] = Array.from({ length: n }, () => []);
+  for (const tris of byEdge.values())
+    for (const t of tris) for (const u of tris) if (u !== t) lists[t].push(u);
+  const start = new Uint32Array(n + 1);
+  for (let t = 0; t < n; t++) start[t + 1] = start[t] + lists[t].length;
+  const neighbours = new Uint32Array(start[n]);
+  for (let t = 0; t < n; t++) neighbours.set(lists[t], start[t]);
+  const area = new Float64Array(n);
+  for (let t = 0; t < n; t++) {
+    const [a, b, c] = [3 * I[3 * t], 3 * I[3 * t + 1], 3 * I[3 * t + 2]];
+    const u = [P[b] - P[a], P[b + 1] - P[a + 1], P[b + 2] - P[a + 2]];
+    const v = [P[c] - P[a], P[c + 1] - P[a + 1], P[c + 2] - P[a + 2]];
+    area[t] =
+      0.5 *
+      Math.hypot(u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]);
+  }
+  const adjacency = { start, neighbours, area };
+  adjacencyCache.set(mesh.indices, adjacency);
+  return adjacency;
+}
+
+/** Clears, in `mask`, scalp that erasing (base 1, mask 0) left alone: see sessionScalpMask. */
+function removeLoneScalp(mesh: TriangleSoup, base: Uint8Array, mask: Uint8Array): void {
+  const { start, neighbours, area } = edgeAdjacency(mesh);
+  const lost = (t: number) => base[t] === 1 && mask[t] === 0;
+  const nextToLost = (t: number) => {
+    for (let i = start[t]; i < start[t + 1]; i++) if (lost(neighbours[i])) return true;
+    return false;
+  };
+  for (let round = 0; round < PEEL_ROUNDS; round++) {
+    const peel: number[] = [];
+    for (let t = 0; t < mask.length; t++) {
+      if (mask[t] !== 1 || !nextToLost(t)) continue;
+      let kept = 0;
+      for (let i = start[t]; i < start[t + 1]; i++) kept += mask[neighbours[i]];
+      if (kept < 2) peel.push(t);
+    }
+    if (peel.length === 0) break;
+    for (const t of peel) mask[t] = 0;
+  }
+  // small components of scalp that touch erased scalp
+  const seen = new Uint8Array(mask.length);
+  for (let t0 = 0; t0 < mask.length; t0++) {
+    if (mask[t0] !== 1 || seen[t0]) continue;
+    const component = [t0];
+    seen[t0] = 1;
+    let sum = 0;
+    let touches = false;
+    for (let k = 0; k < component.length; k++) {
+      const t = component[k];
+      sum += area[t];
+      if (!touches && nextToLost(t)) touches = true;
+      for (let i = start[t]; i < start[t + 1]; i++) {
+        const u = neighbours[i];
+        if (mask[u] === 1 && !seen[u]) {
+          seen[u] = 1;
+          component.push(u);
+        }
+      }
+    }
+    if (touches && sum < SCRAP_AREA) for (const t of component) mask[t] = 0;
+  }
+}

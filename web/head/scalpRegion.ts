@@ -27,25 +27,61 @@ const HAIRLINE: ReadonlyArray<readonly [number, number]> = [
   [180, 116],
 ];
 
-/** θ_max (radians) of the natural hairline at azimuth φ (radians, any range). */
-export function hairlineTheta(phi: number): number {
+// The hairline of sessions with finished edges (`finish`): it keeps the front and the temples,
+// wraps the ear about a centimetre above it, drops behind the ear to the level of the lobe and
+// meets the nape lower, where short cuts and up-styles show skin rather than an undercut. The
+// ear itself is cut out by the built-in head (buildHead.ts), which knows where it is.
+const NATURAL_HAIRLINE: ReadonlyArray<readonly [number, number]> = [
+  [0, 57],
+  [20, 58],
+  [40, 64],
+  [55, 72],
+  [66, 86],
+  [73, 100],
+  [79, 99],
+  [85, 86],
+  [92, 82],
+  [102, 83],
+  [112, 92],
+  [122, 110],
+  [135, 121],
+  [155, 124],
+  [180, 124],
+];
+
+/** Which hairline a scalp region follows: the classic one (every session before `finish`) or
+ *  the natural one. */
+export type Hairline = 'classic' | 'natural';
+
+const HAIRLINES: Record<Hairline, ReadonlyArray<readonly [number, number]>> = {
+  classic: HAIRLINE,
+  natural: NATURAL_HAIRLINE,
+};
+
+/** θ_max (radians) of the hairline at azimuth φ (radians, any range). */
+export function hairlineTheta(phi: number, hairline: Hairline = 'classic'): number {
+  const line = HAIRLINES[hairline];
   let a = Math.abs(Math.atan2(Math.sin(phi), Math.cos(phi))) / DEG; // |φ| in [0, 180]
   if (a > 180) a = 180;
-  for (let i = 1; i < HAIRLINE.length; i++) {
-    const [p1, t1] = HAIRLINE[i];
+  for (let i = 1; i < line.length; i++) {
+    const [p1, t1] = line[i];
     if (a <= p1) {
-      const [p0, t0] = HAIRLINE[i - 1];
+      const [p0, t0] = line[i - 1];
       const u = (a - p0) / (p1 - p0);
       const s = u * u * (3 - 2 * u); // smoothstep between control points
       return (t0 + (t1 - t0) * s) * DEG;
     }
   }
-  return HAIRLINE[HAIRLINE.length - 1][1] * DEG;
+  return line[line.length - 1][1] * DEG;
 }
 
 /** True when the direction at spherical angles (θ, φ) (radians) lies in the scalp region. */
-export function isScalpDirection(theta: number, phi: number): boolean {
-  return theta < hairlineTheta(phi);
+export function isScalpDirection(
+  theta: number,
+  phi: number,
+  hairline: Hairline = 'classic',
+): boolean {
+  return theta < hairlineTheta(phi, hairline);
 }
 
 /** Spherical angles (θ, φ) in radians of the vector (x, y, z) (not necessarily unit). */
@@ -71,6 +107,7 @@ export function isScalpPoint(
 export function markScalpTriangles(
   mesh: TriangleSoup,
   center: readonly [number, number, number] = [0, 0, 0],
+  hairline: Hairline = 'classic',
 ): Uint8Array {
   const { positions: P, indices: I } = mesh;
   const triangles = I.length / 3;
@@ -84,7 +121,7 @@ export function markScalpTriangles(
     const cy = (P[a + 1] + P[b + 1] + P[c + 1]) / 3 - center[1];
     const cz = (P[a + 2] + P[b + 2] + P[c + 2]) / 3 - center[2];
     const [theta, phi] = directionAngles(cx, cy, cz);
-    if (!isScalpDirection(theta, phi)) continue;
+    if (!isScalpDirection(theta, phi, hairline)) continue;
     // face normal (unnormalised) · radial direction
     triangleNormal(P, a, b, c, n);
     if (n[0] * cx + n[1] * cy + n[2] * cz > 0) scalp[t] = 1;

@@ -525,7 +525,7 @@ export const CURLY_DETAIL: HairDetail = {
 const PAPER_FIGURES: readonly PresetName[] = ['fig6', 'fig7', 'fig8', 'fig1'];
 
 export function applyPreset(s: SessionState, name: PresetName, ctx: PresetContext): SessionState {
-  const { detail: _, fall: __, sections: ___, ...rest } = s;
+  const { detail: _, fall: __, sections: ___, finish: ____, ...rest } = s;
   const detail = name === 'curly' ? { detail: CURLY_DETAIL } : {};
   const fall = !PAPER_FIGURES.includes(name);
   // sketched curves end where the hair should end: with fall that is what "extend" off means
@@ -537,11 +537,11 @@ export function applyPreset(s: SessionState, name: PresetName, ctx: PresetContex
     name === 'long'
       ? { ...rest.growth, maxLength: Math.max(rest.growth.maxLength, LONG_MAX) }
       : rest.growth;
-  // sections come with natural fall (the paper's figures have neither)
+  // sections and finished edges come with natural fall (the paper's figures have none)
   return quantizeSession({
     ...rest,
     ...detail,
-    ...(fall ? { fall, sections: true } : {}),
+    ...(fall ? { fall, sections: true, finish: true } : {}),
     growth,
     curves,
   });

@@ -194,6 +194,7 @@ export function emptySession(
     hairColor: '#5a3825',
     fall: true,
     sections: true,
+    finish: true,
   };
 }
 

@@ -56,6 +56,11 @@ export const SESSION_SETTINGS = {
    *  `section` parameter is on gathers every strand rooted in its section; on in every new
    *  session; off, every tie takes the hair that reaches it, as in sessions made before. */
   sections: { type: 'flag', hair: 'request' },
+  /** Finished edges: the built-in head's natural hairline (round the ears, down to the nape), no
+   *  lone hair left by an erase (head/scalpPaint.ts sessionScalpMask), and ends spread a little
+   *  near a cut line (solver-cpp/src/strand_growth.hpp); on in every new session; off, the scalp
+   *  and ends of sessions made before. */
+  finish: { type: 'flag', hair: 'request' },
 } as const satisfies Record<string, SettingSpec>;
 
 export type SessionSettingName = keyof typeof SESSION_SETTINGS;
