@@ -57,6 +57,12 @@ test('Mirror: three strokes make six curves, symmetric hair, a twin deleted and 
   const errors = watchConsole(page);
   await page.goto('/?preset=empty');
   let s = await settled(page);
+  // without finished edges: their end spread is seeded per strand, not mirrored, and the tips
+  // are compared here (the head is bald, so nothing is solved)
+  const { finish: _, ...plain } = (await page.evaluate(() => window.hairsketch.session())) as {
+    finish?: boolean;
+  };
+  await page.evaluate((q) => window.hairsketch.replaceSession(q), plain);
   await page.getByRole('button', { name: 'Mirror' }).click();
   await expect(page.getByRole('button', { name: 'Mirror' })).toHaveAttribute(
     'aria-pressed',

@@ -247,10 +247,13 @@ async function mirrorPigtails(page: Page) {
 // Hair reaches a tail drawn from the scalp as a thin sheet; the growth step re-seats it round
 // the spine (gathered_tail.hpp), and hair hanging beside the tail joins it.
 async function expectRoundTails(page: Page, tails: Awaited<ReturnType<typeof mirrorPigtails>>) {
-  const hair = await strandsOf(page);
+  const hair = (await page.evaluate(() => window.hairsketch.strands())) as Strands & {
+    tailCurves: number[];
+  };
   if (!hair) throw new Error('no hair');
-  for (const tail of tails) {
-    // the strands crossing the plane of the circle at mid-length of the tail, near its axis
+  for (const [index, tail] of tails.entries()) {
+    // the strands of this tail (the other may hang within a few radii of it) crossing the plane
+    // of the circle at mid-length of the tail, near its axis
     const c = tail.circles[Math.floor(tail.circles.length / 2)];
     const P = hair.points;
     const S = hair.strandStart;
@@ -260,7 +263,7 @@ async function expectRoundTails(page: Page, tails: Awaited<ReturnType<typeof mir
     const e2 = cross3(a, e1);
     const xs: [number, number][] = [];
     for (let s = 0; s + 1 < S.length; s++)
-      for (let k = S[s]; k + 1 < S[s + 1]; k++) {
+      for (let k = S[s]; k + 1 < S[s + 1] && hair.tailCurves[s] === index; k++) {
         const w = (j: number) =>
           (P[3 * j] - c.centre[0]) * a[0] +
           (P[3 * j + 1] - c.centre[1]) * a[1] +

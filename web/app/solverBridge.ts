@@ -13,6 +13,7 @@ import {
   newCurveExtends,
   type SessionState,
   type StyleCurve,
+  streamExtends,
 } from '../model/session';
 import { needsSolve } from '../model/sessionSchema';
 import type { Vec3 } from '../model/vec3';
@@ -153,7 +154,7 @@ export class SolverBridge {
     const base = {
       id: '~draft',
       points: stroke.points as Vec3[],
-      extend: newCurveExtends(s),
+      extend: stroke.kind === 'braid' ? newCurveExtends(s) : streamExtends(s, stroke.points),
       viewpoint: stroke.viewpoint,
     };
     const draft: StyleCurve =

@@ -6,7 +6,13 @@ import { curveSurface } from '../editor/curveSurface';
 import type { Editor, ToolName } from '../editor/editor';
 import type { Head } from '../head/head';
 import type { ScalpPaintStroke } from '../head/scalpPaint';
-import { DEFAULT_TIGHTNESS, defaultParams, newCurveExtends } from '../model/session';
+import {
+  DEFAULT_TIGHTNESS,
+  defaultParams,
+  newCurveExtends,
+  streamExtends,
+  tieAtEnd,
+} from '../model/session';
 import type { Vec3 } from '../model/vec3';
 import { BunTool } from '../tools/bunTool';
 import type { StrokeSample } from '../tools/depthRule';
@@ -81,7 +87,10 @@ export function createTools(d: ToolDeps): ToolSet {
   };
   // with natural fall a new curve's hair ends where the stroke ends: the draft marks it
   const showDraft = (pts: readonly Vec3[] | null) =>
-    viewer.setDraft(pts, !newCurveExtends(editor.session));
+    viewer.setDraft(
+      pts,
+      !(pts ? streamExtends(editor.session, pts) : newCurveExtends(editor.session)),
+    );
   const eye = () => viewer.eye();
   const forward = () => viewer.viewForward();
 
@@ -163,15 +172,16 @@ export function createTools(d: ToolDeps): ToolSet {
       },
       // the commit ends the stroke in progress in the same change (one solve follows)
       commit: (points) => {
+        const tie = tieAtEnd(editor.session.curves, points[points.length - 1]);
         editor.run({
           kind: 'addCurve',
           curve: {
             type: 'stream',
             points,
-            extend: newCurveExtends(editor.session),
+            extend: streamExtends(editor.session, points),
             viewpoint: camera(),
           },
-          what: `stream curve {id} (${points.length - 1} segments)`,
+          what: `stream curve {id} (${points.length - 1} segments${tie ? `, on into ${tie.type} ${tie.id}` : ''})`,
           mirror: d.mirror(),
         });
       },

@@ -169,6 +169,36 @@ export function newCurveExtends(s: Pick<SessionState, 'fall'>): boolean {
   return !s.fall;
 }
 
+// How near (world units: 3 cm) a stream stroke's end must come to a tie to continue into it.
+const TIE_REACH = 0.3;
+
+/** The tie (ponytail, braid or bun) a stream stroke ending at `end` runs into, if any: its end
+ *  lies within 3 cm of where a ponytail or braid starts, or of a bun's loop. Such a stroke's hair
+ *  goes on into the tie ("Extend past the end" on) instead of ending where the stroke ends. */
+export function tieAtEnd(curves: readonly StyleCurve[], end: Vec3): StyleCurve | null {
+  let best: StyleCurve | null = null;
+  let bestD = TIE_REACH;
+  for (const c of curves) {
+    if (c.type !== 'ponytail' && c.type !== 'braid' && c.type !== 'bun') continue;
+    const near = c.type === 'bun' ? c.points : c.points.slice(0, 1);
+    for (const p of near) {
+      const d = Math.hypot(p[0] - end[0], p[1] - end[1], p[2] - end[2]);
+      if (d < bestD) {
+        bestD = d;
+        best = c;
+      }
+    }
+  }
+  return best;
+}
+
+/** "Extend past the end" of a new stream curve: as newCurveExtends says, or on when the stroke
+ *  ends at a tie (tieAtEnd). */
+export function streamExtends(s: Pick<SessionState, 'fall' | 'curves'>, points: readonly Vec3[]) {
+  const end = points[points.length - 1];
+  return newCurveExtends(s) || (!!end && tieAtEnd(s.curves, end) !== null);
+}
+
 /** How far hair may hang below the scalp, for the bounding volume (model/grid.ts
  *  gridForSession): with natural fall, hair no curve governs grows to the maximum length; without
  *  it (the paper's method) the curves alone decide, and the volume is what it always was. */

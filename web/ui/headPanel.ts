@@ -86,11 +86,11 @@ export function buildHeadPanel(root: HTMLElement, events: HeadPanelEvents): Head
       hint,
       numberRow(
         'Brush radius',
-        'mm',
+        'cm',
         2,
-        { min: BRUSH_RADIUS.min * 100, max: BRUSH_RADIUS.max * 100, step: 5 },
-        st.brushRadius * 100,
-        (mm) => events.setBrushRadius(mm / 100),
+        { min: BRUSH_RADIUS.min * 10, max: BRUSH_RADIUS.max * 10, step: 0.1 },
+        st.brushRadius * 10,
+        (cm) => events.setBrushRadius(cm / 10),
         events.say,
       ),
     );
