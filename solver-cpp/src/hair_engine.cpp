@@ -101,7 +101,7 @@ Status HairEngine::setScalp(const float* positions, size_t vertexCount, const ui
   rootsValid_ = false;
   roots_.clear();
   rootIds_.clear();
-  capped_ = false;
+  subset_ = false;
   // The previous head is released first: its memory is what the new one may use.
   scalp_ = ScalpSampler();
   headDistance_ = HeadDistance();
@@ -139,7 +139,7 @@ Status HairEngine::setScalpMask(const uint8_t* scalp, size_t triangleCount) {
   rootsValid_ = false;
   roots_.clear();
   rootIds_.clear();
-  capped_ = false;
+  subset_ = false;
   return Status::Ok();
 }
 
@@ -429,14 +429,22 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
     rootKey_ = all;
     rootsValid_ = true;
   }
-  capped_ = rp.maxStrands > 0 && roots_.size() > size_t(rp.maxStrands);
-  if (capped_) {
-    const size_t m = size_t(rp.maxStrands), total = roots_.size();
-    cappedRoots_.resize(m);
-    cappedRootIds_.resize(m);
-    for (size_t k = 0; k < m; ++k) {
-      cappedRoots_[k] = roots_[k * total / m];
-      cappedRootIds_[k] = rootIds_[k * total / m];
+  // the roots grown: all, an even stride of them under a cap, less lone ones (finished edges)
+  const size_t total = roots_.size();
+  const bool capped = rp.maxStrands > 0 && total > size_t(rp.maxStrands);
+  const size_t m = capped ? size_t(rp.maxStrands) : total;
+  if (capped || finish_) {
+    subsetIndex_.resize(m);
+    for (size_t k = 0; k < m; ++k) subsetIndex_[k] = uint32_t(k * total / m);
+    if (finish_) dropLoneRoots(roots_, subsetIndex_);
+  }
+  subset_ = capped || (finish_ && subsetIndex_.size() != total);
+  if (subset_) {
+    subsetRoots_.resize(subsetIndex_.size());
+    subsetRootIds_.resize(subsetIndex_.size());
+    for (size_t k = 0; k < subsetIndex_.size(); ++k) {
+      subsetRoots_[k] = roots_[subsetIndex_[k]];
+      subsetRootIds_[k] = rootIds_[subsetIndex_[k]];
     }
   }
   // The strand buffers for every root at maxSegments must fit: the point buffer (12 bytes a
@@ -457,10 +465,10 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
   const CurveReach* reach = fall_ && !reach_.empty() ? &reach_ : nullptr;
   Status s = growStrands(grid_, fieldF_, roots(), gp, strands_, size_t(24) << 20, head, reach);
   const std::vector<Eigen::Vector3f>& R = roots();
-  const size_t n = R.size(), total = roots_.size();
+  const size_t n = R.size();
   // a strand's seed key: its index in the full root set (previews take a stride of it)
   std::vector<uint32_t> key(n);
-  for (size_t k = 0; k < n; ++k) key[k] = uint32_t(capped_ ? k * total / n : k);
+  for (size_t k = 0; k < n; ++k) key[k] = subset_ ? subsetIndex_[k] : uint32_t(k);
   strandTailCurve_.assign(n, -1);
   strandSection_.clear();
   ScalpSections sections;

@@ -93,7 +93,7 @@ class HairEngine {
   const Strands& strands() const { return strands_; }
   // Per strand of the last growth: its root's sample index (ScalpSampler::sample), which names
   // the strand across edits that keep the growth settings and the head.
-  const std::vector<uint32_t>& strandRootIds() const { return capped_ ? cappedRootIds_ : rootIds_; }
+  const std::vector<uint32_t>& strandRootIds() const { return subset_ ? subsetRootIds_ : rootIds_; }
   // Per strand of the last growth: the curve whose gathered tail (ponytail, braid, bun) laid it,
   // or -1.
   const std::vector<int32_t>& strandTailCurves() const { return strandTailCurve_; }
@@ -101,7 +101,7 @@ class HairEngine {
   // (scalp_sections.hpp; at most 255), for showing the sections; empty with sections off.
   const std::vector<uint8_t>& strandSections() const { return strandSection_; }
   // The roots of the last growth (the cached set, or its capped stride).
-  const std::vector<Eigen::Vector3f>& roots() const { return capped_ ? cappedRoots_ : roots_; }
+  const std::vector<Eigen::Vector3f>& roots() const { return subset_ ? subsetRoots_ : roots_; }
   SolveStats stats() const;
   double growMs() const { return growMs_; }
   // The head's distance grid (built by setScalp): growth keeps hair outside it.
@@ -131,12 +131,15 @@ class HairEngine {
   std::vector<float> fieldF_;
   bool rootsValid_ = false;
   RootParams rootKey_;
-  std::vector<Eigen::Vector3f> roots_;             // all roots of rootKey_
-  std::vector<Eigen::Vector3f> cappedRoots_;       // an even stride of roots_ when capped
-  std::vector<uint32_t> rootIds_, cappedRootIds_;  // sample indices of roots_, cappedRoots_
+  std::vector<Eigen::Vector3f> roots_;  // all roots of rootKey_
+  // the roots grown when not all of roots_: an even stride under a cap, less lone roots with
+  // finished edges (scalp_roots.hpp dropLoneRoots); subsetIndex_ their indices in roots_
+  std::vector<Eigen::Vector3f> subsetRoots_;
+  std::vector<uint32_t> subsetIndex_;
+  std::vector<uint32_t> rootIds_, subsetRootIds_;  // sample indices of roots_, subsetRoots_
   std::vector<int32_t> strandTailCurve_;
   std::vector<uint8_t> strandSection_;
-  bool capped_ = false;
+  bool subset_ = false;
   Strands strands_;
   double growMs_ = 0;
   std::vector<DetailParams> detail_;

@@ -1,8 +1,11 @@
 #include "scalp_roots.hpp"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
+#include <unordered_map>
 
 #include "rng.hpp"
 
@@ -235,6 +238,52 @@ Status ScalpSampler::sample(const RootParams& p, std::vector<Eigen::Vector3f>& r
     if (sampleIds) sampleIds->swap(ids);
   }
   return Status::Ok();
+}
+
+void dropLoneRoots(const std::vector<Eigen::Vector3f>& all, std::vector<uint32_t>& pick) {
+  size_t n = pick.size();
+  if (n < 8) return;
+  // a hash grid of the picked roots; cells sized from a first guess of the spacing (the box's
+  // diagonal over sqrt(n)), refined to the median nearest-root distance
+  Eigen::AlignedBox3f box;
+  for (uint32_t i : pick) box.extend(all[i]);
+  auto neighbours = [&](float cell, auto&& visit) {
+    std::unordered_map<int64_t, std::vector<uint32_t>> grid;
+    auto key = [&](const Eigen::Vector3f& p, int dx, int dy, int dz) {
+      const Eigen::Vector3f q = (p - box.min()) / cell;
+      return (int64_t(std::floor(q.x())) + dx) * 73856093LL ^
+             (int64_t(std::floor(q.y())) + dy) * 19349663LL ^
+             (int64_t(std::floor(q.z())) + dz) * 83492791LL;
+    };
+    for (size_t k = 0; k < n; ++k) grid[key(all[pick[k]], 0, 0, 0)].push_back(uint32_t(k));
+    for (size_t k = 0; k < n; ++k)
+      for (int dz = -1; dz <= 1; ++dz)
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx) {
+            auto it = grid.find(key(all[pick[k]], dx, dy, dz));
+            if (it == grid.end()) continue;
+            for (uint32_t j : it->second)
+              if (j != k) visit(k, j, (all[pick[k]] - all[pick[j]]).norm());
+          }
+  };
+  const float guess = std::max(box.diagonal().norm() / std::sqrt(float(n)), 1e-6f);
+  std::vector<float> nearest(n, std::numeric_limits<float>::infinity());
+  neighbours(2 * guess, [&](size_t k, uint32_t, float d) { nearest[k] = std::min(nearest[k], d); });
+  std::vector<float> sorted = nearest;
+  std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(n / 2), sorted.end());
+  const float reach = kLoneReach * std::min(sorted[n / 2], 2 * guess);
+  if (!(reach > 0) || !std::isfinite(reach)) return;
+  // dropping a root can leave its one neighbour alone: again until none goes (a few rounds)
+  for (int round = 0; round < 8; ++round) {
+    std::vector<int> count(n, 0);
+    neighbours(reach, [&](size_t k, uint32_t, float d) { count[k] += d <= reach ? 1 : 0; });
+    size_t out = 0;
+    for (size_t k = 0; k < n; ++k)
+      if (count[k] >= kLoneNeighbours) pick[out++] = pick[k];
+    if (out == n) break;
+    pick.resize(out);
+    n = out;
+  }
 }
 
 }  // namespace hairsketch

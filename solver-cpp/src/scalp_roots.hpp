@@ -67,6 +67,14 @@ class ScalpSampler {
   std::vector<uint32_t> binTris_;
 };
 
+// Finished edges' rule against lone strands: of the roots all[pick[k]], keeps those with at least
+// kLoneNeighbours others within kLoneReach times the median nearest-root distance, so a root
+// whose neighbours are gone (a scrap an erase left, a lone tip of the hairline at a low strand
+// count) goes too. pick keeps its order.
+constexpr int kLoneNeighbours = 2;
+constexpr float kLoneReach = 2.5f;
+void dropLoneRoots(const std::vector<Eigen::Vector3f>& all, std::vector<uint32_t>& pick);
+
 // Direction of spherical coordinates (radians), as in S5.1.
 Eigen::Vector3d sphericalDirection(double theta, double phi);
 
