@@ -76,8 +76,8 @@ Status HairEngine::setGrid(const Grid& grid, double omega, const std::string& so
 Status HairEngine::applyPrior() {
   if (!hasGrid_ || !solver_) return Status::Ok();
   if (fall_ && headDistance_.built()) {
-    Status s =
-        solver_->setPrior(fallWeight(grid_.step), fallDirections(grid_, headDistance_, centre_));
+    Status s = solver_->setPrior(fallWeight(grid_.step),
+                                 fallDirections(grid_, headDistance_, centre_, finish_));
     priorSet_ = s.ok();
     if (!constraints_.empty()) fieldValid_ = false;
     return s;
@@ -86,6 +86,12 @@ Status HairEngine::applyPrior() {
   priorSet_ = false;
   if (!constraints_.empty()) fieldValid_ = false;
   return solver_->setPrior(0.0, Field());
+}
+
+Status HairEngine::setFinish(bool on) {
+  if (on == finish_) return Status::Ok();
+  finish_ = on;
+  return fall_ ? applyPrior() : Status::Ok();  // the prior opens the face with finished edges
 }
 
 Status HairEngine::setFall(bool on) {
@@ -178,7 +184,8 @@ Status HairEngine::setSettings(const double* values, size_t count) {
       return Status::Error(StatusCode::NonFinite,
                            "settings: value " + std::to_string(k) + " is not finite");
   setSections(values[kSettingSections] != 0);
-  setFinish(values[kSettingFinish] != 0);
+  const Status f = setFinish(values[kSettingFinish] != 0);
+  if (!f.ok()) return f;
   return setFall(values[kSettingFall] != 0);
 }
 

@@ -59,8 +59,9 @@ class HairEngine {
   void setSections(bool on) { sections_ = on; }
   bool sections() const { return sections_; }
   // Finished edges: every strand not laid into a tie ends up to kEndSpread short of where it
-  // grew to (strand_detail.hpp applyDetail's endSpread), seeded per strand.
-  void setFinish(bool on) { finish_ = on; }
+  // grew to (strand_detail.hpp applyDetail's endSpread), seeded per strand; lone roots are not
+  // grown (scalp_roots.hpp dropLoneRoots); with fall the prior opens the face (hair_fall.hpp).
+  Status setFinish(bool on);
   bool finish() const { return finish_; }
   // Curves -> constraints -> solver (the solver diffs against its previous set).
   Status setCurves(const CurveSetView& curves);

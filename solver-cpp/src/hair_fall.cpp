@@ -60,7 +60,8 @@ constexpr double kGrowsOnRemaining = 100.0;
 
 }  // namespace
 
-Field fallDirections(const Grid& g, const HeadDistance& head, const Eigen::Vector3d& centre) {
+Field fallDirections(const Grid& g, const HeadDistance& head, const Eigen::Vector3d& centre,
+                     bool openFace) {
   Field G(g.size(), 3);
   const Eigen::Vector3d down(0, -1, 0);
   const std::vector<float> dist = headDistanceOnGrid(g, head);
@@ -90,6 +91,19 @@ Field fallDirections(const Grid& g, const HeadDistance& head, const Eigen::Vecto
             std::isfinite(dist[size_t(p)]) ? smoothstep(0, kFallBlend, dist[size_t(p)]) : 1.0;
         const double a = away * smoothstep(-0.3, 0.3, -nrm.y());
         Eigen::Vector3d v = (1 - a) * combed + a * down;
+        const double off = std::isfinite(dist[size_t(p)]) ? double(dist[size_t(p)]) : 1e9;
+        if (openFace && fz > 0 && off > 0) {
+          const double yc = x.y() - centre.y();
+          const double dx = x.x() - centre.x();
+          const double azimuth = std::abs(std::atan2(dx, fz));
+          const double inFront = (1 - smoothstep(0.6 * kFaceHalfAngle, kFaceHalfAngle, azimuth)) *
+                                 smoothstep(kFaceBottom, kFaceBottom + 0.3, yc) *
+                                 (1 - smoothstep(kFaceTop - 0.2, kFaceTop, yc)) *
+                                 smoothstep(0, 0.15, off);
+          const Eigen::Vector3d aside =
+              Eigen::Vector3d(dx >= 0 ? kFaceAside : -kFaceAside, -1, 0).normalized();
+          v = (1 - inFront) * v.normalized() + inFront * aside;
+        }
         const double vn = v.norm();
         v = vn > 1e-9 ? Eigen::Vector3d(v / vn) : down;
         G.row(p) = v.transpose();

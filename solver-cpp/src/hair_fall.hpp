@@ -47,7 +47,15 @@ constexpr double kFallFrontSpread = 0.2;
 
 // g at every grid point (n x 3, unit length): head = the head's distance grid, centre = the
 // head's centre (its vertical axis passes through it).
-Field fallDirections(const Grid& grid, const HeadDistance& head, const Eigen::Vector3d& centre);
+// With openFace (finished edges), off the head in front of the face (below the front hairline's
+// height, within kFaceHalfAngle of straight ahead about the vertical axis) g turns aside to the
+// nearer side: hair no curve governs falls round the face, not in front of it.
+Field fallDirections(const Grid& grid, const HeadDistance& head, const Eigen::Vector3d& centre,
+                     bool openFace = false);
+// The face's column (relative to the centre, world units and radians): its top (the front
+// hairline's height), bottom (below the chin), half angle, and how far aside g turns there
+// (the sideways part against down's 1).
+constexpr double kFaceTop = 0.5, kFaceBottom = -1.6, kFaceHalfAngle = 0.75, kFaceAside = 1.5;
 
 // Reach of the curves that govern hair (stream curves and ponytail spines), on a lattice of its
 // own (reachGrid: the solver grid's box in cells of at least kReachCell; the reach is smooth, so

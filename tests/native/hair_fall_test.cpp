@@ -161,6 +161,42 @@ TEST(FallDirections, UnitHangingFieldCombedAlongTheHead) {
     }
 }
 
+// Finished edges open the face: off the head in front of it (below the front hairline's height,
+// near straight ahead) g turns to the nearer side, down at most 1 against the side's 1.5 (the
+// unit vector (±1.5, -1, 0)/1.80 = ±0.83 sideways); beside the head, behind it and above the
+// hairline's height nothing changes; without openFace nothing changes anywhere.
+TEST(FallDirections, OpenFaceTurnsHairAsideInFrontOfTheFace) {
+  const Grid g = boxGrid(25, -2, 2);
+  hairsketch_test::Mesh m = hairsketch_test::uvSphere(0, 0, 0, 1.0, 24, 48);
+  hairsketch_test::markScalpAbove(m, 0.2);
+  HeadDistance head;
+  const HeadMeshView view{m.positions.data(), m.positions.size() / 3, m.indices.data(),
+                          m.indices.size() / 3, m.scalp.data()};
+  ASSERT_TRUE(head.build(view).ok());
+  const Field plain = fallDirections(g, head, Eigen::Vector3d::Zero());
+  const Field open = fallDirections(g, head, Eigen::Vector3d::Zero(), true);
+  const double aside = 1.5 / std::sqrt(1.5 * 1.5 + 1);
+  int checked = 0;
+  for (int k = 0; k < g.nz; ++k)
+    for (int j = 0; j < g.ny; ++j)
+      for (int i = 0; i < g.nx; ++i) {
+        const int p = g.index(i, j, k);
+        ASSERT_NEAR(open.row(p).norm(), 1.0, 1e-9);
+        const Eigen::Vector3d x = g.position(i, j, k);
+        const double r = x.norm();
+        const double az = std::atan2(std::abs(x.x()), x.z());
+        if (x.z() > 0 && r > 1.3 && az < 0.4 && x.y() < 0.2 && x.y() > -1.2 &&
+            std::abs(x.x()) > 0.05) {
+          // in front of the face: aside, to the nearer side
+          EXPECT_NEAR(open(p, 0), x.x() > 0 ? aside : -aside, 1e-9) << "at " << x.transpose();
+          ++checked;
+        } else if (x.z() <= 0 || x.y() > kFaceTop || az > kFaceHalfAngle) {
+          EXPECT_NEAR((open.row(p) - plain.row(p)).norm(), 0.0, 1e-12) << "at " << x.transpose();
+        }
+      }
+  EXPECT_GT(checked, 10);
+}
+
 namespace {
 
 struct FallScene {
