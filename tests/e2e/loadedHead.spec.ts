@@ -225,6 +225,7 @@ test('the scalp brush paints and erases scalp; Undo restores it', async ({ page 
   await page.waitForFunction(() => window.hairsketch.brushRing() === null);
   await page.getByRole('button', { name: 'Undo' }).click();
   await page.getByRole('button', { name: 'Undo' }).click();
+  await page.getByRole('button', { name: 'Undo' }).click();
   await settled(page);
   expect((await headInfo(page)).scalpTriangles).toBe(before);
 });
