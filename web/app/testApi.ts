@@ -7,6 +7,7 @@ import type { Vec3 } from '../model/vec3';
 import type { PonytailTool } from '../tools/ponytailTool';
 import type { DisplayState } from '../ui/displayToggles';
 import type { Viewer } from '../viewer/viewer';
+import { BARE_SCALP_VIEWS, type BareScalpResult, bareScalp } from './bareScalp';
 import type { HairPresenter, HairRevision } from './hairPresenter';
 import type { OverlayPresenter } from './overlayPresenter';
 import { isQualitySetting, type QualityControl } from './quality';
@@ -141,6 +142,10 @@ export interface HairsketchTestApi {
   /** The scalp brush's ring on the head (its radius, world units, and whether it erases), or
    *  null when none is shown. */
   brushRing(): { radius: number; erase: boolean } | null;
+  /** Scalp bare where hair should be (app/bareScalp.ts) from the front, the side (+x), the back
+   *  and the top, for the head and hair shown (minOpacity: its stricter cover); `ms` the time it
+   *  took. */
+  bareScalp(opts?: { minOpacity?: number }): BareScalpResult & { ms: number };
 }
 
 declare global {
@@ -345,6 +350,13 @@ export function installTestApi(app: TestApiParts): void {
     frameSources: () => ({ ...viewer.frameSources }),
     sectionsTinted: () => app.sectionsTinted(),
     brushRing: () => viewer.brushRing,
+    bareScalp(opts) {
+      const t0 = performance.now();
+      const r = bareScalp(head().mesh, hair.strands, BARE_SCALP_VIEWS, {
+        minOpacity: opts?.minOpacity,
+      });
+      return { ...r, ms: performance.now() - t0 };
+    },
   };
 }
 
