@@ -436,16 +436,27 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
     rootKey_ = all;
     rootsValid_ = true;
   }
-  // the roots grown: all, an even stride of them under a cap, less lone ones (finished edges)
+  // the roots grown: all, less lone ones (finished edges: judged on the full set, so a cap
+  // keeps its count), then an even stride of those under a cap
   const size_t total = roots_.size();
-  const bool capped = rp.maxStrands > 0 && total > size_t(rp.maxStrands);
-  const size_t m = capped ? size_t(rp.maxStrands) : total;
-  if (capped || finish_) {
-    subsetIndex_.resize(m);
-    for (size_t k = 0; k < m; ++k) subsetIndex_[k] = uint32_t(k * total / m);
-    if (finish_) dropLoneRoots(roots_, subsetIndex_);
+  if (!same || keptFinish_ != finish_ || kept_.empty() != (total == 0)) {
+    kept_.resize(total);
+    for (size_t k = 0; k < total; ++k) kept_[k] = uint32_t(k);
+    if (finish_ && total > 0) {
+      // the sampling's spacing: a θ step at the roots' mean distance from the centre
+      double r = 0;
+      for (const Eigen::Vector3f& p : roots_) r += (p.cast<double>() - centre_).norm();
+      const double spacing = r / double(total) * rootKey_.thetaStepDeg * 3.14159265358979 / 180;
+      dropLoneRoots(roots_, kept_, float(kLoneReach * spacing));
+    }
+    keptFinish_ = finish_;
   }
-  subset_ = capped || (finish_ && subsetIndex_.size() != total);
+  const std::vector<uint32_t>& kept = kept_;
+  const bool capped = rp.maxStrands > 0 && kept.size() > size_t(rp.maxStrands);
+  const size_t m = capped ? size_t(rp.maxStrands) : kept.size();
+  subsetIndex_.resize(m);
+  for (size_t k = 0; k < m; ++k) subsetIndex_[k] = kept[k * kept.size() / m];
+  subset_ = m != total;
   if (subset_) {
     subsetRoots_.resize(subsetIndex_.size());
     subsetRootIds_.resize(subsetIndex_.size());
@@ -553,7 +564,7 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
           groupOf[k] = uint32_t(curveGroup_[curve]);
       }
     s = applyDetail(detail_.empty() ? std::vector<DetailParams>{DetailParams{}} : detail_, groupOf,
-                    key, rp.seed, strands_, 255, finish_ ? &endSpread : nullptr);
+                    key, rp.seed, strands_, 255, finish_ ? &endSpread : nullptr, finish_);
     // cutting ends back moves no point: only detail needs keeping outside again
     if (head && anyDetail) keepOutsideHead(*head, float(gp.margin), strands_);
   }

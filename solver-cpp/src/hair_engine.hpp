@@ -137,6 +137,8 @@ class HairEngine {
   // finished edges (scalp_roots.hpp dropLoneRoots); subsetIndex_ their indices in roots_
   std::vector<Eigen::Vector3f> subsetRoots_;
   std::vector<uint32_t> subsetIndex_;
+  std::vector<uint32_t> kept_;  // roots_ less lone ones (all without finished edges), cached
+  bool keptFinish_ = false;
   std::vector<uint32_t> rootIds_, subsetRootIds_;  // sample indices of roots_, subsetRoots_
   std::vector<int32_t> strandTailCurve_;
   std::vector<uint8_t> strandSection_;

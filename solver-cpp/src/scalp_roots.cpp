@@ -240,13 +240,13 @@ Status ScalpSampler::sample(const RootParams& p, std::vector<Eigen::Vector3f>& r
   return Status::Ok();
 }
 
-void dropLoneRoots(const std::vector<Eigen::Vector3f>& all, std::vector<uint32_t>& pick) {
+void dropLoneRoots(const std::vector<Eigen::Vector3f>& all, std::vector<uint32_t>& pick,
+                   float reach) {
   size_t n = pick.size();
-  if (n < 8) return;
-  // a hash grid of the picked roots; cells sized from a first guess of the spacing (the box's
-  // diagonal over sqrt(n)), refined to the median nearest-root distance
+  if (n == 0 || !(reach > 0) || !std::isfinite(reach)) return;
   Eigen::AlignedBox3f box;
   for (uint32_t i : pick) box.extend(all[i]);
+  // a hash grid of the picked roots, cells of the reach: neighbours lie in the 27 round a cell
   auto neighbours = [&](float cell, auto&& visit) {
     std::unordered_map<int64_t, std::vector<uint32_t>> grid;
     auto key = [&](const Eigen::Vector3f& p, int dx, int dy, int dz) {
@@ -266,13 +266,6 @@ void dropLoneRoots(const std::vector<Eigen::Vector3f>& all, std::vector<uint32_t
               if (j != k) visit(k, j, (all[pick[k]] - all[pick[j]]).norm());
           }
   };
-  const float guess = std::max(box.diagonal().norm() / std::sqrt(float(n)), 1e-6f);
-  std::vector<float> nearest(n, std::numeric_limits<float>::infinity());
-  neighbours(2 * guess, [&](size_t k, uint32_t, float d) { nearest[k] = std::min(nearest[k], d); });
-  std::vector<float> sorted = nearest;
-  std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(n / 2), sorted.end());
-  const float reach = kLoneReach * std::min(sorted[n / 2], 2 * guess);
-  if (!(reach > 0) || !std::isfinite(reach)) return;
   // dropping a root can leave its one neighbour alone: again until none goes (a few rounds)
   for (int round = 0; round < 8; ++round) {
     std::vector<int> count(n, 0);

@@ -68,12 +68,14 @@ class ScalpSampler {
 };
 
 // Finished edges' rule against lone strands: of the roots all[pick[k]], keeps those with at least
-// kLoneNeighbours others within kLoneReach times the median nearest-root distance, so a root
-// whose neighbours are gone (a scrap an erase left, a lone tip of the hairline at a low strand
-// count) goes too. pick keeps its order.
+// kLoneNeighbours others within `reach` (world units), again until none goes, so a root whose
+// neighbours are gone (a scrap an erase left) goes too. pick keeps its order. The reach is fixed
+// by the caller (kLoneReach root spacings of the sampling), so a root's fate depends only on the
+// roots near it.
 constexpr int kLoneNeighbours = 2;
 constexpr float kLoneReach = 2.5f;
-void dropLoneRoots(const std::vector<Eigen::Vector3f>& all, std::vector<uint32_t>& pick);
+void dropLoneRoots(const std::vector<Eigen::Vector3f>& all, std::vector<uint32_t>& pick,
+                   float reach);
 
 // Direction of spherical coordinates (radians), as in S5.1.
 Eigen::Vector3d sphericalDirection(double theta, double phi);

@@ -183,7 +183,9 @@ size_t curlPointCount(const DetailParams& d, size_t n, double L, size_t cap) {
 
 // Curl then frizz on one strand (w.p), in place; with curl, the strand is first resampled evenly
 // to m points (curlPointCount) and s_k = L k / (m - 1) is the arc length along the path.
-void curlAndFrizz(const DetailParams& d, uint32_t seed, uint32_t key, size_t m, Work& w) {
+// phaseKey seeds the curl's phase (the strand's own key, or its clump guide's for ringlets).
+void curlAndFrizz(const DetailParams& d, uint32_t seed, uint32_t key, uint32_t phaseKey, size_t m,
+                  Work& w) {
   const double L = arcLengths(w.p, w.s);
   if (!(L > 0)) return;
   const bool curl = d.curl.radius > 0, frizz = d.frizz.distance > 0;
@@ -199,7 +201,7 @@ void curlAndFrizz(const DetailParams& d, uint32_t seed, uint32_t key, size_t m, 
   if (curl) {
     // theta_k = theta_0 + k dTheta (even spacing), by rotating (cos, sin) one step at a time.
     const double r = d.curl.radius, a = d.curl.start;
-    const double phase = d.curl.randomOffset * strandRng(seed, key, kStreamCurl).uniform();
+    const double phase = d.curl.randomOffset * strandRng(seed, phaseKey, kStreamCurl).uniform();
     const double step = kTwoPi * d.curl.frequency * L / double(n - 1);
     const double cs = std::cos(step), sn = std::sin(step);
     double c = std::cos(kTwoPi * phase), s = std::sin(kTwoPi * phase);
@@ -287,8 +289,10 @@ constexpr double kSameWay = 0.5;
 constexpr double kMaxApart = 1.0;
 
 // Clump of one group's strands (members, each with >= 2 points), in place.
+// phaseKey (optional): a clumped strand's entry becomes its guide's key.
 void clumpGroup(const ClumpParams& c, const std::vector<uint32_t>& members,
-                const std::vector<uint32_t>& key, uint32_t seed, Strands& strands, Work& w) {
+                const std::vector<uint32_t>& key, uint32_t seed, Strands& strands, Work& w,
+                std::vector<uint32_t>* phaseKey) {
   const size_t M = members.size();
   const uint32_t* start = strands.strandStart.data();
   float* P = strands.points.data();
@@ -390,6 +394,7 @@ void clumpGroup(const ClumpParams& c, const std::vector<uint32_t>& members,
       apart = (lerp(a, b, u) - w.p[i]).norm() > maxApart;
     }
     if (apart) continue;
+    if (phaseKey) (*phaseKey)[s] = key[G];
     j = 0;
     for (size_t i = 1; i < count; ++i) {
       const double x = w.s[i] / L;
@@ -441,7 +446,7 @@ Status validateDetail(const DetailParams& d) {
 
 Status applyDetail(const std::vector<DetailParams>& groups, const std::vector<uint32_t>& groupOf,
                    const std::vector<uint32_t>& key, uint32_t seed, Strands& strands, int maxPoints,
-                   const std::vector<float>* endSpread) {
+                   const std::vector<float>* endSpread, bool ringlets) {
   auto invalid = [](std::string m) {
     return Status::Error(StatusCode::InvalidInput, std::move(m));
   };
@@ -527,6 +532,9 @@ Status applyDetail(const std::vector<DetailParams>& groups, const std::vector<ui
     strands.points.resize(3 * out);
   }
 
+  // a strand's curl phase: its own, or with ringlets its clump guide's (set while clumping)
+  std::vector<uint32_t> phaseKey = key;
+
   // 2. Clump, group by group (guides keep their shape, so each group reads its guides as grown).
   if (anyClump) {
     std::vector<std::vector<uint32_t>> members(groups.size());
@@ -535,7 +543,7 @@ Status applyDetail(const std::vector<DetailParams>& groups, const std::vector<ui
     for (size_t g = 0; g < groups.size(); ++g) {
       const ClumpParams& c = groups[g].clump;
       if (c.factor > 0 && c.guideDistance > 0 && members[g].size() >= 2)
-        clumpGroup(c, members[g], key, seed, strands, w);
+        clumpGroup(c, members[g], key, seed, strands, w, ringlets ? &phaseKey : nullptr);
     }
   }
 
@@ -551,7 +559,7 @@ Status applyDetail(const std::vector<DetailParams>& groups, const std::vector<ui
         if (!detailed(s)) continue;
         const size_t count = start[s + 1] - start[s];
         load(P + 3 * size_t(start[s]), count, w.p);
-        curlAndFrizz(groups[groupOf[s]], seed, key[s], count, w);
+        curlAndFrizz(groups[groupOf[s]], seed, key[s], phaseKey[s], count, w);
         store(w.p, P + 3 * size_t(start[s]));
       }
     } else {
@@ -576,7 +584,7 @@ Status applyDetail(const std::vector<DetailParams>& groups, const std::vector<ui
           continue;
         }
         load(src, count, w.p);
-        curlAndFrizz(groups[groupOf[s]], seed, key[s], m, w);
+        curlAndFrizz(groups[groupOf[s]], seed, key[s], phaseKey[s], m, w);
         store(w.p, dst);  // m points: resampled to m with curl, count = m without
       }
       strands.points.swap(out);

@@ -97,9 +97,12 @@ Status validateDetail(const DetailParams& d);
 // malformed strands. endSpread (optional, one per strand, world units): strand s is cut back by
 // u · min(endSpread[s], kEndSpreadShare · its length), u uniform in [0, 1) seeded by its key, so
 // hair that ends at one line (a bob, a fringe, a length cap) ends over a little band instead.
+// ringlets: a clumped strand curls in phase with its clump's guide, so a clump's strands wind
+// round together (ringlets) instead of each at its own phase (a crimped texture).
 Status applyDetail(const std::vector<DetailParams>& groups, const std::vector<uint32_t>& groupOf,
                    const std::vector<uint32_t>& key, uint32_t seed, Strands& strands,
-                   int maxPoints = 255, const std::vector<float>* endSpread = nullptr);
+                   int maxPoints = 255, const std::vector<float>* endSpread = nullptr,
+                   bool ringlets = false);
 
 // The end spread of sessions with finished edges (world units: 1.2 cm), and the most of a
 // strand's length it may take.

@@ -278,8 +278,8 @@ TEST(ScalpRoots, SampleIdsNameEachRootsThetaRowAndPhiColumnWhateverTheMaskOrCap)
   EXPECT_GT(shifted, 0u);
 }
 
-// Lone roots (finished edges), counted by hand: on a square lattice of spacing h (the median
-// nearest-root distance, so the reach is 2.5 h) every root has at least 2 others within reach,
+// Lone roots (finished edges), counted by hand: on a square lattice of spacing h, with a reach
+// of 2.5 h, every root has at least 2 others within reach,
 // corners included. Out of its reach (4-5 h away): a root alone has none and goes; each of a pair
 // h apart has one and goes; each of a line of three h apart has two and stays. Order is kept.
 TEST(ScalpRoots, DropLoneRootsKeepsTheLatticeAndDropsStrays) {
@@ -294,7 +294,7 @@ TEST(ScalpRoots, DropLoneRootsKeepsTheLatticeAndDropsStrays) {
   for (int k = 0; k < 3; ++k) all.emplace_back(5 * h, (24 + k) * h, 0.f);  // a line of three
   std::vector<uint32_t> pick(all.size());
   for (uint32_t k = 0; k < pick.size(); ++k) pick[k] = k;
-  dropLoneRoots(all, pick);
+  dropLoneRoots(all, pick, kLoneReach * h);
   std::vector<uint32_t> expected(lattice);
   for (uint32_t k = 0; k < lattice; ++k) expected[k] = k;
   for (uint32_t k = 0; k < 3; ++k) expected.push_back(lattice + 3 + k);

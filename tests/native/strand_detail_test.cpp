@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -649,6 +650,40 @@ TEST(StrandDetail, EndSpreadCutsEndsOverABand) {
                         &shortList)
                 .code,
             StatusCode::InvalidInput);
+}
+
+// Ringlets: two strands 1 mm apart in one clump curl in phase with their guide when asked, so
+// they wind round together (each point of one within 5 mm of the other's path); each at its own
+// random phase they part by up to twice the radius.
+TEST(StrandDetail, RingletsCurlAClumpInPhase) {
+  DetailParams d;
+  d.curl.radius = 0.1;
+  d.curl.frequency = 2;
+  d.curl.start = 0;
+  d.curl.randomOffset = 1;
+  d.clump.factor = 0.7;
+  d.clump.guideDistance = 0.12;
+  const std::vector<Strand> list = {straight(V3(0, 0, 0), V3(0, -1, 0), 41, 0.05),
+                                    straight(V3(0.001, 0, 0), V3(0, -1, 0), 41, 0.05)};
+  auto apart = [&](bool ringlets) {
+    Strands s = makeStrands(list);
+    EXPECT_TRUE(applyDetail({d}, {0, 0}, {3, 17}, 5, s, 255, nullptr, ringlets).ok());
+    const Strand a = strandOf(s, 0), b = strandOf(s, 1);
+    // the farthest a point of a lies from the polyline b
+    double most = 0;
+    for (const V3& p : a) {
+      double best = std::numeric_limits<double>::infinity();
+      for (size_t k = 0; k + 1 < b.size(); ++k) {
+        const V3 e = b[k + 1] - b[k];
+        const double t = std::clamp((p - b[k]).dot(e) / std::max(e.squaredNorm(), 1e-30), 0.0, 1.0);
+        best = std::min(best, (b[k] + t * e - p).norm());
+      }
+      most = std::max(most, best);
+    }
+    return most;
+  };
+  EXPECT_LT(apart(true), 0.005);
+  EXPECT_GT(apart(false), 0.05);
 }
 
 }  // namespace strand_detail_test

@@ -65,8 +65,8 @@ describe('presets', () => {
     const curly = applyPreset(emptySession('25k'), 'curly', ctx);
     expect(curly.curves).toEqual(applyPreset(emptySession('25k'), 'default', ctx).curves);
     expect(curly.detail).toEqual({
-      curl: { radius: 0.05, frequency: 3, start: 0.15, randomOffset: 1 },
-      clump: { factor: 0.5, shape: 0.3, tipSpread: 0.02, guideDistance: 0.12 },
+      curl: { radius: 0.1, frequency: 2, start: 0.15, randomOffset: 1 },
+      clump: { factor: 0.7, shape: 0.3, tipSpread: 0.02, guideDistance: 0.12 },
       frizz: { distance: 0.006, shape: 0.5 },
       lengthJitter: 0.15,
     });

@@ -512,10 +512,11 @@ export function presetCurves(name: PresetName, ctx: PresetContext): StyleCurve[]
   return curves;
 }
 
-/** The `curly` preset's detail: tight curls gathered into clumps, a little frizz, uneven ends. */
+/** The `curly` preset's detail: 1 cm curls gathered into clumps (with finished edges a clump's
+ *  strands curl together, as ringlets), a little frizz, uneven ends. */
 export const CURLY_DETAIL: HairDetail = {
-  curl: { radius: 0.05, frequency: 3, start: 0.15, randomOffset: 1 },
-  clump: { factor: 0.5, shape: 0.3, tipSpread: 0.02, guideDistance: 0.12 },
+  curl: { radius: 0.1, frequency: 2, start: 0.15, randomOffset: 1 },
+  clump: { factor: 0.7, shape: 0.3, tipSpread: 0.02, guideDistance: 0.12 },
   frizz: { distance: 0.006, shape: 0.5 },
   lengthJitter: 0.15,
 };
