@@ -3,7 +3,7 @@
 // grid points it became) and the segment cap follows the length. A number out of range shows
 // the limit and the status line says why. Real pointer and keyboard events throughout.
 import { expect, type Page, test } from '@playwright/test';
-import { settled, status, strokeFromScalp, watchConsole } from './helpers';
+import { settled, shoot, status, strokeFromScalp, watchConsole } from './helpers';
 
 /** Longest displayed strand, world units (1 unit = 10 cm). */
 async function longestStrand(page: Page): Promise<number> {
@@ -93,5 +93,50 @@ test('typing 60 in Max length keeps 60 and grows hair 60 cm long; 120 shows 100 
   await expect(input).toHaveValue('100');
   await expect(page.getByTestId('status')).toContainText('is above the maximum 100 cm');
   expect((await status(page)).state).not.toBe('error');
+  expect(errors).toEqual([]);
+});
+
+test('Longer lengthens a sketched bob by 10 cm with two clicks, without strays; Undo takes it back', async ({
+  page,
+}) => {
+  const errors = watchConsole(page);
+  await page.goto('/?preset=bob&strands=3000');
+  let s = await settled(page);
+  /** Tip heights (y) of the strands rooted at the back, 10th, 50th, 90th percentile and lowest. */
+  const backTips = () =>
+    page.evaluate(() => {
+      const h = window.hairsketch.strands();
+      if (!h) return [];
+      const y: number[] = [];
+      for (let k = 0; k + 1 < h.strandStart.length; k++)
+        if (h.points[3 * h.strandStart[k] + 2] < -0.3)
+          y.push(h.points[3 * (h.strandStart[k + 1] - 1) + 1]);
+      y.sort((a, b) => a - b);
+      const q = (f: number) => y[Math.floor(f * (y.length - 1))];
+      return [q(0.1), q(0.5), q(0.9), y[0]];
+    });
+  const before = await backTips();
+  await page.getByRole('button', { name: 'Detail' }).click();
+  const panel = page.getByRole('region', { name: 'Hair detail' });
+  for (let i = 0; i < 2; i++) {
+    await panel.getByRole('button', { name: 'Longer by 5 cm' }).click();
+    s = await settled(page, s.revision);
+  }
+  expect(s.text).toContain('lengthened by 5 cm');
+  const after = await backTips();
+  console.log(
+    `bob back tips (10/50/90 %, lowest) before ${before.map((v) => v.toFixed(3))}, after two Longer ${after.map((v) => v.toFixed(3))}`,
+  );
+  await shoot(page, 'bob-longer');
+  // the cut line is 10 cm lower (the strokes fall on past their ends), within 3 cm
+  expect(before[1] - after[1]).toBeGreaterThan(0.7);
+  expect(before[1] - after[1]).toBeLessThan(1.3);
+  // and still a line: no strand hangs more than 5 cm below the lowest tenth
+  expect(after[0] - after[3]).toBeLessThan(0.5);
+  await page.getByRole('button', { name: 'Undo' }).click();
+  await page.getByRole('button', { name: 'Undo' }).click();
+  await settled(page);
+  const undone = await backTips();
+  expect(undone[1]).toBeCloseTo(before[1], 3);
   expect(errors).toEqual([]);
 });

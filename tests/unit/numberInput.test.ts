@@ -3,12 +3,12 @@
 // naming the input, what was typed, the limit and the value set.
 import { describe, expect, it } from 'vitest';
 import { gridForPreset } from '../../web/model/grid';
+import { segmentsForLength } from '../../web/model/lengthen';
 import { DEFAULT_GROWTH } from '../../web/model/session';
 import {
   growthForStrands,
   LENGTH_RANGE_CM,
   STRANDS_RANGE,
-  segmentsForLength,
   strandsOf,
 } from '../../web/ui/detailPanel';
 import { commitNumber, formatValue } from '../../web/ui/numberInput';

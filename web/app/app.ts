@@ -245,6 +245,7 @@ export function startApp(): void {
   );
   detailPanel = buildDetailPanel(byId('stage'), {
     setGrowth: (patch) => editor.run({ kind: 'setGrowth', patch }),
+    lengthen: (by) => editor.run({ kind: 'lengthen', by }),
     setDetail: (curveId, detail) => editor.run({ kind: 'setDetail', curveId, detail }),
     say: (m) => status.note(m),
   });

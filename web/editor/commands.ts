@@ -2,6 +2,7 @@
 // function from (session, command) to the next session, the selection after it and a sentence
 // for the status line. The Editor (editor.ts) runs them through one path: history, then notify.
 import { detailIsOn, type HairDetail } from '../model/detail';
+import { lengthenSession } from '../model/lengthen';
 import {
   isSelfMirror,
   type MirrorPlane,
@@ -65,6 +66,9 @@ export type Command =
   | { kind: 'setDetail'; curveId: string | null; detail: HairDetail | undefined }
   /** Growth settings (strand density, cap, maximum length). */
   | { kind: 'setGrowth'; patch: Partial<GrowthParams> }
+  /** "Longer" / "Shorter": every stroke that ends hair moved on by `by` world units (cut back
+   *  when negative), and the maximum length with it (model/lengthen.ts). */
+  | { kind: 'lengthen'; by: number }
   | { kind: 'setHairColor'; color: string }
   /** The head the hair grows on (Open head, Rotate, the built-in head). The scalp painting of
    *  the previous head is dropped (it belongs to that mesh); `symmetry`: the new head's mirror
@@ -309,6 +313,18 @@ function applyExact(s: SessionState, cmd: Command): CommandResult {
         message: d
           ? `Detail of ${c.id}: ${describeDetail(d)}.`
           : `${c.id} uses the session's detail.`,
+      };
+    }
+    case 'lengthen': {
+      const r = lengthenSession(s, cmd.by);
+      if (r.session === s || !Number.isFinite(cmd.by))
+        return { session: s, message: 'Length unchanged.' };
+      const check = parseSession(r.session);
+      if (!check.ok) return { session: s, message: `Nothing changed: ${check.error}.` };
+      const cm = Math.round(Math.abs(cmd.by) * 100) / 10;
+      return {
+        session: r.session,
+        message: `Hair ${cmd.by > 0 ? 'lengthened' : 'shortened'} by ${cm} cm: ${r.strokes} stroke end${r.strokes === 1 ? '' : 's'} moved, Max length ${Math.round(r.session.growth.maxLength * 100) / 10} cm.`,
       };
     }
     case 'setGrowth': {

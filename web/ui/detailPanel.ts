@@ -12,8 +12,8 @@ import {
   LENGTH_JITTER,
 } from '../model/detail';
 import { gridForPreset, MAX_HAIR_LENGTH } from '../model/grid';
+import { segmentsForLength } from '../model/lengthen';
 import { DEFAULT_GROWTH, type SessionState, type StyleCurve } from '../model/session';
-import { SESSION_LIMITS } from '../model/sessionFile';
 import type { GrowthParams } from '../solver/protocol';
 import { numberInput, type Say } from './numberInput';
 
@@ -21,6 +21,9 @@ import { numberInput, type Say } from './numberInput';
  *  with 1 / (θ step · φ step). */
 export const ROOTS_AT_ONE_DEGREE = 29_948;
 export const STRANDS_RANGE = { min: 1_000, max: 100_000, step: 1_000 };
+/** What "Longer" and "Shorter" move the style by (world units: 5 cm). */
+export const LENGTHEN_STEP = 0.5;
+
 /** Maximum strand length in the panel, centimetres (world units × 10). */
 export const LENGTH_RANGE_CM = { min: 2, max: MAX_HAIR_LENGTH * 10, step: 1 };
 
@@ -46,18 +49,10 @@ export function growthForStrands(
   return { ...steps, maxStrands: count > n ? n : 0 };
 }
 
-/** growth.maxSegments for strands of `maxLength` (world units) on a grid of step `step`: its
- *  length in growth steps (stepFraction × step) twice over, since a step is that times the
- *  field's magnitude, which falls below 1 where hair turns or a curve's end fades; never below
- *  the default's nor above the session limit. The engine checks that every strand at this many
- *  segments fits in memory, so it is not raised further. */
-export function segmentsForLength(maxLength: number, stepFraction: number, step: number): number {
-  const need = Math.ceil((2 * maxLength) / (stepFraction * step) - 1e-9);
-  return Math.min(SESSION_LIMITS.maxSegments, Math.max(DEFAULT_GROWTH.maxSegments, need));
-}
-
 export interface DetailPanelEvents {
   setGrowth(patch: Partial<GrowthParams>): void;
+  /** "Longer" / "Shorter": the whole style by `by` world units. */
+  lengthen(by: number): void;
   /** A sentence for the status line (an entry clamped or rounded). */
   say: Say;
   /** curveId null: the session's detail. */
@@ -123,6 +118,24 @@ export function buildDetailPanel(root: HTMLElement, events: DetailPanelEvents): 
         ),
       ),
     );
+    // the whole style longer or shorter: stroke ends and the maximum length move together
+    const longer = document.createElement('button');
+    longer.textContent = `+${LENGTHEN_STEP * 10} cm`;
+    longer.setAttribute('aria-label', `Longer by ${LENGTHEN_STEP * 10} cm`);
+    longer.title = 'Every stroke that ends hair goes on, and Max length rises, by this much';
+    longer.addEventListener('click', () => events.lengthen(LENGTHEN_STEP));
+    const shorter = document.createElement('button');
+    shorter.textContent = `−${LENGTHEN_STEP * 10} cm`;
+    shorter.setAttribute('aria-label', `Shorter by ${LENGTHEN_STEP * 10} cm`);
+    shorter.title = 'Every stroke that ends hair is cut back, and Max length falls, by this much';
+    shorter.addEventListener('click', () => events.lengthen(-LENGTHEN_STEP));
+    // a div, not a label: a label would pass a click on its text to the first button
+    const lengthRow = document.createElement('div');
+    lengthRow.className = 'detail-row';
+    const buttons = document.createElement('span');
+    buttons.append(shorter, ' ', longer);
+    lengthRow.append('Length', buttons);
+    panel.append(lengthRow);
     // the whole head's detail is always here; a selected curve's own detail follows it
     panel.append(heading('Detail: whole head'));
     detailEditors(s.detail ?? {}, (d) => events.setDetail(null, d), '');

@@ -1,0 +1,100 @@
+// "Longer" / "Shorter" (model/lengthen.ts): stroke ends that end hair move on by the amount asked,
+// falling as hair past a cut falls, or are cut back; the maximum length moves with them; other
+// curves are left alone. Lengths and directions worked out by hand.
+import { describe, expect, it } from 'vitest';
+import { presetSession } from '../../web/cli/presetSession';
+import { Head } from '../../web/head/head';
+import { lengthenSession } from '../../web/model/lengthen';
+import { emptySession, type StyleCurve } from '../../web/model/session';
+import type { Vec3 } from '../../web/model/vec3';
+
+const head = Head.builtin();
+const arc = (p: readonly Vec3[]) =>
+  p.slice(1).reduce((L, q, i) => L + Math.hypot(q[0] - p[i][0], q[1] - p[i][1], q[2] - p[i][2]), 0);
+const vp = { position: [0, 0, 5] as Vec3, target: [0, 0, 0] as Vec3 };
+const stroke = (points: Vec3[], extend = false): StyleCurve => ({
+  id: `c${points.length}${extend}`,
+  type: 'stream',
+  points,
+  extend,
+  viewpoint: vp,
+});
+
+describe('lengthenSession', () => {
+  it('carries a stroke on past its end, turning half-way to straight down at every 1 cm', () => {
+    const s = {
+      ...emptySession('25k'),
+      curves: [
+        stroke([
+          [0, 0.5, 1],
+          [0, 0, 1],
+        ]),
+        stroke([
+          [0.5, 0.5, 0.5],
+          [0.6, 0.5, 0.5],
+        ]),
+        stroke(
+          [
+            [0, 1, 0],
+            [0, 0.5, -1],
+          ],
+          true,
+        ),
+      ],
+    };
+    const r = lengthenSession(s, 0.3);
+    expect(r.strokes).toBe(2);
+    // straight down stays straight down: 3 cm lower
+    const down = r.session.curves[0].points;
+    expect(down.length).toBe(5);
+    expect(down[4][1]).toBeCloseTo(-0.3, 3);
+    expect(down[4][0]).toBeCloseTo(0, 3);
+    // level (+x): the first step at 45° down, the second at 67.5°, the third at 78.75°
+    const level = r.session.curves[1].points;
+    const angles = [45, 67.5, 78.75].map((a) => (a * Math.PI) / 180);
+    let [x, y] = [0.6, 0.5];
+    for (const a of angles) {
+      x += 0.1 * Math.cos(a);
+      y -= 0.1 * Math.sin(a);
+    }
+    expect(level[4][0]).toBeCloseTo(x, 3);
+    expect(level[4][1]).toBeCloseTo(y, 3);
+    // a curve whose hair grows on is left, and the maximum length rises with the ends
+    expect(r.session.curves[2]).toEqual(s.curves[2]);
+    expect(r.session.growth.maxLength).toBeCloseTo(s.growth.maxLength + 0.3, 6);
+  });
+
+  it("moves every bob stroke's end by the amount, on and back, and leaves the parting", () => {
+    const bob = presetSession('bob', head, '25k', 0);
+    const ends = bob.curves.filter((c) => c.type === 'stream' && !c.extend);
+    expect(ends.length).toBeGreaterThan(4);
+    const longer = lengthenSession(bob, 0.5);
+    expect(longer.strokes).toBe(ends.length);
+    bob.curves.forEach((c, i) => {
+      const after = longer.session.curves[i];
+      if (c.type !== 'stream' || c.extend) expect(after).toEqual(c);
+      else {
+        expect(arc(after.points) - arc(c.points)).toBeCloseTo(0.5, 2);
+        expect(after.points.at(-1)?.[1]).toBeLessThan(c.points.at(-1)?.[1] ?? 0);
+      }
+    });
+    // and back: each stroke its own length again
+    const back = lengthenSession(longer.session, -0.5);
+    bob.curves.forEach((c, i) => {
+      expect(arc(back.session.curves[i].points)).toBeCloseTo(arc(c.points), 2);
+    });
+    expect(back.session.growth.maxLength).toBeCloseTo(bob.growth.maxLength, 6);
+    // a stroke shorter than 2 cm after the cut is left as it is
+    const tiny = {
+      ...emptySession('25k'),
+      curves: [
+        stroke([
+          [0, 0, 1],
+          [0, -0.25, 1],
+        ]),
+      ],
+    };
+    expect(lengthenSession(tiny, -0.1).strokes).toBe(0);
+    expect(arc(lengthenSession(tiny, -0.04).session.curves[0].points)).toBeCloseTo(0.21, 3);
+  });
+});
