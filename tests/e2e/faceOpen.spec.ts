@@ -49,3 +49,55 @@ test('two mirrored strokes behind the ears leave the face clear', async ({ page 
   await shoot(page, 'face-open-tucked');
   expect(errors).toEqual([]);
 });
+
+test('a stroke that stays on the scalp combs the hair on past its end', async ({ page }) => {
+  await page.goto('/?preset=empty&strands=4000');
+  const s0 = await settled(page);
+  // from the top of the head (key T): the front hairline back over the crown, ending on the
+  // back of the head where the top view stops seeing it
+  await page.keyboard.press('t');
+  await expect(page.getByTestId('view-label')).toContainText('top');
+  await page.evaluate(() => window.hairsketch.idle());
+  const [a, b] = await page.evaluate(() => [
+    window.hairsketch.scalpToScreen(45, 0),
+    window.hairsketch.scalpToScreen(75, 180),
+  ]);
+  if (!a || !b) throw new Error('scalp points not visible from the top');
+  await page.mouse.move(a.x, a.y);
+  await page.mouse.down();
+  for (let i = 1; i <= 24; i++)
+    await page.mouse.move(a.x + ((b.x - a.x) * i) / 24, a.y + ((b.y - a.y) * i) / 24);
+  await page.mouse.up();
+  const s1 = await settled(page, s0.revision);
+  expect(s1.text).toContain('combing on: it ends on the scalp');
+  const curve = (
+    (await page.evaluate(() => window.hairsketch.session())) as {
+      curves: { extend: boolean; points: [number, number, number][] }[];
+    }
+  ).curves[0];
+  expect(curve.extend).toBe(true);
+  // the hair rooted along the stroke's middle goes on down the back, well below its end
+  const end = curve.points[curve.points.length - 1];
+  const mid = curve.points[Math.floor(curve.points.length / 2)];
+  const below = await page.evaluate(
+    ([m, e]) => {
+      const h = window.hairsketch.strands();
+      if (!h) return [];
+      const out: number[] = [];
+      for (let k = 0; k + 1 < h.strandStart.length; k++) {
+        const r = 3 * h.strandStart[k];
+        const t = 3 * (h.strandStart[k + 1] - 1);
+        const d = Math.hypot(h.points[r] - m[0], h.points[r + 1] - m[1], h.points[r + 2] - m[2]);
+        if (d < 0.2) out.push(e[1] - h.points[t + 1]);
+      }
+      return out.sort((x, y) => x - y);
+    },
+    [mid, end],
+  );
+  const median = below[below.length >> 1];
+  console.log(
+    `${below.length} strands rooted by the stroke's middle: median tip ${(median * 10).toFixed(1)} cm below its end`,
+  );
+  expect(below.length).toBeGreaterThan(10);
+  expect(median).toBeGreaterThan(0.5);
+});

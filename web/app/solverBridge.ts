@@ -154,7 +154,9 @@ export class SolverBridge {
     const base = {
       id: '~draft',
       points: stroke.points as Vec3[],
-      extend: stroke.kind === 'braid' ? newCurveExtends(s) : streamExtends(s, stroke.points),
+      extend:
+        stroke.extend ??
+        (stroke.kind === 'braid' ? newCurveExtends(s) : streamExtends(s, stroke.points)),
       viewpoint: stroke.viewpoint,
     };
     const draft: StyleCurve =

@@ -69,6 +69,9 @@ export interface ToolSet {
   readonly scalpBrush: ScalpBrushTool;
 }
 
+// How near the scalp (world units: 5 mm) a stroke's last point must be to count as ending on it.
+const SCALP_END_REACH = 0.05;
+
 export function createTools(d: ToolDeps): ToolSet {
   const { editor, viewer } = d;
   const step = () => d.step;
@@ -86,11 +89,20 @@ export function createTools(d: ToolDeps): ToolSet {
     };
   };
   // with natural fall a new curve's hair ends where the stroke ends: the draft marks it
+  // A stream stroke's hair grows on past its end when the session says so, when it ends at a
+  // tie, or when it ends on the scalp (a stroke that stays on the head combs the hair, one that
+  // leaves it says where the hair ends)
+  const endsOnScalp = (pts: readonly Vec3[]) => {
+    const end = pts[pts.length - 1];
+    if (!end) return false;
+    const h = d.head();
+    const near = h.closest(end);
+    return near.distance < SCALP_END_REACH && h.mesh.scalp[near.triangle] === 1;
+  };
+  const strokeExtends = (pts: readonly Vec3[]) =>
+    streamExtends(editor.session, pts) || endsOnScalp(pts);
   const showDraft = (pts: readonly Vec3[] | null) =>
-    viewer.setDraft(
-      pts,
-      !(pts ? streamExtends(editor.session, pts) : newCurveExtends(editor.session)),
-    );
+    viewer.setDraft(pts, !(pts ? strokeExtends(pts) : newCurveExtends(editor.session)));
   const eye = () => viewer.eye();
   const forward = () => viewer.viewForward();
 
@@ -173,21 +185,27 @@ export function createTools(d: ToolDeps): ToolSet {
       // the commit ends the stroke in progress in the same change (one solve follows)
       commit: (points) => {
         const tie = tieAtEnd(editor.session.curves, points[points.length - 1]);
+        const extend = strokeExtends(points);
+        const why = tie
+          ? `, on into ${tie.type} ${tie.id}`
+          : extend && !newCurveExtends(editor.session)
+            ? ', combing on: it ends on the scalp'
+            : '';
         editor.run({
           kind: 'addCurve',
           curve: {
             type: 'stream',
             points,
-            extend: streamExtends(editor.session, points),
+            extend,
             viewpoint: camera(),
           },
-          what: `stream curve {id} (${points.length - 1} segments${tie ? `, on into ${tie.type} ${tie.id}` : ''})`,
+          what: `stream curve {id} (${points.length - 1} segments${why})`,
           mirror: d.mirror(),
         });
       },
       preview: (points) => {
         viewer.expectHair(points !== null);
-        editor.setStroke(points && { points, viewpoint: camera() });
+        editor.setStroke(points && { points, viewpoint: camera(), extend: strokeExtends(points) });
       },
       notify: d.notify,
     }),

@@ -24,6 +24,9 @@ export interface StrokeInProgress {
   readonly viewpoint: Viewpoint;
   /** The curve it will make (default: a stream curve); previews solve it as that kind. */
   readonly kind?: 'stream' | 'braid';
+  /** Whether its hair grows on past its end ("Extend past the end"; default: as the session
+   *  says for a new curve). */
+  readonly extend?: boolean;
 }
 
 /** One change, as subscribers see it. */
