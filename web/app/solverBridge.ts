@@ -6,7 +6,7 @@
 // (hair presenter, overlays, status line, the active tool).
 import type { Editor, EditorChange, StrokeInProgress } from '../editor/editor';
 import { packCurves, packHairOptions } from '../model/curveSet';
-import { gridForSession, sameGrid } from '../model/grid';
+import { FIELD_OMEGA, gridForSession, sameGrid } from '../model/grid';
 import {
   defaultParams,
   hangLength,
@@ -66,7 +66,7 @@ export class SolverBridge {
     this.client = new SolverClient(
       opts.makeWorker ??
         (() => new Worker(new URL('../solver/worker.ts', import.meta.url), { type: 'module' })),
-      { type: 'init', grid: opts.grid, omega: 100, solver: opts.solver, scalp: opts.scalp },
+      { type: 'init', grid: opts.grid, omega: FIELD_OMEGA, solver: opts.solver, scalp: opts.scalp },
       {
         onBusy: (phase, fraction) => this.each((l) => l.busy?.(phase, fraction, this.previewing)),
         onResult: (r, final) => this.each((l) => l.result?.(r, final)),

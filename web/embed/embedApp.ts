@@ -9,7 +9,7 @@ import { activeQuality } from '../app/quality';
 import { Head } from '../head/head';
 import { sessionScalpMask } from '../head/scalpPaint';
 import { packCurves, packHairOptions } from '../model/curveSet';
-import { gridForSession } from '../model/grid';
+import { FIELD_OMEGA, gridForSession } from '../model/grid';
 import { hangLength, type SessionState } from '../model/session';
 import { decodeSessionLink } from '../model/sessionLink';
 import type { StrandArrays } from '../solver/protocol';
@@ -112,7 +112,7 @@ export async function startEmbed(): Promise<void> {
   say('loading', 'Growing the hair…');
   const client = new SolverClient(
     () => new Worker(new URL('../solver/worker.ts', import.meta.url), { type: 'module' }),
-    { type: 'init', grid, omega: 100, solver: 'fast', scalp: head.scalpMesh() },
+    { type: 'init', grid, omega: FIELD_OMEGA, solver: 'fast', scalp: head.scalpMesh() },
     {
       onBusy: () => {},
       onResult: (r, final) => {

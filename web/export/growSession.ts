@@ -7,14 +7,13 @@
 // a cold start until the estimated field error is below the tolerance, then growth with the
 // session's growth parameters (the strand cap replaced when the caller gives one).
 import { packCurves, packHairOptions } from '../model/curveSet';
+import { FIELD_OMEGA } from '../model/grid';
 import type { SessionState } from '../model/session';
 import { engineSettings } from '../model/sessionSchema';
 import { type SolverEngine, SolverError } from '../solver/engine';
 import type { GridSpec, ScalpMesh, SolverName, StrandArrays } from '../solver/protocol';
 import { avoidanceOptions } from '../solver/workerLogic';
 
-/** The field's omega, as the app sends it (app/solverBridge.ts). */
-export const GROW_OMEGA = 100;
 /** Estimated relative field error at which the field counts as converged (as the app). */
 export const GROW_TOLERANCE = 1e-6;
 /** Iterations per slice between progress reports. */
@@ -64,7 +63,7 @@ export function growSessionHair(
 
   const t0 = now();
   report('solve', 0);
-  engine.setGrid(opts.grid, GROW_OMEGA, opts.solver);
+  engine.setGrid(opts.grid, FIELD_OMEGA, opts.solver);
   engine.setScalp(scalp);
   const curves = packCurves(session.curves, null, !!session.fall);
   const options = packHairOptions(session, session.curves);

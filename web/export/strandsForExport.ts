@@ -7,7 +7,7 @@
 // colours use the same values): session.hairColor (#rrggbb, sRGB) varied per strand by
 // ±STRAND_VALUE_VARIATION in value (the sRGB channels scaled by one factor, clamped to 1), then
 // decoded with the sRGB transfer function.
-import type { SessionState } from '../model/session';
+import { DEFAULT_HAIR_COLOR, type SessionState } from '../model/session';
 import type { StrandArrays } from '../solver/protocol';
 import { MAX_POINTS_PER_STRAND, ROOT_WIDTH, TIP_WIDTH } from './types';
 
@@ -16,7 +16,6 @@ import { MAX_POINTS_PER_STRAND, ROOT_WIDTH, TIP_WIDTH } from './types';
 export const STRAND_VALUE_VARIATION = 0.04;
 
 /** Colour used when the session's colour is not #rrggbb (the session reader rejects that). */
-const FALLBACK_COLOR = '#5a3825';
 
 export interface ExportStrands {
   /** Exported strand s owns points strandStart[s] .. strandStart[s + 1] - 1 (root first). */
@@ -40,7 +39,7 @@ export function srgbToLinear(c: number): number {
 
 /** #rrggbb → sRGB-encoded floats 0..1 (the fallback colour if it is not #rrggbb). */
 export function parseHexColor(hex: string): [number, number, number] {
-  const m = /^#([0-9a-fA-F]{6})$/.exec(hex) ?? /^#([0-9a-fA-F]{6})$/.exec(FALLBACK_COLOR);
+  const m = /^#([0-9a-fA-F]{6})$/.exec(hex) ?? /^#([0-9a-fA-F]{6})$/.exec(DEFAULT_HAIR_COLOR);
   const v = Number.parseInt((m as RegExpExecArray)[1], 16);
   return [((v >> 16) & 255) / 255, ((v >> 8) & 255) / 255, (v & 255) / 255];
 }

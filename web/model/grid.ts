@@ -56,6 +56,9 @@ export const HEAD_ROOM: Vec3 = [0.9, 0.5, 0.5];
 
 /** The longest hair a session may ask for (growth.maxLength, world units: 100 cm). */
 export const MAX_HAIR_LENGTH = 10;
+
+/** The constraint weight ω of the field's energy (method S3: ω = 100), every solve's. */
+export const FIELD_OMEGA = 100;
 /** Lowest y of the built-in head's scalp (its hairline at the nape, world units): hair of the
  *  session's maximum length hangs from here. A loaded head's cranium is placed where the built-in
  *  head's is (head/loadHead.ts) and its default scalp is the same region, so it ends about as

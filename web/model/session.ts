@@ -211,6 +211,9 @@ export const DEFAULT_TIGHTNESS: number = CURVE_PARAMS.ponytail[0].default;
 
 export { DEFAULT_GROWTH };
 
+/** The hair colour of a new session, and of one that names none. */
+export const DEFAULT_HAIR_COLOR = '#5a3825';
+
 export function emptySession(
   grid: GridPreset,
   growth: GrowthParams = DEFAULT_GROWTH,
@@ -221,7 +224,7 @@ export function emptySession(
     grid,
     curves: [],
     growth,
-    hairColor: '#5a3825',
+    hairColor: DEFAULT_HAIR_COLOR,
     fall: true,
     sections: true,
     finish: true,

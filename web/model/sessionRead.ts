@@ -38,6 +38,7 @@ import {
   unit,
 } from './readValues';
 import {
+  DEFAULT_HAIR_COLOR,
   HEAD_FORMATS,
   type HeadRef,
   type HeadTurn,
@@ -49,8 +50,6 @@ import { SESSION_LIMITS as L, type Parsed } from './sessionLimits';
 import { migrateSession, type Plain, type PlainRecord, SESSION_VERSION } from './sessionMigrations';
 import { SESSION_FIELD_NAMES, SETTING_NAMES, settingSpec } from './sessionSchema';
 import type { Vec3 } from './vec3';
-
-const DEFAULT_HAIR_COLOR = '#5a3825';
 
 /** growth: each field within its range (growthParams.ts GROWTH_FIELDS); integers where counts
  *  and seeds are meant; a field left out (sessions made before it) takes its default. */

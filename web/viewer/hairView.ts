@@ -6,6 +6,7 @@
 // hair's shadow (per-vertex transmittance, headMaterial.ts).
 import * as THREE from 'three';
 import type { GrowthParams } from '../model/growthParams';
+import { DEFAULT_HAIR_COLOR } from '../model/session';
 import type { HairLightingArrays, StrandArrays } from '../solver/protocol';
 import { buildCardsObject } from './cardsView';
 import { DeepOpacityMaps } from './deepOpacity';
@@ -25,7 +26,7 @@ export type ActiveQuality = 'fast' | 'high';
 export class HairView {
   private lines: StrandMaterial | null = null;
   private strips: StrandMaterial | null = null;
-  private color = '#5a3825';
+  private color = DEFAULT_HAIR_COLOR;
   private quality: ActiveQuality = 'fast';
   private current: {
     strands: StrandArrays;

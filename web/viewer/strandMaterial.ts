@@ -15,6 +15,7 @@
 // opacity maps: deepOpacity.ts).
 import * as THREE from 'three';
 import { FILL_LIGHT_DIRECTION, KEY_LIGHT_DIRECTION } from '../lighting/keyLight';
+import { DEFAULT_HAIR_COLOR } from '../model/session';
 import { strandCount } from '../solver/protocol';
 import {
   type LineAttributes,
@@ -314,7 +315,7 @@ export function createStrandMaterial(options: StrandMaterialOptions = {}): Stran
   const center = options.headCenter ?? [0, 0, 0];
   const strips = options.kind === 'strips';
   const uniforms: StrandUniforms = {
-    hairColor: { value: new THREE.Color(options.color ?? '#5a3825') },
+    hairColor: { value: new THREE.Color(options.color ?? DEFAULT_HAIR_COLOR) },
     keyDirection: { value: new THREE.Vector3(...light).normalize() },
     keyColor: { value: new THREE.Color(options.lightColor ?? '#fff6ea').multiplyScalar(1.05) },
     fillDirection: { value: new THREE.Vector3(...FILL_LIGHT_DIRECTION).normalize() },
