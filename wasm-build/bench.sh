@@ -12,7 +12,7 @@ emcc -O3 -msimd128 -std=c++17 -DNDEBUG -I"$src" -I/usr/include/eigen3 \
   "$root/solver-cpp/bench/exact_bench.cpp" \
   "$src"/grid_ordering.cpp "$src"/supernodal_symbolic.cpp "$src"/supernodal_factor.cpp \
   "$src"/factor_update.cpp "$src"/exact_solver.cpp "$src"/field_system.cpp \
-  "$src"/constraints.cpp \
+  "$src"/constraints.cpp "$src"/memory_budget.cpp \
   -sALLOW_MEMORY_GROWTH=1 -sMAXIMUM_MEMORY=4GB -sINITIAL_MEMORY=64MB -sENVIRONMENT=node \
   -sNODERAWFS=1 -sEXIT_RUNTIME=1 -o "$out/exact_bench.js"
 # The output is CommonJS; the repository's package.json says "type": "module", which Node would
