@@ -11,11 +11,11 @@
 // own cell; a root alone no longer covers). Writes bench-results/bare-scalp.{json,md} and prints the table. A
 // benchmark, not a test: it asserts nothing.
 // BENCH_PRESETS=a,b overrides the presets; BENCH_DIST=<dir> serves another build than dist/.
-import { type ChildProcess, spawn } from 'node:child_process';
-import { chromium, type Page } from '@playwright/test';
+import { resolve } from 'node:path';
+import type { Page } from '@playwright/test';
 import type { BareScalpResult } from '../web/app/bareScalp';
 import { writeBenchResults } from './benchResults.mjs';
-import { waitServer } from './previewServer';
+import { previewAndBrowser, waitServer } from './previewServer';
 
 const PORT = Number(process.env.BENCH_PORT ?? 4191);
 const BASE = `http://127.0.0.1:${PORT}`;
@@ -90,32 +90,12 @@ async function withFinish(page: Page, on: boolean): Promise<Column> {
 }
 
 async function main(): Promise<void> {
-  const server: ChildProcess = spawn(
-    'node_modules/.bin/vite',
-    [
-      'preview',
-      '--port',
-      String(PORT),
-      '--strictPort',
-      ...(process.env.BENCH_DIST ? ['--outDir', process.env.BENCH_DIST] : []),
-    ],
-    { stdio: ['ignore', 'ignore', 'inherit'] },
+  const { server, browser } = await previewAndBrowser(
+    resolve(process.env.BENCH_DIST ?? 'dist'),
+    PORT,
   );
   server.on('exit', (code) => {
     if (code) console.error(`vite preview exited with code ${code}`);
-  });
-  const browser = await chromium.launch({
-    executablePath: process.env.CHROMIUM_PATH ?? '/usr/bin/chromium',
-    args: [
-      '--no-sandbox',
-      '--disable-gpu',
-      '--disable-background-networking',
-      '--disable-component-update',
-      '--disable-sync',
-      '--no-first-run',
-      '--disable-quic',
-      '--enable-unsafe-swiftshader',
-    ],
   });
   const rows: Array<Record<string, unknown>> = [];
   try {

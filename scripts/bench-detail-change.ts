@@ -11,10 +11,10 @@
 // benchmark, not a test: it asserts nothing about speed.
 // BENCH_STRANDS=default,100000 overrides the strand counts ('default': the preset's own);
 // BENCH_DIST=<dir> serves another build than dist/.
-import { type ChildProcess, spawn } from 'node:child_process';
-import { chromium, type Page } from '@playwright/test';
+import { resolve } from 'node:path';
+import type { Page } from '@playwright/test';
 import { writeBenchResults } from './benchResults.mjs';
-import { waitServer } from './previewServer';
+import { previewAndBrowser, waitServer } from './previewServer';
 
 const PORT = Number(process.env.BENCH_PORT ?? 4192);
 const BASE = `http://127.0.0.1:${PORT}`;
@@ -189,32 +189,12 @@ async function change(page: Page, value: number): Promise<Sample> {
 }
 
 async function main(): Promise<void> {
-  const server: ChildProcess = spawn(
-    'node_modules/.bin/vite',
-    [
-      'preview',
-      '--port',
-      String(PORT),
-      '--strictPort',
-      ...(process.env.BENCH_DIST ? ['--outDir', process.env.BENCH_DIST] : []),
-    ],
-    { stdio: ['ignore', 'ignore', 'inherit'] },
+  const { server, browser } = await previewAndBrowser(
+    resolve(process.env.BENCH_DIST ?? 'dist'),
+    PORT,
   );
   server.on('exit', (code) => {
     if (code) console.error(`vite preview exited with code ${code}`);
-  });
-  const browser = await chromium.launch({
-    executablePath: process.env.CHROMIUM_PATH ?? '/usr/bin/chromium',
-    args: [
-      '--no-sandbox',
-      '--disable-gpu',
-      '--disable-background-networking',
-      '--disable-component-update',
-      '--disable-sync',
-      '--no-first-run',
-      '--disable-quic',
-      '--enable-unsafe-swiftshader',
-    ],
   });
   const rows: Array<Record<string, unknown>> = [];
   try {
