@@ -15,7 +15,7 @@ import { resolve } from 'node:path';
 import type { Page } from '@playwright/test';
 import type { BareScalpResult } from '../web/app/bareScalp';
 import { writeBenchResults } from './benchResults.mjs';
-import { previewAndBrowser, waitServer } from './previewServer';
+import { previewAndBrowser, revision, settled, waitServer } from './previewServer';
 
 const PORT = Number(process.env.BENCH_PORT ?? 4191);
 const BASE = `http://127.0.0.1:${PORT}`;
@@ -31,25 +31,6 @@ interface Measured {
   strands: number;
 }
 type Column = Measured | { na: string };
-
-/** Waits until the app is ready (or failed) and idle, with a hair revision past `after`. */
-async function settled(page: Page, after = -1, timeout = 600_000): Promise<string> {
-  await page.waitForFunction(
-    (rev) => {
-      const el = document.querySelector('[data-testid="status"]') as HTMLElement | null;
-      if (!el) return false;
-      if (el.dataset.state === 'error') return true;
-      return el.dataset.state === 'ready' && Number(el.dataset.revision) > rev;
-    },
-    after,
-    { timeout, polling: 50 },
-  );
-  await page.evaluate(() => window.hairsketch.idle());
-  return (await page.getByTestId('status').getAttribute('data-state')) ?? '';
-}
-
-const revision = async (page: Page) =>
-  Number(await page.getByTestId('status').getAttribute('data-revision'));
 
 async function measure(page: Page): Promise<Measured> {
   const strands = Number(await page.getByTestId('status').getAttribute('data-strands'));

@@ -14,7 +14,7 @@
 import { resolve } from 'node:path';
 import type { Page } from '@playwright/test';
 import { writeBenchResults } from './benchResults.mjs';
-import { previewAndBrowser, waitServer } from './previewServer';
+import { previewAndBrowser, revision, settled, waitServer } from './previewServer';
 
 const PORT = Number(process.env.BENCH_PORT ?? 4192);
 const BASE = `http://127.0.0.1:${PORT}`;
@@ -66,24 +66,6 @@ const median = (xs: Array<number | null>): number | null => {
   return v.length % 2 ? v[m] : (v[m - 1] + v[m]) / 2;
 };
 
-/** Waits until the app is ready (or failed) and idle, with a hair revision past `after`. */
-async function settled(page: Page, after = -1, timeout = 600_000): Promise<string> {
-  await page.waitForFunction(
-    (rev) => {
-      const el = document.querySelector('[data-testid="status"]') as HTMLElement | null;
-      if (!el) return false;
-      if (el.dataset.state === 'error') return true;
-      return el.dataset.state === 'ready' && Number(el.dataset.revision) > rev;
-    },
-    after,
-    { timeout, polling: 50 },
-  );
-  await page.evaluate(() => window.hairsketch.idle());
-  return (await page.getByTestId('status').getAttribute('data-state')) ?? '';
-}
-
-const revision = async (page: Page) =>
-  Number(await page.getByTestId('status').getAttribute('data-revision'));
 const strandsShown = async (page: Page) =>
   Number(await page.getByTestId('status').getAttribute('data-strands'));
 

@@ -1,4 +1,5 @@
-// Shared by the browser benchmarks: wait until `vite preview` answers at `base`.
+// Shared by the browser benchmarks: start `vite preview` and Chromium, wait for the server and
+// for the app to settle.
 
 import { type ChildProcess, spawn } from 'node:child_process';
 import http from 'node:http';
@@ -56,3 +57,22 @@ export async function previewAndBrowser(
   });
   return { server, browser };
 }
+
+/** Waits until the app is ready (or failed) and idle, with a hair revision past `after`. */
+export async function settled(page: Page, after = -1, timeout = 600_000): Promise<string> {
+  await page.waitForFunction(
+    (rev) => {
+      const el = document.querySelector('[data-testid="status"]') as HTMLElement | null;
+      if (!el) return false;
+      if (el.dataset.state === 'error') return true;
+      return el.dataset.state === 'ready' && Number(el.dataset.revision) > rev;
+    },
+    after,
+    { timeout, polling: 50 },
+  );
+  await page.evaluate(() => window.hairsketch.idle());
+  return (await page.getByTestId('status').getAttribute('data-state')) ?? '';
+}
+
+export const revision = async (page: Page) =>
+  Number(await page.getByTestId('status').getAttribute('data-revision'));
