@@ -96,6 +96,44 @@ test('typing 60 in Max length keeps 60 and grows hair 60 cm long; 120 shows 100 
   expect(errors).toEqual([]);
 });
 
+/** Tip heights (y) of all strands: 10th, 50th percentile and the lowest. */
+function tipHeights(page: Page) {
+  return page.evaluate(() => {
+    const h = window.hairsketch.strands();
+    if (!h) return [];
+    const y: number[] = [];
+    for (let k = 0; k + 1 < h.strandStart.length; k++)
+      y.push(h.points[3 * (h.strandStart[k + 1] - 1) + 1]);
+    y.sort((a, b) => a - b);
+    const q = (f: number) => y[Math.floor(f * (y.length - 1))];
+    return [q(0.1), q(0.5), y[0]];
+  });
+}
+
+test('raising Max length by 20 cm on the curly preset lowers its hair by about 20 cm, without strays', async ({
+  page,
+}) => {
+  const errors = watchConsole(page);
+  await page.goto('/?preset=curly&strands=3000');
+  const s0 = await settled(page);
+  const before = await tipHeights(page);
+  const max0 = (await growthOf(page)).maxLength;
+  await page.getByRole('button', { name: 'Detail' }).click();
+  await typeMaxLength(page, String(Math.round(max0 * 10) + 20));
+  const s1 = await settled(page, s0.revision);
+  expect(s1.text).toContain('lengthened by 20 cm');
+  const after = await tipHeights(page);
+  console.log(
+    `curly tips (10 %, median, lowest) at ${max0 * 10} cm ${before.map((v) => v.toFixed(3))}, at +20 cm ${after.map((v) => v.toFixed(3))}`,
+  );
+  // the stroked hair goes on with the cap: the median tip 20 cm lower (the curls take up some)
+  expect(before[1] - after[1]).toBeGreaterThan(1.2);
+  expect(before[1] - after[1]).toBeLessThan(2.2);
+  // no strays: no strand hangs more than 8 cm below the lowest tenth
+  expect(after[0] - after[2]).toBeLessThan(0.8);
+  expect(errors).toEqual([]);
+});
+
 test('Longer lengthens a sketched bob by 10 cm with two clicks, without strays; Undo takes it back', async ({
   page,
 }) => {

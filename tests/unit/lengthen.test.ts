@@ -4,7 +4,7 @@
 import { describe, expect, it } from 'vitest';
 import { presetSession } from '../../web/cli/presetSession';
 import { Head } from '../../web/head/head';
-import { lengthenSession } from '../../web/model/lengthen';
+import { endsAsFringe, lengthenSession } from '../../web/model/lengthen';
 import { emptySession, type StyleCurve } from '../../web/model/session';
 import type { Vec3 } from '../../web/model/vec3';
 
@@ -26,8 +26,8 @@ describe('lengthenSession', () => {
       ...emptySession('25k'),
       curves: [
         stroke([
-          [0, 0.5, 1],
-          [0, 0, 1],
+          [1, 0.5, 0],
+          [1, 0, 0],
         ]),
         stroke([
           [0.5, 0.5, 0.5],
@@ -48,7 +48,7 @@ describe('lengthenSession', () => {
     const down = r.session.curves[0].points;
     expect(down.length).toBe(5);
     expect(down[4][1]).toBeCloseTo(-0.3, 3);
-    expect(down[4][0]).toBeCloseTo(0, 3);
+    expect(down[4][0]).toBeCloseTo(1, 3);
     // level (+x): the first step at 45° down, the second at 67.5°, the third at 78.75°
     const level = r.session.curves[1].points;
     const angles = [45, 67.5, 78.75].map((a) => (a * Math.PI) / 180);
@@ -64,15 +64,21 @@ describe('lengthenSession', () => {
     expect(r.session.growth.maxLength).toBeCloseTo(s.growth.maxLength + 0.3, 6);
   });
 
-  it("moves every bob stroke's end by the amount, on and back, and leaves the parting", () => {
+  it("moves every bob stroke's end by the amount, on and back, and leaves the fringe", () => {
     const bob = presetSession('bob', head, '25k', 0);
-    const ends = bob.curves.filter((c) => c.type === 'stream' && !c.extend);
+    // the bob's fringe: seven strokes ending at the eyebrows (y = 0.06), in front of the face
+    const isFringe = (c: StyleCurve) => Math.abs((c.points.at(-1)?.[1] ?? 0) - 0.06) < 0.02;
+    const fringe = bob.curves.filter(isFringe);
+    expect(fringe.length).toBe(7);
+    expect(fringe.every((c) => endsAsFringe(c.points[c.points.length - 1]))).toBe(true);
+    const ends = bob.curves.filter((c) => c.type === 'stream' && !c.extend && !isFringe(c));
     expect(ends.length).toBeGreaterThan(4);
+    expect(ends.some((c) => endsAsFringe(c.points[c.points.length - 1]))).toBe(false);
     const longer = lengthenSession(bob, 0.5);
     expect(longer.strokes).toBe(ends.length);
     bob.curves.forEach((c, i) => {
       const after = longer.session.curves[i];
-      if (c.type !== 'stream' || c.extend) expect(after).toEqual(c);
+      if (c.type !== 'stream' || c.extend || isFringe(c)) expect(after).toEqual(c);
       else {
         expect(arc(after.points) - arc(c.points)).toBeCloseTo(0.5, 2);
         expect(after.points.at(-1)?.[1]).toBeLessThan(c.points.at(-1)?.[1] ?? 0);
@@ -89,8 +95,8 @@ describe('lengthenSession', () => {
       ...emptySession('25k'),
       curves: [
         stroke([
-          [0, 0, 1],
-          [0, -0.25, 1],
+          [1, 0, 0],
+          [1, -0.25, 0],
         ]),
       ],
     };

@@ -3,7 +3,8 @@
 // sketched style where it was; lengthening moves every such end (a stream curve without "Extend
 // past the end") on by the same amount, falling as hair past a cut falls, and the maximum length
 // with it, so the whole style grows (or is cut back) and every rule still holds: the hair ends
-// where its (longer) stroke ends.
+// where its (longer) stroke ends. A fringe (a stroke that ends in front of the face, above the
+// nose) keeps its end: a stylist asked for longer hair does not cut the fringe to the chin.
 import { gridForPreset, MAX_HAIR_LENGTH } from './grid';
 import { quantizeSession } from './quantize';
 import { DEFAULT_GROWTH, type SessionState, type StyleCurve } from './session';
@@ -25,6 +26,22 @@ export function segmentsForLength(maxLength: number, stepFraction: number, step:
 const STEP = 0.1;
 const SHORTEST_STROKE = 0.2;
 const SHORTEST_HAIR = 0.2;
+
+// Where a fringe ends, in the frame every head is placed in (the built-in head's: cranium top at
+// y = 1, face towards +z, centred on x = z = 0): in front of the face (z above FRINGE.front,
+// within FRINGE.halfAngle of straight ahead) and between the nose (FRINGE.low) and the top of
+// the forehead (FRINGE.high).
+const FRINGE = { front: 0.3, halfAngle: 0.8, low: -0.6, high: 0.6 } as const;
+
+/** Whether a stroke ending at `p` is a fringe (see FRINGE). */
+export function endsAsFringe(p: Vec3): boolean {
+  return (
+    p[2] > FRINGE.front &&
+    Math.abs(Math.atan2(p[0], p[2])) < FRINGE.halfAngle &&
+    p[1] > FRINGE.low &&
+    p[1] < FRINGE.high
+  );
+}
 
 function arcLength(p: readonly Vec3[]): number {
   let L = 0;
@@ -85,18 +102,23 @@ export interface Lengthened {
 
 /** The session with its hair `by` world units longer (shorter when negative): every stream
  *  curve that ends its hair moved on (or cut back; a stroke that would be shorter than 2 cm is
- *  left), and the maximum length moved by as much, within 2 cm .. MAX_HAIR_LENGTH. */
+ *  left; a fringe keeps its end), and the maximum length moved by as much, within
+ *  2 cm .. MAX_HAIR_LENGTH. */
 export function lengthenSession(s: SessionState, by: number): Lengthened {
   if (!Number.isFinite(by) || by === 0) return { session: s, strokes: 0 };
   let strokes = 0;
   const curves = s.curves.map((c): StyleCurve => {
     if (c.type !== 'stream' || c.extend || c.points.length < 2) return c;
+    if (endsAsFringe(c.points[c.points.length - 1])) return c;
     const points = by > 0 ? carryOn(c.points, by) : cutBack(c.points, -by);
     if (!points) return c;
     strokes++;
     return { ...c, points };
   });
-  const maxLength = Math.min(MAX_HAIR_LENGTH, Math.max(SHORTEST_HAIR, s.growth.maxLength + by));
+  // to 0.01 mm, as the Hair panel shows it
+  const maxLength =
+    Math.round(Math.min(MAX_HAIR_LENGTH, Math.max(SHORTEST_HAIR, s.growth.maxLength + by)) * 1e4) /
+    1e4;
   const growth = {
     ...s.growth,
     maxLength,

@@ -11,8 +11,7 @@ import {
   type HairDetail,
   LENGTH_JITTER,
 } from '../model/detail';
-import { gridForPreset, MAX_HAIR_LENGTH } from '../model/grid';
-import { segmentsForLength } from '../model/lengthen';
+import { MAX_HAIR_LENGTH } from '../model/grid';
 import { DEFAULT_GROWTH, type SessionState, type StyleCurve } from '../model/session';
 import type { GrowthParams } from '../solver/protocol';
 import { numberInput, type Say } from './numberInput';
@@ -103,17 +102,8 @@ export function buildDetailPanel(root: HTMLElement, events: DetailPanelEvents): 
           LENGTH_RANGE_CM,
           s.growth.maxLength * 10,
           { label: 'Max length', unit: 'cm', decimals: 3 },
-          (cm) => {
-            const maxLength = Math.round(cm * 1e3) / 1e4;
-            events.setGrowth({
-              maxLength,
-              maxSegments: segmentsForLength(
-                maxLength,
-                s.growth.stepFraction,
-                gridForPreset(s.grid).step,
-              ),
-            });
-          },
+          // the whole style follows: stroke ends move with the maximum length (model/lengthen.ts)
+          (cm) => events.lengthen(Math.round(cm * 1e3) / 1e4 - s.growth.maxLength),
           events.say,
         ),
       ),
