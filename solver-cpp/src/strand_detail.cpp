@@ -25,6 +25,12 @@ constexpr uint64_t kStreamSpread = 0xa4093822299f31d0ULL;
 constexpr uint64_t kStreamCurl = 0x082efa98ec4e6c89ULL;
 constexpr uint64_t kStreamFrizz = 0x452821e638d01377ULL;
 constexpr uint64_t kStreamEndSpread = 0xbe5466cf34e90c6cULL;
+constexpr uint64_t kStreamRinglet = 0x3f84d5b5b5470917ULL;
+
+// Ringlets vary as real ones do: each clump's curl radius and frequency are scaled by a seeded
+// factor within 1 ± kRingletVary (independently), and half the clumps (seeded) wind the other
+// way, so neighbouring ringlets do not line up in rows of parallel stripes.
+constexpr double kRingletVary = 0.25;
 
 Pcg32 strandRng(uint32_t seed, uint32_t key, uint64_t stream) {
   return Pcg32((uint64_t(seed) << 32) | key, stream);
@@ -181,11 +187,28 @@ size_t curlPointCount(const DetailParams& d, size_t n, double L, size_t cap) {
   return size_t(std::min(double(cap), std::max(double(n), want)));
 }
 
+// How a ringlet strand curls: `d` with its curl radius and frequency scaled by its clump's
+// seeded factors (kRingletVary), and which way it winds (+1 or -1); the guide's key seeds them,
+// so a clump stays one ringlet.
+struct Ringlet {
+  DetailParams detail;
+  double hand = 1;
+};
+Ringlet ringletOf(const DetailParams& d, uint32_t seed, uint32_t phaseKey) {
+  Pcg32 rng = strandRng(seed, phaseKey, kStreamRinglet);
+  Ringlet r{d, 1};
+  r.detail.curl.radius *= 1 + kRingletVary * (2 * unitFromBits(rng.nextU32()) - 1);
+  r.detail.curl.frequency *= 1 + kRingletVary * (2 * unitFromBits(rng.nextU32()) - 1);
+  r.hand = rng.nextU32() & 1 ? -1 : 1;
+  return r;
+}
+
 // Curl then frizz on one strand (w.p), in place; with curl, the strand is first resampled evenly
 // to m points (curlPointCount) and s_k = L k / (m - 1) is the arc length along the path.
-// phaseKey seeds the curl's phase (the strand's own key, or its clump guide's for ringlets).
+// phaseKey seeds the curl's phase (the strand's own key, or its clump guide's for ringlets);
+// hand = -1 winds the curl the other way round the strand.
 void curlAndFrizz(const DetailParams& d, uint32_t seed, uint32_t key, uint32_t phaseKey, size_t m,
-                  Work& w) {
+                  Work& w, double hand = 1) {
   const double L = arcLengths(w.p, w.s);
   if (!(L > 0)) return;
   const bool curl = d.curl.radius > 0, frizz = d.frizz.distance > 0;
@@ -210,7 +233,7 @@ void curlAndFrizz(const DetailParams& d, uint32_t seed, uint32_t key, uint32_t p
       s = s * cs + c * sn;
       c = c1;
       const double ramp = a > 0 ? smoothstep(w.s[i] * invL / a) : 1.0;
-      w.p[i] += r * ramp * (c * w.n[i] + s * w.b[i]);
+      w.p[i] += r * ramp * (c * w.n[i] + hand * s * w.b[i]);
     }
   }
   if (frizz) {
@@ -549,6 +572,11 @@ Status applyDetail(const std::vector<DetailParams>& groups, const std::vector<ui
 
   // 3. Curl and frizz, strand by strand (curl may add points: then into a new buffer).
   if (anyCurlOrFrizz) {
+    // with ringlets a strand curls as its clump's ringlet (ringletOf)
+    auto curlOf = [&](size_t s) {
+      return ringlets ? ringletOf(groups[groupOf[s]], seed, phaseKey[s])
+                      : Ringlet{groups[groupOf[s]], 1};
+    };
     auto detailed = [&](size_t s) {
       const DetailParams& d = groups[groupOf[s]];
       return start[s + 1] - start[s] >= 2 && (d.curl.radius > 0 || d.frizz.distance > 0);
@@ -559,7 +587,8 @@ Status applyDetail(const std::vector<DetailParams>& groups, const std::vector<ui
         if (!detailed(s)) continue;
         const size_t count = start[s + 1] - start[s];
         load(P + 3 * size_t(start[s]), count, w.p);
-        curlAndFrizz(groups[groupOf[s]], seed, key[s], phaseKey[s], count, w);
+        const Ringlet r = curlOf(s);
+        curlAndFrizz(r.detail, seed, key[s], phaseKey[s], count, w, r.hand);
         store(w.p, P + 3 * size_t(start[s]));
       }
     } else {
@@ -570,7 +599,7 @@ Status applyDetail(const std::vector<DetailParams>& groups, const std::vector<ui
         size_t count = start[s + 1] - start[s];
         if (detailed(s) && groups[groupOf[s]].curl.radius > 0) {
           load(P + 3 * size_t(start[s]), count, w.p);
-          count = curlPointCount(groups[groupOf[s]], count, arcLengths(w.p, w.s), cap);
+          count = curlPointCount(curlOf(s).detail, count, arcLengths(w.p, w.s), cap);
         }
         outStart[s + 1] = uint32_t(outStart[s] + count);
       }
@@ -584,7 +613,8 @@ Status applyDetail(const std::vector<DetailParams>& groups, const std::vector<ui
           continue;
         }
         load(src, count, w.p);
-        curlAndFrizz(groups[groupOf[s]], seed, key[s], phaseKey[s], m, w);
+        const Ringlet r = curlOf(s);
+        curlAndFrizz(r.detail, seed, key[s], phaseKey[s], m, w, r.hand);
         store(w.p, dst);  // m points: resampled to m with curl, count = m without
       }
       strands.points.swap(out);

@@ -686,4 +686,56 @@ TEST(StrandDetail, RingletsCurlAClumpInPhase) {
   EXPECT_GT(apart(false), 0.05);
 }
 
+// Ringlets vary in size and winding, clump by clump: eight strands 0.5 apart (each its own
+// clump) curl at exactly the radius asked without ringlets (each point's distance from the
+// straight axis is r) and all wind the same way; with ringlets each clump's radius lies within
+// r (1 ± 0.25), the radii differ, and some wind each way (the sign of the turn of the point's
+// offset from the axis, seen along the strand), so neighbouring ringlets do not line up in rows.
+TEST(StrandDetail, RingletsVaryInSizeClumpByClump) {
+  DetailParams d;
+  d.curl.radius = 0.1;
+  d.curl.frequency = 2;
+  d.curl.start = 0;
+  d.curl.randomOffset = 1;
+  d.clump.factor = 0.7;
+  d.clump.guideDistance = 0.12;
+  std::vector<Strand> list;
+  for (int k = 0; k < 8; ++k) list.push_back(straight(V3(0.5 * k, 0, 0), V3(0, -1, 0), 41, 0.05));
+  auto radii = [&](bool ringlets) {
+    Strands s = makeStrands(list);
+    EXPECT_TRUE(applyDetail({d}, std::vector<uint32_t>(8, 0), {3, 17, 29, 41, 53, 67, 79, 97}, 5, s,
+                            255, nullptr, ringlets)
+                    .ok());
+    std::vector<double> r;
+    int clockwise = 0;
+    for (int k = 0; k < 8; ++k) {
+      const Strand a = strandOf(s, size_t(k));
+      double most = 0, turn = 0;
+      for (size_t i = 0; i < a.size(); ++i) {
+        const V3& p = a[i];
+        most = std::max(most, std::hypot(p.x() - 0.5 * k, p.z()));
+        if (i + 1 < a.size())
+          turn += (p.x() - 0.5 * k) * a[i + 1].z() - p.z() * (a[i + 1].x() - 0.5 * k);
+      }
+      r.push_back(most);
+      clockwise += turn > 0;
+    }
+    r.push_back(clockwise);
+    return r;
+  };
+  std::vector<double> plain = radii(false);
+  EXPECT_TRUE(plain.back() == 0 || plain.back() == 8) << plain.back() << " of 8 wind one way";
+  plain.pop_back();
+  for (double r : plain) EXPECT_NEAR(r, 0.1, 1e-3);
+  std::vector<double> v = radii(true);
+  EXPECT_GT(v.back(), 0);
+  EXPECT_LT(v.back(), 8);
+  v.pop_back();
+  for (double r : v) {
+    EXPECT_GE(r, 0.075 - 1e-3);
+    EXPECT_LE(r, 0.125 + 1e-3);
+  }
+  EXPECT_GT(*std::max_element(v.begin(), v.end()) - *std::min_element(v.begin(), v.end()), 0.01);
+}
+
 }  // namespace strand_detail_test
