@@ -493,8 +493,16 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
   if (sections_) {
     sections.build(roots_, centre_.cast<float>(), partings_);
     strandSection_.resize(n);
-    for (size_t st = 0; st < n; ++st)
-      strandSection_[st] = uint8_t(std::min(sections.section(R[st]), 255));
+    for (size_t st = 0; st < n; ++st) {
+      // with finished edges, hair at a parting belongs to the side it is combed to
+      const int at =
+          finish_ && s.ok()
+              ? sections.combedSection(
+                    strands_.points.data() + 3 * size_t(strands_.strandStart[st]),
+                    strands_.strandStart[st + 1] - strands_.strandStart[st], kCombedReach)
+              : sections.section(R[st]);
+      strandSection_[st] = uint8_t(std::min(at, 255));
+    }
   }
   if (s.ok() && !tails_.empty()) {
     // laid strands keep to the 255 points engines take (detail's cap too)

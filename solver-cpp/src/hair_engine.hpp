@@ -60,9 +60,13 @@ class HairEngine {
   bool sections() const { return sections_; }
   // Finished edges: every strand not laid into a tie ends up to kEndSpread short of where it
   // grew to (strand_detail.hpp applyDetail's endSpread), seeded per strand; lone roots are not
-  // grown (scalp_roots.hpp dropLoneRoots); with fall the prior opens the face (hair_fall.hpp).
+  // grown (scalp_roots.hpp dropLoneRoots); with fall the prior opens the face (hair_fall.hpp);
+  // with sections a strand belongs to the section it is combed into (its point kCombedReach
+  // along it: ScalpSections::combedSection), so hair at a parting that sets off across it is
+  // gathered with the other side instead of flying loose from the line.
   Status setFinish(bool on);
   bool finish() const { return finish_; }
+  static constexpr float kCombedReach = 0.15f;  // world units (1.5 cm)
   // Curves -> constraints -> solver (the solver diffs against its previous set).
   Status setCurves(const CurveSetView& curves);
   Status solve();

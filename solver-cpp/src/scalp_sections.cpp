@@ -152,4 +152,21 @@ int ScalpSections::section(const Eigen::Vector3f& p) const {
   return label_[size_t(cellOf(plane(p)))];
 }
 
+int ScalpSections::combedSection(const float* points, size_t count, float reach) const {
+  if (count == 0) return 0;
+  Eigen::Vector3f at(points[0], points[1], points[2]);
+  float walked = 0;
+  for (size_t i = 1; i < count; ++i) {
+    const Eigen::Vector3f next(points[3 * i], points[3 * i + 1], points[3 * i + 2]);
+    const float seg = (next - at).norm();
+    if (walked + seg >= reach) {
+      at += (reach - walked) / std::max(seg, 1e-12f) * (next - at);
+      return section(at);
+    }
+    walked += seg;
+    at = next;
+  }
+  return section(at);
+}
+
 }  // namespace hairsketch

@@ -42,6 +42,11 @@ class ScalpSections {
   // The section of a point on or near the scalp (or of the scalp under it, seen from the centre);
   // 0 before build.
   int section(const Eigen::Vector3f& p) const;
+  // The section a strand is combed into: that of its point `reach` along it (arc length) from
+  // its root, or of its tip when it is shorter; points: count x 3 floats, root first. Hair at a
+  // parting goes the way it is combed, so a root just one side of the line whose hair sets off
+  // across it belongs to the other side.
+  int combedSection(const float* points, size_t count, float reach) const;
   int count() const { return count_; }
 
  private:

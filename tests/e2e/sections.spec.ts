@@ -106,6 +106,17 @@ test('half-up: an ear-to-ear parting and a bun on the top section gather the top
   );
   expect(top).toBeGreaterThanOrEqual(0.95);
   expect(rest).toBeLessThan(0.05);
+  // hair at the parting goes the way it is combed: none flies loose from the line out past the
+  // sides (the built-in head is 16 cm wide, |x| <= 0.79; loose hair falls within 5 cm of it)
+  let flying = 0;
+  for (let k = 0; k + 1 < h.strandStart.length; k++)
+    for (let q = h.strandStart[k]; q < h.strandStart[k + 1]; q++)
+      if (Math.abs(h.points[3 * q]) > 1.3) {
+        flying++;
+        break;
+      }
+  console.log(`half-up: ${flying} strands reach more than 5 cm past the sides of the head`);
+  expect(flying).toBe(0);
   // the Bun tool is active: the scalp shows its sections; another tool: the head's own colours
   await page.waitForFunction(() => window.hairsketch.sectionsTinted() > 0);
   await shoot(page, 'sections-half-up-tinted');

@@ -238,6 +238,36 @@ TEST(ScalpSections, PartingsThatReachTheEdgeSplitTheScalpAndOthersDoNot) {
   EXPECT_EQ(open.count(), 1);
 }
 
+// Hair at a parting goes the way it is combed: a strand rooted 5 mm left of a centre parting
+// belongs to the left while it sets off left or along the line, and to the right when its
+// first 1.5 cm cross the line; a strand shorter than the reach counts at its tip.
+TEST(ScalpSections, AStrandBelongsToTheSideItIsCombedTo) {
+  ScalpSections centre;
+  centre.build(sphereRoots(), Vector3f::Zero(), asFloat(partingInPlane(Vector3d::UnitX(), 0)));
+  ASSERT_EQ(centre.count(), 2);
+  const int left = centre.section(Vector3f(0.7f, 0.7f, 0)),
+            right = centre.section({-0.7f, 0.7f, 0});
+  const Vector3f root = Vector3f(0.05f, 1, 0.2f).normalized();
+  auto strand = [&](const Vector3f& dir, int n, float step) {
+    std::vector<float> p;
+    for (int i = 0; i < n; ++i) {
+      const Vector3f q = root + float(i) * step * dir;
+      p.insert(p.end(), {q.x(), q.y(), q.z()});
+    }
+    return p;
+  };
+  ASSERT_EQ(centre.section(root), left);
+  const std::vector<float> out = strand(Vector3f(1, 0, 0), 10, 0.05f);
+  const std::vector<float> along = strand(Vector3f(0, 0, 1), 10, 0.05f);
+  const std::vector<float> across = strand(Vector3f(-1, 0, 0), 10, 0.05f);
+  const std::vector<float> stub = strand(Vector3f(-1, 0, 0), 3, 0.05f);  // 1 cm: its tip
+  EXPECT_EQ(centre.combedSection(out.data(), 10, 0.15f), left);
+  EXPECT_EQ(centre.combedSection(along.data(), 10, 0.15f), left);
+  EXPECT_EQ(centre.combedSection(across.data(), 10, 0.15f), right);
+  EXPECT_EQ(centre.combedSection(stub.data(), 3, 0.15f), right);
+  EXPECT_EQ(centre.combedSection(across.data(), 1, 0.15f), left);  // a root alone
+}
+
 TEST(SectionTies, WithNoPartingEveryTieKindGathersTheWholeHead) {
   const auto all = [](const Vector3d&) { return true; };
   for (int kind = 0; kind < 3; ++kind) {
