@@ -1,11 +1,12 @@
 // Packs the session's curves into the flat CurveSet layout (hairArrays.ts): each curve's
 // parameter block is its kind's scalars from curveParams.ts CURVE_PARAMS (by name, in table
-// order, the table's default for a curve without the field), then the kind's variable block.
+// order, the table's default for a curve without the field), as its kind (kinds/) packs them.
 // Also the session's solve options, and the key that tells solve requests apart.
 import { CURVE_PARAMS, CurveKind } from './curveParams';
 import { DETAIL_GROUP_STRIDE, packDetailGroup } from './detail';
 import type { GrowthParams } from './growthParams';
 import type { CurveSet, HairOptions } from './hairArrays';
+import { defOf, extendsPastEnd } from './kinds';
 import type { SessionState, StyleCurve } from './session';
 import { type SessionSettings, settingValues } from './sessionSchema';
 
@@ -24,34 +25,10 @@ export function curveScalars(c: StyleCurve): number[] {
   });
 }
 
-/** The variable block that follows a curve's scalars (hairArrays.ts CurveSet.params). */
-function variableBlock(c: StyleCurve): number[] {
-  switch (c.type) {
-    case 'stream':
-      return [];
-    case 'dividing':
-      return c.normals.flatMap((n) => [n[0], n[1], n[2]]);
-    case 'ponytail':
-      return [c.circles.length, ...c.circles.flatMap((q) => [...q.centre, ...q.axis, q.radius])];
-    case 'braid':
-    case 'bun':
-      return []; // exactly its scalars (solver-cpp/src/curve_params.hpp BraidParam, BunParam)
-  }
-}
-
-/** The parameter block of a curve (hairArrays.ts CurveSet.params). A gathered ponytail (natural
- *  fall: the tail a solid of revolution fed by a funnel, solver-cpp/src/ponytail_constraints.hpp)
- *  carries its gather flag (1) and then its section flag after its tightness; without them the
- *  block is the paper's. */
+/** The parameter block of a curve (hairArrays.ts CurveSet.params): its kind's (kinds/), from its
+ *  scalars; `gather` (the session's natural fall) gathers a ponytail into a round tail. */
 export function curveParams(c: StyleCurve, gather = false): number[] {
-  const scalars = curveScalars(c);
-  if (c.type === 'ponytail') {
-    // solver-cpp/src/curve_params.hpp PonytailParam: [tightness] (the paper's) or [tightness,
-    // gather = 1, section] (gathered)
-    const [tightness, section] = scalars;
-    return [...(gather ? [tightness, 1, section] : [tightness]), ...variableBlock(c)];
-  }
-  return [...scalars, ...variableBlock(c)];
+  return defOf(c).solverParams(c, curveScalars(c), gather);
 }
 
 /** The session's curves as the solver takes them; `fall` (the session's natural fall) gathers
@@ -78,7 +55,7 @@ export function packCurves(
     curveStart[i] = k;
     paramStart[i] = q;
     kinds[i] = CurveKind[c.type];
-    extend[i] = c.type !== 'dividing' && c.extend ? 1 : 0;
+    extend[i] = extendsPastEnd(c) ? 1 : 0;
     for (const p of c.points) {
       points[3 * k] = p[0];
       points[3 * k + 1] = p[1];

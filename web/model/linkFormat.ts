@@ -75,7 +75,6 @@
 
 import { CURVE_KINDS, type CurveKindName } from './curveParams';
 import { GRID_PRESETS, type GridPreset } from './grid';
-import type { StyleCurve } from './session';
 import { SESSION_FIELD_NAMES, SESSION_FIELDS } from './sessionSchema';
 
 /** The link version written (`#s=3.`), and the versions read. */
@@ -125,11 +124,3 @@ export const PART_HEAD = 1;
 export const PART_SCALP_PAINT = 2;
 export const PART_SYMMETRY = 4;
 export const PARTS = PART_HEAD | PART_SCALP_PAINT | PART_SYMMETRY;
-/** A curve's fields with a place in the layout (besides its kind's scalar parameters). */
-export const KNOWN_CURVE: Record<StyleCurve['type'], string[]> = {
-  stream: ['id', 'type', 'points', 'extend', 'viewpoint', 'surfaceMode'],
-  dividing: ['id', 'type', 'points', 'normals', 'viewpoint'],
-  ponytail: ['id', 'type', 'points', 'extend', 'viewpoint', 'crossSection', 'profiles', 'circles'],
-  braid: ['id', 'type', 'points', 'extend', 'viewpoint'],
-  bun: ['id', 'type', 'points', 'extend', 'viewpoint'],
-};

@@ -1,14 +1,13 @@
 // Writes a session as the binary body of a share link (linkFormat.ts has the layout).
 import { curveParamNames, curveParamSpecs, quantumScale } from './curveParams';
 import { DEFAULT_GROWTH, GROWTH_KEYS } from './growthParams';
+import { COMMON_CURVE_FIELDS, defOf, extendsPastEnd } from './kinds';
 import { crc32, Writer, writePolyline, writeVec } from './linkBytes';
 import {
   AXES,
   GRIDS,
-  KNOWN_CURVE,
   KNOWN_TOP,
   LINK_VERSION,
-  MODES,
   PART_HEAD,
   PART_SCALP_PAINT,
   PART_SYMMETRY,
@@ -17,7 +16,7 @@ import {
   V2_KINDS,
   V2_PARAM_COUNTS,
 } from './linkFormat';
-import { DIRECTION_SCALE as DIR, POSITION_SCALE as POS, toGridInt } from './quantize';
+import { POSITION_SCALE as POS, toGridInt } from './quantize';
 import {
   HEAD_FORMATS,
   type HeadRef,
@@ -85,7 +84,8 @@ export function packSession(s: SessionState, version: 2 | 3 = LINK_VERSION): Uin
   w.varint(s.curves.length);
   let prevVp: StyleCurve['viewpoint'] | null = null;
   s.curves.forEach((c, ci) => {
-    const mode = c.type === 'stream' ? MODES.indexOf(c.surfaceMode) : 0;
+    const def = defOf(c);
+    const mode = def.linkMode(c);
     const idNum = /^c([1-9]\d{0,14})$/.exec(c.id);
     const sameVp =
       prevVp !== null &&
@@ -95,7 +95,7 @@ export function packSession(s: SessionState, version: 2 | 3 = LINK_VERSION): Uin
           toGridInt(prevVp.position[a], POS) === toGridInt(c.viewpoint.position[a], POS) &&
           toGridInt(prevVp.target[a], POS) === toGridInt(c.viewpoint.target[a], POS),
       );
-    const extend = c.type !== 'dividing' && c.extend;
+    const extend = extendsPastEnd(c);
     w.u8(
       typeBits(TYPES.indexOf(c.type)) |
         (extend ? 4 : 0) |
@@ -119,31 +119,12 @@ export function packSession(s: SessionState, version: 2 | 3 = LINK_VERSION): Uin
       w.zigzag(toGridInt(rec[spec.name] ?? spec.default, quantumScale(spec)));
     writePolyline(w, c.points, POS);
     const known = [
-      ...KNOWN_CURVE[c.type],
+      ...COMMON_CURVE_FIELDS.slice(0, 4), // id, type, points, viewpoint: detail and mirror go in the tail
+      ...def.fields,
       ...curveParamNames(c.type).slice(0, counts[TYPES.indexOf(c.type)]),
     ];
     const extra = rest(c, known) ?? {};
-    if (c.type === 'stream' && mode < 0) extra.surfaceMode = c.surfaceMode;
-    if (c.type === 'dividing') writePolyline(w, c.normals, DIR);
-    if (c.type === 'ponytail') {
-      writePolyline(w, c.crossSection, POS);
-      writePolyline(w, c.profiles[0], POS);
-      writePolyline(w, c.profiles[1], POS);
-      w.varint(c.circles.length);
-      const prev = [0, 0, 0, 0, 0, 0, 0, 0];
-      for (const q of c.circles) {
-        const now = [
-          toGridInt(q.spineIndex, 1),
-          ...q.centre.map((x) => toGridInt(x, POS)),
-          ...q.axis.map((x) => toGridInt(x, DIR)),
-          toGridInt(q.radius, POS),
-        ];
-        now.forEach((k, i) => {
-          w.zigzag(k - prev[i]);
-          prev[i] = k;
-        });
-      }
-    }
+    def.writeLink(w, c, extra);
     if (Object.keys(extra).length) {
       tail.curves ??= [];
       tail.curves.push([ci, extra]);

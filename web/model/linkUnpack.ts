@@ -2,6 +2,7 @@
 // checking the layout byte by byte; the strict reader (sessionRead.ts) checks the session.
 import { CURVE_PARAMS, curveParamSpecs, quantumScale } from './curveParams';
 import { DEFAULT_GROWTH, GROWTH_KEYS } from './growthParams';
+import { kindDef } from './kinds';
 import { crc32, LinkError, Reader, readPolyline, readVec } from './linkBytes';
 import {
   AXES,
@@ -79,26 +80,9 @@ export function unpackSession(body: Uint8Array, version: 2 | 3 = 3): Record<stri
     for (const spec of curveParamSpecs(type).slice(0, counts[kind]))
       c[spec.name] = r.zigzag() / quantumScale(spec) + 0;
     c.points = readPolyline(r, POS);
-    if (type !== 'dividing') c.extend = (flags & 4) !== 0;
-    if (type === 'stream' && mode) c.surfaceMode = MODES[mode];
-    if (type === 'dividing') c.normals = readPolyline(r, DIR);
-    if (type === 'ponytail') {
-      c.crossSection = readPolyline(r, POS);
-      c.profiles = [readPolyline(r, POS), readPolyline(r, POS)];
-      const m = r.count(8);
-      const prev = [0, 0, 0, 0, 0, 0, 0, 0];
-      const circles = [];
-      for (let i = 0; i < m; i++) {
-        for (let j = 0; j < 8; j++) prev[j] += r.zigzag();
-        circles.push({
-          centre: [prev[1] / POS + 0, prev[2] / POS + 0, prev[3] / POS + 0],
-          axis: [prev[4] / DIR + 0, prev[5] / DIR + 0, prev[6] / DIR + 0],
-          radius: prev[7] / POS + 0,
-          spineIndex: prev[0],
-        });
-      }
-      c.circles = circles;
-    }
+    const def = kindDef(type);
+    if (def?.extends) c.extend = (flags & 4) !== 0;
+    def?.readLink(r, c, mode);
     curves.push(c);
   }
   let avoid: { index: number[]; target: number[] } | null = null;

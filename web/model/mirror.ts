@@ -3,7 +3,7 @@
 // head/symmetryPlane.ts, kept in the session as `symmetry`). The twins name each other in their
 // `mirror` field; an edit of one is made to the other, mirrored, in the same command (one undo
 // step).
-import type { PonytailCircle } from './ponytailGeometry';
+import { defOf } from './kinds';
 import type { StyleCurve, Viewpoint } from './session';
 import type { Vec3 } from './vec3';
 
@@ -30,8 +30,9 @@ export function reflectDirection(v: Vec3, plane: MirrorPlane = X_PLANE): Vec3 {
   return [v[0] - k * n[0] + 0, v[1] - k * n[1] + 0, v[2] - k * n[2] + 0];
 }
 
-/** `c` reflected across the plane, named `id`, its twin `twinId`. Tilts change sign (the
- *  reflection turns the curve's handedness); everything else is kept. */
+/** `c` reflected across the plane, named `id`, its twin `twinId`: its points and viewpoint here,
+ *  its kind's own fields by its kind (kinds/; a parting's tilts change sign, the reflection
+ *  turning its handedness); everything else is kept. */
 export function mirrorCurve(
   c: StyleCurve,
   id: string,
@@ -44,35 +45,14 @@ export function mirrorCurve(
     position: flip(v.position),
     target: flip(v.target),
   });
-  const base = {
+  return {
     ...c,
     id,
     mirror: twinId,
     points: c.points.map(flip),
     viewpoint: flipView(c.viewpoint),
-  };
-  switch (c.type) {
-    case 'stream':
-    case 'braid':
-    case 'bun':
-      return base as StyleCurve;
-    case 'dividing':
-      return {
-        ...(base as typeof c),
-        normals: c.normals.map(flipDir),
-        alpha0: -c.alpha0 + 0,
-        alpha1: -c.alpha1 + 0,
-      };
-    case 'ponytail':
-      return {
-        ...(base as typeof c),
-        crossSection: c.crossSection.map(flip),
-        profiles: [c.profiles[0].map(flip), c.profiles[1].map(flip)],
-        circles: c.circles.map(
-          (q): PonytailCircle => ({ ...q, centre: flip(q.centre), axis: flipDir(q.axis) }),
-        ),
-      };
-  }
+    ...defOf(c).mirror(c, flip, flipDir),
+  } as StyleCurve;
 }
 
 /** True when the curve is its own mirror image (drawn along the plane, e.g. a centre parting):

@@ -21,8 +21,9 @@
 // Every function returns its argument itself when it is already on the grid: quantising an
 // unchanged curve keeps its identity (the solver bridge compares curves by identity).
 import { CURVE_KINDS, curveParamSpecs, quantumScale } from './curveParams';
+import { defOf } from './kinds';
+import type { QuantizeKit } from './kinds/curveKind';
 import type { MirrorPlane } from './mirror';
-import type { PonytailCircle } from './ponytailGeometry';
 import { REFERENCE_RANGES, type ReferenceImage } from './referenceImage';
 import type { ScalpStroke, SessionState, StyleCurve, Viewpoint } from './session';
 import { SETTING_NAMES, type SessionSettings, settingSpec } from './sessionSchema';
@@ -92,18 +93,8 @@ export function quantizeViewpoint(vp: Viewpoint): Viewpoint {
   return position === vp.position && target === vp.target ? vp : { ...vp, position, target };
 }
 
-function quantizeCircle(c: PonytailCircle): PonytailCircle {
-  const centre = qv(c.centre, POSITION_SCALE);
-  const axis = qv(c.axis, DIRECTION_SCALE);
-  const radius = quantize(c.radius, POSITION_SCALE);
-  const spineIndex = quantize(c.spineIndex, 1);
-  return centre === c.centre &&
-    axis === c.axis &&
-    Object.is(radius, c.radius) &&
-    Object.is(spineIndex, c.spineIndex)
-    ? c
-    : { ...c, centre, axis, radius, spineIndex };
-}
+// what a kind's own fields are quantised with (kinds/curveKind.ts)
+const KIT: QuantizeKit = { positions, directions, mapSame, qv, quantize };
 
 /** A curve with every number on the grid and each scalar parameter of its kind present (its
  *  default when missing); the curve itself when already so. */
@@ -121,14 +112,7 @@ export function quantizeCurve<C extends StyleCurve>(c: C): C {
     const v = rec[spec.name];
     set(spec.name, v, typeof v === 'number' ? quantize(v, quantumScale(spec)) : spec.default);
   }
-  if (c.type === 'dividing') set('normals', c.normals, directions(c.normals));
-  if (c.type === 'ponytail') {
-    set('crossSection', c.crossSection, positions(c.crossSection));
-    const p0 = positions(c.profiles[0]);
-    const p1 = positions(c.profiles[1]);
-    if (p0 !== c.profiles[0] || p1 !== c.profiles[1]) patch.profiles = [p0, p1];
-    set('circles', c.circles, mapSame(c.circles, quantizeCircle));
-  }
+  defOf(c).quantize(c, set, KIT);
   return Object.keys(patch).length === 0 ? c : ({ ...c, ...patch } as C);
 }
 

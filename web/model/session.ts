@@ -6,6 +6,7 @@ import type { HairDetail } from './detail';
 import type { DividingSettings } from './dividingFrames';
 import type { GridPreset } from './grid';
 import { DEFAULT_GROWTH, type GrowthParams } from './growthParams';
+import { tieNear } from './kinds';
 import type { MirrorPlane } from './mirror';
 import type { PonytailCircle } from './ponytailGeometry';
 import type { ReferenceImage } from './referenceImage';
@@ -179,9 +180,7 @@ export function tieAtEnd(curves: readonly StyleCurve[], end: Vec3): StyleCurve |
   let best: StyleCurve | null = null;
   let bestD = TIE_REACH;
   for (const c of curves) {
-    if (c.type !== 'ponytail' && c.type !== 'braid' && c.type !== 'bun') continue;
-    const near = c.type === 'bun' ? c.points : c.points.slice(0, 1);
-    for (const p of near) {
+    for (const p of tieNear(c) ?? []) {
       const d = Math.hypot(p[0] - end[0], p[1] - end[1], p[2] - end[2]);
       if (d < bestD) {
         bestD = d;

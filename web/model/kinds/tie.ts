@@ -1,0 +1,36 @@
+// Braids and buns (solver-cpp/src/braid_bun.hpp): a stroke (a braid's spine from the scalp, a
+// bun's loop where it sits) and the kind's scalar parameters, nothing else of their own.
+import { bool } from '../readValues';
+import type { Vec3 } from '../vec3';
+import type { CurveKindDef, CurveOf } from './curveKind';
+
+/** A tie whose curve is its stroke and its scalars; `near`: the points a stream stroke's end must
+ *  come near to run into it. */
+export function plainTie<K extends 'braid' | 'bun'>(
+  name: K,
+  near: (c: CurveOf<K>) => readonly Vec3[],
+): CurveKindDef<K> {
+  return {
+    name,
+    fields: ['extend'],
+    extends: true,
+    tieNear: near,
+    read({ o, path, id, points, viewpoint, scalars, common }) {
+      const extend = bool(o.extend, `${path}.extend`);
+      const vp = viewpoint();
+      return { id, points, extend, viewpoint: vp, ...common, type: name, ...scalars } as CurveOf<K>;
+    },
+    quantize() {},
+    mirror: () => ({}),
+    // exactly its scalars (solver-cpp/src/curve_params.hpp BraidParam, BunParam)
+    solverParams: (_c, scalars) => scalars,
+    linkMode: () => 0,
+    writeLink() {},
+    readLink() {},
+  };
+}
+
+/** A braid: a stroke from the scalp along the braid, scalp to tip. */
+export const BRAID = plainTie('braid', (c) => c.points.slice(0, 1));
+/** A bun: a loop drawn on the head where the bun sits. */
+export const BUN = plainTie('bun', (c) => c.points);
