@@ -1,7 +1,9 @@
 // Every change a user makes to the session, as one typed command, and what each does: a pure
 // function from (session, command) to the next session, the selection after it and a sentence
 // for the status line. The Editor (editor.ts) runs them through one path: history, then notify.
+
 import { detailIsOn, type HairDetail } from '../model/detail';
+import { defOf } from '../model/kinds';
 import { lengthenSession } from '../model/lengthen';
 import {
   isSelfMirror,
@@ -187,8 +189,7 @@ function applyExact(s: SessionState, cmd: Command): CommandResult {
     }
     case 'hintEdit': {
       const c = findCurve(s, cmd.id);
-      if (!c || c.type === 'dividing' || c.type === 'bun')
-        return { session: s, message: `No curve ${cmd.id} to edit.` };
+      if (!c || !defOf(c).surface(c)) return { session: s, message: `No curve ${cmd.id} to edit.` };
       if (c.type === 'ponytail') {
         // the circles follow the edited spine, between the profiles as drawn
         const { circles } = ponytailCircles(
@@ -246,7 +247,7 @@ function applyExact(s: SessionState, cmd: Command): CommandResult {
               message: `${spec.label} must be a number from ${spec.min} to ${spec.max}: nothing changed.`,
             };
           patch[k] = v;
-        } else if (k === 'extend' && c.type !== 'dividing' && typeof v === 'boolean') {
+        } else if (k === 'extend' && defOf(c).extends && typeof v === 'boolean') {
           patch[k] = v;
         }
       }

@@ -18,6 +18,7 @@
 //  - root UV: on a head with its own UVs (a loaded head whose file has them), those UVs at the
 //    closest point of the head to the root (surfaceUv.ts); otherwise the scalp layout
 //    (scalpUv.ts) at the root: the built-in head's UVs, a projection on a loaded head.
+import { defOf } from '../model/kinds';
 import type { SessionState, StyleCurve } from '../model/session';
 import type { StrandArrays } from '../solver/protocol';
 import { scalpUvAt } from './scalpUv';
@@ -56,7 +57,7 @@ export interface GroomLayout {
 type Gathering = 'ponytail' | 'braid' | 'bun';
 
 const isGathering = (c: StyleCurve): c is Extract<StyleCurve, { type: Gathering }> =>
-  c.type === 'ponytail' || c.type === 'braid' || c.type === 'bun';
+  defOf(c).role === 'tie';
 
 interface Parting {
   curve: number;

@@ -5,7 +5,9 @@
 // with it, so the whole style grows (or is cut back) and every rule still holds: the hair ends
 // where its (longer) stroke ends. A fringe (a stroke that ends in front of the face, above the
 // nose) keeps its end: a stylist asked for longer hair does not cut the fringe to the chin.
+
 import { gridForPreset, MAX_HAIR_LENGTH } from './grid';
+import { defOf, extendsPastEnd } from './kinds';
 import { quantizeSession } from './quantize';
 import { DEFAULT_GROWTH, type SessionState, type StyleCurve } from './session';
 import { SESSION_LIMITS } from './sessionFile';
@@ -108,7 +110,7 @@ export function lengthenSession(s: SessionState, by: number): Lengthened {
   if (!Number.isFinite(by) || by === 0) return { session: s, strokes: 0 };
   let strokes = 0;
   const curves = s.curves.map((c): StyleCurve => {
-    if (c.type !== 'stream' || c.extend || c.points.length < 2) return c;
+    if (defOf(c).role !== 'flow' || extendsPastEnd(c) || c.points.length < 2) return c;
     if (endsAsFringe(c.points[c.points.length - 1])) return c;
     const points = by > 0 ? carryOn(c.points, by) : cutBack(c.points, -by);
     if (!points) return c;

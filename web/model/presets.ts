@@ -6,8 +6,10 @@
 // fig8 (two ponytails and eight stream curves that comb each half of the head to its ponytail), fig1 (thirteen stream curves, four dividing curves and one ponytail); and
 // `curly`, the default style with curl, clumps and a little frizz (model/detail.ts); `braid`,
 // `bun` and `pigtail-braids`, the braid and bun curve kinds (solver-cpp/src/braid_bun.hpp).
+
 import type { Head } from '../head/head';
 import type { HairDetail } from './detail';
+import { defOf } from './kinds';
 import { mirrorCurve } from './mirror';
 import { ponytailCircles } from './ponytailGeometry';
 import { quantizeSession } from './quantize';
@@ -531,7 +533,7 @@ export function applyPreset(s: SessionState, name: PresetName, ctx: PresetContex
   const fall = !PAPER_FIGURES.includes(name);
   // sketched curves end where the hair should end: with fall that is what "extend" off means
   const curves = presetCurves(name, ctx).map((c) =>
-    c.type === 'dividing' ? c : { ...c, extend: !fall },
+    defOf(c).extends ? { ...c, extend: !fall } : c,
   );
   // long hair needs a longer maximum than the default's
   const growth =

@@ -3,6 +3,7 @@
 // the panel, world units in the session), plus "Extend past the
 // end" for every curve but dividing ones, and "Braid the tail" for a ponytail. Every change is reported as one edit (the app records it
 // in History).
+import { defOf, extendsPastEnd } from '../model/kinds';
 import type { StyleCurve } from '../model/session';
 import { CURVE_PARAMS, type CurveParamSpec } from '../solver/protocol';
 import { numberInput, type Say } from './numberInput';
@@ -60,11 +61,11 @@ export function buildCurvePanel(
       const title = document.createElement('h2');
       title.textContent = `${curve.type} curve ${curve.id}`;
       panel.append(title);
-      if (curve.type !== 'dividing') {
+      if (defOf(curve).extends) {
         const label = document.createElement('label');
         const box = document.createElement('input');
         box.type = 'checkbox';
-        box.checked = curve.extend;
+        box.checked = extendsPastEnd(curve);
         box.addEventListener('change', () => onChange(curve.id, { extend: box.checked }));
         label.append(box, ' Extend past the end');
         panel.append(label);
@@ -108,5 +109,5 @@ export function buildCurvePanel(
 
 /** What the panel shows of a curve: it is rebuilt when this changes. */
 function paramsOf(c: StyleCurve): unknown {
-  return [c.type === 'dividing' ? null : c.extend, ...specsOf(c).map((s) => paramValue(c, s))];
+  return [extendsPastEnd(c), ...specsOf(c).map((s) => paramValue(c, s))];
 }

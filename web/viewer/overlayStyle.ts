@@ -9,7 +9,9 @@
 // z-fight with it nor vanish into it. Polygon offset would not do: it applies to triangles only.
 // Materials are shared and never disposed: a disposed material releases its shader program, and
 // compiling it again stalls on the GPU (seconds behind a software rasteriser).
+
 import * as THREE from 'three';
+import { kindDef } from '../model/kinds';
 import { shared } from './displayMaterials';
 
 /** What kind of overlay line a colour is for. */
@@ -39,10 +41,13 @@ export const BRUSH_RING_RGB = { paint: OVERLAY_RGB.draft, erase: 0xff3b30 } as c
 /** Colour of a session curve of `type` (selected or not). Unknown types draw as stream curves. */
 export function curveRgb(type: string | undefined, selected: boolean): number {
   if (selected) return OVERLAY_RGB.selected;
-  if (type === 'dividing') return OVERLAY_RGB.dividing;
-  // braids and buns are gathered tails too
-  if (type === 'ponytail' || type === 'braid' || type === 'bun') return OVERLAY_RGB.ponytail;
-  return OVERLAY_RGB.stream;
+  // every tie (ponytail, braid, bun) in the ponytail's colour
+  const role = kindDef(type)?.role;
+  return role === 'parting'
+    ? OVERLAY_RGB.dividing
+    : role === 'tie'
+      ? OVERLAY_RGB.ponytail
+      : OVERLAY_RGB.stream;
 }
 
 /** Opacity of the hidden (behind head or hair) pass. */

@@ -10,6 +10,7 @@ import type { CurveKindName } from '../curveParams';
 import type { Reader, Writer } from '../linkBytes';
 import type { StyleCurve, Viewpoint } from '../session';
 import type { PlainRecord } from '../sessionMigrations';
+import type { SurfaceMode } from '../supportingSurface';
 import type { Vec3 } from '../vec3';
 
 /** The curve of kind K. */
@@ -49,6 +50,12 @@ export interface CurveKindDef<K extends CurveKindName = CurveKindName> {
   /** Its fields besides id, type, points, viewpoint, detail, mirror and its scalar parameters;
    *  each has a place in a share link's layout. */
   readonly fields: readonly string[];
+  /** What it does to the hair: `flow` (the hair follows it and, unless it extends, ends where it
+   *  ends), `parting` (the hair parts along it), `tie` (it gathers hair into a tail). */
+  readonly role: 'flow' | 'parting' | 'tie';
+  /** Its supporting surface's mode (S4.3: hint strokes are lifted onto it); null when it lies on
+   *  the head (a parting, a bun's loop) and has none. */
+  surface(c: CurveOf<K>): SurfaceMode | null;
   /** Whether it has "Extend past the end" (`extend`). */
   readonly extends: boolean;
   /** A tie (it gathers hair: a stream stroke ending near it runs on into it) has this: the

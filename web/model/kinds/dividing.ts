@@ -9,6 +9,8 @@ import type { CurveKindDef } from './curveKind';
 export const DIVIDING: CurveKindDef<'dividing'> = {
   name: 'dividing',
   fields: ['normals'],
+  role: 'parting',
+  surface: () => null,
   extends: false,
   read({ o, path, id, points, viewpoint, scalars, common }) {
     const n = array(o.normals, `${path}.normals`, 'normals');

@@ -67,6 +67,8 @@ function quantizeCircle(c: PonytailCircle, kit: QuantizeKit): PonytailCircle {
 export const PONYTAIL: CurveKindDef<'ponytail'> = {
   name: 'ponytail',
   fields: ['extend', 'crossSection', 'profiles', 'circles'],
+  role: 'tie',
+  surface: () => 'ruled',
   extends: true,
   tieNear: (c) => c.points.slice(0, 1),
   read({ o, path, id, points, viewpoint, scalars, common }) {

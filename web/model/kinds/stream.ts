@@ -7,6 +7,8 @@ import type { CurveKindDef } from './curveKind';
 export const STREAM: CurveKindDef<'stream'> = {
   name: 'stream',
   fields: ['extend', 'surfaceMode'],
+  role: 'flow',
+  surface: (c) => c.surfaceMode ?? 'ruled',
   extends: true,
   read({ o, path, id, points, viewpoint, scalars, common }) {
     const extend = bool(o.extend, `${path}.extend`);

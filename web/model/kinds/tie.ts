@@ -1,17 +1,21 @@
 // Braids and buns (solver-cpp/src/braid_bun.hpp): a stroke (a braid's spine from the scalp, a
 // bun's loop where it sits) and the kind's scalar parameters, nothing else of their own.
 import { bool } from '../readValues';
+import type { SurfaceMode } from '../supportingSurface';
 import type { Vec3 } from '../vec3';
 import type { CurveKindDef, CurveOf } from './curveKind';
 
 /** A tie whose curve is its stroke and its scalars; `near`: the points a stream stroke's end must
- *  come near to run into it. */
+ *  come near to run into it; `surface`: its supporting surface's mode (null: none). */
 export function plainTie<K extends 'braid' | 'bun'>(
   name: K,
   near: (c: CurveOf<K>) => readonly Vec3[],
+  surface: SurfaceMode | null,
 ): CurveKindDef<K> {
   return {
     name,
+    role: 'tie',
+    surface: () => surface,
     fields: ['extend'],
     extends: true,
     tieNear: near,
@@ -30,7 +34,8 @@ export function plainTie<K extends 'braid' | 'bun'>(
   };
 }
 
-/** A braid: a stroke from the scalp along the braid, scalp to tip. */
-export const BRAID = plainTie('braid', (c) => c.points.slice(0, 1));
-/** A bun: a loop drawn on the head where the bun sits. */
-export const BUN = plainTie('bun', (c) => c.points);
+/** A braid: a stroke from the scalp along the braid, scalp to tip (a ruled surface, as a
+ *  ponytail's spine has). */
+export const BRAID = plainTie('braid', (c) => c.points.slice(0, 1), 'ruled');
+/** A bun: a loop drawn on the head where the bun sits (on the head: no supporting surface). */
+export const BUN = plainTie('bun', (c) => c.points, null);
