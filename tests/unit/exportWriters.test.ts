@@ -4,10 +4,19 @@
 import { createRequire } from 'node:module';
 import { describe, expect, it } from 'vitest';
 import { CHUNK_BYTES, formatFloat } from '../../web/export/chunkSink';
+import {
+  EXPORT_FORMAT_IDS,
+  EXPORT_FORMATS,
+  type ExportFormat,
+  exportFileName,
+  exportFormatsWith,
+  exportMenuLabel,
+  extensionsInWords,
+  formatFromFileName,
+} from '../../web/export/formats';
 import { readExportedSession } from '../../web/export/readExport';
 import { strandsForExport } from '../../web/export/strandsForExport';
 import {
-  type ExportFormat,
   type ExportHead,
   type ExportInput,
   MAX_POINTS_PER_STRAND,
@@ -15,7 +24,7 @@ import {
   TIP_WIDTH,
 } from '../../web/export/types';
 import { usdQuote } from '../../web/export/usdWriter';
-import { formatFromFileName, writeExport } from '../../web/export/writeExport';
+import { writeExport } from '../../web/export/writeExport';
 import { emptySession, type SessionState } from '../../web/model/session';
 import type { StrandArrays } from '../../web/solver/protocol';
 
@@ -232,6 +241,29 @@ describe('formatFloat and file names', () => {
     expect(formatFromFileName('x.usd')).toBeNull();
     expect(formatFromFileName('x.gltf')).toBeNull();
     expect(formatFromFileName('usda')).toBeNull();
+  });
+
+  it('names each format as the menu, the downloads and the CLI always have', () => {
+    const row = (f: ExportFormat) => {
+      const x = EXPORT_FORMATS[f];
+      return [exportMenuLabel(f), exportFileName(f), x.mime, x.headByDefault, x.statusName];
+    };
+    expect(EXPORT_FORMAT_IDS.map(row)).toEqual([
+      ['USD (.usda)', 'hairstyle.usda', 'text/plain', true, 'USD'],
+      ['Cem Yuksel (.hair)', 'hairstyle.hair', 'application/octet-stream', false, '.hair'],
+      ['OBJ (.obj)', 'hairstyle.obj', 'text/plain', false, 'OBJ'],
+      ['glTF (.glb)', 'hairstyle.glb', 'model/gltf-binary', true, 'glTF'],
+      ['Hair cards (.glb)', 'hairstyle-cards.glb', 'model/gltf-binary', true, 'hair cards'],
+    ]);
+    expect(extensionsInWords(exportFormatsWith('byExtension'))).toBe('.usda, .hair, .obj or .glb');
+  });
+
+  it('carries the session in exactly the formats that say so (read back by readExportedSession)', () => {
+    const inp = input(false);
+    for (const f of EXPORT_FORMAT_IDS) {
+      const back = readExportedSession(collect(f, inp).bytes);
+      expect(back?.ok ?? false, f).toBe(EXPORT_FORMATS[f].carriesSession);
+    }
   });
 
   it('quotes USD strings as Sdf does', () => {

@@ -4,8 +4,9 @@
 
 import type { Editor } from '../editor/editor';
 import type { FromExportWorker } from '../export/exportProtocol';
+import { EXPORT_FORMATS, type ExportFormat, exportFileName } from '../export/formats';
 import type { UvSurface } from '../export/surfaceUv';
-import { EXPORT_FILE_NAMES, type ExportFormat, type ExportHead } from '../export/types';
+import type { ExportHead } from '../export/types';
 import type { GroomSummary } from '../export/usdWriter';
 import { gridForSession } from '../model/grid';
 import { hangLength } from '../model/session';
@@ -38,14 +39,6 @@ export interface ExportOutcome {
   ms: number;
 }
 
-const LABEL: Record<ExportFormat, string> = {
-  usda: 'USD',
-  hair: '.hair',
-  obj: 'OBJ',
-  glb: 'glTF',
-  cards: 'hair cards',
-};
-
 export class Exporter {
   private running: Worker | null = null;
   private abort: ((e: Error) => void) | null = null;
@@ -75,18 +68,19 @@ export class Exporter {
       return null;
     }
     const t0 = performance.now();
+    const spec = EXPORT_FORMATS[format];
     if (this.d.solving()) {
-      this.d.progress(`Export ${LABEL[format]}: waiting for the solve to finish…`);
+      this.d.progress(`Export ${spec.statusName}: waiting for the solve to finish…`);
       await this.d.solveSettled();
     }
     const worker =
       this.d.makeWorker?.() ??
       new Worker(new URL('../export/exportWorker.ts', import.meta.url), { type: 'module' });
     this.running = worker;
-    const name = EXPORT_FILE_NAMES[format];
+    const name = exportFileName(format);
     const chunks: Uint8Array[] = [];
     // the USD groom's root UVs read from a loaded head's own UVs
-    const headUv = format === 'usda' ? this.d.headUv?.() : null;
+    const headUv = spec.readsHeadUv ? this.d.headUv?.() : null;
     try {
       const done = await new Promise<Extract<FromExportWorker, { type: 'done' }>>(
         (resolve, reject) => {
@@ -134,11 +128,11 @@ export class Exporter {
             scalp: this.d.scalp(),
             head: withHead ? this.d.head() : null,
             ...(headUv ? { headUv } : {}),
-            ...(format === 'cards' && cards !== undefined ? { cards } : {}),
+            ...(spec.takesCardCount && cards !== undefined ? { cards } : {}),
           });
         },
       );
-      download(new Blob(chunks as BlobPart[], { type: mimeOf(format) }), name);
+      download(new Blob(chunks as BlobPart[], { type: spec.mime }), name);
       const ms = performance.now() - t0;
       this.d.done(
         `Exported ${name} (${done.strands.toLocaleString('en-US')} strands, ${formatBytes(done.bytes)}, ${(ms / 1000).toFixed(1)} s)${done.groom ? `; ${groomNote(done.groom)}` : ''}.`,
@@ -146,7 +140,7 @@ export class Exporter {
       return { name, bytes: done.bytes, strands: done.strands, ms };
     } catch (e) {
       this.d.failed(
-        `Export ${LABEL[format]} failed: ${e instanceof Error ? e.message : String(e)}. Your session is unchanged.`,
+        `Export ${spec.statusName} failed: ${e instanceof Error ? e.message : String(e)}. Your session is unchanged.`,
       );
       return null;
     } finally {
@@ -164,14 +158,6 @@ export function download(blob: Blob, name: string): void {
   a.download = name;
   a.click();
   setTimeout(() => URL.revokeObjectURL(a.href), 30_000);
-}
-
-function mimeOf(f: ExportFormat): string {
-  return f === 'glb' || f === 'cards'
-    ? 'model/gltf-binary'
-    : f === 'obj' || f === 'usda'
-      ? 'text/plain'
-      : 'application/octet-stream';
 }
 
 /** The USD groom in the status line: groups, guides, and where the root UVs come from. */

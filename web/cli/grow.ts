@@ -1,7 +1,7 @@
 // `hairsketch grow`: a saved session (or a share link, or an export that carries one) to a hair
 // file, through the same pipeline as the app's export (export/growSession.ts, then
 // export/writeExport.ts), so the same session gives the same file.
-//   hairsketch grow SESSION --out FILE [--format usda|hair|obj|glb|cards] [--grid 25k|50k|100k|250k]
+//   hairsketch grow SESSION --out FILE [--format FORMAT (export/formats.ts)] [--grid 25k|50k|100k|250k]
 //                   [--solver fast|exact] [--strands N] [--cards N] [--with-head|--no-head] [--head FILE]
 // The head is the session's (cli/head.ts): the built-in one, or a loaded head's file embedded in
 // the session file or given with --head FILE (OBJ, glTF/GLB, PLY, STL).
@@ -18,11 +18,20 @@ import {
 } from 'node:fs';
 import { basename, dirname, join, resolve } from 'node:path';
 import { cardCountProblem } from '../export/cardCount';
+import {
+  EXPORT_FORMAT_IDS,
+  EXPORT_FORMATS,
+  type ExportFormat,
+  exportFormatsWith,
+  extensionsInWords,
+  formatFromFileName,
+  isExportFormat,
+} from '../export/formats';
 import { growSessionHair } from '../export/growSession';
 import { readExportedSession } from '../export/readExport';
 import { exportedCounts } from '../export/strandsForExport';
-import { EXPORT_FORMATS, type ExportFormat, type ExportHead } from '../export/types';
-import { formatFromFileName, writeExport } from '../export/writeExport';
+import type { ExportHead } from '../export/types';
+import { writeExport } from '../export/writeExport';
 import { GRID_PRESETS, type GridPreset, gridForSession, isGridPreset } from '../model/grid';
 import { hangLength, type SessionState } from '../model/session';
 import { type HeadFileData, readSessionFile } from '../model/sessionFile';
@@ -32,8 +41,9 @@ import { type LoadOptions, loadSolverEngine } from '../solver/wasmEngine';
 import { CliError, parseSeconds } from './errors';
 import { headForGrow } from './head';
 
-export const GROW_USAGE =
-  'usage: hairsketch grow SESSION --out FILE [--format usda|hair|obj|glb|cards] [--grid 25k|50k|100k|250k] [--solver fast|exact] [--strands N] [--cards N] [--with-head|--no-head] [--head FILE] [--max-seconds N] [--progress-seconds N]';
+const formatList = EXPORT_FORMAT_IDS.join('|');
+
+export const GROW_USAGE = `usage: hairsketch grow SESSION --out FILE [--format ${formatList}] [--grid 25k|50k|100k|250k] [--solver fast|exact] [--strands N] [--cards N] [--with-head|--no-head] [--head FILE] [--max-seconds N] [--progress-seconds N]`;
 
 const GROW_SOLVERS = ['fast', 'exact'] as const;
 type GrowSolver = (typeof GROW_SOLVERS)[number];
@@ -126,14 +136,13 @@ export function parseGrowArgs(argv: readonly string[]): GrowArgs {
   if (!out) throw new CliError(`no --out FILE given; ${GROW_USAGE}`);
   let fmt: ExportFormat | null;
   if (format !== null) {
-    fmt = (EXPORT_FORMATS as readonly string[]).includes(format) ? (format as ExportFormat) : null;
-    if (!fmt)
-      throw new CliError(`unknown format "${format}" (--format ${EXPORT_FORMATS.join('|')})`);
+    fmt = isExportFormat(format) ? format : null;
+    if (!fmt) throw new CliError(`unknown format "${format}" (--format ${formatList})`);
   } else {
     fmt = formatFromFileName(out);
     if (!fmt)
       throw new CliError(
-        `cannot tell the format from the extension of "${basename(out)}": name it .usda, .hair, .obj or .glb, or give --format ${EXPORT_FORMATS.join('|')}`,
+        `cannot tell the format from the extension of "${basename(out)}": name it ${extensionsInWords(exportFormatsWith('byExtension'))}, or give --format ${formatList}`,
       );
   }
   if (grid !== null && !isGridPreset(grid))
@@ -153,7 +162,8 @@ export function parseGrowArgs(argv: readonly string[]): GrowArgs {
     cardCount = /^[0-9]{1,7}$/.test(cards) ? Number(cards) : Number.NaN;
     const problem = cardCountProblem(cardCount);
     if (problem) throw new CliError(`--cards: ${problem.replace(/got .*$/, `got "${cards}"`)}`);
-    if (fmt !== 'cards') throw new CliError('--cards needs --format cards');
+    if (!EXPORT_FORMATS[fmt].takesCardCount)
+      throw new CliError(`--cards needs --format ${exportFormatsWith('takesCardCount').join('|')}`);
   }
   return {
     session,
@@ -163,7 +173,7 @@ export function parseGrowArgs(argv: readonly string[]): GrowArgs {
     grid: grid as GridPreset | null,
     solver: solver as GrowSolver,
     strands: n,
-    head: head ?? (fmt === 'usda' || fmt === 'glb' || fmt === 'cards'),
+    head: head ?? EXPORT_FORMATS[fmt].headByDefault,
     headFile,
     maxSeconds,
     progressSeconds,
@@ -218,7 +228,9 @@ export async function readSessionArg(
     try {
       data = JSON.parse(new TextDecoder().decode(bytes));
     } catch {
-      throw new CliError(`session ${arg} is not JSON (nor an exported .usda or .glb)`);
+      throw new CliError(
+        `session ${arg} is not JSON (nor an exported ${extensionsInWords(exportFormatsWith('carriesSession'))})`,
+      );
     }
   }
   const parsed = await readSessionFile(data);

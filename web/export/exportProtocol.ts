@@ -3,8 +3,9 @@
 // chunks (transferred), so a 100K-strand export never blocks the page or builds one giant string.
 import type { SessionState } from '../model/session';
 import type { GridSpec, ScalpMesh, SolverErrorKind, SolverName } from '../solver/protocol';
+import type { ExportFormat } from './formats';
 import type { UvSurface } from './surfaceUv';
-import type { ExportFormat, ExportHead } from './types';
+import type { ExportHead } from './types';
 import type { GroomSummary } from './usdWriter';
 
 export interface ExportRequest {

@@ -1,23 +1,11 @@
-// The hair export's shared contract: formats, what a writer is given, and how files come out
-// (in chunks, so 100K strands never make one giant string). The same code runs in the browser's
-// export worker and in `hairsketch grow` under Node, so the same session gives the same bytes.
+// The hair export's shared contract: what a writer is given, and how files come out (in chunks,
+// so 100K strands never make one giant string; the formats are in formats.ts). The same code runs
+// in the browser's export worker and in `hairsketch grow` under Node, so the same session gives
+// the same bytes.
 import type { SessionState } from '../model/session';
 import type { StrandArrays } from '../solver/protocol';
 import type { UvSurface } from './surfaceUv';
 import type { GroomSummary } from './usdWriter';
-
-export type ExportFormat = 'usda' | 'hair' | 'obj' | 'glb' | 'cards';
-
-export const EXPORT_FORMATS: readonly ExportFormat[] = ['usda', 'hair', 'obj', 'glb', 'cards'];
-
-/** File name of each format's download (`hairstyle.usda`, …). */
-export const EXPORT_FILE_NAMES: Readonly<Record<ExportFormat, string>> = {
-  usda: 'hairstyle.usda',
-  hair: 'hairstyle.hair',
-  obj: 'hairstyle.obj',
-  glb: 'hairstyle.glb',
-  cards: 'hairstyle-cards.glb',
-};
 
 /** Unreal's groom importer keeps at most this many points per strand. */
 export const MAX_POINTS_PER_STRAND = 255;

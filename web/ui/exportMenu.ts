@@ -1,14 +1,18 @@
-// The "Export" menu: one item per file format (exact accessible names, the test contract relies
-// on them), "Include head" (indeterminate = each format's default: with USD and glTF, without
-// OBJ; a .hair file has no meshes), "Transparent background" for the PNG and "Card count" for the
-// hair cards.
+// The "Export" menu: one item per file format (export/formats.ts: label, tooltip, whether it
+// includes the head by default) and the PNG image, "Include head" (indeterminate = each format's
+// default), "Transparent background" for the PNG and "Card count" for the hair cards.
 import {
   CARD_COUNT_MAX,
   CARD_COUNT_MIN,
   cardCountProblem,
   DEFAULT_CARD_COUNT,
 } from '../export/cardCount';
-import type { ExportFormat } from '../export/types';
+import {
+  EXPORT_FORMAT_IDS,
+  EXPORT_FORMATS,
+  type ExportFormat,
+  exportMenuLabel,
+} from '../export/formats';
 
 export interface ExportMenuActions {
   exportFile(format: ExportFormat, withHead: boolean): void;
@@ -27,36 +31,6 @@ export interface ExportMenu {
   close(): void;
 }
 
-const ITEMS: ReadonlyArray<{ label: string; format: ExportFormat | 'png'; title: string }> = [
-  {
-    label: 'USD (.usda)',
-    format: 'usda',
-    title: 'Blender, Houdini, Unreal (via Blender → Alembic)',
-  },
-  { label: 'Cem Yuksel (.hair)', format: 'hair', title: 'Research and offline hair renderers' },
-  { label: 'OBJ (.obj)', format: 'obj', title: 'Lines, one per strand: opens almost anywhere' },
-  {
-    label: 'glTF (.glb)',
-    format: 'glb',
-    title: 'Lines with colour and width: web viewers, Blender',
-  },
-  {
-    label: 'Hair cards (.glb)',
-    format: 'cards',
-    title: 'Textured cards for game engines: the count is set below',
-  },
-  { label: 'PNG image', format: 'png', title: 'The current view at twice the canvas resolution' },
-];
-
-/** Whether a format includes the head when the user has not said (the checkbox indeterminate). */
-export const HEAD_BY_DEFAULT: Readonly<Record<ExportFormat, boolean>> = {
-  usda: true,
-  glb: true,
-  obj: false,
-  hair: false,
-  cards: true,
-};
-
 export function buildExportMenu(anchor: HTMLElement, actions: ExportMenuActions): ExportMenu {
   const menu = document.createElement('div');
   menu.className = 'export-menu';
@@ -72,23 +46,28 @@ export function buildExportMenu(anchor: HTMLElement, actions: ExportMenuActions)
   const close = () => {
     menu.hidden = true;
   };
-  for (const item of ITEMS) {
+  const item = (label: string, title: string, onClick: () => void) => {
     const b = document.createElement('button');
     b.type = 'button';
     b.setAttribute('role', 'menuitem');
-    b.textContent = item.label;
-    b.title = item.title;
+    b.textContent = label;
+    b.title = title;
     b.addEventListener('click', () => {
       close();
-      if (item.format === 'png') actions.exportPng(transparent.input.checked);
-      else
-        actions.exportFile(
-          item.format,
-          head.input.indeterminate ? HEAD_BY_DEFAULT[item.format] : head.input.checked,
-        );
+      onClick();
     });
     menu.append(b);
+  };
+  for (const format of EXPORT_FORMAT_IDS) {
+    const f = EXPORT_FORMATS[format];
+    item(exportMenuLabel(format), f.menuTitle, () =>
+      actions.exportFile(format, head.input.indeterminate ? f.headByDefault : head.input.checked),
+    );
   }
+  // the PNG is drawn by the viewer: not an export format
+  item('PNG image', 'The current view at twice the canvas resolution', () =>
+    actions.exportPng(transparent.input.checked),
+  );
   menu.append(
     head.label,
     transparent.label,
