@@ -4,10 +4,10 @@
 // (docs/export.md, "File layouts"). Numbers with 6 significant digits (formatFloat); the text
 // comes out in chunks of at most CHUNK_BYTES.
 import { formatFloat, type Progress, TextSink } from './chunkSink';
-import { groomLayout, HEAD_CENTER } from './groomLayout';
+import { type GroomLayout, groomLayout, HEAD_CENTER } from './groomLayout';
 import { scalpUvs } from './scalpUv';
 import type { ExportStrands } from './strandsForExport';
-import { type ExportInput, METERS_PER_UNIT, ROOT_WIDTH, TIP_WIDTH } from './types';
+import { type ExportHead, type ExportInput, METERS_PER_UNIT, ROOT_WIDTH, TIP_WIDTH } from './types';
 
 /** Strands written per batch (one progress report and one drain per batch). */
 const BATCH = 2048;
@@ -101,19 +101,22 @@ export interface GroomSummary {
 /** Indents: a prim's properties, and the lines of a long array. */
 const IN = '            ';
 const PAD = '                ';
+/** Head triangles or vertices written per batch. */
+const HEAD_ROWS = 8192;
 
+/** The text of one .usda being written, and its progress (in numbers written). */
+interface UsdOut {
+  text: TextSink;
+  tick(numbers: number): void;
+}
+
+/** The layer header (the session in customLayerData), the groom, the head when there is one. */
 export function* writeUsda(
   strands: ExportStrands,
   input: ExportInput,
   progress: Progress,
 ): Generator<Uint8Array> {
-  const out = new TextSink();
-  const { points, strandStart, widths, colors } = strands;
-  const nStrands = strandStart.length - 1;
-  const nPoints = widths.length;
   const head = input.head;
-  const headVerts = head ? head.positions.length / 3 : 0;
-  const headTris = head ? head.indices.length / 3 : 0;
   const builtinHead = input.session.head === 'builtin';
   // the built-in head's UVs are the scalp layout itself
   const groom = groomLayout(
@@ -122,285 +125,346 @@ export function* writeUsda(
     input.session,
     builtinHead ? null : (input.headUv ?? null),
   );
-  const nGuides = groom.guides.length;
-  let guidePoints = 0;
-  for (const g of groom.guides) guidePoints += strandStart[g + 1] - strandStart[g];
-  // a loaded head's own UVs on its Mesh (per corner), the map its roots' UVs are read from
+  const headCornerUvs = headMeshUvs(input, groom);
+  input.onGroom?.(groomSummary(strands, groom, builtinHead));
+  const total = numbersToWrite(strands, groom, head, builtinHead, headCornerUvs);
+  let done = 0;
+  const out: UsdOut = {
+    text: new TextSink(),
+    tick: (n) => {
+      done += n;
+      progress.at(done / total);
+    },
+  };
+
+  writeLayerHeader(out.text, input.session);
+  out.text.write('def Xform "hairsketch"\n{\n');
+  yield* writeGroom(out, strands, groom);
+  if (head) yield* writeHeadMesh(out, head, builtinHead, headCornerUvs);
+  out.text.write('}\n');
+  yield* out.text.end();
+  progress.at(1);
+}
+
+/** A loaded head's own UVs on its Mesh (per corner), the map its roots' UVs are read from; null
+ *  for the built-in head, no head, or a head whose UVs the roots do not use. */
+function headMeshUvs(input: ExportInput, groom: GroomLayout): Float32Array | null {
+  const head = input.head;
   const headCornerUvs =
-    head && !builtinHead && groom.rootUvFrom === 'head-uv' && input.headUv
+    head && input.session.head !== 'builtin' && groom.rootUvFrom === 'head-uv' && input.headUv
       ? input.headUv.cornerUvs
       : null;
-  if (headCornerUvs && headCornerUvs.length !== 2 * headTris * 3)
+  if (head && headCornerUvs && headCornerUvs.length !== 2 * head.indices.length)
     throw new Error("the head's UVs do not match its triangles");
-  input.onGroom?.({
-    strands: nStrands,
-    guides: nGuides,
+  return headCornerUvs;
+}
+
+function groomSummary(strands: ExportStrands, groom: GroomLayout, builtinHead: boolean) {
+  return {
+    strands: strands.strandStart.length - 1,
+    guides: groom.guides.length,
     groups: groom.groupNames,
     rootUv: builtinHead
       ? 'builtin-head'
       : groom.rootUvFrom === 'head-uv'
         ? 'head-uv'
         : 'projection',
-  });
-  // Progress in numbers written: per strand 16, per point 7 (strands and guides), the head.
-  const total =
+  } satisfies GroomSummary;
+}
+
+/** Progress in numbers written: per strand 16, per point 7 (strands and guides), the head. */
+function numbersToWrite(
+  strands: ExportStrands,
+  groom: GroomLayout,
+  head: ExportHead | null,
+  builtinHead: boolean,
+  headCornerUvs: Float32Array | null,
+): number {
+  const { strandStart, widths } = strands;
+  const nStrands = strandStart.length - 1;
+  const nGuides = groom.guides.length;
+  let guidePoints = 0;
+  for (const g of groom.guides) guidePoints += strandStart[g + 1] - strandStart[g];
+  const headVerts = head ? head.positions.length / 3 : 0;
+  const headTris = head ? head.indices.length / 3 : 0;
+  return (
     16 * (nStrands + nGuides) +
-    7 * (nPoints + guidePoints) +
+    7 * (widths.length + guidePoints) +
     (head
       ? headTris * 4 +
         headVerts * (head.normals ? 6 : 3) +
         (builtinHead ? 2 * headVerts : 0) +
         (headCornerUvs ? 6 * headTris : 0)
       : 0) +
-    1;
-  let done = 0;
-  const tick = (n: number) => {
-    done += n;
-    progress.at(done / total);
-  };
+    1
+  );
+}
 
-  /** `decl = [items]` with `perItem(i)` for i < n, BATCH items per drain; one item per line
-   *  when `lines`. */
-  function* list(
-    decl: string,
-    n: number,
-    perItem: (i: number) => string,
-    weight: (i0: number, i1: number) => number,
-    interpolation: string | null,
-    lines = false,
-  ): Generator<Uint8Array> {
-    out.write(`${IN}${decl} = [`);
-    for (let i0 = 0; i0 < n; i0 += BATCH) {
-      const i1 = Math.min(n, i0 + BATCH);
-      const parts: string[] = [];
-      for (let i = i0; i < i1; i++) parts.push(perItem(i));
-      if (lines) out.write(`\n${PAD}${parts.join(`,\n${PAD}`)}${i1 < n ? ',' : ''}`);
-      else out.write(i0 > 0 ? `, ${parts.join(', ')}` : parts.join(', '));
-      tick(weight(i0, i1));
-      yield* out.drain();
-    }
-    out.write(lines && n > 0 ? `\n${IN}]` : ']');
-    out.write(interpolation ? ` (\n${PAD}interpolation = "${interpolation}"\n${IN})\n` : '\n');
-  }
+function writeLayerHeader(text: TextSink, session: ExportInput['session']): void {
+  text.write('#usda 1.0\n(\n    customLayerData = {\n');
+  text.write(`        string ${usdQuote(USD_SESSION_KEY)} = `);
+  text.write(usdQuote(JSON.stringify(session)));
+  text.write('\n    }\n');
+  text.write('    defaultPrim = "hairsketch"\n');
+  text.write(`    metersPerUnit = ${formatFloat(METERS_PER_UNIT)}\n`);
+  text.write('    upAxis = "Y"\n)\n\n');
+}
 
-  function* curves(prim: CurvesPrim): Generator<Uint8Array> {
-    const order = prim.order;
-    const n = order.length;
-    const pointsOf = (i0: number, i1: number) => {
-      let c = 0;
-      for (let i = i0; i < i1; i++) c += strandStart[order[i] + 1] - strandStart[order[i]];
-      return c;
-    };
-    const perPoint = (s: number, f: (p: number) => string) => {
-      const parts: string[] = [];
-      for (let p = strandStart[s]; p < strandStart[s + 1]; p++) parts.push(f(p));
-      return parts.join(', ');
-    };
-    out.write(`\n        def BasisCurves "${prim.name}"\n        {\n`);
-    out.write(`${IN}uniform token type = "linear"\n`);
-    out.write(`${IN}uniform token wrap = "nonperiodic"\n`);
-    yield* list(
-      'int[] curveVertexCounts',
-      n,
-      (i) => String(strandStart[order[i] + 1] - strandStart[order[i]]),
-      (i0, i1) => i1 - i0,
-      null,
-    );
-    yield* list(
-      'point3f[] points',
-      n,
-      (i) => perPoint(order[i], (p) => vec3(points, 3 * p)),
-      (i0, i1) => 3 * pointsOf(i0, i1),
-      null,
-      true,
-    );
-    yield* list(
-      'float[] widths',
-      n,
-      (i) => perPoint(order[i], (p) => formatFloat(widths[p])),
-      pointsOf,
-      'vertex',
-      true,
-    );
-    // Extent: the points' bounds padded by half the widest strand (as UsdGeomCurves::ComputeExtent).
-    const box = boundsOf(points, strandStart, order);
-    const pad = box ? Math.max(ROOT_WIDTH, TIP_WIDTH) / 2 : 0;
-    const lo = (box ? box[0] : [0, 0, 0]).map((v) => v - pad);
-    const hi = (box ? box[1] : [0, 0, 0]).map((v) => v + pad);
-    out.write(`${IN}float3[] extent = [${vec3(lo, 0)}, ${vec3(hi, 0)}]\n`);
-    yield* list(
-      'color3f[] primvars:displayColor',
-      n,
-      (i) => vec3(colors, 3 * order[i]),
-      (i0, i1) => 3 * (i1 - i0),
-      'uniform',
-    );
-    // Unreal's groom attributes (groom_* primvars: int, float, float2, float3, string; uniform
-    // per strand, vertex per point), and Blender's root-UV attribute.
-    yield* list(
-      'int[] primvars:groom_guide',
-      n,
-      () => String(prim.guide),
-      (a, b) => b - a,
-      'uniform',
-    );
-    yield* list(
-      'int[] primvars:groom_id',
-      n,
-      (i) => String(groom.ids[order[i]]),
-      (a, b) => b - a,
-      'uniform',
-    );
-    yield* list(
-      'int[] primvars:groom_group_id',
-      n,
-      (i) => String(groom.groupOf[order[i]]),
-      (a, b) => b - a,
-      'uniform',
-    );
-    yield* list(
-      'string[] primvars:groom_group_name',
-      n,
-      (i) => usdQuote(groom.groupNames[groom.groupOf[order[i]]]),
-      (a, b) => b - a,
-      'uniform',
-    );
-    const uv = (i: number) =>
-      `(${formatFloat(groom.rootUv[2 * order[i]])}, ${formatFloat(groom.rootUv[2 * order[i] + 1])})`;
-    yield* list('float2[] primvars:groom_root_uv', n, uv, (a, b) => 2 * (b - a), 'uniform');
-    yield* list('float2[] primvars:surface_uv_coordinate', n, uv, (a, b) => 2 * (b - a), 'uniform');
-    yield* list(
-      'float3[] primvars:groom_color',
-      n,
-      (i) => {
-        const c = vec3(colors, 3 * order[i]);
-        return perPoint(order[i], () => c);
-      },
-      (i0, i1) => 3 * pointsOf(i0, i1),
-      'vertex',
-      true,
-    );
-    if (!prim.guide) {
-      // guide ids are integers below 2^24: exact as floats, written in full
-      const triple = (a: Float32Array, i: number, f: (x: number) => string) =>
-        `(${f(a[3 * order[i]])}, ${f(a[3 * order[i] + 1])}, ${f(a[3 * order[i] + 2])})`;
-      yield* list(
-        'float3[] primvars:groom_closest_guides',
-        n,
-        (i) => triple(groom.closestGuides, i, String),
-        (a, b) => 3 * (b - a),
-        'uniform',
-      );
-      yield* list(
-        'float3[] primvars:groom_guide_weights',
-        n,
-        (i) => triple(groom.guideWeights, i, formatFloat),
-        (a, b) => 3 * (b - a),
-        'uniform',
-      );
-    }
-    out.write('        }\n');
-  }
-
-  out.write('#usda 1.0\n(\n    customLayerData = {\n');
-  out.write(`        string ${usdQuote(USD_SESSION_KEY)} = `);
-  out.write(usdQuote(JSON.stringify(input.session)));
-  out.write('\n    }\n');
-  out.write('    defaultPrim = "hairsketch"\n');
-  out.write(`    metersPerUnit = ${formatFloat(METERS_PER_UNIT)}\n`);
-  out.write('    upAxis = "Y"\n)\n\n');
-  out.write('def Xform "hairsketch"\n{\n');
-
-  // The groom: Unreal takes an Xform with GroomAPI and every BasisCurves under it as one groom.
-  out.write('    def Xform "groom" (\n        prepend apiSchemas = ["GroomAPI"]\n    )\n    {');
+/** The groom: Unreal takes an Xform with GroomAPI and every BasisCurves under it as one groom. */
+function* writeGroom(
+  out: UsdOut,
+  strands: ExportStrands,
+  groom: GroomLayout,
+): Generator<Uint8Array> {
+  const nStrands = strands.strandStart.length - 1;
+  out.text.write(
+    '    def Xform "groom" (\n        prepend apiSchemas = ["GroomAPI"]\n    )\n    {',
+  );
   const all = new Uint32Array(nStrands);
   for (let s = 0; s < nStrands; s++) all[s] = s;
-  yield* curves({ name: 'hair', order: all, guide: 0 });
-  yield* curves({ name: 'guides', order: groom.guides, guide: 1 });
-  out.write('    }\n');
+  yield* writeCurves(out, strands, groom, { name: 'hair', order: all, guide: 0 });
+  yield* writeCurves(out, strands, groom, { name: 'guides', order: groom.guides, guide: 1 });
+  out.text.write('    }\n');
+}
 
-  // The head.
-  if (head) {
-    out.write('\n    def Mesh "head"\n    {\n');
-    const [hlo, hhi] = extentOf(head.positions);
-    out.write(`        float3[] extent = [${vec3(hlo, 0)}, ${vec3(hhi, 0)}]\n`);
-    out.write('        int[] faceVertexCounts = [');
-    const ROWS = 8192;
-    for (let t0 = 0; t0 < headTris; t0 += ROWS) {
-      const t1 = Math.min(headTris, t0 + ROWS);
-      out.write((t0 > 0 ? ', ' : '') + new Array(t1 - t0).fill('3').join(', '));
-      tick(t1 - t0);
-    }
-    out.write(']\n        int[] faceVertexIndices = [');
-    for (let t0 = 0; t0 < headTris; t0 += ROWS) {
-      const t1 = Math.min(headTris, t0 + ROWS);
-      const parts: string[] = [];
-      for (let i = 3 * t0; i < 3 * t1; i++) parts.push(String(head.indices[i]));
-      out.write((t0 > 0 ? ', ' : '') + parts.join(', '));
-      tick(3 * (t1 - t0));
-      yield* out.drain();
-    }
-    out.write(']\n');
-    out.write('        uniform token orientation = "rightHanded"\n');
-    out.write('        point3f[] points = [');
-    for (let v0 = 0; v0 < headVerts; v0 += ROWS) {
-      const v1 = Math.min(headVerts, v0 + ROWS);
-      const parts: string[] = [];
-      for (let v = v0; v < v1; v++) parts.push(vec3(head.positions, 3 * v));
-      out.write((v0 > 0 ? ', ' : '') + parts.join(', '));
-      tick(3 * (v1 - v0));
-      yield* out.drain();
-    }
-    out.write(']\n');
-    const normals = head.normals;
-    if (normals) {
-      out.write('        normal3f[] primvars:normals = [');
-      for (let v0 = 0; v0 < headVerts; v0 += ROWS) {
-        const v1 = Math.min(headVerts, v0 + ROWS);
-        const parts: string[] = [];
-        for (let v = v0; v < v1; v++) parts.push(vec3(normals, 3 * v));
-        out.write((v0 > 0 ? ', ' : '') + parts.join(', '));
-        tick(3 * (v1 - v0));
-        yield* out.drain();
-      }
-      out.write('] (\n            interpolation = "vertex"\n        )\n');
-    }
-    if (builtinHead) {
-      // the built-in head's UV layout (scalpUv.ts): the one the roots' UVs are in
-      const uv = scalpUvs(head.positions, HEAD_CENTER);
-      out.write('        texCoord2f[] primvars:st = [');
-      for (let v0 = 0; v0 < headVerts; v0 += ROWS) {
-        const v1 = Math.min(headVerts, v0 + ROWS);
-        const parts: string[] = [];
-        for (let v = v0; v < v1; v++)
-          parts.push(`(${formatFloat(uv[2 * v])}, ${formatFloat(uv[2 * v + 1])})`);
-        out.write((v0 > 0 ? ', ' : '') + parts.join(', '));
-        tick(2 * (v1 - v0));
-        yield* out.drain();
-      }
-      out.write('] (\n            interpolation = "vertex"\n        )\n');
-    } else if (headCornerUvs) {
-      // the file's UVs as they are (unwrapped), one per face corner: seams stay seams
-      out.write('        texCoord2f[] primvars:st = [');
-      for (let t0 = 0; t0 < headTris; t0 += ROWS) {
-        const t1 = Math.min(headTris, t0 + ROWS);
-        const parts: string[] = [];
-        for (let i = 3 * t0; i < 3 * t1; i++)
-          parts.push(
-            `(${formatFloat(headCornerUvs[2 * i])}, ${formatFloat(headCornerUvs[2 * i + 1])})`,
-          );
-        out.write((t0 > 0 ? ', ' : '') + parts.join(', '));
-        tick(6 * (t1 - t0));
-        yield* out.drain();
-      }
-      out.write('] (\n            interpolation = "faceVarying"\n        )\n');
-    }
-    // A polygonal head: no subdivision (with subdivision the normals would be ignored).
-    out.write('        uniform token subdivisionScheme = "none"\n');
-    out.write('    }\n');
+/** `decl = [items]` with `perItem(i)` for i < n, BATCH items per drain; one item per line
+ *  when `lines`. */
+function* list(
+  out: UsdOut,
+  decl: string,
+  n: number,
+  perItem: (i: number) => string,
+  weight: (i0: number, i1: number) => number,
+  interpolation: string | null,
+  lines = false,
+): Generator<Uint8Array> {
+  const { text } = out;
+  text.write(`${IN}${decl} = [`);
+  for (let i0 = 0; i0 < n; i0 += BATCH) {
+    const i1 = Math.min(n, i0 + BATCH);
+    const parts: string[] = [];
+    for (let i = i0; i < i1; i++) parts.push(perItem(i));
+    if (lines) text.write(`\n${PAD}${parts.join(`,\n${PAD}`)}${i1 < n ? ',' : ''}`);
+    else text.write(i0 > 0 ? `, ${parts.join(', ')}` : parts.join(', '));
+    out.tick(weight(i0, i1));
+    yield* text.drain();
   }
+  text.write(lines && n > 0 ? `\n${IN}]` : ']');
+  text.write(interpolation ? ` (\n${PAD}interpolation = "${interpolation}"\n${IN})\n` : '\n');
+}
 
-  out.write('}\n');
-  yield* out.end();
-  progress.at(1);
+/** One prim's strands as linear BasisCurves: their geometry, then the groom attributes. */
+function* writeCurves(
+  out: UsdOut,
+  strands: ExportStrands,
+  groom: GroomLayout,
+  prim: CurvesPrim,
+): Generator<Uint8Array> {
+  out.text.write(`\n        def BasisCurves "${prim.name}"\n        {\n`);
+  out.text.write(`${IN}uniform token type = "linear"\n`);
+  out.text.write(`${IN}uniform token wrap = "nonperiodic"\n`);
+  const strandsOf = new PrimStrands(strands.strandStart, prim.order);
+  yield* writeCurvesGeometry(out, strands, strandsOf);
+  yield* writeGroomPrimvars(out, strands, groom, prim, strandsOf);
+  out.text.write('        }\n');
+}
+
+/** The points of a prim's strands: `order[k]` is the exported strand written k-th. */
+class PrimStrands {
+  constructor(
+    readonly strandStart: Uint32Array,
+    readonly order: ArrayLike<number>,
+  ) {}
+
+  /** Points of the prim's strands i0..i1-1. */
+  readonly pointsOf = (i0: number, i1: number): number => {
+    const { strandStart, order } = this;
+    let c = 0;
+    for (let i = i0; i < i1; i++) c += strandStart[order[i] + 1] - strandStart[order[i]];
+    return c;
+  };
+
+  /** `f(p)` for every point p of exported strand s, joined by ', '. */
+  perPoint(s: number, f: (p: number) => string): string {
+    const parts: string[] = [];
+    for (let p = this.strandStart[s]; p < this.strandStart[s + 1]; p++) parts.push(f(p));
+    return parts.join(', ');
+  }
+}
+
+/** Curve vertex counts, points, widths, extent and display colour. */
+function* writeCurvesGeometry(
+  out: UsdOut,
+  { points, strandStart, widths, colors }: ExportStrands,
+  prim: PrimStrands,
+): Generator<Uint8Array> {
+  const { order, pointsOf } = prim;
+  const n = order.length;
+  yield* list(
+    out,
+    'int[] curveVertexCounts',
+    n,
+    (i) => String(strandStart[order[i] + 1] - strandStart[order[i]]),
+    (i0, i1) => i1 - i0,
+    null,
+  );
+  yield* list(
+    out,
+    'point3f[] points',
+    n,
+    (i) => prim.perPoint(order[i], (p) => vec3(points, 3 * p)),
+    (i0, i1) => 3 * pointsOf(i0, i1),
+    null,
+    true,
+  );
+  yield* list(
+    out,
+    'float[] widths',
+    n,
+    (i) => prim.perPoint(order[i], (p) => formatFloat(widths[p])),
+    pointsOf,
+    'vertex',
+    true,
+  );
+  // Extent: the points' bounds padded by half the widest strand (as UsdGeomCurves::ComputeExtent).
+  const box = boundsOf(points, strandStart, order);
+  const pad = box ? Math.max(ROOT_WIDTH, TIP_WIDTH) / 2 : 0;
+  const lo = (box ? box[0] : [0, 0, 0]).map((v) => v - pad);
+  const hi = (box ? box[1] : [0, 0, 0]).map((v) => v + pad);
+  out.text.write(`${IN}float3[] extent = [${vec3(lo, 0)}, ${vec3(hi, 0)}]\n`);
+  yield* list(
+    out,
+    'color3f[] primvars:displayColor',
+    n,
+    (i) => vec3(colors, 3 * order[i]),
+    (i0, i1) => 3 * (i1 - i0),
+    'uniform',
+  );
+}
+
+/** Unreal's groom attributes (groom_* primvars: int, float, float2, float3, string; uniform
+ *  per strand, vertex per point), and Blender's root-UV attribute. */
+function* writeGroomPrimvars(
+  out: UsdOut,
+  { colors }: ExportStrands,
+  groom: GroomLayout,
+  { guide }: CurvesPrim,
+  prim: PrimStrands,
+): Generator<Uint8Array> {
+  const { order, pointsOf } = prim;
+  const n = order.length;
+  /** One value of `k` numbers per strand. */
+  const uniform = (decl: string, item: (i: number) => string, k = 1) =>
+    list(out, decl, n, item, (a, b) => k * (b - a), 'uniform');
+  yield* uniform('int[] primvars:groom_guide', () => String(guide));
+  yield* uniform('int[] primvars:groom_id', (i) => String(groom.ids[order[i]]));
+  yield* uniform('int[] primvars:groom_group_id', (i) => String(groom.groupOf[order[i]]));
+  yield* uniform('string[] primvars:groom_group_name', (i) =>
+    usdQuote(groom.groupNames[groom.groupOf[order[i]]]),
+  );
+  const uv = (i: number) =>
+    `(${formatFloat(groom.rootUv[2 * order[i]])}, ${formatFloat(groom.rootUv[2 * order[i] + 1])})`;
+  yield* uniform('float2[] primvars:groom_root_uv', uv, 2);
+  yield* uniform('float2[] primvars:surface_uv_coordinate', uv, 2);
+  yield* list(
+    out,
+    'float3[] primvars:groom_color',
+    n,
+    (i) => {
+      const c = vec3(colors, 3 * order[i]);
+      return prim.perPoint(order[i], () => c);
+    },
+    (i0, i1) => 3 * pointsOf(i0, i1),
+    'vertex',
+    true,
+  );
+  if (!guide) {
+    // guide ids are integers below 2^24: exact as floats, written in full
+    const triple = (a: Float32Array, i: number, f: (x: number) => string) =>
+      `(${f(a[3 * order[i]])}, ${f(a[3 * order[i] + 1])}, ${f(a[3 * order[i] + 2])})`;
+    yield* uniform(
+      'float3[] primvars:groom_closest_guides',
+      (i) => triple(groom.closestGuides, i, String),
+      3,
+    );
+    yield* uniform(
+      'float3[] primvars:groom_guide_weights',
+      (i) => triple(groom.guideWeights, i, formatFloat),
+      3,
+    );
+  }
+}
+
+/** `open`, then `n` rows (triangles or vertices) HEAD_ROWS per batch, the items `row(r, items)`
+ *  adds all joined by ', ', `weight` numbers per row; then `close`. */
+function* headArray(
+  out: UsdOut,
+  open: string,
+  n: number,
+  row: (r: number, items: string[]) => void,
+  weight: number,
+  close: string,
+  drain = true,
+): Generator<Uint8Array> {
+  out.text.write(open);
+  for (let r0 = 0; r0 < n; r0 += HEAD_ROWS) {
+    const r1 = Math.min(n, r0 + HEAD_ROWS);
+    const items: string[] = [];
+    for (let r = r0; r < r1; r++) row(r, items);
+    out.text.write((r0 > 0 ? ', ' : '') + items.join(', '));
+    out.tick(weight * (r1 - r0));
+    if (drain) yield* out.text.drain();
+  }
+  out.text.write(close);
+}
+
+const VERTEX = '] (\n            interpolation = "vertex"\n        )\n';
+
+/** The head as a Mesh: topology, points, normals, and the UVs its roots' UVs are in. */
+function* writeHeadMesh(
+  out: UsdOut,
+  head: ExportHead,
+  builtinHead: boolean,
+  headCornerUvs: Float32Array | null,
+): Generator<Uint8Array> {
+  const headVerts = head.positions.length / 3;
+  const headTris = head.indices.length / 3;
+  out.text.write('\n    def Mesh "head"\n    {\n');
+  const [hlo, hhi] = extentOf(head.positions);
+  out.text.write(`        float3[] extent = [${vec3(hlo, 0)}, ${vec3(hhi, 0)}]\n`);
+  // the counts are drained with the indices
+  const three = (_: number, items: string[]) => items.push('3');
+  yield* headArray(out, '        int[] faceVertexCounts = [', headTris, three, 1, '', false);
+  const corners = (t: number, items: string[]) => {
+    for (let i = 3 * t; i < 3 * t + 3; i++) items.push(String(head.indices[i]));
+  };
+  yield* headArray(out, ']\n        int[] faceVertexIndices = [', headTris, corners, 3, ']\n');
+  out.text.write('        uniform token orientation = "rightHanded"\n');
+  const point = (v: number, items: string[]) => items.push(vec3(head.positions, 3 * v));
+  yield* headArray(out, '        point3f[] points = [', headVerts, point, 3, ']\n');
+  const normals = head.normals;
+  if (normals) {
+    const normal = (v: number, items: string[]) => items.push(vec3(normals, 3 * v));
+    yield* headArray(out, '        normal3f[] primvars:normals = [', headVerts, normal, 3, VERTEX);
+  }
+  if (builtinHead) {
+    // the built-in head's UV layout (scalpUv.ts): the one the roots' UVs are in
+    const uv = scalpUvs(head.positions, HEAD_CENTER);
+    const st = (v: number, items: string[]) =>
+      items.push(`(${formatFloat(uv[2 * v])}, ${formatFloat(uv[2 * v + 1])})`);
+    yield* headArray(out, '        texCoord2f[] primvars:st = [', headVerts, st, 2, VERTEX);
+  } else if (headCornerUvs) {
+    // the file's UVs as they are (unwrapped), one per face corner: seams stay seams
+    const st = (t: number, items: string[]) => {
+      for (let i = 3 * t; i < 3 * t + 3; i++)
+        items.push(
+          `(${formatFloat(headCornerUvs[2 * i])}, ${formatFloat(headCornerUvs[2 * i + 1])})`,
+        );
+    };
+    const faceVarying = '] (\n            interpolation = "faceVarying"\n        )\n';
+    yield* headArray(out, '        texCoord2f[] primvars:st = [', headTris, st, 6, faceVarying);
+  }
+  // A polygonal head: no subdivision (with subdivision the normals would be ignored).
+  out.text.write('        uniform token subdivisionScheme = "none"\n');
+  out.text.write('    }\n');
 }
