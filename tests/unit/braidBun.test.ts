@@ -6,7 +6,7 @@ import { describe, expect, it } from 'vitest';
 import { presetSession } from '../../web/cli/presetSession';
 import { applyCommand, braidOfPonytail } from '../../web/editor/commands';
 import { Head } from '../../web/head/head';
-import { CurveKind } from '../../web/model/curveParams';
+import { CurveKind, defaultParams } from '../../web/model/curveParams';
 import { packCurves } from '../../web/model/curveSet';
 import { packSession } from '../../web/model/linkPack';
 import { unpackSession } from '../../web/model/linkUnpack';
@@ -15,7 +15,6 @@ import { quantizeSession } from '../../web/model/quantize';
 import {
   type BraidCurve,
   type BunCurve,
-  defaultParams,
   emptySession,
   type SessionState,
 } from '../../web/model/session';

@@ -1,7 +1,9 @@
 // A stream stroke that ends at a tie continues into it (session.ts tieAtEnd, streamExtends):
 // distances worked out by hand against a ponytail's start, a braid's start and a bun's loop.
+
 import { describe, expect, it } from 'vitest';
-import { defaultParams, type StyleCurve, streamExtends, tieAtEnd } from '../../web/model/session';
+import { defaultParams } from '../../web/model/curveParams';
+import { type StyleCurve, streamExtends, tieAtEnd } from '../../web/model/session';
 import type { Vec3 } from '../../web/model/vec3';
 
 const vp = { position: [0, 0, 5] as Vec3, target: [0, 0, 0] as Vec3 };

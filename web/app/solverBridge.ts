@@ -4,11 +4,12 @@
 // stroke while one is drawn (previews, at most one in flight: SolverClient paces them), and how
 // many strands previews and first looks grow. Results and progress go to whoever subscribed
 // (hair presenter, overlays, status line, the active tool).
+
 import type { Editor, EditorChange, StrokeInProgress } from '../editor/editor';
 import { packCurves, packHairOptions } from '../model/curveSet';
 import { FIELD_OMEGA, gridForSession, sameGrid } from '../model/grid';
+import { STROKE_KINDS } from '../model/kinds';
 import {
-  defaultParams,
   hangLength,
   newCurveExtends,
   type SessionState,
@@ -151,18 +152,16 @@ export class SolverBridge {
     if (stroke.points.length < 3) return;
     this.lastAsked = 'preview';
     const s = this.editor.session;
-    const base = {
+    // solved as the curve it will make: a flow (stream) curve runs on into a tie or combs on when
+    // it ends on the scalp; a tie's stroke extends as a new curve does
+    const kind = STROKE_KINDS[stroke.kind ?? 'stream'];
+    const extend =
+      stroke.extend ??
+      (kind.role === 'flow' ? streamExtends(s, stroke.points) : newCurveExtends(s));
+    const draft = {
       id: '~draft',
-      points: stroke.points as Vec3[],
-      extend:
-        stroke.extend ??
-        (stroke.kind === 'braid' ? newCurveExtends(s) : streamExtends(s, stroke.points)),
-      viewpoint: stroke.viewpoint,
-    };
-    const draft: StyleCurve =
-      stroke.kind === 'braid'
-        ? { ...base, type: 'braid', ...defaultParams('braid') }
-        : { ...base, type: 'stream' };
+      ...kind.fromStroke(stroke.points as Vec3[], stroke.viewpoint, extend),
+    } as StyleCurve;
     const cap = this.lightCap(s);
     const curves = [...s.curves, draft];
     this.client.request(

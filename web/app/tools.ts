@@ -2,17 +2,14 @@
 // camera, the selected curve) and what each may do: every edit is an editor command; the
 // stream curve being drawn is the editor's stroke in progress (the solver previews it from
 // there); drafts and guides go to the view.
+
 import { curveSurface } from '../editor/curveSurface';
 import type { Editor, ToolName } from '../editor/editor';
 import type { Head } from '../head/head';
 import type { ScalpPaintStroke } from '../head/scalpPaint';
-import {
-  DEFAULT_TIGHTNESS,
-  defaultParams,
-  newCurveExtends,
-  streamExtends,
-  tieAtEnd,
-} from '../model/session';
+import { defaultParams } from '../model/curveParams';
+import { STROKE_KINDS } from '../model/kinds';
+import { DEFAULT_TIGHTNESS, newCurveExtends, streamExtends, tieAtEnd } from '../model/session';
 import type { Vec3 } from '../model/vec3';
 import { BunTool } from '../tools/bunTool';
 import type { StrokeSample } from '../tools/depthRule';
@@ -250,13 +247,7 @@ export function createTools(d: ToolDeps): ToolSet {
       commit: (points) =>
         editor.run({
           kind: 'addCurve',
-          curve: {
-            type: 'braid',
-            points,
-            extend: newCurveExtends(editor.session),
-            viewpoint: camera(),
-            ...defaultParams('braid'),
-          },
+          curve: STROKE_KINDS.braid.fromStroke(points, camera(), newCurveExtends(editor.session)),
           what: `braid {id} (${points.length - 1} segments)`,
           mirror: d.mirror(),
         }),
@@ -273,13 +264,7 @@ export function createTools(d: ToolDeps): ToolSet {
       commit: (points) =>
         editor.run({
           kind: 'addCurve',
-          curve: {
-            type: 'bun',
-            points,
-            extend: newCurveExtends(editor.session),
-            viewpoint: camera(),
-            ...defaultParams('bun'),
-          },
+          curve: STROKE_KINDS.bun.fromStroke(points, camera(), newCurveExtends(editor.session)),
           what: `bun {id} (a loop of ${points.length} points)`,
           mirror: d.mirror(),
         }),

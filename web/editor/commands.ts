@@ -2,6 +2,7 @@
 // function from (session, command) to the next session, the selection after it and a sentence
 // for the status line. The Editor (editor.ts) runs them through one path: history, then notify.
 
+import { defaultParams } from '../model/curveParams';
 import { detailIsOn, type HairDetail } from '../model/detail';
 import { defOf } from '../model/kinds';
 import { lengthenSession } from '../model/lengthen';
@@ -18,7 +19,6 @@ import type { ReferenceImage } from '../model/referenceImage';
 import {
   addCurve,
   type BraidCurve,
-  defaultParams,
   deleteCurve,
   findCurve,
   type HeadRef,

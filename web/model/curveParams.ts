@@ -212,3 +212,10 @@ export function curveParamNames(kind: CurveKindName): string[] {
 export function quantumScale(spec: Pick<CurveParamSpec, 'quantum'>): number {
   return Math.round(1 / spec.quantum);
 }
+
+/** The scalar parameters of a new curve of kind `k`: the defaults of CURVE_PARAMS. */
+export function defaultParams<K extends CurveKindName>(k: K): CurveParamValues<K> {
+  const out: Record<string, number> = {};
+  for (const p of CURVE_PARAMS[k]) out[p.name] = p.default;
+  return out as CurveParamValues<K>;
+}

@@ -8,6 +8,7 @@
 // `bun` and `pigtail-braids`, the braid and bun curve kinds (solver-cpp/src/braid_bun.hpp).
 
 import type { Head } from '../head/head';
+import { defaultParams } from './curveParams';
 import type { HairDetail } from './detail';
 import { defOf } from './kinds';
 import { mirrorCurve } from './mirror';
@@ -19,7 +20,6 @@ import {
   type BunCurve,
   DEFAULT_TIGHTNESS,
   type DividingCurve,
-  defaultParams,
   type PonytailCurve,
   type SessionState,
   type StreamCurve,

@@ -1,7 +1,7 @@
 // The session model: everything the user made, as plain immutable JSON-able data.
 
 import type { Axis, HeadFormat } from '../head/loadHead';
-import { CURVE_PARAMS, type CurveKindName, type CurveParamValues } from './curveParams';
+import { CURVE_PARAMS, type CurveParamValues } from './curveParams';
 import type { HairDetail } from './detail';
 import type { DividingSettings } from './dividingFrames';
 import type { GridPreset } from './grid';
@@ -155,13 +155,6 @@ export interface SessionState extends SessionSettings {
   symmetry?: MirrorPlane;
   /** Reference pictures shown behind the head (absent = none); they do not affect the hair. */
   references?: ReferenceImage[];
-}
-
-/** The scalar parameters of a new curve of kind `k`: the defaults of curveParams.ts CURVE_PARAMS. */
-export function defaultParams<K extends CurveKindName>(k: K): CurveParamValues<K> {
-  const out: Record<string, number> = {};
-  for (const p of CURVE_PARAMS[k]) out[p.name] = p.default;
-  return out as CurveParamValues<K>;
 }
 
 /** "Extend past the end" of a new stream curve or ponytail: with natural fall, off (the hair ends

@@ -61,6 +61,10 @@ export interface CurveKindDef<K extends CurveKindName = CurveKindName> {
   /** A tie (it gathers hair: a stream stroke ending near it runs on into it) has this: the
    *  points a stroke's end must come near to run into it. */
   tieNear?(c: CurveOf<K>): readonly Vec3[];
+  /** A kind drawn as one stroke (stream, braid, bun) has this: its new curve (without an id)
+   *  from the stroke's points, the camera it was drawn from and "Extend past the end"; its
+   *  scalar parameters at their defaults. */
+  fromStroke?(points: Vec3[], viewpoint: Viewpoint, extend: boolean): Omit<CurveOf<K>, 'id'>;
   /** The strict reader: the whole curve, keys in the order a session file has always had. */
   read(b: ReadBase): CurveOf<K>;
   /** Quantise its own fields (the generic quantiser does points, viewpoint and scalars). */
@@ -77,3 +81,7 @@ export interface CurveKindDef<K extends CurveKindName = CurveKindName> {
   writeLink(w: Writer, c: CurveOf<K>, extra: Record<string, unknown>): void;
   readLink(r: Reader, c: Record<string, unknown>, mode: number): void;
 }
+
+/** A kind drawn as one stroke: it has fromStroke. */
+export type StrokeKindDef<K extends CurveKindName> = CurveKindDef<K> &
+  Required<Pick<CurveKindDef<K>, 'fromStroke'>>;

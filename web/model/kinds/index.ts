@@ -18,6 +18,9 @@ const KINDS: { readonly [K in CurveKindName]: CurveKindDef<K> } = {
   bun: BUN,
 };
 
+/** The kinds drawn as one stroke (a tool's stroke, a preview being drawn), by name. */
+export const STROKE_KINDS = { stream: STREAM, braid: BRAID, bun: BUN } as const;
+
 /** The definition of a kind by name (null for a name that is none). */
 export function kindDef(name: unknown): CurveKindDef | null {
   return typeof name === 'string' && Object.hasOwn(KINDS, name)

@@ -2,14 +2,15 @@
 import { MODES } from '../linkFormat';
 import { fail } from '../readFailure';
 import { bool } from '../readValues';
-import type { CurveKindDef } from './curveKind';
+import type { StrokeKindDef } from './curveKind';
 
-export const STREAM: CurveKindDef<'stream'> = {
+export const STREAM: StrokeKindDef<'stream'> = {
   name: 'stream',
   fields: ['extend', 'surfaceMode'],
   role: 'flow',
   surface: (c) => c.surfaceMode ?? 'ruled',
   extends: true,
+  fromStroke: (points, viewpoint, extend) => ({ type: 'stream', points, extend, viewpoint }),
   read({ o, path, id, points, viewpoint, scalars, common }) {
     const extend = bool(o.extend, `${path}.extend`);
     const vp = viewpoint();

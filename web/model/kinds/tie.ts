@@ -1,9 +1,11 @@
 // Braids and buns (solver-cpp/src/braid_bun.hpp): a stroke (a braid's spine from the scalp, a
 // bun's loop where it sits) and the kind's scalar parameters, nothing else of their own.
+
+import { defaultParams } from '../curveParams';
 import { bool } from '../readValues';
 import type { SurfaceMode } from '../supportingSurface';
 import type { Vec3 } from '../vec3';
-import type { CurveKindDef, CurveOf } from './curveKind';
+import type { CurveOf, StrokeKindDef } from './curveKind';
 
 /** A tie whose curve is its stroke and its scalars; `near`: the points a stream stroke's end must
  *  come near to run into it; `surface`: its supporting surface's mode (null: none). */
@@ -11,7 +13,7 @@ export function plainTie<K extends 'braid' | 'bun'>(
   name: K,
   near: (c: CurveOf<K>) => readonly Vec3[],
   surface: SurfaceMode | null,
-): CurveKindDef<K> {
+): StrokeKindDef<K> {
   return {
     name,
     role: 'tie',
@@ -19,6 +21,8 @@ export function plainTie<K extends 'braid' | 'bun'>(
     fields: ['extend'],
     extends: true,
     tieNear: near,
+    fromStroke: (points, viewpoint, extend) =>
+      ({ type: name, points, extend, viewpoint, ...defaultParams(name) }) as Omit<CurveOf<K>, 'id'>,
     read({ o, path, id, points, viewpoint, scalars, common }) {
       const extend = bool(o.extend, `${path}.extend`);
       const vp = viewpoint();
