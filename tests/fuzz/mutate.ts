@@ -1,4 +1,4 @@
-// Structure-aware mutations of JSON documents for the fuzz targets (tests/fuzz/targets.ts).
+// Structure-aware mutations of JSON documents for the fuzz targets (tests/fuzz/targets/).
 // A case is a description (a base document and a list of mutations, each naming its place by
 // an index into the base's paths), so fast-check prints and shrinks the description, and the
 // input itself is made afresh for every run of the property (exotic inputs keep state: a getter

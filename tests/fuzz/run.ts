@@ -1,4 +1,4 @@
-// npm run fuzz: the long fuzz run. Every target of tests/fuzz/targets.ts for FUZZ_RUNS cases
+// npm run fuzz: the long fuzz run. Every target of tests/fuzz/targets/ for FUZZ_RUNS cases
 // (default 100,000) with a random seed (FUZZ_SEED to replay one; FUZZ_TARGETS=session,link to
 // pick targets by a word of their name). It counts, per target, the cases, those accepted and
 // rejected by the code under test, the throws that escaped it and the property violations,
@@ -6,7 +6,8 @@
 // failure, lets fast-check shrink it, and prints the counterexample. Exit code 1 on any failure.
 import { spawn } from 'node:child_process';
 import fc from 'fast-check';
-import { EscapedThrow, type FuzzTarget, loadTargets, Violation } from './targets';
+import { EscapedThrow, type FuzzTarget, Violation } from './outcomes';
+import { loadTargets } from './targets';
 
 interface Counts {
   cases: number;

@@ -1,4 +1,4 @@
-// The bounded fuzz run of npm test: every target of tests/fuzz/targets.ts (the session reader,
+// The bounded fuzz run of npm test: every target of tests/fuzz/targets/ (the session reader,
 // the link codec, the CLI problem reader, the export writers, the reader of exports) with a fixed
 // seed and a count sized for a few seconds each on a 2-core machine. The long run with random
 // seeds and counts is `npm run fuzz` (tests/fuzz/run.ts).
