@@ -3,8 +3,10 @@
 // S6.2 (constraints, field, supporting surface, box). Which show is view state (the view store,
 // viewState.ts), not in the undo history or the session. Each overlay is rebuilt only when what
 // it draws changes.
+
 import { curveSurface } from '../editor/curveSurface';
 import type { Editor } from '../editor/editor';
+import { defOf } from '../model/kinds';
 import { normalize, type Vec3 } from '../model/vec3';
 import type { GridSpec } from '../solver/protocol';
 import type { SolveResult } from '../solver/solverClient';
@@ -97,7 +99,7 @@ export class OverlayPresenter {
       return;
     }
     const c = this.editor.selectedCurve;
-    this.viewer.setGuides(c?.type === 'ponytail' ? c.circles.map(circlePolyline) : []);
+    this.viewer.setGuides(c ? (defOf(c).guides?.(c) ?? []).map(circlePolyline) : []);
   }
 
   /** Rebuilds what changed of the shown overlays and adds / removes them from the view. */

@@ -13,7 +13,6 @@ import {
   syncMirrorTwins,
   X_PLANE,
 } from '../model/mirror';
-import { ponytailCircles } from '../model/ponytailGeometry';
 import { quantizeSession } from '../model/quantize';
 import type { ReferenceImage } from '../model/referenceImage';
 import {
@@ -190,29 +189,15 @@ function applyExact(s: SessionState, cmd: Command): CommandResult {
     case 'hintEdit': {
       const c = findCurve(s, cmd.id);
       if (!c || !defOf(c).surface(c)) return { session: s, message: `No curve ${cmd.id} to edit.` };
-      if (c.type === 'ponytail') {
-        // the circles follow the edited spine, between the profiles as drawn
-        const { circles } = ponytailCircles(
-          cmd.points,
-          c.crossSection,
-          c.profiles[0],
-          c.profiles[1],
-          {
-            every: 2,
-          },
-        );
-        if (circles.length === 0)
-          return {
-            session: s,
-            message: `Hint: ${cmd.op} would leave the ponytail without circles — nothing changed.`,
-          };
+      const def = defOf(c);
+      const next = def.respine ? def.respine(c, cmd.points) : { ...c, points: cmd.points };
+      if (!next)
         return {
-          session: updateCurve(s, c.id, () => ({ ...c, points: cmd.points, circles })),
-          message: `Hint: ${cmd.op} — ponytail ${c.id} spine now has ${cmd.points.length} points.`,
+          session: s,
+          message: `Hint: ${cmd.op} would leave the ${c.type} without circles — nothing changed.`,
         };
-      }
       return {
-        session: updateCurve(s, c.id, () => ({ ...c, points: cmd.points })),
+        session: updateCurve(s, c.id, () => next),
         message: `Hint: ${cmd.op} — ${c.id} now has ${cmd.points.length} points.`,
       };
     }

@@ -65,6 +65,12 @@ export interface CurveKindDef<K extends CurveKindName = CurveKindName> {
    *  from the stroke's points, the camera it was drawn from and "Extend past the end"; its
    *  scalar parameters at their defaults. */
   fromStroke?(points: Vec3[], viewpoint: Viewpoint, extend: boolean): Omit<CurveOf<K>, 'id'>;
+  /** A kind with more to it than its stroke has this: `c` with its stroke (a hint stroke's edit)
+   *  now `points`, the rest following; null when the edit would leave it broken. Without it the
+   *  points are simply replaced. */
+  respine?(c: CurveOf<K>, points: Vec3[]): CurveOf<K> | null;
+  /** Construction lines shown while it is selected (a ponytail's circles), if any. */
+  guides?(c: CurveOf<K>): { centre: Vec3; axis: Vec3; radius: number }[];
   /** The strict reader: the whole curve, keys in the order a session file has always had. */
   read(b: ReadBase): CurveOf<K>;
   /** Quantise its own fields (the generic quantiser does points, viewpoint and scalars). */

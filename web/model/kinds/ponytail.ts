@@ -1,7 +1,7 @@
 // The ponytail (S4.6): `points` is the spine (edited like a stream curve); the cross-section and
 // the two profile strokes are kept as drawn, the circles computed from them (C1 first).
 import { readPolyline, writePolyline } from '../linkBytes';
-import type { PonytailCircle } from '../ponytailGeometry';
+import { type PonytailCircle, ponytailCircles } from '../ponytailGeometry';
 import { DIRECTION_SCALE as DIR, POSITION_SCALE as POS, toGridInt } from '../quantize';
 import { fail } from '../readFailure';
 import {
@@ -71,6 +71,14 @@ export const PONYTAIL: CurveKindDef<'ponytail'> = {
   surface: () => 'ruled',
   extends: true,
   tieNear: (c) => c.points.slice(0, 1),
+  // the circles follow the edited spine, between the profiles as drawn
+  respine(c, points) {
+    const { circles } = ponytailCircles(points, c.crossSection, c.profiles[0], c.profiles[1], {
+      every: 2,
+    });
+    return circles.length === 0 ? null : { ...c, points, circles };
+  },
+  guides: (c) => c.circles,
   read({ o, path, id, points, viewpoint, scalars, common }) {
     const extend = bool(o.extend, `${path}.extend`);
     const vp = viewpoint();
