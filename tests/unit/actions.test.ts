@@ -5,9 +5,9 @@ import {
   type ActionTarget,
   actionForShortcut,
   buildActions,
-  displayShortcut,
   shortcutOf,
 } from '../../web/app/actions';
+import { displayShortcut } from '../../web/ui/action';
 import type { DisplayKey } from '../../web/ui/displayToggles';
 
 function target() {

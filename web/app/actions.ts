@@ -3,31 +3,9 @@
 // help overlay ("?") all read this table (in the manner of tldraw's actions).
 import type { ToolName } from '../editor/editor';
 import type { CurveType } from '../model/session';
+import type { Action } from '../ui/action';
 import { DISPLAY_TOGGLES, type DisplayKey } from '../ui/displayToggles';
 import type { AppViewName } from '../viewer/namedViews';
-
-export type ActionGroup = 'tools' | 'curve' | 'edit' | 'file' | 'view' | 'display';
-
-export interface Action {
-  id: string;
-  /** Button label and accessible name. */
-  label: string;
-  /** What it does (tooltip and help overlay). */
-  title: string;
-  /** Shortcuts: 's', 'mod+z', 'mod+shift+z', 'delete', '?', '1'… ('mod' is Ctrl or ⌘). */
-  shortcuts?: readonly string[];
-  group: ActionGroup;
-  /** Where the toolbar shows it: 'main' (always), 'more' (in the overflow menu on narrow
-   *  screens), or not at all (keyboard only, or drawn by its own control). */
-  toolbar?: 'main' | 'more';
-  run(): void;
-  enabled?(): boolean;
-  /** For toggles and tools: whether it is on now. */
-  pressed?(): boolean;
-  /** A label that shows state (e.g. which surface mode is on); the accessible name still
-   *  starts with `label`. */
-  stateLabel?(): string;
-}
 
 /** What the actions act on (the composition root provides it). */
 export interface ActionTarget {
@@ -409,14 +387,4 @@ export function shortcutOf(e: {
 /** The action a shortcut runs, if any. */
 export function actionForShortcut(actions: readonly Action[], shortcut: string): Action | null {
   return actions.find((a) => a.shortcuts?.includes(shortcut)) ?? null;
-}
-
-/** How a shortcut reads in the help overlay and tooltips ('Ctrl+Shift+Z'). */
-export function displayShortcut(s: string): string {
-  return s
-    .split('+')
-    .map((p) =>
-      p === 'mod' ? 'Ctrl' : p.length === 1 ? p.toUpperCase() : p[0].toUpperCase() + p.slice(1),
-    )
-    .join('+');
 }

@@ -13,16 +13,17 @@
 // Every head shown sets the view Reset view returns to: the head framed as the built-in head is
 // in the default view (viewMath.ts frameBounds); Open head, Rotate and Built-in head also ease
 // the camera there once the head is on screen.
+
 import type * as THREE from 'three';
 import type { Editor } from '../editor/editor';
 import type { Head } from '../head/head';
 import { headFromPicked } from '../head/headFiles';
 import type { HeadStore } from '../head/headStore';
 import { hashHeadBytes, headRefOf, loadHeadRef } from '../head/headStore';
-import { type Axis, type LoadedHead, loadHeadFile } from '../head/loadHead';
+import { type LoadedHead, loadHeadFile } from '../head/loadHead';
 import { forEachCovered, type ScalpPaintStroke, sessionScalpMask } from '../head/scalpPaint';
 import { fitSymmetryPlane } from '../head/symmetryPlane';
-import type { HeadRef, ScalpStroke, SessionState } from '../model/session';
+import type { Axis, HeadRef, ScalpStroke, SessionState } from '../model/session';
 import type { ScalpMesh } from '../solver/protocol';
 import { DEFAULT_CAMERA } from '../viewer/defaultCamera';
 import { paintHeadTriangles, recolorHeadScalp, setHeadGeometry } from '../viewer/headMaterial';

@@ -2,9 +2,10 @@
 // camera); keys run the action whose shortcut they spell (the actions table), except while
 // typing into a text field.
 import type { Tool } from '../tools/tool';
+import type { Action } from '../ui/action';
 import { typesText } from '../ui/displayToggles';
 import type { Viewer } from '../viewer/viewer';
-import { type Action, actionForShortcut, shortcutOf } from './actions';
+import { actionForShortcut, shortcutOf } from './actions';
 
 export interface InputDeps {
   viewer: Viewer;

@@ -7,10 +7,9 @@ import { GLTFLoader } from 'three/examples/jsm/loaders/GLTFLoader.js';
 import { OBJLoader } from 'three/examples/jsm/loaders/OBJLoader.js';
 import { PLYLoader } from 'three/examples/jsm/loaders/PLYLoader.js';
 import { STLLoader } from 'three/examples/jsm/loaders/STLLoader.js';
+import type { HeadFormat } from '../model/session';
 import { type GltfResources, selfContainedGlb } from './gltfPack';
 import { capCheck, HeadFileError } from './headFileError';
-
-export type HeadFormat = 'obj' | 'gltf' | 'glb' | 'ply' | 'stl';
 
 export function detectFormat(name: string, bytes: ArrayBuffer): HeadFormat {
   const ext = /\.([a-z0-9]+)$/i.exec(name.trim())?.[1]?.toLowerCase() ?? '';

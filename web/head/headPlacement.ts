@@ -1,9 +1,9 @@
 // Placing a loaded head where the built-in one is: its unit guessed from its size, quarter turns
 // about an axis, and a scale and shift that put its cranium on the built-in head's.
+import type { Axis } from '../model/session';
 import type { Vec3 } from '../model/vec3';
 
 export type HeadUnit = 'mm' | 'cm' | 'dm' | 'm' | 'unknown';
-export type Axis = 'x' | 'y' | 'z';
 
 // The built-in head's cranium (measured on buildHead(); a unit test keeps these in step): its
 // top, and the x width and x/z centre of its vertices within BAND of the top.

@@ -17,27 +17,18 @@
 // The formats are read in headFileFormats.ts and sceneTriangles.ts, the placement is
 // headPlacement.ts.
 import * as THREE from 'three';
+import type { Axis, HeadFormat } from '../model/session';
 import type { Vec3 } from '../model/vec3';
 import { vertexNormals } from './buildHead';
 import type { GltfResources } from './gltfPack';
 import { Head, type HeadMesh } from './head';
 import { HeadFileError } from './headFileError';
-import { detectFormat, type HeadFormat, parse } from './headFileFormats';
-import {
-  type Axis,
-  bounds,
-  extents,
-  guessUnit,
-  type HeadUnit,
-  place,
-  rotateQuarter,
-} from './headPlacement';
+import { detectFormat, parse } from './headFileFormats';
+import { bounds, extents, guessUnit, type HeadUnit, place, rotateQuarter } from './headPlacement';
 import { type MeshInside, meshInside } from './meshInside';
 import { markScalpTriangles } from './scalpRegion';
 import { collectTriangles } from './sceneTriangles';
 import { type IndexedTriangles, orientPartsOutward, weldByPosition } from './weldMesh';
-
-export type { HeadFormat } from './headFileFormats';
 
 /** A loader's own message, cut to one short line without anything taken from the file: long
  *  runs of letters and digits (encoded data) and quoted text are left out. */
@@ -51,7 +42,7 @@ export function loaderReason(e: unknown): string {
     .trim();
   return plain || 'the reader refused it';
 }
-export { type Axis, BUILTIN_CRANIUM, type HeadUnit } from './headPlacement';
+export { BUILTIN_CRANIUM, type HeadUnit } from './headPlacement';
 
 /** The most triangles a loaded head may have (a bound on the memory and time of loading). */
 export const MAX_HEAD_TRIANGLES = 2_000_000;

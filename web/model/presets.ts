@@ -7,7 +7,6 @@
 // `curly`, the default style with curl, clumps and a little frizz (model/detail.ts); `braid`,
 // `bun` and `pigtail-braids`, the braid and bun curve kinds (solver-cpp/src/braid_bun.hpp).
 
-import type { Head } from '../head/head';
 import { defaultParams } from './curveParams';
 import type { HairDetail } from './detail';
 import { defOf } from './kinds';
@@ -30,7 +29,13 @@ import { add, normalize, scale, sphericalDirection, type Vec3 } from './vec3';
 
 export interface PresetContext {
   /** The head the curves are sketched on (its scalp points, normals and centre). */
-  head: Pick<Head, 'scalpPoint' | 'normalAt' | 'center'>;
+  /** What presets ask of the head (head/head.ts Head has it): the scalp point at (θ, φ) degrees,
+   *  the surface normal near a point, and the scalp parameterisation's origin. */
+  head: {
+    scalpPoint(thetaDeg: number, phiDeg: number): { point: Vec3 } | null;
+    normalAt(p: Vec3): Vec3;
+    center: Vec3;
+  };
   step: number; // grid step d
   viewpoint: Viewpoint;
 }

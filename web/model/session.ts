@@ -1,6 +1,5 @@
 // The session model: everything the user made, as plain immutable JSON-able data.
 
-import type { Axis, HeadFormat } from '../head/loadHead';
 import { CURVE_PARAMS, type CurveParamValues } from './curveParams';
 import type { HairDetail } from './detail';
 import type { DividingSettings } from './dividingFrames';
@@ -91,18 +90,12 @@ export interface BunCurve extends CurveParamValues<'bun'> {
 export type StyleCurve = StreamCurve | DividingCurve | PonytailCurve | BraidCurve | BunCurve;
 export type CurveType = StyleCurve['type'];
 
-/** The head file formats a session can name (loadHead.ts HeadFormat, every one of them). */
-export const HEAD_FORMATS = [
-  'obj',
-  'gltf',
-  'glb',
-  'ply',
-  'stl',
-] as const satisfies readonly HeadFormat[];
-// every HeadFormat is listed (a compile error here when loadHead.ts gains one)
-const _allFormats: Exclude<HeadFormat, (typeof HEAD_FORMATS)[number]> extends never ? true : never =
-  true;
-void _allFormats;
+/** The head file formats a session can name (head/headFileFormats.ts reads each of them). */
+export const HEAD_FORMATS = ['obj', 'gltf', 'glb', 'ply', 'stl'] as const;
+export type HeadFormat = (typeof HEAD_FORMATS)[number];
+
+/** An axis of the head's frame (a loaded head's quarter turns are about one). */
+export type Axis = 'x' | 'y' | 'z';
 
 /** A quarter turn step of a loaded head (loadHead.ts rotateLoadedHead), in the order applied. */
 export interface HeadTurn {

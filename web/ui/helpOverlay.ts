@@ -1,6 +1,6 @@
 // The "?" overlay: every action with its keyboard shortcuts, read from the actions table, plus
 // the pointer gestures. Closed by "?", Escape, its button or a click outside the panel.
-import { type Action, type ActionGroup, displayShortcut } from '../app/actions';
+import { type Action, type ActionGroup, displayShortcut } from './action';
 
 const GROUP_TITLES: Record<ActionGroup, string> = {
   tools: 'Tools',

@@ -2,7 +2,7 @@
 // always shown, and the rest (curve, file, view actions, hair colour, display toggles) inline on
 // wide screens and in a "More" menu on narrow ones (phones). Buttons keep their accessible
 // names (the test contract relies on them).
-import { type Action, displayShortcut } from '../app/actions';
+import { type Action, displayShortcut } from './action';
 
 export interface ToolbarExtras {
   hairColor(css: string): void;

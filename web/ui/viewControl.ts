@@ -2,7 +2,7 @@
 // ("three-quarter front" at the start, "free" after an orbit) and a button per named view
 // (Front, Left, Right, Back, Top), each running its action (app/actions.ts NAMED_VIEWS, also at
 // a key each).
-import type { Action } from '../app/actions';
+import type { Action } from './action';
 
 export interface ViewControl {
   readonly element: HTMLElement;
