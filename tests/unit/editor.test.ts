@@ -3,7 +3,7 @@
 import { describe, expect, it } from 'vitest';
 import type { Command } from '../../web/editor/commands';
 import { Editor, type EditorChange } from '../../web/editor/editor';
-import { POSITION_SCALE, quantize } from '../../web/model/quantize';
+import { POSITION_SCALE, quantize } from '../../web/model/gridNumbers';
 import {
   emptySession,
   type SessionState,

@@ -6,15 +6,10 @@ import { createDeflateRaw } from 'node:zlib';
 import { describe, expect, it } from 'vitest';
 import { presetSession } from '../../web/cli/presetSession';
 import { Head } from '../../web/head/head';
+import { DIRECTION_SCALE, POSITION_SCALE, quantize } from '../../web/model/gridNumbers';
 import { X_PLANE } from '../../web/model/mirror';
 import { PRESET_NAMES } from '../../web/model/presets';
-import {
-  DIRECTION_SCALE,
-  POSITION_SCALE,
-  quantize,
-  quantizeCurve,
-  quantizeSession,
-} from '../../web/model/quantize';
+import { quantizeCurve, quantizeSession } from '../../web/model/quantize';
 import { emptySession, type SessionState } from '../../web/model/session';
 import {
   crc32,

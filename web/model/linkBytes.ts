@@ -1,7 +1,7 @@
 // The byte-level pieces of a share link's body (linkFormat.ts): a growing writer and a checked
 // reader of bytes, varints, zigzag varints and f64s, delta-coded polylines, and the CRC-32 that
 // closes the body.
-import { toGridInt } from './quantize';
+import { toGridInt } from './gridNumbers';
 import type { Vec3 } from './vec3';
 
 /** A body that does not fit the layout; its message says where (shown in "the session link is

@@ -1,5 +1,6 @@
 // Writes a session as the binary body of a share link (linkFormat.ts has the layout).
 import { curveParamNames, curveParamSpecs, quantumScale } from './curveParams';
+import { POSITION_SCALE as POS, toGridInt } from './gridNumbers';
 import { DEFAULT_GROWTH, GROWTH_KEYS } from './growthParams';
 import { COMMON_CURVE_FIELDS, defOf, extendsPastEnd } from './kinds';
 import { crc32, Writer, writePolyline, writeVec } from './linkBytes';
@@ -16,7 +17,6 @@ import {
   V2_KINDS,
   V2_PARAM_COUNTS,
 } from './linkFormat';
-import { POSITION_SCALE as POS, toGridInt } from './quantize';
 import {
   HEAD_FORMATS,
   type HeadRef,

@@ -1,6 +1,7 @@
 // Reads the binary body of a share link (linkFormat.ts has the layout) into plain session data,
 // checking the layout byte by byte; the strict reader (sessionRead.ts) checks the session.
 import { CURVE_PARAMS, curveParamSpecs, quantumScale } from './curveParams';
+import { DIRECTION_SCALE as DIR, POSITION_SCALE as POS } from './gridNumbers';
 import { DEFAULT_GROWTH, GROWTH_KEYS } from './growthParams';
 import { kindDef } from './kinds';
 import { crc32, LinkError, Reader, readPolyline, readVec } from './linkBytes';
@@ -17,7 +18,6 @@ import {
   V2_KINDS,
   V2_PARAM_COUNTS,
 } from './linkFormat';
-import { DIRECTION_SCALE as DIR, POSITION_SCALE as POS } from './quantize';
 import { HEAD_FORMATS } from './session';
 import { SESSION_VERSION } from './sessionMigrations';
 import type { Vec3 } from './vec3';

@@ -21,6 +21,7 @@
 // Every function returns its argument itself when it is already on the grid: quantising an
 // unchanged curve keeps its identity (the solver bridge compares curves by identity).
 import { CURVE_KINDS, curveParamSpecs, quantumScale } from './curveParams';
+import { DIRECTION_SCALE, PARAM_SCALE, POSITION_SCALE, quantize } from './gridNumbers';
 import { defOf } from './kinds';
 import type { QuantizeKit } from './kinds/curveKind';
 import type { MirrorPlane } from './mirror';
@@ -29,38 +30,11 @@ import type { ScalpStroke, SessionState, StyleCurve, Viewpoint } from './session
 import { SETTING_NAMES, type SessionSettings, settingSpec } from './sessionSchema';
 import type { Vec3 } from './vec3';
 
-/** Integers per world unit for positions (1e-4 world units = 10 µm). */
-export const POSITION_SCALE = 1e4;
-/** Integers per unit for direction components (normals, axes, avoid targets). */
-export const DIRECTION_SCALE = 1e4;
-/** Integers per radian for curve angles (their rows' quantum, 1e-5). */
-export const ANGLE_SCALE = 1e5;
-/** Integers per unit for the other curve parameters (sigma, h, tightness: quantum 1e-4). */
-export const PARAM_SCALE = 1e4;
-/** Numbers are clamped to ±LIMIT before quantising (keeps every integer far below 2^53). */
-export const LIMIT = 1e6;
-
 /** The grid of curve parameter `name` (its row's quantum in CURVE_PARAMS), as integers per unit. */
 export function paramScale(name: string): number {
   for (const k of CURVE_KINDS)
     for (const spec of curveParamSpecs(k)) if (spec.name === name) return quantumScale(spec);
   return PARAM_SCALE;
-}
-
-/** The integer a number is stored as: round(clamp(x) * scale), never -0. */
-export function toGridInt(x: number, scale: number): number {
-  const c = Math.min(LIMIT, Math.max(-LIMIT, x));
-  return Math.round(c * scale) + 0;
-}
-
-/** The number on the grid an integer stands for. */
-export function fromGridInt(k: number, scale: number): number {
-  return k / scale + 0;
-}
-
-/** x on the grid of `scale`. */
-export function quantize(x: number, scale: number): number {
-  return fromGridInt(toGridInt(x, scale), scale);
 }
 
 function qv(v: Vec3, scale: number): Vec3 {

@@ -2,7 +2,7 @@
 // keys, numbers in ranges, positions in the bounding volume, unit vectors, polylines,
 // viewpoints, file names and hashes. Each refuses with a message naming the value's path.
 import { BOX_MAX, BOX_MIN } from './grid';
-import { POSITION_SCALE, toGridInt } from './quantize';
+import { POSITION_SCALE, toGridInt } from './gridNumbers';
 import { fail, keyStep } from './readFailure';
 import type { Viewpoint } from './session';
 import { SESSION_LIMITS as L } from './sessionLimits';

@@ -1,7 +1,8 @@
 // The bounds the session reader enforces on whatever comes in (docs/session-format.md lists
 // them), and the reader's answer type.
+
+import { POSITION_SCALE } from './gridNumbers';
 import { MAX_SEGMENTS, MAX_STRANDS } from './growthParams';
-import { POSITION_SCALE } from './quantize';
 
 /** A reader's answer: the value, or the first problem as one line naming its field. */
 export type Parsed<T> = { ok: true; value: T } | { ok: false; error: string };

@@ -15,11 +15,12 @@
 // session, and `headFile`: those are not part of the session and are left out of the value.
 
 import { type GridPreset, isGridPreset } from './grid';
+import { POSITION_SCALE, toGridInt } from './gridNumbers';
 import type { GrowthParams } from './growthParams';
 import { DEFAULT_GROWTH, GROWTH_FIELDS, GROWTH_KEYS, rootSamples } from './growthParams';
 import type { MirrorPlane } from './mirror';
 import { plainCopy } from './plainCopy';
-import { POSITION_SCALE, toGridInt, unitNormal } from './quantize';
+import { unitNormal } from './quantize';
 import { curve, detail } from './readCurve';
 import { fail, failed, refuse } from './readFailure';
 import { references } from './readReference';

@@ -1,7 +1,8 @@
 // The dividing curve (S4.5): a parting drawn on the scalp, with the scalp normal at each point;
 // its parameters are the parting's Gaussian profile and the tilt at both ends.
+
+import { DIRECTION_SCALE as DIR } from '../gridNumbers';
 import { readPolyline, writePolyline } from '../linkBytes';
-import { DIRECTION_SCALE as DIR } from '../quantize';
 import { fail } from '../readFailure';
 import { array, unit, unitFast } from '../readValues';
 import type { CurveKindDef } from './curveKind';

@@ -1,8 +1,9 @@
 // The ponytail (S4.6): `points` is the spine (edited like a stream curve); the cross-section and
 // the two profile strokes are kept as drawn, the circles computed from them (C1 first).
+
+import { DIRECTION_SCALE as DIR, POSITION_SCALE as POS, toGridInt } from '../gridNumbers';
 import { readPolyline, writePolyline } from '../linkBytes';
 import { type PonytailCircle, ponytailCircles } from '../ponytailGeometry';
-import { DIRECTION_SCALE as DIR, POSITION_SCALE as POS, toGridInt } from '../quantize';
 import { fail } from '../readFailure';
 import {
   array,
