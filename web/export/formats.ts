@@ -1,21 +1,8 @@
 // The hair export formats, one row each: everything the Export menu, the app's exporter,
-// writeExport and `hairsketch grow` know of a format lives here and nowhere else. The rows'
-// order is the menu's and the `--format` list's.
-import { writeCardsGlb } from './cardsWriter';
-import type { Progress } from './chunkSink';
-import { writeGlb } from './glbWriter';
-import { writeHair } from './hairWriter';
-import { writeObj } from './objWriter';
-import type { ExportStrands } from './strandsForExport';
-import type { ExportInput } from './types';
-import { writeUsda } from './usdWriter';
-
-/** Writes the strands (strandsForExport) of `input` as one format, in chunks. */
-export type ExportWriter = (
-  strands: ExportStrands,
-  input: ExportInput,
-  progress: Progress,
-) => Generator<Uint8Array>;
+// writeExport and `hairsketch grow` know of a format lives here and nowhere else, but its writer:
+// that is in formatWriters.ts, keyed by the same names (a compile error when one is missing), so
+// the page that shows the menu does not load the writers, which run in the export worker. The
+// rows' order is the menu's and the `--format` list's.
 
 export interface ExportFormatSpec {
   /** The file name's extension, without the dot. */
@@ -42,7 +29,6 @@ export interface ExportFormatSpec {
   readonly readsHeadUv: boolean;
   /** Is cut into a chosen number of hair cards (the menu's "Card count", `grow --cards N`). */
   readonly takesCardCount: boolean;
-  readonly write: ExportWriter;
 }
 
 const HAIRSTYLE = 'hairstyle';
@@ -60,7 +46,6 @@ export const EXPORT_FORMATS = {
     carriesSession: true,
     readsHeadUv: true,
     takesCardCount: false,
-    write: writeUsda,
   },
   hair: {
     extension: 'hair',
@@ -74,7 +59,6 @@ export const EXPORT_FORMATS = {
     carriesSession: false,
     readsHeadUv: false,
     takesCardCount: false,
-    write: writeHair,
   },
   obj: {
     extension: 'obj',
@@ -88,7 +72,6 @@ export const EXPORT_FORMATS = {
     carriesSession: false,
     readsHeadUv: false,
     takesCardCount: false,
-    write: writeObj,
   },
   glb: {
     extension: 'glb',
@@ -102,7 +85,6 @@ export const EXPORT_FORMATS = {
     carriesSession: true,
     readsHeadUv: false,
     takesCardCount: false,
-    write: writeGlb,
   },
   cards: {
     extension: 'glb',
@@ -116,7 +98,6 @@ export const EXPORT_FORMATS = {
     carriesSession: true,
     readsHeadUv: false,
     takesCardCount: true,
-    write: writeCardsGlb,
   },
 } as const satisfies Record<string, ExportFormatSpec>;
 

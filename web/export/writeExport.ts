@@ -2,11 +2,12 @@
 // CHUNK_BYTES). Pure TypeScript (typed arrays and TextEncoder only): it runs the same in the
 // browser's export worker and under Node, and the same input gives byte-identical output.
 import { Progress } from './chunkSink';
-import { type ExportFormat, exportFormat } from './formats';
+import { type ExportFormat, isExportFormat } from './formats';
+import { EXPORT_WRITERS } from './formatWriters';
 import { strandsForExport } from './strandsForExport';
 import type { ExportInput, ExportProgress } from './types';
 
-/** Writes `input` as `format` (its writer in formats.ts), yielding the file in chunks of at most
+/** Writes `input` as `format` (its writer in formatWriters.ts), yielding the file in chunks of at most
  *  CHUNK_BYTES (1 MiB). onProgress gets non-decreasing fractions 0..1 as strand batches are
  *  written, ending with 1. */
 export function* writeExport(
@@ -17,7 +18,6 @@ export function* writeExport(
   const progress = new Progress(onProgress);
   progress.at(0);
   const strands = strandsForExport(input.strands, input.session);
-  const spec = exportFormat(format);
-  if (!spec) throw new Error(`unknown export format ${String(format)}`);
-  yield* spec.write(strands, input, progress);
+  if (!isExportFormat(format)) throw new Error(`unknown export format ${String(format)}`);
+  yield* EXPORT_WRITERS[format](strands, input, progress);
 }
