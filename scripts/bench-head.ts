@@ -17,9 +17,9 @@ import { readFileSync } from 'node:fs';
 import { type LoadedHead, loadHeadFile } from '../web/head/loadHead';
 import { resultLighting } from '../web/lighting/resultLighting';
 import { gridForSession } from '../web/model/grid';
+import type { ScalpMesh } from '../web/model/hairArrays';
 import { DEFAULT_GROWTH } from '../web/model/session';
 import type { Vec3 } from '../web/model/vec3';
-import type { ScalpMesh } from '../web/solver/protocol';
 import { loadSolverEngine } from '../web/solver/wasmEngine';
 import { writeBenchResults } from './benchResults.mjs';
 

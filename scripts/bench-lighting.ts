@@ -18,9 +18,9 @@ import { KEY_LIGHT_DIRECTION } from '../web/lighting/keyLight';
 import { type HeadTriangles, voxelizeHead } from '../web/lighting/lightingKernels';
 import { ResultLighting } from '../web/lighting/resultLighting';
 import { gridForSession } from '../web/model/grid';
+import type { StrandArrays } from '../web/model/hairArrays';
 import { hangLength } from '../web/model/session';
 import { singleNodeOptions } from '../web/solver/nodeThreads';
-import type { StrandArrays } from '../web/solver/protocol';
 import { loadSolverEngine } from '../web/solver/wasmEngine';
 import { writeBenchResults } from './benchResults.mjs';
 

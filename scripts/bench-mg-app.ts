@@ -14,9 +14,9 @@ import { presetSession } from '../web/cli/presetSession';
 import { Head } from '../web/head/head';
 import { packCurves } from '../web/model/curveSet';
 import { type GridPreset, gridForSession } from '../web/model/grid';
+import type { GridSpec } from '../web/model/hairArrays';
 import { hangLength, type SessionState } from '../web/model/session';
 import { singleNodeOptions } from '../web/solver/nodeThreads';
-import type { GridSpec } from '../web/solver/protocol';
 import { loadSolverEngine } from '../web/solver/wasmEngine';
 import { writeBenchResults } from './benchResults.mjs';
 

@@ -14,10 +14,10 @@ import { presetSession } from '../web/cli/presetSession';
 import { growSessionHair } from '../web/export/growSession';
 import { Head } from '../web/head/head';
 import { type GridPreset, gridForSession } from '../web/model/grid';
+import type { CurveSet, StrandArrays } from '../web/model/hairArrays';
 import type { PresetName } from '../web/model/presets';
 import type { PonytailCurve } from '../web/model/session';
 import { hangLength } from '../web/model/session';
-import type { CurveSet, StrandArrays } from '../web/solver/protocol';
 import { loadSolverEngine } from '../web/solver/wasmEngine';
 
 type V = [number, number, number];

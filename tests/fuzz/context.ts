@@ -5,12 +5,12 @@ import fc from 'fast-check';
 import { presetSession } from '../../web/cli/presetSession';
 import { writeExport } from '../../web/export/writeExport';
 import { Head } from '../../web/head/head';
+import type { StrandArrays } from '../../web/model/hairArrays';
 import { PRESET_NAMES } from '../../web/model/presets';
 import { quantizeSession } from '../../web/model/quantize';
 import type { SessionState } from '../../web/model/session';
 import { writeSessionFile } from '../../web/model/sessionFile';
 import { encodeSessionLink } from '../../web/model/sessionLink';
-import type { StrandArrays } from '../../web/solver/protocol';
 import { pngFile } from '../support/pictureFiles';
 import { type Places, placesOf } from './mutate';
 

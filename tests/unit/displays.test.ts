@@ -2,10 +2,10 @@
 // subsampling and its count cap, the bounding box edges, and supporting-surface meshes. Expected
 // values are built here by hand or by brute force, not read back from the code under test.
 import { describe, expect, it } from 'vitest';
+import type { GridSpec } from '../../web/model/hairArrays';
+import { ConstraintColour } from '../../web/model/hairArrays';
 import { buildSupportingSurface } from '../../web/model/supportingSurface';
 import type { Vec3 } from '../../web/model/vec3';
-import type { GridSpec } from '../../web/solver/protocol';
-import { ConstraintColour } from '../../web/solver/protocol';
 import { DEFAULT_DISPLAY, DISPLAY_TOGGLES } from '../../web/ui/displayToggles';
 import { gridBoxEdges } from '../../web/viewer/boundingVolume';
 import {

@@ -25,8 +25,8 @@ import {
 } from '../../web/export/types';
 import { usdQuote } from '../../web/export/usdWriter';
 import { writeExport } from '../../web/export/writeExport';
+import type { StrandArrays } from '../../web/model/hairArrays';
 import { emptySession, type SessionState } from '../../web/model/session';
-import type { StrandArrays } from '../../web/solver/protocol';
 
 // ---- fixtures ----------------------------------------------------------------------------------
 

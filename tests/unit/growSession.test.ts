@@ -9,8 +9,9 @@ import { growSessionHair } from '../../web/export/growSession';
 import { Head } from '../../web/head/head';
 import { packCurves, packHairOptions } from '../../web/model/curveSet';
 import { gridForPreset } from '../../web/model/grid';
+import type { StrandArrays } from '../../web/model/hairArrays';
 import type { SessionState } from '../../web/model/session';
-import type { FromWorker, StrandArrays } from '../../web/solver/protocol';
+import type { FromWorker } from '../../web/solver/protocol';
 import { loadSolverEngine } from '../../web/solver/wasmEngine';
 import { DEFAULT_SCHEDULER, WorkerLogic } from '../../web/solver/workerLogic';
 

@@ -19,8 +19,8 @@ import type { ExportInput } from '../../web/export/types';
 import { writeExport } from '../../web/export/writeExport';
 import { Head } from '../../web/head/head';
 import { gridForPreset } from '../../web/model/grid';
+import type { StrandArrays } from '../../web/model/hairArrays';
 import type { PresetName } from '../../web/model/presets';
-import type { StrandArrays } from '../../web/solver/protocol';
 import { loadSolverEngine } from '../../web/solver/wasmEngine';
 
 const validator = createRequire(import.meta.url)('gltf-validator') as {

@@ -4,7 +4,7 @@
 import { describe, expect, it } from 'vitest';
 import { scalpCoverage, VIEW_DIRECTIONS } from '../../web/head/hairCoverage';
 import { Head } from '../../web/head/head';
-import type { StrandArrays } from '../../web/solver/protocol';
+import type { StrandArrays } from '../../web/model/hairArrays';
 
 const head = Head.builtin();
 

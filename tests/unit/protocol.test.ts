@@ -1,9 +1,11 @@
 // The protocol's array layouts, checked element by element against hand-built expectations.
 import { describe, expect, it } from 'vitest';
+import { CurveKind } from '../../web/model/curveParams';
 import { packCurves } from '../../web/model/curveSet';
 import { gridForPreset, gridPointCount } from '../../web/model/grid';
+import { strandCount } from '../../web/model/hairArrays';
 import type { StyleCurve } from '../../web/model/session';
-import { CurveKind, resultTransferables, strandCount } from '../../web/solver/protocol';
+import { resultTransferables } from '../../web/solver/protocol';
 
 const vp = {
   position: [0, 0, 5] as [number, number, number],

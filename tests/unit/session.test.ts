@@ -1,7 +1,9 @@
 // The session model with every curve kind, packed into protocol.ts's CurveSet layout.
 import { describe, expect, it } from 'vitest';
+import { CurveKind } from '../../web/model/curveParams';
 import { packCurves, packHairOptions } from '../../web/model/curveSet';
 import type { HairDetail } from '../../web/model/detail';
+import { DETAIL_GROUP_STRIDE } from '../../web/model/detail';
 import { History } from '../../web/model/history';
 import {
   addCurve,
@@ -14,7 +16,6 @@ import {
   updateCurve,
 } from '../../web/model/session';
 import type { Vec3 } from '../../web/model/vec3';
-import { CurveKind, DETAIL_GROUP_STRIDE } from '../../web/solver/protocol';
 
 const vp = { position: [0, 0, 5] as Vec3, target: [0, 0, 0] as Vec3 };
 const stream: StreamCurve = {

@@ -1,9 +1,9 @@
 import { describe, expect, it } from 'vitest';
+import { CURVE_PARAMS } from '../../web/model/curveParams';
 import { emptySession, type SessionState } from '../../web/model/session';
 import { parseSession } from '../../web/model/sessionFile';
 import { decodeSessionLink, encodeSessionLink } from '../../web/model/sessionLink';
 import { SESSION_VERSION } from '../../web/model/sessionMigrations';
-import { CURVE_PARAMS } from '../../web/solver/protocol';
 
 const vp = {
   position: [0, 0, 6] as [number, number, number],

@@ -5,22 +5,21 @@
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { beforeAll, describe, expect, it } from 'vitest';
+import { CURVE_PARAMS } from '../../web/model/curveParams';
 import { packCurves } from '../../web/model/curveSet';
+import type { CurveSet, GridSpec } from '../../web/model/hairArrays';
 import type { StyleCurve } from '../../web/model/session';
 import { SolverError } from '../../web/solver/engine';
+import { loadRawSolver, loadSolverEngine } from '../../web/solver/wasmEngine';
 import {
-  CURVE_PARAMS,
   CURVE_SET_HEADER,
-  type CurveSet,
   GRID_INPUT,
-  type GridSpec,
   ITERATE_PROGRESS,
   type SolverErrorKind,
   STATS_OUTPUT,
   solverErrorKind,
   structLayout,
-} from '../../web/solver/protocol';
-import { loadRawSolver, loadSolverEngine } from '../../web/solver/wasmEngine';
+} from '../../web/solver/wasmStructs';
 
 const wasmPath = fileURLToPath(new URL('../../web/generated/hairsolver.wasm', import.meta.url));
 let wasmBinary: Uint8Array;

@@ -3,8 +3,9 @@
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { beforeAll, describe, expect, it } from 'vitest';
+import type { GrowthParams } from '../../web/model/growthParams';
+import type { CurveSet, GridSpec, ScalpMesh } from '../../web/model/hairArrays';
 import { SolverError } from '../../web/solver/engine';
-import type { CurveSet, GridSpec, GrowthParams, ScalpMesh } from '../../web/solver/protocol';
 import { loadRawSolver, loadSolverEngine } from '../../web/solver/wasmEngine';
 
 const wasmPath = fileURLToPath(new URL('../../web/generated/hairsolver.wasm', import.meta.url));

@@ -3,8 +3,8 @@
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { beforeAll, describe, expect, it } from 'vitest';
+import type { CurveSet, GridSpec, ScalpMesh } from '../../web/model/hairArrays';
 import { SolverError } from '../../web/solver/engine';
-import type { CurveSet, GridSpec, ScalpMesh } from '../../web/solver/protocol';
 import { loadSolverEngine } from '../../web/solver/wasmEngine';
 
 const wasmPath = fileURLToPath(new URL('../../web/generated/hairsolver.wasm', import.meta.url));

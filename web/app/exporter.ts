@@ -9,9 +9,10 @@ import type { UvSurface } from '../export/surfaceUv';
 import type { ExportHead } from '../export/types';
 import type { GroomSummary } from '../export/usdWriter';
 import { gridForSession } from '../model/grid';
+import type { ScalpMesh } from '../model/hairArrays';
 import { hangLength } from '../model/session';
 import { parseSession } from '../model/sessionFile';
-import type { ScalpMesh, SolverName } from '../solver/protocol';
+import type { SolverName } from '../solver/protocol';
 
 export interface ExporterDeps {
   editor: Editor;

@@ -3,8 +3,8 @@
 // each revision reached the screen (for benchmarks). Holds the view at interactive detail while
 // the hair is still settling.
 import type { Editor } from '../editor/editor';
+import type { StrandArrays } from '../model/hairArrays';
 import { changesHair } from '../model/sessionSchema';
-import type { StrandArrays } from '../solver/protocol';
 import type { SolveResult } from '../solver/solverClient';
 import type { StatusLine } from '../ui/status';
 import type { HairView } from '../viewer/hairView';

@@ -6,9 +6,9 @@
 
 import { curveSurface } from '../editor/curveSurface';
 import type { Editor } from '../editor/editor';
+import type { GridSpec } from '../model/hairArrays';
 import { defOf } from '../model/kinds';
 import { normalize, type Vec3 } from '../model/vec3';
-import type { GridSpec } from '../solver/protocol';
 import type { SolveResult } from '../solver/solverClient';
 import type { DisplayState } from '../ui/displayToggles';
 import { BoundingVolumeView } from '../viewer/boundingVolume';

@@ -8,6 +8,7 @@
 import type { Editor, EditorChange, StrokeInProgress } from '../editor/editor';
 import { packCurves, packHairOptions } from '../model/curveSet';
 import { FIELD_OMEGA, gridForSession, sameGrid } from '../model/grid';
+import type { GridSpec, ScalpMesh } from '../model/hairArrays';
 import { STROKE_KINDS } from '../model/kinds';
 import {
   hangLength,
@@ -18,8 +19,9 @@ import {
 } from '../model/session';
 import { needsSolve } from '../model/sessionSchema';
 import type { Vec3 } from '../model/vec3';
-import type { GridSpec, ScalpMesh, SolverErrorKind, SolverName } from '../solver/protocol';
+import type { SolverName } from '../solver/protocol';
 import { type SolveResult, SolverClient } from '../solver/solverClient';
+import type { SolverErrorKind } from '../solver/wasmStructs';
 
 /** Strands grown for a preview or a first look: at most this many, fewer when the view draws a
  *  sample (a slow GPU), never fewer than the minimum. */

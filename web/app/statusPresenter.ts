@@ -3,8 +3,9 @@
 // the details tooltip only. Progress never goes backwards within one solve.
 import type { EditorChange } from '../editor/editor';
 import { gridPointCount } from '../model/grid';
-import type { GridSpec, SolverErrorKind } from '../solver/protocol';
+import type { GridSpec } from '../model/hairArrays';
 import type { SolveResult } from '../solver/solverClient';
+import type { SolverErrorKind } from '../solver/wasmStructs';
 import type { StatusLine } from '../ui/status';
 import type { BusyPhase } from './solverBridge';
 

@@ -11,9 +11,9 @@ import { readFileSync, statSync } from 'node:fs';
 import { buildHead } from '../head/buildHead';
 import type { HeadMesh } from '../head/head';
 import { sessionScalpMask } from '../head/scalpPaint';
+import type { ScalpMesh } from '../model/hairArrays';
 import type { SessionState } from '../model/session';
 import type { HeadFileData } from '../model/sessionFile';
-import type { ScalpMesh } from '../solver/protocol';
 import { CliError } from './errors';
 
 /** Largest head file --head reads (bytes). */

@@ -2,8 +2,9 @@
 // function from (session, command) to the next session, the selection after it and a sentence
 // for the status line. The Editor (editor.ts) runs them through one path: history, then notify.
 
-import { defaultParams } from '../model/curveParams';
+import { CURVE_PARAMS, type CurveParamSpec, defaultParams } from '../model/curveParams';
 import { detailIsOn, type HairDetail } from '../model/detail';
+import type { GrowthParams } from '../model/growthParams';
 import { defOf } from '../model/kinds';
 import { lengthenSession } from '../model/lengthen';
 import {
@@ -32,7 +33,6 @@ import {
 import { parseSession } from '../model/sessionFile';
 import type { SurfaceMode } from '../model/supportingSurface';
 import type { Vec3 } from '../model/vec3';
-import { CURVE_PARAMS, type CurveParamSpec, type GrowthParams } from '../solver/protocol';
 
 /** A new curve as a tool makes it: everything but its id (the editor assigns it). */
 export type NewCurve = StyleCurve extends infer C

@@ -1,8 +1,11 @@
 // Messages between the app and the export worker. The worker grows the session's full hair from
 // scratch (growSession.ts, the same pipeline as `hairsketch grow`) and streams the file back in
 // chunks (transferred), so a 100K-strand export never blocks the page or builds one giant string.
+
+import type { GridSpec, ScalpMesh } from '../model/hairArrays';
 import type { SessionState } from '../model/session';
-import type { GridSpec, ScalpMesh, SolverErrorKind, SolverName } from '../solver/protocol';
+import type { SolverName } from '../solver/protocol';
+import type { SolverErrorKind } from '../solver/wasmStructs';
 import type { ExportFormat } from './formats';
 import type { UvSurface } from './surfaceUv';
 import type { ExportHead } from './types';

@@ -18,9 +18,10 @@
 //  - root UV: on a head with its own UVs (a loaded head whose file has them), those UVs at the
 //    closest point of the head to the root (surfaceUv.ts); otherwise the scalp layout
 //    (scalpUv.ts) at the root: the built-in head's UVs, a projection on a loaded head.
+
+import type { StrandArrays } from '../model/hairArrays';
 import { defOf } from '../model/kinds';
 import type { SessionState, StyleCurve } from '../model/session';
-import type { StrandArrays } from '../solver/protocol';
 import { scalpUvAt } from './scalpUv';
 import { type ExportStrands, strandHash } from './strandsForExport';
 import { SurfaceUvLookup, type UvSurface } from './surfaceUv';

@@ -8,10 +8,11 @@
 // session's growth parameters (the strand cap replaced when the caller gives one).
 import { packCurves, packHairOptions } from '../model/curveSet';
 import { FIELD_OMEGA } from '../model/grid';
+import type { GridSpec, ScalpMesh, StrandArrays } from '../model/hairArrays';
 import type { SessionState } from '../model/session';
 import { engineSettings } from '../model/sessionSchema';
 import { type SolverEngine, SolverError } from '../solver/engine';
-import type { GridSpec, ScalpMesh, SolverName, StrandArrays } from '../solver/protocol';
+import type { SolverName } from '../solver/protocol';
 import { avoidanceOptions } from '../solver/workerLogic';
 
 /** Estimated relative field error at which the field counts as converged (as the app). */

@@ -7,8 +7,9 @@
 // colours use the same values): session.hairColor (#rrggbb, sRGB) varied per strand by
 // ±STRAND_VALUE_VARIATION in value (the sRGB channels scaled by one factor, clamped to 1), then
 // decoded with the sRGB transfer function.
+
+import type { StrandArrays } from '../model/hairArrays';
 import { DEFAULT_HAIR_COLOR, type SessionState } from '../model/session';
-import type { StrandArrays } from '../solver/protocol';
 import { MAX_POINTS_PER_STRAND, ROOT_WIDTH, TIP_WIDTH } from './types';
 
 /** Per-strand brightness variation: the value (HSV V) of each strand's colour is the session's

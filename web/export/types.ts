@@ -2,8 +2,9 @@
 // so 100K strands never make one giant string; the formats are in formats.ts). The same code runs
 // in the browser's export worker and in `hairsketch grow` under Node, so the same session gives
 // the same bytes.
+
+import type { StrandArrays } from '../model/hairArrays';
 import type { SessionState } from '../model/session';
-import type { StrandArrays } from '../solver/protocol';
 import type { UvSurface } from './surfaceUv';
 import type { GroomSummary } from './usdWriter';
 

@@ -5,8 +5,8 @@
 // not hide the scalp around it, hair combed over it does (many strands). Segments are binned on
 // the plane across the rays, so each ray looks only at the segments near it.
 
+import type { StrandArrays } from '../model/hairArrays';
 import type { Vec3 } from '../model/vec3';
-import type { StrandArrays } from '../solver/protocol';
 import type { Head } from './head';
 
 export interface CoverageOptions {

@@ -10,8 +10,8 @@
 // closest point faces away.
 import * as THREE from 'three';
 import { MeshBVH } from 'three-mesh-bvh';
+import type { ScalpMesh } from '../model/hairArrays';
 import { sphericalDirection, type Vec3 } from '../model/vec3';
-import type { ScalpMesh } from '../solver/protocol';
 import { buildHead } from './buildHead';
 import { headSdf } from './headSdf';
 

@@ -2,7 +2,7 @@
 // precompute of hairLighting.ts towards the fixed key light, timed. ResultLighting keeps one
 // HairLightingContext per head and solver grid (the worker's 'init'), so every result reuses
 // what depends only on the head; resultLighting computes one result from scratch.
-import type { GridSpec, HairLightingArrays, ScalpMesh, StrandArrays } from '../solver/protocol';
+import type { GridSpec, HairLightingArrays, ScalpMesh, StrandArrays } from '../model/hairArrays';
 import { computeHairLighting, lightingGridFor } from './hairLighting';
 import { HairLightingContext } from './hairLightingContext';
 import { KEY_LIGHT_DIRECTION } from './keyLight';

@@ -1,6 +1,7 @@
-// The flat arrays a session becomes for the solver (the grid, the curves, the hair options) and
-// the strands it grows. solver/protocol.ts carries them between the app and the worker (and
-// re-exports them); the index formula of every array is on its field.
+// The flat arrays a session becomes for the solver (the grid, the curves, the hair options, the
+// head's scalp) and what comes back (the strands, the field, the constraints, the lighting, the
+// view's vertex attributes). solver/protocol.ts carries them between the app and the worker; the
+// index formula of every array is on its field.
 import type { SessionSettingValues } from './sessionSchema';
 
 /** Uniform grid over the bounding volume (method S1.2). Point (i, j, k) has index
@@ -71,4 +72,59 @@ export interface StrandArrays {
 /** Number of strands in a StrandArrays. */
 export function strandCount(s: StrandArrays): number {
   return Math.max(0, s.strandStart.length - 1);
+}
+
+/** The head as the solver needs it: triangles with a scalp flag (method S1.1). */
+export interface ScalpMesh {
+  positions: Float32Array; // positions[3 * vertex + axis]
+  indices: Uint32Array; // indices[3 * triangle + corner]
+  scalp: Uint8Array; // scalp[triangle] = 1 when the triangle is part of the scalp
+  center: [number, number, number]; // origin of the spherical root parameterisation (S5.1)
+}
+
+/** Lighting precomputed for a hair revision towards the fixed key light
+ *  (web/lighting/hairLighting.ts, web/lighting/keyLight.ts KEY_LIGHT_DIRECTION). */
+export interface HairLightingArrays {
+  /** 2 per strand point (StrandArrays point order): strand[2 * point] = transmittance towards
+   *  the light through hair and head, strand[2 * point + 1] = ambient occlusion (1 = open);
+   *  both in [0, 1]. */
+  strand: Float32Array;
+  /** 1 per head vertex (ScalpMesh vertex order): transmittance through the hair towards the
+   *  light, in [0, 1] (the hair's shadow on scalp and face). */
+  head: Float32Array;
+  ms: number; // time the precompute took in the worker
+}
+
+/** The solved field, one vector per grid point. */
+export interface FieldArrays {
+  vectors: Float32Array; // vectors[3 * p + axis], p = grid index
+}
+
+/** Display colour of a constraint (paper Figs. 2, 4, 5; solver-cpp/src/constraint_colour.hpp). */
+export const ConstraintColour = { blue: 0, red: 1, purple: 2, green: 3, extra: 4 } as const;
+export type ConstraintColourName = keyof typeof ConstraintColour;
+
+/** The constraint set derived from the curves (method S2.3). */
+export interface ConstraintArrays {
+  index: Int32Array; // index[c] = grid point p of constraint c (sorted, unique)
+  target: Float32Array; // target[3 * c + axis] = c_p
+  /** colour[c]: ConstraintColour of constraint c (same order as index): 0 blue (stream-curve
+   *  tangents, dividing-curve Gaussian profile, ponytail spine), 1 red (a stream curve's fading
+   *  extension, the dividing-curve discontinuity), 2 purple (ponytail cross sections),
+   *  3 green (ponytail centripetal ring), 4 extra (stated directly, e.g. scalp avoidance). */
+  colour: Uint8Array;
+}
+
+/** The strands' vertex attributes for the view's line geometry (viewer/strandAttributes.ts
+ *  builds them: the worker for the final hair, the page for lighter hair). Per point of
+ *  StrandArrays (strand s owns points strandStart[s] .. strandStart[s + 1] − 1). */
+export interface StrandVertexArrays {
+  pointCount: number;
+  tangent: Int8Array; // tangent[3 * point + axis]: unit tangent × 127 (central differences)
+  along: Uint8Array; // along[point]: 0 at the root … 255 at the tip
+  random: Uint8Array; // random[4 * point + k]: the strand's value, hue, length look, highlight noise × 255
+  light: Uint8Array; // light[2 * point + k]: lighting.strand (transmittance, occlusion) × 255
+  box: Float32Array; // min x, y, z, max x, y, z of the points; empty without points
+  index: Uint32Array; // index[2 * segment + end]: point indices, strands in level-of-detail order
+  lodCounts: Uint32Array; // lodCounts[g]: index entries of the first g of the 64 LOD groups
 }

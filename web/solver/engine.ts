@@ -1,18 +1,18 @@
 // The solver engine as the worker sees it: one stateful object over the wasm module.
 // Implemented by wasmEngine.ts; the same object runs in the browser worker and under Node.
+
+import type { GrowthParams } from '../model/growthParams';
 import type {
   ConstraintArrays,
   CurveSet,
   DetailArrays,
   FieldArrays,
   GridSpec,
-  GrowthParams,
   ScalpMesh,
-  SolverErrorKind,
-  SolverName,
-  SolveStats,
   StrandArrays,
-} from './protocol';
+} from '../model/hairArrays';
+import type { SolverName, SolveStats } from './protocol';
+import type { SolverErrorKind } from './wasmStructs';
 
 export interface SolverEngine {
   /** Analyse the grid and create the solver. Throws SolverError on bad input. */

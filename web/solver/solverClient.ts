@@ -16,15 +16,10 @@
 // The solved field is copied out of the worker only while `wantField` is set (the field display
 // is on); a cached result without it does not answer a request that wants it.
 import { contentKey, hairRequestKey } from '../model/curveSet';
-import type {
-  CurveSet,
-  FromWorker,
-  GrowthParams,
-  HairOptions,
-  ScalpMesh,
-  SolverErrorKind,
-  ToWorker,
-} from './protocol';
+import type { GrowthParams } from '../model/growthParams';
+import type { CurveSet, HairOptions, ScalpMesh } from '../model/hairArrays';
+import type { FromWorker, ToWorker } from './protocol';
+import type { SolverErrorKind } from './wasmStructs';
 
 export type InitMessage = Extract<ToWorker, { type: 'init' }>;
 export type SolveResult = Extract<FromWorker, { type: 'result' }>;

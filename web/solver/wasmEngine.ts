@@ -6,27 +6,19 @@
 // The module's loading is in wasmModule.ts, the boundary's data movement in wasmMemory.ts, the
 // raw solver API in wasmRawSolver.ts.
 import type { HairSolverModule } from '../generated/hairsolver.mjs';
+import { DETAIL_GROUP_STRIDE } from '../model/detail';
+import type { GrowthParams } from '../model/growthParams';
+import type {
+  ConstraintArrays,
+  CurveSet,
+  DetailArrays,
+  FieldArrays,
+  GridSpec,
+  ScalpMesh,
+  StrandArrays,
+} from '../model/hairArrays';
 import { type IterateProgress, type SolverEngine, SolverError } from './engine';
-import {
-  AVOID_INPUT,
-  type ConstraintArrays,
-  CURVE_SET_HEADER,
-  type CurveSet,
-  DETAIL_GROUP_STRIDE,
-  type DetailArrays,
-  type FieldArrays,
-  GRID_INPUT,
-  GROWTH_INPUT,
-  type GridSpec,
-  type GrowthParams,
-  ITERATE_PROGRESS,
-  SCALP_INPUT,
-  type ScalpMesh,
-  type SolverName,
-  type SolveStats,
-  STATS_OUTPUT,
-  type StrandArrays,
-} from './protocol';
+import type { SolverName, SolveStats } from './protocol';
 import {
   callOut,
   callWith,
@@ -43,6 +35,15 @@ import {
 } from './wasmMemory';
 import { instantiate, type LoadOptions, moduleLabel } from './wasmModule';
 import { toRawStats } from './wasmRawSolver';
+import {
+  AVOID_INPUT,
+  CURVE_SET_HEADER,
+  GRID_INPUT,
+  GROWTH_INPUT,
+  ITERATE_PROGRESS,
+  SCALP_INPUT,
+  STATS_OUTPUT,
+} from './wasmStructs';
 
 export {
   boundaryLayoutMismatches,

@@ -3,7 +3,7 @@
 // (a failure throws SolverError with its kind), and typed-array copies out of wasm memory.
 import type { HairSolverModule } from '../generated/hairsolver.mjs';
 import { SolverError } from './engine';
-import { type StructLayout, solverErrorKind } from './protocol';
+import { type StructLayout, solverErrorKind } from './wasmStructs';
 
 /** Copies a typed array into fresh wasm memory; returns the pointer (free it). */
 export function copyIn(mod: HairSolverModule, arr: ArrayBufferView): number {

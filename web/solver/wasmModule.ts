@@ -5,8 +5,8 @@ import createHairSolver, {
   type HairSolverModuleOptions,
 } from '../generated/hairsolver.mjs';
 import { SolverError } from './engine';
-import { BOUNDARY_STRUCTS, type StructLayout } from './protocol';
 import { i32, withScratch } from './wasmMemory';
+import { BOUNDARY_STRUCTS, type StructLayout } from './wasmStructs';
 
 export interface LoadOptions {
   /** The .wasm bytes (Node: read from web/generated/hairsolver.wasm, or hairsolver-mt.wasm with

@@ -2,7 +2,6 @@
 // in, the field out (`hairsketch solve`, research pipelines).
 import type { HairSolverModule } from '../generated/hairsolver.mjs';
 import { SolverError } from './engine';
-import { CONSTRAINT_LIST, GRID_INPUT, STATS_OUTPUT } from './protocol';
 import {
   callOut,
   callWith,
@@ -14,6 +13,7 @@ import {
   withScratch,
 } from './wasmMemory';
 import { instantiate, type LoadOptions } from './wasmModule';
+import { CONSTRAINT_LIST, GRID_INPUT, STATS_OUTPUT } from './wasmStructs';
 
 /** Stats of the raw solver API. */
 export interface RawSolveStats {

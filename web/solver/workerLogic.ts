@@ -15,21 +15,19 @@
 // message moves the engine to another grid in place (the head stays).
 import { ResultLighting } from '../lighting/resultLighting';
 import { structuredKey } from '../model/curveSet';
+import type { GrowthParams } from '../model/growthParams';
+import {
+  type ConstraintArrays,
+  ConstraintColour,
+  type GridSpec,
+  type ScalpMesh,
+} from '../model/hairArrays';
 import { engineSettings } from '../model/sessionSchema';
 import { everyOtherPoint } from '../model/strandSubsample';
 import { lineAttributes } from '../viewer/strandAttributes';
 import { type IterateProgress, type SolverEngine, SolverError } from './engine';
-import {
-  type ConstraintArrays,
-  ConstraintColour,
-  type FromWorker,
-  type GridSpec,
-  type GrowthParams,
-  type ScalpMesh,
-  type SolverErrorKind,
-  type SolverName,
-  type ToWorker,
-} from './protocol';
+import type { FromWorker, SolverName, ToWorker } from './protocol';
+import type { SolverErrorKind } from './wasmStructs';
 
 export type Post = (msg: FromWorker) => void;
 type SolveMsg = Extract<ToWorker, { type: 'solve' }>;

@@ -3,9 +3,10 @@
 // the panel, world units in the session), plus "Extend past the
 // end" for every curve but dividing ones, and "Braid the tail" for a ponytail. Every change is reported as one edit (the app records it
 // in History).
+
+import { CURVE_PARAMS, type CurveParamSpec } from '../model/curveParams';
 import { defOf, extendsPastEnd } from '../model/kinds';
 import type { StyleCurve } from '../model/session';
-import { CURVE_PARAMS, type CurveParamSpec } from '../solver/protocol';
 import { numberInput, type Say } from './numberInput';
 
 /** The fields a panel edit changes: scalar parameters by name (session units), or `extend`. */

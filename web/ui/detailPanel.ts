@@ -12,8 +12,8 @@ import {
   LENGTH_JITTER,
 } from '../model/detail';
 import { MAX_HAIR_LENGTH } from '../model/grid';
+import type { GrowthParams } from '../model/growthParams';
 import { DEFAULT_GROWTH, type SessionState, type StyleCurve } from '../model/session';
-import type { GrowthParams } from '../solver/protocol';
 import { numberInput, type Say } from './numberInput';
 
 /** Roots the built-in head's scalp gives at 1° × 1° sampling (S5.1): the strand count scales

@@ -1,7 +1,7 @@
 // The bounding volume (method S1.2, S6.2): the grid's box, from its first to its last grid point,
 // as a wireframe of 12 edges.
 import * as THREE from 'three';
-import type { GridSpec } from '../solver/protocol';
+import type { GridSpec } from '../model/hairArrays';
 import { flatGeometry } from './displayMaterials';
 import { overlayLineMaterial, setOverlayGeometry, withHiddenTwin } from './overlayStyle';
 

@@ -4,8 +4,8 @@
 import * as THREE from 'three';
 import { makeHairCards } from '../export/cardsWriter';
 import { strandsForExport } from '../export/strandsForExport';
+import type { StrandArrays } from '../model/hairArrays';
 import type { SessionState } from '../model/session';
-import type { StrandArrays } from '../solver/protocol';
 
 export interface CardsObject {
   object: THREE.Mesh;

@@ -3,7 +3,7 @@
 // The segment's length is proportional to the target's magnitude (the red 0.3 constraints of a
 // dividing curve are short), and it fades towards white at its tip to show the direction.
 import * as THREE from 'three';
-import type { ConstraintArrays, GridSpec } from '../solver/protocol';
+import type { ConstraintArrays, GridSpec } from '../model/hairArrays';
 import { flatGeometry } from './displayMaterials';
 import {
   overlayVertexColourLines,

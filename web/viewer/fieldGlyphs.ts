@@ -4,7 +4,7 @@
 // `maxGlyphs` of them (an even sample when there are more), so the display stays light on a
 // software rasteriser. Each segment runs from the point along v, darker at its root.
 import * as THREE from 'three';
-import type { GridSpec } from '../solver/protocol';
+import type { GridSpec } from '../model/hairArrays';
 import { flatGeometry } from './displayMaterials';
 import { overlayVertexColourLines, setOverlayGeometry, withHiddenTwin } from './overlayStyle';
 

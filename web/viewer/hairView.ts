@@ -6,8 +6,8 @@
 // hair's shadow (per-vertex transmittance, headMaterial.ts).
 import * as THREE from 'three';
 import type { GrowthParams } from '../model/growthParams';
+import type { HairLightingArrays, StrandArrays } from '../model/hairArrays';
 import { DEFAULT_HAIR_COLOR } from '../model/session';
-import type { HairLightingArrays, StrandArrays } from '../solver/protocol';
 import { buildCardsObject } from './cardsView';
 import { DeepOpacityMaps } from './deepOpacity';
 import { setHeadHairShadow } from './headMaterial';

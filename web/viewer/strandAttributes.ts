@@ -9,7 +9,7 @@
 //                        Uint8 ÷ 255; 255, 255 without lighting
 // Level of detail: the index lists strands interleaved (stride LOD_GROUPS, groups in bit-reversed
 // order), so any prefix of the groups is an even sample of the whole head of hair.
-import type { StrandVertexArrays } from '../solver/protocol';
+import type { StrandVertexArrays } from '../model/hairArrays';
 
 /** Strands are drawn in this many interleaved groups (see buildStrandGeometry). */
 export const LOD_GROUPS = 64;

@@ -15,8 +15,8 @@
 // opacity maps: deepOpacity.ts).
 import * as THREE from 'three';
 import { FILL_LIGHT_DIRECTION, KEY_LIGHT_DIRECTION } from '../lighting/keyLight';
+import { strandCount } from '../model/hairArrays';
 import { DEFAULT_HAIR_COLOR } from '../model/session';
-import { strandCount } from '../solver/protocol';
 import {
   type LineAttributes,
   lineAttributes,
