@@ -23,7 +23,7 @@ const CSP = [
 // The embeddable viewer (embed.html) may be framed by any site; every other page refuses.
 const EMBED_CSP = CSP.replace("frame-ancestors 'none'", 'frame-ancestors *');
 // Cross-origin isolation (COOP + COEP): SharedArrayBuffer, hence the threaded solver module
-// (web/solver/worker.ts). Everything the app loads is same-origin, so require-corp costs nothing.
+// (web/worker/worker.ts). Everything the app loads is same-origin, so require-corp costs nothing.
 // HAIRSKETCH_NO_ISOLATION=1 serves without them (the e2e fallback project: single-threaded).
 const isolation: Record<string, string> =
   process.env.HAIRSKETCH_NO_ISOLATION === '1'

@@ -13,7 +13,7 @@ import type { StrandArrays } from '../../web/model/hairArrays';
 import type { SessionState } from '../../web/model/session';
 import type { FromWorker } from '../../web/solver/protocol';
 import { loadSolverEngine } from '../../web/solver/wasmEngine';
-import { DEFAULT_SCHEDULER, WorkerLogic } from '../../web/solver/workerLogic';
+import { DEFAULT_SCHEDULER, WorkerLogic } from '../../web/worker/workerLogic';
 
 const wasmPath = fileURLToPath(new URL('../../web/generated/hairsolver.wasm', import.meta.url));
 let wasmBinary: Uint8Array;

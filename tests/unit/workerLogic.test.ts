@@ -9,8 +9,8 @@ import { DEFAULT_GROWTH } from '../../web/model/session';
 import { type IterateProgress, type SolverEngine, SolverError } from '../../web/solver/engine';
 import type { FromWorker, ToWorker } from '../../web/solver/protocol';
 import { loadSolverEngine } from '../../web/solver/wasmEngine';
-import { DEFAULT_SCHEDULER, WorkerLogic } from '../../web/solver/workerLogic';
 import { lineAttributes } from '../../web/viewer/strandAttributes';
+import { DEFAULT_SCHEDULER, WorkerLogic } from '../../web/worker/workerLogic';
 
 /** An engine whose error falls by 10x per iteration from 1 (so 1e-6 takes 6 iterations). */
 function scriptedEngine(log: string[], colours = new Uint8Array([0, 1, 3])): SolverEngine {

@@ -68,7 +68,7 @@ export class SolverBridge {
   ) {
     this.client = new SolverClient(
       opts.makeWorker ??
-        (() => new Worker(new URL('../solver/worker.ts', import.meta.url), { type: 'module' })),
+        (() => new Worker(new URL('../worker/worker.ts', import.meta.url), { type: 'module' })),
       { type: 'init', grid: opts.grid, omega: FIELD_OMEGA, solver: opts.solver, scalp: opts.scalp },
       {
         onBusy: (phase, fraction) => this.each((l) => l.busy?.(phase, fraction, this.previewing)),

@@ -111,7 +111,7 @@ export async function startEmbed(): Promise<void> {
   const grid = gridForSession(s.grid, s.curves, bounds, hangLength(s));
   say('loading', 'Growing the hair…');
   const client = new SolverClient(
-    () => new Worker(new URL('../solver/worker.ts', import.meta.url), { type: 'module' }),
+    () => new Worker(new URL('../worker/worker.ts', import.meta.url), { type: 'module' }),
     { type: 'init', grid, omega: FIELD_OMEGA, solver: 'fast', scalp: head.scalpMesh() },
     {
       onBusy: () => {},

@@ -2,7 +2,7 @@
 // `hairsketch grow` both call it, so the same session, grid, solver and strand cap give the same
 // strands (byte for byte) in both.
 //
-// It does what the app does for a full solve (app/solverBridge.ts, solver/workerLogic.ts): the
+// It does what the app does for a full solve (app/solverBridge.ts, worker/workerLogic.ts): the
 // grid with omega 100, the scalp, the session's curves and avoidance constraints, iterations from
 // a cold start until the estimated field error is below the tolerance, then growth with the
 // session's growth parameters (the strand cap replaced when the caller gives one).
@@ -11,9 +11,9 @@ import { FIELD_OMEGA } from '../model/grid';
 import type { GridSpec, ScalpMesh, StrandArrays } from '../model/hairArrays';
 import type { SessionState } from '../model/session';
 import { engineSettings } from '../model/sessionSchema';
+import { avoidanceOptions } from '../solver/avoidance';
 import { type SolverEngine, SolverError } from '../solver/engine';
 import type { SolverName } from '../solver/protocol';
-import { avoidanceOptions } from '../solver/workerLogic';
 
 /** Estimated relative field error at which the field counts as converged (as the app). */
 export const GROW_TOLERANCE = 1e-6;

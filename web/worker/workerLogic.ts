@@ -24,30 +24,15 @@ import {
 } from '../model/hairArrays';
 import { engineSettings } from '../model/sessionSchema';
 import { everyOtherPoint } from '../model/strandSubsample';
+import { avoidanceOptions } from '../solver/avoidance';
+import { type IterateProgress, type SolverEngine, SolverError } from '../solver/engine';
+import type { FromWorker, SolverName, ToWorker } from '../solver/protocol';
+import type { SolverErrorKind } from '../solver/wasmStructs';
 import { lineAttributes } from '../viewer/strandAttributes';
-import { type IterateProgress, type SolverEngine, SolverError } from './engine';
-import type { FromWorker, SolverName, ToWorker } from './protocol';
-import type { SolverErrorKind } from './wasmStructs';
 
 export type Post = (msg: FromWorker) => void;
 type SolveMsg = Extract<ToWorker, { type: 'solve' }>;
 type Job = SolveMsg;
-
-/** Scalp avoidance as the app applies it (S4.7): grid points within 1.5 grid steps of the scalp
- *  (inside it too: growth interpolates them just outside), turned along the surface where they
- *  point inwards; the target keeps the field's length up to 0.3 (never longer: avoidance turns
- *  hair, it does not make hair where the curves asked for none), and grid points where the
- *  field is weaker than the growth threshold get none. Only the scalp is measured against,
- *  so no hair is pulled down over the face. */
-export function avoidanceOptions(growth: GrowthParams) {
-  return {
-    band: 1.5,
-    magnitude: 0.3,
-    wholeHead: false,
-    insideToo: true,
-    minField: growth.minMagnitude,
-  };
-}
 
 export interface SchedulerOptions {
   tolerance: number; // converged when the estimated relative field error is below this

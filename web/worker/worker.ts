@@ -8,13 +8,13 @@ import wasmUrl from '../generated/hairsolver.wasm?url';
 import mtScriptUrl from '../generated/hairsolver-mt.mjs?url';
 import mtWasmUrl from '../generated/hairsolver-mt.wasm?url';
 import mtWorkerUrl from '../generated/hairsolver-mt.worker.js?url';
-import { type FromWorker, resultTransferables, type ToWorker } from './protocol';
+import { type FromWorker, resultTransferables, type ToWorker } from '../solver/protocol';
 import {
   chooseThreads,
   loadSolverEngine,
   type ModuleFactory,
   type WasmSolverEngine,
-} from './wasmEngine';
+} from '../solver/wasmEngine';
 import { DEFAULT_SCHEDULER, WorkerLogic } from './workerLogic';
 
 const scope = self as unknown as {
