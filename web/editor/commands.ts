@@ -152,236 +152,244 @@ export function applyCommand(s: SessionState, cmd: Command): CommandResult {
   return { ...r, session: next };
 }
 
-function applyExact(s: SessionState, cmd: Command): CommandResult {
-  switch (cmd.kind) {
-    case 'addCurve': {
-      const id = nextCurveId(s);
-      const curve = { ...cmd.curve, id } as StyleCurve;
-      const plane = s.symmetry ?? X_PLANE;
-      if (cmd.mirror && !isSelfMirror(curve, plane)) {
-        const twinId = `c${Number(id.slice(1)) + 1}`;
-        const first = { ...curve, mirror: twinId } as StyleCurve;
-        const twin = mirrorCurve(first, twinId, id, plane);
-        return {
-          session: addCurve(addCurve(s, first), twin),
-          selectedId: id,
-          message: `Added ${cmd.what.replace('{id}', id)} and its mirror ${twinId}.`,
-        };
-      }
+/** One handler per command kind: the session after it, and what the status line says. */
+const HANDLERS: {
+  readonly [K in Command['kind']]: (
+    s: SessionState,
+    cmd: Extract<Command, { kind: K }>,
+  ) => CommandResult;
+} = {
+  addCurve(s, cmd) {
+    const id = nextCurveId(s);
+    const curve = { ...cmd.curve, id } as StyleCurve;
+    const plane = s.symmetry ?? X_PLANE;
+    if (cmd.mirror && !isSelfMirror(curve, plane)) {
+      const twinId = `c${Number(id.slice(1)) + 1}`;
+      const first = { ...curve, mirror: twinId } as StyleCurve;
+      const twin = mirrorCurve(first, twinId, id, plane);
       return {
-        session: addCurve(s, curve),
+        session: addCurve(addCurve(s, first), twin),
         selectedId: id,
-        message: `Added ${cmd.what.replace('{id}', id)}.`,
+        message: `Added ${cmd.what.replace('{id}', id)} and its mirror ${twinId}.`,
       };
     }
-    case 'deleteCurve': {
-      const next = deleteCurve(s, cmd.id);
-      if (next === s) return { session: s, message: `No curve ${cmd.id} to delete.` };
-      // the selection drops only if it was this curve (the editor drops missing selections)
-      const twin = findCurve(s, cmd.id)?.mirror;
+    return {
+      session: addCurve(s, curve),
+      selectedId: id,
+      message: `Added ${cmd.what.replace('{id}', id)}.`,
+    };
+  },
+  deleteCurve(s, cmd) {
+    const next = deleteCurve(s, cmd.id);
+    if (next === s) return { session: s, message: `No curve ${cmd.id} to delete.` };
+    // the selection drops only if it was this curve (the editor drops missing selections)
+    const twin = findCurve(s, cmd.id)?.mirror;
+    return {
+      session: next,
+      message: twin
+        ? `Deleted curve ${cmd.id} and its mirror ${twin}.`
+        : `Deleted curve ${cmd.id}.`,
+    };
+  },
+  hintEdit(s, cmd) {
+    const c = findCurve(s, cmd.id);
+    if (!c || !defOf(c).surface(c)) return { session: s, message: `No curve ${cmd.id} to edit.` };
+    const def = defOf(c);
+    const next = def.respine ? def.respine(c, cmd.points) : { ...c, points: cmd.points };
+    if (!next)
       return {
-        session: next,
-        message: twin
-          ? `Deleted curve ${cmd.id} and its mirror ${twin}.`
-          : `Deleted curve ${cmd.id}.`,
+        session: s,
+        message: `Hint: ${cmd.op} would leave the ${c.type} without circles — nothing changed.`,
       };
-    }
-    case 'hintEdit': {
-      const c = findCurve(s, cmd.id);
-      if (!c || !defOf(c).surface(c)) return { session: s, message: `No curve ${cmd.id} to edit.` };
-      const def = defOf(c);
-      const next = def.respine ? def.respine(c, cmd.points) : { ...c, points: cmd.points };
-      if (!next)
-        return {
-          session: s,
-          message: `Hint: ${cmd.op} would leave the ${c.type} without circles — nothing changed.`,
-        };
-      return {
-        session: updateCurve(s, c.id, () => next),
-        message: `Hint: ${cmd.op} — ${c.id} now has ${cmd.points.length} points.`,
-      };
-    }
-    case 'setTilt': {
-      const c = findCurve(s, cmd.id);
-      if (c?.type !== 'dividing') return { session: s, message: `No dividing curve ${cmd.id}.` };
-      return {
-        session: updateCurve(s, c.id, () => ({ ...c, [cmd.end]: cmd.alpha })),
-        message: `Tilt: ${cmd.end} of ${c.id} = ${deg(cmd.alpha)}° (stroke on the ${cmd.side > 0 ? '+x' : '−x'} side).`,
-      };
-    }
-    case 'braidTail': {
-      const c = findCurve(s, cmd.id);
-      if (c?.type !== 'ponytail') return { session: s, message: `No ponytail ${cmd.id}.` };
-      const braid = braidOfPonytail(c);
-      return {
-        session: updateCurve(s, c.id, () => braid),
-        selectedId: c.id,
-        message: `Braided the tail of ${c.id}: a braid ${Math.round(braid.width * 100) / 10} cm wide.`,
-      };
-    }
-    case 'patchCurve': {
-      const c = findCurve(s, cmd.id);
-      if (!c) return { session: s, message: `No curve ${cmd.id}.` };
-      const patch: Record<string, number | boolean> = {};
-      for (const [k, v] of Object.entries(cmd.patch)) {
-        const spec = (CURVE_PARAMS[c.type] as readonly CurveParamSpec[]).find((p) => p.name === k);
-        if (spec) {
-          if (typeof v !== 'number' || !Number.isFinite(v) || v < spec.min || v > spec.max)
-            return {
-              session: s,
-              message: `${spec.label} must be a number from ${spec.min} to ${spec.max}: nothing changed.`,
-            };
-          patch[k] = v;
-        } else if (k === 'extend' && defOf(c).extends && typeof v === 'boolean') {
-          patch[k] = v;
-        }
+    return {
+      session: updateCurve(s, c.id, () => next),
+      message: `Hint: ${cmd.op} — ${c.id} now has ${cmd.points.length} points.`,
+    };
+  },
+  setTilt(s, cmd) {
+    const c = findCurve(s, cmd.id);
+    if (c?.type !== 'dividing') return { session: s, message: `No dividing curve ${cmd.id}.` };
+    return {
+      session: updateCurve(s, c.id, () => ({ ...c, [cmd.end]: cmd.alpha })),
+      message: `Tilt: ${cmd.end} of ${c.id} = ${deg(cmd.alpha)}° (stroke on the ${cmd.side > 0 ? '+x' : '−x'} side).`,
+    };
+  },
+  braidTail(s, cmd) {
+    const c = findCurve(s, cmd.id);
+    if (c?.type !== 'ponytail') return { session: s, message: `No ponytail ${cmd.id}.` };
+    const braid = braidOfPonytail(c);
+    return {
+      session: updateCurve(s, c.id, () => braid),
+      selectedId: c.id,
+      message: `Braided the tail of ${c.id}: a braid ${Math.round(braid.width * 100) / 10} cm wide.`,
+    };
+  },
+  patchCurve(s, cmd) {
+    const c = findCurve(s, cmd.id);
+    if (!c) return { session: s, message: `No curve ${cmd.id}.` };
+    const patch: Record<string, number | boolean> = {};
+    for (const [k, v] of Object.entries(cmd.patch)) {
+      const spec = (CURVE_PARAMS[c.type] as readonly CurveParamSpec[]).find((p) => p.name === k);
+      if (spec) {
+        if (typeof v !== 'number' || !Number.isFinite(v) || v < spec.min || v > spec.max)
+          return {
+            session: s,
+            message: `${spec.label} must be a number from ${spec.min} to ${spec.max}: nothing changed.`,
+          };
+        patch[k] = v;
+      } else if (k === 'extend' && defOf(c).extends && typeof v === 'boolean') {
+        patch[k] = v;
       }
-      const keys = Object.keys(patch);
-      if (keys.length === 0) return { session: s, message: `Nothing to change on ${c.id}.` };
-      return {
-        session: updateCurve(s, c.id, () => ({ ...c, ...patch }) as StyleCurve),
-        message: `Changed ${keys.join(', ')} of ${c.id}.`,
-      };
     }
-    case 'setViewpoint': {
-      const c = findCurve(s, cmd.id);
-      if (!c) return { session: s, message: `No curve ${cmd.id}.` };
-      return {
-        session: updateCurve(s, c.id, () => ({ ...c, viewpoint: cmd.viewpoint })),
-        message: `Viewpoint of ${c.id} set to the current view.`,
-      };
-    }
-    case 'setSurfaceMode': {
-      const c = findCurve(s, cmd.id);
-      if (c?.type !== 'stream')
-        return { session: s, message: 'Surface mode applies to a selected stream curve.' };
-      if ((c.surfaceMode ?? 'ruled') === cmd.mode)
-        return { session: s, message: `Supporting surface of ${c.id}: ${cmd.mode}.` };
-      return {
-        session: updateCurve(s, c.id, () => ({ ...c, surfaceMode: cmd.mode })),
-        message: `Supporting surface of ${c.id}: ${cmd.mode}.`,
-      };
-    }
-    case 'setAvoidScalp': {
-      if (!!s.avoidScalp === cmd.on)
-        return { session: s, message: `Avoid scalp is already ${cmd.on ? 'on' : 'off'}.` };
-      const { avoidScalp: _, ...rest } = s;
-      return {
-        session: cmd.on ? { ...rest, avoidScalp: true } : rest,
-        message: cmd.on
-          ? 'Avoid scalp on: hair near the head is turned along it.'
-          : 'Avoid scalp off.',
-      };
-    }
-    case 'setDetail': {
-      const d = cmd.detail && (detailIsOn(cmd.detail) || cmd.curveId) ? cmd.detail : undefined;
-      if (cmd.curveId === null) {
-        if (JSON.stringify(d) === JSON.stringify(s.detail))
-          return { session: s, message: 'Detail unchanged.' };
-        const { detail: _, ...rest } = s;
-        const next = d ? { ...rest, detail: d } : rest;
-        const check = parseSession({ ...next, curves: [] });
-        if (!check.ok) return { session: s, message: `Nothing changed: ${check.error}.` };
-        return {
-          session: next,
-          message: d ? `Detail: ${describeDetail(d)}.` : 'Detail off.',
-        };
-      }
-      const c = findCurve(s, cmd.curveId);
-      if (!c) return { session: s, message: `No curve ${cmd.curveId}.` };
-      if (JSON.stringify(d) === JSON.stringify(c.detail))
+    const keys = Object.keys(patch);
+    if (keys.length === 0) return { session: s, message: `Nothing to change on ${c.id}.` };
+    return {
+      session: updateCurve(s, c.id, () => ({ ...c, ...patch }) as StyleCurve),
+      message: `Changed ${keys.join(', ')} of ${c.id}.`,
+    };
+  },
+  setViewpoint(s, cmd) {
+    const c = findCurve(s, cmd.id);
+    if (!c) return { session: s, message: `No curve ${cmd.id}.` };
+    return {
+      session: updateCurve(s, c.id, () => ({ ...c, viewpoint: cmd.viewpoint })),
+      message: `Viewpoint of ${c.id} set to the current view.`,
+    };
+  },
+  setSurfaceMode(s, cmd) {
+    const c = findCurve(s, cmd.id);
+    if (c?.type !== 'stream')
+      return { session: s, message: 'Surface mode applies to a selected stream curve.' };
+    if ((c.surfaceMode ?? 'ruled') === cmd.mode)
+      return { session: s, message: `Supporting surface of ${c.id}: ${cmd.mode}.` };
+    return {
+      session: updateCurve(s, c.id, () => ({ ...c, surfaceMode: cmd.mode })),
+      message: `Supporting surface of ${c.id}: ${cmd.mode}.`,
+    };
+  },
+  setAvoidScalp(s, cmd) {
+    if (!!s.avoidScalp === cmd.on)
+      return { session: s, message: `Avoid scalp is already ${cmd.on ? 'on' : 'off'}.` };
+    const { avoidScalp: _, ...rest } = s;
+    return {
+      session: cmd.on ? { ...rest, avoidScalp: true } : rest,
+      message: cmd.on
+        ? 'Avoid scalp on: hair near the head is turned along it.'
+        : 'Avoid scalp off.',
+    };
+  },
+  setDetail(s, cmd) {
+    const d = cmd.detail && (detailIsOn(cmd.detail) || cmd.curveId) ? cmd.detail : undefined;
+    if (cmd.curveId === null) {
+      if (JSON.stringify(d) === JSON.stringify(s.detail))
         return { session: s, message: 'Detail unchanged.' };
-      return {
-        session: updateCurve(s, c.id, () => {
-          const { detail: _, ...rest } = c;
-          return (d ? { ...rest, detail: d } : rest) as StyleCurve;
-        }),
-        message: d
-          ? `Detail of ${c.id}: ${describeDetail(d)}.`
-          : `${c.id} uses the session's detail.`,
-      };
-    }
-    case 'lengthen': {
-      const r = lengthenSession(s, cmd.by);
-      if (r.session === s || !Number.isFinite(cmd.by))
-        return { session: s, message: 'Length unchanged.' };
-      const check = parseSession(r.session);
-      if (!check.ok) return { session: s, message: `Nothing changed: ${check.error}.` };
-      const cm = Math.round(Math.abs(cmd.by) * 100) / 10;
-      return {
-        session: r.session,
-        message: `Hair ${cmd.by > 0 ? 'lengthened' : 'shortened'} by ${cm} cm: ${r.strokes} stroke end${r.strokes === 1 ? '' : 's'} moved, Max length ${Math.round(r.session.growth.maxLength * 100) / 10} cm.`,
-      };
-    }
-    case 'setGrowth': {
-      const g = { ...s.growth };
-      let changed = false;
-      for (const [k, v] of Object.entries(cmd.patch) as [keyof GrowthParams, number][]) {
-        if (!(k in g) || typeof v !== 'number' || !Number.isFinite(v))
-          return { session: s, message: `Growth setting ${String(k)} is not a finite number.` };
-        if (g[k] !== v) {
-          g[k] = v;
-          changed = true;
-        }
-      }
-      if (!changed) return { session: s, message: 'Growth unchanged.' };
-      const check = parseSession({ ...s, curves: [], growth: g });
-      if (!check.ok) return { session: s, message: `Nothing changed: ${check.error}.` };
-      return { session: { ...s, growth: g }, message: 'Growth settings changed.' };
-    }
-    case 'setHairColor': {
-      if (!HEX_COLOR.test(cmd.color))
-        return { session: s, message: `Hair colour "${cmd.color.slice(0, 20)}" is not #rrggbb.` };
-      if (cmd.color === s.hairColor) return { session: s, message: `Hair colour ${cmd.color}.` };
-      return { session: { ...s, hairColor: cmd.color }, message: `Hair colour ${cmd.color}.` };
-    }
-    case 'setHead': {
-      const { scalpPaint: _p, symmetry: _s, ...rest } = s;
-      const next: SessionState = { ...rest, head: cmd.head };
-      if (cmd.symmetry) next.symmetry = cmd.symmetry;
-      if (JSON.stringify(next.head) === JSON.stringify(s.head) && !s.scalpPaint)
-        if (JSON.stringify(next.symmetry) === JSON.stringify(s.symmetry))
-          return { session: s, message: `${cmd.what} (unchanged).` };
-      return { session: next, message: `${cmd.what}.` };
-    }
-    case 'paintScalp': {
-      const k = cmd.stroke;
-      if (!(k.radius > 0) || k.points.length === 0)
-        return { session: s, message: 'Scalp brush: the stroke missed the head.' };
-      const next = { ...s, scalpPaint: [...(s.scalpPaint ?? []), k] };
+      const { detail: _, ...rest } = s;
+      const next = d ? { ...rest, detail: d } : rest;
       const check = parseSession({ ...next, curves: [] });
       if (!check.ok) return { session: s, message: `Nothing changed: ${check.error}.` };
       return {
         session: next,
-        message: `${k.erase ? 'Erased' : 'Painted'} scalp (brush ${Math.round(k.radius * 100)} mm).`,
+        message: d ? `Detail: ${describeDetail(d)}.` : 'Detail off.',
       };
     }
-    case 'setSymmetry': {
-      if (JSON.stringify(cmd.plane) === JSON.stringify(s.symmetry))
-        return { session: s, message: 'Mirror plane unchanged.' };
-      const { symmetry: _, ...rest } = s;
-      return {
-        session: cmd.plane ? { ...rest, symmetry: cmd.plane } : rest,
-        message: 'Mirror plane moved (new mirrored curves use it).',
-      };
+    const c = findCurve(s, cmd.curveId);
+    if (!c) return { session: s, message: `No curve ${cmd.curveId}.` };
+    if (JSON.stringify(d) === JSON.stringify(c.detail))
+      return { session: s, message: 'Detail unchanged.' };
+    return {
+      session: updateCurve(s, c.id, () => {
+        const { detail: _, ...rest } = c;
+        return (d ? { ...rest, detail: d } : rest) as StyleCurve;
+      }),
+      message: d
+        ? `Detail of ${c.id}: ${describeDetail(d)}.`
+        : `${c.id} uses the session's detail.`,
+    };
+  },
+  lengthen(s, cmd) {
+    const r = lengthenSession(s, cmd.by);
+    if (r.session === s || !Number.isFinite(cmd.by))
+      return { session: s, message: 'Length unchanged.' };
+    const check = parseSession(r.session);
+    if (!check.ok) return { session: s, message: `Nothing changed: ${check.error}.` };
+    const cm = Math.round(Math.abs(cmd.by) * 100) / 10;
+    return {
+      session: r.session,
+      message: `Hair ${cmd.by > 0 ? 'lengthened' : 'shortened'} by ${cm} cm: ${r.strokes} stroke end${r.strokes === 1 ? '' : 's'} moved, Max length ${Math.round(r.session.growth.maxLength * 100) / 10} cm.`,
+    };
+  },
+  setGrowth(s, cmd) {
+    const g = { ...s.growth };
+    let changed = false;
+    for (const [k, v] of Object.entries(cmd.patch) as [keyof GrowthParams, number][]) {
+      if (!(k in g) || typeof v !== 'number' || !Number.isFinite(v))
+        return { session: s, message: `Growth setting ${String(k)} is not a finite number.` };
+      if (g[k] !== v) {
+        g[k] = v;
+        changed = true;
+      }
     }
-    case 'setReferences': {
-      if (JSON.stringify(cmd.references) === JSON.stringify(s.references ?? []))
+    if (!changed) return { session: s, message: 'Growth unchanged.' };
+    const check = parseSession({ ...s, curves: [], growth: g });
+    if (!check.ok) return { session: s, message: `Nothing changed: ${check.error}.` };
+    return { session: { ...s, growth: g }, message: 'Growth settings changed.' };
+  },
+  setHairColor(s, cmd) {
+    if (!HEX_COLOR.test(cmd.color))
+      return { session: s, message: `Hair colour "${cmd.color.slice(0, 20)}" is not #rrggbb.` };
+    if (cmd.color === s.hairColor) return { session: s, message: `Hair colour ${cmd.color}.` };
+    return { session: { ...s, hairColor: cmd.color }, message: `Hair colour ${cmd.color}.` };
+  },
+  setHead(s, cmd) {
+    const { scalpPaint: _p, symmetry: _s, ...rest } = s;
+    const next: SessionState = { ...rest, head: cmd.head };
+    if (cmd.symmetry) next.symmetry = cmd.symmetry;
+    if (JSON.stringify(next.head) === JSON.stringify(s.head) && !s.scalpPaint)
+      if (JSON.stringify(next.symmetry) === JSON.stringify(s.symmetry))
         return { session: s, message: `${cmd.what} (unchanged).` };
-      const { references: _, ...rest } = s;
-      return {
-        session: cmd.references.length > 0 ? { ...rest, references: cmd.references } : rest,
-        message: `${cmd.what}.`,
-      };
-    }
-    case 'loadSession': {
-      return {
-        session: { ...cmd.session, grid: s.grid },
-        selectedId: null,
-        message: `${cmd.what} (${cmd.session.curves.length} curves).`,
-      };
-    }
-  }
+    return { session: next, message: `${cmd.what}.` };
+  },
+  paintScalp(s, cmd) {
+    const k = cmd.stroke;
+    if (!(k.radius > 0) || k.points.length === 0)
+      return { session: s, message: 'Scalp brush: the stroke missed the head.' };
+    const next = { ...s, scalpPaint: [...(s.scalpPaint ?? []), k] };
+    const check = parseSession({ ...next, curves: [] });
+    if (!check.ok) return { session: s, message: `Nothing changed: ${check.error}.` };
+    return {
+      session: next,
+      message: `${k.erase ? 'Erased' : 'Painted'} scalp (brush ${Math.round(k.radius * 100)} mm).`,
+    };
+  },
+  setSymmetry(s, cmd) {
+    if (JSON.stringify(cmd.plane) === JSON.stringify(s.symmetry))
+      return { session: s, message: 'Mirror plane unchanged.' };
+    const { symmetry: _, ...rest } = s;
+    return {
+      session: cmd.plane ? { ...rest, symmetry: cmd.plane } : rest,
+      message: 'Mirror plane moved (new mirrored curves use it).',
+    };
+  },
+  setReferences(s, cmd) {
+    if (JSON.stringify(cmd.references) === JSON.stringify(s.references ?? []))
+      return { session: s, message: `${cmd.what} (unchanged).` };
+    const { references: _, ...rest } = s;
+    return {
+      session: cmd.references.length > 0 ? { ...rest, references: cmd.references } : rest,
+      message: `${cmd.what}.`,
+    };
+  },
+  loadSession(s, cmd) {
+    return {
+      session: { ...cmd.session, grid: s.grid },
+      selectedId: null,
+      message: `${cmd.what} (${cmd.session.curves.length} curves).`,
+    };
+  },
+};
+
+function applyExact(s: SessionState, cmd: Command): CommandResult {
+  return (HANDLERS[cmd.kind] as (s: SessionState, cmd: Command) => CommandResult)(s, cmd);
 }
 
 function describeDetail(d: HairDetail): string {
