@@ -69,7 +69,22 @@ export interface ToolSet {
 // How near the scalp (world units: 5 mm) a stroke's last point must be to count as ending on it.
 const SCALP_END_REACH = 0.05;
 
-export function createTools(d: ToolDeps): ToolSet {
+/** What every tool is built from: the page's picking, the camera, the draft line and the rule
+ *  for whether a stroke's hair grows on past its end. */
+interface ToolKit {
+  d: ToolDeps;
+  editor: ToolDeps['editor'];
+  viewer: ToolDeps['viewer'];
+  step: () => number;
+  camera: () => ReturnType<ToolDeps['viewer']['cameraState']>;
+  sample: (x: number, y: number) => StrokeSample;
+  eye: () => Vec3;
+  forward: () => Vec3;
+  showDraft: (pts: readonly Vec3[] | null) => void;
+  strokeExtends: (pts: readonly Vec3[]) => boolean;
+}
+
+function toolKit(d: ToolDeps): ToolKit {
   const { editor, viewer } = d;
   const step = () => d.step;
   const camera = () => viewer.cameraState();
@@ -103,7 +118,30 @@ export function createTools(d: ToolDeps): ToolSet {
   const eye = () => viewer.eye();
   const forward = () => viewer.viewForward();
 
-  const ponytail = new PonytailTool({
+  return { d, editor, viewer, step, camera, sample, eye, forward, showDraft, strokeExtends };
+}
+
+/** The tools, each built from the shared kit (toolKit). */
+export function createTools(d: ToolDeps): ToolSet {
+  const k = toolKit(d);
+  const ponytail = ponytailTool(k);
+  const scalpBrush = scalpBrushTool(k);
+  const byName: Record<ToolName, Tool> = {
+    stream: streamTool(k),
+    dividing: dividingTool(k),
+    ponytail,
+    braid: braidTool(k),
+    bun: bunTool(k),
+    select: selectTool(k),
+    scalp: scalpBrush,
+  };
+  return { byName, ponytail, scalpBrush };
+}
+
+/** The ponytail tool: spine, cross-section and two profiles (S4.6). */
+function ponytailTool(k: ToolKit): PonytailTool {
+  const { d, editor, camera, sample, eye, forward, step, showDraft } = k;
+  return new PonytailTool({
     sample,
     eye,
     forward,
@@ -129,8 +167,12 @@ export function createTools(d: ToolDeps): ToolSet {
     notify: d.notify,
     stageChanged: (stage) => d.ponytailStage(stage),
   });
+}
 
-  const scalpBrush = new ScalpBrushTool({
+/** The scalp brush: paints and erases scalp, its ring on the head. */
+function scalpBrushTool(k: ToolKit): ScalpBrushTool {
+  const { d, editor, viewer } = k;
+  return new ScalpBrushTool({
     hit: (x, y) => {
       const ray = viewer.rayAt(x, y);
       const hit = d
@@ -156,127 +198,146 @@ export function createTools(d: ToolDeps): ToolSet {
     },
     notify: d.notify,
   });
+}
 
-  const byName: Record<ToolName, Tool> = {
-    stream: new StreamCurveTool({
-      sample,
-      eye,
-      forward,
-      step,
-      showDraft,
-      toScreen: (p) => viewer.worldToScreen(p),
-      hintTarget: () => {
-        const c = editor.selectedCurve;
-        const surface = c ? curveSurface(c, d.step) : null;
-        return c && surface ? { points: c.points, surface } : null;
-      },
-      applyHint: (r) => {
-        const c = editor.selectedCurve;
-        if (!c) return;
-        if (r.op.kind === 'none') {
-          d.notify(`Hint: no operation (${r.op.reason}) — nothing changed.`);
-          return;
-        }
-        editor.run({ kind: 'hintEdit', id: c.id, op: r.op.kind, points: r.points });
-      },
-      // the commit ends the stroke in progress in the same change (one solve follows)
-      commit: (points) => {
-        const tie = tieAtEnd(editor.session.curves, points[points.length - 1]);
-        const extend = strokeExtends(points);
-        const why = tie
-          ? `, on into ${tie.type} ${tie.id}`
-          : extend && !newCurveExtends(editor.session)
-            ? ', combing on: it ends on the scalp'
-            : '';
-        editor.run({
-          kind: 'addCurve',
-          curve: {
-            type: 'stream',
-            points,
-            extend,
-            viewpoint: camera(),
-          },
-          what: `stream curve {id} (${points.length - 1} segments${why})`,
-          mirror: d.mirror(),
-        });
-      },
-      preview: (points) => {
-        viewer.expectHair(points !== null);
-        editor.setStroke(points && { points, viewpoint: camera(), extend: strokeExtends(points) });
-      },
-      notify: d.notify,
-    }),
-    dividing: new DividingCurveTool({
-      sample,
-      step,
-      selected: () => {
-        const c = editor.selectedCurve;
-        return c?.type === 'dividing' ? c : null;
-      },
-      normalsAt: (pts) => pts.map((p) => d.head().normalAt(p)),
-      showDraft,
-      commit: (points, normals) =>
-        editor.run({
-          kind: 'addCurve',
-          curve: {
-            type: 'dividing',
-            points,
-            normals,
-            ...defaultParams('dividing'),
-            viewpoint: camera(),
-          },
-          what: `dividing curve {id} (${points.length - 1} segments)`,
-          mirror: d.mirror(),
-        }),
-      setTilt: (end, alpha, side) => {
-        const c = editor.selectedCurve;
-        if (c?.type === 'dividing') editor.run({ kind: 'setTilt', id: c.id, end, alpha, side });
-      },
-      notify: d.notify,
-    }),
-    ponytail,
-    // a braid's stroke is drawn as a stream curve is (the depth rule past the scalp), without
-    // hint strokes; its preview is the braid it will make
-    braid: new StreamCurveTool({
-      sample,
-      eye,
-      forward,
-      step,
-      showDraft,
-      noun: 'A braid',
-      commit: (points) =>
-        editor.run({
-          kind: 'addCurve',
-          curve: STROKE_KINDS.braid.fromStroke(points, camera(), newCurveExtends(editor.session)),
-          what: `braid {id} (${points.length - 1} segments)`,
-          mirror: d.mirror(),
-        }),
-      preview: (points) => {
-        viewer.expectHair(points !== null);
-        editor.setStroke(points && { points, viewpoint: camera(), kind: 'braid' });
-      },
-      notify: d.notify,
-    }),
-    bun: new BunTool({
-      sample,
-      step,
-      showDraft,
-      commit: (points) =>
-        editor.run({
-          kind: 'addCurve',
-          curve: STROKE_KINDS.bun.fromStroke(points, camera(), newCurveExtends(editor.session)),
-          what: `bun {id} (a loop of ${points.length} points)`,
-          mirror: d.mirror(),
-        }),
-      notify: d.notify,
-    }),
-    select: new SelectTool({
-      // hidden curves (Curves display off) cannot be picked
-      curves: () => (d.curvesShown() ? editor.session.curves : []),
-      toScreen: (p) => viewer.worldToScreen(p),
-      select: (id) => editor.select(id),
-    }),
-    scalp: scalpBrush,
-  };
-  return { byName, ponytail, scalpBrush };
+/** The stream curve tool: strokes, hint strokes on the selected curve, previews. */
+function streamTool(k: ToolKit): Tool {
+  const { d, editor, viewer, step, camera, sample, eye, forward, showDraft, strokeExtends } = k;
+  return new StreamCurveTool({
+    sample,
+    eye,
+    forward,
+    step,
+    showDraft,
+    toScreen: (p) => viewer.worldToScreen(p),
+    hintTarget: () => {
+      const c = editor.selectedCurve;
+      const surface = c ? curveSurface(c, d.step) : null;
+      return c && surface ? { points: c.points, surface } : null;
+    },
+    applyHint: (r) => {
+      const c = editor.selectedCurve;
+      if (!c) return;
+      if (r.op.kind === 'none') {
+        d.notify(`Hint: no operation (${r.op.reason}) — nothing changed.`);
+        return;
+      }
+      editor.run({ kind: 'hintEdit', id: c.id, op: r.op.kind, points: r.points });
+    },
+    // the commit ends the stroke in progress in the same change (one solve follows)
+    commit: (points) => {
+      const tie = tieAtEnd(editor.session.curves, points[points.length - 1]);
+      const extend = strokeExtends(points);
+      const why = tie
+        ? `, on into ${tie.type} ${tie.id}`
+        : extend && !newCurveExtends(editor.session)
+          ? ', combing on: it ends on the scalp'
+          : '';
+      editor.run({
+        kind: 'addCurve',
+        curve: {
+          type: 'stream',
+          points,
+          extend,
+          viewpoint: camera(),
+        },
+        what: `stream curve {id} (${points.length - 1} segments${why})`,
+        mirror: d.mirror(),
+      });
+    },
+    preview: (points) => {
+      viewer.expectHair(points !== null);
+      editor.setStroke(points && { points, viewpoint: camera(), extend: strokeExtends(points) });
+    },
+    notify: d.notify,
+  });
+}
+
+/** The dividing curve tool: partings on the scalp and their tilt handles. */
+function dividingTool(k: ToolKit): Tool {
+  const { d, editor, step, camera, sample, showDraft } = k;
+  return new DividingCurveTool({
+    sample,
+    step,
+    selected: () => {
+      const c = editor.selectedCurve;
+      return c?.type === 'dividing' ? c : null;
+    },
+    normalsAt: (pts) => pts.map((p) => d.head().normalAt(p)),
+    showDraft,
+    commit: (points, normals) =>
+      editor.run({
+        kind: 'addCurve',
+        curve: {
+          type: 'dividing',
+          points,
+          normals,
+          ...defaultParams('dividing'),
+          viewpoint: camera(),
+        },
+        what: `dividing curve {id} (${points.length - 1} segments)`,
+        mirror: d.mirror(),
+      }),
+    setTilt: (end, alpha, side) => {
+      const c = editor.selectedCurve;
+      if (c?.type === 'dividing') editor.run({ kind: 'setTilt', id: c.id, end, alpha, side });
+    },
+    notify: d.notify,
+  });
+}
+
+/** The braid tool: a braid's stroke is drawn as a stream curve is (the depth rule past the scalp), without hint strokes; its preview is the braid it will make. */
+// a braid's stroke is drawn as a stream curve is (the depth rule past the scalp), without
+// hint strokes; its preview is the braid it will make
+function braidTool(k: ToolKit): Tool {
+  const { d, editor, viewer, step, camera, sample, eye, forward, showDraft } = k;
+  return new StreamCurveTool({
+    sample,
+    eye,
+    forward,
+    step,
+    showDraft,
+    noun: 'A braid',
+    commit: (points) =>
+      editor.run({
+        kind: 'addCurve',
+        curve: STROKE_KINDS.braid.fromStroke(points, camera(), newCurveExtends(editor.session)),
+        what: `braid {id} (${points.length - 1} segments)`,
+        mirror: d.mirror(),
+      }),
+    preview: (points) => {
+      viewer.expectHair(points !== null);
+      editor.setStroke(points && { points, viewpoint: camera(), kind: 'braid' });
+    },
+    notify: d.notify,
+  });
+}
+
+/** The bun tool: a loop on the head where the bun sits. */
+function bunTool(k: ToolKit): Tool {
+  const { d, editor, step, camera, sample, showDraft } = k;
+  return new BunTool({
+    sample,
+    step,
+    showDraft,
+    commit: (points) =>
+      editor.run({
+        kind: 'addCurve',
+        curve: STROKE_KINDS.bun.fromStroke(points, camera(), newCurveExtends(editor.session)),
+        what: `bun {id} (a loop of ${points.length} points)`,
+        mirror: d.mirror(),
+      }),
+    notify: d.notify,
+  });
+}
+
+/** The select tool: picks a shown curve. */
+function selectTool(k: ToolKit): Tool {
+  const { d, editor, viewer } = k;
+  return new SelectTool({
+    // hidden curves (Curves display off) cannot be picked
+    curves: () => (d.curvesShown() ? editor.session.curves : []),
+    toScreen: (p) => viewer.worldToScreen(p),
+    select: (id) => editor.select(id),
+  });
 }
