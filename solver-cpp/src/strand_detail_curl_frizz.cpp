@@ -1,0 +1,91 @@
+// Curl and frizz of hair detail (strand_detail.hpp "Curl", "Frizz"), strand by strand, and the
+// ringlets' clump-by-clump variation.
+#include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "strand_detail_internal.hpp"
+
+namespace hairsketch::strand_detail {
+
+namespace {
+
+// Ringlets vary as real ones do: each clump's curl radius and frequency are scaled by a seeded
+// factor within 1 ± kRingletVary (independently), and half the clumps (seeded) wind the other
+// way, so neighbouring ringlets do not line up in rows of parallel stripes.
+constexpr double kRingletVary = 0.25;
+
+// A point uniform in the unit ball (rejection from the cube).
+V3 inBall(Pcg32& rng) {
+  for (;;) {
+    const V3 v(2 * unitFromBits(rng.nextU32()) - 1, 2 * unitFromBits(rng.nextU32()) - 1,
+               2 * unitFromBits(rng.nextU32()) - 1);
+    if (v.squaredNorm() <= 1) return v;
+  }
+}
+
+double smoothstep(double x) {
+  x = std::min(1.0, std::max(0.0, x));
+  return x * x * (3 - 2 * x);
+}
+
+}  // namespace
+
+size_t curlPointCount(const DetailParams& d, size_t n, double L, size_t cap) {
+  if (!(d.curl.radius > 0) || !(L > 0)) return n;
+  const double want = std::ceil(L * 12 * d.curl.frequency) + 1;
+  return size_t(std::min(double(cap), std::max(double(n), want)));
+}
+
+Ringlet ringletOf(const DetailParams& d, uint32_t seed, uint32_t phaseKey) {
+  Pcg32 rng = strandRng(seed, phaseKey, kStreamRinglet);
+  Ringlet r{d, 1};
+  r.detail.curl.radius *= 1 + kRingletVary * (2 * unitFromBits(rng.nextU32()) - 1);
+  r.detail.curl.frequency *= 1 + kRingletVary * (2 * unitFromBits(rng.nextU32()) - 1);
+  r.hand = rng.nextU32() & 1 ? -1 : 1;
+  return r;
+}
+
+void curlAndFrizz(const DetailParams& d, uint32_t seed, uint32_t key, uint32_t phaseKey, size_t m,
+                  Work& w, double hand) {
+  const double L = arcLengths(w.p, w.s);
+  if (!(L > 0)) return;
+  const bool curl = d.curl.radius > 0, frizz = d.frizz.distance > 0;
+  if (curl) {
+    resampleEven(w.p, w.s, m, w.q);
+    std::swap(w.p, w.q);
+    w.s.resize(m);
+    for (size_t k = 0; k < m; ++k) w.s[k] = L * double(k) / double(m - 1);
+  }
+  frames(w.p, w.t, w.n, w.b);
+  const size_t n = w.p.size();
+  const double invL = 1 / L;
+  if (curl) {
+    // theta_k = theta_0 + k dTheta (even spacing), by rotating (cos, sin) one step at a time.
+    const double r = d.curl.radius, a = d.curl.start;
+    const double phase = d.curl.randomOffset * strandRng(seed, phaseKey, kStreamCurl).uniform();
+    const double step = kTwoPi * d.curl.frequency * L / double(n - 1);
+    const double cs = std::cos(step), sn = std::sin(step);
+    double c = std::cos(kTwoPi * phase), s = std::sin(kTwoPi * phase);
+    for (size_t i = 1; i < n; ++i) {
+      const double c1 = c * cs - s * sn;
+      s = s * cs + c * sn;
+      c = c1;
+      const double ramp = a > 0 ? smoothstep(w.s[i] * invL / a) : 1.0;
+      w.p[i] += r * ramp * (c * w.n[i] + hand * s * w.b[i]);
+    }
+  }
+  if (frizz) {
+    const Falloff S(d.frizz.shape);
+    Pcg32 rng = strandRng(seed, key, kStreamFrizz);
+    V3 c = V3::Zero();
+    for (size_t i = 1; i < n; ++i) {
+      const V3 v = inBall(rng);
+      c += v.x() * w.t[i] + v.y() * w.n[i] + v.z() * w.b[i];
+      w.p[i] += d.frizz.distance * S(w.s[i] * invL) * c;
+    }
+  }
+}
+
+}  // namespace hairsketch::strand_detail
