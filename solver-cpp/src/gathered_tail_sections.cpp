@@ -1,0 +1,134 @@
+// Whole sections of gathered tails (gathered_tail.hpp "Whole sections"): a tie's size from the
+// hair it holds, and a strand combed from its root over the scalp to its seat, then laid.
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "gathered_tail_internal.hpp"
+#include "head_distance.hpp"
+
+namespace hairsketch {
+
+namespace gathered_tail {
+
+namespace {
+
+// A point put `lift` off the head (outside it) along the head's distance gradient, or on the
+// sphere about the centre through `onSphere` when there is no head.
+Eigen::Vector3f offHead(const SectionGather& g, Eigen::Vector3f x, float lift, float sphere) {
+  if (!g.head) return g.centre + (x - g.centre).normalized() * (sphere + lift);
+  for (int it = 0; it < 3; ++it) {
+    float dir[3];
+    const float d = g.head->outward(x.data(), dir);
+    x += (lift - d) * Eigen::Vector3f(dir[0], dir[1], dir[2]);
+  }
+  return x;
+}
+
+// A whole-section strand's way from its root over the scalp to the foot of its seat point P,
+// then up to P (gathered_tail.hpp); out gets the points after the root, up to P. Returns the
+// path's length.
+float combPath(const SectionGather& g, const Eigen::Vector3f& root, const Eigen::Vector3f& P,
+               float lambda, float step, size_t maxPoints, std::vector<Eigen::Vector3f>& out) {
+  const Eigen::Vector3f c = g.centre;
+  const float sphere = (root - c).norm();
+  const Eigen::Vector3f foot = offHead(g, P, g.margin, sphere);
+  const float ra = (root - c).norm(), rb = (foot - c).norm();
+  const Eigen::Vector3f a = (root - c).normalized(), b = (foot - c).normalized();
+  const float ang = std::acos(std::clamp(a.dot(b), -1.f, 1.f));
+  Eigen::Vector3f axis = a.cross(b);
+  if (!(axis.norm() > 1e-5f)) axis = a.cross(Eigen::Vector3f::UnitY());
+  if (!(axis.norm() > 1e-5f)) axis = a.cross(Eigen::Vector3f::UnitX());
+  axis.normalize();
+  const float arc = ang * 0.5f * (ra + rb) + (P - foot).norm();
+  const float ds = std::max(step, arc / float(std::max<size_t>(maxPoints, 2)));
+  const size_t n = std::max<size_t>(1, size_t(std::ceil(ang * 0.5f * (ra + rb) / ds)));
+  const float top = kCombLift * lambda;
+  Eigen::Vector3f prev = root;
+  float length = 0;
+  for (size_t i = 1; i <= n; ++i) {
+    const float t = float(i) / float(n);
+    const Eigen::Vector3f d = Eigen::AngleAxisf(t * ang, axis) * a;
+    const Eigen::Vector3f x =
+        offHead(g, c + d * (ra + t * (rb - ra)), g.margin + top * smoothstepf(t), sphere);
+    length += (x - prev).norm();
+    out.push_back(x);
+    prev = x;
+  }
+  const size_t up = size_t(std::ceil((P - prev).norm() / ds));
+  const Eigen::Vector3f from = prev;
+  for (size_t i = 1; i <= up; ++i) {
+    const Eigen::Vector3f x = from + (P - from) * (float(i) / float(up));
+    length += (x - prev).norm();
+    out.push_back(x);
+    prev = x;
+  }
+  return length;
+}
+
+}  // namespace
+
+void layCombed(const GatheredTail& T, const SpineFrames& F, const SectionGather& g,
+               const Capture& cap, float theta, float rho, int bundle, float lambda, float u,
+               float step, size_t room, float maxLength, std::vector<Eigen::Vector3f>& out) {
+  // the seat's point on C1's plane (a bun: on its base circle)
+  Eigen::Vector3f seat;
+  if (T.shape == TailShape::Bun) {
+    const float shell = T.bunRadius * (0.45f + 0.55f * rho);
+    seat = T.bunCentre + shell * (std::cos(theta) * F.e1[0] + std::sin(theta) * F.e2[0]);
+  } else {
+    const Eigen::Vector2f o = seatOffset(T, 0, F.r[0], theta, rho, bundle);
+    seat = F.p[0] + o.x() * F.e1[0] + o.y() * F.e2[0];
+  }
+  std::vector<Eigen::Vector3f> path;
+  const float way = combPath(g, cap.q, seat, lambda, step, room / 2, path);
+  const float L = cap.remaining;              // the hair's whole length
+  if (way >= L || path.size() + 1 >= room) {  // too short to reach the tie: combed towards it
+    float walked = 0;
+    Eigen::Vector3f prev = cap.q;
+    for (const Eigen::Vector3f& x : path) {
+      const float d = (x - prev).norm();
+      if (walked + d > L || out.size() + 1 >= room) {
+        if (d > 0 && out.size() + 1 < room) out.push_back(prev + (x - prev) * ((L - walked) / d));
+        break;
+      }
+      walked += d;
+      out.push_back(x);
+      prev = x;
+    }
+    if (out.empty()) out.push_back(cap.q);
+    return;
+  }
+  out = path;
+  Capture tail = cap;
+  tail.q = seat;
+  tail.before = way;
+  tail.s0 = 0;
+  // a tail ends at its spine's end, less a seeded 0-8 % (ends not cut straight), unless it grows on
+  tail.remaining = L - way;
+  if (!T.growsOn) tail.remaining = std::min(tail.remaining, F.s.back() * (1 - 0.08f * u));
+  std::vector<Eigen::Vector3f> laid;
+  const size_t left = room - path.size();
+  if (T.shape == TailShape::Bun)
+    layBun(T, F, tail, theta, rho, step, left, maxLength, laid);
+  else
+    layAlongSpine(T, F, tail, theta, rho, bundle, step, left, laid, true);
+  out.insert(out.end(), laid.begin() + (laid.empty() ? 0 : 1), laid.end());
+}
+
+}  // namespace gathered_tail
+
+float sectionTailRadius(float share) { return kTailRadius * std::sqrt(std::max(share, 0.f)); }
+
+float sectionBunRadius(float share, float lengthAfterTie) {
+  // The hair's volume: a full head's tail (kTailRadius) times its length, coiled into a dome of
+  // radius R and height 0.6 R whose strands lie a little looser: R = 0.63 (A L)^(1/3) in
+  // centimetres, 4.5 cm for a whole head of 30 cm of hair past the tie.
+  const float areaCm2 = 3.14159265f * 100 * kTailRadius * kTailRadius * std::max(share, 0.f);
+  const float cm = 0.63f * std::cbrt(areaCm2 * 10 * std::max(lengthAfterTie, 0.f));
+  return cm / 10;
+}
+
+}  // namespace hairsketch
