@@ -4,10 +4,7 @@
 #include <string>
 #include <unordered_map>
 
-#include "braid_bun.hpp"
-#include "dividing_constraints.hpp"
-#include "ponytail_constraints.hpp"
-#include "stream_constraints.hpp"
+#include "curve_kinds.hpp"
 
 namespace hairsketch {
 
@@ -48,63 +45,13 @@ Status curvesToConstraints(const Grid& g, const CurveSetView& cs, ConstraintSet&
   std::vector<ConstraintColour> rawColour;
   std::vector<ConstraintColour>* rc = colours ? &rawColour : nullptr;
   for (size_t c = 0; c < cs.curveCount; ++c) {
-    const size_t begin = cs.curveStart[c], end = cs.curveStart[c + 1];
-    const double* pts = cs.points + 3 * begin;
-    const size_t n = end - begin;
-    const size_t p0 = cs.paramStart ? cs.paramStart[c] : 0;
-    const size_t pn = cs.paramStart ? cs.paramStart[c + 1] - p0 : 0;
-    const double* prm = cs.params ? cs.params + p0 : nullptr;
     const std::string name = "curves: curve " + std::to_string(c);
-    switch (cs.kinds[c]) {
-      case uint8_t(CurveKindCode::Stream):
-        if (pn != kStreamParamCount)
-          return Status::Error(StatusCode::InvalidInput,
-                               name + " (stream) must have " + std::to_string(kStreamParamCount) +
-                                   " parameters, has " + std::to_string(pn));
-        for (size_t i = 0; i < pn; ++i)
-          if (!std::isfinite(prm[i]))
-            return Status::Error(StatusCode::NonFinite, name + " (stream): parameter " +
-                                                            std::to_string(i) + " is not finite");
-        appendStreamConstraints(g, pts, n, cs.extend[c] != 0, raw, rc, pn ? prm : nullptr);
-        break;
-      case uint8_t(CurveKindCode::Dividing): {
-        DividingParams dp;
-        Status s = parseDividingParams(prm, pn, n, dp);
-        if (!s.ok()) return Status::Error(s.code, name + " (dividing): " + s.message);
-        appendDividingConstraints(g, pts, n, dp, raw, rc);
-        break;
-      }
-      case uint8_t(CurveKindCode::Ponytail): {
-        PonytailParams pp;
-        Status s = parsePonytailParams(prm, pn, pp);
-        if (!s.ok()) return Status::Error(s.code, name + " (ponytail): " + s.message);
-        appendPonytailConstraints(g, pts, n, cs.extend[c] != 0, pp, raw, rc);
-        break;
-      }
-      case uint8_t(CurveKindCode::Braid): {
-        BraidParams bp;
-        Status s = parseBraidParams(prm, pn, bp);
-        if (!s.ok()) return Status::Error(s.code, name + " (braid): " + s.message);
-        if (n == 0) break;
-        const size_t gather = braidGatherIndex(cs.offScalp ? cs.offScalp + begin : nullptr, n);
-        appendPonytailConstraints(g, pts, n, cs.extend[c] != 0, braidAsPonytail(pts, n, gather, bp),
-                                  raw, rc);
-        break;
-      }
-      case uint8_t(CurveKindCode::Bun): {
-        BunParams bp;
-        Status s = parseBunParams(prm, pn, bp);
-        if (!s.ok()) return Status::Error(s.code, name + " (bun): " + s.message);
-        if (n == 0) break;
-        std::vector<double> spine;
-        const PonytailParams pp = bunAsPonytail(bunFrame(pts, n, bp, cs.headCentre), bp, spine);
-        appendPonytailConstraints(g, spine.data(), 2, false, pp, raw, rc);
-        break;
-      }
-      default:
-        return Status::Error(StatusCode::InvalidInput,
-                             name + " has unknown kind " + std::to_string(int(cs.kinds[c])));
-    }
+    const CurveKindDef* kind = curveKind(cs.kinds[c]);
+    if (!kind)
+      return Status::Error(StatusCode::InvalidInput,
+                           name + " has unknown kind " + std::to_string(int(cs.kinds[c])));
+    Status s = kind->constraints(g, kindCurve(cs, c), name + " (" + kind->name + ")", raw, rc);
+    if (!s.ok()) return s;
   }
   for (size_t e = 0; e < cs.extraCount; ++e) {
     const int p = cs.extraIndex[e];

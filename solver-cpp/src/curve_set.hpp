@@ -1,6 +1,6 @@
-// A whole curve set (protocol.ts CurveSet) -> one normalised constraint set: the dispatcher over
-// the curve kinds (stream_constraints.hpp, dividing_constraints.hpp, ponytail_constraints.hpp)
-// and the explicit extra constraints. Scalar parameter indices: curve_params.hpp.
+// A whole curve set (protocol.ts CurveSet) -> one normalised constraint set: each curve's
+// constraints from its kind's entry (curve_kinds.hpp) and the explicit extra constraints. Scalar
+// parameter indices: curve_params.hpp.
 #pragma once
 
 #include <Eigen/Core>
@@ -16,7 +16,7 @@
 
 namespace hairsketch {
 
-// Kind values of CurveSet.kinds (protocol.ts CurveKind).
+// Kind values of CurveSet.kinds (protocol.ts CurveKind); what each does: curve_kinds.hpp.
 enum class CurveKindCode : uint8_t { Stream = 0, Dividing = 1, Ponytail = 2, Braid = 3, Bun = 4 };
 
 // Non-owning view of protocol.ts CurveSet.

@@ -4,11 +4,11 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
 
-#include "braid_bun.hpp"
+#include "curve_kinds.hpp"
 #include "elapsed.hpp"
 #include "memory_budget.hpp"
-#include "ponytail_constraints.hpp"
 
 namespace hairsketch {
 
@@ -224,46 +224,29 @@ Status HairEngine::setCurves(const CurveSetView& curves) {
   std::vector<int32_t> nextTailCurves;
   if (curves.kinds && curves.curveStart && curves.points && curves.paramStart)
     for (size_t c = 0; c < curves.curveCount; ++c) {
-      const auto kind = CurveKindCode(curves.kinds[c]);
+      const CurveKindDef* kind = curveKind(curves.kinds[c]);
       const size_t a = curves.curveStart[c], b = curves.curveStart[c + 1];
       const size_t pa = curves.paramStart[c], pb = curves.paramStart[c + 1];
-      if (b <= a || b > curves.pointCount || pb < pa || pb > curves.paramCount) continue;
+      if (!kind || !kind->tail || b <= a || b > curves.pointCount || pb < pa ||
+          pb > curves.paramCount)
+        continue;
       const double* pts = curves.points + 3 * a;
-      const double* prm = curves.params + pa;
-      const Eigen::Vector3f away = (Eigen::Map<const Eigen::Vector3d>(pts) - centre_).cast<float>();
-      if (kind == CurveKindCode::Ponytail && fall_) {
-        PonytailParams pp;
-        if (!parsePonytailParams(prm, pb - pa, pp).ok() || pp.gather != 1) continue;
-        nextTails.push_back(gatheredTail(pts, b - a, pp));
-        nextTails.back().growsOn = curves.extend && curves.extend[c] != 0;
-        nextTails.back().section = pp.section;
-        nextTailCurves.push_back(int32_t(c));
-      } else if (kind == CurveKindCode::Braid) {
-        BraidParams bp;
-        if (!parseBraidParams(prm, pb - pa, bp).ok()) continue;
-        const size_t gather =
-            braidGatherIndex(withHead.offScalp ? overFace.data() + a : nullptr, b - a);
-        nextTails.push_back(braidTail(pts, b - a, gather, bp,
-                                      headDistance_.built() ? away : Eigen::Vector3f::Zero()));
-        nextTails.back().growsOn = curves.extend && curves.extend[c] != 0;
-        nextTails.back().section = bp.section;
-        nextTailCurves.push_back(int32_t(c));
-      } else if (kind == CurveKindCode::Bun) {
-        BunParams bp;
-        if (!parseBunParams(prm, pb - pa, bp).ok()) continue;
-        nextTails.push_back(bunTail(bunFrame(pts, b - a, bp, withHead.headCentre), bp));
-        nextTails.back().section = bp.section;
-        nextTailCurves.push_back(int32_t(c));
-      }
+      TailContext context;
+      context.fall = fall_;
+      if (headDistance_.built())
+        context.away = (Eigen::Map<const Eigen::Vector3d>(pts) - centre_).cast<float>();
+      GatheredTail tail;
+      if (!kind->tail(kindCurve(withHead, c), context, tail)) continue;
+      nextTails.push_back(std::move(tail));
+      nextTailCurves.push_back(int32_t(c));
     }
   // partings: the dividing curves, which bound the scalp's sections
   std::vector<std::vector<Eigen::Vector3f>> nextPartings;
   if (curves.kinds && curves.curveStart && curves.points)
     for (size_t c = 0; c < curves.curveCount; ++c) {
       const size_t a = curves.curveStart[c], b = curves.curveStart[c + 1];
-      if (CurveKindCode(curves.kinds[c]) != CurveKindCode::Dividing || b <= a ||
-          b > curves.pointCount)
-        continue;
+      const CurveKindDef* kind = curveKind(curves.kinds[c]);
+      if (!kind || !kind->parting || b <= a || b > curves.pointCount) continue;
       std::vector<Eigen::Vector3f>& line = nextPartings.emplace_back();
       for (size_t k = a; k < b; ++k)
         line.emplace_back(float(curves.points[3 * k]), float(curves.points[3 * k + 1]),
@@ -323,10 +306,8 @@ Status HairEngine::setCurves(const CurveSetView& curves) {
     std::vector<ReachCurve> rc;
     if (fv.kinds && fv.curveStart && fv.points)
       for (size_t c = 0; c < fv.curveCount; ++c) {
-        const auto kind = CurveKindCode(fv.kinds[c]);
-        if (kind != CurveKindCode::Stream && kind != CurveKindCode::Ponytail &&
-            kind != CurveKindCode::Braid)
-          continue;
+        const CurveKindDef* kind = curveKind(fv.kinds[c]);
+        if (!kind || !kind->reach) continue;
         const size_t a = fv.curveStart[c], b = fv.curveStart[c + 1];
         if (b <= a || b > fv.pointCount) continue;
         rc.push_back({fv.points + 3 * a, b - a, fv.extend && fv.extend[c] != 0,
