@@ -2,10 +2,10 @@
 // (structs of pointers + counts in, Status -> status code + message out); all logic is in
 // solver-cpp/src. Results stay owned by the handle until its next call; JS copies them out.
 //
-// Every struct below mirrors one layout declared in web/solver/protocol.ts (the name is given
+// Every struct below mirrors one layout declared in web/solver/wasmStructs.ts (the name is given
 // on each); its size is asserted here and every offset is checked by wasmEngine.ts at load
 // through hs_struct_layout. Pointers are wasm32 byte offsets (4 bytes).
-// Every call returns an HsStatus (protocol.ts SOLVER_STATUS): 0, or the kind of failure, with
+// Every call returns an HsStatus (wasmStructs.ts SOLVER_STATUS): 0, or the kind of failure, with
 // the message in hs_last_error().
 #include <emscripten/emscripten.h>
 
@@ -25,7 +25,7 @@
 
 using namespace hairsketch;
 
-// protocol.ts SOLVER_STATUS.
+// wasmStructs.ts SOLVER_STATUS.
 enum HsStatus : int32_t {
   HS_OK = 0,
   HS_INVALID_INPUT = 1,
@@ -35,15 +35,15 @@ enum HsStatus : int32_t {
   HS_INTERNAL = 5,
 };
 
-// protocol.ts GRID_INPUT.
+// wasmStructs.ts GRID_INPUT.
 struct HsGridInput {
   double originX, originY, originZ, step, omega;
   int32_t nx, ny, nz;
   const char* solver;
 };
-static_assert(sizeof(HsGridInput) == 56, "protocol.ts GRID_INPUT");
+static_assert(sizeof(HsGridInput) == 56, "wasmStructs.ts GRID_INPUT");
 
-// protocol.ts SCALP_INPUT.
+// wasmStructs.ts SCALP_INPUT.
 struct HsScalpInput {
   double centerX, centerY, centerZ;
   const float* positions;
@@ -52,9 +52,9 @@ struct HsScalpInput {
   uint32_t triangleCount;
   const uint8_t* scalp;
 };
-static_assert(sizeof(HsScalpInput) == 48, "protocol.ts SCALP_INPUT");
+static_assert(sizeof(HsScalpInput) == 48, "wasmStructs.ts SCALP_INPUT");
 
-// protocol.ts CURVE_SET_HEADER (the CurveSet, see curve_set.hpp CurveSetView).
+// wasmStructs.ts CURVE_SET_HEADER (the CurveSet, see curve_set.hpp CurveSetView).
 struct HsCurveSetHeader {
   const double* points;
   uint32_t pointCount;
@@ -69,44 +69,44 @@ struct HsCurveSetHeader {
   const double* extraTarget;
   uint32_t extraCount;
 };
-static_assert(sizeof(HsCurveSetHeader) == 48, "protocol.ts CURVE_SET_HEADER");
+static_assert(sizeof(HsCurveSetHeader) == 48, "wasmStructs.ts CURVE_SET_HEADER");
 
-// protocol.ts GROWTH_INPUT.
+// wasmStructs.ts GROWTH_INPUT.
 struct HsGrowthInput {
   double thetaStepDeg, phiStepDeg, jitter, seed, stepFraction, minMagnitude, maxLength;
   int32_t maxSegments, maxStrands;
 };
-static_assert(sizeof(HsGrowthInput) == 64, "protocol.ts GROWTH_INPUT");
+static_assert(sizeof(HsGrowthInput) == 64, "wasmStructs.ts GROWTH_INPUT");
 
-// protocol.ts AVOID_INPUT.
+// wasmStructs.ts AVOID_INPUT.
 struct HsAvoidInput {
   double band, magnitude, minField;
   int32_t wholeHead, insideToo;
 };
-static_assert(sizeof(HsAvoidInput) == 32, "protocol.ts AVOID_INPUT");
+static_assert(sizeof(HsAvoidInput) == 32, "wasmStructs.ts AVOID_INPUT");
 
-// protocol.ts CONSTRAINT_LIST.
+// wasmStructs.ts CONSTRAINT_LIST.
 struct HsConstraintList {
   const int32_t* index;
   const double* target;
   uint32_t count;
 };
-static_assert(sizeof(HsConstraintList) == 12, "protocol.ts CONSTRAINT_LIST");
+static_assert(sizeof(HsConstraintList) == 12, "wasmStructs.ts CONSTRAINT_LIST");
 
-// protocol.ts ITERATE_PROGRESS.
+// wasmStructs.ts ITERATE_PROGRESS.
 struct HsIterateProgress {
   double errorEstimate;
   int32_t iterations, converged;
 };
-static_assert(sizeof(HsIterateProgress) == 16, "protocol.ts ITERATE_PROGRESS");
+static_assert(sizeof(HsIterateProgress) == 16, "wasmStructs.ts ITERATE_PROGRESS");
 
-// protocol.ts STATS_OUTPUT.
+// wasmStructs.ts STATS_OUTPUT.
 struct HsStats {
   double residual, setupMs, solveMs, growMs;
   int32_t iterations, added, removed, changed, constraints;
   char method[32];
 };
-static_assert(sizeof(HsStats) == 88, "protocol.ts STATS_OUTPUT");
+static_assert(sizeof(HsStats) == 88, "wasmStructs.ts STATS_OUTPUT");
 
 namespace {
 
@@ -199,7 +199,7 @@ extern "C" {
 
 EMSCRIPTEN_KEEPALIVE const char* hs_last_error() { return gLastError.c_str(); }
 
-// Layout of boundary struct `id` (protocol.ts BOUNDARY_STRUCTS order): writes sizeof, then each
+// Layout of boundary struct `id` (wasmStructs.ts BOUNDARY_STRUCTS order): writes sizeof, then each
 // member's offset in declaration order, into out (at most max entries); returns the number of
 // entries, 0 for an unknown id.
 EMSCRIPTEN_KEEPALIVE int32_t hs_struct_layout(int32_t id, int32_t* out, int32_t max) {
@@ -327,7 +327,7 @@ EMSCRIPTEN_KEEPALIVE int32_t hs_engine_set_curves(EngineHandle* h, const HsCurve
 
 // Scalp avoidance (S4.7) on the last solved field: fills the handle's avoidance arrays (read
 // with hs_engine_avoid_index / hs_engine_avoid_target, hs_engine_avoid_count entries).
-// protocol.ts DetailArrays: groupCount groups of kDetailStride doubles, one group per curve.
+// hairArrays.ts DetailArrays: groupCount groups of kDetailStride doubles, one group per curve.
 EMSCRIPTEN_KEEPALIVE int32_t hs_engine_set_detail(EngineHandle* h, const double* groups,
                                                   int32_t groupCount, const int32_t* curveGroup,
                                                   int32_t curveCount) {

@@ -1,4 +1,4 @@
-// The curve kinds (CurveKindCode, protocol.ts CurveKind), one entry each: what the solver does
+// The curve kinds (CurveKindCode, curveParams.ts CurveKind), one entry each: what the solver does
 // with a curve of that kind. Its constraints (stream_constraints.hpp, dividing_constraints.hpp,
 // ponytail_constraints.hpp, braid_bun.hpp), the tail it lays in growth (gathered_tail.hpp:
 // a gathered ponytail, a braid, a bun), and whether its reach ends hair under natural fall or it

@@ -1,5 +1,5 @@
 // Scalar parameters of each curve kind: their index in a curve's parameter block (protocol.ts
-// CurveSet.params), in the order of protocol.ts CURVE_PARAMS, which declares their names,
+// CurveSet.params), in the order of curveParams.ts CURVE_PARAMS, which declares their names,
 // defaults and ranges. A kind's variable block (dividing normals, ponytail circles) follows its
 // scalars. Adding a scalar: a row in CURVE_PARAMS, an index here (before the count), and the
 // code that reads it.

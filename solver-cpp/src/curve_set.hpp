@@ -1,4 +1,4 @@
-// A whole curve set (protocol.ts CurveSet) -> one normalised constraint set: each curve's
+// A whole curve set (hairArrays.ts CurveSet) -> one normalised constraint set: each curve's
 // constraints from its kind's entry (curve_kinds.hpp) and the explicit extra constraints. Scalar
 // parameter indices: curve_params.hpp.
 #pragma once
@@ -16,10 +16,10 @@
 
 namespace hairsketch {
 
-// Kind values of CurveSet.kinds (protocol.ts CurveKind); what each does: curve_kinds.hpp.
+// Kind values of CurveSet.kinds (curveParams.ts CurveKind); what each does: curve_kinds.hpp.
 enum class CurveKindCode : uint8_t { Stream = 0, Dividing = 1, Ponytail = 2, Braid = 3, Bun = 4 };
 
-// Non-owning view of protocol.ts CurveSet.
+// Non-owning view of hairArrays.ts CurveSet.
 struct CurveSetView {
   const double* points = nullptr;  // points[3 * point + axis]
   size_t pointCount = 0;

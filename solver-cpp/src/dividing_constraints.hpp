@@ -45,7 +45,7 @@ constexpr double kDividingRedColumn = 1.0;  // |u| <= this, grid steps
 constexpr double kDividingRedTop = 2.0;     // v <= this, grid steps
 constexpr double kDividingSlab = 0.5;       // |w| <= this, grid steps
 
-// Parsed dividing parameter block (protocol.ts CurveSet.params, kind dividing): the scalars
+// Parsed dividing parameter block (hairArrays.ts CurveSet.params, kind dividing): the scalars
 // (curve_params.hpp DividingParam: sigma, h, alpha0, alpha1), then nx, ny, nz per curve point.
 struct DividingParams {
   double sigma = 1.0;               // grid steps, > 0

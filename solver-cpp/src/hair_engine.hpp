@@ -24,7 +24,7 @@
 
 namespace hairsketch {
 
-// protocol.ts DetailArrays: the numbers of one detail group, in this order.
+// hairArrays.ts DetailArrays: the numbers of one detail group, in this order.
 constexpr int kDetailStride = 11;
 DetailParams detailFromArray(const double* d);  // d[0 .. kDetailStride)
 
@@ -32,7 +32,7 @@ class HairEngine {
  public:
   // New grid and solver by name (makeFieldSolver: cg, fast, exact, auto). Clears curves and field.
   Status setGrid(const Grid& grid, double omega, const std::string& solverName);
-  // The head mesh (protocol.ts ScalpMesh): builds the root sampler and the head's distance grid
+  // The head mesh (hairArrays.ts ScalpMesh): builds the root sampler and the head's distance grid
   // (checked against the memory cap first). A refused head leaves the engine without one.
   Status setScalp(const float* positions, size_t vertexCount, const uint32_t* indices,
                   size_t triangleCount, const uint8_t* scalp, const Eigen::Vector3d& center);

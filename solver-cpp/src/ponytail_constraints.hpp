@@ -1,5 +1,5 @@
 // Ponytail constraints (method S4.6, paper §5 and Fig. 5). The curve's points are the spine; the
-// parameter block (protocol.ts) is the scalars (curve_params.hpp PonytailParam), then m, then per
+// parameter block (hairArrays.ts) is the scalars (curve_params.hpp PonytailParam), then m, then per
 // circle C_k (k = 1..m, C1 nearest the scalp, Cm = "C2" the last): cx, cy, cz, ax, ay, az, r.
 // Two layouts, told apart by their size (they differ mod 7):
 //   2 + 7 m numbers: tightness, m, circles            (the original layout; gather = 0)

@@ -17,7 +17,7 @@
 //   keep: it is skipped (counted in stats.skipped) and the solve interpolates it from its
 //   neighbours.
 // The constraints are returned sorted by grid index; the app stores them as the CurveSet's
-// explicit extra constraints (protocol.ts extraIndex / extraTarget), so they are undoable.
+// explicit extra constraints (hairArrays.ts extraIndex / extraTarget), so they are undoable.
 #pragma once
 
 #include <cstddef>
@@ -31,7 +31,7 @@
 
 namespace hairsketch {
 
-// Non-owning view of the head mesh (protocol.ts ScalpMesh).
+// Non-owning view of the head mesh (hairArrays.ts ScalpMesh).
 struct HeadMeshView {
   const float* positions = nullptr;  // #V x 3
   size_t vertexCount = 0;

@@ -33,7 +33,7 @@ struct GrowthParams {
   double minSlide = 0.3;  // of the step the field asks for
 };
 
-// protocol.ts StrandArrays: strand s owns points strandStart[s] .. strandStart[s + 1] - 1,
+// hairArrays.ts StrandArrays: strand s owns points strandStart[s] .. strandStart[s + 1] - 1,
 // the first being its root. Every root gives a strand (possibly just the root point).
 // An allocator that leaves new elements uninitialised: growth writes every point it keeps, so
 // zero-filling the (large, reused) point buffer on each resize would be wasted work.

@@ -1,4 +1,4 @@
-// The table of curve kinds (curve_kinds.hpp): one entry per kind of protocol.ts CurveKind, each
+// The table of curve kinds (curve_kinds.hpp): one entry per kind of curveParams.ts CurveKind, each
 // with its constraints, and a tail exactly for the kinds that gather hair (ponytail, braid, bun).
 #include "curve_kinds.hpp"
 
@@ -13,7 +13,7 @@ namespace curve_kinds_test {
 using namespace hairsketch;
 
 TEST(CurveKinds, EachKindCodeHasItsOwnEntryAndUnknownCodesNone) {
-  // protocol.ts CurveKind, written out here as the reference
+  // curveParams.ts CurveKind, written out here as the reference
   const struct {
     uint8_t code;
     const char* name;

@@ -1,4 +1,4 @@
-// The typed wasm boundary (protocol.ts structs and status kinds, binding.cpp) under Node with the
+// The typed wasm boundary (wasmStructs.ts structs and status kinds, binding.cpp) under Node with the
 // real module: each failure kind from the input that causes it, stats read as fixed fields
 // against what the engine did, struct layouts against C's alignment rules worked out by hand,
 // and curve parameters packed from CURVE_PARAMS against the hand-written block layout.
