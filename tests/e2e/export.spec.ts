@@ -2,14 +2,16 @@
 // `hairsketch grow` run on the same session saved through "Save"; "Open" on the exported USD and
 // glTF restores the session; the PNG is twice the canvas size. Real clicks; waits on downloads
 // and the status attributes, never on fixed sleeps.
-import { execFileSync } from 'node:child_process';
+import { execFile } from 'node:child_process';
 import { mkdtempSync, readFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
+import { promisify } from 'node:util';
 import { expect, type Page, test } from '@playwright/test';
 import { settled, watchConsole } from './helpers';
 
 const SCENE = '/?strands=1500';
+const execFileAsync = promisify(execFile);
 
 async function exportItem(page: Page, name: string): Promise<{ file: string; bytes: Buffer }> {
   await page.getByRole('button', { name: 'Export' }).click();
@@ -67,20 +69,28 @@ test('each export item downloads its file, equal to `hairsketch grow` on the sav
   expect(files['hairstyle.glb'].subarray(0, 4).toString()).toBe('glTF');
   expect(files['hairstyle-cards.glb'].subarray(0, 4).toString()).toBe('glTF');
 
-  // the command line on the saved session gives the same bytes (same wasm, same seeded growth)
-  for (const name of ['hairstyle.usda', 'hairstyle.hair', 'hairstyle.glb', 'hairstyle-cards.glb']) {
-    const out = join(dir, `cli-${name}`);
-    const format = name === 'hairstyle-cards.glb' ? ['--format', 'cards'] : [];
-    const line = execFileSync(
-      process.execPath,
-      ['scripts/hairsketch.mjs', 'grow', sessionFile, '--out', out, '--grid', '25k', ...format],
-      { encoding: 'utf8' },
-    );
-    expect(JSON.parse(line.trim().split('\n').at(-1) ?? '{}').bytes).toBe(files[name].length);
-    expect(readFileSync(out).equals(files[name]), `${name}: browser and CLI bytes differ`).toBe(
-      true,
-    );
-  }
+  // the command line on the saved session gives the same bytes (same wasm, same seeded growth);
+  // the four runs at once, each its own process
+  const names = ['hairstyle.usda', 'hairstyle.hair', 'hairstyle.glb', 'hairstyle-cards.glb'];
+  const lines = await Promise.all(
+    names.map(async (name) => {
+      const format = name === 'hairstyle-cards.glb' ? ['--format', 'cards'] : [];
+      const args = ['grow', sessionFile, '--out', join(dir, `cli-${name}`), '--grid', '25k'];
+      const { stdout } = await execFileAsync(
+        process.execPath,
+        ['scripts/hairsketch.mjs', ...args, ...format],
+        { encoding: 'utf8' },
+      );
+      return stdout;
+    }),
+  );
+  names.forEach((name, i) => {
+    expect(JSON.parse(lines[i].trim().split('\n').at(-1) ?? '{}').bytes).toBe(files[name].length);
+    expect(
+      readFileSync(join(dir, `cli-${name}`)).equals(files[name]),
+      `${name}: browser and CLI bytes differ`,
+    ).toBe(true);
+  });
 
   // PNG: twice the canvas size
   const canvas = await page.getByTestId('viewport').evaluate((c: HTMLCanvasElement) => ({
