@@ -286,9 +286,19 @@ function dividingTool(k: ToolKit): Tool {
   });
 }
 
-/** The braid tool: a braid's stroke is drawn as a stream curve is (the depth rule past the scalp), without hint strokes; its preview is the braid it will make. */
-// a braid's stroke is drawn as a stream curve is (the depth rule past the scalp), without
-// hint strokes; its preview is the braid it will make
+/** A stroke of a tie drawn as one stroke (braid, bun) made a new curve of its kind, extending as a
+ *  new curve does; `what` names it in the status line. */
+function addTieStroke(k: ToolKit, kind: 'braid' | 'bun', points: Vec3[], what: string): void {
+  k.editor.run({
+    kind: 'addCurve',
+    curve: STROKE_KINDS[kind].fromStroke(points, k.camera(), newCurveExtends(k.editor.session)),
+    what,
+    mirror: k.d.mirror(),
+  });
+}
+
+/** The braid tool: a braid's stroke is drawn as a stream curve is (the depth rule past the
+ *  scalp), without hint strokes; its preview is the braid it will make. */
 function braidTool(k: ToolKit): Tool {
   const { d, editor, viewer, step, camera, sample, eye, forward, showDraft } = k;
   return new StreamCurveTool({
@@ -299,12 +309,7 @@ function braidTool(k: ToolKit): Tool {
     showDraft,
     noun: 'A braid',
     commit: (points) =>
-      editor.run({
-        kind: 'addCurve',
-        curve: STROKE_KINDS.braid.fromStroke(points, camera(), newCurveExtends(editor.session)),
-        what: `braid {id} (${points.length - 1} segments)`,
-        mirror: d.mirror(),
-      }),
+      addTieStroke(k, 'braid', points, `braid {id} (${points.length - 1} segments)`),
     preview: (points) => {
       viewer.expectHair(points !== null);
       editor.setStroke(points && { points, viewpoint: camera(), kind: 'braid' });
@@ -315,18 +320,13 @@ function braidTool(k: ToolKit): Tool {
 
 /** The bun tool: a loop on the head where the bun sits. */
 function bunTool(k: ToolKit): Tool {
-  const { d, editor, step, camera, sample, showDraft } = k;
+  const { d, step, sample, showDraft } = k;
   return new BunTool({
     sample,
     step,
     showDraft,
     commit: (points) =>
-      editor.run({
-        kind: 'addCurve',
-        curve: STROKE_KINDS.bun.fromStroke(points, camera(), newCurveExtends(editor.session)),
-        what: `bun {id} (a loop of ${points.length} points)`,
-        mirror: d.mirror(),
-      }),
+      addTieStroke(k, 'bun', points, `bun {id} (a loop of ${points.length} points)`),
     notify: d.notify,
   });
 }
