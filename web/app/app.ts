@@ -237,18 +237,8 @@ export function startApp(): void {
     const on = state.display.field;
     if (on !== previous.display.field) bridge.setWantField(on, !!overlays.shownResult?.field);
   });
-  const curvePanel = buildCurvePanel(
-    byId('stage'),
-    (id, patch) => editor.run({ kind: 'patchCurve', id, patch }),
-    (m) => status.note(m),
-    (id) => editor.run({ kind: 'braidTail', id }),
-  );
-  detailPanel = buildDetailPanel(byId('stage'), {
-    setGrowth: (patch) => editor.run({ kind: 'setGrowth', patch }),
-    lengthen: (by) => editor.run({ kind: 'lengthen', by }),
-    setDetail: (curveId, detail) => editor.run({ kind: 'setDetail', curveId, detail }),
-    say: (m) => status.note(m),
-  });
+  const curvePanel = buildSelectedCurvePanel(byId('stage'), editor, status);
+  detailPanel = buildHairPanel(byId('stage'), editor, status);
   headPanel = buildHeadPanel(byId('stage'), {
     openHead: () => toolbar.openHeadDialog(),
     useBuiltin: () => heads.useBuiltin(editor),
@@ -291,39 +281,14 @@ export function startApp(): void {
     detailPanel,
     showHeadPanel,
   });
-  bridge.subscribe({
-    busy: (phase, fraction, previewing) => status.busy(phase, fraction, previewing),
-    result: (r, final) => {
-      hair.result(r, final);
-      sectionTint.update();
-      overlays.result(r);
-      status.result(r, final);
-      active.previewAnswered();
-    },
-    error: (m, kind, restarting) => status.solverError(m, kind, restarting),
-    gridChanged: (g) => overlays.setGrid(g),
-    idle: () => {
-      hair.idle();
-      // "Ready" once the converged hair is on screen (cached or unchanged hair: at once)
-      if (!hair.awaitingFrame) status.ready();
-    },
-  });
-  hair.onFinalShown = () => status.ready();
+  showSolverResults({ bridge, hair, sectionTint, overlays, status, active });
 
   let lastPointerUp = 0;
   bindInput({
     viewer,
     tool: () => active.current,
     actions,
-    overlayKey: (key) => {
-      if (key === 'escape' && exporting?.menu.open) {
-        exporting.menu.close();
-        return true;
-      }
-      if (!help?.open || (key !== 'escape' && key !== '?')) return false;
-      help.close();
-      return true;
-    },
+    overlayKey: (key) => closeOverlay(key, exporting, help),
     pointerUp: (t) => {
       lastPointerUp = t;
     },
@@ -333,12 +298,7 @@ export function startApp(): void {
   line.counts(0, initial.curves.length);
   line.set('loading', 'Loading the solver…');
   bridge.sync();
-  if (window.location.hash.startsWith('#s='))
-    void openSessionLinkOutcome(editor, window.location.hash, headStore).then((o) => {
-      if (o.kind === 'failed') status.error(o.message);
-      else links.markLinked(editor.session);
-    });
-  else links.schedule(); // the address bar carries the session from the start
+  openStartingLink({ editor, status, links, headStore });
   if (opts.warnings.length) status.note(`URL: ${opts.warnings.join('; ')}`);
 
   installTestApi({
@@ -367,5 +327,88 @@ export function startApp(): void {
     lastPointerUp: () => lastPointerUp,
     quality,
     exporter: exporting.exporter,
+  });
+}
+
+/** The solver's news on screen: progress and errors in the status line, results to the hair,
+ *  the section tint and the overlays, "Ready" once the converged hair is shown. */
+function showSolverResults(p: {
+  bridge: SolverBridge;
+  hair: HairPresenter;
+  sectionTint: SectionTintPresenter;
+  overlays: OverlayPresenter;
+  status: StatusPresenter;
+  active: ActiveTool;
+}): void {
+  const { bridge, hair, sectionTint, overlays, status, active } = p;
+  bridge.subscribe({
+    busy: (phase, fraction, previewing) => status.busy(phase, fraction, previewing),
+    result: (r, final) => {
+      hair.result(r, final);
+      sectionTint.update();
+      overlays.result(r);
+      status.result(r, final);
+      active.previewAnswered();
+    },
+    error: (m, kind, restarting) => status.solverError(m, kind, restarting),
+    gridChanged: (g) => overlays.setGrid(g),
+    idle: () => {
+      hair.idle();
+      // "Ready" once the converged hair is on screen (cached or unchanged hair: at once)
+      if (!hair.awaitingFrame) status.ready();
+    },
+  });
+  hair.onFinalShown = () => status.ready();
+}
+
+/** Escape closes the open Export menu, Escape or ? the open help overlay; whether a key did. */
+function closeOverlay(
+  key: string,
+  exporting: ExportWiring | null,
+  help: HelpOverlay | null,
+): boolean {
+  if (key === 'escape' && exporting?.menu.open) {
+    exporting.menu.close();
+    return true;
+  }
+  if (!help?.open || (key !== 'escape' && key !== '?')) return false;
+  help.close();
+  return true;
+}
+
+/** A session link in the address bar (#s=…) opens; without one the address bar carries the
+ *  session from the start. */
+function openStartingLink(p: {
+  editor: Editor;
+  status: StatusPresenter;
+  links: LinkWriter;
+  headStore: ReturnType<typeof indexedDbHeadStore>;
+}): void {
+  const { editor, status, links, headStore } = p;
+  if (window.location.hash.startsWith('#s='))
+    void openSessionLinkOutcome(editor, window.location.hash, headStore).then((o) => {
+      if (o.kind === 'failed') status.error(o.message);
+      else links.markLinked(editor.session);
+    });
+  else links.schedule();
+}
+
+/** The selected curve's panel: its parameters, "Extend past the end", "Braid the tail". */
+function buildSelectedCurvePanel(stage: HTMLElement, editor: Editor, status: StatusPresenter) {
+  return buildCurvePanel(
+    stage,
+    (id, patch) => editor.run({ kind: 'patchCurve', id, patch }),
+    (m) => status.note(m),
+    (id) => editor.run({ kind: 'braidTail', id }),
+  );
+}
+
+/** The Hair panel: strands, length, the whole head's and the selected curve's detail. */
+function buildHairPanel(stage: HTMLElement, editor: Editor, status: StatusPresenter): DetailPanel {
+  return buildDetailPanel(stage, {
+    setGrowth: (patch) => editor.run({ kind: 'setGrowth', patch }),
+    lengthen: (by) => editor.run({ kind: 'lengthen', by }),
+    setDetail: (curveId, detail) => editor.run({ kind: 'setDetail', curveId, detail }),
+    say: (m) => status.note(m),
   });
 }
