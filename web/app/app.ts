@@ -11,8 +11,7 @@ import { applyPreset } from '../model/presets';
 import { DEFAULT_GROWTH, emptySession, hangLength } from '../model/session';
 import { indexedDbPictureStore } from '../reference/pictureStore';
 import { PONYTAIL_STAGE_HINT } from '../tools/ponytailTool';
-import { buildCurvePanel } from '../ui/curvePanel';
-import { buildDetailPanel, type DetailPanel } from '../ui/detailPanel';
+import type { DetailPanel } from '../ui/detailPanel';
 import { buildDisplayToggles } from '../ui/displayToggles';
 import { buildHeadPanel, type HeadPanel } from '../ui/headPanel';
 import { buildHelpOverlay, type HelpOverlay } from '../ui/helpOverlay';
@@ -27,6 +26,13 @@ import { ReferencePlanes } from '../viewer/referencePlanes';
 import { Viewer } from '../viewer/viewer';
 import { buildActions, NAMED_VIEWS } from './actions';
 import { ActiveTool } from './activeTool';
+import {
+  buildHairPanel,
+  buildSelectedCurvePanel,
+  closeOverlay,
+  openStartingLink,
+  showSolverResults,
+} from './appWiring';
 import { wireCardsView } from './cardsPresenter';
 import { editActions } from './editActions';
 import { type ExportWiring, wireExport } from './exportActions';
@@ -38,7 +44,7 @@ import { bindPageControls } from './pageControls';
 import { loadQualitySetting, QualityControl } from './quality';
 import { ReferenceController } from './referenceController';
 import { SectionTintPresenter } from './sectionTintPresenter';
-import { LinkWriter, openSessionFileOutcome, openSessionLinkOutcome } from './sessionIO';
+import { LinkWriter, openSessionFileOutcome } from './sessionIO';
 import { SolverBridge } from './solverBridge';
 import { StatusPresenter } from './statusPresenter';
 import { installTestApi } from './testApi';
@@ -327,88 +333,5 @@ export function startApp(): void {
     lastPointerUp: () => lastPointerUp,
     quality,
     exporter: exporting.exporter,
-  });
-}
-
-/** The solver's news on screen: progress and errors in the status line, results to the hair,
- *  the section tint and the overlays, "Ready" once the converged hair is shown. */
-function showSolverResults(p: {
-  bridge: SolverBridge;
-  hair: HairPresenter;
-  sectionTint: SectionTintPresenter;
-  overlays: OverlayPresenter;
-  status: StatusPresenter;
-  active: ActiveTool;
-}): void {
-  const { bridge, hair, sectionTint, overlays, status, active } = p;
-  bridge.subscribe({
-    busy: (phase, fraction, previewing) => status.busy(phase, fraction, previewing),
-    result: (r, final) => {
-      hair.result(r, final);
-      sectionTint.update();
-      overlays.result(r);
-      status.result(r, final);
-      active.previewAnswered();
-    },
-    error: (m, kind, restarting) => status.solverError(m, kind, restarting),
-    gridChanged: (g) => overlays.setGrid(g),
-    idle: () => {
-      hair.idle();
-      // "Ready" once the converged hair is on screen (cached or unchanged hair: at once)
-      if (!hair.awaitingFrame) status.ready();
-    },
-  });
-  hair.onFinalShown = () => status.ready();
-}
-
-/** Escape closes the open Export menu, Escape or ? the open help overlay; whether a key did. */
-function closeOverlay(
-  key: string,
-  exporting: ExportWiring | null,
-  help: HelpOverlay | null,
-): boolean {
-  if (key === 'escape' && exporting?.menu.open) {
-    exporting.menu.close();
-    return true;
-  }
-  if (!help?.open || (key !== 'escape' && key !== '?')) return false;
-  help.close();
-  return true;
-}
-
-/** A session link in the address bar (#s=…) opens; without one the address bar carries the
- *  session from the start. */
-function openStartingLink(p: {
-  editor: Editor;
-  status: StatusPresenter;
-  links: LinkWriter;
-  headStore: ReturnType<typeof indexedDbHeadStore>;
-}): void {
-  const { editor, status, links, headStore } = p;
-  if (window.location.hash.startsWith('#s='))
-    void openSessionLinkOutcome(editor, window.location.hash, headStore).then((o) => {
-      if (o.kind === 'failed') status.error(o.message);
-      else links.markLinked(editor.session);
-    });
-  else links.schedule();
-}
-
-/** The selected curve's panel: its parameters, "Extend past the end", "Braid the tail". */
-function buildSelectedCurvePanel(stage: HTMLElement, editor: Editor, status: StatusPresenter) {
-  return buildCurvePanel(
-    stage,
-    (id, patch) => editor.run({ kind: 'patchCurve', id, patch }),
-    (m) => status.note(m),
-    (id) => editor.run({ kind: 'braidTail', id }),
-  );
-}
-
-/** The Hair panel: strands, length, the whole head's and the selected curve's detail. */
-function buildHairPanel(stage: HTMLElement, editor: Editor, status: StatusPresenter): DetailPanel {
-  return buildDetailPanel(stage, {
-    setGrowth: (patch) => editor.run({ kind: 'setGrowth', patch }),
-    lengthen: (by) => editor.run({ kind: 'lengthen', by }),
-    setDetail: (curveId, detail) => editor.run({ kind: 'setDetail', curveId, detail }),
-    say: (m) => status.note(m),
   });
 }

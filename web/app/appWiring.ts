@@ -1,0 +1,106 @@
+// Pieces of the composition root (app.ts) that stand on their own: how the solver's news, the
+// overlay keys, the starting link and the curve and Hair panels are wired.
+import type { Editor } from '../editor/editor';
+import type { indexedDbHeadStore } from '../head/headStore';
+import { buildCurvePanel } from '../ui/curvePanel';
+import { buildDetailPanel, type DetailPanel } from '../ui/detailPanel';
+import type { HelpOverlay } from '../ui/helpOverlay';
+import type { ActiveTool } from './activeTool';
+import type { ExportWiring } from './exportActions';
+import type { HairPresenter } from './hairPresenter';
+import type { OverlayPresenter } from './overlayPresenter';
+import type { SectionTintPresenter } from './sectionTintPresenter';
+import { type LinkWriter, openSessionLinkOutcome } from './sessionIO';
+import type { SolverBridge } from './solverBridge';
+import type { StatusPresenter } from './statusPresenter';
+
+/** The solver's news on screen: progress and errors in the status line, results to the hair,
+ *  the section tint and the overlays, "Ready" once the converged hair is shown. */
+export function showSolverResults(p: {
+  bridge: SolverBridge;
+  hair: HairPresenter;
+  sectionTint: SectionTintPresenter;
+  overlays: OverlayPresenter;
+  status: StatusPresenter;
+  active: ActiveTool;
+}): void {
+  const { bridge, hair, sectionTint, overlays, status, active } = p;
+  bridge.subscribe({
+    busy: (phase, fraction, previewing) => status.busy(phase, fraction, previewing),
+    result: (r, final) => {
+      hair.result(r, final);
+      sectionTint.update();
+      overlays.result(r);
+      status.result(r, final);
+      active.previewAnswered();
+    },
+    error: (m, kind, restarting) => status.solverError(m, kind, restarting),
+    gridChanged: (g) => overlays.setGrid(g),
+    idle: () => {
+      hair.idle();
+      // "Ready" once the converged hair is on screen (cached or unchanged hair: at once)
+      if (!hair.awaitingFrame) status.ready();
+    },
+  });
+  hair.onFinalShown = () => status.ready();
+}
+
+/** Escape closes the open Export menu, Escape or ? the open help overlay; whether a key did. */
+export function closeOverlay(
+  key: string,
+  exporting: ExportWiring | null,
+  help: HelpOverlay | null,
+): boolean {
+  if (key === 'escape' && exporting?.menu.open) {
+    exporting.menu.close();
+    return true;
+  }
+  if (!help?.open || (key !== 'escape' && key !== '?')) return false;
+  help.close();
+  return true;
+}
+
+/** A session link in the address bar (#s=…) opens; without one the address bar carries the
+ *  session from the start. */
+export function openStartingLink(p: {
+  editor: Editor;
+  status: StatusPresenter;
+  links: LinkWriter;
+  headStore: ReturnType<typeof indexedDbHeadStore>;
+}): void {
+  const { editor, status, links, headStore } = p;
+  if (window.location.hash.startsWith('#s='))
+    void openSessionLinkOutcome(editor, window.location.hash, headStore).then((o) => {
+      if (o.kind === 'failed') status.error(o.message);
+      else links.markLinked(editor.session);
+    });
+  else links.schedule();
+}
+
+/** The selected curve's panel: its parameters, "Extend past the end", "Braid the tail". */
+export function buildSelectedCurvePanel(
+  stage: HTMLElement,
+  editor: Editor,
+  status: StatusPresenter,
+) {
+  return buildCurvePanel(
+    stage,
+    (id, patch) => editor.run({ kind: 'patchCurve', id, patch }),
+    (m) => status.note(m),
+    (id) => editor.run({ kind: 'braidTail', id }),
+  );
+}
+
+/** The Hair panel: strands, length, the whole head's and the selected curve's detail. */
+export function buildHairPanel(
+  stage: HTMLElement,
+  editor: Editor,
+  status: StatusPresenter,
+): DetailPanel {
+  return buildDetailPanel(stage, {
+    setGrowth: (patch) => editor.run({ kind: 'setGrowth', patch }),
+    lengthen: (by) => editor.run({ kind: 'lengthen', by }),
+    setDetail: (curveId, detail) => editor.run({ kind: 'setDetail', curveId, detail }),
+    say: (m) => status.note(m),
+  });
+}
