@@ -652,10 +652,8 @@ TEST(StrandDetail, EndSpreadCutsEndsOverABand) {
             StatusCode::InvalidInput);
 }
 
-// Ringlets: two strands 1 mm apart in one clump curl in phase with their guide when asked, so
-// they wind round together (each point of one within 5 mm of the other's path); each at its own
-// random phase they part by up to twice the radius.
-TEST(StrandDetail, RingletsCurlAClumpInPhase) {
+// 1 cm curls, 2 turns per 10 cm from the root, random phase, in clumps of 1.2 cm (factor 0.7).
+DetailParams curlyClumps() {
   DetailParams d;
   d.curl.radius = 0.1;
   d.curl.frequency = 2;
@@ -663,6 +661,14 @@ TEST(StrandDetail, RingletsCurlAClumpInPhase) {
   d.curl.randomOffset = 1;
   d.clump.factor = 0.7;
   d.clump.guideDistance = 0.12;
+  return d;
+}
+
+// Ringlets: two strands 1 mm apart in one clump curl in phase with their guide when asked, so
+// they wind round together (each point of one within 5 mm of the other's path); each at its own
+// random phase they part by up to twice the radius.
+TEST(StrandDetail, RingletsCurlAClumpInPhase) {
+  const DetailParams d = curlyClumps();
   const std::vector<Strand> list = {straight(V3(0, 0, 0), V3(0, -1, 0), 41, 0.05),
                                     straight(V3(0.001, 0, 0), V3(0, -1, 0), 41, 0.05)};
   auto apart = [&](bool ringlets) {
@@ -692,13 +698,7 @@ TEST(StrandDetail, RingletsCurlAClumpInPhase) {
 // r (1 ± 0.25), the radii differ, and some wind each way (the sign of the turn of the point's
 // offset from the axis, seen along the strand), so neighbouring ringlets do not line up in rows.
 TEST(StrandDetail, RingletsVaryInSizeClumpByClump) {
-  DetailParams d;
-  d.curl.radius = 0.1;
-  d.curl.frequency = 2;
-  d.curl.start = 0;
-  d.curl.randomOffset = 1;
-  d.clump.factor = 0.7;
-  d.clump.guideDistance = 0.12;
+  const DetailParams d = curlyClumps();
   std::vector<Strand> list;
   for (int k = 0; k < 8; ++k) list.push_back(straight(V3(0.5 * k, 0, 0), V3(0, -1, 0), 41, 0.05));
   auto radii = [&](bool ringlets) {
