@@ -6,6 +6,7 @@ import type { CurveType } from '../model/session';
 import type { Action } from '../ui/action';
 import { DISPLAY_TOGGLES, type DisplayKey } from '../ui/displayToggles';
 import type { AppViewName } from '../viewer/namedViews';
+import { TIE_TOOL_KINDS, TIE_TOOLS } from './tieTools';
 
 /** What the actions act on (the composition root provides it). */
 export interface ActionTarget {
@@ -91,18 +92,10 @@ export function buildActions(t: ActionTarget): Action[] {
       'p',
       'Four strokes: spine from the scalp, then cross-section and two profiles',
     ),
-    tool(
-      'braid',
-      'Braid',
-      'k',
-      'One stroke from the scalp along where the braid should hang, scalp to tip; the hair near it is gathered into a three-strand braid',
-    ),
-    tool(
-      'bun',
-      'Bun',
-      'u',
-      'Draw a loop on the head where the bun sits; the hair near it is gathered and coiled into it',
-    ),
+    ...TIE_TOOL_KINDS.map((kind) => {
+      const spec = TIE_TOOLS[kind];
+      return tool(kind, spec.label, spec.key, spec.title);
+    }),
     tool('select', 'Select', 'v', 'Select a curve; drag to orbit'),
     tool(
       'scalp',

@@ -6,8 +6,9 @@ import type { HeadMeshArrays } from '../viewer/headMaterial';
 import { tintHeadSections } from '../viewer/sectionTint';
 import type { Viewer } from '../viewer/viewer';
 import type { HairPresenter } from './hairPresenter';
+import { TIE_TOOL_KINDS } from './tieTools';
 
-const TIE_TOOLS: readonly ToolName[] = ['ponytail', 'braid', 'bun'];
+const TIE_TOOLS: readonly ToolName[] = ['ponytail', ...TIE_TOOL_KINDS];
 
 export class SectionTintPresenter {
   private shownFor: unknown = null;

@@ -7,7 +7,7 @@ import { curveSurface } from '../editor/curveSurface';
 import type { Editor, ToolName } from '../editor/editor';
 import type { Head } from '../head/head';
 import type { ScalpPaintStroke } from '../head/scalpPaint';
-import { defaultParams } from '../model/curveParams';
+import { defaultParams, type PlainTieKind } from '../model/curveParams';
 import { STROKE_KINDS } from '../model/kinds';
 import { DEFAULT_TIGHTNESS, newCurveExtends, streamExtends, tieAtEnd } from '../model/session';
 import type { Vec3 } from '../model/vec3';
@@ -20,24 +20,25 @@ import { SelectTool } from '../tools/selectTool';
 import { StreamCurveTool } from '../tools/streamCurveTool';
 import type { Tool } from '../tools/tool';
 import type { Viewer } from '../viewer/viewer';
+import { TIE_TOOL_KINDS, TIE_TOOLS } from './tieTools';
 
-const TOOL_HINTS: Record<Exclude<ToolName, 'ponytail'>, string> = {
+const TOOL_HINTS: Record<Exclude<ToolName, 'ponytail' | PlainTieKind>, string> = {
   stream:
     'Drag from the scalp to draw a stream curve · a stroke starting on the selected curve cuts, extends or re-routes it · right-drag orbits · wheel zooms · ? lists shortcuts',
   dividing:
     'Drag on the scalp to draw a parting · a stroke starting beside the selected one tilts that side · right-drag orbits',
   select:
     'Click a curve to select it · drag orbits · wheel zooms · right-drag pans · ? lists shortcuts',
-  braid:
-    'Drag from the scalp along where the braid should hang, scalp to tip · right-drag orbits · ? lists shortcuts',
-  bun: 'Draw a loop on the head where the bun sits · right-drag orbits · ? lists shortcuts',
   scalp:
     'Drag on the head to paint scalp (where hair grows) · Shift+drag erases · wheel sets the brush radius · right-drag orbits',
 };
 
 /** The hint line for the tool `name` (the ponytail's says which stroke comes next). */
 export function toolHint(name: ToolName, ponytailStage: PonytailStage): string {
-  return name === 'ponytail' ? PONYTAIL_STAGE_HINT[ponytailStage] : TOOL_HINTS[name];
+  if (name === 'ponytail') return PONYTAIL_STAGE_HINT[ponytailStage];
+  return Object.hasOwn(TIE_TOOLS, name)
+    ? TIE_TOOLS[name as PlainTieKind].hint
+    : TOOL_HINTS[name as keyof typeof TOOL_HINTS];
 }
 
 export interface ToolDeps {
@@ -126,15 +127,15 @@ export function createTools(d: ToolDeps): ToolSet {
   const k = toolKit(d);
   const ponytail = ponytailTool(k);
   const scalpBrush = scalpBrushTool(k);
-  const byName: Record<ToolName, Tool> = {
+  const ties = Object.fromEntries(TIE_TOOL_KINDS.map((kind) => [kind, tieTool(k, kind)]));
+  const byName = {
     stream: streamTool(k),
     dividing: dividingTool(k),
     ponytail,
-    braid: braidTool(k),
-    bun: bunTool(k),
+    ...(ties as Record<PlainTieKind, Tool>),
     select: selectTool(k),
     scalp: scalpBrush,
-  };
+  } satisfies Record<ToolName, Tool>;
   return { byName, ponytail, scalpBrush };
 }
 
@@ -286,47 +287,34 @@ function dividingTool(k: ToolKit): Tool {
   });
 }
 
-/** A stroke of a tie drawn as one stroke (braid, bun) made a new curve of its kind, extending as a
- *  new curve does; `what` names it in the status line. */
-function addTieStroke(k: ToolKit, kind: 'braid' | 'bun', points: Vec3[], what: string): void {
-  k.editor.run({
-    kind: 'addCurve',
-    curve: STROKE_KINDS[kind].fromStroke(points, k.camera(), newCurveExtends(k.editor.session)),
-    what,
-    mirror: k.d.mirror(),
-  });
-}
-
-/** The braid tool: a braid's stroke is drawn as a stream curve is (the depth rule past the
- *  scalp), without hint strokes; its preview is the braid it will make. */
-function braidTool(k: ToolKit): Tool {
+/** The tool of a tie drawn as one stroke (tieTools.ts): a `spine` is drawn as a stream curve is
+ *  (the depth rule past the scalp), without hint strokes, and previewed as the tie it will make;
+ *  a `loop` is drawn on the head. Its stroke makes a new curve of its kind, extending as a new
+ *  curve does. */
+function tieTool(k: ToolKit, kind: PlainTieKind): Tool {
   const { d, editor, viewer, step, camera, sample, eye, forward, showDraft } = k;
+  const spec = TIE_TOOLS[kind];
+  const commit = (points: Vec3[]) =>
+    editor.run({
+      kind: 'addCurve',
+      curve: STROKE_KINDS[kind].fromStroke(points, camera(), newCurveExtends(editor.session)),
+      what: spec.what(points.length),
+      mirror: d.mirror(),
+    });
+  if (spec.draw === 'loop')
+    return new BunTool({ sample, step, showDraft, commit, notify: d.notify });
   return new StreamCurveTool({
     sample,
     eye,
     forward,
     step,
     showDraft,
-    noun: 'A braid',
-    commit: (points) =>
-      addTieStroke(k, 'braid', points, `braid {id} (${points.length - 1} segments)`),
+    noun: `A ${spec.label.toLowerCase()}`,
+    commit,
     preview: (points) => {
       viewer.expectHair(points !== null);
-      editor.setStroke(points && { points, viewpoint: camera(), kind: 'braid' });
+      editor.setStroke(points && { points, viewpoint: camera(), kind });
     },
-    notify: d.notify,
-  });
-}
-
-/** The bun tool: a loop on the head where the bun sits. */
-function bunTool(k: ToolKit): Tool {
-  const { d, step, sample, showDraft } = k;
-  return new BunTool({
-    sample,
-    step,
-    showDraft,
-    commit: (points) =>
-      addTieStroke(k, 'bun', points, `bun {id} (a loop of ${points.length} points)`),
     notify: d.notify,
   });
 }

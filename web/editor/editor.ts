@@ -3,13 +3,15 @@
 // `run(command)`, `undo`, `redo`, `select`, `setTool` and `setStroke`. Each change goes one way:
 // history, then one notification to every subscriber (solver bridge, hair and overlay
 // presenters, link writer, status line, UI). No DOM, no three.js: it runs as is in unit tests.
+import type { PlainTieKind } from '../model/curveParams';
 import { History } from '../model/history';
+import type { StrokeKindName } from '../model/kinds';
 import type { SessionState, StyleCurve, Viewpoint } from '../model/session';
 import { findCurve } from '../model/session';
 import type { Vec3 } from '../model/vec3';
 import { applyCommand, type Command } from './commands';
 
-export type ToolName = 'stream' | 'select' | 'dividing' | 'ponytail' | 'braid' | 'bun' | 'scalp';
+export type ToolName = 'stream' | 'select' | 'dividing' | 'ponytail' | PlainTieKind | 'scalp';
 
 export type ChangeCause = 'command' | 'undo' | 'redo' | 'select' | 'tool' | 'stroke';
 
@@ -23,7 +25,7 @@ export interface StrokeInProgress {
   /** The camera it is drawn from (its curve's viewpoint). */
   readonly viewpoint: Viewpoint;
   /** The curve it will make (default: a stream curve); previews solve it as that kind. */
-  readonly kind?: 'stream' | 'braid';
+  readonly kind?: StrokeKindName;
   /** Whether its hair grows on past its end ("Extend past the end"; default: as the session
    *  says for a new curve). */
   readonly extend?: boolean;

@@ -3,9 +3,10 @@
 // (solver/protocol.ts CurveSet.params carries them to solver-cpp, which reads them at the
 // indices of solver-cpp/src/curve_params.hpp).
 
-/** Style curve kinds, as stored in CurveSet.kinds (hairArrays.ts). */
-export const CurveKind = { stream: 0, dividing: 1, ponytail: 2, braid: 3, bun: 4 } as const;
-export type CurveKindName = keyof typeof CurveKind;
+/** The kinds that are a stroke and their scalar parameters, nothing else of their own (braid,
+ *  bun: kinds/tie.ts defines them all from that); a new one here is typed through the model. */
+export const PLAIN_TIE_KINDS = ['braid', 'bun'] as const;
+export type PlainTieKind = (typeof PLAIN_TIE_KINDS)[number];
 
 /** One scalar parameter of a curve kind: the session field `name` (StyleCurve[name], in the
  *  unit below), packed in table order at the start of the curve's CurveSet.params block and read
@@ -44,7 +45,8 @@ const GATHER_SECTION = {
   view: { min: 0, max: 1, step: 1 },
 } as const;
 
-/** The scalar parameters of each curve kind, in pack order (solver-cpp/src/curve_params.hpp
+/** The scalar parameters of each curve kind, in pack order; the kinds' order is their code
+ *  (CurveKind: solver-cpp/src/curve_set.hpp CurveKindCode, share links), so a new kind comes last (solver-cpp/src/curve_params.hpp
  *  has the same order). Adding one: a row at the end of its kind (links store the rows in this
  *  order, so never insert or reorder), its index in curve_params.hpp, and the C++ that reads it. */
 export const CURVE_PARAMS = {
@@ -188,10 +190,17 @@ export const CURVE_PARAMS = {
     },
     GATHER_SECTION,
   ],
-} as const satisfies Record<CurveKindName, readonly CurveParamSpec[]>;
+} as const satisfies Record<string, readonly CurveParamSpec[]>;
 
-/** The curve kinds in CurveKind order. */
-export const CURVE_KINDS = Object.keys(CurveKind) as CurveKindName[];
+export type CurveKindName = keyof typeof CURVE_PARAMS;
+
+/** The curve kinds in code order. */
+export const CURVE_KINDS = Object.keys(CURVE_PARAMS) as CurveKindName[];
+
+/** Style curve kinds' codes, as stored in CurveSet.kinds (hairArrays.ts): their table order. */
+export const CurveKind = Object.fromEntries(CURVE_KINDS.map((k, i) => [k, i])) as {
+  readonly [K in CurveKindName]: number;
+};
 
 /** The scalar parameter values of a curve kind, by name. */
 export type CurveParamValues<K extends CurveKindName> = {

@@ -11,7 +11,7 @@
 // editor made (already on that grid) reopens deep-equal, and grows the same hair. Version 3 is
 // version 2 with, first, what a reader needs to decode it after the tables grow: how many
 // scalar parameters each curve kind had when it was written. A version 2 link holds the
-// parameters of V2_PARAM_COUNTS (the table when version 2 was replaced); parameters added since
+// parameters of v2ParamCount (the table when version 2 was replaced); parameters added since
 // are absent from older links, so their curves get the defaults, as a saved file without them
 // does. The body:
 //
@@ -35,7 +35,7 @@
 //               varint length and the id's bytes)
 //     id
 //     viewpoint unless bit 5: position, target as 6 zigzag varints (position grid)
-//     params    the first count (version 3: as stated; version 2: V2_PARAM_COUNTS) of the
+//     params    the first count (version 3: as stated; version 2: v2ParamCount) of the
 //               kind's CURVE_PARAMS in order, zigzag varints (their rows' quantum)
 //     points    a polyline (below)
 //     dividing: normals: a polyline on the direction grid
@@ -87,14 +87,15 @@ export const MAX_LINK_BYTES = 8 << 20;
 export const MAX_LINK_CHARS = 2_000_000;
 
 /** Scalar parameters per curve kind in a version 2 link: CURVE_PARAMS when version 3 replaced
- *  it. Never changes: version 2 links hold exactly these. */
-export const V2_PARAM_COUNTS: Readonly<Record<CurveKindName, number>> = {
+ *  it. Never changes: version 2 links hold exactly these (no kind after these three). */
+const V2_PARAM_COUNT: Readonly<Partial<Record<CurveKindName, number>>> = {
   stream: 0,
   dividing: 4,
   ponytail: 1,
-  braid: 0, // no braids or buns in version 2
-  bun: 0,
 };
+
+/** The scalar parameters of kind `k` in a version 2 link (0 for a kind it cannot hold). */
+export const v2ParamCount = (k: CurveKindName): number => V2_PARAM_COUNT[k] ?? 0;
 
 /** Curve kinds a version 2 link can hold, and the fewest a version 3 link states. */
 export const V2_KINDS = 3;

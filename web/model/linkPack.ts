@@ -15,7 +15,7 @@ import {
   TYPES,
   typeBits,
   V2_KINDS,
-  V2_PARAM_COUNTS,
+  v2ParamCount,
 } from './linkFormat';
 import {
   HEAD_FORMATS,
@@ -42,11 +42,11 @@ function colourBytes(c: string): [number, number, number] | null {
 }
 
 /** The body (before deflate) of a session in link version `version` (3, written; 2 for tests
- *  that need the layout of version 2, which holds V2_PARAM_COUNTS parameters per curve kind);
+ *  that need the layout of version 2, which holds v2ParamCount parameters per curve kind);
  *  its numbers go on the grid of quantize.ts as they are written. */
 export function packSession(s: SessionState, version: 2 | 3 = LINK_VERSION): Uint8Array {
   const w = new Writer();
-  const counts = TYPES.map((k) => (version === 2 ? V2_PARAM_COUNTS[k] : curveParamSpecs(k).length));
+  const counts = TYPES.map((k) => (version === 2 ? v2ParamCount(k) : curveParamSpecs(k).length));
   if (version === 3) {
     // the kinds up to the last one used (at least the first three, as before braids and buns)
     let kinds = V2_KINDS;

@@ -16,7 +16,7 @@ import {
   PARTS,
   TYPES,
   V2_KINDS,
-  V2_PARAM_COUNTS,
+  v2ParamCount,
 } from './linkFormat';
 import { HEAD_FORMATS } from './session';
 import { SESSION_VERSION } from './sessionMigrations';
@@ -42,9 +42,7 @@ export function unpackSession(body: Uint8Array, version: 2 | 3 = 3): Record<stri
     throw new LinkError('its checksum does not match');
   const r = new Reader(body.subarray(0, body.length - 4));
   const { counts, kinds } =
-    version === 2
-      ? { counts: TYPES.map((k) => V2_PARAM_COUNTS[k]), kinds: V2_KINDS }
-      : paramCounts(r);
+    version === 2 ? { counts: TYPES.map((k) => v2ParamCount(k)), kinds: V2_KINDS } : paramCounts(r);
   const gridIndex = r.u8();
   if (gridIndex >= GRIDS.length) throw new LinkError('unknown grid');
   const hex = [r.u8(), r.u8(), r.u8()].map((b) => b.toString(16).padStart(2, '0')).join('');

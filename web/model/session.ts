@@ -1,6 +1,6 @@
 // The session model: everything the user made, as plain immutable JSON-able data.
 
-import { CURVE_PARAMS, type CurveParamValues } from './curveParams';
+import { CURVE_PARAMS, type CurveParamValues, type PlainTieKind } from './curveParams';
 import type { HairDetail } from './detail';
 import type { DividingSettings } from './dividingFrames';
 import type { GridPreset } from './grid';
@@ -62,32 +62,28 @@ export interface PonytailCurve {
   mirror?: string;
 }
 
-/** A braid (solver-cpp/src/braid_bun.hpp): `points` is the stroke from the scalp along the
- *  braid, scalp to tip (drawn like a ponytail's spine); its scalar parameters are those of
- *  curveParams.ts CURVE_PARAMS.braid (lengths in world units, crossings per world unit). */
-export interface BraidCurve extends CurveParamValues<'braid'> {
+/** A tie that is a stroke and its scalar parameters (curveParams.ts PLAIN_TIE_KINDS, defined in
+ *  kinds/tie.ts): a braid's `points` are the stroke from the scalp along the braid, scalp to tip
+ *  (drawn like a ponytail's spine); a bun's, a loop drawn on the head where the bun sits
+ *  (solver-cpp/src/braid_bun.hpp). Its scalars are those of CURVE_PARAMS[K] (lengths in world
+ *  units, crossings per world unit; a bun's radius 0: the loop's size). */
+export type PlainTieCurve<K extends PlainTieKind> = CurveParamValues<K> & {
   id: string;
-  type: 'braid';
+  type: K;
   points: Vec3[];
   extend: boolean;
   viewpoint: Viewpoint;
   detail?: HairDetail;
   mirror?: string;
-}
+};
+export type BraidCurve = PlainTieCurve<'braid'>;
+export type BunCurve = PlainTieCurve<'bun'>;
 
-/** A bun (solver-cpp/src/braid_bun.hpp): `points` is a loop drawn on the head where the bun
- *  sits; its scalar parameters are those of CURVE_PARAMS.bun (radius 0: the loop's size). */
-export interface BunCurve extends CurveParamValues<'bun'> {
-  id: string;
-  type: 'bun';
-  points: Vec3[];
-  extend: boolean;
-  viewpoint: Viewpoint;
-  detail?: HairDetail;
-  mirror?: string;
-}
-
-export type StyleCurve = StreamCurve | DividingCurve | PonytailCurve | BraidCurve | BunCurve;
+export type StyleCurve =
+  | StreamCurve
+  | DividingCurve
+  | PonytailCurve
+  | { [K in PlainTieKind]: PlainTieCurve<K> }[PlainTieKind];
 export type CurveType = StyleCurve['type'];
 
 /** The head file formats a session can name (head/headFileFormats.ts reads each of them). */

@@ -1,11 +1,13 @@
 // What the model knows of one kind of style curve, in one place: each kind's module (stream.ts,
-// dividing.ts, ponytail.ts, braid.ts, bun.ts) defines one CurveKindDef, and index.ts lists them
-// in a table that the generic code (the reader, the quantiser, the solver packing, mirroring and
+// dividing.ts, ponytail.ts; tie.ts for braids and buns) defines one CurveKindDef, and index.ts
+// lists them in a table that the generic code (the reader, the quantiser, the solver packing, mirroring and
 // share links) loops over instead of branching on a kind's name. A kind's scalar parameters
 // are its rows of curveParams.ts CURVE_PARAMS; its fields, read rules and blocks are here.
 //
-// Adding a kind: its parameters in CURVE_PARAMS, its curve type in session.ts, a module here
-// and a row in index.ts; then its C++ constraints and its tool (docs/architecture.md).
+// Adding a kind: a plain tie (its stroke and its scalars, as a braid) is a name in
+// curveParams.ts PLAIN_TIE_KINDS, its rows in CURVE_PARAMS and a row in tie.ts PLAIN_TIES; a kind
+// with fields of its own also has its curve type in session.ts, a module here and a row in
+// index.ts. Then its C++ constraints and its tool (docs/session-format.md, worked example).
 import type { CurveKindName } from '../curveParams';
 import type { Reader, Writer } from '../linkBytes';
 import type { StyleCurve, Viewpoint } from '../session';

@@ -7,19 +7,19 @@ import type { CurveKindDef } from './curveKind';
 import { DIVIDING } from './dividing';
 import { PONYTAIL } from './ponytail';
 import { STREAM } from './stream';
-import { BRAID, BUN } from './tie';
+import { PLAIN_TIES } from './tie';
 
 // each kind typed for its own curves; looked up for any curve (its methods take that curve)
 const KINDS: { readonly [K in CurveKindName]: CurveKindDef<K> } = {
   stream: STREAM,
   dividing: DIVIDING,
   ponytail: PONYTAIL,
-  braid: BRAID,
-  bun: BUN,
+  ...PLAIN_TIES,
 };
 
 /** The kinds drawn as one stroke (a tool's stroke, a preview being drawn), by name. */
-export const STROKE_KINDS = { stream: STREAM, braid: BRAID, bun: BUN } as const;
+export const STROKE_KINDS = { stream: STREAM, ...PLAIN_TIES } as const;
+export type StrokeKindName = keyof typeof STROKE_KINDS;
 
 /** The definition of a kind by name (null for a name that is none). */
 export function kindDef(name: unknown): CurveKindDef | null {

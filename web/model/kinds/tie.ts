@@ -1,7 +1,7 @@
 // Braids and buns (solver-cpp/src/braid_bun.hpp): a stroke (a braid's spine from the scalp, a
 // bun's loop where it sits) and the kind's scalar parameters, nothing else of their own.
 
-import { defaultParams } from '../curveParams';
+import { defaultParams, type PlainTieKind } from '../curveParams';
 import { bool } from '../readValues';
 import type { SurfaceMode } from '../supportingSurface';
 import type { Vec3 } from '../vec3';
@@ -9,7 +9,7 @@ import type { CurveOf, StrokeKindDef } from './curveKind';
 
 /** A tie whose curve is its stroke and its scalars; `near`: the points a stream stroke's end must
  *  come near to run into it; `surface`: its supporting surface's mode (null: none). */
-export function plainTie<K extends 'braid' | 'bun'>(
+function plainTie<K extends PlainTieKind>(
   name: K,
   near: (c: CurveOf<K>) => readonly Vec3[],
   surface: SurfaceMode | null,
@@ -38,8 +38,11 @@ export function plainTie<K extends 'braid' | 'bun'>(
   };
 }
 
-/** A braid: a stroke from the scalp along the braid, scalp to tip (a ruled surface, as a
- *  ponytail's spine has). */
-export const BRAID = plainTie('braid', (c) => c.points.slice(0, 1), 'ruled');
-/** A bun: a loop drawn on the head where the bun sits (on the head: no supporting surface). */
-export const BUN = plainTie('bun', (c) => c.points, null);
+/** Every plain tie (curveParams.ts PLAIN_TIE_KINDS), by name. */
+export const PLAIN_TIES: { readonly [K in PlainTieKind]: StrokeKindDef<K> } = {
+  /** A braid: a stroke from the scalp along the braid, scalp to tip (a ruled surface, as a
+   *  ponytail's spine has). */
+  braid: plainTie('braid', (c) => c.points.slice(0, 1), 'ruled'),
+  /** A bun: a loop drawn on the head where the bun sits (on the head: no supporting surface). */
+  bun: plainTie('bun', (c) => c.points, null),
+};

@@ -1,0 +1,43 @@
+// The tools of the ties drawn as one stroke (curveParams.ts PLAIN_TIE_KINDS): one row each says
+// how its stroke is drawn, its button, key and hint, and how the status line names a new one.
+// tools.ts builds a tool from each row and actions.ts a toolbar button; a new plain tie kind's
+// row is required here by the compiler.
+import type { PlainTieKind } from '../model/curveParams';
+
+export interface TieToolSpec {
+  /** How its stroke is drawn: `spine` as a stream curve is (from the scalp, the depth rule past
+   *  it; previewed as the tie it makes), `loop` a closed loop on the head. */
+  readonly draw: 'spine' | 'loop';
+  readonly label: string;
+  readonly key: string;
+  /** The button's tooltip. */
+  readonly title: string;
+  /** The hint line while the tool is chosen. */
+  readonly hint: string;
+  /** The status line's name of a new one from its stroke's points (`{id}`: its id). */
+  what(points: number): string;
+}
+
+export const TIE_TOOLS: { readonly [K in PlainTieKind]: TieToolSpec } = {
+  braid: {
+    draw: 'spine',
+    label: 'Braid',
+    key: 'k',
+    title:
+      'One stroke from the scalp along where the braid should hang, scalp to tip; the hair near it is gathered into a three-strand braid',
+    hint: 'Drag from the scalp along where the braid should hang, scalp to tip · right-drag orbits · ? lists shortcuts',
+    what: (n) => `braid {id} (${n - 1} segments)`,
+  },
+  bun: {
+    draw: 'loop',
+    label: 'Bun',
+    key: 'u',
+    title:
+      'Draw a loop on the head where the bun sits; the hair near it is gathered and coiled into it',
+    hint: 'Draw a loop on the head where the bun sits · right-drag orbits · ? lists shortcuts',
+    what: (n) => `bun {id} (a loop of ${n} points)`,
+  },
+};
+
+/** The plain tie kinds in table order. */
+export const TIE_TOOL_KINDS = Object.keys(TIE_TOOLS) as PlainTieKind[];
