@@ -3,17 +3,18 @@
 // strands (byte for byte) in both.
 //
 // It does what the app does for a full solve (app/solverBridge.ts, worker/workerLogic.ts): the
-// grid with omega 100, the scalp, the session's curves and avoidance constraints, iterations from
-// a cold start until the estimated field error is below the tolerance, then growth with the
-// session's growth parameters (the strand cap replaced when the caller gives one).
+// grid with omega 100, the scalp, the session's curves, then the worker's own recipe from a cold
+// start (solver/solveRecipe.ts convergeField: iterations until the estimated field error is below
+// the tolerance, then with the avoidance constraints), then growth with the session's growth
+// parameters (the strand cap replaced when the caller gives one).
 import { packCurves, packHairOptions } from '../model/curveSet';
 import { FIELD_OMEGA } from '../model/grid';
 import type { GridSpec, ScalpMesh, StrandArrays } from '../model/hairArrays';
 import type { SessionState } from '../model/session';
 import { engineSettings } from '../model/sessionSchema';
-import { avoidanceOptions } from '../solver/avoidance';
 import { type SolverEngine, SolverError } from '../solver/engine';
 import type { SolverName } from '../solver/protocol';
+import { convergeField, solveFraction } from '../solver/solveRecipe';
 
 /** Estimated relative field error at which the field counts as converged (as the app). */
 export const GROW_TOLERANCE = 1e-6;
@@ -71,30 +72,26 @@ export function growSessionHair(
   engine.setDetail?.(options.detail);
   engine.setSettings?.(engineSettings(options));
   engine.setCurves(curves);
-  let p = engine.iterate(SLICE_ITERATIONS, tolerance);
+  // the worker's recipe (solver/solveRecipe.ts), driven in one go
+  const steps = convergeField(engine, curves, {
+    tolerance,
+    slice: SLICE_ITERATIONS,
+    avoidFor: options.avoidScalp ? session.growth : null,
+  });
   let fraction = 0; // reported fractions never fall back (the error estimate is not monotonic)
-  // With "Avoid scalp", the converged field gives the avoidance constraints and the field is
-  // solved again with them from that field, as the worker does (workerLogic.ts).
-  let avoided = !(options.avoidScalp && engine.scalpAvoidance);
-  for (;;) {
-    if (p.converged && !avoided && engine.scalpAvoidance) {
-      const r = engine.scalpAvoidance(avoidanceOptions(session.growth));
-      engine.setCurves({ ...curves, extraIndex: r.index, extraTarget: r.target });
-      avoided = true;
-      p = engine.iterate(SLICE_ITERATIONS, tolerance);
-    }
-    if (p.converged) break;
+  let step = steps.next();
+  while (!step.done) {
+    const p = step.value.progress;
     if (p.iterations >= MAX_ITERATIONS || !Number.isFinite(p.errorEstimate))
       throw new SolverError(
         `the field did not converge (${p.iterations} iterations, estimated error ${p.errorEstimate})`,
         'internal',
       );
-    // fraction: digits of the error estimate gained out of the tolerance's
-    const digits = -Math.log10(Math.max(p.errorEstimate, tolerance));
-    fraction = Math.max(fraction, Math.min(0.99, Math.max(0, digits / -Math.log10(tolerance))));
+    fraction = Math.max(fraction, Math.min(0.99, solveFraction(p.errorEstimate, tolerance)));
     report('solve', fraction);
-    p = engine.iterate(SLICE_ITERATIONS, tolerance);
+    step = steps.next();
   }
+  const p = step.value;
   report('solve', 1);
   const t1 = now();
 

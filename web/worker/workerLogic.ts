@@ -6,10 +6,10 @@
 //                when a newer request came in meanwhile: the app no longer waits for it);
 //   full job:    a first look after a few iterations (non-final, light growth), then iterate in slices,
 //                yielding to the event loop between slices so a newer request can take over,
-//                and grow the final hair when the field has converged. With "Avoid scalp" on, the
-//                converged field gives the scalp-avoidance constraints (S4.7) and the field is
-//                solved again with them, warm-started from that field (growSession.ts does the
-//                same). The converged field's hair is posted light first (its first strands, as
+//                and grow the final hair when the field has converged (solver/solveRecipe.ts,
+//                the recipe growSession.ts runs too: with "Avoid scalp" on, the converged field
+//                gives the scalp-avoidance constraints (S4.7) and the field is solved again with
+//                them, warm-started from that field). The converged field's hair is posted light first (its first strands, as
 //                a first look is grown: what a slow GPU draws of the hair first), then in full.
 // A 'scalpMask' message changes the scalp at once (no restart, nothing else rebuilt); a 'grid'
 // message moves the engine to another grid in place (the head stays).
@@ -24,9 +24,9 @@ import {
 } from '../model/hairArrays';
 import { engineSettings } from '../model/sessionSchema';
 import { everyOtherPoint } from '../model/strandSubsample';
-import { avoidanceOptions } from '../solver/avoidance';
 import { type IterateProgress, type SolverEngine, SolverError } from '../solver/engine';
 import type { FromWorker, SolverName, ToWorker } from '../solver/protocol';
+import { convergeField, solveFraction } from '../solver/solveRecipe';
 import type { SolverErrorKind } from '../solver/wasmStructs';
 import { lineAttributes } from '../viewer/strandAttributes';
 
@@ -252,45 +252,35 @@ export class WorkerLogic {
     // so it reaches the screen fast. The final field is then solved from zero: it depends on the
     // session alone, so a share link, an export or the command line grow bit-identical hair.
     if (!p.converged) this.emit(job, lightGrowth(job), p, false, t0);
+    // then the recipe growSession.ts runs too (solver/solveRecipe.ts), a slice between messages
+    let from: IterateProgress | undefined = p;
     if (this.engine.forgetWarmStart?.()) {
       await o.yieldNow();
       if (this.superseded()) return;
-      p = this.engine.iterate(o.sliceIterations, o.tolerance);
+      from = undefined;
     }
-    if (!p.converged) {
-      while (!p.converged) {
-        await o.yieldNow();
-        if (this.superseded()) return;
-        p = this.engine.iterate(o.sliceIterations, o.tolerance);
-        this.post({
-          type: 'progress',
-          id: job.id,
-          phase: 'solve',
-          fraction: Math.min(
-            0.95,
-            Math.max(
-              0.05,
-              1 - Math.log10(Math.max(p.errorEstimate, o.tolerance)) / Math.log10(o.tolerance),
-            ),
-          ),
-        });
-      }
+    const steps = convergeField(this.engine, job.curves, {
+      tolerance: o.tolerance,
+      slice: o.sliceIterations,
+      avoidFor: job.options.avoidScalp ? job.growth : null,
+      from,
+    });
+    let step = steps.next();
+    while (!step.done) {
+      const { progress, stage } = step.value;
+      const fraction =
+        stage === 'avoidance' ? 0.95 : solveFraction(progress.errorEstimate, o.tolerance);
+      this.post({
+        type: 'progress',
+        id: job.id,
+        phase: 'solve',
+        fraction: Math.min(0.95, Math.max(0.05, fraction)),
+      });
       await o.yieldNow();
       if (this.superseded()) return;
+      step = steps.next();
     }
-    if (job.options.avoidScalp && this.engine.scalpAvoidance) {
-      const r = this.engine.scalpAvoidance(avoidanceOptions(job.growth));
-      // Warm-started from the curves' converged field, which depends on the session alone (it
-      // was solved from zero): the second solve stays history-free and needs few iterations.
-      this.engine.setCurves({ ...job.curves, extraIndex: r.index, extraTarget: r.target });
-      p = this.engine.iterate(o.sliceIterations, o.tolerance);
-      while (!p.converged) {
-        await o.yieldNow();
-        if (this.superseded()) return;
-        p = this.engine.iterate(o.sliceIterations, o.tolerance);
-        this.post({ type: 'progress', id: job.id, phase: 'solve', fraction: 0.95 });
-      }
-    }
+    p = step.value;
     this.solved = { key, epoch: this.jobEpoch, progress: p };
     if (o.convergedSample && lightenedGrowth(job)) {
       this.emit(job, lightGrowth(job), p, false, t0, true);
