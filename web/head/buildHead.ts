@@ -26,25 +26,7 @@ const EAR_MARGIN = 0.08;
 export function buildHead(options: BuildHeadOptions = {}): HeadMesh {
   const resolution = options.resolution ?? 24;
   if (!(resolution >= 4 && resolution <= 200)) throw new Error(`bad resolution ${resolution}`);
-  const step = 1 / resolution;
-  let mesh: TriangleMesh | null = null;
-  // A grid vertex pattern can, rarely, give a non-manifold edge (four quads around one dual
-  // edge at a saddle). Then shift the grid by a fraction of a step and polygonise again.
-  for (let attempt = 0; attempt < 6 && mesh === null; attempt++) {
-    const shift = attempt === 0 ? 0 : (0.173 * attempt) % 1;
-    const origin: [number, number, number] = [
-      BOX_MIN[0] - step * shift,
-      BOX_MIN[1] - step * ((shift * 1.7) % 1),
-      BOX_MIN[2] - step * ((shift * 2.3) % 1),
-    ];
-    const dims: [number, number, number] = [0, 1, 2].map(
-      (a) => Math.ceil((BOX_MAX[a] - origin[a]) / step) + 1,
-    ) as [number, number, number];
-    const candidate = surfaceNets(sampleField(headSdf, dims, origin, step, 1.5));
-    if (isClosedSphere(candidate)) mesh = candidate;
-  }
-  if (mesh === null) throw new Error('buildHead: polygonisation is not a closed manifold');
-
+  const mesh = polygoniseClosed(headSdf, BOX_MIN, BOX_MAX, resolution, 'buildHead');
   const { positions, indices } = mesh;
   const normals = vertexNormals(positions, indices);
   const vertices = positions.length / 3;
@@ -88,6 +70,34 @@ export function buildHead(options: BuildHeadOptions = {}): HeadMesh {
     center,
     bounds: { min, max },
   };
+}
+
+/** One closed, consistently oriented surface of `sdf` in the box [lo, hi] (the surface inside it
+ *  with a margin) by surface nets at `resolution` cells per world unit. A grid vertex pattern
+ *  can, rarely, give a non-manifold edge (four quads around one dual edge at a saddle): then the
+ *  grid is shifted by a fraction of a step and the field polygonised again. */
+export function polygoniseClosed(
+  sdf: (x: number, y: number, z: number) => number,
+  lo: readonly [number, number, number],
+  hi: readonly [number, number, number],
+  resolution: number,
+  who: string,
+): TriangleMesh {
+  const step = 1 / resolution;
+  for (let attempt = 0; attempt < 6; attempt++) {
+    const shift = attempt === 0 ? 0 : (0.173 * attempt) % 1;
+    const origin: [number, number, number] = [
+      lo[0] - step * shift,
+      lo[1] - step * ((shift * 1.7) % 1),
+      lo[2] - step * ((shift * 2.3) % 1),
+    ];
+    const dims: [number, number, number] = [0, 1, 2].map(
+      (a) => Math.ceil((hi[a] - origin[a]) / step) + 1,
+    ) as [number, number, number];
+    const candidate = surfaceNets(sampleField(sdf, dims, origin, step, 1.5));
+    if (isClosedSphere(candidate)) return candidate;
+  }
+  throw new Error(`${who}: polygonisation is not a closed manifold`);
 }
 
 /** Area-weighted vertex normals, normalised. */

@@ -80,6 +80,16 @@ export interface ScalpMesh {
   indices: Uint32Array; // indices[3 * triangle + corner]
   scalp: Uint8Array; // scalp[triangle] = 1 when the triangle is part of the scalp
   center: [number, number, number]; // origin of the spherical root parameterisation (S5.1)
+  /** The body below the head, which hair rests on and slides over in sessions with `bust`
+   *  (the built-in bust, head/bodySdf.ts; absent on a loaded head, which is its own body). */
+  body?: BodyArrays;
+}
+
+/** A closed triangle mesh beside the head: positions[3 * vertex + axis], world units;
+ *  indices[3 * triangle + corner], counter-clockwise seen from outside. */
+export interface BodyArrays {
+  positions: Float32Array;
+  indices: Uint32Array;
 }
 
 /** Lighting precomputed for a hair revision towards the fixed key light
