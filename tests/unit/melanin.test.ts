@@ -11,8 +11,9 @@ import {
   melaninAbsorption,
 } from '../../web/model/melanin';
 
-const close = (a: readonly number[], b: readonly number[], digits = 5) =>
-  a.forEach((v, i) => expect(v).toBeCloseTo(b[i], digits));
+function close(a: readonly number[], b: readonly number[], digits = 5): void {
+  for (const [i, v] of a.entries()) expect(v).toBeCloseTo(b[i], digits);
+}
 
 describe('melanin mapping (d’Eon 2011, Chiang 2016)', () => {
   it('D(0.3) is 5.888415', () => {
