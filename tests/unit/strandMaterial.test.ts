@@ -1,13 +1,16 @@
-// Strand geometry for LineSegments (tangents, `along`, per-strand variation) and the Kajiya–Kay
+// Strand geometry for LineSegments (tangents, `along`, per-strand variation) and the hair
 // material's uniforms (method S6.1). The shader itself compiles only in a browser (checked with a
 // headless Chromium render); here the geometry layout is checked against direct computation.
 import { describe, expect, it } from 'vitest';
+import { DEFAULT_HAIR_LOOK, hexToLinear } from '../../web/model/hairLook';
+import { colorAbsorption } from '../../web/model/melanin';
 import {
   buildStrandGeometry,
   buildStrandStripGeometry,
   createStrandMaterial,
   LOD_GROUPS,
   setHairColor,
+  setHairLook,
   setLightDirection,
 } from '../../web/viewer/strandMaterial';
 
@@ -122,30 +125,36 @@ describe('buildStrandGeometry', () => {
 });
 
 describe('createStrandMaterial', () => {
-  it('exposes settable colour and light uniforms', () => {
-    const m = createStrandMaterial({ color: '#ff0000', lightDirection: [0, 2, 0] });
-    expect(m.uniforms.hairColor.value.r).toBeCloseTo(1, 6);
-    expect(m.uniforms.hairColor.value.g).toBeCloseTo(0, 6);
+  it('takes its colour as absorption: a direct colour maps to the σa whose colour it is', () => {
+    const m = createStrandMaterial({ color: '#ff8040', lightDirection: [0, 2, 0] });
+    const expected = colorAbsorption(hexToLinear('#ff8040') as [number, number, number]);
+    const s = m.uniforms.rootSigma.value;
+    expect([s.x, s.y, s.z].map((v, c) => v - expected[c]).every((d) => Math.abs(d) < 1e-6)).toBe(
+      true,
+    );
+    expect(s.x).toBeCloseTo(0, 6); // a full channel absorbs nothing
     expect(m.uniforms.keyDirection.value.y).toBeCloseTo(1, 6); // normalised
     setHairColor(m, '#0000ff');
-    expect(m.uniforms.hairColor.value.b).toBeCloseTo(1, 6);
-    expect(m.uniforms.hairColor.value.r).toBeCloseTo(0, 6);
+    expect(m.uniforms.rootSigma.value.z).toBeCloseTo(0, 6);
+    expect(m.uniforms.rootSigma.value.x).toBeGreaterThan(0.2);
+    setHairLook(m, { ...DEFAULT_HAIR_LOOK, grey: 30, tipStart: 0.5, tipMelanin: 0.1 }, '#000000');
+    expect(m.uniforms.lookShares.value.x).toBeCloseTo(0.3, 6);
+    expect(m.uniforms.lookShares.value.y).toBeCloseTo(0.5, 6);
+    expect(m.uniforms.tipSigma.value.x).toBeLessThan(m.uniforms.rootSigma.value.x);
     setLightDirection(m, 3, 0, 4);
     expect(m.uniforms.keyDirection.value.x).toBeCloseTo(0.6, 6);
     expect(m.vertexShader).toContain('attribute vec3 tangent');
     expect(m.vertexShader).toContain('attribute vec2 lighting');
   });
 
-  it('has two highlights on tangents shifted opposite ways, and no head-centre shadow', () => {
+  it('has the three lobes with the published shifts, lit by the world-fixed key light', () => {
     const m = createStrandMaterial();
     const glsl = m.vertexShader + m.fragmentShader; // lines shade per vertex
-    // Scheuermann / TressFX: T' = normalize(T + shift·N), primary towards the root (+),
-    // secondary towards the tip (−), each with its own exponent and weight
-    expect(glsl).toContain('normalize(T + primaryShift * N)');
-    expect(glsl).toContain('normalize(T + secondaryShift * N)');
-    expect(m.uniforms.primaryShift.value).toBeGreaterThan(0);
-    expect(m.uniforms.secondaryShift.value).toBeLessThan(0);
-    expect(m.uniforms.primaryPower.value).toBeGreaterThan(m.uniforms.secondaryPower.value);
+    // Marschner / Unreal: R −0.07, TT +0.035, TRT +0.14 rad; widths β², β²/2, 2β²
+    expect(glsl).toContain('hairG(B.x, x + 0.07)');
+    expect(glsl).toContain('hairG(B.y, x - 0.035)');
+    expect(glsl).toContain('hairG(B.z, x - 0.14)');
+    expect(glsl).toContain('vec3(b2, 0.5 * b2, 2.0 * b2)');
     expect(glsl).not.toContain('selfShadow');
     // the key light is fixed in world space: no view-space light
     expect(glsl).toContain('light.x');
@@ -157,6 +166,11 @@ describe('createStrandMaterial', () => {
     expect(m.defines.DEEP_OPACITY).toBe('');
     expect(m.alphaToCoverage).toBe(true);
     expect(m.uniforms.tipWidth.value).toBeLessThan(1);
+    expect(m.transparent).toBe(false);
+    // without multisampling: coverage blended, unsorted, no depth writes
+    const blended = createStrandMaterial({ kind: 'strips' });
+    expect(blended.transparent).toBe(true);
+    expect(blended.depthWrite).toBe(false);
   });
 });
 

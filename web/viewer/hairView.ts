@@ -7,6 +7,7 @@
 import * as THREE from 'three';
 import type { GrowthParams } from '../model/growthParams';
 import type { HairLightingArrays, StrandArrays } from '../model/hairArrays';
+import type { HairLook } from '../model/hairLook';
 import { DEFAULT_HAIR_COLOR } from '../model/session';
 import { buildCardsObject } from './cardsView';
 import { DeepOpacityMaps } from './deepOpacity';
@@ -17,7 +18,7 @@ import {
   buildStrandStripGeometry,
   createStrandMaterial,
   type StrandMaterial,
-  setHairColor,
+  setHairLook,
 } from './strandMaterial';
 import type { Viewer } from './viewer';
 
@@ -27,6 +28,8 @@ export class HairView {
   private lines: StrandMaterial | null = null;
   private strips: StrandMaterial | null = null;
   private color = DEFAULT_HAIR_COLOR;
+  /** The colour model (null: the direct colour). */
+  private look: HairLook | null = null;
   private quality: ActiveQuality = 'fast';
   private current: {
     strands: StrandArrays;
@@ -109,9 +112,15 @@ export class HairView {
   }
 
   setColor(css: string): void {
-    if (css === this.color) return;
+    this.setLook(this.look, css);
+  }
+
+  /** The hair's colour model (hairLook.ts; null: the direct colour `css`, #rrggbb). */
+  setLook(look: HairLook | null, css: string): void {
+    if (css === this.color && look === this.look) return;
     this.color = css;
-    for (const m of [this.lines, this.strips]) if (m) setHairColor(m, css);
+    this.look = look;
+    for (const m of [this.lines, this.strips]) if (m) setHairLook(m, look, css);
     // the cards' colour is in their atlas
     if (this.cardsShown && this.current) this.viewer.setHair(this.build());
     this.viewer.invalidateFrameCache(); // a uniform: the cached hair layer cannot see it
@@ -149,7 +158,11 @@ export class HairView {
       return mesh;
     }
     const geometry = buildStrandGeometry(points, strandStart, 0, light, c.attributes);
-    this.lines ??= createStrandMaterial({ color: this.color, kind: 'lines' });
+    this.lines ??= createStrandMaterial({
+      color: this.color,
+      look: this.look,
+      kind: 'lines',
+    });
     const lines = new THREE.LineSegments(geometry, this.lines);
     this.object = lines;
     return lines;
@@ -162,6 +175,7 @@ export class HairView {
     const canDom = r.extensions.has('EXT_color_buffer_float');
     const m = createStrandMaterial({
       color: this.color,
+      look: this.look,
       kind: 'strips',
       alphaToCoverage: msaa,
       deepOpacity: canDom,

@@ -1,22 +1,24 @@
 // Hair strands (method S6.1): geometry and shading.
-// Shading: Kajiya–Kay diffuse and two highlights on shifted tangents (Scheuermann 2004, AMD
-// TressFX): T' = normalize(T + shift·N), N the strand's normal (outward from the head,
-// perpendicular to T); a white primary tilted towards the root and a hair-coloured secondary
-// tilted towards the tip, with their own exponents and weights, the secondary broken up per
-// strand by noise. Per strand (four seeded random bytes): value, hue, where the tip starts to
-// fade (length appearance) and the highlight noise. Roots darker, tips fading out. Lighting is a
-// key light fixed in world space (lighting/keyLight.ts) attenuated by the precomputed
-// transmittance of the hair (the `lighting` attribute: transmittance, ambient occlusion, from
-// the solver worker: lighting/hairLighting.ts), a fill light from behind and a sky ambient, both
-// scaled by the occlusion.
-// Two geometries: GL lines (1 pixel; the Fast quality), and camera-facing strips tapered root →
-// tip (two vertices per point, expanded in the vertex shader, at least a pixel wide with the
-// coverage in alpha: alpha-to-coverage with MSAA; the High quality, which also reads deep
-// opacity maps: deepOpacity.ts).
+// Shading: the hair BSDF of hairBsdf.ts (Marschner's R, TT and TRT lobes as Unreal evaluates
+// them, dual scattering after Zinke 2008 from the hairs between a point and the key light: the
+// shadow's optical depth) for a key light fixed in world space (lighting/keyLight.ts), whose
+// shadow is the precomputed transmittance of the hair (the `lighting` attribute: transmittance,
+// ambient occlusion, from the solver worker: lighting/hairLighting.ts) or, in High, the deep
+// opacity maps; a fill light from behind and a sky ambient on the base colour, both scaled by
+// the occlusion; root darkening on top. Colour: absorption σa (model/hairLook.ts: melanin,
+// redness, dye, grey strands, ombré towards the tips, or a direct colour's absorption), spread
+// per strand (four seeded random bytes: melanin, hue, where the tip starts to fade, roughness).
+// Two geometries: GL lines (1 pixel, shaded per vertex; the Fast quality), and camera-facing
+// strips tapered root → tip (two vertices per point, expanded in the vertex shader, at least a
+// pixel wide with the rest of the width as coverage in alpha, the tips fading out: alpha-to-
+// coverage with MSAA, else blended unsorted without depth writes; the High quality, which also
+// reads deep opacity maps: deepOpacity.ts).
 import * as THREE from 'three';
 import { FILL_LIGHT_DIRECTION, KEY_LIGHT_DIRECTION } from '../lighting/keyLight';
 import { strandCount } from '../model/hairArrays';
+import { type HairLook, lookUniforms } from '../model/hairLook';
 import { DEFAULT_HAIR_COLOR } from '../model/session';
+import { HAIR_BSDF_GLSL } from './hairBsdf';
 import {
   type LineAttributes,
   lineAttributes,
@@ -43,22 +45,19 @@ varying float vCoverage;
 /** Uniforms, helpers and shadeStrand(): the shading, shared by the lines' vertex shader and
  *  the strips' fragment shader. */
 const shading = /* glsl */ `
-uniform vec3 hairColor;
+uniform vec3 rootSigma; // absorption at the root (melanin.ts; from the colour for a direct colour)
+uniform vec3 tipSigma; // absorption at the tips (the ombré's end)
+uniform vec3 greySigma; // absorption of a grey (unpigmented) strand
+uniform vec4 lookShares; // grey share, ombré start along the strand (>= 1: none), melanin and roughness variation
+uniform float roughness; // longitudinal roughness β of the hair BSDF
+uniform float bsdfGain; // the key light's radiance per unit of the BSDF
 uniform vec3 keyDirection; // world space, towards the light (fixed: not the camera's)
 uniform vec3 keyColor;
 uniform vec3 fillDirection;
 uniform vec3 fillColor;
 uniform vec3 ambientColor;
 uniform vec3 headCenter; // strand normals point away from it
-uniform float diffuseStrength;
-uniform float primaryStrength;
-uniform float primaryPower;
-uniform float primaryShift; // tan of the tilt towards the root
-uniform float secondaryStrength;
-uniform float secondaryPower;
-uniform float secondaryShift; // tan of the tilt (negative: towards the tip)
 uniform float rootDarkening; // roots are darker by this fraction
-uniform float valueVariation; // ± fraction of brightness per strand
 uniform float hueVariation; // ± red/blue balance per strand
 uniform float lengthVariation; // ± shift of where the tip fade starts, per strand
 uniform float tipFade; // fraction of the strand over which the tip fades out
@@ -72,12 +71,7 @@ uniform float domRange; // world depth of the light camera's [0, 1]
 uniform float domKappa; // optical depth per unit of accumulated opacity
 uniform float domBias; // world units
 #endif
-// Scheuermann / TressFX strand highlight on a (shifted) tangent
-float strandSpecular(vec3 T, vec3 H, float power) {
-  float TH = dot(T, H);
-  float sinTH = sqrt(max(0.0, 1.0 - TH * TH));
-  return smoothstep(-1.0, 0.0, TH) * pow(sinTH, power);
-}
+${HAIR_BSDF_GLSL}
 
 float hash12(vec2 p) {
   vec3 p3 = fract(vec3(p.xyx) * 0.1031);
@@ -113,48 +107,40 @@ float strandCut(vec4 rnd) {
   return mix(fadeStartOf(rnd), 1.0, fract(rnd.w * 13.7));
 }
 
+// The strand's absorption at \`along\` (rnd: its seeded random values): root → tip ombré, grey
+// strands, a seeded spread of melanin and a little of the red/blue balance.
+vec3 strandSigma(vec4 rnd, float along) {
+  float ombre = lookShares.y < 0.999 ? smoothstep(lookShares.y, 1.0, along) : 0.0;
+  vec3 s = mix(rootSigma, tipSigma, ombre);
+  float pick = fract(dot(rnd, vec4(0.7548777, 0.5698403, 0.3308946, 0.1234567)) * 97.31);
+  if (pick < lookShares.x) s = greySigma;
+  float hue = hueVariation * (2.0 * rnd.y - 1.0);
+  return s * (1.0 + lookShares.z * (2.0 * rnd.x - 1.0)) * vec3(1.0 - hue, 1.0, 1.0 + hue);
+}
+
 // The strand's colour at world point P with unit tangent T (root -> tip).
 vec3 shadeStrand(vec3 T, vec3 P, float along, vec4 rnd, vec2 light) {
-  // per strand: value, hue, highlight noise (seeded: the same every time)
-  float value = 1.0 + valueVariation * (2.0 * rnd.x - 1.0);
-  float hue = hueVariation * (2.0 * rnd.y - 1.0);
-  float noise = rnd.w;
   vec3 V = normalize(cameraPosition - P);
-  vec3 L = keyDirection;
   vec3 radial = P - headCenter;
   vec3 N = radial - T * dot(radial, T);
   N = dot(N, N) > 1e-10 ? normalize(N) : V;
-
-  vec3 base = hairColor * value * vec3(1.0 + hue, 1.0, 1.0 - hue);
-  base *= mix(1.0 - rootDarkening, 1.0, smoothstep(0.0, 0.3, along));
-
-  // Kajiya–Kay diffuse: sin(T, L), softened so that strands along the light are not black
-  float TL = dot(T, L);
-  float diffuse = mix(0.25, 1.0, sqrt(max(0.0, 1.0 - TL * TL)));
-  vec3 H = normalize(L + V);
-  float primary = strandSpecular(normalize(T + primaryShift * N), H, primaryPower);
-  float secondary = strandSpecular(normalize(T + secondaryShift * N), H, secondaryPower);
-  // break the highlights up: per strand and in patches along it
-  float patches = 0.5 + 0.5 * sin(along * (9.0 + 14.0 * noise) + 6.2832 * rnd.y);
-  primary *= mix(0.55, 1.0, fract(noise * 7.31)) * smoothstep(0.02, 0.2, along);
-  secondary *= mix(0.15, 1.0, noise) * mix(0.45, 1.0, patches);
-  // the secondary carries the hair's colour (light that went through the fibre)
-  vec3 tint = sqrt(max(hairColor, vec3(1e-4)));
+  vec3 sigma = strandSigma(rnd, along);
+  float beta = roughness * (1.0 + lookShares.w * (2.0 * fract(rnd.w * 7.31) - 1.0));
 
   float shadow = mix(1.0, light.x, precomputed);
   float ao = mix(1.0, light.y, precomputed);
 #ifdef DEEP_OPACITY
   shadow = min(shadow, deepOpacityTransmittance(P));
 #endif
+  // root darkening: occlusion towards the scalp, on top of the hair's own occlusion
+  float rootAo = mix(1.0 - rootDarkening, 1.0, smoothstep(0.0, 0.3, along));
+  vec3 key = keyColor * bsdfGain * hairBsdf(T, keyDirection, V, sigma, beta, shadow);
+  // fill and sky: the base colour (what a head of this hair scatters back), occluded
+  vec3 base = hairBaseColor(sigma);
   float TF = dot(T, fillDirection);
   float fill = mix(0.3, 1.0, sqrt(max(0.0, 1.0 - TF * TF)));
   float sky = 0.65 + 0.35 * N.y;
-
-  return keyColor * shadow * (diffuseStrength * diffuse * base
-      + primaryStrength * primary * vec3(1.0)
-      + secondaryStrength * secondary * tint * base / max(max(base.r, base.g), max(base.b, 1e-3)))
-    + fillColor * ao * fill * base
-    + ambientColor * ao * sky * base;
+  return rootAo * (key + ao * (fillColor * fill + ambientColor * sky) * base);
 }
 `;
 
@@ -245,11 +231,10 @@ void main() {
 #ifdef ALPHA_TO_COVERAGE
   if (alpha < 0.02) discard;
 #else
-  // no multisampling: each strand ends somewhere in its fade, and a thin strip's partial
-  // coverage becomes a stable dither
-  if (vAlong > strandCut(vRandom)) discard;
-  if (vCoverage < 0.999 && vCoverage <= hash12(gl_FragCoord.xy)) discard;
-  alpha = 1.0; // the dither stands for the coverage: the canvas stays opaque
+  // no multisampling: the coverage is blended (unsorted, no depth writes: strands of a few
+  // tenths of coverage each, so the order changes their weights little; the head hides what is
+  // behind it)
+  if (alpha < 0.004) discard;
 #endif
   vec3 color = shadeStrand(normalize(vTangent), vWorldPosition, vAlong, vRandom, vLight);
   gl_FragColor = vec4(color, alpha);
@@ -259,7 +244,8 @@ void main() {
 `;
 
 export interface StrandMaterialOptions {
-  color?: THREE.ColorRepresentation; // hair colour (CSS string, hex number or THREE.Color)
+  color?: THREE.ColorRepresentation; // direct hair colour (CSS string, hex number or THREE.Color)
+  look?: HairLook | null; // the colour model (hairLook.ts); null or absent: the direct colour
   lightDirection?: readonly [number, number, number]; // world space, toward the key light
   lightColor?: THREE.ColorRepresentation;
   ambient?: THREE.ColorRepresentation;
@@ -275,22 +261,19 @@ export interface StrandMaterialOptions {
 /** Uniform names of the strand material (all `{ value }` objects, settable at any time). */
 export interface StrandUniforms {
   [name: string]: THREE.IUniform;
-  hairColor: THREE.IUniform<THREE.Color>;
+  rootSigma: THREE.IUniform<THREE.Vector3>;
+  tipSigma: THREE.IUniform<THREE.Vector3>;
+  greySigma: THREE.IUniform<THREE.Vector3>;
+  lookShares: THREE.IUniform<THREE.Vector4>;
+  roughness: THREE.IUniform<number>;
+  bsdfGain: THREE.IUniform<number>;
   keyDirection: THREE.IUniform<THREE.Vector3>;
   keyColor: THREE.IUniform<THREE.Color>;
   fillDirection: THREE.IUniform<THREE.Vector3>;
   fillColor: THREE.IUniform<THREE.Color>;
   ambientColor: THREE.IUniform<THREE.Color>;
   headCenter: THREE.IUniform<THREE.Vector3>;
-  diffuseStrength: THREE.IUniform<number>;
-  primaryStrength: THREE.IUniform<number>;
-  primaryPower: THREE.IUniform<number>;
-  primaryShift: THREE.IUniform<number>;
-  secondaryStrength: THREE.IUniform<number>;
-  secondaryPower: THREE.IUniform<number>;
-  secondaryShift: THREE.IUniform<number>;
   rootDarkening: THREE.IUniform<number>;
-  valueVariation: THREE.IUniform<number>;
   hueVariation: THREE.IUniform<number>;
   lengthVariation: THREE.IUniform<number>;
   tipFade: THREE.IUniform<number>;
@@ -302,11 +285,9 @@ export interface StrandUniforms {
 
 export type StrandMaterial = THREE.ShaderMaterial & { uniforms: StrandUniforms };
 
-const DEG = Math.PI / 180;
-/** Tilt of the primary highlight's tangent towards the root (its highlight moves ~2× that). */
-export const PRIMARY_SHIFT_DEG = 10;
-/** Tilt of the secondary's tangent towards the tip. */
-export const SECONDARY_SHIFT_DEG = -15;
+/** Key light radiance per unit of the hair BSDF (hairBsdf.ts), chosen by eye against the head's
+ *  lighting: a mid-brown outer layer about as bright as the Kajiya–Kay shading it replaced. */
+export const BSDF_GAIN = 3;
 
 const viewport = new THREE.Vector4();
 
@@ -315,22 +296,19 @@ export function createStrandMaterial(options: StrandMaterialOptions = {}): Stran
   const center = options.headCenter ?? [0, 0, 0];
   const strips = options.kind === 'strips';
   const uniforms: StrandUniforms = {
-    hairColor: { value: new THREE.Color(options.color ?? DEFAULT_HAIR_COLOR) },
+    rootSigma: { value: new THREE.Vector3() },
+    tipSigma: { value: new THREE.Vector3() },
+    greySigma: { value: new THREE.Vector3() },
+    lookShares: { value: new THREE.Vector4() },
+    roughness: { value: 0.3 },
+    bsdfGain: { value: BSDF_GAIN },
     keyDirection: { value: new THREE.Vector3(...light).normalize() },
     keyColor: { value: new THREE.Color(options.lightColor ?? '#fff6ea').multiplyScalar(1.05) },
     fillDirection: { value: new THREE.Vector3(...FILL_LIGHT_DIRECTION).normalize() },
     fillColor: { value: new THREE.Color('#9db4d6').multiplyScalar(0.45) },
     ambientColor: { value: new THREE.Color(options.ambient ?? '#b4aca4').multiplyScalar(0.55) },
     headCenter: { value: new THREE.Vector3(...center) },
-    diffuseStrength: { value: 0.95 },
-    primaryStrength: { value: 0.1 },
-    primaryPower: { value: 160 },
-    primaryShift: { value: Math.tan(PRIMARY_SHIFT_DEG * DEG) },
-    secondaryStrength: { value: 0.3 },
-    secondaryPower: { value: 30 },
-    secondaryShift: { value: Math.tan(SECONDARY_SHIFT_DEG * DEG) },
     rootDarkening: { value: 0.3 },
-    valueVariation: { value: 0.24 },
     hueVariation: { value: 0.05 },
     lengthVariation: { value: 0.1 },
     tipFade: { value: 0.22 },
@@ -348,9 +326,14 @@ export function createStrandMaterial(options: StrandMaterialOptions = {}): Stran
     fragmentShader: strips ? stripsFragmentShader : linesFragmentShader,
   });
   material.name = strips ? 'HairStrips' : 'HairLines';
+  setHairLook(material as StrandMaterial, options.look ?? null, colorCss(options.color));
   if (strips) {
     material.side = THREE.DoubleSide;
     material.alphaToCoverage = !!options.alphaToCoverage;
+    if (!options.alphaToCoverage) {
+      material.transparent = true;
+      material.depthWrite = false;
+    }
     // the strip's width depends on the pixel size of the target being drawn
     material.onBeforeRender = (renderer) => {
       renderer.getCurrentViewport(viewport);
@@ -360,9 +343,29 @@ export function createStrandMaterial(options: StrandMaterialOptions = {}): Stran
   return material as StrandMaterial;
 }
 
-/** Set the hair colour (CSS string, hex number or THREE.Color). */
+function colorCss(c: THREE.ColorRepresentation | undefined): string {
+  if (c === undefined) return DEFAULT_HAIR_COLOR;
+  return `#${new THREE.Color(c).getHexString()}`;
+}
+
+/** Sets the hair's colour model (hairLook.ts; null: the direct colour `hairColor`, #rrggbb). */
+export function setHairLook(
+  material: StrandMaterial,
+  look: HairLook | null,
+  hairColor: string,
+): void {
+  const v = lookUniforms(look, hairColor);
+  const u = material.uniforms;
+  u.rootSigma.value.set(...v.rootSigma);
+  u.tipSigma.value.set(...v.tipSigma);
+  u.greySigma.value.set(...v.greySigma);
+  u.lookShares.value.set(...v.shares);
+  u.roughness.value = v.roughness;
+}
+
+/** Set a direct hair colour (CSS string, hex number or THREE.Color): no colour model. */
 export function setHairColor(material: StrandMaterial, color: THREE.ColorRepresentation): void {
-  material.uniforms.hairColor.value.set(color);
+  setHairLook(material, null, colorCss(color));
 }
 
 /** Set the key light direction (world space, toward the light; need not be unit). */

@@ -1,0 +1,132 @@
+// The hair's colour model: pigment (melanin, redness), a dye, a share of grey (unpigmented)
+// strands, an ombré towards the tips, a seeded per-strand spread of melanin and roughness, and
+// the roughness itself. A session without one (older sessions, or a colour picked in the colour
+// box) shows its direct colour: the absorption whose base colour it is (melanin.ts), varied per
+// strand a little. Pure arithmetic: the strand shader (viewer/strandMaterial.ts) takes
+// lookUniforms(), the exports strandLookColor() (linear RGB).
+import { absorptionColor, colorAbsorption, melaninAbsorption, type Rgb } from './melanin';
+
+export interface HairLook {
+  /** Melanin 0 (white) … 1 (black). */
+  melanin: number;
+  /** Redness 0 … 1: the pheomelanin share. */
+  redness: number;
+  /** A dye (tint) colour, #rrggbb (sRGB), or null for none. */
+  dye: string | null;
+  /** Share of strands without pigment, percent (0 … 100). */
+  grey: number;
+  /** The tips' melanin (the ombré's end; the same redness). */
+  tipMelanin: number;
+  /** The tips' dye, or null. */
+  tipDye: string | null;
+  /** Where along the strand (0 root … 1 tip) the blend towards the tips starts; 1: no ombré. */
+  tipStart: number;
+  /** Seeded per-strand spread of melanin (and half of it of roughness), 0 … 1. */
+  variation: number;
+  /** Longitudinal roughness β of the BSDF (radians-like, 0.1 … 0.8). */
+  roughness: number;
+}
+
+/** A natural mid brown. */
+export const DEFAULT_HAIR_LOOK: HairLook = {
+  melanin: 0.4,
+  redness: 0.25,
+  dye: null,
+  grey: 0,
+  tipMelanin: 0.4,
+  tipDye: null,
+  tipStart: 1,
+  variation: 0.2,
+  roughness: 0.3,
+};
+
+/** Grey strands: hardly any pigment, a little warm (keratin's own yellow). */
+export const GREY_MELANIN = 0.04;
+export const GREY_REDNESS = 0.5;
+/** A direct colour's per-strand spread of absorption (about ±7 % of its value). */
+export const DIRECT_VARIATION = 0.15;
+/** The roughness of a direct colour's hair. */
+export const DIRECT_ROUGHNESS = 0.3;
+
+/** What the strand shader takes (strandMaterial.ts uniforms of the same names). */
+export interface LookUniformValues {
+  rootSigma: Rgb;
+  tipSigma: Rgb;
+  greySigma: Rgb;
+  /** grey share (0 … 1), ombré start (≥ 1: none), melanin variation, roughness variation. */
+  shares: [number, number, number, number];
+  roughness: number;
+}
+
+/** #rrggbb (sRGB) → linear RGB; null when it is not #rrggbb. */
+export function hexToLinear(hex: string): Rgb | null {
+  const m = /^#([0-9a-fA-F]{6})$/.exec(hex);
+  if (!m) return null;
+  const v = Number.parseInt(m[1], 16);
+  return [(v >> 16) & 255, (v >> 8) & 255, v & 255].map((b) => {
+    const c = b / 255;
+    return c <= 0.04045 ? c / 12.92 : ((c + 0.055) / 1.055) ** 2.4;
+  }) as Rgb;
+}
+
+const add = (a: Rgb, b: Rgb | null): Rgb => (b ? [a[0] + b[0], a[1] + b[1], a[2] + b[2]] : a);
+const dyeSigma = (hex: string | null): Rgb | null => {
+  const c = hex ? hexToLinear(hex) : null;
+  return c ? colorAbsorption(c) : null;
+};
+
+/** The shader's inputs for a look (null: the direct colour `hairColor`, #rrggbb). */
+export function lookUniforms(look: HairLook | null, hairColor: string): LookUniformValues {
+  if (!look) {
+    const s = colorAbsorption(hexToLinear(hairColor) ?? [0.1, 0.04, 0.02]);
+    return {
+      rootSigma: s,
+      tipSigma: s,
+      greySigma: s,
+      shares: [0, 1, DIRECT_VARIATION, 0.5 * DIRECT_VARIATION],
+      roughness: DIRECT_ROUGHNESS,
+    };
+  }
+  const dye = dyeSigma(look.dye);
+  const tipDye = look.tipStart < 1 ? dyeSigma(look.tipDye) : dye;
+  const root = add(melaninAbsorption(look.melanin, look.redness), dye);
+  const tip =
+    look.tipStart < 1 ? add(melaninAbsorption(look.tipMelanin, look.redness), tipDye) : root;
+  return {
+    rootSigma: root,
+    tipSigma: tip,
+    greySigma: add(melaninAbsorption(GREY_MELANIN, GREY_REDNESS), dye),
+    shares: [
+      Math.min(1, Math.max(0, look.grey / 100)),
+      look.tipStart,
+      look.variation,
+      0.5 * look.variation,
+    ],
+    roughness: look.roughness,
+  };
+}
+
+/** Linear RGB base colour of one strand at `along` (0 root … 1 tip): u = its seeded random
+ *  values in [0, 1) (u[0] grey pick, u[1] melanin spread), as the shader does it. */
+export function strandLookColor(
+  values: LookUniformValues,
+  u: readonly [number, number],
+  along: number,
+): Rgb {
+  const [grey, tipStart, spread] = values.shares;
+  let s: Rgb;
+  if (u[0] < grey) s = values.greySigma;
+  else {
+    const t = tipStart < 0.999 ? smoothstep(tipStart, 1, along) : 0;
+    s = [0, 1, 2].map(
+      (c) => values.rootSigma[c] + (values.tipSigma[c] - values.rootSigma[c]) * t,
+    ) as Rgb;
+  }
+  const k = 1 + spread * (2 * u[1] - 1);
+  return absorptionColor([s[0] * k, s[1] * k, s[2] * k]);
+}
+
+function smoothstep(a: number, b: number, x: number): number {
+  const t = Math.min(1, Math.max(0, (x - a) / (b - a)));
+  return t * t * (3 - 2 * t);
+}
