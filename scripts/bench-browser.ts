@@ -13,6 +13,8 @@
 // Each stroke's row also counts the frames drawn while drawing by where they started (the frame
 // cache: cached head and hair / cached head / nothing).
 // BENCH_DIST=<dir> serves another build (vite build --outDir <dir>) instead of dist/.
+// BENCH_QUALITY=fast|high sets the Quality (else the app's Auto) and writes
+// bench-results/browser-<quality>.{json,md}.
 // BENCH_TOOL=Braid draws the strokes with the Braid tool (its previews solve the braid being
 // drawn) and writes bench-results/browser-braid.{json,md}.
 import { type ChildProcess, spawn } from 'node:child_process';
@@ -32,6 +34,7 @@ const STROKES = Number(process.env.BENCH_STROKES ?? 5);
 const FRAMES = Number(process.env.BENCH_FRAMES ?? 5);
 const DENSE = process.env.BENCH_DENSE !== '0';
 const TOOL = process.env.BENCH_TOOL ?? 'Stream curve';
+const QUALITY = process.env.BENCH_QUALITY;
 const trace = (m: string): void => {
   if (process.env.BENCH_TRACE)
     console.error(`[bench ${new Date().toISOString().slice(11, 23)}] ${m}`);
@@ -261,6 +264,10 @@ async function main(): Promise<void> {
       await page.goto(`${BASE}/?grid=${grid}&solver=${solver}`);
       trace(`${grid} ${solver}: loading`);
       await settled(page);
+      if (QUALITY) {
+        await page.evaluate((q) => window.hairsketch.setQuality(q as 'fast' | 'high'), QUALITY);
+        await page.evaluate(() => window.hairsketch.idle());
+      }
       trace('loaded');
       const state = await page.getByTestId('status').getAttribute('data-state');
       const load = await page.evaluate(() => window.hairsketch.hairLog()[0]?.time ?? null);
@@ -341,7 +348,8 @@ async function main(): Promise<void> {
         `- ${r.grid} ${r.solver}: first look: ${b(r.firstBreakdown)}; converged: ${b(r.convergedBreakdown)}; full hair: ${b(r.fullBreakdown)}; previews: ${b(r.previewBreakdown)}`,
       );
   console.log(`\n${out.join('\n')}`);
-  writeBenchResults(TOOL === 'Braid' ? 'browser-braid' : 'browser', {
+  const name = TOOL === 'Braid' ? 'browser-braid' : 'browser';
+  writeBenchResults(QUALITY ? `${name}-${QUALITY}` : name, {
     title: 'Browser: from a stroke to hair on screen, per grid and solver',
     script: 'scripts/bench-browser.ts',
     command: 'npm run bench:browser',

@@ -4,8 +4,8 @@
 // TILE_STRANDS strands, each strand mapped into its own card's coordinates (across: 0 at the
 // card's lo edge .. 1 at its hi edge; along: its fraction of its length, root at the tile's top),
 // so one tile suits any card; card c uses tile c mod ATLAS_TILES. Three images, same layout:
-//   colour    RGBA, the strands' colour (sRGB; × 0.7 .. 1 from the deepest to the highest in the
-//             clump) and their coverage as alpha;
+//   colour    RGBA, the strands' colour (sRGB, each point's with a colour model's ombré;
+//             × 0.7 .. 1 from the deepest to the highest in the clump) and their coverage as alpha;
 //   root–tip  grey, 0 at the root .. 255 at the tip, of the strand nearest the viewer outside;
 //   depth     grey, 128 + 127 · d / DEPTH_RANGE (clamped): d the height of that strand above the
 //             card along its normal (above = out from the head).
@@ -82,7 +82,7 @@ export function drawCardAtlas(
   const depth = new Uint8Array(S * S).fill(128);
   const cover = new Float32Array(S * S);
   const top = new Float32Array(S * S).fill(Number.NEGATIVE_INFINITY);
-  const { points, strandStart, colors } = strands;
+  const { points, strandStart, colors, pointColors } = strands;
   const n = strandStart.length - 1;
 
   // transparent pixels carry the mean hair colour, so filtering at the strands' edges does not
@@ -144,6 +144,9 @@ export function drawCardAtlas(
       }
       const rgb = [0, 1, 2].map((q) => linearToSrgbByte(colors[3 * s + q]));
       for (let i = 0; i + 1 < np; i++) {
+        // a colour model's ombré: each segment in its first point's colour
+        if (pointColors)
+          for (let q = 0; q < 3; q++) rgb[q] = linearToSrgbByte(pointColors[3 * (a + i) + q]);
         const t0 = i / (np - 1);
         const width =
           LINE_WIDTH_ROOT + (LINE_WIDTH_TIP - LINE_WIDTH_ROOT) * ((t0 * 2 + 1 / (np - 1)) / 2);

@@ -6,9 +6,13 @@
 // Colours are LINEAR RGB floats (USD displayColor and glTF COLOR_0 are linear; the .hair
 // colours use the same values): session.hairColor (#rrggbb, sRGB) varied per strand by
 // ±STRAND_VALUE_VARIATION in value (the sRGB channels scaled by one factor, clamped to 1), then
-// decoded with the sRGB transfer function.
+// decoded with the sRGB transfer function. A session with a colour model (hairLook.ts) colours
+// each strand from it instead (its grey pick and melanin spread seeded by the growth seed and
+// the strand), and each point too (the ombré), with the pigment per strand and point for
+// Blender's Principled Hair BSDF (melanin, redness, tint).
 
 import type { StrandArrays } from '../model/hairArrays';
+import { type HairLook, lookUniforms, strandLookColor, strandPigment } from '../model/hairLook';
 import { DEFAULT_HAIR_COLOR, type SessionState } from '../model/session';
 import { MAX_POINTS_PER_STRAND, ROOT_WIDTH, TIP_WIDTH } from './types';
 
@@ -24,8 +28,17 @@ export interface ExportStrands {
   strandStart: Uint32Array; // length = strands + 1
   /** Diameter per point, world units. */
   widths: Float32Array; // widths[point]
-  /** Linear RGB per strand. */
+  /** Linear RGB per strand (a colour model's: at the root). */
   colors: Float32Array; // colors[3 * strand + channel]
+  /** With a colour model: linear RGB per point (the ombré), else null. */
+  pointColors: Float32Array | null; // pointColors[3 * point + channel]
+  /** With a colour model: the pigment (Blender's Principled Hair, melanin parametrisation),
+   *  else null. */
+  pigment: {
+    melanin: Float32Array; // melanin[point] (0..1, the ombré along the strand)
+    redness: Float32Array; // redness[strand]
+    tint: Float32Array; // tint[3 * strand + channel], linear RGB (1, 1, 1: no dye)
+  } | null;
   /** The input strand (StrandArrays index) each exported strand comes from. */
   source: Uint32Array; // source[strand]
   /** Bounds of points (exact float32 values), [0, 0, 0] for both when there are no points. */
@@ -60,6 +73,12 @@ export function strandValueFactor(seed: number, index: number): number {
   return 1 + STRAND_VALUE_VARIATION * u;
 }
 
+/** The colour model's two random values of input strand `index` (grey pick, melanin spread). */
+export function strandLookRandom(seed: number, index: number): [number, number] {
+  const h = strandHash(seed ^ 0x6c8e9cf5, index);
+  return [(h >>> 16) / 65536, (h & 0xffff) / 65536];
+}
+
 /** Linear RGB of input strand `index` for a session colour and seed. */
 export function strandColor(hex: string, seed: number, index: number): [number, number, number] {
   const f = strandValueFactor(seed, index);
@@ -79,7 +98,7 @@ export function widthAt(t: number): number {
 /** Builds the exported strands (see the file comment). */
 export function strandsForExport(
   strands: StrandArrays,
-  session: Pick<SessionState, 'hairColor' | 'growth'>,
+  session: Pick<SessionState, 'hairColor' | 'growth'> & { hairLook?: HairLook | null },
 ): ExportStrands {
   const src = strands.points;
   const start = strands.strandStart;
@@ -103,6 +122,16 @@ export function strandsForExport(
   const source = new Uint32Array(nOut);
   const seed = session.growth.seed;
   const base = parseHexColor(session.hairColor);
+  const look = session.hairLook ?? null;
+  const values = look ? lookUniforms(look, session.hairColor) : null;
+  const pointColors = look ? new Float32Array(3 * pOut) : null;
+  const pigment = look
+    ? {
+        melanin: new Float32Array(pOut),
+        redness: new Float32Array(nOut),
+        tint: new Float32Array(3 * nOut),
+      }
+    : null;
   const cum = new Float64Array(Math.max(2, maxStrandLength(start)));
 
   let so = 0;
@@ -150,10 +179,27 @@ export function strandsForExport(
       }
     }
 
-    const f = strandValueFactor(seed, s);
-    colors[3 * so] = srgbToLinear(Math.min(1, base[0] * f));
-    colors[3 * so + 1] = srgbToLinear(Math.min(1, base[1] * f));
-    colors[3 * so + 2] = srgbToLinear(Math.min(1, base[2] * f));
+    if (look && values && pointColors && pigment) {
+      const u = strandLookRandom(seed, s);
+      const m = Math.min(n, cap);
+      for (let k = 0; k < m; k++) {
+        const along = m > 1 ? k / (m - 1) : 0;
+        const c = strandLookColor(values, u, along);
+        pointColors.set(c, 3 * (po + k));
+        if (k === 0) colors.set(c, 3 * so);
+        const p = strandPigment(look, u, along);
+        pigment.melanin[po + k] = p.melanin;
+        if (k === 0) {
+          pigment.redness[so] = p.redness;
+          pigment.tint.set(p.tint, 3 * so);
+        }
+      }
+    } else {
+      const f = strandValueFactor(seed, s);
+      colors[3 * so] = srgbToLinear(Math.min(1, base[0] * f));
+      colors[3 * so + 1] = srgbToLinear(Math.min(1, base[1] * f));
+      colors[3 * so + 2] = srgbToLinear(Math.min(1, base[2] * f));
+    }
     po += Math.min(n, cap);
     source[so] = s;
     so++;
@@ -174,7 +220,7 @@ export function strandsForExport(
         if (v > max[c]) max[c] = v;
       }
   }
-  return { points, strandStart, widths, colors, source, min, max };
+  return { points, strandStart, widths, colors, pointColors, pigment, source, min, max };
 }
 
 function maxStrandLength(start: Uint32Array): number {

@@ -187,9 +187,12 @@ function numbersToWrite(
   for (const g of groom.guides) guidePoints += strandStart[g + 1] - strandStart[g];
   const headVerts = head ? head.positions.length / 3 : 0;
   const headTris = head ? head.indices.length / 3 : 0;
+  // the colour model's pigment: 1 number per point (melanin), 4 per strand (redness, tint)
+  const pigment = strands.pigment ? 4 * (nStrands + nGuides) + widths.length + guidePoints : 0;
   return (
     16 * (nStrands + nGuides) +
     7 * (widths.length + guidePoints) +
+    pigment +
     (head
       ? headTris * 4 +
         headVerts * (head.normals ? 6 : 3) +
@@ -346,7 +349,7 @@ function* writeCurvesGeometry(
  *  per strand, vertex per point), and Blender's root-UV attribute. */
 function* writeGroomPrimvars(
   out: UsdOut,
-  { colors }: ExportStrands,
+  { colors, pointColors, pigment }: ExportStrands,
   groom: GroomLayout,
   { guide }: CurvesPrim,
   prim: PrimStrands,
@@ -371,6 +374,7 @@ function* writeGroomPrimvars(
     'float3[] primvars:groom_color',
     n,
     (i) => {
+      if (pointColors) return prim.perPoint(order[i], (p) => vec3(pointColors, 3 * p));
       const c = vec3(colors, 3 * order[i]);
       return prim.perPoint(order[i], () => c);
     },
@@ -378,6 +382,21 @@ function* writeGroomPrimvars(
     'vertex',
     true,
   );
+  if (pigment) {
+    // the colour model's pigment for Blender (each primvar becomes an attribute that an
+    // Attribute node feeds into the Principled Hair BSDF's melanin parametrisation)
+    yield* list(
+      out,
+      'float[] primvars:melanin',
+      n,
+      (i) => prim.perPoint(order[i], (p) => formatFloat(pigment.melanin[p])),
+      pointsOf,
+      'vertex',
+      true,
+    );
+    yield* uniform('float[] primvars:redness', (i) => formatFloat(pigment.redness[order[i]]));
+    yield* uniform('color3f[] primvars:tint', (i) => vec3(pigment.tint, 3 * order[i]), 3);
+  }
   if (!guide) {
     // guide ids are integers below 2^24: exact as floats, written in full
     const triple = (a: Float32Array, i: number, f: (x: number) => string) =>

@@ -126,6 +126,25 @@ export function strandLookColor(
   return absorptionColor([s[0] * k, s[1] * k, s[2] * k]);
 }
 
+/** One strand's pigment at `along` as Blender's Principled Hair BSDF takes it (melanin
+ *  parametrisation): melanin (its spread and the ombré applied to the amount −ln(1 − melanin)),
+ *  redness, and the dye as tint (linear RGB; white: none). u as for strandLookColor. */
+export function strandPigment(
+  look: HairLook,
+  u: readonly [number, number],
+  along: number,
+): { melanin: number; redness: number; tint: Rgb } {
+  const dye = look.dye ? hexToLinear(look.dye) : null;
+  const tint: Rgb = dye ?? [1, 1, 1];
+  if (u[0] < look.grey / 100) return { melanin: GREY_MELANIN, redness: GREY_REDNESS, tint };
+  const amount = (m: number) => -Math.log(Math.max(1 - Math.min(1, Math.max(0, m)), 1e-4));
+  const t = look.tipStart < 0.999 ? smoothstep(look.tipStart, 1, along) : 0;
+  const m =
+    (amount(look.melanin) + (amount(look.tipMelanin) - amount(look.melanin)) * t) *
+    (1 + look.variation * (2 * u[1] - 1));
+  return { melanin: 1 - Math.exp(-m), redness: look.redness, tint };
+}
+
 function smoothstep(a: number, b: number, x: number): number {
   const t = Math.min(1, Math.max(0, (x - a) / (b - a)));
   return t * t * (3 - 2 * t);

@@ -5,6 +5,7 @@ import * as THREE from 'three';
 import { makeHairCards } from '../export/cardsWriter';
 import { strandsForExport } from '../export/strandsForExport';
 import type { StrandArrays } from '../model/hairArrays';
+import type { HairLook } from '../model/hairLook';
 import type { SessionState } from '../model/session';
 
 export interface CardsObject {
@@ -18,7 +19,7 @@ export interface CardsObject {
  *  `count` cards. The caller owns the object; its material and texture go with it (dispose()). */
 export function buildCardsObject(
   strands: StrandArrays,
-  session: Pick<SessionState, 'hairColor' | 'growth'>,
+  session: Pick<SessionState, 'hairColor' | 'growth'> & { hairLook?: HairLook | null },
   count: number,
 ): CardsObject {
   const t0 = performance.now();

@@ -139,7 +139,7 @@ export class HairView {
     if (this.cards && c.final) {
       const made = buildCardsObject(
         c.strands,
-        { hairColor: this.color, growth: this.cards.growth },
+        { hairColor: this.color, hairLook: this.look, growth: this.cards.growth },
         this.cards.count,
       );
       this.object = made.object;
