@@ -11,6 +11,7 @@ import {
   type HairLook,
 } from '../../web/model/hairLook';
 import { hairColorFromMelanin } from '../../web/model/melanin';
+import { quantizeHairLook, readHairLook } from '../../web/model/readHairLook';
 
 /** `n` straight strands of 11 points each. */
 function strands(n: number) {
@@ -85,5 +86,30 @@ describe('colour model on the strands', () => {
     const plain = strandsForExport(strands(3), { hairColor: '#5a3825', growth: DEFAULT_GROWTH });
     expect(plain.pigment).toBeNull();
     expect(plain.pointColors).toBeNull();
+  });
+});
+
+describe('session.hairLook in files and links', () => {
+  it('reads what it is given, defaults what is left out, refuses what is wrong', () => {
+    const look = { ...DEFAULT_HAIR_LOOK, melanin: 0.7, dye: '#A04020', grey: 12.5 };
+    expect(readHairLook(JSON.parse(JSON.stringify(look)), 's.hairLook').hairLook).toEqual({
+      ...look,
+      dye: '#a04020',
+    });
+    expect(readHairLook({ redness: 0.9 }, 's.hairLook').hairLook).toEqual({
+      ...DEFAULT_HAIR_LOOK,
+      redness: 0.9,
+    });
+    expect(readHairLook(undefined, 's.hairLook')).toEqual({});
+    expect(() => readHairLook({ melanin: 1.5 }, 's.hairLook')).toThrow(/melanin/);
+    expect(() => readHairLook({ dye: 'red' }, 's.hairLook')).toThrow(/dye/);
+    expect(() => readHairLook({ shine: 1 }, 's.hairLook')).toThrow(/shine/);
+  });
+
+  it('keeps numbers on their grid, and a look already on it as it is', () => {
+    const q = quantizeHairLook({ ...DEFAULT_HAIR_LOOK, melanin: 0.12345, grey: 33.333 });
+    expect(q.melanin).toBe(0.123);
+    expect(q.grey).toBe(33.3);
+    expect(quantizeHairLook(q)).toBe(q);
   });
 });
