@@ -42,6 +42,8 @@ function target() {
       avoidOn = !avoidOn;
     },
     avoidScalpOn: () => avoidOn,
+    toggleBust: () => calls.push('toggleBust'),
+    bustOn: () => false,
     mirror: () => mirrorOn,
     setMirror: (on) => {
       calls.push(`mirror:${on}`);

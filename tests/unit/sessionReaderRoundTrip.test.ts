@@ -75,16 +75,26 @@ describe('every preset session passes the reader and round-trips', () => {
     const file = { ...s, camera: { position: [1, 2, 3], target: [0, 0, 0] }, selected: 'c2' };
     const back = expectRoundTrip(JSON.parse(JSON.stringify(file)));
     expect(back).toEqual(s);
-    expect(Object.keys(back)).toEqual(['version', 'head', 'grid', 'curves', 'growth', 'hairColor']);
+    // the paper's figures keep the paper's method (no fall, sections or finished edges) on the bust
+    expect(Object.keys(back)).toEqual([
+      'version',
+      'head',
+      'grid',
+      'curves',
+      'growth',
+      'hairColor',
+      'bust',
+    ]);
   });
 
   it('spells out the defaults of a minimal session, and keeps them on the next read', () => {
-    // a session made before version 4 has no natural fall, sections or finished edges (new
-    // sessions have them on)
-    const { fall, sections, finish, ...beforeFall } = emptySession('25k');
+    // a session made before version 4 has no natural fall, sections, finished edges or bust
+    // (new sessions have them on)
+    const { fall, sections, finish, bust, ...beforeFall } = emptySession('25k');
     expect(fall).toBe(true);
     expect(sections).toBe(true);
     expect(finish).toBe(true);
+    expect(bust).toBe(true);
     const back = expectRoundTrip({ version: 2, curves: [] });
     expect(back).toEqual(beforeFall);
     // a minimal version 1 session reads as the same session
@@ -97,6 +107,7 @@ describe('every preset session passes the reader and round-trips', () => {
         fall: true,
         sections: true,
         finish: true,
+        bust: true,
       }),
     ).toEqual(emptySession('25k'));
   });

@@ -66,6 +66,7 @@ describe('session schema', () => {
       'fall',
       'sections',
       'finish',
+      'bust',
       'detail',
     ]);
     expect(needsSolve(s, { ...s })).toBe(false);
@@ -123,10 +124,22 @@ describe('session schema', () => {
 describe('engine settings', () => {
   it("pack every 'request' setting in table order, flags as 0 or 1 (engine_settings.hpp)", () => {
     expect([
-      ...engineSettings({ avoidScalp: true, fall: false, sections: false, finish: true }),
-    ]).toEqual([1, 0, 0, 1]);
+      ...engineSettings({
+        avoidScalp: true,
+        fall: false,
+        sections: false,
+        finish: true,
+        bust: false,
+      }),
+    ]).toEqual([1, 0, 0, 1, 0]);
     expect([
-      ...engineSettings({ avoidScalp: false, fall: true, sections: true, finish: false }),
-    ]).toEqual([0, 1, 1, 0]);
+      ...engineSettings({
+        avoidScalp: false,
+        fall: true,
+        sections: true,
+        finish: false,
+        bust: true,
+      }),
+    ]).toEqual([0, 1, 1, 0, 1]);
   });
 });

@@ -26,6 +26,8 @@ export interface ActionTarget {
   setMirror(on: boolean): void;
   toggleAvoidScalp(): void;
   avoidScalpOn(): boolean;
+  toggleBust(): void;
+  bustOn(): boolean;
   share(): void;
   /** "Copy embed code": an <iframe> snippet showing this session (embed.html). */
   copyEmbed(): void;
@@ -168,6 +170,16 @@ export function buildActions(t: ActionTarget): Action[] {
       toolbar: 'more',
       run: () => t.toggleAvoidScalp(),
       pressed: () => t.avoidScalpOn(),
+    },
+    {
+      id: 'head.bust',
+      label: 'Bust',
+      title:
+        'Show the head on a bust (neck, shoulders, the top of the chest and back): long hair rests on the shoulders and slides off them; off: the head alone',
+      group: 'curve',
+      toolbar: 'more',
+      run: () => t.toggleBust(),
+      pressed: () => t.bustOn(),
     },
     {
       id: 'file.share',

@@ -19,6 +19,7 @@ import { buildReferencePanel, type ReferencePanel } from '../ui/referencePanel';
 import { StatusLine } from '../ui/status';
 import { buildToolbar } from '../ui/toolbar';
 import { buildViewControl } from '../ui/viewControl';
+import { createBodyMesh } from '../viewer/bodyMaterial';
 import { HairView } from '../viewer/hairView';
 import { createHeadMesh } from '../viewer/headMaterial';
 import { viewLabel } from '../viewer/namedViews';
@@ -61,6 +62,8 @@ export function startApp(): void {
   const head = Head.builtin();
   const headMesh = createHeadMesh(head.mesh);
   viewer.addHead(headMesh);
+  const bodyMesh = head.body ? createBodyMesh(head.body) : undefined;
+  if (bodyMesh) viewer.addHead(bodyMesh);
   let headPanel: HeadPanel | null = null;
   const headStore = indexedDbHeadStore();
   // the session's head and scalp painting (bridge and status are made below; the controller
@@ -68,6 +71,7 @@ export function startApp(): void {
   const heads: HeadController = new HeadController(head, {
     viewer,
     headMesh,
+    bodyMesh,
     store: headStore,
     setSolverHead: (m) => bridge.setHead(m),
     setSolverScalpMask: (m) => bridge.setScalpMask(m),

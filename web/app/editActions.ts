@@ -81,6 +81,8 @@ export function editActions(d: EditActionDeps): EditActions {
     /** S4.7 as a setting of the session, an undoable edit. */
     toggleAvoidScalp: () => editor.run({ kind: 'setAvoidScalp', on: !editor.session.avoidScalp }),
     avoidScalpOn: () => !!editor.session.avoidScalp,
+    toggleBust: () => editor.run({ kind: 'setBust', on: !editor.session.bust }),
+    bustOn: () => !!editor.session.bust,
     share: () => void d.links.share().then((m) => status.note(m)),
     copyEmbed: () => void d.links.copyEmbed().then((m) => status.note(m)),
     save: () => {

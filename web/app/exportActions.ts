@@ -1,6 +1,7 @@
 // Wires "Export": the menu, file exports in their own worker (Exporter) and the PNG from the
 // viewer, each after the running solve (if any) has finished, with progress on the status line.
 import type { Editor } from '../editor/editor';
+import { exportHeadWithBody } from '../export/exportHead';
 import type { Head } from '../head/head';
 import type { gridForSession } from '../model/grid';
 import type { SolverName } from '../solver/protocol';
@@ -40,8 +41,13 @@ export function wireExport(d: {
     scalp: () => d.head().scalpMesh(),
     headBounds: () => d.headBounds(),
     head: () => {
-      const m = d.head().mesh;
-      return { positions: m.positions, indices: m.indices, normals: m.normals };
+      const h = d.head();
+      const m = h.mesh;
+      const s = d.editor.session;
+      return exportHeadWithBody(
+        { positions: m.positions, indices: m.indices, normals: m.normals },
+        s.bust && s.head === 'builtin' ? h.body : null,
+      );
     },
     headUv: () => {
       const m = d.head().mesh;

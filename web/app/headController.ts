@@ -34,6 +34,8 @@ export interface HeadControllerDeps {
   viewer: Viewer;
   /** The displayed head (its geometry is replaced when the head changes). */
   headMesh: THREE.Mesh;
+  /** The built-in bust, shown with the built-in head in sessions with `bust`. */
+  bodyMesh?: THREE.Mesh;
   store: HeadStore;
   /** The solver gets a new head (worker restart) or only a new scalp mask. */
   setSolverHead(scalp: ScalpMesh): void;
@@ -120,6 +122,7 @@ export class HeadController {
   /** The built-in head's scalp for the first session (before the solver is told of any): its
    *  finished edges and strokes, on the head drawn and in the head the solver starts from. */
   startWith(s: SessionState): void {
+    this.showBody(s);
     if (s.head !== 'builtin') return; // a loaded head arrives through sessionChanged
     this.paint = s.scalpPaint;
     this.finish = !!s.finish;
@@ -128,9 +131,20 @@ export class HeadController {
     recolorHeadScalp(this.d.headMesh, head.mesh);
   }
 
+  /** The bust goes with the built-in head in a session with `bust` (a loaded head is its own
+   *  body). */
+  private showBody(s: SessionState): void {
+    const b = this.d.bodyMesh;
+    const on = !!s.bust && s.head === 'builtin';
+    if (!b || b.visible === on) return;
+    b.visible = on;
+    this.d.viewer.invalidateFrameCache();
+  }
+
   /** The session changed (any edit, undo, a file, a link): follow its head and scalp. */
   sessionChanged(s: SessionState): void {
     this.latest = s;
+    this.showBody(s);
     if (this.switching) return; // the switch picks up the newest session when it ends
     const key = refKey(s.head);
     if (key !== this.key) {

@@ -18,6 +18,7 @@ import {
 } from 'node:fs';
 import { basename, dirname, join, resolve } from 'node:path';
 import { cardCountProblem } from '../export/cardCount';
+import { exportHeadWithBody } from '../export/exportHead';
 import {
   EXPORT_FORMAT_IDS,
   EXPORT_FORMATS,
@@ -32,6 +33,7 @@ import { readExportedSession } from '../export/readExport';
 import { exportedCounts } from '../export/strandsForExport';
 import type { ExportHead } from '../export/types';
 import { writeExport } from '../export/writeExport';
+import { builtinBody } from '../head/buildBody';
 import { GRID_PRESETS, type GridPreset, gridForSession, isGridPreset } from '../model/grid';
 import { hangLength, type SessionState } from '../model/session';
 import { type HeadFileData, readSessionFile } from '../model/sessionFile';
@@ -289,7 +291,10 @@ export async function runGrow(
   );
   const preset = args.grid ?? session.grid;
   const exportHead: ExportHead | null = args.head
-    ? { positions: mesh.positions, indices: mesh.indices, normals: mesh.normals }
+    ? exportHeadWithBody(
+        { positions: mesh.positions, indices: mesh.indices, normals: mesh.normals },
+        session.bust && session.head === 'builtin' ? builtinBody() : null,
+      )
     : null;
 
   checkWritable(args.out);

@@ -8,6 +8,7 @@
 // Growing needs only the head's triangles and scalp, so the built-in head is built here without
 // three.js; reading a head file needs three's loaders, which cli/headFile.ts brings in only then.
 import { readFileSync, statSync } from 'node:fs';
+import { bodyArrays, builtinBody } from '../head/buildBody';
 import { buildHead } from '../head/buildHead';
 import type { HeadMesh } from '../head/head';
 import { sessionScalpMask } from '../head/scalpPaint';
@@ -80,6 +81,7 @@ export async function headForGrow(
     indices: mesh.indices.slice(),
     scalp: mask,
     center: [...mesh.center],
+    ...(loaded ? {} : { body: bodyArrays(builtinBody()) }),
   };
   return { mesh, scalp, bounds: loaded ? mesh.bounds : undefined, session: s };
 }

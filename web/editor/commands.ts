@@ -63,6 +63,7 @@ export type Command =
   | { kind: 'setSurfaceMode'; id: string; mode: SurfaceMode }
   /** "Avoid scalp" (S4.7) on or off: a setting the solver applies whenever it solves. */
   | { kind: 'setAvoidScalp'; on: boolean }
+  | { kind: 'setBust'; on: boolean }
   /** The session's detail (curveId null) or one curve's own (undefined: none / the session's). */
   | { kind: 'setDetail'; curveId: string | null; detail: HairDetail | undefined }
   /** Growth settings (strand density, cap, maximum length). */
@@ -276,6 +277,17 @@ const HANDLERS: {
       message: cmd.on
         ? 'Avoid scalp on: hair near the head is turned along it.'
         : 'Avoid scalp off.',
+    };
+  },
+  setBust(s, cmd) {
+    if (!!s.bust === cmd.on)
+      return { session: s, message: `The bust is already ${cmd.on ? 'on' : 'off'}.` };
+    const { bust: _, ...rest } = s;
+    return {
+      session: cmd.on ? { ...rest, bust: true } : rest,
+      message: cmd.on
+        ? 'Bust on: neck, shoulders and chest under the head; long hair rests on them.'
+        : 'Bust off: the head alone.',
     };
   },
   setDetail(s, cmd) {

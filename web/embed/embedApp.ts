@@ -14,10 +14,11 @@ import type { StrandArrays } from '../model/hairArrays';
 import { hangLength, type SessionState } from '../model/session';
 import { decodeSessionLink } from '../model/sessionLink';
 import { SolverClient } from '../solver/solverClient';
+import { createBodyMesh } from '../viewer/bodyMaterial';
 import { setCameraButtons } from '../viewer/cameraButtons';
 import { HairView } from '../viewer/hairView';
 import { createHeadMesh, recolorHeadScalp, setHeadGeometry } from '../viewer/headMaterial';
-import { namedView, type ViewName } from '../viewer/namedViews';
+import { BUST_VIEW_FLOOR, namedView, type ViewName } from '../viewer/namedViews';
 import { Viewer } from '../viewer/viewer';
 import { editorUrlFor, parseEmbedOptions } from './embedOptions';
 
@@ -79,6 +80,13 @@ export async function startEmbed(): Promise<void> {
   let head = Head.builtin();
   const headMesh = createHeadMesh(head.mesh);
   viewer.addHead(headMesh);
+  // the bust goes with the built-in head in a session with it (a loaded head is its own body)
+  const showsBody = !!s.bust && s.head === 'builtin' && head.body !== null;
+  if (showsBody && head.body) {
+    const body = createBodyMesh(head.body);
+    body.visible = true;
+    viewer.addHead(body);
+  }
   let note = '';
   status.dataset.head = 'builtin'; // the head drawn: 'builtin' or the loaded head's file name
   if (s.head !== 'builtin') {
@@ -106,7 +114,7 @@ export async function startEmbed(): Promise<void> {
     moved = true;
   });
   let framed = false;
-  let lowest = head.mesh.bounds.min[1];
+  let lowest = Math.min(head.mesh.bounds.min[1], showsBody ? BUST_VIEW_FLOOR : Infinity);
   const bounds = s.head === 'builtin' ? undefined : head.mesh.bounds;
   const grid = gridForSession(s.grid, s.curves, bounds, hangLength(s));
   say('loading', 'Growing the hair…');
@@ -116,7 +124,12 @@ export async function startEmbed(): Promise<void> {
     {
       onBusy: () => {},
       onResult: (r, final) => {
-        if (final) lowest = lowestPoint(r.strands, head.mesh.bounds.min[1]);
+        // the views frame the shoulders too when the bust is shown
+        if (final)
+          lowest = Math.min(
+            lowestPoint(r.strands, head.mesh.bounds.min[1]),
+            showsBody ? BUST_VIEW_FLOOR : Infinity,
+          );
         if (final && !framed && !moved) {
           framed = true;
           const v = namedView(opts.view ?? 'front', lowest);

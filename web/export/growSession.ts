@@ -67,6 +67,7 @@ export function growSessionHair(
   report('solve', 0);
   engine.setGrid(opts.grid, FIELD_OMEGA, opts.solver);
   engine.setScalp(scalp);
+  engine.setBody?.(scalp.body ?? null);
   const curves = packCurves(session.curves, null, !!session.fall);
   const options = packHairOptions(session, session.curves);
   engine.setDetail?.(options.detail);

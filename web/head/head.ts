@@ -12,6 +12,7 @@ import * as THREE from 'three';
 import { MeshBVH } from 'three-mesh-bvh';
 import type { ScalpMesh } from '../model/hairArrays';
 import { sphericalDirection, type Vec3 } from '../model/vec3';
+import { type BodyMesh, bodyArrays, builtinBody } from './buildBody';
 import { buildHead } from './buildHead';
 import { headSdf } from './headSdf';
 
@@ -51,6 +52,8 @@ export class Head {
     readonly mesh: HeadMesh,
     /** Exact signed distance, where the head has one (world units, negative inside). */
     private readonly exactSdf: ((x: number, y: number, z: number) => number) | null = null,
+    /** The body below it (the built-in bust; null on a loaded head, which is its own body). */
+    readonly body: BodyMesh | null = null,
   ) {
     const g = new THREE.BufferGeometry();
     g.setAttribute('position', new THREE.BufferAttribute(mesh.positions, 3));
@@ -64,7 +67,7 @@ export class Head {
   /** The built-in mannequin head. */
   static builtin(): Head {
     const m = buildHead();
-    return new Head(m, headSdf);
+    return new Head(m, headSdf, builtinBody());
   }
 
   get center(): Vec3 {
@@ -135,6 +138,7 @@ export class Head {
       indices: this.mesh.indices.slice(),
       scalp: this.mesh.scalp.slice(),
       center: [...this.mesh.center],
+      ...(this.body ? { body: bodyArrays(this.body) } : {}),
     };
   }
 

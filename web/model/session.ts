@@ -209,6 +209,7 @@ export function emptySession(
     fall: true,
     sections: true,
     finish: true,
+    bust: true,
   };
 }
 

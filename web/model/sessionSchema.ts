@@ -61,6 +61,11 @@ export const SESSION_SETTINGS = {
    *  near a cut line (solver-cpp/src/strand_growth.hpp); on in every new session; off, the scalp
    *  and ends of sessions made before. */
   finish: { type: 'flag', hair: 'request' },
+  /** A bust under the built-in head (head/bodySdf.ts: neck, shoulders, the top of the chest and
+   *  back) that hair rests on and slides over; with a loaded head, the head's own mesh below the
+   *  chin counts as body (solver-cpp/src/strand_growth.cpp). On in every new session; off, the
+   *  head alone, as in sessions made before it. */
+  bust: { type: 'flag', hair: 'request' },
 } as const satisfies Record<string, SettingSpec>;
 
 export type SessionSettingName = keyof typeof SESSION_SETTINGS;

@@ -23,6 +23,9 @@ export interface SolverEngine {
    *  triangle): the next grow samples roots over it; nothing else is rebuilt. Throws SolverError
    *  (the old mask stays) on a wrong length. Optional (test fakes). */
   setScalpMask?(scalp: Uint8Array): void;
+  /** The body below the head that hair slides over in sessions with `bust` (hairArrays.ts
+   *  ScalpMesh.body; null: none). */
+  setBody?(body: { positions: Float32Array; indices: Uint32Array } | null): void;
   /** Detail applied by grow (curl, clump, frizz, length jitter); optional (test fakes). */
   setDetail?(detail: DetailArrays): void;
   /** The session's settings for the curves of the next setCurves, as

@@ -46,12 +46,18 @@ float hairFresnel(float c) {
 }
 
 // Light leaving towards V from a strand of tangent T lit from L (unit vectors), per unit of
-// light reaching the hair's outer layer; shadowT: the transmittance towards the light.
+// light reaching the hair's outer layer; sigma: the absorption σa (C = exp(−√σa D), so powers
+// of C are exponentials of √σa); shadowT: the transmittance towards the light. HAIR_CHEAP (the
+// lines, shaded per vertex): the spread single scattering inside the hair is left out (the
+// spread back scattering stays).
 vec3 hairBsdf(vec3 T, vec3 L, vec3 V, vec3 sigma, float beta, float shadowT) {
-  vec3 C = hairBaseColor(sigma);
+  vec3 lnC = -sqrt(max(sigma, 0.0)) * HAIR_D; // ln of the base colour
   float sinL = clamp(dot(T, L), -1.0, 1.0);
   float sinV = clamp(dot(T, V), -1.0, 1.0);
-  float cosThetaD = max(cos(0.5 * abs(asin(sinV) - asin(sinL))), 0.05);
+  // cos θd = cos((θr − θi)/2) = √(½ + ½ cos(θr − θi))
+  float cosL = sqrt(1.0 - sinL * sinL);
+  float cosV = sqrt(1.0 - sinV * sinV);
+  float cosThetaD = max(sqrt(clamp(0.5 + 0.5 * (cosL * cosV + sinL * sinV), 0.0, 1.0)), 0.05);
   vec3 Lp = L - sinL * T;
   vec3 Vp = V - sinV * T;
   float cosPhi = dot(Lp, Vp) * inversesqrt(max(dot(Lp, Lp) * dot(Vp, Vp), 1e-8));
@@ -68,10 +74,10 @@ vec3 hairBsdf(vec3 T, vec3 L, vec3 V, vec3 sigma, float beta, float shadowT) {
   float h = cosHalfPhi * (1.0 + a * (0.6 - 0.8 * cosPhi));
   float fTT = hairFresnel(cosThetaD * sqrt(clamp(1.0 - h * h, 0.0, 1.0)));
   vec3 tt = hairG(B.y, x - 0.035) * exp(-3.65 * cosPhi - 3.98) * (1.0 - fTT) * (1.0 - fTT)
-    * pow(C, vec3(0.5 * sqrt(clamp(1.0 - h * h * a * a, 0.0, 1.0)) / cosThetaD));
+    * exp(lnC * (0.5 * sqrt(clamp(1.0 - h * h * a * a, 0.0, 1.0)) / cosThetaD));
   float fTRT = hairFresnel(0.5 * cosThetaD);
   vec3 trt = hairG(B.z, x - 0.14) * exp(17.0 * cosPhi - 16.78) * (1.0 - fTRT) * (1.0 - fTRT)
-    * fTRT * pow(C, vec3(0.8 / cosThetaD));
+    * fTRT * exp(lnC * (0.8 / cosThetaD));
   vec3 single = vec3(r) + tt + trt;
 
   // dual scattering
@@ -88,13 +94,18 @@ vec3 hairBsdf(vec3 T, vec3 L, vec3 V, vec3 sigma, float beta, float shadowT) {
   vec3 direct = shadowT * (single + HAIR_DB * back);
 
   float n = -log(max(shadowT, 1e-4));
-  vec3 Tf = pow(af, vec3(n)) * mix(1.0, HAIR_DF, min(n, 1.0));
+  // T_f = d_f a_f^n, a_f^n = exp(n ln a_f), ln a_f = 2 ln(1 − F̄) − 2σa
+  vec3 Tf = exp(n * (2.0 * log(1.0 - HAIR_FBAR) - 2.0 * sigma)) * mix(1.0, HAIR_DF, min(n, 1.0));
   vec3 reach = max(Tf - shadowT, 0.0);
   float sf2 = n * (B.x * B.x + B.y * B.y + B.z * B.z) / 3.0 + HAIR_ORIENT2 * min(n, 1.0);
+  vec3 backSpread = 2.0 * Ab * hairG(sqrt(sb2 + sf2), x - 0.035) * invCos2;
+#ifdef HAIR_CHEAP
+  vec3 spread = vec3(0.0);
+#else
   vec3 spread = (HAIR_FBAR * hairG(sqrt(B.x * B.x + sf2), x + 0.07)
     + af * hairG(sqrt(B.y * B.y + sf2), x - 0.035)
     + aTRT * hairG(sqrt(B.z * B.z + sf2), x - 0.14)) / HAIR_PI;
-  vec3 backSpread = 2.0 * Ab * hairG(sqrt(sb2 + sf2), x - 0.035) * invCos2;
+#endif
   vec3 scattered = reach * HAIR_DF * (spread + HAIR_PI * HAIR_DB * backSpread);
   return direct + scattered;
 }

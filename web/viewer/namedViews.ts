@@ -22,6 +22,9 @@ const POSITIONS: Record<ViewName, Vec3> = {
 /** The lowest point the default framing shows whole, and the head's top: hair reaching lower is
  *  framed from farther away, aimed lower. */
 const DEFAULT_FLOOR = -2.4;
+/** The lowest point the views show when the bust is drawn (head/bodySdf.ts): the shoulders and
+ *  the top of the chest, so the hair is seen resting on them. */
+export const BUST_VIEW_FLOOR = -3.3;
 const HEAD_TOP = 1.2;
 
 /** Where the camera stands and looks for `view` of hair whose lowest point is at height

@@ -319,6 +319,7 @@ export function createStrandMaterial(options: StrandMaterialOptions = {}): Stran
   };
   const defines: Record<string, string> = {};
   if (options.deepOpacity) defines.DEEP_OPACITY = '';
+  if (!strips) defines.HAIR_CHEAP = ''; // per vertex: the cheaper dual scattering
   const material = new THREE.ShaderMaterial({
     uniforms,
     defines,

@@ -108,6 +108,7 @@ export class WorkerLogic {
         this.engine.setGrid(msg.grid, msg.omega, msg.solver);
         this.setup = { omega: msg.omega, solver: msg.solver };
         this.engine.setScalp(msg.scalp);
+        this.engine.setBody?.(msg.scalp.body ?? null);
         this.head = msg.scalp;
         this.lighting = new ResultLighting(msg.scalp, msg.grid);
         this.initialised = true;
