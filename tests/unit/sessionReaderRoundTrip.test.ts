@@ -83,6 +83,7 @@ describe('every preset session passes the reader and round-trips', () => {
       'curves',
       'growth',
       'hairColor',
+      'hairLook',
       'bust',
     ]);
   });

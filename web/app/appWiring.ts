@@ -101,6 +101,7 @@ export function buildHairPanel(
     setGrowth: (patch) => editor.run({ kind: 'setGrowth', patch }),
     lengthen: (by) => editor.run({ kind: 'lengthen', by }),
     setDetail: (curveId, detail) => editor.run({ kind: 'setDetail', curveId, detail }),
+    setHairLook: (look) => editor.run({ kind: 'setHairLook', look }),
     say: (m) => status.note(m),
   });
 }

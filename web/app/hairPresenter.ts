@@ -47,10 +47,11 @@ export class HairPresenter {
     private readonly status: StatusLine,
     editor: Editor,
   ) {
-    hair.setColor(editor.session.hairColor);
+    hair.setLook(editor.session.hairLook ?? null, editor.session.hairColor);
     viewer.onRendered = () => this.stamp();
     editor.listen((c) => {
-      this.hair.setColor(c.session.hairColor); // a no-op when it is the same colour
+      // a no-op when it is the same colour (the editor replaces what it changes)
+      this.hair.setLook(c.session.hairLook ?? null, c.session.hairColor);
       // until the final hair is shown; a change the hair does not depend on brings none
       if (c.sessionChanged && changesHair(c.previous, c.session))
         this.viewer.hold('settling', true);

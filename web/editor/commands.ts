@@ -5,6 +5,7 @@
 import { CURVE_PARAMS, type CurveParamSpec, defaultParams } from '../model/curveParams';
 import { detailIsOn, type HairDetail } from '../model/detail';
 import type { GrowthParams } from '../model/growthParams';
+import type { HairLook } from '../model/hairLook';
 import { defOf } from '../model/kinds';
 import { lengthenSession } from '../model/lengthen';
 import {
@@ -72,6 +73,8 @@ export type Command =
    *  when negative), and the maximum length with it (model/lengthen.ts). */
   | { kind: 'lengthen'; by: number }
   | { kind: 'setHairColor'; color: string }
+  /** The colour model (model/hairLook.ts); null: the colour box's direct colour. */
+  | { kind: 'setHairLook'; look: HairLook | null }
   /** The head the hair grows on (Open head, Rotate, the built-in head). The scalp painting of
    *  the previous head is dropped (it belongs to that mesh); `symmetry`: the new head's mirror
    *  plane (absent: x = 0). */
@@ -349,8 +352,26 @@ const HANDLERS: {
   setHairColor(s, cmd) {
     if (!HEX_COLOR.test(cmd.color))
       return { session: s, message: `Hair colour "${cmd.color.slice(0, 20)}" is not #rrggbb.` };
-    if (cmd.color === s.hairColor) return { session: s, message: `Hair colour ${cmd.color}.` };
-    return { session: { ...s, hairColor: cmd.color }, message: `Hair colour ${cmd.color}.` };
+    // the colour box is the direct colour: picking one leaves the colour model
+    const { hairLook: _, ...rest } = s;
+    if (cmd.color === s.hairColor && !s.hairLook)
+      return { session: s, message: `Hair colour ${cmd.color}.` };
+    return { session: { ...rest, hairColor: cmd.color }, message: `Hair colour ${cmd.color}.` };
+  },
+  setHairLook(s, cmd) {
+    const { hairLook: _, ...rest } = s;
+    const next: SessionState = cmd.look ? { ...rest, hairLook: cmd.look } : rest;
+    if (JSON.stringify(next.hairLook) === JSON.stringify(s.hairLook))
+      return { session: s, message: 'Hair colour unchanged.' };
+    const check = parseSession({ ...next, curves: [] });
+    if (!check.ok) return { session: s, message: `Nothing changed: ${check.error}.` };
+    const l = cmd.look;
+    return {
+      session: next,
+      message: l
+        ? `Hair colour: melanin ${l.melanin}, redness ${l.redness}, grey ${l.grey} %.`
+        : 'Hair colour: the colour box’s colour.',
+    };
   },
   setHead(s, cmd) {
     const { scalpPaint: _p, symmetry: _s, ...rest } = s;

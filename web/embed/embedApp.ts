@@ -107,7 +107,7 @@ export async function startEmbed(): Promise<void> {
   }
   const hair = new HairView(viewer, headMesh);
   hair.setQuality(activeQuality(opts.quality, viewer.software));
-  hair.setColor(s.hairColor);
+  hair.setLook(s.hairLook ?? null, s.hairColor);
 
   let moved = false;
   viewer.controls.addEventListener('start', () => {

@@ -9,6 +9,7 @@
 
 import { defaultParams } from './curveParams';
 import type { HairDetail } from './detail';
+import { DEFAULT_HAIR_LOOK, type HairLook } from './hairLook';
 import { defOf } from './kinds';
 import { mirrorCurve } from './mirror';
 import { ponytailCircles } from './ponytailGeometry';
@@ -25,6 +26,7 @@ import {
   type StyleCurve,
   type Viewpoint,
 } from './session';
+import { SESSION_FIELD_NAMES } from './sessionSchema';
 import { add, normalize, scale, sphericalDirection, type Vec3 } from './vec3';
 
 export interface PresetContext {
@@ -532,8 +534,18 @@ export const CURLY_DETAIL: HairDetail = {
  *  show; the other presets are sketched as a user of today's app would, with it. */
 const PAPER_FIGURES: readonly PresetName[] = ['fig6', 'fig7', 'fig8', 'fig1'];
 
+/** Natural colours (hairLook.ts) of the presets; the rest take DEFAULT_HAIR_LOOK (a mid brown). */
+const PRESET_LOOKS: Partial<Record<PresetName, Partial<HairLook>>> = {
+  bob: { melanin: 0.7, redness: 0.1, tipMelanin: 0.7 },
+  long: { melanin: 0.35, redness: 0.35, tipMelanin: 0.12, tipStart: 0.55 },
+  curly: { melanin: 0.3, redness: 0.65, tipMelanin: 0.3 },
+  braid: { melanin: 0.15, redness: 0.25, tipMelanin: 0.15 },
+  bun: { melanin: 0.55, redness: 0.15, tipMelanin: 0.55, grey: 35 },
+  'pigtail-braids': { melanin: 0.25, redness: 0.3, tipMelanin: 0.25 },
+};
+
 export function applyPreset(s: SessionState, name: PresetName, ctx: PresetContext): SessionState {
-  const { detail: _, fall: __, sections: ___, finish: ____, ...rest } = s;
+  const { detail: _, fall: __, sections: ___, finish: ____, bust, ...rest } = s;
   const detail = name === 'curly' ? { detail: CURLY_DETAIL } : {};
   const fall = !PAPER_FIGURES.includes(name);
   // sketched curves end where the hair should end: with fall that is what "extend" off means
@@ -545,12 +557,20 @@ export function applyPreset(s: SessionState, name: PresetName, ctx: PresetContex
     name === 'long'
       ? { ...rest.growth, maxLength: Math.max(rest.growth.maxLength, LONG_MAX) }
       : rest.growth;
-  // sections and finished edges come with natural fall (the paper's figures have none)
-  return quantizeSession({
+  const hairLook: HairLook = { ...DEFAULT_HAIR_LOOK, ...PRESET_LOOKS[name] };
+  const made: SessionState = {
     ...rest,
+    hairLook,
     ...detail,
+    // sections and finished edges come with natural fall (the paper's figures have none)
     ...(fall ? { fall, sections: true, finish: true } : {}),
+    ...(bust ? { bust } : {}),
     growth,
     curves,
-  });
+  };
+  // the fields in the schema's order (a file's and the reader's)
+  const ordered: Record<string, unknown> = {};
+  for (const k of SESSION_FIELD_NAMES)
+    if (made[k as keyof SessionState] !== undefined) ordered[k] = made[k as keyof SessionState];
+  return quantizeSession(ordered as unknown as SessionState);
 }

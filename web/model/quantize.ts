@@ -25,6 +25,7 @@ import { DIRECTION_SCALE, PARAM_SCALE, POSITION_SCALE, quantize } from './gridNu
 import { defOf } from './kinds';
 import type { QuantizeKit } from './kinds/curveKind';
 import type { MirrorPlane } from './mirror';
+import { quantizeHairLook } from './readHairLook';
 import { REFERENCE_RANGES, type ReferenceImage } from './referenceImage';
 import type { ScalpStroke, SessionState, StyleCurve, Viewpoint } from './session';
 import { SETTING_NAMES, type SessionSettings, settingSpec } from './sessionSchema';
@@ -125,12 +126,14 @@ export function quantizeSession(s: SessionState): SessionState {
   const symmetry = s.symmetry && quantizePlane(s.symmetry);
   const settings = quantizeSettings(s);
   const references = s.references && mapSame(s.references, quantizeReference);
+  const hairLook = s.hairLook && quantizeHairLook(s.hairLook);
   if (
     curves === s.curves &&
     hairColor === s.hairColor &&
     scalpPaint === s.scalpPaint &&
     symmetry === s.symmetry &&
     references === s.references &&
+    hairLook === s.hairLook &&
     settings === null
   )
     return s;
@@ -141,6 +144,7 @@ export function quantizeSession(s: SessionState): SessionState {
     ...(scalpPaint ? { scalpPaint } : {}),
     ...(symmetry ? { symmetry } : {}),
     ...(references ? { references } : {}),
+    ...(hairLook ? { hairLook } : {}),
     ...settings,
   };
 }

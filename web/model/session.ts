@@ -5,6 +5,7 @@ import type { HairDetail } from './detail';
 import type { DividingSettings } from './dividingFrames';
 import type { GridPreset } from './grid';
 import { DEFAULT_GROWTH, type GrowthParams } from './growthParams';
+import type { HairLook } from './hairLook';
 import { tieNear } from './kinds';
 import type { MirrorPlane } from './mirror';
 import type { PonytailCircle } from './ponytailGeometry';
@@ -136,6 +137,9 @@ export interface SessionState extends SessionSettings {
   curves: readonly StyleCurve[];
   growth: GrowthParams;
   hairColor: string; // CSS hex colour
+  /** The colour model (melanin, redness, dye, grey, tips…; hairLook.ts); absent = the hair shows
+   *  hairColor as it is (sessions made before it, or a colour picked in the colour box). */
+  hairLook?: HairLook;
   /** Curl, clump, frizz and length jitter of every strand (absent = none). */
   detail?: HairDetail;
   /** Scalp brush strokes applied in order over the head's default scalp (absent = none). */

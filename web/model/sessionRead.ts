@@ -23,6 +23,7 @@ import { plainCopy } from './plainCopy';
 import { unitNormal } from './quantize';
 import { curve, detail } from './readCurve';
 import { fail, failed, refuse } from './readFailure';
+import { readHairLook } from './readHairLook';
 import { references } from './readReference';
 import {
   array,
@@ -214,6 +215,7 @@ const FIELD_READERS: Readonly<
       fail(path, 'must be a colour like #5a3825');
     return { hairColor };
   },
+  hairLook: readHairLook,
   detail,
   scalpPaint,
   symmetry,

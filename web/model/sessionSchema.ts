@@ -97,6 +97,8 @@ export const SESSION_FIELDS: Readonly<Record<string, FieldSpec>> = {
   curves: { hair: 'request', link: 'layout' },
   growth: { hair: 'request', link: 'layout' },
   hairColor: { hair: false, link: 'layout' },
+  /** The colour model (hairLook.ts); absent: hairColor is shown as it is. */
+  hairLook: { hair: false, link: 'tail' },
   ...Object.fromEntries(
     SETTING_NAMES.map((k) => [k, { hair: SESSION_SETTINGS[k].hair, link: 'tail' as const }]),
   ),

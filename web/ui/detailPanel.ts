@@ -1,4 +1,5 @@
-// The "Hair" panel: strand count and maximum length (growth settings), and the detail (curl,
+// The "Hair" panel: strand count and maximum length (growth settings), the colour
+// (ui/hairLookEditor.ts: melanin, redness, grey, dye, tips…), and the detail (curl,
 // clump, frizz, length jitter) of the whole head and, with a curve selected, below it that
 // curve's own (of the strands it governs). Lengths in centimetres. Built from model/detail.ts DETAIL_PARAMS; every change is one undoable edit
 // (the app runs it as an editor command).
@@ -13,7 +14,9 @@ import {
 } from '../model/detail';
 import { MAX_HAIR_LENGTH } from '../model/grid';
 import type { GrowthParams } from '../model/growthParams';
+import type { HairLook } from '../model/hairLook';
 import { DEFAULT_GROWTH, type SessionState, type StyleCurve } from '../model/session';
+import { hairLookEditors } from './hairLookEditor';
 import { numberInput, type Say } from './numberInput';
 
 /** Roots the built-in head's scalp gives at 1° × 1° sampling (S5.1): the strand count scales
@@ -56,6 +59,8 @@ export interface DetailPanelEvents {
   say: Say;
   /** curveId null: the session's detail. */
   setDetail(curveId: string | null, detail: HairDetail | undefined): void;
+  /** The colour model (null: the colour box's direct colour). */
+  setHairLook(look: HairLook | null): void;
 }
 
 export interface DetailPanel {
@@ -126,6 +131,8 @@ export function buildDetailPanel(root: HTMLElement, events: DetailPanelEvents): 
     buttons.append(shorter, ' ', longer);
     lengthRow.append('Length', buttons);
     panel.append(lengthRow);
+    panel.append(heading('Colour'));
+    panel.append(hairLookEditors(s.hairLook ?? null, events.setHairLook, events.say));
     // the whole head's detail is always here; a selected curve's own detail follows it
     panel.append(heading('Detail: whole head'));
     detailEditors(s.detail ?? {}, (d) => events.setDetail(null, d), '');
@@ -232,7 +239,13 @@ export function buildDetailPanel(root: HTMLElement, events: DetailPanelEvents): 
     show(session, selected) {
       last = { session, selected };
       if (panel.hidden) return;
-      const key = JSON.stringify([session.growth, session.detail, selected?.id, selected?.detail]);
+      const key = JSON.stringify([
+        session.growth,
+        session.detail,
+        session.hairLook,
+        selected?.id,
+        selected?.detail,
+      ]);
       if (key === shownKey) return; // keep focus while the user types
       shownKey = key;
       render(session, selected);
