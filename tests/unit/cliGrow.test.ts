@@ -369,8 +369,11 @@ describe('hairsketch grow: output', () => {
     expect(withHead.points).toBe(bare.points);
     expect(h.l).toBe(withHead.strands);
     expect(h.used).toBe(withHead.points);
-    expect(h.v).toBe(withHead.points + HEAD_VERTICES);
-    expect(h.faces).toBe(head.mesh.indices.length / 3);
+    // the default preset is on the bust: the head's triangles, then the bust's
+    const body = head.body;
+    if (!body) throw new Error('the built-in head has a bust');
+    expect(h.v).toBe(withHead.points + HEAD_VERTICES + body.positions.length / 3);
+    expect(h.faces).toBe(head.mesh.indices.length / 3 + body.indices.length / 3);
   });
 
   it(".hair: the header's strand and point counts and the file size", async () => {

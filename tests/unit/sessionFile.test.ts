@@ -11,8 +11,14 @@ const vp = {
 };
 
 function sample(): SessionState {
-  // the settings (avoidScalp, fall, sections, finish, detail) in the order the reader writes them
-  const { fall: _fall, sections: _sections, finish: _finish, ...s } = emptySession('50k');
+  // the settings (avoidScalp, fall, sections, finish, bust, detail) in the order the reader writes them
+  const {
+    fall: _fall,
+    sections: _sections,
+    finish: _finish,
+    bust: _bust,
+    ...s
+  } = emptySession('50k');
   return {
     ...s,
     curves: [
