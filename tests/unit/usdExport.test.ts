@@ -193,7 +193,7 @@ describe('USD export read by usd-core', () => {
     console.log(`ids: ${da.ids.length} strands, ${db.ids.length} after the erase, ${moved} moved`);
   });
 
-  it('Blender imports the groom: the hair has surface_uv_coordinate per curve', async () => {
+  it('Blender imports the groom: the hair has surface_uv_coordinate per curve, melanin per point, redness and tint per curve', async () => {
     const dir = mkdtempSync(join(tmpdir(), 'hs-usd-blender-'));
     const session = presetSession('default', Head.builtin());
     const { file, rep } = await growUsda(session, 500, dir, 'blender');
@@ -228,6 +228,10 @@ describe('USD export read by usd-core', () => {
     expect(hair.first_uv[0]).toBeCloseTo(u, 5);
     expect(hair.first_uv[1]).toBeCloseTo(v, 5);
     expect(out.objects.guides).toBeDefined();
+    // the colour model's pigment, for an Attribute node into the Principled Hair BSDF
+    expect(hair.attributes.melanin).toEqual(['POINT', 'FLOAT', rep.points]);
+    expect(hair.attributes.redness).toEqual(['CURVE', 'FLOAT', rep.strands]);
+    expect(hair.attributes.tint?.[0]).toBe('CURVE');
     console.log(
       `Blender ${out.blender}: hair ${hair.curves} curves, guides ${out.objects.guides.curves}; attributes ${Object.keys(hair.attributes).join(', ')}`,
     );
