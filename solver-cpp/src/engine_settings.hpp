@@ -13,6 +13,7 @@ enum EngineSetting : size_t {
   kSettingFall,        // natural fall (HairEngine::setFall)
   kSettingSections,    // ties may gather their whole scalp section (HairEngine::setSections)
   kSettingFinish,      // finished edges: ends spread near a cut line (HairEngine::setFinish)
+  kSettingBust,        // hair rests on the body (HairEngine::setBust, setBody)
   kEngineSettingCount
 };
 

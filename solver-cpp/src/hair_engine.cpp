@@ -131,6 +131,47 @@ Status HairEngine::setScalp(const float* positions, size_t vertexCount, const ui
   return applyPrior();
 }
 
+Status HairEngine::setBody(const float* positions, size_t vertexCount, const uint32_t* indices,
+                           size_t triangleCount) {
+  // The previous body is released first: its memory is what the new one may use.
+  bodyDistance_ = HeadDistance();
+  if (triangleCount == 0) return Status::Ok();
+  if (!positions || !indices || vertexCount == 0)
+    return Status::Error(StatusCode::InvalidInput, "body: empty mesh");
+  if (triangleCount > size_t(1) << 26 || vertexCount > size_t(1) << 28)
+    return Status::Error(StatusCode::InvalidInput, "body: too large");
+  for (size_t i = 0; i < 3 * vertexCount; ++i)
+    if (!std::isfinite(positions[i]))
+      return Status::Error(StatusCode::NonFinite, "body: non-finite vertex position");
+  for (size_t i = 0; i < 3 * triangleCount; ++i)
+    if (indices[i] >= vertexCount)
+      return Status::Error(StatusCode::InvalidInput,
+                           "body: triangle index " + std::to_string(indices[i]) + " out of range");
+  const HeadMeshView view{positions, vertexCount, indices, triangleCount, nullptr};
+  Status s =
+      checkMemory("body mesh (" + std::to_string(triangleCount) + " triangles)",
+                  HeadDistance::estimateBytes(view, kBodyCell, kBodyBand), availableMemoryBytes());
+  if (!s.ok()) return s;
+  s = bodyDistance_.build(view, kBodyCell, kBodyBand);
+  if (!s.ok()) bodyDistance_ = HeadDistance();
+  return s;
+}
+
+BodyCollider HairEngine::bodyCollider() const {
+  BodyCollider c;
+  if (!bust_) return c;
+  if (bodyDistance_.built()) c.body = &bodyDistance_;
+  c.headBelow = true;  // the head's own neck (and a loaded bust's shoulders) below the chin
+  return c;
+}
+
+// keepOutsideHead for the body (bust on with a body; the head mesh as the body is kept outside
+// by the head's own pass).
+void HairEngine::keepOutsideBody(float margin, const std::vector<uint32_t>* only) {
+  const BodyCollider c = bodyCollider();
+  if (c.body) keepOutsideHead(*c.body, margin, strands_, only);
+}
+
 Status HairEngine::setScalpMask(const uint8_t* scalp, size_t triangleCount) {
   if (!scalp_.built() || !headDistance_.built())
     return Status::Error(StatusCode::NotReady, "scalp mask before setScalp");
@@ -184,6 +225,7 @@ Status HairEngine::setSettings(const double* values, size_t count) {
       return Status::Error(StatusCode::NonFinite,
                            "settings: value " + std::to_string(k) + " is not finite");
   setSections(values[kSettingSections] != 0);
+  setBust(values[kSettingBust] != 0);
   const Status f = setFinish(values[kSettingFinish] != 0);
   if (!f.ok()) return f;
   return setFall(values[kSettingFall] != 0);
@@ -462,7 +504,8 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
   }
   const HeadDistance* head = headDistance_.built() ? &headDistance_ : nullptr;
   const CurveReach* reach = fall_ && !reach_.empty() ? &reach_ : nullptr;
-  Status s = growStrands(grid_, fieldF_, roots(), gp, strands_, size_t(24) << 20, head, reach);
+  Status s = growStrands(grid_, fieldF_, roots(), gp, strands_, size_t(24) << 20, head, reach,
+                         head ? bodyCollider() : BodyCollider());
   const std::vector<Eigen::Vector3f>& R = roots();
   const size_t n = R.size();
   // a strand's seed key: its index in the full root set (previews take a stride of it)
@@ -524,7 +567,10 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
     for (size_t i = 0; i < ts.strands.size(); ++i)
       strandTailCurve_[ts.strands[i]] = tailCurves_[ts.tail[i]];
     // growth kept the rest outside already
-    if (head && ts.captured > 0) keepOutsideHead(*head, float(gp.margin), strands_, &ts.strands);
+    if (head && ts.captured > 0) {
+      keepOutsideHead(*head, float(gp.margin), strands_, &ts.strands);
+      keepOutsideBody(float(gp.margin), &ts.strands);
+    }
   }
   bool anyDetail = false;
   for (const DetailParams& d : detail_) anyDetail |= d.any();
@@ -555,7 +601,10 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
     s = applyDetail(detail_.empty() ? std::vector<DetailParams>{DetailParams{}} : detail_, groupOf,
                     key, rp.seed, strands_, 255, finish_ ? &endSpread : nullptr, finish_);
     // cutting ends back moves no point: only detail needs keeping outside again
-    if (head && anyDetail) keepOutsideHead(*head, float(gp.margin), strands_);
+    if (head && anyDetail) {
+      keepOutsideHead(*head, float(gp.margin), strands_);
+      keepOutsideBody(float(gp.margin), nullptr);
+    }
   }
   growMs_ = msSince(t0);
   return s;

@@ -41,6 +41,26 @@ class HairEngine {
   // grid, field and constraints stay. A wrong count (InvalidInput) or no head (NotReady) is
   // refused and the old mask stays in force.
   Status setScalpMask(const uint8_t* scalp, size_t triangleCount);
+  // The body under the head (a bust: neck, shoulders, chest, back), a closed triangle mesh
+  // apart from the head's (counter-clockwise = outward): builds the body's distance grid
+  // (checked against the memory cap first; cell kBodyCell, kBodyBand cells of exact distance).
+  // With the bust setting on, hair slides over it (BodyCollider in strand_growth.hpp) and every
+  // strand point is kept out of it. 0 triangles clears it. Non-finite positions (NonFinite), an
+  // index out of range or missing arrays (InvalidInput) are refused and leave no body. Changes
+  // no field: it takes effect at the next grow.
+  Status setBody(const float* positions, size_t vertexCount, const uint32_t* indices,
+                 size_t triangleCount);
+  bool hasBody() const { return bodyDistance_.built(); }
+  const HeadDistance& bodyDistance() const { return bodyDistance_; }
+  static constexpr double kBodyCell = 0.04;  // world units (4 mm; the head's is 3 mm)
+  static constexpr int kBodyBand = 4;        // cells (1.6 cm)
+  // Bust on: hair rests on the body (setBody), and the head mesh below kHeadBodyBelowY is body
+  // too, not face (with no body set, a loaded head that has its own shoulders is its own body;
+  // with one, the head's neck where it meets the body's does not stop hair). Off (the
+  // default): growth is what it was before bodies, bit for bit, body or not. Takes effect at the
+  // next grow.
+  void setBust(bool on) { bust_ = on; }
+  bool bust() const { return bust_; }
   // Natural fall (hair_fall.hpp): the prior towards hanging hair joins the field energy (once
   // there is a grid and a head), curves no longer append the fading extension (the curves' reach
   // ends hair instead; "extend" lets a curve's hair grow on), and growth stops hair where its
@@ -128,6 +148,8 @@ class HairEngine {
   std::unique_ptr<FieldSolver> solver_;
   ScalpSampler scalp_;  // also keeps the head mesh and its mask (scalp avoidance reads them)
   HeadDistance headDistance_;
+  HeadDistance bodyDistance_;  // the body's (setBody), no scalp flags
+  bool bust_ = false;
   double samplerMs_ = 0, distanceMs_ = 0;
   ConstraintSet constraints_;
   std::vector<uint8_t> colours_;
@@ -167,6 +189,9 @@ class HairEngine {
   bool finish_ = false;
   std::vector<std::vector<Eigen::Vector3f>> partings_;  // the dividing curves of the last setCurves
   Status applyPrior();
+  // What hair rests on in growth (bust on), and keepOutsideHead's passes for the body.
+  BodyCollider bodyCollider() const;
+  void keepOutsideBody(float margin, const std::vector<uint32_t>* only);
   Status zeroField();
 };
 

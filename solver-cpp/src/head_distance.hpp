@@ -59,6 +59,8 @@ class HeadDistance {
   // Moves p out to `margin` outside the surface along the distance gradient (the direction
   // from the mesh centre where the gradient vanishes). Returns the distance before the move.
   float pushOut(float p[3], float margin) const;
+  // The mean of the mesh's vertices (where outward and pushOut turn to away from the surface).
+  const Eigen::Vector3f& centre() const { return centre_; }
 
  private:
   float ox_ = 0, oy_ = 0, oz_ = 0, inv_ = 1, far_ = 0;

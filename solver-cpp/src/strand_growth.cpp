@@ -137,7 +137,50 @@ struct GrowRange {
   double maxLen;
   int maxSegments;
   const std::vector<Eigen::Vector3f>& roots;
-  const CurveReach* reach;  // null: the paper's stopping rules only
+  const CurveReach* reach;   // null: the paper's stopping rules only
+  const HeadDistance* body;  // the body's own mesh (bust on), or null
+  bool headBelow;            // bust on: the head mesh is the body below kHeadBodyBelowY
+
+  // Slides the step from x to n (which ends within the margin of `mesh`) over the body
+  // (BodyCollider): n and segLen become the slid step's end and length. prev: the strand's last
+  // direction (unit; the step's own on the first step). False only when no direction along the
+  // surface is left (nothing to go on with).
+  bool slideOverBody(const HeadDistance& mesh, const float x[3], const float prev[3], float n[3],
+                     double& segLen) const {
+    float nrm[3];
+    mesh.outward(n, nrm);  // unit: the distance gradient, or away from the mesh centre
+    float st[3] = {n[0] - x[0], n[1] - x[1], n[2] - x[2]};
+    const float sn = st[0] * nrm[0] + st[1] * nrm[1] + st[2] * nrm[2];
+    if (sn < 0)
+      for (int k = 0; k < 3; ++k) st[k] -= sn * nrm[k];
+    float len = std::sqrt(st[0] * st[0] + st[1] * st[1] + st[2] * st[2]);
+    if (!(len >= minSlide * segLen)) {
+      // too short to move on (hair falling onto the top of a shoulder): the tangential part of
+      // gravity plus the strand's previous direction
+      float t[3] = {prev[0], prev[1] - 1.0f, prev[2]};
+      float tn = t[0] * nrm[0] + t[1] * nrm[1] + t[2] * nrm[2];
+      for (int k = 0; k < 3; ++k) st[k] = t[k] - tn * nrm[k];
+      len = std::sqrt(st[0] * st[0] + st[1] * st[1] + st[2] * st[2]);
+      if (!(len > 1e-2f)) {
+        // straight down onto a flat top: horizontally away from the body's centre
+        const Eigen::Vector3f& c = mesh.centre();
+        t[0] = n[0] - c.x();
+        t[1] = 0;
+        t[2] = n[2] - c.z();
+        tn = t[0] * nrm[0] + t[1] * nrm[1] + t[2] * nrm[2];
+        for (int k = 0; k < 3; ++k) st[k] = t[k] - tn * nrm[k];
+        len = std::sqrt(st[0] * st[0] + st[1] * st[1] + st[2] * st[2]);
+        if (!(len > 1e-6f)) return false;
+      }
+    }
+    // the length the field asked for, then out to the margin
+    const float scale = float(segLen) / len;
+    for (int k = 0; k < 3; ++k) n[k] = x[k] + scale * st[k];
+    mesh.pushOut(n, margin);
+    segLen = std::sqrt(double(n[0] - x[0]) * (n[0] - x[0]) + double(n[1] - x[1]) * (n[1] - x[1]) +
+                       double(n[2] - x[2]) * (n[2] - x[2]));
+    return true;
+  }
 
   // Whether a step from (x, y, z) to (nx, ny, nz) follows a curve over the face.
   bool followsOverFace(float x, float y, float z, float nx, float ny, float nz) const {
@@ -176,6 +219,8 @@ struct GrowRange {
           strandMax = std::min(maxLen, double(f) * maxLen + double(1 - f) * kPastEndLength);
         }
       }
+      // the point before (x, y, z), for the strand's direction when it slides over the body
+      float px = x, py = y, pz = z;
       if (s.inside(x, y, z)) {
         for (int seg = 0; seg < maxSegments; ++seg) {
           const F4 v = s.at(x, y, z);
@@ -183,34 +228,58 @@ struct GrowRange {
           if (!(m2 >= minMag2)) break;  // weak field (or NaN)
           float nx = x + l * v[0], ny = y + l * v[1], nz = z + l * v[2];
           double segLen = double(l) * std::sqrt(double(m2));
+          // The body: the strand slides over it (never stops there).
+          auto slide = [&](const HeadDistance& mesh) {
+            const float at[3] = {x, y, z};
+            float prev[3] = {x - px, y - py, z - pz};
+            if (seg == 0)
+              for (int k = 0; k < 3; ++k) prev[k] = v[k];
+            const float pl = std::sqrt(prev[0] * prev[0] + prev[1] * prev[1] + prev[2] * prev[2]);
+            for (float& e : prev) e = pl > 0 ? e / pl : 0.f;
+            float q[3] = {nx, ny, nz};
+            if (!slideOverBody(mesh, at, prev, q, segLen)) return false;
+            nx = q[0];
+            ny = q[1];
+            nz = q[2];
+            return true;
+          };
           if (head) {
             float grad[3];
             if (head->distance(nx, ny, nz, grad) < margin) {
-              // not over the face, unless a curve takes the hair there
-              if (seg > 0 && !head->scalpNear(nx, ny, nz) && !followsOverFace(x, y, z, nx, ny, nz))
-                break;
-              // Slide: drop the inward part of the step, then stand off at the margin.
-              float st[3] = {nx - x, ny - y, nz - z};
-              const float g2 = grad[0] * grad[0] + grad[1] * grad[1] + grad[2] * grad[2];
-              const float sn = (st[0] * grad[0] + st[1] * grad[1] + st[2] * grad[2]);
-              if (g2 > 1e-6f && sn < 0)
-                for (int k = 0; k < 3; ++k) st[k] -= sn / g2 * grad[k];
-              float q[3] = {x + st[0], y + st[1], z + st[2]};
-              head->pushOut(q, margin);
-              const double moved =
-                  std::sqrt(double(q[0] - x) * (q[0] - x) + double(q[1] - y) * (q[1] - y) +
-                            double(q[2] - z) * (q[2] - z));
-              if (!(moved >= minSlide * segLen)) break;  // the field points into the head
-              nx = q[0];
-              ny = q[1];
-              nz = q[2];
-              segLen = moved;
+              if (headBelow && ny < kHeadBodyBelowY) {
+                if (!slide(*head)) break;
+              } else {
+                // not over the face, unless a curve takes the hair there
+                if (seg > 0 && !head->scalpNear(nx, ny, nz) &&
+                    !followsOverFace(x, y, z, nx, ny, nz))
+                  break;
+                // Slide: drop the inward part of the step, then stand off at the margin.
+                float st[3] = {nx - x, ny - y, nz - z};
+                const float g2 = grad[0] * grad[0] + grad[1] * grad[1] + grad[2] * grad[2];
+                const float sn = (st[0] * grad[0] + st[1] * grad[1] + st[2] * grad[2]);
+                if (g2 > 1e-6f && sn < 0)
+                  for (int k = 0; k < 3; ++k) st[k] -= sn / g2 * grad[k];
+                float q[3] = {x + st[0], y + st[1], z + st[2]};
+                head->pushOut(q, margin);
+                const double moved =
+                    std::sqrt(double(q[0] - x) * (q[0] - x) + double(q[1] - y) * (q[1] - y) +
+                              double(q[2] - z) * (q[2] - z));
+                if (!(moved >= minSlide * segLen)) break;  // the field points into the head
+                nx = q[0];
+                ny = q[1];
+                nz = q[2];
+                segLen = moved;
+              }
             }
           }
+          if (body && body->distance(nx, ny, nz) < margin && !slide(*body)) break;
           if (!s.inside(nx, ny, nz)) break;  // leaving the bounding volume
           if (length + segLen > strandMax) break;
           if (endsWithCurve && reachRemaining(*reach, nx, ny, nz, float(maxLen)) < 0) break;
           length += segLen;
+          px = x;
+          py = y;
+          pz = z;
           x = nx;
           y = ny;
           z = nz;
@@ -231,7 +300,8 @@ struct GrowRange {
 
 Status growStrands(const Grid& g, const std::vector<float>& field,
                    const std::vector<Eigen::Vector3f>& roots, const GrowthParams& prm, Strands& out,
-                   size_t maxPoints, const HeadDistance* head, const CurveReach* reach) {
+                   size_t maxPoints, const HeadDistance* head, const CurveReach* reach,
+                   const BodyCollider& body) {
   // The point buffer keeps its capacity from the last call and is not zero-filled (see
   // UninitAllocator), so a repeated growth neither reallocates nor refills it.
   out.points.clear();
@@ -262,7 +332,9 @@ Status growStrands(const Grid& g, const std::vector<float>& field,
                        prm.maxLength,
                        prm.maxSegments,
                        roots,
-                       reach && !reach->empty() ? reach : nullptr};
+                       reach && !reach->empty() ? reach : nullptr,
+                       body.body && body.body->built() ? body.body : nullptr,
+                       body.headBelow};
   out.strandStart.resize(roots.size() + 1);
   const size_t n = roots.size();
   const int threads = parallel::threadCount();

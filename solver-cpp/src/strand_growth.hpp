@@ -69,6 +69,28 @@ Eigen::Vector3f interpolateField(const Grid& grid, const float* field, const Eig
 
 struct CurveReach;
 
+// A bust (issue 37): below this world height the head's own mesh is body, not face (a loaded
+// bust's shoulders, chest and back when no body mesh is set; the head's neck where it meets a
+// body mesh). World units are 10 cm and heads are placed with the cranium top at y ~ 1; the
+// built-in head's chin is at y ~ -1.31, so -1.45 (1.4 cm under that chin) leaves the face, chin
+// and jaw to the face rule.
+constexpr float kHeadBodyBelowY = -1.45f;
+
+// The body hair rests on (HairEngine's bust setting): a step that would end within `margin` of
+// it slides over it and never ends the strand, unlike the head's face rule. The step loses its
+// inward part; when what is left is shorter than minSlide times the step the field asked for
+// (hair falling straight down onto the top of a shoulder), the strand goes on along the
+// tangential part of gravity plus its previous direction (the horizontal direction away from the
+// body's centre when both vanish); either way the step is rescaled to the length the field asked
+// for (so the strand keeps its length) and pushed out to the margin.
+struct BodyCollider {
+  const HeadDistance* body = nullptr;  // the body's own mesh (HairEngine::setBody), or null
+  // the head mesh is body below kHeadBodyBelowY (a loaded bust is its own body; the head's neck
+  // slides like the body's)
+  bool headBelow = false;
+  bool active() const { return body || headBelow; }
+};
+
 // A strand rooted past the end of a curve that ends hair (remaining length <= 0 at its root) is
 // at most this long beside that curve (world units), rising to the maximum length away from it.
 constexpr double kPastEndLength = 0.2;
@@ -76,15 +98,17 @@ constexpr double kPastEndLength = 0.2;
 // Grows one strand per root. OverMemoryCap (and no strands) if the output would exceed
 // maxPoints points in total. With the curves' reach (hair_fall.hpp): a strand rooted where a
 // curve still has length stops where the remaining length there falls below zero, and a strand
-// where a curve governs the hair may slide over the face (the non-scalp head).
+// where a curve governs the hair may slide over the face (the non-scalp head). With a body
+// (BodyCollider, inactive by default: the same bytes as without), hair slides over it.
 Status growStrands(const Grid& grid, const std::vector<float>& field,
                    const std::vector<Eigen::Vector3f>& roots, const GrowthParams& params,
                    Strands& out, size_t maxPoints = size_t(24) << 20,
-                   const HeadDistance* head = nullptr, const CurveReach* reach = nullptr);
+                   const HeadDistance* head = nullptr, const CurveReach* reach = nullptr,
+                   const BodyCollider& body = BodyCollider());
 
 // Moves every point but the roots that lies closer to the head than `margin` out to it (after
 // detail has moved points), of every strand or of the strands listed in `only`. Returns how
-// many points moved.
+// many points moved. Any closed mesh's HeadDistance will do (the body's too).
 size_t keepOutsideHead(const HeadDistance& head, float margin, Strands& strands,
                        const std::vector<uint32_t>* only = nullptr);
 

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 
+#include "body_mesh.hpp"
 #include "random_vector.hpp"
 #include "sphere_mesh.hpp"
 #include "strand_growth.hpp"
@@ -62,6 +63,29 @@ TEST(HeadDistance, MatchesTheSpheresDistanceNearTheSurfaceAndItsSignEverywhere) 
       EXPECT_GT(grad.normalized().dot(p.normalized()), 0.98) << p.transpose();
     } else {
       EXPECT_EQ(d > 0, exact > 0) << p.transpose();  // the sign far from the surface
+    }
+  }
+}
+
+// Regular meshes make many cells equally near two triangles once the distance is stored (a
+// float): the propagation used to hand such cells between the two without end for these (a UV
+// sphere, the body tests' capsule, at 4 mm cells and a 4-cell band). It ends, and the distance
+// is right.
+TEST(HeadDistance, TiedTrianglesDoNotStallTheBuild) {
+  const auto sphereMesh = hairsketch_test::uvSphere(0, 0, 0, 1.0, 24, 48);
+  hairsketch_test::Capsule c;
+  const auto capsule = hairsketch_test::capsuleMesh(c);
+  for (const hairsketch_test::Mesh* m : {&sphereMesh, &capsule}) {
+    HeadDistance hd;
+    const HeadMeshView v{m->positions.data(), m->positions.size() / 3, m->indices.data(),
+                         m->indices.size() / 3, nullptr};
+    ASSERT_TRUE(hd.build(v, 0.04, 4).ok());
+    for (int t = 0; t <= 40; ++t) {
+      // along a line through the surface at the top
+      const double y = (m == &capsule ? c.cy + c.r : 1.0) - 0.16 + 0.008 * t;
+      const double exact = m == &capsule ? c.distance(0.3, y, 0.01) : std::hypot(0.3, y, 0.01) - 1;
+      if (std::abs(exact) < 0.12)                                           // within the band
+        EXPECT_NEAR(hd.distance(0.3f, float(y), 0.01f), exact, 6e-3) << y;  // chords
     }
   }
 }
