@@ -279,6 +279,18 @@ EMSCRIPTEN_KEEPALIVE int32_t hs_engine_set_scalp_mask(EngineHandle* h, const uin
   return report(h->engine.setScalpMask(scalp, size_t(triangleCount)));
 }
 
+// The body under the head (a bust: neck, shoulders, chest, back; HairEngine::setBody), a closed
+// mesh apart from the head's: positions float[3 * vertexCount], indices uint32[3 * triangleCount]
+// (counter-clockwise = outward). 0 triangles clears it. Hair rests on it with the bust setting
+// on (engine_settings.hpp kSettingBust). A refused body leaves none.
+EMSCRIPTEN_KEEPALIVE int32_t hs_engine_set_body(EngineHandle* h, const float* positions,
+                                                int32_t vertexCount, const uint32_t* indices,
+                                                int32_t triangleCount) {
+  if (!h || vertexCount < 0 || triangleCount < 0)
+    return fail(HS_INVALID_INPUT, "set_body: no engine or a negative count");
+  return report(h->engine.setBody(positions, size_t(vertexCount), indices, size_t(triangleCount)));
+}
+
 // What the last set_scalp took (for benchmarks): out[0] ms building the root sampler, out[1] ms
 // building the head's distance grid, out[2] bytes the head keeps, out[3] cells of its distance
 // grid, out[4] bytes in use in the module (memory_budget.hpp memoryInUseBytes).

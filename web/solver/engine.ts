@@ -26,6 +26,13 @@ export interface SolverEngine {
   /** The body below the head that hair slides over in sessions with `bust` (hairArrays.ts
    *  ScalpMesh.body; null: none). */
   setBody?(body: { positions: Float32Array; indices: Uint32Array } | null): void;
+  /** The body under the head (a bust: neck, shoulders, chest, back), a closed triangle mesh
+   *  apart from the head's (3 numbers per vertex, 3 indices per triangle, counter-clockwise =
+   *  outward): with the session's bust setting on, hair slides over it and is kept out of it.
+   *  null clears it. Takes effect at the next grow. Throws SolverError on non-finite positions,
+   *  an index out of range or over the memory cap (the engine is then left without a body).
+   *  Optional (test fakes). */
+  setBody?(body: { positions: Float32Array; indices: Uint32Array } | null): void;
   /** Detail applied by grow (curl, clump, frizz, length jitter); optional (test fakes). */
   setDetail?(detail: DetailArrays): void;
   /** The session's settings for the curves of the next setCurves, as

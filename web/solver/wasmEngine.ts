@@ -61,6 +61,18 @@ export {
   type RawSolveStats,
 } from './wasmRawSolver';
 
+/** wasm-build/binding.cpp hs_engine_set_body (positions: float32[3 * vertexCount], indices:
+ *  uint32[3 * triangleCount]; 0 triangles clears the body). */
+interface BodyBinding {
+  _hs_engine_set_body(
+    h: number,
+    positions: number,
+    vertexCount: number,
+    indices: number,
+    triangleCount: number,
+  ): number;
+}
+
 class WasmEngine implements SolverEngine {
   private handle: number;
 
@@ -118,6 +130,33 @@ class WasmEngine implements SolverEngine {
         (p) => m._hs_engine_set_scalp(h, p),
       );
     });
+  }
+
+  /** The body under the head (SolverEngine.setBody); null clears it. */
+  setBody(body: { positions: Float32Array; indices: Uint32Array } | null): void {
+    const h = this.h();
+    const m = this.mod as HairSolverModule & BodyBinding;
+    if (!body || body.indices.length === 0) {
+      check(m, m._hs_engine_set_body(h, 0, 0, 0, 0));
+      return;
+    }
+    if (body.indices.length % 3 || body.positions.length % 3)
+      throw new SolverError(
+        'body: array lengths do not match (3 per vertex, 3 per triangle)',
+        'invalid_input',
+      );
+    withInputs(m, [body.positions, body.indices], ([positions, indices]) =>
+      check(
+        m,
+        m._hs_engine_set_body(
+          h,
+          positions,
+          body.positions.length / 3,
+          indices,
+          body.indices.length / 3,
+        ),
+      ),
+    );
   }
 
   /** A new scalp mask (scalp[triangle] = 1) for the head of setScalp; the next grow samples
