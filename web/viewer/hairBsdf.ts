@@ -23,7 +23,7 @@
 //   where f_spread and f_back′ have every width widened by σ_f² and f_spread's lobes are spread
 //   evenly in azimuth (each lobe's attenuation / π).
 
-/** GLSL: hairSigma(C), hairBaseColor(σ), hairBsdf(T, L, V, sigma, beta, shadowT). */
+/** GLSL: hairBaseColor(σ), hairBsdf(T, L, V, sigma, beta, shadowT). */
 export const HAIR_BSDF_GLSL = /* glsl */ `
 const float HAIR_D = 5.888415; // Chiang 2016's D(0.3)
 const float HAIR_F0 = 0.046;
@@ -35,7 +35,6 @@ const float HAIR_PI = 3.14159265;
 // between: a spread of about 15° (clumps, waves, frizz) widens the multiply scattered lobes
 const float HAIR_ORIENT2 = 0.27;
 
-vec3 hairSigma(vec3 color) { vec3 l = log(clamp(color, 1e-4, 1.0)) / HAIR_D; return l * l; }
 vec3 hairBaseColor(vec3 sigma) { return exp(-sqrt(max(sigma, 0.0)) * HAIR_D); }
 
 float hairG(float B, float x) { return exp(-0.5 * x * x / (B * B)) / (2.5066283 * B); }

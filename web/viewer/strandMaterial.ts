@@ -73,12 +73,6 @@ uniform float domBias; // world units
 #endif
 ${HAIR_BSDF_GLSL}
 
-float hash12(vec2 p) {
-  vec3 p3 = fract(vec3(p.xyx) * 0.1031);
-  p3 += dot(p3, p3.yzx + 33.33);
-  return fract((p3.x + p3.y) * p3.z);
-}
-
 #ifdef DEEP_OPACITY
 // Yuksel & Keyser 2008: the opacity accumulated between the first hair seen from the light and
 // this point, interpolated between the 3 layers' cumulative values.
@@ -130,7 +124,9 @@ vec3 shadeStrand(vec3 T, vec3 P, float along, vec4 rnd, vec2 light) {
   float shadow = mix(1.0, light.x, precomputed);
   float ao = mix(1.0, light.y, precomputed);
 #ifdef DEEP_OPACITY
-  shadow = min(shadow, deepOpacityTransmittance(P));
+  // the deep opacity maps, per pixel, in place of the precomputed grid's (which blurs a strand
+  // over a cell: the two together count the hairs in front twice)
+  shadow = deepOpacityTransmittance(P);
 #endif
   // root darkening: occlusion towards the scalp, on top of the hair's own occlusion
   float rootAo = mix(1.0 - rootDarkening, 1.0, smoothstep(0.0, 0.3, along));
