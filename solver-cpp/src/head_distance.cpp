@@ -259,6 +259,17 @@ float HeadDistance::distance(float x, float y, float z, float gradient[3]) const
   return y0 + c * (y1 - y0);
 }
 
+float HeadDistance::distanceAtLeast(float x, float y, float z) const {
+  const float u = (x - ox_) * inv_, v = (y - oy_) * inv_, w = (z - oz_) * inv_;
+  if (u >= 0 && v >= 0 && w >= 0 && u < float(nx_ - 1) && v < float(ny_ - 1) && w < float(nz_ - 1))
+    return distance(x, y, z);
+  // cells outside the box along each axis (0 within its range)
+  const float du = std::max({-u, u - float(nx_ - 1), 0.f});
+  const float dv = std::max({-v, v - float(ny_ - 1), 0.f});
+  const float dw = std::max({-w, w - float(nz_ - 1), 0.f});
+  return far_ + (2 + std::sqrt(du * du + dv * dv + dw * dw)) / inv_;
+}
+
 bool HeadDistance::scalpNear(float x, float y, float z) const {
   const float u = (x - ox_) * inv_, v = (y - oy_) * inv_, w = (z - oz_) * inv_;
   if (!(u >= 0 && v >= 0 && w >= 0 && u < float(nx_ - 1) && v < float(ny_ - 1) &&
@@ -282,7 +293,7 @@ float HeadDistance::outward(const float p[3], float dir[3]) const {
   return d;
 }
 
-float HeadDistance::pushOut(float p[3], float margin) const {
+float HeadDistance::pushOut(float p[3], float margin, float overshoot) const {
   float g[3];
   const float d0 = distance(p[0], p[1], p[2], g);
   float d = d0;
@@ -299,7 +310,7 @@ float HeadDistance::pushOut(float p[3], float margin) const {
       len = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
       if (!(len > 0)) return d0;
     }
-    const float move = std::min(margin - d, far_);
+    const float move = std::min(margin + overshoot - d, far_);
     for (int e = 0; e < 3; ++e) p[e] += move * g[e] / len;
     d = distance(p[0], p[1], p[2], g);
   }

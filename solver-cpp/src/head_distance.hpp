@@ -50,6 +50,10 @@ class HeadDistance {
   static double estimateBytes(const HeadMeshView& mesh, double cell = 0.03, int bandCells = 3);
   // Signed distance (negative inside) and its gradient (not normalised; zero when flat).
   float distance(float x, float y, float z, float gradient[3] = nullptr) const;
+  // A lower bound of the distance at p, cheap far from the mesh: distance(p) inside the grid;
+  // outside it, p's distance to the grid's box plus the (band + 2) cells the grid reaches past
+  // the mesh's bounds (distance reads only band * h there).
+  float distanceAtLeast(float x, float y, float z) const;
   // Whether the head surface nearest p is scalp (the nearest cell's nearest triangle); false
   // away from the surface or when the mesh has no scalp flags.
   bool scalpNear(float x, float y, float z) const;
@@ -58,7 +62,10 @@ class HeadDistance {
   float outward(const float p[3], float dir[3]) const;
   // Moves p out to `margin` outside the surface along the distance gradient (the direction
   // from the mesh centre where the gradient vanishes). Returns the distance before the move.
-  float pushOut(float p[3], float margin) const;
+  // Each move aims `overshoot` past the margin: with none, the last moves shrink with what is
+  // left (a gradient a little short of 1), down to where a coordinate's rounding stalls them,
+  // and the walk can take all of its 64 steps.
+  float pushOut(float p[3], float margin, float overshoot = 0) const;
   // The mean of the mesh's vertices (where outward and pushOut turn to away from the surface).
   const Eigen::Vector3f& centre() const { return centre_; }
 

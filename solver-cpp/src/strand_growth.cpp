@@ -127,6 +127,13 @@ struct PaddedSampler {
 
 using PointBuffer = decltype(Strands::points);
 
+// Between the body's distance, read at one point, and the distance read later that lower bound
+// stands in for (trilinear interpolation is not exactly 1-Lipschitz): world units (1 mm).
+constexpr float kBodySlack = 0.01f;
+// A slide pushes the step's end this share of the margin past it (HeadDistance::pushOut's
+// overshoot), so one or two moves get it out.
+constexpr float kBodyOvershoot = 0.1f;
+
 // Grows the strands of roots [b, e) into buf from offset `used` on (buf grown ahead of each
 // strand, never zero-filled), writing each strand's end (in points of buf) to ends[r - b].
 // False when buf passes maxPoints points.
@@ -176,7 +183,7 @@ struct GrowRange {
     // the length the field asked for, then out to the margin
     const float scale = float(segLen) / len;
     for (int k = 0; k < 3; ++k) n[k] = x[k] + scale * st[k];
-    mesh.pushOut(n, margin);
+    mesh.pushOut(n, margin, kBodyOvershoot * margin);
     segLen = std::sqrt(double(n[0] - x[0]) * (n[0] - x[0]) + double(n[1] - x[1]) * (n[1] - x[1]) +
                        double(n[2] - x[2]) * (n[2] - x[2]));
     return true;
@@ -221,6 +228,9 @@ struct GrowRange {
       }
       // the point before (x, y, z), for the strand's direction when it slides over the body
       float px = x, py = y, pz = z;
+      // a lower bound of the body's distance at (x, y, z) (the distance is 1-Lipschitz): the
+      // body is read only where a step could end within the margin (and kBodySlack)
+      float bodyClear = -1;
       if (s.inside(x, y, z)) {
         for (int seg = 0; seg < maxSegments; ++seg) {
           const F4 v = s.at(x, y, z);
@@ -272,7 +282,18 @@ struct GrowRange {
               }
             }
           }
-          if (body && body->distance(nx, ny, nz) < margin && !slide(*body)) break;
+          if (body) {
+            const float step = float(segLen);
+            if (bodyClear - step < margin + kBodySlack) {
+              bodyClear = body->distanceAtLeast(nx, ny, nz);
+              if (bodyClear < margin) {
+                if (!slide(*body)) break;
+                bodyClear = 0;  // read again at the next step
+              }
+            } else {
+              bodyClear -= step;
+            }
+          }
           if (!s.inside(nx, ny, nz)) break;  // leaving the bounding volume
           if (length + segLen > strandMax) break;
           if (endsWithCurve && reachRemaining(*reach, nx, ny, nz, float(maxLen)) < 0) break;
