@@ -240,8 +240,15 @@ describe('links with a head, scalp strokes and a mirror plane', () => {
 
   it('carry no mesh, and the strokes compactly; without them a link is what it was', async () => {
     // without the fields added since version 2 (the head, strokes, plane; natural fall, sections,
-    // finished edges, the bust)
-    const { fall: _fall, sections: _sections, finish: _finish, bust: _bust, ...v2Fields } = base;
+    // finished edges, the bust, the colour model)
+    const {
+      fall: _fall,
+      sections: _sections,
+      finish: _finish,
+      bust: _bust,
+      hairLook: _look,
+      ...v2Fields
+    } = base;
     const plain = packSession(v2Fields);
     const withHead = packSession({ ...v2Fields, head: REF });
     // the mask, 32 hash bytes, the name, format, up, the turns
