@@ -14,6 +14,21 @@ namespace hairsketch {
 
 namespace {
 
+// Moves each point of a tail's spine out of the body to its radius plus kTailBodyGap.
+constexpr float kTailBodyGap = 0.02f;  // world units: 2 mm
+void liftTailOffBody(const HeadDistance& body, GatheredTail& t) {
+  for (size_t i = 0; i < t.spine.size(); ++i) {
+    const float need = (i < t.radius.size() ? t.radius[i] : 0.f) + kTailBodyGap;
+    Eigen::Vector3f& p = t.spine[i];
+    for (int it = 0; it < 3; ++it) {
+      float dir[3];
+      const float d = body.outward(p.data(), dir);
+      if (d >= need) break;
+      p += (need - d) * Eigen::Vector3f(dir[0], dir[1], dir[2]);
+    }
+  }
+}
+
 // Whether the head surface under curve point q is not scalp: q is carried towards the head (down
 // the distance gradient, or towards its centre away from the surface) until the distance grid
 // knows its nearest triangle; a point more than kOverReach from the head is in the air (true).
@@ -305,6 +320,11 @@ Status HairEngine::setCurves(const CurveSetView& curves) {
       }
     t.anchor = x;
   }
+  // With the bust, a tail's spine stands off the body by its radius: a braid or round tail
+  // drawn over a shoulder lies on it, round, rather than pressed flat into it afterwards.
+  if (bust_ && bodyDistance_.built())
+    for (GatheredTail& t : nextTails)
+      if (t.shape != TailShape::Bun) liftTailOffBody(bodyDistance_, t);
   // Whole-section ties lay all their hair in growth, so the field does not see them (their
   // funnel would pull the loose hair of other sections up into them).
   std::vector<char> drop(curves.curveCount, 0);
