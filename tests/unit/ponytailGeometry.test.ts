@@ -65,6 +65,7 @@ describe('ponytail circles', () => {
       profiles: [profileA, profileB],
       circles: g.circles,
       tightness: 0.7,
+      section: 1,
     });
     expect(p.length).toBe(2 + 7 * 11);
     expect(p.slice(0, 2)).toEqual([0.7, 11]);

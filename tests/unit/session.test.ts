@@ -64,6 +64,7 @@ const ponytail: PonytailCurve = {
     { centre: [0, 0.4, -1.1], axis: [0, -1, 0], radius: 0.1, spineIndex: 1 },
   ],
   tightness: 0.6,
+  section: 1,
 };
 
 describe('session with every curve kind', () => {

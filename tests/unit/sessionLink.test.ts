@@ -111,6 +111,7 @@ function everything(): SessionState {
           spineIndex: 2 * i,
         })),
         tightness: 0.6123456,
+        section: 1,
       },
     ],
     avoidScalp: true,

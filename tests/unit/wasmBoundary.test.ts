@@ -253,6 +253,7 @@ describe('curve parameters from CURVE_PARAMS', () => {
       profiles: [[], []],
       circles,
       tightness: t,
+      section: 1,
     },
   ];
   /** The blocks as they were written by hand before the table: dividing [sigma, h, alpha0,

@@ -9,7 +9,7 @@ import type { Head } from '../head/head';
 import type { ScalpPaintStroke } from '../head/scalpPaint';
 import { defaultParams, type PlainTieKind } from '../model/curveParams';
 import { STROKE_KINDS } from '../model/kinds';
-import { DEFAULT_TIGHTNESS, newCurveExtends, streamExtends, tieAtEnd } from '../model/session';
+import { newCurveExtends, streamExtends, tieAtEnd } from '../model/session';
 import type { Vec3 } from '../model/vec3';
 import { BunTool } from '../tools/bunTool';
 import type { StrokeSample } from '../tools/depthRule';
@@ -160,7 +160,7 @@ function ponytailTool(k: ToolKit): PonytailTool {
           crossSection: p.crossSection,
           profiles: p.profiles,
           circles: p.circles,
-          tightness: DEFAULT_TIGHTNESS,
+          ...defaultParams('ponytail'),
         },
         what: `ponytail {id} (${p.circles.length} circles)`,
         mirror: d.mirror(),

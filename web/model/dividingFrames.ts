@@ -2,14 +2,12 @@
 // head/head.ts Head.normalAt): the local frames (the same formulas as solver-cpp/src/
 // dividing_constraints.hpp, for display: the yellow lines of Fig. 2), the tilt a hint stroke
 // asks for.
+import type { CurveParamValues } from './curveParams';
 import { add, dot, length, normalize, scale, sub, type Vec3 } from './vec3';
 
-export interface DividingSettings {
-  sigma: number; // grid steps (default 1)
-  h: number; // grid steps (default 0.5)
-  alpha0: number; // radians, tilt at the first point
-  alpha1: number; // radians, tilt at the last point
-}
+/** A parting's profile and tilts: its rows of curveParams.ts CURVE_PARAMS.dividing (sigma and h
+ *  in grid steps, alpha0 and alpha1 in radians at its first and last point). */
+export type DividingSettings = CurveParamValues<'dividing'>;
 
 const cross = (a: Vec3, b: Vec3): Vec3 => [
   a[1] * b[2] - a[2] * b[1],

@@ -15,16 +15,15 @@ import { mirrorCurve } from './mirror';
 import { ponytailCircles } from './ponytailGeometry';
 import { quantizeSession } from './quantize';
 import { resamplePolyline } from './resample';
-import {
-  type BraidCurve,
-  type BunCurve,
-  DEFAULT_TIGHTNESS,
-  type DividingCurve,
-  type PonytailCurve,
-  type SessionState,
-  type StreamCurve,
-  type StyleCurve,
-  type Viewpoint,
+import type {
+  BraidCurve,
+  BunCurve,
+  DividingCurve,
+  PonytailCurve,
+  SessionState,
+  StreamCurve,
+  StyleCurve,
+  Viewpoint,
 } from './session';
 import { SESSION_FIELD_NAMES } from './sessionSchema';
 import { add, normalize, scale, sphericalDirection, type Vec3 } from './vec3';
@@ -278,7 +277,7 @@ function ponytailFrom(ctx: PresetContext, spec: PonytailSpec, id: string): Ponyt
     crossSection,
     profiles,
     circles,
-    tightness: DEFAULT_TIGHTNESS,
+    ...defaultParams('ponytail'),
   };
 }
 

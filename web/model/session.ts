@@ -1,6 +1,6 @@
 // The session model: everything the user made, as plain immutable JSON-able data.
 
-import { CURVE_PARAMS, type CurveParamValues, type PlainTieKind } from './curveParams';
+import type { CurveParamValues, PlainTieKind } from './curveParams';
 import type { HairDetail } from './detail';
 import type { DividingSettings } from './dividingFrames';
 import type { GridPreset } from './grid';
@@ -48,8 +48,9 @@ export interface DividingCurve extends DividingSettings {
 }
 
 /** A ponytail (S4.6): `points` is the spine (edited like a stream curve); the cross-section and
- *  the two profile strokes are kept as drawn, the circles computed from them (C1 first). */
-export interface PonytailCurve {
+ *  the two profile strokes are kept as drawn, the circles computed from them (C1 first); its
+ *  scalars (the centripetal `tightness`) are its rows of CURVE_PARAMS.ponytail. */
+export interface PonytailCurve extends CurveParamValues<'ponytail'> {
   id: string;
   type: 'ponytail';
   points: Vec3[];
@@ -58,7 +59,6 @@ export interface PonytailCurve {
   crossSection: Vec3[];
   profiles: [Vec3[], Vec3[]];
   circles: PonytailCircle[];
-  tightness: number; // centripetal magnitude (default 0.6)
   detail?: HairDetail;
   mirror?: string;
 }
@@ -190,9 +190,6 @@ export function streamExtends(s: Pick<SessionState, 'fall' | 'curves'>, points: 
 export function hangLength(s: Pick<SessionState, 'fall' | 'growth'>): number {
   return s.fall ? s.growth.maxLength : 0;
 }
-
-/** A new ponytail's tightness: the default of curveParams.ts CURVE_PARAMS. */
-export const DEFAULT_TIGHTNESS: number = CURVE_PARAMS.ponytail[0].default;
 
 export { DEFAULT_GROWTH };
 
