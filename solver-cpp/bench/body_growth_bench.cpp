@@ -1,7 +1,7 @@
-// Growth with and without the body (issue 37, a bust): a head on a neck (a sphere of radius 1 =
-// 10 cm, as tests/native/body_collider_test.cpp) over capsule shoulders 40 cm wide, natural fall,
-// one stream curve down the back, long hair (60 cm, 5 mm steps), solved once with the fast
-// solver; then HairEngine::grow at 30K and 100K strands (capped strides of one root set), bust
+// Growth with and without the body (a bust the hair slides over): a head on a neck (a sphere of
+// radius 1 = 10 cm, as tests/native/body_collider_test.cpp) over capsule shoulders 40 cm wide,
+// natural fall, one stream curve down the back, long hair (60 cm, 5 mm steps), solved once with the
+// fast solver; then HairEngine::grow at 30K and 100K strands (capped strides of one root set), bust
 // off and on, the median (and least) of `runs` growths each, off and on by turns (after one
 // untimed growth each), with every thread and with one. Prints milliseconds
 // (HairEngine::growMs) and points grown.

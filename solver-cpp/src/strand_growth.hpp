@@ -69,7 +69,7 @@ Eigen::Vector3f interpolateField(const Grid& grid, const float* field, const Eig
 
 struct CurveReach;
 
-// A bust (issue 37): below this world height the head's own mesh is body, not face (a loaded
+// With the bust: below this world height the head's own mesh is body, not face (a loaded
 // bust's shoulders, chest and back when no body mesh is set; the head's neck where it meets a
 // body mesh). World units are 10 cm and heads are placed with the cranium top at y ~ 1; the
 // built-in head's chin is at y ~ -1.31, so -1.45 (1.4 cm under that chin) leaves the face, chin

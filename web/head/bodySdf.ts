@@ -1,4 +1,4 @@
-// The built-in bust below the head (issue 37): neck, shoulders, the top of the chest and of the
+// The built-in bust below the head, which long hair rests on: neck, shoulders, the top of the chest and of the
 // back, as a signed distance function (negative inside) in the head's frame (world units ≈ 10 cm,
 // y up, the face toward +z). Adult proportions: shoulders about 40 cm across (acromion to
 // acromion plus the deltoids), the neck meeting the trapezius about 7 cm below the chin, the
