@@ -1,5 +1,5 @@
-// The built-in bust below the head, which long hair rests on: neck, shoulders, the top of the chest and of the
-// back, as a signed distance function (negative inside) in the head's frame (world units ≈ 10 cm,
+// The built-in bust below the head, which long hair rests on: neck, shoulders, the top of the
+// chest and of the back, as a signed distance function (negative inside) in the head's frame (world units ≈ 10 cm,
 // y up, the face toward +z). Adult proportions: shoulders about 40 cm across (acromion to
 // acromion plus the deltoids), the neck meeting the trapezius about 7 cm below the chin, the
 // chest about 20 cm deep, cut flat 25 cm below the chin. It is a mesh of its own beside the head
