@@ -1,10 +1,10 @@
 // The built-in bust below the head, which long hair rests on: neck, shoulders, the top of the
-// chest and of the back, as a signed distance function (negative inside) in the head's frame (world units ≈ 10 cm,
-// y up, the face toward +z). Adult proportions: shoulders about 40 cm across (acromion to
-// acromion plus the deltoids), the neck meeting the trapezius about 7 cm below the chin, the
-// chest about 20 cm deep, cut flat 25 cm below the chin. It is a mesh of its own beside the head
-// (buildBody.ts): its neck rises inside the head's neck, so the head, its scalp and its roots are
-// the head alone.
+// chest and of the back, as a signed distance function (negative inside) in the head's frame
+// (world units ≈ 10 cm, y up, the face toward +z). Adult proportions: shoulders about 40 cm
+// across (acromion to acromion plus the deltoids), the neck meeting the trapezius about 7 cm
+// below the chin, the chest about 20 cm deep, cut flat 25 cm below the chin. It is a mesh of
+// its own beside the head (buildBody.ts): its neck rises inside the head's neck, so the head,
+// its scalp and its roots are the head alone.
 import { sdEllipsoid, smin } from './headSdf';
 
 /** The bust's flat bottom: 25 cm below the chin (y ≈ -1.31). */
