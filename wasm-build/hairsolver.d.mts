@@ -27,6 +27,15 @@ export interface HairSolverModule {
   _hs_engine_set_scalp(h: number, scalpIn: number): number; // SCALP_INPUT
   /** scalp: uint8[triangleCount], 1 on the scalp (the head of the last set_scalp). */
   _hs_engine_set_scalp_mask(h: number, scalp: number, triangleCount: number): number;
+  /** positions: float32[3 * vertexCount], indices: uint32[3 * triangleCount]; 0 triangles
+   *  clears the body. */
+  _hs_engine_set_body(
+    h: number,
+    positions: number,
+    vertexCount: number,
+    indices: number,
+    triangleCount: number,
+  ): number;
   /** out: float64[5] = sampler ms, distance ms, head bytes, distance cells, bytes in use. */
   _hs_engine_head_stats(h: number, out: number): number;
   _hs_engine_set_curves(h: number, curveSetIn: number): number; // CURVE_SET_HEADER

@@ -61,18 +61,6 @@ export {
   type RawSolveStats,
 } from './wasmRawSolver';
 
-/** wasm-build/binding.cpp hs_engine_set_body (positions: float32[3 * vertexCount], indices:
- *  uint32[3 * triangleCount]; 0 triangles clears the body). */
-interface BodyBinding {
-  _hs_engine_set_body(
-    h: number,
-    positions: number,
-    vertexCount: number,
-    indices: number,
-    triangleCount: number,
-  ): number;
-}
-
 class WasmEngine implements SolverEngine {
   private handle: number;
 
@@ -135,7 +123,7 @@ class WasmEngine implements SolverEngine {
   /** The body under the head (SolverEngine.setBody); null clears it. */
   setBody(body: { positions: Float32Array; indices: Uint32Array } | null): void {
     const h = this.h();
-    const m = this.mod as HairSolverModule & BodyBinding;
+    const m = this.mod;
     if (!body || body.indices.length === 0) {
       check(m, m._hs_engine_set_body(h, 0, 0, 0, 0));
       return;
