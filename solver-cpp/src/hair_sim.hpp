@@ -1,0 +1,85 @@
+// Guide-strand dynamics for playing a motion (settle, head turn, nod, wind) over a groom.
+//
+// Each guide is a chain of points integrated by Verlet and corrected by position-based
+// constraints, `substeps` times per frame, each substep running `iterations` sweeps of:
+//   segment length (each segment back to its groomed length, the root side held when pinned);
+//   local bending (the distance between points i and i + 2 back to its groomed value);
+//   global shape (each point pulled toward its groomed place carried by the head, the pull
+//     strongest at the root and fading as (1 - s)^2 along the strand, s in [0, 1]);
+// then collision (every point pushed out of the head's signed distance, HeadDistance::pushOut).
+// The first two points of every strand are pinned to the groom carried by the head transform.
+// Gravity preloading: the groom is the rest shape, so the gravity a point feels is
+//   g - R * R0^T * g (R the head's rotation now, R0 at the start): zero while the head keeps its
+//   starting orientation, so the hair does not sag when the simulation starts.
+// Deterministic: the motion is a function of time and seed; loops split with parallel.hpp write
+// disjoint strands, so results do not depend on the thread count.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <cstdint>
+#include <vector>
+
+namespace hairsketch {
+
+class HeadDistance;
+
+enum class SimMotion { Settle = 0, HeadTurn = 1, Nod = 2, Wind = 3 };
+
+// A rigid head pose: world = rotation * groom + translation (about `pivot`, see headPose).
+struct HeadPose {
+  Eigen::Matrix3f rotation = Eigen::Matrix3f::Identity();
+  Eigen::Vector3f translation = Eigen::Vector3f::Zero();
+  Eigen::Vector3f apply(const Eigen::Vector3f& p) const { return rotation * p + translation; }
+};
+
+// The head's pose at time t (seconds) for a motion, rotating about `pivot` (e.g. the neck).
+// Settle and Wind keep the head still; Head turn yaws ±60° and Nod pitches ±25° (smooth, period
+// 2 s, starting at rest with zero velocity).
+HeadPose headPose(SimMotion motion, double t, const Eigen::Vector3f& pivot);
+// The wind velocity at time t (m/s; zero but for Wind), gusting deterministically from the seed.
+Eigen::Vector3f windVelocity(SimMotion motion, double t, uint32_t seed);
+
+struct SimSettings {
+  int substeps = 5;
+  int iterations = 5;
+  double frameRate = 24;
+  float gravity = 9.81f;        // m/s^2 along -y
+  float damping = 0.02f;        // velocity lost per substep
+  float shapeStiffness = 0.2f;  // global shape pull at the root, per iteration
+  float bendStiffness = 0.5f;
+  float windDrag = 0.5f;  // per second, toward the wind velocity
+  float collisionMargin = 0.0f;
+};
+
+class HairSim {
+ public:
+  // points: strandCount * pointsPerStrand * 3 floats (strand-major), the groom in the head's
+  // starting frame. head may be null (no collision); it must outlive the simulation.
+  void init(const float* points, int strandCount, int pointsPerStrand, const HeadDistance* head,
+            const Eigen::Vector3f& pivot, SimMotion motion, uint32_t seed,
+            const SimSettings& settings = SimSettings());
+  // Advances one frame (1 / frameRate seconds).
+  void step();
+  int frame() const { return frame_; }
+  double time() const { return frame_ / settings_.frameRate; }
+  const HeadPose& pose() const { return pose_; }
+  const std::vector<float>& positions() const { return x_; }
+  const std::vector<float>& rest() const { return rest_; }
+  int strandCount() const { return strands_; }
+  int pointsPerStrand() const { return n_; }
+
+ private:
+  void substep(int strand, float dt, const HeadPose& pose, const Eigen::Vector3f& gEff,
+               const Eigen::Vector3f& wind);
+  SimSettings settings_;
+  SimMotion motion_ = SimMotion::Settle;
+  uint32_t seed_ = 0;
+  const HeadDistance* head_ = nullptr;
+  Eigen::Vector3f pivot_ = Eigen::Vector3f::Zero();
+  int strands_ = 0, n_ = 0, frame_ = 0;
+  HeadPose pose_;
+  std::vector<float> rest_, x_, prev_, len_, bendLen_;
+};
+
+}  // namespace hairsketch
