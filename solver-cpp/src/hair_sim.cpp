@@ -179,4 +179,52 @@ void HairSim::substep(int strand, float dt, const HeadPose& pose, const Eigen::V
   }
 }
 
+void GuideFollowers::bind(const float* points, int strandCount, int pointsPerStrand,
+                          const HairSim& guides) {
+  strands_ = strandCount;
+  n_ = pointsPerStrand;
+  rest_.assign(points, points + size_t(strandCount) * pointsPerStrand * 3);
+  guide_.assign(size_t(strandCount), -1);
+  const int gn = guides.pointsPerStrand();
+  const std::vector<float>& g = guides.rest();
+  parallel::forRange(0, size_t(strandCount), 256, [&](size_t b, size_t e) {
+    for (size_t s = b; s < e; ++s) {
+      const float* r = rest_.data() + s * n_ * 3;
+      float best = INFINITY;
+      for (int k = 0; k < guides.strandCount(); ++k) {
+        const float* q = g.data() + size_t(k) * gn * 3;
+        const float d = (q[0] - r[0]) * (q[0] - r[0]) + (q[1] - r[1]) * (q[1] - r[1]) +
+                        (q[2] - r[2]) * (q[2] - r[2]);
+        if (d < best) {
+          best = d;
+          guide_[s] = k;
+        }
+      }
+    }
+  });
+}
+
+void GuideFollowers::update(const HairSim& guides, float* out) const {
+  const HeadPose& pose = guides.pose();
+  const int gn = guides.pointsPerStrand();
+  const std::vector<float>& gr = guides.rest();
+  const std::vector<float>& gx = guides.positions();
+  parallel::forRange(0, size_t(strands_), 256, [&](size_t b, size_t e) {
+    for (size_t s = b; s < e; ++s) {
+      const int k = guide_[s];
+      for (int i = 0; i < n_; ++i) {
+        const size_t a = (s * n_ + i) * 3;
+        Eigen::Vector3f p = pose.apply(Eigen::Map<const Eigen::Vector3f>(rest_.data() + a));
+        if (k >= 0 && gn > 0) {
+          const int j = n_ > 1 ? int(std::lround(double(i) * (gn - 1) / (n_ - 1))) : 0;
+          const size_t c = (size_t(k) * gn + j) * 3;
+          p += Eigen::Map<const Eigen::Vector3f>(gx.data() + c) -
+               pose.apply(Eigen::Map<const Eigen::Vector3f>(gr.data() + c));
+        }
+        Eigen::Map<Eigen::Vector3f>(out + a) = p;
+      }
+    }
+  });
+}
+
 }  // namespace hairsketch

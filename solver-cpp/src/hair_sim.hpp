@@ -82,4 +82,21 @@ class HairSim {
   std::vector<float> rest_, x_, prev_, len_, bendLen_;
 };
 
+// The strands that are not simulated follow their guides: each is bound once to the guide whose
+// root is nearest its own (brute force over the guides) and its point i is its groomed point
+// carried by the head plus guide point j's displacement from its own carried groom (j = i scaled
+// to the guide's point count).
+class GuideFollowers {
+ public:
+  void bind(const float* points, int strandCount, int pointsPerStrand, const HairSim& guides);
+  // Writes strandCount * pointsPerStrand * 3 floats.
+  void update(const HairSim& guides, float* out) const;
+  const std::vector<int32_t>& guideOf() const { return guide_; }
+
+ private:
+  std::vector<float> rest_;
+  std::vector<int32_t> guide_;
+  int strands_ = 0, n_ = 0;
+};
+
 }  // namespace hairsketch

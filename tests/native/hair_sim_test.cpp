@@ -139,5 +139,20 @@ TEST(HairSim, HeadTurnMovesTheHair) {
   EXPECT_NE(sim.positions(), g);
 }
 
+TEST(HairSim, FollowersRideTheirGuides) {
+  const int strands = 10, n = 16;
+  const std::vector<float> g = simGroom(strands, n);
+  HairSim sim;
+  sim.init(g.data(), strands, n, nullptr, Eigen::Vector3f::Zero(), SimMotion::HeadTurn, 1);
+  GuideFollowers followers;
+  followers.bind(g.data(), strands, n, sim);  // the guides themselves as followers
+  std::vector<float> out(g.size());
+  followers.update(sim, out.data());
+  EXPECT_EQ(out, g);
+  for (int k = 0; k < 6; ++k) sim.step();
+  followers.update(sim, out.data());
+  for (size_t i = 0; i < out.size(); ++i) EXPECT_NEAR(out[i], sim.positions()[i], 1e-6f);
+}
+
 }  // namespace
 }  // namespace hairsketch
