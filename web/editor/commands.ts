@@ -157,6 +157,19 @@ export function applyCommand(s: SessionState, cmd: Command): CommandResult {
 }
 
 /** One handler per command kind: the session after it, and what the status line says. */
+/** Turns a session flag on or off (written only when on, as the schema says), with the status
+ *  line's words for each outcome. */
+function setFlag(
+  s: SessionState,
+  key: 'avoidScalp' | 'bust',
+  on: boolean,
+  words: { already: string; on: string; off: string },
+): { session: SessionState; message: string } {
+  if (!!s[key] === on) return { session: s, message: `${words.already} ${on ? 'on' : 'off'}.` };
+  const { [key]: _, ...rest } = s;
+  return { session: on ? { ...rest, [key]: true } : rest, message: on ? words.on : words.off };
+}
+
 const HANDLERS: {
   readonly [K in Command['kind']]: (
     s: SessionState,
@@ -271,28 +284,18 @@ const HANDLERS: {
       message: `Supporting surface of ${c.id}: ${cmd.mode}.`,
     };
   },
-  setAvoidScalp(s, cmd) {
-    if (!!s.avoidScalp === cmd.on)
-      return { session: s, message: `Avoid scalp is already ${cmd.on ? 'on' : 'off'}.` };
-    const { avoidScalp: _, ...rest } = s;
-    return {
-      session: cmd.on ? { ...rest, avoidScalp: true } : rest,
-      message: cmd.on
-        ? 'Avoid scalp on: hair near the head is turned along it.'
-        : 'Avoid scalp off.',
-    };
-  },
-  setBust(s, cmd) {
-    if (!!s.bust === cmd.on)
-      return { session: s, message: `The bust is already ${cmd.on ? 'on' : 'off'}.` };
-    const { bust: _, ...rest } = s;
-    return {
-      session: cmd.on ? { ...rest, bust: true } : rest,
-      message: cmd.on
-        ? 'Bust on: neck, shoulders and chest under the head; long hair rests on them.'
-        : 'Bust off: the head alone.',
-    };
-  },
+  setAvoidScalp: (s, cmd) =>
+    setFlag(s, 'avoidScalp', cmd.on, {
+      already: 'Avoid scalp is already',
+      on: 'Avoid scalp on: hair near the head is turned along it.',
+      off: 'Avoid scalp off.',
+    }),
+  setBust: (s, cmd) =>
+    setFlag(s, 'bust', cmd.on, {
+      already: 'The bust is already',
+      on: 'Bust on: neck, shoulders and chest under the head; long hair rests on them.',
+      off: 'Bust off: the head alone.',
+    }),
   setDetail(s, cmd) {
     const d = cmd.detail && (detailIsOn(cmd.detail) || cmd.curveId) ? cmd.detail : undefined;
     if (cmd.curveId === null) {
