@@ -2,7 +2,7 @@
 // shoulders and slides off them, the front of the scalp's in front and the back's behind; a
 // stroke drawn over the front of the shoulder brings the hair there forward.
 import { expect, type Page, test } from '@playwright/test';
-import { settled, strokeFromScalp, watchConsole } from './helpers';
+import { settled, shoot, strokeFromScalp, watchConsole } from './helpers';
 
 /** The shoulders' ridge (head/bodySdf.ts: the trapezius and deltoids run along z ≈ -0.3) and
  *  the height below which a strand's tip has passed the top of the shoulders. */
@@ -48,25 +48,6 @@ async function sides(page: Page) {
   );
 }
 
-/** Front, side and back pictures framing the shoulders (SHOT_DIR, as helpers.ts shoot). */
-async function shootBust(page: Page, name: string): Promise<void> {
-  const dir = process.env.SHOT_DIR;
-  if (!dir) return;
-  const views: [string, [number, number, number]][] = [
-    ['front', [0.8, 0.2, 10.5]],
-    ['side', [10.5, 0.2, -0.4]],
-    ['back', [-0.8, 0.8, -10.5]],
-  ];
-  for (const [view, p] of views) {
-    await page.evaluate(
-      (q) => window.hairsketch.setCamera(q as [number, number, number], [0, -1.5, 0]),
-      p,
-    );
-    await page.evaluate(() => window.hairsketch.idle());
-    await page.getByTestId('viewport').screenshot({ path: `${dir}/${name}-${view}.png` });
-  }
-}
-
 /** Types 60 into the Hair panel's "Max length (cm)" and waits for the hair. */
 async function longHair(page: Page, revision: number) {
   await page.getByRole('button', { name: 'Detail' }).click();
@@ -105,7 +86,7 @@ test('long hair drawn with Mirror rests on the shoulders: front in front, back b
   expect(m.back).toBeGreaterThan(20);
   expect(m.frontShare).toBeGreaterThanOrEqual(0.9);
   expect(m.backShare).toBeGreaterThanOrEqual(0.9);
-  await shootBust(page, 'bust-long-mirror');
+  await shoot(page, 'bust-long-mirror', 'bust');
   // back to the left view (the pictures move the camera)
   await page.keyboard.press('l');
   await expect(page.getByTestId('view-label')).toContainText('left');
@@ -139,7 +120,7 @@ test('long hair drawn with Mirror rests on the shoulders: front in front, back b
   console.log(
     `[bust] side strands whose tips end in front of the shoulders: ${(100 * m.sideFrontShare).toFixed(1)} % -> ${(100 * after.sideFrontShare).toFixed(1)} % after a stroke over the front of each`,
   );
-  await shootBust(page, 'bust-forward');
+  await shoot(page, 'bust-forward', 'bust');
   expect(after.sideFrontShare).toBeGreaterThan(m.sideFrontShare + 0.15);
   expect(errors).toEqual([]);
 });

@@ -84,18 +84,39 @@ export async function visibleCurvePoint(page: Page): Promise<{ id: string; x: nu
 
 /** With SHOT_DIR set, pictures of the hair from the front, the side and the back (for a person
  *  to look at; nothing is compared). */
-export async function shoot(page: Page, name: string): Promise<void> {
+/** The framing of shoot's pictures: the head (default), or head and shoulders (the bust). */
+const FRAMINGS = {
+  head: {
+    target: [0, -0.6, 0],
+    views: [
+      ['front', [0.6, 0.6, 7.5]],
+      ['side', [7.5, 0.6, -0.4]],
+      ['back', [-0.6, 1.2, -7.5]],
+    ],
+  },
+  bust: {
+    target: [0, -1.5, 0],
+    views: [
+      ['front', [0.8, 0.2, 10.5]],
+      ['side', [10.5, 0.2, -0.4]],
+      ['back', [-0.8, 0.8, -10.5]],
+    ],
+  },
+} as const;
+
+export async function shoot(
+  page: Page,
+  name: string,
+  framing: keyof typeof FRAMINGS = 'head',
+): Promise<void> {
   const dir = process.env.SHOT_DIR;
   if (!dir) return;
-  const views: [string, [number, number, number]][] = [
-    ['front', [0.6, 0.6, 7.5]],
-    ['side', [7.5, 0.6, -0.4]],
-    ['back', [-0.6, 1.2, -7.5]],
-  ];
+  const { target, views } = FRAMINGS[framing];
   for (const [view, p] of views) {
     await page.evaluate(
-      (q) => window.hairsketch.setCamera(q as [number, number, number], [0, -0.6, 0]),
-      p,
+      ([q, t]) =>
+        window.hairsketch.setCamera(q as [number, number, number], t as [number, number, number]),
+      [p, target],
     );
     await page.evaluate(() => window.hairsketch.idle());
     await page.getByTestId('viewport').screenshot({ path: `${dir}/${name}-${view}.png` });
