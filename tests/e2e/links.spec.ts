@@ -54,7 +54,7 @@ test('the default preset with a stroke: a short link that reopens the identical 
   page,
   context,
 }) => {
-  const { hash, other } = await strokeAndReopen(page, context, '/?strands=30000&solver=exact');
+  const { hash, other } = await strokeAndReopen(page, context, '/?strands=8000&solver=exact');
   console.log(`default preset + one stroke: link fragment ${hash.length} characters`);
   expect(hash).toMatch(/^#s=3\.[A-Za-z0-9_-]+$/);
   expect(hash.length).toBeLessThanOrEqual(2000);
@@ -67,7 +67,7 @@ test('with the default (fast) solver the link reopens the identical hair too', a
   page,
   context,
 }) => {
-  const { other } = await strokeAndReopen(page, context, '/?strands=30000');
+  const { other } = await strokeAndReopen(page, context, '/?strands=8000');
   const a = await page.evaluate(() => window.hairsketch.hairHash());
   expect(a).not.toBeNull();
   expect(await other.evaluate(() => window.hairsketch.hairHash())).toBe(a);

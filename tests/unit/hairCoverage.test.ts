@@ -1,10 +1,18 @@
 // scalpCoverage against hand-made hair: no hair leaves every visible scalp point bare; a blanket of
 // strands just outside the back of the head hides the back but not the front; strands behind
-// the scalp point (inside the head, as seen from the ray's side) hide nothing.
+// the scalp point (inside the head, as seen from the ray's side) hide nothing. Then the figure
+// presets as grown: their hair covers the back of the head and stays out of it.
+import { readFileSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
 import { describe, expect, it } from 'vitest';
+import { presetSession } from '../../web/cli/presetSession';
+import { growSessionHair } from '../../web/export/growSession';
 import { scalpCoverage, VIEW_DIRECTIONS } from '../../web/head/hairCoverage';
 import { Head } from '../../web/head/head';
+import { gridForSession } from '../../web/model/grid';
 import type { StrandArrays } from '../../web/model/hairArrays';
+import { hangLength } from '../../web/model/session';
+import { loadSolverEngine } from '../../web/solver/wasmEngine';
 
 const head = Head.builtin();
 
@@ -50,4 +58,43 @@ describe('scalpCoverage', () => {
     const three = scalpCoverage(head, sparse, { ...one, layers: undefined });
     expect(three.bare).toBe(three.points);
   });
+});
+
+// The figure presets as the app grows them (growSessionHair on the session's grid is the app's
+// converged hair, see growSession.test.ts), every root: the back of the head is covered, and no segment passes more
+// than 1 mm inside the head (its ends and middle, by the head's signed distance).
+describe('the figure presets from behind', () => {
+  const wasmBinary = new Uint8Array(
+    readFileSync(fileURLToPath(new URL('../../web/generated/hairsolver.wasm', import.meta.url))),
+  );
+  for (const preset of ['fig8', 'fig1', 'fig6', 'fig7', 'default'] as const)
+    it(`${preset}: at most 2 % of the scalp is bare, no segment inside the head`, async () => {
+      const engine = await loadSolverEngine({ wasmBinary });
+      const session = presetSession(preset, head, '25k', 0);
+      const { strands } = growSessionHair(engine, session, head.scalpMesh(), {
+        grid: gridForSession(session.grid, session.curves, undefined, hangLength(session)),
+        solver: 'fast',
+      });
+      engine.dispose();
+      expect(strands.strandStart.length - 1).toBeGreaterThan(20_000);
+      const back = scalpCoverage(head, strands, { dir: VIEW_DIRECTIONS.back });
+      console.log(
+        `${preset} from behind: ${back.bare} of ${back.points} scalp points bare (${(100 * back.fraction).toFixed(2)} %)`,
+      );
+      expect(back.points).toBeGreaterThan(1000);
+      expect(back.fraction).toBeLessThanOrEqual(0.02);
+      const P = strands.points;
+      const at = (k: number) => head.signedDistance([P[3 * k], P[3 * k + 1], P[3 * k + 2]]);
+      let inside = 0;
+      for (let i = 0; i + 1 < strands.strandStart.length; i++)
+        for (let k = strands.strandStart[i]; k + 1 < strands.strandStart[i + 1]; k++) {
+          const mid = head.signedDistance([
+            (P[3 * k] + P[3 * k + 3]) / 2,
+            (P[3 * k + 1] + P[3 * k + 4]) / 2,
+            (P[3 * k + 2] + P[3 * k + 5]) / 2,
+          ]);
+          if (Math.min(at(k), at(k + 1), mid) < -0.01) inside++;
+        }
+      expect(inside).toBe(0);
+    });
 });
