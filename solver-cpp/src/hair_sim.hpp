@@ -6,7 +6,9 @@
 //   local bending (the distance between points i and i + 2 back to its groomed value);
 //   global shape (each point pulled toward its groomed place carried by the head, the pull
 //     strongest at the root and fading as (1 - s)^2 along the strand, s in [0, 1]);
-// then collision (every point pushed out of the head's signed distance, HeadDistance::pushOut).
+// then collision (every point pushed out of the head's and the body's signed distances,
+// HeadDistance::pushOut; the body moves rigidly with the head; a distance is read only where
+// the cheap lower bound distanceAtLeast says the point could be within the margin).
 // The first two points of every strand are pinned to the groom carried by the head transform.
 // Gravity preloading: the groom is the rest shape, so the gravity a point feels is
 //   g - R * R0^T * g (R the head's rotation now, R0 at the start): zero while the head keeps its
@@ -41,8 +43,8 @@ HeadPose headPose(SimMotion motion, double t, const Eigen::Vector3f& pivot);
 Eigen::Vector3f windVelocity(SimMotion motion, double t, uint32_t seed);
 
 struct SimSettings {
-  int substeps = 5;
-  int iterations = 5;
+  int substeps = 2;
+  int iterations = 3;
   double frameRate = 24;
   float gravity = 9.81f;        // m/s^2 along -y
   float damping = 0.02f;        // velocity lost per substep
@@ -56,9 +58,10 @@ class HairSim {
  public:
   // points: strandCount * pointsPerStrand * 3 floats (strand-major), the groom in the head's
   // starting frame. head may be null (no collision); it must outlive the simulation.
+  // body may be null too (no bust).
   void init(const float* points, int strandCount, int pointsPerStrand, const HeadDistance* head,
             const Eigen::Vector3f& pivot, SimMotion motion, uint32_t seed,
-            const SimSettings& settings = SimSettings());
+            const SimSettings& settings = SimSettings(), const HeadDistance* body = nullptr);
   // Advances one frame (1 / frameRate seconds).
   void step();
   int frame() const { return frame_; }
@@ -76,11 +79,15 @@ class HairSim {
   SimMotion motion_ = SimMotion::Settle;
   uint32_t seed_ = 0;
   const HeadDistance* head_ = nullptr;
+  const HeadDistance* body_ = nullptr;
   Eigen::Vector3f pivot_ = Eigen::Vector3f::Zero();
   int strands_ = 0, n_ = 0, frame_ = 0;
   HeadPose pose_;
   std::vector<float> rest_, x_, prev_, len_, bendLen_;
 };
+
+// Pushes p (head frame) out of the head and the body (either may be null) to `margin`.
+void keepOutside(const HeadDistance* head, const HeadDistance* body, float p[3], float margin);
 
 // The strands that are not simulated follow their guides: each is bound once to the guide whose
 // root is nearest its own (brute force over the guides) and its point i is its groomed point
@@ -97,6 +104,61 @@ class GuideFollowers {
   std::vector<float> rest_;
   std::vector<int32_t> guide_;
   int strands_ = 0, n_ = 0;
+};
+
+// A grown groom in motion: the strands as the engine grows them (any point count each), a
+// subset simulated as guides and the rest carried by them.
+//   Guides: every k-th strand with two points or more (k chosen so at most maxGuides), each
+//     resampled by arc length to guidePoints points; a tie's strands (a braid, bun or ponytail
+//     tail: tailCurve >= 0) all follow one guide of their own tail, so the tail moves as one
+//     bunch and stays gathered past its tie.
+//   Followers: every other strand is bound to the guide whose root is nearest its own (a uniform
+//     grid over the guides' roots, searched ring by ring), point i at its own arc-length fraction
+//     t_i; it is its groomed point carried by the head plus the guide's displacement at t_i.
+//     Points that start within `nearHead` of the head or body are kept outside them.
+// A guide strand itself is carried by its resampled guide the same way.
+struct MotionInput {
+  const float* points = nullptr;          // points[3 * point + axis]
+  const uint32_t* strandStart = nullptr;  // strandCount + 1 entries
+  int strandCount = 0;
+  const int32_t* tailCurves = nullptr;  // may be null (no ties)
+  const HeadDistance* head = nullptr;
+  const HeadDistance* body = nullptr;
+  Eigen::Vector3f pivot = Eigen::Vector3f::Zero();
+  SimMotion motion = SimMotion::Settle;
+  uint32_t seed = 0;
+  int maxGuides = 3000;
+  int guidePoints = 32;
+  float nearHead = 0.3f;  // world units
+  SimSettings settings;
+};
+
+class StrandMotion {
+ public:
+  void init(const MotionInput& in);
+  void step();
+  // The strands now, in the input's layout.
+  const std::vector<float>& points() const { return out_; }
+  const HairSim& guides() const { return sim_; }
+  const HeadPose& pose() const { return sim_.pose(); }
+  int frame() const { return sim_.frame(); }
+  int guideCount() const { return sim_.strandCount(); }
+  // The strands simulated (their indices), and each strand's guide (an index into them, or -1).
+  const std::vector<int>& guideStrands() const { return guides_; }
+  const std::vector<int32_t>& guideOf() const { return guideOf_; }
+
+ private:
+  void update();
+  HairSim sim_;
+  const HeadDistance* head_ = nullptr;
+  const HeadDistance* body_ = nullptr;
+  std::vector<float> rest_, out_;
+  std::vector<uint32_t> start_;
+  std::vector<int> guides_;
+  std::vector<int32_t> guideOf_;  // per strand, -1 for none (fewer than two points)
+  std::vector<float> along_;      // per point: position along its guide, in guide points
+  std::vector<uint8_t> near_;     // per point: 1 where collision is checked
+  float margin_ = 0;
 };
 
 }  // namespace hairsketch

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 #include "head_distance.hpp"
@@ -152,6 +153,126 @@ TEST(HairSim, FollowersRideTheirGuides) {
   for (int k = 0; k < 6; ++k) sim.step();
   followers.update(sim, out.data());
   for (size_t i = 0; i < out.size(); ++i) EXPECT_NEAR(out[i], sim.positions()[i], 1e-6f);
+}
+
+// The groom as the engine lays it: strands of varying point counts (strandStart).
+struct VarGroom {
+  std::vector<float> points;
+  std::vector<uint32_t> start{0};
+  std::vector<int32_t> tails;
+};
+
+VarGroom simVarGroom(int strands) {
+  VarGroom v;
+  const std::vector<float> g = simGroom(strands, 24);
+  for (int s = 0; s < strands; ++s) {
+    const int n = 10 + s % 15;
+    v.points.insert(v.points.end(), g.begin() + size_t(s) * 24 * 3,
+                    g.begin() + (size_t(s) * 24 + n) * 3);
+    v.start.push_back(v.start.back() + n);
+    v.tails.push_back(s % 7 == 3 ? 0 : -1);
+  }
+  return v;
+}
+
+MotionInput simMotionInput(const VarGroom& v, const HeadDistance* head, const HeadDistance* body,
+                           SimMotion m) {
+  MotionInput in;
+  in.points = v.points.data();
+  in.strandStart = v.start.data();
+  in.strandCount = int(v.start.size()) - 1;
+  in.tailCurves = v.tails.data();
+  in.head = head;
+  in.body = body;
+  in.pivot = Eigen::Vector3f(0, -0.1f, 0);
+  in.motion = m;
+  in.seed = 3;
+  in.maxGuides = 40;
+  return in;
+}
+
+TEST(HairSimMotion, FollowersStayOutsideHeadAndBodyAndTiesStayGathered) {
+  SimHead f;
+  // The body: a sphere below and behind the head, where the strands reach.
+  std::vector<float> bv;
+  std::vector<uint32_t> bt;
+  simSphere(0.08f, bv, bt);
+  for (size_t i = 0; i < bv.size(); i += 3) bv[i + 1] -= 0.15f;
+  HeadDistance body;
+  HeadMeshView mesh;
+  mesh.positions = bv.data();
+  mesh.vertexCount = bv.size() / 3;
+  mesh.indices = bt.data();
+  mesh.triangleCount = bt.size() / 3;
+  ASSERT_TRUE(body.build(mesh, 0.005, 4).ok());
+  const VarGroom v = simVarGroom(300);
+  for (SimMotion m : {SimMotion::Settle, SimMotion::HeadTurn, SimMotion::Nod, SimMotion::Wind}) {
+    StrandMotion motion;
+    motion.init(simMotionInput(v, &f.head, &body, m));
+    EXPECT_LE(motion.guideCount(), 61);
+    EXPECT_EQ(motion.points(), v.points);  // frame 0 is the groom
+    for (int k = 0; k < 24; ++k) motion.step();
+    const auto& x = motion.points();
+    const HeadPose& pose = motion.pose();
+    int inside = 0;
+    for (size_t i = 0; i < x.size(); i += 3) {
+      Eigen::Vector3f local = pose.rotation.transpose() *
+                              (Eigen::Vector3f(x[i], x[i + 1], x[i + 2]) - pose.translation);
+      inside += f.head.distance(local.x(), local.y(), local.z()) < -0.001f ||
+                body.distance(local.x(), local.y(), local.z()) < -0.001f;
+    }
+    EXPECT_EQ(inside, 0) << int(m);
+    // a tie's strands (tail 0) move as one: their tips' displacements are alike
+    std::vector<Eigen::Vector3f> moved;
+    for (size_t s = 0; s + 1 < v.start.size(); ++s) {
+      if (v.tails[s] != 0) continue;
+      const size_t p = 3 * (v.start[s + 1] - 1);
+      const Eigen::Vector3f groom =
+          pose.apply(Eigen::Vector3f(v.points[p], v.points[p + 1], v.points[p + 2]));
+      moved.push_back(Eigen::Vector3f(x[p], x[p + 1], x[p + 2]) - groom);
+    }
+    for (const auto& d : moved) EXPECT_LE((d - moved[0]).norm(), 0.002f) << int(m);
+  }
+}
+
+TEST(HairSimMotion, SettleHoldsTheGroomFor5Seconds) {
+  SimHead f;
+  const VarGroom v = simVarGroom(200);
+  StrandMotion motion;
+  motion.init(simMotionInput(v, &f.head, nullptr, SimMotion::Settle));
+  for (int k = 0; k < 120; ++k) motion.step();
+  std::vector<float> drift;
+  const auto& x = motion.points();
+  for (size_t i = 0; i < x.size(); i += 3)
+    drift.push_back(
+        std::hypot(x[i] - v.points[i], x[i + 1] - v.points[i + 1], x[i + 2] - v.points[i + 2]));
+  std::nth_element(drift.begin(), drift.begin() + drift.size() / 2, drift.end());
+  std::printf("rest drift after 5 s of Settle: median %.4f mm, %d guides\n",
+              drift[drift.size() / 2] * 1000, motion.guideCount());
+  EXPECT_LE(drift[drift.size() / 2], 0.001f);
+}
+
+TEST(HairSimMotion, NearestRootByGridMatchesBruteForce) {
+  const VarGroom v = simVarGroom(2000);
+  MotionInput in = simMotionInput(v, nullptr, nullptr, SimMotion::HeadTurn);
+  std::vector<int32_t> noTails(v.tails.size(), -1);
+  in.tailCurves = noTails.data();
+  in.maxGuides = 150;
+  StrandMotion m;
+  m.init(in);
+  const auto& guides = m.guideStrands();
+  auto d2 = [&](size_t s, size_t t) {
+    const float* a = v.points.data() + 3 * v.start[s];
+    const float* b = v.points.data() + 3 * v.start[t];
+    return (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+           (a[2] - b[2]) * (a[2] - b[2]);
+  };
+  for (size_t s = 0; s + 1 < v.start.size(); ++s) {
+    float best = INFINITY;
+    for (int g : guides) best = std::min(best, d2(s, size_t(g)));
+    ASSERT_GE(m.guideOf()[s], 0);
+    EXPECT_EQ(d2(s, size_t(guides[m.guideOf()[s]])), best) << s;
+  }
 }
 
 }  // namespace
