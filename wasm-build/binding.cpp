@@ -21,6 +21,7 @@
 #include "curve_set.hpp"
 #include "field_solver.hpp"
 #include "hair_engine.hpp"
+#include "hair_sim.hpp"
 #include "parallel.hpp"
 
 using namespace hairsketch;
@@ -620,5 +621,62 @@ EMSCRIPTEN_KEEPALIVE int32_t hs_raw_stats(RawHandle* h, HsStats* out) {
   writeStats(h->solver->stats(), int32_t(h->constraints), 0, out);
   return HS_OK;
 }
+
+// ---- motion (hair_sim.hpp StrandMotion) ---------------------------------------------------
+// A groom in motion over the engine's head (and body when useBody and one is set); the engine
+// must outlive it. points: float32[3 * pointCount]; strandStart: uint32[strandCount + 1];
+// tails: int32[strandCount] (the tail curve per strand, -1 none) or 0; pivot: float32[3], the
+// point the head turns about (world units, 10 cm); motion: 0 settle, 1 head turn, 2 nod,
+// 3 wind. The arrays are copied. *out receives the handle.
+struct SimHandle {
+  StrandMotion motion;
+};
+
+EMSCRIPTEN_KEEPALIVE int32_t hs_sim_create(EngineHandle* h, const float* points, int32_t pointCount,
+                                           const uint32_t* strandStart, int32_t strandCount,
+                                           const int32_t* tails, const float* pivot, int32_t motion,
+                                           double seed, int32_t maxGuides, int32_t useBody,
+                                           SimHandle** out) {
+  if (!h || !points || !strandStart || !pivot || !out || pointCount < 0 || strandCount < 0)
+    return fail(HS_INVALID_INPUT, "sim_create: missing input");
+  if (motion < 0 || motion > 3) return fail(HS_INVALID_INPUT, "sim_create: unknown motion");
+  if (!(seed >= 0 && seed <= 4294967295.0) || std::floor(seed) != seed)
+    return fail(HS_INVALID_INPUT, "sim_create: seed must be a uint32");
+  if (strandStart[0] != 0 || strandStart[strandCount] != uint32_t(pointCount))
+    return fail(HS_INVALID_INPUT, "sim_create: strandStart does not cover the points");
+  for (int32_t s = 0; s < strandCount; ++s)
+    if (strandStart[s + 1] < strandStart[s])
+      return fail(HS_INVALID_INPUT, "sim_create: strandStart decreases");
+  MotionInput in;
+  in.points = points;
+  in.strandStart = strandStart;
+  in.strandCount = strandCount;
+  in.tailCurves = tails;
+  in.head = &h->engine.headDistance();
+  in.body = useBody ? &h->engine.bodyDistance() : nullptr;
+  in.pivot = Eigen::Vector3f(pivot[0], pivot[1], pivot[2]);
+  in.motion = SimMotion(motion);
+  in.seed = uint32_t(seed);
+  in.maxGuides = std::max(1, maxGuides);
+  in.settings.gravity = 98.1f;  // world units are 10 cm
+  auto sim = std::make_unique<SimHandle>();
+  sim->motion.init(in);
+  *out = sim.release();
+  return HS_OK;
+}
+EMSCRIPTEN_KEEPALIVE void hs_sim_destroy(SimHandle* s) { delete s; }
+// Advances one frame (1/24 s).
+EMSCRIPTEN_KEEPALIVE void hs_sim_step(SimHandle* s) { s->motion.step(); }
+// The strands now: float32[3 * pointCount], the create call's layout.
+EMSCRIPTEN_KEEPALIVE const float* hs_sim_points(SimHandle* s) { return s->motion.points().data(); }
+// The head's pose now: out float32[12] = rotation row-major (9), then translation (3).
+EMSCRIPTEN_KEEPALIVE void hs_sim_pose(SimHandle* s, float* out) {
+  const HeadPose& p = s->motion.pose();
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) out[3 * r + c] = p.rotation(r, c);
+  for (int r = 0; r < 3; ++r) out[9 + r] = p.translation[r];
+}
+EMSCRIPTEN_KEEPALIVE int32_t hs_sim_frame(SimHandle* s) { return s->motion.frame(); }
+EMSCRIPTEN_KEEPALIVE int32_t hs_sim_guide_count(SimHandle* s) { return s->motion.guideCount(); }
 
 }  // extern "C"

@@ -89,6 +89,29 @@ export interface HairSolverModule {
   _hs_raw_field(h: number): number;
   _hs_raw_field_points(h: number): number;
   _hs_raw_stats(h: number, statsOut: number): number; // STATS_OUTPUT
+
+  /** A groom in motion over engine h's head (binding.cpp hs_sim_create has the layouts);
+   *  handleOut: a 4-byte slot. */
+  _hs_sim_create(
+    h: number,
+    points: number,
+    pointCount: number,
+    strandStart: number,
+    strandCount: number,
+    tails: number,
+    pivot: number,
+    motion: number,
+    seed: number,
+    maxGuides: number,
+    useBody: number,
+    handleOut: number,
+  ): number;
+  _hs_sim_destroy(s: number): void;
+  _hs_sim_step(s: number): void;
+  _hs_sim_points(s: number): number; // float32[3 * pointCount]
+  _hs_sim_pose(s: number, out: number): void; // out float32[12]: rotation row-major, translation
+  _hs_sim_frame(s: number): number;
+  _hs_sim_guide_count(s: number): number;
 }
 
 export interface HairSolverModuleOptions {

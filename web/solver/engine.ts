@@ -12,6 +12,7 @@ import type {
   StrandArrays,
 } from '../model/hairArrays';
 import type { SolverName, SolveStats } from './protocol';
+import type { MotionOptions, MotionRun } from './wasmMotion';
 import type { SolverErrorKind } from './wasmStructs';
 
 export interface SolverEngine {
@@ -75,6 +76,9 @@ export interface SolverEngine {
     index: Int32Array;
     target: Float64Array;
   };
+  /** A groom in motion over this engine's head (and body): wasmMotion.ts. Optional (test
+   *  fakes). */
+  startMotion?(strands: StrandArrays, opts: MotionOptions): MotionRun;
   /** Bytes of the wasm heap (memory grows, never shrinks). */
   heapBytes(): number;
   dispose(): void;

@@ -34,6 +34,7 @@ import {
   withScratch,
 } from './wasmMemory';
 import { instantiate, type LoadOptions, moduleLabel } from './wasmModule';
+import { createMotion, type MotionOptions, type MotionRun } from './wasmMotion';
 import { toRawStats } from './wasmRawSolver';
 import {
   AVOID_INPUT,
@@ -118,6 +119,11 @@ class WasmEngine implements SolverEngine {
         (p) => m._hs_engine_set_scalp(h, p),
       );
     });
+  }
+
+  /** A groom in motion over this engine's head (SolverEngine.startMotion). */
+  startMotion(strands: StrandArrays, opts: MotionOptions): MotionRun {
+    return createMotion(this.mod, this.h(), strands, opts);
   }
 
   /** The body under the head (SolverEngine.setBody); null clears it. */

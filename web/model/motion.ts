@@ -1,0 +1,43 @@
+// The motions the hair can play (HairSim, solver-cpp/src/hair_sim.hpp): their names in the UI,
+// the command line and the worker protocol, and the numbers shared by the app's player and the
+// motion export.
+
+export const MOTIONS = ['settle', 'head-turn', 'nod', 'wind'] as const;
+export type MotionName = (typeof MOTIONS)[number];
+
+/** The UI's label of each motion. */
+export const MOTION_LABELS: Record<MotionName, string> = {
+  settle: 'Settle',
+  'head-turn': 'Head turn',
+  nod: 'Nod',
+  wind: 'Wind',
+};
+
+/** Frames per second of the simulation (one step per frame) and of the motion export. */
+export const MOTION_FRAME_RATE = 24;
+/** Frames of a motion export when none are asked for (2 s). */
+export const MOTION_DEFAULT_FRAMES = 48;
+/** At most this many frames in a motion export (60 s). */
+export const MOTION_MAX_FRAMES = 1440;
+/** Strands simulated as guides at most; the others follow them. */
+export const MOTION_MAX_GUIDES = 3000;
+/** The point the head (and bust) turns about: the top of the neck, in world units (10 cm). */
+export const MOTION_PIVOT: readonly [number, number, number] = [0, -1.0, -0.15];
+
+/** The C++ enum's value (SimMotion). */
+export function motionCode(m: MotionName): number {
+  return MOTIONS.indexOf(m);
+}
+
+export function isMotionName(s: string): s is MotionName {
+  return (MOTIONS as readonly string[]).includes(s);
+}
+
+/** One frame of a motion: the strands (the groom's layout: points[3 * point + axis]) and the
+ *  head's rigid pose, pose[0..8] its rotation row-major and pose[9..11] its translation
+ *  (world = R * groom + t). */
+export interface MotionFrame {
+  frame: number;
+  points: Float32Array;
+  pose: Float32Array;
+}

@@ -1,0 +1,92 @@
+// The wasm side of a groom in motion (binding.cpp hs_sim_*): strands copied into the module,
+// stepped a frame (1/24 s) at a time over the engine's head (and body), read back as copies.
+import type { HairSolverModule } from '../generated/hairsolver.mjs';
+import type { StrandArrays } from '../model/hairArrays';
+import {
+  MOTION_MAX_GUIDES,
+  MOTION_PIVOT,
+  type MotionFrame,
+  type MotionName,
+  motionCode,
+} from '../model/motion';
+import { check, withInputs, withScratch } from './wasmMemory';
+
+export interface MotionRun {
+  /** Frame 0 (the groom as given) before the first step, then one frame per call. */
+  step(): MotionFrame;
+  readonly guides: number;
+  dispose(): void;
+}
+
+export interface MotionOptions {
+  motion: MotionName;
+  seed: number;
+  /** Collide with the engine's body (the session's bust is on). */
+  body: boolean;
+  maxGuides?: number;
+}
+
+export function createMotion(
+  mod: HairSolverModule,
+  engine: number,
+  strands: StrandArrays,
+  opts: MotionOptions,
+): MotionRun {
+  const pointCount = strands.points.length / 3;
+  const strandCount = strands.strandStart.length - 1;
+  const tails =
+    strands.tailCurves && strands.tailCurves.length === strandCount ? strands.tailCurves : null;
+  const inputs: ArrayBufferView[] = [
+    strands.points,
+    strands.strandStart,
+    new Float32Array(MOTION_PIVOT),
+    tails ?? new Int32Array(1),
+  ];
+  const handle = withInputs(mod, inputs, ([points, start, pivot, tailPtr]) =>
+    withScratch(mod, 4, (out) => {
+      check(
+        mod,
+        mod._hs_sim_create(
+          engine,
+          points,
+          pointCount,
+          start,
+          strandCount,
+          tails ? tailPtr : 0,
+          pivot,
+          motionCode(opts.motion),
+          opts.seed >>> 0,
+          opts.maxGuides ?? MOTION_MAX_GUIDES,
+          opts.body ? 1 : 0,
+          out,
+        ),
+      );
+      return mod.HEAPU32[out >> 2];
+    }),
+  );
+  let live = true;
+  let started = false;
+  const read = (): MotionFrame => {
+    const p = mod._hs_sim_points(handle) >> 2;
+    const points = mod.HEAPF32.slice(p, p + 3 * pointCount);
+    const pose = withScratch(mod, 48, (ptr) => {
+      mod._hs_sim_pose(handle, ptr);
+      return mod.HEAPF32.slice(ptr >> 2, (ptr >> 2) + 12);
+    });
+    return { frame: mod._hs_sim_frame(handle), points, pose };
+  };
+  return {
+    guides: mod._hs_sim_guide_count(handle),
+    step(): MotionFrame {
+      if (!live) throw new Error('motion: stepped after dispose');
+      if (started) mod._hs_sim_step(handle);
+      started = true;
+      return read();
+    },
+    dispose(): void {
+      if (!live) return;
+      live = false;
+      mod._hs_sim_destroy(handle);
+    },
+  };
+}
