@@ -29,6 +29,7 @@ import type {
   StrandArrays,
   StrandVertexArrays,
 } from '../model/hairArrays';
+import type { MotionName } from '../model/motion';
 import type { SolverErrorKind } from './wasmStructs';
 
 export type SolverName = 'cg' | 'fast' | 'exact' | 'auto';
@@ -88,7 +89,23 @@ export type ToWorker =
        *  still applies when smaller. 0 = no cap of its own. Chosen by the app (what it can draw
        *  while the pen moves). */
       lightMaxStrands: number;
-    };
+    }
+  | {
+      /** Plays a motion over the strands on screen (HairSim in the worker, over the init head and,
+       *  with `body`, its body; model/motion.ts): the strands are copied, a motion already playing
+       *  is dropped. Answered by the 'motionFrame' of frame 0 (the strands as given). */
+      type: 'motionStart';
+      motion: MotionName;
+      seed: number; // uint32: the session's seed (the wind's gusts)
+      body: boolean;
+      strands: StrandArrays; // points, strandStart, tailCurves (per strand, optional) as above
+    }
+  | {
+      /** Advances the motion `frames` frames (1/24 s each) and answers with the last one. */
+      type: 'motionStep';
+      frames: number;
+    }
+  | { type: 'motionStop' };
 
 export type FromWorker =
   | { type: 'ready'; gridPoints: number; roots: number }
@@ -115,7 +132,17 @@ export type FromWorker =
        *  field posted before the full hair (final false); absent or false otherwise. */
       converged?: boolean;
     }
-  | { type: 'error'; id: number | null; message: string; kind: SolverErrorKind };
+  | { type: 'error'; id: number | null; message: string; kind: SolverErrorKind }
+  | {
+      /** A frame of the motion playing: points[3 * point + axis] in the layout of motionStart's
+       *  strands; pose[0..8] the head's rotation row-major, pose[9..11] its translation (world =
+       *  R * groom + t, the head and body meshes move by it). Transferred. */
+      type: 'motionFrame';
+      frame: number;
+      points: Float32Array;
+      pose: Float32Array;
+    }
+  | { type: 'motionError'; message: string };
 
 /** Transfer list for a result message: every array buffer it carries. */
 export function resultTransferables(msg: Extract<FromWorker, { type: 'result' }>): ArrayBuffer[] {

@@ -76,6 +76,9 @@ export class SolverClient {
   private maskKey: string;
   /** Ask the worker for the solved field with each result (for the field display). */
   wantField = false;
+  /** Called with each motion frame and motion error from the worker (app/motionPlayer.ts). */
+  onMotion: ((msg: Extract<FromWorker, { type: 'motionFrame' | 'motionError' }>) => void) | null =
+    null;
   constructor(
     private readonly makeWorker: () => Worker,
     private init: InitMessage,
@@ -222,6 +225,14 @@ export class SolverClient {
 
   /** A new worker, sent `init`. `phase`: what the user is told meanwhile (a grid move is part of
    *  solving the edit that needed it, not a load). */
+  /** Sends a motion message (protocol.ts motionStart / motionStep / motionStop); false when no
+   *  worker is ready to take it. */
+  motion(msg: Extract<ToWorker, { type: 'motionStart' | 'motionStep' | 'motionStop' }>): boolean {
+    if (!this.worker || !this.ready) return false;
+    this.worker.postMessage(msg);
+    return true;
+  }
+
   private start(phase: 'loading' | 'solving' = 'loading'): void {
     this.ready = false;
     this.events.onBusy(phase, 0);
@@ -316,6 +327,10 @@ export class SolverClient {
         if (!this.pending) this.events.onIdle();
         return;
       }
+      case 'motionFrame':
+      case 'motionError':
+        this.onMotion?.(msg);
+        return;
       case 'error':
         if (msg.id === null && !this.ready) {
           // Set-up failed: restarting would fail the same way.

@@ -24,6 +24,8 @@ const scope = self as unknown as {
 
 const post = (msg: FromWorker): void => {
   if (msg.type === 'result') scope.postMessage(msg, resultTransferables(msg));
+  else if (msg.type === 'motionFrame')
+    scope.postMessage(msg, [msg.points.buffer as ArrayBuffer, msg.pose.buffer as ArrayBuffer]);
   else scope.postMessage(msg);
 };
 

@@ -27,12 +27,14 @@ import { everyOtherPoint } from '../model/strandSubsample';
 import { type IterateProgress, type SolverEngine, SolverError } from '../solver/engine';
 import type { FromWorker, SolverName, ToWorker } from '../solver/protocol';
 import { convergeField, solveFraction } from '../solver/solveRecipe';
+import type { MotionRun } from '../solver/wasmMotion';
 import type { SolverErrorKind } from '../solver/wasmStructs';
 import { lineAttributes } from '../viewer/strandAttributes';
 
 export type Post = (msg: FromWorker) => void;
 type SolveMsg = Extract<ToWorker, { type: 'solve' }>;
 type Job = SolveMsg;
+type MotionMsg = Extract<ToWorker, { type: 'motionStart' | 'motionStep' | 'motionStop' }>;
 
 export interface SchedulerOptions {
   tolerance: number; // converged when the estimated relative field error is below this
@@ -132,6 +134,10 @@ export class WorkerLogic {
       this.setGrid(msg.grid);
       return Promise.resolve();
     }
+    if (msg.type === 'motionStart' || msg.type === 'motionStep' || msg.type === 'motionStop') {
+      this.handleMotion(msg);
+      return Promise.resolve();
+    }
     if (!this.initialised) {
       this.post({
         type: 'error',
@@ -143,6 +149,45 @@ export class WorkerLogic {
     }
     this.latest = msg;
     return this.running ? Promise.resolve() : this.run();
+  }
+
+  /** The motion playing (motionStart .. motionStop). */
+  private motion: MotionRun | null = null;
+
+  private handleMotion(msg: MotionMsg): void {
+    const fail = (message: string): void => {
+      this.motion?.dispose();
+      this.motion = null;
+      this.post({ type: 'motionError', message });
+    };
+    try {
+      if (msg.type === 'motionStop') {
+        this.motion?.dispose();
+        this.motion = null;
+        return;
+      }
+      if (msg.type === 'motionStart') {
+        this.motion?.dispose();
+        this.motion = null;
+        if (!this.initialised) fail('the solver is not initialised');
+        else if (!this.engine.startMotion) fail('this engine cannot play motions');
+        else {
+          this.motion = this.engine.startMotion(msg.strands, {
+            motion: msg.motion,
+            seed: msg.seed,
+            body: msg.body,
+          });
+          this.post({ type: 'motionFrame', ...this.motion.step() });
+        }
+        return;
+      }
+      if (!this.motion) return; // stopped meanwhile
+      let frame = this.motion.step();
+      for (let k = 1; k < Math.max(1, Math.floor(msg.frames)); k++) frame = this.motion.step();
+      this.post({ type: 'motionFrame', ...frame });
+    } catch (e) {
+      fail(errorMessage(e));
+    }
   }
 
   /** A new scalp on the init head: the next growth samples its roots over it (a job running now
