@@ -15,6 +15,7 @@ import type { DetailPanel } from '../ui/detailPanel';
 import { buildDisplayToggles } from '../ui/displayToggles';
 import { buildHeadPanel, type HeadPanel } from '../ui/headPanel';
 import { buildHelpOverlay, type HelpOverlay } from '../ui/helpOverlay';
+import { buildMotionControls } from '../ui/motionControls';
 import { buildReferencePanel, type ReferencePanel } from '../ui/referencePanel';
 import { StatusLine } from '../ui/status';
 import { buildToolbar } from '../ui/toolbar';
@@ -40,6 +41,7 @@ import { type ExportWiring, wireExport } from './exportActions';
 import { HairPresenter } from './hairPresenter';
 import { HeadController } from './headController';
 import { bindInput } from './input';
+import { MotionPlayer } from './motionPlayer';
 import { OverlayPresenter } from './overlayPresenter';
 import { bindPageControls } from './pageControls';
 import { loadQualitySetting, QualityControl } from './quality';
@@ -292,6 +294,22 @@ export function startApp(): void {
     showHeadPanel,
   });
   showSolverResults({ bridge, hair, sectionTint, overlays, status, active });
+  const motion = new MotionPlayer({
+    client: bridge.client,
+    editor,
+    viewer,
+    hairView,
+    shown: () => hair.shownResult,
+    meshes: () => [headMesh, bodyMesh],
+    say: (m) => status.note(m),
+    statusElement: byId('status'),
+    changed: () => motionControls.refresh(),
+  });
+  const motionControls = buildMotionControls(byId('toolbar'), {
+    play: (m) => motion.play(m),
+    stop: () => motion.stop(),
+    playing: () => motion.playing,
+  });
 
   let lastPointerUp = 0;
   bindInput({
@@ -337,5 +355,6 @@ export function startApp(): void {
     lastPointerUp: () => lastPointerUp,
     quality,
     exporter: exporting.exporter,
+    motion,
   });
 }

@@ -30,6 +30,7 @@ export interface HairRevision {
 
 export class HairPresenter {
   private shown: StrandArrays | null = null;
+  private shownFrom: SolveResult | null = null;
   /** Strands with at least one segment in the hair shown (visibleStrands). */
   private strandCount = 0;
   /** When each displayed hair revision reached the screen (performance.now()). */
@@ -62,6 +63,11 @@ export class HairPresenter {
     return this.shown;
   }
 
+  /** The result whose hair is on screen (its lighting and attributes too). */
+  get shownResult(): SolveResult | null {
+    return this.shownFrom;
+  }
+
   /** Strands in the hair on screen (those with at least one segment). */
   get shownStrands(): number {
     return this.strandCount;
@@ -77,6 +83,7 @@ export class HairPresenter {
     this.heapBytes = r.stats.heapBytes;
     if (this.shown !== r.strands) {
       this.shown = r.strands;
+      this.shownFrom = r;
       this.finalPending = final;
       // previews and first looks keep the head's shadow as the converged hair cast it: the head
       // stays in the frame cache while a stroke is drawn (viewer/frameCache.ts)

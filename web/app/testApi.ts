@@ -3,6 +3,7 @@ import type { Editor } from '../editor/editor';
 import { scalpCoverage, VIEW_DIRECTIONS } from '../head/hairCoverage';
 import type { Head } from '../head/head';
 import { contentKey } from '../model/curveSet';
+import type { StrandArrays } from '../model/hairArrays';
 import type { Vec3 } from '../model/vec3';
 import type { PonytailTool } from '../tools/ponytailTool';
 import type { DisplayState } from '../ui/displayToggles';
@@ -72,8 +73,19 @@ export interface HairsketchTestApi {
   /** Benchmark probe: the lighting precompute time (ms, in the worker) of the hair shown. */
   lightingMs(): number | null;
   /** The displayed strands as plain arrays (layout of protocol.ts StrandArrays). */
-  /** The hair drawn: its points, where each strand starts, the index of the curve whose tie
-   *  laid each strand (or -1), and the scalp section of each root (empty with sections off). */
+  /** The hair drawn (also while a motion plays: its current frame): its points, where each
+   *  strand starts, the index of the curve whose tie laid each strand (or -1), and the scalp
+   *  section of each root (empty with sections off). */
+  /** The motion playing ('' none), its frame, and frames drawn per second since it started. */
+  /** The motion playing (null: none), its frame, frames drawn per second since it started,
+   *  and the last frame's wait for the worker and geometry build (ms). */
+  motion(): {
+    playing: string | null;
+    frame: number;
+    fps: number;
+    workerMs: number;
+    buildMs: number;
+  };
   strands(): {
     points: number[];
     strandStart: number[];
@@ -174,6 +186,14 @@ export interface TestApiParts {
   lastPointerUp(): number;
   quality?: QualityControl;
   exporter?: { crash(): void };
+  /** The motion player (app/motionPlayer.ts). */
+  motion?: {
+    drawn: StrandArrays | null;
+    playing: string | null;
+    frame: number;
+    fps: number;
+    times: { workerMs: number; buildMs: number };
+  };
 }
 
 export function installTestApi(app: TestApiParts): void {
@@ -257,8 +277,15 @@ export function installTestApi(app: TestApiParts): void {
       app.quality?.set(s);
     },
     lightingMs: () => app.quality?.lightingMs() ?? null,
+    motion: () => ({
+      playing: app.motion?.playing ?? null,
+      frame: app.motion?.frame ?? 0,
+      fps: app.motion?.fps ?? 0,
+      workerMs: app.motion?.times.workerMs ?? 0,
+      buildMs: app.motion?.times.buildMs ?? 0,
+    }),
     strands() {
-      const s = hair.strands;
+      const s = app.motion?.drawn ?? hair.strands;
       return s
         ? {
             points: Array.from(s.points),

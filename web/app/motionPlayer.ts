@@ -1,0 +1,224 @@
+// Plays a motion over the hair on screen: the worker simulates (protocol.ts motionStart /
+// motionStep / motionStop), each frame it sends is drawn as the hair and moves the head and body
+// meshes by the head's pose. Frames are asked for at 24 per second of wall time (several at once
+// when drawing falls behind, at most MAX_CATCH_UP). Stop shows the groom's result again, the very
+// arrays it was (bit for bit); an edit that changes the hair, or new hair from the solver, stops
+// the motion first.
+import * as THREE from 'three';
+import type { Editor } from '../editor/editor';
+import type { StrandArrays } from '../model/hairArrays';
+import { MOTION_FRAME_RATE, MOTION_LABELS, type MotionName } from '../model/motion';
+import { changesHair } from '../model/sessionSchema';
+import type { SolveResult, SolverClient } from '../solver/solverClient';
+import type { HairView } from '../viewer/hairView';
+import type { Viewer } from '../viewer/viewer';
+
+const MAX_CATCH_UP = 4;
+
+export interface MotionPlayerDeps {
+  client: SolverClient;
+  editor: Editor;
+  viewer: Viewer;
+  hairView: HairView;
+  /** The result whose hair is on screen (HairPresenter.shownResult). */
+  shown: () => SolveResult | null;
+  /** The head and body meshes (the body may be absent). */
+  meshes: () => (THREE.Object3D | undefined)[];
+  say: (message: string) => void;
+  /** The status line's element: data-motion (the motion playing, or ''), data-motion-frame. */
+  statusElement: HTMLElement;
+  changed: () => void;
+}
+
+export class MotionPlayer {
+  private motion: MotionName | null = null;
+  private base: SolveResult | null = null;
+  private drawnStrands: StrandArrays | null = null;
+  private startTime = 0;
+  private frameNo = 0;
+  private waiting = false;
+  private timer: ReturnType<typeof setTimeout> | null = null;
+  private saved = new Map<THREE.Object3D, THREE.Matrix4>();
+  /** Frames drawn and when the first was drawn (frames per second while playing). */
+  private drawnCount = 0;
+  private firstDrawn = 0;
+  private asked = 0;
+  /** The last frame's wait for the worker and its geometry build on this thread (ms). */
+  readonly times = { workerMs: 0, buildMs: 0 };
+
+  constructor(private readonly d: MotionPlayerDeps) {
+    d.client.onMotion = (msg) => {
+      if (!this.motion) return;
+      if (msg.type === 'motionError') {
+        this.stop();
+        d.say(`Motion stopped: ${msg.message}`);
+        return;
+      }
+      this.draw(msg.frame, msg.points, msg.pose);
+    };
+    d.editor.listen((c) => {
+      if (this.motion && c.sessionChanged && changesHair(c.previous, c.session)) this.stop();
+    });
+  }
+
+  get playing(): MotionName | null {
+    return this.motion;
+  }
+
+  /** What is drawn while playing (null when stopped: the groom's result is drawn). */
+  get drawn(): StrandArrays | null {
+    return this.motion ? this.drawnStrands : null;
+  }
+
+  get frame(): number {
+    return this.frameNo;
+  }
+
+  /** Frames drawn per second of wall time since the first frame of this play. */
+  get fps(): number {
+    const s = (performance.now() - this.firstDrawn) / 1000;
+    return this.drawnCount > 1 && s > 0 ? (this.drawnCount - 1) / s : 0;
+  }
+
+  play(motion: MotionName): void {
+    if (this.motion) this.stop();
+    const base = this.d.shown();
+    if (!base || base.strands.strandStart.length < 2) {
+      this.d.say('Nothing to play: there is no hair yet');
+      return;
+    }
+    const s = this.d.editor.session;
+    const sent = this.d.client.motion({
+      type: 'motionStart',
+      motion,
+      seed: s.growth.seed,
+      body: !!s.bust,
+      strands: {
+        points: base.strands.points,
+        strandStart: base.strands.strandStart,
+        ...(base.strands.tailCurves ? { tailCurves: base.strands.tailCurves } : {}),
+      },
+    });
+    if (!sent) {
+      this.d.say('The solver is not ready yet: play again in a moment');
+      return;
+    }
+    this.motion = motion;
+    this.base = base;
+    this.drawnStrands = base.strands;
+    this.frameNo = 0;
+    this.drawnCount = 0;
+    this.waiting = true;
+    this.startTime = performance.now();
+    this.asked = this.startTime;
+    // drawn at interactive detail while it moves, in full once it stops
+    this.d.viewer.hold('motion', true);
+    this.setStatus();
+    this.d.say(`Playing ${MOTION_LABELS[motion]}`);
+    this.d.changed();
+  }
+
+  stop(): void {
+    if (!this.motion) return;
+    this.motion = null;
+    if (this.timer !== null) clearTimeout(this.timer);
+    this.timer = null;
+    this.d.client.motion({ type: 'motionStop' });
+    this.d.viewer.hold('motion', false);
+    for (const [m, matrix] of this.saved) {
+      m.matrix.copy(matrix);
+      m.matrixAutoUpdate = true;
+      m.matrixWorldNeedsUpdate = true;
+    }
+    this.saved.clear();
+    const base = this.base;
+    this.base = null;
+    this.drawnStrands = null;
+    // the groom again, as it was shown (the same arrays); hair newer than it is already shown
+    if (base && this.d.shown() === base)
+      this.d.hairView.show(base.strands, base.lighting, undefined, true, base.attributes ?? null);
+    this.setStatus();
+    this.d.say('Motion stopped: the groom is back');
+    this.d.viewer.requestRender();
+    this.d.changed();
+  }
+
+  private draw(frame: number, points: Float32Array, pose: Float32Array): void {
+    const base = this.base;
+    if (!base) return;
+    if (this.d.shown() !== base) {
+      // new hair from the solver: it is shown, the motion over the old hair ends
+      this.base = null;
+      this.stop();
+      return;
+    }
+    this.waiting = false;
+    this.frameNo = frame;
+    const b0 = performance.now();
+    this.times.workerMs = b0 - this.asked;
+    const strands: StrandArrays = { ...base.strands, points };
+    this.drawnStrands = strands;
+    this.d.hairView.show(strands, base.lighting, undefined, false, null);
+    this.times.buildMs = performance.now() - b0;
+    const m = new THREE.Matrix4().set(
+      pose[0],
+      pose[1],
+      pose[2],
+      pose[9],
+      pose[3],
+      pose[4],
+      pose[5],
+      pose[10],
+      pose[6],
+      pose[7],
+      pose[8],
+      pose[11],
+      0,
+      0,
+      0,
+      1,
+    );
+    for (const mesh of this.d.meshes()) {
+      if (!mesh) continue;
+      if (!this.saved.has(mesh)) {
+        mesh.updateMatrix();
+        this.saved.set(mesh, mesh.matrix.clone());
+        mesh.matrixAutoUpdate = false;
+      }
+      mesh.matrix.multiplyMatrices(m, this.saved.get(mesh) as THREE.Matrix4);
+      mesh.matrixWorldNeedsUpdate = true;
+    }
+    this.d.viewer.requestRender();
+    if (this.drawnCount === 0) this.firstDrawn = performance.now();
+    this.drawnCount++;
+    this.setStatus();
+    this.schedule();
+  }
+
+  /** Asks for the frames due by now (wall time at 24 per second), or waits until one is. */
+  private schedule(): void {
+    if (!this.motion || this.waiting) return;
+    const due = Math.floor(((performance.now() - this.startTime) / 1000) * MOTION_FRAME_RATE);
+    const behind = due - this.frameNo;
+    if (behind <= 0) {
+      const at = this.startTime + ((this.frameNo + 1) * 1000) / MOTION_FRAME_RATE;
+      this.timer = setTimeout(
+        () => {
+          this.timer = null;
+          this.schedule();
+        },
+        Math.max(1, at - performance.now()),
+      );
+      return;
+    }
+    this.waiting = true;
+    this.asked = performance.now();
+    this.d.client.motion({ type: 'motionStep', frames: Math.min(MAX_CATCH_UP, behind) });
+  }
+
+  private setStatus(): void {
+    const el = this.d.statusElement;
+    el.dataset.motion = this.motion ?? '';
+    el.dataset.motionFrame = String(this.motion ? this.frameNo : 0);
+  }
+}
