@@ -423,6 +423,14 @@ void StrandMotion::update() {
   const int G = sim_.pointsPerStrand();
   const std::vector<float>& gr = sim_.rest();
   const std::vector<float>& gx = sim_.positions();
+  // each guide point's displacement from its groomed place carried by the head, once per frame
+  disp_.resize(gx.size());
+  parallel::forRange(0, gx.size() / 3, 4096, [&](size_t b, size_t e) {
+    for (size_t c = b; c < e; ++c)
+      Eigen::Map<Eigen::Vector3f>(disp_.data() + 3 * c) =
+          Eigen::Map<const Eigen::Vector3f>(gx.data() + 3 * c) -
+          pose.apply(Eigen::Map<const Eigen::Vector3f>(gr.data() + 3 * c));
+  });
   const int count = int(guideOf_.size());
   parallel::forRange(0, size_t(count), 256, [&](size_t b, size_t e) {
     for (size_t s = b; s < e; ++s) {
@@ -433,12 +441,9 @@ void StrandMotion::update() {
           const float a = along_[p];
           const int j = std::min(G - 2, int(a));
           const float w = a - float(j);
-          const size_t c0 = (size_t(g) * G + j) * 3, c1 = c0 + 3;
-          const Eigen::Vector3f d0 = Eigen::Map<const Eigen::Vector3f>(gx.data() + c0) -
-                                     pose.apply(Eigen::Map<const Eigen::Vector3f>(gr.data() + c0));
-          const Eigen::Vector3f d1 = Eigen::Map<const Eigen::Vector3f>(gx.data() + c1) -
-                                     pose.apply(Eigen::Map<const Eigen::Vector3f>(gr.data() + c1));
-          q += (1 - w) * d0 + w * d1;
+          const float* d = disp_.data() + (size_t(g) * G + j) * 3;
+          q += (1 - w) * Eigen::Map<const Eigen::Vector3f>(d) +
+               w * Eigen::Map<const Eigen::Vector3f>(d + 3);
           if (near_[p]) {
             Eigen::Vector3f local = pose.rotation.transpose() * (q - pose.translation);
             const Eigen::Vector3f before = local;

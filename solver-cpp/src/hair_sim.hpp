@@ -153,6 +153,7 @@ class StrandMotion {
   const HeadDistance* head_ = nullptr;
   const HeadDistance* body_ = nullptr;
   std::vector<float> rest_, out_;
+  std::vector<float> disp_;  // per guide point: its displacement now (update)
   std::vector<uint32_t> start_;
   std::vector<int> guides_;
   std::vector<int32_t> guideOf_;  // per strand, -1 for none (fewer than two points)
