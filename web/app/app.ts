@@ -241,6 +241,7 @@ export function startApp(): void {
     anchor: byId('toolbar'),
     cardCount: () => view.state.cardCount,
     setCardCount: (n) => view.update({ cardCount: n }),
+    motion: () => motionControls.selected(),
   });
   const toggles = buildDisplayToggles(toolbar.moreElement, view.state.display, (k, on) =>
     view.setDisplay(k, on),

@@ -2,8 +2,10 @@
 // viewer, each after the running solve (if any) has finished, with progress on the status line.
 import type { Editor } from '../editor/editor';
 import { exportHeadWithBody } from '../export/exportHead';
+import { MOTION_EXPORT } from '../export/formats';
 import type { Head } from '../head/head';
 import type { gridForSession } from '../model/grid';
+import { MOTION_DEFAULT_FRAMES, type MotionName } from '../model/motion';
 import type { SolverName } from '../solver/protocol';
 import { buildExportMenu, type ExportMenu } from '../ui/exportMenu';
 import type { Viewer } from '../viewer/viewer';
@@ -32,6 +34,8 @@ export function wireExport(d: {
   /** The hair cards' count (view state: the Cards view shows the same cards). */
   cardCount(): number;
   setCardCount(n: number): void;
+  /** The motion chosen beside Play (the menu's motion export plays it). */
+  motion?(): MotionName;
 }): ExportWiring {
   const { status, bridge } = d;
   let png = false;
@@ -63,6 +67,15 @@ export function wireExport(d: {
   });
   const menu = buildExportMenu(d.anchor, {
     exportFile: (format, withHead) => void exporter.export(format, withHead, d.cardCount()),
+    ...(d.motion
+      ? {
+          exportMotion: (withHead: boolean) =>
+            void exporter.export(MOTION_EXPORT.format, withHead, undefined, {
+              name: d.motion?.() ?? 'head-turn',
+              frames: MOTION_DEFAULT_FRAMES,
+            }),
+        }
+      : {}),
     cardCount: () => d.cardCount(),
     setCardCount: (n) => d.setCardCount(n),
     say: (m) => status.note(m),

@@ -4,12 +4,18 @@
 
 import type { Editor } from '../editor/editor';
 import type { FromExportWorker } from '../export/exportProtocol';
-import { EXPORT_FORMATS, type ExportFormat, exportFileName } from '../export/formats';
+import {
+  EXPORT_FORMATS,
+  type ExportFormat,
+  exportFileName,
+  MOTION_EXPORT,
+} from '../export/formats';
 import type { UvSurface } from '../export/surfaceUv';
 import type { ExportHead } from '../export/types';
 import type { GroomSummary } from '../export/usdWriter';
 import { gridForSession } from '../model/grid';
 import type { ScalpMesh } from '../model/hairArrays';
+import type { MotionName } from '../model/motion';
 import { hangLength } from '../model/session';
 import { parseSession } from '../model/sessionFile';
 import type { SolverName } from '../solver/protocol';
@@ -63,6 +69,7 @@ export class Exporter {
     format: ExportFormat,
     withHead: boolean,
     cards?: number,
+    motion?: { name: MotionName; frames: number },
   ): Promise<ExportOutcome | null> {
     if (this.running) {
       this.d.failed('An export is already running; wait for it to finish.');
@@ -78,7 +85,9 @@ export class Exporter {
       this.d.makeWorker?.() ??
       new Worker(new URL('../export/exportWorker.ts', import.meta.url), { type: 'module' });
     this.running = worker;
-    const name = exportFileName(format);
+    const name = motion
+      ? `${MOTION_EXPORT.fileStem}.${EXPORT_FORMATS[MOTION_EXPORT.format].extension}`
+      : exportFileName(format);
     const chunks: Uint8Array[] = [];
     // the USD groom's root UVs read from a loaded head's own UVs
     const headUv = spec.readsHeadUv ? this.d.headUv?.() : null;
@@ -130,6 +139,7 @@ export class Exporter {
             head: withHead ? this.d.head() : null,
             ...(headUv ? { headUv } : {}),
             ...(spec.takesCardCount && cards !== undefined ? { cards } : {}),
+            ...(motion ? { motion } : {}),
           });
         },
       );

@@ -3,6 +3,7 @@
 // export/writeExport.ts), so the same session gives the same file.
 //   hairsketch grow SESSION --out FILE [--format FORMAT (export/formats.ts)] [--grid 25k|50k|100k|250k]
 //                   [--solver fast|exact] [--strands N] [--cards N] [--with-head|--no-head] [--head FILE]
+//                   [--motion settle|head-turn|nod|wind [--frames N]] (a .usda with time samples)
 // The head is the session's (cli/head.ts): the built-in one, or a loaded head's file embedded in
 // the session file or given with --head FILE (OBJ, glTF/GLB, PLY, STL).
 // The file is written to a temporary name beside FILE and renamed into place only when complete.
@@ -27,14 +28,17 @@ import {
   extensionsInWords,
   formatFromFileName,
   isExportFormat,
+  MOTION_EXPORT,
 } from '../export/formats';
 import { growSessionHair } from '../export/growSession';
+import { motionFramesProblem, motionNameProblem, simulateMotion } from '../export/motionExport';
 import { readExportedSession } from '../export/readExport';
 import { exportedCounts } from '../export/strandsForExport';
 import type { ExportHead } from '../export/types';
 import { writeExport } from '../export/writeExport';
 import { builtinBody } from '../head/buildBody';
 import { GRID_PRESETS, type GridPreset, gridForSession, isGridPreset } from '../model/grid';
+import { MOTION_DEFAULT_FRAMES, MOTIONS, type MotionName } from '../model/motion';
 import { hangLength, type SessionState } from '../model/session';
 import { type HeadFileData, readSessionFile } from '../model/sessionFile';
 import { decodeSessionLink } from '../model/sessionLink';
@@ -45,7 +49,7 @@ import { headForGrow } from './head';
 
 const formatList = EXPORT_FORMAT_IDS.join('|');
 
-export const GROW_USAGE = `usage: hairsketch grow SESSION --out FILE [--format ${formatList}] [--grid 25k|50k|100k|250k] [--solver fast|exact] [--strands N] [--cards N] [--with-head|--no-head] [--head FILE] [--max-seconds N] [--progress-seconds N]`;
+export const GROW_USAGE = `usage: hairsketch grow SESSION --out FILE [--format ${formatList}] [--grid 25k|50k|100k|250k] [--solver fast|exact] [--strands N] [--cards N] [--with-head|--no-head] [--head FILE] [--motion ${MOTIONS.join('|')} [--frames N]] [--max-seconds N] [--progress-seconds N]`;
 
 const GROW_SOLVERS = ['fast', 'exact'] as const;
 type GrowSolver = (typeof GROW_SOLVERS)[number];
@@ -68,6 +72,8 @@ export interface GrowArgs {
   head: boolean;
   /** --head FILE: the head file to grow on (null: the session's own). */
   headFile: string | null;
+  /** --motion NAME [--frames N]: the motion written as time samples (USD only; null: none). */
+  motion: { name: MotionName; frames: number } | null;
   /** Stop (exit 3) when the solve and growth take longer than this. */
   maxSeconds: number;
   /** A JSON progress line on stderr at most this often during the solve. */
@@ -95,6 +101,8 @@ export function parseGrowArgs(argv: readonly string[]): GrowArgs {
   let solver = 'fast';
   let strands: string | null = null;
   let cards: string | null = null;
+  let motion: string | null = null;
+  let frames: string | null = null;
   let head: boolean | null = null;
   let headFile: string | null = null;
   let maxSeconds = 600;
@@ -109,6 +117,8 @@ export function parseGrowArgs(argv: readonly string[]): GrowArgs {
     '--progress-seconds',
     '--head',
     '--cards',
+    '--motion',
+    '--frames',
   ];
   for (let i = 0; i < argv.length; i++) {
     const a = argv[i];
@@ -123,6 +133,8 @@ export function parseGrowArgs(argv: readonly string[]): GrowArgs {
       else if (a === '--progress-seconds') progressSeconds = parseSeconds(a, v);
       else if (a === '--head') headFile = v;
       else if (a === '--cards') cards = v;
+      else if (a === '--motion') motion = v;
+      else if (a === '--frames') frames = v;
       else strands = v;
     } else if (a === '--with-head' || a === '--no-head') {
       head = a === '--with-head';
@@ -167,10 +179,28 @@ export function parseGrowArgs(argv: readonly string[]): GrowArgs {
     if (!EXPORT_FORMATS[fmt].takesCardCount)
       throw new CliError(`--cards needs --format ${exportFormatsWith('takesCardCount').join('|')}`);
   }
+  let motionArg: GrowArgs['motion'] = null;
+  if (frames !== null && motion === null) throw new CliError('--frames needs --motion');
+  if (motion !== null) {
+    const bad = motionNameProblem(motion);
+    if (bad) throw new CliError(`--motion: ${bad}`);
+    const n =
+      frames === null
+        ? MOTION_DEFAULT_FRAMES
+        : /^[0-9]{1,9}$/.test(frames)
+          ? Number(frames)
+          : Number.NaN;
+    const problem = motionFramesProblem(n);
+    if (problem) throw new CliError(`--frames: ${problem.replace(/got .*$/, `got "${frames}"`)}`);
+    if (fmt !== MOTION_EXPORT.format)
+      throw new CliError(`--motion needs --format ${MOTION_EXPORT.format} (a .usda file)`);
+    motionArg = { name: motion as MotionName, frames: n };
+  }
   return {
     session,
     out,
     format: fmt,
+    motion: motionArg,
     cards: cardCount,
     grid: grid as GridPreset | null,
     solver: solver as GrowSolver,
@@ -301,6 +331,7 @@ export async function runGrow(
 
   const engine = await loadSolverEngine(load);
   let hair: ReturnType<typeof growSessionHair>;
+  let motion: ReturnType<typeof simulateMotion> | null = null;
   try {
     const t0 = performance.now();
     let lastLine = t0;
@@ -325,6 +356,8 @@ export async function runGrow(
           );
       },
     });
+    if (args.motion)
+      motion = simulateMotion(engine, hair.strands, session, args.motion.name, args.motion.frames);
   } catch (e) {
     // a solver refusing the input (an exact factor over the memory cap, …) is the user's choice
     if (e instanceof SolverError && (e.kind === 'over_memory_cap' || e.kind === 'invalid_input'))
@@ -355,6 +388,7 @@ export async function runGrow(
         ? { positions: mesh.positions, indices: mesh.indices, cornerUvs: mesh.cornerUvs }
         : null,
       ...(args.cards !== null ? { cards: args.cards } : {}),
+      ...(motion ? { motion } : {}),
     })) {
       writeAll(fd, chunk);
       bytes += chunk.byteLength;

@@ -3,6 +3,7 @@
 // chunks (transferred), so a 100K-strand export never blocks the page or builds one giant string.
 
 import type { GridSpec, ScalpMesh } from '../model/hairArrays';
+import type { MotionName } from '../model/motion';
 import type { SessionState } from '../model/session';
 import type { SolverName } from '../solver/protocol';
 import type { SolverErrorKind } from '../solver/wasmStructs';
@@ -24,6 +25,9 @@ export interface ExportRequest {
   headUv?: UvSurface;
   /** Hair cards: the card count (absent: the default). */
   cards?: number;
+  /** USD only: play this motion for this many frames and write them as time samples
+   *  (motionExport.ts). */
+  motion?: { name: MotionName; frames: number };
 }
 
 export type FromExportWorker =

@@ -6,6 +6,7 @@ import { SolverError } from '../solver/engine';
 import { loadSolverEngine } from '../solver/wasmEngine';
 import type { ExportRequest, FromExportWorker } from './exportProtocol';
 import { growSessionHair } from './growSession';
+import { simulateMotion } from './motionExport';
 import { exportedCounts } from './strandsForExport';
 import type { GroomSummary } from './usdWriter';
 import { writeExport } from './writeExport';
@@ -48,6 +49,17 @@ async function run(req: ExportRequest): Promise<void> {
         head: req.head,
         headUv: req.headUv ?? null,
         cards: req.cards,
+        ...(req.motion
+          ? {
+              motion: simulateMotion(
+                engine,
+                hair.strands,
+                req.session,
+                req.motion.name,
+                req.motion.frames,
+              ),
+            }
+          : {}),
         onGroom: (g) => {
           groom = g;
         },

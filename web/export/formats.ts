@@ -103,6 +103,23 @@ export const EXPORT_FORMATS = {
 
 export type ExportFormat = keyof typeof EXPORT_FORMATS;
 
+/** The motion export: the USD format's writer with the hair's points and the head's transform
+ *  as time samples (export/motionExport.ts), from the Export menu (the motion chosen beside
+ *  Play, 48 frames) and `hairsketch grow --motion`. Its menu item reads `Motion (USD)`. */
+export const MOTION_EXPORT = {
+  format: 'usda',
+  fileStem: `${HAIRSTYLE}-motion`,
+  menuName: 'Motion (USD)',
+  menuTitle: 'The chosen motion, 2 s at 24 fps: animated hair and head for Blender, Houdini',
+  statusName: 'motion USD',
+} as const satisfies {
+  format: ExportFormat;
+  fileStem: string;
+  menuName: string;
+  menuTitle: string;
+  statusName: string;
+};
+
 /** Every format, in the table's order. */
 export const EXPORT_FORMAT_IDS = Object.keys(EXPORT_FORMATS) as readonly ExportFormat[];
 

@@ -43,6 +43,11 @@ export interface ExportInput {
   /** Hair cards: how many cards to cut the hair into (cardsWriter.ts DEFAULT_CARD_COUNT when
    *  absent); the other formats ignore it. */
   cards?: number;
+  /** A motion (USD only, export/motionExport.ts): the strands' points at each frame
+   *  (frames[0] the groom, the layout of `strands`), the head's pose at each (model/motion.ts
+   *  MotionFrame.pose) and the frame rate. The USD then carries the hair's points and the
+   *  head's transform as time samples. */
+  motion?: { frames: Float32Array[]; poses: Float32Array[]; frameRate: number };
 }
 
 /** Progress of a long export, 0..1. */

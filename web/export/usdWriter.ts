@@ -6,7 +6,7 @@
 import { formatFloat, type Progress, TextSink } from './chunkSink';
 import { type GroomLayout, groomLayout, HEAD_CENTER } from './groomLayout';
 import { scalpUvs } from './scalpUv';
-import type { ExportStrands } from './strandsForExport';
+import { type ExportStrands, strandsForExport } from './strandsForExport';
 import { type ExportHead, type ExportInput, METERS_PER_UNIT, ROOT_WIDTH, TIP_WIDTH } from './types';
 
 /** Strands written per batch (one progress report and one drain per batch). */
@@ -126,6 +126,15 @@ export function* writeUsda(
     builtinHead ? null : (input.headUv ?? null),
   );
   const headCornerUvs = headMeshUvs(input, groom);
+  // the motion's frames as the writers lay the strands out (skipped strands, point caps)
+  const motion = input.motion
+    ? {
+        ...input.motion,
+        points: input.motion.frames.map(
+          (f) => strandsForExport({ ...input.strands, points: f }, input.session).points,
+        ),
+      }
+    : null;
   input.onGroom?.(groomSummary(strands, groom, builtinHead));
   const total = numbersToWrite(strands, groom, head, builtinHead, headCornerUvs);
   let done = 0;
@@ -137,10 +146,10 @@ export function* writeUsda(
     },
   };
 
-  writeLayerHeader(out.text, input.session);
+  writeLayerHeader(out.text, input.session, motion);
   out.text.write('def Xform "hairsketch"\n{\n');
-  yield* writeGroom(out, strands, groom);
-  if (head) yield* writeHeadMesh(out, head, builtinHead, headCornerUvs);
+  yield* writeGroom(out, strands, groom, motion);
+  if (head) yield* writeHeadMesh(out, head, builtinHead, headCornerUvs, motion);
   out.text.write('}\n');
   yield* out.text.end();
   progress.at(1);
@@ -203,12 +212,24 @@ function numbersToWrite(
   );
 }
 
-function writeLayerHeader(text: TextSink, session: ExportInput['session']): void {
+/** A motion's frames as written: each frame's points in the writers' strand layout. */
+type MotionOut = { points: Float32Array[]; poses: Float32Array[]; frameRate: number } | null;
+
+function writeLayerHeader(
+  text: TextSink,
+  session: ExportInput['session'],
+  motion: MotionOut = null,
+): void {
   text.write('#usda 1.0\n(\n    customLayerData = {\n');
   text.write(`        string ${usdQuote(USD_SESSION_KEY)} = `);
   text.write(usdQuote(JSON.stringify(session)));
   text.write('\n    }\n');
   text.write('    defaultPrim = "hairsketch"\n');
+  if (motion) {
+    text.write(`    startTimeCode = 0\n    endTimeCode = ${motion.points.length - 1}\n`);
+    text.write(`    timeCodesPerSecond = ${motion.frameRate}\n`);
+    text.write(`    framesPerSecond = ${motion.frameRate}\n`);
+  }
   text.write(`    metersPerUnit = ${formatFloat(METERS_PER_UNIT)}\n`);
   text.write('    upAxis = "Y"\n)\n\n');
 }
@@ -218,6 +239,7 @@ function* writeGroom(
   out: UsdOut,
   strands: ExportStrands,
   groom: GroomLayout,
+  motion: MotionOut = null,
 ): Generator<Uint8Array> {
   const nStrands = strands.strandStart.length - 1;
   out.text.write(
@@ -225,8 +247,14 @@ function* writeGroom(
   );
   const all = new Uint32Array(nStrands);
   for (let s = 0; s < nStrands; s++) all[s] = s;
-  yield* writeCurves(out, strands, groom, { name: 'hair', order: all, guide: 0 });
-  yield* writeCurves(out, strands, groom, { name: 'guides', order: groom.guides, guide: 1 });
+  yield* writeCurves(out, strands, groom, { name: 'hair', order: all, guide: 0 }, motion);
+  yield* writeCurves(
+    out,
+    strands,
+    groom,
+    { name: 'guides', order: groom.guides, guide: 1 },
+    motion,
+  );
   out.text.write('    }\n');
 }
 
@@ -262,14 +290,49 @@ function* writeCurves(
   strands: ExportStrands,
   groom: GroomLayout,
   prim: CurvesPrim,
+  motion: MotionOut = null,
 ): Generator<Uint8Array> {
   out.text.write(`\n        def BasisCurves "${prim.name}"\n        {\n`);
   out.text.write(`${IN}uniform token type = "linear"\n`);
   out.text.write(`${IN}uniform token wrap = "nonperiodic"\n`);
   const strandsOf = new PrimStrands(strands.strandStart, prim.order);
   yield* writeCurvesGeometry(out, strands, strandsOf);
+  if (motion) yield* writePointSamples(out, strandsOf, motion);
   yield* writeGroomPrimvars(out, strands, groom, prim, strandsOf);
   out.text.write('        }\n');
+}
+
+/** The points of a prim's strands at every frame of a motion: `points.timeSamples`. */
+function* writePointSamples(
+  out: UsdOut,
+  prim: PrimStrands,
+  motion: NonNullable<MotionOut>,
+): Generator<Uint8Array> {
+  const { order } = prim;
+  out.text.write(`${IN}point3f[] points.timeSamples = {\n`);
+  for (let f = 0; f < motion.points.length; f++) {
+    const pts = motion.points[f];
+    out.text.write(`${PAD}${f}: [`);
+    for (let i0 = 0; i0 < order.length; i0 += BATCH) {
+      const i1 = Math.min(order.length, i0 + BATCH);
+      const parts: string[] = [];
+      for (let i = i0; i < i1; i++) parts.push(prim.perPoint(order[i], (p) => vec3(pts, 3 * p)));
+      out.text.write(i0 > 0 ? `, ${parts.join(', ')}` : parts.join(', '));
+      yield* out.text.drain();
+    }
+    out.text.write('],\n');
+  }
+  out.text.write(`${IN}}\n`);
+}
+
+/** A head pose (R row-major, then t: world = R * p + t) as a USD matrix4d (row vectors:
+ *  p' = p * M, so M's rows are R's columns and t is the last row). */
+function usdMatrix(pose: Float32Array): string {
+  const f = (x: number) => formatFloat(x);
+  const rows: string[] = [];
+  for (let c = 0; c < 3; c++) rows.push(`(${f(pose[c])}, ${f(pose[3 + c])}, ${f(pose[6 + c])}, 0)`);
+  rows.push(`(${f(pose[9])}, ${f(pose[10])}, ${f(pose[11])}, 1)`);
+  return `( ${rows.join(', ')} )`;
 }
 
 /** The points of a prim's strands: `order[k]` is the exported strand written k-th. */
@@ -445,10 +508,19 @@ function* writeHeadMesh(
   head: ExportHead,
   builtinHead: boolean,
   headCornerUvs: Float32Array | null,
+  motion: MotionOut = null,
 ): Generator<Uint8Array> {
   const headVerts = head.positions.length / 3;
   const headTris = head.indices.length / 3;
   out.text.write('\n    def Mesh "head"\n    {\n');
+  if (motion) {
+    // the head's animated transform (the hair's points are in world space already)
+    out.text.write('        matrix4d xformOp:transform.timeSamples = {\n');
+    motion.poses.forEach((pose, f) => {
+      out.text.write(`${PAD}${f}: ${usdMatrix(pose)},\n`);
+    });
+    out.text.write('        }\n        uniform token[] xformOpOrder = ["xformOp:transform"]\n');
+  }
   const [hlo, hhi] = extentOf(head.positions);
   out.text.write(`        float3[] extent = [${vec3(hlo, 0)}, ${vec3(hhi, 0)}]\n`);
   // the counts are drained with the indices

@@ -12,6 +12,7 @@ import {
   EXPORT_FORMATS,
   type ExportFormat,
   exportMenuLabel,
+  MOTION_EXPORT,
 } from '../export/formats';
 
 export interface ExportMenuActions {
@@ -23,6 +24,8 @@ export interface ExportMenuActions {
   /** One sentence for the status line (a card count out of range). */
   say(message: string): void;
   exportPng(transparent: boolean): void;
+  /** The motion export (formats.ts MOTION_EXPORT) of the motion chosen beside Play. */
+  exportMotion?(withHead: boolean): void;
 }
 
 export interface ExportMenu {
@@ -64,6 +67,11 @@ export function buildExportMenu(anchor: HTMLElement, actions: ExportMenuActions)
       actions.exportFile(format, head.input.indeterminate ? f.headByDefault : head.input.checked),
     );
   }
+  const motion = actions.exportMotion;
+  if (motion)
+    item(MOTION_EXPORT.menuName, MOTION_EXPORT.menuTitle, () =>
+      motion(head.input.indeterminate ? EXPORT_FORMATS.usda.headByDefault : head.input.checked),
+    );
   // the PNG is drawn by the viewer: not an export format
   item('PNG image', 'The current view at twice the canvas resolution', () =>
     actions.exportPng(transparent.input.checked),

@@ -11,6 +11,8 @@ export interface MotionControlsActions {
 export interface MotionControls {
   /** Shows the button's state again (after a motion started or stopped). */
   refresh(): void;
+  /** The motion chosen in the select. */
+  selected(): MotionName;
 }
 
 export function buildMotionControls(
@@ -59,5 +61,5 @@ export function buildMotionControls(
   group.append(label, button);
   toolbar.append(group);
   refresh();
-  return { refresh };
+  return { refresh, selected: () => select.value as MotionName };
 }

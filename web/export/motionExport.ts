@@ -1,0 +1,63 @@
+// A motion for export: the full hair grown (growSession.ts) played on the same engine, frame by
+// frame. The app's export worker and `hairsketch grow --motion` both call simulateMotion, so the
+// same session, motion and frame count give the same .usda bytes in both.
+import type { StrandArrays } from '../model/hairArrays';
+import {
+  isMotionName,
+  MOTION_FRAME_RATE,
+  MOTION_MAX_FRAMES,
+  MOTIONS,
+  type MotionName,
+} from '../model/motion';
+import type { SessionState } from '../model/session';
+import { type SolverEngine, SolverError } from '../solver/engine';
+import type { ExportInput } from './types';
+
+/** Why `frames` is not a frame count for a motion export, or null when it is one. */
+export function motionFramesProblem(frames: number): string | null {
+  if (!Number.isInteger(frames) || frames < 1)
+    return `frames must be a positive whole number, got ${frames}`;
+  if (frames > MOTION_MAX_FRAMES)
+    return `frames must be at most ${MOTION_MAX_FRAMES} (${MOTION_MAX_FRAMES / MOTION_FRAME_RATE} s at ${MOTION_FRAME_RATE} fps), got ${frames}`;
+  return null;
+}
+
+/** Why `name` is not a motion, or null when it is one. */
+export function motionNameProblem(name: string): string | null {
+  return isMotionName(name) ? null : `unknown motion "${name}": one of ${MOTIONS.join(', ')}`;
+}
+
+/** Plays `motion` over `strands` (grown on `engine`, whose head and body it collides with) for
+ *  `frames` frames at 24 fps, frame 0 being the groom itself: the seed is the session's, the
+ *  body is used when the session's bust is on. */
+export function simulateMotion(
+  engine: SolverEngine,
+  strands: StrandArrays,
+  session: SessionState,
+  motion: MotionName,
+  frames: number,
+): NonNullable<ExportInput['motion']> {
+  const problem = motionFramesProblem(frames) ?? motionNameProblem(motion);
+  if (problem) throw new SolverError(problem, 'invalid_input');
+  if (!engine.startMotion) throw new SolverError('this engine cannot play motions', 'internal');
+  const run = engine.startMotion(strands, {
+    motion,
+    seed: session.growth.seed,
+    body: !!session.bust,
+  });
+  try {
+    const out: NonNullable<ExportInput['motion']> = {
+      frames: [],
+      poses: [],
+      frameRate: MOTION_FRAME_RATE,
+    };
+    for (let f = 0; f < frames; f++) {
+      const frame = run.step();
+      out.frames.push(f === 0 ? strands.points : frame.points);
+      out.poses.push(frame.pose);
+    }
+    return out;
+  } finally {
+    run.dispose();
+  }
+}
