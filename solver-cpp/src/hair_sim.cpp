@@ -154,7 +154,7 @@ void HairSim::substep(int strand, float dt, const HeadPose& pose, const Eigen::V
   for (int it = 0; it < std::max(1, settings_.iterations); ++it) {
     for (int i = pinned; i < n_; ++i) {
       const float s = 1.0f - float(i) / denom;
-      const float w = settings_.shapeStiffness * s * s;
+      const float w = settings_.shapeStiffness * std::max(s * s, settings_.shapeFloor);
       for (int a = 0; a < 3; ++a) x[3 * i + a] += w * (target[3 * i + a] - x[3 * i + a]);
     }
     for (int i = 0; i + 2 < n_; ++i) {
@@ -407,7 +407,7 @@ void StrandMotion::init(const MotionInput& in) {
         float d = INFINITY;
         for (const HeadDistance* c : {head_, body_})
           if (c) d = std::min(d, c->distanceAtLeast(q[0], q[1], q[2]));
-        near_[p] = guideIndex[s] < 0 && i >= 1 && d < in.nearHead;
+        near_[p] = i >= 1 && d < in.nearHead;
       }
     }
   });
@@ -435,8 +435,10 @@ void StrandMotion::update() {
   parallel::forRange(0, size_t(count), 256, [&](size_t b, size_t e) {
     for (size_t s = b; s < e; ++s) {
       const int32_t g = guideOf_[s];
+      Eigen::Vector3f prevOut = Eigen::Vector3f::Zero(), prevRest = prevOut;
       for (uint32_t p = start_[s]; p < start_[s + 1]; ++p) {
-        Eigen::Vector3f q = pose.apply(Eigen::Map<const Eigen::Vector3f>(rest_.data() + 3 * p));
+        const Eigen::Map<const Eigen::Vector3f> r(rest_.data() + 3 * p);
+        Eigen::Vector3f q = pose.apply(r);
         if (g >= 0) {
           const float a = along_[p];
           const int j = std::min(G - 2, int(a));
@@ -444,6 +446,13 @@ void StrandMotion::update() {
           const float* d = disp_.data() + (size_t(g) * G + j) * 3;
           q += (1 - w) * Eigen::Map<const Eigen::Vector3f>(d) +
                w * Eigen::Map<const Eigen::Vector3f>(d + 3);
+          // the groomed segment length, from the root outward (follow-the-leader): a follower
+          // longer or shorter than its guide keeps its own lengths
+          if (p > start_[s]) {
+            const Eigen::Vector3f step = q - prevOut;
+            const float l = step.norm();
+            if (l > 1e-12f) q = prevOut + step * ((r - prevRest).norm() / l);
+          }
           if (near_[p]) {
             Eigen::Vector3f local = pose.rotation.transpose() * (q - pose.translation);
             const Eigen::Vector3f before = local;
@@ -452,6 +461,8 @@ void StrandMotion::update() {
           }
         }
         Eigen::Map<Eigen::Vector3f>(out_.data() + 3 * p) = q;
+        prevOut = q;
+        prevRest = r;
       }
     }
   });

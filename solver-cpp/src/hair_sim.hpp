@@ -5,7 +5,8 @@
 //   segment length (each segment back to its groomed length, the root side held when pinned);
 //   local bending (the distance between points i and i + 2 back to its groomed value);
 //   global shape (each point pulled toward its groomed place carried by the head, the pull
-//     strongest at the root and fading as (1 - s)^2 along the strand, s in [0, 1]);
+//     strongest at the root and fading as (1 - s)^2 along the strand, s in [0, 1], to a floor
+//     of shapeFloor at the tip);
 // then collision (every point pushed out of the head's and the body's signed distances,
 // HeadDistance::pushOut; the body moves rigidly with the head; a distance is read only where
 // the cheap lower bound distanceAtLeast says the point could be within the margin).
@@ -49,6 +50,10 @@ struct SimSettings {
   float gravity = 9.81f;        // m/s^2 along -y
   float damping = 0.02f;        // velocity lost per substep
   float shapeStiffness = 0.2f;  // global shape pull at the root, per iteration
+  // The pull never fades below this fraction of shapeStiffness (at the tips): with gravity
+  // preloaded a displaced tip feels no weight, and this brings it back to the groom (a time
+  // constant of about 0.7 s at the defaults) instead of leaving it where the motion flung it.
+  float shapeFloor = 0.05f;
   float bendStiffness = 0.5f;
   float windDrag = 0.5f;  // per second, toward the wind velocity
   float collisionMargin = 0.0f;
@@ -114,8 +119,9 @@ class GuideFollowers {
 //     bunch and stays gathered past its tie.
 //   Followers: every other strand is bound to the guide whose root is nearest its own (a uniform
 //     grid over the guides' roots, searched ring by ring), point i at its own arc-length fraction
-//     t_i; it is its groomed point carried by the head plus the guide's displacement at t_i.
-//     Points that start within `nearHead` of the head or body are kept outside them.
+//     t_i; it is its groomed point carried by the head plus the guide's displacement at t_i,
+//     then put back at its groomed distance from the point before (follow-the-leader, so
+//     lengths hold). Points that start within `nearHead` of the head or body are kept outside.
 // A guide strand itself is carried by its resampled guide the same way.
 struct MotionInput {
   const float* points = nullptr;          // points[3 * point + axis]
@@ -129,7 +135,7 @@ struct MotionInput {
   uint32_t seed = 0;
   int maxGuides = 3000;
   int guidePoints = 32;
-  float nearHead = 0.3f;  // world units
+  float nearHead = 1.0f;  // world units (10 cm)
   SimSettings settings;
 };
 

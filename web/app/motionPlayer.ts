@@ -131,6 +131,7 @@ export class MotionPlayer {
       m.matrixWorldNeedsUpdate = true;
     }
     this.saved.clear();
+    this.d.viewer.invalidateFrameCache();
     const base = this.base;
     this.base = null;
     this.drawnStrands = null;
@@ -188,6 +189,8 @@ export class MotionPlayer {
       mesh.matrix.multiplyMatrices(m, this.saved.get(mesh) as THREE.Matrix4);
       mesh.matrixWorldNeedsUpdate = true;
     }
+    // the head is in the frame cache's static layer: it moved
+    this.d.viewer.invalidateFrameCache();
     this.d.viewer.requestRender();
     if (this.drawnCount === 0) this.firstDrawn = performance.now();
     this.drawnCount++;
