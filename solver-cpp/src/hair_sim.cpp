@@ -457,7 +457,16 @@ void StrandMotion::update() {
             Eigen::Vector3f local = pose.rotation.transpose() * (q - pose.translation);
             const Eigen::Vector3f before = local;
             keepOutside(head_, body_, local.data(), margin_);
-            if (local != before) q = pose.apply(local);
+            if (local != before) {
+              q = pose.apply(local);
+              // back to the groomed length along the pushed direction (a point pushed out
+              // of the surface leaves it no closer than the push put it, to first order)
+              if (p > start_[s]) {
+                const Eigen::Vector3f step = q - prevOut;
+                const float l = step.norm();
+                if (l > 1e-12f) q = prevOut + step * ((r - prevRest).norm() / l);
+              }
+            }
           }
         }
         Eigen::Map<Eigen::Vector3f>(out_.data() + 3 * p) = q;
