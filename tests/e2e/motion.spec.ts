@@ -71,6 +71,12 @@ test('Play with Head turn moves the strands; Stop restores them bit for bit', as
   await expect(page.getByRole('button', { name: 'Play' })).toBeVisible();
   const after = await changedSinceKept(page);
   expect(after).toEqual({ changed: 0, of: playing.of, same: true });
+  // the shortcut (Shift+P) plays and stops too
+  await page.keyboard.press('Shift+P');
+  await motionFrame(page, 2);
+  await page.keyboard.press('Shift+P');
+  await expect(page.getByRole('button', { name: 'Play' })).toBeVisible();
+  expect((await changedSinceKept(page)).changed).toBe(0);
   expect(errors).toEqual([]);
 });
 

@@ -55,6 +55,8 @@ export interface ActionTarget {
   openReference(): void;
   display(key: DisplayKey): boolean;
   setDisplay(key: DisplayKey, on: boolean): void;
+  /** Plays the motion chosen beside Play, or stops the one playing (app/motionPlayer.ts). */
+  toggleMotion?(): void;
 }
 
 const ORBIT_SPEEDS = [0.25, 0.5, 0.75, 1, 1.5, 2];
@@ -292,6 +294,14 @@ export function buildActions(t: ActionTarget): Action[] {
       shortcuts: [']'],
       group: 'view',
       run: () => orbitStep(1),
+    },
+    {
+      id: 'view.motion',
+      label: 'Play motion',
+      title: 'Play the motion chosen beside Play, or stop it (the groom comes back)',
+      shortcuts: ['shift+p'],
+      group: 'view',
+      run: () => t.toggleMotion?.(),
     },
     {
       id: 'view.help',

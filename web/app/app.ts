@@ -204,6 +204,10 @@ export function startApp(): void {
     setDisplay: (k, on) => view.setDisplay(k, on),
     qualityLabel: () => quality.label(),
     cycleQuality: () => quality.cycle(),
+    toggleMotion: () => {
+      if (motion.playing) motion.stop();
+      else motion.play(motionControls.selected());
+    },
   });
   const toolbar = buildToolbar(byId('toolbar'), actions, {
     hairColor: (css) => editor.run({ kind: 'setHairColor', color: css }),
