@@ -45,16 +45,16 @@ Eigen::Vector3f windVelocity(SimMotion motion, double t, uint32_t seed);
 
 struct SimSettings {
   int substeps = 2;
-  int iterations = 3;
+  int iterations = 2;  // stiffnesses below set so 2 sweeps pull as far as 3 at 0.2 / 0.5 did
   double frameRate = 24;
-  float gravity = 9.81f;        // m/s^2 along -y
-  float damping = 0.02f;        // velocity lost per substep
-  float shapeStiffness = 0.2f;  // global shape pull at the root, per iteration
+  float gravity = 9.81f;          // m/s^2 along -y
+  float damping = 0.02f;          // velocity lost per substep
+  float shapeStiffness = 0.285f;  // global shape pull at the root, per iteration
   // The pull never fades below this fraction of shapeStiffness (at the tips): with gravity
   // preloaded a displaced tip feels no weight, and this brings it back to the groom (a time
   // constant of about 0.7 s at the defaults) instead of leaving it where the motion flung it.
-  float shapeFloor = 0.05f;
-  float bendStiffness = 0.5f;
+  float shapeFloor = 0.035f;
+  float bendStiffness = 0.65f;
   float windDrag = 0.5f;  // per second, toward the wind velocity
   float collisionMargin = 0.0f;
 };
