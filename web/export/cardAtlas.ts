@@ -5,7 +5,8 @@
 // card's lo edge .. 1 at its hi edge; along: its fraction of its length, root at the tile's top),
 // so one tile suits any card; card c uses tile c mod ATLAS_TILES. Three images, same layout:
 //   colour    RGBA, the strands' colour (sRGB, each point's with a colour model's ombré;
-//             × 0.7 .. 1 from the deepest to the highest in the clump) and their coverage as alpha;
+//             × 0.8 .. 1.2 in linear light from the deepest to the highest in the clump) and
+//             their coverage as alpha;
 //   root–tip  grey, 0 at the root .. 255 at the tip, of the strand nearest the viewer outside;
 //   depth     grey, 128 + 127 · d / DEPTH_RANGE (clamped): d the height of that strand above the
 //             card along its normal (above = out from the head).
@@ -28,6 +29,9 @@ export const TILE_PAD = 2;
 export const TILE_STRANDS = 160;
 export const LINE_WIDTH_ROOT = 2.4;
 export const LINE_WIDTH_TIP = 1.2;
+/** The clump's shading of a strand's colour (linear light) from the deepest to the highest. */
+export const LIT_DEEP = 0.8;
+export const LIT_HIGH = 1.2;
 /** Depth map: ±this height above the card (world units, 1 cm) spans 1..255. */
 export const DEPTH_RANGE = 0.1;
 
@@ -142,11 +146,10 @@ export function drawCardAtlas(
         ys[i] = ty + t * h;
         ds[i] = height;
       }
-      const rgb = [0, 1, 2].map((q) => linearToSrgbByte(colors[3 * s + q]));
+      const rgb = [0, 1, 2].map((q) => colors[3 * s + q]);
       for (let i = 0; i + 1 < np; i++) {
         // a colour model's ombré: each segment in its first point's colour
-        if (pointColors)
-          for (let q = 0; q < 3; q++) rgb[q] = linearToSrgbByte(pointColors[3 * (a + i) + q]);
+        if (pointColors) for (let q = 0; q < 3; q++) rgb[q] = pointColors[3 * (a + i) + q];
         const t0 = i / (np - 1);
         const width =
           LINE_WIDTH_ROOT + (LINE_WIDTH_TIP - LINE_WIDTH_ROOT) * ((t0 * 2 + 1 / (np - 1)) / 2);
@@ -178,10 +181,13 @@ export function drawCardAtlas(
               top[px] = d;
               // strands deeper in the clump are darker (the light they lose to the ones above),
               // so a card shows strands, not a flat colour
-              const lit = 0.7 + 0.3 * Math.min(1, Math.max(0, (d / DEPTH_RANGE + 1) / 2));
-              colour[4 * px] = Math.round(rgb[0] * lit);
-              colour[4 * px + 1] = Math.round(rgb[1] * lit);
-              colour[4 * px + 2] = Math.round(rgb[2] * lit);
+              // (in linear light, LIT_DEEP .. LIT_HIGH around 1: the atlas's mean stays the
+              // strands' colour; scaling the sRGB bytes darkened the cards by about a third)
+              const h = Math.min(1, Math.max(0, (d / DEPTH_RANGE + 1) / 2));
+              const lit = LIT_DEEP + (LIT_HIGH - LIT_DEEP) * h;
+              colour[4 * px] = linearToSrgbByte(Math.min(1, rgb[0] * lit));
+              colour[4 * px + 1] = linearToSrgbByte(Math.min(1, rgb[1] * lit));
+              colour[4 * px + 2] = linearToSrgbByte(Math.min(1, rgb[2] * lit));
               const tt = (cum[i] + (cum[i + 1] - cum[i]) * along) / (total > 0 ? total : 1);
               rootTip[px] = Math.round(255 * Math.min(1, Math.max(0, tt)));
               depth[px] = Math.round(128 + 127 * Math.min(1, Math.max(-1, d / DEPTH_RANGE)));
