@@ -7,6 +7,7 @@
 // maps are rendered once per hair revision, not per frame.
 import * as THREE from 'three';
 import { KEY_LIGHT_DIRECTION } from '../lighting/keyLight';
+import { HAIR_SHADOW_UNIFORMS } from './hairShadowReceiver';
 import type { StrandMaterial } from './strandMaterial';
 
 /** Far ends of the 3 layers past the first hair, world units (1 unit = 10 cm). */
@@ -201,6 +202,21 @@ export class DeepOpacityMaps {
     const u = material.uniforms;
     if (u.domRange) u.domRange.value = this.range;
     if (u.domBias) u.domBias.value = 2 * this.texel;
+  }
+
+  /** Points the head's and the bust's materials (hairShadowReceiver.ts) at these maps, after a
+   *  render; `on` false: they go back to Fast's shadow. */
+  bindReceivers(on: boolean): void {
+    const u = HAIR_SHADOW_UNIFORMS;
+    u.hairShadowMaps.value = on ? 1 : 0;
+    u.hsDepth.value = this.depthTarget.texture;
+    u.hsOpacity.value = this.opacityTarget.texture;
+    u.hsMatrix.value = this.matrix;
+    u.hsLayers.value.set(...DOM_LAYERS);
+    u.hsRange.value = this.range;
+    u.hsKappa.value = 1.0;
+    u.hsBias.value = 2 * this.texel;
+    u.hsHeadOpacity.value = HEAD_FRAGMENT_OPACITY;
   }
 
   dispose(): void {

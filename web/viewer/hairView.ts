@@ -144,6 +144,7 @@ export class HairView {
       );
       this.object = made.object;
       this.domDirty = false; // the deep opacity maps are the strips'
+      this.dom?.bindReceivers(false);
       this.cardsShown = { cards: made.cards, triangles: made.triangles, ms: made.ms };
       return made.object;
     }
@@ -157,6 +158,7 @@ export class HairView {
       this.domDirty = this.dom !== null;
       return mesh;
     }
+    this.dom?.bindReceivers(false); // Fast: the head's per-vertex shadow
     const geometry = buildStrandGeometry(points, strandStart, 0, light, c.attributes);
     this.lines ??= createStrandMaterial({
       color: this.color,
@@ -195,6 +197,7 @@ export class HairView {
     if (!(hair instanceof THREE.Mesh)) return;
     this.dom.render(this.viewer.renderer, hair.geometry, this.strips, this.head);
     this.dom.refresh(this.strips);
+    this.dom.bindReceivers(true);
     this.viewer.invalidateFrameCache(); // new maps and uniforms: the cached hair is stale
   }
 }

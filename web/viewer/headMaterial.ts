@@ -2,10 +2,12 @@
 // (HeadMesh.scalp) is tinted so the hair-bearing region is visibly marked, eyes are white with
 // an iris, and lips are reddened. The hair's shadow: a per-vertex `hairShadow` attribute
 // (transmittance through the hair towards the key light, from the worker's lighting precompute,
-// 1 = unshadowed) scales the key light (the scene's first directional light).
+// 1 = unshadowed) scales the key light (the scene's first directional light); High reads the
+// deep opacity maps instead (hairShadowReceiver.ts).
 import * as THREE from 'three';
 import type { HeadMesh } from '../head/head';
 import { EYE_R, EYE_X, EYE_Y, EYE_Z, HeadPart } from '../head/headSdf';
+import { patchHairShadowReceiver } from './hairShadowReceiver';
 
 export interface HeadColors {
   skin: THREE.ColorRepresentation;
@@ -128,26 +130,15 @@ export function createHeadMaterial(): THREE.MeshStandardMaterial {
         '#include <common>\nattribute float hairShadow;\nvarying float vHairShadow;',
       )
       .replace('#include <begin_vertex>', '#include <begin_vertex>\nvHairShadow = hairShadow;');
-    // the key light is the scene's first directional light (viewer.ts adds it first)
-    const lights = THREE.ShaderChunk.lights_fragment_begin.replace(
-      'getDirectionalLightInfo( directionalLight, directLight );',
-      `getDirectionalLightInfo( directionalLight, directLight );
-		#if UNROLLED_LOOP_INDEX == 0
-		directLight.color *= mix( 1.0, vHairShadow, HAIR_SHADOW_STRENGTH );
-		#endif`,
+    shader.fragmentShader = shader.fragmentShader.replace(
+      '#include <common>',
+      '#include <common>\nvarying float vHairShadow;',
     );
-    shader.fragmentShader = shader.fragmentShader
-      .replace(
-        '#include <common>',
-        `#include <common>\nvarying float vHairShadow;\n#define HAIR_SHADOW_STRENGTH ${HAIR_SHADOW_STRENGTH.toFixed(2)}`,
-      )
-      .replace('#include <lights_fragment_begin>', lights);
+    // the key light is the scene's first directional light (viewer.ts adds it first)
+    patchHairShadowReceiver(shader, { perVertex: 'vHairShadow', inMap: true });
   };
   return material;
 }
-
-/** How much of the key light the hair's shadow takes away (1 = all of it). */
-const HAIR_SHADOW_STRENGTH = 0.85;
 
 /** Sets the hair's shadow on a head made by createHeadMesh: one transmittance per vertex
  *  (protocol.ts HairLightingArrays.head); ignored when the count does not match. */
