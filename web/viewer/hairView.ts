@@ -20,6 +20,7 @@ import {
   type StrandMaterial,
   setHairLook,
 } from './strandMaterial';
+import { updateStrandPositions } from './strandPositions';
 import type { Viewer } from './viewer';
 
 export type ActiveQuality = 'fast' | 'high';
@@ -82,6 +83,20 @@ export class HairView {
       });
     }
     this.viewer.setHair(hair);
+  }
+
+  /** Moves the strands on screen to `strands.points` (a motion frame: the same strand layout as
+   *  the hair shown, new points) without rebuilding: the position and tangent attributes are
+   *  written in place (strandPositions.ts), colours and lighting stay. False when the hair shown
+   *  is not strands of this layout (cards, another groom): call show instead. */
+  showPositions(strands: StrandArrays): boolean {
+    const c = this.current;
+    if (!c || this.cardsShown) return false;
+    if (!updateStrandPositions(this.object, strands.points, strands.strandStart)) return false;
+    this.current = { ...c, strands };
+    this.domDirty = this.dom !== null && this.object instanceof THREE.Mesh;
+    this.viewer.requestRender();
+    return true;
   }
 
   /** The drawing path: rebuilds the shown hair when it changes. */
