@@ -413,6 +413,52 @@ void StrandMotion::init(const MotionInput& in) {
   });
 }
 
+Eigen::Vector3f placeFollowerPoint(Eigen::Vector3f q, const Eigen::Vector3f* prev, float length,
+                                   const HeadPose& pose, const HeadDistance* head,
+                                   const HeadDistance* body, float margin) {
+  // the groomed segment length, from the root outward (follow-the-leader): a follower longer or
+  // shorter than its guide keeps its own lengths
+  auto relength = [&] {
+    if (!prev) return;
+    const Eigen::Vector3f step = q - *prev;
+    const float l = step.norm();
+    if (l > 1e-12f) q = *prev + step * (length / l);
+  };
+  relength();
+  if (!head && !body) return q;
+  auto toLocal = [&](const Eigen::Vector3f& w) {
+    return Eigen::Vector3f(pose.rotation.transpose() * (w - pose.translation));
+  };
+  auto inside = [&](const Eigen::Vector3f& local) {
+    for (const HeadDistance* c : {head, body})
+      if (c && c->distanceAtLeast(local.x(), local.y(), local.z()) < margin) return true;
+    return false;
+  };
+  Eigen::Vector3f local = toLocal(q);
+  if (!inside(local)) return q;
+  const Eigen::Vector3f before = local;
+  keepOutside(head, body, local.data(), margin);
+  const Eigen::Vector3f pushed = pose.apply(local);
+  q = pushed;
+  if (!prev) return q;
+  // Back to the groomed length along the step from prev. Where prev stands off the surface and
+  // the step points into it, that takes the point in again: the step turns toward the push's
+  // direction (out of the surface) until its end is outside, at the groomed length.
+  const Eigen::Vector3f out = pose.rotation * (local - before);
+  const float outLen = out.norm();
+  Eigen::Vector3f d = pushed - *prev;
+  if (d.norm() <= 1e-12f) d = out;
+  if (d.norm() <= 1e-12f) return q;
+  d.normalize();
+  const Eigen::Vector3f n = outLen > 1e-12f ? Eigen::Vector3f(out / outLen) : d;
+  for (float t : {0.0f, 0.25f, 0.5f, 1.0f, 2.0f, 4.0f, 16.0f}) {
+    const Eigen::Vector3f dir = (d + t * n).normalized();
+    const Eigen::Vector3f c = *prev + length * dir;
+    if (!inside(toLocal(c))) return c;
+  }
+  return pushed;  // outside, off its length where the head is in the way
+}
+
 void StrandMotion::step() {
   sim_.step();
   update();
@@ -446,28 +492,9 @@ void StrandMotion::update() {
           const float* d = disp_.data() + (size_t(g) * G + j) * 3;
           q += (1 - w) * Eigen::Map<const Eigen::Vector3f>(d) +
                w * Eigen::Map<const Eigen::Vector3f>(d + 3);
-          // the groomed segment length, from the root outward (follow-the-leader): a follower
-          // longer or shorter than its guide keeps its own lengths
-          if (p > start_[s]) {
-            const Eigen::Vector3f step = q - prevOut;
-            const float l = step.norm();
-            if (l > 1e-12f) q = prevOut + step * ((r - prevRest).norm() / l);
-          }
-          if (near_[p]) {
-            Eigen::Vector3f local = pose.rotation.transpose() * (q - pose.translation);
-            const Eigen::Vector3f before = local;
-            keepOutside(head_, body_, local.data(), margin_);
-            if (local != before) {
-              q = pose.apply(local);
-              // back to the groomed length along the pushed direction (a point pushed out
-              // of the surface leaves it no closer than the push put it, to first order)
-              if (p > start_[s]) {
-                const Eigen::Vector3f step = q - prevOut;
-                const float l = step.norm();
-                if (l > 1e-12f) q = prevOut + step * ((r - prevRest).norm() / l);
-              }
-            }
-          }
+          const bool first = p == start_[s];
+          q = placeFollowerPoint(q, first ? nullptr : &prevOut, (r - prevRest).norm(), pose,
+                                 near_[p] ? head_ : nullptr, near_[p] ? body_ : nullptr, margin_);
         }
         Eigen::Map<Eigen::Vector3f>(out_.data() + 3 * p) = q;
         prevOut = q;

@@ -94,6 +94,13 @@ class HairSim {
 // Pushes p (head frame) out of the head and the body (either may be null) to `margin`.
 void keepOutside(const HeadDistance* head, const HeadDistance* body, float p[3], float margin);
 
+// A follower's point placed (StrandMotion's update): q, put back at `length` from `prev` (the
+// strand's point before, already placed; null for a root), then kept out of the head and body
+// (head frame by `pose`; both null: not checked) at `margin`, ending outside.
+Eigen::Vector3f placeFollowerPoint(Eigen::Vector3f q, const Eigen::Vector3f* prev, float length,
+                                   const HeadPose& pose, const HeadDistance* head,
+                                   const HeadDistance* body, float margin);
+
 // The strands that are not simulated follow their guides: each is bound once to the guide whose
 // root is nearest its own (brute force over the guides) and its point i is its groomed point
 // carried by the head plus guide point j's displacement from its own carried groom (j = i scaled

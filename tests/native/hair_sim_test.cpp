@@ -253,6 +253,24 @@ TEST(HairSimMotion, FollowersStayOutsideHeadAndBodyAndTiesStayGathered) {
   }
 }
 
+// A follower point whose guide carried it into the head, the point before it 1 cm out and the
+// groomed segment longer than the gap (the Nod pitched the head into a braid's strands): put back
+// at the groomed length along the step, it lands inside again; it must end outside.
+TEST(HairSimMotion, FollowerPointPushedOutStaysOutAfterItsLengthIsRestored) {
+  SimHead f;
+  const HeadPose pose;
+  const Eigen::Vector3f prev(0, 0.11f, 0);
+  for (float length : {0.005f, 0.01f, 0.03f, 0.05f}) {
+    const Eigen::Vector3f q = placeFollowerPoint(Eigen::Vector3f(0.003f, 0.095f, 0.0f), &prev,
+                                                 length, pose, &f.head, nullptr, 0.002f);
+    EXPECT_GE(f.head.distance(q.x(), q.y(), q.z()), 0.001f) << length;
+    std::printf("length %.3f: placed %.4f from the point before, %.4f outside\n", length,
+                (q - prev).norm(), f.head.distance(q.x(), q.y(), q.z()));
+    // at its groomed length (the step turned out of the head)
+    EXPECT_NEAR((q - prev).norm(), length, 1e-5f) << length;
+  }
+}
+
 TEST(HairSimMotion, SettleHoldsTheGroomFor5Seconds) {
   SimHead f;
   const VarGroom v = simVarGroom(200);
