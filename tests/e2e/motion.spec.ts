@@ -53,7 +53,7 @@ async function playHeadTurn(page: Page, until: number, strands: number): Promise
   await motionFrame(page, until);
   const m = await page.evaluate(() => window.hairsketch.motion());
   console.log(
-    `motion at ${strands} strands: ${m.fps.toFixed(1)} frames per second drawn (frame ${m.frame}; last frame: worker ${m.workerMs.toFixed(0)} ms, geometry ${m.buildMs.toFixed(0)} ms)`,
+    `motion at ${strands} strands: ${m.fps.toFixed(1)} frames per second drawn (frame ${m.frame}; last frame: worker ${m.workerMs.toFixed(0)} ms, geometry ${m.buildMs.toFixed(0)} ms; ${m.rebuilds} frames rebuilt in full)`,
   );
 }
 

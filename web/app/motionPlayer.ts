@@ -1,9 +1,12 @@
 // Plays a motion over the hair on screen: the worker simulates (protocol.ts motionStart /
 // motionStep / motionStop), each frame it sends is drawn as the hair and moves the head and body
 // meshes by the head's pose. Frames are asked for at 24 per second of wall time (several at once
-// when drawing falls behind, at most MAX_CATCH_UP). Stop shows the groom's result again, the very
-// arrays it was (bit for bit); an edit that changes the hair, or new hair from the solver, stops
-// the motion first.
+// when drawing falls behind, at most MAX_CATCH_UP), PIPELINE requests ahead so the worker steps
+// the next frame while this thread draws the current one. A frame with the strands' layout moves
+// the shown geometry's points (HairView.showPositions) instead of rebuilding it, and its array
+// goes back to the worker for a later frame (transferred both ways). Stop shows the groom's
+// result again, the very arrays it was (bit for bit); an edit that changes the hair, or new hair
+// from the solver, stops the motion first.
 import * as THREE from 'three';
 import type { Editor } from '../editor/editor';
 import type { StrandArrays } from '../model/hairArrays';
@@ -14,6 +17,8 @@ import type { HairView } from '../viewer/hairView';
 import type { Viewer } from '../viewer/viewer';
 
 const MAX_CATCH_UP = 4;
+/** Requests the worker may be working on at once. */
+const PIPELINE = 2;
 
 export interface MotionPlayerDeps {
   client: SolverClient;
@@ -36,15 +41,22 @@ export class MotionPlayer {
   private drawnStrands: StrandArrays | null = null;
   private startTime = 0;
   private frameNo = 0;
-  private waiting = false;
+  /** Requests sent and not yet answered, and when each was sent (oldest first). */
+  private sent: number[] = [];
+  /** The frame the last request sent will answer with. */
+  private requested = 0;
+  /** Waiting for frame 0 of this play (frames of a motion stopped before are dropped). */
+  private starting = false;
+  /** Frame arrays drawn and replaced, to give back to the worker with the next request. */
+  private spare: Float32Array[] = [];
   private timer: ReturnType<typeof setTimeout> | null = null;
   private saved = new Map<THREE.Object3D, THREE.Matrix4>();
   /** Frames drawn and when the first was drawn (frames per second while playing). */
   private drawnCount = 0;
   private firstDrawn = 0;
-  private asked = 0;
-  /** The last frame's wait for the worker and its geometry build on this thread (ms). */
-  readonly times = { workerMs: 0, buildMs: 0 };
+  /** The last frame's wait for the worker and its geometry update on this thread (ms), and the
+   *  frames of this play drawn by rebuilding the geometry. */
+  readonly times = { workerMs: 0, buildMs: 0, rebuilds: 0 };
 
   constructor(private readonly d: MotionPlayerDeps) {
     d.client.onMotion = (msg) => {
@@ -54,6 +66,8 @@ export class MotionPlayer {
         d.say(`Motion stopped: ${msg.message}`);
         return;
       }
+      if (this.starting && msg.frame !== 0) return; // a frame of the motion played before
+      this.starting = false;
       this.draw(msg.frame, msg.points, msg.pose);
     };
     d.editor.listen((c) => {
@@ -108,9 +122,12 @@ export class MotionPlayer {
     this.drawnStrands = base.strands;
     this.frameNo = 0;
     this.drawnCount = 0;
-    this.waiting = true;
+    this.times.rebuilds = 0;
     this.startTime = performance.now();
-    this.asked = this.startTime;
+    this.sent = [this.startTime];
+    this.requested = 0;
+    this.starting = true;
+    this.spare = [];
     // drawn at interactive detail while it moves, in full once it stops
     this.d.viewer.hold('motion', true);
     this.setStatus();
@@ -135,6 +152,8 @@ export class MotionPlayer {
     const base = this.base;
     this.base = null;
     this.drawnStrands = null;
+    this.sent = [];
+    this.spare = [];
     // the groom again, as it was shown (the same arrays); hair newer than it is already shown
     if (base && this.d.shown() === base)
       this.d.hairView.show(base.strands, base.lighting, undefined, true, base.attributes ?? null);
@@ -153,13 +172,21 @@ export class MotionPlayer {
       this.stop();
       return;
     }
-    this.waiting = false;
     this.frameNo = frame;
     const b0 = performance.now();
-    this.times.workerMs = b0 - this.asked;
+    this.times.workerMs = b0 - (this.sent.shift() ?? b0);
     const strands: StrandArrays = { ...base.strands, points };
+    const before = this.drawnStrands?.points;
     this.drawnStrands = strands;
-    this.d.hairView.show(strands, base.lighting, undefined, false, null);
+    // the first frame is built in full (the groom's own arrays are never written), later ones
+    // move its points
+    if (this.drawnCount === 0 || !this.d.hairView.showPositions(strands)) {
+      this.d.hairView.show(strands, base.lighting, undefined, false, null);
+      this.times.rebuilds++;
+    }
+    // the frame drawn before is no longer viewed by the geometry (lines took the new array,
+    // strips copied it): the worker fills it again
+    if (before && before !== base.strands.points && before !== points) this.spare.push(before);
     this.times.buildMs = performance.now() - b0;
     const m = new THREE.Matrix4().set(
       pose[0],
@@ -198,25 +225,34 @@ export class MotionPlayer {
     this.schedule();
   }
 
-  /** Asks for the frames due by now (wall time at 24 per second), or waits until one is. */
+  /** Keeps PIPELINE requests in flight: each asks for the frames due by now (wall time at 24
+   *  per second; at least the next one, so it is ready when due), or waits until one is. */
   private schedule(): void {
-    if (!this.motion || this.waiting) return;
-    const due = Math.floor(((performance.now() - this.startTime) / 1000) * MOTION_FRAME_RATE);
-    const behind = due - this.frameNo;
-    if (behind <= 0) {
-      const at = this.startTime + ((this.frameNo + 1) * 1000) / MOTION_FRAME_RATE;
-      this.timer = setTimeout(
-        () => {
-          this.timer = null;
-          this.schedule();
-        },
-        Math.max(1, at - performance.now()),
-      );
-      return;
+    while (this.motion && this.sent.length < PIPELINE && this.timer === null) {
+      const due = Math.floor(((performance.now() - this.startTime) / 1000) * MOTION_FRAME_RATE);
+      if (this.requested > due) {
+        // a frame ahead already asked for: ask again when the last one asked is due
+        const at = this.startTime + (this.requested * 1000) / MOTION_FRAME_RATE;
+        this.timer = setTimeout(
+          () => {
+            this.timer = null;
+            this.schedule();
+          },
+          Math.max(1, at - performance.now()),
+        );
+        return;
+      }
+      const frames = Math.min(MAX_CATCH_UP, Math.max(1, due - this.requested));
+      this.requested += frames;
+      this.sent.push(performance.now());
+      const recycle = this.spare;
+      this.spare = [];
+      this.d.client.motion({
+        type: 'motionStep',
+        frames,
+        ...(recycle.length > 0 ? { recycle } : {}),
+      });
     }
-    this.waiting = true;
-    this.asked = performance.now();
-    this.d.client.motion({ type: 'motionStep', frames: Math.min(MAX_CATCH_UP, behind) });
   }
 
   private setStatus(): void {

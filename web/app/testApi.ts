@@ -85,6 +85,8 @@ export interface HairsketchTestApi {
     fps: number;
     workerMs: number;
     buildMs: number;
+    /** Frames of this play drawn by rebuilding the geometry (the rest moved its points). */
+    rebuilds: number;
   };
   strands(): {
     points: number[];
@@ -192,7 +194,7 @@ export interface TestApiParts {
     playing: string | null;
     frame: number;
     fps: number;
-    times: { workerMs: number; buildMs: number };
+    times: { workerMs: number; buildMs: number; rebuilds: number };
   };
 }
 
@@ -283,6 +285,7 @@ export function installTestApi(app: TestApiParts): void {
       fps: app.motion?.fps ?? 0,
       workerMs: app.motion?.times.workerMs ?? 0,
       buildMs: app.motion?.times.buildMs ?? 0,
+      rebuilds: app.motion?.times.rebuilds ?? 0,
     }),
     strands() {
       const s = app.motion?.drawn ?? hair.strands;

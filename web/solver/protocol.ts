@@ -101,9 +101,11 @@ export type ToWorker =
       strands: StrandArrays; // points, strandStart, tailCurves (per strand, optional) as above
     }
   | {
-      /** Advances the motion `frames` frames (1/24 s each) and answers with the last one. */
+      /** Advances the motion `frames` frames (1/24 s each) and answers with the last one.
+       *  `recycle`: frame arrays the page is done with (transferred), refilled for later frames. */
       type: 'motionStep';
       frames: number;
+      recycle?: Float32Array[];
     }
   | { type: 'motionStop' };
 

@@ -229,7 +229,12 @@ export class SolverClient {
    *  worker is ready to take it. */
   motion(msg: Extract<ToWorker, { type: 'motionStart' | 'motionStep' | 'motionStop' }>): boolean {
     if (!this.worker || !this.ready) return false;
-    this.worker.postMessage(msg);
+    if (msg.type === 'motionStep' && msg.recycle)
+      this.worker.postMessage(
+        msg,
+        msg.recycle.map((a) => a.buffer as ArrayBuffer),
+      );
+    else this.worker.postMessage(msg);
     return true;
   }
 

@@ -1,5 +1,6 @@
 // The wasm side of a groom in motion (binding.cpp hs_sim_*): strands copied into the module,
-// stepped a frame (1/24 s) at a time over the engine's head (and body), read back as copies.
+// stepped a frame (1/24 s) at a time over the engine's head (and body), read back as copies
+// (into a caller's array of the right length when given: no allocation a frame).
 import type { HairSolverModule } from '../generated/hairsolver.mjs';
 import type { StrandArrays } from '../model/hairArrays';
 import {
@@ -12,8 +13,11 @@ import {
 import { check, withInputs, withScratch } from './wasmMemory';
 
 export interface MotionRun {
-  /** Frame 0 (the groom as given) before the first step, then one frame per call. */
-  step(): MotionFrame;
+  /** Frame 0 (the groom as given) before the first step, then one frame per call; the points
+   *  are written into `into` when it has their length (else a new array). */
+  step(into?: Float32Array): MotionFrame;
+  /** Advances like step without reading the frame (frames skipped when catching up). */
+  advance(): void;
   readonly guides: number;
   dispose(): void;
 }
@@ -66,9 +70,13 @@ export function createMotion(
   );
   let live = true;
   let started = false;
-  const read = (): MotionFrame => {
+  const read = (into?: Float32Array): MotionFrame => {
     const p = mod._hs_sim_points(handle) >> 2;
-    const points = mod.HEAPF32.slice(p, p + 3 * pointCount);
+    let points: Float32Array;
+    if (into && into.length === 3 * pointCount) {
+      into.set(mod.HEAPF32.subarray(p, p + 3 * pointCount));
+      points = into;
+    } else points = mod.HEAPF32.slice(p, p + 3 * pointCount);
     const pose = withScratch(mod, 48, (ptr) => {
       mod._hs_sim_pose(handle, ptr);
       return mod.HEAPF32.slice(ptr >> 2, (ptr >> 2) + 12);
@@ -77,11 +85,14 @@ export function createMotion(
   };
   return {
     guides: mod._hs_sim_guide_count(handle),
-    step(): MotionFrame {
+    step(into?: Float32Array): MotionFrame {
+      this.advance();
+      return read(into);
+    },
+    advance(): void {
       if (!live) throw new Error('motion: stepped after dispose');
       if (started) mod._hs_sim_step(handle);
       started = true;
-      return read();
     },
     dispose(): void {
       if (!live) return;

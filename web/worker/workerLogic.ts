@@ -153,6 +153,8 @@ export class WorkerLogic {
 
   /** The motion playing (motionStart .. motionStop). */
   private motion: MotionRun | null = null;
+  /** Frame arrays the page has drawn and given back (motionStep.recycle). */
+  private motionSpare: Float32Array[] = [];
 
   private handleMotion(msg: MotionMsg): void {
     const fail = (message: string): void => {
@@ -164,11 +166,13 @@ export class WorkerLogic {
       if (msg.type === 'motionStop') {
         this.motion?.dispose();
         this.motion = null;
+        this.motionSpare = [];
         return;
       }
       if (msg.type === 'motionStart') {
         this.motion?.dispose();
         this.motion = null;
+        this.motionSpare = [];
         if (!this.initialised) fail('the solver is not initialised');
         else if (!this.engine.startMotion) fail('this engine cannot play motions');
         else {
@@ -181,10 +185,12 @@ export class WorkerLogic {
         }
         return;
       }
+      if (msg.recycle) this.motionSpare.push(...msg.recycle);
       if (!this.motion) return; // stopped meanwhile
-      let frame = this.motion.step();
-      for (let k = 1; k < Math.max(1, Math.floor(msg.frames)); k++) frame = this.motion.step();
-      this.post({ type: 'motionFrame', ...frame });
+      for (let k = 1; k < Math.max(1, Math.floor(msg.frames)); k++) this.motion.advance();
+      // the points go into an array the page gave back (transferred both ways: no allocation
+      // a frame once a few are in circulation)
+      this.post({ type: 'motionFrame', ...this.motion.step(this.motionSpare.pop()) });
     } catch (e) {
       fail(errorMessage(e));
     }
