@@ -15,6 +15,7 @@
 // BENCH_DIST=<dir> serves another build (vite build --outDir <dir>) instead of dist/.
 // BENCH_QUALITY=fast|high sets the Quality (else the app's Auto) and writes
 // bench-results/browser-<quality>.{json,md}.
+// BENCH_LABEL=<label> appends -<label> to that name (e.g. before/after runs of one change).
 // BENCH_TOOL=Braid draws the strokes with the Braid tool (its previews solve the braid being
 // drawn) and writes bench-results/browser-braid.{json,md}.
 import { type ChildProcess, spawn } from 'node:child_process';
@@ -349,7 +350,8 @@ async function main(): Promise<void> {
       );
   console.log(`\n${out.join('\n')}`);
   const name = TOOL === 'Braid' ? 'browser-braid' : 'browser';
-  writeBenchResults(QUALITY ? `${name}-${QUALITY}` : name, {
+  const label = process.env.BENCH_LABEL ? `-${process.env.BENCH_LABEL}` : '';
+  writeBenchResults(`${QUALITY ? `${name}-${QUALITY}` : name}${label}`, {
     title: 'Browser: from a stroke to hair on screen, per grid and solver',
     script: 'scripts/bench-browser.ts',
     command: 'npm run bench:browser',
@@ -371,6 +373,7 @@ async function main(): Promise<void> {
       dense: DENSE,
       tool: TOOL,
       dist: process.env.BENCH_DIST ?? 'dist',
+      label: process.env.BENCH_LABEL ?? null,
     },
     results: rows,
     table: out.join('\n'),

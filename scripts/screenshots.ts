@@ -3,7 +3,7 @@
 // saves docs/screenshots/<preset>-front.png, -side.png and -back.png.
 //   npx tsx scripts/screenshots.ts [preset ...]     (default: every preset but `empty`)
 // SHOT_QUALITY=fast|high|auto picks the Quality setting (default: the app's Auto); SHOT_OUT=<dir>
-// writes elsewhere; HAIRSKETCH_DIST=<dir> draws with another build (vite build --outDir <dir>).
+// writes elsewhere; SHOT_SIZE=WxH another size; HAIRSKETCH_DIST=<dir> draws with another build (vite build --outDir <dir>).
 import { mkdirSync, writeFileSync } from 'node:fs';
 import { isQualitySetting } from '../web/app/quality';
 import { presetSession } from '../web/cli/presetSession';
@@ -13,8 +13,8 @@ import { PRESET_NAMES, type PresetName } from '../web/model/presets';
 import { VIEW_NAMES } from '../web/viewer/namedViews';
 
 /** The pictures' size: the editor's view at 1280 x 800 (what the README has always shown). */
-const WIDTH = 1280;
-const HEIGHT = 651;
+/** SHOT_SIZE=WxH draws another size (e.g. small pictures for a montage). */
+const [WIDTH, HEIGHT] = (process.env.SHOT_SIZE ?? '1280x651').split('x').map(Number);
 
 async function main(): Promise<void> {
   const asked = process.argv.slice(2);
