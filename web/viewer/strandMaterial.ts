@@ -145,24 +145,14 @@ vec3 shadeStrand(vec3 T, vec3 P, float along, vec4 rnd, vec2 light) {
 const linesVertexShader = /* glsl */ `
 ${commonVertex}
 ${shading}
-uniform float strandWidth; // world units at the root
-uniform float tipWidth; // fraction of strandWidth at the tip
-uniform float viewportHeight; // pixels of the target being drawn
 varying vec3 vColor;
-varying float vFadeStart; // vCoverage: commonVertex's
+varying float vCut;
 void main() {
   vec4 world = modelMatrix * vec4(position, 1.0);
   vec3 T = normalize(mat3(modelMatrix) * tangent);
   vColor = shadeStrand(T, world.xyz, along, strandRandom, lighting);
   vAlong = along;
-  // a line is one pixel wide: its opacity is the strand's true coverage of that pixel (as the
-  // strips' width / drawn width), tapering to the tip
-  float dist = length(cameraPosition - world.xyz);
-  float pixel = 2.0 * dist / (projectionMatrix[1][1] * max(viewportHeight, 1.0));
-  if (projectionMatrix[3][3] > 0.5) pixel = 2.0 / (projectionMatrix[1][1] * max(viewportHeight, 1.0));
-  float width = strandWidth * mix(1.0, tipWidth, along);
-  vCoverage = min(1.0, width / pixel);
-  vFadeStart = fadeStartOf(strandRandom);
+  vCut = strandCut(strandRandom);
   gl_Position = projectionMatrix * viewMatrix * world;
 }
 `;
@@ -170,13 +160,10 @@ void main() {
 const linesFragmentShader = /* glsl */ `
 varying vec3 vColor;
 varying float vAlong;
-varying float vCoverage;
-varying float vFadeStart;
+varying float vCut;
 void main() {
-  // coverage times the tip's fade, blended unsorted without depth writes (as the strips)
-  float alpha = vCoverage * (1.0 - smoothstep(vFadeStart, 1.0, vAlong));
-  if (alpha < 0.004) discard;
-  gl_FragColor = vec4(vColor, alpha);
+  if (vAlong > vCut) discard;
+  gl_FragColor = vec4(vColor, 1.0);
   #include <tonemapping_fragment>
   #include <colorspace_fragment>
 }
@@ -340,16 +327,16 @@ export function createStrandMaterial(options: StrandMaterialOptions = {}): Stran
   if (strips) {
     material.side = THREE.DoubleSide;
     material.alphaToCoverage = !!options.alphaToCoverage;
+    if (!options.alphaToCoverage) {
+      material.transparent = true;
+      material.depthWrite = false;
+    }
+    // the strip's width depends on the pixel size of the target being drawn
+    material.onBeforeRender = (renderer) => {
+      renderer.getCurrentViewport(viewport);
+      uniforms.viewportHeight.value = viewport.w;
+    };
   }
-  if (!strips || !options.alphaToCoverage) {
-    material.transparent = true;
-    material.depthWrite = false;
-  }
-  // the strip's width and the line's coverage depend on the pixel size of the target drawn
-  material.onBeforeRender = (renderer) => {
-    renderer.getCurrentViewport(viewport);
-    uniforms.viewportHeight.value = viewport.w;
-  };
   return material as StrandMaterial;
 }
 
