@@ -310,7 +310,7 @@ export function startApp(): void {
     statusElement: byId('status'),
     changed: () => motionControls.refresh(),
   });
-  const motionControls = buildMotionControls(byId('toolbar'), {
+  const motionControls = buildMotionControls(toolbar.moreElement, {
     play: (m) => motion.play(m),
     stop: () => motion.stop(),
     playing: () => motion.playing,

@@ -1,4 +1,4 @@
-// The motion controls in the toolbar: a labelled "Motion" select (Settle, Head turn, Nod, Wind)
+// The motion controls on the toolbar's display row: a labelled "Motion" select (Settle, Head turn, Nod, Wind)
 // and a "Play" button that reads "Stop" while a motion plays (app/motionPlayer.ts plays it).
 import { MOTION_LABELS, MOTIONS, type MotionName } from '../model/motion';
 
@@ -16,7 +16,7 @@ export interface MotionControls {
 }
 
 export function buildMotionControls(
-  toolbar: HTMLElement,
+  row: HTMLElement,
   actions: MotionControlsActions,
 ): MotionControls {
   const group = document.createElement('span');
@@ -59,7 +59,9 @@ export function buildMotionControls(
     refresh();
   });
   group.append(label, button);
-  toolbar.append(group);
+  // on the display toggles' row, before them, at their height: the toolbar gains no row (the 3D
+  // view keeps its size)
+  row.insertBefore(group, row.querySelector(':scope > .display-toggles'));
   refresh();
   return { refresh, selected: () => select.value as MotionName };
 }
