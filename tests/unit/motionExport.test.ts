@@ -1,6 +1,6 @@
 // The motion export: `hairsketch grow --motion` writes a .usda whose hair points and head
 // transform are time samples (usd-core reads them: tests/usd/check_motion.py; Blender plays them:
-// tests/usd/check_blender_motion.py), whose first frame
+// tests/usd/check_blender.py --motion), whose first frame
 // is the static export's hair; the app's pipeline (growSessionHair then simulateMotion, as the
 // export worker runs it) gives the same groom bytes; bad --motion / --frames are refused.
 import { execFileSync } from 'node:child_process';
@@ -26,7 +26,7 @@ const { main } = await bundledCli();
 const PYTHON = fileURLToPath(new URL('../../build/usd-venv/bin/python', import.meta.url));
 const CHECK = fileURLToPath(new URL('../usd/check_motion.py', import.meta.url));
 const BPY = fileURLToPath(new URL('../../build/bpy-venv/bin/python', import.meta.url));
-const CHECK_BLENDER = fileURLToPath(new URL('../usd/check_blender_motion.py', import.meta.url));
+const CHECK_BLENDER = fileURLToPath(new URL('../usd/check_blender.py', import.meta.url));
 const wasmPath = fileURLToPath(new URL('../../web/generated/hairsolver.wasm', import.meta.url));
 
 const head = Head.builtin();
@@ -89,7 +89,9 @@ describe('motion export', () => {
     expect(r.moved).toBeGreaterThan(0.01);
     // Blender plays it: frames 0..3 at 24 fps, the hair's points and the head's turn animated
     const b = JSON.parse(
-      execFileSync(BPY, [CHECK_BLENDER, motionFile], { stdio: ['ignore', 'pipe', 'ignore'] })
+      execFileSync(BPY, [CHECK_BLENDER, '--motion', motionFile], {
+        stdio: ['ignore', 'pipe', 'ignore'],
+      })
         .toString()
         .trim()
         .split('\n')
