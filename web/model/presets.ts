@@ -462,8 +462,56 @@ const BUN_SWEEPS: SweepSpec[] = [
 // editing makes it), and fig8's strokes combing each half of the head to its braid.
 const PIGTAIL_SPEC = { base: [74, 115] as [number, number], out: 0.3, fall: 2.4 };
 
+/** What a preset's builder is handed: the head's context, a way to add a curve (a null, a curve
+ *  that found no place on the head, is skipped), the next curve's id and a way to add sweeps. */
+interface PresetBuild {
+  ctx: PresetContext;
+  push: (c: StyleCurve | null) => void;
+  nextId: () => string;
+  sweeps: (list: SweepSpec[]) => void;
+  curves: StyleCurve[];
+}
+
+/** Each preset's curves, by name (`empty` has none). */
+const PRESET_BUILDERS: Record<PresetName, (b: PresetBuild) => void> = {
+  empty: () => {},
+  default: ({ sweeps }) => sweeps(DEFAULT_SWEEPS),
+  curly: ({ sweeps }) => sweeps(DEFAULT_SWEEPS),
+  fig6: ({ sweeps }) => sweeps(FIG6_SWEEPS),
+  fig7: ({ ctx, push, nextId, sweeps }) => {
+    push(dividingFrom(ctx, FIG7_PARTING, nextId()));
+    sweeps(FIG7_SWEEPS);
+  },
+  fig8: ({ ctx, push, nextId, sweeps }) => {
+    for (const p of FIG8_PONYTAILS) push(ponytailFrom(ctx, p, nextId()));
+    sweeps(FIG8_SWEEPS);
+  },
+  fig1: ({ ctx, push, nextId, sweeps }) => {
+    push(ponytailFrom(ctx, FIG1_PONYTAIL, nextId()));
+    for (const path of FIG1_PARTINGS) push(dividingFrom(ctx, path, nextId()));
+    sweeps(FIG1_SWEEPS);
+  },
+  bob: ({ sweeps }) => sweeps(BOB_SWEEPS),
+  long: ({ ctx, push, nextId, sweeps }) => {
+    push(dividingFrom(ctx, LONG_PARTING, nextId()));
+    sweeps(LONG_SWEEPS);
+  },
+  braid: ({ ctx, push, nextId, sweeps }) => {
+    push(braidFrom(ctx, BRAID_SPEC, nextId()));
+    sweeps(BRAID_SWEEPS);
+  },
+  bun: ({ ctx, push, nextId, sweeps }) => {
+    push(bunFrom(ctx, BUN_CENTRE, 16, nextId()));
+    sweeps(BUN_SWEEPS);
+  },
+  'pigtail-braids': ({ ctx, curves, sweeps }) => {
+    const left = braidFrom(ctx, PIGTAIL_SPEC, 'c1');
+    if (left) curves.push({ ...left, mirror: 'c2' }, mirrorCurve(left, 'c2', 'c1'));
+    sweeps(FIG8_SWEEPS);
+  },
+};
+
 export function presetCurves(name: PresetName, ctx: PresetContext): StyleCurve[] {
-  if (name === 'empty') return [];
   const curves: StyleCurve[] = [];
   const nextId = () => `c${curves.length + 1}`;
   const push = (c: StyleCurve | null) => {
@@ -472,51 +520,7 @@ export function presetCurves(name: PresetName, ctx: PresetContext): StyleCurve[]
   const sweeps = (list: SweepSpec[]) => {
     for (const spec of list) push(streamFrom(ctx, spec, nextId()));
   };
-  switch (name) {
-    case 'default':
-    case 'curly':
-      sweeps(DEFAULT_SWEEPS);
-      break;
-    case 'fig6':
-      sweeps(FIG6_SWEEPS);
-      break;
-    case 'fig7':
-      push(dividingFrom(ctx, FIG7_PARTING, nextId()));
-      sweeps(FIG7_SWEEPS);
-      break;
-    case 'fig8':
-      for (const p of FIG8_PONYTAILS) push(ponytailFrom(ctx, p, nextId()));
-      sweeps(FIG8_SWEEPS);
-      break;
-    case 'fig1':
-      push(ponytailFrom(ctx, FIG1_PONYTAIL, nextId()));
-      for (const path of FIG1_PARTINGS) push(dividingFrom(ctx, path, nextId()));
-      sweeps(FIG1_SWEEPS);
-      break;
-    case 'bob':
-      sweeps(BOB_SWEEPS);
-      break;
-    case 'long':
-      push(dividingFrom(ctx, LONG_PARTING, nextId()));
-      sweeps(LONG_SWEEPS);
-      break;
-    case 'braid':
-      push(braidFrom(ctx, BRAID_SPEC, nextId()));
-      sweeps(BRAID_SWEEPS);
-      break;
-    case 'bun':
-      push(bunFrom(ctx, BUN_CENTRE, 16, nextId()));
-      sweeps(BUN_SWEEPS);
-      break;
-    case 'pigtail-braids': {
-      const left = braidFrom(ctx, PIGTAIL_SPEC, 'c1');
-      if (left) {
-        curves.push({ ...left, mirror: 'c2' }, mirrorCurve(left, 'c2', 'c1'));
-      }
-      sweeps(FIG8_SWEEPS);
-      break;
-    }
-  }
+  PRESET_BUILDERS[name]({ ctx, push, nextId, sweeps, curves });
   return curves;
 }
 
