@@ -57,12 +57,7 @@ export function pointAttributes(
   const random = new Uint8Array(4 * pointCount);
   const light = new Uint8Array(2 * pointCount);
   const seedMix = Math.imul(colorSeed >>> 0, 0x9e3779b1);
-  let minX = Infinity;
-  let minY = Infinity;
-  let minZ = Infinity;
-  let maxX = -Infinity;
-  let maxY = -Infinity;
-  let maxZ = -Infinity;
+  const bounds = writeTangents(points, strandStart, tangent, 1);
   for (let s = 0; s < strands; s++) {
     const a = strandStart[s];
     const b = strandStart[s + 1];
@@ -75,6 +70,45 @@ export function pointAttributes(
     const r2 = (h >>> 8) & 255; // length appearance
     const r3 = h2 >>> 24; // highlight noise
     const inv = n > 1 ? 255 / (n - 1) : 0;
+    for (let i = a; i < b; i++) {
+      along[i] = Math.round((i - a) * inv);
+      random[4 * i] = r0;
+      random[4 * i + 1] = r1;
+      random[4 * i + 2] = r2;
+      random[4 * i + 3] = r3;
+      if (useLight) {
+        light[2 * i] = Math.round(255 * clamp01(lighting[2 * i]));
+        light[2 * i + 1] = Math.round(255 * clamp01(lighting[2 * i + 1]));
+      } else {
+        light[2 * i] = 255;
+        light[2 * i + 1] = 255;
+      }
+    }
+  }
+  const box = pointCount > 0 ? new Float32Array(bounds) : new Float32Array(0);
+  return { pointCount, tangent, along, random, light, box };
+}
+
+const boxScratch = new Float64Array(6);
+
+/** Writes the unit tangents (central differences, one-sided at the ends, Int8 ÷ 127), `per`
+ *  copies a point (lines 1, strips 2); returns the points' box, min xyz then max xyz (a scratch
+ *  array, overwritten by the next call). */
+export function writeTangents(
+  points: Float32Array,
+  strandStart: Uint32Array,
+  tangent: Int8Array,
+  per: number,
+): Float64Array {
+  let minX = Infinity;
+  let minY = Infinity;
+  let minZ = Infinity;
+  let maxX = -Infinity;
+  let maxY = -Infinity;
+  let maxZ = -Infinity;
+  for (let s = 0; s + 1 < strandStart.length; s++) {
+    const a = strandStart[s];
+    const b = strandStart[s + 1];
     let tx = 0;
     let ty = 127;
     let tz = 0;
@@ -100,26 +134,24 @@ export function pointAttributes(
         ty = Math.round(dy * k);
         tz = Math.round(dz * k);
       }
-      tangent[3 * i] = tx;
-      tangent[3 * i + 1] = ty;
-      tangent[3 * i + 2] = tz;
-      along[i] = Math.round((i - a) * inv);
-      random[4 * i] = r0;
-      random[4 * i + 1] = r1;
-      random[4 * i + 2] = r2;
-      random[4 * i + 3] = r3;
-      if (useLight) {
-        light[2 * i] = Math.round(255 * clamp01(lighting[2 * i]));
-        light[2 * i + 1] = Math.round(255 * clamp01(lighting[2 * i + 1]));
-      } else {
-        light[2 * i] = 255;
-        light[2 * i + 1] = 255;
+      const o = 3 * per * i;
+      tangent[o] = tx;
+      tangent[o + 1] = ty;
+      tangent[o + 2] = tz;
+      if (per === 2) {
+        tangent[o + 3] = tx;
+        tangent[o + 4] = ty;
+        tangent[o + 5] = tz;
       }
     }
   }
-  const box =
-    pointCount > 0 ? new Float32Array([minX, minY, minZ, maxX, maxY, maxZ]) : new Float32Array(0);
-  return { pointCount, tangent, along, random, light, box };
+  boxScratch[0] = minX;
+  boxScratch[1] = minY;
+  boxScratch[2] = minZ;
+  boxScratch[3] = maxX;
+  boxScratch[4] = maxY;
+  boxScratch[5] = maxZ;
+  return boxScratch;
 }
 
 /** The index of every segment in level-of-detail order (strands interleaved with stride

@@ -3,6 +3,7 @@
 // `along` and index; only `position` and the `tangent` derived from it (the strand material
 // lights and, for strips, widens along it) are written and marked for upload, with the bounds.
 import * as THREE from 'three';
+import { writeTangents } from './strandAttributes';
 
 /** Writes `points` into the hair object's geometry when it was built for strands of this layout
  *  (`strandStart`): lines (one vertex a point) or strips (two). Lines take `points` as their
@@ -57,68 +58,4 @@ export function updateStrandPositions(
     s.radius = 0.5 * b.min.distanceTo(b.max);
   }
   return true;
-}
-
-const boxScratch = new Float64Array(6);
-
-/** The unit tangents as strandAttributes.ts pointAttributes writes them (central differences,
- *  one-sided at the ends, Int8 ÷ 127), `per` copies a point; returns the points' box. */
-function writeTangents(
-  points: Float32Array,
-  strandStart: Uint32Array,
-  tangent: Int8Array,
-  per: number,
-): Float64Array {
-  let minX = Infinity;
-  let minY = Infinity;
-  let minZ = Infinity;
-  let maxX = -Infinity;
-  let maxY = -Infinity;
-  let maxZ = -Infinity;
-  for (let s = 0; s + 1 < strandStart.length; s++) {
-    const a = strandStart[s];
-    const b = strandStart[s + 1];
-    let tx = 0;
-    let ty = 127;
-    let tz = 0;
-    for (let i = a; i < b; i++) {
-      const px = points[3 * i];
-      const py = points[3 * i + 1];
-      const pz = points[3 * i + 2];
-      if (px < minX) minX = px;
-      if (px > maxX) maxX = px;
-      if (py < minY) minY = py;
-      if (py > maxY) maxY = py;
-      if (pz < minZ) minZ = pz;
-      if (pz > maxZ) maxZ = pz;
-      const i0 = i > a ? i - 1 : i;
-      const i1 = i < b - 1 ? i + 1 : i;
-      const dx = points[3 * i1] - points[3 * i0];
-      const dy = points[3 * i1 + 1] - points[3 * i0 + 1];
-      const dz = points[3 * i1 + 2] - points[3 * i0 + 2];
-      const l = Math.sqrt(dx * dx + dy * dy + dz * dz);
-      if (l > 1e-12) {
-        const k = 127 / l;
-        tx = Math.round(dx * k);
-        ty = Math.round(dy * k);
-        tz = Math.round(dz * k);
-      }
-      const o = 3 * per * i;
-      tangent[o] = tx;
-      tangent[o + 1] = ty;
-      tangent[o + 2] = tz;
-      if (per === 2) {
-        tangent[o + 3] = tx;
-        tangent[o + 4] = ty;
-        tangent[o + 5] = tz;
-      }
-    }
-  }
-  boxScratch[0] = minX;
-  boxScratch[1] = minY;
-  boxScratch[2] = minZ;
-  boxScratch[3] = maxX;
-  boxScratch[4] = maxY;
-  boxScratch[5] = maxZ;
-  return boxScratch;
 }
