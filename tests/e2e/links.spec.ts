@@ -122,7 +122,6 @@ test('a deflate bomb link (1 GiB of zeros) is refused and the preset loads', asy
       ms: await page.evaluate(() => (window as { refusedAfter?: number }).refusedAfter ?? 0),
     };
   };
-  const small = await refusal('#s=2.AAAA');
   // as long as the bomb, refused from its length prefix without inflating anything: the cost
   // of so long an address, to set the bomb's time against
   const junk = await refusal(`#s=2.${'A'.repeat(data.length)}`);
@@ -131,6 +130,6 @@ test('a deflate bomb link (1 GiB of zeros) is refused and the preset loads', asy
   expect(big.text).toContain('the session link is too large');
   console.log(
     `1 GiB zero bomb (${(data.length + 5).toLocaleString('en-US')} characters): refused ${big.ms.toFixed(0)} ms after DOMContentLoaded; ` +
-      `as many characters refused before inflating: ${junk.ms.toFixed(0)} ms; a 9-character damaged link: ${small.ms.toFixed(0)} ms`,
+      `as many characters refused before inflating: ${junk.ms.toFixed(0)} ms`,
   );
 });
