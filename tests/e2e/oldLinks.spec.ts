@@ -15,8 +15,11 @@ interface LinkFixture {
   hairHash: string;
 }
 const fixtures = JSON.parse(readFileSync('tests/fixtures/links.json', 'utf8')) as LinkFixture[];
+// Each session once, by its oldest link: tests/unit/linkFixtures.test.ts shows that every version
+// of a session's link opens to the very same session, and each fixture records the same hair.
+const oldest = fixtures.filter((f, i) => fixtures.findIndex((g) => g.name === f.name) === i);
 
-for (const f of fixtures)
+for (const f of oldest)
   test(`a version ${f.format} link (${f.name}) grows the hair it grew when it was made`, async ({
     page,
   }) => {

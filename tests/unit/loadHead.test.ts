@@ -506,9 +506,10 @@ describe('bad files are refused, saying why', () => {
 });
 
 // Load time and memory at scale, printed. The signed distance is checked on a coarse grid here
-// (banded equals full); its cost on the solver's 50k grid is measured by `npm run bench:head`.
+// (banded equals full); its cost on the solver's 50k grid, and a 1,000,000-triangle head, are
+// measured by `npm run bench:head`.
 describe('load time and memory of big heads', () => {
-  for (const rings of [158, 500]) {
+  for (const rings of [158]) {
     it(`a ${(4 * rings * rings).toLocaleString('en-US')}-triangle head in mm (binary STL)`, async () => {
       const mb = (n: number) => `${(n / 2 ** 20).toFixed(0)} MB`;
       const soup = exportAs(ellipsoidHead(rings), 100);

@@ -354,10 +354,8 @@ async function linkOf(b: Uint8Array): Promise<string> {
 
 describe('caps', () => {
   it('refuse deflate bombs while inflating, fast', async () => {
-    for (const [label, size] of [
-      ['1 GiB', 1 << 30],
-      ['100 MB', 100e6],
-    ] as const) {
+    // (tests/e2e/links.spec.ts opens a 1 GiB bomb in the app)
+    for (const [label, size] of [['100 MB', 100e6]] as const) {
       const bomb = await zeroBomb(size);
       for (const fragment of [`#s=${toBase64Url(bomb)}`, v2Fragment(bomb)]) {
         expect(fragment.length).toBeLessThan(MAX_LINK_CHARS); // the length cap lets it through
