@@ -15,7 +15,9 @@
 //   g - R * R0^T * g (R the head's rotation now, R0 at the start): zero while the head keeps its
 //   starting orientation, so the hair does not sag when the simulation starts.
 // Deterministic: the motion is a function of time and seed; loops split with parallel.hpp write
-// disjoint strands, so results do not depend on the thread count.
+// disjoint strands, so results do not depend on the thread count. Strands are independent: each
+// pack of eight (one per SIMD lane) runs all of a frame's substeps while it is in cache, every
+// lane the same bits as its strand stepped alone.
 #pragma once
 
 #include <Eigen/Core>
@@ -78,8 +80,14 @@ class HairSim {
   int pointsPerStrand() const { return n_; }
 
  private:
-  void substep(int strand, float dt, const HeadPose& pose, const Eigen::Vector3f& gEff,
-               const Eigen::Vector3f& wind);
+  // One substep's head pose and the velocity (wind * dt) and displacement (gravity * dt^2) it
+  // adds.
+  struct SubstepForces {
+    HeadPose pose;
+    float wdt[3], gdt[3];
+  };
+  // All the substeps of a frame for the strands first .. first + 7 (fewer at the end).
+  void stepPack(size_t first, const SubstepForces* forces, int substeps, float dt);
   SimSettings settings_;
   SimMotion motion_ = SimMotion::Settle;
   uint32_t seed_ = 0;
