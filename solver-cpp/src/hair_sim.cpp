@@ -255,6 +255,11 @@ void HairSim::stepPack(size_t first, const SubstepForces* forces, int sub, float
   for (int k = 0; k < sub; ++k) {
     const HeadPose& pose = forces[k].pose;
     const Eigen::Matrix3f& Rm = pose.rotation;
+    const Lanes tr[3] = {splat(pose.translation[0]), splat(pose.translation[1]),
+                         splat(pose.translation[2])};
+    Lanes rt[3][3];  // R^T
+    for (int c = 0; c < 3; ++c)
+      for (int j = 0; j < 3; ++j) rt[c][j] = splat(Rm(j, c));
     // The groom carried by the head (the shape pull's targets).
     for (int a = 0; a < 3; ++a) {
       const Lanes m0 = splat(Rm(a, 0)), m1 = splat(Rm(a, 1)), m2 = splat(Rm(a, 2)),
@@ -332,13 +337,17 @@ void HairSim::stepPack(size_t first, const SubstepForces* forces, int sub, float
       const Lanes f = len[i - 1] / l;
       for (int a = 0; a < 3; ++a) p1[a] = laneSelect(move, p0[a] + d[a] * f, p1[a]);
       if (!collide) continue;
+      // In the head's frame, R^T (p - t) for every lane at once, summed as Eigen's product
+      // does (m0 v0 + (m1 v1 + m2 v2)): the same bits as the scalar Eigen expression.
+      const Lanes v[3] = {p1[0] - tr[0], p1[1] - tr[1], p1[2] - tr[2]};
+      Lanes local[3];
+      for (int c = 0; c < 3; ++c) local[c] = rt[c][0] * v[0] + (rt[c][1] * v[1] + rt[c][2] * v[2]);
       for (int ln = 0; ln < lanes; ++ln) {
-        const Eigen::Vector3f q(p1[0].lane(ln), p1[1].lane(ln), p1[2].lane(ln));
-        Eigen::Vector3f local = Rm.transpose() * (q - pose.translation);
-        const Eigen::Vector3f before = local;
-        keepOutside(head_, body_, local.data(), settings_.collisionMargin);
-        if (local != before) {
-          const Eigen::Vector3f out = pose.apply(local);
+        float q[3] = {local[0].lane(ln), local[1].lane(ln), local[2].lane(ln)};
+        const float before[3] = {q[0], q[1], q[2]};
+        keepOutside(head_, body_, q, settings_.collisionMargin);
+        if (q[0] != before[0] || q[1] != before[1] || q[2] != before[2]) {
+          const Eigen::Vector3f out = pose.apply(Eigen::Map<const Eigen::Vector3f>(q));
           for (int a = 0; a < 3; ++a) p1[a].set(ln, out[a]);
         }
       }
