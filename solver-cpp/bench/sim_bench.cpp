@@ -2,12 +2,15 @@
 // 10,000 guides of 32 points, single thread and with the thread pool: the median of 20 steps
 // with no head collider (the dynamics alone), then with a head (a sphere of radius 0.095 under
 // the roots, its distance grid at 0.003: about the app's head and cell relative to each other).
-// Usage: sim_bench [threads]   (default: the hardware's thread count)
+// Usage: sim_bench [threads [fixed]]   (threads: default the hardware's thread count; fixed: the
+// pool's adaptive switch off, so the loops go to the threads even when they do not pay, as on a
+// loaded machine where the default runs them serially)
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -66,6 +69,7 @@ static double stepMs(const std::vector<float>& groom, int guides, const HeadDist
 
 int main(int argc, char** argv) {
   const int hw = argc > 1 ? std::atoi(argv[1]) : int(std::thread::hardware_concurrency());
+  if (argc > 2 && std::string(argv[2]) == "fixed") parallel::setAdaptive(false);
   std::vector<float> hv;
   std::vector<uint32_t> ht;
   sphere(0.095f, hv, ht);
