@@ -24,6 +24,10 @@ export default defineConfig({
   use: {
     baseURL: `http://127.0.0.1:${port}`,
     viewport: { width: 1000, height: 750 },
+    // Half a device pixel per CSS pixel: the page's layout, pointer coordinates and every screen
+    // point the tests compute stay as they are, while SwiftShader rasterises a quarter of the
+    // pixels (app and sketching specs: 20 % less CPU). E2E_DSF=1 draws at full resolution.
+    deviceScaleFactor: Number(process.env.E2E_DSF ?? 0.5),
     // The headless shell, unlike the full browser, refuses clipboard writes unless granted
     permissions: ['clipboard-write'],
     launchOptions: {

@@ -1,6 +1,6 @@
 // "Export" end to end: every menu item downloads its file; the USD and hair cards bytes equal
 // `hairsketch grow` run on the same session saved through "Save"; "Open" on the exported USD and
-// glTF restores the session; the PNG is twice the canvas size. Real clicks; waits on downloads
+// glTF restores the session; the PNG is twice the canvas's resolution. Real clicks; waits on downloads
 // and the status attributes, never on fixed sleeps.
 import { execFile } from 'node:child_process';
 import { mkdtempSync, readFileSync } from 'node:fs';
@@ -93,15 +93,17 @@ test('each export item downloads its file, equal to `hairsketch grow` on the sav
     ).toBe(true);
   });
 
-  // PNG: twice the canvas size
-  const canvas = await page.getByTestId('viewport').evaluate((c: HTMLCanvasElement) => ({
-    w: c.clientWidth,
-    h: c.clientHeight,
-  }));
+  // PNG: twice the canvas's resolution (its size in device pixels)
+  const twice = await page
+    .getByTestId('viewport')
+    .evaluate((c: HTMLCanvasElement) => [
+      Math.round(c.clientWidth * window.devicePixelRatio * 2),
+      Math.round(c.clientHeight * window.devicePixelRatio * 2),
+    ]);
   const { file, bytes } = await exportItem(page, 'PNG image');
   expect(file).toBe('hairstyle.png');
   expect(bytes.subarray(1, 4).toString()).toBe('PNG');
-  expect([bytes.readUInt32BE(16), bytes.readUInt32BE(20)]).toEqual([2 * canvas.w, 2 * canvas.h]);
+  expect([bytes.readUInt32BE(16), bytes.readUInt32BE(20)]).toEqual(twice);
   expect(errors).toEqual([]);
 });
 
