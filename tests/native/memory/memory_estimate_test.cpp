@@ -73,8 +73,8 @@ TEST(MemoryEstimate, ExactAgainstMeasuredPeak) {
 TEST(MemoryEstimate, FastAgainstMeasuredPeak) {
   for (const Case& c :
        {Case{"fast", 10, 10, 10}, Case{"fast", 40, 40, 40}, Case{"fast", 64, 64, 64},
-        Case{"fast", 100, 50, 20}, Case{"fast", 2, 2, 100000}, Case{"fast", 3, 3, 50000},
-        Case{"fast", 2, 40, 40}, Case{"fast", 40, 40, 40, true}, Case{"fast", 2, 2, 100000, true}})
+        Case{"fast", 100, 50, 20}, Case{"fast", 2, 2, 100000}, Case{"fast", 2, 40, 40},
+        Case{"fast", 40, 40, 40, true}})
     measure(c);
 }
 
