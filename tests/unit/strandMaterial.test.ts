@@ -8,7 +8,9 @@ import {
   buildStrandGeometry,
   buildStrandStripGeometry,
   createStrandMaterial,
+  drawnStrands,
   LOD_GROUPS,
+  representedWidth,
   setHairColor,
   setHairLook,
   setLightDirection,
@@ -171,6 +173,42 @@ describe('createStrandMaterial', () => {
     const blended = createStrandMaterial({ kind: 'strips' });
     expect(blended.transparent).toBe(true);
     expect(blended.depthWrite).toBe(false);
+  });
+});
+
+describe('thin strands stand for a head of hair', () => {
+  it('cover what 100,000 hairs of 75 µm cover, however many are drawn (within the clamps)', () => {
+    // 1 unit = 10 cm: a hair is 0.00075 units wide; 100,000 of them as 30,000 strands
+    expect(representedWidth(30_000)).toBeCloseTo((0.00075 * 100_000) / 30_000, 9);
+    for (const n of [8_000, 12_000, 50_000, 99_000])
+      expect(representedWidth(n) * n).toBeCloseTo(75, 6);
+    expect(representedWidth(250_000)).toBe(0.00075); // never thinner than a hair
+    expect(representedWidth(100)).toBe(0.012); // a sparse sample stays strands
+    expect(representedWidth(0)).toBe(0.012);
+  });
+
+  it('count the strands a draw range covers (a prefix of the level-of-detail index)', () => {
+    const n = 40;
+    const pts = new Float32Array(n * 3 * 3);
+    const start = new Uint32Array(n + 1).map((_, i) => 3 * i);
+    const g = buildStrandGeometry(pts, start);
+    expect(drawnStrands(g)).toBe(n);
+    const all = g.getIndex()?.count ?? 0;
+    g.setDrawRange(0, all / 4);
+    expect(drawnStrands(g)).toBe(n / 4);
+    // the material sets the width for the range drawn
+    const m = createStrandMaterial({ kind: 'lines' });
+    m.onBeforeRender(
+      { getCurrentViewport: (v: { w: number }) => Object.assign(v, { w: 600 }) } as never,
+      null as never,
+      null as never,
+      g,
+      null as never,
+      null as never,
+    );
+    expect(m.uniforms.strandWidth.value).toBe(representedWidth(n / 4));
+    expect(m.transparent).toBe(true);
+    expect(m.depthWrite).toBe(false);
   });
 });
 

@@ -17,6 +17,7 @@ import {
   buildStrandGeometry,
   buildStrandStripGeometry,
   createStrandMaterial,
+  representedWidth,
   type StrandMaterial,
   setHairLook,
 } from './strandMaterial';
@@ -210,6 +211,7 @@ export class HairView {
     this.domDirty = false;
     const hair = this.object;
     if (!(hair instanceof THREE.Mesh)) return;
+    this.strips.uniforms.strandWidth.value = representedWidth(hair.geometry.userData.strands);
     this.dom.render(this.viewer.renderer, hair.geometry, this.strips, this.head);
     this.dom.refresh(this.strips);
     this.dom.bindReceivers(true);

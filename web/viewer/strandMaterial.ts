@@ -8,11 +8,13 @@
 // the occlusion; root darkening on top. Colour: absorption σa (model/hairLook.ts: melanin,
 // redness, dye, grey strands, ombré towards the tips, or a direct colour's absorption), spread
 // per strand (four seeded random bytes: melanin, hue, where the tip starts to fade, roughness).
-// Two geometries: GL lines (1 pixel, shaded per vertex; the Fast quality), and camera-facing
-// strips tapered root → tip (two vertices per point, expanded in the vertex shader, at least a
-// pixel wide with the rest of the width as coverage in alpha, the tips fading out: alpha-to-
-// coverage with MSAA, else blended unsorted without depth writes; the High quality, which also
-// reads deep opacity maps: deepOpacity.ts).
+// Thin strands: each drawn strand stands for several of a head's hairs (representedWidth), and
+// is drawn at least a pixel wide with the rest of its width as coverage in alpha, tapering to
+// the tip, the tips fading out. Two geometries: GL lines (1 pixel, shaded per vertex, their
+// coverage blended unsorted without depth writes; the Fast quality), and camera-facing strips
+// (two vertices per point, expanded in the vertex shader; alpha-to-coverage with MSAA, else
+// blended order-independently: hairOit.ts; the High quality, which also reads deep opacity
+// maps: deepOpacity.ts).
 import * as THREE from 'three';
 import { FILL_LIGHT_DIRECTION, KEY_LIGHT_DIRECTION } from '../lighting/keyLight';
 import { strandCount } from '../model/hairArrays';
@@ -97,9 +99,6 @@ float deepOpacityTransmittance(vec3 world) {
 float fadeStartOf(vec4 rnd) {
   return clamp(1.0 - tipFade + lengthVariation * (2.0 * rnd.z - 1.0), 0.3, 0.98);
 }
-float strandCut(vec4 rnd) {
-  return mix(fadeStartOf(rnd), 1.0, fract(rnd.w * 13.7));
-}
 
 // The strand's absorption at \`along\` (rnd: its seeded random values): root → tip ombré, grey
 // strands, a seeded spread of melanin and a little of the red/blue balance.
@@ -145,14 +144,24 @@ vec3 shadeStrand(vec3 T, vec3 P, float along, vec4 rnd, vec2 light) {
 const linesVertexShader = /* glsl */ `
 ${commonVertex}
 ${shading}
+uniform float strandWidth; // world units at the root (representedWidth)
+uniform float tipWidth; // fraction of strandWidth at the tip
+uniform float viewportHeight; // pixels of the target being drawn
 varying vec3 vColor;
-varying float vCut;
+varying float vFadeStart; // vCoverage: commonVertex's
 void main() {
   vec4 world = modelMatrix * vec4(position, 1.0);
   vec3 T = normalize(mat3(modelMatrix) * tangent);
   vColor = shadeStrand(T, world.xyz, along, strandRandom, lighting);
   vAlong = along;
-  vCut = strandCut(strandRandom);
+  // a line is one pixel wide: its opacity is the strand's true coverage of that pixel (as the
+  // strips' width / drawn width), tapering to the tip
+  float dist = length(cameraPosition - world.xyz);
+  float pixel = 2.0 * dist / (projectionMatrix[1][1] * max(viewportHeight, 1.0));
+  if (projectionMatrix[3][3] > 0.5) pixel = 2.0 / (projectionMatrix[1][1] * max(viewportHeight, 1.0));
+  float width = strandWidth * mix(1.0, tipWidth, along);
+  vCoverage = min(1.0, width / pixel);
+  vFadeStart = fadeStartOf(strandRandom);
   gl_Position = projectionMatrix * viewMatrix * world;
 }
 `;
@@ -160,10 +169,13 @@ void main() {
 const linesFragmentShader = /* glsl */ `
 varying vec3 vColor;
 varying float vAlong;
-varying float vCut;
+varying float vCoverage;
+varying float vFadeStart;
 void main() {
-  if (vAlong > vCut) discard;
-  gl_FragColor = vec4(vColor, 1.0);
+  // coverage times the tip's fade, blended unsorted without depth writes
+  float alpha = vCoverage * (1.0 - smoothstep(vFadeStart, 1.0, vAlong));
+  if (alpha < 0.004) discard;
+  gl_FragColor = vec4(vColor, alpha);
   #include <tonemapping_fragment>
   #include <colorspace_fragment>
 }
@@ -281,6 +293,33 @@ export interface StrandUniforms {
 
 export type StrandMaterial = THREE.ShaderMaterial & { uniforms: StrandUniforms };
 
+/** A hair's width, world units (1 unit = 10 cm): 75 µm, a medium human hair. */
+export const HAIR_WIDTH = 0.00075;
+/** Hairs on a head: about 100,000 (90,000 to 150,000 by colour). */
+export const HAIRS_ON_A_HEAD = 100_000;
+/** The widest a drawn strand gets (world units, 1.2 mm): a sparse sample stays strands, not
+ *  ribbons. */
+const MAX_STRAND_WIDTH = 0.012;
+
+/** The width each of `drawn` strands is drawn at (world units, at the root): together they
+ *  cover what a head's hairs cover, so the hair's density does not depend on how many strands
+ *  are grown or, while the view moves, on how sparse a sample of them is drawn (Unreal widens
+ *  a decimated groom's strands the same way). At least one hair's width, at most
+ *  MAX_STRAND_WIDTH. */
+export function representedWidth(drawn: number): number {
+  const hairs = HAIRS_ON_A_HEAD / Math.max(drawn, 1);
+  return Math.min(MAX_STRAND_WIDTH, HAIR_WIDTH * Math.max(1, hairs));
+}
+
+/** Strands a draw of `geometry` (a strand geometry: userData.strands, lodCounts) covers: its
+ *  draw range's share of the index (prefixes are even samples of the strands). */
+export function drawnStrands(geometry: THREE.BufferGeometry): number {
+  const strands = (geometry.userData.strands as number | undefined) ?? 0;
+  const all = geometry.index?.count ?? 0;
+  if (all === 0) return strands;
+  return (strands * Math.min(geometry.drawRange.count, all)) / all;
+}
+
 /** Key light radiance per unit of the hair BSDF (hairBsdf.ts), chosen by eye against the head's
  *  lighting: a mid-brown outer layer about as bright as the Kajiya–Kay shading it replaced. */
 export const BSDF_GAIN = 3;
@@ -309,7 +348,7 @@ export function createStrandMaterial(options: StrandMaterialOptions = {}): Stran
     lengthVariation: { value: 0.1 },
     tipFade: { value: 0.22 },
     precomputed: { value: 1 },
-    strandWidth: { value: 0.008 },
+    strandWidth: { value: representedWidth(30_000) }, // set per draw
     tipWidth: { value: 0.25 },
     viewportHeight: { value: 750 },
   };
@@ -327,16 +366,18 @@ export function createStrandMaterial(options: StrandMaterialOptions = {}): Stran
   if (strips) {
     material.side = THREE.DoubleSide;
     material.alphaToCoverage = !!options.alphaToCoverage;
-    if (!options.alphaToCoverage) {
-      material.transparent = true;
-      material.depthWrite = false;
-    }
-    // the strip's width depends on the pixel size of the target being drawn
-    material.onBeforeRender = (renderer) => {
-      renderer.getCurrentViewport(viewport);
-      uniforms.viewportHeight.value = viewport.w;
-    };
   }
+  if (!strips || !options.alphaToCoverage) {
+    material.transparent = true;
+    material.depthWrite = false;
+  }
+  // the strands' width stands for the hairs of a head (representedWidth: the fewer drawn, the
+  // wider each), and a strip's width and a line's coverage depend on the target's pixel size
+  material.onBeforeRender = (renderer, _scene, _camera, geometry) => {
+    renderer.getCurrentViewport(viewport);
+    uniforms.viewportHeight.value = viewport.w;
+    uniforms.strandWidth.value = representedWidth(drawnStrands(geometry));
+  };
   return material as StrandMaterial;
 }
 
