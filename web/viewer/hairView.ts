@@ -1,7 +1,8 @@
 // The displayed hair: strand arrays from the solver become one object in the viewer, drawn at
 // the active quality: 'fast' = GL lines with the lighting precomputed in the worker (transmittance
 // and occlusion per point); 'high' = camera-facing tapered strips with alpha-to-coverage (where
-// the canvas is multisampled) and deep opacity maps for the key light's shadow. Materials are
+// the canvas is multisampled, else weighted blended order-independent transparency: hairOit.ts)
+// and deep opacity maps for the key light's shadow. Materials are
 // shared across revisions (a new material would compile its shader again). The head receives the
 // hair's shadow (per-vertex transmittance, headMaterial.ts).
 import * as THREE from 'three';
@@ -11,6 +12,7 @@ import type { HairLook } from '../model/hairLook';
 import { DEFAULT_HAIR_COLOR } from '../model/session';
 import { buildCardsObject } from './cardsView';
 import { DeepOpacityMaps } from './deepOpacity';
+import { WeightedBlendedHair } from './hairOit';
 import { setHeadHairShadow } from './headMaterial';
 import type { LineAttributes } from './strandAttributes';
 import {
@@ -48,6 +50,8 @@ export class HairView {
   onCards: ((shown: { cards: number; triangles: number; ms: number } | null) => void) | null = null;
   private object: THREE.Mesh | THREE.LineSegments | null = null;
   private dom: DeepOpacityMaps | null = null;
+  /** High's order-independent drawing of the strips (null: alpha-to-coverage or unsorted). */
+  private oit: WeightedBlendedHair | null = null;
   private domDirty = false;
   /** Lighting precompute time of the hair shown (ms, in the worker), null without one. */
   lightingMs: number | null = null;
@@ -170,6 +174,7 @@ export class HairView {
       const geometry = buildStrandStripGeometry(points, strandStart, 0, light, c.attributes);
       this.strips ??= this.createStripMaterial();
       const mesh = new THREE.Mesh(geometry, this.strips);
+      if (this.oit) mesh.userData.oit = this.oit; // drawn order-independently (drawLayers)
       this.object = mesh;
       this.domDirty = this.dom !== null;
       return mesh;
@@ -202,6 +207,9 @@ export class HairView {
       this.dom = new DeepOpacityMaps(this.viewer.software ? 512 : 1024);
       this.dom.bind(m);
     }
+    // without multisampling: weighted blended order-independent transparency where the
+    // renderer has half-float targets, else blended unsorted
+    if (!msaa && WeightedBlendedHair.supported(r)) this.oit = new WeightedBlendedHair(m);
     return m;
   }
 

@@ -14,21 +14,84 @@ import {
   viewKey,
 } from './frameCache';
 import type { DrawnHair } from './hairLevelOfDetail';
+import type { WeightedBlendedHair } from './hairOit';
 
 type Layer = 'static' | 'hair' | 'overlay' | 'light';
+type DrawnLayer = Exclude<Layer, 'light'>;
+export const ALL_LAYERS: readonly DrawnLayer[] = ['static', 'hair', 'overlay'];
 export type LayerKeys = { layer: LayerKey; hair: string };
 
-/** What the drawing reads from the viewer's scene. */
-export interface LayeredScene {
+/** What drawing a scene's layers reads from it. */
+export interface SceneLayers {
   readonly renderer: THREE.WebGLRenderer;
   readonly scene: THREE.Scene;
-  readonly camera: THREE.PerspectiveCamera;
+  readonly camera: THREE.Camera;
   /** The group that holds the hair object (its only child, or none). */
   readonly hairGroup: THREE.Group;
-  /** The hair object drawn at a level of detail (its draw range is set per frame). */
+  /** The hair object drawn. */
   hair(): DrawnHair;
   /** Whether a child of the scene is an overlay (curves, draft, guides, displays). */
   isOverlay(o: THREE.Object3D): boolean;
+}
+
+function layerOf(s: SceneLayers, o: THREE.Object3D): Layer {
+  if (o === s.hairGroup) return 'hair';
+  if (s.isOverlay(o)) return 'overlay';
+  return o instanceof THREE.Light ? 'light' : 'static';
+}
+
+/** Draws the scene's objects of the given layers, as renderer.render draws them (lights always
+ *  stay: hiding one would change the lit materials' programs). Hair whose object carries an
+ *  order-independent drawing (userData.oit, hairOit.ts) is blended by it over the static layer,
+ *  with the static objects shown as its occluders, and the overlays are drawn after it. */
+export function drawLayers(s: SceneLayers, layers: ReadonlyArray<DrawnLayer>): void {
+  const hidden: THREE.Object3D[] = [];
+  const statics: THREE.Object3D[] = [];
+  for (const c of s.scene.children) {
+    const layer = layerOf(s, c);
+    if (layer === 'static' && c.visible) statics.push(c);
+    if (layer === 'light' || layers.includes(layer) || !c.visible) continue;
+    c.visible = false;
+    hidden.push(c);
+  }
+  const r = s.renderer;
+  const autoClear = r.autoClear;
+  try {
+    const hair = s.hair();
+    const oit =
+      layers.includes('hair') && s.hairGroup.visible && hair instanceof THREE.Mesh && hair.visible
+        ? (hair.userData.oit as WeightedBlendedHair | undefined)
+        : undefined;
+    if (!oit || !(hair instanceof THREE.Mesh)) {
+      r.render(s.scene, s.camera);
+      return;
+    }
+    const above = s.scene.children.filter((c) => c.visible && layerOf(s, c) !== 'static');
+    const overlays = above.filter((c) => layerOf(s, c) === 'overlay');
+    for (const c of above) if (!(c instanceof THREE.Light)) c.visible = false;
+    try {
+      if (layers.includes('static')) r.render(s.scene, s.camera);
+      oit.draw(r, s.scene, s.camera, hair, statics);
+      if (overlays.length > 0) {
+        const under = statics.filter((c) => c.visible);
+        for (const c of under) c.visible = false;
+        for (const c of overlays) c.visible = true;
+        r.autoClear = false;
+        r.render(s.scene, s.camera);
+        for (const c of under) c.visible = true;
+      }
+    } finally {
+      for (const c of above) c.visible = true;
+    }
+  } finally {
+    r.autoClear = autoClear;
+    for (const c of hidden) c.visible = true;
+  }
+}
+
+/** What the layered drawing reads from the viewer's scene. */
+export interface LayeredScene extends SceneLayers {
+  readonly camera: THREE.PerspectiveCamera;
 }
 
 export class LayeredDrawing {
@@ -60,7 +123,7 @@ export class LayeredDrawing {
     const { camera, renderer, scene } = this.s;
     camera.updateMatrixWorld();
     const size = renderer.getDrawingBufferSize(new THREE.Vector2());
-    const statics = scene.children.filter((c) => this.layerOf(c) === 'static');
+    const statics = scene.children.filter((c) => layerOf(this.s, c) === 'static');
     return {
       layer: {
         view: viewKey(
@@ -89,29 +152,6 @@ export class LayeredDrawing {
     return this.active && sameLayer(this.staticKey, keys.layer);
   }
 
-  private layerOf(o: THREE.Object3D): Layer {
-    if (o === this.s.hairGroup) return 'hair';
-    if (this.s.isOverlay(o)) return 'overlay';
-    return o instanceof THREE.Light ? 'light' : 'static';
-  }
-
-  /** Draws the scene's objects of the given layers (lights always stay: hiding one would change
-   *  the lit materials' programs). */
-  private renderLayers(layers: ReadonlyArray<'static' | 'hair' | 'overlay'>): void {
-    const hidden: THREE.Object3D[] = [];
-    for (const c of this.s.scene.children) {
-      const layer = this.layerOf(c);
-      if (layer === 'light' || layers.includes(layer) || !c.visible) continue;
-      c.visible = false;
-      hidden.push(c);
-    }
-    try {
-      this.s.renderer.render(this.s.scene, this.s.camera);
-    } finally {
-      for (const c of hidden) c.visible = true;
-    }
-  }
-
   /** Draws a frame as `plan` says, into the canvas; `save`: keep the layers drawn in the cache.
    *  Returns where the frame started from (a cached slot, or 'none'). */
   draw(plan: FramePlan, all: number, keys: LayerKeys, save: boolean): FramePlan['source'] {
@@ -119,7 +159,7 @@ export class LayeredDrawing {
     const hair = this.s.hair();
     if (hair && all > 0 && plan.source !== 'hair') hair.geometry.setDrawRange(0, plan.count);
     if (!this.active || !this.slots) {
-      r.render(this.s.scene, this.s.camera);
+      drawLayers(this.s, ALL_LAYERS);
       return 'none';
     }
     const slots = this.slots;
@@ -132,16 +172,16 @@ export class LayeredDrawing {
     try {
       if (source === 'none') {
         r.autoClear = true;
-        this.renderLayers(['static']);
+        drawLayers(this.s, ['static']);
         if (save && slots.copy('static', 'save', size.x, size.y)) this.staticKey = keys.layer;
       }
       r.autoClear = false;
       if (source !== 'hair') {
-        this.renderLayers(['hair']);
+        drawLayers(this.s, ['hair']);
         if (save && slots.copy('hair', 'save', size.x, size.y))
           this.hairKey = { ...keys.layer, hair: keys.hair, count: plan.count };
       }
-      this.renderLayers(['overlay']);
+      drawLayers(this.s, ['overlay']);
     } finally {
       r.autoClear = autoClear;
     }

@@ -21,6 +21,7 @@ import { strandCount } from '../model/hairArrays';
 import { type HairLook, lookUniforms } from '../model/hairLook';
 import { DEFAULT_HAIR_COLOR } from '../model/session';
 import { HAIR_BSDF_GLSL } from './hairBsdf';
+import { OIT_FRAGMENT_GLSL } from './hairOit';
 import {
   type LineAttributes,
   lineAttributes,
@@ -224,7 +225,8 @@ void main() {
 }
 `;
 
-/** Strips shade per fragment (wide strands on a GPU). */
+/** Strips shade per fragment (wide strands on a GPU). HAIR_OIT: the order-independent pass's
+ *  two outputs instead of a colour (hairOit.ts). */
 const stripsFragmentShader = /* glsl */ `
 ${shading}
 varying vec3 vTangent;
@@ -233,21 +235,27 @@ varying float vAlong;
 varying vec4 vRandom;
 varying vec2 vLight;
 varying float vCoverage;
+#ifdef HAIR_OIT
+${OIT_FRAGMENT_GLSL}
+#endif
 
 void main() {
   float alpha = vCoverage * (1.0 - smoothstep(fadeStartOf(vRandom), 1.0, vAlong));
 #ifdef ALPHA_TO_COVERAGE
   if (alpha < 0.02) discard;
 #else
-  // no multisampling: the coverage is blended (unsorted, no depth writes: strands of a few
-  // tenths of coverage each, so the order changes their weights little; the head hides what is
-  // behind it)
   if (alpha < 0.004) discard;
 #endif
   vec3 color = shadeStrand(normalize(vTangent), vWorldPosition, vAlong, vRandom, vLight);
+#ifdef HAIR_OIT
+  oitWrite(color, alpha, length(cameraPosition - vWorldPosition));
+#else
+  // without multisampling and without the order-independent pass: blended unsorted, no depth
+  // writes
   gl_FragColor = vec4(color, alpha);
   #include <tonemapping_fragment>
   #include <colorspace_fragment>
+#endif
 }
 `;
 
@@ -354,6 +362,7 @@ export function createStrandMaterial(options: StrandMaterialOptions = {}): Stran
   };
   const defines: Record<string, string> = {};
   if (options.deepOpacity) defines.DEEP_OPACITY = '';
+  if (strips && options.alphaToCoverage) defines.ALPHA_TO_COVERAGE = '';
   if (!strips) defines.HAIR_CHEAP = ''; // per vertex: the cheaper dual scattering
   const material = new THREE.ShaderMaterial({
     uniforms,

@@ -2,14 +2,13 @@
 // → PNG) and as a timed frame (a benchmark probe).
 import * as THREE from 'three';
 import type { DrawnHair } from './hairLevelOfDetail';
+import { ALL_LAYERS, drawLayers, type SceneLayers } from './layeredDrawing';
 import { basePixelRatio } from './rendererProbe';
 
-/** What a capture draws: the viewer's renderer, scene and camera, its canvas (for the size), and
- *  the hair with its full index count (its draw range is set to all of it). */
+/** What a capture draws: the viewer's scene layers (renderer, scene, camera), its canvas (for
+ *  the size), and the hair with its full index count (its draw range is set to all of it). */
 export interface CaptureSource {
-  renderer: THREE.WebGLRenderer;
-  scene: THREE.Scene;
-  camera: THREE.Camera;
+  layers: SceneLayers;
   canvas: HTMLCanvasElement;
   software: boolean;
   hair: DrawnHair;
@@ -33,7 +32,7 @@ export async function captureImage(
   const ratio = basePixelRatio() * scale;
   const w = Math.max(1, Math.round(src.canvas.clientWidth * ratio));
   const h = Math.max(1, Math.round(src.canvas.clientHeight * ratio));
-  const r = src.renderer;
+  const r = src.layers.renderer;
   const half = r.extensions.has('EXT_color_buffer_float');
   const rt = new THREE.WebGLRenderTarget(w, h, {
     type: half ? THREE.HalfFloatType : THREE.UnsignedByteType,
@@ -47,7 +46,7 @@ export async function captureImage(
     if (src.hair && src.allHair > 0) src.hair.geometry.setDrawRange(0, src.allHair);
     if (opts.transparent) r.setClearColor(clear, 0);
     r.setRenderTarget(rt);
-    r.render(src.scene, src.camera);
+    drawLayers(src.layers, ALL_LAYERS);
     r.readRenderTargetPixels(rt, 0, 0, w, h, pixels);
   } finally {
     r.setRenderTarget(null);
@@ -80,12 +79,12 @@ export async function captureImage(
 /** Draws the view once with every strand and returns its time in ms, GPU work included (a
  *  one-pixel read before and after waits for the GPU). The caller requests a frame afterwards. */
 export function measureFullFrame(src: CaptureSource): number {
-  const gl = src.renderer.getContext();
+  const gl = src.layers.renderer.getContext();
   const px = new Uint8Array(4);
   gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, px);
   const t0 = performance.now();
   if (src.hair && src.allHair > 0) src.hair.geometry.setDrawRange(0, src.allHair);
-  src.renderer.render(src.scene, src.camera);
+  drawLayers(src.layers, ALL_LAYERS);
   gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, px);
   return performance.now() - t0;
 }

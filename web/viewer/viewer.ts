@@ -24,7 +24,7 @@ import { CameraRig } from './cameraRig';
 import { DEFAULT_CAMERA } from './defaultCamera';
 import { type FrameMode, type FramePlan, OverlayWait } from './frameCache';
 import { HairLevelOfDetail, INTERACTIVE_RESOLUTION } from './hairLevelOfDetail';
-import { LayeredDrawing } from './layeredDrawing';
+import { ALL_LAYERS, drawLayers, LayeredDrawing, type LayeredScene } from './layeredDrawing';
 import { type AppViewName, appView } from './namedViews';
 import { type CurveView, OverlayLayer } from './overlayLayer';
 import { basePixelRatio, glRendererName, isSoftwareRenderer } from './rendererProbe';
@@ -63,6 +63,8 @@ export class Viewer {
   private readonly holds = new Set<string>();
   private readonly detail: HairLevelOfDetail;
   private readonly layers: LayeredDrawing;
+  /** The scene's layers as drawLayers draws them (layeredDrawing.ts). */
+  private readonly sceneLayers: LayeredScene;
   private lastRender: { time: number; drawn: number } | null = null;
   private lastDetail = 1;
   private frameHooks: Array<() => void> = [];
@@ -102,14 +104,15 @@ export class Viewer {
     this.rig = new CameraRig(canvas, DEFAULT_CAMERA, this);
     this.camera = this.rig.camera;
     this.controls = this.rig.controls;
-    this.layers = new LayeredDrawing({
+    this.sceneLayers = {
       renderer: this.renderer,
       scene: this.scene,
       camera: this.camera,
       hairGroup: this.hairGroup,
       hair: () => this.hair,
       isOverlay: (o) => this.overlays.holds(o),
-    });
+    };
+    this.layers = new LayeredDrawing(this.sceneLayers);
 
     this.scene.add(new THREE.HemisphereLight(0xffffff, 0x6b5d52, 1.4));
     const key = new THREE.DirectionalLight(0xffffff, 1.6);
@@ -260,7 +263,7 @@ export class Viewer {
     const source = this.layers.draw(plan, all, keys, false);
     const cached = read();
     if (this.hair && all > 0) this.hair.geometry.setDrawRange(0, plan.count);
-    this.renderer.render(this.scene, this.camera);
+    drawLayers(this.sceneLayers, ALL_LAYERS);
     const full = read();
     this.requestRender();
     return { width: size.x, height: size.y, source, count: plan.count, cached, full };
@@ -480,9 +483,7 @@ export class Viewer {
 
   private captureSource(): CaptureSource {
     return {
-      renderer: this.renderer,
-      scene: this.scene,
-      camera: this.camera,
+      layers: this.sceneLayers,
       canvas: this.canvas,
       software: this.software,
       hair: this.hair,

@@ -1,0 +1,210 @@
+// Weighted blended order-independent transparency (McGuire & Bavoil 2013) for the High quality's
+// strips where the canvas is not multisampled: every hair fragment adds its colour times its
+// weight w = α·f(depth) to one sum and its weight to another, and multiplies the "revealage"
+// (what is seen through the hair) by 1 − α; a composite pass then lays the weighted mean colour
+// over the scene with opacity 1 − revealage. Sums and products do not depend on the order the
+// strands are drawn in, so dense hair shows no sorting artefacts.
+//
+// Targets: two half-float colour attachments with a depth buffer, at the size of what is drawn
+// into. Attachment 0: rgb Σ c·w (additive), a Π(1 − α) (multiplicative); attachment 1: r Σ w.
+// One blend function serves both (colour: one, one; alpha: zero, one minus source alpha), so it
+// needs neither per-attachment blending nor 32-bit float blending. The head and the body write
+// their depth first (colour off), so hair behind them is not counted.
+//
+// f(depth): exp(−(d − d0)/OIT_DEPTH_SCALE), d the fragment's distance from the camera and d0 that
+// of the hair's nearest bounding point: a strand 1 cm (0.1 units) behind another counts 1/e as
+// much, which keeps the outer hair's highlights on top of the inner hair's shade. Clamped to a
+// range a half float carries.
+import * as THREE from 'three';
+
+/** e-folding depth of a fragment's weight, world units (1 unit = 10 cm). */
+export const OIT_DEPTH_SCALE = 0.1;
+
+/** GLSL for the strips' fragment shader under HAIR_OIT (glslVersion GLSL3): the two outputs and
+ *  oitWrite(colour, alpha), which writes them. */
+export const OIT_FRAGMENT_GLSL = /* glsl */ `
+layout(location = 0) out highp vec4 oitAccum;
+layout(location = 1) out highp vec4 oitWeight;
+uniform float oitNear; // distance from the camera to the hair's nearest bounding point
+void oitWrite(vec3 color, float alpha, float dist) {
+  // ln f in [-7, 4.6]: f from ~1e-3 to 100, so c·w stays a normal half float for α >= 0.004
+  float lnF = clamp((oitNear - dist) / ${OIT_DEPTH_SCALE.toFixed(3)} + 4.6, -7.0, 4.6);
+  float w = alpha * exp(lnF);
+  oitAccum = vec4(color * w, alpha);
+  oitWeight = vec4(w, 0.0, 0.0, alpha);
+}
+`;
+
+const compositeVertex = /* glsl */ `
+varying vec2 vUv;
+void main() {
+  vUv = uv;
+  gl_Position = vec4(position.xy, 0.0, 1.0);
+}
+`;
+
+const compositeFragment = /* glsl */ `
+uniform sampler2D accumTexture;
+uniform sampler2D weightTexture;
+varying vec2 vUv;
+void main() {
+  vec4 accum = texture2D(accumTexture, vUv);
+  float reveal = accum.a;
+  if (reveal > 0.999) discard; // no hair here
+  float w = texture2D(weightTexture, vUv).r;
+  gl_FragColor = vec4(accum.rgb / max(w, 1e-6), 1.0 - reveal);
+  #include <tonemapping_fragment>
+  #include <colorspace_fragment>
+}
+`;
+
+/** The order-independent drawing of one strip material's hair: its twin material (same shaders
+ *  and uniforms, HAIR_OIT defined), the targets and the composite pass. */
+export class WeightedBlendedHair {
+  readonly material: THREE.ShaderMaterial;
+  private target: THREE.WebGLRenderTarget | null = null;
+  private readonly depthOnly = new THREE.MeshBasicMaterial({ colorWrite: false });
+  private readonly composite: THREE.ShaderMaterial;
+  private readonly quad: THREE.Mesh;
+  private readonly quadCamera = new THREE.OrthographicCamera(-1, 1, 1, -1, 0, 1);
+  private readonly sphere = new THREE.Sphere();
+
+  constructor(strips: THREE.ShaderMaterial) {
+    const material = new THREE.ShaderMaterial({
+      uniforms: strips.uniforms, // shared: the look and the deep opacity maps stay in step
+      defines: { ...strips.defines, HAIR_OIT: '' },
+      vertexShader: strips.vertexShader,
+      fragmentShader: strips.fragmentShader,
+      glslVersion: THREE.GLSL3,
+      side: THREE.DoubleSide,
+      transparent: true,
+      depthWrite: false,
+      blending: THREE.CustomBlending,
+      blendEquation: THREE.AddEquation,
+      blendSrc: THREE.OneFactor,
+      blendDst: THREE.OneFactor,
+      blendSrcAlpha: THREE.ZeroFactor,
+      blendDstAlpha: THREE.OneMinusSrcAlphaFactor,
+    });
+    material.name = 'HairStripsOit';
+    material.uniforms.oitNear = { value: 0 };
+    material.onBeforeRender = strips.onBeforeRender;
+    this.material = material;
+    this.composite = new THREE.ShaderMaterial({
+      uniforms: { accumTexture: { value: null }, weightTexture: { value: null } },
+      vertexShader: compositeVertex,
+      fragmentShader: compositeFragment,
+      depthTest: false,
+      depthWrite: false,
+      transparent: true,
+      blending: THREE.CustomBlending,
+      blendEquation: THREE.AddEquation,
+      blendSrc: THREE.SrcAlphaFactor,
+      blendDst: THREE.OneMinusSrcAlphaFactor,
+      blendSrcAlpha: THREE.OneFactor,
+      blendDstAlpha: THREE.OneMinusSrcAlphaFactor,
+    });
+    this.quad = new THREE.Mesh(new THREE.PlaneGeometry(2, 2), this.composite);
+    this.quad.frustumCulled = false;
+  }
+
+  /** Whether this renderer can draw it (half-float colour attachments). */
+  static supported(renderer: THREE.WebGLRenderer): boolean {
+    return renderer.extensions.has('EXT_color_buffer_float');
+  }
+
+  private targetFor(renderer: THREE.WebGLRenderer): THREE.WebGLRenderTarget {
+    const into = renderer.getRenderTarget();
+    const size = into
+      ? new THREE.Vector2(into.width, into.height)
+      : renderer.getDrawingBufferSize(new THREE.Vector2());
+    if (!this.target) {
+      this.target = new THREE.WebGLRenderTarget(size.x, size.y, {
+        count: 2,
+        type: THREE.HalfFloatType,
+        minFilter: THREE.NearestFilter,
+        magFilter: THREE.NearestFilter,
+        depthBuffer: true,
+      });
+    } else if (this.target.width !== size.x || this.target.height !== size.y) {
+      this.target.setSize(size.x, size.y);
+    }
+    return this.target;
+  }
+
+  /** Draws `hair` (a strip mesh of this material's twin) over what the current target holds:
+   *  `occluders` (scene objects drawn opaque: the head, the body) hide the hair behind them.
+   *  The renderer's target, clear colour and autoClear are left as they were. */
+  draw(
+    renderer: THREE.WebGLRenderer,
+    scene: THREE.Scene,
+    camera: THREE.Camera,
+    hair: THREE.Mesh,
+    occluders: readonly THREE.Object3D[],
+  ): void {
+    const into = renderer.getRenderTarget();
+    const target = this.targetFor(renderer);
+    const clear = new THREE.Color();
+    renderer.getClearColor(clear);
+    const clearAlpha = renderer.getClearAlpha();
+    const autoClear = renderer.autoClear;
+    const material = hair.material;
+    const restore: THREE.Object3D[] = [];
+    const hide = (o: THREE.Object3D) => {
+      if (!o.visible) return;
+      o.visible = false;
+      restore.push(o);
+    };
+    try {
+      renderer.setRenderTarget(target);
+      renderer.setClearColor(0x000000, 1); // Σ = 0, revealage 1
+      renderer.clear(true, true, false);
+      renderer.autoClear = false;
+      // the occluders' depth: only they, opaque surfaces only, colour off
+      for (const c of scene.children)
+        if (!(c instanceof THREE.Light) && !occluders.includes(c)) hide(c);
+      for (const c of occluders)
+        c.traverse((o) => {
+          const m = (o as THREE.Mesh).material as THREE.Material | undefined;
+          const drawn =
+            o instanceof THREE.Line || o instanceof THREE.Points || o instanceof THREE.Sprite;
+          if (drawn || (m && (m.transparent || !m.depthWrite))) hide(o);
+        });
+      if (occluders.length > 0) {
+        scene.overrideMaterial = this.depthOnly;
+        renderer.render(scene, camera);
+        scene.overrideMaterial = null;
+      }
+      // the hair's sums
+      const sphere = this.sphere.copy(hair.geometry.boundingSphere ?? new THREE.Sphere());
+      sphere.applyMatrix4(hair.matrixWorld);
+      const eye = new THREE.Vector3().setFromMatrixPosition(camera.matrixWorld);
+      this.material.uniforms.oitNear.value = Math.max(
+        0,
+        eye.distanceTo(sphere.center) - sphere.radius,
+      );
+      hair.material = this.material;
+      renderer.render(hair, camera);
+      // the composite over what was drawn before
+      renderer.setRenderTarget(into);
+      this.composite.uniforms.accumTexture.value = target.textures[0];
+      this.composite.uniforms.weightTexture.value = target.textures[1];
+      renderer.render(this.quad, this.quadCamera);
+    } finally {
+      scene.overrideMaterial = null;
+      hair.material = material;
+      for (const o of restore) o.visible = true;
+      renderer.setRenderTarget(into);
+      renderer.setClearColor(clear, clearAlpha);
+      renderer.autoClear = autoClear;
+    }
+  }
+
+  dispose(): void {
+    this.target?.dispose();
+    this.material.dispose();
+    this.composite.dispose();
+    this.depthOnly.dispose();
+    this.quad.geometry.dispose();
+  }
+}
