@@ -12,13 +12,13 @@
 // their depth first (colour off), so hair behind them is not counted.
 //
 // f(depth): exp(−(d − d0)/OIT_DEPTH_SCALE), d the fragment's distance from the camera and d0 that
-// of the hair's nearest bounding point: a strand 1 cm (0.1 units) behind another counts 1/e as
-// much, which keeps the outer hair's highlights on top of the inner hair's shade. Clamped to a
-// range a half float carries.
+// of the hair's nearest bounding point: a strand 5 mm (0.05 units) behind another counts 1/e as
+// much, which keeps the outer hair's strands and highlights on top of the inner hair's shade.
+// Clamped to a range a half float carries (about 3.5 cm of depth past d0 is told apart).
 import * as THREE from 'three';
 
 /** e-folding depth of a fragment's weight, world units (1 unit = 10 cm). */
-export const OIT_DEPTH_SCALE = 0.1;
+export const OIT_DEPTH_SCALE = 0.05;
 
 /** GLSL for the strips' fragment shader under HAIR_OIT (glslVersion GLSL3): the two outputs and
  *  oitWrite(colour, alpha), which writes them. */

@@ -170,7 +170,11 @@ export class HairView {
     }
     const { points, strandStart } = c.strands;
     const light = c.lighting?.strand ?? null;
-    if (this.quality === 'high') {
+    // High draws the converged hair as strips; a stroke's previews (drawn many times a second,
+    // each soon replaced) are drawn as Fast draws them, lines of the same width's coverage, so
+    // drawing in High costs what it costs in Fast and the deep opacity maps are not rendered
+    // again for every preview (the head keeps the converged hair's shadow, as in Fast)
+    if (this.quality === 'high' && c.final) {
       const geometry = buildStrandStripGeometry(points, strandStart, 0, light, c.attributes);
       this.strips ??= this.createStripMaterial();
       const mesh = new THREE.Mesh(geometry, this.strips);
@@ -179,7 +183,7 @@ export class HairView {
       this.domDirty = this.dom !== null;
       return mesh;
     }
-    this.dom?.bindReceivers(false); // Fast: the head's per-vertex shadow
+    if (this.quality === 'fast') this.dom?.bindReceivers(false); // the head's per-vertex shadow
     const geometry = buildStrandGeometry(points, strandStart, 0, light, c.attributes);
     this.lines ??= createStrandMaterial({
       color: this.color,

@@ -45,6 +45,16 @@ varying vec2 vLight;
 varying float vCoverage;
 `;
 
+/** Where a strand's tip starts to taper and fade (both shaders of either geometry). */
+const tips = /* glsl */ `
+uniform float lengthVariation; // ± shift of where the tip fade starts, per strand
+uniform float tipFade; // fraction of the strand over which the tip tapers and fades out
+// where a strand's tip starts (rnd: its random values; length appearance, ragged ends)
+float fadeStartOf(vec4 rnd) {
+  return clamp(1.0 - tipFade + lengthVariation * (2.0 * rnd.z - 1.0), 0.3, 0.98);
+}
+`;
+
 /** Uniforms, helpers and shadeStrand(): the shading, shared by the lines' vertex shader and
  *  the strips' fragment shader. */
 const shading = /* glsl */ `
@@ -62,8 +72,6 @@ uniform vec3 ambientColor;
 uniform vec3 headCenter; // strand normals point away from it
 uniform float rootDarkening; // roots are darker by this fraction
 uniform float hueVariation; // ± red/blue balance per strand
-uniform float lengthVariation; // ± shift of where the tip fade starts, per strand
-uniform float tipFade; // fraction of the strand over which the tip fades out
 uniform float precomputed; // 1: use the precomputed lighting attribute; 0: ignore it (all lit)
 #ifdef DEEP_OPACITY
 uniform sampler2D domDepth;
@@ -75,6 +83,7 @@ uniform float domKappa; // optical depth per unit of accumulated opacity
 uniform float domBias; // world units
 #endif
 ${HAIR_BSDF_GLSL}
+${tips}
 
 #ifdef DEEP_OPACITY
 // Yuksel & Keyser 2008: the opacity accumulated between the first hair seen from the light and
@@ -96,10 +105,6 @@ float deepOpacityTransmittance(vec3 world) {
 }
 #endif
 
-// where a strand ends (rnd: its random values): somewhere in its tip fade (length appearance, ragged ends)
-float fadeStartOf(vec4 rnd) {
-  return clamp(1.0 - tipFade + lengthVariation * (2.0 * rnd.z - 1.0), 0.3, 0.98);
-}
 
 // The strand's absorption at \`along\` (rnd: its seeded random values): root → tip ombré, grey
 // strands, a seeded spread of melanin and a little of the red/blue balance.
@@ -146,7 +151,7 @@ const linesVertexShader = /* glsl */ `
 ${commonVertex}
 ${shading}
 uniform float strandWidth; // world units at the root (representedWidth)
-uniform float tipWidth; // fraction of strandWidth at the tip
+uniform float tipWidth; // fraction of strandWidth at the tip (the width tapers over the tip fade)
 uniform float viewportHeight; // pixels of the target being drawn
 varying vec3 vColor;
 varying float vFadeStart; // vCoverage: commonVertex's
@@ -160,7 +165,7 @@ void main() {
   float dist = length(cameraPosition - world.xyz);
   float pixel = 2.0 * dist / (projectionMatrix[1][1] * max(viewportHeight, 1.0));
   if (projectionMatrix[3][3] > 0.5) pixel = 2.0 / (projectionMatrix[1][1] * max(viewportHeight, 1.0));
-  float width = strandWidth * mix(1.0, tipWidth, along);
+  float width = strandWidth * mix(1.0, tipWidth, smoothstep(fadeStartOf(strandRandom), 1.0, along));
   vCoverage = min(1.0, width / pixel);
   vFadeStart = fadeStartOf(strandRandom);
   gl_Position = projectionMatrix * viewMatrix * world;
@@ -186,8 +191,9 @@ void main() {
  *  the deep-opacity passes (DOM_PASS) the strip faces the light instead of the camera. */
 const stripsVertexShader = /* glsl */ `
 ${commonVertex}
+${tips}
 uniform float strandWidth; // world units at the root
-uniform float tipWidth; // fraction of strandWidth at the tip
+uniform float tipWidth; // fraction of strandWidth at the tip (the width tapers over the tip fade)
 uniform float viewportHeight; // pixels of the target being drawn
 #ifdef DOM_PASS
 uniform vec3 domViewDirection; // towards the light
@@ -211,7 +217,7 @@ void main() {
   vec3 side = cross(T, V);
   float sl = length(side);
   side = sl > 1e-4 ? side / sl : normalize(cross(T, abs(T.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0)));
-  float width = strandWidth * mix(1.0, tipWidth, along);
+  float width = strandWidth * mix(1.0, tipWidth, smoothstep(fadeStartOf(strandRandom), 1.0, along));
   float drawn = max(width, pixel);
   float s = (gl_VertexID % 2 == 0) ? -0.5 : 0.5;
   world.xyz += side * (s * drawn);
@@ -353,8 +359,8 @@ export function createStrandMaterial(options: StrandMaterialOptions = {}): Stran
     headCenter: { value: new THREE.Vector3(...center) },
     rootDarkening: { value: 0.3 },
     hueVariation: { value: 0.05 },
-    lengthVariation: { value: 0.1 },
-    tipFade: { value: 0.22 },
+    lengthVariation: { value: 0.06 },
+    tipFade: { value: 0.12 },
     precomputed: { value: 1 },
     strandWidth: { value: representedWidth(30_000) }, // set per draw
     tipWidth: { value: 0.25 },
