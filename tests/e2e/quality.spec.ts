@@ -1,6 +1,7 @@
 // The Quality setting end to end: the button cycles Auto → Fast → High → Auto, the drawing path
 // follows (Auto is Fast on a software rasteriser such as this SwiftShader, High on a GPU), High
-// (strips, deep opacity maps) draws without GL errors even here, the setting survives a reload
+// (strips, deep opacity maps, order-independent blending) draws without GL errors even here and
+// its blending does not depend on the drawing order, the setting survives a reload
 // (view state, not the session), and the hair arrives with its precomputed lighting.
 import { expect, type Page, test } from '@playwright/test';
 import { settled, watchConsole } from './helpers';
@@ -69,6 +70,12 @@ test('Quality switches the drawing path, High draws without GL errors, and the s
   expect(await glError(page)).toBe(0);
   expect(await drawnPixels(page)).toBeGreaterThan(500);
   expect((await page.getByTestId('status').getAttribute('data-state')) ?? '').toBe('ready');
+  // High's strips blend order-independently: their triangles drawn in reverse change (next to)
+  // no pixel, where plain blending of the same strips changes many
+  const order = await page.evaluate(() => window.hairsketch.blendOrder());
+  expect(order).not.toBeNull();
+  expect(order?.oit).toBeLessThan(0.001);
+  expect(order?.unsorted).toBeGreaterThan(0.005); // 1.7 % here at 1,500 strands
 
   // view state: kept across a reload, not part of the session or its link
   await page.reload();

@@ -145,6 +145,10 @@ export interface HairsketchTestApi {
     cached: string;
     full: string;
   };
+  /** Share of the view's pixels that drawing the hair's triangles in reverse order changes, with
+   *  High's order-independent blending and with plain blending (viewer/blendOrderProbe.ts); null
+   *  when the hair is not drawn order-independently. */
+  blendOrder(): { oit: number; unsorted: number } | null;
   /** Turns the frame cache off (every frame drawn whole) or on; returns whether it is in use. */
   setFrameCache(on: boolean): boolean;
   /** Where the last frame started from: 'hair', 'static' or 'none' (viewer/frameCache.ts). */
@@ -370,6 +374,11 @@ export function installTestApi(app: TestApiParts): void {
     renderBoth(from) {
       const r = viewer.compareFrames(from);
       return { ...r, cached: base64(r.cached), full: base64(r.full) };
+    },
+    blendOrder() {
+      const r = viewer.blendOrder();
+      viewer.requestRender();
+      return r;
     },
     setFrameCache(on) {
       viewer.frameCacheEnabled = on;

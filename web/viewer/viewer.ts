@@ -20,6 +20,7 @@ import * as THREE from 'three';
 import type { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { KEY_LIGHT_POSITION } from '../lighting/keyLight';
 import type { Vec3 } from '../model/vec3';
+import { blendOrderProbe } from './blendOrderProbe';
 import { CameraRig } from './cameraRig';
 import { DEFAULT_CAMERA } from './defaultCamera';
 import { type FrameMode, type FramePlan, OverlayWait } from './frameCache';
@@ -267,6 +268,13 @@ export class Viewer {
     const full = read();
     this.requestRender();
     return { width: size.x, height: size.y, source, count: plan.count, cached, full };
+  }
+
+  /** Test probe: blendOrderProbe.ts on the view (a normal frame follows). */
+  blendOrder(): { oit: number; unsorted: number } | null {
+    const r = blendOrderProbe(this.sceneLayers);
+    this.requestRender();
+    return r;
   }
 
   /** Calls `cb` with each hair object (as given to setHair) once the first frame that draws it

@@ -1,0 +1,54 @@
+// Test probe for the hair's blending: the view drawn whole with the hair's triangles in their
+// order and in reverse, once order-independently (hairOit.ts) and once blended unsorted, and how
+// much of the picture each reversal changed. Order-independent blending should change nothing
+// but rounding; unsorted blending shows what the order would change.
+import * as THREE from 'three';
+import { ALL_LAYERS, drawLayers, type SceneLayers } from './layeredDrawing';
+
+/** Share of the drawing buffer's pixels whose colour a reversal of the drawing order changed by
+ *  more than 6 levels in a channel: `oit` with the order-independent drawing, `unsorted` with
+ *  plain blending; null when the hair shown is not strips drawn order-independently. */
+export function blendOrderProbe(s: SceneLayers): { oit: number; unsorted: number } | null {
+  const hair = s.hair();
+  const index = hair?.geometry.index;
+  if (!(hair instanceof THREE.Mesh) || !index || !hair.userData.oit) return null;
+  const oit = hair.userData.oit;
+  const original = (index.array as Uint32Array).slice();
+  const triangles = original.length / 3;
+  const reversed = new Uint32Array(original.length);
+  for (let t = 0; t < triangles; t++)
+    reversed.set(original.subarray(3 * (triangles - 1 - t), 3 * (triangles - t)), 3 * t);
+  const gl = s.renderer.getContext();
+  const size = s.renderer.getDrawingBufferSize(new THREE.Vector2());
+  const drawWith = (order: Uint32Array): Uint8Array => {
+    (index.array as Uint32Array).set(order);
+    index.needsUpdate = true;
+    drawLayers(s, ALL_LAYERS);
+    const px = new Uint8Array(4 * size.x * size.y);
+    gl.readPixels(0, 0, size.x, size.y, gl.RGBA, gl.UNSIGNED_BYTE, px);
+    return px;
+  };
+  const changed = (a: Uint8Array, b: Uint8Array): number => {
+    let n = 0;
+    for (let i = 0; i < a.length; i += 4)
+      for (let c = 0; c < 3; c++)
+        if (Math.abs(a[i + c] - b[i + c]) > 6) {
+          n++;
+          break;
+        }
+    return n / (a.length / 4);
+  };
+  const range = { ...hair.geometry.drawRange };
+  hair.geometry.setDrawRange(0, Number.POSITIVE_INFINITY);
+  try {
+    const withOit = changed(drawWith(original), drawWith(reversed));
+    delete hair.userData.oit;
+    const unsorted = changed(drawWith(original), drawWith(reversed));
+    return { oit: withOit, unsorted };
+  } finally {
+    hair.userData.oit = oit;
+    (index.array as Uint32Array).set(original);
+    index.needsUpdate = true;
+    hair.geometry.setDrawRange(range.start, range.count);
+  }
+}
