@@ -7,6 +7,8 @@
 //   layeredDrawing.ts     drawing a frame in layers through the frame cache (frameCache.ts)
 //   overlayLayer.ts       style curves, the stroke being drawn, guides, display objects
 //   viewCapture.ts        the view with every strand: PNG capture, timed frame
+//   hairOit.ts            High's order-independent blending of the strips (drawLayers runs it)
+//   blendOrderProbe.ts    test probe: does the drawing order change the picture
 // While the user interacts (orbit, a stroke, hair still settling) the hair is drawn at the level
 // of detail; a fast GPU always draws everything, a software rasteriser a sparse sample while
 // things move, and the whole head of hair once they stop. When the view settles and the whole
@@ -14,8 +16,8 @@
 // detail (that frame is when new hair is "shown": onHairShown), and the full-detail frame follows
 // a frame later, so nothing waiting for the hair waits for it (a 30K-strand frame takes seconds
 // on SwiftShader).
-// Style curves, the draft stroke, guides and display glyphs are depth-tested against head and
-// hair, and faint where hidden (overlayStyle.ts).
+// Style curves, the draft stroke, guides and display glyphs are depth-tested against the head
+// (and hair drawn opaque), and faint where hidden (overlayStyle.ts).
 import * as THREE from 'three';
 import type { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { KEY_LIGHT_POSITION } from '../lighting/keyLight';
