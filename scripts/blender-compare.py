@@ -1,6 +1,6 @@
 """Renders a hairsketch .usda export with Blender Cycles (bpy) from the app's front view.
 
-usage: blender-compare.py FILE.usda OUT.png SIZE SAMPLES LOOK_JSON
+usage: blender-compare.py FILE.usda OUT.png SIZE SAMPLES LOOK_JSON [represented]
 
 The hair gets a Principled Hair BSDF in its melanin parametrisation: Melanin and Melanin
 Redness read the export's `melanin` (per point) and `redness` (per curve) attributes through
@@ -11,6 +11,9 @@ KEY_LIGHT_DIRECTION (3, 5, 4), a rim sun from (-4, 2, -3), a grey world for the 
 light. The camera is the app's front still view (web/viewer/namedViews.ts namedView('front',
 lowest) with the bust's floor, vertical field of view 35 degrees), in app units (1 = 10 cm)
 mapped through the imported hair's own transform. Cycles on the CPU, SAMPLES samples, SIZE x SIZE.
+The export's strands are one hair wide (80 um at the root); with `represented` each is widened
+as the app draws it (web/viewer/strandMaterial.ts representedWidth: the 100,000 hairs of a head
+shared among the strands, at most 1.2 mm), so the two show the same density.
 """
 
 import json
@@ -19,10 +22,11 @@ import sys
 
 
 def main(argv):
-    if len(argv) != 5:
+    if len(argv) not in (5, 6) or (len(argv) == 6 and argv[5] != "represented"):
         print(__doc__.split("\n\n")[1], file=sys.stderr)
         return 2
-    path, out, size, samples, look_json = argv
+    path, out, size, samples, look_json = argv[:5]
+    represented = len(argv) == 6
     size, samples, look = int(size), int(samples), json.loads(look_json)
     import bpy
     from mathutils import Matrix, Vector
@@ -41,6 +45,14 @@ def main(argv):
         if o is not strands:
             o.hide_render = True  # guides
     to_world = strands.matrix_world.copy()
+    if represented:
+        # the app's rule: 100,000 hairs of 75 um shared among the strands, at most 1.2 mm wide
+        # (the export's root is 80 um: the same factor on every point keeps its taper)
+        k = min(100_000 / max(len(strands.data.curves), 1), 0.012 / 0.00075)
+        radius = strands.data.attributes["radius"]
+        values = [0.0] * len(radius.data)
+        radius.data.foreach_get("value", values)
+        radius.data.foreach_set("value", [v * k for v in values])
 
     mat = bpy.data.materials.new("hair")
     mat.use_nodes = True

@@ -63,6 +63,12 @@ test('Quality switches the drawing path, High draws without GL errors, and the s
   expect(await quality(page)).toMatchObject({ setting: 'fast', active: 'fast' });
   expect(await glError(page)).toBe(0);
   expect(await drawnPixels(page)).toBeGreaterThan(500);
+  // Fast's lines blend order-independently: their segments drawn in reverse change (next to) no
+  // pixel, where plain blending of the same lines changes many
+  const linesOrder = await page.evaluate(() => window.hairsketch.blendOrder());
+  expect(linesOrder).not.toBeNull();
+  expect(linesOrder?.oit).toBeLessThan(0.001);
+  expect(linesOrder?.unsorted).toBeGreaterThan(0.005); // 1.6 % here at 1,500 strands
 
   await button.click();
   await expect(button).toHaveText('Quality: High');

@@ -1,23 +1,26 @@
-// Test probe for the hair's blending: the view drawn whole with the hair's triangles in their
-// order and in reverse, once order-independently (hairOit.ts) and once blended unsorted, and how
-// much of the picture each reversal changed. Order-independent blending should change nothing
-// but rounding; unsorted blending shows what the order would change.
+// Test probe for the hair's blending: the view drawn whole with the hair's primitives (triangles
+// of strips, segments of lines) in their order and in reverse, once order-independently
+// (hairOit.ts) and once blended unsorted, and how much of the picture each reversal changed.
+// Order-independent blending should change nothing but rounding; unsorted blending shows what
+// the order would change.
 import * as THREE from 'three';
 import { ALL_LAYERS, drawLayers, type SceneLayers } from './layeredDrawing';
 
 /** Share of the drawing buffer's pixels whose colour a reversal of the drawing order changed by
  *  more than 6 levels in a channel: `oit` with the order-independent drawing, `unsorted` with
- *  plain blending; null when the hair shown is not strips drawn order-independently. */
+ *  plain blending; null when the hair shown is not drawn order-independently. */
 export function blendOrderProbe(s: SceneLayers): { oit: number; unsorted: number } | null {
   const hair = s.hair();
   const index = hair?.geometry.index;
-  if (!(hair instanceof THREE.Mesh) || !index || !hair.userData.oit) return null;
+  if (!hair || !index || !hair.userData.oit) return null;
   const oit = hair.userData.oit;
   const original = (index.array as Uint32Array).slice();
-  const triangles = original.length / 3;
+  // primitives (triangles of strips, segments of lines) in reverse order, each kept whole
+  const k = hair instanceof THREE.Mesh ? 3 : 2;
+  const primitives = original.length / k;
   const reversed = new Uint32Array(original.length);
-  for (let t = 0; t < triangles; t++)
-    reversed.set(original.subarray(3 * (triangles - 1 - t), 3 * (triangles - t)), 3 * t);
+  for (let t = 0; t < primitives; t++)
+    reversed.set(original.subarray(k * (primitives - 1 - t), k * (primitives - t)), k * t);
   const gl = s.renderer.getContext();
   const size = s.renderer.getDrawingBufferSize(new THREE.Vector2());
   const drawWith = (order: Uint32Array): Uint8Array => {

@@ -1,6 +1,6 @@
-// Weighted blended order-independent transparency (McGuire & Bavoil 2013) for the High quality's
-// strips where the canvas is not multisampled: every hair fragment adds its colour times its
-// weight w = α·f(depth) to one sum and its weight to another, and multiplies the "revealage"
+// Weighted blended order-independent transparency (McGuire & Bavoil 2013) for thin strands
+// (Fast's lines; High's strips where the canvas is not multisampled): every hair fragment adds
+// its colour times its weight w = α·f(depth) to one sum and its weight to another, and multiplies the "revealage"
 // (what is seen through the hair) by 1 − α; a composite pass then lays the weighted mean colour
 // over the scene with opacity 1 − revealage. Sums and products do not depend on the order the
 // strands are drawn in, so dense hair shows no sorting artefacts.
@@ -20,7 +20,7 @@ import * as THREE from 'three';
 /** e-folding depth of a fragment's weight, world units (1 unit = 10 cm). */
 export const OIT_DEPTH_SCALE = 0.05;
 
-/** GLSL for the strips' fragment shader under HAIR_OIT (glslVersion GLSL3): the two outputs and
+/** GLSL for a strand fragment shader under HAIR_OIT (glslVersion GLSL3): the two outputs and
  *  oitWrite(colour, alpha), which writes them. */
 export const OIT_FRAGMENT_GLSL = /* glsl */ `
 layout(location = 0) out highp vec4 oitAccum;
@@ -58,8 +58,8 @@ void main() {
 }
 `;
 
-/** The order-independent drawing of one strip material's hair: its twin material (same shaders
- *  and uniforms, HAIR_OIT defined), the targets and the composite pass. */
+/** The order-independent drawing of one strand material's hair (strips or lines): its twin
+ *  material (same shaders and uniforms, HAIR_OIT defined), the targets and the composite pass. */
 export class WeightedBlendedHair {
   readonly material: THREE.ShaderMaterial;
   private target: THREE.WebGLRenderTarget | null = null;
@@ -69,12 +69,12 @@ export class WeightedBlendedHair {
   private readonly quadCamera = new THREE.OrthographicCamera(-1, 1, 1, -1, 0, 1);
   private readonly sphere = new THREE.Sphere();
 
-  constructor(strips: THREE.ShaderMaterial) {
+  constructor(strands: THREE.ShaderMaterial) {
     const material = new THREE.ShaderMaterial({
-      uniforms: strips.uniforms, // shared: the look and the deep opacity maps stay in step
-      defines: { ...strips.defines, HAIR_OIT: '' },
-      vertexShader: strips.vertexShader,
-      fragmentShader: strips.fragmentShader,
+      uniforms: strands.uniforms, // shared: the look and the deep opacity maps stay in step
+      defines: { ...strands.defines, HAIR_OIT: '' },
+      vertexShader: strands.vertexShader,
+      fragmentShader: strands.fragmentShader,
       glslVersion: THREE.GLSL3,
       side: THREE.DoubleSide,
       transparent: true,
@@ -88,7 +88,7 @@ export class WeightedBlendedHair {
     });
     material.name = 'HairStripsOit';
     material.uniforms.oitNear = { value: 0 };
-    material.onBeforeRender = strips.onBeforeRender;
+    material.onBeforeRender = strands.onBeforeRender;
     this.material = material;
     this.composite = new THREE.ShaderMaterial({
       uniforms: { accumTexture: { value: null }, weightTexture: { value: null } },
@@ -132,14 +132,14 @@ export class WeightedBlendedHair {
     return this.target;
   }
 
-  /** Draws `hair` (a strip mesh of this material's twin) over what the current target holds:
+  /** Draws `hair` (strips or lines of this material's twin) over what the current target holds:
    *  `occluders` (scene objects drawn opaque: the head, the body) hide the hair behind them.
    *  The renderer's target, clear colour and autoClear are left as they were. */
   draw(
     renderer: THREE.WebGLRenderer,
     scene: THREE.Scene,
     camera: THREE.Camera,
-    hair: THREE.Mesh,
+    hair: THREE.Mesh | THREE.LineSegments,
     occluders: readonly THREE.Object3D[],
   ): void {
     const into = renderer.getRenderTarget();

@@ -1,6 +1,6 @@
 // The displayed hair: strand arrays from the solver become one object in the viewer, drawn at
 // the active quality: 'fast' = GL lines with the lighting precomputed in the worker (transmittance
-// and occlusion per point); 'high' = camera-facing tapered strips with alpha-to-coverage (where
+// and occlusion per point), blended order-independently (hairOit.ts); 'high' = camera-facing tapered strips with alpha-to-coverage (where
 // the canvas is multisampled, else weighted blended order-independent transparency: hairOit.ts)
 // and deep opacity maps for the key light's shadow. Materials are
 // shared across revisions (a new material would compile its shader again). The head receives the
@@ -52,6 +52,8 @@ export class HairView {
   private dom: DeepOpacityMaps | null = null;
   /** High's order-independent drawing of the strips (null: alpha-to-coverage or unsorted). */
   private oit: WeightedBlendedHair | null = null;
+  /** The lines' (undefined: not made yet; null: unsorted, no half-float targets here). */
+  private linesOit: WeightedBlendedHair | null | undefined;
   private domDirty = false;
   /** Lighting precompute time of the hair shown (ms, in the worker), null without one. */
   lightingMs: number | null = null;
@@ -190,7 +192,12 @@ export class HairView {
       look: this.look,
       kind: 'lines',
     });
+    if (this.linesOit === undefined)
+      this.linesOit = WeightedBlendedHair.supported(this.viewer.renderer)
+        ? new WeightedBlendedHair(this.lines)
+        : null;
     const lines = new THREE.LineSegments(geometry, this.lines);
+    if (this.linesOit) lines.userData.oit = this.linesOit; // drawn order-independently
     this.object = lines;
     return lines;
   }

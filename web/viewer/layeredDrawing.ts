@@ -59,10 +59,10 @@ export function drawLayers(s: SceneLayers, layers: ReadonlyArray<DrawnLayer>): v
   try {
     const hair = s.hair();
     const oit =
-      layers.includes('hair') && s.hairGroup.visible && hair instanceof THREE.Mesh && hair.visible
+      layers.includes('hair') && s.hairGroup.visible && hair?.visible
         ? (hair.userData.oit as WeightedBlendedHair | undefined)
         : undefined;
-    if (!oit || !(hair instanceof THREE.Mesh)) {
+    if (!oit || !hair) {
       r.render(s.scene, s.camera);
       return;
     }

@@ -10,10 +10,10 @@
 // per strand (four seeded random bytes: melanin, hue, where the tip starts to fade, roughness).
 // Thin strands: each drawn strand stands for several of a head's hairs (representedWidth), and
 // is drawn at least a pixel wide with the rest of its width as coverage in alpha, tapering to
-// the tip, the tips fading out. Two geometries: GL lines (1 pixel, shaded per vertex, their
-// coverage blended unsorted without depth writes; the Fast quality), and camera-facing strips
-// (two vertices per point, expanded in the vertex shader; alpha-to-coverage with MSAA, else
-// blended order-independently: hairOit.ts; the High quality, which also reads deep opacity
+// the tip, the tips fading out, blended order-independently without depth writes (hairOit.ts;
+// unsorted where the renderer has no half-float targets). Two geometries: GL lines (1 pixel,
+// shaded per vertex; the Fast quality), and camera-facing strips (two vertices per point,
+// expanded in the vertex shader; alpha-to-coverage with MSAA; the High quality, which also reads deep opacity
 // maps: deepOpacity.ts).
 import * as THREE from 'three';
 import { FILL_LIGHT_DIRECTION, KEY_LIGHT_DIRECTION } from '../lighting/keyLight';
@@ -155,6 +155,7 @@ uniform float tipWidth; // fraction of strandWidth at the tip (the width tapers 
 uniform float viewportHeight; // pixels of the target being drawn
 varying vec3 vColor;
 varying float vFadeStart; // vCoverage: commonVertex's
+varying float vDistance; // from the camera (the order-independent pass's weight)
 void main() {
   vec4 world = modelMatrix * vec4(position, 1.0);
   vec3 T = normalize(mat3(modelMatrix) * tangent);
@@ -163,6 +164,7 @@ void main() {
   // a line is one pixel wide: its opacity is the strand's true coverage of that pixel (as the
   // strips' width / drawn width), tapering to the tip
   float dist = length(cameraPosition - world.xyz);
+  vDistance = dist;
   float pixel = 2.0 * dist / (projectionMatrix[1][1] * max(viewportHeight, 1.0));
   if (projectionMatrix[3][3] > 0.5) pixel = 2.0 / (projectionMatrix[1][1] * max(viewportHeight, 1.0));
   float width = strandWidth * mix(1.0, tipWidth, smoothstep(fadeStartOf(strandRandom), 1.0, along));
@@ -177,13 +179,22 @@ varying vec3 vColor;
 varying float vAlong;
 varying float vCoverage;
 varying float vFadeStart;
+varying float vDistance;
+#ifdef HAIR_OIT
+${OIT_FRAGMENT_GLSL}
+#endif
 void main() {
-  // coverage times the tip's fade, blended unsorted without depth writes
+  // coverage times the tip's fade, blended order-independently (HAIR_OIT: hairOit.ts) or
+  // unsorted, without depth writes
   float alpha = vCoverage * (1.0 - smoothstep(vFadeStart, 1.0, vAlong));
   if (alpha < 0.004) discard;
+#ifdef HAIR_OIT
+  oitWrite(vColor, alpha, vDistance);
+#else
   gl_FragColor = vec4(vColor, alpha);
   #include <tonemapping_fragment>
   #include <colorspace_fragment>
+#endif
 }
 `;
 
