@@ -133,7 +133,8 @@ export class WeightedBlendedHair {
   }
 
   /** Draws `hair` (strips or lines of this material's twin) over what the current target holds:
-   *  `occluders` (scene objects drawn opaque: the head, the body) hide the hair behind them.
+   *  `occluders` (children of the scene drawn opaque, shown or not: the head, the body) hide the
+ *  hair behind them.
    *  The renderer's target, clear colour and autoClear are left as they were. */
   draw(
     renderer: THREE.WebGLRenderer,
@@ -161,6 +162,9 @@ export class WeightedBlendedHair {
       renderer.clear(true, true, false);
       renderer.autoClear = false;
       // the occluders' depth: only they, opaque surfaces only, colour off
+      // (the occluders may be hidden by the caller's layer pass: shown for this one)
+      const shown = occluders.filter((c) => !c.visible);
+      for (const c of shown) c.visible = true;
       for (const c of scene.children)
         if (!(c instanceof THREE.Light) && !occluders.includes(c)) hide(c);
       for (const c of occluders)
@@ -175,6 +179,7 @@ export class WeightedBlendedHair {
         renderer.render(scene, camera);
         scene.overrideMaterial = null;
       }
+      for (const c of shown) c.visible = false;
       // the hair's sums
       const sphere = this.sphere.copy(hair.geometry.boundingSphere ?? new THREE.Sphere());
       sphere.applyMatrix4(hair.matrixWorld);
