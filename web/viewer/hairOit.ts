@@ -134,7 +134,7 @@ export class WeightedBlendedHair {
 
   /** Draws `hair` (strips or lines of this material's twin) over what the current target holds:
    *  `occluders` (children of the scene drawn opaque, shown or not: the head, the body) hide the
- *  hair behind them.
+   *  hair behind them.
    *  The renderer's target, clear colour and autoClear are left as they were. */
   draw(
     renderer: THREE.WebGLRenderer,

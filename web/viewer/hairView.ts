@@ -197,7 +197,10 @@ export class HairView {
         ? new WeightedBlendedHair(this.lines)
         : null;
     const lines = new THREE.LineSegments(geometry, this.lines);
-    if (this.linesOit) lines.userData.oit = this.linesOit; // drawn order-independently
+    // converged hair is drawn order-independently; a stroke's previews (each soon replaced) and
+    // interactive samples (drawLayers) are blended unsorted, which keeps drawing as quick as
+    // before thin strands
+    if (this.linesOit && c.final) lines.userData.oit = this.linesOit;
     this.object = lines;
     return lines;
   }

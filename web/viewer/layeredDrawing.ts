@@ -42,7 +42,8 @@ function layerOf(s: SceneLayers, o: THREE.Object3D): Layer {
 
 /** Draws the scene's objects of the given layers, as renderer.render draws them (lights always
  *  stay: hiding one would change the lit materials' programs). Hair whose object carries an
- *  order-independent drawing (userData.oit, hairOit.ts) is blended by it over the static layer,
+ *  order-independent drawing (userData.oit, hairOit.ts), drawn whole (not a level-of-detail
+ *  sample), is blended by it over the static layer,
  *  with the static objects shown as its occluders, and the overlays are drawn after it. */
 export function drawLayers(s: SceneLayers, layers: ReadonlyArray<DrawnLayer>): void {
   const hidden: THREE.Object3D[] = [];
@@ -58,8 +59,11 @@ export function drawLayers(s: SceneLayers, layers: ReadonlyArray<DrawnLayer>): v
   const autoClear = r.autoClear;
   try {
     const hair = s.hair();
+    // the whole hair only: a sample drawn while the view moves is blended unsorted (cheaper, and
+    // sparse enough that the order shows little)
+    const whole = hair ? hair.geometry.drawRange.count >= (hair.geometry.index?.count ?? 0) : false;
     const oit =
-      layers.includes('hair') && s.hairGroup.visible && hair?.visible
+      layers.includes('hair') && s.hairGroup.visible && hair?.visible && whole
         ? (hair.userData.oit as WeightedBlendedHair | undefined)
         : undefined;
     if (!oit || !hair) {
