@@ -139,6 +139,10 @@ def main(argv):
     scene.render.resolution_y = size
     scene.render.film_transparent = False
     scene.view_settings.view_transform = "Standard"
+    # Cycles' suns and world light the scene about 2.7 times as brightly as the app lights it
+    # (the same skin colour read 211 against 134 in sRGB on the cheek): exposure evens it out,
+    # so the hair's colours compare at the same lighting level
+    scene.view_settings.exposure = -1.43
     scene.render.filepath = out
     bpy.ops.render.render(write_still=True)
     print(json.dumps({"file": out, "strands": len(strands.data.curves), "floor": floor}))
