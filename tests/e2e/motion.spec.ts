@@ -67,10 +67,13 @@ test('Play with Head turn moves the strands; Stop restores them bit for bit', as
   const playing = await changedSinceKept(page);
   expect(playing.same).toBe(true);
   expect(playing.changed).toBeGreaterThan(playing.of / 4);
+  // the style curves turn with the head, and come back with it
+  expect((await page.evaluate(() => window.hairsketch.motion())).overlaysPosed).toBe(true);
   await page.getByRole('button', { name: 'Stop' }).click();
   await expect(page.getByRole('button', { name: 'Play' })).toBeVisible();
   const after = await changedSinceKept(page);
   expect(after).toEqual({ changed: 0, of: playing.of, same: true });
+  expect((await page.evaluate(() => window.hairsketch.motion())).overlaysPosed).toBe(false);
   // the shortcut (Shift+P) plays and stops too
   await page.keyboard.press('Shift+P');
   await motionFrame(page, 2);

@@ -305,7 +305,7 @@ export function startApp(): void {
     viewer,
     hairView,
     shown: () => hair.shownResult,
-    meshes: () => [headMesh, bodyMesh],
+    meshes: () => [headMesh, bodyMesh, ...viewer.headOverlays],
     say: (m) => status.note(m),
     statusElement: byId('status'),
     changed: () => motionControls.refresh(),

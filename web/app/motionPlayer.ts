@@ -27,7 +27,8 @@ export interface MotionPlayerDeps {
   hairView: HairView;
   /** The result whose hair is on screen (HairPresenter.shownResult). */
   shown: () => SolveResult | null;
-  /** The head and body meshes (the body may be absent). */
+  /** What the head's pose moves: the head and body meshes (the body may be absent) and the
+   *  overlays on the head (style curves, displays, guides), so curves stay on the hair. */
   meshes: () => (THREE.Object3D | undefined)[];
   say: (message: string) => void;
   /** The status line's element: data-motion (the motion playing, or ''), data-motion-frame. */

@@ -76,7 +76,6 @@ export interface HairsketchTestApi {
   /** The hair drawn (also while a motion plays: its current frame): its points, where each
    *  strand starts, the index of the curve whose tie laid each strand (or -1), and the scalp
    *  section of each root (empty with sections off). */
-  /** The motion playing ('' none), its frame, and frames drawn per second since it started. */
   /** The motion playing (null: none), its frame, frames drawn per second since it started,
    *  and the last frame's wait for the worker and geometry build (ms). */
   motion(): {
@@ -87,6 +86,9 @@ export interface HairsketchTestApi {
     buildMs: number;
     /** Frames of this play drawn by rebuilding the geometry (the rest moved its points). */
     rebuilds: number;
+    /** The overlays on the head (style curves, displays) are moved from their rest: they carry
+     *  the head's pose. */
+    overlaysPosed: boolean;
   };
   strands(): {
     points: number[];
@@ -290,6 +292,10 @@ export function installTestApi(app: TestApiParts): void {
       workerMs: app.motion?.times.workerMs ?? 0,
       buildMs: app.motion?.times.buildMs ?? 0,
       rebuilds: app.motion?.times.rebuilds ?? 0,
+      // at rest their matrix is the identity (1 on the diagonal: every fifth element)
+      overlaysPosed: viewer.headOverlays.some((g) =>
+        g.matrix.elements.some((v, i) => v !== (i % 5 === 0 ? 1 : 0)),
+      ),
     }),
     strands() {
       const s = app.motion?.drawn ?? hair.strands;

@@ -454,6 +454,12 @@ export class Viewer {
   }
 
   /** Shows or hides the style curves (the draft stroke is always shown). */
+  /** The overlay groups that sit on the head (style curves, displays, guides): a motion moves
+   *  them with it. */
+  get headOverlays(): THREE.Group[] {
+    return this.overlays.groups;
+  }
+
   setCurvesVisible(on: boolean): void {
     if (this.overlays.setCurvesVisible(on)) this.requestRender();
   }
