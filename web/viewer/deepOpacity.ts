@@ -217,6 +217,7 @@ export class DeepOpacityMaps {
     u.hsKappa.value = 1.0;
     u.hsBias.value = 2 * this.texel;
     u.hsHeadOpacity.value = HEAD_FRAGMENT_OPACITY;
+    u.hsTexel.value = 1 / this.size;
   }
 
   dispose(): void {

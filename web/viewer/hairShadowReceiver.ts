@@ -24,6 +24,7 @@ export const HAIR_SHADOW_UNIFORMS = {
   hsKappa: { value: 1 },
   hsBias: { value: 0.01 },
   hsHeadOpacity: { value: 0 },
+  hsTexel: { value: 1 / 512 }, // one texel of the maps, in texture coordinates
 };
 
 const receiverGlsl = (inMap: boolean) => /* glsl */ `
@@ -36,10 +37,9 @@ uniform float hsRange;
 uniform float hsKappa;
 uniform float hsBias;
 uniform float hsHeadOpacity;
+uniform float hsTexel;
 varying vec3 vHsWorld;
-float hairShadowFromMaps(vec3 world) {
-  vec4 p = hsMatrix * vec4(world, 1.0);
-  vec3 q = p.xyz / p.w * 0.5 + 0.5;
+float hairShadowAt(vec3 q) {
   if (q.x <= 0.0 || q.y <= 0.0 || q.x >= 1.0 || q.y >= 1.0) return 1.0;
   float z0 = texture2D(hsDepth, q.xy).r;
   float d = (q.z - z0) * hsRange;
@@ -57,6 +57,15 @@ float hairShadowFromMaps(vec3 world) {
   else if (d < hsLayers.z) opacity = mix(o.g, o.b, (d - hsLayers.y) / (hsLayers.z - hsLayers.y));
   else opacity = o.b;
   return exp(-hsKappa * opacity);
+}
+// four taps two texels apart, averaged: the first-hair depth is per texel, so a thin strand's
+// shadow read from one tap is a hard line a texel wide, dotted where the surface crosses texels
+float hairShadowFromMaps(vec3 world) {
+  vec4 p = hsMatrix * vec4(world, 1.0);
+  vec3 q = p.xyz / p.w * 0.5 + 0.5;
+  float t = hsTexel;
+  return 0.25 * (hairShadowAt(q + vec3(-t, -t, 0.0)) + hairShadowAt(q + vec3(t, -t, 0.0))
+    + hairShadowAt(q + vec3(-t, t, 0.0)) + hairShadowAt(q + vec3(t, t, 0.0)));
 }
 `;
 
