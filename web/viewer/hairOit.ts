@@ -6,7 +6,8 @@
 // strands are drawn in, so dense hair shows no sorting artefacts.
 //
 // Targets: two half-float colour attachments with a depth buffer, at the size of what is drawn
-// into. Attachment 0: rgb Σ c·w (additive), a Π(1 − α) (multiplicative); attachment 1: r Σ w.
+// into. Attachment 0 (RGBA): rgb Σ c·w (additive), a Π(1 − α) (multiplicative); attachment 1
+// (R): Σ w. 14 bytes a pixel with the depth.
 // One blend function serves both (colour: one, one; alpha: zero, one minus source alpha), so it
 // needs neither per-attachment blending nor 32-bit float blending. The head and the body write
 // their depth first (colour off), so hair behind them is not counted.
@@ -126,6 +127,7 @@ export class WeightedBlendedHair {
         magFilter: THREE.NearestFilter,
         depthBuffer: true,
       });
+      this.target.textures[1].format = THREE.RedFormat; // Σ w alone: 2 bytes a pixel, not 8
     } else if (this.target.width !== size.x || this.target.height !== size.y) {
       this.target.setSize(size.x, size.y);
     }
