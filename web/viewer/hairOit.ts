@@ -7,7 +7,9 @@
 //
 // Targets: two half-float colour attachments with a depth buffer, at the size of what is drawn
 // into. Attachment 0 (RGBA): rgb Σ c·w (additive), a Π(1 − α) (multiplicative); attachment 1
-// (R): Σ w. 14 bytes a pixel with the depth.
+// (RG): Σ w and Σ w·depth. 16 bytes a pixel with the depth buffer. After the composite, the
+// hair's weighted mean depth goes into the depth buffer where it covers half a pixel or more, so
+// overlays drawn after it are faint under the hair as behind the head (overlayStyle.ts).
 // One blend function serves both (colour: one, one; alpha: zero, one minus source alpha), so it
 // needs neither per-attachment blending nor 32-bit float blending. The head and the body write
 // their depth first (colour off), so hair behind them is not counted.
@@ -32,7 +34,8 @@ void oitWrite(vec3 color, float alpha, float dist) {
   float lnF = clamp((oitNear - dist) / ${OIT_DEPTH_SCALE.toFixed(3)} + 4.6, -7.0, 4.6);
   float w = alpha * exp(lnF);
   oitAccum = vec4(color * w, alpha);
-  oitWeight = vec4(w, 0.0, 0.0, alpha);
+  // and the weighted depth past oitNear (small numbers: a half float keeps them to ~0.1 mm)
+  oitWeight = vec4(w, w * (dist - oitNear), 0.0, alpha);
 }
 `;
 
@@ -41,6 +44,28 @@ varying vec2 vUv;
 void main() {
   vUv = uv;
   gl_Position = vec4(position.xy, 0.0, 1.0);
+}
+`;
+
+/** The hair's depth for the overlays drawn after it (curves under the hair are faint, as behind
+ *  the head): where the hair covers at least half a pixel, the weighted mean distance of its
+ *  fragments, along the pixel's ray, as the depth buffer's value. Perspective cameras only. */
+const depthFragment = /* glsl */ `
+uniform sampler2D accumTexture;
+uniform sampler2D weightTexture;
+uniform float oitNear;
+uniform mat4 cameraProjection;
+uniform mat4 cameraProjectionInverse;
+varying vec2 vUv;
+void main() {
+  if (texture2D(accumTexture, vUv).a > 0.5) discard; // less than half covered
+  vec2 w = texture2D(weightTexture, vUv).rg;
+  float dist = oitNear + w.y / max(w.x, 1e-6);
+  vec4 r = cameraProjectionInverse * vec4(2.0 * vUv - 1.0, -1.0, 1.0);
+  vec3 ray = normalize(r.xyz / r.w);
+  vec4 clip = cameraProjection * vec4(ray * dist, 1.0);
+  gl_FragDepth = clamp(0.5 * clip.z / clip.w + 0.5, 0.0, 1.0);
+  gl_FragColor = vec4(0.0);
 }
 `;
 
@@ -66,6 +91,7 @@ export class WeightedBlendedHair {
   private target: THREE.WebGLRenderTarget | null = null;
   private readonly depthOnly = new THREE.MeshBasicMaterial({ colorWrite: false });
   private readonly composite: THREE.ShaderMaterial;
+  private readonly depth: THREE.ShaderMaterial;
   private readonly quad: THREE.Mesh;
   private readonly quadCamera = new THREE.OrthographicCamera(-1, 1, 1, -1, 0, 1);
   private readonly sphere = new THREE.Sphere();
@@ -107,6 +133,21 @@ export class WeightedBlendedHair {
     });
     this.quad = new THREE.Mesh(new THREE.PlaneGeometry(2, 2), this.composite);
     this.quad.frustumCulled = false;
+    this.depth = new THREE.ShaderMaterial({
+      uniforms: {
+        accumTexture: { value: null },
+        weightTexture: { value: null },
+        oitNear: { value: 0 },
+        cameraProjection: { value: new THREE.Matrix4() },
+        cameraProjectionInverse: { value: new THREE.Matrix4() },
+      },
+      vertexShader: compositeVertex,
+      fragmentShader: depthFragment,
+      colorWrite: false,
+      depthTest: true,
+      depthWrite: true,
+      depthFunc: THREE.LessEqualDepth,
+    });
   }
 
   /** Whether this renderer can draw it (half-float colour attachments). */
@@ -127,7 +168,7 @@ export class WeightedBlendedHair {
         magFilter: THREE.NearestFilter,
         depthBuffer: true,
       });
-      this.target.textures[1].format = THREE.RedFormat; // Σ w alone: 2 bytes a pixel, not 8
+      this.target.textures[1].format = THREE.RGFormat; // Σ w, Σ w·depth: 4 bytes a pixel, not 8
     } else if (this.target.width !== size.x || this.target.height !== size.y) {
       this.target.setSize(size.x, size.y);
     }
@@ -197,9 +238,20 @@ export class WeightedBlendedHair {
       this.composite.uniforms.accumTexture.value = target.textures[0];
       this.composite.uniforms.weightTexture.value = target.textures[1];
       renderer.render(this.quad, this.quadCamera);
+      if (camera instanceof THREE.PerspectiveCamera) {
+        const u = this.depth.uniforms;
+        u.accumTexture.value = target.textures[0];
+        u.weightTexture.value = target.textures[1];
+        u.oitNear.value = this.material.uniforms.oitNear.value;
+        u.cameraProjection.value.copy(camera.projectionMatrix);
+        u.cameraProjectionInverse.value.copy(camera.projectionMatrixInverse);
+        this.quad.material = this.depth;
+        renderer.render(this.quad, this.quadCamera);
+      }
     } finally {
       scene.overrideMaterial = null;
       hair.material = material;
+      this.quad.material = this.composite;
       for (const o of restore) o.visible = true;
       renderer.setRenderTarget(into);
       renderer.setClearColor(clear, clearAlpha);
@@ -211,6 +263,7 @@ export class WeightedBlendedHair {
     this.target?.dispose();
     this.material.dispose();
     this.composite.dispose();
+    this.depth.dispose();
     this.depthOnly.dispose();
     this.quad.geometry.dispose();
   }

@@ -1,11 +1,11 @@
 // How lines and points drawn over the head and hair (style curves, the stroke being drawn, ponytail
 // guides, constraint and field glyphs, the box) meet the depth buffer. Every overlay is drawn in
-// two passes of the same geometry, both after the opaque head and hair (hair writes depth only
-// where it is drawn opaque, High with multisampling: thin strands blended by their coverage do
-// not, so elsewhere a curve under the hair is drawn in full over it):
-//   - hidden: depthFunc GreaterDepth at low opacity, so the parts behind the head (or opaque
-//     hair) stay visible but faint (a curve behind the head no longer looks as if it ran over
-//     the face);
+// two passes of the same geometry, both after the head and hair (the settled hair's depth is
+// its fragments' weighted mean where it covers half a pixel or more: hairOit.ts; a stroke's
+// previews and the sample drawn while the view moves write none, so there a curve under the
+// hair is drawn in full):
+//   - hidden: depthFunc GreaterDepth at low opacity, so the parts behind the head or hair stay
+//     visible but faint (a curve behind the head no longer looks as if it ran over the face);
 //   - visible: depth-tested as usual, in full colour.
 // Both passes move each vertex a little towards the eye (OVERLAY_DEPTH_BIAS world units along the
 // view ray, which leaves its place on screen unchanged), so curves lying on the scalp neither

@@ -16,8 +16,8 @@
 // detail (that frame is when new hair is "shown": onHairShown), and the full-detail frame follows
 // a frame later, so nothing waiting for the hair waits for it (a 30K-strand frame takes seconds
 // on SwiftShader).
-// Style curves, the draft stroke, guides and display glyphs are depth-tested against the head
-// (and hair drawn opaque), and faint where hidden (overlayStyle.ts).
+// Style curves, the draft stroke, guides and display glyphs are depth-tested against head and
+// settled hair, and faint where hidden (overlayStyle.ts).
 import * as THREE from 'three';
 import type { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { KEY_LIGHT_POSITION } from '../lighting/keyLight';
