@@ -43,8 +43,8 @@ function layerOf(s: SceneLayers, o: THREE.Object3D): Layer {
 /** Draws the scene's objects of the given layers, as renderer.render draws them (lights always
  *  stay: hiding one would change the lit materials' programs). Hair whose object carries an
  *  order-independent drawing (userData.oit, hairOit.ts), drawn whole (not a level-of-detail
- *  sample), is blended by it over the static layer,
- *  with the static objects shown as its occluders, and the overlays are drawn after it. */
+ *  sample), is blended by it over the static layer, with the static objects shown as its
+ *  occluders, and the overlays are drawn after it. */
 export function drawLayers(s: SceneLayers, layers: ReadonlyArray<DrawnLayer>): void {
   const hidden: THREE.Object3D[] = [];
   const statics: THREE.Object3D[] = [];
