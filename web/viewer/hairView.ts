@@ -1,10 +1,12 @@
 // The displayed hair: strand arrays from the solver become one object in the viewer, drawn at
 // the active quality: 'fast' = GL lines with the lighting precomputed in the worker (transmittance
-// and occlusion per point), blended order-independently (hairOit.ts); 'high' = camera-facing tapered strips with alpha-to-coverage (where
-// the canvas is multisampled, else weighted blended order-independent transparency: hairOit.ts)
-// and deep opacity maps for the key light's shadow. Materials are
-// shared across revisions (a new material would compile its shader again). The head receives the
-// hair's shadow (per-vertex transmittance, headMaterial.ts).
+// and occlusion per point), blended order-independently (hairOit.ts); 'high' = camera-facing
+// tapered strips with alpha-to-coverage (where the canvas is multisampled, else weighted blended
+// order-independent transparency: hairOit.ts) and deep opacity maps for the key light's shadow.
+// Hair that is not final (a stroke's previews, a motion's frames) is drawn as Fast draws it in
+// either quality. Materials are shared across revisions (a new material would compile its
+// shader again). The head receives the hair's shadow (per-vertex transmittance,
+// headMaterial.ts).
 import * as THREE from 'three';
 import type { GrowthParams } from '../model/growthParams';
 import type { HairLightingArrays, StrandArrays } from '../model/hairArrays';
@@ -172,10 +174,10 @@ export class HairView {
     }
     const { points, strandStart } = c.strands;
     const light = c.lighting?.strand ?? null;
-    // High draws the converged hair as strips; a stroke's previews (drawn many times a second,
-    // each soon replaced) are drawn as Fast draws them, lines of the same width's coverage, so
-    // drawing in High costs what it costs in Fast and the deep opacity maps are not rendered
-    // again for every preview (the head keeps the converged hair's shadow, as in Fast)
+    // High draws the converged hair as strips; a stroke's previews and a motion's frames (drawn
+    // many times a second, each soon replaced) are drawn as Fast draws them, lines of the same
+    // width's coverage, so they cost in High what they cost in Fast and the deep opacity maps
+    // are not rendered again for each (the head keeps the converged hair's shadow, as in Fast)
     if (this.quality === 'high' && c.final) {
       const geometry = buildStrandStripGeometry(points, strandStart, 0, light, c.attributes);
       this.strips ??= this.createStripMaterial();
