@@ -69,6 +69,9 @@ test('Quality switches the drawing path, High draws without GL errors, and the s
   expect(linesOrder).not.toBeNull();
   expect(linesOrder?.oit).toBeLessThan(0.001);
   expect(linesOrder?.unsorted).toBeGreaterThan(0.005); // 1.6 % here at 1,500 strands
+  // the settled hair's depth makes the style curves under it faint, as behind the head
+  const depth = await page.evaluate(() => window.hairsketch.hairDepth());
+  expect(depth).toBeGreaterThan(0.0005); // 0.2 % here (0 without the depth)
 
   await button.click();
   await expect(button).toHaveText('Quality: High');

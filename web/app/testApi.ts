@@ -151,6 +151,10 @@ export interface HairsketchTestApi {
    *  High's order-independent blending and with plain blending (viewer/blendOrderProbe.ts); null
    *  when the hair is not drawn order-independently. */
   blendOrder(): { oit: number; unsorted: number } | null;
+  /** Share of the view's pixels the settled hair's depth changes (overlays under the hair drawn
+   *  faint: viewer/blendOrderProbe.ts hairDepthProbe); null when the hair is not drawn
+   *  order-independently. */
+  hairDepth(): number | null;
   /** Turns the frame cache off (every frame drawn whole) or on; returns whether it is in use. */
   setFrameCache(on: boolean): boolean;
   /** Where the last frame started from: 'hair', 'static' or 'none' (viewer/frameCache.ts). */
@@ -380,6 +384,11 @@ export function installTestApi(app: TestApiParts): void {
     renderBoth(from) {
       const r = viewer.compareFrames(from);
       return { ...r, cached: base64(r.cached), full: base64(r.full) };
+    },
+    hairDepth() {
+      const r = viewer.hairDepth();
+      viewer.requestRender();
+      return r;
     },
     blendOrder() {
       const r = viewer.blendOrder();

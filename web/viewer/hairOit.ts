@@ -95,6 +95,8 @@ export class WeightedBlendedHair {
   private readonly quad: THREE.Mesh;
   private readonly quadCamera = new THREE.OrthographicCamera(-1, 1, 1, -1, 0, 1);
   private readonly sphere = new THREE.Sphere();
+  /** The hair's depth is written for the overlays drawn after it (false: not; a test switch). */
+  writesDepth = true;
 
   constructor(strands: THREE.ShaderMaterial) {
     const material = new THREE.ShaderMaterial({
@@ -238,7 +240,7 @@ export class WeightedBlendedHair {
       this.composite.uniforms.accumTexture.value = target.textures[0];
       this.composite.uniforms.weightTexture.value = target.textures[1];
       renderer.render(this.quad, this.quadCamera);
-      if (camera instanceof THREE.PerspectiveCamera) {
+      if (this.writesDepth && camera instanceof THREE.PerspectiveCamera) {
         const u = this.depth.uniforms;
         u.accumTexture.value = target.textures[0];
         u.weightTexture.value = target.textures[1];

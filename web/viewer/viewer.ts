@@ -22,7 +22,7 @@ import * as THREE from 'three';
 import type { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { KEY_LIGHT_POSITION } from '../lighting/keyLight';
 import type { Vec3 } from '../model/vec3';
-import { blendOrderProbe } from './blendOrderProbe';
+import { blendOrderProbe, hairDepthProbe } from './blendOrderProbe';
 import { CameraRig } from './cameraRig';
 import { DEFAULT_CAMERA } from './defaultCamera';
 import { type FrameMode, type FramePlan, OverlayWait } from './frameCache';
@@ -275,6 +275,13 @@ export class Viewer {
   /** Test probe: blendOrderProbe.ts on the view (a normal frame follows). */
   blendOrder(): { oit: number; unsorted: number } | null {
     const r = blendOrderProbe(this.sceneLayers);
+    this.requestRender();
+    return r;
+  }
+
+  /** Test probe: hairDepthProbe (blendOrderProbe.ts) on the view (a normal frame follows). */
+  hairDepth(): number | null {
+    const r = hairDepthProbe(this.sceneLayers);
     this.requestRender();
     return r;
   }
