@@ -15,14 +15,9 @@ export function hairDepthProbe(s: SceneLayers): number | null {
   const hair = s.hair();
   const oit = hair?.userData.oit as WeightedBlendedHair | undefined;
   if (!hair || !oit) return null;
-  const gl = s.renderer.getContext();
-  const size = s.renderer.getDrawingBufferSize(new THREE.Vector2());
   const draw = (depth: boolean): Uint8Array => {
     oit.writesDepth = depth;
-    drawLayers(s, ALL_LAYERS);
-    const px = new Uint8Array(4 * size.x * size.y);
-    gl.readPixels(0, 0, size.x, size.y, gl.RGBA, gl.UNSIGNED_BYTE, px);
-    return px;
+    return drawAndRead(s);
   };
   const range = { ...hair.geometry.drawRange };
   hair.geometry.setDrawRange(0, Number.POSITIVE_INFINITY);
@@ -32,6 +27,16 @@ export function hairDepthProbe(s: SceneLayers): number | null {
     oit.writesDepth = true;
     hair.geometry.setDrawRange(range.start, range.count);
   }
+}
+
+/** The view drawn whole (every layer), as RGBA pixels of the drawing buffer. */
+function drawAndRead(s: SceneLayers): Uint8Array {
+  const gl = s.renderer.getContext();
+  const size = s.renderer.getDrawingBufferSize(new THREE.Vector2());
+  drawLayers(s, ALL_LAYERS);
+  const px = new Uint8Array(4 * size.x * size.y);
+  gl.readPixels(0, 0, size.x, size.y, gl.RGBA, gl.UNSIGNED_BYTE, px);
+  return px;
 }
 
 /** Share of the pixels of two RGBA images whose colour differs by more than 6 levels in a
@@ -62,15 +67,10 @@ export function blendOrderProbe(s: SceneLayers): { oit: number; unsorted: number
   const reversed = new Uint32Array(original.length);
   for (let t = 0; t < primitives; t++)
     reversed.set(original.subarray(k * (primitives - 1 - t), k * (primitives - t)), k * t);
-  const gl = s.renderer.getContext();
-  const size = s.renderer.getDrawingBufferSize(new THREE.Vector2());
   const drawWith = (order: Uint32Array): Uint8Array => {
     (index.array as Uint32Array).set(order);
     index.needsUpdate = true;
-    drawLayers(s, ALL_LAYERS);
-    const px = new Uint8Array(4 * size.x * size.y);
-    gl.readPixels(0, 0, size.x, size.y, gl.RGBA, gl.UNSIGNED_BYTE, px);
-    return px;
+    return drawAndRead(s);
   };
   const range = { ...hair.geometry.drawRange };
   hair.geometry.setDrawRange(0, Number.POSITIVE_INFINITY);
