@@ -14,6 +14,8 @@ enum EngineSetting : size_t {
   kSettingSections,    // ties may gather their whole scalp section (HairEngine::setSections)
   kSettingFinish,      // finished edges: ends spread near a cut line (HairEngine::setFinish)
   kSettingBust,        // hair rests on the body (HairEngine::setBust, setBody)
+  kSettingShape,       // the shape rules (HairEngine::setShape, hair_fall.hpp ShapeRules)
+  kSettingVolume,      // their lift at the roots, world units (HairEngine::setShape)
   kEngineSettingCount
 };
 

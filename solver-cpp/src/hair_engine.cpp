@@ -58,8 +58,8 @@ Status HairEngine::setGrid(const Grid& grid, double omega, const std::string& so
 Status HairEngine::applyPrior() {
   if (!hasGrid_ || !solver_) return Status::Ok();
   if (fall_ && headDistance_.built()) {
-    Status s = solver_->setPrior(fallWeight(grid_.step),
-                                 fallDirections(grid_, headDistance_, centre_, finish_));
+    Status s = solver_->setPrior(fallWeight(grid_.step, shape_.on ? kShapeReach : kFallReach),
+                                 fallDirections(grid_, headDistance_, centre_, finish_, shape_.on));
     priorSet_ = s.ok();
     if (!constraints_.empty()) fieldValid_ = false;
     return s;
@@ -74,6 +74,15 @@ Status HairEngine::setFinish(bool on) {
   if (on == finish_) return Status::Ok();
   finish_ = on;
   return fall_ ? applyPrior() : Status::Ok();  // the prior opens the face with finished edges
+}
+
+Status HairEngine::setShape(bool on, double volume) {
+  if (!std::isfinite(volume) || volume < 0 || volume > 0.3)
+    return Status::Error(StatusCode::InvalidInput, "shape: volume must be within 0..0.3");
+  shape_.volume = float(volume);
+  if (on == shape_.on) return Status::Ok();
+  shape_.on = on;
+  return fall_ ? applyPrior() : Status::Ok();  // the prior's reach
 }
 
 Status HairEngine::setFall(bool on) {
@@ -206,8 +215,12 @@ Status HairEngine::setSettings(const double* values, size_t count) {
     if (!std::isfinite(values[k]))
       return Status::Error(StatusCode::NonFinite,
                            "settings: value " + std::to_string(k) + " is not finite");
+  if (values[kSettingVolume] < 0 || values[kSettingVolume] > 0.3)
+    return Status::Error(StatusCode::InvalidInput, "settings: volume must be within 0..0.3");
   setSections(values[kSettingSections] != 0);
   setBust(values[kSettingBust] != 0);
+  const Status sh = setShape(values[kSettingShape] != 0, values[kSettingVolume]);
+  if (!sh.ok()) return sh;
   const Status f = setFinish(values[kSettingFinish] != 0);
   if (!f.ok()) return f;
   return setFall(values[kSettingFall] != 0);

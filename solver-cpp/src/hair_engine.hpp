@@ -86,6 +86,12 @@ class HairEngine {
   // gathered with the other side instead of flying loose from the line.
   Status setFinish(bool on);
   bool finish() const { return finish_; }
+  // The shape rules (hair_fall.hpp ShapeRules: with fall, a stroke's reach of a few centimetres,
+  // hair laid on the head with `volume` of lift at the roots, length from the strokes around).
+  // Off (the default): the hair of sessions made before them, bit for bit. The reach takes
+  // effect at once (the prior's weight), the rest at the next grow.
+  Status setShape(bool on, double volume);
+  const ShapeRules& shape() const { return shape_; }
   static constexpr float kCombedReach = 0.15f;  // world units (1.5 cm)
   // Curves -> constraints -> solver (the solver diffs against its previous set).
   Status setCurves(const CurveSetView& curves);
@@ -187,6 +193,7 @@ class HairEngine {
   std::vector<int32_t> tailCurves_;  // the curve of each of tails_
   bool sections_ = false;
   bool finish_ = false;
+  ShapeRules shape_;
   std::vector<std::vector<Eigen::Vector3f>> partings_;  // the dividing curves of the last setCurves
   Status applyPrior();
   // What hair rests on in growth (bust on), and keepOutsideHead's passes for the body.

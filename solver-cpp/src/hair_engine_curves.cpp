@@ -173,7 +173,7 @@ Status HairEngine::setCurves(const CurveSetView& curves) {
         const size_t a = fv.curveStart[c], b = fv.curveStart[c + 1];
         if (b <= a || b > fv.pointCount) continue;
         rc.push_back({fv.points + 3 * a, b - a, fv.extend && fv.extend[c] != 0,
-                      fv.offScalp ? fv.offScalp + a : nullptr});
+                      fv.offScalp ? fv.offScalp + a : nullptr, kind->tail == nullptr});
       }
     std::vector<uint8_t> noExtension(fv.curveCount, 0);
     CurveSetView view = fv;
@@ -193,6 +193,7 @@ Status HairEngine::setCurves(const CurveSetView& curves) {
         };
         mix(c.points, 3 * c.count * sizeof(double));
         mix(&c.growsOn, sizeof(bool));
+        mix(&c.setsLength, sizeof(bool));
         if (c.offScalp) mix(c.offScalp, c.count);
         auto found = std::find_if(footprints_.begin(), footprints_.end(),
                                   [&](const auto& f) { return f.first == key; });

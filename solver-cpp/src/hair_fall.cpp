@@ -61,7 +61,8 @@ constexpr double kGrowsOnRemaining = 100.0;
 }  // namespace
 
 Field fallDirections(const Grid& g, const HeadDistance& head, const Eigen::Vector3d& centre,
-                     bool openFace) {
+                     bool openFace, bool shape) {
+  const double blend = shape ? kShapeBlend : kFallBlend;
   Field G(g.size(), 3);
   const Eigen::Vector3d down(0, -1, 0);
   const std::vector<float> dist = headDistanceOnGrid(g, head);
@@ -88,7 +89,7 @@ Field fallDirections(const Grid& g, const HeadDistance& head, const Eigen::Vecto
         // straight down away from the head, but only where down does not lead back into it
         // (below its widest part; above, combed hair runs over the head)
         const double away =
-            std::isfinite(dist[size_t(p)]) ? smoothstep(0, kFallBlend, dist[size_t(p)]) : 1.0;
+            std::isfinite(dist[size_t(p)]) ? smoothstep(0, blend, dist[size_t(p)]) : 1.0;
         const double a = away * smoothstep(-0.3, 0.3, -nrm.y());
         Eigen::Vector3d v = (1 - a) * combed + a * down;
         const double off = std::isfinite(dist[size_t(p)]) ? double(dist[size_t(p)]) : 1e9;
@@ -133,6 +134,7 @@ void curveFootprint(const Grid& g, const ReachCurve& c, CurveFootprint& out) {
                                  q[3 * k + 2] - q[3 * k - 1]);
   const double L = s.back();
   if (!(L > 0)) return;
+  if (c.setsLength) out.stroke = {float(q[0]), float(q[1]), float(q[2]), float(L), c.growsOn};
   size_t lastSeg = c.count - 2;
   while (lastSeg > 0 && !(s[lastSeg + 1] > s[lastSeg])) --lastSeg;
   const double inf = std::numeric_limits<double>::infinity();
@@ -226,12 +228,29 @@ void combineReach(const Grid& g, const std::vector<const CurveFootprint*>& curve
   out.remaining.assign(n, 0.f);
   out.far.assign(n, 1.f);
   out.overFace.assign(n, 0.f);
+  out.governed.assign(n, 0.f);
   for (size_t p = 0; p < n; ++p) {
     if (!(sumW[p] > 0)) continue;
     out.overFace[p] = float(1 - smoothstep(kFaceNear, kFaceFar, dface[p]));
     out.remaining[p] = float(sumWR[p] / sumW[p]);
     out.far[p] = float(smoothstep(kReachNear, kReachFar, dmin[p]));
+    out.governed[p] = float(1 - smoothstep(kGovernNear, kGovernFar, dmin[p]));
   }
+  out.strokes.clear();
+  for (const CurveFootprint* c : curves)
+    if (c->stroke.length > 0) out.strokes.push_back(c->stroke);
+}
+
+float lengthAround(const std::vector<StrokeLength>& strokes, const float p[3], float maxLength) {
+  double sw = 0, swl = 0;
+  for (const StrokeLength& c : strokes) {
+    const double d2 = double(c.x - p[0]) * (c.x - p[0]) + double(c.y - p[1]) * (c.y - p[1]) +
+                      double(c.z - p[2]) * (c.z - p[2]);
+    const double w = 1 / (d2 + 1e-4);
+    sw += w;
+    swl += w * (c.growsOn ? double(maxLength) : std::min(double(c.length), double(maxLength)));
+  }
+  return sw > 0 ? float(std::min(swl / sw, double(maxLength))) : maxLength;
 }
 
 void buildCurveReach(const Grid& solverGrid, const std::vector<ReachCurve>& curves,

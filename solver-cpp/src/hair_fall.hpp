@@ -32,8 +32,11 @@ namespace hairsketch {
 // wave of k radians per grid step, so beta^2 = (d / l)^4 / 36 makes a curve's influence fade
 // over about l world units whatever the grid step d. kFallReach = l: 5 cm.
 constexpr double kFallReach = 0.5;
-inline double fallWeight(double step) {
-  const double k = step / kFallReach;
+// With the shape rules (ShapeRules below) a stroke's pull fades over 2.5 cm: beyond 3-4 cm from
+// every stroke natural fall decides, whatever the stroke's direction.
+constexpr double kShapeReach = 0.25;
+inline double fallWeight(double step, double reach = kFallReach) {
+  const double k = step / reach;
   return k * k * k * k / 36;
 }
 // World units (1 unit = 10 cm) over which g turns from combed along the scalp to straight down.
@@ -50,8 +53,11 @@ constexpr double kFallFrontSpread = 0.2;
 // With openFace (finished edges), off the head in front of the face (below the front hairline's
 // height, within kFaceHalfAngle of straight ahead about the vertical axis) g turns aside to the
 // nearer side: hair no curve governs falls round the face, not in front of it.
+// With shape (the shape rules), g turns to straight down within kShapeBlend of the head below its
+// widest part, so hair that leaves the head there hangs instead of following the head in.
 Field fallDirections(const Grid& grid, const HeadDistance& head, const Eigen::Vector3d& centre,
-                     bool openFace = false);
+                     bool openFace = false, bool shape = false);
+constexpr double kShapeBlend = 0.15;
 // The face's column (relative to the centre, world units and radians): its top (the front
 // hairline's height), bottom (below the chin), half angle, and how far aside g turns there
 // (the sideways part against down's 1).
@@ -80,10 +86,25 @@ struct ReachCurve {
   // Per point (count entries, or null for none): the curve runs there off the scalp (over the
   // face, an ear, the neck, or in the air). Hair near such a stretch may follow it over the face.
   const uint8_t* offScalp = nullptr;
+  // Its hair's length sets the length of the hair around it (LengthAround): stream curves, not
+  // ties (which lay their own hair).
+  bool setsLength = false;
 };
 
 // The reach lattice for a solver grid: the same box, cells of max(step, kReachCell).
 Grid reachGrid(const Grid& solverGrid);
+
+// What a stroke's hair is: where it starts, how long it is, and whether it grows on (for the
+// length of the hair between strokes, LengthAround).
+struct StrokeLength {
+  float x = 0, y = 0, z = 0;  // the curve's first point (on the scalp)
+  float length = 0;           // the curve's arc length (world units)
+  bool growsOn = false;
+};
+
+// Within kGovernNear of a curve the hair is the stroke's (it may stand off the head as the
+// stroke does); past kGovernFar from every curve the shape rules lay it on the head.
+constexpr double kGovernNear = 0.1, kGovernFar = 0.25;
 
 struct CurveReach {
   Grid grid;                       // the reach lattice
@@ -91,14 +112,43 @@ struct CurveReach {
   std::vector<float> far;          // per lattice point: 0 near a curve .. 1 far from all
   std::vector<float> overFace;     // per lattice point: 1 near a curve's stretch off the scalp .. 0
   std::vector<float> faceTangent;  // 3 per lattice point: that stretch's unit direction
+  std::vector<float> governed;     // per lattice point: 1 within kGovernNear of a curve .. 0
+  std::vector<StrokeLength> strokes;  // the curves' lengths, in curve order
   bool empty() const { return remaining.empty(); }
   void clear() {
     remaining.clear();
     far.clear();
     overFace.clear();
     faceTangent.clear();
+    governed.clear();
+    strokes.clear();
   }
 };
+
+// The shape rules (issue 48; a session's `shape` setting, off in sessions made before them):
+//  - the prior's reach is kShapeReach;
+//  - hair lies on the head: a strand no stroke governs (CurveReach::governed below 1) keeps
+//    within its standoff (the growth margin plus `volume`, the lift at the roots) of the head
+//    while the head under it faces up or sideways (the cranium above its widest part); once it
+//    leaves that support it falls free and is not laid again;
+//  - length from the strokes around: hair that no stroke ends takes the length of the nearest
+//    strokes' hair (LengthAround), capped by the maximum length.
+struct ShapeRules {
+  bool on = false;
+  float volume = 0;  // world units: how far the hair stands off the head at its roots (0..0.3)
+};
+// The head's outward normal must have an upward part above this for the head to hold the hair
+// on it (a little under horizontal: the cranium's sides above its widest part).
+constexpr float kSupportNormalY = -0.15f;
+// How far from the head (world units, beyond the standoff) a strand may be and still be laid on
+// it: farther, a stroke or the field has taken it away, and it is left alone.
+constexpr float kLayReach = 0.4f;
+// Over what length the hair rises to its standoff (volume / kVolumeRise).
+constexpr float kVolumeRise = 0.5f;
+// The length of hair no stroke ends, rooted at p: Shepard's inverse-square-distance blend of the
+// strokes' lengths (a stroke that grows on counts as maxLength), capped by maxLength; maxLength
+// when there is no stroke.
+float lengthAround(const std::vector<StrokeLength>& strokes, const float p[3], float maxLength);
 
 // One curve's part of the reach: the lattice points within kReachFar of it, with the distance to
 // it, its remaining length there (L - s, s the arc length of the closest point on the polyline,
@@ -110,6 +160,7 @@ struct CurveFootprint {
   std::vector<int> index;
   std::vector<float> distance, remaining, faceDistance, faceTangent;  // faceTangent: 3 each
   bool growsOn = false;
+  StrokeLength stroke;
 };
 void curveFootprint(const Grid& lattice, const ReachCurve& curve, CurveFootprint& out);
 

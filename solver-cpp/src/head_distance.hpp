@@ -68,6 +68,8 @@ class HeadDistance {
   float pushOut(float p[3], float margin, float overshoot = 0) const;
   // The mean of the mesh's vertices (where outward and pushOut turn to away from the surface).
   const Eigen::Vector3f& centre() const { return centre_; }
+  // How far from the surface the distance is exact (band cells); past it distance reads this.
+  float band() const { return far_; }
 
  private:
   float ox_ = 0, oy_ = 0, oz_ = 0, inv_ = 1, far_ = 0;

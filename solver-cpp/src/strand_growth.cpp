@@ -147,6 +147,45 @@ struct GrowRange {
   const CurveReach* reach;   // null: the paper's stopping rules only
   const HeadDistance* body;  // the body's own mesh (bust on), or null
   bool headBelow;            // bust on: the head mesh is the body below kHeadBodyBelowY
+  bool shape;                // the shape rules (hair_fall.hpp ShapeRules)
+  float volume;              // their lift at the roots (world units)
+
+  // The shape rules' "hair lies on the head": moves the step's end n (from x, of length segLen)
+  // along the head's normal towards the strand's standoff (margin plus the volume, reached over
+  // the first length), then back to the step's length. The distance is read where it is exact
+  // (HeadDistance::band); farther out (a volume past the band) dist and nrm carry the last
+  // reading on along the steps. False when the strand leaves the head's support (the surface
+  // under it not scalp, or facing down past kSupportNormalY: below the cranium's widest part; or
+  // the field has taken it farther than kLayReach off): it is not laid again.
+  bool layOnHead(const float x[3], float n[3], double& segLen, double arc, float& dist,
+                 float nrm[3]) const {
+    float g[3];
+    const float dx = head->distance(x[0], x[1], x[2], g);
+    const float gn = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+    if (dx < head->band() && gn > 0.5f) {
+      dist = dx;
+      for (int k = 0; k < 3; ++k) nrm[k] = g[k] / gn;
+      if (nrm[1] < kSupportNormalY || !head->scalpNear(x[0], x[1], x[2])) return false;
+    }
+    const float want = margin + std::min(volume, kVolumeRise * float(arc));
+    float st[3] = {n[0] - x[0], n[1] - x[1], n[2] - x[2]};
+    const float dn = dist + st[0] * nrm[0] + st[1] * nrm[1] + st[2] * nrm[2];
+    if (dn > want + kLayReach) return false;
+    const float keep =
+        reach ? 1.f - interpolateScalar(reach->grid, reach->governed.data(), n[0], n[1], n[2])
+              : 1.f;
+    const float step = float(segLen);
+    const float delta = keep * std::clamp(want - dn, -step, step);
+    for (int k = 0; k < 3; ++k) st[k] += delta * nrm[k];
+    const float len = std::sqrt(st[0] * st[0] + st[1] * st[1] + st[2] * st[2]);
+    if (!(len > 1e-3f * step)) return true;
+    for (int k = 0; k < 3; ++k) {
+      st[k] *= step / len;
+      n[k] = x[k] + st[k];
+    }
+    dist += st[0] * nrm[0] + st[1] * nrm[1] + st[2] * nrm[2];
+    return true;
+  }
 
   // Slides the step from x to n (which ends within the margin of `mesh`) over the body
   // (BodyCollider): n and segLen become the slid step's end and length. prev: the strand's last
@@ -217,15 +256,26 @@ struct GrowRange {
       // a stroke that ends there) is short near it and longer away from it.
       double strandMax = maxLen;
       bool endsWithCurve = false;
+      // the length of hair no stroke ends: the maximum, or with the shape rules the length of
+      // the strokes around (capped by the maximum)
+      float around = float(maxLen);
+      if (reach && shape) {
+        const float at[3] = {x, y, z};
+        around = lengthAround(reach->strokes, at, float(maxLen));
+      }
       if (reach && s.inside(x, y, z)) {
-        const float r0 = reachRemaining(*reach, x, y, z, float(maxLen));
+        const float r0 = reachRemaining(*reach, x, y, z, around);
         if (r0 > 0) {
           endsWithCurve = true;
+          if (shape) strandMax = around;
         } else {
           const float f = interpolateScalar(reach->grid, reach->far.data(), x, y, z);
-          strandMax = std::min(maxLen, double(f) * maxLen + double(1 - f) * kPastEndLength);
+          const double farLength = shape ? double(around) : maxLen;
+          strandMax = std::min(maxLen, double(f) * farLength + double(1 - f) * kPastEndLength);
         }
       }
+      bool laying = shape && head;
+      float layDist = 0, layNormal[3] = {0, 1, 0};
       // the point before (x, y, z), for the strand's direction when it slides over the body
       float px = x, py = y, pz = z;
       // a lower bound of the body's distance at (x, y, z) (the distance is 1-Lipschitz): the
@@ -282,6 +332,14 @@ struct GrowRange {
               }
             }
           }
+          if (laying) {
+            const float at[3] = {x, y, z};
+            float q[3] = {nx, ny, nz};
+            laying = layOnHead(at, q, segLen, length + segLen, layDist, layNormal);
+            nx = q[0];
+            ny = q[1];
+            nz = q[2];
+          }
           if (body) {
             const float step = float(segLen);
             if (bodyClear - step < margin + kBodySlack) {
@@ -296,7 +354,7 @@ struct GrowRange {
           }
           if (!s.inside(nx, ny, nz)) break;  // leaving the bounding volume
           if (length + segLen > strandMax) break;
-          if (endsWithCurve && reachRemaining(*reach, nx, ny, nz, float(maxLen)) < 0) break;
+          if (endsWithCurve && reachRemaining(*reach, nx, ny, nz, around) < 0) break;
           length += segLen;
           px = x;
           py = y;
@@ -322,7 +380,7 @@ struct GrowRange {
 Status growStrands(const Grid& g, const std::vector<float>& field,
                    const std::vector<Eigen::Vector3f>& roots, const GrowthParams& prm, Strands& out,
                    size_t maxPoints, const HeadDistance* head, const CurveReach* reach,
-                   const BodyCollider& body) {
+                   const BodyCollider& body, const ShapeRules* shape) {
   // The point buffer keeps its capacity from the last call and is not zero-filled (see
   // UninitAllocator), so a repeated growth neither reallocates nor refills it.
   out.points.clear();
@@ -355,7 +413,9 @@ Status growStrands(const Grid& g, const std::vector<float>& field,
                        roots,
                        reach && !reach->empty() ? reach : nullptr,
                        body.body && body.body->built() ? body.body : nullptr,
-                       body.headBelow};
+                       body.headBelow,
+                       shape && shape->on,
+                       shape ? std::clamp(shape->volume, 0.f, 0.3f) : 0.f};
   out.strandStart.resize(roots.size() + 1);
   const size_t n = roots.size();
   const int threads = parallel::threadCount();

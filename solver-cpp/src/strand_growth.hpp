@@ -68,6 +68,7 @@ std::vector<float> toFloatField(const Field& T);
 Eigen::Vector3f interpolateField(const Grid& grid, const float* field, const Eigen::Vector3f& x);
 
 struct CurveReach;
+struct ShapeRules;
 
 // With the bust: below this world height the head's own mesh is body, not face (a loaded
 // bust's shoulders, chest and back when no body mesh is set; the head's neck where it meets a
@@ -104,7 +105,7 @@ Status growStrands(const Grid& grid, const std::vector<float>& field,
                    const std::vector<Eigen::Vector3f>& roots, const GrowthParams& params,
                    Strands& out, size_t maxPoints = size_t(24) << 20,
                    const HeadDistance* head = nullptr, const CurveReach* reach = nullptr,
-                   const BodyCollider& body = BodyCollider());
+                   const BodyCollider& body = BodyCollider(), const ShapeRules* shape = nullptr);
 
 // Moves every point but the roots that lies closer to the head than `margin` out to it (after
 // detail has moved points), of every strand or of the strands listed in `only`. Returns how

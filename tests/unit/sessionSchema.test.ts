@@ -30,6 +30,8 @@ function full(): SessionState {
     fall: true,
     sections: true,
     finish: true,
+    shape: true,
+    volume: 0.12,
     detail: { lengthJitter: 0.2 },
     scalpPaint: [{ erase: true, radius: 0.3, points: [[0, 1, 0]] }],
     symmetry: X_PLANE,
@@ -67,6 +69,8 @@ describe('session schema', () => {
       'sections',
       'finish',
       'bust',
+      'shape',
+      'volume',
       'detail',
     ]);
     expect(needsSolve(s, { ...s })).toBe(false);
@@ -130,8 +134,10 @@ describe('engine settings', () => {
         sections: false,
         finish: true,
         bust: false,
+        shape: true,
+        volume: 0.12,
       }),
-    ]).toEqual([1, 0, 0, 1, 0]);
+    ]).toEqual([1, 0, 0, 1, 0, 1, 0.12]);
     expect([
       ...engineSettings({
         avoidScalp: false,
@@ -139,7 +145,9 @@ describe('engine settings', () => {
         sections: true,
         finish: false,
         bust: true,
+        shape: false,
+        volume: 0,
       }),
-    ]).toEqual([0, 1, 1, 0, 1]);
+    ]).toEqual([0, 1, 1, 0, 1, 0, 0]);
   });
 });

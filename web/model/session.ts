@@ -211,6 +211,7 @@ export function emptySession(
     sections: true,
     finish: true,
     bust: true,
+    shape: true,
   };
 }
 

@@ -66,6 +66,13 @@ export const SESSION_SETTINGS = {
    *  chin counts as body (solver-cpp/src/strand_growth.cpp). On in every new session; off, the
    *  head alone, as in sessions made before it. */
   bust: { type: 'flag', hair: 'request' },
+  /** The shape rules (docs/natural-fall.md "Shape", solver-cpp/src/hair_fall.hpp ShapeRules): a
+   *  stroke's reach of a few centimetres, hair laid on the head, length from the strokes around.
+   *  On in every new session; off, the hair of sessions made before them. */
+  shape: { type: 'flag', hair: 'request' },
+  /** Volume (Hair panel): how far the hair stands off the head at its roots, world units (0 to
+   *  3 cm), with the shape rules. */
+  volume: { type: 'number', hair: 'request', default: 0.05, min: 0, max: 0.3, quantum: 0.01 },
 } as const satisfies Record<string, SettingSpec>;
 
 export type SessionSettingName = keyof typeof SESSION_SETTINGS;
