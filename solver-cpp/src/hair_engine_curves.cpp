@@ -44,6 +44,21 @@ bool offScalp(const HeadDistance& head, const double* q) {
   }
   return true;
 }
+
+// How far curve point q is from the head (world units): carried towards the head as offScalp
+// does until the distance grid's exact band, the walk plus the distance there; kOverReach for a
+// point farther away.
+float strokeLift(const HeadDistance& head, const double* q) {
+  constexpr float kOverReach = 0.6f, kStep = 0.04f;
+  float p[3] = {float(q[0]), float(q[1]), float(q[2])};
+  for (float walked = 0; walked <= kOverReach; walked += kStep) {
+    float dir[3];
+    const float d = head.outward(p, dir);
+    if (d < 0.8f * head.band()) return std::max(0.f, walked + d);
+    for (int e = 0; e < 3; ++e) p[e] -= kStep * dir[e];
+  }
+  return kOverReach;
+}
 }  // namespace
 
 Status HairEngine::setCurves(const CurveSetView& curves) {
@@ -166,6 +181,12 @@ Status HairEngine::setCurves(const CurveSetView& curves) {
     // The reach of stream curves, ponytail spines and braids ends their hair, in place of the
     // fading extension; "extend" means the curve's hair grows on.
     std::vector<ReachCurve> rc;
+    // with the shape rules, each point's distance off the head
+    std::vector<float> lift;
+    if (shape_.on && headDistance_.built() && fv.points) {
+      lift.resize(fv.pointCount);
+      for (size_t k = 0; k < fv.pointCount; ++k) lift[k] = strokeLift(headDistance_, fv.points + 3 * k);
+    }
     if (fv.kinds && fv.curveStart && fv.points)
       for (size_t c = 0; c < fv.curveCount; ++c) {
         const CurveKindDef* kind = curveKind(fv.kinds[c]);
@@ -173,7 +194,8 @@ Status HairEngine::setCurves(const CurveSetView& curves) {
         const size_t a = fv.curveStart[c], b = fv.curveStart[c + 1];
         if (b <= a || b > fv.pointCount) continue;
         rc.push_back({fv.points + 3 * a, b - a, fv.extend && fv.extend[c] != 0,
-                      fv.offScalp ? fv.offScalp + a : nullptr, kind->tail == nullptr});
+                      fv.offScalp ? fv.offScalp + a : nullptr, kind->tail == nullptr,
+                      lift.empty() ? nullptr : lift.data() + a});
       }
     std::vector<uint8_t> noExtension(fv.curveCount, 0);
     CurveSetView view = fv;
@@ -194,6 +216,7 @@ Status HairEngine::setCurves(const CurveSetView& curves) {
         mix(c.points, 3 * c.count * sizeof(double));
         mix(&c.growsOn, sizeof(bool));
         mix(&c.setsLength, sizeof(bool));
+        if (c.lift) mix(c.lift, c.count * sizeof(float));
         if (c.offScalp) mix(c.offScalp, c.count);
         auto found = std::find_if(footprints_.begin(), footprints_.end(),
                                   [&](const auto& f) { return f.first == key; });

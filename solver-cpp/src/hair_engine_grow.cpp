@@ -77,8 +77,10 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
   }
   const HeadDistance* head = headDistance_.built() ? &headDistance_ : nullptr;
   const CurveReach* reach = fall_ && !reach_.empty() ? &reach_ : nullptr;
+  ShapeRules shape = shape_;
+  for (int e = 0; e < 3; ++e) shape.centre[e] = float(centre_[e]);
   Status s = growStrands(grid_, fieldF_, roots(), gp, strands_, size_t(24) << 20, head, reach,
-                         head ? bodyCollider() : BodyCollider(), fall_ ? &shape_ : nullptr);
+                         head ? bodyCollider() : BodyCollider(), fall_ ? &shape : nullptr);
   const std::vector<Eigen::Vector3f>& R = roots();
   const size_t n = R.size();
   // a strand's seed key: its index in the full root set (previews take a stride of it)

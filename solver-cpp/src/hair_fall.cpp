@@ -93,7 +93,7 @@ Field fallDirections(const Grid& g, const HeadDistance& head, const Eigen::Vecto
         const double a = away * smoothstep(-0.3, 0.3, -nrm.y());
         Eigen::Vector3d v = (1 - a) * combed + a * down;
         const double off = std::isfinite(dist[size_t(p)]) ? double(dist[size_t(p)]) : 1e9;
-        if (openFace && fz > 0 && off > 0) {
+        if (openFace && !shape && fz > 0 && off > 0) {
           const double yc = x.y() - centre.y();
           const double dx = x.x() - centre.x();
           const double azimuth = std::abs(std::atan2(dx, fz));
@@ -176,6 +176,7 @@ void curveFootprint(const Grid& g, const ReachCurve& c, CurveFootprint& out) {
             at = int(out.index.size());
             out.index.push_back(int(p));
             out.remaining.push_back(0.f);
+            out.lift.push_back(0.f);
             out.faceTangent.insert(out.faceTangent.end(), {0.f, 0.f, 0.f});
             d2s.push_back(inf);
             face2.push_back(inf);
@@ -192,6 +193,7 @@ void curveFootprint(const Grid& g, const ReachCurve& c, CurveFootprint& out) {
           double r = L - (s[k] + uc * len);
           if (last && u > 1) r -= (u - 1) * len;  // past the end
           out.remaining[e] = float(r);
+          if (c.lift) out.lift[e] = float((1 - uc) * c.lift[k] + uc * c.lift[k + 1]);
         }
       }
     }
@@ -210,6 +212,7 @@ void combineReach(const Grid& g, const std::vector<const CurveFootprint*>& curve
   const double inf = std::numeric_limits<double>::infinity();
   std::vector<double> sumW(n, 0), sumWR(n, 0), dmin(n, inf), dface(n, inf);
   out.grid = g;
+  out.lift.assign(n, 0.f);
   out.faceTangent.assign(3 * n, 0.f);
   const double twoSigma2 = 2 * kReachSigma * kReachSigma;
   for (const CurveFootprint* c : curves)
@@ -219,7 +222,10 @@ void combineReach(const Grid& g, const std::vector<const CurveFootprint*>& curve
       const double w = std::exp(-d * d / twoSigma2);
       sumW[p] += w;
       sumWR[p] += w * (c->growsOn ? kGrowsOnRemaining : double(c->remaining[e]));
-      dmin[p] = std::min(dmin[p], d);
+      if (d < dmin[p]) {
+        dmin[p] = d;
+        out.lift[p] = c->lift.empty() ? 0.f : c->lift[e];
+      }
       if (c->faceDistance[e] < dface[p]) {
         dface[p] = c->faceDistance[e];
         std::copy(&c->faceTangent[3 * e], &c->faceTangent[3 * e] + 3, &out.faceTangent[3 * p]);

@@ -54,7 +54,8 @@ constexpr double kFallFrontSpread = 0.2;
 // height, within kFaceHalfAngle of straight ahead about the vertical axis) g turns aside to the
 // nearer side: hair no curve governs falls round the face, not in front of it.
 // With shape (the shape rules), g turns to straight down within kShapeBlend of the head below its
-// widest part, so hair that leaves the head there hangs instead of following the head in.
+// widest part, so hair that leaves the head there hangs instead of following the head in, and
+// the face is left to growth (strand_growth.cpp parts hair round it), not turned aside here.
 Field fallDirections(const Grid& grid, const HeadDistance& head, const Eigen::Vector3d& centre,
                      bool openFace = false, bool shape = false);
 constexpr double kShapeBlend = 0.15;
@@ -89,6 +90,9 @@ struct ReachCurve {
   // Its hair's length sets the length of the hair around it (LengthAround): stream curves, not
   // ties (which lay their own hair).
   bool setsLength = false;
+  // Per point (count entries, or null: on the head): how far the point is from the head (world
+  // units), for the shape rules (governed hair stands off no farther than its stroke).
+  const float* lift = nullptr;
 };
 
 // The reach lattice for a solver grid: the same box, cells of max(step, kReachCell).
@@ -113,6 +117,7 @@ struct CurveReach {
   std::vector<float> overFace;     // per lattice point: 1 near a curve's stretch off the scalp .. 0
   std::vector<float> faceTangent;  // 3 per lattice point: that stretch's unit direction
   std::vector<float> governed;     // per lattice point: 1 within kGovernNear of a curve .. 0
+  std::vector<float> lift;         // per lattice point: the nearest curve's distance off the head
   std::vector<StrokeLength> strokes;  // the curves' lengths, in curve order
   bool empty() const { return remaining.empty(); }
   void clear() {
@@ -121,6 +126,7 @@ struct CurveReach {
     overFace.clear();
     faceTangent.clear();
     governed.clear();
+    lift.clear();
     strokes.clear();
   }
 };
@@ -136,7 +142,16 @@ struct CurveReach {
 struct ShapeRules {
   bool on = false;
   float volume = 0;  // world units: how far the hair stands off the head at its roots (0..0.3)
+  float centre[3] = {0, 0, 0};  // the head's centre (the prior's vertical axis)
 };
+// Whether p lies in the face's column (kFaceTop, kFaceBottom, kFaceHalfAngle about the vertical
+// axis through centre, in front of it), where hair no stroke governs does not go: it parts to
+// the nearer side, as hair parted at the centre does.
+inline bool inFaceColumn(const float centre[3], float x, float y, float z) {
+  const float fz = z - centre[2], dx = x - centre[0], yc = y - centre[1];
+  return fz > 0 && yc < float(kFaceTop) && yc > float(kFaceBottom) &&
+         std::abs(std::atan2(dx, fz)) < float(kFaceHalfAngle);
+}
 // The head's outward normal must have an upward part above this for the head to hold the hair
 // on it (a little under horizontal: the cranium's sides above its widest part).
 constexpr float kSupportNormalY = -0.15f;
@@ -145,6 +160,9 @@ constexpr float kSupportNormalY = -0.15f;
 constexpr float kLayReach = 0.4f;
 // Over what length the hair rises to its standoff (volume / kVolumeRise).
 constexpr float kVolumeRise = 0.5f;
+// Hair a stroke governs stands off the head no farther than the stroke does, plus this (world
+// units): it may lie closer, never flare out past its stroke.
+constexpr float kLiftSlack = 0.05f;
 // The length of hair no stroke ends, rooted at p: Shepard's inverse-square-distance blend of the
 // strokes' lengths (a stroke that grows on counts as maxLength), capped by maxLength; maxLength
 // when there is no stroke.
@@ -159,6 +177,7 @@ float lengthAround(const std::vector<StrokeLength>& strokes, const float p[3], f
 struct CurveFootprint {
   std::vector<int> index;
   std::vector<float> distance, remaining, faceDistance, faceTangent;  // faceTangent: 3 each
+  std::vector<float> lift;  // the curve's distance off the head at the closest point
   bool growsOn = false;
   StrokeLength stroke;
 };

@@ -149,42 +149,114 @@ struct GrowRange {
   bool headBelow;            // bust on: the head mesh is the body below kHeadBodyBelowY
   bool shape;                // the shape rules (hair_fall.hpp ShapeRules)
   float volume;              // their lift at the roots (world units)
+  float centre[3];           // and the head's centre
+
+  // The head's distance at p (world units) and its outward normal there (nrm, unit): read where
+  // the distance grid is exact (HeadDistance::band), farther out by walking towards the head
+  // (outward's direction) until it is; -1 past kLayReach plus the largest volume.
+  float distanceOff(const float p[3], float nrm[3]) const {
+    float q[3] = {p[0], p[1], p[2]};
+    const float band = head->band(), walk = 0.5f * band;
+    for (float walked = 0; walked <= kLayReach + 0.3f; walked += walk) {
+      float g[3];
+      const float d = head->distance(q[0], q[1], q[2], g);
+      const float gn = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+      if (d < 0.9f * band && gn > 0.5f) {
+        for (int k = 0; k < 3; ++k) nrm[k] = g[k] / gn;
+        return walked + d;
+      }
+      float dir[3];
+      head->outward(q, dir);
+      for (int k = 0; k < 3; ++k) q[k] -= walk * dir[k];
+    }
+    return -1;
+  }
 
   // The shape rules' "hair lies on the head": moves the step's end n (from x, of length segLen)
   // along the head's normal towards the strand's standoff (margin plus the volume, reached over
   // the first length), then back to the step's length. The distance is read where it is exact
   // (HeadDistance::band); farther out (a volume past the band) dist and nrm carry the last
-  // reading on along the steps. False when the strand leaves the head's support (the surface
-  // under it not scalp, or facing down past kSupportNormalY: below the cranium's widest part; or
-  // the field has taken it farther than kLayReach off): it is not laid again.
-  bool layOnHead(const float x[3], float n[3], double& segLen, double arc, float& dist,
-                 float nrm[3]) const {
-    float g[3];
-    const float dx = head->distance(x[0], x[1], x[2], g);
-    const float gn = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
-    if (dx < head->band() && gn > 0.5f) {
+  // reading on along the steps. Anything but Laid when the strand leaves the head's support: it
+  // is not laid again. Below the cranium's widest part (the surface under it facing down past
+  // kSupportNormalY) or off the scalp (an ear; not in the face's column, where it parts round
+  // the face) it hangs from there (Hangs); taken farther than kLayReach off by the field it
+  // follows the field (Free).
+  enum class Lay { Laid, Hangs, Free };
+  Lay layOnHead(const float x[3], float n[3], double& segLen, double arc, float& dist,
+                float nrm[3]) const {
+    const float gov =
+        reach ? interpolateScalar(reach->grid, reach->governed.data(), n[0], n[1], n[2]) : 0.f;
+    const float keep = 1.f - gov;
+    bool held = true;
+    const float dx = distanceOff(x, nrm);
+    if (dx < 0) return Lay::Free;
+    {
       dist = dx;
-      for (int k = 0; k < 3; ++k) nrm[k] = g[k] / gn;
-      if (nrm[1] < kSupportNormalY || !head->scalpNear(x[0], x[1], x[2])) return false;
+      if (nrm[1] < kSupportNormalY) {
+        if (keep > 0.5f) return Lay::Hangs;
+        held = false;
+      } else if (!head->scalpNear(x[0] - dx * nrm[0], x[1] - dx * nrm[1], x[2] - dx * nrm[2]) &&
+                 !inFaceColumn(centre, x[0], x[1], x[2])) {
+        if (keep > 0.5f) return Lay::Hangs;
+        held = false;
+      }
     }
     const float want = margin + std::min(volume, kVolumeRise * float(arc));
+    const float cap =
+        margin + kLiftSlack +
+        (reach ? interpolateScalar(reach->grid, reach->lift.data(), n[0], n[1], n[2]) : 0.f);
     float st[3] = {n[0] - x[0], n[1] - x[1], n[2] - x[2]};
     const float dn = dist + st[0] * nrm[0] + st[1] * nrm[1] + st[2] * nrm[2];
-    if (dn > want + kLayReach) return false;
-    const float keep =
-        reach ? 1.f - interpolateScalar(reach->grid, reach->governed.data(), n[0], n[1], n[2])
-              : 1.f;
+    if (dn > std::max(want, cap) + kLayReach) return Lay::Free;
     const float step = float(segLen);
-    const float delta = keep * std::clamp(want - dn, -step, step);
+    // no stroke: towards the standoff while the head holds the hair; a stroke: no farther off
+    // than the stroke
+    const float toWant = held ? std::clamp(want - dn, -step, step) : 0.f;
+    const float toCap = std::clamp(cap - dn, -step, 0.f);
+    const float delta = keep * toWant + gov * toCap;
     for (int k = 0; k < 3; ++k) st[k] += delta * nrm[k];
     const float len = std::sqrt(st[0] * st[0] + st[1] * st[1] + st[2] * st[2]);
-    if (!(len > 1e-3f * step)) return true;
+    if (!(len > 1e-3f * step)) return Lay::Laid;
     for (int k = 0; k < 3; ++k) {
       st[k] *= step / len;
       n[k] = x[k] + st[k];
     }
     dist += st[0] * nrm[0] + st[1] * nrm[1] + st[2] * nrm[2];
-    return true;
+    return Lay::Laid;
+  }
+
+  // The shape rules' "the face stays open": a step of hair no stroke governs that ends in the
+  // face's column turns to the nearer side (its horizontal part sideways, at least as much as
+  // it falls), so the hair parts round the face.
+  void partRoundFace(float x, float y, float z, float& nx, float& ny, float& nz) const {
+    if (!inFaceColumn(centre, nx, ny, nz)) return;
+    if (reach && interpolateScalar(reach->grid, reach->governed.data(), nx, ny, nz) >= 0.5f) return;
+    const float d[3] = {nx - x, ny - y, nz - z};
+    const float len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    const float side = nx >= centre[0] ? 1.f : -1.f;
+    const float fall = std::min(d[1], 0.f);
+    float t[3] = {side * std::max(len, std::abs(fall)), fall, std::min(d[2], 0.f)};
+    const float m = std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
+    nx = x + t[0] * len / m;
+    ny = y + t[1] * len / m;
+    nz = z + t[2] * len / m;
+  }
+
+  // The shape rules' "hair no stroke governs hangs": a step of a strand that left the head below
+  // its widest part turns to straight down as far as no stroke governs the hair there.
+  void hang(float x, float y, float z, float& nx, float& ny, float& nz) const {
+    const float w =
+        reach ? 1.f - interpolateScalar(reach->grid, reach->governed.data(), x, y, z) : 1.f;
+    float d[3] = {nx - x, ny - y, nz - z};
+    const float len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    d[0] *= 1 - w;
+    d[1] = (1 - w) * d[1] - w * len;
+    d[2] *= 1 - w;
+    const float m = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    if (!(m > 1e-6f)) return;
+    nx = x + d[0] * len / m;
+    ny = y + d[1] * len / m;
+    nz = z + d[2] * len / m;
   }
 
   // Slides the step from x to n (which ends within the margin of `mesh`) over the body
@@ -274,7 +346,7 @@ struct GrowRange {
           strandMax = std::min(maxLen, double(f) * farLength + double(1 - f) * kPastEndLength);
         }
       }
-      bool laying = shape && head;
+      bool laying = shape && head, hanging = false;
       float layDist = 0, layNormal[3] = {0, 1, 0};
       // the point before (x, y, z), for the strand's direction when it slides over the body
       float px = x, py = y, pz = z;
@@ -288,6 +360,8 @@ struct GrowRange {
           if (!(m2 >= minMag2)) break;  // weak field (or NaN)
           float nx = x + l * v[0], ny = y + l * v[1], nz = z + l * v[2];
           double segLen = double(l) * std::sqrt(double(m2));
+          if (hanging) hang(x, y, z, nx, ny, nz);
+          if (shape) partRoundFace(x, y, z, nx, ny, nz);
           // The body: the strand slides over it (never stops there).
           auto slide = [&](const HeadDistance& mesh) {
             const float at[3] = {x, y, z};
@@ -335,10 +409,21 @@ struct GrowRange {
           if (laying) {
             const float at[3] = {x, y, z};
             float q[3] = {nx, ny, nz};
-            laying = layOnHead(at, q, segLen, length + segLen, layDist, layNormal);
+            const Lay lay = layOnHead(at, q, segLen, length + segLen, layDist, layNormal);
+            laying = lay == Lay::Laid;
+            hanging = lay == Lay::Hangs;
             nx = q[0];
             ny = q[1];
             nz = q[2];
+          }
+          if (shape) {
+            if (head && head->distance(nx, ny, nz) < margin) {
+              float q[3] = {nx, ny, nz};
+              head->pushOut(q, margin);
+              nx = q[0];
+              ny = q[1];
+              nz = q[2];
+            }
           }
           if (body) {
             const float step = float(segLen);
@@ -415,7 +500,9 @@ Status growStrands(const Grid& g, const std::vector<float>& field,
                        body.body && body.body->built() ? body.body : nullptr,
                        body.headBelow,
                        shape && shape->on,
-                       shape ? std::clamp(shape->volume, 0.f, 0.3f) : 0.f};
+                       shape ? std::clamp(shape->volume, 0.f, 0.3f) : 0.f,
+                       {shape ? shape->centre[0] : 0.f, shape ? shape->centre[1] : 0.f,
+                        shape ? shape->centre[2] : 0.f}};
   out.strandStart.resize(roots.size() + 1);
   const size_t n = roots.size();
   const int threads = parallel::threadCount();

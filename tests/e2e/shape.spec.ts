@@ -3,8 +3,15 @@
 // measured from the strands. Every figure is printed; waits on the status attributes only.
 import { writeFileSync } from 'node:fs';
 import { expect, type Page, test } from '@playwright/test';
-import { headSdf } from '../../web/head/headSdf';
-import { settled, shoot, status } from './helpers';
+import {
+  earCoverShare,
+  faceShare,
+  fallOfUngoverned,
+  napeLength,
+  standOff,
+  widthAtEars,
+} from '../support/shapeMetrics';
+import { settled, shoot, status, strokeFromScalp } from './helpers';
 
 test.use({ viewport: { width: 1280, height: 800 } });
 
@@ -65,22 +72,6 @@ async function keep(page: Page, name: string) {
   writeFileSync(`${dir}/${name}.json`, JSON.stringify(session));
 }
 
-const median = (v: number[]) => {
-  const s = [...v].sort((a, b) => a - b);
-  return s.length ? s[Math.floor(s.length / 2)] : Number.NaN;
-};
-
-function eachStrand(s: Strands, f: (pts: V3[]) => void) {
-  for (let k = 0; k + 1 < s.strandStart.length; k++) {
-    const pts: V3[] = [];
-    for (let p = s.strandStart[k]; p < s.strandStart[k + 1]; p++)
-      pts.push([s.points[3 * p], s.points[3 * p + 1], s.points[3 * p + 2]]);
-    if (pts.length > 1) f(pts);
-  }
-}
-
-const dist = (a: V3, b: V3) => Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
-
 test('two short spikes up and away lift their own hair only', async ({ page }) => {
   let rev = await emptyHead(page, { view: 'l' });
   const centre = { x: 655, y: 370 };
@@ -101,25 +92,16 @@ test('two short spikes up and away lift their own hair only', async ({ page }) =
   }
   const cs = await curves(page);
   expect(cs.length).toBe(2);
-  const starts = cs.map((c) => c.points[0]);
-  const angles: number[] = [];
-  let above = 0;
-  eachStrand(await strands(page), (pts) => {
-    if (starts.some((q) => dist(q, pts[0]) <= 0.4)) return;
-    const r = pts[0];
-    const t = pts[pts.length - 1];
-    const v: V3 = [t[0] - r[0], t[1] - r[1], t[2] - r[2]];
-    angles.push((Math.acos(Math.max(-1, Math.min(1, -v[1] / Math.hypot(...v)))) * 180) / Math.PI);
-    if (t[1] > r[1]) above++;
-  });
-  const med = median(angles);
-  const share = above / angles.length;
+  const s = await strands(page);
+  const fall = fallOfUngoverned(s, cs);
+  const lie = standOff(s, cs, 0.3, 0.4);
   console.log(
-    `spikes: strands 4+ cm from both: ${angles.length}, median angle from down ${med.toFixed(1)} deg, ${(100 * share).toFixed(1)} % end above their root`,
+    `spikes: ${fall.strands} strands rooted 4+ cm from both strokes: median angle from down ${fall.medianAngle.toFixed(1)} deg, ${(100 * fall.aboveShare).toFixed(1)} % end above their root, median distance from the head over their first 3 cm ${(10 * lie).toFixed(2)} cm`,
   );
-  await keep(page, 'shape-spikes');
-  expect(med).toBeLessThanOrEqual(35);
-  expect(share).toBeLessThanOrEqual(0.1);
+  await keep(page, 'spikes');
+  expect(fall.medianAngle).toBeLessThanOrEqual(35);
+  expect(fall.aboveShare).toBeLessThanOrEqual(0.1);
+  expect(lie).toBeLessThanOrEqual(0.1);
 });
 
 test('a stroke down beside the face leaves the eyes clear', async ({ page }) => {
@@ -127,13 +109,60 @@ test('a stroke down beside the face leaves the eyes clear', async ({ page }) => 
   const a = await scalpAt(page, 45, 70);
   await dragBy(page, a, 30, 1.5, 5);
   await settled(page, rev);
-  let over = 0;
-  let n = 0;
-  eachStrand(await strands(page), (pts) => {
-    n++;
-    if (pts.some(([x, y, z]) => Math.abs(x) < 0.45 && y > -0.95 && y < -0.05 && z > 0.55)) over++;
-  });
-  console.log(`face: ${(100 * (over / n)).toFixed(2)} % of ${n} strands cross the face`);
-  await keep(page, 'shape-face');
-  expect(over / n).toBeLessThanOrEqual(0.01);
+  const share = faceShare(await strands(page));
+  console.log(`face: ${(100 * share).toFixed(2)} % of the strands cross the face`);
+  await keep(page, 'face');
+  expect(share).toBeLessThanOrEqual(0.01);
+});
+
+test('a bob drawn with Mirror stays within 4 cm of the head at the ears', async ({ page }) => {
+  let rev = await emptyHead(page, { mirror: true, view: 'l' });
+  // the side from the crown down to the jaw, the back down to the nape's level
+  for (const [t, f, dx, dy] of [
+    [25, 90, 10, 230],
+    [45, 130, 25, 190],
+    [30, 40, -30, 190],
+  ]) {
+    await strokeFromScalp(page, t, f, dx, dy);
+    rev = (await settled(page, rev)).revision;
+  }
+  const w = widthAtEars(await strands(page));
+  console.log(
+    `bob: hair ${(10 * w.hair).toFixed(1)} cm wide at the ears, the head ${(10 * w.head).toFixed(1)} cm`,
+  );
+  await keep(page, 'bob');
+  expect(w.hair).toBeLessThanOrEqual(w.head + 0.4);
+});
+
+test('hair tucked behind the ears leaves them open from the front', async ({ page }) => {
+  let rev = await emptyHead(page, { mirror: true, view: 'l' });
+  // from the temple over the top of the ear and down behind it; from the crown's side down
+  // behind the ear (faceOpen.spec's gesture)
+  await strokeFromScalp(page, 45, 50, 150, 260);
+  rev = (await settled(page, rev)).revision;
+  await strokeFromScalp(page, 35, 95, 80, 280);
+  await settled(page, rev);
+  const share = earCoverShare(await strands(page));
+  console.log(`tucked: ${(100 * share).toFixed(2)} % of the strands hide an ear from the front`);
+  await keep(page, 'tucked');
+  expect(share).toBeLessThanOrEqual(0.02);
+});
+
+test('a short slicked back stays short at the nape', async ({ page }) => {
+  let rev = await emptyHead(page, { mirror: true, view: 'l' });
+  // from the front hairline back and up over the top, ending in the air (about 7 cm)
+  for (const [t, f] of [
+    [40, 20],
+    [40, 55],
+  ]) {
+    await strokeFromScalp(page, t, f, 110, -45);
+    rev = (await settled(page, rev)).revision;
+  }
+  const cs = await curves(page);
+  const n = napeLength(await strands(page), cs);
+  console.log(
+    `slicked: nape hair ${(10 * n.nape).toFixed(1)} cm, the strokes' hair ${(10 * n.strokes).toFixed(1)} cm`,
+  );
+  await keep(page, 'slicked');
+  expect(n.nape).toBeLessThanOrEqual(1.5 * n.strokes);
 });
