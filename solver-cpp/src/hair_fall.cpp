@@ -177,6 +177,8 @@ void curveFootprint(const Grid& g, const ReachCurve& c, CurveFootprint& out) {
             out.index.push_back(int(p));
             out.remaining.push_back(0.f);
             out.lift.push_back(0.f);
+            out.tangent.insert(out.tangent.end(), {0.f, 0.f, 0.f});
+            out.toCurve.insert(out.toCurve.end(), {0.f, 0.f, 0.f});
             out.faceTangent.insert(out.faceTangent.end(), {0.f, 0.f, 0.f});
             d2s.push_back(inf);
             face2.push_back(inf);
@@ -194,6 +196,12 @@ void curveFootprint(const Grid& g, const ReachCurve& c, CurveFootprint& out) {
           if (last && u > 1) r -= (u - 1) * len;  // past the end
           out.remaining[e] = float(r);
           if (c.lift) out.lift[e] = float((1 - uc) * c.lift[k] + uc * c.lift[k + 1]);
+          out.tangent[3 * e] = float(ex / len);
+          out.tangent[3 * e + 1] = float(ey / len);
+          out.tangent[3 * e + 2] = float(ez / len);
+          out.toCurve[3 * e] = float(-dx);
+          out.toCurve[3 * e + 1] = float(-dy);
+          out.toCurve[3 * e + 2] = float(-dz);
         }
       }
     }
@@ -213,6 +221,8 @@ void combineReach(const Grid& g, const std::vector<const CurveFootprint*>& curve
   std::vector<double> sumW(n, 0), sumWR(n, 0), dmin(n, inf), dface(n, inf);
   out.grid = g;
   out.lift.assign(n, 0.f);
+  out.tangent.assign(3 * n, 0.f);
+  out.toCurve.assign(3 * n, 0.f);
   out.faceTangent.assign(3 * n, 0.f);
   const double twoSigma2 = 2 * kReachSigma * kReachSigma;
   for (const CurveFootprint* c : curves)
@@ -225,6 +235,8 @@ void combineReach(const Grid& g, const std::vector<const CurveFootprint*>& curve
       if (d < dmin[p]) {
         dmin[p] = d;
         out.lift[p] = c->lift.empty() ? 0.f : c->lift[e];
+        std::copy(&c->tangent[3 * e], &c->tangent[3 * e] + 3, &out.tangent[3 * p]);
+        std::copy(&c->toCurve[3 * e], &c->toCurve[3 * e] + 3, &out.toCurve[3 * p]);
       }
       if (c->faceDistance[e] < dface[p]) {
         dface[p] = c->faceDistance[e];
@@ -235,12 +247,14 @@ void combineReach(const Grid& g, const std::vector<const CurveFootprint*>& curve
   out.far.assign(n, 1.f);
   out.overFace.assign(n, 0.f);
   out.governed.assign(n, 0.f);
+  out.nearest.assign(n, float(kReachFar));
   for (size_t p = 0; p < n; ++p) {
     if (!(sumW[p] > 0)) continue;
     out.overFace[p] = float(1 - smoothstep(kFaceNear, kFaceFar, dface[p]));
     out.remaining[p] = float(sumWR[p] / sumW[p]);
     out.far[p] = float(smoothstep(kReachNear, kReachFar, dmin[p]));
     out.governed[p] = float(1 - smoothstep(kGovernNear, kGovernFar, dmin[p]));
+    out.nearest[p] = float(dmin[p]);
   }
   out.strokes.clear();
   for (const CurveFootprint* c : curves)

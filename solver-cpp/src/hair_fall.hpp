@@ -118,6 +118,9 @@ struct CurveReach {
   std::vector<float> faceTangent;  // 3 per lattice point: that stretch's unit direction
   std::vector<float> governed;     // per lattice point: 1 within kGovernNear of a curve .. 0
   std::vector<float> lift;         // per lattice point: the nearest curve's distance off the head
+  std::vector<float> nearest;      // per lattice point: the distance to the nearest curve
+  std::vector<float> tangent;      // 3 per lattice point: the nearest curve's direction there
+  std::vector<float> toCurve;      // 3 per lattice point: from it to the nearest curve point
   std::vector<StrokeLength> strokes;  // the curves' lengths, in curve order
   bool empty() const { return remaining.empty(); }
   void clear() {
@@ -127,6 +130,9 @@ struct CurveReach {
     faceTangent.clear();
     governed.clear();
     lift.clear();
+    nearest.clear();
+    tangent.clear();
+    toCurve.clear();
     strokes.clear();
   }
 };
@@ -163,6 +169,11 @@ constexpr float kVolumeRise = 0.5f;
 // Hair a stroke governs stands off the head no farther than the stroke does, plus this (world
 // units): it may lie closer, never flare out past its stroke.
 constexpr float kLiftSlack = 0.05f;
+// Hair no stroke governs within kCombNear of a stroke that falls (its direction at least
+// kCombFalls downward) is combed along it, fading out by kCombFar: hair beside a stroke drawn
+// down behind an ear goes behind the ear with it; over an ear (off the scalp) it also heads
+// for the stroke, so it goes round the ear where the stroke does.
+constexpr float kCombNear = 0.3f, kCombFar = 0.5f, kCombFalls = 0.3f;
 // The length of hair no stroke ends, rooted at p: Shepard's inverse-square-distance blend of the
 // strokes' lengths (a stroke that grows on counts as maxLength), capped by maxLength; maxLength
 // when there is no stroke.
@@ -177,7 +188,9 @@ float lengthAround(const std::vector<StrokeLength>& strokes, const float p[3], f
 struct CurveFootprint {
   std::vector<int> index;
   std::vector<float> distance, remaining, faceDistance, faceTangent;  // faceTangent: 3 each
-  std::vector<float> lift;  // the curve's distance off the head at the closest point
+  std::vector<float> lift;     // the curve's distance off the head at the closest point
+  std::vector<float> tangent;  // 3 each: the curve's direction at the closest point
+  std::vector<float> toCurve;  // 3 each: from the lattice point to the closest point
   bool growsOn = false;
   StrokeLength stroke;
 };

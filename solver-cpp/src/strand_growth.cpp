@@ -178,10 +178,10 @@ struct GrowRange {
   // (HeadDistance::band); farther out (a volume past the band) dist and nrm carry the last
   // reading on along the steps. Anything but Laid when the strand leaves the head's support: it
   // is not laid again. Below the cranium's widest part (the surface under it facing down past
-  // kSupportNormalY) or off the scalp (an ear; not in the face's column, where it parts round
-  // the face) it hangs from there (Hangs); taken farther than kLayReach off by the field it
-  // follows the field (Free).
-  enum class Lay { Laid, Hangs, Free };
+  // kSupportNormalY) it hangs from there (Hangs), and off the scalp (an ear; not in the face's
+  // column, where it parts round the face) too (Over); taken farther than kLayReach off by the
+  // field it follows the field (Free).
+  enum class Lay { Laid, Hangs, Over, Free };
   Lay layOnHead(const float x[3], float n[3], double& segLen, double arc, float& dist,
                 float nrm[3]) const {
     const float gov =
@@ -197,7 +197,7 @@ struct GrowRange {
         held = false;
       } else if (!head->scalpNear(x[0] - dx * nrm[0], x[1] - dx * nrm[1], x[2] - dx * nrm[2]) &&
                  !inFaceColumn(centre, x[0], x[1], x[2])) {
-        if (keep > 0.5f) return Lay::Hangs;
+        if (keep > 0.5f) return Lay::Over;
         held = false;
       }
     }
@@ -242,16 +242,42 @@ struct GrowRange {
     nz = z + t[2] * len / m;
   }
 
-  // The shape rules' "hair no stroke governs hangs": a step of a strand that left the head below
-  // its widest part turns to straight down as far as no stroke governs the hair there.
-  void hang(float x, float y, float z, float& nx, float& ny, float& nz) const {
-    const float w =
-        reach ? 1.f - interpolateScalar(reach->grid, reach->governed.data(), x, y, z) : 1.f;
+  // The shape rules' "hair no stroke governs hangs" and "is combed along a falling stroke
+  // beside it": the step of a strand no stroke governs turns towards a direction `to`: within
+  // kCombFar of a stroke that falls, that stroke's direction there (fully within kCombNear);
+  // farther, straight down for a strand that hangs (left the head below its widest part or over
+  // an ear) and its own direction for one still laid on the head.
+  void fallOrComb(bool hangs, bool overEar, float x, float y, float z, float& nx, float& ny,
+                  float& nz) const {
+    float w = 1.f, c = 0.f, t[3] = {0, -1, 0};
+    if (reach) {
+      w -= interpolateScalar(reach->grid, reach->governed.data(), x, y, z);
+      const float near = interpolateScalar(reach->grid, reach->nearest.data(), x, y, z);
+      if (near < kCombFar) {
+        for (int e = 0; e < 3; ++e)
+          t[e] = interpolateScalar(reach->grid, reach->tangent.data(), x, y, z, 3, e);
+        const float tn = std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
+        if (tn > 1e-3f && t[1] < -kCombFalls * tn) {
+          c = std::clamp((kCombFar - near) / (kCombFar - kCombNear), 0.f, 1.f);
+          for (float& e : t) e /= tn;
+          if (overEar && near > 1e-3f) {
+            // head for the stroke as well as along it
+            for (int e = 0; e < 3; ++e)
+              t[e] += 2 * interpolateScalar(reach->grid, reach->toCurve.data(), x, y, z, 3, e) / near;
+            const float m = std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
+            for (float& e : t) e /= m > 1e-6f ? m : 1.f;
+          }
+        }
+      }
+    }
+    const float to[3] = {c * t[0], (1 - c) * -1.f + c * t[1], c * t[2]};
+    const float k = hangs ? w : w * c;  // how far the step turns to `to`
+    if (!(k > 0)) return;
     float d[3] = {nx - x, ny - y, nz - z};
     const float len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-    d[0] *= 1 - w;
-    d[1] = (1 - w) * d[1] - w * len;
-    d[2] *= 1 - w;
+    const float tl = std::sqrt(to[0] * to[0] + to[1] * to[1] + to[2] * to[2]);
+    if (!(tl > 1e-6f)) return;
+    for (int e = 0; e < 3; ++e) d[e] = (1 - k) * d[e] + k * len * to[e] / tl;
     const float m = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     if (!(m > 1e-6f)) return;
     nx = x + d[0] * len / m;
@@ -346,7 +372,7 @@ struct GrowRange {
           strandMax = std::min(maxLen, double(f) * farLength + double(1 - f) * kPastEndLength);
         }
       }
-      bool laying = shape && head, hanging = false;
+      bool laying = shape && head, hanging = false, overEar = false;
       float layDist = 0, layNormal[3] = {0, 1, 0};
       // the point before (x, y, z), for the strand's direction when it slides over the body
       float px = x, py = y, pz = z;
@@ -360,7 +386,7 @@ struct GrowRange {
           if (!(m2 >= minMag2)) break;  // weak field (or NaN)
           float nx = x + l * v[0], ny = y + l * v[1], nz = z + l * v[2];
           double segLen = double(l) * std::sqrt(double(m2));
-          if (hanging) hang(x, y, z, nx, ny, nz);
+          if (hanging || laying) fallOrComb(hanging, overEar, x, y, z, nx, ny, nz);
           if (shape) partRoundFace(x, y, z, nx, ny, nz);
           // The body: the strand slides over it (never stops there).
           auto slide = [&](const HeadDistance& mesh) {
@@ -411,7 +437,8 @@ struct GrowRange {
             float q[3] = {nx, ny, nz};
             const Lay lay = layOnHead(at, q, segLen, length + segLen, layDist, layNormal);
             laying = lay == Lay::Laid;
-            hanging = lay == Lay::Hangs;
+            hanging = lay == Lay::Hangs || lay == Lay::Over;
+            overEar = lay == Lay::Over;
             nx = q[0];
             ny = q[1];
             nz = q[2];

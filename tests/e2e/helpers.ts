@@ -66,6 +66,29 @@ export async function strokeFromScalp(
   await page.mouse.up();
 }
 
+/** Screen point of the scalp point (θ, φ) in the current view; fails the test when hidden. */
+export async function scalpAt(page: Page, theta: number, phi: number) {
+  const p = await page.evaluate(([t, f]) => window.hairsketch.scalpToScreen(t, f), [theta, phi]);
+  expect(p, `scalp point (${theta}, ${phi}) on screen`).not.toBeNull();
+  return p as { x: number; y: number };
+}
+
+/** A drag through screen points with real mouse events: each leg in moves of at most 10 px (at
+ *  most 24 per leg). Strokes are resampled at the grid's step, far coarser than that, and every
+ *  move draws a frame, which costs a software rasteriser ~20 ms. */
+export async function dragThrough(page: Page, pts: { x: number; y: number }[]): Promise<void> {
+  await page.mouse.move(pts[0].x, pts[0].y);
+  await page.mouse.down();
+  for (let k = 1; k < pts.length; k++) {
+    const dx = pts[k].x - pts[k - 1].x;
+    const dy = pts[k].y - pts[k - 1].y;
+    const n = Math.min(24, Math.max(1, Math.ceil(Math.hypot(dx, dy) / 10)));
+    for (let i = 1; i <= n; i++)
+      await page.mouse.move(pts[k - 1].x + (dx * i) / n, pts[k - 1].y + (dy * i) / n);
+  }
+  await page.mouse.up();
+}
+
 /** Client coordinates of the middle point of the first style curve on screen, and its id. */
 export async function visibleCurvePoint(page: Page): Promise<{ id: string; x: number; y: number }> {
   const target = await page.evaluate(() => {

@@ -11,7 +11,7 @@ import {
   standOff,
   widthAtEars,
 } from '../support/shapeMetrics';
-import { settled, shoot, status, strokeFromScalp } from './helpers';
+import { dragThrough, scalpAt, settled, shoot, status, strokeFromScalp } from './helpers';
 
 test.use({ viewport: { width: 1280, height: 800 } });
 
@@ -34,12 +34,6 @@ const strands = (page: Page) =>
 
 const curves = async (page: Page) =>
   ((await page.evaluate(() => window.hairsketch.session())) as { curves: Curve[] }).curves;
-
-async function scalpAt(page: Page, theta: number, phi: number) {
-  const p = await page.evaluate(([t, f]) => window.hairsketch.scalpToScreen(t, f), [theta, phi]);
-  expect(p, `scalp point (${theta}, ${phi}) on screen`).not.toBeNull();
-  return p as { x: number; y: number };
-}
 
 /** A drag from `a` in `moves` equal mouse moves of (dx, dy) each. */
 async function dragBy(page: Page, a: { x: number; y: number }, moves: number, dx: number, dy: number) {
@@ -136,12 +130,38 @@ test('a bob drawn with Mirror stays within 4 cm of the head at the ears', async 
 
 test('hair tucked behind the ears leaves them open from the front', async ({ page }) => {
   let rev = await emptyHead(page, { mirror: true, view: 'l' });
-  // from the temple over the top of the ear and down behind it; from the crown's side down
-  // behind the ear (faceOpen.spec's gesture)
-  await strokeFromScalp(page, 45, 50, 150, 260);
-  rev = (await settled(page, rev)).revision;
-  await strokeFromScalp(page, 35, 95, 80, 280);
-  await settled(page, rev);
+  const at = (p: V3) => page.evaluate((q) => window.hairsketch.worldToScreen(q), p);
+  // from the temple up over the ear and round behind it, down to the neck; from the crown's
+  // side down behind the ear; and the hair just in front of the ear back round it (the
+  // built-in head's ear: centre (0.72, -0.25, -0.12))
+  const paths: (V3 | [number, number])[][] = [
+    [
+      [42, 52],
+      [0.74, 0.12, -0.2],
+      [0.7, -0.2, -0.45],
+      [0.62, -0.75, -0.48],
+    ],
+    [
+      [32, 100],
+      [0.7, -0.1, -0.5],
+      [0.6, -0.75, -0.52],
+    ],
+    [
+      [72, 76],
+      [0.84, -0.02, -0.28],
+      [0.7, -0.45, -0.42],
+    ],
+  ];
+  for (const path of paths) {
+    const pts = [];
+    for (const p of path) {
+      const q = p.length === 2 ? await scalpAt(page, p[0], p[1]) : await at(p);
+      if (!q) throw new Error(`${p} is not on screen`);
+      pts.push(q);
+    }
+    await dragThrough(page, pts);
+    rev = (await settled(page, rev)).revision;
+  }
   const share = earCoverShare(await strands(page));
   console.log(`tucked: ${(100 * share).toFixed(2)} % of the strands hide an ear from the front`);
   await keep(page, 'tucked');

@@ -3,7 +3,7 @@
 // forehead covers it, a ponytail spine drawn from the side hangs plumb seen from behind. Every
 // figure is printed. Waits on the status attributes, never on fixed sleeps.
 import { expect, type Page, test } from '@playwright/test';
-import { settled, shoot, status } from './helpers';
+import { dragThrough as drag, scalpAt, settled, shoot, status } from './helpers';
 
 type V3 = [number, number, number];
 interface Curve {
@@ -19,28 +19,6 @@ interface Strands {
 
 const session = (page: Page) =>
   page.evaluate(() => window.hairsketch.session() as { curves: Curve[]; fall?: boolean });
-
-/** A drag through screen points with real mouse events: each leg in moves of at most 10 px (at
- *  most 24 per leg). Strokes are resampled at the grid's step, far coarser than that, and every
- *  move draws a frame, which costs a software rasteriser ~20 ms. */
-async function drag(page: Page, pts: { x: number; y: number }[]): Promise<void> {
-  await page.mouse.move(pts[0].x, pts[0].y);
-  await page.mouse.down();
-  for (let k = 1; k < pts.length; k++) {
-    const dx = pts[k].x - pts[k - 1].x;
-    const dy = pts[k].y - pts[k - 1].y;
-    const n = Math.min(24, Math.max(1, Math.ceil(Math.hypot(dx, dy) / 10)));
-    for (let i = 1; i <= n; i++)
-      await page.mouse.move(pts[k - 1].x + (dx * i) / n, pts[k - 1].y + (dy * i) / n);
-  }
-  await page.mouse.up();
-}
-
-async function scalpAt(page: Page, theta: number, phi: number) {
-  const p = await page.evaluate(([t, f]) => window.hairsketch.scalpToScreen(t, f), [theta, phi]);
-  expect(p, `scalp point (${theta}, ${phi}) on screen`).not.toBeNull();
-  return p as { x: number; y: number };
-}
 
 async function emptyHead(page: Page, camera?: { position: V3; target: V3 }): Promise<number> {
   await page.goto('/?preset=empty&strands=6000');
