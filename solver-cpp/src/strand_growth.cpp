@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "hair_fall.hpp"
 #include "parallel.hpp"
@@ -153,7 +154,7 @@ struct GrowRange {
 
   // The head's distance at p (world units) and its outward normal there (nrm, unit): read where
   // the distance grid is exact (HeadDistance::band), farther out by walking towards the head
-  // (outward's direction) until it is; -1 past kLayReach plus the largest volume.
+  // (outward's direction) until it is; NaN past kLayReach plus the largest volume.
   float distanceOff(const float p[3], float nrm[3]) const {
     float q[3] = {p[0], p[1], p[2]};
     const float band = head->band(), walk = 0.5f * band;
@@ -169,7 +170,7 @@ struct GrowRange {
       head->outward(q, dir);
       for (int k = 0; k < 3; ++k) q[k] -= walk * dir[k];
     }
-    return -1;
+    return std::numeric_limits<float>::quiet_NaN();
   }
 
   // The shape rules' "hair lies on the head": moves the step's end n (from x, of length segLen)
@@ -189,7 +190,7 @@ struct GrowRange {
     const float keep = 1.f - gov;
     bool held = true;
     const float dx = distanceOff(x, nrm);
-    if (dx < 0) return Lay::Free;
+    if (std::isnan(dx)) return Lay::Free;
     {
       dist = dx;
       if (nrm[1] < kSupportNormalY) {

@@ -78,6 +78,9 @@ test('long hair drawn with Mirror rests on the shoulders: front in front, back b
   await strokeFromScalp(page, 35, 95, 60, 300);
   s = await settled(page, s.revision);
   expect(s.curves).toBe(2);
+  // its hair (and with the shape rules the hair around it) grows on to the maximum length
+  await page.getByRole('checkbox', { name: 'Extend past the end' }).check();
+  s = await settled(page, s.revision);
   const m = await sides(page);
   console.log(
     `[bust] strands below the shoulders' top: rooted in front ${m.front}, ${(100 * m.frontShare).toFixed(1)} % end in front of the shoulders; rooted behind ${m.back}, ${(100 * m.backShare).toFixed(1)} % end behind them`,

@@ -51,11 +51,15 @@ test('typing 60 in Max length keeps 60 and grows hair 60 cm long; 120 shows 100 
   await page.goto('/?preset=empty&strands=1500');
   const s0 = await settled(page);
   // one stream curve from the side of the head, hanging down (natural fall: its own hair ends
-  // where it ends, "Extend past the end" off); the hair far from it hangs to the maximum length
+  // where it ends, "Extend past the end" off); with it on, its hair grows on, and the hair
+  // around it (the shape rules: length from the strokes around) to the maximum length
   await strokeFromScalp(page, 45, 70, 10, 170);
-  const s2 = await settled(page, s0.revision);
-  expect(s2.curves).toBe(1);
-  await expect(page.getByRole('checkbox', { name: 'Extend past the end' })).not.toBeChecked();
+  const s1 = await settled(page, s0.revision);
+  expect(s1.curves).toBe(1);
+  const extend = page.getByRole('checkbox', { name: 'Extend past the end' });
+  await expect(extend).not.toBeChecked();
+  await extend.check();
+  const s2 = await settled(page, s1.revision);
   const before = await longestStrand(page);
   const pointsBefore = await page.evaluate(() => window.hairsketch.gridPoints());
 

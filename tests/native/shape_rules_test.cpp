@@ -1,0 +1,196 @@
+// The shape rules (hair_fall.hpp ShapeRules): length from the strokes around against a
+// hand-computed blend, and growth on a sphere head measured against the sphere's exact distance
+// (|p| - r): hair laid on the head at its standoff, hair a lifted stroke governs left to it, hair
+// below the widest part hanging, and the rules off giving the same bytes as before.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "hair_fall.hpp"
+#include "head_distance.hpp"
+#include "sphere_mesh.hpp"
+#include "strand_growth.hpp"
+
+// Each test file is a namespace of its own: the build compiles several files as one (unity).
+namespace shape_rules_test {
+
+using namespace hairsketch;
+
+namespace {
+
+constexpr float kRadius = 1.0f;
+
+Grid boxGrid(int n, double lo, double hi) {
+  Grid g;
+  g.nx = g.ny = g.nz = n;
+  g.origin = {lo, lo, lo};
+  g.step = (hi - lo) / (n - 1);
+  return g;
+}
+
+struct SphereHead {
+  hairsketch_test::Mesh mesh = hairsketch_test::uvSphere(0, 0, 0, kRadius, 48, 96);
+  HeadDistance distance;
+  SphereHead() {
+    hairsketch_test::markScalpAbove(mesh, -0.6);
+    const HeadMeshView view{mesh.positions.data(), mesh.positions.size() / 3,
+                            mesh.indices.data(), mesh.indices.size() / 3, mesh.scalp.data()};
+    EXPECT_TRUE(distance.build(view).ok());
+  }
+};
+
+// A constant field: every strand is pushed along v wherever it is.
+std::vector<float> constantField(const Grid& g, float x, float y, float z) {
+  std::vector<float> f(size_t(g.size()) * 3);
+  for (size_t p = 0; p < size_t(g.size()); ++p) {
+    f[3 * p] = x;
+    f[3 * p + 1] = y;
+    f[3 * p + 2] = z;
+  }
+  return f;
+}
+
+// The sphere's exact distance of every point of strand s over its first `within` world units.
+std::vector<float> standOff(const Strands& st, size_t s, float within) {
+  std::vector<float> d;
+  float len = 0;
+  for (uint32_t p = st.strandStart[s] + 1; p < st.strandStart[s + 1] && len < within; ++p) {
+    const float* q = &st.points[3 * size_t(p)];
+    len += std::sqrt((q[0] - q[-3]) * (q[0] - q[-3]) + (q[1] - q[-2]) * (q[1] - q[-2]) +
+                     (q[2] - q[-1]) * (q[2] - q[-1]));
+    d.push_back(std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]) - kRadius);
+  }
+  return d;
+}
+
+float median(std::vector<float> v) {
+  std::sort(v.begin(), v.end());
+  return v.empty() ? NAN : v[v.size() / 2];
+}
+
+// Roots on the sphere at polar angle theta (radians from +y), n of them over the front third of
+// the circle round the axis (azimuth within 60 degrees of +z).
+std::vector<Eigen::Vector3f> ring(float theta, int n) {
+  std::vector<Eigen::Vector3f> r;
+  for (int k = 0; k < n; ++k) {
+    const float phi = 2.0943951f * (float(k) / float(n - 1) - 0.5f);
+    r.emplace_back(kRadius * std::sin(theta) * std::sin(phi), kRadius * std::cos(theta),
+                   kRadius * std::sin(theta) * std::cos(phi));
+  }
+  return r;
+}
+
+}  // namespace
+
+TEST(LengthAround, ShepardBlendOfTheStrokesLengthsCappedByTheMaximum) {
+  const std::vector<StrokeLength> strokes = {{0, 1, 0, 0.7f, false}, {1, 0, 0, 2.0f, false}};
+  const float p[3] = {0.3f, 0.8f, 0};
+  // by hand: weights 1 / (d^2 + 1e-4)
+  const double d1 = 0.3 * 0.3 + 0.2 * 0.2, d2 = 0.7 * 0.7 + 0.8 * 0.8;
+  const double w1 = 1 / (d1 + 1e-4), w2 = 1 / (d2 + 1e-4);
+  EXPECT_NEAR(lengthAround(strokes, p, 5.f), (w1 * 0.7 + w2 * 2.0) / (w1 + w2), 1e-5);
+  // capped by the maximum, each stroke's length too
+  EXPECT_NEAR(lengthAround(strokes, p, 1.f), (w1 * 0.7 + w2 * 1.0) / (w1 + w2), 1e-5);
+  // a stroke whose hair grows on counts as the maximum
+  const std::vector<StrokeLength> on = {{0, 1, 0, 0.7f, true}, {1, 0, 0, 2.0f, false}};
+  EXPECT_NEAR(lengthAround(on, p, 3.f), (w1 * 3.0 + w2 * 2.0) / (w1 + w2), 1e-5);
+  // at a stroke's root, its own length; with no stroke, the maximum
+  const float at[3] = {1, 0, 0};
+  EXPECT_NEAR(lengthAround(strokes, at, 5.f), 2.0, 1e-3);
+  EXPECT_EQ(lengthAround({}, p, 4.f), 4.f);
+}
+
+TEST(ShapeGrowth, HairNoStrokeGovernsLiesOnTheHeadAtItsStandoff) {
+  const SphereHead head;
+  const Grid g = boxGrid(41, -2, 2);
+  // a field straight along +z: on the front of the crown it leaves the sphere at once
+  const std::vector<float> field = constantField(g, 0, 0, 1);
+  const std::vector<Eigen::Vector3f> roots = ring(0.35f, 24);
+  GrowthParams gp;
+  gp.maxLength = 0.6;
+  Strands off, on, lifted;
+  ASSERT_TRUE(growStrands(g, field, roots, gp, off, 1 << 20, &head.distance).ok());
+  ShapeRules rules;
+  rules.on = true;
+  ASSERT_TRUE(growStrands(g, field, roots, gp, on, 1 << 20, &head.distance, nullptr,
+                          BodyCollider(), &rules)
+                  .ok());
+  rules.volume = 0.15f;
+  ASSERT_TRUE(growStrands(g, field, roots, gp, lifted, 1 << 20, &head.distance, nullptr,
+                          BodyCollider(), &rules)
+                  .ok());
+  std::vector<float> dOff, dOn, dLift;
+  for (size_t s = 0; s < roots.size(); ++s) {
+    for (float d : standOff(off, s, 0.3f)) dOff.push_back(d);
+    for (float d : standOff(on, s, 0.3f)) dOn.push_back(d);
+    // past the rise (volume / kVolumeRise = 0.3), at its standoff
+    const std::vector<float> all = standOff(lifted, s, 0.6f);
+    dLift.insert(dLift.end(), all.begin() + std::ptrdiff_t(all.size() * 2 / 3), all.end());
+  }
+  // without the rules the field takes the hair off the head; with them it lies at the margin
+  EXPECT_GT(median(dOff), 0.05f);
+  EXPECT_LT(median(dOn), float(gp.margin) + 0.01f) << median(dOn);
+  EXPECT_GT(median(dOn), float(gp.margin) - 0.01f);
+  // with volume, at margin + volume
+  EXPECT_NEAR(median(dLift), float(gp.margin) + 0.15f, 0.02f);
+}
+
+TEST(ShapeGrowth, HairBelowTheWidestPartHangsAndAStrokeKeepsItsOwnHair) {
+  const SphereHead head;
+  const Grid g = boxGrid(41, -2, 2);
+  // a field pointing out and a little down everywhere
+  const std::vector<float> field = constantField(g, 0.8f, -0.6f, 0);
+  GrowthParams gp;
+  gp.maxLength = 0.5;
+  ShapeRules rules;
+  rules.on = true;
+  // roots just under the equator on the +x side: they hang straight down
+  const std::vector<Eigen::Vector3f> low = {{0.95f, -0.31f, 0}, {0.94f, -0.3f, 0.15f}};
+  Strands hung;
+  ASSERT_TRUE(growStrands(g, field, low, gp, hung, 1 << 20, &head.distance, nullptr,
+                          BodyCollider(), &rules)
+                  .ok());
+  for (size_t s = 0; s < low.size(); ++s) {
+    const float* a = &hung.points[3 * size_t(hung.strandStart[s])];
+    const float* b = &hung.points[3 * size_t(hung.strandStart[s + 1] - 1)];
+    const Eigen::Vector3f d(b[0] - a[0], b[1] - a[1], b[2] - a[2]);
+    EXPECT_GT(d.norm(), 0.3f);
+    EXPECT_LT(-d.y() / d.norm(), 1.0f + 1e-6f);
+    EXPECT_GT(-d.y() / d.norm(), 0.9f) << "strand " << s << " leaves along " << d.transpose();
+  }
+  // a stroke lifted off the head along +x at the crown's side: the hair rooted under it is its
+  // own and follows the field out (no farther than the stroke plus kLiftSlack), while hair far
+  // from it lies on the head
+  std::vector<double> pts;
+  std::vector<float> lift;
+  for (int k = 0; k <= 10; ++k) {
+    const double x = 0.7 + 0.06 * k, y = 0.7 - 0.045 * k;
+    pts.insert(pts.end(), {x, y, 0});
+    lift.push_back(float(std::hypot(x, y) - kRadius));
+  }
+  ReachCurve c;
+  c.points = pts.data();
+  c.count = 11;
+  c.setsLength = true;
+  c.lift = lift.data();
+  CurveReach reach;
+  buildCurveReach(g, {c}, reach);
+  const std::vector<Eigen::Vector3f> roots = {{0.7f, 0.714f, 0}, {-0.7f, 0.714f, 0}};
+  Strands st;
+  gp.maxLength = 0.5;
+  ASSERT_TRUE(growStrands(g, field, roots, gp, st, 1 << 20, &head.distance, &reach,
+                          BodyCollider(), &rules)
+                  .ok());
+  const std::vector<float> under = standOff(st, 0, 0.45f), far = standOff(st, 1, 0.45f);
+  ASSERT_FALSE(under.empty());
+  ASSERT_FALSE(far.empty());
+  // the stroke's hair stands off as its stroke does (0.4 at its tip), never past it by more than
+  // the slack; the other lies at the margin until it hangs
+  EXPECT_GT(under.back(), 0.15f);
+  for (size_t k = 0; k < under.size(); ++k) EXPECT_LT(under[k], lift.back() + kLiftSlack + 0.03f);
+  EXPECT_LT(median(far), float(gp.margin) + 0.02f);
+}
+
+}  // namespace shape_rules_test
