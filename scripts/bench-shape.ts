@@ -6,13 +6,6 @@
 // run gives before and after. Writes bench-results/shape.{json,md}.
 import { readdirSync, readFileSync } from 'node:fs';
 import { basename, join } from 'node:path';
-import { headForGrow } from '../web/cli/head';
-import { growSessionHair } from '../web/export/growSession';
-import { gridForSession } from '../web/model/grid';
-import { hangLength, type SessionState } from '../web/model/session';
-import { parseSession } from '../web/model/sessionFile';
-import { singleNodeOptions } from '../web/solver/nodeThreads';
-import { loadSolverEngine } from '../web/solver/wasmEngine';
 import {
   earCoverShare,
   faceShare,
@@ -21,6 +14,13 @@ import {
   standOff,
   widthAtEars,
 } from '../tests/support/shapeMetrics';
+import { headForGrow } from '../web/cli/head';
+import { growSessionHair } from '../web/export/growSession';
+import { gridForSession } from '../web/model/grid';
+import { hangLength, type SessionState } from '../web/model/session';
+import { parseSession } from '../web/model/sessionFile';
+import { singleNodeOptions } from '../web/solver/nodeThreads';
+import { loadSolverEngine } from '../web/solver/wasmEngine';
 import { writeBenchResults } from './benchResults.mjs';
 
 const dir = 'tests/fixtures/shape';

@@ -36,7 +36,13 @@ const curves = async (page: Page) =>
   ((await page.evaluate(() => window.hairsketch.session())) as { curves: Curve[] }).curves;
 
 /** A drag from `a` in `moves` equal mouse moves of (dx, dy) each. */
-async function dragBy(page: Page, a: { x: number; y: number }, moves: number, dx: number, dy: number) {
+async function dragBy(
+  page: Page,
+  a: { x: number; y: number },
+  moves: number,
+  dx: number,
+  dy: number,
+) {
   await page.mouse.move(a.x, a.y);
   await page.mouse.down();
   for (let i = 1; i <= moves; i++) await page.mouse.move(a.x + dx * i, a.y + dy * i);
@@ -60,9 +66,11 @@ async function keep(page: Page, name: string) {
   await shoot(page, name);
   const dir = process.env.SHOT_DIR;
   if (!dir) return;
-  const { camera: _c, selected: _s, ...session } = (await page.evaluate(() =>
-    window.hairsketch.session(),
-  )) as Record<string, unknown>;
+  const {
+    camera: _c,
+    selected: _s,
+    ...session
+  } = (await page.evaluate(() => window.hairsketch.session())) as Record<string, unknown>;
   writeFileSync(`${dir}/${name}.json`, JSON.stringify(session));
 }
 
@@ -185,4 +193,62 @@ test('a short slicked back stays short at the nape', async ({ page }) => {
   );
   await keep(page, 'slicked');
   expect(n.nape).toBeLessThanOrEqual(1.5 * n.strokes);
+});
+
+test('long hair swept to one side lies on the head, not in a hood', async ({ page }) => {
+  let rev = await emptyHead(page, { view: 'f' });
+  // from the parting on the head's left across the top and down the right side to the shoulder
+  for (const [t, f, dx] of [
+    [28, 62, 0],
+    [40, 75, 20],
+    [50, 110, 40],
+  ]) {
+    const a = await scalpAt(page, t, f);
+    await dragThrough(page, [
+      a,
+      { x: a.x - 120 - dx, y: a.y + 20 },
+      { x: a.x - 190 - dx, y: a.y + 320 },
+    ]);
+    rev = (await settled(page, rev)).revision;
+  }
+  const cs = await curves(page);
+  const s = await strands(page);
+  const lie = standOff(s, cs, 0.3, 0.4);
+  const w = widthAtEars(s);
+  console.log(
+    `sweep: median distance from the head over the first 3 cm of hair 4+ cm from the strokes ${(10 * lie).toFixed(2)} cm; ${(10 * w.hair).toFixed(1)} cm wide at the ears (the head ${(10 * w.head).toFixed(1)} cm)`,
+  );
+  await keep(page, 'sweep');
+  expect(lie).toBeLessThanOrEqual(0.1);
+  expect(w.hair).toBeLessThanOrEqual(w.head + 0.6);
+});
+
+test('Volume in the Hair panel lifts the roots by as much; the panel says what sets the length', async ({
+  page,
+}) => {
+  let rev = await emptyHead(page, { mirror: true, view: 'l' });
+  await strokeFromScalp(page, 25, 90, 10, 230);
+  rev = (await settled(page, rev)).revision;
+  const cs = await curves(page);
+  const before = standOff(await strands(page), cs, 0.3, 0.4);
+  await page.getByRole('button', { name: 'Detail' }).click();
+  const panel = page.getByRole('region', { name: 'Hair detail' });
+  await expect(panel.getByTestId('length-rule')).toContainText('as long as the strokes near it');
+  const input = panel.getByLabel('Volume (cm)');
+  await input.click();
+  await page.keyboard.press('Control+A');
+  await page.keyboard.type('2');
+  await page.keyboard.press('Tab');
+  rev = (await settled(page, rev)).revision;
+  const after = standOff(await strands(page), cs, 0.6, 0.4);
+  console.log(
+    `volume: median distance from the head ${(10 * before).toFixed(2)} cm at the default, ${(10 * after).toFixed(2)} cm over the first 6 cm at 2 cm`,
+  );
+  // the growth margin (2 mm) plus the volume; reached over the first 4 cm
+  expect(after).toBeGreaterThan(0.15);
+  expect(after).toBeLessThan(0.25);
+  expect(before).toBeLessThan(0.1);
+  await page.keyboard.press('Control+z');
+  await settled(page, rev);
+  await expect(input).toHaveValue('0.5');
 });

@@ -11,12 +11,14 @@ const vp = {
 };
 
 function sample(): SessionState {
-  // the settings (avoidScalp, fall, sections, finish, bust, detail) in the order the reader writes them
+  // the settings (avoidScalp, fall, sections, finish, bust, shape, detail) in the order the reader
+  // writes them
   const {
     fall: _fall,
     sections: _sections,
     finish: _finish,
     bust: _bust,
+    shape: _shape,
     ...s
   } = emptySession('50k');
   return {

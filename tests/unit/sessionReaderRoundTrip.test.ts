@@ -89,9 +89,10 @@ describe('every preset session passes the reader and round-trips', () => {
   });
 
   it('spells out the defaults of a minimal session, and keeps them on the next read', () => {
-    // a session made before version 4 has no natural fall, sections, finished edges or bust
-    // (new sessions have them on)
-    const { fall, sections, finish, bust, ...beforeFall } = emptySession('25k');
+    // a session made before version 4 has no natural fall, sections, finished edges, bust or
+    // shape rules (new sessions have them on)
+    const { fall, sections, finish, bust, shape, ...beforeFall } = emptySession('25k');
+    expect(shape).toBe(true);
     expect(fall).toBe(true);
     expect(sections).toBe(true);
     expect(finish).toBe(true);
@@ -100,7 +101,8 @@ describe('every preset session passes the reader and round-trips', () => {
     expect(back).toEqual(beforeFall);
     // a minimal version 1 session reads as the same session
     expect(expectRoundTrip({ version: 1, curves: [] })).toEqual(beforeFall);
-    // and a minimal current one with fall, sections and finished edges on as a new session
+    // and a minimal current one with fall, sections, finished edges and the shape rules on as a
+    // new session
     expect(
       expectRoundTrip({
         version: SESSION_VERSION,
@@ -109,6 +111,7 @@ describe('every preset session passes the reader and round-trips', () => {
         sections: true,
         finish: true,
         bust: true,
+        shape: true,
       }),
     ).toEqual(emptySession('25k'));
   });

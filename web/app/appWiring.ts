@@ -99,6 +99,7 @@ export function buildHairPanel(
 ): DetailPanel {
   return buildDetailPanel(stage, {
     setGrowth: (patch) => editor.run({ kind: 'setGrowth', patch }),
+    setVolume: (volume) => editor.run({ kind: 'setVolume', volume }),
     lengthen: (by) => editor.run({ kind: 'lengthen', by }),
     setDetail: (curveId, detail) => editor.run({ kind: 'setDetail', curveId, detail }),
     setHairLook: (look) => editor.run({ kind: 'setHairLook', look }),

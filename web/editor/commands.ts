@@ -32,6 +32,7 @@ import {
   type Viewpoint,
 } from '../model/session';
 import { parseSession } from '../model/sessionFile';
+import { SESSION_SETTINGS } from '../model/sessionSchema';
 import type { SurfaceMode } from '../model/supportingSurface';
 import type { Vec3 } from '../model/vec3';
 
@@ -65,6 +66,8 @@ export type Command =
   /** "Avoid scalp" (S4.7) on or off: a setting the solver applies whenever it solves. */
   | { kind: 'setAvoidScalp'; on: boolean }
   | { kind: 'setBust'; on: boolean }
+  /** Volume (the shape rules' lift at the roots, world units 0 to 0.3). */
+  | { kind: 'setVolume'; volume: number }
   /** The session's detail (curveId null) or one curve's own (undefined: none / the session's). */
   | { kind: 'setDetail'; curveId: string | null; detail: HairDetail | undefined }
   /** Growth settings (strand density, cap, maximum length). */
@@ -296,6 +299,24 @@ const HANDLERS: {
       on: 'Bust on: neck, shoulders and chest under the head; long hair rests on them.',
       off: 'Bust off: the head alone.',
     }),
+  setVolume(s, cmd) {
+    const spec = SESSION_SETTINGS.volume;
+    if (!Number.isFinite(cmd.volume) || cmd.volume < spec.min || cmd.volume > spec.max)
+      return {
+        session: s,
+        message: `Volume must be from ${spec.min * 10} to ${spec.max * 10} cm: nothing changed.`,
+      };
+    const volume = Math.round(cmd.volume / spec.quantum) / Math.round(1 / spec.quantum);
+    if (!s.shape)
+      return { session: s, message: 'Volume applies to sessions with the shape rules.' };
+    if ((s.volume ?? spec.default) === volume)
+      return { session: s, message: `Volume is already ${(volume * 10).toFixed(1)} cm.` };
+    const { volume: _old, ...rest } = s;
+    return {
+      session: volume === spec.default ? rest : { ...rest, volume },
+      message: `Volume ${(volume * 10).toFixed(1)} cm: the hair stands off the head by that much at its roots.`,
+    };
+  },
   setDetail(s, cmd) {
     const d = cmd.detail && (detailIsOn(cmd.detail) || cmd.curveId) ? cmd.detail : undefined;
     if (cmd.curveId === null) {

@@ -1,4 +1,5 @@
-// The "Hair" panel: strand count and maximum length (growth settings), the colour
+// The "Hair" panel: strand count and maximum length (growth settings), which rule sets the
+// length, Volume (with the shape rules), the colour
 // (ui/hairLookEditor.ts: melanin, redness, grey, dye, tips…), and the detail (curl,
 // clump, frizz, length jitter) of the whole head and, with a curve selected, below it that
 // curve's own (of the strands it governs). Lengths in centimetres. Built from model/detail.ts DETAIL_PARAMS; every change is one undoable edit
@@ -15,7 +16,9 @@ import {
 import { MAX_HAIR_LENGTH } from '../model/grid';
 import type { GrowthParams } from '../model/growthParams';
 import type { HairLook } from '../model/hairLook';
+import { extendsPastEnd } from '../model/kinds';
 import { DEFAULT_GROWTH, type SessionState, type StyleCurve } from '../model/session';
+import { SESSION_SETTINGS } from '../model/sessionSchema';
 import { hairLookEditors } from './hairLookEditor';
 import { numberInput, type Say } from './numberInput';
 
@@ -28,6 +31,23 @@ export const LENGTHEN_STEP = 0.5;
 
 /** Maximum strand length in the panel, centimetres (world units × 10). */
 export const LENGTH_RANGE_CM = { min: 2, max: MAX_HAIR_LENGTH * 10, step: 1 };
+
+/** Volume in the panel, centimetres (the session's volume setting × 10). */
+export const VOLUME_RANGE_CM = {
+  min: SESSION_SETTINGS.volume.min * 10,
+  max: SESSION_SETTINGS.volume.max * 10,
+  step: SESSION_SETTINGS.volume.quantum * 10,
+};
+
+/** Which rule sets the length of hair no stroke ends (shown under Max length). */
+export function lengthRule(s: Pick<SessionState, 'shape' | 'fall' | 'curves'>): string {
+  if (!s.fall) return 'Length: the strokes alone (the paper’s method).';
+  const strokes = s.curves.filter((c) => c.type === 'stream');
+  if (!s.shape || strokes.length === 0) return 'Length: hair no stroke ends grows to Max length.';
+  if (strokes.every((c) => extendsPastEnd(c)))
+    return 'Length: your strokes grow on, so hair grows to Max length.';
+  return 'Length: hair no stroke ends is as long as the strokes near it (at most Max length).';
+}
 
 /** The strand count the panel shows for a session's growth (before its cap). */
 export function strandsOf(g: GrowthParams): number {
@@ -53,6 +73,8 @@ export function growthForStrands(
 
 export interface DetailPanelEvents {
   setGrowth(patch: Partial<GrowthParams>): void;
+  /** Volume: the lift at the roots, world units. */
+  setVolume(volume: number): void;
   /** "Longer" / "Shorter": the whole style by `by` world units. */
   lengthen(by: number): void;
   /** A sentence for the status line (an entry clamped or rounded). */
@@ -131,6 +153,23 @@ export function buildDetailPanel(root: HTMLElement, events: DetailPanelEvents): 
     buttons.append(shorter, ' ', longer);
     lengthRow.append('Length', buttons);
     panel.append(lengthRow);
+    const rule = document.createElement('p');
+    rule.dataset.testid = 'length-rule';
+    rule.textContent = lengthRule(s);
+    panel.append(rule);
+    if (s.shape)
+      panel.append(
+        row(
+          'Volume (cm)',
+          numberInput(
+            VOLUME_RANGE_CM,
+            (s.volume ?? SESSION_SETTINGS.volume.default) * 10,
+            { label: 'Volume', unit: 'cm', decimals: 1 },
+            (cm) => events.setVolume(cm / 10),
+            events.say,
+          ),
+        ),
+      );
     panel.append(heading('Colour'));
     panel.append(hairLookEditors(s.hairLook ?? null, events.setHairLook, events.say));
     // the whole head's detail is always here; a selected curve's own detail follows it
@@ -241,6 +280,9 @@ export function buildDetailPanel(root: HTMLElement, events: DetailPanelEvents): 
       if (panel.hidden) return;
       const key = JSON.stringify([
         session.growth,
+        session.shape,
+        session.volume,
+        lengthRule(session),
         session.detail,
         session.hairLook,
         selected?.id,
