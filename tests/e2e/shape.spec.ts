@@ -201,7 +201,7 @@ test('long hair swept to one side lies on the head, not in a hood', async ({ pag
   for (const [t, f, dx] of [
     [28, 62, 0],
     [40, 75, 20],
-    [50, 110, 40],
+    [48, 68, 40],
   ]) {
     const a = await scalpAt(page, t, f);
     await dragThrough(page, [
@@ -240,11 +240,12 @@ test('Volume in the Hair panel lifts the roots by as much; the panel says what s
   await page.keyboard.type('2');
   await page.keyboard.press('Tab');
   rev = (await settled(page, rev)).revision;
-  const after = standOff(await strands(page), cs, 0.6, 0.4);
+  // past the rise (the volume is reached over its first 4 cm), from 4 to 7 cm along the hair
+  const after = standOff(await strands(page), cs, 0.7, 0.4, 0.4);
   console.log(
-    `volume: median distance from the head ${(10 * before).toFixed(2)} cm at the default, ${(10 * after).toFixed(2)} cm over the first 6 cm at 2 cm`,
+    `volume: median distance from the head ${(10 * before).toFixed(2)} cm at the default, ${(10 * after).toFixed(2)} cm from 4 to 7 cm along the hair at 2 cm`,
   );
-  // the growth margin (2 mm) plus the volume; reached over the first 4 cm
+  // the growth margin (2 mm) plus the volume, less where the hair leaves the head
   expect(after).toBeGreaterThan(0.15);
   expect(after).toBeLessThan(0.25);
   expect(before).toBeLessThan(0.1);

@@ -69,16 +69,17 @@ export function fallOfUngoverned(s: StrandSet, cs: readonly CurveLike[], far = 0
   };
 }
 
-/** The median distance from the head (world units) of the points of every strand over its first
- *  `within` (3 cm), of strands whose root is `far` from every stroke point (0: every strand). */
-export function standOff(s: StrandSet, cs: readonly CurveLike[], within = 0.3, far = 0) {
+/** The median distance from the head (world units) of the points of every strand from `from`
+ *  to `within` along it (default its first 3 cm), of strands whose root is `far` from every
+ *  stroke point (0: every strand). */
+export function standOff(s: StrandSet, cs: readonly CurveLike[], within = 0.3, far = 0, from = 0) {
   const d: number[] = [];
   eachStrand(s, (pts) => {
     if (far > 0 && !ungoverned(pts[0], cs, far)) return;
     let len = 0;
     for (let i = 1; i < pts.length && len < within; i++) {
       len += dist(pts[i], pts[i - 1]);
-      d.push(headSdf(pts[i][0], pts[i][1], pts[i][2]));
+      if (len >= from) d.push(headSdf(pts[i][0], pts[i][1], pts[i][2]));
     }
   });
   return median(d);
