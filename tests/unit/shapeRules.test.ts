@@ -1,0 +1,141 @@
+// The shape rules on stroke sets drawn by hand (tests/fixtures/shape: sessions shape.spec.ts drew
+// with real pointer events on an empty head), grown by the real wasm engine as `hairsketch grow`
+// grows them, measured from the strands against the head's exact signed distance and the
+// strokes themselves: short spikes, tucked behind the ears, a short crop (slicked back), a long
+// sweep. Each figure is also taken with the rules off (the session as saved before them), where
+// the fault they fix shows.
+import { readFileSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
+import { describe, expect, it } from 'vitest';
+import { headForGrow } from '../../web/cli/head';
+import { growSessionHair } from '../../web/export/growSession';
+import { gridForSession } from '../../web/model/grid';
+import type { StrandArrays } from '../../web/model/hairArrays';
+import { hangLength, type SessionState } from '../../web/model/session';
+import { parseSession } from '../../web/model/sessionFile';
+import { loadSolverEngine } from '../../web/solver/wasmEngine';
+import {
+  dist,
+  eachStrand,
+  earCoverShare,
+  fallOfUngoverned,
+  median,
+  standOff,
+} from '../support/shapeMetrics';
+
+function fixture(name: string): SessionState {
+  const r = parseSession(
+    JSON.parse(readFileSync(new URL(`../fixtures/shape/${name}.json`, import.meta.url), 'utf8')),
+  );
+  if (!r.ok) throw new Error(r.error);
+  return { ...r.value, growth: { ...r.value.growth, maxStrands: 4000 } };
+}
+
+const wasmBinary = new Uint8Array(
+  readFileSync(fileURLToPath(new URL('../../web/generated/hairsolver.wasm', import.meta.url))),
+);
+
+async function grow(s: SessionState): Promise<StrandArrays> {
+  const { scalp } = await headForGrow(s, undefined, null);
+  const engine = await loadSolverEngine({ wasmBinary });
+  try {
+    return growSessionHair(engine, s, scalp, {
+      grid: gridForSession(s.grid, s.curves, undefined, hangLength(s)),
+      solver: 'fast',
+    }).strands;
+  } finally {
+    engine.dispose();
+  }
+}
+
+const off = (s: SessionState): SessionState => {
+  const { shape: _s, volume: _v, ...rest } = s;
+  return rest;
+};
+
+/** Hair no stroke ends, rooted 4 cm or more from every stroke point: the median of its length
+ *  over the Shepard blend of the stream curves' lengths (weights 1 / squared distance from the
+ *  root to each curve's first point), capped by Max length, computed here from the strokes. */
+function lengthRatio(s: StrandArrays, session: SessionState): number {
+  const maxLength = session.growth.maxLength;
+  const strokes = session.curves
+    .filter((c) => c.type === 'stream')
+    .map((c) => {
+      let L = 0;
+      for (let i = 1; i < c.points.length; i++) L += dist(c.points[i], c.points[i - 1]);
+      return { start: c.points[0], length: c.extend ? maxLength : Math.min(L, maxLength) };
+    });
+  const ratios: number[] = [];
+  eachStrand(s, (pts) => {
+    if (session.curves.some((c) => c.points.some((q) => dist(q, pts[0]) < 0.4))) return;
+    let sw = 0;
+    let swl = 0;
+    for (const c of strokes) {
+      const w = 1 / (dist(c.start, pts[0]) ** 2 + 1e-4);
+      sw += w;
+      swl += w * c.length;
+    }
+    let len = 0;
+    for (let i = 1; i < pts.length; i++) len += dist(pts[i], pts[i - 1]);
+    ratios.push(len / Math.min(maxLength, swl / sw));
+  });
+  return median(ratios);
+}
+
+describe('the shape rules on hand-drawn stroke sets', () => {
+  it('short spikes drawn up and away lift their own hair only; far hair lies on the head', async () => {
+    const s = fixture('spikes');
+    const [before, after] = [await grow(off(s)), await grow(s)];
+    const fb = fallOfUngoverned(before, s.curves);
+    const fa = fallOfUngoverned(after, s.curves);
+    const lieB = standOff(before, s.curves, 0.3, 0.4);
+    const lieA = standOff(after, s.curves, 0.3, 0.4);
+    console.log(
+      `spikes, rules off -> on: median angle from down ${fb.medianAngle.toFixed(1)} -> ${fa.medianAngle.toFixed(1)} deg, above the root ${(100 * fb.aboveShare).toFixed(1)} -> ${(100 * fa.aboveShare).toFixed(1)} %, off the head ${(10 * lieB).toFixed(2)} -> ${(10 * lieA).toFixed(2)} cm`,
+    );
+    expect(fb.medianAngle).toBeGreaterThan(35); // the fault
+    expect(fa.medianAngle).toBeLessThanOrEqual(35);
+    expect(fa.aboveShare).toBeLessThanOrEqual(0.1);
+    expect(lieA).toBeLessThanOrEqual(0.1);
+    expect(lieB).toBeGreaterThan(0.1);
+  });
+
+  it('tucked behind the ears: the ears stay open, the hair lies on the head', async () => {
+    const s = fixture('tucked');
+    const [before, after] = [await grow(off(s)), await grow(s)];
+    const [eb, ea] = [earCoverShare(before), earCoverShare(after)];
+    const lie = standOff(after, s.curves, 0.3, 0.4);
+    console.log(
+      `tucked, rules off -> on: ${(100 * eb).toFixed(2)} -> ${(100 * ea).toFixed(2)} % of strands hide an ear; off the head ${(10 * lie).toFixed(2)} cm`,
+    );
+    expect(eb).toBeGreaterThan(0.02);
+    expect(ea).toBeLessThanOrEqual(0.02);
+    expect(lie).toBeLessThanOrEqual(0.1);
+  });
+
+  it('a short crop: hair no stroke ends is as long as the strokes around (within 20 %)', async () => {
+    const s = fixture('slicked');
+    const [before, after] = [await grow(off(s)), await grow(s)];
+    const [rb, ra] = [lengthRatio(before, s), lengthRatio(after, s)];
+    console.log(
+      `short crop, rules off -> on: length of hair no stroke ends over its strokes' ${rb.toFixed(2)} -> ${ra.toFixed(2)}`,
+    );
+    expect(rb).toBeGreaterThan(1.2);
+    expect(ra).toBeGreaterThan(0.8);
+    expect(ra).toBeLessThan(1.2);
+    expect(standOff(after, s.curves, 0.3, 0.4)).toBeLessThanOrEqual(0.1);
+  });
+
+  it('a long sweep: the hair lies on the head and takes the sweep’s length', async () => {
+    const s = fixture('sweep');
+    const after = await grow(s);
+    const lie = standOff(after, s.curves, 0.3, 0.4);
+    const ratio = lengthRatio(after, s);
+    console.log(
+      `long sweep: off the head ${(10 * lie).toFixed(2)} cm; length over its strokes' ${ratio.toFixed(2)}`,
+    );
+    expect(lie).toBeLessThanOrEqual(0.1);
+    expect(ratio).toBeGreaterThan(0.8);
+    expect(ratio).toBeLessThan(1.2);
+  });
+});
