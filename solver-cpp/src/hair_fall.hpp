@@ -153,10 +153,11 @@ struct ShapeRules {
 // Whether p lies in the face's column (kFaceTop, kFaceBottom, kFaceHalfAngle about the vertical
 // axis through centre, in front of it), where hair no stroke governs does not go: it parts to
 // the nearer side, as hair parted at the centre does.
+constexpr float kFaceHalfAngleTan = 0.9315965f;  // tan(kFaceHalfAngle)
 inline bool inFaceColumn(const float centre[3], float x, float y, float z) {
   const float fz = z - centre[2], dx = x - centre[0], yc = y - centre[1];
   return fz > 0 && yc < float(kFaceTop) && yc > float(kFaceBottom) &&
-         std::abs(std::atan2(dx, fz)) < float(kFaceHalfAngle);
+         std::abs(dx) < kFaceHalfAngleTan * fz;
 }
 // The head's outward normal must have an upward part above this for the head to hold the hair
 // on it (a little under horizontal: the cranium's sides above its widest part).

@@ -183,10 +183,8 @@ struct GrowRange {
   // column, where it parts round the face) too (Over); taken farther than kLayReach off by the
   // field it follows the field (Free).
   enum class Lay { Laid, Hangs, Over, Free };
-  Lay layOnHead(const float x[3], float n[3], double& segLen, double arc, float& dist,
+  Lay layOnHead(const float x[3], float n[3], double& segLen, double arc, float gov, float& dist,
                 float nrm[3]) const {
-    const float gov =
-        reach ? interpolateScalar(reach->grid, reach->governed.data(), n[0], n[1], n[2]) : 0.f;
     const float keep = 1.f - gov;
     bool held = true;
     const float dx = distanceOff(x, nrm);
@@ -229,9 +227,8 @@ struct GrowRange {
   // The shape rules' "the face stays open": a step of hair no stroke governs that ends in the
   // face's column turns to the nearer side (its horizontal part sideways, at least as much as
   // it falls), so the hair parts round the face.
-  void partRoundFace(float x, float y, float z, float& nx, float& ny, float& nz) const {
-    if (!inFaceColumn(centre, nx, ny, nz)) return;
-    if (reach && interpolateScalar(reach->grid, reach->governed.data(), nx, ny, nz) >= 0.5f) return;
+  void partRoundFace(float x, float y, float z, float gov, float& nx, float& ny, float& nz) const {
+    if (gov >= 0.5f || !inFaceColumn(centre, nx, ny, nz)) return;
     const float d[3] = {nx - x, ny - y, nz - z};
     const float len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     const float side = nx >= centre[0] ? 1.f : -1.f;
@@ -248,11 +245,11 @@ struct GrowRange {
   // kCombFar of a stroke that falls, that stroke's direction there (fully within kCombNear);
   // farther, straight down for a strand that hangs (left the head below its widest part or over
   // an ear) and its own direction for one still laid on the head.
-  void fallOrComb(bool hangs, bool overEar, float x, float y, float z, float& nx, float& ny,
-                  float& nz) const {
-    float w = 1.f, c = 0.f, t[3] = {0, -1, 0};
+  void fallOrComb(bool hangs, bool overEar, float x, float y, float z, float gov, float& nx,
+                  float& ny, float& nz) const {
+    const float w = 1.f - gov;
+    float c = 0.f, t[3] = {0, -1, 0};
     if (reach) {
-      w -= interpolateScalar(reach->grid, reach->governed.data(), x, y, z);
       const float near = interpolateScalar(reach->grid, reach->nearest.data(), x, y, z);
       if (near < kCombFar) {
         for (int e = 0; e < 3; ++e)
@@ -387,8 +384,11 @@ struct GrowRange {
           if (!(m2 >= minMag2)) break;  // weak field (or NaN)
           float nx = x + l * v[0], ny = y + l * v[1], nz = z + l * v[2];
           double segLen = double(l) * std::sqrt(double(m2));
-          if (hanging || laying) fallOrComb(hanging, overEar, x, y, z, nx, ny, nz);
-          if (shape) partRoundFace(x, y, z, nx, ny, nz);
+          // with the shape rules, how far a stroke governs the hair here (1: its own)
+          const float gov =
+              shape && reach ? interpolateScalar(reach->grid, reach->governed.data(), x, y, z) : 0.f;
+          if (hanging || laying) fallOrComb(hanging, overEar, x, y, z, gov, nx, ny, nz);
+          if (shape) partRoundFace(x, y, z, gov, nx, ny, nz);
           // The body: the strand slides over it (never stops there).
           auto slide = [&](const HeadDistance& mesh) {
             const float at[3] = {x, y, z};
@@ -436,7 +436,7 @@ struct GrowRange {
           if (laying) {
             const float at[3] = {x, y, z};
             float q[3] = {nx, ny, nz};
-            const Lay lay = layOnHead(at, q, segLen, length + segLen, layDist, layNormal);
+            const Lay lay = layOnHead(at, q, segLen, length + segLen, gov, layDist, layNormal);
             laying = lay == Lay::Laid;
             hanging = lay == Lay::Hangs || lay == Lay::Over;
             overEar = lay == Lay::Over;

@@ -97,7 +97,8 @@ export function faceShare(s: StrandSet): number {
 }
 
 /** Share of strands that hide an ear from the front: a point beside the ear (|x| past the
- *  cranium's side there), within the ear's height and in front of its middle. */
+ *  cranium's side there), within the middle 3 cm of the ear's 6 cm height (hair tucked behind an
+ *  ear rests on its top) and in front of its middle. */
 export function earCoverShare(s: StrandSet): number {
   let over = 0;
   let n = 0;
@@ -106,7 +107,7 @@ export function earCoverShare(s: StrandSet): number {
     const hides = pts.some(
       ([x, y, z]) =>
         Math.abs(x) > EAR_X - 0.08 &&
-        Math.abs(y - EAR_Y) < 0.2 &&
+        Math.abs(y - EAR_Y) < 0.15 &&
         z > EAR_Z &&
         z < EAR_Z + 0.45 &&
         Math.abs(x) < EAR_X + 0.5,
