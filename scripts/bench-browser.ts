@@ -12,6 +12,8 @@
 // came late, as the page acknowledges events only between frames, is not followed by a wait).
 // Each stroke's row also counts the frames drawn while drawing by where they started (the frame
 // cache: cached head and hair / cached head / nothing).
+// BENCH_PRESET=<name> opens that preset instead of the default (empty: a new session, with the
+// shape rules of docs/natural-fall.md).
 // BENCH_DIST=<dir> serves another build (vite build --outDir <dir>) instead of dist/.
 // BENCH_QUALITY=fast|high sets the Quality (else the app's Auto) and writes
 // bench-results/browser-<quality>.{json,md}.
@@ -36,6 +38,7 @@ const FRAMES = Number(process.env.BENCH_FRAMES ?? 5);
 const DENSE = process.env.BENCH_DENSE !== '0';
 const TOOL = process.env.BENCH_TOOL ?? 'Stream curve';
 const QUALITY = process.env.BENCH_QUALITY;
+const PRESET = process.env.BENCH_PRESET;
 const trace = (m: string): void => {
   if (process.env.BENCH_TRACE)
     console.error(`[bench ${new Date().toISOString().slice(11, 23)}] ${m}`);
@@ -262,7 +265,7 @@ async function main(): Promise<void> {
     trace('server up');
     for (const { grid, solver } of configs) {
       const page = await browser.newPage({ viewport: { width: 1000, height: 750 } });
-      await page.goto(`${BASE}/?grid=${grid}&solver=${solver}`);
+      await page.goto(`${BASE}/?grid=${grid}&solver=${solver}${PRESET ? `&preset=${PRESET}` : ''}`);
       trace(`${grid} ${solver}: loading`);
       await settled(page);
       if (QUALITY) {
@@ -357,7 +360,7 @@ async function main(): Promise<void> {
     command: 'npm run bench:browser',
     measures:
       "The built app in Debian's Chromium (headless, software WebGL through SwiftShader), " +
-      `default preset, ${STROKES} strokes per configuration drawn at a hand's pace with the ` +
+      `${PRESET ? `the ${PRESET} preset` : 'default preset'}, ${STROKES} strokes per configuration drawn at a hand's pace with the ` +
       `${TOOL} tool. Per ` +
       'configuration: page load → first hair; pointer-up → first new hair, → the converged ' +
       "field's hair, → the final hair with every strand (medians, from the page's data-revision " +
@@ -374,6 +377,7 @@ async function main(): Promise<void> {
       tool: TOOL,
       dist: process.env.BENCH_DIST ?? 'dist',
       label: process.env.BENCH_LABEL ?? null,
+      preset: PRESET ?? 'default',
     },
     results: rows,
     table: out.join('\n'),
