@@ -185,7 +185,8 @@ Status HairEngine::setCurves(const CurveSetView& curves) {
     std::vector<float> lift;
     if (shape_.on && headDistance_.built() && fv.points) {
       lift.resize(fv.pointCount);
-      for (size_t k = 0; k < fv.pointCount; ++k) lift[k] = strokeLift(headDistance_, fv.points + 3 * k);
+      for (size_t k = 0; k < fv.pointCount; ++k)
+        lift[k] = strokeLift(headDistance_, fv.points + 3 * k);
     }
     if (fv.kinds && fv.curveStart && fv.points)
       for (size_t c = 0; c < fv.curveCount; ++c) {

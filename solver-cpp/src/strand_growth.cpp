@@ -261,7 +261,8 @@ struct GrowRange {
           if (overEar && near > 1e-3f) {
             // head for the stroke as well as along it
             for (int e = 0; e < 3; ++e)
-              t[e] += 2 * interpolateScalar(reach->grid, reach->toCurve.data(), x, y, z, 3, e) / near;
+              t[e] +=
+                  2 * interpolateScalar(reach->grid, reach->toCurve.data(), x, y, z, 3, e) / near;
             const float m = std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
             for (float& e : t) e /= m > 1e-6f ? m : 1.f;
           }
@@ -385,8 +386,9 @@ struct GrowRange {
           float nx = x + l * v[0], ny = y + l * v[1], nz = z + l * v[2];
           double segLen = double(l) * std::sqrt(double(m2));
           // with the shape rules, how far a stroke governs the hair here (1: its own)
-          const float gov =
-              shape && reach ? interpolateScalar(reach->grid, reach->governed.data(), x, y, z) : 0.f;
+          const float gov = shape && reach
+                                ? interpolateScalar(reach->grid, reach->governed.data(), x, y, z)
+                                : 0.f;
           if (hanging || laying) fallOrComb(hanging, overEar, x, y, z, gov, nx, ny, nz);
           if (shape) partRoundFace(x, y, z, gov, nx, ny, nz);
           // The body: the strand slides over it (never stops there).

@@ -35,8 +35,8 @@ struct SphereHead {
   HeadDistance distance;
   SphereHead() {
     hairsketch_test::markScalpAbove(mesh, -0.6);
-    const HeadMeshView view{mesh.positions.data(), mesh.positions.size() / 3,
-                            mesh.indices.data(), mesh.indices.size() / 3, mesh.scalp.data()};
+    const HeadMeshView view{mesh.positions.data(), mesh.positions.size() / 3, mesh.indices.data(),
+                            mesh.indices.size() / 3, mesh.scalp.data()};
     EXPECT_TRUE(distance.build(view).ok());
   }
 };
@@ -114,9 +114,9 @@ TEST(ShapeGrowth, HairNoStrokeGovernsLiesOnTheHeadAtItsStandoff) {
   ASSERT_TRUE(growStrands(g, field, roots, gp, off, 1 << 20, &head.distance).ok());
   ShapeRules rules;
   rules.on = true;
-  ASSERT_TRUE(growStrands(g, field, roots, gp, on, 1 << 20, &head.distance, nullptr,
-                          BodyCollider(), &rules)
-                  .ok());
+  ASSERT_TRUE(
+      growStrands(g, field, roots, gp, on, 1 << 20, &head.distance, nullptr, BodyCollider(), &rules)
+          .ok());
   rules.volume = 0.15f;
   ASSERT_TRUE(growStrands(g, field, roots, gp, lifted, 1 << 20, &head.distance, nullptr,
                           BodyCollider(), &rules)
@@ -149,9 +149,9 @@ TEST(ShapeGrowth, HairBelowTheWidestPartHangsAndAStrokeKeepsItsOwnHair) {
   // roots just under the equator on the +x side: they hang straight down
   const std::vector<Eigen::Vector3f> low = {{0.95f, -0.31f, 0}, {0.94f, -0.3f, 0.15f}};
   Strands hung;
-  ASSERT_TRUE(growStrands(g, field, low, gp, hung, 1 << 20, &head.distance, nullptr,
-                          BodyCollider(), &rules)
-                  .ok());
+  ASSERT_TRUE(
+      growStrands(g, field, low, gp, hung, 1 << 20, &head.distance, nullptr, BodyCollider(), &rules)
+          .ok());
   for (size_t s = 0; s < low.size(); ++s) {
     const float* a = &hung.points[3 * size_t(hung.strandStart[s])];
     const float* b = &hung.points[3 * size_t(hung.strandStart[s + 1] - 1)];
@@ -180,9 +180,9 @@ TEST(ShapeGrowth, HairBelowTheWidestPartHangsAndAStrokeKeepsItsOwnHair) {
   const std::vector<Eigen::Vector3f> roots = {{0.7f, 0.714f, 0}, {-0.7f, 0.714f, 0}};
   Strands st;
   gp.maxLength = 0.5;
-  ASSERT_TRUE(growStrands(g, field, roots, gp, st, 1 << 20, &head.distance, &reach,
-                          BodyCollider(), &rules)
-                  .ok());
+  ASSERT_TRUE(
+      growStrands(g, field, roots, gp, st, 1 << 20, &head.distance, &reach, BodyCollider(), &rules)
+          .ok());
   const std::vector<float> under = standOff(st, 0, 0.45f), far = standOff(st, 1, 0.45f);
   ASSERT_FALSE(under.empty());
   ASSERT_FALSE(far.empty());
