@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "box_grid.hpp"
 #include "hair_engine.hpp"
 #include "sphere_mesh.hpp"
 #include "strand_growth.hpp"
@@ -17,13 +18,7 @@ using namespace hairsketch;
 
 namespace {
 
-Grid boxGrid(int n, double lo, double hi) {
-  Grid g;
-  g.nx = g.ny = g.nz = n;
-  g.origin = {lo, lo, lo};
-  g.step = (hi - lo) / (n - 1);
-  return g;
-}
+using hairsketch_test::boxGrid;
 
 // Hand-computed remaining length of a straight curve from a to b at x: L - s(x) - overshoot.
 double straightRemaining(const Eigen::Vector3d& a, const Eigen::Vector3d& b,

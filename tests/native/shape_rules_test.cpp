@@ -8,6 +8,7 @@
 #include <cmath>
 #include <vector>
 
+#include "box_grid.hpp"
 #include "hair_fall.hpp"
 #include "head_distance.hpp"
 #include "sphere_mesh.hpp"
@@ -22,13 +23,7 @@ namespace {
 
 constexpr float kRadius = 1.0f;
 
-Grid boxGrid(int n, double lo, double hi) {
-  Grid g;
-  g.nx = g.ny = g.nz = n;
-  g.origin = {lo, lo, lo};
-  g.step = (hi - lo) / (n - 1);
-  return g;
-}
+using hairsketch_test::boxGrid;
 
 struct SphereHead {
   hairsketch_test::Mesh mesh = hairsketch_test::uvSphere(0, 0, 0, kRadius, 48, 96);
