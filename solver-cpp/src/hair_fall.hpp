@@ -171,10 +171,15 @@ constexpr float kVolumeRise = 0.5f;
 // units): it may lie closer, never flare out past its stroke.
 constexpr float kLiftSlack = 0.05f;
 // Hair no stroke governs within kCombNear of a stroke that falls (its direction at least
-// kCombFalls downward) is combed along it, fading out by kCombFar: hair beside a stroke drawn
-// down behind an ear goes behind the ear with it; over an ear (off the scalp) it also heads
-// for the stroke, so it goes round the ear where the stroke does.
-constexpr float kCombNear = 0.3f, kCombFar = 0.5f, kCombFalls = 0.3f;
+// kCombFalls downward) or lies on the head there (within kCombOnHead of it) is combed along it,
+// fading out by kCombFar (kCombFarOverEar over an ear): hair beside a stroke drawn down behind an
+// ear goes behind the ear with it, hair beside a sweep across the forehead sweeps with it (and is
+// not parted round the face); over an ear it also heads for the stroke, so it goes round the ear
+// where the stroke does.
+// Hair that hangs falls down, spread this much (against down's 1) away from the head's axis.
+constexpr float kHangSpread = 0.12f;
+constexpr float kCombNear = 0.3f, kCombFar = 0.5f, kCombFarOverEar = 0.8f, kCombFalls = 0.3f,
+                kCombOnHead = 0.15f;
 // The length of hair no stroke ends, rooted at p: Shepard's inverse-square-distance blend of the
 // strokes' lengths (a stroke that grows on counts as maxLength), capped by maxLength; maxLength
 // when there is no stroke.

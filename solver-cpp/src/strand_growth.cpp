@@ -228,7 +228,7 @@ struct GrowRange {
   // face's column turns to the nearer side (its horizontal part sideways, at least as much as
   // it falls), so the hair parts round the face.
   void partRoundFace(float x, float y, float z, float gov, float& nx, float& ny, float& nz) const {
-    if (gov >= 0.5f || !inFaceColumn(centre, nx, ny, nz)) return;
+    if (gov >= 0.5f || !inFaceColumn(centre, nx, ny, nz)) return;  // gov: governed or combed
     const float d[3] = {nx - x, ny - y, nz - z};
     const float len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     const float side = nx >= centre[0] ? 1.f : -1.f;
@@ -245,18 +245,22 @@ struct GrowRange {
   // kCombFar of a stroke that falls, that stroke's direction there (fully within kCombNear);
   // farther, straight down for a strand that hangs (left the head below its widest part or over
   // an ear) and its own direction for one still laid on the head.
-  void fallOrComb(bool hangs, bool overEar, float x, float y, float z, float gov, float& nx,
-                  float& ny, float& nz) const {
+  // Returns how far the strand is combed (0..1).
+  float fallOrComb(bool hangs, bool overEar, float x, float y, float z, float gov, float& nx,
+                   float& ny, float& nz) const {
     const float w = 1.f - gov;
     float c = 0.f, t[3] = {0, -1, 0};
     if (reach) {
       const float near = interpolateScalar(reach->grid, reach->nearest.data(), x, y, z);
-      if (near < kCombFar) {
+      const float far = overEar ? kCombFarOverEar : kCombFar;
+      if (near < far) {
         for (int e = 0; e < 3; ++e)
           t[e] = interpolateScalar(reach->grid, reach->tangent.data(), x, y, z, 3, e);
         const float tn = std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
-        if (tn > 1e-3f && t[1] < -kCombFalls * tn) {
-          c = std::clamp((kCombFar - near) / (kCombFar - kCombNear), 0.f, 1.f);
+        const bool onHead =
+            interpolateScalar(reach->grid, reach->lift.data(), x, y, z) < kCombOnHead;
+        if (tn > 1e-3f && (t[1] < -kCombFalls * tn || onHead)) {
+          c = std::clamp((far - near) / (far - kCombNear), 0.f, 1.f);
           for (float& e : t) e /= tn;
           if (overEar && near > 1e-3f) {
             // head for the stroke as well as along it
@@ -269,19 +273,26 @@ struct GrowRange {
         }
       }
     }
-    const float to[3] = {c * t[0], (1 - c) * -1.f + c * t[1], c * t[2]};
+    // hanging: down, spread a little away from the head's vertical axis (hair falling from the
+    // skull's widest part fans out rather than falling in lines)
+    float h[2] = {x - centre[0], z - centre[2]};
+    const float hn = std::sqrt(h[0] * h[0] + h[1] * h[1]);
+    const float sp = hn > 1e-6f ? kHangSpread / hn : 0.f;
+    const float to[3] = {c * t[0] + (1 - c) * sp * h[0], (1 - c) * -1.f + c * t[1],
+                         c * t[2] + (1 - c) * sp * h[1]};
     const float k = hangs ? w : w * c;  // how far the step turns to `to`
-    if (!(k > 0)) return;
+    if (!(k > 0)) return c;
     float d[3] = {nx - x, ny - y, nz - z};
     const float len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     const float tl = std::sqrt(to[0] * to[0] + to[1] * to[1] + to[2] * to[2]);
-    if (!(tl > 1e-6f)) return;
+    if (!(tl > 1e-6f)) return c;
     for (int e = 0; e < 3; ++e) d[e] = (1 - k) * d[e] + k * len * to[e] / tl;
     const float m = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-    if (!(m > 1e-6f)) return;
+    if (!(m > 1e-6f)) return c;
     nx = x + d[0] * len / m;
     ny = y + d[1] * len / m;
     nz = z + d[2] * len / m;
+    return c;
   }
 
   // Slides the step from x to n (which ends within the margin of `mesh`) over the body
@@ -389,8 +400,9 @@ struct GrowRange {
           const float gov = shape && reach
                                 ? interpolateScalar(reach->grid, reach->governed.data(), x, y, z)
                                 : 0.f;
-          if (hanging || laying) fallOrComb(hanging, overEar, x, y, z, gov, nx, ny, nz);
-          if (shape) partRoundFace(x, y, z, gov, nx, ny, nz);
+          const float combed =
+              hanging || laying ? fallOrComb(hanging, overEar, x, y, z, gov, nx, ny, nz) : 0.f;
+          if (shape) partRoundFace(x, y, z, std::max(gov, combed), nx, ny, nz);
           // The body: the strand slides over it (never stops there).
           auto slide = [&](const HeadDistance& mesh) {
             const float at[3] = {x, y, z};
