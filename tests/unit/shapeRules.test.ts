@@ -21,6 +21,7 @@ import {
   fallOfUngoverned,
   median,
   standOff,
+  widthAtEars,
 } from '../support/shapeMetrics';
 
 function fixture(name: string): SessionState {
@@ -128,6 +129,16 @@ describe('the shape rules on hand-drawn stroke sets', () => {
     expect(ra).toBeGreaterThan(0.8);
     expect(ra).toBeLessThan(1.2);
     expect(standOff(after, s.curves, 0.3, 0.4)).toBeLessThanOrEqual(0.1);
+  });
+
+  it('Avoid scalp lays the short crop along the scalp without wings', async () => {
+    const s = { ...fixture('slicked'), avoidScalp: true };
+    const [before, after] = [widthAtEars(await grow(off(s))), widthAtEars(await grow(s))];
+    console.log(
+      `short crop with Avoid scalp, rules off -> on: ${(10 * before.hair).toFixed(1)} -> ${(10 * after.hair).toFixed(1)} cm wide at the ears (the head ${(10 * after.head).toFixed(1)} cm)`,
+    );
+    expect(before.hair).toBeGreaterThan(before.head + 0.4); // the wings
+    expect(after.hair).toBeLessThanOrEqual(after.head + 0.2);
   });
 
   it('a long sweep: the hair lies on the head and takes the sweep’s length', async () => {
