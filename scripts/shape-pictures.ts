@@ -50,10 +50,19 @@ try {
         writeFileSync(path, still.png[i]);
         files.push(path);
       }
-      console.log(`${style} (${label}): ${still.strands} strands, ${(still.ms / 1000).toFixed(1)} s`);
+      console.log(
+        `${style} (${label}): ${still.strands} strands, ${(still.ms / 1000).toFixed(1)} s`,
+      );
     }
     if (hasMontage)
-      execFileSync('montage', [...files, '-tile', '3x', '-geometry', '+2+2', `${out}/${style}.png`]);
+      execFileSync('montage', [
+        ...files,
+        '-tile',
+        '3x',
+        '-geometry',
+        '+2+2',
+        `${out}/${style}.png`,
+      ]);
   }
 } finally {
   await renderer.close();
