@@ -167,6 +167,10 @@ constexpr float kSupportNormalY = -0.15f;
 constexpr float kLayReach = 0.4f;
 // Over what length the hair rises to its standoff (volume / kVolumeRise).
 constexpr float kVolumeRise = 0.5f;
+// Hair laid on the head lies on top of the hair rooted under it: its standoff grows by this
+// much per unit of length it has come over the head (3 mm per 10 cm), up to kLayerMax (1 cm),
+// so hair from the crown covers the sides in layers instead of all at one distance.
+constexpr float kLayerSlope = 0.03f, kLayerMax = 0.1f;
 // Hair a stroke governs stands off the head no farther than the stroke does, plus this (world
 // units): it may lie closer, never flare out past its stroke.
 constexpr float kLiftSlack = 0.05f;

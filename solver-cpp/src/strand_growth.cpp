@@ -200,7 +200,10 @@ struct GrowRange {
         held = false;
       }
     }
-    const float want = margin + std::min(volume, kVolumeRise * float(arc));
+    // the standoff: the volume reached over the first length, and hair that has come farther
+    // over the head lying on top of the hair rooted where it passes (kLayerSlope)
+    const float want = margin + std::min(volume, kVolumeRise * float(arc)) +
+                       std::min(kLayerMax, kLayerSlope * float(arc));
     const float cap =
         margin + kLiftSlack +
         (reach ? interpolateScalar(reach->grid, reach->lift.data(), n[0], n[1], n[2]) : 0.f);
