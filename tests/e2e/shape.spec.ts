@@ -1,6 +1,10 @@
-// The hair takes the shape the stylist draws (issue 48, docs/natural-fall.md "Shape"): the
+// The hair takes the shape the stylist draws (issue 48, docs/natural-fall.md section 5): the
 // gestures that showed each fault, drawn with real pointer events on an empty head at 1280x800,
-// measured from the strands. Every figure is printed; waits on the status attributes only.
+// measured from the strands (3,000 of them: the figures are shares and percentiles). Every
+// figure is printed; waits on the status attributes only. With SHOT_DIR set each test also saves
+// its pictures and the session it drew (tests/fixtures/shape holds them, drawn at 6,000 strands;
+// the long sweep there was drawn from the front view from (28, 62), (40, 75) and (48, 68), each
+// 120-160 px across and 320 px down: unit/shapeRules.test.ts checks it).
 import { writeFileSync } from 'node:fs';
 import { expect, type Page, test } from '@playwright/test';
 import {
@@ -50,7 +54,7 @@ async function dragBy(
 }
 
 async function emptyHead(page: Page, opts: { mirror?: boolean; view?: string } = {}) {
-  await page.goto('/?preset=empty&strands=6000');
+  await page.goto('/?preset=empty&strands=3000');
   await settled(page);
   if (opts.mirror) await page.getByRole('button', { name: 'Mirror' }).click();
   if (opts.view) {
@@ -193,34 +197,6 @@ test('a short slicked back stays short at the nape', async ({ page }) => {
   );
   await keep(page, 'slicked');
   expect(n.nape).toBeLessThanOrEqual(1.5 * n.strokes);
-});
-
-test('long hair swept to one side lies on the head, not in a hood', async ({ page }) => {
-  let rev = await emptyHead(page, { view: 'f' });
-  // from the parting on the head's left across the top and down the right side to the shoulder
-  for (const [t, f, dx] of [
-    [28, 62, 0],
-    [40, 75, 20],
-    [48, 68, 40],
-  ]) {
-    const a = await scalpAt(page, t, f);
-    await dragThrough(page, [
-      a,
-      { x: a.x - 120 - dx, y: a.y + 20 },
-      { x: a.x - 190 - dx, y: a.y + 320 },
-    ]);
-    rev = (await settled(page, rev)).revision;
-  }
-  const cs = await curves(page);
-  const s = await strands(page);
-  const lie = standOff(s, cs, 0.3, 0.4);
-  const w = widthAtEars(s);
-  console.log(
-    `sweep: median distance from the head over the first 3 cm of hair 4+ cm from the strokes ${(10 * lie).toFixed(2)} cm; ${(10 * w.hair).toFixed(1)} cm wide at the ears (the head ${(10 * w.head).toFixed(1)} cm)`,
-  );
-  await keep(page, 'sweep');
-  expect(lie).toBeLessThanOrEqual(0.1);
-  expect(w.hair).toBeLessThanOrEqual(w.head + 0.6);
 });
 
 test('Volume in the Hair panel lifts the roots by as much; the panel says what sets the length', async ({
