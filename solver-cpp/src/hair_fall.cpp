@@ -308,4 +308,28 @@ float interpolateScalar(const Grid& g, const float* f, float x, float y, float z
   return c0 + c * (c1 - c0);
 }
 
+void interpolateScalars(const Grid& g, const float* const* arrays, int count, float x, float y,
+                        float z, float* out) {
+  const float inv = float(1.0 / g.step);
+  float u = (x - float(g.origin.x())) * inv, v = (y - float(g.origin.y())) * inv,
+        w = (z - float(g.origin.z())) * inv;
+  u = std::clamp(u, 0.f, float(g.nx - 1));
+  v = std::clamp(v, 0.f, float(g.ny - 1));
+  w = std::clamp(w, 0.f, float(g.nz - 1));
+  const int i = std::min(int(u), g.nx - 2), j = std::min(int(v), g.ny - 2),
+            k = std::min(int(w), g.nz - 2);
+  const float a = u - float(i), b = v - float(j), c = w - float(k);
+  const size_t sy = size_t(g.nx), sz = sy * size_t(g.ny);
+  const size_t at = size_t(i) + size_t(j) * sy + size_t(k) * sz;
+  for (int n = 0; n < count; ++n) {
+    const float* p = arrays[n] + at;
+    const float c00 = p[0] + a * (p[1] - p[0]);
+    const float c10 = p[sy] + a * (p[sy + 1] - p[sy]);
+    const float c01 = p[sz] + a * (p[sz + 1] - p[sz]);
+    const float c11 = p[sz + sy] + a * (p[sz + sy + 1] - p[sz + sy]);
+    const float c0 = c00 + b * (c10 - c00), c1 = c01 + b * (c11 - c01);
+    out[n] = c0 + c * (c1 - c0);
+  }
+}
+
 }  // namespace hairsketch

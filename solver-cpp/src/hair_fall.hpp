@@ -221,6 +221,11 @@ void buildCurveReach(const Grid& solverGrid, const std::vector<ReachCurve>& curv
 float interpolateScalar(const Grid& grid, const float* values, float x, float y, float z,
                         int stride = 1, int offset = 0);
 
+// interpolateScalar of `count` per-grid-point scalars at once (the weights found once): out[k]
+// from arrays[k].
+void interpolateScalars(const Grid& grid, const float* const* arrays, int count, float x, float y,
+                        float z, float* out);
+
 // The remaining length at x for hair of at most maxLength: the curves' blend near them, the
 // maximum length far from them.
 inline float reachRemaining(const CurveReach& reach, float x, float y, float z, float maxLength) {

@@ -155,20 +155,32 @@ struct GrowRange {
   // The head's distance at p (world units) and its outward normal there (nrm, unit): read where
   // the distance grid is exact (HeadDistance::band), farther out by walking towards the head
   // (outward's direction) until it is; NaN past kLayReach plus the largest volume.
-  float distanceOff(const float p[3], float nrm[3]) const {
-    float q[3] = {p[0], p[1], p[2]};
+  float distanceOff(const float p[3], float nrm[3], float hint) const {
     const float band = head->band(), walk = 0.5f * band;
-    for (float walked = 0; walked <= kLayReach + 0.3f; walked += walk) {
-      float g[3];
-      const float d = head->distance(q[0], q[1], q[2], g);
-      const float gn = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
-      if (d < 0.9f * band && gn > 0.5f) {
-        for (int k = 0; k < 3; ++k) nrm[k] = g[k] / gn;
-        return walked + d;
+    // hint (the last step's distance) past the band: jump most of the way in at once; a jump
+    // that lands deeper than the band inside the head walks again from p
+    for (int attempt = hint > band ? 0 : 1; attempt < 2; ++attempt) {
+      float q[3] = {p[0], p[1], p[2]};
+      float walked = 0;
+      if (attempt == 0) {
+        float dir[3];
+        head->outward(q, dir);
+        walked = hint - walk;
+        for (int k = 0; k < 3; ++k) q[k] -= walked * dir[k];
       }
-      float dir[3];
-      head->outward(q, dir);
-      for (int k = 0; k < 3; ++k) q[k] -= walk * dir[k];
+      for (; walked <= kLayReach + 0.3f; walked += walk) {
+        float g[3];
+        const float d = head->distance(q[0], q[1], q[2], g);
+        const float gn = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+        if (d < 0.9f * band && gn > 0.5f) {
+          for (int k = 0; k < 3; ++k) nrm[k] = g[k] / gn;
+          return walked + d;
+        }
+        if (d < 0) break;  // deep inside: the jump went too far
+        float dir[3];
+        head->outward(q, dir);
+        for (int k = 0; k < 3; ++k) q[k] -= walk * dir[k];
+      }
     }
     return std::numeric_limits<float>::quiet_NaN();
   }
@@ -183,11 +195,11 @@ struct GrowRange {
   // column, where it parts round the face) too (Over); taken farther than kLayReach off by the
   // field it follows the field (Free).
   enum class Lay { Laid, Hangs, Over, Free };
-  Lay layOnHead(const float x[3], float n[3], double& segLen, double arc, float gov, float& dist,
-                float nrm[3]) const {
+  Lay layOnHead(const float x[3], float n[3], double& segLen, double arc, float gov, float lift,
+                float& dist, float nrm[3]) const {
     const float keep = 1.f - gov;
     bool held = true;
-    const float dx = distanceOff(x, nrm);
+    const float dx = distanceOff(x, nrm, dist);
     if (std::isnan(dx)) return Lay::Free;
     {
       dist = dx;
@@ -204,9 +216,7 @@ struct GrowRange {
     // over the head lying on top of the hair rooted where it passes (kLayerSlope)
     const float want = margin + std::min(volume, kVolumeRise * float(arc)) +
                        std::min(kLayerMax, kLayerSlope * float(arc));
-    const float cap =
-        margin + kLiftSlack +
-        (reach ? interpolateScalar(reach->grid, reach->lift.data(), n[0], n[1], n[2]) : 0.f);
+    const float cap = margin + kLiftSlack + lift;
     float st[3] = {n[0] - x[0], n[1] - x[1], n[2] - x[2]};
     const float dn = dist + st[0] * nrm[0] + st[1] * nrm[1] + st[2] * nrm[2];
     if (dn > std::max(want, cap) + kLayReach) return Lay::Free;
@@ -249,19 +259,17 @@ struct GrowRange {
   // farther, straight down for a strand that hangs (left the head below its widest part or over
   // an ear) and its own direction for one still laid on the head.
   // Returns how far the strand is combed (0..1).
-  float fallOrComb(bool hangs, bool overEar, float x, float y, float z, float gov, float& nx,
-                   float& ny, float& nz) const {
-    const float w = 1.f - gov;
+  float fallOrComb(bool hangs, bool overEar, float x, float y, float z, const float here[3],
+                   float& nx, float& ny, float& nz) const {
+    const float w = 1.f - here[0], near = here[1], lift = here[2];
     float c = 0.f, t[3] = {0, -1, 0};
     if (reach) {
-      const float near = interpolateScalar(reach->grid, reach->nearest.data(), x, y, z);
       const float far = overEar ? kCombFarOverEar : kCombFar;
       if (near < far) {
         for (int e = 0; e < 3; ++e)
           t[e] = interpolateScalar(reach->grid, reach->tangent.data(), x, y, z, 3, e);
         const float tn = std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
-        const bool onHead =
-            interpolateScalar(reach->grid, reach->lift.data(), x, y, z) < kCombOnHead;
+        const bool onHead = lift < kCombOnHead;
         if (tn > 1e-3f && (t[1] < -kCombFalls * tn || onHead)) {
           c = std::clamp((far - near) / (far - kCombNear), 0.f, 1.f);
           for (float& e : t) e /= tn;
@@ -399,12 +407,17 @@ struct GrowRange {
           if (!(m2 >= minMag2)) break;  // weak field (or NaN)
           float nx = x + l * v[0], ny = y + l * v[1], nz = z + l * v[2];
           double segLen = double(l) * std::sqrt(double(m2));
-          // with the shape rules, how far a stroke governs the hair here (1: its own)
-          const float gov = shape && reach
-                                ? interpolateScalar(reach->grid, reach->governed.data(), x, y, z)
-                                : 0.f;
+          // with the shape rules: how far a stroke governs the hair here (1: its own), how far
+          // the nearest stroke is, and how far that stroke is off the head
+          float here[3] = {0.f, float(kReachFar), 0.f};
+          if (shape && reach) {
+            const float* const arrays[3] = {reach->governed.data(), reach->nearest.data(),
+                                            reach->lift.data()};
+            interpolateScalars(reach->grid, arrays, 3, x, y, z, here);
+          }
+          const float gov = here[0];
           const float combed =
-              hanging || laying ? fallOrComb(hanging, overEar, x, y, z, gov, nx, ny, nz) : 0.f;
+              hanging || laying ? fallOrComb(hanging, overEar, x, y, z, here, nx, ny, nz) : 0.f;
           if (shape) partRoundFace(x, y, z, std::max(gov, combed), nx, ny, nz);
           // The body: the strand slides over it (never stops there).
           auto slide = [&](const HeadDistance& mesh) {
@@ -453,7 +466,8 @@ struct GrowRange {
           if (laying) {
             const float at[3] = {x, y, z};
             float q[3] = {nx, ny, nz};
-            const Lay lay = layOnHead(at, q, segLen, length + segLen, gov, layDist, layNormal);
+            const Lay lay =
+                layOnHead(at, q, segLen, length + segLen, gov, here[2], layDist, layNormal);
             laying = lay == Lay::Laid;
             hanging = lay == Lay::Hangs || lay == Lay::Over;
             overEar = lay == Lay::Over;
