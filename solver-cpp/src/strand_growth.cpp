@@ -440,8 +440,11 @@ struct GrowRange {
               if (headBelow && ny < kHeadBodyBelowY) {
                 if (!slide(*head)) break;
               } else {
-                // not over the face, unless a curve takes the hair there
-                if (seg > 0 && !head->scalpNear(nx, ny, nz) &&
+                // not over the face, unless a curve takes the hair there; with the shape rules
+                // hair that hangs slides down the neck and over the ears as it does over the
+                // scalp (only the face's column stops it)
+                const bool slidesOn = shape && hanging && !inFaceColumn(centre, nx, ny, nz);
+                if (seg > 0 && !head->scalpNear(nx, ny, nz) && !slidesOn &&
                     !followsOverFace(x, y, z, nx, ny, nz))
                   break;
                 // Slide: drop the inward part of the step, then stand off at the margin.
