@@ -134,7 +134,11 @@ void curveFootprint(const Grid& g, const ReachCurve& c, CurveFootprint& out) {
                                  q[3 * k + 2] - q[3 * k - 1]);
   const double L = s.back();
   if (!(L > 0)) return;
-  if (c.setsLength) out.stroke = {float(q[0]), float(q[1]), float(q[2]), float(L), c.growsOn};
+  // a stroke that ends on the scalp combs on, but its length is what it says for the hair
+  // around it (a short slicked back stays short); one extended off the head grows to the maximum
+  const bool combs = c.growsOn && c.offScalp && !c.offScalp[c.count - 1];
+  if (c.setsLength)
+    out.stroke = {float(q[0]), float(q[1]), float(q[2]), float(L), c.growsOn && !combs};
   size_t lastSeg = c.count - 2;
   while (lastSeg > 0 && !(s[lastSeg + 1] > s[lastSeg])) --lastSeg;
   const double inf = std::numeric_limits<double>::infinity();

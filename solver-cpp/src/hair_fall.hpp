@@ -185,8 +185,9 @@ constexpr float kHangSpread = 0.12f;
 constexpr float kCombNear = 0.3f, kCombFar = 0.5f, kCombFarOverEar = 0.8f, kCombFalls = 0.3f,
                 kCombOnHead = 0.15f;
 // The length of hair no stroke ends, rooted at p: Shepard's inverse-square-distance blend of the
-// strokes' lengths (a stroke that grows on counts as maxLength), capped by maxLength; maxLength
-// when there is no stroke.
+// strokes' lengths (a stroke that grows on counts as maxLength, unless it ends on the scalp: a
+// stroke that combs counts its own length), capped by maxLength; maxLength when there is no
+// stroke.
 float lengthAround(const std::vector<StrokeLength>& strokes, const float p[3], float maxLength);
 
 // One curve's part of the reach: the lattice points within kReachFar of it, with the distance to

@@ -9,6 +9,7 @@ import { fileURLToPath } from 'node:url';
 import { describe, expect, it } from 'vitest';
 import { headForGrow } from '../../web/cli/head';
 import { growSessionHair } from '../../web/export/growSession';
+import { headSdf } from '../../web/head/headSdf';
 import { gridForSession } from '../../web/model/grid';
 import type { StrandArrays } from '../../web/model/hairArrays';
 import { hangLength, type SessionState } from '../../web/model/session';
@@ -56,7 +57,8 @@ const off = (s: SessionState): SessionState => {
 
 /** Hair no stroke ends, rooted 4 cm or more from every stroke point: the median of its length
  *  over the Shepard blend of the stream curves' lengths (weights 1 / squared distance from the
- *  root to each curve's first point), capped by Max length, computed here from the strokes. */
+ *  root to each curve's first point; a curve extended off the head counts as Max length),
+ *  capped by Max length, computed here from the strokes and the head's exact distance. */
 function lengthRatio(s: StrandArrays, session: SessionState): number {
   const maxLength = session.growth.maxLength;
   const strokes = session.curves
@@ -64,7 +66,14 @@ function lengthRatio(s: StrandArrays, session: SessionState): number {
     .map((c) => {
       let L = 0;
       for (let i = 1; i < c.points.length; i++) L += dist(c.points[i], c.points[i - 1]);
-      return { start: c.points[0], length: c.extend ? maxLength : Math.min(L, maxLength) };
+      // a stroke that grows on counts as Max length, unless it ends on the scalp (within 5 mm:
+      // it combs, and counts its own length)
+      const end = c.points[c.points.length - 1];
+      const combs = headSdf(end[0], end[1], end[2]) < 0.05;
+      return {
+        start: c.points[0],
+        length: c.extend && !combs ? maxLength : Math.min(L, maxLength),
+      };
     });
   const ratios: number[] = [];
   eachStrand(s, (pts) => {
