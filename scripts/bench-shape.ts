@@ -1,4 +1,4 @@
-// npm run bench:shape [SESSION.json ...]: the shape figures of issue 48 (tests/support/
+// npm run bench:shape [SESSION.json ...]: the shape figures of docs/natural-fall.md section 5 (tests/support/
 // shapeMetrics.ts) for hairstyles drawn with real pointer strokes (tests/fixtures/shape/*.json,
 // written by shape.spec.ts with SHOT_DIR), each grown from scratch as `hairsketch grow` grows it
 // (25k grid, fast solver, every strand). With SHAPE_COMPARE=1 each session is grown twice: with
@@ -88,7 +88,7 @@ const md = [
   ...rows.map((r) => `| ${keys.map((k) => String(r[k])).join(' | ')} |`),
 ];
 writeBenchResults('shape', {
-  title: 'Shape of hand-drawn hairstyles (issue 48)',
+  title: 'Shape of hand-drawn hairstyles (the shape rules off and on)',
   script: 'scripts/bench-shape.ts',
   command: 'npm run bench:shape (SHAPE_COMPARE=1: also with the shape rules off)',
   measures:

@@ -1,4 +1,4 @@
-// npm run pictures:shape: before and after pictures of the shape rules (issue 48). Each session
+// npm run pictures:shape: before and after pictures of the shape rules (docs/natural-fall.md section 5). Each session
 // of tests/fixtures/shape (drawn by shape.spec.ts with real pointer events on an empty head) is
 // drawn with `hairsketch render`'s renderer twice, with the shape rules off (the session as saved
 // before them) and on, front, side and back: docs/screenshots/shape/<style>-{off,on}-<view>.png,

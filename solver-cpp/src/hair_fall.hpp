@@ -137,14 +137,16 @@ struct CurveReach {
   }
 };
 
-// The shape rules (issue 48; a session's `shape` setting, off in sessions made before them):
+// The shape rules (a session's `shape` setting, off in sessions made before them, which keep
+// their hair), so that the hair takes the shape a stylist draws rather than a box round the head:
 //  - the prior's reach is kShapeReach;
-//  - hair lies on the head: a strand no stroke governs (CurveReach::governed below 1) keeps
-//    within its standoff (the growth margin plus `volume`, the lift at the roots) of the head
-//    while the head under it faces up or sideways (the cranium above its widest part); once it
-//    leaves that support it falls free and is not laid again;
-//  - length from the strokes around: hair that no stroke ends takes the length of the nearest
-//    strokes' hair (LengthAround), capped by the maximum length.
+//  - hair no stroke governs (CurveReach::governed) lies on the head at its standoff (the growth
+//    margin, `volume` and kLayerSlope) while the skull above its widest part holds it, then hangs;
+//    hair a stroke governs stands off no farther than its stroke (kLiftSlack);
+//  - hair no stroke governs is combed along strokes near it (kCombNear..kCombFar) and parts round
+//    the face's column (inFaceColumn);
+//  - length from the strokes around (lengthAround), capped by the maximum length.
+// docs/natural-fall.md section 5 gives the weights and the checks.
 struct ShapeRules {
   bool on = false;
   float volume = 0;  // world units: how far the hair stands off the head at its roots (0..0.3)

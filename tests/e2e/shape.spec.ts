@@ -1,4 +1,4 @@
-// The hair takes the shape the stylist draws (issue 48, docs/natural-fall.md section 5): the
+// The hair takes the shape the stylist draws (docs/natural-fall.md section 5): the
 // gestures that showed each fault, drawn with real pointer events on an empty head at 1280x800,
 // measured from the strands (3,000 of them: the figures are shares and percentiles). Every
 // figure is printed; waits on the status attributes only. With SHOT_DIR set each test also saves

@@ -1,5 +1,5 @@
-// Figures of a hairstyle's shape measured from its strands (issue 48, docs/natural-fall.md
-// "Shape"), on the built-in head: shared by the browser tests (shape.spec.ts), the engine's unit
+// Figures of a hairstyle's shape measured from its strands (docs/natural-fall.md section
+// 5), on the built-in head: shared by the browser tests (shape.spec.ts), the engine's unit
 // tests (shapeRules.test.ts) and `npm run bench:shape`. Every figure is computed from the strands
 // and the head's exact signed distance (headSdf), never from what the engine reports.
 import { EAR_X, EAR_Y, EAR_Z, headSdf } from '../../web/head/headSdf';
