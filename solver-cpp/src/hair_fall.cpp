@@ -289,8 +289,15 @@ void buildCurveReach(const Grid& solverGrid, const std::vector<ReachCurve>& curv
   combineReach(g, ptr, out);
 }
 
-float interpolateScalar(const Grid& g, const float* f, float x, float y, float z, int stride,
-                        int offset) {
+namespace {
+
+// The lattice cell holding (x, y, z) (clamped to the volume) and the weights within it.
+struct TrilinearCell {
+  size_t at;      // the cell's lowest corner, in points
+  float a, b, c;  // the weights along x, y, z
+};
+
+TrilinearCell trilinearCell(const Grid& g, float x, float y, float z) {
   const float inv = float(1.0 / g.step);
   float u = (x - float(g.origin.x())) * inv, v = (y - float(g.origin.y())) * inv,
         w = (z - float(g.origin.z())) * inv;
@@ -299,41 +306,34 @@ float interpolateScalar(const Grid& g, const float* f, float x, float y, float z
   w = std::clamp(w, 0.f, float(g.nz - 1));
   const int i = std::min(int(u), g.nx - 2), j = std::min(int(v), g.ny - 2),
             k = std::min(int(w), g.nz - 2);
-  const float a = u - float(i), b = v - float(j), c = w - float(k);
+  return {size_t(i) + size_t(j) * size_t(g.nx) + size_t(k) * size_t(g.nx) * size_t(g.ny),
+          u - float(i), v - float(j), w - float(k)};
+}
+
+// The trilinear blend of the cell's eight values at p (steps sx, sy, sz between them).
+float blendCell(const float* p, size_t sx, size_t sy, size_t sz, const TrilinearCell& t) {
+  const float c00 = p[0] + t.a * (p[sx] - p[0]);
+  const float c10 = p[sy] + t.a * (p[sy + sx] - p[sy]);
+  const float c01 = p[sz] + t.a * (p[sz + sx] - p[sz]);
+  const float c11 = p[sz + sy] + t.a * (p[sz + sy + sx] - p[sz + sy]);
+  const float c0 = c00 + t.b * (c10 - c00), c1 = c01 + t.b * (c11 - c01);
+  return c0 + t.c * (c1 - c0);
+}
+
+}  // namespace
+
+float interpolateScalar(const Grid& g, const float* f, float x, float y, float z, int stride,
+                        int offset) {
+  const TrilinearCell t = trilinearCell(g, x, y, z);
   const size_t sx = size_t(stride), sy = sx * size_t(g.nx), sz = sy * size_t(g.ny);
-  const float* p =
-      f + offset +
-      sx * (size_t(i) + size_t(j) * size_t(g.nx) + size_t(k) * size_t(g.nx) * size_t(g.ny));
-  const float c00 = p[0] + a * (p[sx] - p[0]);
-  const float c10 = p[sy] + a * (p[sy + sx] - p[sy]);
-  const float c01 = p[sz] + a * (p[sz + sx] - p[sz]);
-  const float c11 = p[sz + sy] + a * (p[sz + sy + sx] - p[sz + sy]);
-  const float c0 = c00 + b * (c10 - c00), c1 = c01 + b * (c11 - c01);
-  return c0 + c * (c1 - c0);
+  return blendCell(f + offset + sx * t.at, sx, sy, sz, t);
 }
 
 void interpolateScalars(const Grid& g, const float* const* arrays, int count, float x, float y,
                         float z, float* out) {
-  const float inv = float(1.0 / g.step);
-  float u = (x - float(g.origin.x())) * inv, v = (y - float(g.origin.y())) * inv,
-        w = (z - float(g.origin.z())) * inv;
-  u = std::clamp(u, 0.f, float(g.nx - 1));
-  v = std::clamp(v, 0.f, float(g.ny - 1));
-  w = std::clamp(w, 0.f, float(g.nz - 1));
-  const int i = std::min(int(u), g.nx - 2), j = std::min(int(v), g.ny - 2),
-            k = std::min(int(w), g.nz - 2);
-  const float a = u - float(i), b = v - float(j), c = w - float(k);
+  const TrilinearCell t = trilinearCell(g, x, y, z);
   const size_t sy = size_t(g.nx), sz = sy * size_t(g.ny);
-  const size_t at = size_t(i) + size_t(j) * sy + size_t(k) * sz;
-  for (int n = 0; n < count; ++n) {
-    const float* p = arrays[n] + at;
-    const float c00 = p[0] + a * (p[1] - p[0]);
-    const float c10 = p[sy] + a * (p[sy + 1] - p[sy]);
-    const float c01 = p[sz] + a * (p[sz + 1] - p[sz]);
-    const float c11 = p[sz + sy] + a * (p[sz + sy + 1] - p[sz + sy]);
-    const float c0 = c00 + b * (c10 - c00), c1 = c01 + b * (c11 - c01);
-    out[n] = c0 + c * (c1 - c0);
-  }
+  for (int n = 0; n < count; ++n) out[n] = blendCell(arrays[n] + t.at, 1, sy, sz, t);
 }
 
 }  // namespace hairsketch
