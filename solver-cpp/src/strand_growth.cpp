@@ -6,6 +6,7 @@
 
 #include "hair_fall.hpp"
 #include "parallel.hpp"
+#include "shape_growth.hpp"
 
 namespace hairsketch {
 
@@ -148,163 +149,8 @@ struct GrowRange {
   const CurveReach* reach;   // null: the paper's stopping rules only
   const HeadDistance* body;  // the body's own mesh (bust on), or null
   bool headBelow;            // bust on: the head mesh is the body below kHeadBodyBelowY
-  bool shape;                // the shape rules (hair_fall.hpp ShapeRules)
-  float volume;              // their lift at the roots (world units)
-  float centre[3];           // and the head's centre
-
-  // The head's distance at p (world units) and its outward normal there (nrm, unit): read where
-  // the distance grid is exact (HeadDistance::band), farther out by walking towards the head
-  // (outward's direction) until it is; NaN past kLayReach plus the largest volume.
-  float distanceOff(const float p[3], float nrm[3], float hint) const {
-    const float band = head->band(), walk = 0.5f * band;
-    // hint (the last step's distance) past the band: jump most of the way in at once; a jump
-    // that lands deeper than the band inside the head walks again from p
-    for (int attempt = hint > band ? 0 : 1; attempt < 2; ++attempt) {
-      float q[3] = {p[0], p[1], p[2]};
-      float walked = 0;
-      if (attempt == 0) {
-        float dir[3];
-        head->outward(q, dir);
-        walked = hint - walk;
-        for (int k = 0; k < 3; ++k) q[k] -= walked * dir[k];
-      }
-      for (; walked <= kLayReach + 0.3f; walked += walk) {
-        float g[3];
-        const float d = head->distance(q[0], q[1], q[2], g);
-        const float gn = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
-        if (d < 0.9f * band && gn > 0.5f) {
-          for (int k = 0; k < 3; ++k) nrm[k] = g[k] / gn;
-          return walked + d;
-        }
-        if (d < 0) break;  // deep inside: the jump went too far
-        float dir[3];
-        head->outward(q, dir);
-        for (int k = 0; k < 3; ++k) q[k] -= walk * dir[k];
-      }
-    }
-    return std::numeric_limits<float>::quiet_NaN();
-  }
-
-  // The shape rules' "hair lies on the head": moves the step's end n (from x, of length segLen)
-  // along the head's normal towards the strand's standoff (margin plus the volume, reached over
-  // the first length), then back to the step's length. The distance is read where it is exact
-  // (HeadDistance::band); farther out (a volume past the band) dist and nrm carry the last
-  // reading on along the steps. Anything but Laid when the strand leaves the head's support: it
-  // is not laid again. Below the cranium's widest part (the surface under it facing down past
-  // kSupportNormalY) it hangs from there (Hangs), and off the scalp (an ear; not in the face's
-  // column, where it parts round the face) too (Over); taken farther than kLayReach off by the
-  // field it follows the field (Free).
-  enum class Lay { Laid, Hangs, Over, Free };
-  Lay layOnHead(const float x[3], float n[3], double& segLen, double arc, float gov, float lift,
-                float& dist, float nrm[3]) const {
-    const float keep = 1.f - gov;
-    bool held = true;
-    const float dx = distanceOff(x, nrm, dist);
-    if (std::isnan(dx)) return Lay::Free;
-    {
-      dist = dx;
-      if (nrm[1] < kSupportNormalY) {
-        if (keep > 0.5f) return Lay::Hangs;
-        held = false;
-      } else if (!head->scalpNear(x[0] - dx * nrm[0], x[1] - dx * nrm[1], x[2] - dx * nrm[2]) &&
-                 !inFaceColumn(centre, x[0], x[1], x[2])) {
-        if (keep > 0.5f) return Lay::Over;
-        held = false;
-      }
-    }
-    // the standoff: the volume reached over the first length, and hair that has come farther
-    // over the head lying on top of the hair rooted where it passes (kLayerSlope)
-    const float want = margin + std::min(volume, kVolumeRise * float(arc)) +
-                       std::min(kLayerMax, kLayerSlope * float(arc));
-    const float cap = margin + kLiftSlack + lift;
-    float st[3] = {n[0] - x[0], n[1] - x[1], n[2] - x[2]};
-    const float dn = dist + st[0] * nrm[0] + st[1] * nrm[1] + st[2] * nrm[2];
-    if (dn > std::max(want, cap) + kLayReach) return Lay::Free;
-    const float step = float(segLen);
-    // no stroke: towards the standoff while the head holds the hair; a stroke: no farther off
-    // than the stroke
-    const float toWant = held ? std::clamp(want - dn, -step, step) : 0.f;
-    const float toCap = std::clamp(cap - dn, -step, 0.f);
-    const float delta = keep * toWant + gov * toCap;
-    for (int k = 0; k < 3; ++k) st[k] += delta * nrm[k];
-    const float len = std::sqrt(st[0] * st[0] + st[1] * st[1] + st[2] * st[2]);
-    if (!(len > 1e-3f * step)) return Lay::Laid;
-    for (int k = 0; k < 3; ++k) {
-      st[k] *= step / len;
-      n[k] = x[k] + st[k];
-    }
-    dist += st[0] * nrm[0] + st[1] * nrm[1] + st[2] * nrm[2];
-    return Lay::Laid;
-  }
-
-  // The shape rules' "the face stays open": a step of hair no stroke governs that ends in the
-  // face's column turns to the nearer side (its horizontal part sideways, at least as much as
-  // it falls), so the hair parts round the face.
-  void partRoundFace(float x, float y, float z, float gov, float& nx, float& ny, float& nz) const {
-    if (gov >= 0.5f || !inFaceColumn(centre, nx, ny, nz)) return;  // gov: governed or combed
-    const float d[3] = {nx - x, ny - y, nz - z};
-    const float len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-    const float side = nx >= centre[0] ? 1.f : -1.f;
-    const float fall = std::min(d[1], 0.f);
-    float t[3] = {side * std::max(len, std::abs(fall)), fall, std::min(d[2], 0.f)};
-    const float m = std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
-    nx = x + t[0] * len / m;
-    ny = y + t[1] * len / m;
-    nz = z + t[2] * len / m;
-  }
-
-  // The shape rules' "hair no stroke governs hangs" and "is combed along a falling stroke
-  // beside it": the step of a strand no stroke governs turns towards a direction `to`: within
-  // kCombFar of a stroke that falls, that stroke's direction there (fully within kCombNear);
-  // farther, straight down for a strand that hangs (left the head below its widest part or over
-  // an ear) and its own direction for one still laid on the head.
-  // Returns how far the strand is combed (0..1).
-  float fallOrComb(bool hangs, bool overEar, float x, float y, float z, const float here[3],
-                   float& nx, float& ny, float& nz) const {
-    const float w = 1.f - here[0], near = here[1], lift = here[2];
-    float c = 0.f, t[3] = {0, -1, 0};
-    if (reach) {
-      const float far = overEar ? kCombFarOverEar : kCombFar;
-      if (near < far) {
-        for (int e = 0; e < 3; ++e)
-          t[e] = interpolateScalar(reach->grid, reach->tangent.data(), x, y, z, 3, e);
-        const float tn = std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
-        const bool onHead = lift < kCombOnHead;
-        if (tn > 1e-3f && (t[1] < -kCombFalls * tn || onHead)) {
-          c = std::clamp((far - near) / (far - kCombNear), 0.f, 1.f);
-          for (float& e : t) e /= tn;
-          if (overEar && near > 1e-3f) {
-            // head for the stroke as well as along it
-            for (int e = 0; e < 3; ++e)
-              t[e] +=
-                  2 * interpolateScalar(reach->grid, reach->toCurve.data(), x, y, z, 3, e) / near;
-            const float m = std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
-            for (float& e : t) e /= m > 1e-6f ? m : 1.f;
-          }
-        }
-      }
-    }
-    // hanging: down, spread a little away from the head's vertical axis (hair falling from the
-    // skull's widest part fans out rather than falling in lines)
-    float h[2] = {x - centre[0], z - centre[2]};
-    const float hn = std::sqrt(h[0] * h[0] + h[1] * h[1]);
-    const float sp = hn > 1e-6f ? kHangSpread / hn : 0.f;
-    const float to[3] = {c * t[0] + (1 - c) * sp * h[0], (1 - c) * -1.f + c * t[1],
-                         c * t[2] + (1 - c) * sp * h[1]};
-    const float k = hangs ? w : w * c;  // how far the step turns to `to`
-    if (!(k > 0)) return c;
-    float d[3] = {nx - x, ny - y, nz - z};
-    const float len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-    const float tl = std::sqrt(to[0] * to[0] + to[1] * to[1] + to[2] * to[2]);
-    if (!(tl > 1e-6f)) return c;
-    for (int e = 0; e < 3; ++e) d[e] = (1 - k) * d[e] + k * len * to[e] / tl;
-    const float m = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-    if (!(m > 1e-6f)) return c;
-    nx = x + d[0] * len / m;
-    ny = y + d[1] * len / m;
-    nz = z + d[2] * len / m;
-    return c;
-  }
+  bool shape;                // the shape rules (hair_fall.hpp ShapeRules): their steps below
+  ShapeGrowth shaped;
 
   // Slides the step from x to n (which ends within the margin of `mesh`) over the body
   // (BodyCollider): n and segLen become the slid step's end and length. prev: the strand's last
@@ -416,9 +262,10 @@ struct GrowRange {
             interpolateScalars(reach->grid, arrays, 3, x, y, z, here);
           }
           const float gov = here[0];
-          const float combed =
-              hanging || laying ? fallOrComb(hanging, overEar, x, y, z, here, nx, ny, nz) : 0.f;
-          if (shape) partRoundFace(x, y, z, std::max(gov, combed), nx, ny, nz);
+          const float combed = hanging || laying
+                                   ? shaped.fallOrComb(hanging, overEar, x, y, z, here, nx, ny, nz)
+                                   : 0.f;
+          if (shape) shaped.partRoundFace(x, y, z, std::max(gov, combed), nx, ny, nz);
           // The body: the strand slides over it (never stops there).
           auto slide = [&](const HeadDistance& mesh) {
             const float at[3] = {x, y, z};
@@ -443,7 +290,7 @@ struct GrowRange {
                 // not over the face, unless a curve takes the hair there; with the shape rules
                 // hair that hangs slides down the neck and over the ears as it does over the
                 // scalp (only the face's column stops it)
-                const bool slidesOn = shape && hanging && !inFaceColumn(centre, nx, ny, nz);
+                const bool slidesOn = shape && hanging && !inFaceColumn(shaped.centre, nx, ny, nz);
                 if (seg > 0 && !head->scalpNear(nx, ny, nz) && !slidesOn &&
                     !followsOverFace(x, y, z, nx, ny, nz))
                   break;
@@ -469,11 +316,11 @@ struct GrowRange {
           if (laying) {
             const float at[3] = {x, y, z};
             float q[3] = {nx, ny, nz};
-            const Lay lay =
-                layOnHead(at, q, segLen, length + segLen, gov, here[2], layDist, layNormal);
-            laying = lay == Lay::Laid;
-            hanging = lay == Lay::Hangs || lay == Lay::Over;
-            overEar = lay == Lay::Over;
+            const ShapeGrowth::Lay lay =
+                shaped.layOnHead(at, q, segLen, length + segLen, gov, here[2], layDist, layNormal);
+            laying = lay == ShapeGrowth::Lay::Laid;
+            hanging = lay == ShapeGrowth::Lay::Hangs || lay == ShapeGrowth::Lay::Over;
+            overEar = lay == ShapeGrowth::Lay::Over;
             nx = q[0];
             ny = q[1];
             nz = q[2];
@@ -562,9 +409,12 @@ Status growStrands(const Grid& g, const std::vector<float>& field,
                        body.body && body.body->built() ? body.body : nullptr,
                        body.headBelow,
                        shape && shape->on,
-                       shape ? std::clamp(shape->volume, 0.f, 0.3f) : 0.f,
-                       {shape ? shape->centre[0] : 0.f, shape ? shape->centre[1] : 0.f,
-                        shape ? shape->centre[2] : 0.f}};
+                       ShapeGrowth{head,
+                                   reach && !reach->empty() ? reach : nullptr,
+                                   margin,
+                                   shape ? std::clamp(shape->volume, 0.f, 0.3f) : 0.f,
+                                   {shape ? shape->centre[0] : 0.f, shape ? shape->centre[1] : 0.f,
+                                    shape ? shape->centre[2] : 0.f}}};
   out.strandStart.resize(roots.size() + 1);
   const size_t n = roots.size();
   const int threads = parallel::threadCount();

@@ -1,0 +1,142 @@
+// The shape rules' steps in growth (shape_growth.hpp).
+#include "shape_growth.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace hairsketch {
+
+float ShapeGrowth::distanceOff(const float p[3], float nrm[3], float hint) const {
+  const float band = head->band(), walk = 0.5f * band;
+  // hint (the last step's distance) past the band: jump most of the way in at once; a jump
+  // that lands deeper than the band inside the head walks again from p
+  for (int attempt = hint > band ? 0 : 1; attempt < 2; ++attempt) {
+    float q[3] = {p[0], p[1], p[2]};
+    float walked = 0;
+    if (attempt == 0) {
+      float dir[3];
+      head->outward(q, dir);
+      walked = hint - walk;
+      for (int k = 0; k < 3; ++k) q[k] -= walked * dir[k];
+    }
+    for (; walked <= kLayReach + 0.3f; walked += walk) {
+      float g[3];
+      const float d = head->distance(q[0], q[1], q[2], g);
+      const float gn = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+      if (d < 0.9f * band && gn > 0.5f) {
+        for (int k = 0; k < 3; ++k) nrm[k] = g[k] / gn;
+        return walked + d;
+      }
+      if (d < 0) break;  // deep inside: the jump went too far
+      float dir[3];
+      head->outward(q, dir);
+      for (int k = 0; k < 3; ++k) q[k] -= walk * dir[k];
+    }
+  }
+  return std::numeric_limits<float>::quiet_NaN();
+}
+
+ShapeGrowth::Lay ShapeGrowth::layOnHead(const float x[3], float n[3], double& segLen, double arc,
+                                        float gov, float lift, float& dist, float nrm[3]) const {
+  const float keep = 1.f - gov;
+  bool held = true;
+  const float dx = distanceOff(x, nrm, dist);
+  if (std::isnan(dx)) return Lay::Free;
+  {
+    dist = dx;
+    if (nrm[1] < kSupportNormalY) {
+      if (keep > 0.5f) return Lay::Hangs;
+      held = false;
+    } else if (!head->scalpNear(x[0] - dx * nrm[0], x[1] - dx * nrm[1], x[2] - dx * nrm[2]) &&
+               !inFaceColumn(centre, x[0], x[1], x[2])) {
+      if (keep > 0.5f) return Lay::Over;
+      held = false;
+    }
+  }
+  // the standoff: the volume reached over the first length, and hair that has come farther
+  // over the head lying on top of the hair rooted where it passes (kLayerSlope)
+  const float want = margin + std::min(volume, kVolumeRise * float(arc)) +
+                     std::min(kLayerMax, kLayerSlope * float(arc));
+  const float cap = margin + kLiftSlack + lift;
+  float st[3] = {n[0] - x[0], n[1] - x[1], n[2] - x[2]};
+  const float dn = dist + st[0] * nrm[0] + st[1] * nrm[1] + st[2] * nrm[2];
+  if (dn > std::max(want, cap) + kLayReach) return Lay::Free;
+  const float step = float(segLen);
+  // no stroke: towards the standoff while the head holds the hair; a stroke: no farther off
+  // than the stroke
+  const float toWant = held ? std::clamp(want - dn, -step, step) : 0.f;
+  const float toCap = std::clamp(cap - dn, -step, 0.f);
+  const float delta = keep * toWant + gov * toCap;
+  for (int k = 0; k < 3; ++k) st[k] += delta * nrm[k];
+  const float len = std::sqrt(st[0] * st[0] + st[1] * st[1] + st[2] * st[2]);
+  if (!(len > 1e-3f * step)) return Lay::Laid;
+  for (int k = 0; k < 3; ++k) {
+    st[k] *= step / len;
+    n[k] = x[k] + st[k];
+  }
+  dist += st[0] * nrm[0] + st[1] * nrm[1] + st[2] * nrm[2];
+  return Lay::Laid;
+}
+
+void ShapeGrowth::partRoundFace(float x, float y, float z, float gov, float& nx, float& ny,
+                                float& nz) const {
+  if (gov >= 0.5f || !inFaceColumn(centre, nx, ny, nz)) return;  // gov: governed or combed
+  const float d[3] = {nx - x, ny - y, nz - z};
+  const float len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  const float side = nx >= centre[0] ? 1.f : -1.f;
+  const float fall = std::min(d[1], 0.f);
+  float t[3] = {side * std::max(len, std::abs(fall)), fall, std::min(d[2], 0.f)};
+  const float m = std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
+  nx = x + t[0] * len / m;
+  ny = y + t[1] * len / m;
+  nz = z + t[2] * len / m;
+}
+
+float ShapeGrowth::fallOrComb(bool hangs, bool overEar, float x, float y, float z,
+                              const float here[3], float& nx, float& ny, float& nz) const {
+  const float w = 1.f - here[0], near = here[1], lift = here[2];
+  float c = 0.f, t[3] = {0, -1, 0};
+  if (reach) {
+    const float far = overEar ? kCombFarOverEar : kCombFar;
+    if (near < far) {
+      for (int e = 0; e < 3; ++e)
+        t[e] = interpolateScalar(reach->grid, reach->tangent.data(), x, y, z, 3, e);
+      const float tn = std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
+      const bool onHead = lift < kCombOnHead;
+      if (tn > 1e-3f && (t[1] < -kCombFalls * tn || onHead)) {
+        c = std::clamp((far - near) / (far - kCombNear), 0.f, 1.f);
+        for (float& e : t) e /= tn;
+        if (overEar && near > 1e-3f) {
+          // head for the stroke as well as along it
+          for (int e = 0; e < 3; ++e)
+            t[e] += 2 * interpolateScalar(reach->grid, reach->toCurve.data(), x, y, z, 3, e) / near;
+          const float m = std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
+          for (float& e : t) e /= m > 1e-6f ? m : 1.f;
+        }
+      }
+    }
+  }
+  // hanging: down, spread a little away from the head's vertical axis (hair falling from the
+  // skull's widest part fans out rather than falling in lines)
+  float h[2] = {x - centre[0], z - centre[2]};
+  const float hn = std::sqrt(h[0] * h[0] + h[1] * h[1]);
+  const float sp = hn > 1e-6f ? kHangSpread / hn : 0.f;
+  const float to[3] = {c * t[0] + (1 - c) * sp * h[0], (1 - c) * -1.f + c * t[1],
+                       c * t[2] + (1 - c) * sp * h[1]};
+  const float k = hangs ? w : w * c;  // how far the step turns to `to`
+  if (!(k > 0)) return c;
+  float d[3] = {nx - x, ny - y, nz - z};
+  const float len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  const float tl = std::sqrt(to[0] * to[0] + to[1] * to[1] + to[2] * to[2]);
+  if (!(tl > 1e-6f)) return c;
+  for (int e = 0; e < 3; ++e) d[e] = (1 - k) * d[e] + k * len * to[e] / tl;
+  const float m = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  if (!(m > 1e-6f)) return c;
+  nx = x + d[0] * len / m;
+  ny = y + d[1] * len / m;
+  nz = z + d[2] * len / m;
+  return c;
+}
+
+}  // namespace hairsketch
