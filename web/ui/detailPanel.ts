@@ -16,6 +16,7 @@ import {
 import { MAX_HAIR_LENGTH } from '../model/grid';
 import type { GrowthParams } from '../model/growthParams';
 import type { HairLook } from '../model/hairLook';
+import { defOf } from '../model/kinds';
 import { DEFAULT_GROWTH, type SessionState, type StyleCurve } from '../model/session';
 import { SESSION_SETTINGS } from '../model/sessionSchema';
 import { hairLookEditors } from './hairLookEditor';
@@ -41,7 +42,7 @@ export const VOLUME_RANGE_CM = {
 /** Which rule sets the length of hair no stroke ends (shown under Max length). */
 export function lengthRule(s: Pick<SessionState, 'shape' | 'fall' | 'curves'>): string {
   if (!s.fall) return 'Length: the strokes alone (the paper’s method).';
-  if (!s.shape || !s.curves.some((c) => c.type === 'stream'))
+  if (!s.shape || !s.curves.some((c) => defOf(c).role === 'flow'))
     return 'Length: hair no stroke ends grows to Max length.';
   return 'Length: hair no stroke ends is as long as the strokes near it (at most Max length; a stroke extended off the head counts as Max length).';
 }
