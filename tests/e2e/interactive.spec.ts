@@ -157,15 +157,20 @@ test('while drawing the status says the hair is a preview; a cancelled stroke br
   await page.mouse.move(start.x, start.y);
   await page.mouse.down();
   for (let i = 1; i <= 6; i++) await page.mouse.move(start.x + 10 * i, start.y + 16 * i);
-  await revisionPast(page, s0.revision);
-  // the worker goes idle between previews: the line must not read as the final hair
-  await page.waitForFunction(() => {
-    const el = document.querySelector('[data-testid="status"]') as HTMLElement;
-    return el.dataset.state === 'ready';
-  });
+  // the worker goes idle between previews: once a preview's hair is on screen and the line is
+  // ready, it must not read as the final hair (the tool's click also sets the line, so a new
+  // revision alone does not mean a preview arrived)
+  await page.waitForFunction(
+    (hash) => {
+      const el = document.querySelector('[data-testid="status"]') as HTMLElement;
+      return el.dataset.state === 'ready' && window.hairsketch.hairHash() !== hash;
+    },
+    before,
+    { polling: 50 },
+  );
   const drawing = await status(page);
+  expect(drawing.revision).toBeGreaterThan(s0.revision);
   expect(drawing.text).toMatch(/^Preview — [\d,]+ strands; release to grow all$/);
-  expect(await page.evaluate(() => window.hairsketch.hairHash())).not.toBe(before);
   // the pointer is taken away mid-stroke (a touch interrupted; the mouse cannot send this)
   await page.locator('canvas').first().dispatchEvent('pointercancel', { pointerId: 1 });
   const after = await settled(page, drawing.revision);
