@@ -16,6 +16,7 @@ enum EngineSetting : size_t {
   kSettingBust,        // hair rests on the body (HairEngine::setBust, setBody)
   kSettingShape,       // the shape rules (HairEngine::setShape, hair_fall.hpp ShapeRules)
   kSettingVolume,      // their lift at the roots, world units (HairEngine::setShape)
+  kSettingTies,        // ties from any hand (HairEngine::setTies)
   kEngineSettingCount
 };
 

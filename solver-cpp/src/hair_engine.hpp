@@ -78,6 +78,10 @@ class HairEngine {
   // next grow.
   void setSections(bool on) { sections_ = on; }
   bool sections() const { return sections_; }
+  // Ties from any hand (docs/braids-buns.md "Ties"): partings closing near the edge, a tie's
+  // hair as long as its tail needs, tapered tails, a coiled bun. Off: the ties as before.
+  void setTies(bool on) { ties_ = on; }
+  bool ties() const { return ties_; }
   // Finished edges: every strand not laid into a tie ends up to kEndSpread short of where it
   // grew to (strand_detail.hpp applyDetail's endSpread), seeded per strand; lone roots are not
   // grown (scalp_roots.hpp dropLoneRoots); with fall the prior opens the face (hair_fall.hpp);
@@ -192,6 +196,7 @@ class HairEngine {
   std::vector<GatheredTail> tails_;  // the gathered ponytails of the last setCurves (with fall)
   std::vector<int32_t> tailCurves_;  // the curve of each of tails_
   bool sections_ = false;
+  bool ties_ = false;
   bool finish_ = false;
   ShapeRules shape_;
   std::vector<std::vector<Eigen::Vector3f>> partings_;  // the dividing curves of the last setCurves

@@ -19,6 +19,7 @@ function sample(): SessionState {
     finish: _finish,
     bust: _bust,
     shape: _shape,
+    ties: _ties,
     ...s
   } = emptySession('50k');
   return {

@@ -90,9 +90,10 @@ describe('every preset session passes the reader and round-trips', () => {
 
   it('spells out the defaults of a minimal session, and keeps them on the next read', () => {
     // a session made before version 4 has no natural fall, sections, finished edges, bust or
-    // shape rules (new sessions have them on)
-    const { fall, sections, finish, bust, shape, ...beforeFall } = emptySession('25k');
+    // shape rules or ties from any hand (new sessions have them on)
+    const { fall, sections, finish, bust, shape, ties, ...beforeFall } = emptySession('25k');
     expect(shape).toBe(true);
+    expect(ties).toBe(true);
     expect(fall).toBe(true);
     expect(sections).toBe(true);
     expect(finish).toBe(true);
@@ -112,6 +113,7 @@ describe('every preset session passes the reader and round-trips', () => {
         finish: true,
         bust: true,
         shape: true,
+        ties: true,
       }),
     ).toEqual(emptySession('25k'));
   });

@@ -32,6 +32,7 @@ function full(): SessionState {
     finish: true,
     shape: true,
     volume: 0.12,
+    ties: true,
     detail: { lengthJitter: 0.2 },
     scalpPaint: [{ erase: true, radius: 0.3, points: [[0, 1, 0]] }],
     symmetry: X_PLANE,
@@ -71,6 +72,7 @@ describe('session schema', () => {
       'bust',
       'shape',
       'volume',
+      'ties',
       'detail',
     ]);
     expect(needsSolve(s, { ...s })).toBe(false);
@@ -136,8 +138,9 @@ describe('engine settings', () => {
         bust: false,
         shape: true,
         volume: 0.12,
+        ties: false,
       }),
-    ]).toEqual([1, 0, 0, 1, 0, 1, 0.12]);
+    ]).toEqual([1, 0, 0, 1, 0, 1, 0.12, 0]);
     expect([
       ...engineSettings({
         avoidScalp: false,
@@ -147,7 +150,8 @@ describe('engine settings', () => {
         bust: true,
         shape: false,
         volume: 0,
+        ties: true,
       }),
-    ]).toEqual([0, 1, 1, 0, 1, 0, 0]);
+    ]).toEqual([0, 1, 1, 0, 1, 0, 0, 1]);
   });
 });

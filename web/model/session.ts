@@ -212,6 +212,7 @@ export function emptySession(
     finish: true,
     bust: true,
     shape: true,
+    ties: true,
   };
 }
 

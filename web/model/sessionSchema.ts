@@ -73,6 +73,11 @@ export const SESSION_SETTINGS = {
   /** Volume (Hair panel): how far the hair stands off the head at its roots, world units (0 to
    *  3 cm), with the shape rules. */
   volume: { type: 'number', hair: 'request', default: 0.05, min: 0, max: 0.3, quantum: 0.01 },
+  /** Ties from any hand (docs/braids-buns.md "Ties"): a parting that stops within 4 cm of the
+   *  scalp's edge or of another parting is carried on to it; a tie's hair grows as long as its
+   *  tail needs; tails taper to uneven ends under a band; a bun coils. On in every new session;
+   *  off, the ties of sessions made before. */
+  ties: { type: 'flag', hair: 'request' },
 } as const satisfies Record<string, SettingSpec>;
 
 export type SessionSettingName = keyof typeof SESSION_SETTINGS;
