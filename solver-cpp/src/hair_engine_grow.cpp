@@ -90,7 +90,7 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
   strandSection_.clear();
   ScalpSections sections;
   if (sections_) {
-    sections.build(roots_, centre_.cast<float>(), partings_);
+    sections.build(roots_, centre_.cast<float>(), partings_, ties_);
     strandSection_.resize(n);
     for (size_t st = 0; st < n; ++st) {
       // with finished edges, hair at a parting belongs to the side it is combed to

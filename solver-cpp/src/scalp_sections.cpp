@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <limits>
 
 namespace hairsketch {
 
@@ -29,8 +30,69 @@ int ScalpSections::cellOf(const Eigen::Vector2f& uv) const {
   return index(uv.y()) * kGrid + index(uv.x());
 }
 
+Eigen::Vector2f ScalpSections::closingTarget(const std::vector<Eigen::Vector2f>& uv, bool first,
+                                             const Eigen::Vector2f& dir, int self,
+                                             const std::vector<uint8_t>& scalp,
+                                             const std::vector<int16_t>& owner,
+                                             float reachCells) const {
+  constexpr int N = kGrid;
+  const float cellsPerRad = float(N) / (2 * kSectionPi);
+  const Eigen::Vector2f endUv = first ? uv.front() : uv.back();
+  const Eigen::Vector2f P = (endUv + Eigen::Vector2f::Constant(kSectionPi)) * cellsPerRad;
+  // the parting's own cells near this end are not a wall to close on: only those more than
+  // twice the reach along it (a loop drawn back to its start closes)
+  std::vector<uint8_t> nearOwn(size_t(N) * N, 0);
+  {
+    float walked = 0;
+    const size_t n = uv.size();
+    for (size_t k = 0; k + 1 < n && walked <= 2 * reachCells; ++k) {
+      const Eigen::Vector2f a = first ? uv[k] : uv[n - 1 - k];
+      const Eigen::Vector2f b = first ? uv[k + 1] : uv[n - 2 - k];
+      walked += (b - a).norm() * cellsPerRad;
+      const Eigen::Vector2f A = (a + Eigen::Vector2f::Constant(kSectionPi)) * cellsPerRad;
+      const Eigen::Vector2f B = (b + Eigen::Vector2f::Constant(kSectionPi)) * cellsPerRad;
+      const int steps = std::max(1, int(std::ceil((B - A).norm() * 2)));
+      for (int st = 0; st <= steps; ++st) {
+        const Eigen::Vector2f Q = A + (B - A) * (float(st) / float(steps));
+        for (int dy = -3; dy <= 3; ++dy)
+          for (int dx = -3; dx <= 3; ++dx) {
+            const int x = int(std::floor(Q.x())) + dx, y = int(std::floor(Q.y())) + dy;
+            if (x >= 0 && y >= 0 && x < N && y < N) nearOwn[size_t(y) * N + x] = 1;
+          }
+      }
+    }
+  }
+  const int r = int(std::ceil(reachCells));
+  float best = std::numeric_limits<float>::infinity();
+  Eigen::Vector2f target = endUv;
+  for (int dy = -r; dy <= r; ++dy)
+    for (int dx = -r; dx <= r; ++dx) {
+      const int x = int(std::floor(P.x())) + dx, y = int(std::floor(P.y())) + dy;
+      const Eigen::Vector2f C(float(x) + 0.5f, float(y) + 0.5f);
+      const Eigen::Vector2f d = C - P;
+      const float dist = d.norm();
+      if (dist > reachCells || dist < 1e-3f) continue;
+      const bool inside = x >= 0 && y >= 0 && x < N && y < N;
+      const size_t c = inside ? size_t(y) * N + x : 0;
+      const bool edge = !inside || !scalp[c];
+      const bool other =
+          inside && owner[c] >= 0 && (owner[c] != self || (owner[c] == self && !nearOwn[c]));
+      if (!edge && !other) continue;
+      // ahead of the end, not behind it: the parting is carried on, not bent back
+      const float cosine = d.dot(dir) / dist;
+      if (cosine < kCloseCosine) continue;
+      const float cost = dist * (2.f - cosine);
+      if (cost < best) {
+        best = cost;
+        target = C / cellsPerRad - Eigen::Vector2f::Constant(kSectionPi);
+      }
+    }
+  return target;
+}
+
 void ScalpSections::build(const std::vector<Eigen::Vector3f>& roots, const Eigen::Vector3f& centre,
-                          const std::vector<std::vector<Eigen::Vector3f>>& partings) {
+                          const std::vector<std::vector<Eigen::Vector3f>>& partings,
+                          bool closeNear) {
   centre_ = centre;
   constexpr int N = kGrid;
   const float cellsPerRad = float(N) / (2 * kSectionPi);
@@ -69,11 +131,25 @@ void ScalpSections::build(const std::vector<Eigen::Vector3f>& roots, const Eigen
     }
   };
   const float reach = kPartingReach / std::max(meanRadius, 1e-3f);  // radians
+  std::vector<std::vector<Eigen::Vector2f>> lines;
   for (const std::vector<Eigen::Vector3f>& line : partings) {
     if (line.size() < 2) continue;
     std::vector<Eigen::Vector2f> uv;
     for (const Eigen::Vector3f& p : line) uv.push_back(plane(p));
-    for (size_t k = 0; k + 1 < uv.size(); ++k) stamp(uv[k], uv[k + 1]);
+    lines.push_back(std::move(uv));
+  }
+  // each parting's own cells, before any end is carried on (closing: which wall is another's)
+  std::vector<int16_t> owner(size_t(N) * N, -1);
+  for (size_t l = 0; l < lines.size(); ++l) {
+    std::fill(wall.begin(), wall.end(), uint8_t(0));
+    for (size_t k = 0; k + 1 < lines[l].size(); ++k) stamp(lines[l][k], lines[l][k + 1]);
+    for (size_t c = 0; c < wall.size(); ++c)
+      if (wall[c]) owner[c] = int16_t(l);
+  }
+  for (size_t c = 0; c < wall.size(); ++c) wall[c] = owner[c] >= 0;
+  const float closeCells = kCloseReach / std::max(meanRadius, 1e-3f) * cellsPerRad;
+  for (size_t l = 0; l < lines.size(); ++l) {
+    const std::vector<Eigen::Vector2f>& uv = lines[l];
     // each end carried on along its direction over its last ~1.5 cm
     for (int end = 0; end < 2; ++end) {
       const size_t last = end == 0 ? 0 : uv.size() - 1;
@@ -87,7 +163,13 @@ void ScalpSections::build(const std::vector<Eigen::Vector3f>& roots, const Eigen
       }
       const Eigen::Vector2f dir = uv[last] - uv[back];
       if (!(dir.norm() > 1e-6f)) continue;
-      stamp(uv[last], uv[last] + dir.normalized() * reach);
+      if (!closeNear) {
+        stamp(uv[last], uv[last] + dir.normalized() * reach);
+        continue;
+      }
+      const Eigen::Vector2f to =
+          closingTarget(uv, end == 0, dir.normalized(), int(l), scalp, owner, closeCells);
+      if (to != uv[last]) stamp(uv[last], to);
     }
   }
   // sections: 4-connected components of scalp cells off the walls

@@ -11,7 +11,10 @@
 //     roots);
 //   walls: each parting's polyline drawn with a disc of kWallRadius cells, each end carried on
 //     along its direction by kPartingReach (world units, as an angle at the head's radius), so a
-//     parting that stops short of the scalp's edge still reaches it;
+//     parting that stops short of the scalp's edge still reaches it; with closeNear (ties from
+//     any hand) each end is carried on to the scalp's edge or another parting when one lies
+//     within kCloseReach ahead of it, as a stylist ends a parting a little short of the hairline
+//     or of the parting it meets, and left open otherwise;
 //   sections: the 4-connected components of scalp cells that are not walls; a component holding
 //     less than kMinShare of the roots is no section of its own (it joins its neighbour);
 //   every other cell (walls, off the scalp) takes the section of the nearest cell that has one
@@ -34,11 +37,19 @@ class ScalpSections {
   static constexpr float kWallRadius = 1.0f;
   static constexpr float kPartingReach = 0.35f;  // world units (3.5 cm)
   static constexpr float kMinShare = 0.01f;
+  // Closing near (ties from any hand): how far an end looks for the scalp's edge or another
+  // parting (world units, 4.5 cm: "within about 4 cm" with room for where a stroke's last
+  // sample falls), and how far off its own direction it may turn (cosine).
+  static constexpr float kCloseReach = 0.45f;
+  static constexpr float kCloseCosine = 0.0f;
 
   // roots: every root of the hair (the full set, so previews and full growth agree); partings:
-  // the dividing curves' polylines.
+  // the dividing curves' polylines. closeNear: an end is carried on to the nearest cell ahead of
+  // it (within 90 degrees of its direction, cost distance x (2 - cosine)) off the scalp or on
+  // another parting (or on its own line past twice the reach, a loop) within kCloseReach, and
+  // not at all when there is none; off, each end runs on kPartingReach along its direction.
   void build(const std::vector<Eigen::Vector3f>& roots, const Eigen::Vector3f& centre,
-             const std::vector<std::vector<Eigen::Vector3f>>& partings);
+             const std::vector<std::vector<Eigen::Vector3f>>& partings, bool closeNear = false);
   // The section of a point on or near the scalp (or of the scalp under it, seen from the centre);
   // 0 before build.
   int section(const Eigen::Vector3f& p) const;
@@ -54,6 +65,10 @@ class ScalpSections {
   std::vector<int16_t> label_;  // per cell: its section (every cell has one after build)
   int count_ = 0;
   Eigen::Vector2f plane(const Eigen::Vector3f& p) const;
+  Eigen::Vector2f closingTarget(const std::vector<Eigen::Vector2f>& uv, bool first,
+                                const Eigen::Vector2f& dir, int self,
+                                const std::vector<uint8_t>& scalp,
+                                const std::vector<int16_t>& owner, float reachCells) const;
   int cellOf(const Eigen::Vector2f& uv) const;
 };
 

@@ -238,6 +238,67 @@ TEST(ScalpSections, PartingsThatReachTheEdgeSplitTheScalpAndOthersDoNot) {
   EXPECT_EQ(open.count(), 1);
 }
 
+// Ties from any hand: a parting that a stylist ends a little short of the hairline (0.5 to
+// 3.8 cm on this 10 cm sphere) still closes its section, the roots on each side of its plane
+// falling on their own side; 6.5 cm short it stays open. Without closing near, 3.8 cm short is
+// past the old 3.5 cm run-on and bounds nothing (what users met).
+TEST(ScalpSections, APartingEndingShortOfTheEdgeClosesWithinFourCentimetres) {
+  const std::vector<Vector3f> roots = sphereRoots();
+  // over the crown from ear to ear, a little behind the top (a half-up's parting)
+  const Vector3d n = Vector3d(0, 0.25, 1).normalized();
+  const double d = -0.2;
+  // the scalp's raster reaches y = -0.25 (the last roots at 101.5 degrees, grown by two cells)
+  for (double shortOf : {0.05, 0.15, 0.25, 0.38}) {
+    ScalpSections s;
+    s.build(roots, Vector3f::Zero(), asFloat(partingInPlane(n, d, shortOf)), true);
+    ASSERT_EQ(s.count(), 2) << shortOf * 10 << " cm short";
+    const int front = s.section(Vector3f(0, 0.8f, 0.6f)), back = s.section({0, 0.2f, -0.98f});
+    EXPECT_NE(front, back);
+    size_t wrong = 0, total = 0;
+    for (const Vector3f& r : roots) {
+      const double side = r.cast<double>().dot(n) - d;
+      if (std::abs(side) < 0.08) continue;  // on the parting or its run-on
+      ++total;
+      wrong += s.section(r) != (side > 0 ? front : back);
+    }
+    EXPECT_LE(double(wrong), 0.002 * double(total)) << shortOf * 10 << " cm short";
+  }
+  ScalpSections old;
+  old.build(roots, Vector3f::Zero(), asFloat(partingInPlane(n, d, 0.38)), false);
+  EXPECT_EQ(old.count(), 1);
+  ScalpSections far;
+  far.build(roots, Vector3f::Zero(), asFloat(partingInPlane(n, d, 0.65)), true);
+  EXPECT_EQ(far.count(), 1);
+}
+
+// A side parting from the hairline above the left ear towards a centre parting, stopping 4.2 cm
+// short of it, meets it: three sections (the left front, the left back, the right); the old
+// 3.5 cm run-on does not reach it.
+TEST(ScalpSections, APartingEndingShortOfAnotherMeetsIt) {
+  const std::vector<Vector3f> roots = sphereRoots();
+  std::vector<Vector3d> centre = partingInPlane(Vector3d::UnitX(), 0);
+  // in the plane z = 0 from the left edge up towards the top, stopping at x = sin(0.42)
+  std::vector<Vector3d> side;
+  for (double a = 104; a > 0; a -= 1) {
+    const double t = a * kPi / 180;
+    if (std::sin(t) < std::sin(0.42)) break;
+    side.push_back(Vector3d(std::sin(t), std::cos(t), 0) * 1.01);
+  }
+  std::vector<std::vector<Vector3f>> both = asFloat(centre);
+  both.push_back(asFloat(side)[0]);
+  ScalpSections s;
+  s.build(roots, Vector3f::Zero(), both, true);
+  ASSERT_EQ(s.count(), 3);
+  const int leftFront = s.section({0.6f, 0.6f, 0.5f}), leftBack = s.section({0.6f, 0.6f, -0.5f});
+  const int right = s.section({-0.6f, 0.6f, 0});
+  EXPECT_NE(leftFront, leftBack);
+  EXPECT_NE(leftFront, right);
+  EXPECT_NE(leftBack, right);
+  ScalpSections open;
+  open.build(roots, Vector3f::Zero(), both, false);
+  EXPECT_EQ(open.count(), 2);
+}
+
 // Hair at a parting goes the way it is combed: a strand rooted 5 mm left of a centre parting
 // belongs to the left while it sets off left or along the line, and to the right when its
 // first 1.5 cm cross the line; a strand shorter than the reach counts at its tip.
