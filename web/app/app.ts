@@ -44,6 +44,7 @@ import { bindInput } from './input';
 import { MotionPlayer } from './motionPlayer';
 import { OverlayPresenter } from './overlayPresenter';
 import { bindPageControls } from './pageControls';
+import { PartingReporter } from './partingReporter';
 import { loadQualitySetting, QualityControl } from './quality';
 import { ReferenceController } from './referenceController';
 import { SectionTintPresenter } from './sectionTintPresenter';
@@ -145,6 +146,8 @@ export function startApp(): void {
   const overlays = new OverlayPresenter(viewer, editor, view, bridge.grid);
   const status = new StatusPresenter(line, bridge);
   editor.listen((c) => status.editorChanged(c));
+  const partings = new PartingReporter((m) => status.note(m));
+  editor.listen((c) => partings.editorChanged(c));
   const links = new LinkWriter(editor);
 
   const tools = createTools({
@@ -298,7 +301,7 @@ export function startApp(): void {
     detailPanel,
     showHeadPanel,
   });
-  showSolverResults({ bridge, hair, sectionTint, overlays, status, active });
+  showSolverResults({ bridge, hair, sectionTint, overlays, status, active, partings });
   const motion = new MotionPlayer({
     client: bridge.client,
     editor,
@@ -349,6 +352,7 @@ export function startApp(): void {
     view,
     ponytail: tools.ponytail,
     sectionsTinted: () => sectionTint.tinted,
+    sectionsOverHair: () => sectionTint.overHairTriangles,
     busy: () =>
       heads.busy ||
       references.busy ||

@@ -9,6 +9,7 @@ import type { ActiveTool } from './activeTool';
 import type { ExportWiring } from './exportActions';
 import type { HairPresenter } from './hairPresenter';
 import type { OverlayPresenter } from './overlayPresenter';
+import type { PartingReporter } from './partingReporter';
 import type { SectionTintPresenter } from './sectionTintPresenter';
 import { type LinkWriter, openSessionLinkOutcome } from './sessionIO';
 import type { SolverBridge } from './solverBridge';
@@ -23,12 +24,14 @@ export function showSolverResults(p: {
   overlays: OverlayPresenter;
   status: StatusPresenter;
   active: ActiveTool;
+  partings: PartingReporter;
 }): void {
-  const { bridge, hair, sectionTint, overlays, status, active } = p;
+  const { bridge, hair, sectionTint, overlays, status, active, partings } = p;
   bridge.subscribe({
     busy: (phase, fraction, previewing) => status.busy(phase, fraction, previewing),
     result: (r, final) => {
       hair.result(r, final);
+      if (final) partings.hairShown(hair.strands);
       sectionTint.update();
       overlays.result(r);
       status.result(r, final);

@@ -163,6 +163,9 @@ export interface HairsketchTestApi {
   frameSources(): { hair: number; static: number; none: number };
   /** Scalp vertices tinted by section (while a tie tool is active; 0 otherwise). */
   sectionsTinted(): number;
+  /** Scalp triangles of the sections drawn over the hair (while a tie tool is active; 0
+   *  otherwise). */
+  sectionsOverHair(): number;
   /** The scalp brush's ring on the head (its radius, world units, and whether it erases), or
    *  null when none is shown. */
   brushRing(): { radius: number; erase: boolean } | null;
@@ -193,6 +196,7 @@ export interface TestApiParts {
   ponytail: PonytailTool;
   /** Scalp vertices tinted by section now (a tie tool is active). */
   sectionsTinted(): number;
+  sectionsOverHair(): number;
   /** Work is pending (a solve, an avoidance request, a stroke being drawn). */
   busy(): boolean;
   lastPointerUp(): number;
@@ -403,6 +407,7 @@ export function installTestApi(app: TestApiParts): void {
     frameSource: () => viewer.lastFrameSource,
     frameSources: () => ({ ...viewer.frameSources }),
     sectionsTinted: () => app.sectionsTinted(),
+    sectionsOverHair: () => app.sectionsOverHair(),
     brushRing: () => viewer.brushRing,
     bareScalp(opts) {
       const t0 = performance.now();

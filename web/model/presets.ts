@@ -548,7 +548,17 @@ const PRESET_LOOKS: Partial<Record<PresetName, Partial<HairLook>>> = {
 };
 
 export function applyPreset(s: SessionState, name: PresetName, ctx: PresetContext): SessionState {
-  const { detail: _, fall: __, sections: ___, finish: ____, shape, volume: _v, ties, bust, ...rest } = s;
+  const {
+    detail: _,
+    fall: __,
+    sections: ___,
+    finish: ____,
+    shape,
+    volume: _v,
+    ties,
+    bust,
+    ...rest
+  } = s;
   const detail = name === 'curly' ? { detail: CURLY_DETAIL } : {};
   const fall = !PAPER_FIGURES.includes(name);
   // sketched curves end where the hair should end: with fall that is what "extend" off means
