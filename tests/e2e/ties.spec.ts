@@ -139,3 +139,75 @@ test('half-up: the user guide gesture (a parting from above one ear round the cr
   await page.waitForFunction(() => window.hairsketch.sectionsOverHair() === 0);
   await shoot(page, 'ties-half-up', 'bust');
 });
+
+/** The points of the strands tie `curve` laid, each from its point nearest `band` on (the tail,
+ *  not the hair combed to it). */
+function tailPoints(h: Hair, curve: number, band: V3): V3[] {
+  const out: V3[] = [];
+  for (let s = 0; s + 1 < h.strandStart.length; s++) {
+    if (h.tailCurves[s] !== curve) continue;
+    let nearest = h.strandStart[s];
+    let best = Infinity;
+    for (let q = h.strandStart[s]; q < h.strandStart[s + 1]; q++) {
+      const d = Math.hypot(
+        h.points[3 * q] - band[0],
+        h.points[3 * q + 1] - band[1],
+        h.points[3 * q + 2] - band[2],
+      );
+      if (d < best) {
+        best = d;
+        nearest = q;
+      }
+    }
+    for (let q = nearest; q < h.strandStart[s + 1]; q++)
+      out.push([h.points[3 * q], h.points[3 * q + 1], h.points[3 * q + 2]]);
+  }
+  return out;
+}
+
+interface Tie {
+  type: string;
+  points: V3[];
+  circles?: { centre: V3 }[];
+}
+
+test('a high ponytail in one stroke: the spine lifts off the crown and falls; the tail hangs below its band, centred', async ({
+  page,
+}) => {
+  test.setTimeout(120_000);
+  const s0 = await emptyHead(page);
+  await view(page, 'l', 'left');
+  await page.getByRole('button', { name: 'Ponytail' }).click();
+  // from the back of the crown, 1 cm off the middle: up and back, then down behind the head
+  const root = await scalpAt(page, 30, 170);
+  await dragThrough(page, [
+    root,
+    { x: root.x + 30, y: root.y - 20 },
+    { x: root.x + 60, y: root.y - 8 },
+    { x: root.x + 85, y: root.y + 50 },
+    { x: root.x + 100, y: root.y + 200 },
+    { x: root.x + 95, y: root.y + 330 },
+  ]);
+  await curveCount(page, 1);
+  const s = await settled(page, s0.revision);
+  console.log(`high ponytail: "${s.text}"`);
+  const tie = ((await page.evaluate(() => window.hairsketch.session())) as { curves: Tie[] })
+    .curves[0];
+  expect(tie.type).toBe('ponytail');
+  // drawn 1 cm off the middle, put on it
+  for (const p of tie.points) expect(Math.abs(p[0])).toBeLessThan(1e-6);
+  const band = tie.circles?.[0].centre as V3;
+  const h = await hair(page);
+  const tail = tailPoints(h, 0, band);
+  const below = tail.filter((p) => p[1] < band[1]).length / tail.length;
+  const meanX = tail.reduce((m, p) => m + p[0], 0) / tail.length;
+  const gathered = h.tailCurves.filter((t) => t === 0).length / h.tailCurves.length;
+  console.log(
+    `high ponytail: ${(100 * gathered).toFixed(1)} % of the strands gathered; ${(100 * below).toFixed(1)} % of the tail below its band (${band.map((x) => x.toFixed(2)).join(', ')}); mean x ${(10 * meanX).toFixed(2)} cm`,
+  );
+  await page.getByRole('button', { name: 'Stream curve' }).click();
+  await shoot(page, 'ties-high-ponytail', 'bust');
+  expect(gathered).toBeGreaterThan(0.95);
+  expect(below).toBeGreaterThanOrEqual(0.8);
+  expect(Math.abs(meanX)).toBeLessThan(0.1);
+});

@@ -6,7 +6,7 @@ import type { Vec3 } from '../../web/model/vec3';
 import type { StrokeSample } from '../../web/tools/depthRule';
 import { DividingCurveTool } from '../../web/tools/dividingCurveTool';
 import type { HintResult } from '../../web/tools/hintStroke';
-import { type PonytailDraft, PonytailTool } from '../../web/tools/ponytailTool';
+import { type PonytailShape, PonytailTool } from '../../web/tools/ponytailTool';
 import { StreamCurveTool } from '../../web/tools/streamCurveTool';
 import type { Tool } from '../../web/tools/tool';
 
@@ -177,9 +177,11 @@ describe('DividingCurveTool', () => {
 });
 
 describe('PonytailTool', () => {
-  it('takes spine, cross-section and two profiles, then commits the circles', () => {
-    const done: PonytailDraft[] = [];
+  function ponytailTool(near = true) {
+    const spines: Vec3[][] = [];
+    const shaped: { id: string; shape: PonytailShape }[] = [];
     const stages: string[] = [];
+    const previews: (Vec3[] | null)[] = [];
     const tool = new PonytailTool({
       sample: sampler((_x, y) => y > -0.05),
       eye: () => EYE,
@@ -187,21 +189,37 @@ describe('PonytailTool', () => {
       step: () => STEP,
       showDraft: () => {},
       showGuides: () => {},
-      commit: (p) => done.push(p),
+      preview: (p) => previews.push(p),
+      commitSpine: (spine) => {
+        spines.push(spine);
+        return { id: `c${spines.length}`, spine };
+      },
+      shape: (id, shape) => shaped.push({ id, shape }),
+      nearSpine: () => near,
       notify: () => {},
       stageChanged: (s) => stages.push(s),
     });
+    return { tool, spines, shaped, stages, previews };
+  }
+
+  it('makes the ponytail from its spine, then takes a cross-section and two profiles that shape it', () => {
+    const { tool, spines, shaped, stages, previews } = ponytailTool();
     expect(tool.stage).toBe('spine');
     drag(tool, line([0, 0], [0, -4])); // spine down from the scalp edge, at depth z = 0
+    expect(spines).toHaveLength(1);
+    expect(spines[0].length).toBe(17);
+    // the spine was previewed while drawn, and the preview ended with the stroke
+    expect(previews.some((p) => p !== null && p.length >= 3)).toBe(true);
+    expect(previews[previews.length - 1]).toBeNull();
     expect(tool.stage).toBe('cross');
     drag(tool, line([-0.6, -1], [0.6, -1]));
     drag(tool, line([-0.5, -0.5], [-0.3, -3.5]));
-    expect(done).toHaveLength(0);
+    expect(shaped).toHaveLength(0);
     drag(tool, line([0.5, -0.5], [0.3, -3.5]));
     expect(stages).toEqual(['cross', 'profileA', 'profileB', 'spine']);
-    expect(done).toHaveLength(1);
-    const p = done[0];
-    expect(p.spine.length).toBe(17);
+    expect(shaped).toHaveLength(1);
+    expect(shaped[0].id).toBe('c1');
+    const p = shaped[0].shape;
     expect(p.circles.length).toBeGreaterThan(3);
     // C1 first (nearest the root), radius from the cross-section: 0.6 at y = -1
     expect(p.circles[0].centre[1]).toBeGreaterThan(p.circles[1].centre[1]);
@@ -211,5 +229,14 @@ describe('PonytailTool', () => {
     expect(atCross.radius).toBeCloseTo(0.6, 1);
     // the circles narrow toward the tip, as the profiles do
     expect(p.circles[p.circles.length - 1].radius).toBeLessThan(p.circles[0].radius);
+  });
+
+  it('a press on the scalp away from the spine starts the next ponytail', () => {
+    const { tool, spines, shaped, stages } = ponytailTool(false);
+    drag(tool, line([0, 0], [0, -4]));
+    drag(tool, line([0.4, 0.5], [0.4, -3]));
+    expect(spines).toHaveLength(2);
+    expect(shaped).toHaveLength(0);
+    expect(stages).toEqual(['cross', 'spine', 'cross']);
   });
 });

@@ -9,6 +9,7 @@ import type { Head } from '../head/head';
 import type { ScalpPaintStroke } from '../head/scalpPaint';
 import { defaultParams, type PlainTieKind } from '../model/curveParams';
 import { STROKE_KINDS } from '../model/kinds';
+import { snapToPlane, X_PLANE } from '../model/mirror';
 import { newCurveExtends, streamExtends, tieAtEnd } from '../model/session';
 import type { Vec3 } from '../model/vec3';
 import { BunTool } from '../tools/bunTool';
@@ -139,9 +140,10 @@ export function createTools(d: ToolDeps): ToolSet {
   return { byName, ponytail, scalpBrush };
 }
 
-/** The ponytail tool: spine, cross-section and two profiles (S4.6). */
+/** The ponytail tool: one stroke makes a ponytail; a cross-section and two profiles may shape
+ *  it (S4.6). */
 function ponytailTool(k: ToolKit): PonytailTool {
-  const { d, editor, camera, sample, eye, forward, step, showDraft } = k;
+  const { d, editor, viewer, camera, sample, eye, forward, step, showDraft } = k;
   return new PonytailTool({
     sample,
     eye,
@@ -149,26 +151,63 @@ function ponytailTool(k: ToolKit): PonytailTool {
     step,
     showDraft,
     showGuides: (lines) => d.showGuides(lines),
-    commit: (p) =>
-      editor.run({
-        kind: 'addCurve',
-        curve: {
-          type: 'ponytail',
-          points: p.spine,
-          extend: newCurveExtends(editor.session),
+    preview: (points) => {
+      viewer.expectHair(points !== null);
+      editor.setStroke(
+        points && {
+          points: snapToPlane(points, editor.session.symmetry ?? X_PLANE).points,
           viewpoint: camera(),
-          crossSection: p.crossSection,
-          profiles: p.profiles,
-          circles: p.circles,
-          ...defaultParams('ponytail'),
+          kind: 'ponytail',
         },
-        what: `ponytail {id} (${p.circles.length} circles)`,
-        mirror: d.mirror(),
+      );
+    },
+    commitSpine: (drawn) => {
+      const { points, snapped } = snapToPlane(drawn, editor.session.symmetry ?? X_PLANE);
+      const curve = STROKE_KINDS.ponytail.fromStroke(
+        points,
+        camera(),
+        newCurveExtends(editor.session),
+      );
+      if (curve.circles.length === 0) {
+        d.notify('A ponytail spine needs to run on past the band: nothing was created.');
+        return null;
+      }
+      const made = editor.run({
+        kind: 'addCurve',
+        curve,
+        what: snapped ? 'ponytail {id} (centred on the head)' : 'ponytail {id}',
+        // a ponytail on the symmetry plane is its own mirror image
+        mirror: d.mirror() && !snapped,
+      });
+      const c = editor.selectedCurve;
+      return made && c?.type === 'ponytail' ? { id: c.id, spine: c.points } : null;
+    },
+    shape: (id, p) =>
+      editor.run({
+        kind: 'shapePonytail',
+        id,
+        crossSection: p.crossSection,
+        profiles: p.profiles,
+        circles: p.circles,
       }),
+    nearSpine: (x, y, spine) => {
+      const pts = spine.map((q) => viewer.worldToScreen(q)).filter((q) => q !== null);
+      for (let i = 0; i + 1 < pts.length; i++) {
+        const [a, b] = [pts[i], pts[i + 1]];
+        const ab = { x: b.x - a.x, y: b.y - a.y };
+        const l2 = ab.x ** 2 + ab.y ** 2;
+        const t = l2 > 0 ? Math.max(0, Math.min(1, ((x - a.x) * ab.x + (y - a.y) * ab.y) / l2)) : 0;
+        if (Math.hypot(x - a.x - t * ab.x, y - a.y - t * ab.y) <= SHAPING_NEAR_PX) return true;
+      }
+      return false;
+    },
     notify: d.notify,
     stageChanged: (stage) => d.ponytailStage(stage),
   });
 }
+
+/** A shaping stroke (cross-section, profiles) starts within this many pixels of the spine. */
+const SHAPING_NEAR_PX = 80;
 
 /** The scalp brush: paints and erases scalp, its ring on the head. */
 function scalpBrushTool(k: ToolKit): ScalpBrushTool {

@@ -15,6 +15,7 @@ import {
   syncMirrorTwins,
   X_PLANE,
 } from '../model/mirror';
+import type { PonytailCircle } from '../model/ponytailGeometry';
 import { quantizeSession } from '../model/quantize';
 import type { ReferenceImage } from '../model/referenceImage';
 import {
@@ -61,6 +62,15 @@ export type Command =
   /** "Braid the tail": the ponytail `id` becomes a braid on its spine (same id, extend, viewpoint,
    *  detail and twin), as wide as twice its circles' mean radius. */
   | { kind: 'braidTail'; id: string }
+  /** A ponytail's cross-section and two profiles drawn after its spine (method S4.6's strokes
+   *  2-4): they replace those its one stroke made, and its circles follow. */
+  | {
+      kind: 'shapePonytail';
+      id: string;
+      crossSection: Vec3[];
+      profiles: [Vec3[], Vec3[]];
+      circles: PonytailCircle[];
+    }
   | { kind: 'setViewpoint'; id: string; viewpoint: Viewpoint }
   | { kind: 'setSurfaceMode'; id: string; mode: SurfaceMode }
   /** "Avoid scalp" (S4.7) on or off: a setting the solver applies whenever it solves. */
@@ -242,6 +252,18 @@ const HANDLERS: {
       session: updateCurve(s, c.id, () => braid),
       selectedId: c.id,
       message: `Braided the tail of ${c.id}: a braid ${Math.round(braid.width * 100) / 10} cm wide.`,
+    };
+  },
+  shapePonytail(s, cmd) {
+    const c = findCurve(s, cmd.id);
+    if (c?.type !== 'ponytail') return { session: s, message: `No ponytail ${cmd.id}.` };
+    if (cmd.circles.length === 0)
+      return { session: s, message: 'The profiles do not run beside the spine: nothing changed.' };
+    const { crossSection, profiles, circles } = cmd;
+    return {
+      session: updateCurve(s, c.id, () => ({ ...c, crossSection, profiles, circles })),
+      selectedId: c.id,
+      message: `Shaped ponytail ${c.id} (${circles.length} circles).`,
     };
   },
   patchCurve(s, cmd) {

@@ -6,7 +6,7 @@
 // the plane across the rays, so each ray looks only at the segments near it.
 
 import type { StrandArrays } from '../model/hairArrays';
-import type { Vec3 } from '../model/vec3';
+import { cross, type Vec3 } from '../model/vec3';
 import type { Head } from './head';
 
 export interface CoverageOptions {
@@ -138,11 +138,6 @@ function segmentHides(
 
 const dot3 = (P: ArrayLike<number>, k: number, w: Vec3) =>
   P[3 * k] * w[0] + P[3 * k + 1] * w[1] + P[3 * k + 2] * w[2];
-const cross = (a: Vec3, b: Vec3): Vec3 => [
-  a[1] * b[2] - a[2] * b[1],
-  a[2] * b[0] - a[0] * b[2],
-  a[0] * b[1] - a[1] * b[0],
-];
 function norm(a: Vec3): Vec3 {
   const l = Math.hypot(a[0], a[1], a[2]) || 1;
   return [a[0] / l, a[1] / l, a[2] / l];

@@ -3,17 +3,11 @@
 // dividing_constraints.hpp, for display: the yellow lines of Fig. 2), the tilt a hint stroke
 // asks for.
 import type { CurveParamValues } from './curveParams';
-import { add, dot, length, normalize, scale, sub, type Vec3 } from './vec3';
+import { add, cross, dot, length, normalize, scale, sub, type Vec3 } from './vec3';
 
 /** A parting's profile and tilts: its rows of curveParams.ts CURVE_PARAMS.dividing (sigma and h
  *  in grid steps, alpha0 and alpha1 in radians at its first and last point). */
 export type DividingSettings = CurveParamValues<'dividing'>;
-
-const cross = (a: Vec3, b: Vec3): Vec3 => [
-  a[1] * b[2] - a[2] * b[1],
-  a[2] * b[0] - a[0] * b[2],
-  a[0] * b[1] - a[1] * b[0],
-];
 
 export interface DividingFrame {
   origin: Vec3;

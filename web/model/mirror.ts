@@ -93,3 +93,28 @@ export function syncMirrorTwins(
   }
   return changed ? out : null;
 }
+
+/** A ponytail's spine drawn within this distance of the symmetry plane (world units, 1.5 cm: a
+ *  hand's error drawing on the head's middle) is put on it, so a centred tail is centred. */
+export const SNAP_TO_PLANE = 0.15;
+
+/** `points` put on the plane when its first point and its points on average lie within
+ *  SNAP_TO_PLANE of it (snapped), else as they are. */
+export function snapToPlane(
+  points: Vec3[],
+  plane: MirrorPlane = X_PLANE,
+): { points: Vec3[]; snapped: boolean } {
+  if (points.length === 0) return { points, snapped: false };
+  const n = plane.normal;
+  const off = (p: Vec3) => n[0] * p[0] + n[1] * p[1] + n[2] * p[2] - plane.offset;
+  const mean = points.reduce((m, p) => m + Math.abs(off(p)), 0) / points.length;
+  if (Math.abs(off(points[0])) > SNAP_TO_PLANE || mean > SNAP_TO_PLANE)
+    return { points, snapped: false };
+  return {
+    points: points.map((p) => {
+      const k = off(p);
+      return [p[0] - k * n[0] + 0, p[1] - k * n[1] + 0, p[2] - k * n[2] + 0];
+    }),
+    snapped: true,
+  };
+}

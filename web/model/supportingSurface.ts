@@ -18,7 +18,7 @@
 // point-index units) and the signed offset from the curve (world units): 'ruled' — along the
 // view ray through p_i + u (p_i+1 - p_i) (positive away from the eye); 'strip' — along n_i.
 // On a wedge: parameter j, offset ± |x - p_j|.
-import { add, dot, length, normalize, scale, sub, type Vec3 } from './vec3';
+import { add, cross, dot, length, normalize, scale, sub, type Vec3 } from './vec3';
 
 export type SurfaceMode = 'ruled' | 'strip';
 
@@ -44,12 +44,6 @@ export interface SurfaceHit {
   offset: number; // signed offset from the curve within the surface, world units
   distance: number; // |offset|
 }
-
-const cross = (a: Vec3, b: Vec3): Vec3 => [
-  a[1] * b[2] - a[2] * b[1],
-  a[2] * b[0] - a[0] * b[2],
-  a[0] * b[1] - a[1] * b[0],
-];
 
 /** Unit normal of the triangle (eye, a, b), or null when degenerate. */
 export function eyeTriangleNormal(eye: Vec3, a: Vec3, b: Vec3): Vec3 | null {

@@ -1,13 +1,17 @@
-// The "Ponytail" tool (method S4.6): four strokes make one ponytail.
-//   stage 'spine':    a stroke from the scalp, lifted like a stream curve (S4.2);
+// The "Ponytail" tool. One stroke makes a ponytail; three more may shape it (method S4.6):
+//   stage 'spine':    a stroke from the scalp where the tie sits along the tail, lifted like a
+//                     stream curve (S4.2) and previewed as the ponytail it makes; on release the
+//                     ponytail is made (model/ponytailFromSpine.ts: its cross-section, profiles
+//                     and circles made for it);
 //   (the user may orbit the view: the right button orbits with any drawing tool)
 //   stage 'cross':    a stroke across the spine: the cross-section curve;
-//   stage 'profileA', 'profileB': two strokes along the spine on either side: the profiles.
-// The last three are lifted onto the spine's supporting surface rebuilt from the view of the
-// moment (the 'strip' mode, which faces that view), with hintStroke.ts's depth rule off it.
-// After the second profile the circles are computed (ponytailCircles) and the ponytail is
-// committed; the tool is then ready for the next spine. Each stroke is its own state machine
-// Idle -> Drawing -> Idle; `stage` says which stroke comes next.
+//   stage 'profileA', 'profileB': two strokes along the spine on either side: the profiles;
+//                     after the second, the circles are computed from the drawn strokes
+//                     (ponytailCircles) and replace the made ones (one undoable edit).
+// A press on the scalp away from the spine starts the next ponytail instead. The last three
+// strokes are lifted onto the spine's supporting surface rebuilt from the view of the moment
+// (the 'strip' mode, which faces that view), with hintStroke.ts's depth rule off it. Each stroke
+// is its own state machine Idle -> Drawing -> Idle; `stage` says which stroke comes next.
 import { type PonytailCircle, ponytailCircles } from '../model/ponytailGeometry';
 import { resamplePolyline } from '../model/resample';
 import { buildSupportingSurface, type SupportingSurface } from '../model/supportingSurface';
@@ -21,8 +25,8 @@ export type PonytailStage = 'spine' | 'cross' | 'profileA' | 'profileB';
 /** Half width of the rebuilt supporting surface, in grid steps. */
 export const PONYTAIL_SURFACE_HALF_WIDTH = 12;
 
-export interface PonytailDraft {
-  spine: Vec3[];
+/** The strokes that shape a ponytail after its spine, and the circles computed from them. */
+export interface PonytailShape {
   crossSection: Vec3[];
   profiles: [Vec3[], Vec3[]];
   circles: PonytailCircle[];
@@ -36,16 +40,25 @@ export interface PonytailContext {
   showDraft(points: readonly Vec3[] | null): void;
   /** Strokes of the ponytail made so far (shown until it is complete). */
   showGuides(lines: readonly (readonly Vec3[])[]): void;
-  commit(p: PonytailDraft): void;
+  /** The spine drawn so far (null: none): the hair previews the ponytail it will make. */
+  preview(points: Vec3[] | null): void;
+  /** Makes the ponytail of one spine: its id and its spine as made (on the head's symmetry
+   *  plane when drawn near it), or null when nothing was made. */
+  commitSpine(spine: Vec3[]): { id: string; spine: Vec3[] } | null;
+  /** The cross-section and profiles drawn for ponytail `id`. */
+  shape(id: string, shape: PonytailShape): void;
+  /** Whether the screen point is near the spine's image (a shaping stroke starts there). */
+  nearSpine(x: number, y: number, spine: readonly Vec3[]): boolean;
   notify(message: string): void;
   /** The stage changed: the app tells the user which stroke is next. */
   stageChanged(stage: PonytailStage): void;
 }
 
 export const PONYTAIL_STAGE_HINT: Record<PonytailStage, string> = {
-  spine: 'Ponytail 1/4: drag from the scalp to draw the spine',
+  spine:
+    'Ponytail: drag its spine from the scalp where the tie sits, along the tail (one stroke makes it)',
   cross:
-    'Ponytail 2/4: orbit if you like (right-drag), then draw the cross-section across the spine',
+    'Ponytail made. To shape it (2/4): orbit if you like (right-drag), then draw the cross-section across the spine; or drag from the scalp for another',
   profileA: 'Ponytail 3/4: draw the first profile along one side of the spine',
   profileB: 'Ponytail 4/4: draw the second profile along the other side of the spine',
 };
@@ -70,6 +83,8 @@ export class PonytailTool implements Tool {
   private spine: Vec3[] = [];
   private cross: Vec3[] = [];
   private profileA: Vec3[] = [];
+  /** The ponytail the shaping strokes are for. */
+  private made: string | null = null;
 
   constructor(private readonly ctx: PonytailContext) {}
 
@@ -85,6 +100,9 @@ export class PonytailTool implements Tool {
   onPointerDown(p: ToolPointer): boolean {
     if (p.button !== 0) return false;
     const first = this.ctx.sample(p.x, p.y);
+    // a press on the scalp away from the spine starts the next ponytail
+    if (this.stage !== 'spine' && first.scalpHit && !this.ctx.nearSpine(p.x, p.y, this.spine))
+      this.reset();
     if (this.stage === 'spine' && !first.scalpHit) {
       this.ctx.notify('A ponytail spine must start on the scalp: nothing was created.');
       return true;
@@ -111,15 +129,17 @@ export class PonytailTool implements Tool {
     const k = this.stroke;
     if (!k) return;
     k.raw.push({ x: p.x, y: p.y });
-    this.update();
-    this.end();
+    this.update(false);
+    // the edit first, then the stroke ends: a commit ends the stroke's preview with it
     this.finish(this.lifted(k));
+    this.end();
   }
 
-  /** Leaving the stroke: its data and its draft go. */
+  /** Leaving the stroke: its data, its draft and its preview go. */
   private end(): void {
     this.stroke = null;
     this.ctx.showDraft(null);
+    this.ctx.preview(null);
   }
 
   /** A released stroke, lifted: the ponytail's next part, or a sentence saying why not. */
@@ -137,7 +157,10 @@ export class PonytailTool implements Tool {
           this.ctx.notify('A ponytail spine needs at least two grid steps: ignored.');
           return;
         }
-        this.spine = spine;
+        const made = this.ctx.commitSpine(spine);
+        if (!made) return;
+        this.spine = made.spine;
+        this.made = made.id;
         this.setStage('cross');
         break;
       }
@@ -158,14 +181,14 @@ export class PonytailTool implements Tool {
           this.setStage('profileA');
           return;
         }
-        const draft: PonytailDraft = {
-          spine: this.spine,
+        const shape: PonytailShape = {
           crossSection: this.cross,
           profiles: [this.profileA, line],
           circles: g.circles,
         };
+        const id = this.made;
         this.reset();
-        this.ctx.commit(draft);
+        if (id) this.ctx.shape(id, shape);
         break;
       }
     }
@@ -183,6 +206,7 @@ export class PonytailTool implements Tool {
     this.spine = [];
     this.cross = [];
     this.profileA = [];
+    this.made = null;
     this.setStage('spine');
   }
 
@@ -204,12 +228,19 @@ export class PonytailTool implements Tool {
     if (!drawing && this.stage !== 'spine') this.reset();
   }
 
-  update(): void {
+  /** Samples the pointer positions taken since the last call, shows the stroke and (unless
+   *  `preview` is false) previews the spine's ponytail. */
+  update(preview = true): void {
     const k = this.stroke;
     if (!k || k.raw.length === 0) return;
     for (const r of k.raw) k.samples.push(this.ctx.sample(r.x, r.y));
     k.raw = [];
     const pts = this.lifted(k);
-    if (pts) this.ctx.showDraft(pts);
+    if (!pts) return;
+    this.ctx.showDraft(pts);
+    if (preview && this.stage === 'spine') {
+      const spine = resamplePolyline(pts, this.ctx.step());
+      if (spine.length >= 3) this.ctx.preview(spine);
+    }
   }
 }

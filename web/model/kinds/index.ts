@@ -18,7 +18,7 @@ const KINDS: { readonly [K in CurveKindName]: CurveKindDef<K> } = {
 };
 
 /** The kinds drawn as one stroke (a tool's stroke, a preview being drawn), by name. */
-export const STROKE_KINDS = { stream: STREAM, ...PLAIN_TIES } as const;
+export const STROKE_KINDS = { stream: STREAM, ponytail: PONYTAIL, ...PLAIN_TIES } as const;
 export type StrokeKindName = keyof typeof STROKE_KINDS;
 
 /** The definition of a kind by name (null for a name that is none). */

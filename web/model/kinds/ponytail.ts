@@ -1,8 +1,10 @@
 // The ponytail (S4.6): `points` is the spine (edited like a stream curve); the cross-section and
 // the two profile strokes are kept as drawn, the circles computed from them (C1 first).
 
+import { defaultParams } from '../curveParams';
 import { DIRECTION_SCALE as DIR, POSITION_SCALE as POS, toGridInt } from '../gridNumbers';
 import { readPolyline, writePolyline } from '../linkBytes';
+import { ponytailFromSpine } from '../ponytailFromSpine';
 import { type PonytailCircle, ponytailCircles } from '../ponytailGeometry';
 import { fail } from '../readFailure';
 import {
@@ -19,7 +21,7 @@ import {
 } from '../readValues';
 import { SESSION_LIMITS as L } from '../sessionLimits';
 import type { Vec3 } from '../vec3';
-import type { CurveKindDef, QuantizeKit } from './curveKind';
+import type { QuantizeKit, StrokeKindDef } from './curveKind';
 
 function readCircles(o: { circles?: unknown }, path: string, spine: number): PonytailCircle[] {
   const cs = array(o.circles as never, `${path}.circles`, 'circles');
@@ -65,7 +67,7 @@ function quantizeCircle(c: PonytailCircle, kit: QuantizeKit): PonytailCircle {
     : { ...c, centre, axis, radius, spineIndex };
 }
 
-export const PONYTAIL: CurveKindDef<'ponytail'> = {
+export const PONYTAIL: StrokeKindDef<'ponytail'> = {
   name: 'ponytail',
   fields: ['extend', 'crossSection', 'profiles', 'circles'],
   role: 'tie',
@@ -80,6 +82,16 @@ export const PONYTAIL: CurveKindDef<'ponytail'> = {
     return circles.length === 0 ? null : { ...c, points, circles };
   },
   guides: (c) => c.circles,
+  // one stroke (ponytailFromSpine.ts): the spine; the cross-section, profiles and circles made
+  // for it (a later cross-section and two profiles replace them)
+  fromStroke: (points, viewpoint, extend) => ({
+    type: 'ponytail',
+    points,
+    extend,
+    viewpoint,
+    ...ponytailFromSpine(points, viewpoint),
+    ...defaultParams('ponytail'),
+  }),
   read({ o, path, id, points, viewpoint, scalars, common }) {
     const extend = bool(o.extend, `${path}.extend`);
     const vp = viewpoint();

@@ -1,0 +1,70 @@
+// A ponytail in one stroke: the spine alone, drawn from the scalp where the tie sits along where
+// the tail hangs. The paper's other three strokes (a cross-section and two profiles, method S4.6)
+// are made for it, so the curve is the same kind as a four-stroke ponytail (edited, mirrored,
+// saved and linked the same way; a later cross-section and profiles replace these):
+//   the band: the first spine point at least BAND_ARC along the spine from its root (just off
+//     the head: the tail is gathered there, C1);
+//   the profiles: the spine offset by +-radius across it, in the plane facing the view it was
+//     drawn from (side = tangent x view direction), from the band to the tip;
+//   the cross-section: a line of length 2 radius across the spine at the band.
+// ponytailCircles (ponytailGeometry.ts) then gives circles of that radius along the spine from
+// the band. The radius is small on purpose: a tie that gathers its whole section grows to hold
+// its hair (solver-cpp/src/gathered_tail.hpp sectionTailRadius), drawn circles only widen it.
+import type { PonytailCircle } from './ponytailGeometry';
+import { polylineTangents, ponytailCircles } from './ponytailGeometry';
+import type { Viewpoint } from './session';
+import { add, cross, length, normalize, scale, sub, type Vec3 } from './vec3';
+
+/** Arc length from the spine's root to the band (world units, 1.2 cm). */
+export const BAND_ARC = 0.12;
+/** The made profiles' half-width (world units, 8 mm). */
+export const ONE_STROKE_RADIUS = 0.08;
+
+export interface PonytailStrokes {
+  crossSection: Vec3[];
+  profiles: [Vec3[], Vec3[]];
+  circles: PonytailCircle[];
+}
+
+/** The index of the band on `spine` (BAND_ARC along it; the last but one point at most). */
+export function bandIndex(spine: readonly Vec3[]): number {
+  let walked = 0;
+  for (let i = 1; i < spine.length; i++) {
+    walked += length(sub(spine[i], spine[i - 1]));
+    if (walked >= BAND_ARC) return Math.min(i, spine.length - 2);
+  }
+  return Math.max(0, spine.length - 2);
+}
+
+/** The cross-section, profiles and circles of a one-stroke ponytail on `spine` drawn from
+ *  `viewpoint`; no circles when the spine is too short (fewer than 3 points). */
+export function ponytailFromSpine(
+  spine: readonly Vec3[],
+  viewpoint: Viewpoint,
+  radius = ONE_STROKE_RADIUS,
+): PonytailStrokes {
+  const empty: PonytailStrokes = { crossSection: [], profiles: [[], []], circles: [] };
+  if (spine.length < 3) return empty;
+  const view = normalize(sub(viewpoint.target, viewpoint.position));
+  const tangents = polylineTangents(spine);
+  const sides = tangents.map((t) => {
+    let s = cross(t, view);
+    // drawn straight at the eye: any direction across the spine
+    if (length(s) < 1e-3) s = cross(t, Math.abs(t[1]) < 0.9 ? [0, 1, 0] : [1, 0, 0]);
+    return normalize(s);
+  });
+  const b = bandIndex(spine);
+  const from = b;
+  const a: Vec3[] = [];
+  const c: Vec3[] = [];
+  for (let i = from; i < spine.length; i++) {
+    a.push(add(spine[i], scale(sides[i], radius)));
+    c.push(sub(spine[i], scale(sides[i], radius)));
+  }
+  const crossSection: Vec3[] = [
+    sub(spine[b], scale(sides[b], radius)),
+    add(spine[b], scale(sides[b], radius)),
+  ];
+  const { circles } = ponytailCircles(spine as Vec3[], crossSection, a, c, { every: 2 });
+  return { crossSection, profiles: [a, c], circles };
+}
