@@ -1,0 +1,58 @@
+// A ponytail in one stroke (web/model/ponytailFromSpine.ts) and the snap of a spine drawn near
+// the head's middle (web/model/mirror.ts snapToPlane), against values computed by hand.
+import { describe, expect, it } from 'vitest';
+import { snapToPlane, X_PLANE } from '../../web/model/mirror';
+import { BAND_ARC, ONE_STROKE_RADIUS, ponytailFromSpine } from '../../web/model/ponytailFromSpine';
+import type { Vec3 } from '../../web/model/vec3';
+
+// a spine from (0, 1, -0.9) going back 0.3, then straight down 2 units, every 0.05
+const spine: Vec3[] = [];
+for (let i = 0; i <= 6; i++) spine.push([0, 1, -0.9 - 0.05 * i]);
+for (let i = 1; i <= 40; i++) spine.push([0, 1 - 0.05 * i, -1.2]);
+const fromSide = { position: [8, 1, -1] as Vec3, target: [0, 0.5, -1] as Vec3 };
+
+describe('ponytailFromSpine', () => {
+  it('gives circles of the made radius on the spine from the band on, C1 first', () => {
+    const p = ponytailFromSpine(spine, fromSide);
+    expect(p.circles.length).toBeGreaterThan(15);
+    // the band: the first point BAND_ARC (0.12) along the spine: index 3 (0.15); every second
+    // point has a circle, so C1 sits on point 3 or 4
+    expect(BAND_ARC).toBeCloseTo(0.12, 9);
+    expect([3, 4]).toContain(p.circles[0].spineIndex);
+    for (const c of p.circles) {
+      expect(c.radius).toBeCloseTo(ONE_STROKE_RADIUS, 6);
+      const s = spine[c.spineIndex];
+      expect(Math.hypot(c.centre[0] - s[0], c.centre[1] - s[1], c.centre[2] - s[2])).toBe(0);
+    }
+    // down the straight part the axis is straight down
+    const last = p.circles[p.circles.length - 1];
+    expect(last.axis[1]).toBeCloseTo(-1, 6);
+    // the profiles lie across the spine from the view (the side view: along z... across x)
+    expect(Math.abs(p.profiles[0][5][0] - p.profiles[1][5][0])).toBeLessThan(1e-9);
+    expect(p.crossSection).toHaveLength(2);
+  });
+
+  it('makes nothing of a spine of fewer than three points', () => {
+    expect(ponytailFromSpine(spine.slice(0, 2), fromSide).circles).toEqual([]);
+  });
+});
+
+describe('snapToPlane', () => {
+  it('puts a spine drawn within 1.5 cm of the middle on it, and leaves one 2 cm off', () => {
+    const near = spine.map((p, i) => [0.1 + 0.02 * Math.sin(i), p[1], p[2]] as Vec3);
+    const a = snapToPlane(near, X_PLANE);
+    expect(a.snapped).toBe(true);
+    for (const [i, p] of a.points.entries()) {
+      expect(p[0]).toBe(0);
+      expect(p[1]).toBe(near[i][1]);
+    }
+    const off = spine.map((p) => [0.2, p[1], p[2]] as Vec3);
+    const b = snapToPlane(off, X_PLANE);
+    expect(b.snapped).toBe(false);
+    expect(b.points).toBe(off);
+    // another plane: x = 0.5
+    const c = snapToPlane(off, { normal: [1, 0, 0], offset: 0.3 });
+    expect(c.snapped).toBe(true);
+    expect(c.points[0][0]).toBeCloseTo(0.3, 12);
+  });
+});
