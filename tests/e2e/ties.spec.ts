@@ -211,3 +211,160 @@ test('a high ponytail in one stroke: the spine lifts off the crown and falls; th
   expect(below).toBeGreaterThanOrEqual(0.8);
   expect(Math.abs(meanX)).toBeLessThan(0.1);
 });
+
+/** How far short of its stroke's end the tail of tie `curve` ends, along the stroke (world
+ *  units; negative: past it): the stroke's arc length less that of the tail's end, the 90th
+ *  percentile of the tie's strand tips projected on the stroke. */
+function shortOfStrokeEnd(h: Hair, curve: number, stroke: V3[]): number {
+  const arc = [0];
+  for (let k = 1; k < stroke.length; k++)
+    arc.push(
+      arc[k - 1] +
+        Math.hypot(
+          stroke[k][0] - stroke[k - 1][0],
+          stroke[k][1] - stroke[k - 1][1],
+          stroke[k][2] - stroke[k - 1][2],
+        ),
+    );
+  const along: number[] = [];
+  for (let s = 0; s + 1 < h.strandStart.length; s++) {
+    if (h.tailCurves[s] !== curve) continue;
+    const q = 3 * (h.strandStart[s + 1] - 1);
+    const tip = [h.points[q], h.points[q + 1], h.points[q + 2]];
+    let best = Infinity;
+    let at = 0;
+    for (let k = 0; k + 1 < stroke.length; k++) {
+      const a = stroke[k];
+      const d = [stroke[k + 1][0] - a[0], stroke[k + 1][1] - a[1], stroke[k + 1][2] - a[2]];
+      const l2 = d[0] ** 2 + d[1] ** 2 + d[2] ** 2;
+      const t =
+        l2 > 0
+          ? Math.max(
+              0,
+              Math.min(
+                1,
+                ((tip[0] - a[0]) * d[0] + (tip[1] - a[1]) * d[1] + (tip[2] - a[2]) * d[2]) / l2,
+              ),
+            )
+          : 0;
+      const e = Math.hypot(
+        tip[0] - a[0] - t * d[0],
+        tip[1] - a[1] - t * d[1],
+        tip[2] - a[2] - t * d[2],
+      );
+      if (e < best) {
+        best = e;
+        at = arc[k] + t * (arc[k + 1] - arc[k]);
+      }
+    }
+    along.push(at);
+  }
+  along.sort((a, b) => a - b);
+  return arc[arc.length - 1] - along[Math.floor(0.9 * (along.length - 1))];
+}
+
+test('a low ponytail in one stroke from the nape, and a braid drawn past the shoulder: each tail ends where its stroke ends at the default Max length', async ({
+  page,
+}) => {
+  test.setTimeout(120_000);
+  const s0 = await emptyHead(page);
+  await view(page, 'l', 'left');
+  await page.getByRole('button', { name: 'Ponytail' }).click();
+  const nape = await scalpAt(page, 100, 172);
+  await dragThrough(page, [
+    nape,
+    { x: nape.x + 25, y: nape.y + 30 },
+    { x: nape.x + 30, y: nape.y + 320 },
+  ]);
+  await curveCount(page, 1);
+  let s = await settled(page, s0.revision);
+  let curves = ((await page.evaluate(() => window.hairsketch.session())) as { curves: Tie[] })
+    .curves;
+  let h = await hair(page);
+  const low = shortOfStrokeEnd(h, 0, curves[0].points);
+  const lowShare = h.tailCurves.filter((t) => t === 0).length / h.tailCurves.length;
+  console.log(
+    `low ponytail: ${(100 * lowShare).toFixed(1)} % of the strands gathered; the tail ends ${(10 * low).toFixed(1)} cm short of its stroke's end`,
+  );
+  await page.getByRole('button', { name: 'Stream curve' }).click();
+  await shoot(page, 'ties-low-ponytail', 'bust');
+  expect(lowShare).toBeGreaterThan(0.95);
+  expect(Math.abs(low)).toBeLessThanOrEqual(0.2);
+  // undo it; a braid from the side of the crown down past the shoulder
+  await page.keyboard.press('Control+z');
+  await curveCount(page, 0);
+  s = await settled(page, s.revision);
+  await view(page, 'l', 'left');
+  await page.getByRole('button', { name: 'Braid' }).click();
+  const crown = await scalpAt(page, 50, 120);
+  await dragThrough(page, [
+    crown,
+    { x: crown.x + 40, y: crown.y + 120 },
+    { x: crown.x + 50, y: crown.y + 400 },
+  ]);
+  await curveCount(page, 1);
+  await settled(page, s.revision);
+  curves = ((await page.evaluate(() => window.hairsketch.session())) as { curves: Tie[] }).curves;
+  h = await hair(page);
+  const braid = shortOfStrokeEnd(h, 0, curves[0].points);
+  const end = curves[0].points[curves[0].points.length - 1];
+  console.log(
+    `braid: its stroke ends at y = ${(10 * end[1]).toFixed(1)} cm; the braid ends ${(10 * braid).toFixed(1)} cm short of it`,
+  );
+  await page.getByRole('button', { name: 'Stream curve' }).click();
+  await shoot(page, 'ties-braid', 'bust');
+  expect(Math.abs(braid)).toBeLessThanOrEqual(0.2);
+});
+
+test('pigtails: Mirror and one ponytail stroke from behind an ear; each gathers its side, and Undo, Redo and the link keep them', async ({
+  page,
+}) => {
+  test.setTimeout(120_000);
+  const s0 = await emptyHead(page);
+  await page.getByRole('button', { name: 'Mirror' }).click();
+  await view(page, 'Shift+F', 'back');
+  await page.getByRole('button', { name: 'Ponytail' }).click();
+  const behind = await scalpAt(page, 80, 120);
+  await dragThrough(page, [
+    behind,
+    { x: behind.x + 60, y: behind.y + 20 },
+    { x: behind.x + 80, y: behind.y + 250 },
+  ]);
+  await curveCount(page, 2);
+  const s = await settled(page, s0.revision);
+  const h = await hair(page);
+  const sides = [0, 1].map((c) => {
+    let mine = 0;
+    let taken = 0;
+    const rs = roots(h);
+    const x0 = rs.filter((_, i) => h.tailCurves[i] === c).reduce((m, r) => m + r[0], 0);
+    rs.forEach((r, i) => {
+      if (Math.abs(r[0]) < 0.1 || Math.sign(r[0]) !== Math.sign(x0)) return;
+      mine++;
+      if (h.tailCurves[i] === c) taken++;
+    });
+    return taken / mine;
+  });
+  console.log(
+    `pigtails: ${sides.map((x) => `${(100 * x).toFixed(1)} %`).join(' and ')} of each side's strands in its tail`,
+  );
+  await page.getByRole('button', { name: 'Stream curve' }).click();
+  await shoot(page, 'ties-pigtails', 'bust');
+  for (const x of sides) expect(x).toBeGreaterThanOrEqual(0.95);
+  // Undo takes both away, Redo brings back the same hair, the link reopens it
+  const hash = await page.evaluate(() => window.hairsketch.hairHash());
+  await page.keyboard.press('Control+z');
+  await curveCount(page, 0);
+  const undone = await settled(page, s.revision);
+  await page.keyboard.press('Control+Shift+z');
+  await curveCount(page, 2);
+  await settled(page, undone.revision);
+  expect(await page.evaluate(() => window.hairsketch.hairHash())).toBe(hash);
+  await page.waitForFunction(() => window.location.hash.startsWith('#s='));
+  const link = await page.evaluate(() => window.location.href);
+  await page.goto('about:blank');
+  await page.goto(link);
+  await settled(page);
+  await curveCount(page, 2);
+  expect(await page.evaluate(() => window.hairsketch.hairHash())).toBe(hash);
+});

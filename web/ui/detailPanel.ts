@@ -39,12 +39,20 @@ export const VOLUME_RANGE_CM = {
   step: SESSION_SETTINGS.volume.quantum * 10,
 };
 
-/** Which rule sets the length of hair no stroke ends (shown under Max length). */
-export function lengthRule(s: Pick<SessionState, 'shape' | 'fall' | 'curves'>): string {
+/** Which rule sets the length of hair no stroke ends (shown under Max length); with ties from
+ *  any hand, also that a ponytail's or braid's hair reaches its stroke's end. */
+export function lengthRule(s: Pick<SessionState, 'shape' | 'fall' | 'curves' | 'ties'>): string {
+  // a tie along a spine (it has a supporting surface: ponytails, braids; a bun lies on the head)
+  const spineTie = (c: SessionState['curves'][number]) =>
+    defOf(c).role === 'tie' && defOf(c).surface(c) !== null;
+  const ties =
+    s.ties && s.fall && s.curves.some(spineTie)
+      ? ' Ponytails and braids: their hair reaches the end of their stroke, whatever Max length says.'
+      : '';
   if (!s.fall) return 'Length: the strokes alone (the paper’s method).';
   if (!s.shape || !s.curves.some((c) => defOf(c).role === 'flow'))
-    return 'Length: hair no stroke ends grows to Max length.';
-  return 'Length: hair no stroke ends is as long as the strokes near it (at most Max length; a stroke extended off the head counts as Max length).';
+    return `Length: hair no stroke ends grows to Max length.${ties}`;
+  return `Length: hair no stroke ends is as long as the strokes near it (at most Max length; a stroke extended off the head counts as Max length).${ties}`;
 }
 
 /** The strand count the panel shows for a session's growth (before its cap). */
