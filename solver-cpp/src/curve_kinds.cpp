@@ -20,7 +20,8 @@ Status streamConstraints(const Grid& g, const KindCurve& k, const std::string& w
                          std::vector<Constraint>& raw, std::vector<ConstraintColour>* rc) {
   const size_t pn = k.paramCount;
   const double* prm = k.params;
-  if (pn != kStreamParamCount)
+  // none (a caller that knows no parameters: every one at its default) or all of them
+  if (pn != 0 && pn != kStreamParamCount)
     return Status::Error(StatusCode::InvalidInput, who + " must have " +
                                                        std::to_string(kStreamParamCount) +
                                                        " parameters, has " + std::to_string(pn));
@@ -28,6 +29,8 @@ Status streamConstraints(const Grid& g, const KindCurve& k, const std::string& w
     if (!std::isfinite(prm[i]))
       return Status::Error(StatusCode::NonFinite,
                            who + ": parameter " + std::to_string(i) + " is not finite");
+  if (pn && (prm[kStreamParamVolume] < 0 || prm[kStreamParamVolume] > 0.3))
+    return Status::Error(StatusCode::InvalidInput, who + ": volume must be within 0..0.3");
   appendStreamConstraints(g, k.points, k.count, k.extend, raw, rc, pn ? prm : nullptr);
   return Status::Ok();
 }

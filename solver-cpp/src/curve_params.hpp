@@ -9,8 +9,9 @@
 
 namespace hairsketch {
 
-// Stream curves (S4.1): none yet.
-enum StreamParam : size_t { kStreamParamCount };
+// Stream curves (S4.1): the curve's own Volume (world units; 0: none, the session's Volume
+// applies; with the shape rules the hair around it stands off the head by this much).
+enum StreamParam : size_t { kStreamParamVolume, kStreamParamCount };
 
 // Dividing curves (S4.5): sigma, h in grid steps; alpha0, alpha1 in radians. Then 3 per point.
 enum DividingParam : size_t {

@@ -59,6 +59,17 @@ float strokeLift(const HeadDistance& head, const double* q) {
   }
   return kOverReach;
 }
+
+// Curve c's own Volume (ReachCurve::volume): a stream curve's Volume parameter when it is set
+// (above 0), else none (-1).
+float ownVolume(const CurveSetView& v, size_t c) {
+  if (!v.kinds || CurveKindCode(v.kinds[c]) != CurveKindCode::Stream || !v.params || !v.paramStart)
+    return -1.f;
+  const uint32_t a = v.paramStart[c], b = v.paramStart[c + 1];
+  if (b < a + kStreamParamCount) return -1.f;
+  const double vol = v.params[a + kStreamParamVolume];
+  return vol > 0 ? float(vol) : -1.f;
+}
 }  // namespace
 
 Status HairEngine::setCurves(const CurveSetView& curves) {
@@ -196,7 +207,7 @@ Status HairEngine::setCurves(const CurveSetView& curves) {
         if (b <= a || b > fv.pointCount) continue;
         rc.push_back({fv.points + 3 * a, b - a, fv.extend && fv.extend[c] != 0,
                       fv.offScalp ? fv.offScalp + a : nullptr, kind->tail == nullptr,
-                      lift.empty() ? nullptr : lift.data() + a});
+                      lift.empty() ? nullptr : lift.data() + a, ownVolume(fv, c)});
       }
     std::vector<uint8_t> noExtension(fv.curveCount, 0);
     CurveSetView view = fv;
@@ -217,6 +228,7 @@ Status HairEngine::setCurves(const CurveSetView& curves) {
         mix(c.points, 3 * c.count * sizeof(double));
         mix(&c.growsOn, sizeof(bool));
         mix(&c.setsLength, sizeof(bool));
+        mix(&c.volume, sizeof(float));
         if (c.lift) mix(c.lift, c.count * sizeof(float));
         if (c.offScalp) mix(c.offScalp, c.count);
         auto found = std::find_if(footprints_.begin(), footprints_.end(),

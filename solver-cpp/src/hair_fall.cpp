@@ -137,6 +137,7 @@ void curveFootprint(const Grid& g, const ReachCurve& c, CurveFootprint& out) {
   // a stroke that ends on the scalp combs on, but its length is what it says for the hair
   // around it (a short slicked back stays short); one extended off the head grows to the maximum
   const bool combs = c.growsOn && c.offScalp && !c.offScalp[c.count - 1];
+  out.volume = c.volume;
   if (c.setsLength)
     out.stroke = {float(q[0]), float(q[1]), float(q[2]), float(L), c.growsOn && !combs};
   size_t lastSeg = c.count - 2;
@@ -263,6 +264,28 @@ void combineReach(const Grid& g, const std::vector<const CurveFootprint*>& curve
   out.strokes.clear();
   for (const CurveFootprint* c : curves)
     if (c->stroke.length > 0) out.strokes.push_back(c->stroke);
+  // curves' own Volumes: each holds near its curve, blended where several reach
+  out.ownVolumeWeight.clear();
+  out.ownVolume.clear();
+  bool anyOwn = false;
+  for (const CurveFootprint* c : curves) anyOwn |= c->volume >= 0;
+  if (!anyOwn) return;
+  std::vector<double> sumV(n, 0), sumVW(n, 0);
+  out.ownVolumeWeight.assign(n, 0.f);
+  out.ownVolume.assign(n, 0.f);
+  for (const CurveFootprint* c : curves) {
+    if (!(c->volume >= 0)) continue;
+    for (size_t e = 0; e < c->index.size(); ++e) {
+      const size_t p = size_t(c->index[e]);
+      const double w = 1 - smoothstep(kOwnVolumeNear, kOwnVolumeFar, c->distance[e]);
+      if (!(w > 0)) continue;
+      sumV[p] += w * c->volume;
+      sumVW[p] += w;
+      out.ownVolumeWeight[p] = std::max(out.ownVolumeWeight[p], float(w));
+    }
+  }
+  for (size_t p = 0; p < n; ++p)
+    if (sumVW[p] > 0) out.ownVolume[p] = float(sumV[p] / sumVW[p]);
 }
 
 float lengthAround(const std::vector<StrokeLength>& strokes, const float p[3], float maxLength) {

@@ -93,6 +93,9 @@ struct ReachCurve {
   // Per point (count entries, or null: on the head): how far the point is from the head (world
   // units), for the shape rules (governed hair stands off no farther than its stroke).
   const float* lift = nullptr;
+  // The curve's own Volume (world units; below 0: none, the session's applies), for the shape
+  // rules: the hair around it stands off the head by this much instead (OwnVolume).
+  float volume = -1;
 };
 
 // The reach lattice for a solver grid: the same box, cells of max(step, kReachCell).
@@ -109,6 +112,9 @@ struct StrokeLength {
 // Within kGovernNear of a curve the hair is the stroke's (it may stand off the head as the
 // stroke does); past kGovernFar from every curve the shape rules lay it on the head.
 constexpr double kGovernNear = 0.1, kGovernFar = 0.25;
+// A curve's own Volume holds within kOwnVolumeNear of it and fades out by kOwnVolumeFar, where the
+// session's Volume takes over (a stroke's reach of a few centimetres, as its pull has).
+constexpr double kOwnVolumeNear = 0.3, kOwnVolumeFar = 0.6;
 
 struct CurveReach {
   Grid grid;                       // the reach lattice
@@ -121,6 +127,10 @@ struct CurveReach {
   std::vector<float> nearest;      // per lattice point: the distance to the nearest curve
   std::vector<float> tangent;      // 3 per lattice point: the nearest curve's direction there
   std::vector<float> toCurve;      // 3 per lattice point: from it to the nearest curve point
+  // Per lattice point, only when a curve has its own Volume: how far that Volume holds there
+  // (1 within kOwnVolumeNear .. 0 past kOwnVolumeFar of every such curve) and its value (the
+  // curves' values blended by those weights).
+  std::vector<float> ownVolumeWeight, ownVolume;
   std::vector<StrokeLength> strokes;  // the curves' lengths, in curve order
   bool empty() const { return remaining.empty(); }
   void clear() {
@@ -133,6 +143,8 @@ struct CurveReach {
     nearest.clear();
     tangent.clear();
     toCurve.clear();
+    ownVolumeWeight.clear();
+    ownVolume.clear();
     strokes.clear();
   }
 };
@@ -205,6 +217,7 @@ struct CurveFootprint {
   std::vector<float> tangent;  // 3 each: the curve's direction at the closest point
   std::vector<float> toCurve;  // 3 each: from the lattice point to the closest point
   bool growsOn = false;
+  float volume = -1;  // the curve's own Volume (ReachCurve::volume)
   StrokeLength stroke;
 };
 void curveFootprint(const Grid& lattice, const ReachCurve& curve, CurveFootprint& out);

@@ -38,7 +38,8 @@ float ShapeGrowth::distanceOff(const float p[3], float nrm[3], float hint) const
 }
 
 ShapeGrowth::Lay ShapeGrowth::layOnHead(const float x[3], float n[3], double& segLen, double arc,
-                                        float gov, float lift, float& dist, float nrm[3]) const {
+                                        float gov, float lift, float& dist, float nrm[3],
+                                        float ownWeight, float ownVolume) const {
   const float keep = 1.f - gov;
   bool held = true;
   const float dx = distanceOff(x, nrm, dist);
@@ -56,9 +57,10 @@ ShapeGrowth::Lay ShapeGrowth::layOnHead(const float x[3], float n[3], double& se
   }
   // the standoff: the volume reached over the first length, and hair that has come farther
   // over the head lying on top of the hair rooted where it passes (kLayerSlope)
-  const float want = margin + std::min(volume, kVolumeRise * float(arc)) +
+  const float vol = volume + ownWeight * (ownVolume - volume);
+  const float want = margin + std::min(vol, kVolumeRise * float(arc)) +
                      std::min(kLayerMax, kLayerSlope * float(arc));
-  const float cap = margin + kLiftSlack + lift;
+  const float cap = margin + kLiftSlack + std::max(lift, ownWeight * (want - margin));
   float st[3] = {n[0] - x[0], n[1] - x[1], n[2] - x[2]};
   const float dn = dist + st[0] * nrm[0] + st[1] * nrm[1] + st[2] * nrm[2];
   if (dn > std::max(want, cap) + kLayReach) return Lay::Free;
@@ -67,7 +69,9 @@ ShapeGrowth::Lay ShapeGrowth::layOnHead(const float x[3], float n[3], double& se
   // than the stroke
   const float toWant = held ? std::clamp(want - dn, -step, step) : 0.f;
   const float toCap = std::clamp(cap - dn, -step, 0.f);
-  const float delta = keep * toWant + gov * toCap;
+  // a curve's own Volume lifts the hair it governs too (up to its standoff)
+  const float toOwn = held ? ownWeight * std::clamp(want - dn, 0.f, step) : 0.f;
+  const float delta = keep * toWant + gov * (toCap + toOwn);
   for (int k = 0; k < 3; ++k) st[k] += delta * nrm[k];
   const float len = std::sqrt(st[0] * st[0] + st[1] * st[1] + st[2] * st[2]);
   if (!(len > 1e-3f * step)) return Lay::Laid;

@@ -25,14 +25,16 @@ struct ShapeGrowth {
   // "Hair lies on the head": moves the step's end n (from x, of length segLen) along the head's
   // normal towards the strand's standoff (margin, the volume reached over the first length, and
   // kLayerSlope), no farther off than its stroke (lift + kLiftSlack) as far as a stroke governs it
-  // (gov), then back to the step's length; dist and nrm return the distance read at x. Anything
+  // (gov), then back to the step's length; dist and nrm return the distance read at x. A curve's
+  // own Volume (ownVolume, holding by ownWeight at the strand's root) replaces the session's, and
+  // lifts the hair that curve governs to its standoff too (a lifted bob, a pixie's crown). Anything
   // but Laid when the strand leaves the head's support: it is not laid again. Below the cranium's
   // widest part (the surface under it facing down past kSupportNormalY) it hangs from there
   // (Hangs), and off the scalp (an ear; not in the face's column, where it parts round the face)
   // too (Over); taken farther than kLayReach off by the field it follows the field (Free).
   enum class Lay { Laid, Hangs, Over, Free };
   Lay layOnHead(const float x[3], float n[3], double& segLen, double arc, float gov, float lift,
-                float& dist, float nrm[3]) const;
+                float& dist, float nrm[3], float ownWeight = 0, float ownVolume = 0) const;
 
   // "The face stays open": a step of hair no stroke governs or combs (gov below 0.5) that ends in
   // the face's column turns to the nearer side (its horizontal part sideways, at least as much as

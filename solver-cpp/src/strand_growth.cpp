@@ -241,6 +241,12 @@ struct GrowRange {
       }
       bool laying = shape && head, hanging = false, overEar = false;
       float layDist = 0, layNormal[3] = {0, 1, 0};
+      // a curve's own Volume at the root (weight, value): the strand's lift is that curve's
+      float own[2] = {0.f, 0.f};
+      if (shape && reach && !reach->ownVolume.empty() && s.inside(x, y, z)) {
+        const float* const arrays[2] = {reach->ownVolumeWeight.data(), reach->ownVolume.data()};
+        interpolateScalars(reach->grid, arrays, 2, x, y, z, own);
+      }
       // the point before (x, y, z), for the strand's direction when it slides over the body
       float px = x, py = y, pz = z;
       // a lower bound of the body's distance at (x, y, z) (the distance is 1-Lipschitz): the
@@ -316,8 +322,8 @@ struct GrowRange {
           if (laying) {
             const float at[3] = {x, y, z};
             float q[3] = {nx, ny, nz};
-            const ShapeGrowth::Lay lay =
-                shaped.layOnHead(at, q, segLen, length + segLen, gov, here[2], layDist, layNormal);
+            const ShapeGrowth::Lay lay = shaped.layOnHead(
+                at, q, segLen, length + segLen, gov, here[2], layDist, layNormal, own[0], own[1]);
             laying = lay == ShapeGrowth::Lay::Laid;
             hanging = lay == ShapeGrowth::Lay::Hangs || lay == ShapeGrowth::Lay::Over;
             overEar = lay == ShapeGrowth::Lay::Over;

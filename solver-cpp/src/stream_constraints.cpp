@@ -30,7 +30,7 @@ void claimCell(const Grid& g, const Eigen::Vector3d& m, const Eigen::Vector3d& t
 void appendStreamConstraints(const Grid& g, const double* pts, size_t count, bool extend,
                              std::vector<Constraint>& out, std::vector<ConstraintColour>* colours,
                              const double* params) {
-  (void)params;  // no stream parameters yet (curve_params.hpp)
+  (void)params;  // none shapes the constraints (Volume is read by the shape rules)
   Eigen::Vector3d lastTangent = Eigen::Vector3d::Zero();
   double lastLength = 0;
   for (size_t s = 0; s + 1 < count; ++s) {

@@ -23,7 +23,8 @@ constexpr int kStreamExtensionSegments = 4;
 // zero-length segments, are skipped. With extend, K segments continue the last tangent with the
 // last segment's length, targets m_k * tangent, m_k = 1 - k / K. colours (optional) receives one
 // entry per appended constraint: Blue for the curve, Red for the extension. params: the curve's
-// scalar parameters (curve_params.hpp StreamParam, kStreamParamCount numbers; none yet), or
+// scalar parameters (curve_params.hpp StreamParam, kStreamParamCount numbers; none shapes the
+// constraints: Volume is the shape rules'), or
 // nullptr for a stream without a block of its own (a ponytail's spine).
 void appendStreamConstraints(const Grid& grid, const double* points, size_t pointCount, bool extend,
                              std::vector<Constraint>& out,

@@ -13,6 +13,7 @@ import {
   fallOfUngoverned,
   napeLength,
   standOff,
+  standOffNear,
   widthAtEars,
 } from '../support/shapeMetrics';
 import { dragThrough, scalpAt, settled, shoot, status, strokeFromScalp } from './helpers';
@@ -228,4 +229,42 @@ test('Volume in the Hair panel lifts the roots by as much; the panel says what s
   await page.keyboard.press('Control+z');
   await settled(page, rev);
   await expect(input).toHaveValue('0.5');
+});
+
+test("a stream curve's own Volume (curve panel) lifts the hair it holds, not the rest", async ({
+  page,
+}) => {
+  let rev = await emptyHead(page, { view: 'l' });
+  await strokeFromScalp(page, 25, 90, 10, 230);
+  rev = (await settled(page, rev)).revision;
+  const cs = await curves(page);
+  const s0 = await strands(page);
+  const [nearBefore, farBefore] = [
+    standOffNear(s0, cs, 0.2, 0.7, 0.4),
+    standOff(s0, cs, 0.7, 0.7, 0.4),
+  ];
+  // the new curve is selected: its panel offers its own Volume
+  const input = page
+    .getByRole('region', { name: 'Curve parameters' })
+    .getByLabel('Own volume (cm)');
+  await input.click();
+  await page.keyboard.press('Control+A');
+  await page.keyboard.type('2');
+  await page.keyboard.press('Tab');
+  rev = (await settled(page, rev)).revision;
+  const s1 = await strands(page);
+  const [nearAfter, farAfter] = [
+    standOffNear(s1, cs, 0.2, 0.7, 0.4),
+    standOff(s1, cs, 0.7, 0.7, 0.4),
+  ];
+  console.log(
+    `own volume: the hair within 2 cm of the stroke ${(10 * nearBefore).toFixed(2)} -> ${(10 * nearAfter).toFixed(2)} cm off the head (4 to 7 cm along), the hair 7+ cm away ${(10 * farBefore).toFixed(2)} -> ${(10 * farAfter).toFixed(2)} cm`,
+  );
+  // from the Hair panel's 0.5 cm to the curve's 2 cm near it; the rest as it was
+  expect(nearAfter - nearBefore).toBeGreaterThan(0.1);
+  expect(Math.abs(farAfter - farBefore)).toBeLessThan(0.02);
+  expect(
+    ((await page.evaluate(() => window.hairsketch.session())) as { curves: { volume: number }[] })
+      .curves[0].volume,
+  ).toBe(0.2);
 });

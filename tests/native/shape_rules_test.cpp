@@ -132,6 +132,64 @@ TEST(ShapeGrowth, HairNoStrokeGovernsLiesOnTheHeadAtItsStandoff) {
   EXPECT_NEAR(median(dLift), float(gp.margin) + 0.15f, 0.02f);
 }
 
+// A curve's own Volume: the hair rooted near it stands off its volume farther (past the rise),
+// the hair 6+ cm away as with the session's (0 here), and without the curve's Volume the hair
+// near it lies as the rest does.
+TEST(ShapeGrowth, ACurvesOwnVolumeLiftsTheHairAroundItOnly) {
+  const SphereHead head;
+  const Grid g = boxGrid(41, -2, 2);
+  const std::vector<float> field = constantField(g, 0, 0, 1);
+  const std::vector<Eigen::Vector3f> roots = ring(0.8f, 25);
+  // a stroke lying on the sphere at azimuth -55 degrees, from polar angle 0.3 to 1.1
+  std::vector<double> pts;
+  for (int k = 0; k <= 16; ++k) {
+    const double t = 0.3 + 0.05 * k, a = -0.96;
+    pts.insert(pts.end(), {std::sin(t) * std::sin(a), std::cos(t), std::sin(t) * std::cos(a)});
+  }
+  GrowthParams gp;
+  gp.maxLength = 0.6;
+  ShapeRules rules;
+  rules.on = true;
+  auto grow = [&](float volume) {
+    ReachCurve rc;
+    rc.points = pts.data();
+    rc.count = pts.size() / 3;
+    rc.growsOn = true;
+    rc.volume = volume;
+    CurveReach reach;
+    buildCurveReach(g, {rc}, reach);
+    EXPECT_EQ(reach.ownVolume.empty(), volume < 0);
+    Strands st;
+    EXPECT_TRUE(growStrands(g, field, roots, gp, st, 1 << 20, &head.distance, &reach,
+                            BodyCollider(), &rules)
+                    .ok());
+    // past the rise, by the root's distance from the stroke's nearest point
+    std::vector<float> nearD, farD;
+    for (size_t s = 0; s < roots.size(); ++s) {
+      double best = 1e9;
+      for (size_t k = 0; k < rc.count; ++k)
+        best = std::min(best, (roots[s].cast<double>() -
+                               Eigen::Vector3d(pts[3 * k], pts[3 * k + 1], pts[3 * k + 2]))
+                                  .norm());
+      const std::vector<float> all = standOff(st, s, 0.6f);
+      std::vector<float>& into = best < 0.15 ? nearD : best > 0.65 ? farD : nearD;
+      if (best >= 0.15 && best <= 0.65) continue;
+      into.insert(into.end(), all.begin() + std::ptrdiff_t(all.size() * 2 / 3), all.end());
+    }
+    EXPECT_FALSE(nearD.empty());
+    EXPECT_FALSE(farD.empty());
+    return std::make_pair(median(nearD), median(farD));
+  };
+  // (all at the margin plus the layering kLayerSlope adds over the head: compared with each
+  // other)
+  const auto [nearOwn, farOwn] = grow(0.15f);
+  const auto [nearNone, farNone] = grow(-1.f);
+  EXPECT_NEAR(nearOwn - nearNone, 0.15f, 0.03f);
+  EXPECT_NEAR(farOwn, farNone, 0.003f);
+  EXPECT_NEAR(nearNone, farNone, 0.01f);
+  EXPECT_NEAR(farNone, float(gp.margin), 0.02f);
+}
+
 TEST(ShapeGrowth, HairBelowTheWidestPartHangsAndAStrokeKeepsItsOwnHair) {
   const SphereHead head;
   const Grid g = boxGrid(41, -2, 2);

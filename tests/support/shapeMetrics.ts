@@ -85,6 +85,26 @@ export function standOff(s: StrandSet, cs: readonly CurveLike[], within = 0.3, f
   return median(d);
 }
 
+/** The same for the strands rooted within `near` of a curve's point (the hair a stroke holds). */
+export function standOffNear(
+  s: StrandSet,
+  cs: readonly CurveLike[],
+  near: number,
+  within = 0.3,
+  from = 0,
+) {
+  const d: number[] = [];
+  eachStrand(s, (pts) => {
+    if (ungoverned(pts[0], cs, near)) return;
+    let len = 0;
+    for (let i = 1; i < pts.length && len < within; i++) {
+      len += dist(pts[i], pts[i - 1]);
+      if (len >= from) d.push(headSdf(pts[i][0], pts[i][1], pts[i][2]));
+    }
+  });
+  return median(d);
+}
+
 /** Share of strands with a point in front of the face from the brows to the mouth. */
 export function faceShare(s: StrandSet): number {
   let over = 0;

@@ -18,6 +18,7 @@ const stroke = (points: Vec3[], extend = false): StyleCurve => ({
   points,
   extend,
   viewpoint: vp,
+  volume: 0,
 });
 
 describe('lengthenSession', () => {

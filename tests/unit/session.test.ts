@@ -80,19 +80,19 @@ describe('session with every curve kind', () => {
     ]);
     expect(Array.from(set.curveStart)).toEqual([0, 2, 5, 7]);
     expect(Array.from(set.extend)).toEqual([1, 0, 0]);
-    // stream: no params; dividing: 4 + 3 per point; ponytail: 2 + 7 per circle
-    expect(Array.from(set.paramStart)).toEqual([0, 0, 13, 13 + 16]);
-    expect(Array.from(set.params.slice(0, 13))).toEqual([
-      1, 0.5, 0.1, -0.2, 0, 1, 0, 0, 1, 0, 0, 0.6, 0.8,
+    // stream: its Volume (0: none); dividing: 4 + 3 per point; ponytail: 2 + 7 per circle
+    expect(Array.from(set.paramStart)).toEqual([0, 1, 14, 14 + 16]);
+    expect(Array.from(set.params.slice(0, 14))).toEqual([
+      0, 1, 0.5, 0.1, -0.2, 0, 1, 0, 0, 1, 0, 0, 0.6, 0.8,
     ]);
-    expect(Array.from(set.params.slice(13))).toEqual([
+    expect(Array.from(set.params.slice(14))).toEqual([
       0.6, 2, 0, 0.5, -1, 0, -1, 0, 0.2, 0, 0.4, -1.1, 0, -1, 0, 0.1,
     ]);
     expect(Array.from(set.extraIndex)).toEqual([5, 9]);
     expect(Array.from(set.extraTarget)).toEqual([1, 2, 3, 4, 5, 6]);
     const none = packCurves([stream]);
     expect(none.extraIndex.length).toBe(0);
-    expect(Array.from(none.paramStart)).toEqual([0, 0]);
+    expect(Array.from(none.paramStart)).toEqual([0, 1]);
   });
 
   it('edits curves immutably and undoes every edit', () => {

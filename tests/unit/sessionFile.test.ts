@@ -36,6 +36,7 @@ function sample(): SessionState {
         extend: true,
         viewpoint: vp,
         surfaceMode: 'strip',
+        volume: 0,
       },
       {
         id: 'c2',

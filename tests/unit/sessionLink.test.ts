@@ -277,7 +277,16 @@ describe('version 2 links made before session version 2 (constraints in the avoi
 
   it('open as version 1 sessions with avoidScalp on', async () => {
     // the bust and the colour model would go in the JSON tail
-    const { bust: _b, hairLook: _l, ...s } = presetSession('fig7', head);
+    // (and the streams' own Volume, a parameter version 2 cannot hold)
+    const { bust: _b, hairLook: _l, ...p } = presetSession('fig7', head);
+    const s = {
+      ...p,
+      curves: p.curves.map((c) => {
+        if (c.type !== 'stream') return c;
+        const { volume: _v, ...rest } = c;
+        return rest as typeof c;
+      }),
+    };
     const body = packSession(s, 2);
     // no tail: the body ends with the avoid slot (0), the tail length (0) and the CRC
     const before = body.subarray(0, body.length - 6);

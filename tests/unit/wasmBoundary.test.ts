@@ -256,12 +256,13 @@ describe('curve parameters from CURVE_PARAMS', () => {
       section: 1,
     },
   ];
-  /** The blocks as they were written by hand before the table: dividing [sigma, h, alpha0,
-   *  alpha1, normals...], ponytail [tightness, m, (centre, axis, radius) per circle]. */
+  /** The blocks as they were written by hand before the table: stream [volume] (0: none),
+   *  dividing [sigma, h, alpha0, alpha1, normals...], ponytail [tightness, m, (centre, axis,
+   *  radius) per circle]. */
   function handPacked(sigma: number, h: number, a0: number, a1: number, t: number): number[] {
     const div = [sigma, h, a0, a1, ...normals(6).flat()];
     const pony = [t, 2, ...circles.flatMap((c) => [...c.centre, ...c.axis, c.radius])];
-    return [...div, ...pony];
+    return [0, ...div, ...pony];
   }
   const cases: Array<[number, number, number, number, number]> = [
     [1, 0.5, 0, 0, 0.6],
@@ -273,7 +274,7 @@ describe('curve parameters from CURVE_PARAMS', () => {
     for (const c of cases) {
       const packed = packCurves(session(...c));
       expect(Array.from(packed.params)).toEqual(handPacked(...c));
-      expect(Array.from(packed.paramStart)).toEqual([0, 0, 4 + 18, 4 + 18 + 16]);
+      expect(Array.from(packed.paramStart)).toEqual([0, 1, 1 + 4 + 18, 1 + 4 + 18 + 16]);
     }
     expect(CURVE_PARAMS.dividing.map((p) => p.name)).toEqual(['sigma', 'h', 'alpha0', 'alpha1']);
   });

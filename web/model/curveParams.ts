@@ -50,8 +50,20 @@ const GATHER_SECTION = {
  *  has the same order). Adding one: a row at the end of its kind (links store the rows in this
  *  order, so never insert or reorder), its index in curve_params.hpp, and the C++ that reads it. */
 export const CURVE_PARAMS = {
-  /** S4.1: none yet. */
-  stream: [],
+  /** S4.1. Its own Volume (with the shape rules: how far the hair around it stands off the head
+   *  at its roots, in place of the Hair panel's Volume; 0: the Hair panel's). */
+  stream: [
+    {
+      name: 'volume',
+      label: 'Own volume',
+      unit: 'cm',
+      default: 0,
+      min: 0,
+      max: 0.3,
+      quantum: 0.01,
+      view: { min: 0, max: 3, step: 0.5 },
+    },
+  ],
   /** S4.5: the parting's Gaussian profile (sigma, h) and tilt at both ends (alpha0, alpha1). */
   dividing: [
     {

@@ -28,6 +28,9 @@ export interface StreamCurve {
   viewpoint: Viewpoint;
   /** Supporting surface mode (S4.3); absent = 'ruled' (sessions made before the option). */
   surfaceMode?: SurfaceMode;
+  /** Its own Volume (curveParams.ts; world units, 0 to 0.3; 0: the Hair panel's). The reader
+   *  spells it out; a curve a tool makes may leave it out (0). */
+  volume?: number;
   /** Detail for the strands this curve governs (nearest curve at the root), instead of the
    *  session's. */
   detail?: HairDetail;
