@@ -103,6 +103,7 @@ export function buildHairPanel(
     lengthen: (by) => editor.run({ kind: 'lengthen', by }),
     setDetail: (curveId, detail) => editor.run({ kind: 'setDetail', curveId, detail }),
     setHairLook: (look) => editor.run({ kind: 'setHairLook', look }),
+    setBandColor: (color) => editor.run({ kind: 'setBandColor', color }),
     say: (m) => status.note(m),
   });
 }
