@@ -25,6 +25,7 @@ import { HairView } from '../viewer/hairView';
 import { createHeadMesh } from '../viewer/headMaterial';
 import { viewLabel } from '../viewer/namedViews';
 import { ReferencePlanes } from '../viewer/referencePlanes';
+import { TieBandView } from '../viewer/tieBandView';
 import { Viewer } from '../viewer/viewer';
 import { buildActions, NAMED_VIEWS } from './actions';
 import { ActiveTool } from './activeTool';
@@ -51,6 +52,7 @@ import { LinkWriter, openSessionFileOutcome } from './sessionIO';
 import { SolverBridge } from './solverBridge';
 import { StatusPresenter } from './statusPresenter';
 import { installTestApi } from './testApi';
+import { TieBandPresenter } from './tieBandPresenter';
 import { createTools } from './tools';
 import { parseUrlOptions } from './urlOptions';
 import { ViewStore } from './viewState';
@@ -141,6 +143,7 @@ export function startApp(): void {
     head: () => heads.head.mesh,
     hair,
   });
+  const bands = new TieBandPresenter(new TieBandView(viewer), editor);
   wireCardsView({ view, editor, hairView, statusElement: byId('status') });
   const overlays = new OverlayPresenter(viewer, editor, view, bridge.grid);
   const status = new StatusPresenter(line, bridge);
@@ -298,7 +301,7 @@ export function startApp(): void {
     detailPanel,
     showHeadPanel,
   });
-  showSolverResults({ bridge, hair, sectionTint, overlays, status, active });
+  showSolverResults({ bridge, hair, sectionTint, bands, overlays, status, active });
   const motion = new MotionPlayer({
     client: bridge.client,
     editor,

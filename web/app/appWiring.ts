@@ -13,6 +13,7 @@ import type { SectionTintPresenter } from './sectionTintPresenter';
 import { type LinkWriter, openSessionLinkOutcome } from './sessionIO';
 import type { SolverBridge } from './solverBridge';
 import type { StatusPresenter } from './statusPresenter';
+import type { TieBandPresenter } from './tieBandPresenter';
 
 /** The solver's news on screen: progress and errors in the status line, results to the hair,
  *  the section tint and the overlays, "Ready" once the converged hair is shown. */
@@ -20,16 +21,18 @@ export function showSolverResults(p: {
   bridge: SolverBridge;
   hair: HairPresenter;
   sectionTint: SectionTintPresenter;
+  bands: TieBandPresenter;
   overlays: OverlayPresenter;
   status: StatusPresenter;
   active: ActiveTool;
 }): void {
-  const { bridge, hair, sectionTint, overlays, status, active } = p;
+  const { bridge, hair, sectionTint, bands, overlays, status, active } = p;
   bridge.subscribe({
     busy: (phase, fraction, previewing) => status.busy(phase, fraction, previewing),
     result: (r, final) => {
       hair.result(r, final);
       sectionTint.update();
+      bands.hairShown(hair.strands);
       overlays.result(r);
       status.result(r, final);
       active.previewAnswered();
