@@ -51,8 +51,11 @@ function tailStrand(r: number, phi: number, tail: number) {
   return { pts, tail };
 }
 
-// C1 sketched 3 cm off the hair's axis: the band follows the hair, not the sketch
+// C1 sketched 3 cm off the hair's axis and tilted 20° from it (the spine stood out, the hair
+// fell): the band follows the hair, not the sketch
 const sketchCentre: Vec3 = [centre[0] + 0.3 * u[0], centre[1] + 0.3 * u[1], centre[2] + 0.3 * u[2]];
+const tilt = (20 * Math.PI) / 180;
+const tilted = norm([0, 1, 2].map((k) => Math.cos(tilt) * axis[k] + Math.sin(tilt) * w[k]) as Vec3);
 const ponytail = {
   id: 'c2',
   type: 'ponytail',
@@ -61,7 +64,7 @@ const ponytail = {
   viewpoint: { position: [0, 0, 5], target: [0, 0, 0] },
   crossSection: [],
   profiles: [[], []],
-  circles: [{ centre: sketchCentre, axis, radius: 0.5, spineIndex: 0 }],
+  circles: [{ centre: sketchCentre, axis: tilted, radius: 0.5, spineIndex: 0 }],
   tightness: 0.5,
   section: 0,
 } as unknown as StyleCurve;
@@ -96,7 +99,7 @@ describe('tie bands', () => {
     expect(Math.abs(b.radius - (R + 0.015))).toBeLessThan(0.01);
     for (let k = 0; k < 3; k++) {
       expect(Math.abs(b.centre[k] - centre[k])).toBeLessThan(0.01);
-      expect(b.axis[k]).toBeCloseTo(axis[k], 9);
+      expect(b.axis[k]).toBeCloseTo(axis[k], 6);
     }
   });
 

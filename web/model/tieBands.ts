@@ -3,18 +3,18 @@
 // into meshes (tieBandMesh.ts), so what the user sees is what a file holds.
 //
 //  - Ponytail: the band sits on the first circle C1 (the spine's first circle: where the tail is
-//    gathered), its axis C1's axis.
+//    gathered).
 //  - Braid: at the gather, where the bundles leave the head. The solver finds it from the head
 //    (solver-cpp/src/braid_bun.hpp braidGatherIndex: the first stroke point off the scalp); the
 //    model has no head, so it reads the gather off the hair itself: the first stroke point whose
 //    plane nearly all of the braid's strands cross close together (within BRAID_GATHERED of the
-//    braid's width), which is where the solver starts the braid's circles. Axis: the stroke's
-//    tangent there.
+//    braid's width), which is where the solver starts the braid's circles.
 //  - Bun: none (its coil covers its base).
 // The band's radius is measured, not taken from the sketch, so it hugs the hair the growth
 // actually gathered: the distance from the centre that holds BAND_SHARE of the tie's strands
-// where they cross the band's plane, plus BAND_MARGIN. The centre is the mean of those crossings
-// (a tail hangs a little off its sketched circle). A tie that holds no strands gets no band;
+// where they cross the band's plane, plus BAND_MARGIN. Its centre and axis too: the mean of
+// those crossings and of the strands' directions there (a tail hangs off its sketched circle
+// and along the fall, not always along the sketched spine). A tie that holds no strands gets no band;
 // sessions without `ties` get none, so they look as they always did.
 import type { StrandArrays } from './hairArrays';
 import { polylineTangents } from './ponytailGeometry';
@@ -87,37 +87,59 @@ function bandOf(c: StyleCurve, i: number, own: number[], strands: Strands): TieB
   return null;
 }
 
-/** The band on the plane through `at` normal to `axis`, centred on the strands' crossings. */
-function fitBand(i: number, at: Vec3, axis: Vec3, own: number[], strands: Strands): TieBand | null {
-  const crossings = planeCrossings(at, axis, own, strands);
-  if (crossings.length === 0) return null;
-  // the centre from the crossings near the band only, so strays do not pull it off the tail
-  // (half as far again as the band: a cut at the band itself would drop one side's outermost
-  // strands and pull the centre to the other); a few rounds, as the sketched point may lie off
-  // the hair and let strays in at first
+/** The band on the plane through `at` normal to `sketched` (the tail's sketched direction),
+ *  turned to the strands' own direction and centred on their crossings. */
+function fitBand(
+  i: number,
+  at: Vec3,
+  sketched: Vec3,
+  own: number[],
+  strands: Strands,
+): TieBand | null {
+  // the hair hangs where it will (natural fall), not always along the sketched spine: the axis is
+  // the strands' mean direction where they cross, the centre their crossings' mean; both from
+  // the crossings near the band only, so strays do not pull them off the tail (half as far
+  // again as the band: a cut at the band itself would drop one side's outermost strands and pull
+  // the centre to the other). A few rounds, as the sketched point may lie off the hair and let
+  // strays in at first.
   let centre = at;
+  let axis = sketched;
   for (let round = 0; round < 4; round++) {
+    const crossings = planeCrossings(centre, axis, own, strands);
+    if (crossings.length === 0) return null;
     const reach = 1.5 * shareRadius(crossings, centre);
     let sum: Vec3 = [0, 0, 0];
+    let along: Vec3 = [0, 0, 0];
     let n = 0;
-    for (const p of crossings)
-      if (length(sub(p, centre)) <= reach) {
-        sum = add(sum, p);
+    for (const c of crossings)
+      if (length(sub(c.at, centre)) <= reach) {
+        sum = add(sum, c.at);
+        along = add(along, c.along);
         n++;
       }
-    if (n > 0) centre = scale(sum, 1 / n);
+    if (n === 0) break;
+    centre = scale(sum, 1 / n);
+    if (length(along) > 0) axis = normalize(along);
   }
+  const crossings = planeCrossings(centre, axis, own, strands);
+  if (crossings.length === 0) return null;
   return { curve: i, centre, axis, radius: shareRadius(crossings, centre) + BAND_MARGIN };
+}
+
+interface Crossing {
+  at: Vec3;
+  /** The strand's unit direction there, turned along the plane's normal. */
+  along: Vec3;
 }
 
 /** Per strand, where it crosses the plane (point `at`, unit normal `axis`): the crossing nearest
  *  `at` when it crosses more than once (a curl, a strand turning back up), none when it does not. */
-function planeCrossings(at: Vec3, axis: Vec3, own: number[], strands: Strands): Vec3[] {
+function planeCrossings(at: Vec3, axis: Vec3, own: number[], strands: Strands): Crossing[] {
   const { points: P, strandStart } = strands;
-  const out: Vec3[] = [];
+  const out: Crossing[] = [];
   const point = (q: number): Vec3 => [P[3 * q], P[3 * q + 1], P[3 * q + 2]];
   for (const s of own) {
-    let best: Vec3 | null = null;
+    let best: Crossing | null = null;
     let bestD = Number.POSITIVE_INFINITY;
     let a = point(strandStart[s]);
     let da = dot(sub(a, at), axis);
@@ -129,7 +151,8 @@ function planeCrossings(at: Vec3, axis: Vec3, own: number[], strands: Strands): 
         const d = length(sub(x, at));
         if (d < bestD) {
           bestD = d;
-          best = x;
+          const dir = normalize(sub(b, a));
+          best = { at: x, along: db > da ? dir : scale(dir, -1) };
         }
       }
       a = b;
@@ -141,7 +164,7 @@ function planeCrossings(at: Vec3, axis: Vec3, own: number[], strands: Strands): 
 }
 
 /** The distance from `centre` within which BAND_SHARE of the points lie. */
-function shareRadius(points: readonly Vec3[], centre: Vec3): number {
-  const d = points.map((p) => length(sub(p, centre))).sort((x, y) => x - y);
+function shareRadius(crossings: readonly Crossing[], centre: Vec3): number {
+  const d = crossings.map((c) => length(sub(c.at, centre))).sort((x, y) => x - y);
   return d[Math.min(d.length - 1, Math.max(0, Math.ceil(BAND_SHARE * d.length) - 1))] ?? 0;
 }
