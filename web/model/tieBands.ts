@@ -6,16 +6,18 @@
 //    gathered).
 //  - Braid: at the gather, where the bundles leave the head. The solver finds it from the head
 //    (solver-cpp/src/braid_bun.hpp braidGatherIndex: the first stroke point off the scalp); the
-//    model has no head, so it reads the gather off the hair itself: the first stroke point whose
-//    plane nearly all of the braid's strands cross close together (within BRAID_GATHERED of the
-//    braid's width), which is where the solver starts the braid's circles.
+//    model has no head, so it reads the gather off the hair itself (braidGather): where the
+//    stroke points whose planes nearly all of the braid's strands cross close together (within
+//    BRAID_GATHERED of the braid's width) begin for good, which is where the solver starts the
+//    braid's circles.
 //  - Bun: none (its coil covers its base).
 // The band's radius is measured, not taken from the sketch, so it hugs the hair the growth
 // actually gathered: the distance from the centre that holds BAND_SHARE of the tie's strands
 // where they cross the band's plane, plus BAND_MARGIN. Its centre and axis too: the mean of
-// those crossings and of the strands' directions there (a tail hangs off its sketched circle
-// and along the fall, not always along the sketched spine). A tie that holds no strands gets no band;
-// sessions without `ties` get none, so they look as they always did.
+// those crossings, and the way that mean moves a little further along the strands (a tail hangs
+// off its sketched circle and along the fall, not always along the sketched spine). A tie that
+// holds no strands gets no band; sessions without `ties` get none, so they look as they always
+// did.
 import type { StrandArrays } from './hairArrays';
 import { polylineTangents } from './ponytailGeometry';
 import type { SessionState, StyleCurve } from './session';
@@ -35,9 +37,9 @@ export interface TieBand {
 export const BAND_SHARE = 0.95;
 /** Room between the hair and the band, world units (1.5 mm). */
 export const BAND_MARGIN = 0.015;
-/** A braid's gather: its crossings within this many widths of the stroke (its circles' radius
- *  is half the width; the bundles bulge a little past it). */
-const BRAID_GATHERED = 0.75;
+/** A braid is gathered where BAND_SHARE of its crossings lie within this many widths of their
+ *  centre (its circles' radius is half the width; the bundles bulge a little past it). */
+const BRAID_GATHERED = 0.6;
 /** … crossed by at least this share of the braid's strands. */
 const BRAID_CROSSING = 0.8;
 
@@ -74,21 +76,53 @@ function bandOf(c: StyleCurve, i: number, own: number[], strands: Strands): TieB
     return c1 ? fitBand(i, c1.centre, normalize(c1.axis), own, strands) : null;
   }
   if (c.type === 'braid') {
-    const tangents = polylineTangents(c.points);
-    for (let k = 0; k < c.points.length; k++) {
-      const axis = tangents[k];
-      if (length(axis) === 0) continue;
-      const crossings = planeCrossings(c.points[k], axis, own, strands);
-      if (crossings.length < BRAID_CROSSING * own.length) continue;
-      if (shareRadius(crossings, c.points[k]) > BRAID_GATHERED * c.width) continue;
-      return fitBand(i, c.points[k], axis, own, strands);
-    }
+    const k = braidGather(c.points, c.width, own, strands);
+    return k < 0 ? null : fitBand(i, c.points[k], polylineTangents(c.points)[k], own, strands);
   }
   return null;
 }
 
+/** The stroke point where the braid's hair comes together: the first of the stroke's last run of
+ *  gathered points (nearly all its strands cross the point's plane, BAND_SHARE of them within
+ *  BRAID_GATHERED widths of their centre). Read from the tip's side: near the scalp the
+ *  strands can pass close by a stroke point by chance before they fan out again over the head. */
+function braidGather(stroke: readonly Vec3[], width: number, own: number[], strands: Strands) {
+  const tangents = polylineTangents(stroke);
+  const gathered = stroke.map((at, k) => {
+    if (length(tangents[k]) === 0) return null;
+    const crossings = planeCrossings(at, tangents[k], own, strands);
+    if (crossings.length < BRAID_CROSSING * own.length) return null;
+    const centre = crossingCentre(crossings, at, 2);
+    return shareRadius(crossings, centre) <= BRAID_GATHERED * width;
+  });
+  let k = gathered.lastIndexOf(true);
+  if (k < 0) return -1;
+  while (k > 0 && gathered[k - 1] === true) k--;
+  return k;
+}
+
+/** The mean of the crossings within 1.5 × the BAND_SHARE radius of `start`, taken again from
+ *  it `rounds` times (half as far again as the band: a cut at the band itself would drop one
+ *  side's outermost strands and pull the centre to the other). */
+function crossingCentre(crossings: readonly Crossing[], start: Vec3, rounds: number): Vec3 {
+  let centre = start;
+  for (let round = 0; round < rounds; round++) {
+    const reach = 1.5 * shareRadius(crossings, centre);
+    let sum: Vec3 = [0, 0, 0];
+    let n = 0;
+    for (const c of crossings)
+      if (length(sub(c.at, centre)) <= reach) {
+        sum = add(sum, c.at);
+        n++;
+      }
+    if (n === 0) break;
+    centre = scale(sum, 1 / n);
+  }
+  return centre;
+}
+
 /** The band on the plane through `at` normal to `sketched` (the tail's sketched direction),
- *  turned to the strands' own direction and centred on their crossings. */
+ *  turned to the tail's own direction and centred on the strands' crossings. */
 function fitBand(
   i: number,
   at: Vec3,
@@ -96,12 +130,13 @@ function fitBand(
   own: number[],
   strands: Strands,
 ): TieBand | null {
-  // the hair hangs where it will (natural fall), not always along the sketched spine: the axis is
-  // the strands' mean direction where they cross, the centre their crossings' mean; both from
-  // the crossings near the band only, so strays do not pull them off the tail (half as far
-  // again as the band: a cut at the band itself would drop one side's outermost strands and pull
-  // the centre to the other). A few rounds, as the sketched point may lie off the hair and let
-  // strays in at first.
+  // the hair hangs where it will (natural fall), not always along the sketched spine: the centre
+  // is the strands' crossings' mean, the axis the way that mean moves AHEAD further along the
+  // same strands (the strands' own directions would not do: where a tail is gathered they still
+  // funnel in from all round). Both from the crossings near the band only, so strays do not pull
+  // them off the tail (half as far again as the band: a cut at the band itself would drop one
+  // side's outermost strands and pull the centre to the other). A few rounds, as the sketched
+  // point may lie off the hair and let strays in at first.
   let centre = at;
   let axis = sketched;
   for (let round = 0; round < 4; round++) {
@@ -109,27 +144,54 @@ function fitBand(
     if (crossings.length === 0) return null;
     const reach = 1.5 * shareRadius(crossings, centre);
     let sum: Vec3 = [0, 0, 0];
-    let along: Vec3 = [0, 0, 0];
+    let sumAhead: Vec3 = [0, 0, 0];
     let n = 0;
     for (const c of crossings)
       if (length(sub(c.at, centre)) <= reach) {
         sum = add(sum, c.at);
-        along = add(along, c.along);
+        sumAhead = add(sumAhead, ahead(c, strands));
         n++;
       }
     if (n === 0) break;
     centre = scale(sum, 1 / n);
-    if (length(along) > 0) axis = normalize(along);
+    const way = sub(scale(sumAhead, 1 / n), centre);
+    if (length(way) > 0) axis = normalize(way);
   }
   const crossings = planeCrossings(centre, axis, own, strands);
   if (crossings.length === 0) return null;
   return { curve: i, centre, axis, radius: shareRadius(crossings, centre) + BAND_MARGIN };
 }
 
+/** How far along the strands the tail's direction is read, world units (2 cm). */
+const AHEAD = 0.2;
+
 interface Crossing {
   at: Vec3;
-  /** The strand's unit direction there, turned along the plane's normal. */
-  along: Vec3;
+  strand: number;
+  /** The strand's point after the crossing (towards the tip), and whether the strand crosses
+   *  along the plane's normal (else against it: the tail runs towards its root there). */
+  next: number;
+  forward: boolean;
+}
+
+/** The point AHEAD along the strand from a crossing, on the side the plane's normal points to
+ *  (the strand's end when it is shorter). */
+function ahead(c: Crossing, strands: Strands): Vec3 {
+  const { points: P, strandStart } = strands;
+  const point = (q: number): Vec3 => [P[3 * q], P[3 * q + 1], P[3 * q + 2]];
+  const step = c.forward ? 1 : -1;
+  const first = strandStart[c.strand];
+  const last = strandStart[c.strand + 1] - 1;
+  let from = c.at;
+  let left = AHEAD;
+  for (let q = c.forward ? c.next : c.next - 1; q >= first && q <= last; q += step) {
+    const to = point(q);
+    const d = length(sub(to, from));
+    if (d >= left) return add(from, scale(sub(to, from), left / d));
+    left -= d;
+    from = to;
+  }
+  return from;
 }
 
 /** Per strand, where it crosses the plane (point `at`, unit normal `axis`): the crossing nearest
@@ -151,8 +213,7 @@ function planeCrossings(at: Vec3, axis: Vec3, own: number[], strands: Strands): 
         const d = length(sub(x, at));
         if (d < bestD) {
           bestD = d;
-          const dir = normalize(sub(b, a));
-          best = { at: x, along: db > da ? dir : scale(dir, -1) };
+          best = { at: x, strand: s, next: q, forward: db > da };
         }
       }
       a = b;
