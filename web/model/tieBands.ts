@@ -8,8 +8,8 @@
 //    (solver-cpp/src/braid_bun.hpp braidGatherIndex: the first stroke point off the scalp); the
 //    model has no head, so it reads the gather off the hair itself (braidGather): where the
 //    stroke points whose planes nearly all of the braid's strands cross close together (within
-//    BRAID_GATHERED of the braid's width) begin for good, which is where the solver starts the
-//    braid's circles.
+//    BRAID_GATHERED of the braid's width, and not much wider than the braid is along its
+//    length) begin for good, which is where the solver starts the braid's circles.
 //  - Bun: none (its coil covers its base).
 // The band's radius is measured, not taken from the sketch, so it hugs the hair the growth
 // actually gathered: the distance from the centre that holds BAND_SHARE of the tie's strands
@@ -40,6 +40,8 @@ export const BAND_MARGIN = 0.015;
 /** A braid is gathered where BAND_SHARE of its crossings lie within this many widths of their
  *  centre (its circles' radius is half the width; the bundles bulge a little past it). */
 const BRAID_GATHERED = 0.6;
+/** … and at most this many times the braid's median thickness, … */
+const BRAID_THICKER = 1.2;
 /** … crossed by at least this share of the braid's strands. */
 const BRAID_CROSSING = 0.8;
 
@@ -84,17 +86,22 @@ function bandOf(c: StyleCurve, i: number, own: number[], strands: Strands): TieB
 
 /** The stroke point where the braid's hair comes together: the first of the stroke's last run of
  *  gathered points (nearly all its strands cross the point's plane, BAND_SHARE of them within
- *  BRAID_GATHERED widths of their centre). Read from the tip's side: near the scalp the
+ *  BRAID_GATHERED widths of their centre and BRAID_THICKER times the median such radius). Read from the tip's side: near the scalp the
  *  strands can pass close by a stroke point by chance before they fan out again over the head. */
 function braidGather(stroke: readonly Vec3[], width: number, own: number[], strands: Strands) {
   const tangents = polylineTangents(stroke);
-  const gathered = stroke.map((at, k) => {
+  const radii = stroke.map((at, k) => {
     if (length(tangents[k]) === 0) return null;
     const crossings = planeCrossings(at, tangents[k], own, strands);
     if (crossings.length < BRAID_CROSSING * own.length) return null;
-    const centre = crossingCentre(crossings, at, 2);
-    return shareRadius(crossings, centre) <= BRAID_GATHERED * width;
+    return shareRadius(crossings, crossingCentre(crossings, at, 2));
   });
+  // the braid itself is about as thick all along: a point whose hair is much thicker than the
+  // median is still the funnel from the scalp
+  const known = radii.filter((r) => r !== null).sort((a, b) => a - b);
+  const typical = known[Math.floor(known.length / 2)] ?? 0;
+  const limit = Math.min(BRAID_GATHERED * width, BRAID_THICKER * typical);
+  const gathered = radii.map((r) => (r === null ? null : r <= limit));
   let k = gathered.lastIndexOf(true);
   if (k < 0) return -1;
   while (k > 0 && gathered[k - 1] === true) k--;
@@ -130,36 +137,52 @@ function fitBand(
   own: number[],
   strands: Strands,
 ): TieBand | null {
-  // the hair hangs where it will (natural fall), not always along the sketched spine: the centre
-  // is the strands' crossings' mean, the axis the way that mean moves AHEAD further along the
-  // same strands (the strands' own directions would not do: where a tail is gathered they still
-  // funnel in from all round). Both from the crossings near the band only, so strays do not pull
-  // them off the tail (half as far again as the band: a cut at the band itself would drop one
-  // side's outermost strands and pull the centre to the other). A few rounds, as the sketched
-  // point may lie off the hair and let strays in at first.
-  let centre = at;
-  let axis = sketched;
-  for (let round = 0; round < 4; round++) {
-    const crossings = planeCrossings(centre, axis, own, strands);
-    if (crossings.length === 0) return null;
-    const reach = 1.5 * shareRadius(crossings, centre);
-    let sum: Vec3 = [0, 0, 0];
-    let sumAhead: Vec3 = [0, 0, 0];
-    let n = 0;
-    for (const c of crossings)
-      if (length(sub(c.at, centre)) <= reach) {
-        sum = add(sum, c.at);
-        sumAhead = add(sumAhead, ahead(c, strands));
-        n++;
-      }
-    if (n === 0) break;
-    centre = scale(sum, 1 / n);
-    const way = sub(scale(sumAhead, 1 / n), centre);
-    if (length(way) > 0) axis = normalize(way);
+  // the hair hangs where it will (natural fall), not always along the sketched spine: the tail's
+  // direction is the way its crossings' mean moves AHEAD further along the same strands (the
+  // strands' own directions would not do: where a tail is gathered they still funnel in from
+  // all round). A plane across a tail cuts it narrowest when square to it, so a new direction is
+  // taken only while it makes the cut narrower: a plane tilted into the funnel never is.
+  let best = planeFit(at, sketched, own, strands);
+  for (let round = 0; best && round < 4; round++) {
+    const way = sub(aheadMean(best, strands), best.centre);
+    if (length(way) === 0) break;
+    const turned = planeFit(best.centre, normalize(way), own, strands);
+    if (!turned || turned.radius >= best.radius) break;
+    best = turned;
   }
-  const crossings = planeCrossings(centre, axis, own, strands);
+  return (
+    best && { curve: i, centre: best.centre, axis: best.axis, radius: best.radius + BAND_MARGIN }
+  );
+}
+
+interface PlaneFit {
+  centre: Vec3;
+  axis: Vec3;
+  /** The BAND_SHARE radius of the crossings about the centre. */
+  radius: number;
+  crossings: Crossing[];
+}
+
+/** The strands' crossings of the plane through `at` normal to `axis`, their centre and radius. */
+function planeFit(at: Vec3, axis: Vec3, own: number[], strands: Strands): PlaneFit | null {
+  const crossings = planeCrossings(at, axis, own, strands);
   if (crossings.length === 0) return null;
-  return { curve: i, centre, axis, radius: shareRadius(crossings, centre) + BAND_MARGIN };
+  const centre = crossingCentre(crossings, at, 4);
+  return { centre, axis, radius: shareRadius(crossings, centre), crossings };
+}
+
+/** The mean of the points AHEAD of the crossings near the fit's centre (as crossingCentre
+ *  takes them). */
+function aheadMean(fit: PlaneFit, strands: Strands): Vec3 {
+  const reach = 1.5 * fit.radius;
+  let sum: Vec3 = [0, 0, 0];
+  let n = 0;
+  for (const c of fit.crossings)
+    if (length(sub(c.at, fit.centre)) <= reach) {
+      sum = add(sum, ahead(c, strands));
+      n++;
+    }
+  return n > 0 ? scale(sum, 1 / n) : fit.centre;
 }
 
 /** How far along the strands the tail's direction is read, world units (2 cm). */
