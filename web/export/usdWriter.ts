@@ -1,8 +1,10 @@
 // USD `.usda` (plain text): the hair as a groom as Unreal's USD importer reads one (an Xform with
 // GroomAPI holding the strands and the guides as linear BasisCurves, groom_* primvars from
-// groomLayout.ts), the head as an optional Mesh, the session in the layer's customLayerData
+// groomLayout.ts), the head as an optional Mesh, the ties' bands as a Mesh "band" (bandExport.ts),
+// the session in the layer's customLayerData
 // (docs/export.md, "File layouts"). Numbers with 6 significant digits (formatFloat); the text
 // comes out in chunks of at most CHUNK_BYTES.
+import { exportBand, usdBand } from './bandExport';
 import { formatFloat, type Progress, TextSink } from './chunkSink';
 import { type GroomLayout, groomLayout, HEAD_CENTER } from './groomLayout';
 import { scalpUvs } from './scalpUv';
@@ -150,6 +152,8 @@ export function* writeUsda(
   out.text.write('def Xform "hairsketch"\n{\n');
   yield* writeGroom(out, strands, groom, motion);
   if (head) yield* writeHeadMesh(out, head, builtinHead, headCornerUvs, motion);
+  const band = exportBand(input);
+  if (band) out.text.write(usdBand(band));
   out.text.write('}\n');
   yield* out.text.end();
   progress.at(1);
