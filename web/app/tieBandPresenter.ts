@@ -23,9 +23,11 @@ export class TieBandPresenter {
     });
   }
 
-  /** Call with the hair shown (null: none). */
+  /** Call with the hair shown (null: none). A stroke's previews carry no tailCurves (thinned
+   *  for drawing, model/strandSubsample.ts): the bands of the hair before them stay until the
+   *  converged hair comes, rather than blinking out while the user draws. */
   hairShown(strands: StrandArrays | null): void {
-    if (strands === this.measured) return;
+    if (strands === this.measured || (strands && !strands.tailCurves)) return;
     this.measured = strands;
     this.view.show(strands ? tieBands(this.editor.session, strands) : [], this.colour());
   }
