@@ -143,7 +143,8 @@ export function startApp(): void {
     head: () => heads.head.mesh,
     hair,
   });
-  const bands = new TieBandPresenter(new TieBandView(viewer), editor);
+  const bandView = new TieBandView(viewer);
+  const bands = new TieBandPresenter(bandView, editor);
   wireCardsView({ view, editor, hairView, statusElement: byId('status') });
   const overlays = new OverlayPresenter(viewer, editor, view, bridge.grid);
   const status = new StatusPresenter(line, bridge);
@@ -352,6 +353,7 @@ export function startApp(): void {
     view,
     ponytail: tools.ponytail,
     sectionsTinted: () => sectionTint.tinted,
+    tieBands: () => ({ bands: [...bandView.shown], colour: bandView.colour }),
     busy: () =>
       heads.busy ||
       references.busy ||

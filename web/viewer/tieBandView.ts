@@ -25,6 +25,11 @@ export class TieBandView {
     return this.bands;
   }
 
+  /** Their colour (#rrggbb), null while none is shown. */
+  get colour(): string | null {
+    return this.mesh.visible ? `#${this.mesh.material.color.getHexString()}` : null;
+  }
+
   /** Shows `bands` in `colour` (#rrggbb), none when empty. */
   show(bands: readonly TieBand[], colour: string): void {
     const m = this.mesh;
