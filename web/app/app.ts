@@ -309,7 +309,8 @@ export function startApp(): void {
     viewer,
     hairView,
     shown: () => hair.shownResult,
-    meshes: () => [headMesh, bodyMesh, ...viewer.headOverlays],
+    // the bands too: a tail is gathered at the head, so its band moves with it
+    meshes: () => [headMesh, bodyMesh, bandView.object, ...viewer.headOverlays],
     say: (m) => status.note(m),
     statusElement: byId('status'),
     changed: () => motionControls.refresh(),

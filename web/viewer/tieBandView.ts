@@ -20,6 +20,11 @@ export class TieBandView {
     viewer.addSolid(this.mesh);
   }
 
+  /** The bands' mesh: a motion moves it with the head (a tail is gathered at the head). */
+  get object(): THREE.Object3D {
+    return this.mesh;
+  }
+
   /** The bands shown. */
   get shown(): readonly TieBand[] {
     return this.bands;
