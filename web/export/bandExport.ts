@@ -55,8 +55,8 @@ export function objBand(band: ExportBand, base: { v: number; vn: number }): stri
 }
 
 /** The band as a USD Mesh prim "band" (inside the layer's root Xform), its colour as
- *  displayColor. */
-export function usdBand(band: ExportBand): string {
+ *  displayColor; `transform`: its xformOp lines (a motion's head pose), or ''. */
+export function usdBand(band: ExportBand, transform = ''): string {
   const { positions, normals, indices } = band.mesh;
   const tuples = (a: ArrayLike<number>) => {
     const out: string[] = [];
@@ -69,6 +69,7 @@ export function usdBand(band: ExportBand): string {
   const [r, g, b] = band.linear.map(formatFloat);
   return [
     '\n    def Mesh "band"\n    {\n',
+    transform,
     `        float3[] extent = [${tuples(lo)}, ${tuples(hi)}]\n`,
     `        int[] faceVertexCounts = [${Array(indices.length / 3)
       .fill('3')

@@ -153,7 +153,8 @@ export function* writeUsda(
   yield* writeGroom(out, strands, groom, motion);
   if (head) yield* writeHeadMesh(out, head, builtinHead, headCornerUvs, motion);
   const band = exportBand(input);
-  if (band) out.text.write(usdBand(band));
+  // a tail is gathered at the head: its band moves with the head's pose
+  if (band) out.text.write(usdBand(band, poseOps(motion)));
   out.text.write('}\n');
   yield* out.text.end();
   progress.at(1);
@@ -506,6 +507,14 @@ function* headArray(
 
 const VERTEX = '] (\n            interpolation = "vertex"\n        )\n';
 
+/** The head's animated transform, for the head's prim and the bands' (the hair's points are in
+ *  world space already); '' without a motion. */
+function poseOps(motion: MotionOut): string {
+  if (!motion) return '';
+  const samples = motion.poses.map((pose, f) => `${PAD}${f}: ${usdMatrix(pose)},\n`).join('');
+  return `        matrix4d xformOp:transform.timeSamples = {\n${samples}        }\n        uniform token[] xformOpOrder = ["xformOp:transform"]\n`;
+}
+
 /** The head as a Mesh: topology, points, normals, and the UVs its roots' UVs are in. */
 function* writeHeadMesh(
   out: UsdOut,
@@ -517,14 +526,7 @@ function* writeHeadMesh(
   const headVerts = head.positions.length / 3;
   const headTris = head.indices.length / 3;
   out.text.write('\n    def Mesh "head"\n    {\n');
-  if (motion) {
-    // the head's animated transform (the hair's points are in world space already)
-    out.text.write('        matrix4d xformOp:transform.timeSamples = {\n');
-    motion.poses.forEach((pose, f) => {
-      out.text.write(`${PAD}${f}: ${usdMatrix(pose)},\n`);
-    });
-    out.text.write('        }\n        uniform token[] xformOpOrder = ["xformOp:transform"]\n');
-  }
+  out.text.write(poseOps(motion));
   const [hlo, hhi] = extentOf(head.positions);
   out.text.write(`        float3[] extent = [${vec3(hlo, 0)}, ${vec3(hhi, 0)}]\n`);
   // the counts are drained with the indices
