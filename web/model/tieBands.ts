@@ -21,7 +21,7 @@
 import type { StrandArrays } from './hairArrays';
 import { polylineTangents } from './ponytailGeometry';
 import type { SessionState, StyleCurve } from './session';
-import { add, dot, length, normalize, scale, sub, type Vec3 } from './vec3';
+import { add, length, normalize, scale, sub, type Vec3 } from './vec3';
 
 export interface TieBand {
   /** The tie's index in session.curves. */
@@ -45,6 +45,9 @@ const BRAID_THICKER = 1.2;
 /** … crossed by at least this share of the braid's strands. */
 const BRAID_CROSSING = 0.8;
 
+/** At most about this many of a tie's strands are measured (every k-th: deterministic). */
+const SAMPLE_STRANDS = 2000;
+
 type Strands = Pick<StrandArrays, 'points' | 'strandStart' | 'tailCurves'>;
 
 /** The bands of the session's ties, in curve order (empty without `ties`). */
@@ -64,8 +67,12 @@ export function tieBands(
   }
   const bands: TieBand[] = [];
   session.curves.forEach((c, i) => {
-    const own = members.get(i);
-    if (!own || own.length === 0) return;
+    const all = members.get(i);
+    if (!all || all.length === 0) return;
+    // an even subsample of a large tie: its 95th percentile is as good within a few tenths of a
+    // per cent, and the band is measured on the page's thread whenever new hair is shown
+    const stride = Math.ceil(all.length / SAMPLE_STRANDS);
+    const own = stride > 1 ? all.filter((_, k) => k % stride === 0) : all;
     const band = bandOf(c, i, own, strands);
     if (band) bands.push(band);
   });
@@ -220,35 +227,52 @@ function ahead(c: Crossing, strands: Strands): Vec3 {
 /** Per strand, where it crosses the plane (point `at`, unit normal `axis`): the crossing nearest
  *  `at` when it crosses more than once (a curl, a strand turning back up), none when it does not. */
 function planeCrossings(at: Vec3, axis: Vec3, own: number[], strands: Strands): Crossing[] {
+  // plain numbers, no vectors made per point: this runs over every point of a tie's strands for
+  // each plane tried (a braid tries each stroke point), on the page's thread
   const { points: P, strandStart } = strands;
+  const [ox, oy, oz] = at;
+  const [nx, ny, nz] = axis;
+  const side = (q: number) =>
+    (P[3 * q] - ox) * nx + (P[3 * q + 1] - oy) * ny + (P[3 * q + 2] - oz) * nz;
   const out: Crossing[] = [];
-  const point = (q: number): Vec3 => [P[3 * q], P[3 * q + 1], P[3 * q + 2]];
   for (const s of own) {
-    let best: Crossing | null = null;
-    let bestD = Number.POSITIVE_INFINITY;
-    let a = point(strandStart[s]);
-    let da = dot(sub(a, at), axis);
+    let next = -1;
+    let bestF = 0;
+    let bestD2 = Number.POSITIVE_INFINITY;
+    let forward = true;
+    let da = side(strandStart[s]);
     for (let q = strandStart[s] + 1; q < strandStart[s + 1]; q++) {
-      const b = point(q);
-      const db = dot(sub(b, at), axis);
+      const db = side(q);
       if ((da <= 0 && db > 0) || (da >= 0 && db < 0)) {
-        const x = add(a, scale(sub(b, a), da / (da - db)));
-        const d = length(sub(x, at));
-        if (d < bestD) {
-          bestD = d;
-          best = { at: x, strand: s, next: q, forward: db > da };
+        const f = da / (da - db);
+        const a = 3 * (q - 1);
+        const dx = P[a] + (P[a + 3] - P[a]) * f - ox;
+        const dy = P[a + 1] + (P[a + 4] - P[a + 1]) * f - oy;
+        const dz = P[a + 2] + (P[a + 5] - P[a + 2]) * f - oz;
+        const d2 = dx * dx + dy * dy + dz * dz;
+        if (d2 < bestD2) {
+          bestD2 = d2;
+          next = q;
+          bestF = f;
+          forward = db > da;
         }
       }
-      a = b;
       da = db;
     }
-    if (best) out.push(best);
+    if (next < 0) continue;
+    const a = 3 * (next - 1);
+    const x: Vec3 = [0, 1, 2].map((k) => P[a + k] + (P[a + 3 + k] - P[a + k]) * bestF) as Vec3;
+    out.push({ at: x, strand: s, next, forward });
   }
   return out;
 }
 
 /** The distance from `centre` within which BAND_SHARE of the points lie. */
 function shareRadius(crossings: readonly Crossing[], centre: Vec3): number {
-  const d = crossings.map((c) => length(sub(c.at, centre))).sort((x, y) => x - y);
-  return d[Math.min(d.length - 1, Math.max(0, Math.ceil(BAND_SHARE * d.length) - 1))] ?? 0;
+  if (crossings.length === 0) return 0;
+  // a typed array sorts numerically without a comparator, many times faster (it runs often)
+  const d = Float64Array.from(crossings, (c) =>
+    Math.hypot(c.at[0] - centre[0], c.at[1] - centre[1], c.at[2] - centre[2]),
+  ).sort();
+  return d[Math.min(d.length - 1, Math.max(0, Math.ceil(BAND_SHARE * d.length) - 1))];
 }
