@@ -33,6 +33,7 @@ function full(): SessionState {
     shape: true,
     volume: 0.12,
     ties: true,
+    bandColor: '#d02060',
     detail: { lengthJitter: 0.2 },
     scalpPaint: [{ erase: true, radius: 0.3, points: [[0, 1, 0]] }],
     symmetry: X_PLANE,

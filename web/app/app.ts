@@ -25,6 +25,7 @@ import { HairView } from '../viewer/hairView';
 import { createHeadMesh } from '../viewer/headMaterial';
 import { viewLabel } from '../viewer/namedViews';
 import { ReferencePlanes } from '../viewer/referencePlanes';
+import { TieBandView } from '../viewer/tieBandView';
 import { Viewer } from '../viewer/viewer';
 import { buildActions, NAMED_VIEWS } from './actions';
 import { ActiveTool } from './activeTool';
@@ -52,6 +53,7 @@ import { LinkWriter, openSessionFileOutcome } from './sessionIO';
 import { SolverBridge } from './solverBridge';
 import { StatusPresenter } from './statusPresenter';
 import { installTestApi } from './testApi';
+import { TieBandPresenter } from './tieBandPresenter';
 import { createTools } from './tools';
 import { parseUrlOptions } from './urlOptions';
 import { ViewStore } from './viewState';
@@ -142,6 +144,8 @@ export function startApp(): void {
     head: () => heads.head.mesh,
     hair,
   });
+  const bandView = new TieBandView(viewer);
+  const bands = new TieBandPresenter(bandView, editor);
   wireCardsView({ view, editor, hairView, statusElement: byId('status') });
   const overlays = new OverlayPresenter(viewer, editor, view, bridge.grid);
   const status = new StatusPresenter(line, bridge);
@@ -301,14 +305,15 @@ export function startApp(): void {
     detailPanel,
     showHeadPanel,
   });
-  showSolverResults({ bridge, hair, sectionTint, overlays, status, active, partings });
+  showSolverResults({ bridge, hair, sectionTint, bands, overlays, status, active, partings });
   const motion = new MotionPlayer({
     client: bridge.client,
     editor,
     viewer,
     hairView,
     shown: () => hair.shownResult,
-    meshes: () => [headMesh, bodyMesh, ...viewer.headOverlays],
+    // the bands too: a tail is gathered at the head, so its band moves with it
+    meshes: () => [headMesh, bodyMesh, bandView.object, ...viewer.headOverlays],
     say: (m) => status.note(m),
     statusElement: byId('status'),
     changed: () => motionControls.refresh(),
@@ -353,6 +358,7 @@ export function startApp(): void {
     ponytail: tools.ponytail,
     sectionsTinted: () => sectionTint.tinted,
     sectionsOverHair: () => sectionTint.overHairTriangles,
+    tieBands: () => ({ bands: [...bandView.shown], colour: bandView.colour }),
     busy: () =>
       heads.busy ||
       references.busy ||

@@ -14,6 +14,7 @@ import type { SectionTintPresenter } from './sectionTintPresenter';
 import { type LinkWriter, openSessionLinkOutcome } from './sessionIO';
 import type { SolverBridge } from './solverBridge';
 import type { StatusPresenter } from './statusPresenter';
+import type { TieBandPresenter } from './tieBandPresenter';
 
 /** The solver's news on screen: progress and errors in the status line, results to the hair,
  *  the section tint and the overlays, "Ready" once the converged hair is shown. */
@@ -21,18 +22,20 @@ export function showSolverResults(p: {
   bridge: SolverBridge;
   hair: HairPresenter;
   sectionTint: SectionTintPresenter;
+  bands: TieBandPresenter;
   overlays: OverlayPresenter;
   status: StatusPresenter;
   active: ActiveTool;
   partings: PartingReporter;
 }): void {
-  const { bridge, hair, sectionTint, overlays, status, active, partings } = p;
+  const { bridge, hair, sectionTint, bands, overlays, status, active, partings } = p;
   bridge.subscribe({
     busy: (phase, fraction, previewing) => status.busy(phase, fraction, previewing),
     result: (r, final) => {
       hair.result(r, final);
       if (final) partings.hairShown(hair.strands);
       sectionTint.update();
+      bands.hairShown(hair.strands);
       overlays.result(r);
       status.result(r, final);
       active.previewAnswered();
@@ -106,6 +109,7 @@ export function buildHairPanel(
     lengthen: (by) => editor.run({ kind: 'lengthen', by }),
     setDetail: (curveId, detail) => editor.run({ kind: 'setDetail', curveId, detail }),
     setHairLook: (look) => editor.run({ kind: 'setHairLook', look }),
+    setBandColor: (color) => editor.run({ kind: 'setBandColor', color }),
     say: (m) => status.note(m),
   });
 }

@@ -4,6 +4,7 @@ import { scalpCoverage, VIEW_DIRECTIONS } from '../head/hairCoverage';
 import type { Head } from '../head/head';
 import { contentKey } from '../model/curveSet';
 import type { StrandArrays } from '../model/hairArrays';
+import type { TieBand } from '../model/tieBands';
 import type { Vec3 } from '../model/vec3';
 import type { PonytailTool } from '../tools/ponytailTool';
 import type { DisplayState } from '../ui/displayToggles';
@@ -166,6 +167,8 @@ export interface HairsketchTestApi {
   /** Scalp triangles of the sections drawn over the hair (while a tie tool is active; 0
    *  otherwise). */
   sectionsOverHair(): number;
+  /** The ties' bands shown (model/tieBands.ts) and their colour (#rrggbb; null: none shown). */
+  tieBands(): { bands: TieBand[]; colour: string | null };
   /** The scalp brush's ring on the head (its radius, world units, and whether it erases), or
    *  null when none is shown. */
   brushRing(): { radius: number; erase: boolean } | null;
@@ -197,6 +200,8 @@ export interface TestApiParts {
   /** Scalp vertices tinted by section now (a tie tool is active). */
   sectionsTinted(): number;
   sectionsOverHair(): number;
+  /** The ties' bands on screen. */
+  tieBands(): { bands: TieBand[]; colour: string | null };
   /** Work is pending (a solve, an avoidance request, a stroke being drawn). */
   busy(): boolean;
   lastPointerUp(): number;
@@ -408,6 +413,7 @@ export function installTestApi(app: TestApiParts): void {
     frameSources: () => ({ ...viewer.frameSources }),
     sectionsTinted: () => app.sectionsTinted(),
     sectionsOverHair: () => app.sectionsOverHair(),
+    tieBands: () => app.tieBands(),
     brushRing: () => viewer.brushRing,
     bareScalp(opts) {
       const t0 = performance.now();

@@ -5,7 +5,7 @@
 import { CURVE_PARAMS, type CurveParamSpec, defaultParams } from '../model/curveParams';
 import { detailIsOn, type HairDetail } from '../model/detail';
 import type { GrowthParams } from '../model/growthParams';
-import type { HairLook } from '../model/hairLook';
+import { DEFAULT_BAND_COLOR, type HairLook } from '../model/hairLook';
 import { defOf } from '../model/kinds';
 import { lengthenSession } from '../model/lengthen';
 import {
@@ -88,6 +88,8 @@ export type Command =
   | { kind: 'setHairColor'; color: string }
   /** The colour model (model/hairLook.ts); null: the colour box's direct colour. */
   | { kind: 'setHairLook'; look: HairLook | null }
+  /** The ties' band colour (#rrggbb; the default band's colour is stored as absent). */
+  | { kind: 'setBandColor'; color: string }
   /** The head the hair grows on (Open head, Rotate, the built-in head). The scalp painting of
    *  the previous head is dropped (it belongs to that mesh); `symmetry`: the new head's mirror
    *  plane (absent: x = 0). */
@@ -418,6 +420,17 @@ const HANDLERS: {
         ? `Hair colour: melanin ${l.melanin}, redness ${l.redness}, grey ${l.grey} %.`
         : 'Hair colour: the colour box’s colour.',
     };
+  },
+  setBandColor(s, cmd) {
+    if (!HEX_COLOR.test(cmd.color))
+      return { session: s, message: `Band colour "${cmd.color.slice(0, 20)}" is not #rrggbb.` };
+    const color = cmd.color.toLowerCase();
+    const { bandColor: _, ...rest } = s;
+    if (color === (s.bandColor ?? DEFAULT_BAND_COLOR))
+      return { session: s, message: `Band colour ${color}.` };
+    // the default is not written, so sessions that never change it keep their bytes
+    const next: SessionState = color === DEFAULT_BAND_COLOR ? rest : { ...rest, bandColor: color };
+    return { session: next, message: `Band colour ${color}.` };
   },
   setHead(s, cmd) {
     const { scalpPaint: _p, symmetry: _s, ...rest } = s;

@@ -11,14 +11,17 @@ import { sessionScalpMask } from '../head/scalpPaint';
 import { packCurves, packHairOptions } from '../model/curveSet';
 import { FIELD_OMEGA, gridForSession } from '../model/grid';
 import type { StrandArrays } from '../model/hairArrays';
+import { DEFAULT_BAND_COLOR } from '../model/hairLook';
 import { hangLength, type SessionState } from '../model/session';
 import { decodeSessionLink } from '../model/sessionLink';
+import { tieBands } from '../model/tieBands';
 import { SolverClient } from '../solver/solverClient';
 import { createBodyMesh } from '../viewer/bodyMaterial';
 import { setCameraButtons } from '../viewer/cameraButtons';
 import { HairView } from '../viewer/hairView';
 import { createHeadMesh, recolorHeadScalp, setHeadGeometry } from '../viewer/headMaterial';
 import { BUST_VIEW_FLOOR, namedView, type ViewName } from '../viewer/namedViews';
+import { TieBandView } from '../viewer/tieBandView';
 import { Viewer } from '../viewer/viewer';
 import { editorUrlFor, parseEmbedOptions } from './embedOptions';
 
@@ -108,6 +111,7 @@ export async function startEmbed(): Promise<void> {
   const hair = new HairView(viewer, headMesh);
   hair.setQuality(activeQuality(opts.quality, viewer.software));
   hair.setLook(s.hairLook ?? null, s.hairColor);
+  const bands = new TieBandView(viewer);
 
   let moved = false;
   viewer.controls.addEventListener('start', () => {
@@ -146,6 +150,7 @@ export async function startEmbed(): Promise<void> {
           final,
           r.attributes ?? null,
         );
+        bands.show(tieBands(s, r.strands), s.bandColor ?? DEFAULT_BAND_COLOR);
       },
       onError: (message, restarting) => {
         if (!restarting) say('error', `The hair could not be grown: ${message}.`);

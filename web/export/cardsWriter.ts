@@ -7,9 +7,11 @@
 // or dithered); blended cards need back-to-front sorting per triangle, which no engine does for
 // one mesh, so they flicker. Both sides, since a card seen from behind is hair too. The root–tip
 // and depth maps are textures named in the material's extras (glTF has no slot for them).
-// Mesh "head" as in glbWriter.ts; both under a root node scaled to metres; the session in
+// Mesh "head" and mesh "band" (the ties' bands, with material "band") as in glbWriter.ts; all
+// under a root node scaled to metres; the session in
 // asset.extras.hairsketch.session, the card settings in asset.extras.hairsketch.cards.
 
+import { BAND_ROUGHNESS, exportBand } from './bandExport';
 import { ATLAS_SIZE, ATLAS_TILES, DEPTH_RANGE, drawCardAtlas, tileRect } from './cardAtlas';
 import { clusterStrands, strandFeatures } from './cardClusters';
 import { cardCountProblem, DEFAULT_CARD_COUNT } from './cardCount';
@@ -226,6 +228,41 @@ export function* writeCardsGlb(
     });
     meshes.push({ name: 'head', primitives: [{ mode: TRIANGLES, indices, attributes }] });
     nodes.push({ name: 'head', mesh: meshes.length - 1 });
+  }
+  const band = exportBand(input);
+  if (band) {
+    const { positions, normals, indices } = band.mesh;
+    const vec3 = (a: Float32Array) => ({
+      bufferView: view(le(a), ARRAY_BUFFER),
+      componentType: FLOAT,
+      count: a.length / 3,
+      type: 'VEC3',
+    });
+    const attributes = {
+      POSITION: accessor({ ...vec3(positions), ...bounds(positions) }),
+      NORMAL: accessor(vec3(normals)),
+    };
+    const index = accessor({
+      bufferView: view(le(indices), ELEMENT_ARRAY_BUFFER),
+      componentType: UNSIGNED_INT,
+      count: indices.length,
+      type: 'SCALAR',
+    });
+    const materials = (gltf.materials as object[] | undefined) ?? [];
+    materials.push({
+      name: 'band',
+      pbrMetallicRoughness: {
+        baseColorFactor: [...band.linear, 1],
+        metallicFactor: 0,
+        roughnessFactor: BAND_ROUGHNESS,
+      },
+    });
+    gltf.materials = materials;
+    meshes.push({
+      name: 'band',
+      primitives: [{ mode: TRIANGLES, indices: index, attributes, material: materials.length - 1 }],
+    });
+    nodes.push({ name: 'band', mesh: meshes.length - 1 });
   }
   if (nodes.length > 1) nodes[0].children = nodes.slice(1).map((_, i) => i + 1);
   if (meshes.length > 0) {

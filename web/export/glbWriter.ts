@@ -1,10 +1,13 @@
 // glTF 2.0 binary (`.glb`): mesh "hair" as LINES (mode 1) with uint32 indices, POSITION (with
 // min/max), COLOR_0 (float32 VEC3, linear) and the application attribute _WIDTH (float32, the
-// diameter); mesh "head" as TRIANGLES (mode 4) with POSITION, NORMAL when given, and indices.
+// diameter); mesh "head" as TRIANGLES (mode 4) with POSITION, NORMAL when given, and indices;
+// mesh "band" (the ties' bands, bandExport.ts) as TRIANGLES with POSITION, NORMAL, indices and
+// material "band" in the band colour.
 // Both hang under a root node "hairsketch" scaled by METERS_PER_UNIT (glTF units are metres; the
 // app's unit is 10 cm), so positions and widths stay in app units inside the meshes. The session
 // is in asset.extras.hairsketch.session. All lengths are computed first; the BIN chunk is then
 // written in pieces.
+import { BAND_ROUGHNESS, exportBand } from './bandExport';
 import { BinarySink, type Progress, writeStrandFloats } from './chunkSink';
 import {
   ARRAY_BUFFER,
@@ -131,6 +134,41 @@ export function* writeGlb(
     meshes.push({ name: 'head', primitives: [{ mode: TRIANGLES, indices, attributes }] });
     nodes.push({ name: 'head', mesh: meshes.length - 1 });
   }
+  const band = exportBand(input);
+  const materials: object[] = [];
+  if (band) {
+    const { positions, indices } = band.mesh;
+    const count = positions.length / 3;
+    const vec3 = (min?: number[], max?: number[]) => ({
+      bufferView: view(12 * count, ARRAY_BUFFER),
+      componentType: FLOAT,
+      count,
+      type: 'VEC3' as const,
+      ...(min && max ? { min, max } : {}),
+    });
+    const { min, max } = bounds(positions);
+    const attributes = { POSITION: accessor(vec3(min, max)), NORMAL: accessor(vec3()) };
+    const index = accessor({
+      bufferView: view(4 * indices.length, ELEMENT_ARRAY_BUFFER),
+      componentType: UNSIGNED_INT,
+      count: indices.length,
+      type: 'SCALAR',
+    });
+    materials.push({
+      name: 'band',
+      pbrMetallicRoughness: {
+        baseColorFactor: [...band.linear, 1],
+        metallicFactor: 0,
+        roughnessFactor: BAND_ROUGHNESS,
+      },
+    });
+    const material = materials.length - 1;
+    meshes.push({
+      name: 'band',
+      primitives: [{ mode: TRIANGLES, indices: index, attributes, material }],
+    });
+    nodes.push({ name: 'band', mesh: meshes.length - 1 });
+  }
   if (nodes.length > 1) nodes[0].children = nodes.slice(1).map((_, i) => i + 1);
   const binLength = offset;
 
@@ -150,6 +188,7 @@ export function* writeGlb(
     gltf.bufferViews = views;
     gltf.buffers = [{ byteLength: binLength }];
   }
+  if (materials.length > 0) gltf.materials = materials;
   const out = new BinarySink();
   const total = writeGlbStart(out, gltf, binLength);
   const report = () => progress.at(out.bytes / total);
@@ -194,6 +233,14 @@ export function* writeGlb(
       report();
       yield* out.drain();
     }
+  }
+  if (band) {
+    const { positions, normals, indices } = band.mesh;
+    out.f32s(positions, 0, positions.length);
+    out.f32s(normals, 0, normals.length);
+    out.u32s(indices, 0, indices.length);
+    report();
+    yield* out.drain();
   }
   out.zeros(((binLength + 3) & ~3) - binLength);
   yield* out.end();

@@ -1,6 +1,9 @@
 // Wavefront OBJ: `o hair`, a `v` line per point, one `l` line per strand (1-based indices);
-// with the head, `o head`, its `v` lines and `f a b c` faces (indices after the hair's points).
-// No widths or colours (OBJ has none for lines). Numbers with 6 significant digits.
+// with the head, `o head`, its `v` lines and `f a b c` faces (indices after the hair's points);
+// with ties' bands (bandExport.ts), `o band` last, its `v`, `vn` and `f a//a …` lines (its colour
+// in a comment: OBJ has colours only through a material file). No widths or colours (OBJ has
+// none for lines). Numbers with 6 significant digits.
+import { exportBand, objBand } from './bandExport';
 import { formatFloat, type Progress, TextSink } from './chunkSink';
 import type { ExportStrands } from './strandsForExport';
 import type { ExportInput } from './types';
@@ -85,6 +88,8 @@ export function* writeObj(
       yield* out.drain();
     }
   }
+  const band = exportBand(input);
+  if (band) out.write(objBand(band, { v: p + headVerts, vn: 0 }));
   yield* out.end();
   progress.at(1);
 }

@@ -1,8 +1,10 @@
 // USD `.usda` (plain text): the hair as a groom as Unreal's USD importer reads one (an Xform with
 // GroomAPI holding the strands and the guides as linear BasisCurves, groom_* primvars from
-// groomLayout.ts), the head as an optional Mesh, the session in the layer's customLayerData
+// groomLayout.ts), the head as an optional Mesh, the ties' bands as a Mesh "band" (bandExport.ts),
+// the session in the layer's customLayerData
 // (docs/export.md, "File layouts"). Numbers with 6 significant digits (formatFloat); the text
 // comes out in chunks of at most CHUNK_BYTES.
+import { exportBand, usdBand } from './bandExport';
 import { formatFloat, type Progress, TextSink } from './chunkSink';
 import { type GroomLayout, groomLayout, HEAD_CENTER } from './groomLayout';
 import { scalpUvs } from './scalpUv';
@@ -150,6 +152,9 @@ export function* writeUsda(
   out.text.write('def Xform "hairsketch"\n{\n');
   yield* writeGroom(out, strands, groom, motion);
   if (head) yield* writeHeadMesh(out, head, builtinHead, headCornerUvs, motion);
+  const band = exportBand(input);
+  // a tail is gathered at the head: its band moves with the head's pose
+  if (band) out.text.write(usdBand(band, poseOps(motion)));
   out.text.write('}\n');
   yield* out.text.end();
   progress.at(1);
@@ -502,6 +507,14 @@ function* headArray(
 
 const VERTEX = '] (\n            interpolation = "vertex"\n        )\n';
 
+/** The head's animated transform, for the head's prim and the bands' (the hair's points are in
+ *  world space already); '' without a motion. */
+function poseOps(motion: MotionOut): string {
+  if (!motion) return '';
+  const samples = motion.poses.map((pose, f) => `${PAD}${f}: ${usdMatrix(pose)},\n`).join('');
+  return `        matrix4d xformOp:transform.timeSamples = {\n${samples}        }\n        uniform token[] xformOpOrder = ["xformOp:transform"]\n`;
+}
+
 /** The head as a Mesh: topology, points, normals, and the UVs its roots' UVs are in. */
 function* writeHeadMesh(
   out: UsdOut,
@@ -513,14 +526,7 @@ function* writeHeadMesh(
   const headVerts = head.positions.length / 3;
   const headTris = head.indices.length / 3;
   out.text.write('\n    def Mesh "head"\n    {\n');
-  if (motion) {
-    // the head's animated transform (the hair's points are in world space already)
-    out.text.write('        matrix4d xformOp:transform.timeSamples = {\n');
-    motion.poses.forEach((pose, f) => {
-      out.text.write(`${PAD}${f}: ${usdMatrix(pose)},\n`);
-    });
-    out.text.write('        }\n        uniform token[] xformOpOrder = ["xformOp:transform"]\n');
-  }
+  out.text.write(poseOps(motion));
   const [hlo, hhi] = extentOf(head.positions);
   out.text.write(`        float3[] extent = [${vec3(hlo, 0)}, ${vec3(hhi, 0)}]\n`);
   // the counts are drained with the indices

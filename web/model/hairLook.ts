@@ -40,6 +40,9 @@ export const DEFAULT_HAIR_LOOK: HairLook = {
   roughness: 0.3,
 };
 
+/** The colour of a tie's band (tieBands.ts) when the session names none: a dark elastic. */
+export const DEFAULT_BAND_COLOR = '#1c1c1f';
+
 /** Grey strands: hardly any pigment, a little warm (keratin's own yellow). */
 export const GREY_MELANIN = 0.04;
 export const GREY_REDNESS = 0.5;

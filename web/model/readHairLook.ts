@@ -46,6 +46,14 @@ export function readHairLook(v: Plain | undefined, path: string): { hairLook?: H
   return { hairLook: look };
 }
 
+/** session.bandColor: #rrggbb, kept in lowercase ({} when absent: the default band). */
+export function readBandColor(v: Plain | undefined, path: string): { bandColor?: string } {
+  if (v === undefined) return {};
+  if (typeof v !== 'string' || !/^#[0-9a-fA-F]{6}$/.test(v))
+    fail(path, 'must be a colour like #1c1c1f');
+  return { bandColor: v.toLowerCase() };
+}
+
 /** The look with its numbers on their grids (the same look when they are already). */
 export function quantizeHairLook(look: HairLook): HairLook {
   let same = true;

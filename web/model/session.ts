@@ -143,6 +143,10 @@ export interface SessionState extends SessionSettings {
   /** The colour model (melanin, redness, dye, grey, tips…; hairLook.ts); absent = the hair shows
    *  hairColor as it is (sessions made before it, or a colour picked in the colour box). */
   hairLook?: HairLook;
+  /** The colour of the ties' bands, #rrggbb (with `ties`; absent = hairLook.ts
+   *  DEFAULT_BAND_COLOR). Kept beside hairLook rather than in it: a session showing its direct
+   *  colour (no hairLook, as new sessions do) still has bands to colour. */
+  bandColor?: string;
   /** Curl, clump, frizz and length jitter of every strand (absent = none). */
   detail?: HairDetail;
   /** Scalp brush strokes applied in order over the head's default scalp (absent = none). */

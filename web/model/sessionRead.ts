@@ -23,7 +23,7 @@ import { plainCopy } from './plainCopy';
 import { unitNormal } from './quantize';
 import { curve, detail } from './readCurve';
 import { fail, failed, refuse } from './readFailure';
-import { readHairLook } from './readHairLook';
+import { readBandColor, readHairLook } from './readHairLook';
 import { references } from './readReference';
 import {
   array,
@@ -216,6 +216,7 @@ const FIELD_READERS: Readonly<
     return { hairColor };
   },
   hairLook: readHairLook,
+  bandColor: readBandColor,
   detail,
   scalpPaint,
   symmetry,

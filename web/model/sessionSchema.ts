@@ -111,6 +111,8 @@ export const SESSION_FIELDS: Readonly<Record<string, FieldSpec>> = {
   hairColor: { hair: false, link: 'layout' },
   /** The colour model (hairLook.ts); absent: hairColor is shown as it is. */
   hairLook: { hair: false, link: 'tail' },
+  /** The colour of the ties' bands (tieBands.ts; absent: hairLook.ts DEFAULT_BAND_COLOR). */
+  bandColor: { hair: false, link: 'tail' },
   ...Object.fromEntries(
     SETTING_NAMES.map((k) => [k, { hair: SESSION_SETTINGS[k].hair, link: 'tail' as const }]),
   ),

@@ -15,7 +15,7 @@ import {
 } from '../model/detail';
 import { MAX_HAIR_LENGTH } from '../model/grid';
 import type { GrowthParams } from '../model/growthParams';
-import type { HairLook } from '../model/hairLook';
+import { DEFAULT_BAND_COLOR, type HairLook } from '../model/hairLook';
 import { defOf } from '../model/kinds';
 import { DEFAULT_GROWTH, type SessionState, type StyleCurve } from '../model/session';
 import { SESSION_SETTINGS } from '../model/sessionSchema';
@@ -89,6 +89,8 @@ export interface DetailPanelEvents {
   setDetail(curveId: string | null, detail: HairDetail | undefined): void;
   /** The colour model (null: the colour box's direct colour). */
   setHairLook(look: HairLook | null): void;
+  /** The ties' band colour, #rrggbb. */
+  setBandColor(color: string): void;
 }
 
 export interface DetailPanel {
@@ -177,7 +179,11 @@ export function buildDetailPanel(root: HTMLElement, events: DetailPanelEvents): 
         ),
       );
     panel.append(heading('Colour'));
-    panel.append(hairLookEditors(s.hairLook ?? null, events.setHairLook, events.say));
+    // the band's colour only where there are bands to colour (sessions with ties)
+    const band = s.ties
+      ? { colour: s.bandColor ?? DEFAULT_BAND_COLOR, set: events.setBandColor }
+      : undefined;
+    panel.append(hairLookEditors(s.hairLook ?? null, events.setHairLook, events.say, band));
     // the whole head's detail is always here; a selected curve's own detail follows it
     panel.append(heading('Detail: whole head'));
     detailEditors(s.detail ?? {}, (d) => events.setDetail(null, d), '');
@@ -291,6 +297,8 @@ export function buildDetailPanel(root: HTMLElement, events: DetailPanelEvents): 
         lengthRule(session),
         session.detail,
         session.hairLook,
+        session.ties,
+        session.bandColor,
         selected?.id,
         selected?.detail,
       ]);

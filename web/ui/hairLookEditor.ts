@@ -1,8 +1,9 @@
 // The Hair panel's colour editors (model/hairLook.ts): "Natural colour" on gives the colour
 // model — "Melanin", "Redness", "Grey (%)", "Dye" (off by default) with its colour, "Tips" (an
 // ombré: "Tip melanin", "Tips start (%)" along the strand, "Tip dye"), "Variation" and
-// "Roughness"; off, the hair shows the colour box's direct colour. Every change is one call of
-// `set` (one undoable edit).
+// "Roughness"; off, the hair shows the colour box's direct colour. "Band colour" (the ties'
+// bands, model/tieBands.ts) is there either way: a new session shows the direct colour and has
+// bands. Every change is one call of `set` or `band.set` (one undoable edit).
 import { DEFAULT_HAIR_LOOK, type HairLook } from '../model/hairLook';
 import { HAIR_LOOK_NUMBERS } from '../model/readHairLook';
 import { numberInput, type Say } from './numberInput';
@@ -26,10 +27,17 @@ const TIP_NUMBERS: readonly { key: NumberKey; label: string; scale: number; step
 /** Where the ombré starts when Tips is switched on. */
 const TIPS_START = 0.6;
 
+/** The band colour shown and where a new one goes (the editor's setBandColor). */
+export interface BandColourEditor {
+  colour: string;
+  set(colour: string): void;
+}
+
 export function hairLookEditors(
   look: HairLook | null,
   set: (look: HairLook | null) => void,
   say: Say,
+  band?: BandColourEditor,
 ): HTMLElement {
   const group = document.createElement('fieldset');
   const legend = document.createElement('legend');
@@ -42,6 +50,7 @@ export function hairLookEditors(
     const note = document.createElement('p');
     note.textContent = 'The colour box’s colour, as it is.';
     group.append(note);
+    if (band) group.append(bandRow(band));
     return group;
   }
   const numberRow = (n: (typeof NUMBERS)[number]) => {
@@ -72,7 +81,18 @@ export function hairLookEditors(
     group.append(dyeRow('Tip dye', look.tipDye, (tipDye) => set({ ...look, tipDye })));
   }
   for (const n of NUMBERS.slice(3)) group.append(numberRow(n));
+  if (band) group.append(bandRow(band));
   return group;
+}
+
+/** "Band colour": a colour input, one edit when a colour is picked. */
+function bandRow(band: BandColourEditor): HTMLElement {
+  const colour = document.createElement('input');
+  colour.type = 'color';
+  colour.value = band.colour;
+  colour.setAttribute('aria-label', 'Band colour');
+  colour.addEventListener('change', () => band.set(colour.value));
+  return row('Band colour', colour);
 }
 
 /** A checkbox `name` and, while it is on, a colour input "`name` colour". */

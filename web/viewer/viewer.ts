@@ -428,6 +428,13 @@ export class Viewer {
 
   // ---- scene content -------------------------------------------------------------------------
 
+  /** Adds an opaque object beside the head (the ties' bands): drawn with the head, in front of
+   *  the hair or behind it by depth. */
+  addSolid(object: THREE.Object3D): void {
+    this.scene.add(object);
+    this.requestRender();
+  }
+
   addHead(mesh: THREE.Object3D): void {
     this.scene.add(mesh);
     this.requestRender();
