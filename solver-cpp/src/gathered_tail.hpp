@@ -63,6 +63,7 @@ constexpr float kTailBlend = 0.3f;        // world units (3 cm): from the crossi
 constexpr float kBraidTie = 0.1f;         // world units: the bundles meet into the loose tail
 constexpr float kBunTuckAt = 0.85f;       // of a bun strand's coil: from there its tip turns under
 constexpr float kBraidOpenAt = 0.35f;     // ties on: a braid's bundles' spread at the gather
+constexpr float kBraidEndCut = 0.7f;      // ties on: the outer loose hair ends this much short
 
 // Round: a ponytail's bunch. Braid, Bun: braid_bun.hpp, laid as described there.
 enum class TailShape : uint8_t { Round, Braid, Bun };
@@ -133,8 +134,8 @@ float sectionBunRadius(float share, float lengthAfterTie);
 //   twisted rope of radius rr K turns outward and down the dome to the base and a quarter turn
 //   in under the outer wrap: R = rr (kBunRopePitch K + 2). A whole-section bun's rope holds its
 //   hair (rr = kBunRopeFill x sectionTailRadius(share)) and K is what its length allows.
-constexpr float kTieTaper = 0.6f;      // the radius lost by a round tail's end (x r)
-constexpr float kTieEndOuter = 0.3f;   // the outermost hair ends up to this much short (x L)
+constexpr float kTieTaper = 0.5f;      // the radius lost by a round tail's end (x r)
+constexpr float kTieEndOuter = 0.25f;  // the outermost hair ends up to this much short (x L)
 constexpr float kTieEndAll = 0.05f;    // every strand ends up to this much short (x L)
 constexpr float kBunRopePitch = 1.7f;  // a bun's wraps' spacing, x the rope's radius
 constexpr float kBunRopeFill = 0.8f;   // a rope's radius, x the hair's round-tail radius

@@ -128,7 +128,8 @@ Eigen::Vector2f seatOffset(const GatheredTail& T, float S, float rad, float thet
 
 // Round and braided tails: the strand follows the spine from its capture at its seat's offset
 // (seated: from its seat at once, q being the seat's point). With T.ties a braid's hair reaches
-// the spine's end (less endDraw x half its loose tail) and its plait opens from a round gather.
+// the spine's end less kBraidEndCut rho^2 (0.5 + 0.5 endDraw) of its loose tail, the loose tail
+// tapers by kTieTaper, and its plait opens from a round gather (kBraidOpenAt).
 void layAlongSpine(const GatheredTail& T, const SpineFrames& F, const Capture& cap, float theta,
                    float rho, int bundle, float step, size_t room,
                    std::vector<Eigen::Vector3f>& out, bool seated = false, float endDraw = 0);

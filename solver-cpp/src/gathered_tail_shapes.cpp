@@ -132,9 +132,10 @@ void layAlongSpine(const GatheredTail& T, const SpineFrames& F, const Capture& c
   float remaining =
       T.growsOn ? cap.remaining : std::max(0.f, std::min(cap.remaining, F.s.back() - cap.s0));
   if (T.ties)  // as long as the tail needs: to the spine's end (the loose tail's ends uneven)
-    remaining =
-        T.growsOn ? std::max(cap.remaining, F.s.back() - cap.s0)
-                  : std::max(0.f, F.s.back() - cap.s0 - 0.5f * endDraw * float(T.braid.tailLength));
+    remaining = T.growsOn ? std::max(cap.remaining, F.s.back() - cap.s0)
+                          : std::max(0.f, F.s.back() - cap.s0 -
+                                              kBraidEndCut * rho * rho * (0.5f + 0.5f * endDraw) *
+                                                  float(T.braid.tailLength));
   const size_t segs = std::min(room, std::max<size_t>(1, size_t(std::ceil(remaining / ds))));
   Eigen::Vector3f pq, g1, g2;
   float rq;
@@ -165,7 +166,10 @@ void layAlongSpine(const GatheredTail& T, const SpineFrames& F, const Capture& c
       x = A * std::sin(t) + rb * rho * ct;
       y = B * std::sin(2 * t) + rb * rho * st;
       if (S > Lb) {  // the tie, then the loose tail
-        const float loose = kBraidLoose * width(Lb) * rho, w = smoothstepf((S - Lb) / kBraidTie);
+        float loose = kBraidLoose * width(Lb) * rho;
+        const float w = smoothstepf((S - Lb) / kBraidTie);
+        if (T.ties)  // ties on: the loose tail tapers to its end (uneven: the outer hair is cut)
+          loose *= 1 - kTieTaper * smoothstepf((S - Lb) / std::max(F.s.back() - Lb, 1e-3f));
         x += (loose * ct - x) * w;
         y += (loose * st - y) * w;
       }

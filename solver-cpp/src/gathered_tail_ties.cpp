@@ -10,7 +10,8 @@
 
 namespace hairsketch {
 
-float tieTaper(float f) { return 1 - kTieTaper * gathered_tail::smoothstepf((f - 0.4f) / 0.6f); }
+// full for its first half, then narrowing: a tail thins where its shorter hair has ended
+float tieTaper(float f) { return 1 - kTieTaper * gathered_tail::smoothstepf((f - 0.5f) / 0.5f); }
 
 float tieEndCut(float rho, float u1, float u2) {
   // rho^2 is the seat's share of the disc inside it: the outer hair gives up most of its length
