@@ -119,11 +119,12 @@ GatheredTail bunRope(const GatheredTail& T) {
 
 void layBunRope(const SpineFrames& rope, const Capture& cap, float theta, float rho, float budget,
                 float step, size_t room, bool seated, std::vector<Eigen::Vector3f>& out) {
-  const float Lr = rope.s.back();
-  const float L = std::clamp(budget, 1e-4f, Lr);
-  const size_t segs = std::min(room, std::max<size_t>(1, size_t(std::ceil(L / step))));
-  // twists of the rope: a turn every kBunRopeTwist rope radii shows the wraps' strands slanting
+  // twists of the rope: a turn every kBunRopeTwist rope radii shows the wraps' strands slanting;
+  // a strand winding round the rope's centreline is longer than it by the helix's factor
   const float rr = rope.r[0], twist = kTwoPi / (kBunRopeTwist * rr);
+  const float helix = std::sqrt(1 + (twist * rho * rr) * (twist * rho * rr));
+  const float L = std::clamp(budget / helix, 1e-4f, rope.s.back());
+  const size_t segs = std::min(room, std::max<size_t>(1, size_t(std::ceil(L / step))));
   const Eigen::Vector3f from =
       cap.q -
       (rope.p[0] + rho * rr * (std::cos(theta) * rope.e1[0] + std::sin(theta) * rope.e2[0]));
