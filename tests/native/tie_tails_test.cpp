@@ -13,7 +13,11 @@
 #include "braid_bun.hpp"
 #include "gathered_tail.hpp"
 
-namespace hairsketch {
+// Each test file is a namespace of its own: the build compiles several files as one (unity).
+namespace tie_tails_test {
+
+using namespace hairsketch;
+
 namespace {
 
 constexpr float kTieTestStep = 0.02f;
@@ -281,4 +285,4 @@ TEST(TieTails, TheSeedDecidesAndTiesOffLaysAsBefore) {
 }
 
 }  // namespace
-}  // namespace hairsketch
+}  // namespace tie_tails_test
