@@ -210,24 +210,36 @@ TEST(TieTails, TheCombedHairLiesSmoothlyIntoTheBand) {
   }
 }
 
-// The largest change, as a ratio, of the bundle's radius round the braid's axis (RMS) from one
-// centimetre to the next, from 3 cm above the gather to 8 cm into the plait.
+// The outer surface of the hair over the back of the head round the braid's gather: in each
+// centimetre of height from 10 cm above the gather to 5 cm below it, the largest distance off the
+// head (|x| - 1) of the points within 3 cm of the braid's plane of symmetry (x = 0) and in front
+// of its axis' far side; returns the largest rise from one centimetre to the next (world units).
 float braidLedge(const Head& h, bool ties) {
   const Strands s = grow(h, hanging(4.f, TailShape::Braid, ties), 3.2f);
-  std::vector<float> r;
-  for (float a = -0.03f; a < 0.08f; a += 0.01f) r.push_back(rms(radiiAt(s, a, a + 0.01f)));
-  float worst = 1;
-  for (size_t i = 1; i < r.size(); ++i)
-    worst = std::max(worst, std::max(r[i], r[i - 1]) / std::max(1e-6f, std::min(r[i], r[i - 1])));
+  constexpr int kBins = 15;
+  std::vector<float> top(kBins, 0.f);
+  for (size_t p = 0; p < s.points.size() / 3; ++p) {
+    const Eigen::Vector3f x = pointOf(s, p);
+    const int bin = int(std::floor((arcOf(x) + 0.1f) / 0.01f));
+    if (bin < 0 || bin >= kBins || std::abs(x.x()) > 0.3f) continue;
+    top[size_t(bin)] = std::max(top[size_t(bin)], x.norm() - 1);
+  }
+  float worst = 0;
+  for (int i = 0; i < kBins; ++i) {
+    if (i > 0) worst = std::max(worst, std::abs(top[size_t(i)] - top[size_t(i - 1)]));
+  }
   return worst;
 }
 
 TEST(TieTails, ABraidHasNoLedgeWhereTheHairMeetsIt) {
   const Head h = backOfHead();
   const float on = braidLedge(h, true), off = braidLedge(h, false);
-  std::printf("braid ledge (largest cm-to-cm radius ratio): ties on %.2f, off %.2f\n", on, off);
-  EXPECT_LT(on, 1.35f);
-  EXPECT_GT(off, 1.45f);  // the ledge the plait had: the measure sees it
+  std::printf(
+      "braid ledge (largest rise of the hair's surface off the head per cm near the "
+      "gather): ties on %.1f cm, off %.1f cm\n",
+      10 * on, 10 * off);
+  EXPECT_LT(on, 0.1f);   // under 1 cm per cm: a slope, no step
+  EXPECT_GT(off, 0.2f);  // the ledge the plait had: the measure sees it
 }
 
 TEST(TieTails, ABunIsACoilWithNoHoleOnTopAndItsTipsTuckedUnder) {
