@@ -138,7 +138,7 @@ constexpr float kTieTaper = 0.5f;      // the radius lost by a round tail's end 
 constexpr float kTieEndOuter = 0.25f;  // the outermost hair ends up to this much short (x L)
 constexpr float kTieEndAll = 0.05f;    // every strand ends up to this much short (x L)
 constexpr float kBunRopePitch = 1.7f;  // a bun's wraps' spacing, x the rope's radius
-constexpr float kBunRopeFill = 0.8f;   // a rope's radius, x the hair's round-tail radius
+constexpr float kBunRopeFill = 0.7f;   // a rope's radius, x the hair's round-tail radius
 constexpr float kBunRopeTwist = 6.f;   // the rope's strands turn once per this many rope radii
 float tieTaper(float f);
 float tieEndCut(float rho, float u1, float u2);

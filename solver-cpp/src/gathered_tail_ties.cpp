@@ -20,7 +20,7 @@ float tieEndCut(float rho, float u1, float u2) {
 
 void bunRopeShape(float R, float K, float& rr, float& H) {
   rr = R / (kBunRopePitch * K + 2);
-  H = std::max(H, std::max(0.55f * R, 2.2f * rr));
+  H = std::max(H, std::max(0.7f * R, 2.2f * rr));
 }
 
 void sizeTie(GatheredTail& t, float share, float after) {
