@@ -140,6 +140,7 @@ constexpr float kTieEndAll = 0.05f;    // every strand ends up to this much shor
 constexpr float kBunRopePitch = 1.7f;  // a bun's wraps' spacing, x the rope's radius
 constexpr float kBunRopeFill = 0.7f;   // a rope's radius, x the hair's round-tail radius
 constexpr float kBunRopeTwist = 6.f;   // the rope's strands turn once per this many rope radii
+constexpr float kBunHeadRadius = 1.f;  // world units: the scalp's curvature under a bun
 float tieTaper(float f);
 float tieEndCut(float rho, float u1, float u2);
 // A bun's rope radius for its radius R and turns K; H (its height) raised to hold the dome.

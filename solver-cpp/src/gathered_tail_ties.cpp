@@ -90,7 +90,11 @@ GatheredTail bunRope(const GatheredTail& T) {
   const float R = T.bunRadius, K = std::max(float(T.bun.turns), 0.5f);
   float rr, H = float(T.bun.height);
   bunRopeShape(R, K, rr, H);
+  // heights are over the scalp, not the base's tangent plane: the head (radius about
+  // kBunHeadRadius) falls away by r^2 / 2 kBunHeadRadius at r from the centre, and the outer
+  // wraps follow it down instead of floating over a gap
   auto at = [&](float r, float phi, float z) {
+    z -= r * r / (2 * kBunHeadRadius);
     return Eigen::Vector3f(c + z * n + r * (std::cos(phi) * e1 + std::sin(phi) * e2));
   };
   GatheredTail rope;
