@@ -12,6 +12,8 @@
 
 #include "braid_bun.hpp"
 #include "gathered_tail.hpp"
+#include "hand_strands.hpp"
+#include "ponytail_constraints.hpp"
 
 // Each test file is a namespace of its own: the build compiles several files as one (unity).
 namespace tie_tails_test {
@@ -311,6 +313,40 @@ TEST(TieTails, TheSeedDecidesAndTiesOffLaysAsBefore) {
     // difference), and different from on
     const Strands off = grow(h, hanging(4.f, shape, false), 3.2f);
     EXPECT_NE(off.points, a.points);
+  }
+}
+
+TEST(TieTails, HairTheFieldBringsReachesTheSpinesEndAndKeepsItsPathAbove) {
+  // a sheet of hair running to y = -1.5 (about 25 cm of it past C1) into a ponytail whose spine
+  // hangs from the origin to y = -3 (30 cm); not a whole-section tie
+  std::vector<double> spine;
+  for (int i = 0; i <= 30; ++i) spine.insert(spine.end(), {0.0, -0.1 * i, 0.0});
+  PonytailParams pp;
+  pp.gather = 1;
+  pp.circles.push_back({Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0, -1, 0), 0.15});
+  pp.circles.push_back({Eigen::Vector3d(0, -1, 0), Eigen::Vector3d(0, -1, 0), 0.15});
+  for (bool ties : {false, true}) {
+    GatheredTail t = gatheredTail(spine.data(), spine.size() / 3, pp);
+    t.ties = ties;
+    hand_strands::Hair h = hand_strands::sheet(-1.5f);
+    const Strands before = h.strands;
+    gatherTails({t}, h.roots, h.key, 7, hand_strands::kStep, 255, h.strands);
+    float lowest = 0, highest = -10;
+    for (size_t st = 0; st + 1 < h.strands.strandStart.size(); ++st) {
+      const float* tip = &h.strands.points[3 * (h.strands.strandStart[st + 1] - 1)];
+      lowest = std::min(lowest, tip[1]);
+      highest = std::max(highest, tip[1]);
+      // above C1's plane the path is the field's, bit for bit
+      const uint32_t a0 = before.strandStart[st], a1 = h.strands.strandStart[st];
+      for (uint32_t p = 0; before.points[3 * (a0 + p) + 1] > 0; ++p)
+        ASSERT_EQ(h.strands.points[3 * (a1 + p) + 1], before.points[3 * (a0 + p) + 1]);
+    }
+    if (ties) {
+      EXPECT_LT(lowest, -3.f + 0.2f);     // to the spine's end, past the hair's own length
+      EXPECT_GT(highest, lowest + 0.5f);  // uneven ends
+    } else {
+      EXPECT_GT(lowest, -1.5f - 0.1f);  // as before: its own length
+    }
   }
 }
 
