@@ -52,6 +52,10 @@ TailStats gatherTails(const std::vector<GatheredTail>& tails,
       if (!T[k].section || held[k] == 0) continue;
       const float share = float(held[k]) / float(nS);
       GatheredTail& t = T[k];
+      if (t.ties) {
+        sizeTie(t, share, float(after[k] / held[k]));
+        continue;
+      }
       if (t.shape == TailShape::Bun) {
         t.bunRadius = std::max(t.bunRadius, sectionBunRadius(share, float(after[k] / held[k])));
         t.bun.height = std::max(t.bun.height, 0.6 * t.bunRadius);
@@ -183,6 +187,14 @@ TailStats gatherTails(const std::vector<GatheredTail>& tails,
       Pcg32 rng(seed ^ (uint64_t(key[cs[m].strand]) * 0x9e3779b97f4a7c15ULL), 0x7a11ULL);
       return float(rng.uniform());
     };
+    // ties on: each strand's two draws for its end (tieEndCut), their own stream
+    auto endDraws = [&](uint32_t m, float& u1, float& u2) {
+      Pcg32 rng(seed ^ (uint64_t(key[cs[m].strand]) * 0x9e3779b97f4a7c15ULL), 0x7a12ULL);
+      u1 = float(rng.uniform());
+      u2 = float(rng.uniform());
+    };
+    std::vector<SpineFrames> rope;  // ties on, a bun: its rope
+    if (Tk.ties && Tk.shape == TailShape::Bun) rope.emplace_back(bunRope(Tk));
     // seats: an angle theta and a radius rho in the unit disc (for a braid, in its bundle's)
     std::vector<float> theta(N), rho(N);
     std::vector<uint8_t> bundle(N, 0);
@@ -213,7 +225,20 @@ TailStats gatherTails(const std::vector<GatheredTail>& tails,
       const size_t room = maxPoints > cap.keep + 1 ? maxPoints - cap.keep - 1 : 0;
       if (room == 0) continue;
       std::vector<Eigen::Vector3f>& out = laid[cap.strand];
-      if (cap.combed) {
+      float u1 = 0, u2 = 0;
+      if (Tk.ties) endDraws(uint32_t(i), u1, u2);
+      if (Tk.ties && cap.combed) {
+        layCombedTie(Tk, F, rope.empty() ? nullptr : &rope[0], *sections, cap, theta[i], rho[i],
+                     bundle[i], distRank[i], u1, u2, step, room, out);
+      } else if (Tk.ties && Tk.shape == TailShape::Bun) {
+        const float budget = maxLength > 0 ? maxLength - cap.before : cap.remaining;
+        layBunRope(rope[0], cap, theta[i], rho[i], std::max(budget, cap.remaining), step, room,
+                   false, out);
+      } else if (Tk.ties && Tk.shape == TailShape::Round) {
+        layRoundTie(Tk, F, cap, theta[i], rho[i], u1, u2, step, room, out);
+      } else if (Tk.ties) {
+        layAlongSpine(Tk, F, cap, theta[i], rho[i], bundle[i], step, room, out, false, u2);
+      } else if (cap.combed) {
         layCombed(Tk, F, *sections, cap, theta[i], rho[i], bundle[i], distRank[i],
                   jitter(uint32_t(i)), step, room, maxLength, out);
       } else if (Tk.shape == TailShape::Bun) {

@@ -62,6 +62,8 @@ constexpr float kBraidLoose = 0.7f;       // the loose tail's radius, x the widt
 constexpr float kTailBlend = 0.3f;        // world units (3 cm): from the crossing to the seat
 constexpr float kBraidTie = 0.1f;         // world units: the bundles meet into the loose tail
 constexpr float kBunTuckAt = 0.85f;       // of a bun strand's coil: from there its tip turns under
+constexpr float kBraidOpenAt = 0.35f;     // ties on: a braid's bundles' spread at the gather
+constexpr float kBraidEndCut = 0.7f;      // ties on: the outer loose hair ends this much short
 
 // Round: a ponytail's bunch. Braid, Bun: braid_bun.hpp, laid as described there.
 enum class TailShape : uint8_t { Round, Braid, Bun };
@@ -84,6 +86,9 @@ struct GatheredTail {
   // head (the scalp point nearest C1's centre).
   bool section = false;
   Eigen::Vector3f anchor = Eigen::Vector3f::Zero();
+  // The session's `ties` (HairEngine::ties): lay the tie as "Ties from any hand" below
+  // (gathered_tail_ties.cpp). Off: laid exactly as before (saved sessions keep their hair).
+  bool ties = false;
 };
 
 // The tail of a gathered ponytail: spine = the curve's points from the one nearest C1's centre
@@ -117,6 +122,31 @@ constexpr float kTailRadius = 0.2f;  // 2 cm: the same hair hanging below it
 constexpr float kCombLift = 0.07f;   // 7 mm: the top layer of combed hair over the scalp
 float sectionTailRadius(float share);
 float sectionBunRadius(float share, float lengthAfterTie);
+
+// Ties from any hand (the session's `ties` on; gathered_tail_ties.cpp, docs/braids-buns.md):
+//   A tie's hair is as long as its tail needs (combed path + the spine to its end) whatever the
+//   session's Max length, unless its curve lets the hair grow on.
+//   Round tail: its radius r(s) times tieTaper(s / L) (L the spine's length), and each strand
+//   ends tieEndCut(rho, u1, u2) L short of the spine's end (rho its seat radius in the unit
+//   disc, u1, u2 seeded per strand): the outer hair ends earlier, so the tail tapers to uneven
+//   ends instead of a square cut.
+//   Bun: the gathered hair goes up the axis from the band, over the top's centre, then as one
+//   twisted rope of radius rr K turns outward and down the dome to the base and a quarter turn
+//   in under the outer wrap: R = rr (kBunRopePitch K + 2). A whole-section bun's rope holds its
+//   hair (rr = kBunRopeFill x sectionTailRadius(share)) and K is what its length allows.
+constexpr float kTieTaper = 0.5f;      // the radius lost by a round tail's end (x r)
+constexpr float kTieEndOuter = 0.25f;  // the outermost hair ends up to this much short (x L)
+constexpr float kTieEndAll = 0.05f;    // every strand ends up to this much short (x L)
+constexpr float kBunRopePitch = 1.7f;  // a bun's wraps' spacing, x the rope's radius
+constexpr float kBunRopeFill = 0.7f;   // a rope's radius, x the hair's round-tail radius
+constexpr float kBunRopeTwist = 6.f;   // the rope's strands turn once per this many rope radii
+constexpr float kBunHeadRadius = 1.f;  // world units: the scalp's curvature under a bun
+float tieTaper(float f);
+float tieEndCut(float rho, float u1, float u2);
+// A bun's rope radius for its radius R and turns K; H (its height) raised to hold the dome.
+void bunRopeShape(float R, float K, float& rr, float& H);
+// A whole-section tie's size for `share` of the hair, `after` long past the tie (world units).
+void sizeTie(GatheredTail& t, float share, float after);
 
 struct TailStats {
   size_t captured = 0;            // strands laid into a tail

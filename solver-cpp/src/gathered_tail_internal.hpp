@@ -127,14 +127,29 @@ Eigen::Vector2f seatOffset(const GatheredTail& T, float S, float rad, float thet
                            int bundle);
 
 // Round and braided tails: the strand follows the spine from its capture at its seat's offset
-// (seated: from its seat at once, q being the seat's point).
+// (seated: from its seat at once, q being the seat's point). With T.ties a braid's hair reaches
+// the spine's end less kBraidEndCut rho^2 (0.5 + 0.5 endDraw) of its loose tail, the loose tail
+// tapers by kTieTaper, and its plait opens from a round gather (kBraidOpenAt).
 void layAlongSpine(const GatheredTail& T, const SpineFrames& F, const Capture& cap, float theta,
                    float rho, int bundle, float step, size_t room,
-                   std::vector<Eigen::Vector3f>& out, bool seated = false);
+                   std::vector<Eigen::Vector3f>& out, bool seated = false, float endDraw = 0);
 
 // A bun: the strand coils round the axis from its seat angle, over the dome, then tucks under.
 void layBun(const GatheredTail& T, const SpineFrames& F, const Capture& cap, float theta, float rho,
             float step, size_t room, float maxLength, std::vector<Eigen::Vector3f>& out);
+
+// Ties from any hand (gathered_tail_ties.cpp; T.ties).
+
+// A round tail's strand: as layAlongSpine, to the spine's end less its own cut, tapering.
+void layRoundTie(const GatheredTail& T, const SpineFrames& F, const Capture& cap, float theta,
+                 float rho, float u1, float u2, float step, size_t room,
+                 std::vector<Eigen::Vector3f>& out, bool seated = false);
+
+// A bun's rope (its centreline as a tail's spine, radius rr) and a strand laid along it from its
+// seat (theta, rho) in the rope's first cross-section, at most `budget` long.
+GatheredTail bunRope(const GatheredTail& T);
+void layBunRope(const SpineFrames& rope, const Capture& cap, float theta, float rho, float budget,
+                float step, size_t room, bool seated, std::vector<Eigen::Vector3f>& out);
 
 // Whole sections (gathered_tail_sections.cpp).
 
@@ -142,5 +157,11 @@ void layBun(const GatheredTail& T, const SpineFrames& F, const Capture& cap, flo
 void layCombed(const GatheredTail& T, const SpineFrames& F, const SectionGather& g,
                const Capture& cap, float theta, float rho, int bundle, float lambda, float u,
                float step, size_t room, float maxLength, std::vector<Eigen::Vector3f>& out);
+// The same with T.ties: the combed hair rises smoothly to its seat; u1, u2 the strand's draws
+// (layRoundTie), rope the bun's rope (null unless a bun).
+void layCombedTie(const GatheredTail& T, const SpineFrames& F, const SpineFrames* rope,
+                  const SectionGather& g, const Capture& cap, float theta, float rho, int bundle,
+                  float lambda, float u1, float u2, float step, size_t room,
+                  std::vector<Eigen::Vector3f>& out);
 
 }  // namespace hairsketch::gathered_tail

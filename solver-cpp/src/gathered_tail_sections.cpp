@@ -30,8 +30,11 @@ Eigen::Vector3f offHead(const SectionGather& g, Eigen::Vector3f x, float lift, f
 // A whole-section strand's way from its root over the scalp to the foot of its seat point P,
 // then up to P (gathered_tail.hpp); out gets the points after the root, up to P. Returns the
 // path's length.
+// smooth (ties on): instead of turning up from the foot to P, the hair rises to P over its last
+// max(3 cm, 3 |P - foot|) on the scalp, so gathered hair lies smoothly into the band.
 float combPath(const SectionGather& g, const Eigen::Vector3f& root, const Eigen::Vector3f& P,
-               float lambda, float step, size_t maxPoints, std::vector<Eigen::Vector3f>& out) {
+               float lambda, float step, size_t maxPoints, std::vector<Eigen::Vector3f>& out,
+               bool smooth = false) {
   const Eigen::Vector3f c = g.centre;
   const float sphere = (root - c).norm();
   const Eigen::Vector3f foot = offHead(g, P, g.margin, sphere);
@@ -46,13 +49,18 @@ float combPath(const SectionGather& g, const Eigen::Vector3f& root, const Eigen:
   const float ds = std::max(step, arc / float(std::max<size_t>(maxPoints, 2)));
   const size_t n = std::max<size_t>(1, size_t(std::ceil(ang * 0.5f * (ra + rb) / ds)));
   const float top = kCombLift * lambda;
+  const Eigen::Vector3f rise = P - foot;
+  const float overHead = ang * 0.5f * (ra + rb);
+  const float span =
+      overHead > 0 ? std::min(1.f, std::max(kTailBlend, 3 * rise.norm()) / overHead) : 1.f;
   Eigen::Vector3f prev = root;
   float length = 0;
   for (size_t i = 1; i <= n; ++i) {
     const float t = float(i) / float(n);
     const Eigen::Vector3f d = Eigen::AngleAxisf(t * ang, axis) * a;
-    const Eigen::Vector3f x =
+    Eigen::Vector3f x =
         offHead(g, c + d * (ra + t * (rb - ra)), g.margin + top * smoothstepf(t), sphere);
+    if (smooth) x += smoothstepf((t - (1 - span)) / span) * rise;
     length += (x - prev).norm();
     out.push_back(x);
     prev = x;
@@ -69,6 +77,54 @@ float combPath(const SectionGather& g, const Eigen::Vector3f& root, const Eigen:
 }
 
 }  // namespace
+
+void layCombedTie(const GatheredTail& T, const SpineFrames& F, const SpineFrames* rope,
+                  const SectionGather& g, const Capture& cap, float theta, float rho, int bundle,
+                  float lambda, float u1, float u2, float step, size_t room,
+                  std::vector<Eigen::Vector3f>& out) {
+  const bool bun = T.shape == TailShape::Bun && rope;
+  Eigen::Vector3f seat;
+  if (bun) {
+    seat = rope->p[0] +
+           rho * rope->r[0] * (std::cos(theta) * rope->e1[0] + std::sin(theta) * rope->e2[0]);
+  } else {
+    const Eigen::Vector2f o = seatOffset(T, 0, F.r[0], theta, rho, bundle);
+    seat = F.p[0] + o.x() * F.e1[0] + o.y() * F.e2[0];
+  }
+  std::vector<Eigen::Vector3f> path;
+  const float way = combPath(g, cap.q, seat, lambda, step, room / 2, path, true);
+  const float L = cap.remaining;  // the hair's length by Max length: a bun coils what it has
+  if ((bun && way >= L) || path.size() + 1 >= room) {  // combed towards the tie
+    out.clear();
+    float walked = 0;
+    Eigen::Vector3f prev = cap.q;
+    for (const Eigen::Vector3f& x : path) {
+      const float d = (x - prev).norm();
+      if (walked + d > L || out.size() + 1 >= room) break;
+      walked += d;
+      out.push_back(x);
+      prev = x;
+    }
+    if (out.empty()) out.push_back(cap.q);
+    return;
+  }
+  out = path;
+  Capture tail = cap;
+  tail.q = seat;
+  tail.before = way;
+  tail.s0 = 0;
+  // round and braid: as long as the tail needs (layRoundTie, layAlongSpine with ties)
+  tail.remaining = std::max(0.f, L - way);
+  std::vector<Eigen::Vector3f> laid;
+  const size_t left = room - path.size();
+  if (bun)
+    layBunRope(*rope, tail, theta, rho, L - way, step, left, true, laid);
+  else if (T.shape == TailShape::Round)
+    layRoundTie(T, F, tail, theta, rho, u1, u2, step, left, laid, true);
+  else
+    layAlongSpine(T, F, tail, theta, rho, bundle, step, left, laid, true, u2);
+  out.insert(out.end(), laid.begin() + (laid.empty() ? 0 : 1), laid.end());
+}
 
 void layCombed(const GatheredTail& T, const SpineFrames& F, const SectionGather& g,
                const Capture& cap, float theta, float rho, int bundle, float lambda, float u,

@@ -94,6 +94,16 @@ GatheredTail bunTail(const BunFrame& f, const BunParams& prm) {
 
 namespace gathered_tail {
 
+namespace {
+
+// Ties on: how far a braid's bundles have spread at S (of their amplitude), opening over half a
+// period from a round gather so the combed hair runs into the plait without a ledge.
+float braidOpen(const GatheredTail& T, float S, float period) {
+  return T.ties ? kBraidOpenAt + (1 - kBraidOpenAt) * smoothstepf(S / (0.5f * period)) : 1.f;
+}
+
+}  // namespace
+
 Eigen::Vector2f seatOffset(const GatheredTail& T, float S, float rad, float theta, float rho,
                            int bundle) {
   const float ct = std::cos(theta), st = std::sin(theta);
@@ -101,21 +111,31 @@ Eigen::Vector2f seatOffset(const GatheredTail& T, float S, float rad, float thet
   const float Lb = T.braidLength, tau = float(T.braid.tightness);
   const float f = Lb > 0 ? std::clamp(S / Lb, 0.f, 1.f) : 1.f;
   const float W = float(T.braid.width) * (1 - 0.4f * f), rb = W * kBraidBundle;
-  const float A = W / 2 - rb, B = rb * (1.5f - 0.8f * tau);
+  float A = W / 2 - rb, B = rb * (1.5f - 0.8f * tau);
+  if (T.ties) {
+    const float open = braidOpen(T, S, float(6.0 / T.braid.crossings));
+    A *= open;
+    B *= open;
+  }
   const float t = kTwoPi * (S / float(6.0 / T.braid.crossings) + float(bundle) / 3);
   return Eigen::Vector2f(A * std::sin(t) + rb * rho * ct, B * std::sin(2 * t) + rb * rho * st);
 }
 
 void layAlongSpine(const GatheredTail& T, const SpineFrames& F, const Capture& cap, float theta,
                    float rho, int bundle, float step, size_t room,
-                   std::vector<Eigen::Vector3f>& out, bool seated) {
+                   std::vector<Eigen::Vector3f>& out, bool seated, float endDraw) {
   const bool braid = T.shape == TailShape::Braid;
   const float period = braid ? float(6.0 / T.braid.crossings) : 0.f;
   // a braid's period gets at least 16 points where the cap allows
   const float ds = braid ? std::min(step, period / 16) : step;
   // the hair ends at the spine's end unless its curve lets it grow on
-  const float remaining =
+  float remaining =
       T.growsOn ? cap.remaining : std::max(0.f, std::min(cap.remaining, F.s.back() - cap.s0));
+  if (T.ties)  // as long as the tail needs: to the spine's end (the loose tail's ends uneven)
+    remaining = T.growsOn ? std::max(cap.remaining, F.s.back() - cap.s0)
+                          : std::max(0.f, F.s.back() - cap.s0 -
+                                              kBraidEndCut * rho * rho * (0.5f + 0.5f * endDraw) *
+                                                  float(T.braid.tailLength));
   const size_t segs = std::min(room, std::max<size_t>(1, size_t(std::ceil(remaining / ds))));
   Eigen::Vector3f pq, g1, g2;
   float rq;
@@ -135,12 +155,21 @@ void layAlongSpine(const GatheredTail& T, const SpineFrames& F, const Capture& c
     F.at(S, pos, f1, f2, rad);
     float x = rho * ct * rad, y = rho * st * rad;
     if (braid) {
-      const float W = width(S), rb = W * kBraidBundle, A = W / 2 - rb, B = rb * (1.5f - 0.8f * tau);
+      const float W = width(S), rb = W * kBraidBundle;
+      float A = W / 2 - rb, B = rb * (1.5f - 0.8f * tau);
+      if (T.ties) {
+        const float open = braidOpen(T, S, period);
+        A *= open;
+        B *= open;
+      }
       const float t = kTwoPi * (S / period + float(bundle) / 3);
       x = A * std::sin(t) + rb * rho * ct;
       y = B * std::sin(2 * t) + rb * rho * st;
       if (S > Lb) {  // the tie, then the loose tail
-        const float loose = kBraidLoose * width(Lb) * rho, w = smoothstepf((S - Lb) / kBraidTie);
+        float loose = kBraidLoose * width(Lb) * rho;
+        const float w = smoothstepf((S - Lb) / kBraidTie);
+        if (T.ties)  // ties on: the loose tail tapers to its end (uneven: the outer hair is cut)
+          loose *= 1 - kTieTaper * smoothstepf((S - Lb) / std::max(F.s.back() - Lb, 1e-3f));
         x += (loose * ct - x) * w;
         y += (loose * st - y) * w;
       }

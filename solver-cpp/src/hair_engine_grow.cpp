@@ -112,6 +112,7 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
     bool bySection = false;
     for (GatheredTail& t : tails) {
       t.section = t.section && sections_;
+      t.ties = ties_;
       bySection |= t.section;
     }
     if (bySection) {
