@@ -56,3 +56,20 @@ describe('snapToPlane', () => {
     expect(c.points[0][0]).toBeCloseTo(0.3, 12);
   });
 });
+
+describe('ponytailFromSpine on a spine that rises and falls', () => {
+  it('puts no circle before the band (a plane there meets the falling part far away)', () => {
+    // up and back from the crown, over, then down past the root's height
+    const arc: Vec3[] = [];
+    for (let i = 0; i <= 60; i++) {
+      const t = (Math.PI * i) / 40;
+      arc.push([0, 1 + 0.3 * Math.sin(t) - 0.02 * i, -0.5 - 0.3 * (1 - Math.cos(t))]);
+    }
+    const p = ponytailFromSpine(arc, fromSide);
+    expect(p.circles.length).toBeGreaterThan(10);
+    for (const c of p.circles) {
+      expect(c.spineIndex).toBeGreaterThanOrEqual(2);
+      expect(c.radius).toBeCloseTo(ONE_STROKE_RADIUS, 6);
+    }
+  });
+});

@@ -65,6 +65,10 @@ export function ponytailFromSpine(
     sub(spine[b], scale(sides[b], radius)),
     add(spine[b], scale(sides[b], radius)),
   ];
-  const { circles } = ponytailCircles(spine as Vec3[], crossSection, a, c, { every: 2 });
+  // the circles ponytailCircles gives between these profiles from the band on (its planes
+  // before the band could meet the profiles far down a spine that rises and falls)
+  const circles = ponytailCircles(spine as Vec3[], crossSection, a, c, { every: 2 }).circles.filter(
+    (q) => q.spineIndex >= b,
+  );
   return { crossSection, profiles: [a, c], circles };
 }

@@ -267,12 +267,19 @@ function planeCrossings(at: Vec3, axis: Vec3, own: number[], strands: Strands): 
   return out;
 }
 
-/** The distance from `centre` within which BAND_SHARE of the points lie. */
+/** The distance from `centre` within which BAND_SHARE of the points lie, at most STRAY_RATIO
+ *  times the median distance: a gathered tail's crossings are compact (its 95th percentile is
+ *  about 1.4 times its median), so crossings far past that are strands that meet the plane
+ *  elsewhere (hair combed over the scalp under a band close to the head), not the tail's. */
 function shareRadius(crossings: readonly Crossing[], centre: Vec3): number {
   if (crossings.length === 0) return 0;
   // a typed array sorts numerically without a comparator, many times faster (it runs often)
   const d = Float64Array.from(crossings, (c) =>
     Math.hypot(c.at[0] - centre[0], c.at[1] - centre[1], c.at[2] - centre[2]),
   ).sort();
-  return d[Math.min(d.length - 1, Math.max(0, Math.ceil(BAND_SHARE * d.length) - 1))];
+  const share = d[Math.min(d.length - 1, Math.max(0, Math.ceil(BAND_SHARE * d.length) - 1))];
+  return Math.min(share, STRAY_RATIO * d[Math.floor(d.length / 2)]);
 }
+
+/** See shareRadius. */
+const STRAY_RATIO = 2;
