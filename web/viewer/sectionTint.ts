@@ -95,7 +95,8 @@ const OVER_HAIR_OPACITY = 0.45;
 
 /** The scalp's sections drawn over the hair (a tie tool is active: the user must see which hair
  *  a tie will take, and hair covers the scalp): the scalp triangles facing the camera, in their
- *  section's hue, half transparent and not hidden by the hair. Null when no triangle has one. */
+ *  section's hue, half transparent and not hidden by the hair. Null when fewer than two sections
+ *  show (one section: every tie takes the same hair). */
 export function sectionsOverHair(
   head: HeadMeshArrays,
   sections: Int16Array,
@@ -104,17 +105,20 @@ export function sectionsOverHair(
   const tints = SECTION_TINTS.map((c) => new THREE.Color(c));
   const pos: number[] = [];
   const col: number[] = [];
+  const seen = new Set<number>();
   for (let t = 0; t + 2 < indices.length; t += 3) {
     const v = [indices[t], indices[t + 1], indices[t + 2]];
     const sec = sections[v[0]];
     if (sec < 0 || sections[v[1]] !== sec || sections[v[2]] !== sec) continue;
     const c = tints[sec % tints.length];
+    seen.add(sec);
     for (const i of v) {
       pos.push(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]);
       col.push(c.r, c.g, c.b);
     }
   }
-  if (pos.length === 0) return null;
+  // one section (no parting bounds one): nothing to tell apart, the hair shows as it is
+  if (seen.size < 2) return null;
   const g = new THREE.BufferGeometry();
   g.setAttribute('position', new THREE.BufferAttribute(new Float32Array(pos), 3));
   g.setAttribute('color', new THREE.BufferAttribute(new Float32Array(col), 3));
