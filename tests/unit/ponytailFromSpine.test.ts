@@ -2,7 +2,13 @@
 // the head's middle (web/model/mirror.ts snapToPlane), against values computed by hand.
 import { describe, expect, it } from 'vitest';
 import { snapToPlane, X_PLANE } from '../../web/model/mirror';
-import { BAND_ARC, ONE_STROKE_RADIUS, ponytailFromSpine } from '../../web/model/ponytailFromSpine';
+import {
+  BAND_ARC,
+  bandIndex,
+  ONE_STROKE_RADIUS,
+  ponytailFromSpine,
+  widenPonytail,
+} from '../../web/model/ponytailFromSpine';
 import type { Vec3 } from '../../web/model/vec3';
 
 // a spine from (0, 1, -0.9) going back 0.3, then straight down 2 units, every 0.05
@@ -71,5 +77,20 @@ describe('ponytailFromSpine on a spine that rises and falls', () => {
       expect(c.spineIndex).toBeGreaterThanOrEqual(2);
       expect(c.radius).toBeCloseTo(ONE_STROKE_RADIUS, 6);
     }
+  });
+});
+
+describe('widenPonytail (the curve panel width)', () => {
+  it('scales the circles and the strokes about the spine', () => {
+    const p = ponytailFromSpine(spine, fromSide);
+    const w = widenPonytail(spine, p, 2.5);
+    for (const [i, c] of w.circles.entries())
+      expect(c.radius).toBeCloseTo(2.5 * p.circles[i].radius, 9);
+    // a profile point 8 mm off its spine point is 2 cm off it now, on the same side
+    const k = 10;
+    const s = spine[bandIndex(spine) + k];
+    const before = p.profiles[0][k];
+    const after = w.profiles[0][k];
+    for (let e = 0; e < 3; e++) expect(after[e] - s[e]).toBeCloseTo(2.5 * (before[e] - s[e]), 9);
   });
 });

@@ -94,6 +94,7 @@ export function buildSelectedCurvePanel(
     (id, patch) => editor.run({ kind: 'patchCurve', id, patch }),
     (m) => status.note(m),
     (id) => editor.run({ kind: 'braidTail', id }),
+    (id, width) => editor.run({ kind: 'setPonytailWidth', id, width }),
   );
 }
 

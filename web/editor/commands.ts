@@ -15,6 +15,7 @@ import {
   syncMirrorTwins,
   X_PLANE,
 } from '../model/mirror';
+import { PONYTAIL_WIDTH, widenPonytail } from '../model/ponytailFromSpine';
 import type { PonytailCircle } from '../model/ponytailGeometry';
 import { quantizeSession } from '../model/quantize';
 import type { ReferenceImage } from '../model/referenceImage';
@@ -64,6 +65,9 @@ export type Command =
   | { kind: 'braidTail'; id: string }
   /** A ponytail's cross-section and two profiles drawn after its spine (method S4.6's strokes
    *  2-4): they replace those its one stroke made, and its circles follow. */
+  /** The curve panel's width of a ponytail: at least `width` (world units) across at its band
+   *  (the hair it holds may make it wider), the circles and strokes widened about the spine. */
+  | { kind: 'setPonytailWidth'; id: string; width: number }
   | {
       kind: 'shapePonytail';
       id: string;
@@ -254,6 +258,26 @@ const HANDLERS: {
       session: updateCurve(s, c.id, () => braid),
       selectedId: c.id,
       message: `Braided the tail of ${c.id}: a braid ${Math.round(braid.width * 100) / 10} cm wide.`,
+    };
+  },
+  setPonytailWidth(s, cmd) {
+    const c = findCurve(s, cmd.id);
+    if (c?.type !== 'ponytail' || c.circles.length === 0)
+      return { session: s, message: `No ponytail ${cmd.id}.` };
+    if (
+      !Number.isFinite(cmd.width) ||
+      cmd.width < PONYTAIL_WIDTH.min ||
+      cmd.width > PONYTAIL_WIDTH.max
+    )
+      return {
+        session: s,
+        message: `Width must be a number from ${10 * PONYTAIL_WIDTH.min} to ${10 * PONYTAIL_WIDTH.max} cm: nothing changed.`,
+      };
+    const wide = widenPonytail(c.points, c, cmd.width / (2 * c.circles[0].radius));
+    return {
+      session: updateCurve(s, c.id, () => ({ ...c, ...wide })),
+      selectedId: c.id,
+      message: `Ponytail ${c.id} at least ${Math.round(100 * cmd.width) / 10} cm wide at its band.`,
     };
   },
   shapePonytail(s, cmd) {

@@ -19,6 +19,8 @@ import { add, cross, length, normalize, scale, sub, type Vec3 } from './vec3';
 export const BAND_ARC = 0.12;
 /** The made profiles' half-width (world units, 8 mm). */
 export const ONE_STROKE_RADIUS = 0.08;
+/** The curve panel's width of a ponytail at its band (world units: 0.5 to 20 cm). */
+export const PONYTAIL_WIDTH = { min: 0.05, max: 2 };
 
 export interface PonytailStrokes {
   crossSection: Vec3[];
@@ -71,4 +73,27 @@ export function ponytailFromSpine(
     (q) => q.spineIndex >= b,
   );
   return { crossSection, profiles: [a, c], circles };
+}
+
+/** Ponytail strokes made `factor` times as wide about the spine (the curve panel's width): each
+ *  circle's radius, each profile point's offset from its nearest spine point and the
+ *  cross-section's spread about its centre (a later spine edit recomputes the circles from the
+ *  profiles, PONYTAIL.respine). */
+export function widenPonytail(
+  spine: readonly Vec3[],
+  strokes: PonytailStrokes,
+  factor: number,
+): PonytailStrokes {
+  const aboutSpine = (p: Vec3): Vec3 => {
+    let best = spine[0];
+    for (const s of spine) if (length(sub(p, s)) < length(sub(p, best))) best = s;
+    return add(best, scale(sub(p, best), factor));
+  };
+  const n = strokes.crossSection.length;
+  const mid = strokes.crossSection.reduce<Vec3>((m, p) => add(m, scale(p, 1 / n)), [0, 0, 0]);
+  return {
+    crossSection: strokes.crossSection.map((p) => add(mid, scale(sub(p, mid), factor))),
+    profiles: [strokes.profiles[0].map(aboutSpine), strokes.profiles[1].map(aboutSpine)],
+    circles: strokes.circles.map((c) => ({ ...c, radius: c.radius * factor })),
+  };
 }

@@ -6,6 +6,7 @@
 
 import { CURVE_PARAMS, type CurveParamSpec } from '../model/curveParams';
 import { defOf, extendsPastEnd } from '../model/kinds';
+import { PONYTAIL_WIDTH } from '../model/ponytailFromSpine';
 import type { StyleCurve } from '../model/session';
 import { numberInput, type Say } from './numberInput';
 
@@ -44,6 +45,8 @@ export function buildCurvePanel(
   say: Say,
   /** "Braid the tail" of a ponytail (absent: no button). */
   braidTail?: (id: string) => void,
+  /** A ponytail's width at its band, world units (absent: no input). */
+  ponytailWidth?: (id: string, width: number) => void,
 ): CurvePanel {
   const panel = document.createElement('section');
   panel.id = 'curve-panel';
@@ -79,6 +82,22 @@ export function buildCurvePanel(
         button.addEventListener('click', () => braidTail(curve.id));
         panel.append(button);
       }
+      if (curve.type === 'ponytail' && ponytailWidth && curve.circles.length > 0) {
+        // the profile's scale: the tail at least this wide at its band (the hair it holds may
+        // make it wider)
+        const label = document.createElement('label');
+        label.textContent = 'Width at the band, at least (cm)';
+        label.append(
+          numberInput(
+            { min: 10 * PONYTAIL_WIDTH.min, max: 10 * PONYTAIL_WIDTH.max, step: 0.5 },
+            20 * curve.circles[0].radius,
+            { label: 'Width at the band', unit: 'cm', decimals: 2 },
+            (v) => ponytailWidth(curve.id, v / 10),
+            say,
+          ),
+        );
+        panel.append(label);
+      }
       for (const s of specsOf(curve)) {
         const label = document.createElement('label');
         label.textContent = paramLabel(s);
@@ -110,5 +129,9 @@ export function buildCurvePanel(
 
 /** What the panel shows of a curve: it is rebuilt when this changes. */
 function paramsOf(c: StyleCurve): unknown {
-  return [extendsPastEnd(c), ...specsOf(c).map((s) => paramValue(c, s))];
+  return [
+    extendsPastEnd(c),
+    ...specsOf(c).map((s) => paramValue(c, s)),
+    c.type === 'ponytail' ? c.circles[0]?.radius : null,
+  ];
 }
