@@ -44,6 +44,7 @@
 //     path), ending at the spine's end (less a seeded 0-8 % so the ends are not cut straight)
 //     unless the curve lets it grow on. A bun's radius is at least sectionBunRadius and its
 //     height 0.6 of it; its strands wind as many turns (up to K) as their length allows.
+//   That is the ties-off layout; with the session's ties on, see "Ties from any hand" below.
 #pragma once
 
 #include <Eigen/Core>
