@@ -121,6 +121,9 @@ struct SectionGather {
 constexpr float kTieRadius = 0.12f;  // 1.2 cm: the whole head's hair held by a band
 constexpr float kTailRadius = 0.2f;  // 2 cm: the same hair hanging below it
 constexpr float kCombLift = 0.07f;   // 7 mm: the top layer of combed hair over the scalp
+// ties on: combed hair rises to its seat over kCombRise times the seat's height off the head
+// (at most 1.5 / kCombRise of a slope: about 37 degrees)
+constexpr float kCombRise = 2.f;
 float sectionTailRadius(float share);
 float sectionBunRadius(float share, float lengthAfterTie);
 
