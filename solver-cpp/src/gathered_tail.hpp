@@ -44,6 +44,7 @@
 //     path), ending at the spine's end (less a seeded 0-8 % so the ends are not cut straight)
 //     unless the curve lets it grow on. A bun's radius is at least sectionBunRadius and its
 //     height 0.6 of it; its strands wind as many turns (up to K) as their length allows.
+//   That is the ties-off layout; with the session's ties on, see "Ties from any hand" below.
 #pragma once
 
 #include <Eigen/Core>
@@ -120,6 +121,9 @@ struct SectionGather {
 constexpr float kTieRadius = 0.12f;  // 1.2 cm: the whole head's hair held by a band
 constexpr float kTailRadius = 0.2f;  // 2 cm: the same hair hanging below it
 constexpr float kCombLift = 0.07f;   // 7 mm: the top layer of combed hair over the scalp
+// ties on: combed hair rises to its seat over kCombRise times the seat's height off the head
+// (at most 1.5 / kCombRise of a slope: about 37 degrees)
+constexpr float kCombRise = 2.f;
 float sectionTailRadius(float share);
 float sectionBunRadius(float share, float lengthAfterTie);
 

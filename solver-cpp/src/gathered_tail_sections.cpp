@@ -31,7 +31,7 @@ Eigen::Vector3f offHead(const SectionGather& g, Eigen::Vector3f x, float lift, f
 // then up to P (gathered_tail.hpp); out gets the points after the root, up to P. Returns the
 // path's length.
 // smooth (ties on): instead of turning up from the foot to P, the hair rises to P over its last
-// max(3 cm, 3 |P - foot|) on the scalp, so gathered hair lies smoothly into the band.
+// max(3 cm, kCombRise |P - foot|) on the scalp, so gathered hair lies smoothly into the band.
 float combPath(const SectionGather& g, const Eigen::Vector3f& root, const Eigen::Vector3f& P,
                float lambda, float step, size_t maxPoints, std::vector<Eigen::Vector3f>& out,
                bool smooth = false) {
@@ -52,7 +52,7 @@ float combPath(const SectionGather& g, const Eigen::Vector3f& root, const Eigen:
   const Eigen::Vector3f rise = P - foot;
   const float overHead = ang * 0.5f * (ra + rb);
   const float span =
-      overHead > 0 ? std::min(1.f, std::max(kTailBlend, 3 * rise.norm()) / overHead) : 1.f;
+      overHead > 0 ? std::min(1.f, std::max(kTailBlend, kCombRise * rise.norm()) / overHead) : 1.f;
   Eigen::Vector3f prev = root;
   float length = 0;
   for (size_t i = 1; i <= n; ++i) {
