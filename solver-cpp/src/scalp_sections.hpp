@@ -38,9 +38,10 @@ class ScalpSections {
   static constexpr float kPartingReach = 0.35f;  // world units (3.5 cm)
   static constexpr float kMinShare = 0.01f;
   // Closing near (ties from any hand): how far an end looks for the scalp's edge or another
-  // parting (world units, 4.5 cm: "within about 4 cm" with room for where a stroke's last
-  // sample falls), and how far off its own direction it may turn (cosine).
-  static constexpr float kCloseReach = 0.45f;
+  // parting (world units, 5.5 cm: a parting drawn from above ends where the head's outline
+  // is, its widest part, 4-5 cm above the hairline over the ears), and how far off its own
+  // direction it may turn (cosine).
+  static constexpr float kCloseReach = 0.55f;
   static constexpr float kCloseCosine = 0.0f;
 
   // roots: every root of the hair (the full set, so previews and full growth agree); partings:

@@ -240,8 +240,8 @@ TEST(ScalpSections, PartingsThatReachTheEdgeSplitTheScalpAndOthersDoNot) {
 
 // Ties from any hand: a parting that a stylist ends a little short of the hairline (0.5 to
 // 3.8 cm on this 10 cm sphere) still closes its section, the roots on each side of its plane
-// falling on their own side; 6.5 cm short it stays open. Without closing near, 3.8 cm short is
-// past the old 3.5 cm run-on and bounds nothing (what users met).
+// falling on their own side, and 4.8 cm; 7.5 cm short it stays open. Without closing near, 3.8 cm
+// short is past the old 3.5 cm run-on and bounds nothing (what users met).
 TEST(ScalpSections, APartingEndingShortOfTheEdgeClosesWithinFourCentimetres) {
   const std::vector<Vector3f> roots = sphereRoots();
   // over the crown from ear to ear, a little behind the top (a half-up's parting)
@@ -266,8 +266,12 @@ TEST(ScalpSections, APartingEndingShortOfTheEdgeClosesWithinFourCentimetres) {
   ScalpSections old;
   old.build(roots, Vector3f::Zero(), asFloat(partingInPlane(n, d, 0.38)), false);
   EXPECT_EQ(old.count(), 1);
+  // 4.8 cm short (a parting drawn from above to the head's outline) closes too
+  ScalpSections outline;
+  outline.build(roots, Vector3f::Zero(), asFloat(partingInPlane(n, d, 0.48)), true);
+  EXPECT_EQ(outline.count(), 2);
   ScalpSections far;
-  far.build(roots, Vector3f::Zero(), asFloat(partingInPlane(n, d, 0.65)), true);
+  far.build(roots, Vector3f::Zero(), asFloat(partingInPlane(n, d, 0.75)), true);
   EXPECT_EQ(far.count(), 1);
 }
 

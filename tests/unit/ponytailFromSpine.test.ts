@@ -56,6 +56,17 @@ describe('snapToPlane', () => {
     const b = snapToPlane(off, X_PLANE);
     expect(b.snapped).toBe(false);
     expect(b.points).toBe(off);
+    // drawn in a side view (looking along x), 3 cm off is put on the middle; 5 cm is not
+    const side = spine.map((p) => [0.3, p[1], p[2]] as Vec3);
+    expect(snapToPlane(side, X_PLANE, [-1, -0.14, 0]).snapped).toBe(true);
+    expect(snapToPlane(side, X_PLANE, [0, -0.14, -1]).snapped).toBe(false);
+    expect(
+      snapToPlane(
+        off.map((p) => [0.5, p[1], p[2]] as Vec3),
+        X_PLANE,
+        [-1, 0, 0],
+      ).snapped,
+    ).toBe(false);
     // another plane: x = 0.5
     const c = snapToPlane(off, { normal: [1, 0, 0], offset: 0.3 });
     expect(c.snapped).toBe(true);

@@ -103,6 +103,34 @@ describe('tie bands', () => {
     }
   });
 
+  it("a Mirror twin's band is its twin's reflected, whatever its own hair measures", () => {
+    // the twin (tail 2) holds a tail twice as wide, 5 cm lower: its band is still the first's
+    const hair = ponytailHair();
+    const lines = [];
+    for (let i = 0; i < 200; i++) {
+      const q = tailStrand(2 * R, (2 * Math.PI * i) / 200, 2);
+      lines.push({ pts: q.pts.map((p) => [-p[0], p[1] - 0.5, p[2]] as Vec3), tail: 2 });
+    }
+    const twinHair = strandArrays([
+      ...Array.from({ length: hair.strandStart.length - 1 }, (_, s) => ({
+        pts: Array.from(
+          { length: hair.strandStart[s + 1] - hair.strandStart[s] },
+          (_, q) => [0, 1, 2].map((k) => hair.points[3 * (hair.strandStart[s] + q) + k]) as Vec3,
+        ),
+        tail: (hair.tailCurves as Int32Array)[s],
+      })),
+      ...lines,
+    ]);
+    const first = { ...ponytail, mirror: 'c3' } as StyleCurve;
+    const twin = { ...ponytail, id: 'c3', mirror: 'c2' } as StyleCurve;
+    const bands = tieBands({ ties: true, curves: [stream, first, twin] }, twinHair);
+    expect(bands.map((b) => b.curve)).toEqual([1, 2]);
+    const [a, b] = bands;
+    expect(b.centre).toEqual([-a.centre[0], a.centre[1], a.centre[2]]);
+    expect(b.axis).toEqual([-a.axis[0], a.axis[1], a.axis[2]]);
+    expect(b.radius).toBe(a.radius);
+  });
+
   it('a thinner tail gives a smaller band', () => {
     const lines = [];
     for (let i = 0; i < 100; i++) lines.push(tailStrand(0.1, i, 1));

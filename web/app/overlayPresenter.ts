@@ -98,7 +98,8 @@ export class OverlayPresenter {
       this.viewer.setGuides(this.toolGuides);
       return;
     }
-    const c = this.editor.selectedCurve;
+    // the selected curve's guides (a ponytail's circles) are part of the curves: hidden with them
+    const c = this.display.curves ? this.editor.selectedCurve : null;
     this.viewer.setGuides(c ? (defOf(c).guides?.(c) ?? []).map(circlePolyline) : []);
   }
 
@@ -108,7 +109,7 @@ export class OverlayPresenter {
     const v = this.views;
     const drawn = this.drawn;
     const r = this.shown;
-    this.viewer.setCurvesVisible(d.curves);
+    if (this.viewer.setCurvesVisible(d.curves)) this.syncGuides();
     let rebuilt = false;
 
     const constraints = d.constraints ? (r?.constraints ?? null) : null;

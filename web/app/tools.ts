@@ -155,14 +155,14 @@ function ponytailTool(k: ToolKit): PonytailTool {
       viewer.expectHair(points !== null);
       editor.setStroke(
         points && {
-          points: snapToPlane(points, editor.session.symmetry ?? X_PLANE).points,
+          points: snapToPlane(points, editor.session.symmetry ?? X_PLANE, forward()).points,
           viewpoint: camera(),
           kind: 'ponytail',
         },
       );
     },
     commitSpine: (drawn) => {
-      const { points, snapped } = snapToPlane(drawn, editor.session.symmetry ?? X_PLANE);
+      const { points, snapped } = snapToPlane(drawn, editor.session.symmetry ?? X_PLANE, forward());
       const curve = STROKE_KINDS.ponytail.fromStroke(
         points,
         camera(),

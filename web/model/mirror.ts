@@ -97,19 +97,26 @@ export function syncMirrorTwins(
 /** A ponytail's spine drawn within this distance of the symmetry plane (world units, 1.5 cm: a
  *  hand's error drawing on the head's middle) is put on it, so a centred tail is centred. */
 export const SNAP_TO_PLANE = 0.15;
+/** Drawn in a side view (looking along the plane's normal, within about 25 degrees), where the
+ *  middle of the head is its outline and a press just inside it lands a few centimetres off the
+ *  middle, the spine is put on the plane from this far (world units, 4 cm). */
+export const SNAP_FROM_SIDE = 0.4;
 
 /** `points` put on the plane when its first point and its points on average lie within
- *  SNAP_TO_PLANE of it (snapped), else as they are. */
+ *  SNAP_TO_PLANE of it (SNAP_FROM_SIDE when drawn looking along `view`, a side view), else as
+ *  they are. */
 export function snapToPlane(
   points: Vec3[],
   plane: MirrorPlane = X_PLANE,
+  view?: Vec3,
 ): { points: Vec3[]; snapped: boolean } {
   if (points.length === 0) return { points, snapped: false };
   const n = plane.normal;
   const off = (p: Vec3) => n[0] * p[0] + n[1] * p[1] + n[2] * p[2] - plane.offset;
   const mean = points.reduce((m, p) => m + Math.abs(off(p)), 0) / points.length;
-  if (Math.abs(off(points[0])) > SNAP_TO_PLANE || mean > SNAP_TO_PLANE)
-    return { points, snapped: false };
+  const along = view ? Math.abs(n[0] * view[0] + n[1] * view[1] + n[2] * view[2]) : 0;
+  const reach = along > 0.9 ? SNAP_FROM_SIDE : SNAP_TO_PLANE;
+  if (Math.abs(off(points[0])) > reach || mean > reach) return { points, snapped: false };
   return {
     points: points.map((p) => {
       const k = off(p);

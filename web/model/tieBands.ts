@@ -19,6 +19,7 @@
 // holds no strands gets no band; sessions without `ties` get none, so they look as they always
 // did.
 import type { StrandArrays } from './hairArrays';
+import { reflectDirection, reflectPoint, X_PLANE } from './mirror';
 import { polylineTangents } from './ponytailGeometry';
 import type { SessionState, StyleCurve } from './session';
 import { add, length, normalize, scale, sub, type Vec3 } from './vec3';
@@ -50,9 +51,11 @@ const SAMPLE_STRANDS = 2000;
 
 type Strands = Pick<StrandArrays, 'points' | 'strandStart' | 'tailCurves'>;
 
-/** The bands of the session's ties, in curve order (empty without `ties`). */
+/** The bands of the session's ties, in curve order (empty without `ties`). A tie made with
+ *  Mirror gets its twin's band reflected (its hair is the twin's mirrored, but its strands' roots
+ *  are not exactly so, and a measured band could sit at another height: twins must match). */
 export function tieBands(
-  session: Pick<SessionState, 'curves' | 'ties'>,
+  session: Pick<SessionState, 'curves' | 'ties' | 'symmetry'>,
   strands: Strands,
 ): TieBand[] {
   const tails = strands.tailCurves;
@@ -66,9 +69,20 @@ export function tieBands(
     else members.set(t, [s]);
   }
   const bands: TieBand[] = [];
+  const plane = session.symmetry ?? X_PLANE;
   session.curves.forEach((c, i) => {
     const all = members.get(i);
     if (!all || all.length === 0) return;
+    const twin = c.mirror ? bands.find((b) => session.curves[b.curve].id === c.mirror) : undefined;
+    if (twin) {
+      bands.push({
+        curve: i,
+        centre: reflectPoint(twin.centre, plane),
+        axis: reflectDirection(twin.axis, plane),
+        radius: twin.radius,
+      });
+      return;
+    }
     // an even subsample of a large tie: its 95th percentile is as good within a few tenths of a
     // per cent, and the band is measured on the page's thread whenever new hair is shown
     const stride = Math.ceil(all.length / SAMPLE_STRANDS);

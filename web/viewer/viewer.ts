@@ -474,8 +474,11 @@ export class Viewer {
     return this.overlays.groups;
   }
 
-  setCurvesVisible(on: boolean): void {
-    if (this.overlays.setCurvesVisible(on)) this.requestRender();
+  /** Whether it changed anything. */
+  setCurvesVisible(on: boolean): boolean {
+    if (!this.overlays.setCurvesVisible(on)) return false;
+    this.requestRender();
+    return true;
   }
 
   /** Adds (on) or removes a display object. The caller owns it: it is never disposed here, and
