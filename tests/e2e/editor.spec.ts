@@ -2,7 +2,7 @@
 // plain-words status, Reset view, the surface mode's label, and a phone-sized screen. Real
 // pointer events; waits on the status attributes and the session, never on fixed sleeps.
 import { expect, type Page, test } from '@playwright/test';
-import { settled, status, watchConsole } from './helpers';
+import { settled, status, strokeFromScalp, watchConsole } from './helpers';
 
 type V3 = [number, number, number];
 interface Session {
@@ -220,4 +220,24 @@ test.describe('on a phone-sized screen', () => {
     const after = await page.evaluate(() => document.documentElement.scrollWidth);
     expect(after).toBeLessThanOrEqual(390);
   });
+});
+
+test('drawing a curve (it is selected, the curve buttons come on) does not move the 3D view', async ({
+  page,
+}) => {
+  await page.setViewportSize({ width: 1280, height: 800 });
+  await page.goto('/?preset=empty&strands=1000');
+  const s0 = await settled(page);
+  const before = await page.getByTestId('viewport').boundingBox();
+  await strokeFromScalp(page, 30, 60, 20, 120);
+  await settled(page, s0.revision);
+  await expect(page.getByRole('button', { name: 'Surface mode' })).toHaveText(
+    'Surface mode: ruled',
+  );
+  const after = await page.getByTestId('viewport').boundingBox();
+  console.log(
+    `viewport top ${before?.y} -> ${after?.y}, height ${before?.height} -> ${after?.height}`,
+  );
+  expect(after?.y).toBe(before?.y);
+  expect(after?.height).toBe(before?.height);
 });

@@ -162,6 +162,7 @@ export function buildActions(t: ActionTarget): Action[] {
         const m = t.surfaceMode();
         return m ? `Surface mode: ${m}` : 'Surface mode';
       },
+      widestLabel: 'Surface mode: strip',
     },
     {
       id: 'curve.avoidScalp',
@@ -276,6 +277,7 @@ export function buildActions(t: ActionTarget): Action[] {
             toolbar: 'more',
             run: () => t.cycleQuality?.(),
             stateLabel: () => t.qualityLabel?.() ?? 'Quality',
+            widestLabel: 'Quality: Auto (High)',
           } satisfies Action,
         ]
       : []),

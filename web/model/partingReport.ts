@@ -79,7 +79,7 @@ export function partingReport(id: string, line: readonly Vec3[], hair: Hair | nu
     .filter(([, m]) => m >= Math.max(3, SIDE_SHARE * nearAll))
     .map(([sec]) => sec);
   if (sides.length < 2)
-    return `${id} is open: no section (end a parting within 5 cm of the hairline or of another parting)`;
+    return `${id} is open: it parts the hair and makes no section (for one, end it within 5 cm of the hairline or of another parting)`;
   const centre = (sec: number): Vec3 => {
     const c = sum.get(sec) as Vec3;
     const m = count.get(sec) ?? 1;

@@ -22,6 +22,9 @@ export interface Action {
   /** A label that shows state (e.g. which surface mode is on); the accessible name still
    *  starts with `label`. */
   stateLabel?(): string;
+  /** Its widest state label: the toolbar keeps the button that wide, so a state change (a curve
+   *  selected) never reflows the toolbar and moves the 3D view under the pointer. */
+  widestLabel?: string;
 }
 
 /** How a shortcut reads in the help overlay and tooltips ('Ctrl+Shift+Z'). */

@@ -33,6 +33,7 @@ function actionButton(a: Action): HTMLButtonElement {
   b.title = keys ? `${a.title} (${keys})` : a.title;
   b.dataset.action = a.id;
   if (a.pressed) b.setAttribute('aria-pressed', 'false');
+  if (a.widestLabel) reserveWidth(b, a.widestLabel);
   b.addEventListener('click', () => a.run());
   return b;
 }
@@ -145,6 +146,18 @@ export function buildToolbar(
       referencePicker.click();
     },
   };
+}
+
+/** Keeps `b` as wide as it is with `label` (measured once it is laid out; the button's own
+ *  font), so its state labels never change the toolbar's layout. */
+function reserveWidth(b: HTMLButtonElement, label: string): void {
+  requestAnimationFrame(() => {
+    const shown = b.textContent;
+    b.textContent = label;
+    const w = b.getBoundingClientRect().width;
+    b.textContent = shown;
+    if (w > 0) b.style.minWidth = `${Math.ceil(w)}px`;
+  });
 }
 
 function separator(): HTMLElement {
