@@ -202,14 +202,16 @@ test('a high ponytail in one stroke: the spine lifts off the crown and falls; th
   const below = tail.filter((p) => p[1] < band[1]).length / tail.length;
   const meanX = tail.reduce((m, p) => m + p[0], 0) / tail.length;
   const gathered = h.tailCurves.filter((t) => t === 0).length / h.tailCurves.length;
+  const short = shortOfStrokeEnd(h, 0, tie.points);
   console.log(
-    `high ponytail: ${(100 * gathered).toFixed(1)} % of the strands gathered; ${(100 * below).toFixed(1)} % of the tail below its band (${band.map((x) => x.toFixed(2)).join(', ')}); mean x ${(10 * meanX).toFixed(2)} cm`,
+    `high ponytail: ${(100 * gathered).toFixed(1)} % of the strands gathered; ${(100 * below).toFixed(1)} % of the tail below its band (${band.map((x) => x.toFixed(2)).join(', ')}); mean x ${(10 * meanX).toFixed(2)} cm; the tail ends ${(10 * short).toFixed(1)} cm short of its stroke's end`,
   );
   await page.getByRole('button', { name: 'Stream curve' }).click();
   await shoot(page, 'ties-high-ponytail', 'bust');
   expect(gathered).toBeGreaterThan(0.95);
   expect(below).toBeGreaterThanOrEqual(0.8);
   expect(Math.abs(meanX)).toBeLessThan(0.1);
+  expect(Math.abs(short)).toBeLessThanOrEqual(0.2);
 });
 
 /** How far short of its stroke's end the tail of tie `curve` ends, along the stroke (world
@@ -362,9 +364,21 @@ test('pigtails: Mirror and one ponytail stroke from behind an ear; each gathers 
   expect(await page.evaluate(() => window.hairsketch.hairHash())).toBe(hash);
   await page.waitForFunction(() => window.location.hash.startsWith('#s='));
   const link = await page.evaluate(() => window.location.href);
+  // Save writes a file that Open reads back to the same hair
+  const [download] = await Promise.all([
+    page.waitForEvent('download'),
+    page.getByRole('button', { name: 'Save' }).click(),
+  ]);
+  const file = await download.path();
   await page.goto('about:blank');
   await page.goto(link);
   await settled(page);
+  await curveCount(page, 2);
+  expect(await page.evaluate(() => window.hairsketch.hairHash())).toBe(hash);
+  await page.goto('/?preset=empty&strands=3000');
+  const e0 = await settled(page);
+  await page.getByLabel('Session file').setInputFiles(file);
+  await settled(page, e0.revision);
   await curveCount(page, 2);
   expect(await page.evaluate(() => window.hairsketch.hairHash())).toBe(hash);
 });

@@ -58,7 +58,9 @@ describe('partingReport', () => {
 
   it('says a parting that bounds nothing is open, and nothing without sections', () => {
     const h = hairOn(() => 0);
-    expect(partingReport('c1', arc(-0.3), h)).toMatch(/^c1 is open: it parts the hair and makes no section/);
+    expect(partingReport('c1', arc(-0.3), h)).toMatch(
+      /^c1 is open: it parts the hair and makes no section/,
+    );
     expect(partingReport('c1', arc(-0.3), { ...h, rootSections: undefined })).toBeNull();
     expect(partingReport('c1', arc(-0.3), null)).toBeNull();
   });
