@@ -87,6 +87,13 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
   std::vector<uint32_t> key(n);
   for (size_t k = 0; k < n; ++k) key[k] = subset_ ? subsetIndex_[k] : uint32_t(k);
   strandTailCurve_.assign(n, -1);
+  tieFrames_.clear();
+  for (size_t k = 0; k < tails_.size() && k < tailCurves_.size(); ++k) {
+    const GatheredTail& t = tails_[k];
+    if (t.spine.empty()) continue;
+    tieFrames_.insert(tieFrames_.end(), {float(tailCurves_[k]), t.spine[0].x(), t.spine[0].y(),
+                                         t.spine[0].z(), t.axis.x(), t.axis.y(), t.axis.z()});
+  }
   strandSection_.clear();
   ScalpSections sections;
   if (sections_) {

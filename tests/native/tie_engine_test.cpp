@@ -128,5 +128,34 @@ TEST(TieEngine, ABraidReachesItsStrokesEndOnlyWithTies) {
   EXPECT_EQ(on.strands().strandStart, off.strands().strandStart);
 }
 
+// The engine says where each tie gathers its hair (its band's place): a point of the braid's
+// stroke (where it leaves the scalp), with the axis along the stroke there.
+TEST(TieEngine, TieFramesNameTheGather) {
+  const BraidScene sc;
+  HairEngine e;
+  sc.run(e, true);
+  const std::vector<float>& f = e.tieFrames();
+  ASSERT_EQ(f.size(), 7u);
+  EXPECT_EQ(f[0], 0.f);
+  const Vector3d c(f[1], f[2], f[3]);
+  size_t k = 0;
+  double best = 1e9;
+  for (size_t i = 0; i < sc.points.size() / 3; ++i) {
+    const double d =
+        (Vector3d(sc.points[3 * i], sc.points[3 * i + 1], sc.points[3 * i + 2]) - c).norm();
+    if (d < best) {
+      best = d;
+      k = i;
+    }
+  }
+  EXPECT_LT(best, 1e-5);
+  ASSERT_LT(k + 1, sc.points.size() / 3);
+  const Vector3d along =
+      (Vector3d(sc.points[3 * k + 3], sc.points[3 * k + 4], sc.points[3 * k + 5]) - c).normalized();
+  const Vector3d axis(f[4], f[5], f[6]);
+  EXPECT_NEAR(axis.norm(), 1.0, 1e-5);
+  EXPECT_GT(axis.dot(along), 0.9);
+}
+
 }  // namespace
 }  // namespace tie_engine_test

@@ -131,6 +131,34 @@ describe('tie bands', () => {
     expect(b.radius).toBe(a.radius);
   });
 
+  it("the engine's tie frame (where the growth gathered the hair) places the band", () => {
+    // a braid whose stroke runs far from its hair: no gather found on it; the frame says where
+    const braid = {
+      id: 'c2',
+      type: 'braid',
+      points: [
+        [2, 1, 0],
+        [2, 0, 0],
+        [2, -1, 0],
+      ],
+      extend: false,
+      viewpoint: { position: [0, 0, 5], target: [0, 0, 0] },
+      width: 0.5,
+      crossings: 6,
+      tightness: 0.5,
+      tailLength: 0.4,
+      section: 1,
+    } as unknown as StyleCurve;
+    // the frame half a unit down the tail (5 cm): the band there, round the hair
+    const hair = ponytailHair();
+    const down = at(0, 0, 0.5);
+    const framed = { ...hair, tieFrames: new Float32Array([1, ...down, ...axis]) };
+    const [b] = tieBands({ ties: true, curves: [stream, braid] }, framed);
+    expect(b.curve).toBe(1);
+    expect(Math.abs(b.radius - (R + 0.015))).toBeLessThan(0.01);
+    for (let k = 0; k < 3; k++) expect(Math.abs(b.centre[k] - down[k])).toBeLessThan(0.01);
+  });
+
   it('a thinner tail gives a smaller band', () => {
     const lines = [];
     for (let i = 0; i < 100; i++) lines.push(tailStrand(0.1, i, 1));

@@ -49,7 +49,7 @@ const BRAID_CROSSING = 0.8;
 /** At most about this many of a tie's strands are measured (every k-th: deterministic). */
 const SAMPLE_STRANDS = 2000;
 
-type Strands = Pick<StrandArrays, 'points' | 'strandStart' | 'tailCurves'>;
+type Strands = Pick<StrandArrays, 'points' | 'strandStart' | 'tailCurves' | 'tieFrames'>;
 
 /** The bands of the session's ties, in curve order (empty without `ties`). A tie made with
  *  Mirror gets its twin's band reflected (its hair is the twin's mirrored, but its strands' roots
@@ -94,6 +94,18 @@ export function tieBands(
 }
 
 function bandOf(c: StyleCurve, i: number, own: number[], strands: Strands): TieBand | null {
+  // where the growth gathered it, when the engine says (exact, and no plane search)
+  const f = strands.tieFrames;
+  if (f && c.type !== 'bun')
+    for (let t = 0; t + 7 <= f.length; t += 7)
+      if (f[t] === i)
+        return fitBand(
+          i,
+          [f[t + 1], f[t + 2], f[t + 3]],
+          normalize([f[t + 4], f[t + 5], f[t + 6]]),
+          own,
+          strands,
+        );
   if (c.type === 'ponytail') {
     const c1 = c.circles[0];
     return c1 ? fitBand(i, c1.centre, normalize(c1.axis), own, strands) : null;

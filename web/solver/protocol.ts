@@ -16,7 +16,8 @@
 //     curveGroup[c].
 //   StrandArrays: points[3 * point + axis]; strand s owns strandStart[s] .. strandStart[s + 1] - 1;
 //     optional rootIds[s] (its root's sample index), tailCurves[s] (the curve whose tail laid it,
-//     or -1), rootSections[s] (its root's scalp section, with sections on).
+//     or -1), rootSections[s] (its root's scalp section, with sections on), tieFrames[7 * t + k]
+//     (tie t: k = 0 its curve's index, 1..3 its first circle's centre, 4..6 its unit axis).
 import type { GrowthParams } from '../model/growthParams';
 import type {
   ConstraintArrays,
