@@ -40,11 +40,19 @@ float combPath(const SectionGather& g, const Eigen::Vector3f& root, const Eigen:
   const Eigen::Vector3f foot = offHead(g, P, g.margin, sphere);
   const float ra = (root - c).norm(), rb = (foot - c).norm();
   const Eigen::Vector3f a = (root - c).normalized(), b = (foot - c).normalized();
-  const float ang = std::acos(std::clamp(a.dot(b), -1.f, 1.f));
+  float ang = std::acos(std::clamp(a.dot(b), -1.f, 1.f));
   Eigen::Vector3f axis = a.cross(b);
   if (!(axis.norm() > 1e-5f)) axis = a.cross(Eigen::Vector3f::UnitY());
   if (!(axis.norm() > 1e-5f)) axis = a.cross(Eigen::Vector3f::UnitX());
   axis.normalize();
+  // (ties on) hair is combed over the head, never under it across the face: when the short way
+  // from root to foot dips below both ends in front of the centre (a forehead root and a seat
+  // low on the nape: the short way runs down the face), it goes the long way, over the crown
+  const Eigen::Vector3f mid = (a + b).normalized();
+  if (smooth && (a + b).norm() > 1e-3f && mid.y() < std::min(a.y(), b.y()) && mid.z() > 0) {
+    ang = 2 * 3.14159265f - ang;
+    axis = -axis;
+  }
   const float arc = ang * 0.5f * (ra + rb) + (P - foot).norm();
   const float ds = std::max(step, arc / float(std::max<size_t>(maxPoints, 2)));
   const size_t n = std::max<size_t>(1, size_t(std::ceil(ang * 0.5f * (ra + rb) / ds)));
