@@ -46,10 +46,11 @@ float combPath(const SectionGather& g, const Eigen::Vector3f& root, const Eigen:
   if (!(axis.norm() > 1e-5f)) axis = a.cross(Eigen::Vector3f::UnitX());
   axis.normalize();
   // (ties on) hair is combed over the head, never under it across the face: when the short way
-  // from root to foot dips below both ends in front of the centre (a forehead root and a seat
-  // low on the nape: the short way runs down the face), it goes the long way, over the crown
+  // from root to foot passes in front of the centre below the root (a forehead or temple root
+  // and a seat low on the nape: the short way runs down the face or the cheek), it goes the long
+  // way, over the crown
   const Eigen::Vector3f mid = (a + b).normalized();
-  if (smooth && (a + b).norm() > 1e-3f && mid.y() < std::min(a.y(), b.y()) && mid.z() > 0) {
+  if (smooth && (a + b).norm() > 1e-3f && mid.z() > 0 && mid.y() < a.y()) {
     ang = 2 * 3.14159265f - ang;
     axis = -axis;
   }

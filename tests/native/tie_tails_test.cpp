@@ -169,5 +169,48 @@ TEST(TieTails, HairTheFieldBringsReachesTheSpinesEndAndKeepsItsPathAbove) {
   }
 }
 
+// Gathered hair is combed over the head, never down the face: forehead hair gathered into a tie
+// low behind the nape (ties on) goes over the crown; the old layout (ties off) took the short way
+// down the face and under the chin.
+TEST(TieTails, HairGatheredLowIsCombedOverTheCrownNotDownTheFace) {
+  Head h;
+  h.strands.strandStart.push_back(0);
+  for (int j = -5; j <= 5; ++j) {
+    const float ph = 0.08f * float(j);
+    const Eigen::Vector3f p(0.5f * std::sin(ph), 0.5f, 0.866f * std::cos(ph));
+    const Eigen::Vector3f r = p.normalized();
+    h.roots.push_back(r);
+    h.key.push_back(uint32_t(h.key.size()));
+    for (const Eigen::Vector3f& x : {r, Eigen::Vector3f(1.001f * r)})
+      h.strands.points.insert(h.strands.points.end(), {x.x(), x.y(), x.z()});
+    h.strands.strandStart.push_back(uint32_t(h.strands.points.size() / 3));
+  }
+  auto low = [](bool ties) {
+    GatheredTail t = hanging(1.0f, TailShape::Round, ties);
+    const Eigen::Vector3f band(0.f, -0.75f, -0.8f);
+    for (Eigen::Vector3f& x : t.spine) x += band - kBand;
+    t.anchor = band.normalized();
+    return t;
+  };
+  // the lowest point of the hair in front of the head's centre (z > 0.3): the forehead's own
+  // height when it goes over the crown
+  auto lowestInFront = [](const Strands& s) {
+    float y = 1e9f;
+    for (size_t p = 0; p < s.points.size() / 3; ++p) {
+      const Eigen::Vector3f x = pointOf(s, p);
+      if (x.z() > 0.3f) y = std::min(y, x.y());
+    }
+    return y;
+  };
+  const float on = lowestInFront(grow(h, low(true), 4.f)),
+              off = lowestInFront(grow(h, low(false), 4.f));
+  std::printf(
+      "[ties] forehead hair into a tie low at the nape: lowest in front y = %.2f (on), %.2f "
+      "(off)\n",
+      on, off);
+  EXPECT_GT(on, 0.4f);   // no lower than the roots (y 0.5 at the hairline, 1 mm off)
+  EXPECT_LT(off, 0.0f);  // before: down the face
+}
+
 }  // namespace
 }  // namespace tie_tails_test
