@@ -382,3 +382,25 @@ test('pigtails: Mirror and one ponytail stroke from behind an ear; each gathers 
   await curveCount(page, 2);
   expect(await page.evaluate(() => window.hairsketch.hairHash())).toBe(hash);
 });
+
+test('a braid drawn from the side down the back of the head is put on its middle, as a ponytail is', async ({
+  page,
+}) => {
+  const s0 = await emptyHead(page);
+  await view(page, 'l', 'left');
+  await page.getByRole('button', { name: 'Braid' }).click();
+  const root = await scalpAt(page, 45, 172);
+  await dragThrough(page, [
+    root,
+    { x: root.x + 25, y: root.y + 70 },
+    { x: root.x + 35, y: root.y + 320 },
+  ]);
+  await curveCount(page, 1);
+  const s = await settled(page, s0.revision);
+  console.log(`braid from the side: "${s.text}"`);
+  const tie = ((await page.evaluate(() => window.hairsketch.session())) as { curves: Tie[] })
+    .curves[0];
+  expect(tie.type).toBe('braid');
+  for (const p of tie.points) expect(Math.abs(p[0])).toBeLessThan(1e-6);
+  expect(s.text).toContain('centred on the head');
+});

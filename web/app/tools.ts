@@ -333,13 +333,21 @@ function dividingTool(k: ToolKit): Tool {
 function tieTool(k: ToolKit, kind: PlainTieKind): Tool {
   const { d, editor, viewer, step, camera, sample, eye, forward, showDraft } = k;
   const spec = TIE_TOOLS[kind];
-  const commit = (points: Vec3[]) =>
-    editor.run({
+  // a spine drawn near the head's middle is put on it, as a ponytail's is (a centred braid)
+  const onMiddle = (points: Vec3[]) =>
+    spec.draw === 'spine'
+      ? snapToPlane(points, editor.session.symmetry ?? X_PLANE, forward())
+      : { points, snapped: false };
+  const commit = (drawn: Vec3[]) => {
+    const { points, snapped } = onMiddle(drawn);
+    return editor.run({
       kind: 'addCurve',
       curve: STROKE_KINDS[kind].fromStroke(points, camera(), newCurveExtends(editor.session)),
-      what: spec.what(points.length),
-      mirror: d.mirror(),
+      what: `${spec.what(points.length)}${snapped ? ', centred on the head' : ''}`,
+      // a tie on the symmetry plane is its own mirror image
+      mirror: d.mirror() && !snapped,
     });
+  };
   if (spec.draw === 'loop')
     return new BunTool({ sample, step, showDraft, commit, notify: d.notify });
   return new StreamCurveTool({
@@ -352,7 +360,7 @@ function tieTool(k: ToolKit, kind: PlainTieKind): Tool {
     commit,
     preview: (points) => {
       viewer.expectHair(points !== null);
-      editor.setStroke(points && { points, viewpoint: camera(), kind });
+      editor.setStroke(points && { points: onMiddle(points).points, viewpoint: camera(), kind });
     },
     notify: d.notify,
   });
