@@ -138,8 +138,8 @@ float sectionBunRadius(float share, float lengthAfterTie);
 //   twisted rope of radius rr K turns outward and down the dome to the base and a quarter turn
 //   in under the outer wrap: R = rr (kBunRopePitch K + 2). A whole-section bun's rope holds its
 //   hair (rr = kBunRopeFill x sectionTailRadius(share)) and K is what its length allows.
-constexpr float kTieTaper = 0.5f;      // the radius lost by a round tail's end (x r)
-constexpr float kTieEndOuter = 0.25f;  // the outermost hair ends up to this much short (x L)
+constexpr float kTieTaper = 0.3f;      // the radius lost by a round tail's end (x r)
+constexpr float kTieEndOuter = 0.15f;  // the outermost hair ends up to this much short (x L)
 constexpr float kTieEndAll = 0.05f;    // every strand ends up to this much short (x L)
 constexpr float kBunRopePitch = 1.7f;  // a bun's wraps' spacing, x the rope's radius
 constexpr float kBunRopeFill = 0.7f;   // a rope's radius, x the hair's round-tail radius
