@@ -166,7 +166,10 @@ export function startApp(): void {
     notify: (m) => status.note(m),
     ponytailStage: (stage) => {
       view.update({ ponytailStage: stage });
-      status.note(PONYTAIL_STAGE_HINT[stage]);
+      // between the shaping strokes the status says which is next; after the spine made a
+      // ponytail, or the profiles shaped it, it keeps what the edit did ("Added ponytail c1 and
+      // its mirror c2") and the hint line says what may follow
+      if (stage === 'profileA' || stage === 'profileB') status.note(PONYTAIL_STAGE_HINT[stage]);
     },
   });
   const active = new ActiveTool({
