@@ -463,12 +463,13 @@ EMSCRIPTEN_KEEPALIVE const int32_t* hs_engine_strand_tail_curves(EngineHandle* h
 EMSCRIPTEN_KEEPALIVE int32_t hs_engine_strand_tail_curve_count(EngineHandle* h) {
   return int32_t(h->engine.strandTailCurves().size());
 }
-// Per tie: its curve, the centre and axis of its tail's first circle (7 floats each).
+// Per tie: its curve, the centre and axis of its tail's first circle, its hair's radius there
+// (8 floats each).
 EMSCRIPTEN_KEEPALIVE const float* hs_engine_tie_frames(EngineHandle* h) {
   return h->engine.tieFrames().data();
 }
 EMSCRIPTEN_KEEPALIVE int32_t hs_engine_tie_frame_count(EngineHandle* h) {
-  return int32_t(h->engine.tieFrames().size() / 7);
+  return int32_t(h->engine.tieFrames().size() / 8);
 }
 // Per strand, with sections on: its root's scalp section (empty otherwise).
 EMSCRIPTEN_KEEPALIVE const uint8_t* hs_engine_strand_sections(EngineHandle* h) {

@@ -71,7 +71,7 @@ export interface HairSolverModule {
   _hs_engine_strand_root_id_count(h: number): number;
   _hs_engine_strand_tail_curves(h: number): number; // int32 per strand
   _hs_engine_strand_tail_curve_count(h: number): number;
-  _hs_engine_tie_frames(h: number): number; // 7 float32 per tie
+  _hs_engine_tie_frames(h: number): number; // 8 float32 per tie
   _hs_engine_tie_frame_count(h: number): number;
   _hs_engine_strand_sections(h: number): number; // uint8 per strand
   _hs_engine_strand_section_count(h: number): number;

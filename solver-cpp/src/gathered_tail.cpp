@@ -75,6 +75,10 @@ TailStats gatherTails(const std::vector<GatheredTail>& tails,
       }
     }
   }
+  stats.bandRadius.assign(T.size(), 0.f);
+  for (size_t k = 0; k < T.size(); ++k)
+    if (T[k].shape == TailShape::Round && !T[k].radius.empty())
+      stats.bandRadius[k] = T[k].radius[0];
   std::vector<SpineFrames> frames;
   for (const GatheredTail& t : T) frames.emplace_back(t);
   // capture: the first crossing of a C1 plane near its axis, or the first point beside a body

@@ -156,6 +156,10 @@ struct TailStats {
   size_t captured = 0;            // strands laid into a tail
   std::vector<uint32_t> strands;  // which, in increasing order
   std::vector<uint32_t> tail;     // tail[i]: the index in `tails` of the one that laid strands[i]
+  // Per tail (in `tails` order): the radius of its hair at its first circle as laid (a round
+  // tail's r(0) once sized to the hair it holds), 0 where that is not one circle (a braid's
+  // bundles, a bun): where a band round it goes.
+  std::vector<float> bandRadius;
 };
 
 // Re-lays the captured strands of every tail (see above). key[s] is strand s's seed key (its root

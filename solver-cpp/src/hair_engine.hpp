@@ -135,9 +135,10 @@ class HairEngine {
   // Per strand of the last growth with sections on: the scalp section its root is in
   // (scalp_sections.hpp; at most 255), for showing the sections; empty with sections off.
   const std::vector<uint8_t>& strandSections() const { return strandSection_; }
-  // Per tie of the last growth (ponytail, braid, bun), 7 numbers: its curve's index, then the
-  // centre and unit axis of its tail's first circle, where the growth gathers its hair (a
-  // braid's first stroke point off the scalp): where its band goes (web/model/tieBands.ts).
+  // Per tie of the last growth that laid hair (ponytail, braid, bun), 8 numbers: its curve's
+  // index, the centre and unit axis of its tail's first circle, where the growth gathers its
+  // hair (a braid's first stroke point off the scalp), and the hair's radius there as laid (0:
+  // not one circle, a braid or a bun): where its band goes (web/model/tieBands.ts).
   const std::vector<float>& tieFrames() const { return tieFrames_; }
   // The roots of the last growth (the cached set, or its capped stride).
   const std::vector<Eigen::Vector3f>& roots() const { return subset_ ? subsetRoots_ : roots_; }

@@ -88,12 +88,6 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
   for (size_t k = 0; k < n; ++k) key[k] = subset_ ? subsetIndex_[k] : uint32_t(k);
   strandTailCurve_.assign(n, -1);
   tieFrames_.clear();
-  for (size_t k = 0; k < tails_.size() && k < tailCurves_.size(); ++k) {
-    const GatheredTail& t = tails_[k];
-    if (t.spine.empty()) continue;
-    tieFrames_.insert(tieFrames_.end(), {float(tailCurves_[k]), t.spine[0].x(), t.spine[0].y(),
-                                         t.spine[0].z(), t.axis.x(), t.axis.y(), t.axis.z()});
-  }
   strandSection_.clear();
   ScalpSections sections;
   if (sections_) {
@@ -149,6 +143,14 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
                     float(std::min(gp.maxLength, 1e6)), bySection ? &sg : nullptr);
     for (size_t i = 0; i < ts.strands.size(); ++i)
       strandTailCurve_[ts.strands[i]] = tailCurves_[ts.tail[i]];
+    // where each tie gathers its hair, and how wide that hair is there (its band)
+    for (size_t k = 0; k < tails.size() && k < tailCurves_.size(); ++k) {
+      const GatheredTail& t = tails[k];
+      if (t.spine.empty()) continue;
+      tieFrames_.insert(tieFrames_.end(), {float(tailCurves_[k]), t.spine[0].x(), t.spine[0].y(),
+                                           t.spine[0].z(), t.axis.x(), t.axis.y(), t.axis.z(),
+                                           k < ts.bandRadius.size() ? ts.bandRadius[k] : 0.f});
+    }
     // growth kept the rest outside already
     if (head && ts.captured > 0) {
       keepOutsideHead(*head, float(gp.margin), strands_, &ts.strands);

@@ -135,7 +135,8 @@ TEST(TieEngine, TieFramesNameTheGather) {
   HairEngine e;
   sc.run(e, true);
   const std::vector<float>& f = e.tieFrames();
-  ASSERT_EQ(f.size(), 7u);
+  ASSERT_EQ(f.size(), 8u);
+  EXPECT_EQ(f[7], 0.f);  // a braid's hair is three bundles there, not one circle
   EXPECT_EQ(f[0], 0.f);
   const Vector3d c(f[1], f[2], f[3]);
   size_t k = 0;

@@ -212,5 +212,25 @@ TEST(TieTails, HairGatheredLowIsCombedOverTheCrownNotDownTheFace) {
   EXPECT_LT(off, 0.0f);  // before: down the face
 }
 
+// The growth says how wide a round tail's hair is at its band (its band hugs that): the tie's
+// radius for the hair it holds, and every laid strand passes the band's plane within it.
+TEST(TieTails, TheBandRadiusIsTheHairsRadiusAtTheTie) {
+  const Head h = backOfHead();
+  SectionGather g;
+  g.assigned.assign(h.roots.size(), 0);
+  g.centre = Eigen::Vector3f::Zero();
+  Strands out = h.strands;
+  const TailStats st = gatherTails({hanging(2.f, TailShape::Round, true)}, h.roots, h.key, 7,
+                                   kTieTestStep, 255, out, 4.f, &g);
+  ASSERT_EQ(st.bandRadius.size(), 1u);
+  EXPECT_NEAR(st.bandRadius[0], kTieRadius, 1e-4f);  // the whole head's hair: share 1
+  const std::vector<float> r = radiiAt(out, 0.f, 0.02f);
+  ASSERT_FALSE(r.empty());
+  EXPECT_LE(percentile(r, 0.99f), st.bandRadius[0] + 0.01f);
+  const TailStats braid = gatherTails({hanging(2.f, TailShape::Braid, true)}, h.roots, h.key, 7,
+                                      kTieTestStep, 255, out = h.strands, 4.f, &g);
+  EXPECT_EQ(braid.bandRadius[0], 0.f);
+}
+
 }  // namespace
 }  // namespace tie_tails_test

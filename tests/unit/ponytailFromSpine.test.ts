@@ -105,3 +105,39 @@ describe('widenPonytail (the curve panel width)', () => {
     for (let e = 0; e < 3; e++) expect(after[e] - s[e]).toBeCloseTo(2.5 * (before[e] - s[e]), 9);
   });
 });
+
+describe('ponytailFromSpine on a high ponytail drawn from the side', () => {
+  it('keeps the made radius where the spine bends at the band (a circle before the band set the scale: 0.36 cm)', () => {
+    // a spine recorded from a one-stroke high ponytail in the left view (ties.spec's gesture)
+    const high: Vec3[] = [
+      [0, 0.8741, -0.497],
+      [0, 0.9439, -0.6028],
+      [0, 1.0136, -0.7085],
+      [0, 0.9747, -0.8291],
+      [0, 0.9206, -0.9437],
+      [0, 0.8054, -0.9963],
+      [0, 0.6901, -1.049],
+      [0, 0.5748, -1.1016],
+      [0, 0.4536, -1.1385],
+      [0, 0.3278, -1.1539],
+      [0, 0.2021, -1.1693],
+      [0, 0.0763, -1.1846],
+      [0, -0.0495, -1.2],
+      [0, -0.1753, -1.2154],
+      [0, -0.301, -1.2308],
+      [0, -0.4268, -1.2462],
+      [0, -0.5526, -1.2616],
+      [0, -0.6791, -1.2687],
+      [0, -0.8058, -1.2668],
+      [0, -0.9325, -1.265],
+      [0, -1.0592, -1.2631],
+      [0, -1.1859, -1.2613],
+      [0, -1.3126, -1.2594],
+      [0, -1.4393, -1.2576],
+      [0, -1.566, -1.2557],
+    ];
+    const p = ponytailFromSpine(high, { position: [7.5327, 0.5087, 0], target: [0, -0.55, 0] });
+    expect(p.circles.length).toBeGreaterThan(3);
+    for (const c of p.circles) expect(c.radius).toBeCloseTo(ONE_STROKE_RADIUS, 9);
+  });
+});

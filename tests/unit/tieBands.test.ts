@@ -152,11 +152,16 @@ describe('tie bands', () => {
     // the frame half a unit down the tail (5 cm): the band there, round the hair
     const hair = ponytailHair();
     const down = at(0, 0, 0.5);
-    const framed = { ...hair, tieFrames: new Float32Array([1, ...down, ...axis]) };
+    const framed = { ...hair, tieFrames: new Float32Array([1, ...down, ...axis, 0]) };
     const [b] = tieBands({ ties: true, curves: [stream, braid] }, framed);
     expect(b.curve).toBe(1);
     expect(Math.abs(b.radius - (R + 0.015))).toBeLessThan(0.01);
     for (let k = 0; k < 3; k++) expect(Math.abs(b.centre[k] - down[k])).toBeLessThan(0.01);
+    // with the hair's radius as laid there, the band hugs it: that radius plus 1.5 mm
+    const sized = { ...hair, tieFrames: new Float32Array([1, ...down, ...axis, 0.12]) };
+    const [c] = tieBands({ ties: true, curves: [stream, braid] }, sized);
+    expect(c.radius).toBeCloseTo(0.12 + 0.015, 6);
+    expect(c.centre).toEqual([...new Float32Array(down)]);
   });
 
   it('a thinner tail gives a smaller band', () => {

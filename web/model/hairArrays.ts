@@ -64,9 +64,10 @@ export interface StrandArrays {
   rootIds?: Uint32Array; // length = strands
   /** tailCurves[s]: the curve whose gathered ponytail, braid or bun laid strand s, or -1. */
   tailCurves?: Int32Array; // length = strands
-  /** 7 per tie: its curve's index, the centre (3) and unit axis (3) of its tail's first circle,
-   *  where the growth gathers its hair (solver-cpp/src/hair_engine.hpp tieFrames): a tie's band
-   *  goes there (tieBands.ts). Absent: none known (the band is found from the strands). */
+  /** 8 per tie: its curve's index, the centre (3) and unit axis (3) of its tail's first circle,
+   *  where the growth gathers its hair, and the hair's radius there as laid (0: not one circle)
+   *  (solver-cpp/src/hair_engine.hpp tieFrames): a tie's band goes there (tieBands.ts). Absent:
+   *  none known (the band is found from the strands). */
   tieFrames?: Float32Array;
   /** rootSections[s]: the scalp section strand s's root is in (solver-cpp/src/
    *  scalp_sections.hpp), with the session's sections on; absent otherwise. */

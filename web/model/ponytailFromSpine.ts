@@ -69,9 +69,11 @@ export function ponytailFromSpine(
   ];
   // the circles ponytailCircles gives between these profiles from the band on (its planes
   // before the band could meet the profiles far down a spine that rises and falls)
-  const circles = ponytailCircles(spine as Vec3[], crossSection, a, c, { every: 2 }).circles.filter(
-    (q) => q.spineIndex >= b,
-  );
+  // (and of the made radius: ponytailCircles scales every radius by the cross-section against
+  // its nearest circle, which can be one of those before the band)
+  const circles = ponytailCircles(spine as Vec3[], crossSection, a, c, { every: 2 })
+    .circles.filter((q) => q.spineIndex >= b)
+    .map((q) => ({ ...q, radius }));
   return { crossSection, profiles: [a, c], circles };
 }
 

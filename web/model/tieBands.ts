@@ -97,15 +97,14 @@ function bandOf(c: StyleCurve, i: number, own: number[], strands: Strands): TieB
   // where the growth gathered it, when the engine says (exact, and no plane search)
   const f = strands.tieFrames;
   if (f && c.type !== 'bun')
-    for (let t = 0; t + 7 <= f.length; t += 7)
-      if (f[t] === i)
-        return fitBand(
-          i,
-          [f[t + 1], f[t + 2], f[t + 3]],
-          normalize([f[t + 4], f[t + 5], f[t + 6]]),
-          own,
-          strands,
-        );
+    for (let t = 0; t + 8 <= f.length; t += 8) {
+      if (f[t] !== i) continue;
+      const centre: Vec3 = [f[t + 1], f[t + 2], f[t + 3]];
+      const axis = normalize([f[t + 4], f[t + 5], f[t + 6]]);
+      // the hair's radius as laid: the band hugs it (no fitting)
+      if (f[t + 7] > 0) return { curve: i, centre, axis, radius: f[t + 7] + BAND_MARGIN };
+      return fitBand(i, centre, axis, own, strands);
+    }
   if (c.type === 'ponytail') {
     const c1 = c.circles[0];
     return c1 ? fitBand(i, c1.centre, normalize(c1.axis), own, strands) : null;

@@ -16,8 +16,9 @@
 //     curveGroup[c].
 //   StrandArrays: points[3 * point + axis]; strand s owns strandStart[s] .. strandStart[s + 1] - 1;
 //     optional rootIds[s] (its root's sample index), tailCurves[s] (the curve whose tail laid it,
-//     or -1), rootSections[s] (its root's scalp section, with sections on), tieFrames[7 * t + k]
-//     (tie t: k = 0 its curve's index, 1..3 its first circle's centre, 4..6 its unit axis).
+//     or -1), rootSections[s] (its root's scalp section, with sections on), tieFrames[8 * t + k]
+//     (tie t: k = 0 its curve's index, 1..3 its first circle's centre, 4..6 its unit axis, 7 its
+//     hair's radius there, 0 when that is not one circle).
 import type { GrowthParams } from '../model/growthParams';
 import type {
   ConstraintArrays,

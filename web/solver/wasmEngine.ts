@@ -301,7 +301,7 @@ class WasmEngine implements SolverEngine {
     if (n > 0 && m._hs_engine_strand_tail_curve_count(h) === n)
       strands.tailCurves = i32(m, m._hs_engine_strand_tail_curves(h), n);
     const ties = m._hs_engine_tie_frame_count(h);
-    if (n > 0 && ties > 0) strands.tieFrames = f32(m, m._hs_engine_tie_frames(h), 7 * ties);
+    if (n > 0 && ties > 0) strands.tieFrames = f32(m, m._hs_engine_tie_frames(h), 8 * ties);
     if (n > 0 && m._hs_engine_strand_section_count(h) === n)
       strands.rootSections = u8(m, m._hs_engine_strand_sections(h), n);
     return strands;
