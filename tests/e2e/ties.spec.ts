@@ -191,6 +191,8 @@ test('a high ponytail in one stroke: the spine lifts off the crown and falls; th
   await curveCount(page, 1);
   const s = await settled(page, s0.revision);
   console.log(`high ponytail: "${s.text}"`);
+  // once its hair is shown the status says how much of it the tie took
+  expect(s.text).toMatch(/Added ponytail c1 \(centred on the head\): c1 gathers 100 % of the hair/);
   const tie = ((await page.evaluate(() => window.hairsketch.session())) as { curves: Tie[] })
     .curves[0];
   expect(tie.type).toBe('ponytail');
