@@ -45,7 +45,6 @@ import { bindInput } from './input';
 import { MotionPlayer } from './motionPlayer';
 import { OverlayPresenter } from './overlayPresenter';
 import { bindPageControls } from './pageControls';
-import { PartingReporter } from './partingReporter';
 import { loadQualitySetting, QualityControl } from './quality';
 import { ReferenceController } from './referenceController';
 import { SectionTintPresenter } from './sectionTintPresenter';
@@ -53,6 +52,7 @@ import { LinkWriter, openSessionFileOutcome } from './sessionIO';
 import { SolverBridge } from './solverBridge';
 import { StatusPresenter } from './statusPresenter';
 import { installTestApi } from './testApi';
+import { TieAndPartingReporter } from './tieAndPartingReporter';
 import { TieBandPresenter } from './tieBandPresenter';
 import { createTools } from './tools';
 import { parseUrlOptions } from './urlOptions';
@@ -150,8 +150,8 @@ export function startApp(): void {
   const overlays = new OverlayPresenter(viewer, editor, view, bridge.grid);
   const status = new StatusPresenter(line, bridge);
   editor.listen((c) => status.editorChanged(c));
-  const partings = new PartingReporter((m) => status.note(m));
-  editor.listen((c) => partings.editorChanged(c));
+  const reports = new TieAndPartingReporter((m) => status.note(m));
+  editor.listen((c) => reports.editorChanged(c));
   const links = new LinkWriter(editor);
 
   const tools = createTools({
@@ -308,7 +308,7 @@ export function startApp(): void {
     detailPanel,
     showHeadPanel,
   });
-  showSolverResults({ bridge, hair, sectionTint, bands, overlays, status, active, partings });
+  showSolverResults({ bridge, hair, sectionTint, bands, overlays, status, active, reports });
   const motion = new MotionPlayer({
     client: bridge.client,
     editor,

@@ -9,11 +9,11 @@ import type { ActiveTool } from './activeTool';
 import type { ExportWiring } from './exportActions';
 import type { HairPresenter } from './hairPresenter';
 import type { OverlayPresenter } from './overlayPresenter';
-import type { PartingReporter } from './partingReporter';
 import type { SectionTintPresenter } from './sectionTintPresenter';
 import { type LinkWriter, openSessionLinkOutcome } from './sessionIO';
 import type { SolverBridge } from './solverBridge';
 import type { StatusPresenter } from './statusPresenter';
+import type { TieAndPartingReporter } from './tieAndPartingReporter';
 import type { TieBandPresenter } from './tieBandPresenter';
 
 /** The solver's news on screen: progress and errors in the status line, results to the hair,
@@ -26,14 +26,14 @@ export function showSolverResults(p: {
   overlays: OverlayPresenter;
   status: StatusPresenter;
   active: ActiveTool;
-  partings: PartingReporter;
+  reports: TieAndPartingReporter;
 }): void {
-  const { bridge, hair, sectionTint, bands, overlays, status, active, partings } = p;
+  const { bridge, hair, sectionTint, bands, overlays, status, active, reports } = p;
   bridge.subscribe({
     busy: (phase, fraction, previewing) => status.busy(phase, fraction, previewing),
     result: (r, final) => {
       hair.result(r, final);
-      if (final) partings.hairShown(hair.strands);
+      if (final) reports.hairShown(hair.strands);
       sectionTint.update();
       bands.hairShown(hair.strands);
       overlays.result(r);

@@ -8,7 +8,7 @@ import { defOf } from '../model/kinds';
 import { partingReport } from '../model/partingReport';
 import type { Vec3 } from '../model/vec3';
 
-export class PartingReporter {
+export class TieAndPartingReporter {
   /** Partings added by the last edit, waiting for their hair. */
   private pending: { id: string; points: readonly Vec3[] }[] = [];
   /** Ties added by the last edit, with their index in the session's curves. */
