@@ -76,6 +76,15 @@ test('a stroke that stays on the scalp combs the hair on past its end', async ({
     }
   ).curves[0];
   expect(curve.extend).toBe(true);
+  // the status says how long its hair is: about the stroke's own length (the shape rules)
+  let arc = 0;
+  for (let i = 1; i < curve.points.length; i++) {
+    const [p, q] = [curve.points[i], curve.points[i - 1]];
+    arc += 10 * Math.hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]);
+  }
+  const said = /about as long as the stroke, (\d+) cm/.exec(s1.text);
+  expect(said, s1.text).not.toBeNull();
+  expect(Math.abs(Number(said?.[1]) - arc)).toBeLessThanOrEqual(1);
   // the hair rooted along the stroke's middle goes on down the back, well below its end
   const end = curve.points[curve.points.length - 1];
   const mid = curve.points[Math.floor(curve.points.length / 2)];

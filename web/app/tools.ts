@@ -11,7 +11,7 @@ import { defaultParams, type PlainTieKind } from '../model/curveParams';
 import { STROKE_KINDS } from '../model/kinds';
 import { snapToPlane, X_PLANE } from '../model/mirror';
 import { newCurveExtends, streamExtends, tieAtEnd } from '../model/session';
-import type { Vec3 } from '../model/vec3';
+import { distance, type Vec3 } from '../model/vec3';
 import { BunTool } from '../tools/bunTool';
 import type { StrokeSample } from '../tools/depthRule';
 import { DividingCurveTool } from '../tools/dividingCurveTool';
@@ -268,10 +268,17 @@ function streamTool(k: ToolKit): Tool {
     commit: (points) => {
       const tie = tieAtEnd(editor.session.curves, points[points.length - 1]);
       const extend = strokeExtends(points);
+      // with the shape rules the hair of a stroke that ends on the scalp is as long as the
+      // stroke (docs/natural-fall.md): say so, with that length, so a user wanting long hair
+      // knows to draw past the head
+      let cm = 0;
+      for (let i = 1; i < points.length; i++) cm += 10 * distance(points[i], points[i - 1]);
       const why = tie
         ? `, on into ${tie.type} ${tie.id}`
         : extend && !newCurveExtends(editor.session)
-          ? ', combing on: it ends on the scalp'
+          ? editor.session.shape
+            ? `, combing on: it ends on the scalp; its hair is about as long as the stroke, ${Math.round(cm)} cm (draw on past the head for longer hair)`
+            : ', combing on: it ends on the scalp'
           : '';
       editor.run({
         kind: 'addCurve',

@@ -52,7 +52,7 @@ export function lengthRule(s: Pick<SessionState, 'shape' | 'fall' | 'curves' | '
   if (!s.fall) return 'Length: the strokes alone (the paper’s method).';
   if (!s.shape || !s.curves.some((c) => defOf(c).role === 'flow'))
     return `Length: hair no stroke ends grows to Max length.${ties}`;
-  return `Length: hair no stroke ends is as long as the strokes near it (at most Max length; a stroke extended off the head counts as Max length).${ties}`;
+  return `Length: hair no stroke ends is as long as the strokes near it (at most Max length; a stroke extended off the head counts as Max length, one that ends on the scalp its own length).${ties}`;
 }
 
 /** The strand count the panel shows for a session's growth (before its cap). */
