@@ -21,7 +21,7 @@ export class TieAndPartingReporter {
   editorChanged(c: EditorChange): void {
     if (!c.sessionChanged) return;
     const before = new Set(c.previous.curves.map((k) => k.id));
-    const added = c.session.curves.filter((k) => k.type === 'dividing' && !before.has(k.id));
+    const added = c.session.curves.filter((k) => defOf(k).role === 'parting' && !before.has(k.id));
     if (c.cause === 'command' && added.length > 0)
       this.pending = added.map((k) => ({ id: k.id, points: k.points }));
     else if (c.cause !== 'stroke') this.pending = [];

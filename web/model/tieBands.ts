@@ -1,4 +1,4 @@
-// Hair ties (issue 49): where each tie's band sits and how wide it is, from the session and the
+// Hair ties: where each tie's band sits and how wide it is, from the session and the
 // grown strands. Pure: the viewer (viewer/tieBandView.ts) and the exporters turn the same bands
 // into meshes (tieBandMesh.ts), so what the user sees is what a file holds.
 //
@@ -19,6 +19,7 @@
 // holds no strands gets no band; sessions without `ties` get none, so they look as they always
 // did.
 import type { StrandArrays } from './hairArrays';
+import { defOf } from './kinds';
 import { reflectDirection, reflectPoint, X_PLANE } from './mirror';
 import { polylineTangents } from './ponytailGeometry';
 import type { SessionState, StyleCurve } from './session';
@@ -94,9 +95,12 @@ export function tieBands(
 }
 
 function bandOf(c: StyleCurve, i: number, own: number[], strands: Strands): TieBand | null {
+  // a tie along a spine has a band (it has a supporting surface; a bun lies on the head)
+  const kind = defOf(c);
+  if (kind.role !== 'tie' || kind.surface(c) === null) return null;
   // where the growth gathered it, when the engine says (exact, and no plane search)
   const f = strands.tieFrames;
-  if (f && c.type !== 'bun')
+  if (f)
     for (let t = 0; t + 8 <= f.length; t += 8) {
       if (f[t] !== i) continue;
       const centre: Vec3 = [f[t + 1], f[t + 2], f[t + 3]];
@@ -105,15 +109,16 @@ function bandOf(c: StyleCurve, i: number, own: number[], strands: Strands): TieB
       if (f[t + 7] > 0) return { curve: i, centre, axis, radius: f[t + 7] + BAND_MARGIN };
       return fitBand(i, centre, axis, own, strands);
     }
-  if (c.type === 'ponytail') {
-    const c1 = c.circles[0];
+  // drawn circles (a ponytail's): on the first, C1
+  const circles = kind.guides?.(c);
+  if (circles) {
+    const c1 = circles[0];
     return c1 ? fitBand(i, c1.centre, normalize(c1.axis), own, strands) : null;
   }
-  if (c.type === 'braid') {
-    const k = braidGather(c.points, c.width, own, strands);
-    return k < 0 ? null : fitBand(i, c.points[k], polylineTangents(c.points)[k], own, strands);
-  }
-  return null;
+  // a stroke alone (a braid's): where its hair comes together along it
+  const width = (c as { width?: number }).width ?? 0;
+  const k = braidGather(c.points, width, own, strands);
+  return k < 0 ? null : fitBand(i, c.points[k], polylineTangents(c.points)[k], own, strands);
 }
 
 /** The stroke point where the braid's hair comes together: the first of the stroke's last run of

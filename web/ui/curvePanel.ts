@@ -132,6 +132,6 @@ function paramsOf(c: StyleCurve): unknown {
   return [
     extendsPastEnd(c),
     ...specsOf(c).map((s) => paramValue(c, s)),
-    c.type === 'ponytail' ? c.circles[0]?.radius : null,
+    defOf(c).guides?.(c)[0]?.radius ?? null,
   ];
 }
