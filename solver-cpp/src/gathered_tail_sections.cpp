@@ -85,6 +85,27 @@ float combPath(const SectionGather& g, const Eigen::Vector3f& root, const Eigen:
   return length;
 }
 
+// A strand too short to reach its tie (or with too few points left): its combed path from q
+// while its length L and the point budget last, appended to out; with cutAtLength the last
+// point is cut where L runs out (else the path stops at the point before). At least q.
+void combedTowards(const std::vector<Eigen::Vector3f>& path, const Eigen::Vector3f& q, float L,
+                   size_t room, bool cutAtLength, std::vector<Eigen::Vector3f>& out) {
+  float walked = 0;
+  Eigen::Vector3f prev = q;
+  for (const Eigen::Vector3f& x : path) {
+    const float d = (x - prev).norm();
+    if (walked + d > L || out.size() + 1 >= room) {
+      if (cutAtLength && d > 0 && out.size() + 1 < room)
+        out.push_back(prev + (x - prev) * ((L - walked) / d));
+      break;
+    }
+    walked += d;
+    out.push_back(x);
+    prev = x;
+  }
+  if (out.empty()) out.push_back(q);
+}
+
 }  // namespace
 
 void layCombedTie(const GatheredTail& T, const SpineFrames& F, const SpineFrames* rope,
@@ -105,16 +126,7 @@ void layCombedTie(const GatheredTail& T, const SpineFrames& F, const SpineFrames
   const float L = cap.remaining;  // the hair's length by Max length: a bun coils what it has
   if ((bun && way >= L) || path.size() + 1 >= room) {  // combed towards the tie
     out.clear();
-    float walked = 0;
-    Eigen::Vector3f prev = cap.q;
-    for (const Eigen::Vector3f& x : path) {
-      const float d = (x - prev).norm();
-      if (walked + d > L || out.size() + 1 >= room) break;
-      walked += d;
-      out.push_back(x);
-      prev = x;
-    }
-    if (out.empty()) out.push_back(cap.q);
+    combedTowards(path, cap.q, L, room, false, out);
     return;
   }
   out = path;
@@ -151,19 +163,7 @@ void layCombed(const GatheredTail& T, const SpineFrames& F, const SectionGather&
   const float way = combPath(g, cap.q, seat, lambda, step, room / 2, path);
   const float L = cap.remaining;              // the hair's whole length
   if (way >= L || path.size() + 1 >= room) {  // too short to reach the tie: combed towards it
-    float walked = 0;
-    Eigen::Vector3f prev = cap.q;
-    for (const Eigen::Vector3f& x : path) {
-      const float d = (x - prev).norm();
-      if (walked + d > L || out.size() + 1 >= room) {
-        if (d > 0 && out.size() + 1 < room) out.push_back(prev + (x - prev) * ((L - walked) / d));
-        break;
-      }
-      walked += d;
-      out.push_back(x);
-      prev = x;
-    }
-    if (out.empty()) out.push_back(cap.q);
+    combedTowards(path, cap.q, L, room, true, out);
     return;
   }
   out = path;
