@@ -21,8 +21,7 @@ test('the embed shows the hair inside a page of another origin; the editor refus
   await context.grantPermissions(['clipboard-read', 'clipboard-write']);
   await page.goto('/?preset=bob&strands=1500');
   await settled(page);
-  await page.waitForFunction(() => window.location.hash.startsWith('#s='));
-  const editorHref = await page.evaluate(() => window.location.href);
+  const editorHref = await page.evaluate(() => window.hairsketch.link());
   await page.getByRole('button', { name: 'Copy embed code' }).click();
   await expect(page.getByTestId('status')).toContainText('Embed code copied');
   const snippet = await page.evaluate(() => navigator.clipboard.readText());

@@ -81,8 +81,7 @@ test('the session file carries the head; a link alone asks for it', async ({ pag
   expect(made.head.name).toBe('bust.obj');
   expect(made.head.hash).toMatch(/^[0-9a-f]{64}$/);
   const triangles = (await headInfo(page)).triangles;
-  await page.waitForFunction(() => window.location.hash.startsWith('#s='));
-  const href = await page.evaluate(() => window.location.href);
+  const href = await page.evaluate(() => window.hairsketch.link());
   const [download] = await Promise.all([
     page.waitForEvent('download'),
     page.getByRole('button', { name: 'Save' }).click(),

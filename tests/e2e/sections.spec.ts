@@ -135,6 +135,8 @@ test('half-up: an ear-to-ear parting and a bun on the top section gather the top
   await curveCount(page, 2);
   await settled(page, undone.revision);
   expect(await page.evaluate(() => window.hairsketch.hairHash())).toBe(hash);
+  // the link is written 400 ms after an edit: write it now, so the reload opens this session
+  await page.evaluate(() => window.hairsketch.link());
   await page.reload();
   await settled(page);
   expect(await page.evaluate(() => window.hairsketch.hairHash())).toBe(hash);

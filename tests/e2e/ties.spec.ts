@@ -364,8 +364,7 @@ test('pigtails: Mirror and one ponytail stroke from behind an ear; each gathers 
   await curveCount(page, 2);
   await settled(page, undone.revision);
   expect(await page.evaluate(() => window.hairsketch.hairHash())).toBe(hash);
-  await page.waitForFunction(() => window.location.hash.startsWith('#s='));
-  const link = await page.evaluate(() => window.location.href);
+  const link = await page.evaluate(() => window.hairsketch.link());
   // Save writes a file that Open reads back to the same hair
   const [download] = await Promise.all([
     page.waitForEvent('download'),

@@ -361,6 +361,7 @@ export function startApp(): void {
     ponytail: tools.ponytail,
     sectionsTinted: () => sectionTint.tinted,
     sectionsOverHair: () => sectionTint.overHairTriangles,
+    link: () => links.write(),
     tieBands: () => ({ bands: [...bandView.shown], colour: bandView.colour }),
     busy: () =>
       heads.busy ||

@@ -23,6 +23,9 @@ export interface HairsketchTestApi {
   session(): unknown;
   idle(): Promise<void>;
   hairHash(): string | null;
+  /** Writes the session's link to the address bar now (it is otherwise written 400 ms after an
+   *  edit) and returns the page's address with it. */
+  link(): Promise<string>;
   crashWorker(): void;
   /** Kills the running export's worker as a crash would (nothing when no export runs). */
   crashExport(): void;
@@ -200,6 +203,8 @@ export interface TestApiParts {
   /** Scalp vertices tinted by section now (a tie tool is active). */
   sectionsTinted(): number;
   sectionsOverHair(): number;
+  /** Writes the session's link now; the address with it. */
+  link(): Promise<string>;
   /** The ties' bands on screen. */
   tieBands(): { bands: TieBand[]; colour: string | null };
   /** Work is pending (a solve, an avoidance request, a stroke being drawn). */
@@ -248,6 +253,7 @@ export function installTestApi(app: TestApiParts): void {
       const s = hair.strands;
       return s ? contentKey(s.points, s.strandStart) : null;
     },
+    link: () => app.link(),
     crashWorker: () => app.bridge.crash(),
     crashExport: () => app.exporter?.crash(),
     hairLog: () => hair.log.slice(),
