@@ -1,6 +1,7 @@
 // The scalp brush: drag on the head to paint scalp, Shift+drag to erase it; the wheel
 // sets the brush radius (5 % a notch). A ring on the head under the pointer shows the brush's
-// size and whether it paints or erases (Shift held). The stroke is shown painted while it is drawn (a preview of the mask,
+// size and whether it paints or erases (Shift held). A drag that starts off the head paints from
+// where it comes onto the head. The stroke is shown painted while it is drawn (a preview of the mask,
 // no solve) and becomes one undoable edit on release: the session keeps the stroke, and the
 // roots redistribute over the painted area when the solver gets the new mask.
 import type { ScalpPaintStroke } from '../head/scalpPaint';
@@ -81,12 +82,9 @@ export class ScalpBrushTool implements Tool {
   onPointerDown(p: ToolPointer): boolean {
     if (p.button !== 0) return false;
     const hit = this.d.hit(p.x, p.y);
-    if (!hit) {
-      this.d.notify('Scalp brush: press on the head to paint.');
-      return false;
-    }
-    this.stroke = { erase: !!p.shiftKey, points: [hit], dirty: true };
-    this.ringAt = { point: hit, erase: !!p.shiftKey };
+    // off the head the stroke starts empty and paints once the drag comes onto the head
+    this.stroke = { erase: !!p.shiftKey, points: hit ? [hit] : [], dirty: !!hit };
+    this.ringAt = hit ? { point: hit, erase: !!p.shiftKey } : null;
     this.showRing();
     return true;
   }
@@ -99,7 +97,8 @@ export class ScalpBrushTool implements Tool {
     this.ringAt = { point: hit, erase: k.erase };
     this.showRing();
     const last = k.points[k.points.length - 1];
-    if (Math.hypot(hit[0] - last[0], hit[1] - last[1], hit[2] - last[2]) < this.r / 3) return;
+    if (last && Math.hypot(hit[0] - last[0], hit[1] - last[1], hit[2] - last[2]) < this.r / 3)
+      return;
     k.points.push(hit);
     k.dirty = true;
   }
@@ -109,6 +108,10 @@ export class ScalpBrushTool implements Tool {
     if (!k) return;
     this.onPointerMove(p);
     this.end();
+    if (k.points.length === 0) {
+      this.d.notify('Scalp brush: the drag never came onto the head, so nothing was painted.');
+      return;
+    }
     this.d.commit(this.painted(k));
   }
 
