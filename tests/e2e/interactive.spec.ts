@@ -157,13 +157,17 @@ test('while drawing the status says the hair is a preview; a cancelled stroke br
   await page.mouse.move(start.x, start.y);
   await page.mouse.down();
   for (let i = 1; i <= 6; i++) await page.mouse.move(start.x + 10 * i, start.y + 16 * i);
-  // the worker goes idle between previews: once a preview's hair is on screen and the line is
-  // ready, it must not read as the final hair (the tool's click also sets the line, so a new
-  // revision alone does not mean a preview arrived)
+  // the worker goes idle between previews: once a preview's hair is on screen the ready line
+  // says it is a preview (the tool's click also sets the line, so a new revision alone does not
+  // mean a preview arrived; the line follows the hair within a frame, so wait for both)
   await page.waitForFunction(
     (hash) => {
       const el = document.querySelector('[data-testid="status"]') as HTMLElement;
-      return el.dataset.state === 'ready' && window.hairsketch.hairHash() !== hash;
+      return (
+        el.dataset.state === 'ready' &&
+        window.hairsketch.hairHash() !== hash &&
+        (el.textContent ?? '').startsWith('Preview')
+      );
     },
     before,
     { polling: 50 },
