@@ -185,6 +185,11 @@ constexpr float kVolumeRise = 0.5f;
 // much per unit of length it has come over the head (3 mm per 10 cm), up to kLayerMax (1 cm),
 // so hair from the crown covers the sides in layers instead of all at one distance.
 constexpr float kLayerSlope = 0.03f, kLayerMax = 0.1f;
+// Hair shorter than this (world units) hugs the head (ShapeGrowth::layOnHead's `hugs`): it does
+// not hang from under the skull's widest part but lies on down the nape, as short hair is too
+// stiff to fall away from the head. Each strand's threshold is scaled by a seeded
+// factor in [1 - kHugJitter, 1 + kHugJitter], so where lengths cross it the hair mixes.
+constexpr float kHugLength = 1.2f, kHugJitter = 0.2f;
 // Hair a stroke governs stands off the head no farther than the stroke does, plus this (world
 // units): it may lie closer, never flare out past its stroke.
 constexpr float kLiftSlack = 0.05f;

@@ -39,17 +39,21 @@ float ShapeGrowth::distanceOff(const float p[3], float nrm[3], float hint) const
 
 ShapeGrowth::Lay ShapeGrowth::layOnHead(const float x[3], float n[3], double& segLen, double arc,
                                         float gov, float lift, float& dist, float nrm[3],
-                                        float ownWeight, float ownVolume) const {
+                                        float ownWeight, float ownVolume, bool hugs) const {
   const float keep = 1.f - gov;
   bool held = true;
   const float dx = distanceOff(x, nrm, dist);
   if (std::isnan(dx)) return Lay::Free;
   {
     dist = dx;
-    if (nrm[1] < kSupportNormalY) {
+    // short hair lies on under the skull's widest part and down the nape (behind the head's
+    // axis more than beside it); beside the head, over an ear, it hangs as long hair does
+    const bool nape = hugs && x[2] - centre[2] < -std::abs(x[0] - centre[0]);
+    if (nrm[1] < kSupportNormalY && !hugs) {
       if (keep > 0.5f) return Lay::Hangs;
       held = false;
-    } else if (!head->scalpNear(x[0] - dx * nrm[0], x[1] - dx * nrm[1], x[2] - dx * nrm[2]) &&
+    } else if (!nape &&
+               !head->scalpNear(x[0] - dx * nrm[0], x[1] - dx * nrm[1], x[2] - dx * nrm[2]) &&
                !inFaceColumn(centre, x[0], x[1], x[2])) {
       if (keep > 0.5f) return Lay::Over;
       held = false;

@@ -32,9 +32,13 @@ struct ShapeGrowth {
   // widest part (the surface under it facing down past kSupportNormalY) it hangs from there
   // (Hangs), and off the scalp (an ear; not in the face's column, where it parts round the face)
   // too (Over); taken farther than kLayReach off by the field it follows the field (Free).
+  // Short hair (hugs) is held at its standoff under the skull's widest part and down the nape
+  // (behind the head's axis more than beside it), as a pixie's or a crop's hair is; over an ear
+  // it hangs as long hair does.
   enum class Lay { Laid, Hangs, Over, Free };
   Lay layOnHead(const float x[3], float n[3], double& segLen, double arc, float gov, float lift,
-                float& dist, float nrm[3], float ownWeight = 0, float ownVolume = 0) const;
+                float& dist, float nrm[3], float ownWeight = 0, float ownVolume = 0,
+                bool hugs = false) const;
 
   // "The face stays open": a step of hair no stroke governs or combs (gov below 0.5) that ends in
   // the face's column turns to the nearer side (its horizontal part sideways, at least as much as

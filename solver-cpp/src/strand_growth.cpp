@@ -6,6 +6,7 @@
 
 #include "hair_fall.hpp"
 #include "parallel.hpp"
+#include "rng.hpp"
 #include "shape_growth.hpp"
 
 namespace hairsketch {
@@ -228,8 +229,10 @@ struct GrowRange {
         const float at[3] = {x, y, z};
         around = lengthAround(reach->strokes, at, float(maxLen));
       }
+      float remainingAtRoot = 0;
       if (reach && s.inside(x, y, z)) {
         const float r0 = reachRemaining(*reach, x, y, z, around);
+        remainingAtRoot = r0;
         if (r0 > 0) {
           endsWithCurve = true;
           if (shape) strandMax = around;
@@ -240,6 +243,14 @@ struct GrowRange {
         }
       }
       bool laying = shape && head, hanging = false, overEar = false;
+      // short hair hugs the head (kHugLength, each strand's threshold seeded by its root)
+      bool hugs = false;
+      if (laying) {
+        const double expected =
+            endsWithCurve ? std::min(strandMax, double(remainingAtRoot)) : strandMax;
+        Pcg32 rng(uint64_t(r), 0x68756773ULL);
+        hugs = expected < kHugLength * (1 + kHugJitter * float(2 * rng.uniform() - 1));
+      }
       float layDist = 0, layNormal[3] = {0, 1, 0};
       // a curve's own Volume at the root (weight, value): the strand's lift is that curve's
       float own[2] = {0.f, 0.f};
@@ -322,8 +333,9 @@ struct GrowRange {
           if (laying) {
             const float at[3] = {x, y, z};
             float q[3] = {nx, ny, nz};
-            const ShapeGrowth::Lay lay = shaped.layOnHead(
-                at, q, segLen, length + segLen, gov, here[2], layDist, layNormal, own[0], own[1]);
+            const ShapeGrowth::Lay lay =
+                shaped.layOnHead(at, q, segLen, length + segLen, gov, here[2], layDist, layNormal,
+                                 own[0], own[1], hugs);
             laying = lay == ShapeGrowth::Lay::Laid;
             hanging = lay == ShapeGrowth::Lay::Hangs || lay == ShapeGrowth::Lay::Over;
             overEar = lay == ShapeGrowth::Lay::Over;

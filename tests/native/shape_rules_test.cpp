@@ -196,7 +196,7 @@ TEST(ShapeGrowth, HairBelowTheWidestPartHangsAndAStrokeKeepsItsOwnHair) {
   // a field pointing out and a little down everywhere
   const std::vector<float> field = constantField(g, 0.8f, -0.6f, 0);
   GrowthParams gp;
-  gp.maxLength = 0.5;
+  gp.maxLength = 2.0;  // 20 cm: long enough to hang (kHugLength)
   ShapeRules rules;
   rules.on = true;
   // roots just under the equator on the +x side: they hang straight down
@@ -244,6 +244,42 @@ TEST(ShapeGrowth, HairBelowTheWidestPartHangsAndAStrokeKeepsItsOwnHair) {
   EXPECT_GT(under.back(), 0.15f);
   for (size_t k = 0; k < under.size(); ++k) EXPECT_LT(under[k], lift.back() + kLiftSlack + 0.03f);
   EXPECT_LT(median(far), float(gp.margin) + 0.02f);
+}
+
+TEST(ShapeGrowth, ShortHairHugsTheNapeLongHairHangsFromIt) {
+  const SphereHead head;
+  const Grid g = boxGrid(41, -2, 2);
+  // a field pointing back and down everywhere
+  const std::vector<float> field = constantField(g, 0, -0.6f, -0.8f);
+  ShapeRules rules;
+  rules.on = true;
+  // roots behind the head just under its widest part (the surface there faces down)
+  const std::vector<Eigen::Vector3f> roots = {{0, -0.3f, -0.954f}, {0.15f, -0.35f, -0.925f}};
+  GrowthParams gp;
+  gp.maxLength = 0.6;  // 6 cm: under every strand's hug threshold (kHugLength, kHugJitter)
+  ASSERT_LT(gp.maxLength, kHugLength * (1 - kHugJitter));
+  Strands shortHair;
+  ASSERT_TRUE(growStrands(g, field, roots, gp, shortHair, 1 << 20, &head.distance, nullptr,
+                          BodyCollider(), &rules)
+                  .ok());
+  for (size_t s = 0; s < roots.size(); ++s) {
+    const std::vector<float> d = standOff(shortHair, s, 1.f);
+    ASSERT_GT(d.size(), 10u);
+    // it lies on at the growth margin (2 mm) plus the layer slope, never more than 1 cm off
+    EXPECT_LT(*std::max_element(d.begin(), d.end()), 0.1f) << "strand " << s;
+  }
+  gp.maxLength = 2.0;  // 20 cm: over every strand's threshold
+  ASSERT_GT(gp.maxLength, kHugLength * (1 + kHugJitter));
+  Strands longHair;
+  ASSERT_TRUE(growStrands(g, field, roots, gp, longHair, 1 << 20, &head.distance, nullptr,
+                          BodyCollider(), &rules)
+                  .ok());
+  for (size_t s = 0; s < roots.size(); ++s) {
+    // it hangs from under the widest part: 6 cm along it is well off the sphere
+    const std::vector<float> d = standOff(longHair, s, 0.6f);
+    ASSERT_FALSE(d.empty());
+    EXPECT_GT(d.back(), 0.15f) << "strand " << s;
+  }
 }
 
 }  // namespace shape_rules_test
