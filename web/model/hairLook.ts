@@ -43,9 +43,11 @@ export const DEFAULT_HAIR_LOOK: HairLook = {
 /** The colour of a tie's band (tieBands.ts) when the session names none: a dark elastic. */
 export const DEFAULT_BAND_COLOR = '#1c1c1f';
 
-/** Grey strands: hardly any pigment, a little warm (keratin's own yellow). */
-export const GREY_MELANIN = 0.04;
-export const GREY_REDNESS = 0.5;
+/** Grey strands: hardly any pigment, a trace of keratin's own yellow: silver-white (base colour
+ *  sRGB about (0.88, 0.85, 0.79), HSV saturation 0.1; 0.04 and 0.5 read as champagne blonde,
+ *  saturation 0.31). */
+export const GREY_MELANIN = 0.005;
+export const GREY_REDNESS = 0.2;
 /** A direct colour's per-strand spread of absorption (about ±7 % of its value). */
 export const DIRECT_VARIATION = 0.15;
 /** The roughness of a direct colour's hair. */

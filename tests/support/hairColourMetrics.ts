@@ -1,0 +1,74 @@
+// Figures of the hair's colour in a picture (issue: colour as named, the same in both qualities):
+// the hair's pixels are those that differ from a picture of the same view without hair; of them
+// the mean hue (a circular mean of HSV hue weighted by saturation × value, degrees), the mean
+// luma (Rec. 709 of the linear values) and the mean HSV saturation. Pure arithmetic on RGBA.
+
+export interface Rgba {
+  width: number;
+  height: number;
+  rgba: Uint8Array;
+}
+
+export interface HairColourFigures {
+  /** Pixels counted as hair. */
+  pixels: number;
+  /** Degrees, 0..360 (red 0, yellow 60). */
+  hue: number;
+  /** Mean relative luminance of the hair's pixels, 0..1. */
+  luma: number;
+  /** Mean HSV saturation, 0..1. */
+  saturation: number;
+}
+
+const linear = (b: number) => {
+  const c = b / 255;
+  return c <= 0.04045 ? c / 12.92 : ((c + 0.055) / 1.055) ** 2.4;
+};
+
+/** HSV hue (degrees), saturation and value of an sRGB byte triple. */
+export function hsv(r: number, g: number, b: number): [number, number, number] {
+  const max = Math.max(r, g, b);
+  const min = Math.min(r, g, b);
+  const d = max - min;
+  let h = 0;
+  if (d > 0) {
+    if (max === r) h = ((g - b) / d) % 6;
+    else if (max === g) h = (b - r) / d + 2;
+    else h = (r - g) / d + 4;
+  }
+  return [(h * 60 + 360) % 360, max > 0 ? d / max : 0, max / 255];
+}
+
+/** The hair's pixels: those whose RGB differs from the bald picture's by more than `threshold`
+ *  (sum of absolute byte differences). */
+export function hairColour(withHair: Rgba, bald: Rgba, threshold = 24): HairColourFigures {
+  if (withHair.width !== bald.width || withHair.height !== bald.height)
+    throw new Error('the two pictures differ in size');
+  let n = 0;
+  let sx = 0;
+  let sy = 0;
+  let luma = 0;
+  let sat = 0;
+  const a = withHair.rgba;
+  const z = bald.rgba;
+  for (let i = 0; i < a.length; i += 4) {
+    const diff =
+      Math.abs(a[i] - z[i]) + Math.abs(a[i + 1] - z[i + 1]) + Math.abs(a[i + 2] - z[i + 2]);
+    if (diff <= threshold) continue;
+    n++;
+    const [h, s, v] = hsv(a[i], a[i + 1], a[i + 2]);
+    const w = s * v;
+    sx += w * Math.cos((h * Math.PI) / 180);
+    sy += w * Math.sin((h * Math.PI) / 180);
+    luma += 0.2126 * linear(a[i]) + 0.7152 * linear(a[i + 1]) + 0.0722 * linear(a[i + 2]);
+    sat += s;
+  }
+  const hue = ((Math.atan2(sy, sx) * 180) / Math.PI + 360) % 360;
+  return { pixels: n, hue, luma: n ? luma / n : 0, saturation: n ? sat / n : 0 };
+}
+
+/** The smaller angle between two hues, degrees. */
+export function hueDistance(a: number, b: number): number {
+  const d = Math.abs(a - b) % 360;
+  return d > 180 ? 360 - d : d;
+}

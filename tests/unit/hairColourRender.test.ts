@@ -1,0 +1,67 @@
+// The hair's colour as drawn (tests/support/hairColourMetrics.ts): Grey 100 % reads silver-white,
+// not champagne, and the same look reads as the same hue and brightness in Fast and High. Drawn
+// by `hairsketch render`'s renderer (the built app's embed in Chromium); the hair's pixels are
+// those that differ from the same view without hair.
+import { existsSync } from 'node:fs';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { presetSession } from '../../web/cli/presetSession';
+import { openStillRenderer, type StillRenderer } from '../../web/cli/render';
+import { Head } from '../../web/head/head';
+import { DEFAULT_HAIR_LOOK, type HairLook } from '../../web/model/hairLook';
+import type { SessionState } from '../../web/model/session';
+import { hairColour, hueDistance } from '../support/hairColourMetrics';
+import { readPng } from './pngPixels';
+
+const DIST_BUILT = existsSync(new URL('../../dist/embed.html', import.meta.url));
+const base = presetSession('bob', Head.builtin(), '25k', 1500);
+const size = { width: 320, height: 280, views: ['back'] as const };
+let renderer: StillRenderer;
+
+beforeAll(async () => {
+  if (DIST_BUILT) renderer = await openStillRenderer();
+});
+afterAll(async () => {
+  await renderer?.close();
+});
+
+async function picture(look: Partial<HairLook> | null, quality: 'fast' | 'high') {
+  const s: SessionState = look
+    ? { ...base, hairLook: { ...DEFAULT_HAIR_LOOK, ...look } }
+    : { ...base, curves: [] };
+  return readPng((await renderer.render(s, { ...size, quality })).png[0]);
+}
+const baldPictures = new Map<string, ReturnType<typeof readPng>>();
+/** The view without hair, drawn once per quality. */
+async function bald(quality: 'fast' | 'high') {
+  const known = baldPictures.get(quality);
+  if (known) return known;
+  const p = await picture(null, quality);
+  baldPictures.set(quality, p);
+  return p;
+}
+
+describe.runIf(DIST_BUILT)('hair colour as drawn', () => {
+  it('Grey 100 % is silver-white: the hair pixels are nearly unsaturated', async () => {
+    const grey = hairColour(await picture({ melanin: 0.5, grey: 100 }, 'fast'), await bald('fast'));
+    const brown = hairColour(await picture({}, 'fast'), await bald('fast'));
+    console.log(
+      `grey 100 %: saturation ${grey.saturation.toFixed(3)} over ${grey.pixels} pixels; mid brown ${brown.saturation.toFixed(3)}`,
+    );
+    expect(grey.pixels).toBeGreaterThan(2000);
+    expect(grey.saturation).toBeLessThan(0.15);
+    // the measure sees colour where there is some
+    expect(brown.saturation).toBeGreaterThan(0.4);
+  });
+
+  it('auburn reads as the same hue and brightness in Fast and High', async () => {
+    const auburn = { melanin: 0.32, redness: 0.8 };
+    const fast = hairColour(await picture(auburn, 'fast'), await bald('fast'));
+    const high = hairColour(await picture(auburn, 'high'), await bald('high'));
+    console.log(
+      `auburn: hue ${fast.hue.toFixed(1)} deg Fast, ${high.hue.toFixed(1)} High; luma ${fast.luma.toFixed(4)} Fast, ${high.luma.toFixed(4)} High`,
+    );
+    expect(fast.pixels).toBeGreaterThan(2000);
+    expect(hueDistance(fast.hue, high.hue)).toBeLessThan(10);
+    expect(Math.abs(fast.luma / high.luma - 1)).toBeLessThan(0.15);
+  });
+});
