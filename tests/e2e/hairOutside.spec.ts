@@ -84,3 +84,40 @@ test('the Detail panel curls the hair, and Undo restores it exactly', async ({ p
   expect(denser.strands).toBeLessThan(7000);
   expect(errors).toEqual([]);
 });
+
+test('Curl type in the Hair panel sets a named curl (3B curly) in one edit; Undo takes it back', async ({
+  page,
+}) => {
+  const errors = watchConsole(page);
+  await page.goto('/?preset=default&strands=2000');
+  const first = await settled(page);
+  const detailOf = async () =>
+    ((await page.evaluate(() => window.hairsketch.session())) as { detail?: unknown }).detail;
+  const before = await detailOf();
+  await page.getByRole('button', { name: 'Detail' }).click();
+  const panel = page.getByRole('region', { name: 'Hair detail' });
+  const type = panel.getByRole('combobox', { name: 'Curl type', exact: true });
+  await expect(type).toHaveValue('1');
+  await type.selectOption({ label: '3B curly: springy curls' });
+  const curled = await settled(page, first.revision);
+  const s = (await page.evaluate(() => window.hairsketch.session())) as {
+    detail?: {
+      curl?: { radius: number; frequency: number };
+      clump?: { guideDistance: number };
+      frizz?: unknown;
+    };
+  };
+  // 3B: curls round a 1.4-1.8 cm lock (radius 0.7-0.9 cm), 3-3.8 turns per 10 cm, in locks
+  expect(s.detail?.curl?.radius).toBeGreaterThanOrEqual(0.07);
+  expect(s.detail?.curl?.radius).toBeLessThanOrEqual(0.09);
+  expect(s.detail?.curl?.frequency).toBeGreaterThanOrEqual(3);
+  expect(s.detail?.curl?.frequency).toBeLessThanOrEqual(3.8);
+  expect(s.detail?.clump).toBeDefined();
+  expect(s.detail?.frizz).toBeUndefined();
+  await expect(type).toHaveValue('3B');
+  await page.getByRole('button', { name: 'Undo' }).click();
+  await settled(page, curled.revision);
+  await expect(type).toHaveValue('1');
+  expect(await detailOf()).toEqual(before);
+  expect(errors).toEqual([]);
+});

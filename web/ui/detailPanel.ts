@@ -4,6 +4,8 @@
 // clump, frizz, length jitter) of the whole head and, with a curve selected, below it that
 // curve's own (of the strands it governs). Lengths in centimetres. Built from model/detail.ts DETAIL_PARAMS; every change is one undoable edit
 // (the app runs it as an editor command).
+
+import { CURL_TYPES, curlTypeOf, detailForCurlType } from '../model/curlTypes';
 import {
   DETAIL_BLOCKS,
   DETAIL_PARAMS,
@@ -222,6 +224,7 @@ export function buildDetailPanel(root: HTMLElement, events: DetailPanelEvents): 
   /** The curl, clump and frizz editors and length jitter of one detail; `prefix` starts every
    *  accessible name (empty for the whole head's, so its names stay "Curl", "Curl radius"…). */
   function detailEditors(detail: HairDetail, set: (d: HairDetail) => void, prefix: string): void {
+    panel.append(row('Curl type', curlTypeSelect(detail, set, prefix)));
     for (const b of DETAIL_BLOCKS) panel.append(blockEditor(b, detail, set, prefix));
     panel.append(
       row(
@@ -238,6 +241,34 @@ export function buildDetailPanel(root: HTMLElement, events: DetailPanelEvents): 
         ),
       ),
     );
+  }
+
+  /** "Curl type": straight, the wavy, curly and coily types (model/curlTypes.ts), or "Own curl"
+   *  when the curl matches none; choosing one sets curl and clump and takes frizz off. */
+  function curlTypeSelect(
+    detail: HairDetail,
+    set: (d: HairDetail) => void,
+    prefix: string,
+  ): HTMLSelectElement {
+    const select = document.createElement('select');
+    select.setAttribute('aria-label', `${prefix}Curl type`);
+    const current = curlTypeOf(detail);
+    const options: [string, string][] = [
+      ['1', '1 straight'],
+      ...CURL_TYPES.map((t): [string, string] => [t.id, t.label]),
+    ];
+    if (current === null) options.push(['', 'Own curl (set below)']);
+    for (const [value, text] of options) {
+      const o = document.createElement('option');
+      o.value = value;
+      o.textContent = text;
+      select.append(o);
+    }
+    select.value = current ?? '';
+    select.addEventListener('change', () => {
+      if (select.value) set(detailForCurlType(select.value, detail));
+    });
+    return select;
   }
 
   function blockEditor(
