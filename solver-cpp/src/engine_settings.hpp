@@ -17,6 +17,7 @@ enum EngineSetting : size_t {
   kSettingShape,       // the shape rules (HairEngine::setShape, hair_fall.hpp ShapeRules)
   kSettingVolume,      // their lift at the roots, world units (HairEngine::setShape)
   kSettingTies,        // ties from any hand (HairEngine::setTies)
+  kSettingHairline,    // a soft hairline (HairEngine::setHairline, soft_hairline.hpp)
   kEngineSettingCount
 };
 

@@ -82,6 +82,11 @@ class HairEngine {
   // hair as long as its tail needs, tapered tails, a coiled bun. Off: the ties as before.
   void setTies(bool on) { ties_ = on; }
   bool ties() const { return ties_; }
+  // A soft hairline (soft_hairline.hpp): over the scalp's last centimetre the roots thin out and
+  // some grow short hairs. Off (the default): every root grows, as in sessions made before it.
+  // Takes effect at the next grow.
+  void setHairline(bool on) { hairline_ = on; }
+  bool hairline() const { return hairline_; }
   // Finished edges: every strand not laid into a tie ends up to kEndSpread short of where it
   // grew to (strand_detail.hpp applyDetail's endSpread), seeded per strand; lone roots are not
   // grown (scalp_roots.hpp dropLoneRoots); with fall the prior opens the face (hair_fall.hpp);
@@ -179,7 +184,10 @@ class HairEngine {
   std::vector<Eigen::Vector3f> subsetRoots_;
   std::vector<uint32_t> subsetIndex_;
   std::vector<uint32_t> kept_;  // roots_ less lone ones (all without finished edges), cached
-  bool keptFinish_ = false;
+  bool keptFinish_ = false, keptHairline_ = false;
+  // with a soft hairline: per root of roots_, the longest its hair may grow (infinity: full)
+  std::vector<float> rootCap_;
+  std::vector<float> growCap_;                     // the same for the roots grown (roots())
   std::vector<uint32_t> rootIds_, subsetRootIds_;  // sample indices of roots_, subsetRoots_
   std::vector<int32_t> strandTailCurve_;
   std::vector<uint8_t> strandSection_;
@@ -203,6 +211,7 @@ class HairEngine {
   std::vector<int32_t> tailCurves_;  // the curve of each of tails_
   bool sections_ = false;
   bool ties_ = false;
+  bool hairline_ = false;
   bool finish_ = false;
   ShapeRules shape_;
   std::vector<std::vector<Eigen::Vector3f>> partings_;  // the dividing curves of the last setCurves

@@ -10,6 +10,7 @@
 #include "elapsed.hpp"
 #include "hair_engine.hpp"
 #include "memory_budget.hpp"
+#include "soft_hairline.hpp"
 
 namespace hairsketch {
 
@@ -35,7 +36,8 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
   // the roots grown: all, less lone ones (finished edges: judged on the full set, so a cap
   // keeps its count), then an even stride of those under a cap
   const size_t total = roots_.size();
-  if (!same || keptFinish_ != finish_ || kept_.empty() != (total == 0)) {
+  if (!same || keptFinish_ != finish_ || keptHairline_ != hairline_ ||
+      kept_.empty() != (total == 0)) {
     kept_.resize(total);
     for (size_t k = 0; k < total; ++k) kept_[k] = uint32_t(k);
     if (finish_ && total > 0) {
@@ -45,7 +47,19 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
       const double spacing = r / double(total) * rootKey_.thetaStepDeg * 3.14159265358979 / 180;
       dropLoneRoots(roots_, kept_, float(kLoneReach * spacing));
     }
+    rootCap_.clear();
+    if (hairline_ && total > 0) {
+      // a soft hairline: the roots' distances to the scalp's edge, then which grow what
+      const std::vector<float> edge = distanceToEdges(
+          roots_, scalpEdges(scalp_.positions(), scalp_.indices(), scalp_.scalpMask()),
+          kHairlineWidth);
+      std::vector<float> cap;
+      softHairline(edge, rootIds_, rootKey_.seed, kept_, cap);
+      rootCap_.assign(total, std::numeric_limits<float>::infinity());
+      for (size_t k = 0; k < kept_.size(); ++k) rootCap_[kept_[k]] = cap[k];
+    }
     keptFinish_ = finish_;
+    keptHairline_ = hairline_;
   }
   const std::vector<uint32_t>& kept = kept_;
   const bool capped = rp.maxStrands > 0 && kept.size() > size_t(rp.maxStrands);
@@ -79,8 +93,15 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
   const CurveReach* reach = fall_ && !reach_.empty() ? &reach_ : nullptr;
   ShapeRules shape = shape_;
   for (int e = 0; e < 3; ++e) shape.centre[e] = float(centre_[e]);
+  growCap_.clear();
+  if (!rootCap_.empty()) {
+    growCap_.resize(roots().size());
+    for (size_t k = 0; k < growCap_.size(); ++k)
+      growCap_[k] = rootCap_[subset_ ? subsetIndex_[k] : k];
+  }
   Status s = growStrands(grid_, fieldF_, roots(), gp, strands_, size_t(24) << 20, head, reach,
-                         head ? bodyCollider() : BodyCollider(), fall_ ? &shape : nullptr);
+                         head ? bodyCollider() : BodyCollider(), fall_ ? &shape : nullptr,
+                         growCap_.empty() ? nullptr : growCap_.data());
   const std::vector<Eigen::Vector3f>& R = roots();
   const size_t n = R.size();
   // a strand's seed key: its index in the full root set (previews take a stride of it)

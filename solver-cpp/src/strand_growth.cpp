@@ -152,6 +152,7 @@ struct GrowRange {
   bool headBelow;            // bust on: the head mesh is the body below kHeadBodyBelowY
   bool shape;                // the shape rules (hair_fall.hpp ShapeRules): their steps below
   ShapeGrowth shaped;
+  const float* lengthCap;  // per root (null: none)
 
   // Slides the step from x to n (which ends within the margin of `mesh`) over the body
   // (BodyCollider): n and segLen become the slid step's end and length. prev: the strand's last
@@ -242,6 +243,7 @@ struct GrowRange {
           strandMax = std::min(maxLen, double(f) * farLength + double(1 - f) * kPastEndLength);
         }
       }
+      if (lengthCap) strandMax = std::min(strandMax, double(lengthCap[r]));
       bool laying = shape && head, hanging = false, overEar = false;
       // short hair hugs the head (kHugLength, each strand's threshold seeded by its root)
       bool hugs = false;
@@ -392,7 +394,7 @@ struct GrowRange {
 Status growStrands(const Grid& g, const std::vector<float>& field,
                    const std::vector<Eigen::Vector3f>& roots, const GrowthParams& prm, Strands& out,
                    size_t maxPoints, const HeadDistance* head, const CurveReach* reach,
-                   const BodyCollider& body, const ShapeRules* shape) {
+                   const BodyCollider& body, const ShapeRules* shape, const float* lengthCap) {
   // The point buffer keeps its capacity from the last call and is not zero-filled (see
   // UninitAllocator), so a repeated growth neither reallocates nor refills it.
   out.points.clear();
@@ -432,7 +434,8 @@ Status growStrands(const Grid& g, const std::vector<float>& field,
                                    margin,
                                    shape ? std::clamp(shape->volume, 0.f, 0.3f) : 0.f,
                                    {shape ? shape->centre[0] : 0.f, shape ? shape->centre[1] : 0.f,
-                                    shape ? shape->centre[2] : 0.f}}};
+                                    shape ? shape->centre[2] : 0.f}},
+                       lengthCap};
   out.strandStart.resize(roots.size() + 1);
   const size_t n = roots.size();
   const int threads = parallel::threadCount();

@@ -101,11 +101,14 @@ constexpr double kPastEndLength = 0.2;
 // curve still has length stops where the remaining length there falls below zero, and a strand
 // where a curve governs the hair may slide over the face (the non-scalp head). With a body
 // (BodyCollider, inactive by default: the same bytes as without), hair slides over it.
+// lengthCap (optional, one per root): the longest each strand may grow (a soft hairline's short
+// hairs, soft_hairline.hpp; infinity: no cap of its own).
 Status growStrands(const Grid& grid, const std::vector<float>& field,
                    const std::vector<Eigen::Vector3f>& roots, const GrowthParams& params,
                    Strands& out, size_t maxPoints = size_t(24) << 20,
                    const HeadDistance* head = nullptr, const CurveReach* reach = nullptr,
-                   const BodyCollider& body = BodyCollider(), const ShapeRules* shape = nullptr);
+                   const BodyCollider& body = BodyCollider(), const ShapeRules* shape = nullptr,
+                   const float* lengthCap = nullptr);
 
 // Moves every point but the roots that lies closer to the head than `margin` out to it (after
 // detail has moved points), of every strand or of the strands listed in `only`. Returns how

@@ -20,6 +20,7 @@ function sample(): SessionState {
     bust: _bust,
     shape: _shape,
     ties: _ties,
+    hairline: _hairline,
     ...s
   } = emptySession('50k');
   return {

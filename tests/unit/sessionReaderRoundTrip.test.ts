@@ -90,8 +90,10 @@ describe('every preset session passes the reader and round-trips', () => {
 
   it('spells out the defaults of a minimal session, and keeps them on the next read', () => {
     // a session made before version 4 has no natural fall, sections, finished edges, bust or
-    // shape rules or ties from any hand (new sessions have them on)
-    const { fall, sections, finish, bust, shape, ties, ...beforeFall } = emptySession('25k');
+    // shape rules, ties from any hand or soft hairline (new sessions have them on)
+    const { fall, sections, finish, bust, shape, ties, hairline, ...beforeFall } =
+      emptySession('25k');
+    expect(hairline).toBe(true);
     expect(shape).toBe(true);
     expect(ties).toBe(true);
     expect(fall).toBe(true);
@@ -114,6 +116,7 @@ describe('every preset session passes the reader and round-trips', () => {
         bust: true,
         shape: true,
         ties: true,
+        hairline: true,
       }),
     ).toEqual(emptySession('25k'));
   });

@@ -33,6 +33,7 @@ function full(): SessionState {
     shape: true,
     volume: 0.12,
     ties: true,
+    hairline: true,
     bandColor: '#d02060',
     detail: { lengthJitter: 0.2 },
     scalpPaint: [{ erase: true, radius: 0.3, points: [[0, 1, 0]] }],
@@ -74,6 +75,7 @@ describe('session schema', () => {
       'shape',
       'volume',
       'ties',
+      'hairline',
       'detail',
     ]);
     expect(needsSolve(s, { ...s })).toBe(false);
@@ -140,8 +142,9 @@ describe('engine settings', () => {
         shape: true,
         volume: 0.12,
         ties: false,
+        hairline: true,
       }),
-    ]).toEqual([1, 0, 0, 1, 0, 1, 0.12, 0]);
+    ]).toEqual([1, 0, 0, 1, 0, 1, 0.12, 0, 1]);
     expect([
       ...engineSettings({
         avoidScalp: false,
@@ -152,7 +155,8 @@ describe('engine settings', () => {
         shape: false,
         volume: 0,
         ties: true,
+        hairline: false,
       }),
-    ]).toEqual([0, 1, 1, 0, 1, 0, 0, 1]);
+    ]).toEqual([0, 1, 1, 0, 1, 0, 0, 1, 0]);
   });
 });

@@ -556,6 +556,7 @@ export function applyPreset(s: SessionState, name: PresetName, ctx: PresetContex
     shape,
     volume: _v,
     ties,
+    hairline,
     bust,
     ...rest
   } = s;
@@ -581,6 +582,7 @@ export function applyPreset(s: SessionState, name: PresetName, ctx: PresetContex
     // natural fall before them and keep the hair they had
     ...(shape && name === 'empty' ? { shape } : {}),
     ...(ties && name === 'empty' ? { ties } : {}),
+    ...(hairline && name === 'empty' ? { hairline } : {}),
     ...(bust ? { bust } : {}),
     growth,
     curves,

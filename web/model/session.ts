@@ -220,6 +220,7 @@ export function emptySession(
     bust: true,
     shape: true,
     ties: true,
+    hairline: true,
   };
 }
 

@@ -78,6 +78,10 @@ export const SESSION_SETTINGS = {
    *  tail needs; tails taper to uneven ends under a band; a bun coils. On in every new session;
    *  off, the ties of sessions made before. */
   ties: { type: 'flag', hair: 'request' },
+  /** A soft hairline (solver-cpp/src/soft_hairline.hpp): over the scalp's last centimetre the
+   *  roots thin out and some grow short hairs, instead of a hard, comb-tooth edge. On in every
+   *  new session; off, the roots of sessions made before. */
+  hairline: { type: 'flag', hair: 'request' },
 } as const satisfies Record<string, SettingSpec>;
 
 export type SessionSettingName = keyof typeof SESSION_SETTINGS;
