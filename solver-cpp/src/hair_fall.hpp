@@ -168,6 +168,9 @@ struct ShapeRules {
 // axis through centre, in front of it), where hair no stroke governs does not go: it parts to
 // the nearer side, as hair parted at the centre does.
 constexpr float kFaceHalfAngleTan = 0.9315965f;  // tan(kFaceHalfAngle)
+// Hair parted round the face heads back by this much (against its step's length) as it goes aside:
+// as much back as aside, round the temple towards the ear.
+constexpr float kFaceBack = 1.0f;
 inline bool inFaceColumn(const float centre[3], float x, float y, float z) {
   const float fz = z - centre[2], dx = x - centre[0], yc = y - centre[1];
   return fz > 0 && yc < float(kFaceTop) && yc > float(kFaceBottom) &&
@@ -187,8 +190,9 @@ constexpr float kVolumeRise = 0.5f;
 constexpr float kLayerSlope = 0.03f, kLayerMax = 0.1f;
 // Hair shorter than this (world units) hugs the head (ShapeGrowth::layOnHead's `hugs`): it does
 // not hang from under the skull's widest part but lies on down the nape, as short hair is too
-// stiff to fall away from the head. Each strand's threshold is scaled by a seeded
-// factor in [1 - kHugJitter, 1 + kHugJitter], so where lengths cross it the hair mixes.
+// stiff to fall away from the head. Each strand's threshold is scaled by a factor in
+// [1 - kHugJitter, 1 + kHugJitter] seeded by where its root is (mirror-symmetrically), so where
+// lengths cross it the hair mixes.
 constexpr float kHugLength = 1.2f, kHugJitter = 0.2f;
 // Hair a stroke governs stands off the head no farther than the stroke does, plus this (world
 // units): it may lie closer, never flare out past its stroke.

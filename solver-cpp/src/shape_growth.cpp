@@ -94,7 +94,9 @@ void ShapeGrowth::partRoundFace(float x, float y, float z, float gov, float& nx,
   const float len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
   const float side = nx >= centre[0] ? 1.f : -1.f;
   const float fall = std::min(d[1], 0.f);
-  float t[3] = {side * std::max(len, std::abs(fall)), fall, std::min(d[2], 0.f)};
+  // aside, falling, and back towards the ear (kFaceBack): the hair combs aside round the temple
+  // instead of falling across the eye's outer corner
+  float t[3] = {side * std::max(len, std::abs(fall)), fall, std::min(d[2], 0.f) - kFaceBack * len};
   const float m = std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
   nx = x + t[0] * len / m;
   ny = y + t[1] * len / m;

@@ -245,12 +245,18 @@ struct GrowRange {
       }
       if (lengthCap) strandMax = std::min(strandMax, double(lengthCap[r]));
       bool laying = shape && head, hanging = false, overEar = false;
-      // short hair hugs the head (kHugLength, each strand's threshold seeded by its root)
+      // short hair hugs the head (kHugLength, each strand's threshold seeded by where its root
+      // is, mirror-symmetrically: the 2 mm cell of (|x - centre x|, y, z), so Mirror's hair is
+      // the same on both sides)
       bool hugs = false;
       if (laying) {
         const double expected =
             endsWithCurve ? std::min(strandMax, double(remainingAtRoot)) : strandMax;
-        Pcg32 rng(uint64_t(r), 0x68756773ULL);
+        const auto cell = [](float v) {
+          return uint64_t(int64_t(std::floor(v / 0.02f)) & 0xfffff);
+        };
+        Pcg32 rng(cell(std::abs(x - shaped.centre[0])) << 40 | cell(y) << 20 | cell(z),
+                  0x68756773ULL);
         hugs = expected < kHugLength * (1 + kHugJitter * float(2 * rng.uniform() - 1));
       }
       float layDist = 0, layNormal[3] = {0, 1, 0};

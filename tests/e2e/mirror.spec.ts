@@ -57,10 +57,16 @@ test('Mirror: three strokes make six curves, symmetric hair, a twin deleted and 
   const errors = watchConsole(page);
   await page.goto('/?preset=empty');
   let s = await settled(page);
-  // without finished edges: their end spread is seeded per strand, not mirrored, and the tips
-  // are compared here (the head is bald, so nothing is solved)
-  const { finish: _, ...plain } = (await page.evaluate(() => window.hairsketch.session())) as {
+  // without finished edges and the soft hairline: their end spread and which roots thin out are
+  // seeded per strand, not mirrored, and the tips are compared here (the head is bald, so
+  // nothing is solved)
+  const {
+    finish: _,
+    hairline: __,
+    ...plain
+  } = (await page.evaluate(() => window.hairsketch.session())) as {
     finish?: boolean;
+    hairline?: boolean;
   };
   await page.evaluate((q) => window.hairsketch.replaceSession(q), plain);
   await page.getByRole('button', { name: 'Mirror' }).click();

@@ -164,3 +164,23 @@ export function napeLength(s: StrandSet, cs: readonly CurveLike[]) {
   });
   return { nape: median(nape), strokes: median(near) };
 }
+
+/** Share of strands rooted 3 cm or more from every stroke point that pass in front of the eye's
+ *  outer corner or the temple (beside the face's middle, |x| 3 to 7.5 cm, from the brow's height
+ *  to 6 cm below it, in front of z = 4.5 cm): hair no stroke put there, falling across the eye. */
+export function templeStrays(s: StrandSet, curves: readonly CurveLike[]): number {
+  const pts = curves.flatMap((c) => c.points);
+  let over = 0;
+  let n = 0;
+  eachStrand(s, (p) => {
+    n++;
+    if (pts.some((q) => dist(q, p[0]) < 0.3)) return;
+    if (
+      p.some(
+        ([x, y, z]) => y < 0.15 && y > -0.6 && z > 0.45 && Math.abs(x) > 0.3 && Math.abs(x) < 0.75,
+      )
+    )
+      over++;
+  });
+  return n ? over / n : 0;
+}

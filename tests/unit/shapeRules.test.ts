@@ -22,6 +22,7 @@ import {
   fallOfUngoverned,
   median,
   standOff,
+  templeStrays,
   widthAtEars,
 } from '../support/shapeMetrics';
 
@@ -118,10 +119,13 @@ describe('the shape rules on hand-drawn stroke sets', () => {
       const [before, after] = [await grow(off(s)), await grow(s)];
       const [eb, ea] = [earCoverShare(before), earCoverShare(after)];
       const lie = standOff(after, s.curves, 0.3, 0.4);
+      const strays = templeStrays(after, s.curves);
       console.log(
-        `${name}, rules off -> on: ${(100 * eb).toFixed(2)} -> ${(100 * ea).toFixed(2)} % of strands hide an ear; off the head ${(10 * lie).toFixed(2)} cm`,
+        `${name}, rules off -> on: ${(100 * eb).toFixed(2)} -> ${(100 * ea).toFixed(2)} % of strands hide an ear; off the head ${(10 * lie).toFixed(2)} cm; ${(100 * strays).toFixed(2)} % stray across the temples`,
       );
       expect(ea).toBeLessThan(eb);
+      // front hair no stroke governs parts aside and back round the temples, not across the eyes
+      expect(strays).toBeLessThanOrEqual(0.005);
       expect(ea).toBeLessThanOrEqual(0.02);
       expect(lie).toBeLessThanOrEqual(0.1);
     },
