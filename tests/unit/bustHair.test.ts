@@ -3,23 +3,13 @@
 // (measured with the bust's own signed distance, head/bodySdf.ts, not the solver's grid of it);
 // strands keep their length within 1 % of the same hair without the bust; the same session
 // grows the same bytes. (Without `bust` the hair is the head-alone hair: old sessions' fixtures.)
-import { readFileSync } from 'node:fs';
-import { fileURLToPath } from 'node:url';
-import { beforeAll, describe, expect, it } from 'vitest';
+import { describe, expect, it } from 'vitest';
 import { presetSession } from '../../web/cli/presetSession';
-import { growSessionHair } from '../../web/export/growSession';
 import { bodySdf } from '../../web/head/bodySdf';
 import { Head } from '../../web/head/head';
-import { gridForSession } from '../../web/model/grid';
 import type { StrandArrays } from '../../web/model/hairArrays';
-import { hangLength, type SessionState } from '../../web/model/session';
-import { loadSolverEngine } from '../../web/solver/wasmEngine';
-
-const wasmPath = fileURLToPath(new URL('../../web/generated/hairsolver.wasm', import.meta.url));
-let wasmBinary: Uint8Array;
-beforeAll(() => {
-  wasmBinary = new Uint8Array(readFileSync(wasmPath));
-});
+import type { SessionState } from '../../web/model/session';
+import { growOnBuiltinHead } from '../support/growOnBuiltinHead';
 
 const head = Head.builtin();
 // the long preset with its strokes' hair growing on past their ends ("Extend past the end"):
@@ -31,16 +21,7 @@ const session: SessionState = {
   curves: long.curves.map((c) => ('extend' in c ? { ...c, extend: true } : c)),
 };
 
-async function grow(s: SessionState): Promise<StrandArrays> {
-  const engine = await loadSolverEngine({ wasmBinary });
-  try {
-    const grid = gridForSession(s.grid, s.curves, undefined, hangLength(s));
-    return growSessionHair(engine, s, head.scalpMesh(), { grid, solver: 'fast', maxStrands: 3000 })
-      .strands;
-  } finally {
-    engine.dispose();
-  }
-}
+const grow = (s: SessionState): Promise<StrandArrays> => growOnBuiltinHead(s, 3000);
 
 const lengths = (h: StrandArrays): number[] => {
   const out: number[] = [];

@@ -3,36 +3,18 @@
 // and turns: the curl's axis is each strand's moving average over one of the type's turns, the
 // radius the median distance from it, the turns the unwrapped angle of that offset about the
 // axis. Also: the type a detail reads back as, and "straight" keeping clump and length jitter.
-import { readFileSync } from 'node:fs';
-import { fileURLToPath } from 'node:url';
-import { beforeAll, describe, expect, it } from 'vitest';
+import { describe, expect, it } from 'vitest';
 import { presetSession } from '../../web/cli/presetSession';
-import { growSessionHair } from '../../web/export/growSession';
 import { Head } from '../../web/head/head';
 import { CURL_TYPES, curlTypeOf, detailForCurlType } from '../../web/model/curlTypes';
-import { gridForSession } from '../../web/model/grid';
 import type { StrandArrays } from '../../web/model/hairArrays';
-import { hangLength, type SessionState } from '../../web/model/session';
-import { loadSolverEngine } from '../../web/solver/wasmEngine';
+import type { SessionState } from '../../web/model/session';
+import { growOnBuiltinHead } from '../support/growOnBuiltinHead';
 
-const wasmPath = fileURLToPath(new URL('../../web/generated/hairsolver.wasm', import.meta.url));
-let wasmBinary: Uint8Array;
-beforeAll(() => {
-  wasmBinary = new Uint8Array(readFileSync(wasmPath));
-});
 const head = Head.builtin();
 const long = presetSession('long', head, '25k', 0);
 
-async function grow(s: SessionState): Promise<StrandArrays> {
-  const engine = await loadSolverEngine({ wasmBinary });
-  try {
-    const grid = gridForSession(s.grid, s.curves, undefined, hangLength(s));
-    return growSessionHair(engine, s, head.scalpMesh(), { grid, solver: 'fast', maxStrands: 400 })
-      .strands;
-  } finally {
-    engine.dispose();
-  }
-}
+const grow = (s: SessionState): Promise<StrandArrays> => growOnBuiltinHead(s, 400);
 
 type P = [number, number, number];
 const sub = (a: P, b: P): P => [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
