@@ -1,6 +1,7 @@
 // Curl types a stylist names: the hair typing stylists use (1 straight, 2A–2C wavy, 3A–3C curly,
 // 4A–4C coily), each as the detail that makes it (model/detail.ts): a curl of the type's radius
-// and turns, curling from near the root (curly roots are not flat), wound in locks (a clump per
+// and turns, ramping in over the first 12 % of the hair (a curl rolling from the very root
+// makes barrel rolls across the crown, a stylist saw), wound in locks (a clump per
 // lock: with finished edges each lock's radius and frequency vary by a seeded ±25 % and half the
 // locks wind the other way, docs/natural-fall.md "Ringlets"), and no frizz (a wiry halo is not a
 // curl type). Radii and turns are for a curl's helix: the diameter a lock winds round (a 3A curl
@@ -88,7 +89,7 @@ export function detailForCurlType(id: string, d: HairDetail | undefined): HairDe
   const { curl: _c, clump: _k, frizz: _f, ...rest } = d ?? {};
   return {
     ...rest,
-    curl: { radius: mid(t.radius), frequency: mid(t.frequency), start: 0.03, randomOffset: 1 },
+    curl: { radius: mid(t.radius), frequency: mid(t.frequency), start: 0.12, randomOffset: 1 },
     // locks: strands drawn most of the way onto their lock, loosening towards the tips
     clump: { factor: 0.7, shape: 0.3, tipSpread: 0.01, guideDistance: t.lock },
   };
