@@ -117,10 +117,14 @@ float ShapeGrowth::fallOrComb(bool hangs, bool overEar, float x, float y, float 
       if (tn > 1e-3f && (t[1] < -kCombFalls * tn || onHead)) {
         c = std::clamp((far - near) / (far - kCombNear), 0.f, 1.f);
         for (float& e : t) e /= tn;
-        if (overEar && near > 1e-3f) {
-          // head for the stroke as well as along it
+        // head for the stroke as well as along it, until the hair is beside it (kCombBeside):
+        // hair that kept heading for the stroke would gather on its line as a rope
+        const float toward =
+            2 * std::clamp((near - kCombBeside) / (kCombNear - kCombBeside), 0.f, 1.f);
+        if (overEar && toward > 0) {
           for (int e = 0; e < 3; ++e)
-            t[e] += 2 * interpolateScalar(reach->grid, reach->toCurve.data(), x, y, z, 3, e) / near;
+            t[e] += toward * interpolateScalar(reach->grid, reach->toCurve.data(), x, y, z, 3, e) /
+                    near;
           const float m = std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
           for (float& e : t) e /= m > 1e-6f ? m : 1.f;
         }

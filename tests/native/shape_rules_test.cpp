@@ -282,4 +282,87 @@ TEST(ShapeGrowth, ShortHairHugsTheNapeLongHairHangsFromIt) {
   }
 }
 
+TEST(ShapeGrowth, HairOverAnEarHeadsForTheStrokeOnlyUntilItIsPastTheEar) {
+  // a sphere whose scalp ends at y = 0.3 (an "ear" band below it, still above the widest part)
+  hairsketch_test::Mesh mesh = hairsketch_test::uvSphere(0, 0, 0, kRadius, 48, 96);
+  hairsketch_test::markScalpAbove(mesh, 0.3);
+  HeadDistance head;
+  const HeadMeshView view{mesh.positions.data(), mesh.positions.size() / 3, mesh.indices.data(),
+                          mesh.indices.size() / 3, mesh.scalp.data()};
+  ASSERT_TRUE(head.build(view).ok());
+  const Grid g = boxGrid(41, -2.5, 2.5);
+  // combed down along the sphere (down less its normal part, a little out), as the prior is
+  std::vector<float> field(size_t(g.size()) * 3);
+  for (int k = 0; k < g.nz; ++k)
+    for (int j = 0; j < g.ny; ++j)
+      for (int i = 0; i < g.nx; ++i) {
+        Eigen::Vector3f n(float(g.origin.x() + g.step * i), float(g.origin.y() + g.step * j),
+                          float(g.origin.z() + g.step * k));
+        n /= std::max(n.norm(), 1e-3f);
+        const Eigen::Vector3f t = (Eigen::Vector3f(0, -1, 0) + n.y() * n + 0.1f * n).normalized();
+        std::copy(t.data(), t.data() + 3, &field[3 * size_t(g.index(i, j, k))]);
+      }
+  // a stroke straight down beside the +x side, off the head, to well below it (long hair drawn
+  // down over the shoulder)
+  constexpr double kX = 1.1, kZ = 0.45;
+  std::vector<double> pts;
+  std::vector<float> lift;
+  for (int k = 0; k <= 20; ++k) {
+    const double y = 0.6 - 0.15 * k;
+    pts.insert(pts.end(), {kX, y, kZ});
+    lift.push_back(float(std::sqrt(kX * kX + y * y + kZ * kZ) - kRadius));
+  }
+  ReachCurve c;
+  c.points = pts.data();
+  c.count = 21;
+  c.setsLength = true;
+  c.growsOn = true;
+  c.lift = lift.data();
+  CurveReach reach;
+  buildCurveReach(g, {c}, reach);
+  // roots across the +x side and back above the ear band, 3 to 8 cm from the stroke
+  std::vector<Eigen::Vector3f> roots;
+  for (int k = 0; k < 9; ++k) {
+    const float phi = 1.5f + 0.08f * float(k), theta = 0.9f;
+    roots.emplace_back(kRadius * std::sin(theta) * std::sin(phi), kRadius * std::cos(theta),
+                       kRadius * std::sin(theta) * std::cos(phi));
+  }
+  GrowthParams gp;
+  gp.maxLength = 2.4;
+  ShapeRules rules;
+  rules.on = true;
+  // of the strands reaching 8 cm below the ear band, the median distance from the stroke there
+  const auto besideStroke = [&](const Strands& st, int& reached) {
+    std::vector<float> d;
+    for (size_t s = 0; s < roots.size(); ++s)
+      for (uint32_t q = st.strandStart[s]; q < st.strandStart[s + 1]; ++q)
+        if (st.points[3 * size_t(q) + 1] < -0.5f) {
+          d.push_back(
+              float(std::hypot(st.points[3 * size_t(q)] - kX, st.points[3 * size_t(q) + 2] - kZ)));
+          break;
+        }
+    reached = int(d.size());
+    return median(d);
+  };
+  Strands always, pastEar;
+  ASSERT_TRUE(
+      growStrands(g, field, roots, gp, always, 1 << 20, &head, &reach, BodyCollider(), &rules)
+          .ok());
+  rules.scalpBottom = 0.3f;
+  ASSERT_TRUE(
+      growStrands(g, field, roots, gp, pastEar, 1 << 20, &head, &reach, BodyCollider(), &rules)
+          .ok());
+  int n0 = 0, n1 = 0;
+  const float gathered = besideStroke(always, n0), hung = besideStroke(pastEar, n1);
+  std::printf(
+      "median distance from the stroke 8 cm below the ear: heading all the way %.3f (%d "
+      "strands), past the ear %.3f (%d)\n",
+      gathered, n0, hung, n1);
+  EXPECT_GE(n1, 7);
+  // heading for the stroke all the way down (no scalp bottom) gathers the hair on the stroke;
+  // stopping past the ear leaves it hanging where it went round the ear
+  EXPECT_LT(gathered, 0.5f);
+  EXPECT_GT(hung, 0.6f);
+}
+
 }  // namespace shape_rules_test
