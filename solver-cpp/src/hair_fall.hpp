@@ -198,6 +198,11 @@ constexpr float kLayerSlope = 0.03f, kLayerMax = 0.1f;
 // [1 - kHugJitter, 1 + kHugJitter] seeded by where its root is (mirror-symmetrically), so where
 // lengths cross it the hair mixes.
 constexpr float kHugLength = 1.2f, kHugJitter = 0.2f;
+// Short hair lies on past the scalp's edge for at most this (world units): 3 cm past the nape's
+// hairline, 1.5 cm over an ear, so the nape tapers to the hairline instead of hanging down the
+// neck, and the sides cover the top of the ear instead of hanging over it to a blunt line. Hair a
+// stroke combs over an ear goes with the stroke instead (it is not cut).
+constexpr float kTaperPastNape = 0.3f, kTaperPastEar = 0.15f;
 // Hair a stroke governs stands off the head no farther than the stroke does, plus this (world
 // units): it may lie closer, never flare out past its stroke.
 constexpr float kLiftSlack = 0.05f;

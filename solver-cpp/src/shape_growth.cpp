@@ -41,23 +41,26 @@ ShapeGrowth::Lay ShapeGrowth::layOnHead(const float x[3], float n[3], double& se
                                         float gov, float lift, float& dist, float nrm[3],
                                         float ownWeight, float ownVolume, bool hugs) const {
   const float keep = 1.f - gov;
-  bool held = true;
+  bool held = true, past = false;
   const float dx = distanceOff(x, nrm, dist);
   if (std::isnan(dx)) return Lay::Free;
   {
     dist = dx;
     // short hair lies on under the skull's widest part and down the nape (behind the head's
     // axis more than beside it); beside the head, over an ear, it hangs as long hair does
-    const bool nape = hugs && x[2] - centre[2] < -std::abs(x[0] - centre[0]);
+    const bool nape = hugs && atNape(x[0], x[2]);
+    const bool onScalp =
+        head->scalpNear(x[0] - dx * nrm[0], x[1] - dx * nrm[1], x[2] - dx * nrm[2]);
     if (nrm[1] < kSupportNormalY && !hugs) {
       if (keep > 0.5f) return Lay::Hangs;
       held = false;
-    } else if (!nape &&
-               !head->scalpNear(x[0] - dx * nrm[0], x[1] - dx * nrm[1], x[2] - dx * nrm[2]) &&
-               !inFaceColumn(centre, x[0], x[1], x[2])) {
+    } else if (!hugs && !onScalp && !inFaceColumn(centre, x[0], x[1], x[2])) {
       if (keep > 0.5f) return Lay::Over;
       held = false;
     }
+    // short hair lies on past the scalp's edge, at the nape and over an ear (growth ends it
+    // kTaperPastNape or kTaperPastEar on)
+    past = hugs && !onScalp && keep > 0.5f && !inFaceColumn(centre, x[0], x[1], x[2]);
   }
   // the standoff: the volume reached over the first length, and hair that has come farther
   // over the head lying on top of the hair rooted where it passes (kLayerSlope)
@@ -78,13 +81,14 @@ ShapeGrowth::Lay ShapeGrowth::layOnHead(const float x[3], float n[3], double& se
   const float delta = keep * toWant + gov * (toCap + toOwn);
   for (int k = 0; k < 3; ++k) st[k] += delta * nrm[k];
   const float len = std::sqrt(st[0] * st[0] + st[1] * st[1] + st[2] * st[2]);
-  if (!(len > 1e-3f * step)) return Lay::Laid;
+  const Lay laid = past ? Lay::PastEdge : Lay::Laid;
+  if (!(len > 1e-3f * step)) return laid;
   for (int k = 0; k < 3; ++k) {
     st[k] *= step / len;
     n[k] = x[k] + st[k];
   }
   dist += st[0] * nrm[0] + st[1] * nrm[1] + st[2] * nrm[2];
-  return Lay::Laid;
+  return laid;
 }
 
 void ShapeGrowth::partRoundFace(float x, float y, float z, float gov, float& nx, float& ny,

@@ -35,8 +35,11 @@ struct ShapeGrowth {
   // too (Over); taken farther than kLayReach off by the field it follows the field (Free).
   // Short hair (hugs) is held at its standoff under the skull's widest part and down the nape
   // (behind the head's axis more than beside it), as a pixie's or a crop's hair is; over an ear
-  // it hangs as long hair does.
-  enum class Lay { Laid, Hangs, Over, Free };
+  // it hangs as long hair does. At the nape it lies on past the scalp's edge (PastEdge: laid, its
+  // foot off the scalp), where growth ends it (kTaperPast): a tapered nape, not a blunt line.
+  enum class Lay { Laid, PastEdge, Hangs, Over, Free };
+  // Behind the head's axis more than beside it.
+  bool atNape(float x, float z) const { return z - centre[2] < -std::abs(x - centre[0]); }
   Lay layOnHead(const float x[3], float n[3], double& segLen, double arc, float gov, float lift,
                 float& dist, float nrm[3], float ownWeight = 0, float ownVolume = 0,
                 bool hugs = false) const;

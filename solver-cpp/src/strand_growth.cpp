@@ -130,6 +130,33 @@ struct PaddedSampler {
 
 using PointBuffer = decltype(Strands::points);
 
+// Value noise in [0, 1): seeded values at the corners of kHugNoiseCell cells, blended
+// trilinearly, so roots close together get close values (a root and its mirror twin, a fraction
+// of a millimetre apart, agree) while roots a few cells apart vary independently.
+constexpr float kHugNoiseCell = 0.05f;  // world units (5 mm)
+float hugNoise(float x, float y, float z) {
+  const float p[3] = {x / kHugNoiseCell, y / kHugNoiseCell, z / kHugNoiseCell};
+  int64_t c[3];
+  float f[3];
+  for (int k = 0; k < 3; ++k) {
+    const float fl = std::floor(p[k]);
+    c[k] = int64_t(fl);
+    f[k] = p[k] - fl;
+  }
+  float sum = 0;
+  for (int corner = 0; corner < 8; ++corner) {
+    float w = 1;
+    uint64_t key = 0;
+    for (int k = 0; k < 3; ++k) {
+      const int bit = (corner >> k) & 1;
+      w *= bit ? f[k] : 1 - f[k];
+      key = key << 20 | (uint64_t(c[k] + bit) & 0xfffff);
+    }
+    sum += w * float(Pcg32(key, 0x68756773ULL).uniform());
+  }
+  return sum;
+}
+
 // Between the body's distance, read at one point, and the distance read later that lower bound
 // stands in for (trilinear interpolation is not exactly 1-Lipschitz): world units (1 mm).
 constexpr float kBodySlack = 0.01f;
@@ -246,20 +273,18 @@ struct GrowRange {
       if (lengthCap) strandMax = std::min(strandMax, double(lengthCap[r]));
       bool laying = shape && head, hanging = false, overEar = false;
       // short hair hugs the head (kHugLength, each strand's threshold seeded by where its root
-      // is, mirror-symmetrically: the 2 mm cell of (|x - centre x|, y, z), so Mirror's hair is
-      // the same on both sides)
+      // is, mirror-symmetrically and smoothly: hugNoise, so Mirror's hair is the same on both
+      // sides though mirrored roots are a fraction of a millimetre apart)
       bool hugs = false;
       if (laying) {
         const double expected =
             endsWithCurve ? std::min(strandMax, double(remainingAtRoot)) : strandMax;
-        const auto cell = [](float v) {
-          return uint64_t(int64_t(std::floor(v / 0.02f)) & 0xfffff);
-        };
-        Pcg32 rng(cell(std::abs(x - shaped.centre[0])) << 40 | cell(y) << 20 | cell(z),
-                  0x68756773ULL);
-        hugs = expected < kHugLength * (1 + kHugJitter * float(2 * rng.uniform() - 1));
+        hugs = expected <
+               kHugLength *
+                   (1 + kHugJitter * (2 * hugNoise(std::abs(x - shaped.centre[0]), y, z) - 1));
       }
       float layDist = 0, layNormal[3] = {0, 1, 0};
+      double pastEdge = 0;  // the length laid past the scalp's edge (Lay::PastEdge)
       // a curve's own Volume at the root (weight, value): the strand's lift is that curve's
       float own[2] = {0.f, 0.f};
       if (shape && reach && !reach->ownVolume.empty() && s.inside(x, y, z)) {
@@ -347,9 +372,21 @@ struct GrowRange {
             const ShapeGrowth::Lay lay =
                 shaped.layOnHead(at, q, segLen, length + segLen, gov, here[2], layDist, layNormal,
                                  own[0], own[1], hugs);
-            laying = lay == ShapeGrowth::Lay::Laid;
-            hanging = lay == ShapeGrowth::Lay::Hangs || lay == ShapeGrowth::Lay::Over;
-            overEar = lay == ShapeGrowth::Lay::Over;
+            // short hair laid on past the scalp's edge ends kTaperPast* on; over an ear, hair a
+            // stroke combs goes round the ear with it instead
+            ShapeGrowth::Lay now = lay;
+            if (now == ShapeGrowth::Lay::PastEdge) {
+              const bool nape = shaped.atNape(x, z);
+              if (!nape && combed > 0) {
+                now = ShapeGrowth::Lay::Over;
+              } else {
+                pastEdge += segLen;
+                if (pastEdge > (nape ? kTaperPastNape : kTaperPastEar)) break;
+              }
+            }
+            laying = now == ShapeGrowth::Lay::Laid || now == ShapeGrowth::Lay::PastEdge;
+            hanging = now == ShapeGrowth::Lay::Hangs || now == ShapeGrowth::Lay::Over;
+            overEar = now == ShapeGrowth::Lay::Over;
             nx = q[0];
             ny = q[1];
             nz = q[2];

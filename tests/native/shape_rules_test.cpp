@@ -365,4 +365,55 @@ TEST(ShapeGrowth, HairOverAnEarHeadsForTheStrokeOnlyUntilItIsPastTheEar) {
   EXPECT_GT(hung, 0.6f);
 }
 
+TEST(ShapeGrowth, ShortHairEndsALittlePastTheScalpsEdgeAtTheNapeAndOverAnEar) {
+  // a sphere whose scalp ends at y = -0.3
+  hairsketch_test::Mesh mesh = hairsketch_test::uvSphere(0, 0, 0, kRadius, 48, 96);
+  hairsketch_test::markScalpAbove(mesh, -0.3);
+  HeadDistance head;
+  const HeadMeshView view{mesh.positions.data(), mesh.positions.size() / 3, mesh.indices.data(),
+                          mesh.indices.size() / 3, mesh.scalp.data()};
+  ASSERT_TRUE(head.build(view).ok());
+  const Grid g = boxGrid(41, -2, 2);
+  ShapeRules rules;
+  rules.on = true;
+  GrowthParams gp;
+  gp.maxLength = 0.8;  // 8 cm: short hair (kHugLength), long enough to go 5 cm past the edge
+  ASSERT_LT(gp.maxLength, kHugLength * (1 - kHugJitter));
+  // the length of strand s laid with its foot (the sphere's nearest point) below the edge (a
+  // triangle's height of slack: the scalp flags are per triangle)
+  const auto pastEdge = [](const Strands& st, size_t s) {
+    float len = 0;
+    for (uint32_t p = st.strandStart[s] + 1; p < st.strandStart[s + 1]; ++p) {
+      const float* q = &st.points[3 * size_t(p)];
+      const float r = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
+      if (q[1] / r < -0.3f - 0.07f)
+        len += std::sqrt((q[0] - q[-3]) * (q[0] - q[-3]) + (q[1] - q[-2]) * (q[1] - q[-2]) +
+                         (q[2] - q[-1]) * (q[2] - q[-1]));
+    }
+    return len;
+  };
+  // at the nape (behind the head), combed down and back
+  const std::vector<Eigen::Vector3f> nape = {{0, -0.05f, -0.998f}, {0.2f, -0.05f, -0.978f}};
+  Strands back;
+  ASSERT_TRUE(growStrands(g, constantField(g, 0, -1, -0.3f), nape, gp, back, 1 << 20, &head,
+                          nullptr, BodyCollider(), &rules)
+                  .ok());
+  // over an ear (beside the head), combed down and out
+  const std::vector<Eigen::Vector3f> side = {{0.998f, -0.05f, 0}, {0.978f, -0.05f, 0.2f}};
+  Strands ear;
+  ASSERT_TRUE(growStrands(g, constantField(g, 0.3f, -1, 0), side, gp, ear, 1 << 20, &head, nullptr,
+                          BodyCollider(), &rules)
+                  .ok());
+  for (size_t s = 0; s < 2; ++s) {
+    const float b = pastEdge(back, s), e = pastEdge(ear, s);
+    std::printf("past the edge: nape %.3f, ear %.3f\n", b, e);
+    // it gets there (the edge is 2.5 cm below the roots, the hair 8 cm long) and ends within its
+    // taper and a step
+    EXPECT_GT(b, 0.5f * kTaperPastNape);
+    EXPECT_LT(b, kTaperPastNape + 0.1f);
+    EXPECT_GT(e, 0.3f * kTaperPastEar);
+    EXPECT_LT(e, kTaperPastEar + 0.1f);
+  }
+}
+
 }  // namespace shape_rules_test
