@@ -111,6 +111,21 @@ test('two short spikes up and away lift their own hair only', async ({ page }) =
   expect(lie).toBeLessThanOrEqual(0.1);
 });
 
+test("a mohawk crest drawn from the side, Mirror off, is put on the head's middle", async ({
+  page,
+}) => {
+  const rev = await emptyHead(page, { view: 'l' });
+  // from the crown's near side (18 degrees from the top: about 3 cm off the middle) up and back
+  const a = await scalpAt(page, 18, 90);
+  await dragBy(page, a, 20, 4, -4);
+  const s = await settled(page, rev);
+  const cs = await curves(page);
+  expect(cs.length).toBe(1);
+  console.log(`mohawk crest: "${s.text}"`);
+  for (const p of cs[0].points) expect(Math.abs(p[0])).toBeLessThan(1e-6);
+  expect(s.text).toContain("on the head's middle");
+});
+
 test('a stroke down beside the face leaves the eyes clear', async ({ page }) => {
   const rev = await emptyHead(page, { mirror: true });
   const a = await scalpAt(page, 45, 70);

@@ -21,6 +21,7 @@ import { SelectTool } from '../tools/selectTool';
 import { StreamCurveTool } from '../tools/streamCurveTool';
 import type { Tool } from '../tools/tool';
 import type { Viewer } from '../viewer/viewer';
+import { streamOnMiddle } from './streamOnMiddle';
 import { TIE_TOOL_KINDS, TIE_TOOLS } from './tieTools';
 
 const TOOL_HINTS: Record<Exclude<ToolName, 'ponytail' | PlainTieKind>, string> = {
@@ -243,6 +244,9 @@ function scalpBrushTool(k: ToolKit): ScalpBrushTool {
 /** The stream curve tool: strokes, hint strokes on the selected curve, previews. */
 function streamTool(k: ToolKit): Tool {
   const { d, editor, viewer, step, camera, sample, eye, forward, showDraft, strokeExtends } = k;
+  // drawn from the side along the head's middle, it is put on the middle
+  const onMiddle = (points: Vec3[]) =>
+    streamOnMiddle(points, editor.session.symmetry ?? X_PLANE, forward(), d.head());
   return new StreamCurveTool({
     sample,
     eye,
@@ -265,7 +269,8 @@ function streamTool(k: ToolKit): Tool {
       editor.run({ kind: 'hintEdit', id: c.id, op: r.op.kind, points: r.points });
     },
     // the commit ends the stroke in progress in the same change (one solve follows)
-    commit: (points) => {
+    commit: (drawn) => {
+      const { points, snapped } = onMiddle(drawn);
       const tie = tieAtEnd(editor.session.curves, points[points.length - 1]);
       const extend = strokeExtends(points);
       // with the shape rules the hair of a stroke that ends on the scalp is as long as the
@@ -273,6 +278,7 @@ function streamTool(k: ToolKit): Tool {
       // knows to draw past the head
       let cm = 0;
       for (let i = 1; i < points.length; i++) cm += 10 * distance(points[i], points[i - 1]);
+      const middle = snapped ? ", on the head's middle" : '';
       const why = tie
         ? `, on into ${tie.type} ${tie.id}`
         : extend && !newCurveExtends(editor.session)
@@ -288,12 +294,14 @@ function streamTool(k: ToolKit): Tool {
           extend,
           viewpoint: camera(),
         },
-        what: `stream curve {id} (${points.length - 1} segments${why})`,
-        mirror: d.mirror(),
+        what: `stream curve {id} (${points.length - 1} segments${why}${middle})`,
+        // a stroke on the symmetry plane is its own mirror image
+        mirror: d.mirror() && !snapped,
       });
     },
-    preview: (points) => {
-      viewer.expectHair(points !== null);
+    preview: (drawn) => {
+      viewer.expectHair(drawn !== null);
+      const points = drawn && onMiddle(drawn).points;
       editor.setStroke(points && { points, viewpoint: camera(), extend: strokeExtends(points) });
     },
     notify: d.notify,

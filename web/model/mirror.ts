@@ -104,17 +104,20 @@ export const SNAP_FROM_SIDE = 0.4;
 
 /** `points` put on the plane when its first point and its points on average lie within
  *  SNAP_TO_PLANE of it (SNAP_FROM_SIDE when drawn looking along `view`, a side view), else as
- *  they are. */
+ *  they are. sideOnly: only when drawn in a side view (a stream curve: from the front, a stroke
+ *  near the middle is meant where it is drawn). */
 export function snapToPlane(
   points: Vec3[],
   plane: MirrorPlane = X_PLANE,
   view?: Vec3,
+  sideOnly = false,
 ): { points: Vec3[]; snapped: boolean } {
   if (points.length === 0) return { points, snapped: false };
   const n = plane.normal;
   const off = (p: Vec3) => n[0] * p[0] + n[1] * p[1] + n[2] * p[2] - plane.offset;
   const mean = points.reduce((m, p) => m + Math.abs(off(p)), 0) / points.length;
   const along = view ? Math.abs(n[0] * view[0] + n[1] * view[1] + n[2] * view[2]) : 0;
+  if (sideOnly && !(along > 0.9)) return { points, snapped: false };
   const reach = along > 0.9 ? SNAP_FROM_SIDE : SNAP_TO_PLANE;
   if (Math.abs(off(points[0])) > reach || mean > reach) return { points, snapped: false };
   return {

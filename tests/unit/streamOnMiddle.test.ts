@@ -1,0 +1,51 @@
+// A stream curve drawn in a side view along the head's middle is put on it (web/app/streamOnMiddle.ts):
+// the points that lay on the head are put back on it in the middle plane, checked against the
+// head's own signed distance; drawn from the front, or far from the middle, it stays as drawn.
+import { describe, expect, it } from 'vitest';
+import { streamOnMiddle } from '../../web/app/streamOnMiddle';
+import { Head } from '../../web/head/head';
+import { X_PLANE } from '../../web/model/mirror';
+import type { Vec3 } from '../../web/model/vec3';
+
+const head = Head.builtin();
+
+/** A crest over the top from the forehead back, `x` off the middle, on the head: the outermost
+ *  head point straight below each of a row of points above it. */
+function crest(x: number): Vec3[] {
+  const pts: Vec3[] = [];
+  for (let z = 0.6; z >= -0.8; z -= 0.2) {
+    const hit = head.raycast([x, 3, z], [0, -1, 0]);
+    if (hit) pts.push(hit.point);
+  }
+  return pts;
+}
+
+describe('streamOnMiddle', () => {
+  const side: Vec3 = [-1, -0.1, 0]; // looking along -x: the left view
+  const front: Vec3 = [0, -0.1, -1];
+
+  it('puts a crest drawn 3 cm off the middle in a side view on the middle, on the head', () => {
+    const drawn = crest(0.3);
+    expect(drawn.length).toBeGreaterThan(4);
+    for (const p of drawn) expect(Math.abs(head.signedDistance(p))).toBeLessThan(0.01);
+    const lifted: Vec3 = [0.3, drawn[drawn.length - 1][1] + 0.3, drawn[drawn.length - 1][2]];
+    const r = streamOnMiddle([...drawn, lifted], X_PLANE, side, head);
+    expect(r.snapped).toBe(true);
+    for (const [i, p] of r.points.entries()) {
+      expect(p[0]).toBeCloseTo(0, 9);
+      // on the head where it was drawn on the head (within a millimetre), off it where it was off
+      if (i < drawn.length) expect(Math.abs(head.signedDistance(p))).toBeLessThan(0.01);
+    }
+    // the point past the scalp keeps its place in the plane
+    expect(r.points[r.points.length - 1]).toEqual([0, lifted[1], lifted[2]]);
+  });
+
+  it('leaves it as drawn from the front, or 6 cm off the middle from the side', () => {
+    const drawn = crest(0.3);
+    const a = streamOnMiddle(drawn, X_PLANE, front, head);
+    expect(a.snapped).toBe(false);
+    expect(a.points).toBe(drawn);
+    const far = crest(0.6);
+    expect(streamOnMiddle(far, X_PLANE, side, head).snapped).toBe(false);
+  });
+});

@@ -1,0 +1,36 @@
+// A stream curve drawn in a side view along the head's middle (a mohawk's crest, a centre
+// line combed back) is put on it: from the side the middle is the head's outline, and a press
+// just inside it lands a few centimetres to the near side (fresh eyes could not draw a centred
+// mohawk without Mirror). Its points that lay on the head are put back on it where the middle
+// meets it; those past the scalp keep their place in the plane.
+import type { Head } from '../head/head';
+import { type MirrorPlane, snapToPlane } from '../model/mirror';
+import type { Vec3 } from '../model/vec3';
+
+/** Points within this of the head (world units, 5 mm) lay on it as drawn. */
+const ON_HEAD = 0.05;
+
+export function streamOnMiddle(
+  drawn: Vec3[],
+  plane: MirrorPlane,
+  view: Vec3,
+  head: Head,
+): { points: Vec3[]; snapped: boolean } {
+  const { points, snapped } = snapToPlane(drawn, plane, view, true);
+  if (!snapped) return { points, snapped };
+  const c = head.center;
+  return {
+    points: points.map((p, i) => {
+      if (Math.abs(head.signedDistance(drawn[i])) > ON_HEAD) return p;
+      // the outermost head point on the line from the centre through p
+      const d: Vec3 = [p[0] - c[0], p[1] - c[1], p[2] - c[2]];
+      const len = Math.hypot(d[0], d[1], d[2]);
+      if (!(len > 1e-6)) return p;
+      const u: Vec3 = [d[0] / len, d[1] / len, d[2] / len];
+      const from: Vec3 = [c[0] + 4 * u[0], c[1] + 4 * u[1], c[2] + 4 * u[2]];
+      const hit = head.raycast(from, [-u[0], -u[1], -u[2]]);
+      return hit ? hit.point : p;
+    }),
+    snapped,
+  };
+}
