@@ -98,4 +98,32 @@ describe('scalp brush → roots', () => {
       defaultMask,
     );
   });
+
+  it('with Mirror, one stroke paints both sides as one edit', () => {
+    // a dab on the left cheek (off the default scalp), on the head
+    const at = head.closest([0.8, -0.4, 0.3]).point;
+    const dab: ScalpPaintStroke = { erase: false, radius: 0.08, points: [at] };
+    const e = new Editor(session, 'scalp');
+    e.run({ kind: 'paintScalp', stroke: { ...dab, points: [...dab.points] }, mirror: true });
+    const strokes = e.session.scalpPaint ?? [];
+    expect(strokes).toHaveLength(2);
+    // its reflection (the session keeps points to 1e-4)
+    for (const [k, v] of [-at[0], at[1], at[2]].entries())
+      expect(strokes[1].points[0][k]).toBeCloseTo(v, 3);
+    // the mask gains triangles on both sides of the head, about as many on each
+    const mask = applyScalpPaint(head.mesh, defaultMask, strokes);
+    const gained = { left: 0, right: 0 };
+    const I = head.mesh.indices;
+    const P = head.mesh.positions;
+    for (let t = 0; t < mask.length; t++) {
+      if (mask[t] === defaultMask[t]) continue;
+      const x = (P[3 * I[3 * t]] + P[3 * I[3 * t + 1]] + P[3 * I[3 * t + 2]]) / 3;
+      gained[x > 0 ? 'left' : 'right']++;
+    }
+    expect(gained.left).toBeGreaterThan(5);
+    expect(gained.right).toBeGreaterThan(0.7 * gained.left);
+    expect(gained.right).toBeLessThan(1.4 * gained.left);
+    e.undo();
+    expect(e.session.scalpPaint ?? []).toHaveLength(0);
+  });
 });

@@ -162,7 +162,7 @@ export function startApp(): void {
     mirror: () => view.state.mirror,
     curvesShown: () => view.state.display.curves,
     showGuides: (lines) => overlays.setToolGuides(lines),
-    previewScalp: (stroke) => heads.previewStroke(stroke),
+    previewScalp: (stroke, mirror) => heads.previewStroke(stroke, mirror),
     notify: (m) => status.note(m),
     ponytailStage: (stage) => {
       view.update({ ponytailStage: stage });

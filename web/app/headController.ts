@@ -24,6 +24,7 @@ import { type LoadedHead, loadHeadFile } from '../head/loadHead';
 import { forEachCovered, type ScalpPaintStroke, sessionScalpMask } from '../head/scalpPaint';
 import { fitSymmetryPlane } from '../head/symmetryPlane';
 import type { ScalpMesh } from '../model/hairArrays';
+import { type MirrorPlane, reflectPoint } from '../model/mirror';
 import type { Axis, HeadRef, ScalpStroke, SessionState } from '../model/session';
 import { DEFAULT_CAMERA } from '../viewer/defaultCamera';
 import { paintHeadTriangles, recolorHeadScalp, setHeadGeometry } from '../viewer/headMaterial';
@@ -239,7 +240,7 @@ export class HeadController {
   }
 
   /** Shows `stroke` painted over the current scalp while it is drawn (no edit, no solve). */
-  previewStroke(stroke: ScalpPaintStroke | null): void {
+  previewStroke(stroke: ScalpPaintStroke | null, mirror: MirrorPlane | null = null): void {
     const mesh = this.current.head.mesh;
     if (stroke === null) {
       // undo what the preview painted (the edit, if any, follows as a new mask)
@@ -265,9 +266,12 @@ export class HeadController {
     const from = Math.max(0, this.previewPoints - 1);
     this.previewPoints = stroke.points.length;
     const covered: number[] = [];
-    forEachCovered(mesh, { ...stroke, points: stroke.points.slice(from) }, (t) => {
-      covered.push(t);
-    });
+    const fresh = stroke.points.slice(from);
+    // with Mirror, the reflected stroke too (paintScalp's mirror)
+    for (const points of mirror ? [fresh, fresh.map((p) => reflectPoint(p, mirror))] : [fresh])
+      forEachCovered(mesh, { ...stroke, points }, (t) => {
+        covered.push(t);
+      });
     if (paintHeadTriangles(this.d.headMesh, mesh, covered, stroke.erase ? 0 : 1) > 0)
       this.d.viewer.invalidateFrameCache();
   }

@@ -9,7 +9,7 @@ import type { Head } from '../head/head';
 import type { ScalpPaintStroke } from '../head/scalpPaint';
 import { defaultParams, type PlainTieKind } from '../model/curveParams';
 import { STROKE_KINDS } from '../model/kinds';
-import { snapToPlane, X_PLANE } from '../model/mirror';
+import { type MirrorPlane, snapToPlane, X_PLANE } from '../model/mirror';
 import { newCurveExtends, streamExtends, tieAtEnd } from '../model/session';
 import { distance, type Vec3 } from '../model/vec3';
 import { BunTool } from '../tools/bunTool';
@@ -60,7 +60,7 @@ export interface ToolDeps {
   /** The ponytail tool's next stroke changed. */
   ponytailStage(stage: PonytailStage): void;
   /** Shows a scalp brush stroke painted while it is drawn (null: the preview ends). */
-  previewScalp(stroke: ScalpPaintStroke | null): void;
+  previewScalp(stroke: ScalpPaintStroke | null, mirror: MirrorPlane | null): void;
 }
 
 export interface ToolSet {
@@ -224,9 +224,14 @@ function scalpBrushTool(k: ToolKit): ScalpBrushTool {
         );
       return hit ? hit.point : null;
     },
-    preview: (stroke) => d.previewScalp(stroke),
+    preview: (stroke) =>
+      d.previewScalp(stroke, d.mirror() ? (editor.session.symmetry ?? X_PLANE) : null),
     commit: (stroke) =>
-      editor.run({ kind: 'paintScalp', stroke: { ...stroke, points: [...stroke.points] } }),
+      editor.run({
+        kind: 'paintScalp',
+        stroke: { ...stroke, points: [...stroke.points] },
+        mirror: d.mirror(),
+      }),
     radiusChanged: (r) =>
       d.notify(`Scalp brush radius ${(r * 10).toFixed(1)} cm (wheel: 5 % a notch).`),
     ring: (at) => {

@@ -12,6 +12,7 @@ import {
   isSelfMirror,
   type MirrorPlane,
   mirrorCurve,
+  reflectPoint,
   syncMirrorTwins,
   X_PLANE,
 } from '../model/mirror';
@@ -99,7 +100,8 @@ export type Command =
    *  plane (absent: x = 0). */
   | { kind: 'setHead'; head: 'builtin' | HeadRef; symmetry?: MirrorPlane; what: string }
   /** A scalp brush stroke (painting or erasing scalp), applied over the strokes before it. */
-  | { kind: 'paintScalp'; stroke: ScalpStroke }
+  // mirror: the stroke and its reflection in the symmetry plane, as one edit (Mirror on)
+  | { kind: 'paintScalp'; stroke: ScalpStroke; mirror?: boolean }
   /** The mirror plane (Mirror editing); absent = x = 0. */
   | { kind: 'setSymmetry'; plane: MirrorPlane | undefined }
   /** The reference pictures (added, placed, adjusted, hidden or removed); `what` says which. */
@@ -469,12 +471,16 @@ const HANDLERS: {
     const k = cmd.stroke;
     if (!(k.radius > 0) || k.points.length === 0)
       return { session: s, message: 'Scalp brush: the stroke missed the head.' };
-    const next = { ...s, scalpPaint: [...(s.scalpPaint ?? []), k] };
+    const plane = s.symmetry ?? X_PLANE;
+    const strokes = cmd.mirror
+      ? [k, { ...k, points: k.points.map((p) => reflectPoint(p, plane)) }]
+      : [k];
+    const next = { ...s, scalpPaint: [...(s.scalpPaint ?? []), ...strokes] };
     const check = parseSession({ ...next, curves: [] });
     if (!check.ok) return { session: s, message: `Nothing changed: ${check.error}.` };
     return {
       session: next,
-      message: `${k.erase ? 'Erased' : 'Painted'} scalp (brush ${Math.round(k.radius * 100)} mm).`,
+      message: `${k.erase ? 'Erased' : 'Painted'} scalp (brush ${Math.round(k.radius * 100)} mm${cmd.mirror ? ', both sides' : ''}).`,
     };
   },
   setSymmetry(s, cmd) {
