@@ -146,3 +146,53 @@ test('frames drawn through the cache look the same as full redraws, during and a
   expect(compare(moved).meanDiff).toBeLessThan(0.01);
   expect(errors).toEqual([]);
 });
+
+test("a stroke's commit keeps the head cached: no frame is drawn whole before its hair shows", async ({
+  page,
+}) => {
+  await page.goto('/?preset=empty&strands=1500');
+  let s = await settled(page);
+  expect(await page.evaluate(() => window.hairsketch.setFrameCache(true))).toBe(true);
+  await page.getByRole('button', { name: 'Stream curve' }).click();
+  // every animation frame's count of frames drawn whole, with its time
+  await page.evaluate(() => {
+    const w = window as unknown as { wholeFrames: [number, number][] };
+    w.wholeFrames = [];
+    const loop = () => {
+      w.wholeFrames.push([performance.now(), window.hairsketch.frameSources().none]);
+      requestAnimationFrame(loop);
+    };
+    requestAnimationFrame(loop);
+  });
+  for (const [theta, phi] of [
+    [35, 20],
+    [40, 60],
+  ]) {
+    const start = await page.evaluate(
+      ([t, f]) => window.hairsketch.scalpToScreen(t, f),
+      [theta, phi],
+    );
+    if (!start) throw new Error('scalp point hidden');
+    await page.mouse.move(start.x, start.y);
+    await page.mouse.down();
+    for (let i = 1; i <= 12; i++) await page.mouse.move(start.x + 6 * i, start.y + 12 * i);
+    await page.mouse.up();
+    s = await settled(page, s.revision);
+  }
+  // the second stroke (the first's hair is on the head): from pointer-up to the first frame
+  // that showed its hair, and the frame after it
+  const r = await page.evaluate(() => {
+    const up = window.hairsketch.lastPointerUp();
+    const first = window.hairsketch.hairLog().find((e) => e.arrived > up);
+    const frames = (window as unknown as { wholeFrames: [number, number][] }).wholeFrames;
+    if (!first) return null;
+    const i0 = frames.findIndex(([t]) => t > up);
+    const i1 = frames.findIndex(([t]) => t > first.time);
+    return { up, shown: first.time - up, whole: frames[i1][1] - frames[Math.max(0, i0 - 1)][1] };
+  });
+  expect(r).not.toBeNull();
+  console.log(
+    `stroke commit: its hair shown ${r?.shown.toFixed(0)} ms after pointer-up; frames drawn whole before: ${r?.whole}`,
+  );
+  expect(r?.whole).toBe(0);
+});

@@ -43,11 +43,14 @@ export function needsPictureMessage(r: { name: string }, what: 'link' | 'session
   return `This ${what} needs the picture “${r.name}”, which this browser has not stored. Reference image to load that file.`;
 }
 
+/** No pictures (one array, so that sessions without any compare equal). */
+const NONE: readonly ReferenceImage[] = [];
+
 export class ReferenceController {
   private readonly images = new Map<string, ImageBitmap>();
   private readonly loading = new Set<string>();
   private readonly missingHashes = new Set<string>();
-  private refs: readonly ReferenceImage[] = [];
+  private refs: readonly ReferenceImage[] = NONE;
   /** The picture the panel edits (its hash), null: none. */
   selected: string | null = null;
 
@@ -75,7 +78,10 @@ export class ReferenceController {
 
   /** The session changed: follow its pictures. */
   sessionChanged(s: SessionState): void {
-    const refs = s.references ?? [];
+    // NONE, not a fresh [], when there are none: every session edit (a stroke) comes here, and a
+    // redraw drops the frame cache (a whole frame, ~70 ms on a software rasteriser, before the
+    // stroke's hair can show)
+    const refs = s.references ?? NONE;
     if (refs === this.refs) return;
     this.refs = refs;
     if (this.selected && !refs.some((r) => r.hash === this.selected)) this.selected = null;

@@ -141,7 +141,9 @@ export class HairView {
 
   /** The hair's colour model (hairLook.ts; null: the direct colour `css`, #rrggbb). */
   setLook(look: HairLook | null, css: string): void {
-    if (css === this.color && look === this.look) return;
+    // by value: a session edit that leaves the look as it was (a stroke) hands over a copy, and
+    // the frame cache dropped here costs a whole frame before the stroke's hair can show
+    if (css === this.color && sameLook(look, this.look)) return;
     this.color = css;
     this.look = look;
     for (const m of [this.lines, this.strips]) if (m) setHairLook(m, look, css);
@@ -241,4 +243,12 @@ export class HairView {
     this.dom.bindReceivers(true);
     this.viewer.invalidateFrameCache(); // new maps and uniforms: the cached hair is stale
   }
+}
+
+/** Whether two looks are equal, field for field (null: the direct colour). */
+function sameLook(a: HairLook | null, b: HairLook | null): boolean {
+  if (a === b) return true;
+  if (!a || !b) return false;
+  const keys = Object.keys(a) as (keyof HairLook)[];
+  return keys.length === Object.keys(b).length && keys.every((k) => a[k] === b[k]);
 }
