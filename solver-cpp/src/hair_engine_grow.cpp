@@ -93,7 +93,6 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
   const CurveReach* reach = fall_ && !reach_.empty() ? &reach_ : nullptr;
   ShapeRules shape = shape_;
   for (int e = 0; e < 3; ++e) shape.centre[e] = float(centre_[e]);
-  shape.scalpBottom = scalp_.scalpBottom();
   growCap_.clear();
   if (!rootCap_.empty()) {
     growCap_.resize(roots().size());

@@ -19,7 +19,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <limits>
 #include <vector>
 
 #include "field_system.hpp"
@@ -164,9 +163,6 @@ struct ShapeRules {
   bool on = false;
   float volume = 0;  // world units: how far the hair stands off the head at its roots (0..0.3)
   float centre[3] = {0, 0, 0};  // the head's centre (the prior's vertical axis)
-  // the height of the scalp's lowest point (the nape's hairline): below it hair over an ear has
-  // gone past the ear
-  float scalpBottom = -std::numeric_limits<float>::infinity();
 };
 // Whether p lies in the face's column (kFaceTop, kFaceBottom, kFaceHalfAngle about the vertical
 // axis through centre, in front of it), where hair no stroke governs does not go: it parts to
@@ -216,11 +212,11 @@ constexpr float kLiftSlack = 0.05f;
 constexpr float kHangSpread = 0.12f;
 constexpr float kCombNear = 0.3f, kCombFar = 0.5f, kCombFarOverEar = 0.8f, kCombFalls = 0.3f,
                 kCombOnHead = 0.15f;
-// Over an ear, hair heads for the stroke at full strength from kCombNear out and not at all
-// within kCombBeside of it: it goes round the ear beside the stroke, not onto its line.
+// Over an ear, hair heads for a stroke behind it (tucking it behind the ear; never for one in
+// front of it, as a stroke drawn down over the shoulder: the side's hair would gather onto it as
+// a rope), at full strength from kCombNear out and not at all within kCombBeside of it: it goes
+// round the ear beside the stroke, not onto its line.
 constexpr float kCombBeside = 0.15f;
-// ... and only above the scalp's lowest point (ShapeRules::scalpBottom): below it the hair has gone
-// round the ear, and is combed along the stroke but no longer heads for it.
 // The length of hair no stroke ends, rooted at p: Shepard's inverse-square-distance blend of the
 // strokes' lengths (a stroke that grows on counts as maxLength, unless it ends on the scalp: a
 // stroke that combs counts its own length), capped by maxLength; maxLength when there is no

@@ -279,13 +279,4 @@ void dropLoneRoots(const std::vector<Eigen::Vector3f>& all, std::vector<uint32_t
   }
 }
 
-float ScalpSampler::scalpBottom() const {
-  float low = std::numeric_limits<float>::infinity();
-  for (size_t t = 0; t < scalp_.size(); ++t)
-    if (scalp_[t])
-      for (int k = 0; k < 3; ++k)
-        low = std::min(low, positions_[3 * size_t(indices_[3 * t + k]) + 1]);
-  return std::isinf(low) ? -low : low;
-}
-
 }  // namespace hairsketch

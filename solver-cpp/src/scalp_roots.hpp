@@ -45,8 +45,6 @@ class ScalpSampler {
   const std::vector<float>& positions() const { return positions_; }
   const std::vector<uint32_t>& indices() const { return indices_; }
   const std::vector<uint8_t>& scalpMask() const { return scalp_; }
-  // The height (y) of the scalp's lowest vertex; -infinity with no scalp.
-  float scalpBottom() const;
   // Bytes kept (the mesh copy and the bins).
   size_t bytes() const {
     return positions_.capacity() * sizeof(float) + indices_.capacity() * sizeof(uint32_t) +

@@ -15,7 +15,6 @@ struct ShapeGrowth {
   float margin = 0;                    // the growth margin off the head (world units)
   float volume = 0;                    // the lift at the roots (world units, 0..0.3)
   float centre[3] = {0, 0, 0};         // the head's centre (the prior's vertical axis)
-  float scalpBottom = 0;               // ShapeRules::scalpBottom
 
   // The head's distance at p (world units) and its outward normal there (nrm, unit): read where
   // the distance grid is exact (HeadDistance::band), farther out by walking towards the head

@@ -312,11 +312,8 @@ struct GrowRange {
             interpolateScalars(reach->grid, arrays, 3, x, y, z, here);
           }
           const float gov = here[0];
-          // over an ear the hair heads for the stroke while it goes round the ear (above the
-          // scalp's lowest point), not on down the neck, where it would gather into a rope
-          const bool roundEar = overEar && y > shaped.scalpBottom;
           const float combed = hanging || laying
-                                   ? shaped.fallOrComb(hanging, roundEar, x, y, z, here, nx, ny, nz)
+                                   ? shaped.fallOrComb(hanging, overEar, x, y, z, here, nx, ny, nz)
                                    : 0.f;
           if (shape) shaped.partRoundFace(x, y, z, std::max(gov, combed), nx, ny, nz);
           // The body: the strand slides over it (never stops there).
@@ -480,8 +477,7 @@ Status growStrands(const Grid& g, const std::vector<float>& field,
                                    margin,
                                    shape ? std::clamp(shape->volume, 0.f, 0.3f) : 0.f,
                                    {shape ? shape->centre[0] : 0.f, shape ? shape->centre[1] : 0.f,
-                                    shape ? shape->centre[2] : 0.f},
-                                   shape ? shape->scalpBottom : 0.f},
+                                    shape ? shape->centre[2] : 0.f}},
                        lengthCap};
   out.strandStart.resize(roots.size() + 1);
   const size_t n = roots.size();
