@@ -4,7 +4,7 @@ import { describe, expect, it } from 'vitest';
 import { embedCode } from '../../web/app/sessionIO';
 import { editorUrlFor, parseEmbedOptions } from '../../web/embed/embedOptions';
 import { DEFAULT_CAMERA } from '../../web/viewer/defaultCamera';
-import { namedView } from '../../web/viewer/namedViews';
+import { framedAppView, lowestPoint, namedView } from '../../web/viewer/namedViews';
 
 describe('the embed', () => {
   it('reads its options, ignoring unknown values', () => {
@@ -43,5 +43,24 @@ describe('the embed', () => {
     expect(long.target[1]).toBeCloseTo(DEFAULT_CAMERA.target[1] - 1.8, 6);
     for (const v of ['side', 'back'] as const)
       expect(dist(namedView(v, -1))).toBeGreaterThan(0.5 * dist(front));
+  });
+
+  it("the app's view keys frame long hair as the still views do; short hair at the head's framing", () => {
+    const home = DEFAULT_CAMERA;
+    const dist = (v: { position: number[]; target: number[] }) =>
+      Math.hypot(...v.position.map((p, a) => p - v.target[a]));
+    for (const name of ['front', 'left', 'back'] as const) {
+      // hair above the default floor (-2.4): the head's framing, the distance of the starting view
+      const short = framedAppView(name, home, -1);
+      expect(dist(short)).toBeCloseTo(dist(home), 9);
+      expect(short.target).toEqual(home.target);
+      // hair down to y = -6: twice as far (3.6 -> 7.2 units tall), aimed 1.8 lower, as namedView
+      const long = framedAppView(name, home, -6);
+      expect(dist(long) / dist(home)).toBeCloseTo(2, 6);
+      expect(long.target[1]).toBeCloseTo(home.target[1] - 1.8, 6);
+    }
+    // the lowest point of strands and a floor
+    expect(lowestPoint([0, -1, 0, 0, -3.5, 1], -2)).toBe(-3.5);
+    expect(lowestPoint([], -2)).toBe(-2);
   });
 });

@@ -23,7 +23,7 @@ import { buildViewControl } from '../ui/viewControl';
 import { createBodyMesh } from '../viewer/bodyMaterial';
 import { HairView } from '../viewer/hairView';
 import { createHeadMesh } from '../viewer/headMaterial';
-import { viewLabel } from '../viewer/namedViews';
+import { lowestPoint, viewLabel } from '../viewer/namedViews';
 import { ReferencePlanes } from '../viewer/referencePlanes';
 import { TieBandView } from '../viewer/tieBandView';
 import { Viewer } from '../viewer/viewer';
@@ -185,6 +185,8 @@ export function startApp(): void {
     viewer,
     status,
     view,
+    // the views frame the hair and as much of the bust as it reaches (not the whole bust)
+    hairstyleLowest: () => lowestPoint(hair.strands?.points ?? [], heads.head.mesh.bounds.min[1]),
     cancelTool: () => active.cancel(),
     openDialog: () => toolbar.openFileDialog(),
     links,

@@ -19,6 +19,9 @@ export interface EditActionDeps {
   /** Where reference pictures are kept ("Save" embeds the session's picture files). */
   pictures?: PictureStore;
   view: ViewStore;
+  /** The lowest point (world y) the hairstyle's views must show: its hair's, or the head's
+   *  bottom. */
+  hairstyleLowest(): number;
   /** Abandons what the active tool is doing. */
   cancelTool(): void;
   openDialog(): void;
@@ -93,7 +96,7 @@ export function editActions(d: EditActionDeps): EditActions {
     },
     open: () => d.openDialog(),
     resetView: () => viewer.resetView(),
-    showView: (name) => viewer.showView(name),
+    showView: (name) => viewer.showView(name, d.hairstyleLowest()),
     orbitSpeed: () => viewer.orbitSpeed,
     setOrbitSpeed: (f) => {
       viewer.setOrbitSpeed(f);

@@ -10,7 +10,6 @@ import { Head } from '../head/head';
 import { sessionScalpMask } from '../head/scalpPaint';
 import { packCurves, packHairOptions } from '../model/curveSet';
 import { FIELD_OMEGA, gridForSession } from '../model/grid';
-import type { StrandArrays } from '../model/hairArrays';
 import { DEFAULT_BAND_COLOR } from '../model/hairLook';
 import { hangLength, type SessionState } from '../model/session';
 import { decodeSessionLink } from '../model/sessionLink';
@@ -20,7 +19,7 @@ import { createBodyMesh } from '../viewer/bodyMaterial';
 import { setCameraButtons } from '../viewer/cameraButtons';
 import { HairView } from '../viewer/hairView';
 import { createHeadMesh, recolorHeadScalp, setHeadGeometry } from '../viewer/headMaterial';
-import { BUST_VIEW_FLOOR, namedView, type ViewName } from '../viewer/namedViews';
+import { BUST_VIEW_FLOOR, lowestPoint, namedView, type ViewName } from '../viewer/namedViews';
 import { TieBandView } from '../viewer/tieBandView';
 import { Viewer } from '../viewer/viewer';
 import { editorUrlFor, parseEmbedOptions } from './embedOptions';
@@ -131,7 +130,7 @@ export async function startEmbed(): Promise<void> {
         // the views frame the shoulders too when the bust is shown
         if (final)
           lowest = Math.min(
-            lowestPoint(r.strands, head.mesh.bounds.min[1]),
+            lowestPoint(r.strands.points, head.mesh.bounds.min[1]),
             showsBody ? BUST_VIEW_FLOOR : Infinity,
           );
         if (final && !framed && !moved) {
@@ -183,9 +182,3 @@ export async function startEmbed(): Promise<void> {
 }
 
 /** The lowest height the hair reaches (the head's bottom when there is no hair). */
-function lowestPoint(strands: StrandArrays, headBottom: number): number {
-  let low = headBottom;
-  const p = strands.points;
-  for (let i = 1; i < p.length; i += 3) if (p[i] < low) low = p[i];
-  return low;
-}

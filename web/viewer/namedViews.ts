@@ -27,17 +27,34 @@ const DEFAULT_FLOOR = -2.4;
 export const BUST_VIEW_FLOOR = -3.3;
 const HEAD_TOP = 1.2;
 
+/** How a framing made for the default floor grows for hair whose lowest point is at `lowest`:
+ *  the picture's height grows with the hair's reach below the default floor (scale), and its
+ *  middle moves down by half that reach (drop). */
+function reachFraming(lowest: number): { scale: number; drop: number } {
+  const floor = Number.isFinite(lowest) ? Math.min(DEFAULT_FLOOR, lowest) : DEFAULT_FLOOR;
+  return {
+    scale: (HEAD_TOP - floor) / (HEAD_TOP - DEFAULT_FLOOR),
+    drop: (DEFAULT_FLOOR - floor) / 2,
+  };
+}
+
 /** Where the camera stands and looks for `view` of hair whose lowest point is at height
  *  `lowest` (world y; the head's own bottom when there is no hair). */
 export function namedView(view: ViewName, lowest: number): { position: Vec3; target: Vec3 } {
-  const floor = Number.isFinite(lowest) ? Math.min(DEFAULT_FLOOR, lowest) : DEFAULT_FLOOR;
-  // the picture's height grows with the hair's reach below the default floor
-  const scale = (HEAD_TOP - floor) / (HEAD_TOP - DEFAULT_FLOOR);
-  const target: Vec3 = [0, DEFAULT_CAMERA.target[1] + (floor - DEFAULT_FLOOR) / 2, 0];
+  const { scale, drop } = reachFraming(lowest);
+  const target: Vec3 = [0, DEFAULT_CAMERA.target[1] - drop, 0];
   const position = POSITIONS[view].map(
     (v, a) => target[a] + (v - DEFAULT_CAMERA.target[a]) * scale,
   );
   return { position: position as Vec3, target };
+}
+
+/** The lowest point (world y) of the strands `points` (x, y, z per point) and of `floor` (the
+ *  head's bottom, or the shoulders when the bust is shown): what the views must show. */
+export function lowestPoint(points: ArrayLike<number>, floor: number): number {
+  let low = floor;
+  for (let i = 1; i < points.length; i += 3) if (points[i] < low) low = points[i];
+  return low;
 }
 
 /** The views the app's view control and keys give (app/actions.ts): straight at the head from
@@ -55,6 +72,20 @@ const DIRECTIONS: Record<AppViewName, Vec3> = {
   // straight down, the face towards the bottom of the picture
   top: [0, Math.cos(0.01), Math.sin(0.01)],
 };
+
+/** An app view that frames the whole hairstyle: from `home` (the framing of the head, as at
+ *  load) farther away and aimed lower as far as the hair reaches below the default floor
+ *  (`lowest`, as for namedView), so hair down the back is in the picture. */
+export function framedAppView(
+  name: AppViewName,
+  home: { position: Vec3; target: Vec3 },
+  lowest: number,
+): { position: Vec3; target: Vec3 } {
+  const { scale, drop } = reachFraming(lowest);
+  const [p, t] = [home.position, home.target];
+  const distance = Math.hypot(p[0] - t[0], p[1] - t[1], p[2] - t[2]) * scale;
+  return appView(name, [t[0], t[1] - drop, t[2]], distance);
+}
 
 /** Where the camera stands for an app view, looking at `target` from `distance`. */
 export function appView(

@@ -28,7 +28,7 @@ import { DEFAULT_CAMERA } from './defaultCamera';
 import { type FrameMode, type FramePlan, OverlayWait } from './frameCache';
 import { HairLevelOfDetail, INTERACTIVE_RESOLUTION } from './hairLevelOfDetail';
 import { ALL_LAYERS, drawLayers, LayeredDrawing, type LayeredScene } from './layeredDrawing';
-import { type AppViewName, appView } from './namedViews';
+import { type AppViewName, framedAppView } from './namedViews';
 import { type CurveView, OverlayLayer } from './overlayLayer';
 import { basePixelRatio, glRendererName, isSoftwareRenderer } from './rendererProbe';
 import { disposeObject } from './sceneObjects';
@@ -370,16 +370,11 @@ export class Viewer {
     this.rig.resetView(animate);
   }
 
-  /** Eases the camera to a named view (namedViews.ts appView) of the home framing's target,
-   *  at its distance, as resetView eases home. */
-  showView(name: AppViewName): void {
-    const home = this.rig.home;
-    const d = Math.hypot(
-      home.position[0] - home.target[0],
-      home.position[1] - home.target[1],
-      home.position[2] - home.target[2],
-    );
-    const v = appView(name, home.target, d);
+  /** Eases the camera to a named view (namedViews.ts framedAppView) of the home framing, farther
+   *  and lower as far as the hairstyle reaches below the head (`lowest`: its lowest point, world
+   *  y), as resetView eases home. */
+  showView(name: AppViewName, lowest = Number.POSITIVE_INFINITY): void {
+    const v = framedAppView(name, this.rig.home, lowest);
     this.rig.easeTo(v.position, v.target);
   }
 
