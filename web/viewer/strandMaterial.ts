@@ -28,21 +28,27 @@ import {
   lodIndex,
   type PointAttributes,
   pointAttributes,
+  TIP_DISTANCE_RANGE,
 } from './strandAttributes';
 
 export { LOD_GROUPS } from './strandAttributes';
 
 const commonVertex = /* glsl */ `
 attribute vec3 tangent;
-attribute float along;
+attribute vec2 along; // x: 0 root … 1 tip (by point); y: distance from the tip, encoded
 attribute vec4 strandRandom;
 attribute vec2 lighting;
 varying vec3 vTangent;
 varying vec3 vWorldPosition;
-varying float vAlong;
+varying vec2 vAlong; // x: along.x; y: the distance from the tip, world units
 varying vec4 vRandom;
 varying vec2 vLight;
 varying float vCoverage;
+// the distance from the tip, world units, of along.y (strandAttributes.ts decodeTipDistance: the
+// byte's steps are finest near the tip)
+float tipDistanceOf(float encoded) {
+  return ${TIP_DISTANCE_RANGE.toFixed(1)} * encoded * encoded;
+}
 `;
 
 /** Where a strand's tip starts to taper and fade (both shaders of either geometry). */
@@ -106,10 +112,11 @@ float deepOpacityTransmittance(vec3 world) {
 #endif
 
 
-// The strand's absorption at \`along\` (rnd: its seeded random values): root → tip ombré, grey
-// strands, a seeded spread of melanin and a little of the red/blue balance.
-vec3 strandSigma(vec4 rnd, float along) {
-  float ombre = lookShares.y < 0.999 ? smoothstep(lookShares.y, 1.0, along) : 0.0;
+// The strand's absorption at \`along\` (x: 0 root … 1 tip; y: distance from the tip, world
+// units; rnd: its seeded random values): root → tip ombré, grey strands, a seeded spread of
+// melanin and a little of the red/blue balance.
+vec3 strandSigma(vec4 rnd, vec2 along) {
+  float ombre = lookShares.y < 0.999 ? smoothstep(lookShares.y, 1.0, along.x) : 0.0;
   vec3 s = mix(rootSigma, tipSigma, ombre);
   float pick = fract(dot(rnd, vec4(0.7548777, 0.5698403, 0.3308946, 0.1234567)) * 97.31);
   if (pick < lookShares.x) s = greySigma;
@@ -117,8 +124,8 @@ vec3 strandSigma(vec4 rnd, float along) {
   return s * (1.0 + lookShares.z * (2.0 * rnd.x - 1.0)) * vec3(1.0 - hue, 1.0, 1.0 + hue);
 }
 
-// The strand's colour at world point P with unit tangent T (root -> tip).
-vec3 shadeStrand(vec3 T, vec3 P, float along, vec4 rnd, vec2 light) {
+// The strand's colour at world point P with unit tangent T (root -> tip); along as strandSigma's.
+vec3 shadeStrand(vec3 T, vec3 P, vec2 along, vec4 rnd, vec2 light) {
   vec3 V = normalize(cameraPosition - P);
   vec3 radial = P - headCenter;
   vec3 N = radial - T * dot(radial, T);
@@ -134,7 +141,7 @@ vec3 shadeStrand(vec3 T, vec3 P, float along, vec4 rnd, vec2 light) {
   shadow = deepOpacityTransmittance(P);
 #endif
   // root darkening: occlusion towards the scalp, on top of the hair's own occlusion
-  float rootAo = mix(1.0 - rootDarkening, 1.0, smoothstep(0.0, 0.3, along));
+  float rootAo = mix(1.0 - rootDarkening, 1.0, smoothstep(0.0, 0.3, along.x));
   vec3 key = keyColor * bsdfGain * hairBsdf(T, keyDirection, V, sigma, beta, shadow);
   // fill and sky: the base colour (what a head of this hair scatters back), occluded
   vec3 base = hairBaseColor(sigma);
@@ -159,15 +166,15 @@ varying float vDistance; // from the camera (the order-independent pass's weight
 void main() {
   vec4 world = modelMatrix * vec4(position, 1.0);
   vec3 T = normalize(mat3(modelMatrix) * tangent);
-  vColor = shadeStrand(T, world.xyz, along, strandRandom, lighting);
-  vAlong = along;
+  vAlong = vec2(along.x, tipDistanceOf(along.y));
+  vColor = shadeStrand(T, world.xyz, vAlong, strandRandom, lighting);
   // a line is one pixel wide: its opacity is the strand's true coverage of that pixel (as the
   // strips' width / drawn width), tapering to the tip
   float dist = length(cameraPosition - world.xyz);
   vDistance = dist;
   float pixel = 2.0 * dist / (projectionMatrix[1][1] * max(viewportHeight, 1.0));
   if (projectionMatrix[3][3] > 0.5) pixel = 2.0 / (projectionMatrix[1][1] * max(viewportHeight, 1.0));
-  float width = strandWidth * mix(1.0, tipWidth, smoothstep(fadeStartOf(strandRandom), 1.0, along));
+  float width = strandWidth * mix(1.0, tipWidth, smoothstep(fadeStartOf(strandRandom), 1.0, along.x));
   vCoverage = min(1.0, width / pixel);
   vFadeStart = fadeStartOf(strandRandom);
   gl_Position = projectionMatrix * viewMatrix * world;
@@ -176,7 +183,7 @@ void main() {
 
 const linesFragmentShader = /* glsl */ `
 varying vec3 vColor;
-varying float vAlong;
+varying vec2 vAlong;
 varying float vCoverage;
 varying float vFadeStart;
 varying float vDistance;
@@ -186,7 +193,7 @@ ${OIT_FRAGMENT_GLSL}
 void main() {
   // coverage times the tip's fade, blended order-independently (HAIR_OIT: hairOit.ts) or
   // unsorted, without depth writes
-  float alpha = vCoverage * (1.0 - smoothstep(vFadeStart, 1.0, vAlong));
+  float alpha = vCoverage * (1.0 - smoothstep(vFadeStart, 1.0, vAlong.x));
   if (alpha < 0.004) discard;
 #ifdef HAIR_OIT
   oitWrite(vColor, alpha, vDistance);
@@ -228,13 +235,13 @@ void main() {
   vec3 side = cross(T, V);
   float sl = length(side);
   side = sl > 1e-4 ? side / sl : normalize(cross(T, abs(T.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0)));
-  float width = strandWidth * mix(1.0, tipWidth, smoothstep(fadeStartOf(strandRandom), 1.0, along));
+  float width = strandWidth * mix(1.0, tipWidth, smoothstep(fadeStartOf(strandRandom), 1.0, along.x));
   float drawn = max(width, pixel);
   float s = (gl_VertexID % 2 == 0) ? -0.5 : 0.5;
   world.xyz += side * (s * drawn);
   vWorldPosition = world.xyz;
   vTangent = T;
-  vAlong = along;
+  vAlong = vec2(along.x, tipDistanceOf(along.y)); // linear along a segment, as the distance is
   vRandom = strandRandom;
   vLight = lighting;
   vCoverage = width / drawn;
@@ -248,7 +255,7 @@ const stripsFragmentShader = /* glsl */ `
 ${shading}
 varying vec3 vTangent;
 varying vec3 vWorldPosition;
-varying float vAlong;
+varying vec2 vAlong;
 varying vec4 vRandom;
 varying vec2 vLight;
 varying float vCoverage;
@@ -257,7 +264,7 @@ ${OIT_FRAGMENT_GLSL}
 #endif
 
 void main() {
-  float alpha = vCoverage * (1.0 - smoothstep(fadeStartOf(vRandom), 1.0, vAlong));
+  float alpha = vCoverage * (1.0 - smoothstep(fadeStartOf(vRandom), 1.0, vAlong.x));
 #ifdef ALPHA_TO_COVERAGE
   if (alpha < 0.02) discard;
 #else
@@ -458,9 +465,10 @@ function setBounds(geometry: THREE.BufferGeometry, b: Float32Array): void {
 /** Build indexed LineSegments geometry for strands. Strand s owns points
  *  strandStart[s] .. strandStart[s + 1] − 1 of `points` (points[3 * point + axis]); each pair of
  *  consecutive points is a segment. The `position` attribute views `points` (not copied: do not
- *  change it afterwards). Added per point (strandAttributes.ts): `tangent`, `along`,
- *  `strandRandom` (a hash of the strand index and `colorSeed`) and `lighting` (from `lighting`,
- *  2 per point as protocol.ts HairLightingArrays.strand; 1, 1 without it), all normalised.
+ *  change it afterwards). Added per point (strandAttributes.ts): `tangent`, `along` (the place
+ *  along the strand and the distance from its tip), `strandRandom` (a hash of the strand index
+ *  and `colorSeed`) and `lighting` (from `lighting`, 2 per point as protocol.ts
+ *  HairLightingArrays.strand; 1, 1 without it), all normalised.
  *  `prebuilt`: those attributes and the index as lineAttributes made them for these strands
  *  (by the worker), used as they are. Level of detail: any prefix of the index's groups is an
  *  even sample of the whole head of hair; `userData.lodCounts[g]` is the index count of the first
@@ -490,7 +498,7 @@ function setPointAttributes(
   attrs: Pick<PointAttributes, 'tangent' | 'along' | 'random' | 'light'>,
 ): void {
   geometry.setAttribute('tangent', new THREE.BufferAttribute(attrs.tangent, 3, true));
-  geometry.setAttribute('along', new THREE.BufferAttribute(attrs.along, 1, true));
+  geometry.setAttribute('along', new THREE.BufferAttribute(attrs.along, 2, true));
   geometry.setAttribute('strandRandom', new THREE.BufferAttribute(attrs.random, 4, true));
   geometry.setAttribute('lighting', new THREE.BufferAttribute(attrs.light, 2, true));
 }
@@ -529,7 +537,7 @@ export function buildStrandStripGeometry(
   );
   setPointAttributes(geometry, {
     tangent: twice(attrs.tangent, 3),
-    along: twice(attrs.along, 1),
+    along: twice(attrs.along, 2),
     random: twice(attrs.random, 4),
     light: twice(attrs.light, 2),
   });
