@@ -163,6 +163,11 @@ describe('createStrandMaterial', () => {
     expect(m.uniforms.lookShares.value.x).toBeCloseTo(0.3, 6);
     expect(m.uniforms.lookShares.value.y).toBeCloseTo(0.5, 6);
     expect(m.uniforms.tipSigma.value.x).toBeLessThan(m.uniforms.rootSigma.value.x);
+    // lighter tips over 8 cm: the length as it is, no older fraction
+    setHairLook(m, { ...DEFAULT_HAIR_LOOK, tipLength: 0.8, tipMelanin: 0.1 }, '#000000');
+    expect(m.uniforms.tipLength.value).toBeCloseTo(0.8, 6);
+    expect(m.uniforms.lookShares.value.y).toBe(1);
+    expect(m.uniforms.tipSigma.value.x).toBeLessThan(m.uniforms.rootSigma.value.x);
     setLightDirection(m, 3, 0, 4);
     expect(m.uniforms.keyDirection.value.x).toBeCloseTo(0.6, 6);
     expect(m.vertexShader).toContain('attribute vec3 tangent');

@@ -6,8 +6,10 @@
 // ambient occlusion, from the solver worker: lighting/hairLighting.ts) or, in High, the deep
 // opacity maps; a fill light from behind and a sky ambient on the base colour, both scaled by
 // the occlusion; root darkening on top. Colour: absorption σa (model/hairLook.ts: melanin,
-// redness, dye, grey strands, ombré towards the tips, or a direct colour's absorption), spread
-// per strand (four seeded random bytes: melanin, hue, where the tip starts to fade, roughness).
+// redness, dye, grey strands, lighter tips fading in over a length from each strand's tip (the
+// `along` attribute's second byte: the distance from the tip), or a direct colour's absorption),
+// spread per strand (four seeded random bytes: melanin, hue, where the tip starts to fade,
+// roughness).
 // Thin strands: each drawn strand stands for several of a head's hairs (representedWidth), and
 // is drawn at least a pixel wide with the rest of its width as coverage in alpha, tapering to
 // the tip, the tips fading out, blended order-independently without depth writes (hairOit.ts;
@@ -65,9 +67,12 @@ float fadeStartOf(vec4 rnd) {
  *  the strips' fragment shader. */
 const shading = /* glsl */ `
 uniform vec3 rootSigma; // absorption at the root (melanin.ts; from the colour for a direct colour)
-uniform vec3 tipSigma; // absorption at the tips (the ombré's end)
+uniform vec3 tipSigma; // absorption at the tips (the lighter tips' colour)
 uniform vec3 greySigma; // absorption of a grey (unpigmented) strand
-uniform vec4 lookShares; // grey share, ombré start along the strand (>= 1: none), melanin and roughness variation
+// grey share, an older session's tip start along the strand (>= 1: none; else tipLength), melanin
+// and roughness variation
+uniform vec4 lookShares;
+uniform float tipLength; // the lighter tips' length from the tip, world units (0: none)
 uniform float roughness; // longitudinal roughness β of the hair BSDF
 uniform float bsdfGain; // the key light's radiance per unit of the BSDF
 uniform vec3 keyDirection; // world space, towards the light (fixed: not the camera's)
@@ -112,12 +117,19 @@ float deepOpacityTransmittance(vec3 world) {
 #endif
 
 
+// The tip colour's share (hairLook.ts tipShare): fading in over tipLength from the strand's tip
+// (tipDistance, world units), or an older session's fraction of the strand (along: 0 root … 1
+// tip).
+float tipShare(float along, float tipDistance) {
+  if (lookShares.y < 0.999) return smoothstep(lookShares.y, 1.0, along);
+  return tipLength > 0.0 ? 1.0 - smoothstep(0.0, tipLength, tipDistance) : 0.0;
+}
+
 // The strand's absorption at \`along\` (x: 0 root … 1 tip; y: distance from the tip, world
-// units; rnd: its seeded random values): root → tip ombré, grey strands, a seeded spread of
+// units; rnd: its seeded random values): root → lighter tips, grey strands, a seeded spread of
 // melanin and a little of the red/blue balance.
 vec3 strandSigma(vec4 rnd, vec2 along) {
-  float ombre = lookShares.y < 0.999 ? smoothstep(lookShares.y, 1.0, along.x) : 0.0;
-  vec3 s = mix(rootSigma, tipSigma, ombre);
+  vec3 s = mix(rootSigma, tipSigma, tipShare(along.x, along.y));
   float pick = fract(dot(rnd, vec4(0.7548777, 0.5698403, 0.3308946, 0.1234567)) * 97.31);
   if (pick < lookShares.x) s = greySigma;
   float hue = hueVariation * (2.0 * rnd.y - 1.0);
@@ -305,6 +317,7 @@ export interface StrandUniforms {
   tipSigma: THREE.IUniform<THREE.Vector3>;
   greySigma: THREE.IUniform<THREE.Vector3>;
   lookShares: THREE.IUniform<THREE.Vector4>;
+  tipLength: THREE.IUniform<number>;
   roughness: THREE.IUniform<number>;
   bsdfGain: THREE.IUniform<number>;
   keyDirection: THREE.IUniform<THREE.Vector3>;
@@ -367,6 +380,7 @@ export function createStrandMaterial(options: StrandMaterialOptions = {}): Stran
     tipSigma: { value: new THREE.Vector3() },
     greySigma: { value: new THREE.Vector3() },
     lookShares: { value: new THREE.Vector4() },
+    tipLength: { value: 0 },
     roughness: { value: 0.3 },
     bsdfGain: { value: BSDF_GAIN },
     keyDirection: { value: new THREE.Vector3(...light).normalize() },
@@ -431,6 +445,7 @@ export function setHairLook(
   u.tipSigma.value.set(...v.tipSigma);
   u.greySigma.value.set(...v.greySigma);
   u.lookShares.value.set(...v.shares);
+  u.tipLength.value = v.tipLength;
   u.roughness.value = v.roughness;
 }
 
