@@ -119,9 +119,13 @@ function tipLengthRow(
   input.setAttribute('aria-label', label);
   const r = row(label, input);
   if (older === undefined) return r;
-  const note = document.createElement('p');
+  // short, as the panel's other notes are (the panel is as wide as its widest line); the whole
+  // story in the tooltip
   const share = Math.round((1 - older) * 100);
-  note.textContent = `Saved as the last ${share} % of each strand (before lengths in cm); a length set here replaces it.`;
+  const note = document.createElement('p');
+  note.textContent = `Saved as the last ${share} % of each strand`;
+  note.title = `Saved before tips were a length: the last ${share} % of each strand, which is ${Math.round(cm)} cm of the longest hair. A length set here replaces it.`;
+  input.title = note.title;
   const both = document.createElement('div');
   both.append(r, note);
   return both;
