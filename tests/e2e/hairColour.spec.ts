@@ -1,5 +1,7 @@
 // The Hair panel's colour model end to end: Grey (%), Redness and Melanin change the drawn hair
-// the way their names say (greyer, redder, lighter), Undo restores it, and the link keeps it.
+// the way their names say (greyer, redder, lighter), Undo restores it, and the link keeps it;
+// Tips lighten the hair over a length typed in cm, and a session saved with the older fraction
+// of the strand shows it as a length until one is typed.
 // Real pointer events for clicks; waits on the test API's idle(), never on fixed sleeps.
 import { expect, type Page, test } from '@playwright/test';
 import { settled, watchConsole } from './helpers';
@@ -83,5 +85,81 @@ test('Melanin, Redness and Grey change the hair as named; Undo restores; the lin
   await settled(other);
   const again = (await other.evaluate(() => window.hairsketch.session())) as typeof look;
   expect(again.hairLook).toEqual(look.hairLook);
+  expect(errors).toEqual([]);
+});
+
+test('Tips: lighter tips over a length typed in cm; an older fraction shows as a length until one is set', async ({
+  page,
+}) => {
+  const errors = watchConsole(page);
+  await page.goto('/?strands=12000');
+  await settled(page);
+  await page.getByRole('button', { name: 'Detail' }).click();
+  const panel = page.getByRole('region', { name: 'Hair detail' });
+  const status = page.getByTestId('status');
+  const hairLook = async () =>
+    (
+      (await page.evaluate(() => window.hairsketch.session())) as {
+        hairLook: Record<string, unknown>;
+      }
+    ).hairLook;
+
+  // Tips on: the tip colour over the last 8 cm of every strand, here a light blonde
+  await panel.getByRole('checkbox', { name: 'Tips', exact: true }).click();
+  const length = panel.getByRole('spinbutton', { name: 'Lighter tips over (cm)' });
+  await expect(length).toHaveValue('8');
+  await setNumber(page, 'Tip melanin', 0.05);
+  const over8 = await hairColour(page);
+
+  // typed with a fraction: whole centimetres, and the status line says so
+  await length.click();
+  await length.fill('99.6');
+  await length.press('Enter');
+  await expect(status).toContainText(
+    'Lighter tips over: 99.6 cm is not a whole number; set to 100 cm.',
+  );
+  await expect(status).toHaveAttribute('data-state', 'ready');
+  // the default's strands are at most 32 cm long: over 100 cm the blonde reaches their roots
+  await expect.poll(async () => luma(await hairColour(page))).toBeGreaterThan(1.3 * luma(over8));
+  const over100 = await hairColour(page);
+  console.log(
+    `temple luma with lighter tips over 8 cm ${luma(over8).toFixed(1)}, over 100 cm ${luma(over100).toFixed(1)}`,
+  );
+  const look = await hairLook();
+  expect(look).toMatchObject({ tipLength: 10, tipMelanin: 0.05 });
+  expect(look).not.toHaveProperty('tipStart');
+
+  await page.getByRole('button', { name: 'Undo' }).click();
+  await expect(length).toHaveValue('8');
+  await expect
+    .poll(async () => Math.max(...(await hairColour(page)).map((v, c) => Math.abs(v - over8[c]))))
+    .toBeLessThan(3);
+
+  // a session saved before lengths in cm: tips from half way along each strand, shown as the
+  // length that gives the longest hair (half of Max length, 32 cm), until a length is typed
+  await page.evaluate(() => {
+    const s = window.hairsketch.session() as { hairLook: Record<string, unknown> };
+    const { tipLength: _, ...older } = s.hairLook;
+    window.hairsketch.replaceSession({ ...s, hairLook: { ...older, tipStart: 0.5 } });
+  });
+  await expect(panel).toContainText('Saved as the last 50 % of each strand');
+  await expect(length).toHaveValue('16');
+  expect(await hairLook()).toMatchObject({ tipStart: 0.5, tipLength: 0 });
+  await setNumber(page, 'Lighter tips over (cm)', 12);
+  await expect(panel).not.toContainText('Saved as the last');
+  const replaced = await hairLook();
+  expect(replaced).toMatchObject({ tipLength: 1.2 });
+  expect(replaced).not.toHaveProperty('tipStart');
+
+  // the link keeps the length
+  await page.getByRole('button', { name: 'Share link' }).click();
+  await expect(status).toContainText('Link');
+  const other = await page.context().newPage();
+  await other.goto(await page.evaluate(() => window.location.href));
+  await settled(other);
+  const again = (await other.evaluate(() => window.hairsketch.session())) as {
+    hairLook: Record<string, unknown>;
+  };
+  expect(again.hairLook).toEqual(replaced);
   expect(errors).toEqual([]);
 });

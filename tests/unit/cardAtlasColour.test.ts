@@ -36,7 +36,8 @@ describe('cards atlas colour', () => {
       const session = presetSession(preset, head);
       const look = session.hairLook;
       if (!look) throw new Error('preset without a hairLook');
-      expect(look.tipStart).toBe(1); // no ombré: one colour from root to tip
+      expect(look.tipLength).toBe(0); // no lighter tips: one colour from root to tip
+      expect(look.tipStart).toBeUndefined();
       const want = hairColorFromMelanin(look.melanin, look.redness);
       const exported = strandsForExport(hangingStrands(600, 16), session);
       const { atlas } = makeHairCards(exported, 100, session.growth.seed);

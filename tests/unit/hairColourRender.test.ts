@@ -1,7 +1,7 @@
 // The hair's colour as drawn (tests/support/hairColourMetrics.ts): Grey 100 % reads silver-white,
-// not champagne, and the same look reads as the same hue and brightness in Fast and High. Drawn
-// by `hairsketch render`'s renderer (the built app's embed in Chromium); the hair's pixels are
-// those that differ from the same view without hair.
+// not champagne, and the same look (lighter tips too) reads as the same hue and brightness in
+// Fast and High. Drawn by `hairsketch render`'s renderer (the built app's embed in Chromium); the
+// hair's pixels are those that differ from the same view without hair.
 import { existsSync } from 'node:fs';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { presetSession } from '../../web/cli/presetSession';
@@ -63,5 +63,26 @@ describe.runIf(DIST_BUILT)('hair colour as drawn', () => {
     expect(fast.pixels).toBeGreaterThan(2000);
     expect(hueDistance(fast.hue, high.hue)).toBeLessThan(10);
     expect(Math.abs(fast.luma / high.luma - 1)).toBeLessThan(0.15);
+  });
+
+  it('lighter tips over 25 cm lighten the hair alike in Fast and High', async () => {
+    // the bob's strands are 10 to 25 cm long: from near-black at 25 cm from the tip to light blonde
+    // at it, the hair seen from the back is lighter (+35 % luma here: the white highlights do not
+    // change), by as much in both shaders (the gain, luma with tips ÷ luma without − 1, within a
+    // fifth: High drawing no tips would give 0)
+    const plain = { melanin: 0.6, tipMelanin: 0.6 };
+    const tips = { melanin: 0.6, tipMelanin: 0.08, tipLength: 2.5 };
+    const gains = [];
+    for (const quality of ['fast', 'high'] as const) {
+      const without = hairColour(await picture(plain, quality), await bald(quality));
+      const lighter = hairColour(await picture(tips, quality), await bald(quality));
+      expect(without.pixels).toBeGreaterThan(2000);
+      gains.push(lighter.luma / without.luma - 1);
+    }
+    console.log(
+      `lighter tips over 25 cm: hair luma +${(100 * gains[0]).toFixed(0)} % in Fast, +${(100 * gains[1]).toFixed(0)} % in High`,
+    );
+    expect(gains[0]).toBeGreaterThan(0.25);
+    expect(Math.abs(gains[1] / gains[0] - 1)).toBeLessThan(0.2);
   });
 });

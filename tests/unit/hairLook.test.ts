@@ -1,6 +1,7 @@
 // The colour model on the exported strands' colours (strandsForExport with a session's
-// hairLook): grey share, ombré, the seeded spread; each colour checked against the melanin
-// mapping of melanin.ts taken directly (Unreal's GetHairColorFromMelanin of the pigment).
+// hairLook): grey share, lighter tips (by length from the tip, and an older session's fraction),
+// the seeded spread; each colour checked against the melanin mapping of melanin.ts taken directly
+// (Unreal's GetHairColorFromMelanin of the pigment) at hand-computed melanin.
 import { describe, expect, it } from 'vitest';
 import { strandsForExport } from '../../web/export/strandsForExport';
 import { DEFAULT_GROWTH } from '../../web/model/growthParams';
@@ -12,17 +13,24 @@ import {
 } from '../../web/model/hairLook';
 import { hairColorFromMelanin } from '../../web/model/melanin';
 import { quantizeHairLook, readHairLook } from '../../web/model/readHairLook';
+import { parseSession } from '../../web/model/sessionFile';
+import { decodeSessionLink, encodeSessionLink } from '../../web/model/sessionLink';
 
-/** `n` straight strands of 11 points each. */
-function strands(n: number) {
-  const points = new Float32Array(3 * 11 * n);
-  const strandStart = new Uint32Array(n + 1);
-  for (let s = 0; s < n; s++) {
-    for (let i = 0; i < 11; i++) points.set([s * 0.01, -i * 0.1, 0], 3 * (11 * s + i));
-    strandStart[s + 1] = 11 * (s + 1);
-  }
+/** Straight strands hanging down, points 0.1 apart (1 cm), `counts[s]` points in strand s. */
+function hanging(counts: readonly number[]) {
+  const total = counts.reduce((a, b) => a + b, 0);
+  const points = new Float32Array(3 * total);
+  const strandStart = new Uint32Array(counts.length + 1);
+  counts.forEach((n, s) => {
+    const a = strandStart[s];
+    for (let i = 0; i < n; i++) points.set([s * 0.01, -i * 0.1, 0], 3 * (a + i));
+    strandStart[s + 1] = a + n;
+  });
   return { points, strandStart };
 }
+
+/** `n` straight strands of 11 points each. */
+const strands = (n: number) => hanging(new Array(n).fill(11));
 
 const exportWith = (look: HairLook, n = 2000, seed = DEFAULT_GROWTH.seed) =>
   strandsForExport(strands(n), {
@@ -52,7 +60,7 @@ describe('colour model on the strands', () => {
     expect(out.pigment?.melanin[0]).toBeDefined();
   });
 
-  it('the ombré keeps the root colour before its start and reaches the tip melanin at the tip', () => {
+  it('an older fraction keeps the root colour before its start and reaches the tip melanin at the tip', () => {
     const look = { ...DEFAULT_HAIR_LOOK, variation: 0, tipMelanin: 0.1, tipStart: 0.5 };
     const out = exportWith(look, 10);
     const root = hairColorFromMelanin(look.melanin, look.redness);
@@ -68,6 +76,130 @@ describe('colour model on the strands', () => {
       expect(out.pigment?.melanin[a]).toBeCloseTo(0.4, 6);
       expect(out.pigment?.melanin[a + 10]).toBeCloseTo(0.1, 6);
     }
+  });
+
+  it('lighter tips over 8 cm: strands of 10 and 30 cm have the same colour at the same distance from the tip', () => {
+    const look = { ...DEFAULT_HAIR_LOOK, variation: 0, tipMelanin: 0.1, tipLength: 0.8 };
+    // 11 and 31 points 1 cm apart: 10 and 30 cm long
+    const out = strandsForExport(hanging([11, 31]), {
+      hairColor: '#5a3825',
+      hairLook: look,
+      growth: DEFAULT_GROWTH,
+    });
+    const pc = out.pointColors as Float32Array;
+    const mel = out.pigment?.melanin as Float32Array;
+    // by hand: at d cm from the tip the tip's share is t = 1 − s(d / 8), s(x) = x²(3 − 2x); the
+    // melanin amounts −ln(1 − m) blend linearly, so m = 1 − 0.6^(1 − t) 0.9^t (0.4 root, 0.1 tip)
+    const byHand: [number, number][] = [
+      [0, 0.1], // t = 1
+      [1, 0.1155443], // x = 1/8: t = 1 − 11/256 = 0.95703125
+      [2, 0.1552499], // x = 1/4: t = 1 − 5/32 = 0.84375
+      [4, 0.2651531], // x = 1/2: t = 1/2, m = 1 − √0.54
+      [6, 0.3607577], // x = 3/4: t = 1 − 27/32 = 0.15625
+      [8, 0.4], // t = 0 from here up: the root colour
+      [9, 0.4],
+    ];
+    const rows: string[] = [];
+    for (const [cm, m] of byHand) {
+      const want = hairColorFromMelanin(m, look.redness);
+      for (const s of [0, 1]) {
+        const p = out.strandStart[s + 1] - 1 - cm; // cm points (1 cm each) up from the tip
+        expect(mel[p], `strand ${s}, ${cm} cm from the tip`).toBeCloseTo(m, 6);
+        expect(near(pc, 3 * p, want), `strand ${s}, ${cm} cm from the tip`).toBe(true);
+      }
+      rows.push(`${cm} cm: melanin ${mel[out.strandStart[1] - 1 - cm].toFixed(4)}`);
+    }
+    console.log(`lighter tips over 8 cm, 10 and 30 cm strands alike: ${rows.join(', ')}`);
+    // the short strand's root (10 cm from its tip) and the long one's are the root colour
+    expect(mel[out.strandStart[0]]).toBeCloseTo(0.4, 6);
+    expect(mel[out.strandStart[1]]).toBeCloseTo(0.4, 6);
+
+    // by arc length, not by point: points unevenly spaced, 20, 12, 9, 8, 6, 4, 2, 1, 0 cm from
+    // the tip, have the same colours at the same distances
+    const fromTip = [20, 12, 9, 8, 6, 4, 2, 1, 0];
+    const uneven = strandsForExport(
+      {
+        points: new Float32Array(fromTip.flatMap((cm) => [0, -2 + cm / 10, 0])),
+        strandStart: new Uint32Array([0, fromTip.length]),
+      },
+      { hairColor: '#5a3825', hairLook: look, growth: DEFAULT_GROWTH },
+    );
+    const melUneven = uneven.pigment?.melanin as Float32Array;
+    const want = new Map(byHand);
+    for (const [i, cm] of fromTip.entries())
+      expect(melUneven[i], `${cm} cm from the tip`).toBeCloseTo(want.get(cm) ?? 0.4, 6);
+  });
+
+  it('an older session with tipStart keeps its colours: a fraction of each strand, not a length', () => {
+    // saved before lengths in cm: the long preset's look as it was (tips from 55 % of the strand)
+    const old = {
+      version: 4,
+      curves: [],
+      hairColor: '#5a3825',
+      hairLook: {
+        melanin: 0.35,
+        redness: 0.35,
+        dye: null,
+        grey: 0,
+        tipMelanin: 0.12,
+        tipDye: null,
+        tipStart: 0.55,
+        variation: 0,
+        roughness: 0.3,
+      },
+    };
+    const read = parseSession(JSON.parse(JSON.stringify(old)));
+    if (!read.ok) throw new Error(read.error);
+    const look = read.value.hairLook as HairLook;
+    expect(look.tipStart).toBe(0.55);
+    expect(look.tipLength).toBe(0);
+    const out = strandsForExport(hanging([11, 31]), {
+      hairColor: '#5a3825',
+      hairLook: look,
+      growth: DEFAULT_GROWTH,
+    });
+    const mel = out.pigment?.melanin as Float32Array;
+    // by hand, as before: t = s((along − 0.55) / 0.45) at along = i / (n − 1), so along 0.6, 0.7,
+    // 0.8, 0.9 give x = 1/9, 1/3, 5/9, 7/9 and t = 25/729, 7/27, 425/729, 637/729; melanin
+    // 1 − 0.65^(1 − t) 0.88^t
+    const byHand: [number, number][] = [
+      [0.5, 0.35],
+      [0.6, 0.3432118],
+      [0.7, 0.296889],
+      [0.8, 0.2244371],
+      [0.9, 0.1530094],
+      [1, 0.12],
+    ];
+    for (const [along, m] of byHand)
+      for (const s of [0, 1]) {
+        const n = out.strandStart[s + 1] - out.strandStart[s];
+        const p = out.strandStart[s] + Math.round(along * (n - 1));
+        expect(mel[p], `strand ${s} at ${along}`).toBeCloseTo(m, 6);
+      }
+    // so the two strands differ at the same distance from the tip (3 cm: 0.7 of the short one)
+    const at3cm = [0, 1].map((s) => mel[out.strandStart[s + 1] - 1 - 3]);
+    console.log(
+      `older tipStart 0.55: 3 cm from the tip melanin ${at3cm.map((v) => v.toFixed(4)).join(' (10 cm strand), ')} (30 cm strand)`,
+    );
+    expect(at3cm[0]).toBeCloseTo(0.296889, 6); // along 0.7
+    expect(at3cm[1]).toBeCloseTo(0.1530094, 6); // along 0.9
+  });
+
+  it('resampled strands (over 255 points) take the distance from the tip by arc length', () => {
+    // 601 points 1 cm apart (6 m) are exported as 255 evenly by arc length: point k of 254 is
+    // 600 (1 − k / 254) cm from the tip; 8 cm from the tip is not a kept point, 600 · 3/254 cm
+    // (7.087 cm) is: x = 0.8858, t = 1 − x²(3 − 2x) = 0.03613, m = 1 − 0.6^(1 − t) 0.9^t
+    const look = { ...DEFAULT_HAIR_LOOK, variation: 0, tipMelanin: 0.1, tipLength: 0.8 };
+    const out = strandsForExport(hanging([601]), {
+      hairColor: '#5a3825',
+      hairLook: look,
+      growth: DEFAULT_GROWTH,
+    });
+    const mel = out.pigment?.melanin as Float32Array;
+    expect(out.strandStart[1]).toBe(255);
+    expect(mel[254]).toBeCloseTo(0.1, 6);
+    expect(mel[251]).toBeCloseTo(0.3911456, 6);
+    expect(mel[250]).toBeCloseTo(0.4, 6);
   });
 
   it('the spread is seeded: the same seed gives the same colours, another seed others', () => {
@@ -107,9 +239,48 @@ describe('session.hairLook in files and links', () => {
   });
 
   it('keeps numbers on their grid, and a look already on it as it is', () => {
-    const q = quantizeHairLook({ ...DEFAULT_HAIR_LOOK, melanin: 0.12345, grey: 33.333 });
+    const q = quantizeHairLook({
+      ...DEFAULT_HAIR_LOOK,
+      melanin: 0.12345,
+      grey: 33.333,
+      tipLength: 0.81234,
+    });
     expect(q.melanin).toBe(0.123);
     expect(q.grey).toBe(33.3);
+    expect(q.tipLength).toBe(0.812);
+    expect(q.tipStart).toBeUndefined();
     expect(quantizeHairLook(q)).toBe(q);
+    // an older fraction on its grid; one that rounds to 1 (no tips) is dropped
+    expect(quantizeHairLook({ ...DEFAULT_HAIR_LOOK, tipStart: 0.55 }).tipStart).toBe(0.55);
+    expect('tipStart' in quantizeHairLook({ ...DEFAULT_HAIR_LOOK, tipStart: 0.9996 })).toBe(false);
+  });
+
+  it('reads an older tipStart as it was (1: none), and never with tipLength', () => {
+    const older = readHairLook({ tipStart: 0.55, tipMelanin: 0.12 }, 's.hairLook').hairLook;
+    expect(older).toEqual({ ...DEFAULT_HAIR_LOOK, tipMelanin: 0.12, tipStart: 0.55 });
+    // every session saved before wrote tipStart 1 for no tips: it reads as a new look's none
+    expect(readHairLook({ tipStart: 1 }, 's.hairLook').hairLook).toEqual(DEFAULT_HAIR_LOOK);
+    expect(readHairLook({ tipLength: 0.8 }, 's.hairLook').hairLook?.tipLength).toBe(0.8);
+    expect(readHairLook({ tipStart: 1, tipLength: 0.8 }, 's.hairLook').hairLook).toEqual({
+      ...DEFAULT_HAIR_LOOK,
+      tipLength: 0.8,
+    });
+    expect(() => readHairLook({ tipStart: 0.5, tipLength: 0.8 }, 's.hairLook')).toThrow(
+      /hairLook\.tipStart: cannot be set with tipLength/,
+    );
+    expect(() => readHairLook({ tipLength: 11 }, 's.hairLook')).toThrow(/tipLength/);
+  });
+
+  it('a link keeps lighter tips in cm, and an older fraction', async () => {
+    const base = parseSession({ version: 4, curves: [] });
+    if (!base.ok) throw new Error(base.error);
+    for (const hairLook of [
+      { ...DEFAULT_HAIR_LOOK, tipMelanin: 0.12, tipLength: 0.8 },
+      { ...DEFAULT_HAIR_LOOK, tipMelanin: 0.12, tipStart: 0.55 },
+    ]) {
+      const back = await decodeSessionLink(await encodeSessionLink({ ...base.value, hairLook }));
+      if (!back.ok) throw new Error(back.error);
+      expect(back.value.hairLook).toEqual(hairLook);
+    }
   });
 });

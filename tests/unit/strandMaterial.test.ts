@@ -4,6 +4,7 @@
 import { describe, expect, it } from 'vitest';
 import { DEFAULT_HAIR_LOOK, hexToLinear } from '../../web/model/hairLook';
 import { colorAbsorption } from '../../web/model/melanin';
+import { decodeTipDistance } from '../../web/viewer/strandAttributes';
 import {
   buildStrandGeometry,
   buildStrandStripGeometry,
@@ -66,6 +67,25 @@ describe('buildStrandGeometry', () => {
     const other = buildStrandGeometry(points, strandStart, 4).getAttribute('strandRandom');
     expect(again.getX(0)).toBe(r.getX(0));
     expect(other.getX(0)).not.toBe(r.getX(0));
+  });
+
+  it("carries each point's distance from its strand's tip by arc length, finest near the tip", () => {
+    // strand 0: 2, 1, 0 units from its tip; strand 2: 2, 0. By hand, the byte is
+    // round(255 √(d / 10)): 255 √0.2 = 114.04 → 114, 255 √0.1 = 80.64 → 81; 0 at the tips
+    const along = g.getAttribute('along');
+    expect(along.itemSize).toBe(2);
+    const bytes = [0, 1, 2, 4, 5].map((v) => Math.round(along.getY(v) * 255));
+    expect(bytes).toEqual([114, 81, 0, 114, 0]);
+    // decoded as the shader does (10 (byte / 255)²): within half a step of the distance
+    expect(decodeTipDistance(114)).toBeCloseTo(1.9986, 4);
+    expect(decodeTipDistance(81)).toBeCloseTo(1.009, 3);
+    // the strips carry the same for both sides of each point
+    const strips = buildStrandStripGeometry(points, strandStart, 3).getAttribute('along');
+    for (const v of [0, 1, 2, 4, 5])
+      for (const side of [0, 1]) {
+        expect(strips.getX(2 * v + side)).toBe(along.getX(v));
+        expect(strips.getY(2 * v + side)).toBe(along.getY(v));
+      }
   });
 
   it('handles no strands', () => {
@@ -142,6 +162,11 @@ describe('createStrandMaterial', () => {
     setHairLook(m, { ...DEFAULT_HAIR_LOOK, grey: 30, tipStart: 0.5, tipMelanin: 0.1 }, '#000000');
     expect(m.uniforms.lookShares.value.x).toBeCloseTo(0.3, 6);
     expect(m.uniforms.lookShares.value.y).toBeCloseTo(0.5, 6);
+    expect(m.uniforms.tipSigma.value.x).toBeLessThan(m.uniforms.rootSigma.value.x);
+    // lighter tips over 8 cm: the length as it is, no older fraction
+    setHairLook(m, { ...DEFAULT_HAIR_LOOK, tipLength: 0.8, tipMelanin: 0.1 }, '#000000');
+    expect(m.uniforms.tipLength.value).toBeCloseTo(0.8, 6);
+    expect(m.uniforms.lookShares.value.y).toBe(1);
     expect(m.uniforms.tipSigma.value.x).toBeLessThan(m.uniforms.rootSigma.value.x);
     setLightDirection(m, 3, 0, 4);
     expect(m.uniforms.keyDirection.value.x).toBeCloseTo(0.6, 6);

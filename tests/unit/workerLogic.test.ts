@@ -605,14 +605,15 @@ describe('WorkerLogic over the real wasm engine', () => {
       if (!a) throw new Error('a final result without vertex attributes');
       const mine = lineAttributes(r.strands.points, r.strands.strandStart, 0, r.lighting?.strand);
       expect(a).toEqual(mine);
-      // checked by hand too: roots at along 0, tips at 255, tangents along the segments
+      // checked by hand too: roots at along 0, tips at 255 and 0 from the tip, tangents along the
+      // segments
       const { points: P, strandStart: S } = r.strands;
       let segments = 0;
       for (let k = 0; k + 1 < S.length; k++) {
         const [i0, i1] = [S[k], S[k + 1] - 1];
         if (i1 <= i0) continue;
         segments += i1 - i0;
-        expect([a.along[i0], a.along[i1]]).toEqual([0, 255]);
+        expect([a.along[2 * i0], a.along[2 * i1], a.along[2 * i1 + 1]]).toEqual([0, 255, 0]);
         const d = [0, 1, 2].map((c) => P[3 * (i0 + 1) + c] - P[3 * i0 + c]);
         const t = [0, 1, 2].map((c) => a.tangent[3 * i0 + c] / 127);
         const cos = (d[0] * t[0] + d[1] * t[1] + d[2] * t[2]) / Math.hypot(...d) / Math.hypot(...t);

@@ -4,7 +4,7 @@
 // TILE_STRANDS strands, each strand mapped into its own card's coordinates (across: 0 at the
 // card's lo edge .. 1 at its hi edge; along: its fraction of its length, root at the tile's top),
 // so one tile suits any card; card c uses tile c mod ATLAS_TILES. Three images, same layout:
-//   colour    RGBA, the strands' colour (sRGB, each point's with a colour model's ombré;
+//   colour    RGBA, the strands' colour (sRGB, each point's with a colour model's lighter tips;
 //             × 0.8 .. 1.2 in linear light from the deepest to the highest in the clump) and
 //             their coverage as alpha;
 //   root–tip  grey, 0 at the root .. 255 at the tip, of the strand nearest the viewer outside;
@@ -148,7 +148,7 @@ export function drawCardAtlas(
       }
       const rgb = [0, 1, 2].map((q) => colors[3 * s + q]);
       for (let i = 0; i + 1 < np; i++) {
-        // a colour model's ombré: each segment in its first point's colour
+        // a colour model's lighter tips: each segment in its first point's colour
         if (pointColors) for (let q = 0; q < 3; q++) rgb[q] = pointColors[3 * (a + i) + q];
         const t0 = i / (np - 1);
         const width =

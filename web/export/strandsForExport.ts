@@ -8,8 +8,8 @@
 // ±STRAND_VALUE_VARIATION in value (the sRGB channels scaled by one factor, clamped to 1), then
 // decoded with the sRGB transfer function. A session with a colour model (hairLook.ts) colours
 // each strand from it instead (its grey pick and melanin spread seeded by the growth seed and
-// the strand), and each point too (the ombré), with the pigment per strand and point for
-// Blender's Principled Hair BSDF (melanin, redness, tint).
+// the strand), and each point too (the lighter tips, by arc length from the tip), with the
+// pigment per strand and point for Blender's Principled Hair BSDF (melanin, redness, tint).
 
 import type { StrandArrays } from '../model/hairArrays';
 import { type HairLook, lookUniforms, strandLookColor, strandPigment } from '../model/hairLook';
@@ -30,12 +30,12 @@ export interface ExportStrands {
   widths: Float32Array; // widths[point]
   /** Linear RGB per strand (a colour model's: at the root). */
   colors: Float32Array; // colors[3 * strand + channel]
-  /** With a colour model: linear RGB per point (the ombré), else null. */
+  /** With a colour model: linear RGB per point (the lighter tips), else null. */
   pointColors: Float32Array | null; // pointColors[3 * point + channel]
   /** With a colour model: the pigment (Blender's Principled Hair, melanin parametrisation),
    *  else null. */
   pigment: {
-    melanin: Float32Array; // melanin[point] (0..1, the ombré along the strand)
+    melanin: Float32Array; // melanin[point] (0..1, with the lighter tips)
     redness: Float32Array; // redness[strand]
     tint: Float32Array; // tint[3 * strand + channel], linear RGB (1, 1, 1: no dye)
   } | null;
@@ -184,10 +184,13 @@ export function strandsForExport(
       const m = Math.min(n, cap);
       for (let k = 0; k < m; k++) {
         const along = m > 1 ? k / (m - 1) : 0;
-        const c = strandLookColor(values, u, along);
+        // the lighter tips by arc length from the tip: the kept points' own, or the evenly
+        // resampled points' (k of m − 1 equal steps of the whole length)
+        const tipDistance = n <= cap ? total - cum[k] : total * (1 - along);
+        const c = strandLookColor(values, u, along, tipDistance);
         pointColors.set(c, 3 * (po + k));
         if (k === 0) colors.set(c, 3 * so);
-        const p = strandPigment(look, u, along);
+        const p = strandPigment(look, u, along, tipDistance);
         pigment.melanin[po + k] = p.melanin;
         if (k === 0) {
           pigment.redness[so] = p.redness;

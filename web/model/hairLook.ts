@@ -1,8 +1,9 @@
 // The hair's colour model: pigment (melanin, redness), a dye, a share of grey (unpigmented)
-// strands, an ombré towards the tips, a seeded per-strand spread of melanin and roughness, and
-// the roughness itself. A session without one (older sessions, or a colour picked in the colour
-// box) shows its direct colour: the absorption whose base colour it is (melanin.ts), varied per
-// strand a little. Pure arithmetic: the strand shader (viewer/strandMaterial.ts) takes
+// strands, lighter tips (a balayage: the tip colour fades in over a length measured from each
+// strand's tip, so short and long strands of one style lighten over the same last centimetres), a
+// seeded per-strand spread of melanin and roughness, and the roughness itself. A session without
+// one (older sessions, or a colour picked in the colour box) shows its direct colour: the
+// absorption whose base colour it is (melanin.ts), varied per strand a little. Pure arithmetic: the strand shader (viewer/strandMaterial.ts) takes
 // lookUniforms(), the exports strandLookColor() (linear RGB).
 import { absorptionColor, colorAbsorption, melaninAbsorption, type Rgb } from './melanin';
 
@@ -15,12 +16,18 @@ export interface HairLook {
   dye: string | null;
   /** Share of strands without pigment, percent (0 … 100). */
   grey: number;
-  /** The tips' melanin (the ombré's end; the same redness). */
+  /** The tips' melanin (the lighter tips' colour; the same redness). */
   tipMelanin: number;
   /** The tips' dye, or null. */
   tipDye: string | null;
-  /** Where along the strand (0 root … 1 tip) the blend towards the tips starts; 1: no ombré. */
-  tipStart: number;
+  /** Lighter tips: the length from each strand's tip over which the tip colour fades in, world
+   *  units (a smoothstep: the tip colour at the tip, the root colour from this far up); 0: none. */
+  tipLength: number;
+  /** Sessions saved before tipLength: where along each strand (0 root … 1 tip) the blend
+   *  towards the tips started, a fraction of the strand (so short and long strands faded over
+   *  different lengths). Read and drawn as before; absent in new looks (1 reads as absent), and
+   *  never set together with tipLength: setting a length replaces it. */
+  tipStart?: number;
   /** Seeded per-strand spread of melanin (and half of it of roughness), 0 … 1. */
   variation: number;
   /** Longitudinal roughness β of the BSDF (radians-like, 0.1 … 0.8). */
@@ -35,7 +42,7 @@ export const DEFAULT_HAIR_LOOK: HairLook = {
   grey: 0,
   tipMelanin: 0.4,
   tipDye: null,
-  tipStart: 1,
+  tipLength: 0,
   variation: 0.2,
   roughness: 0.3,
 };
@@ -58,9 +65,33 @@ export interface LookUniformValues {
   rootSigma: Rgb;
   tipSigma: Rgb;
   greySigma: Rgb;
-  /** grey share (0 … 1), ombré start (≥ 1: none), melanin variation, roughness variation. */
+  /** grey share (0 … 1), an older session's tip start along the strand (≥ 1: none; see
+   *  HairLook.tipStart), melanin variation, roughness variation. */
   shares: [number, number, number, number];
+  /** Lighter tips' length from the tip, world units (0: none; HairLook.tipLength). */
+  tipLength: number;
   roughness: number;
+}
+
+/** Whether the look has lighter tips: a length, or an older session's fraction. */
+export function hasTips(look: HairLook): boolean {
+  return look.tipLength > 0 || (look.tipStart ?? 1) < 1;
+}
+
+/** The share of the tip colour (0 root colour … 1 tip colour) at a point `tipDistance` world
+ *  units from its strand's tip: 1 − smoothstep(0, tipLength, tipDistance). An older session's
+ *  fraction (tipStart < 1) instead blends by the point's place along the strand, `along`
+ *  (0 root … 1 tip): smoothstep(tipStart, 1, along), as it always did. The strand shader's
+ *  tipShare() is the same arithmetic. */
+export function tipShare(
+  tipStart: number,
+  tipLength: number,
+  along: number,
+  tipDistance: number,
+): number {
+  if (tipStart < 0.999) return smoothstep(tipStart, 1, along);
+  if (tipLength > 0) return 1 - smoothstep(0, tipLength, tipDistance);
+  return 0;
 }
 
 /** #rrggbb (sRGB) → linear RGB; null when it is not #rrggbb. */
@@ -89,40 +120,46 @@ export function lookUniforms(look: HairLook | null, hairColor: string): LookUnif
       tipSigma: s,
       greySigma: s,
       shares: [0, 1, DIRECT_VARIATION, 0.5 * DIRECT_VARIATION],
+      tipLength: 0,
       roughness: DIRECT_ROUGHNESS,
     };
   }
   const dye = dyeSigma(look.dye);
-  const tipDye = look.tipStart < 1 ? dyeSigma(look.tipDye) : dye;
+  const tips = hasTips(look);
+  const tipStart = look.tipStart ?? 1;
   const root = add(melaninAbsorption(look.melanin, look.redness), dye);
-  const tip =
-    look.tipStart < 1 ? add(melaninAbsorption(look.tipMelanin, look.redness), tipDye) : root;
+  const tip = tips
+    ? add(melaninAbsorption(look.tipMelanin, look.redness), dyeSigma(look.tipDye))
+    : root;
   return {
     rootSigma: root,
     tipSigma: tip,
     greySigma: add(melaninAbsorption(GREY_MELANIN, GREY_REDNESS), dye),
     shares: [
       Math.min(1, Math.max(0, look.grey / 100)),
-      look.tipStart,
+      tipStart,
       look.variation,
       0.5 * look.variation,
     ],
+    tipLength: look.tipLength,
     roughness: look.roughness,
   };
 }
 
-/** Linear RGB base colour of one strand at `along` (0 root … 1 tip): u = its seeded random
- *  values in [0, 1) (u[0] grey pick, u[1] melanin spread), as the shader does it. */
+/** Linear RGB base colour of one strand at a point `along` it (0 root … 1 tip, by point) and
+ *  `tipDistance` from its tip (world units, by arc length): u = its seeded random values in
+ *  [0, 1) (u[0] grey pick, u[1] melanin spread), as the shader does it. */
 export function strandLookColor(
   values: LookUniformValues,
   u: readonly [number, number],
   along: number,
+  tipDistance: number,
 ): Rgb {
   const [grey, tipStart, spread] = values.shares;
   let s: Rgb;
   if (u[0] < grey) s = values.greySigma;
   else {
-    const t = tipStart < 0.999 ? smoothstep(tipStart, 1, along) : 0;
+    const t = tipShare(tipStart, values.tipLength, along, tipDistance);
     s = [0, 1, 2].map(
       (c) => values.rootSigma[c] + (values.tipSigma[c] - values.rootSigma[c]) * t,
     ) as Rgb;
@@ -131,19 +168,21 @@ export function strandLookColor(
   return absorptionColor([s[0] * k, s[1] * k, s[2] * k]);
 }
 
-/** One strand's pigment at `along` as Blender's Principled Hair BSDF takes it (melanin
- *  parametrisation): melanin (its spread and the ombré applied to the amount −ln(1 − melanin)),
- *  redness, and the dye as tint (linear RGB; white: none). u as for strandLookColor. */
+/** One strand's pigment at a point (`along`, `tipDistance` as for strandLookColor) as Blender's
+ *  Principled Hair BSDF takes it (melanin parametrisation): melanin (its spread and the lighter
+ *  tips applied to the amount −ln(1 − melanin)), redness, and the dye as tint (linear RGB;
+ *  white: none). u as for strandLookColor. */
 export function strandPigment(
   look: HairLook,
   u: readonly [number, number],
   along: number,
+  tipDistance: number,
 ): { melanin: number; redness: number; tint: Rgb } {
   const dye = look.dye ? hexToLinear(look.dye) : null;
   const tint: Rgb = dye ?? [1, 1, 1];
   if (u[0] < look.grey / 100) return { melanin: GREY_MELANIN, redness: GREY_REDNESS, tint };
   const amount = (m: number) => -Math.log(Math.max(1 - Math.min(1, Math.max(0, m)), 1e-4));
-  const t = look.tipStart < 0.999 ? smoothstep(look.tipStart, 1, along) : 0;
+  const t = tipShare(look.tipStart ?? 1, look.tipLength, along, tipDistance);
   const m =
     (amount(look.melanin) + (amount(look.tipMelanin) - amount(look.melanin)) * t) *
     (1 + look.variation * (2 * u[1] - 1));

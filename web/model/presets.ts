@@ -540,7 +540,9 @@ const PAPER_FIGURES: readonly PresetName[] = ['fig6', 'fig7', 'fig8', 'fig1'];
 /** Natural colours (hairLook.ts) of the presets; the rest take DEFAULT_HAIR_LOOK (a mid brown). */
 const PRESET_LOOKS: Partial<Record<PresetName, Partial<HairLook>>> = {
   bob: { melanin: 0.7, redness: 0.1, tipMelanin: 0.7 },
-  long: { melanin: 0.35, redness: 0.35, tipMelanin: 0.12, tipStart: 0.55 },
+  // chestnut lightened over the last 20 cm (about what its fraction, 45 % of each strand, gave its
+  // longest hair before tips were a length)
+  long: { melanin: 0.35, redness: 0.35, tipMelanin: 0.12, tipLength: 2 },
   curly: { melanin: 0.3, redness: 0.65, tipMelanin: 0.3 },
   braid: { melanin: 0.15, redness: 0.25, tipMelanin: 0.15 },
   bun: { melanin: 0.55, redness: 0.15, tipMelanin: 0.55, grey: 35 },

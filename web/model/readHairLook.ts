@@ -1,7 +1,10 @@
 // session.hairLook (hairLook.ts) in files and links: the strict reader's part (known keys,
 // numbers within their ranges, dyes #rrggbb or null; a key left out takes the default) and the
 // grid its numbers are kept on. Absent: the session shows its direct colour (hairColor), as
-// every session made before the colour model does.
+// every session made before the colour model does. Lighter tips are a length from each strand's
+// tip (tipLength, world units); a session saved before it holds a fraction of the strand
+// (tipStart), read and kept as it was so the session keeps its look: 1 (its "no tips") reads as
+// absent, and the two are never set together.
 import { DEFAULT_HAIR_LOOK, type HairLook } from './hairLook';
 import { fail } from './readFailure';
 import { num, record } from './readValues';
@@ -17,13 +20,25 @@ export const HAIR_LOOK_NUMBERS: Readonly<
   redness: { min: 0, max: 1, quantum: 1e-3 },
   grey: { min: 0, max: 100, quantum: 0.1 },
   tipMelanin: { min: 0, max: 1, quantum: 1e-3 },
+  // up to the longest hair a session grows (SESSION_LIMITS: 10 units, 100 cm)
+  tipLength: { min: 0, max: 10, quantum: 1e-3 },
   tipStart: { min: 0, max: 1, quantum: 1e-3 },
   variation: { min: 0, max: 1, quantum: 1e-3 },
   roughness: { min: 0.05, max: 1, quantum: 1e-3 },
 };
 
 const NUMBER_KEYS = Object.keys(HAIR_LOOK_NUMBERS) as NumberKey[];
-const KEYS = Object.keys(DEFAULT_HAIR_LOOK) as (keyof HairLook)[];
+const KEYS: readonly (keyof HairLook)[] = [
+  ...(Object.keys(DEFAULT_HAIR_LOOK) as (keyof HairLook)[]),
+  'tipStart', // sessions saved before tipLength only
+];
+
+/** An older session's tipStart of 1 meant no tips: the look without it. */
+function withoutUnusedTipStart(look: HairLook): HairLook {
+  if (look.tipStart === undefined || look.tipStart < 1) return look;
+  const { tipStart: _, ...rest } = look;
+  return rest;
+}
 
 function dye(v: Plain | undefined, path: string): string | null {
   if (v === undefined || v === null) return null;
@@ -36,13 +51,19 @@ function dye(v: Plain | undefined, path: string): string | null {
 export function readHairLook(v: Plain | undefined, path: string): { hairLook?: HairLook } {
   if (v === undefined) return {};
   const o = record(v, path, KEYS);
-  const look = { ...DEFAULT_HAIR_LOOK };
+  const read: HairLook = { ...DEFAULT_HAIR_LOOK };
   for (const k of NUMBER_KEYS) {
     const { min, max } = HAIR_LOOK_NUMBERS[k];
-    if (o[k] !== undefined) look[k] = num(o[k], `${path}.${k}`, min, max);
+    if (o[k] !== undefined) read[k] = num(o[k], `${path}.${k}`, min, max);
   }
-  look.dye = dye(o.dye, `${path}.dye`);
-  look.tipDye = dye(o.tipDye, `${path}.tipDye`);
+  read.dye = dye(o.dye, `${path}.dye`);
+  read.tipDye = dye(o.tipDye, `${path}.tipDye`);
+  const look = withoutUnusedTipStart(read);
+  if (look.tipStart !== undefined && look.tipLength > 0)
+    fail(
+      `${path}.tipStart`,
+      'cannot be set with tipLength (a length from the tip replaces the older fraction)',
+    );
   return { hairLook: look };
 }
 
@@ -59,11 +80,13 @@ export function quantizeHairLook(look: HairLook): HairLook {
   let same = true;
   const out = { ...look };
   for (const k of NUMBER_KEYS) {
+    const given = look[k];
+    if (given === undefined) continue; // tipStart, absent in new looks
     const { min, max, quantum } = HAIR_LOOK_NUMBERS[k];
-    const v = Math.min(max, Math.max(min, Math.round(look[k] / quantum) * quantum));
+    const v = Math.min(max, Math.max(min, Math.round(given / quantum) * quantum));
     const q = Number(v.toFixed(6));
-    if (q !== look[k]) same = false;
+    if (q !== given) same = false;
     out[k] = q;
   }
-  return same ? look : out;
+  return same ? look : withoutUnusedTipStart(out);
 }

@@ -185,7 +185,9 @@ export function buildDetailPanel(root: HTMLElement, events: DetailPanelEvents): 
     const band = s.ties
       ? { colour: s.bandColor ?? DEFAULT_BAND_COLOR, set: events.setBandColor }
       : undefined;
-    panel.append(hairLookEditors(s.hairLook ?? null, events.setHairLook, events.say, band));
+    panel.append(
+      hairLookEditors(s.hairLook ?? null, events.setHairLook, events.say, band, s.growth.maxLength),
+    );
     // the whole head's detail is always here; a selected curve's own detail follows it
     panel.append(heading('Detail: whole head'));
     detailEditors(s.detail ?? {}, (d) => events.setDetail(null, d), '');

@@ -1,14 +1,16 @@
 // The Hair panel's colour editors (model/hairLook.ts): "Natural colour" on gives the colour
-// model — "Melanin", "Redness", "Grey (%)", "Dye" (off by default) with its colour, "Tips" (an
-// ombré: "Tip melanin", "Tips start (%)" along the strand, "Tip dye"), "Variation" and
-// "Roughness"; off, the hair shows the colour box's direct colour. "Band colour" (the ties'
-// bands, model/tieBands.ts) is there either way: a new session shows the direct colour and has
-// bands. Every change is one call of `set` or `band.set` (one undoable edit).
-import { DEFAULT_HAIR_LOOK, type HairLook } from '../model/hairLook';
+// model — "Melanin", "Redness", "Grey (%)", "Dye" (off by default) with its colour, "Tips"
+// (lighter tips, a balayage: "Tip melanin", "Lighter tips over (cm)" from each strand's tip, "Tip
+// dye"), "Variation" and "Roughness"; off, the hair shows the colour box's direct colour. A
+// session saved before lengths in cm keeps its fraction of the strand until a length is set.
+// "Band colour" (the ties' bands, model/tieBands.ts) is there either way: a new session shows the
+// direct colour and has bands. Every change is one call of `set` or `band.set` (one undoable edit).
+import { DEFAULT_HAIR_LOOK, type HairLook, hasTips } from '../model/hairLook';
 import { HAIR_LOOK_NUMBERS } from '../model/readHairLook';
 import { numberInput, type Say } from './numberInput';
 
-type NumberKey = keyof typeof HAIR_LOOK_NUMBERS;
+/** The numbers edited as they are (tipStart, an older session's, is only shown). */
+type NumberKey = Exclude<keyof typeof HAIR_LOOK_NUMBERS, 'tipStart'>;
 
 /** The number inputs: key, accessible name, shown × scale, step shown. */
 const NUMBERS: readonly { key: NumberKey; label: string; scale: number; step: number }[] = [
@@ -19,13 +21,19 @@ const NUMBERS: readonly { key: NumberKey; label: string; scale: number; step: nu
   { key: 'roughness', label: 'Roughness', scale: 1, step: 0.01 },
 ];
 
-const TIP_NUMBERS: readonly { key: NumberKey; label: string; scale: number; step: number }[] = [
-  { key: 'tipMelanin', label: 'Tip melanin', scale: 1, step: 0.01 },
-  { key: 'tipStart', label: 'Tips start (%)', scale: 100, step: 1 },
-];
+const TIP_MELANIN = { key: 'tipMelanin', label: 'Tip melanin', scale: 1, step: 0.01 } as const;
 
-/** Where the ombré starts when Tips is switched on. */
-const TIPS_START = 0.6;
+/** The lighter tips' length when Tips is switched on: 8 cm (world units). */
+const TIPS_LENGTH = 0.8;
+/** "Lighter tips over (cm)": whole centimetres (as a stylist says it), 1 … 100 (the longest
+ *  hair a session grows). */
+const TIP_LENGTH_CM = { min: 1, max: 100, step: 1 };
+
+/** The look without an older session's tip fraction (a length replaces it). */
+function withoutTipStart(look: HairLook): HairLook {
+  const { tipStart: _, ...rest } = look;
+  return rest;
+}
 
 /** The band colour shown and where a new one goes (the editor's setBandColor). */
 export interface BandColourEditor {
@@ -33,11 +41,14 @@ export interface BandColourEditor {
   set(colour: string): void;
 }
 
+/** `longest`: the session's Max length (world units), to show an older session's fraction of
+ *  the strand as the length it gives the longest hair. */
 export function hairLookEditors(
   look: HairLook | null,
   set: (look: HairLook | null) => void,
   say: Say,
   band?: BandColourEditor,
+  longest = 1,
 ): HTMLElement {
   const group = document.createElement('fieldset');
   const legend = document.createElement('legend');
@@ -67,22 +78,57 @@ export function hairLookEditors(
   };
   for (const n of NUMBERS.slice(0, 3)) group.append(numberRow(n));
   group.append(dyeRow('Dye', look.dye, (dye) => set({ ...look, dye })));
-  const tips = look.tipStart < 1;
+  const tips = hasTips(look);
   group.append(
     row(
       'Tips',
       checkbox('Tips', tips, (on) =>
-        set({ ...look, tipStart: on ? TIPS_START : 1, tipMelanin: look.tipMelanin }),
+        set({ ...withoutTipStart(look), tipLength: on ? TIPS_LENGTH : 0 }),
       ),
     ),
   );
   if (tips) {
-    for (const n of TIP_NUMBERS) group.append(numberRow(n));
+    group.append(numberRow(TIP_MELANIN));
+    group.append(tipLengthRow(look, longest, set, say));
     group.append(dyeRow('Tip dye', look.tipDye, (tipDye) => set({ ...look, tipDye })));
   }
   for (const n of NUMBERS.slice(3)) group.append(numberRow(n));
   if (band) group.append(bandRow(band));
   return group;
+}
+
+/** "Lighter tips over (cm)": the length from each strand's tip over which the tip colour fades
+ *  in. An older session's fraction of the strand shows as the length it gives the longest hair,
+ *  with a line saying so; a length set here replaces the fraction. */
+function tipLengthRow(
+  look: HairLook,
+  longest: number,
+  set: (look: HairLook | null) => void,
+  say: Say,
+): HTMLElement {
+  const label = 'Lighter tips over (cm)';
+  const older = look.tipStart;
+  const cm = older === undefined ? look.tipLength * 10 : (1 - older) * longest * 10;
+  const input = numberInput(
+    TIP_LENGTH_CM,
+    Math.min(TIP_LENGTH_CM.max, Math.max(TIP_LENGTH_CM.min, cm)),
+    { label: 'Lighter tips over', unit: 'cm', decimals: 0 },
+    (v) => set({ ...withoutTipStart(look), tipLength: v / 10 }),
+    say,
+  );
+  input.setAttribute('aria-label', label);
+  const r = row(label, input);
+  if (older === undefined) return r;
+  // short, as the panel's other notes are (the panel is as wide as its widest line); the whole
+  // story in the tooltip
+  const share = Math.round((1 - older) * 100);
+  const note = document.createElement('p');
+  note.textContent = `Saved as the last ${share} % of each strand`;
+  note.title = `Saved before tips were a length: the last ${share} % of each strand, which is ${Math.round(cm)} cm of the longest hair. A length set here replaces it.`;
+  input.title = note.title;
+  const both = document.createElement('div');
+  both.append(r, note);
+  return both;
 }
 
 /** "Band colour": a colour input, one edit when a colour is picked. */

@@ -2,7 +2,9 @@
 // for the final hair, the page for previews; strandMaterial.ts wraps them in a geometry).
 // Per point i of strand s (points strandStart[s] .. strandStart[s + 1] − 1):
 //   tangent[3i .. 3i+2]  unit tangent (central differences, one-sided at the ends), Int8 ÷ 127
-//   along[i]             0 at the root … 255 at the tip
+//   along[2i]            0 at the root … 255 at the tip (by point)
+//   along[2i + 1]        the distance from the strand's tip by arc length, encoded
+//                        (encodeTipDistance: finest near the tip), for the lighter tips
 //   random[4i .. 4i+3]   per strand: value, hue, length appearance, highlight noise (a hash of s
 //                        and the colour seed), Uint8 ÷ 255
 //   light[2i .. 2i+1]    transmittance, ambient occlusion (protocol.ts HairLightingArrays.strand),
@@ -18,6 +20,26 @@ const LOD_ORDER = Array.from({ length: LOD_GROUPS }, (_, g) => {
   for (let b = 1, x = g; b < LOD_GROUPS; b <<= 1, x >>= 1) r = (r << 1) | (x & 1);
   return r;
 });
+
+/** The farthest from a strand's tip `along`'s second byte tells apart, world units: 100 cm,
+ *  the longest hair a session grows (SESSION_LIMITS); farther reads as this far. */
+export const TIP_DISTANCE_RANGE = 10;
+
+const TIP_BYTE = 255 / Math.sqrt(TIP_DISTANCE_RANGE);
+
+/** The byte for a distance `d` from the tip (world units): 255 √(d / TIP_DISTANCE_RANGE), so its
+ *  steps are finest near the tip, where a short fade needs them: 0.8 mm at 1 cm from the tip,
+ *  2.5 mm at 10 cm, 5.5 mm at 50 cm (a point is off by at most half a step). One byte, in the
+ *  attribute `along` already has (no attribute more to fetch per vertex and frame). */
+export function encodeTipDistance(d: number): number {
+  return Math.floor(TIP_BYTE * Math.sqrt(Math.min(TIP_DISTANCE_RANGE, Math.max(0, d))) + 0.5);
+}
+
+/** The distance (world units) a byte of encodeTipDistance stands for; the strand shader decodes
+ *  the same way (strandMaterial.ts tipDistanceOf, from the byte ÷ 255). */
+export function decodeTipDistance(byte: number): number {
+  return TIP_DISTANCE_RANGE * (byte / 255) ** 2;
+}
 
 /** Per-point vertex attributes (protocol.ts StrandVertexArrays states the layouts). */
 export type PointAttributes = Omit<StrandVertexArrays, 'index' | 'lodCounts'>;
@@ -53,7 +75,7 @@ export function pointAttributes(
   // compact, normalised attributes: tangent as signed bytes (÷127), the rest as unsigned bytes
   // (÷255); the shader reads floats either way
   const tangent = new Int8Array(3 * pointCount);
-  const along = new Uint8Array(pointCount);
+  const along = new Uint8Array(2 * pointCount);
   const random = new Uint8Array(4 * pointCount);
   const light = new Uint8Array(2 * pointCount);
   const seedMix = Math.imul(colorSeed >>> 0, 0x9e3779b1);
@@ -70,8 +92,19 @@ export function pointAttributes(
     const r2 = (h >>> 8) & 255; // length appearance
     const r3 = h2 >>> 24; // highlight noise
     const inv = n > 1 ? 255 / (n - 1) : 0;
+    // the distance from the tip, summed from the tip back to the root: encodeTipDistance inlined
+    // (this runs on the page for every preview; a byte store truncates, so + 0.5 rounds)
+    let fromTip = 0;
+    along[2 * b - 1] = 0;
+    for (let i = b - 2; i >= a; i--) {
+      const dx = points[3 * i + 3] - points[3 * i];
+      const dy = points[3 * i + 4] - points[3 * i + 1];
+      const dz = points[3 * i + 5] - points[3 * i + 2];
+      fromTip += Math.sqrt(dx * dx + dy * dy + dz * dz);
+      along[2 * i + 1] = fromTip < TIP_DISTANCE_RANGE ? TIP_BYTE * Math.sqrt(fromTip) + 0.5 : 255;
+    }
     for (let i = a; i < b; i++) {
-      along[i] = Math.round((i - a) * inv);
+      along[2 * i] = Math.round((i - a) * inv);
       random[4 * i] = r0;
       random[4 * i + 1] = r1;
       random[4 * i + 2] = r2;

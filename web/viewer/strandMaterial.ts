@@ -6,8 +6,10 @@
 // ambient occlusion, from the solver worker: lighting/hairLighting.ts) or, in High, the deep
 // opacity maps; a fill light from behind and a sky ambient on the base colour, both scaled by
 // the occlusion; root darkening on top. Colour: absorption σa (model/hairLook.ts: melanin,
-// redness, dye, grey strands, ombré towards the tips, or a direct colour's absorption), spread
-// per strand (four seeded random bytes: melanin, hue, where the tip starts to fade, roughness).
+// redness, dye, grey strands, lighter tips fading in over a length from each strand's tip (the
+// `along` attribute's second byte: the distance from the tip), or a direct colour's absorption),
+// spread per strand (four seeded random bytes: melanin, hue, where the tip starts to fade,
+// roughness).
 // Thin strands: each drawn strand stands for several of a head's hairs (representedWidth), and
 // is drawn at least a pixel wide with the rest of its width as coverage in alpha, tapering to
 // the tip, the tips fading out, blended order-independently without depth writes (hairOit.ts;
@@ -28,21 +30,27 @@ import {
   lodIndex,
   type PointAttributes,
   pointAttributes,
+  TIP_DISTANCE_RANGE,
 } from './strandAttributes';
 
 export { LOD_GROUPS } from './strandAttributes';
 
 const commonVertex = /* glsl */ `
 attribute vec3 tangent;
-attribute float along;
+attribute vec2 along; // x: 0 root … 1 tip (by point); y: distance from the tip, encoded
 attribute vec4 strandRandom;
 attribute vec2 lighting;
 varying vec3 vTangent;
 varying vec3 vWorldPosition;
-varying float vAlong;
+varying vec2 vAlong; // x: along.x; y: the distance from the tip, world units
 varying vec4 vRandom;
 varying vec2 vLight;
 varying float vCoverage;
+// the distance from the tip, world units, of along.y (strandAttributes.ts decodeTipDistance: the
+// byte's steps are finest near the tip)
+float tipDistanceOf(float encoded) {
+  return ${TIP_DISTANCE_RANGE.toFixed(1)} * encoded * encoded;
+}
 `;
 
 /** Where a strand's tip starts to taper and fade (both shaders of either geometry). */
@@ -59,9 +67,12 @@ float fadeStartOf(vec4 rnd) {
  *  the strips' fragment shader. */
 const shading = /* glsl */ `
 uniform vec3 rootSigma; // absorption at the root (melanin.ts; from the colour for a direct colour)
-uniform vec3 tipSigma; // absorption at the tips (the ombré's end)
+uniform vec3 tipSigma; // absorption at the tips (the lighter tips' colour)
 uniform vec3 greySigma; // absorption of a grey (unpigmented) strand
-uniform vec4 lookShares; // grey share, ombré start along the strand (>= 1: none), melanin and roughness variation
+// grey share, an older session's tip start along the strand (>= 1: none; else tipLength), melanin
+// and roughness variation
+uniform vec4 lookShares;
+uniform float tipLength; // the lighter tips' length from the tip, world units (0: none)
 uniform float roughness; // longitudinal roughness β of the hair BSDF
 uniform float bsdfGain; // the key light's radiance per unit of the BSDF
 uniform vec3 keyDirection; // world space, towards the light (fixed: not the camera's)
@@ -106,19 +117,27 @@ float deepOpacityTransmittance(vec3 world) {
 #endif
 
 
-// The strand's absorption at \`along\` (rnd: its seeded random values): root → tip ombré, grey
-// strands, a seeded spread of melanin and a little of the red/blue balance.
-vec3 strandSigma(vec4 rnd, float along) {
-  float ombre = lookShares.y < 0.999 ? smoothstep(lookShares.y, 1.0, along) : 0.0;
-  vec3 s = mix(rootSigma, tipSigma, ombre);
+// The tip colour's share (hairLook.ts tipShare): fading in over tipLength from the strand's tip
+// (tipDistance, world units), or an older session's fraction of the strand (along: 0 root … 1
+// tip).
+float tipShare(float along, float tipDistance) {
+  if (lookShares.y < 0.999) return smoothstep(lookShares.y, 1.0, along);
+  return tipLength > 0.0 ? 1.0 - smoothstep(0.0, tipLength, tipDistance) : 0.0;
+}
+
+// The strand's absorption at \`along\` (x: 0 root … 1 tip; y: distance from the tip, world
+// units; rnd: its seeded random values): root → lighter tips, grey strands, a seeded spread of
+// melanin and a little of the red/blue balance.
+vec3 strandSigma(vec4 rnd, vec2 along) {
+  vec3 s = mix(rootSigma, tipSigma, tipShare(along.x, along.y));
   float pick = fract(dot(rnd, vec4(0.7548777, 0.5698403, 0.3308946, 0.1234567)) * 97.31);
   if (pick < lookShares.x) s = greySigma;
   float hue = hueVariation * (2.0 * rnd.y - 1.0);
   return s * (1.0 + lookShares.z * (2.0 * rnd.x - 1.0)) * vec3(1.0 - hue, 1.0, 1.0 + hue);
 }
 
-// The strand's colour at world point P with unit tangent T (root -> tip).
-vec3 shadeStrand(vec3 T, vec3 P, float along, vec4 rnd, vec2 light) {
+// The strand's colour at world point P with unit tangent T (root -> tip); along as strandSigma's.
+vec3 shadeStrand(vec3 T, vec3 P, vec2 along, vec4 rnd, vec2 light) {
   vec3 V = normalize(cameraPosition - P);
   vec3 radial = P - headCenter;
   vec3 N = radial - T * dot(radial, T);
@@ -134,7 +153,7 @@ vec3 shadeStrand(vec3 T, vec3 P, float along, vec4 rnd, vec2 light) {
   shadow = deepOpacityTransmittance(P);
 #endif
   // root darkening: occlusion towards the scalp, on top of the hair's own occlusion
-  float rootAo = mix(1.0 - rootDarkening, 1.0, smoothstep(0.0, 0.3, along));
+  float rootAo = mix(1.0 - rootDarkening, 1.0, smoothstep(0.0, 0.3, along.x));
   vec3 key = keyColor * bsdfGain * hairBsdf(T, keyDirection, V, sigma, beta, shadow);
   // fill and sky: the base colour (what a head of this hair scatters back), occluded
   vec3 base = hairBaseColor(sigma);
@@ -159,15 +178,15 @@ varying float vDistance; // from the camera (the order-independent pass's weight
 void main() {
   vec4 world = modelMatrix * vec4(position, 1.0);
   vec3 T = normalize(mat3(modelMatrix) * tangent);
-  vColor = shadeStrand(T, world.xyz, along, strandRandom, lighting);
-  vAlong = along;
+  vAlong = vec2(along.x, tipDistanceOf(along.y));
+  vColor = shadeStrand(T, world.xyz, vAlong, strandRandom, lighting);
   // a line is one pixel wide: its opacity is the strand's true coverage of that pixel (as the
   // strips' width / drawn width), tapering to the tip
   float dist = length(cameraPosition - world.xyz);
   vDistance = dist;
   float pixel = 2.0 * dist / (projectionMatrix[1][1] * max(viewportHeight, 1.0));
   if (projectionMatrix[3][3] > 0.5) pixel = 2.0 / (projectionMatrix[1][1] * max(viewportHeight, 1.0));
-  float width = strandWidth * mix(1.0, tipWidth, smoothstep(fadeStartOf(strandRandom), 1.0, along));
+  float width = strandWidth * mix(1.0, tipWidth, smoothstep(fadeStartOf(strandRandom), 1.0, along.x));
   vCoverage = min(1.0, width / pixel);
   vFadeStart = fadeStartOf(strandRandom);
   gl_Position = projectionMatrix * viewMatrix * world;
@@ -176,7 +195,7 @@ void main() {
 
 const linesFragmentShader = /* glsl */ `
 varying vec3 vColor;
-varying float vAlong;
+varying vec2 vAlong;
 varying float vCoverage;
 varying float vFadeStart;
 varying float vDistance;
@@ -186,7 +205,7 @@ ${OIT_FRAGMENT_GLSL}
 void main() {
   // coverage times the tip's fade, blended order-independently (HAIR_OIT: hairOit.ts) or
   // unsorted, without depth writes
-  float alpha = vCoverage * (1.0 - smoothstep(vFadeStart, 1.0, vAlong));
+  float alpha = vCoverage * (1.0 - smoothstep(vFadeStart, 1.0, vAlong.x));
   if (alpha < 0.004) discard;
 #ifdef HAIR_OIT
   oitWrite(vColor, alpha, vDistance);
@@ -228,13 +247,13 @@ void main() {
   vec3 side = cross(T, V);
   float sl = length(side);
   side = sl > 1e-4 ? side / sl : normalize(cross(T, abs(T.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0)));
-  float width = strandWidth * mix(1.0, tipWidth, smoothstep(fadeStartOf(strandRandom), 1.0, along));
+  float width = strandWidth * mix(1.0, tipWidth, smoothstep(fadeStartOf(strandRandom), 1.0, along.x));
   float drawn = max(width, pixel);
   float s = (gl_VertexID % 2 == 0) ? -0.5 : 0.5;
   world.xyz += side * (s * drawn);
   vWorldPosition = world.xyz;
   vTangent = T;
-  vAlong = along;
+  vAlong = vec2(along.x, tipDistanceOf(along.y)); // linear along a segment, as the distance is
   vRandom = strandRandom;
   vLight = lighting;
   vCoverage = width / drawn;
@@ -248,7 +267,7 @@ const stripsFragmentShader = /* glsl */ `
 ${shading}
 varying vec3 vTangent;
 varying vec3 vWorldPosition;
-varying float vAlong;
+varying vec2 vAlong;
 varying vec4 vRandom;
 varying vec2 vLight;
 varying float vCoverage;
@@ -257,7 +276,7 @@ ${OIT_FRAGMENT_GLSL}
 #endif
 
 void main() {
-  float alpha = vCoverage * (1.0 - smoothstep(fadeStartOf(vRandom), 1.0, vAlong));
+  float alpha = vCoverage * (1.0 - smoothstep(fadeStartOf(vRandom), 1.0, vAlong.x));
 #ifdef ALPHA_TO_COVERAGE
   if (alpha < 0.02) discard;
 #else
@@ -298,6 +317,7 @@ export interface StrandUniforms {
   tipSigma: THREE.IUniform<THREE.Vector3>;
   greySigma: THREE.IUniform<THREE.Vector3>;
   lookShares: THREE.IUniform<THREE.Vector4>;
+  tipLength: THREE.IUniform<number>;
   roughness: THREE.IUniform<number>;
   bsdfGain: THREE.IUniform<number>;
   keyDirection: THREE.IUniform<THREE.Vector3>;
@@ -360,6 +380,7 @@ export function createStrandMaterial(options: StrandMaterialOptions = {}): Stran
     tipSigma: { value: new THREE.Vector3() },
     greySigma: { value: new THREE.Vector3() },
     lookShares: { value: new THREE.Vector4() },
+    tipLength: { value: 0 },
     roughness: { value: 0.3 },
     bsdfGain: { value: BSDF_GAIN },
     keyDirection: { value: new THREE.Vector3(...light).normalize() },
@@ -424,6 +445,7 @@ export function setHairLook(
   u.tipSigma.value.set(...v.tipSigma);
   u.greySigma.value.set(...v.greySigma);
   u.lookShares.value.set(...v.shares);
+  u.tipLength.value = v.tipLength;
   u.roughness.value = v.roughness;
 }
 
@@ -458,9 +480,10 @@ function setBounds(geometry: THREE.BufferGeometry, b: Float32Array): void {
 /** Build indexed LineSegments geometry for strands. Strand s owns points
  *  strandStart[s] .. strandStart[s + 1] − 1 of `points` (points[3 * point + axis]); each pair of
  *  consecutive points is a segment. The `position` attribute views `points` (not copied: do not
- *  change it afterwards). Added per point (strandAttributes.ts): `tangent`, `along`,
- *  `strandRandom` (a hash of the strand index and `colorSeed`) and `lighting` (from `lighting`,
- *  2 per point as protocol.ts HairLightingArrays.strand; 1, 1 without it), all normalised.
+ *  change it afterwards). Added per point (strandAttributes.ts): `tangent`, `along` (the place
+ *  along the strand and the distance from its tip), `strandRandom` (a hash of the strand index
+ *  and `colorSeed`) and `lighting` (from `lighting`, 2 per point as protocol.ts
+ *  HairLightingArrays.strand; 1, 1 without it), all normalised.
  *  `prebuilt`: those attributes and the index as lineAttributes made them for these strands
  *  (by the worker), used as they are. Level of detail: any prefix of the index's groups is an
  *  even sample of the whole head of hair; `userData.lodCounts[g]` is the index count of the first
@@ -490,7 +513,7 @@ function setPointAttributes(
   attrs: Pick<PointAttributes, 'tangent' | 'along' | 'random' | 'light'>,
 ): void {
   geometry.setAttribute('tangent', new THREE.BufferAttribute(attrs.tangent, 3, true));
-  geometry.setAttribute('along', new THREE.BufferAttribute(attrs.along, 1, true));
+  geometry.setAttribute('along', new THREE.BufferAttribute(attrs.along, 2, true));
   geometry.setAttribute('strandRandom', new THREE.BufferAttribute(attrs.random, 4, true));
   geometry.setAttribute('lighting', new THREE.BufferAttribute(attrs.light, 2, true));
 }
@@ -529,7 +552,7 @@ export function buildStrandStripGeometry(
   );
   setPointAttributes(geometry, {
     tangent: twice(attrs.tangent, 3),
-    along: twice(attrs.along, 1),
+    along: twice(attrs.along, 2),
     random: twice(attrs.random, 4),
     light: twice(attrs.light, 2),
   });

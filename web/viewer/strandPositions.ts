@@ -2,6 +2,9 @@
 // The geometry buildStrandGeometry or buildStrandStripGeometry made keeps its colours, lighting,
 // `along` and index; only `position` and the `tangent` derived from it (the strand material
 // lights and, for strips, widens along it) are written and marked for upload, with the bounds.
+// `along`'s distance from the tip (the lighter tips) is kept too: the motion holds its guides'
+// segment lengths (a position-based constraint) and the other strands ride their guide, so a
+// point stays about as far from its tip by arc length, and a frame costs no pass more.
 import * as THREE from 'three';
 import { writeTangents } from './strandAttributes';
 
