@@ -21,6 +21,7 @@ import { SelectTool } from '../tools/selectTool';
 import { StreamCurveTool } from '../tools/streamCurveTool';
 import type { Tool } from '../tools/tool';
 import type { Viewer } from '../viewer/viewer';
+import { partingOverOutline } from './partingOverOutline';
 import { streamOnMiddle } from './streamOnMiddle';
 import { TIE_TOOL_KINDS, TIE_TOOLS } from './tieTools';
 
@@ -315,7 +316,7 @@ function streamTool(k: ToolKit): Tool {
 
 /** The dividing curve tool: partings on the scalp and their tilt handles. */
 function dividingTool(k: ToolKit): Tool {
-  const { d, editor, step, camera, sample, showDraft } = k;
+  const { d, editor, step, camera, sample, showDraft, forward } = k;
   return new DividingCurveTool({
     sample,
     step,
@@ -325,7 +326,10 @@ function dividingTool(k: ToolKit): Tool {
     },
     normalsAt: (pts) => pts.map((p) => d.head().normalAt(p)),
     showDraft,
-    commit: (points, normals) =>
+    commit: (drawn, drawnNormals) => {
+      // an end drawn up to the head's outline goes on over it (partingOverOutline.ts)
+      const { points, carried } = partingOverOutline(drawn, forward(), d.head(), step());
+      const normals = carried ? points.map((p) => d.head().normalAt(p)) : drawnNormals;
       editor.run({
         kind: 'addCurve',
         curve: {
@@ -335,9 +339,10 @@ function dividingTool(k: ToolKit): Tool {
           ...defaultParams('dividing'),
           viewpoint: camera(),
         },
-        what: `dividing curve {id} (${points.length - 1} segments)`,
+        what: `dividing curve {id} (${points.length - 1} segments${carried ? ', carried over the outline' : ''})`,
         mirror: d.mirror(),
-      }),
+      });
+    },
     setTilt: (end, alpha, side) => {
       const c = editor.selectedCurve;
       if (c?.type === 'dividing') editor.run({ kind: 'setTilt', id: c.id, end, alpha, side });
