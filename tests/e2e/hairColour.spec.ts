@@ -39,14 +39,19 @@ async function setNumber(page: Page, name: string, value: number): Promise<void>
   await page.evaluate(() => window.hairsketch.idle());
 }
 
+/** The default preset at 12,000 strands, settled, with the Hair panel open: the panel. */
+async function openHairPanel(page: Page) {
+  await page.goto('/?strands=12000');
+  await settled(page);
+  await page.getByRole('button', { name: 'Detail' }).click();
+  return page.getByRole('region', { name: 'Hair detail' });
+}
+
 test('Melanin, Redness and Grey change the hair as named; Undo restores; the link keeps it', async ({
   page,
 }) => {
   const errors = watchConsole(page);
-  await page.goto('/?strands=12000');
-  await settled(page);
-  await page.getByRole('button', { name: 'Detail' }).click();
-  const panel = page.getByRole('region', { name: 'Hair detail' });
+  const panel = await openHairPanel(page);
   await expect(panel.getByRole('checkbox', { name: 'Natural colour' })).toBeChecked();
 
   // a change is drawn in the next frame: each check polls the drawn colour until it holds
@@ -92,10 +97,7 @@ test('Tips: lighter tips over a length typed in cm; an older fraction shows as a
   page,
 }) => {
   const errors = watchConsole(page);
-  await page.goto('/?strands=12000');
-  await settled(page);
-  await page.getByRole('button', { name: 'Detail' }).click();
-  const panel = page.getByRole('region', { name: 'Hair detail' });
+  const panel = await openHairPanel(page);
   const status = page.getByTestId('status');
   const hairLook = async () =>
     (
