@@ -40,12 +40,18 @@ describe('streamOnMiddle', () => {
     expect(r.points[r.points.length - 1]).toEqual([0, lifted[1], lifted[2]]);
   });
 
-  it('leaves it as drawn from the front, or 6 cm off the middle from the side', () => {
+  it('leaves it as drawn from the front, 6 cm off the middle, or pressed inside the outline', () => {
     const drawn = crest(0.3);
     const a = streamOnMiddle(drawn, X_PLANE, front, head);
     expect(a.snapped).toBe(false);
     expect(a.points).toBe(drawn);
     const far = crest(0.6);
     expect(streamOnMiddle(far, X_PLANE, side, head).snapped).toBe(false);
+    // pressed inside the outline (the surface there faces the side view more than across it),
+    // though within the side view's 4 cm of the middle: meant where it is (a bob's side stroke)
+    const inside = crest(0.38);
+    const n = head.normalAt(inside[0]);
+    expect(Math.abs(n[0])).toBeGreaterThan(0.55);
+    expect(streamOnMiddle(inside, X_PLANE, side, head).snapped).toBe(false);
   });
 });

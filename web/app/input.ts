@@ -43,12 +43,24 @@ export function bindInput(d: InputDeps): void {
     if (e instanceof PointerEvent && e.pointerId === captured) d.tool().onPointerMove(ptr(e));
   });
   // hovering (no press): a tool may show where it would act (the scalp brush's ring)
+  let hover: ReturnType<typeof ptr> | null = null;
   canvas.addEventListener('pointermove', (e) => {
-    if (captured === null) d.tool().onHover?.(ptr(e));
+    hover = ptr(e);
+    if (captured === null) d.tool().onHover?.(hover);
   });
   canvas.addEventListener('pointerleave', () => {
+    hover = null;
     if (captured === null) d.tool().onHover?.(null);
   });
+  // Shift pressed or let go over the view without moving: the hover shows it (the scalp brush's
+  // ring turns red while Shift is held)
+  const shift = (e: KeyboardEvent) => {
+    if (e.key !== 'Shift' || captured !== null || !hover) return;
+    hover = { ...hover, shiftKey: e.type === 'keydown' };
+    d.tool().onHover?.(hover);
+  };
+  window.addEventListener('keydown', shift);
+  window.addEventListener('keyup', shift);
   const end = (e: PointerEvent, cancel: boolean) => {
     if (e.pointerId !== captured) return;
     captured = null;

@@ -1,14 +1,19 @@
 // A stream curve drawn in a side view along the head's middle (a mohawk's crest, a centre
 // line combed back) is put on it: from the side the middle is the head's outline, and a press
 // just inside it lands a few centimetres to the near side (fresh eyes could not draw a centred
-// mohawk without Mirror). Its points that lay on the head are put back on it where the middle
-// meets it; those past the scalp keep their place in the plane.
+// mohawk without Mirror), when it is pressed on the outline. Its points that lay on the head are
+// put back on it where the middle meets it; those past the scalp keep their place in the plane.
 import type { Head } from '../head/head';
 import { type MirrorPlane, snapToPlane } from '../model/mirror';
 import type { Vec3 } from '../model/vec3';
 
 /** Points within this of the head (world units, 5 mm) lay on it as drawn. */
 const ON_HEAD = 0.05;
+/** Only a stroke pressed on the head's outline (its surface there within about 33° of facing
+ *  across the view, |n · view| below this) is put on the middle: one pressed inside the outline,
+ *  a bob's side stroke near the back of the head, is meant where it is (fresh eyes lost a
+ *  stroke's mirror twin to the snap). */
+const ON_OUTLINE = 0.55;
 
 export function streamOnMiddle(
   drawn: Vec3[],
@@ -16,6 +21,11 @@ export function streamOnMiddle(
   view: Vec3,
   head: Head,
 ): { points: Vec3[]; snapped: boolean } {
+  if (drawn.length === 0) return { points: drawn, snapped: false };
+  const n = head.normalAt(drawn[0]);
+  const len = Math.hypot(view[0], view[1], view[2]) || 1;
+  if (Math.abs(n[0] * view[0] + n[1] * view[1] + n[2] * view[2]) / len >= ON_OUTLINE)
+    return { points: drawn, snapped: false };
   const { points, snapped } = snapToPlane(drawn, plane, view, true);
   if (!snapped) return { points, snapped };
   const c = head.center;

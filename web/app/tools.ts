@@ -289,7 +289,7 @@ function streamTool(k: ToolKit): Tool {
         ? `, on into ${tie.type} ${tie.id}`
         : extend && !newCurveExtends(editor.session)
           ? editor.session.shape
-            ? `, combing on: it ends on the scalp; its hair is about as long as the stroke, ${Math.round(cm)} cm (draw on past the head for longer hair)`
+            ? combingOnNote(cm, 10 * editor.session.growth.maxLength)
             : ', combing on: it ends on the scalp'
           : '';
       editor.run({
@@ -312,6 +312,15 @@ function streamTool(k: ToolKit): Tool {
     },
     notify: d.notify,
   });
+}
+
+/** What the status says of a stroke that ends on the scalp (with the shape rules): its hair is
+ *  about as long as the stroke, `cm`, or Max length (`maxCm`) when that is shorter (fresh eyes
+ *  read "11 cm" for hair capped at 5). */
+export function combingOnNote(cm: number, maxCm: number): string {
+  return cm <= maxCm
+    ? `, combing on: it ends on the scalp; its hair is about as long as the stroke, ${Math.round(cm)} cm (draw on past the head for longer hair)`
+    : `, combing on: it ends on the scalp; its hair is ${Math.round(maxCm)} cm, Max length (the stroke is ${Math.round(cm)} cm: raise Max length in the Hair panel for longer hair)`;
 }
 
 /** The dividing curve tool: partings on the scalp and their tilt handles. */
