@@ -47,7 +47,7 @@ ShapeGrowth::Lay ShapeGrowth::layOnHead(const float x[3], float n[3], double& se
   {
     dist = dx;
     // short hair lies on under the skull's widest part and down the nape (behind the head's
-    // axis more than beside it); beside the head, over an ear, it hangs as long hair does
+    // axis more than beside it), and on past the scalp's edge (PastEdge)
     const bool nape = hugs && atNape(x[0], x[2]);
     const bool onScalp =
         head->scalpNear(x[0] - dx * nrm[0], x[1] - dx * nrm[1], x[2] - dx * nrm[2]);

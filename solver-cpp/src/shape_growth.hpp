@@ -33,9 +33,10 @@ struct ShapeGrowth {
   // (Hangs), and off the scalp (an ear; not in the face's column, where it parts round the face)
   // too (Over); taken farther than kLayReach off by the field it follows the field (Free).
   // Short hair (hugs) is held at its standoff under the skull's widest part and down the nape
-  // (behind the head's axis more than beside it), as a pixie's or a crop's hair is; over an ear
-  // it hangs as long hair does. At the nape it lies on past the scalp's edge (PastEdge: laid, its
-  // foot off the scalp), where growth ends it (kTaperPast): a tapered nape, not a blunt line.
+  // (behind the head's axis more than beside it), as a pixie's or a crop's hair is. At the nape
+  // and over an ear it lies on past the scalp's edge (PastEdge: laid, its foot off the scalp),
+  // where growth ends it (kTaperPastNape, kTaperPastEar; over an ear, hair a stroke combs goes on
+  // with the stroke instead): a tapered nape and sides, not a blunt line.
   enum class Lay { Laid, PastEdge, Hangs, Over, Free };
   // Behind the head's axis more than beside it.
   bool atNape(float x, float z) const { return z - centre[2] < -std::abs(x - centre[0]); }
