@@ -123,6 +123,30 @@ describe('StreamCurveTool', () => {
     for (const c of log.commits) expect(c.length).toBeGreaterThan(1);
   });
 
+  it('starts a press just off the scalp where sampleStart puts it, on the scalp', () => {
+    const log: Vec3[][] = [];
+    const plain = sampler((x) => x < 1);
+    const tool = new StreamCurveTool({
+      sample: plain,
+      // the press lands at x 1.1, off the scalp: its start is the scalp's edge at x 0.95
+      sampleStart: (x, y) => (x < 1.2 ? { ...plain(x, y), scalpHit: [0.95, y, 0] } : plain(x, y)),
+      eye: () => EYE,
+      forward: () => FORWARD,
+      step: () => STEP,
+      showDraft: () => {},
+      commit: (p) => log.push(p),
+      preview: () => {},
+      notify: () => {},
+    });
+    drag(tool, line([1.1, 0.5], [3, 0.5]));
+    expect(log).toHaveLength(1);
+    expect(log[0][0]).toEqual([0.95, 0.5, 0]);
+    // without it, the same press draws nothing
+    const { tool: bare, log: l2 } = setup(false);
+    drag(bare, line([1.1, 0.5], [3, 0.5]));
+    expect(l2.commits).toHaveLength(0);
+  });
+
   it('says why a press off the scalp and off the surface draws nothing', () => {
     const { tool, log } = setup(true);
     drag(tool, line([3, 5], [4, 6]));

@@ -72,6 +72,8 @@ export interface ToolSet {
 
 // How near the scalp (world units: 5 mm) a stroke's last point must be to count as ending on it.
 const SCALP_END_REACH = 0.05;
+// How far off the scalp (world units: 2 cm) a stroke's press may land and still start on it.
+const START_REACH = 0.2;
 
 /** What every tool is built from: the page's picking, the camera, the draft line and the rule
  *  for whether a stroke's hair grows on past its end. */
@@ -82,6 +84,7 @@ interface ToolKit {
   step: () => number;
   camera: () => ReturnType<ToolDeps['viewer']['cameraState']>;
   sample: (x: number, y: number) => StrokeSample;
+  sampleStart: (x: number, y: number) => StrokeSample;
   eye: () => Vec3;
   forward: () => Vec3;
   showDraft: (pts: readonly Vec3[] | null) => void;
@@ -104,6 +107,19 @@ function toolKit(d: ToolDeps): ToolKit {
       headDistance: hit ? hit.distance : null,
     };
   };
+  // A stroke's press just off the scalp (on the forehead or a sideburn's skin under the hair,
+  // where the scalp's edge cannot be seen) starts at the nearest scalp point within
+  // START_REACH; the rest of the stroke is sampled as it is.
+  const sampleStart = (x: number, y: number): StrokeSample => {
+    const s = sample(x, y);
+    if (s.scalpHit || s.headDistance == null) return s;
+    const at: Vec3 = [
+      s.origin[0] + s.headDistance * s.direction[0],
+      s.origin[1] + s.headDistance * s.direction[1],
+      s.origin[2] + s.headDistance * s.direction[2],
+    ];
+    return { ...s, scalpHit: d.head().nearestScalpPoint(at, START_REACH) };
+  };
   // with natural fall a new curve's hair ends where the stroke ends: the draft marks it
   // A stream stroke's hair grows on past its end when the session says so, when it ends at a
   // tie, or when it ends on the scalp (a stroke that stays on the head combs the hair, one that
@@ -122,7 +138,19 @@ function toolKit(d: ToolDeps): ToolKit {
   const eye = () => viewer.eye();
   const forward = () => viewer.viewForward();
 
-  return { d, editor, viewer, step, camera, sample, eye, forward, showDraft, strokeExtends };
+  return {
+    d,
+    editor,
+    viewer,
+    step,
+    camera,
+    sample,
+    sampleStart,
+    eye,
+    forward,
+    showDraft,
+    strokeExtends,
+  };
 }
 
 /** The tools, each built from the shared kit (toolKit). */
@@ -145,9 +173,10 @@ export function createTools(d: ToolDeps): ToolSet {
 /** The ponytail tool: one stroke makes a ponytail; a cross-section and two profiles may shape
  *  it (S4.6). */
 function ponytailTool(k: ToolKit): PonytailTool {
-  const { d, editor, viewer, camera, sample, eye, forward, step, showDraft } = k;
+  const { d, editor, viewer, camera, sample, sampleStart, eye, forward, step, showDraft } = k;
   return new PonytailTool({
     sample,
+    sampleStart,
     eye,
     forward,
     step,
@@ -249,12 +278,14 @@ function scalpBrushTool(k: ToolKit): ScalpBrushTool {
 
 /** The stream curve tool: strokes, hint strokes on the selected curve, previews. */
 function streamTool(k: ToolKit): Tool {
-  const { d, editor, viewer, step, camera, sample, eye, forward, showDraft, strokeExtends } = k;
+  const { d, editor, viewer, step, camera, sample, sampleStart, eye, forward, showDraft } = k;
+  const { strokeExtends } = k;
   // drawn from the side along the head's middle, it is put on the middle
   const onMiddle = (points: Vec3[]) =>
     streamOnMiddle(points, editor.session.symmetry ?? X_PLANE, forward(), d.head());
   return new StreamCurveTool({
     sample,
+    sampleStart,
     eye,
     forward,
     step,
@@ -325,9 +356,10 @@ export function combingOnNote(cm: number, maxCm: number): string {
 
 /** The dividing curve tool: partings on the scalp and their tilt handles. */
 function dividingTool(k: ToolKit): Tool {
-  const { d, editor, step, camera, sample, showDraft, forward } = k;
+  const { d, editor, step, camera, sample, sampleStart, showDraft, forward } = k;
   return new DividingCurveTool({
     sample,
+    sampleStart,
     step,
     selected: () => {
       const c = editor.selectedCurve;
@@ -365,7 +397,7 @@ function dividingTool(k: ToolKit): Tool {
  *  a `loop` is drawn on the head. Its stroke makes a new curve of its kind, extending as a new
  *  curve does. */
 function tieTool(k: ToolKit, kind: PlainTieKind): Tool {
-  const { d, editor, viewer, step, camera, sample, eye, forward, showDraft } = k;
+  const { d, editor, viewer, step, camera, sample, sampleStart, eye, forward, showDraft } = k;
   const spec = TIE_TOOLS[kind];
   // a spine drawn near the head's middle is put on it, as a ponytail's is (a centred braid)
   const onMiddle = (points: Vec3[]) =>
@@ -386,6 +418,7 @@ function tieTool(k: ToolKit, kind: PlainTieKind): Tool {
     return new BunTool({ sample, step, showDraft, commit, notify: d.notify });
   return new StreamCurveTool({
     sample,
+    sampleStart,
     eye,
     forward,
     step,

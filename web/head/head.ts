@@ -114,6 +114,32 @@ export class Head {
     };
   }
 
+  /** The nearest point of the scalp to `p` (on the head) within `within` world units, or null:
+   *  the centroid of the nearest scalp triangle, put on the surface. One pass over the
+   *  triangles: for a press, not per frame. */
+  nearestScalpPoint(p: Vec3, within: number): Vec3 | null {
+    const { positions: P, indices: I, scalp } = this.mesh;
+    let best = within * within;
+    let at: Vec3 | null = null;
+    for (let t = 0; t < scalp.length; t++) {
+      if (!scalp[t]) continue;
+      const a = 3 * I[3 * t];
+      const b = 3 * I[3 * t + 1];
+      const c = 3 * I[3 * t + 2];
+      const q: Vec3 = [
+        (P[a] + P[b] + P[c]) / 3,
+        (P[a + 1] + P[b + 1] + P[c + 1]) / 3,
+        (P[a + 2] + P[b + 2] + P[c + 2]) / 3,
+      ];
+      const d2 = (q[0] - p[0]) ** 2 + (q[1] - p[1]) ** 2 + (q[2] - p[2]) ** 2;
+      if (d2 < best) {
+        best = d2;
+        at = q;
+      }
+    }
+    return at && this.closest(at).point;
+  }
+
   /** Outward unit normal of the head at (near) `p`: the vertex normals interpolated at the
    *  closest surface point. */
   normalAt(p: Vec3): Vec3 {

@@ -48,6 +48,9 @@ export function isTiltHint(
 
 export interface DividingContext {
   sample(x: number, y: number): StrokeSample;
+  /** The press's sample: as sample, but a press just off the scalp starts on its nearest point
+   *  (absent: sample). */
+  sampleStart?(x: number, y: number): StrokeSample;
   step(): number;
   /** The selected dividing curve, if any. */
   selected(): { points: readonly Vec3[]; normals: readonly Vec3[] } | null;
@@ -80,7 +83,7 @@ export class DividingCurveTool implements Tool {
 
   onPointerDown(p: ToolPointer): boolean {
     if (p.button !== 0) return false;
-    const hit = this.ctx.sample(p.x, p.y).scalpHit;
+    const hit = (this.ctx.sampleStart ?? this.ctx.sample).call(this.ctx, p.x, p.y).scalpHit;
     if (!hit) {
       this.ctx.notify('A dividing curve is drawn on the scalp: nothing was created.');
       return true;

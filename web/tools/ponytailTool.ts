@@ -34,6 +34,9 @@ export interface PonytailShape {
 
 export interface PonytailContext {
   sample(x: number, y: number): StrokeSample;
+  /** The press's sample: as sample, but a press just off the scalp starts on its nearest point
+   *  (absent: sample). */
+  sampleStart?(x: number, y: number): StrokeSample;
   eye(): Vec3;
   forward(): Vec3;
   step(): number;
@@ -99,7 +102,10 @@ export class PonytailTool implements Tool {
 
   onPointerDown(p: ToolPointer): boolean {
     if (p.button !== 0) return false;
-    const first = this.ctx.sample(p.x, p.y);
+    let first = this.ctx.sample(p.x, p.y);
+    // a spine's press just off the scalp starts on it
+    if (this.stage === 'spine' && !first.scalpHit && this.ctx.sampleStart)
+      first = this.ctx.sampleStart(p.x, p.y);
     // a press on the scalp away from the spine starts the next ponytail
     if (this.stage !== 'spine' && first.scalpHit && !this.ctx.nearSpine(p.x, p.y, this.spine))
       this.reset();

@@ -31,6 +31,9 @@ import type { Tool, ToolPointer } from './tool';
 
 export interface StrokeContext {
   sample(x: number, y: number): StrokeSample;
+  /** The press's sample: as sample, but a press just off the scalp starts on its nearest point
+   *  (absent: sample). */
+  sampleStart?(x: number, y: number): StrokeSample;
   eye(): Vec3;
   forward(): Vec3;
   step(): number; // grid step d
@@ -136,7 +139,7 @@ export class StreamCurveTool implements Tool {
 
   onPointerDown(p: ToolPointer): boolean {
     if (p.button !== 0) return false;
-    const first = this.ctx.sample(p.x, p.y);
+    let first = this.ctx.sample(p.x, p.y);
     const target = this.ctx.hintTarget?.() ?? null;
     let onSurface = false;
     if (target) {
@@ -146,6 +149,8 @@ export class StreamCurveTool implements Tool {
       onSurface = !!hit && (!first.scalpHit || hit.rayT <= head + this.ctx.step());
     }
     const hinting = !!target && onSurface && !first.scalpHit;
+    // not a hint: a press just off the scalp starts on it
+    if (!hinting && !first.scalpHit && this.ctx.sampleStart) first = this.ctx.sampleStart(p.x, p.y);
     if (!hinting && !first.scalpHit) {
       this.ctx.notify(
         `${this.ctx.noun ?? 'A stream curve'} must start on the scalp: nothing was created.`,
