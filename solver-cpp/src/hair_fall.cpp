@@ -138,6 +138,8 @@ void curveFootprint(const Grid& g, const ReachCurve& c, CurveFootprint& out) {
   // around it (a short slicked back stays short); one extended off the head grows to the maximum
   const bool combs = c.growsOn && c.offScalp && !c.offScalp[c.count - 1];
   out.volume = c.volume;
+  if (c.lift)
+    for (size_t k = 0; k < c.count; ++k) out.maxLift = std::max(out.maxLift, c.lift[k]);
   if (c.setsLength)
     out.stroke = {float(q[0]), float(q[1]), float(q[2]), float(L), c.growsOn && !combs};
   size_t lastSeg = c.count - 2;
@@ -226,6 +228,7 @@ void combineReach(const Grid& g, const std::vector<const CurveFootprint*>& curve
   std::vector<double> sumW(n, 0), sumWR(n, 0), dmin(n, inf), dface(n, inf);
   out.grid = g;
   out.lift.assign(n, 0.f);
+  out.strokeLift.assign(n, 0.f);
   out.tangent.assign(3 * n, 0.f);
   out.toCurve.assign(3 * n, 0.f);
   out.faceTangent.assign(3 * n, 0.f);
@@ -240,6 +243,7 @@ void combineReach(const Grid& g, const std::vector<const CurveFootprint*>& curve
       if (d < dmin[p]) {
         dmin[p] = d;
         out.lift[p] = c->lift.empty() ? 0.f : c->lift[e];
+        out.strokeLift[p] = c->maxLift;
         std::copy(&c->tangent[3 * e], &c->tangent[3 * e] + 3, &out.tangent[3 * p]);
         std::copy(&c->toCurve[3 * e], &c->toCurve[3 * e] + 3, &out.toCurve[3 * p]);
       }

@@ -124,6 +124,7 @@ struct CurveReach {
   std::vector<float> faceTangent;  // 3 per lattice point: that stretch's unit direction
   std::vector<float> governed;     // per lattice point: 1 within kGovernNear of a curve .. 0
   std::vector<float> lift;         // per lattice point: the nearest curve's distance off the head
+  std::vector<float> strokeLift;   // per lattice point: the nearest curve's largest such distance
   std::vector<float> nearest;      // per lattice point: the distance to the nearest curve
   std::vector<float> tangent;      // 3 per lattice point: the nearest curve's direction there
   std::vector<float> toCurve;      // 3 per lattice point: from it to the nearest curve point
@@ -140,6 +141,7 @@ struct CurveReach {
     faceTangent.clear();
     governed.clear();
     lift.clear();
+    strokeLift.clear();
     nearest.clear();
     tangent.clear();
     toCurve.clear();
@@ -199,6 +201,11 @@ constexpr float kHugLength = 1.2f, kHugJitter = 0.2f;
 // neck, and the sides cover the top of the ear instead of hanging over it to a blunt line. Hair a
 // stroke combs over an ear goes with the stroke instead (it is not cut).
 constexpr float kTaperPastNape = 0.3f, kTaperPastEar = 0.15f;
+// Short hair a stroke governs lies on the head as hair no stroke governs does when that stroke
+// never goes farther than this off the head (world units, 3 cm): a stroke drawn down past the nape
+// in a back view keeps its depth (the depth rule) and so leaves the neck as it curves in, and the
+// short hair it governed stood off the nape as a curtain; a spike drawn up and away goes farther.
+constexpr float kDrawnLift = 0.3f;
 // Hair a stroke governs stands off the head no farther than the stroke does, plus this (world
 // units): it may lie closer, never flare out past its stroke.
 constexpr float kLiftSlack = 0.05f;
@@ -237,6 +244,7 @@ struct CurveFootprint {
   std::vector<float> toCurve;  // 3 each: from the lattice point to the closest point
   bool growsOn = false;
   float volume = -1;  // the curve's own Volume (ReachCurve::volume)
+  float maxLift = 0;  // the curve's largest distance off the head (ReachCurve::lift)
   StrokeLength stroke;
 };
 void curveFootprint(const Grid& lattice, const ReachCurve& curve, CurveFootprint& out);

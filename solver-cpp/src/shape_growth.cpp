@@ -39,7 +39,9 @@ float ShapeGrowth::distanceOff(const float p[3], float nrm[3], float hint) const
 
 ShapeGrowth::Lay ShapeGrowth::layOnHead(const float x[3], float n[3], double& segLen, double arc,
                                         float gov, float lift, float& dist, float nrm[3],
-                                        float ownWeight, float ownVolume, bool hugs) const {
+                                        float ownWeight, float ownVolume, bool hugs,
+                                        bool liesOn) const {
+  if (liesOn) gov = 0;  // laid as hair no stroke governs is
   const float keep = 1.f - gov;
   bool held = true, past = false;
   const float dx = distanceOff(x, nrm, dist);

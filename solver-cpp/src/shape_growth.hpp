@@ -40,9 +40,11 @@ struct ShapeGrowth {
   enum class Lay { Laid, PastEdge, Hangs, Over, Free };
   // Behind the head's axis more than beside it.
   bool atNape(float x, float z) const { return z - centre[2] < -std::abs(x - centre[0]); }
+  // liesOn (short hair whose stroke stays within kDrawnLift of the head): it is laid at its
+  // standoff as hair no stroke governs is, wherever a stroke governs it.
   Lay layOnHead(const float x[3], float n[3], double& segLen, double arc, float gov, float lift,
                 float& dist, float nrm[3], float ownWeight = 0, float ownVolume = 0,
-                bool hugs = false) const;
+                bool hugs = false, bool liesOn = false) const;
 
   // "The face stays open": a step of hair no stroke governs or combs (gov below 0.5) that ends in
   // the face's column turns to the nearer side (its horizontal part sideways, at least as much as

@@ -283,6 +283,11 @@ struct GrowRange {
                kHugLength *
                    (1 + kHugJitter * (2 * hugNoise(std::abs(x - shaped.centre[0]), y, z) - 1));
       }
+      // short hair whose nearest stroke never leaves the head by kDrawnLift lies on the head
+      // wherever that stroke governs it (ShapeGrowth::layOnHead's liesOn)
+      const bool liesOn =
+          hugs && reach && s.inside(x, y, z) && !reach->strokeLift.empty() &&
+          interpolateScalar(reach->grid, reach->strokeLift.data(), x, y, z) < kDrawnLift;
       float layDist = 0, layNormal[3] = {0, 1, 0};
       double pastEdge = 0;  // the length laid past the scalp's edge (Lay::PastEdge)
       // a curve's own Volume at the root (weight, value): the strand's lift is that curve's
@@ -368,7 +373,7 @@ struct GrowRange {
             float q[3] = {nx, ny, nz};
             const ShapeGrowth::Lay lay =
                 shaped.layOnHead(at, q, segLen, length + segLen, gov, here[2], layDist, layNormal,
-                                 own[0], own[1], hugs);
+                                 own[0], own[1], hugs, liesOn);
             // short hair laid on past the scalp's edge ends kTaperPast* on; over an ear, hair a
             // stroke combs goes round the ear with it instead
             ShapeGrowth::Lay now = lay;

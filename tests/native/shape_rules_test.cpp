@@ -413,4 +413,43 @@ TEST(ShapeGrowth, ShortHairEndsALittlePastTheScalpsEdgeAtTheNapeAndOverAnEar) {
   }
 }
 
+TEST(ShapeGrowth, ShortHairOfAStrokeThatStaysNearTheHeadLiesOnIt) {
+  const SphereHead head;
+  const Grid g = boxGrid(41, -2, 2);
+  // a field pointing out and a little down everywhere (it would carry the hair off the head)
+  const std::vector<float> field = constantField(g, 0.8f, -0.6f, 0);
+  ShapeRules rules;
+  rules.on = true;
+  // a stroke drifting off the head along +x at the crown's side, to 1.3 cm off at its end (as a
+  // stroke drawn past the nape in a back view leaves the neck): under kDrawnLift
+  std::vector<double> pts;
+  std::vector<float> lift;
+  for (int k = 0; k <= 10; ++k) {
+    const double x = 0.7 + 0.04 * k, y = 0.7 - 0.045 * k;
+    pts.insert(pts.end(), {x, y, 0});
+    lift.push_back(float(std::hypot(x, y) - kRadius));
+  }
+  ASSERT_LT(*std::max_element(lift.begin(), lift.end()), kDrawnLift);
+  ReachCurve c;
+  c.points = pts.data();
+  c.count = 11;
+  c.setsLength = true;
+  c.lift = lift.data();
+  CurveReach reach;
+  buildCurveReach(g, {c}, reach);
+  const std::vector<Eigen::Vector3f> roots = {{0.7f, 0.714f, 0}};
+  GrowthParams gp;
+  gp.maxLength = 0.5;  // short hair (kHugLength)
+  Strands st;
+  ASSERT_TRUE(
+      growStrands(g, field, roots, gp, st, 1 << 20, &head.distance, &reach, BodyCollider(), &rules)
+          .ok());
+  const std::vector<float> d = standOff(st, 0, 0.45f);
+  ASSERT_GT(d.size(), 5u);
+  // laid at the standoff (margin and layer slope), not out along its stroke to 1.3 cm
+  std::printf("short hair of a stroke drifting to %.3f off the head: at most %.3f off it\n",
+              lift.back(), *std::max_element(d.begin(), d.end()));
+  EXPECT_LT(*std::max_element(d.begin(), d.end()), float(gp.margin) + 0.04f);
+}
+
 }  // namespace shape_rules_test
