@@ -115,10 +115,13 @@ test("a mohawk crest drawn from the side, Mirror off, is put on the head's middl
   page,
 }) => {
   const rev = await emptyHead(page, { view: 'l' });
-  // pressed just inside the top outline (10 degrees from the top, on the near side: about 2 cm off
-  // the middle), up and back
-  const a = await scalpAt(page, 10, 90);
-  await dragBy(page, a, 20, 4, -4);
+  // pressed just outside the top outline, 6 px above the crown's top (0, 1.0, 0) (the ray passes just
+  // over the head: it starts at the scalp's nearest point), up and back
+  const top = (await page.evaluate(() => window.hairsketch.worldToScreen([0, 1.0, 0]))) as {
+    x: number;
+    y: number;
+  };
+  await dragBy(page, { x: top.x, y: top.y - 6 }, 20, 4, -4);
   const s = await settled(page, rev);
   const cs = await curves(page);
   expect(cs.length).toBe(1);

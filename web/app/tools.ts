@@ -74,6 +74,8 @@ export interface ToolSet {
 const SCALP_END_REACH = 0.05;
 // How far off the scalp (world units: 2 cm) a stroke's press may land and still start on it.
 const START_REACH = 0.2;
+// How far past the head's outline (world units: 1 cm, a few pixels) a press still starts on it.
+const OUTLINE_REACH = 0.1;
 
 /** What every tool is built from: the page's picking, the camera, the draft line and the rule
  *  for whether a stroke's hair grows on past its end. */
@@ -112,13 +114,33 @@ function toolKit(d: ToolDeps): ToolKit {
   // START_REACH; the rest of the stroke is sampled as it is.
   const sampleStart = (x: number, y: number): StrokeSample => {
     const s = sample(x, y);
-    if (s.scalpHit || s.headDistance == null) return s;
-    const at: Vec3 = [
-      s.origin[0] + s.headDistance * s.direction[0],
-      s.origin[1] + s.headDistance * s.direction[1],
-      s.origin[2] + s.headDistance * s.direction[2],
-    ];
-    return { ...s, scalpHit: d.head().nearestScalpPoint(at, START_REACH) };
+    if (s.scalpHit) return s;
+    const head = d.head();
+    let at: Vec3;
+    if (s.headDistance != null) {
+      at = [
+        s.origin[0] + s.headDistance * s.direction[0],
+        s.origin[1] + s.headDistance * s.direction[1],
+        s.origin[2] + s.headDistance * s.direction[2],
+      ];
+    } else {
+      // a press on the outline or just outside it (the ray grazes past the head): the head
+      // point nearest the ray where it passes closest to the head's centre, within OUTLINE_REACH
+      const c = head.center;
+      const t =
+        (c[0] - s.origin[0]) * s.direction[0] +
+        (c[1] - s.origin[1]) * s.direction[1] +
+        (c[2] - s.origin[2]) * s.direction[2];
+      const p: Vec3 = [
+        s.origin[0] + t * s.direction[0],
+        s.origin[1] + t * s.direction[1],
+        s.origin[2] + t * s.direction[2],
+      ];
+      const near = head.closest(p);
+      if (!(near.distance < OUTLINE_REACH)) return s;
+      at = near.point;
+    }
+    return { ...s, scalpHit: head.nearestScalpPoint(at, START_REACH) };
   };
   // with natural fall a new curve's hair ends where the stroke ends: the draft marks it
   // A stream stroke's hair grows on past its end when the session says so, when it ends at a

@@ -85,7 +85,9 @@ export class DividingCurveTool implements Tool {
     if (p.button !== 0) return false;
     const hit = (this.ctx.sampleStart ?? this.ctx.sample).call(this.ctx, p.x, p.y).scalpHit;
     if (!hit) {
-      this.ctx.notify('A dividing curve is drawn on the scalp: nothing was created.');
+      this.ctx.notify(
+        'A parting must start on the scalp (or within 2 cm of it): nothing was created.',
+      );
       return true;
     }
     const sel = this.ctx.selected();
