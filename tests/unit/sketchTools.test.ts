@@ -147,6 +147,34 @@ describe('StreamCurveTool', () => {
     expect(l2.commits).toHaveLength(0);
   });
 
+  it('takes no hint from a view turned more than 60 degrees from the curve’s viewpoint', () => {
+    const run = (viewDir: Vec3) => {
+      const log: { commits: Vec3[][]; hints: HintResult[] } = { commits: [], hints: [] };
+      const surface = buildSupportingSurface(curve, eyeAbove, 'strip', 6 * STEP);
+      const tool = new StreamCurveTool({
+        sample: sampler((x) => x < 1),
+        eye: () => EYE,
+        forward: () => FORWARD,
+        step: () => STEP,
+        showDraft: () => {},
+        commit: (p) => log.commits.push(p),
+        preview: () => {},
+        notify: () => {},
+        hintTarget: () => ({ points: curve, surface, viewDir }),
+        applyHint: (r) => log.hints.push(r),
+      });
+      drag(tool, line([3, -1], [3, 1])); // across the curve, far on both sides: a cut
+      return log;
+    };
+    // drawn from this view (the view looks along -z): a hint
+    expect(run([0, 0, -1]).hints).toHaveLength(1);
+    // drawn from a view at 90 degrees (looking along -x): no hint; the press is off the scalp,
+    // so nothing is drawn either
+    const turned = run([-1, 0, 0]);
+    expect(turned.hints).toHaveLength(0);
+    expect(turned.commits).toHaveLength(0);
+  });
+
   it('says why a press off the scalp and off the surface draws nothing', () => {
     const { tool, log } = setup(true);
     drag(tool, line([3, 5], [4, 6]));

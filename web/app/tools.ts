@@ -316,7 +316,13 @@ function streamTool(k: ToolKit): Tool {
     hintTarget: () => {
       const c = editor.selectedCurve;
       const surface = c ? curveSurface(c, d.step) : null;
-      return c && surface ? { points: c.points, surface } : null;
+      if (!c || !surface) return null;
+      // the view the curve's surface faces: from its viewpoint to its target
+      const { position: p, target: t } = c.viewpoint;
+      const len = Math.hypot(t[0] - p[0], t[1] - p[1], t[2] - p[2]);
+      const viewDir: Vec3 | undefined =
+        len > 1e-9 ? [(t[0] - p[0]) / len, (t[1] - p[1]) / len, (t[2] - p[2]) / len] : undefined;
+      return { points: c.points, surface, viewDir };
     },
     applyHint: (r) => {
       const c = editor.selectedCurve;

@@ -29,6 +29,10 @@ import {
 } from './hintStroke';
 import type { Tool, ToolPointer } from './tool';
 
+/** The cosine of the largest angle between the view and the curve's viewpoint from which a
+ *  press beside the selected curve is a hint (60°; "Set viewpoint" moves the viewpoint). */
+const HINT_VIEW_COS = 0.5;
+
 export interface StrokeContext {
   sample(x: number, y: number): StrokeSample;
   /** The press's sample: as sample, but a press just off the scalp starts on its nearest point
@@ -42,8 +46,9 @@ export interface StrokeContext {
   /** Live preview of the stroke so far (resampled), or null when the stroke ends. */
   preview(points: Vec3[] | null): void;
   notify(message: string): void;
-  /** The selected stream curve and its supporting surface, when hint strokes may edit it. */
-  hintTarget?(): { points: readonly Vec3[]; surface: SupportingSurface } | null;
+  /** The selected stream curve and its supporting surface, when hint strokes may edit it;
+   *  viewDir: the unit direction of the view the surface faces (the curve's viewpoint). */
+  hintTarget?(): { points: readonly Vec3[]; surface: SupportingSurface; viewDir?: Vec3 } | null;
   /** A hint stroke was recognised (or not: op.kind 'none'); apply the edited points. */
   applyHint?(result: HintResult): void;
   /**
@@ -140,7 +145,14 @@ export class StreamCurveTool implements Tool {
   onPointerDown(p: ToolPointer): boolean {
     if (p.button !== 0) return false;
     let first = this.ctx.sample(p.x, p.y);
-    const target = this.ctx.hintTarget?.() ?? null;
+    let target = this.ctx.hintTarget?.() ?? null;
+    // hints are drawn from about the view the curve's surface faces: from another view (the
+    // camera turned past HINT_VIEW_COS) a press beside the curve starts a new curve, not an edit
+    // of the selected one (fresh eyes: a stroke in the left view after one in the top view
+    // extended that one)
+    const f = this.ctx.forward();
+    const v = target?.viewDir;
+    if (v && f[0] * v[0] + f[1] * v[1] + f[2] * v[2] < HINT_VIEW_COS) target = null;
     let onSurface = false;
     if (target) {
       const hit = intersectSupportingSurface(target.surface, first.origin, first.direction);
