@@ -42,10 +42,11 @@ describe('StreamCurveTool', () => {
   const curve: Vec3[] = Array.from({ length: 17 }, (_, i) => [i * STEP, 0, 0] as Vec3);
   const eyeAbove: Vec3 = [2, 0.3, 10];
   function setup(selected: boolean, scalp: (x: number, y: number) => boolean = (x) => x < 1) {
-    const log: { commits: Vec3[][]; hints: HintResult[]; notes: string[] } = {
+    const log: { commits: Vec3[][]; hints: HintResult[]; notes: string[]; deselected: number } = {
       commits: [],
       hints: [],
       notes: [],
+      deselected: 0,
     };
     const surface = buildSupportingSurface(curve, eyeAbove, 'strip', 6 * STEP);
     const tool = new StreamCurveTool({
@@ -59,6 +60,9 @@ describe('StreamCurveTool', () => {
       notify: (m) => log.notes.push(m),
       hintTarget: () => (selected ? { points: curve, surface } : null),
       applyHint: (r) => log.hints.push(r),
+      deselect: () => {
+        log.deselected++;
+      },
     });
     return { tool, log };
   }
@@ -175,10 +179,11 @@ describe('StreamCurveTool', () => {
     expect(turned.commits).toHaveLength(0);
   });
 
-  it('says why a press off the scalp and off the surface draws nothing', () => {
+  it('says why a press off the scalp and off the surface draws nothing, and deselects', () => {
     const { tool, log } = setup(true);
     drag(tool, line([3, 5], [4, 6]));
     expect(log.notes[0]).toMatch(/must start on the scalp/);
+    expect(log.deselected).toBe(1);
     expect(log.hints).toHaveLength(0);
     expect(log.commits).toHaveLength(0);
   });

@@ -324,6 +324,7 @@ function streamTool(k: ToolKit): Tool {
         len > 1e-9 ? [(t[0] - p[0]) / len, (t[1] - p[1]) / len, (t[2] - p[2]) / len] : undefined;
       return { points: c.points, surface, viewDir };
     },
+    deselect: () => editor.select(null),
     applyHint: (r) => {
       const c = editor.selectedCurve;
       if (!c) return;

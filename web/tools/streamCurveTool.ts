@@ -49,6 +49,8 @@ export interface StrokeContext {
   /** The selected stream curve and its supporting surface, when hint strokes may edit it;
    *  viewDir: the unit direction of the view the surface faces (the curve's viewpoint). */
   hintTarget?(): { points: readonly Vec3[]; surface: SupportingSurface; viewDir?: Vec3 } | null;
+  /** Deselects the selected curve (a press that draws nothing). */
+  deselect?(): void;
   /** A hint stroke was recognised (or not: op.kind 'none'); apply the edited points. */
   applyHint?(result: HintResult): void;
   /**
@@ -164,6 +166,9 @@ export class StreamCurveTool implements Tool {
     // not a hint: a press just off the scalp starts on it
     if (!hinting && !first.scalpHit && this.ctx.sampleStart) first = this.ctx.sampleStart(p.x, p.y);
     if (!hinting && !first.scalpHit) {
+      // a press on nothing deselects, as a click on the background does: the panel of a curve
+      // selected before must not take the next click for it (fresh eyes changed an old curve)
+      this.ctx.deselect?.();
       this.ctx.notify(
         `${this.ctx.noun ?? 'A stream curve'} must start on the scalp: nothing was created.`,
       );
