@@ -126,12 +126,14 @@ float ShapeGrowth::fallOrComb(bool hangs, bool overEar, float x, float y, float 
         // over an ear: head for a stroke behind it (the face is +z) as well as along it, until
         // the hair is beside it (kCombBeside): hair that kept heading for the stroke would gather
         // on its line as a rope
-        float to[3];
-        for (int e = 0; e < 3; ++e)
-          to[e] = interpolateScalar(reach->grid, reach->toCurve.data(), x, y, z, 3, e);
         const float toward =
-            2 * std::clamp((near - kCombBeside) / (kCombNear - kCombBeside), 0.f, 1.f);
-        if (overEar && toward > 0 && to[2] < 0) {
+            overEar ? 2 * std::clamp((near - kCombBeside) / (kCombNear - kCombBeside), 0.f, 1.f)
+                    : 0.f;
+        float to[3] = {0, 0, 0};
+        if (toward > 0)  // read only where it is used: this runs every step of combed hair
+          for (int e = 0; e < 3; ++e)
+            to[e] = interpolateScalar(reach->grid, reach->toCurve.data(), x, y, z, 3, e);
+        if (toward > 0 && to[2] < 0) {
           for (int e = 0; e < 3; ++e) t[e] += toward * to[e] / near;
           const float m = std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
           for (float& e : t) e /= m > 1e-6f ? m : 1.f;

@@ -25,16 +25,37 @@ constexpr float kRadius = 1.0f;
 
 using hairsketch_test::boxGrid;
 
+// A sphere head whose scalp is the part above y = scalpAbove.
 struct SphereHead {
   hairsketch_test::Mesh mesh = hairsketch_test::uvSphere(0, 0, 0, kRadius, 48, 96);
   HeadDistance distance;
-  SphereHead() {
-    hairsketch_test::markScalpAbove(mesh, -0.6);
+  explicit SphereHead(double scalpAbove = -0.6) {
+    hairsketch_test::markScalpAbove(mesh, scalpAbove);
     const HeadMeshView view{mesh.positions.data(), mesh.positions.size() / 3, mesh.indices.data(),
                             mesh.indices.size() / 3, mesh.scalp.data()};
     EXPECT_TRUE(distance.build(view).ok());
   }
 };
+
+// The reach of one stroke off the head along +x at the crown's side, from (0.7, 0.7, 0) in ten
+// steps of (dx, -0.045, 0), each point's lift its exact distance off the sphere; lift gets them.
+CurveReach crownSideStroke(const Grid& g, double dx, std::vector<float>& lift) {
+  std::vector<double> pts;
+  lift.clear();
+  for (int k = 0; k <= 10; ++k) {
+    const double x = 0.7 + dx * k, y = 0.7 - 0.045 * k;
+    pts.insert(pts.end(), {x, y, 0});
+    lift.push_back(float(std::hypot(x, y) - kRadius));
+  }
+  ReachCurve c;
+  c.points = pts.data();
+  c.count = 11;
+  c.setsLength = true;
+  c.lift = lift.data();
+  CurveReach reach;
+  buildCurveReach(g, {c}, reach);
+  return reach;
+}
 
 // A constant field: every strand is pushed along v wherever it is.
 std::vector<float> constantField(const Grid& g, float x, float y, float z) {
@@ -216,20 +237,8 @@ TEST(ShapeGrowth, HairBelowTheWidestPartHangsAndAStrokeKeepsItsOwnHair) {
   // a stroke lifted off the head along +x at the crown's side: the hair rooted under it is its
   // own and follows the field out (no farther than the stroke plus kLiftSlack), while hair far
   // from it lies on the head
-  std::vector<double> pts;
   std::vector<float> lift;
-  for (int k = 0; k <= 10; ++k) {
-    const double x = 0.7 + 0.06 * k, y = 0.7 - 0.045 * k;
-    pts.insert(pts.end(), {x, y, 0});
-    lift.push_back(float(std::hypot(x, y) - kRadius));
-  }
-  ReachCurve c;
-  c.points = pts.data();
-  c.count = 11;
-  c.setsLength = true;
-  c.lift = lift.data();
-  CurveReach reach;
-  buildCurveReach(g, {c}, reach);
+  const CurveReach reach = crownSideStroke(g, 0.06, lift);
   const std::vector<Eigen::Vector3f> roots = {{0.7f, 0.714f, 0}, {-0.7f, 0.714f, 0}};
   Strands st;
   gp.maxLength = 0.5;
@@ -284,12 +293,8 @@ TEST(ShapeGrowth, ShortHairHugsTheNapeLongHairHangsFromIt) {
 
 TEST(ShapeGrowth, HairOverAnEarHeadsForAStrokeBehindItNotForOneInFront) {
   // a sphere whose scalp ends at y = 0.3 (an "ear" band below it, still above the widest part)
-  hairsketch_test::Mesh mesh = hairsketch_test::uvSphere(0, 0, 0, kRadius, 48, 96);
-  hairsketch_test::markScalpAbove(mesh, 0.3);
-  HeadDistance head;
-  const HeadMeshView view{mesh.positions.data(), mesh.positions.size() / 3, mesh.indices.data(),
-                          mesh.indices.size() / 3, mesh.scalp.data()};
-  ASSERT_TRUE(head.build(view).ok());
+  const SphereHead sphere(0.3);
+  const HeadDistance& head = sphere.distance;
   const Grid g = boxGrid(41, -2.5, 2.5);
   // combed down along the sphere (down less its normal part, a little out), as the prior is
   std::vector<float> field(size_t(g.size()) * 3);
@@ -364,12 +369,8 @@ TEST(ShapeGrowth, HairOverAnEarHeadsForAStrokeBehindItNotForOneInFront) {
 
 TEST(ShapeGrowth, ShortHairEndsALittlePastTheScalpsEdgeAtTheNapeAndOverAnEar) {
   // a sphere whose scalp ends at y = -0.3
-  hairsketch_test::Mesh mesh = hairsketch_test::uvSphere(0, 0, 0, kRadius, 48, 96);
-  hairsketch_test::markScalpAbove(mesh, -0.3);
-  HeadDistance head;
-  const HeadMeshView view{mesh.positions.data(), mesh.positions.size() / 3, mesh.indices.data(),
-                          mesh.indices.size() / 3, mesh.scalp.data()};
-  ASSERT_TRUE(head.build(view).ok());
+  const SphereHead sphere(-0.3);
+  const HeadDistance& head = sphere.distance;
   const Grid g = boxGrid(41, -2, 2);
   ShapeRules rules;
   rules.on = true;
@@ -422,21 +423,9 @@ TEST(ShapeGrowth, ShortHairOfAStrokeThatStaysNearTheHeadLiesOnIt) {
   rules.on = true;
   // a stroke drifting off the head along +x at the crown's side, to 1.3 cm off at its end (as a
   // stroke drawn past the nape in a back view leaves the neck): under kDrawnLift
-  std::vector<double> pts;
   std::vector<float> lift;
-  for (int k = 0; k <= 10; ++k) {
-    const double x = 0.7 + 0.04 * k, y = 0.7 - 0.045 * k;
-    pts.insert(pts.end(), {x, y, 0});
-    lift.push_back(float(std::hypot(x, y) - kRadius));
-  }
+  const CurveReach reach = crownSideStroke(g, 0.04, lift);
   ASSERT_LT(*std::max_element(lift.begin(), lift.end()), kDrawnLift);
-  ReachCurve c;
-  c.points = pts.data();
-  c.count = 11;
-  c.setsLength = true;
-  c.lift = lift.data();
-  CurveReach reach;
-  buildCurveReach(g, {c}, reach);
   const std::vector<Eigen::Vector3f> roots = {{0.7f, 0.714f, 0}};
   GrowthParams gp;
   gp.maxLength = 0.5;  // short hair (kHugLength)

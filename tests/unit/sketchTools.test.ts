@@ -41,7 +41,11 @@ const line = (a: [number, number], b: [number, number], n = 40): Array<[number, 
 describe('StreamCurveTool', () => {
   const curve: Vec3[] = Array.from({ length: 17 }, (_, i) => [i * STEP, 0, 0] as Vec3);
   const eyeAbove: Vec3 = [2, 0.3, 10];
-  function setup(selected: boolean, scalp: (x: number, y: number) => boolean = (x) => x < 1) {
+  function setup(
+    selected: boolean,
+    scalp: (x: number, y: number) => boolean = (x) => x < 1,
+    viewDir?: Vec3,
+  ) {
     const log: { commits: Vec3[][]; hints: HintResult[]; notes: string[]; deselected: number } = {
       commits: [],
       hints: [],
@@ -58,7 +62,7 @@ describe('StreamCurveTool', () => {
       commit: (p) => log.commits.push(p),
       preview: () => {},
       notify: (m) => log.notes.push(m),
-      hintTarget: () => (selected ? { points: curve, surface } : null),
+      hintTarget: () => (selected ? { points: curve, surface, viewDir } : null),
       applyHint: (r) => log.hints.push(r),
       deselect: () => {
         log.deselected++;
@@ -153,20 +157,7 @@ describe('StreamCurveTool', () => {
 
   it('takes no hint from a view turned more than 60 degrees from the curve’s viewpoint', () => {
     const run = (viewDir: Vec3) => {
-      const log: { commits: Vec3[][]; hints: HintResult[] } = { commits: [], hints: [] };
-      const surface = buildSupportingSurface(curve, eyeAbove, 'strip', 6 * STEP);
-      const tool = new StreamCurveTool({
-        sample: sampler((x) => x < 1),
-        eye: () => EYE,
-        forward: () => FORWARD,
-        step: () => STEP,
-        showDraft: () => {},
-        commit: (p) => log.commits.push(p),
-        preview: () => {},
-        notify: () => {},
-        hintTarget: () => ({ points: curve, surface, viewDir }),
-        applyHint: (r) => log.hints.push(r),
-      });
+      const { tool, log } = setup(true, (x) => x < 1, viewDir);
       drag(tool, line([3, -1], [3, 1])); // across the curve, far on both sides: a cut
       return log;
     };
