@@ -165,4 +165,40 @@ describe('liftStroke from a camera looking down (a lock drawn hanging)', () => {
     if (!r.ok) throw new Error('expected ok');
     expect(r.points[1][1]).toBeCloseTo(1, 10);
   });
+
+  it('drapes points over the head below the scalp on it when looking straight down', () => {
+    // The unit sphere from above; its scalp is the cap above y = 0.5 (a crown), the rest is the
+    // "forehead". A stroke from the crown outwards: past the cap the rays still hit the sphere,
+    // lower down; each point lies STROKE_MARGIN in front of that hit along its ray (on the
+    // sphere's surface within the margin), not level with the cap's edge in the air.
+    const forward: Vec3 = [0, -1, 0];
+    const eye: Vec3 = [0, 5, 0];
+    const at = (x: number): StrokeSample => {
+      const direction = normalize(sub([x, 4, 0], eye));
+      const hit = sphereHit(eye, direction);
+      const headDistance = hit ? Math.hypot(...sub(hit, eye)) : null;
+      return { origin: eye, direction, scalpHit: hit && hit[1] > 0.5 ? hit : null, headDistance };
+    };
+    const xs = [0, 0.1, 0.17, 0.19, 0.195, 0.2, 0.203]; // the silhouette is at 1/sqrt(24) ≈ 0.204
+    const r = liftStroke(xs.map(at), eye, forward);
+    if (!r.ok) throw new Error('expected ok');
+    let lastScalpHeight = Number.NaN;
+    let draped = 0;
+    xs.forEach((x, i) => {
+      const s = at(x);
+      const p = r.points[i];
+      if (s.scalpHit) lastScalpHeight = s.scalpHit[1];
+      if (s.scalpHit || s.headDistance == null) return;
+      draped++;
+      // along its ray, STROKE_MARGIN short of the sphere: hand value from the hit distance
+      expect(Math.hypot(...sub(p, eye))).toBeCloseTo(s.headDistance - STROKE_MARGIN, 12);
+      expect(Math.hypot(...p)).toBeGreaterThan(R);
+      expect(Math.hypot(...p)).toBeLessThan(R + STROKE_MARGIN);
+    });
+    expect(draped).toBeGreaterThanOrEqual(3);
+    // the last point: by hand, the ray (0.203, -1) meets the sphere at y ≈ 0.30; the level rule
+    // would have held it at the last scalp point's height
+    expect(r.points[xs.length - 1][1]).toBeLessThan(0.4);
+    expect(lastScalpHeight).toBeGreaterThan(0.5);
+  });
 });

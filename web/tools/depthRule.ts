@@ -5,7 +5,10 @@
 // that faces the camera, so a lock or a ponytail drawn hanging from one view hangs plumb in the
 // depth that view cannot show (from a camera looking a little down, the plane square to the view
 // would lean it towards or away from the camera). Looking nearly straight down or up there is no
-// level direction to speak of, and depth is along the view itself. A point that depth
+// level direction to speak of, and depth is along the view itself; there a point over the head
+// off the scalp (a fringe drawn from the top view on over the forehead) lies on the head, at
+// STROKE_MARGIN in front of its surface, since a view from above shows no depth to keep: the
+// stroke drapes over the forehead instead of running out level past it as a visor. A point that depth
 // would put inside the head (a stroke passing over the face, the ears, the neck) is brought
 // forward along its ray to STROKE_MARGIN in front of the head's surface instead, so style
 // curves never run inside the head.
@@ -35,11 +38,16 @@ export function liftStroke(samples: readonly StrokeSample[], eye: Vec3, forward:
   const level = Math.hypot(forward[0], forward[2]);
   const depthAxis: Vec3 =
     level >= LEVEL_MIN ? [forward[0] / level, 0, forward[2] / level] : forward;
+  const steep = level < LEVEL_MIN;
   let depth = 0;
   for (const s of samples) {
     if (s.scalpHit) {
       depth = dot(sub(s.scalpHit, eye), depthAxis);
       points.push(s.scalpHit);
+    } else if (steep && s.headDistance != null) {
+      const p = add(s.origin, scale(s.direction, Math.max(0, s.headDistance - STROKE_MARGIN)));
+      depth = dot(sub(p, eye), depthAxis);
+      points.push(p);
     } else {
       const along = dot(s.direction, depthAxis);
       if (along <= 1e-9) continue; // a ray parallel to the depth plane has no point on it
