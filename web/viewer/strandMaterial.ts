@@ -83,6 +83,8 @@ uniform vec3 ambientColor;
 uniform vec3 headCenter; // strand normals point away from it
 uniform float rootDarkening; // roots are darker by this fraction
 uniform float hueVariation; // ± red/blue balance per strand
+// the largest tilt of a strand's shading tangent towards its normal (about 8 degrees)
+const float HIGHLIGHT_TILT = 0.14;
 uniform float precomputed; // 1: use the precomputed lighting attribute; 0: ignore it (all lit)
 #ifdef DEEP_OPACITY
 uniform sampler2D domDepth;
@@ -143,6 +145,13 @@ vec3 shadeStrand(vec3 T, vec3 P, vec2 along, vec4 rnd, vec2 light) {
   vec3 N = radial - T * dot(radial, T);
   N = dot(N, N) > 1e-10 ? normalize(N) : V;
   vec3 sigma = strandSigma(rnd, along);
+  // the shading tangent tilted towards N per strand and along it (shifted tangents, Scheuermann
+  // 2004): a head's hairs are not parallel (cuticle tilt, waves, strands crossing), so the key
+  // light's highlight breaks into strands instead of lying on the hair as one smooth band that
+  // rings a whorl (read as a cowlick) or outlines a fringe
+  float tilt = HIGHLIGHT_TILT * ((2.0 * fract(rnd.w * 13.71 + rnd.x * 3.17) - 1.0)
+    + 0.5 * sin(along.y * 25.0 + 6.2832 * rnd.z));
+  vec3 Ts = normalize(T + tilt * N);
   float beta = roughness * (1.0 + lookShares.w * (2.0 * fract(rnd.w * 7.31) - 1.0));
 
   float shadow = mix(1.0, light.x, precomputed);
@@ -154,7 +163,7 @@ vec3 shadeStrand(vec3 T, vec3 P, vec2 along, vec4 rnd, vec2 light) {
 #endif
   // root darkening: occlusion towards the scalp, on top of the hair's own occlusion
   float rootAo = mix(1.0 - rootDarkening, 1.0, smoothstep(0.0, 0.3, along.x));
-  vec3 key = keyColor * bsdfGain * hairBsdf(T, keyDirection, V, sigma, beta, shadow);
+  vec3 key = keyColor * bsdfGain * hairBsdf(Ts, keyDirection, V, sigma, beta, shadow);
   // fill and sky: the base colour (what a head of this hair scatters back), occluded
   vec3 base = hairBaseColor(sigma);
   float TF = dot(T, fillDirection);
