@@ -40,20 +40,70 @@ float combPath(const SectionGather& g, const Eigen::Vector3f& root, const Eigen:
   const Eigen::Vector3f foot = offHead(g, P, g.margin, sphere);
   const float ra = (root - c).norm(), rb = (foot - c).norm();
   const Eigen::Vector3f a = (root - c).normalized(), b = (foot - c).normalized();
-  float ang = std::acos(std::clamp(a.dot(b), -1.f, 1.f));
-  Eigen::Vector3f axis = a.cross(b);
-  if (!(axis.norm() > 1e-5f)) axis = a.cross(Eigen::Vector3f::UnitY());
-  if (!(axis.norm() > 1e-5f)) axis = a.cross(Eigen::Vector3f::UnitX());
-  axis.normalize();
-  // (ties on) hair is combed over the head, never under it across the face: when the short way
-  // from root to foot passes in front of the centre below the root (a forehead or temple root
-  // and a seat low on the nape: the short way runs down the face or the cheek), it goes the long
-  // way, over the crown
+  // (ties on) hair is combed back over the head, never down across the face: a root in front of
+  // a lower seat (a forehead root and a pigtail's band behind the ear, or a low ponytail's at the
+  // nape) is combed back towards a point at its own height above the seat (the waypoint w: the
+  // seat's bearing, the root's height) and round down to it; the short way from a forehead root
+  // near the parting to a band behind the ear ran across the temple at the eye's height as a strap
+  Eigen::Vector3f w = b;
+  const Eigen::Vector2f bh(b.x(), b.z());
+  const float high = std::max(a.y(), b.y());
+  const bool viaAbove =
+      smooth && b.y() < a.y() - 0.1f && a.z() - b.z() > 0.3f && bh.norm() > 0.2f && high < 0.95f;
+  if (viaAbove) {
+    const Eigen::Vector2f h = bh.normalized() * std::sqrt(1 - high * high);
+    w = Eigen::Vector3f(h.x(), high, h.y());
+  }
+  const auto legOf = [](const Eigen::Vector3f& from, const Eigen::Vector3f& to,
+                        Eigen::Vector3f& axis) {
+    axis = from.cross(to);
+    if (!(axis.norm() > 1e-5f)) axis = from.cross(Eigen::Vector3f::UnitY());
+    if (!(axis.norm() > 1e-5f)) axis = from.cross(Eigen::Vector3f::UnitX());
+    axis.normalize();
+    return std::acos(std::clamp(from.dot(to), -1.f, 1.f));
+  };
+  Eigen::Vector3f axis;
+  float ang = legOf(a, b, axis);
+  // (ties on) when the short way from root to foot passes in front of the centre below the root
+  // (a temple root and a seat low on the nape: the short way runs down the cheek), it goes the
+  // long way, over the crown
   const Eigen::Vector3f mid = (a + b).normalized();
-  if (smooth && (a + b).norm() > 1e-3f && mid.z() > 0 && mid.y() < a.y()) {
+  if (!viaAbove && smooth && (a + b).norm() > 1e-3f && mid.z() > 0 && mid.y() < a.y()) {
     ang = 2 * 3.14159265f - ang;
     axis = -axis;
   }
+  // via w: a quadratic Bezier on the sphere (slerps of slerps, de Casteljau), which turns down
+  // towards the seat gradually rather than at a corner above it, tabulated by its angle so that
+  // a share t of the route is a share t of its length
+  constexpr int kRouteSamples = 64;
+  std::vector<Eigen::Vector3f> route;
+  std::vector<float> turned;
+  if (viaAbove) {
+    const auto slerp = [](const Eigen::Vector3f& p, const Eigen::Vector3f& q, float t) {
+      const float om = std::acos(std::clamp(p.dot(q), -1.f, 1.f));
+      if (!(om > 1e-4f)) return Eigen::Vector3f(p);
+      return Eigen::Vector3f((std::sin((1 - t) * om) * p + std::sin(t * om) * q) / std::sin(om));
+    };
+    for (int k = 0; k <= kRouteSamples; ++k) {
+      const float t = float(k) / kRouteSamples;
+      route.push_back(slerp(slerp(a, w, t), slerp(w, b, t), t).normalized());
+      turned.push_back(k == 0 ? 0.f
+                              : turned.back() +
+                                    std::acos(std::clamp(route[k].dot(route[k - 1]), -1.f, 1.f)));
+    }
+    ang = turned.back();
+  }
+  // the direction at share t of the route's angle
+  const auto along = [&](float t) -> Eigen::Vector3f {
+    if (!viaAbove) return Eigen::AngleAxisf(t * ang, axis) * a;
+    const float at = t * ang;
+    const size_t k = std::min<size_t>(kRouteSamples - 1,
+                                      size_t(std::upper_bound(turned.begin(), turned.end(), at) -
+                                             turned.begin() - (at > 0 ? 1 : 0)));
+    const float span = turned[k + 1] - turned[k];
+    const float f = span > 0 ? std::clamp((at - turned[k]) / span, 0.f, 1.f) : 0.f;
+    return ((1 - f) * route[k] + f * route[k + 1]).normalized();
+  };
   const float arc = ang * 0.5f * (ra + rb) + (P - foot).norm();
   const float ds = std::max(step, arc / float(std::max<size_t>(maxPoints, 2)));
   const size_t n = std::max<size_t>(1, size_t(std::ceil(ang * 0.5f * (ra + rb) / ds)));
@@ -66,7 +116,7 @@ float combPath(const SectionGather& g, const Eigen::Vector3f& root, const Eigen:
   float length = 0;
   for (size_t i = 1; i <= n; ++i) {
     const float t = float(i) / float(n);
-    const Eigen::Vector3f d = Eigen::AngleAxisf(t * ang, axis) * a;
+    const Eigen::Vector3f d = along(t);
     Eigen::Vector3f x =
         offHead(g, c + d * (ra + t * (rb - ra)), g.margin + top * smoothstepf(t), sphere);
     if (smooth) x += smoothstepf((t - (1 - span)) / span) * rise;

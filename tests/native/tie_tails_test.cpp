@@ -212,6 +212,44 @@ TEST(TieTails, HairGatheredLowIsCombedOverTheCrownNotDownTheFace) {
   EXPECT_LT(off, 0.0f);  // before: down the face
 }
 
+// A pigtail's hair from the forehead by the parting goes back over the side of the head to its
+// band low behind the ear, not across the temple at the eye's height (fresh eyes' pigtails: a
+// strap from the parting to the outer corner of the eye). The band behind the +x ear, below the
+// centre; roots along the front hairline on the +x side of a centre parting.
+TEST(TieTails, AForeheadRootIsCombedBackOverTheSideToABandBehindTheEar) {
+  Head h;
+  h.strands.strandStart.push_back(0);
+  for (int j = 0; j <= 6; ++j) {
+    const float ph = 0.03f + 0.07f * float(j);
+    const Eigen::Vector3f r =
+        Eigen::Vector3f(0.5f * std::sin(ph), 0.5f, 0.866f * std::cos(ph)).normalized();
+    h.roots.push_back(r);
+    h.key.push_back(uint32_t(h.key.size()));
+    for (const Eigen::Vector3f& x : {r, Eigen::Vector3f(1.001f * r)})
+      h.strands.points.insert(h.strands.points.end(), {x.x(), x.y(), x.z()});
+    h.strands.strandStart.push_back(uint32_t(h.strands.points.size() / 3));
+  }
+  GatheredTail t = hanging(1.0f, TailShape::Round, true);
+  const Eigen::Vector3f band = Eigen::Vector3f(0.8f, -0.35f, -0.45f).normalized() * 1.05f;
+  for (Eigen::Vector3f& x : t.spine) x += band - kBand;
+  t.anchor = band.normalized();
+  const Strands s = grow(h, t, 4.f);
+  // in front of the ear (z > 0.2) the hair stays at the roots' height or above: the short way
+  // (a great circle from the hairline to the band) passes z 0.4 at y 0.15, beside the eye
+  float lowest = 1e9f;
+  int inFront = 0;
+  for (size_t p = 0; p < s.points.size() / 3; ++p) {
+    const Eigen::Vector3f x = pointOf(s, p);
+    if (x.z() > 0.2f) lowest = std::min(lowest, x.y()), ++inFront;
+  }
+  std::printf("[ties] forehead hair into a band behind the ear: lowest in front y = %.2f\n",
+              lowest);
+  ASSERT_GT(inFront, 0);
+  EXPECT_GT(lowest, 0.4f);
+  // and it reaches its band: every tip past the band's plane, below the roots
+  for (size_t st = 0; st < h.roots.size(); ++st) EXPECT_LT(tipOf(s, st).y(), 0.f);
+}
+
 // The growth says how wide a round tail's hair is at its band (its band hugs that): the tie's
 // radius for the hair it holds, and every laid strand passes the band's plane within it.
 TEST(TieTails, TheBandRadiusIsTheHairsRadiusAtTheTie) {
