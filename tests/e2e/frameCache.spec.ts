@@ -3,7 +3,7 @@
 // pointer events; waits on status attributes and the test API, never on fixed sleeps.
 import { writeFileSync } from 'node:fs';
 import { expect, type Page, test } from '@playwright/test';
-import { settled, status, watchConsole } from './helpers';
+import { settled, status, strokeFromScalp, watchConsole } from './helpers';
 
 interface Both {
   width: number;
@@ -195,4 +195,23 @@ test("a stroke's commit keeps the head cached: no frame is drawn whole before it
     `stroke commit: its hair shown ${r?.shown.toFixed(0)} ms after pointer-up; frames drawn whole before: ${r?.whole}`,
   );
   expect(r?.whole).toBe(0);
+});
+
+test('after Undo, answered from the cache, the hair is drawn in full, not thinned out', async ({
+  page,
+}) => {
+  // the bridge answers an Undo from its cache before the presenters hear of the edit; the view
+  // stayed interactive ("settling") after that answer, so the hair was drawn at interactive
+  // detail (a 64th of it on a software rasteriser) until the next edit
+  await page.goto('/?preset=empty&strands=1500');
+  let s = await settled(page);
+  await page.getByRole('button', { name: 'Stream curve' }).click();
+  for (const phi of [80, 110]) {
+    await strokeFromScalp(page, 30, phi, 10, 150);
+    s = await settled(page, s.revision);
+  }
+  await page.keyboard.press('Control+z');
+  s = await settled(page, s.revision);
+  expect(s.text).toContain('Undone');
+  expect(await page.evaluate(() => window.hairsketch.viewHolds())).toEqual([]);
 });

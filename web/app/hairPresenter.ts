@@ -39,6 +39,9 @@ export class HairPresenter {
   heapBytes = 0;
   /** The converged hair was handed to the view and no frame has drawn it yet. */
   private finalPending = false;
+  /** The bridge answered (a result or idle) in the task still running: an edit it hears of in the
+   *  same dispatch was answered from its cache before this presenter hears of it. */
+  private answered = false;
   /** Called when the converged hair is on screen (the moment to say "Ready"). */
   onFinalShown: (() => void) | null = null;
 
@@ -53,8 +56,11 @@ export class HairPresenter {
     editor.listen((c) => {
       // a no-op when it is the same colour (the editor replaces what it changes)
       this.hair.setLook(c.session.hairLook ?? null, c.session.hairColor);
-      // until the final hair is shown; a change the hair does not depend on brings none
-      if (c.sessionChanged && changesHair(c.previous, c.session))
+      // until the final hair is shown; a change the hair does not depend on brings none, nor one
+      // the bridge has already answered (it hears of each edit first: hair from its cache comes,
+      // and is idle, before this runs; holding then drew that hair at interactive detail until
+      // the next edit, as after Undo of a shaped ponytail)
+      if (c.sessionChanged && changesHair(c.previous, c.session) && !this.answered)
         this.viewer.hold('settling', true);
     });
   }
@@ -79,6 +85,7 @@ export class HairPresenter {
   }
 
   result(r: SolveResult, final: boolean): void {
+    this.markAnswered();
     const arrived = performance.now();
     this.heapBytes = r.stats.heapBytes;
     if (this.shown !== r.strands) {
@@ -121,7 +128,16 @@ export class HairPresenter {
   }
 
   idle(): void {
+    this.markAnswered();
     this.viewer.hold('settling', false);
+  }
+
+  private markAnswered(): void {
+    if (this.answered) return;
+    this.answered = true;
+    queueMicrotask(() => {
+      this.answered = false;
+    });
   }
 
   private stamp(): void {

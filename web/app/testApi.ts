@@ -37,6 +37,8 @@ export interface HairsketchTestApi {
   /** Fraction of the hair's segments the last frame drew (1 = all; less while interacting on a
    *  slow GPU). */
   hairDetail(): number;
+  /** Why the view draws hair at interactive detail (none: it draws all of it when settled). */
+  viewHolds(): string[];
   /** Benchmark probe: the median time in ms of `runs` frames of the current view drawn with
    *  every strand (GPU work included). */
   frameMs(runs?: number): number;
@@ -260,6 +262,7 @@ export function installTestApi(app: TestApiParts): void {
     lastPointerUp: () => app.lastPointerUp(),
     heapBytes: () => hair.heapBytes,
     hairDetail: () => viewer.hairDetail,
+    viewHolds: () => viewer.heldFor,
     gridPoints: () => {
       const d = app.bridge.grid.dims;
       return d[0] * d[1] * d[2];

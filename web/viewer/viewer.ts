@@ -320,6 +320,11 @@ export class Viewer {
     return this.dirty;
   }
 
+  /** Why the view is interactive (hair drawn at interactive detail): the reasons held. */
+  get heldFor(): string[] {
+    return [...this.holds];
+  }
+
   /** Marks the view interactive for `reason` (or not): hair is drawn at interactive detail
    *  while any reason holds, and in full once none does. */
   hold(reason: string, on: boolean): void {
