@@ -62,6 +62,23 @@ test('the default preset with a stroke: a short link that reopens the identical 
   const a = await page.evaluate(() => window.hairsketch.hairHash());
   expect(a).not.toBeNull();
   expect(await other.evaluate(() => window.hairsketch.hairHash())).toBe(a);
+
+  // a link pasted into the address bar of a tab already showing the app opens there too (fresh
+  // eyes' pasted link kept the old session), as one undoable edit
+  const withStroke = await page.evaluate(() => window.location.href);
+  let s = await settled(page);
+  await page.keyboard.press('Control+z');
+  s = await settled(page, s.revision);
+  // polled on a timer: this page is behind the other one, where animation frames do not run
+  await page.waitForFunction((old) => window.location.href !== old, withStroke, { polling: 50 });
+  const curvesBefore = s.curves;
+  await page.goto(withStroke); // the same document: only the fragment changes
+  s = await settled(page, s.revision);
+  expect(s.curves).toBe(curvesBefore + 1);
+  expect(await page.evaluate(() => window.hairsketch.hairHash())).toBe(a);
+  await page.keyboard.press('Control+z');
+  s = await settled(page, s.revision);
+  expect(s.curves).toBe(curvesBefore);
 });
 
 test('a link cut short says so and the preset loads instead', async ({ page }) => {

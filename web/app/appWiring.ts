@@ -66,8 +66,8 @@ export function closeOverlay(
   return true;
 }
 
-/** A session link in the address bar (#s=…) opens; without one the address bar carries the
- *  session from the start. */
+/** A session link in the address bar (#s=…) opens, at the start and whenever one is pasted
+ *  there; without one the address bar carries the session from the start. */
 export function openStartingLink(p: {
   editor: Editor;
   status: StatusPresenter;
@@ -75,12 +75,18 @@ export function openStartingLink(p: {
   headStore: ReturnType<typeof indexedDbHeadStore>;
 }): void {
   const { editor, status, links, headStore } = p;
-  if (window.location.hash.startsWith('#s='))
-    void openSessionLinkOutcome(editor, window.location.hash, headStore).then((o) => {
+  const open = (pasted: boolean) =>
+    void openSessionLinkOutcome(editor, window.location.hash, headStore, pasted).then((o) => {
       if (o.kind === 'failed') status.error(o.message);
       else links.markLinked(editor.session);
     });
+  if (window.location.hash.startsWith('#s=')) open(false);
   else links.schedule();
+  // a link pasted into the address bar of a tab that shows the app opens too (the app writes its
+  // own link with replaceState, which fires no hashchange): one undoable edit, as Open is
+  window.addEventListener('hashchange', () => {
+    if (window.location.hash.startsWith('#s=')) open(true);
+  });
 }
 
 /** The selected curve's panel: its parameters, "Extend past the end", "Braid the tail". */

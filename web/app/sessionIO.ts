@@ -20,7 +20,12 @@ import { decodeSessionLink, encodeSessionLink } from '../model/sessionLink';
 import type { Vec3 } from '../model/vec3';
 import type { PictureStore } from '../reference/pictureStore';
 
-export type LoadSource = { kind: 'file'; name: string } | { kind: 'link' } | { kind: 'test' };
+/** Where a session comes from; a link opened at the start begins the history, one pasted into
+ *  the address bar later (`pasted`) is an undoable edit, as Open is. */
+export type LoadSource =
+  | { kind: 'file'; name: string }
+  | { kind: 'link'; pasted?: boolean }
+  | { kind: 'test' };
 
 /** Largest file "Open" reads, and largest JSON session file (a JavaScript string holds at most
  *  ~536M characters; a session file embedding a large head is mostly its base64). */
@@ -74,7 +79,7 @@ function applySession(
     session,
     what,
     camera,
-    resetHistory: from.kind === 'link',
+    resetHistory: from.kind === 'link' && !from.pasted,
   });
 }
 
@@ -174,6 +179,7 @@ export async function openSessionLinkOutcome(
   editor: Editor,
   fragment: string,
   heads?: HeadStore,
+  pasted = false,
 ): Promise<OpenOutcome> {
   if (!fragment.startsWith('#s=')) return { kind: 'opened', message: null };
   const decoded = await decodeSessionLink(fragment);
@@ -182,7 +188,7 @@ export async function openSessionLinkOutcome(
       kind: 'failed',
       message: `Could not open the link: ${decoded.error}. Showing the preset instead.`,
     };
-  return openParsed(editor, decoded.value, { kind: 'link' }, undefined, heads);
+  return openParsed(editor, decoded.value, { kind: 'link', pasted }, undefined, heads);
 }
 
 /** Opens the session a link carries (#s=…); the sentence for the status line when the link is
