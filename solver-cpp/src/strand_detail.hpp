@@ -87,8 +87,8 @@ struct FrizzParams {
 
 struct FlyawayParams {
   double share = 0;        // 0..1: fraction of strands that fly away; 0 = off
-  double distance = 0.15;  // world units at the tip
-  double start = 0.5;      // fraction of the length where a flyaway leaves the groom
+  double distance = 0.12;  // world units at the tip
+  double start = 0.55;     // fraction of the length where a flyaway leaves the groom
 };
 
 struct DetailParams {

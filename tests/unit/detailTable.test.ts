@@ -40,7 +40,7 @@ const read = (detail: unknown) =>
   parseSession(JSON.parse(JSON.stringify({ ...base, detail })) as unknown);
 
 describe('the detail table, the reader and the packing agree', () => {
-  it('the flyaway block: share of strands 0..0.2 (2 %), distance 1.5 cm, start half the length', () => {
+  it('the flyaway block: share of strands 0..0.2 (1 %), distance 1.2 cm, start 0.55 of the length', () => {
     expect(DETAIL_BLOCKS).toEqual(['curl', 'clump', 'frizz', 'flyaway']);
     const rows = DETAIL_PARAMS.flyaway.map((p: DetailParamSpec) => [
       p.key,
@@ -49,9 +49,9 @@ describe('the detail table, the reader and the packing agree', () => {
       p.max,
     ]);
     expect(rows).toEqual([
-      ['share', 0.02, 0, 0.2],
-      ['distance', 0.15, 0, 0.5],
-      ['start', 0.5, 0, 0.95],
+      ['share', 0.01, 0, 0.2],
+      ['distance', 0.12, 0, 0.5],
+      ['start', 0.55, 0, 0.95],
     ]);
     // the Hair panel's rows: "Flyaway share", "Flyaway distance" (in cm), "Flyaway start"
     const labels = DETAIL_PARAMS.flyaway.map((p) => `Flyaway ${p.label.toLowerCase()}`);
@@ -109,7 +109,7 @@ describe('the detail table, the reader and the packing agree', () => {
     expect(bad({ spread: 1 })).toBe(
       'session.detail.flyaway.spread: is not a field hairsketch knows',
     );
-    const missing = read({ flyaway: { share: 0.02, distance: 0.15 } });
+    const missing = read({ flyaway: { share: 0.01, distance: 0.12 } });
     expect(missing.ok ? 'accepted' : missing.error).toBe(
       'session.detail.flyaway.start: must be a finite number',
     );

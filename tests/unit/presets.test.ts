@@ -97,7 +97,7 @@ describe('presets', () => {
     expect(d.clump?.tipSpread).toBeGreaterThan(0);
     expect(d.lengthJitter).toBeGreaterThan(0);
     expect(d.lengthJitter).toBeLessThanOrEqual(0.15);
-    expect(d.flyaway).toEqual({ share: 0.02, distance: 0.15, start: 0.5 });
+    expect(d.flyaway).toEqual({ share: 0.01, distance: 0.12, start: 0.55 });
     // the reader keeps it as it is
     const read = parseSession(JSON.parse(JSON.stringify(fresh)));
     expect(read.ok && read.value).toEqual(fresh);

@@ -536,11 +536,11 @@ export const CURLY_DETAIL: HairDetail = {
 
 /** The detail a new session (the `empty` preset) starts with: natural hair at arm's length,
  *  strands and subtle clumps rather than a smooth shell (issue 50): strands drawn part of the way
- *  onto clumps about 1.2 cm apart, loosening towards the tips, ends a little uneven and a few
- *  flyaways (DETAIL_PARAMS' defaults). Chosen by eye from renders of new sessions with a few
+ *  half-way onto clumps about 1.5 cm apart, loosening towards the tips, ends a little uneven and
+ *  a few flyaways (DETAIL_PARAMS' defaults: 1 % of the strands). Chosen by eye from renders of new sessions with a few
  *  strokes, Fast and High. */
 export const NEW_SESSION_DETAIL: HairDetail = {
-  clump: { factor: 0.4, shape: 0.5, tipSpread: 0.004, guideDistance: 0.12 },
+  clump: { factor: 0.5, shape: 0.5, tipSpread: 0.006, guideDistance: 0.15 },
   flyaway: defaultBlock('flyaway'),
   lengthJitter: 0.1,
 };
