@@ -56,7 +56,8 @@ std::vector<uint32_t> iota(size_t n) {
 
 // n straight strands from roots spread over the upper part of a unit sphere round kCentre (a
 // head), each leaving its root along the surface (a tangent, turned by its index) with 80 points
-// 0.005 apart (3.95 cm); every 10th strand points straight out instead (no direction across it is "out").
+// 0.005 apart (3.95 cm); every 10th strand points straight out instead (no direction across it
+// is "out").
 std::vector<Strand> hairOnASphere(int n) {
   std::vector<Strand> out;
   for (int k = 0; k < n; ++k) {
