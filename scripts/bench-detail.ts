@@ -1,6 +1,6 @@
 // npm run bench:detail — the cost of hair detail in the growth step (the same wasm under Node):
 // the default preset's session grown from scratch with each detail block alone and all together
-// (the curly preset's values), printing growth time (roots, strands, detail, keeping points
+// (the curly preset's values), and with a new session's detail (the empty preset's), printing growth time (roots, strands, detail, keeping points
 // outside the head), points, and the segments or segment midpoints inside the head (exact SDF).
 // Writes bench-results/detail.{json,md}.
 //   npx tsx scripts/bench-detail.ts [strands]     (default: every root, 29,948)
@@ -11,7 +11,7 @@ import { growSessionHair } from '../web/export/growSession';
 import { Head } from '../web/head/head';
 import type { HairDetail } from '../web/model/detail';
 import { gridForSession } from '../web/model/grid';
-import { CURLY_DETAIL } from '../web/model/presets';
+import { CURLY_DETAIL, NEW_SESSION_DETAIL } from '../web/model/presets';
 import { hangLength } from '../web/model/session';
 import { loadSolverEngine } from '../web/solver/wasmEngine';
 import { writeBenchResults } from './benchResults.mjs';
@@ -27,7 +27,9 @@ const cases: Array<[string, HairDetail | undefined]> = [
   ['clump', { clump: CURLY_DETAIL.clump }],
   ['frizz', { frizz: CURLY_DETAIL.frizz }],
   ['length jitter', { lengthJitter: CURLY_DETAIL.lengthJitter }],
+  ['flyaway', { flyaway: NEW_SESSION_DETAIL.flyaway }],
   ['all (curly)', CURLY_DETAIL],
+  ["a new session's (clump, jitter, flyaway)", NEW_SESSION_DETAIL],
 ];
 
 async function main(): Promise<void> {
@@ -90,12 +92,13 @@ async function main(): Promise<void> {
     });
   }
   writeBenchResults('detail', {
-    title: 'Hair detail: the cost of curl, clump, frizz and length jitter in growth',
+    title: 'Hair detail: the cost of curl, clump, frizz, flyaway and length jitter in growth',
     script: 'scripts/bench-detail.ts',
     command: 'npm run bench:detail',
     measures:
       "The default preset's session grown from scratch (wasm under Node, fast solver, 25k grid) " +
-      "with each detail block alone and all four together (the curly preset's values): growth " +
+      "with each detail block alone, the curly preset's detail and a new session's (the empty " +
+      "preset's: clump, length jitter, flyaway): growth " +
       'time measured in wasm (roots, strands, detail, keeping points outside the head; median of ' +
       '3 runs, each on a fresh engine), strand and point counts, and the segments whose midpoint ' +
       'or end lies more than 1 mm inside the head (exact signed distance).',

@@ -193,7 +193,10 @@ DetailParams detailFromArray(const double* d) {
   p.clump.guideDistance = d[7];
   p.frizz.distance = d[8];
   p.frizz.shape = d[9];
-  p.lengthJitter = d[10];
+  p.flyaway.share = d[10];
+  p.flyaway.distance = d[11];
+  p.flyaway.start = d[12];
+  p.lengthJitter = d[13];
   return p;
 }
 

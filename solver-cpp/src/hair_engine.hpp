@@ -25,7 +25,7 @@
 namespace hairsketch {
 
 // hairArrays.ts DetailArrays: the numbers of one detail group, in this order.
-constexpr int kDetailStride = 11;
+constexpr int kDetailStride = 14;
 DetailParams detailFromArray(const double* d);  // d[0 .. kDetailStride)
 
 class HairEngine {

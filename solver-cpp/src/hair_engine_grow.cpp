@@ -205,7 +205,7 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
           groupOf[k] = uint32_t(curveGroup_[curve]);
       }
     s = applyDetail(detail_.empty() ? std::vector<DetailParams>{DetailParams{}} : detail_, groupOf,
-                    key, rp.seed, strands_, 255, finish_ ? &endSpread : nullptr, finish_);
+                    key, rp.seed, strands_, 255, finish_ ? &endSpread : nullptr, finish_, &centre_);
     // cutting ends back moves no point: only detail needs keeping outside again
     if (head && anyDetail) {
       keepOutsideHead(*head, float(gp.margin), strands_);

@@ -37,13 +37,17 @@ Status validateDetail(const DetailParams& d) {
   if (!nonNegative(d.clump.guideDistance)) return rangeError("clump.guideDistance", kNonNeg);
   if (!nonNegative(d.frizz.distance)) return rangeError("frizz.distance", kNonNeg);
   if (!shape(d.frizz.shape)) return rangeError("frizz.shape", kShape);
+  if (!unit(d.flyaway.share)) return rangeError("flyaway.share", kUnit);
+  if (!nonNegative(d.flyaway.distance)) return rangeError("flyaway.distance", kNonNeg);
+  if (!unit(d.flyaway.start)) return rangeError("flyaway.start", kUnit);
   if (!unit(d.lengthJitter)) return rangeError("lengthJitter", kUnit);
   return Status::Ok();
 }
 
 Status applyDetail(const std::vector<DetailParams>& groups, const std::vector<uint32_t>& groupOf,
                    const std::vector<uint32_t>& key, uint32_t seed, Strands& strands, int maxPoints,
-                   const std::vector<float>* endSpread, bool ringlets) {
+                   const std::vector<float>* endSpread, bool ringlets,
+                   const Eigen::Vector3d* headCentre) {
   using namespace strand_detail;
   auto invalid = [](std::string m) {
     return Status::Error(StatusCode::InvalidInput, std::move(m));
@@ -82,7 +86,7 @@ Status applyDetail(const std::vector<DetailParams>& groups, const std::vector<ui
     const float v = endSpread ? (*endSpread)[s] : 0.f;
     return std::isfinite(v) && v > 0 ? double(v) : 0.0;
   };
-  bool work = false, anyCurl = false, anyClump = false, anyCurlOrFrizz = false;
+  bool work = false, anyCurl = false, anyClump = false, anyCurlOrFrizz = false, anyFly = false;
   for (size_t s = 0; s < nS; ++s) {
     const size_t count = start[s + 1] - start[s];
     const DetailParams& d = groups[groupOf[s]];
@@ -91,6 +95,7 @@ Status applyDetail(const std::vector<DetailParams>& groups, const std::vector<ui
     anyCurl |= active && d.curl.radius > 0;
     anyClump |= active && d.clump.factor > 0 && d.clump.guideDistance > 0;
     anyCurlOrFrizz |= active && (d.curl.radius > 0 || d.frizz.distance > 0);
+    anyFly |= active && d.flyaway.share > 0 && d.flyaway.distance > 0;
   }
   if (!work) return Status::Ok();
   Work w;
@@ -145,7 +150,21 @@ Status applyDetail(const std::vector<DetailParams>& groups, const std::vector<ui
     }
   }
 
-  // 3. Curl and frizz, strand by strand (curl may add points: then into a new buffer).
+  // 3. Flyaways, strand by strand (in place: the point count stays).
+  if (anyFly) {
+    const V3 centre = headCentre ? *headCentre : V3::Zero();
+    float* P = strands.points.data();
+    for (size_t s = 0; s < nS; ++s) {
+      const size_t count = start[s + 1] - start[s];
+      const FlyawayParams& f = groups[groupOf[s]].flyaway;
+      if (count < 2 || !flyawayPicked(f, seed, key[s])) continue;
+      load(P + 3 * size_t(start[s]), count, w.p);
+      flyaway(f, seed, key[s], centre, w);
+      store(w.p, P + 3 * size_t(start[s]));
+    }
+  }
+
+  // 4. Curl and frizz, strand by strand (curl may add points: then into a new buffer).
   if (anyCurlOrFrizz) {
     // with ringlets a strand curls as its clump's ringlet (ringletOf)
     auto curlOf = [&](size_t s) {

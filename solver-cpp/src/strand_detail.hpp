@@ -1,5 +1,6 @@
-// Hair detail on grown strands: length jitter, clump, curl, frizz (parameters as Blender names
-// them; docs/user-guide.md "Detail"), applied in that order. World units (1 = 10 cm). For a strand
+// Hair detail on grown strands: length jitter, clump, flyaway, curl, frizz (parameters as Blender
+// names them, but flyaway, which Blender has not; docs/user-guide.md "Detail"), applied in that
+// order. World units (1 = 10 cm). For a strand
 // with points p_0 (root) .. p_{n-1}, arc length s_i along its current path, length L = s_{n-1} and
 // normalised arc length x_i = s_i / L (0 root .. 1 tip):
 //
@@ -26,6 +27,16 @@
 //   guide's rotation-minimising frame there and phi a seeded per-strand angle. Guides keep their
 //   shape and strands follow the guides' un-clumped shape. f = 1, s = 0, t = 0: every point lands
 //   on the guide, the tip on its tip when the strand is at least as long.
+// Flyaway (share h, distance D, start a), with the head's centre c (the origin when none is given):
+//   a strand is a flyaway when u_0 < h, u_0 the first draw of its own stream (seeded by its key);
+//   two more draws give its side angle phi = 0.5 (2 u_1 - 1) rad and bend beta = 0.25 D (2 u_2 -
+//   1). With v_i = (x_i - a) / (1 - a) for x_i > a (the path after clump; nothing moves up to a):
+//     p_i <- p_i + D v_i^2 (cos phi R_i + sin phi B_i) + beta sin^2(pi v_i) B_i,
+//   T_i the path's tangent (p_{i+1} - p_{i-1}, one-sided at the ends), R_i the unit part of
+//   p_i - c normal to T_i (away from the head, across the strand; any unit normal of T_i when
+//   the strand points straight out, within 1e-3 rad), B_i = T_i x R_i. The tip moves by exactly D;
+//   as (p_i - c) . B_i = 0 and (p_i - c) . R_i >= 0, no point comes closer to c than it was: a
+//   stray hair that leaves its clump, smoothly (v^2, sin^2: no kink at a), not frizz.
 // Curl (radius r, frequency q turns per unit of arc length, start a, randomOffset o): the strand is
 //   first resampled evenly by arc length to m = min(maxPoints, max(n, ceil(12 q L) + 1)) points
 //   (at least 12 a turn unless the cap binds), s_k = L k / (m - 1); then around that path
@@ -41,10 +52,12 @@
 // group has nothing on are left bit-identical, unless they have more than maxPoints points: every
 // strand ends with at most maxPoints points (a longer one is resampled evenly by arc length to
 // maxPoints, root and tip kept). Randomness comes from Pcg32 seeded with (seed, key[s]) and a
-// stream per use, so a strand's jitter, curl phase, frizz and tip spread do not depend on which
-// other strands are grown; clump guides do (they are chosen among the strands present).
+// stream per use, so a strand's jitter, curl phase, frizz, tip spread and whether (and how) it
+// flies away do not depend on which other strands are grown; clump guides do (they are chosen
+// among the strands present).
 #pragma once
 
+#include <Eigen/Core>
 #include <cstdint>
 #include <vector>
 
@@ -72,13 +85,21 @@ struct FrizzParams {
   double shape = 0.5;
 };
 
+struct FlyawayParams {
+  double share = 0;        // 0..1: fraction of strands that fly away; 0 = off
+  double distance = 0.12;  // world units at the tip
+  double start = 0.55;     // fraction of the length where a flyaway leaves the groom
+};
+
 struct DetailParams {
   CurlParams curl;
   ClumpParams clump;
   FrizzParams frizz;
+  FlyawayParams flyaway;
   double lengthJitter = 0;  // 0..1
   bool any() const {
-    return curl.radius > 0 || clump.factor > 0 || frizz.distance > 0 || lengthJitter > 0;
+    return curl.radius > 0 || clump.factor > 0 || frizz.distance > 0 || lengthJitter > 0 ||
+           (flyaway.share > 0 && flyaway.distance > 0);
   }
 };
 
@@ -86,8 +107,8 @@ struct DetailParams {
 double shapeFalloff(double x, double s);
 
 // InvalidInput naming the field ("detail: curl.radius must be finite and >= 0") if a parameter is
-// out of range: radius, frequency, tipSpread, guideDistance, distance finite and >= 0; factor,
-// start, randomOffset, lengthJitter in [0, 1]; shapes in [-1, 1].
+// out of range: radius, frequency, tipSpread, guideDistance, distances finite and >= 0; factor,
+// starts, randomOffset, share, lengthJitter in [0, 1]; shapes in [-1, 1].
 Status validateDetail(const DetailParams& d);
 
 // groups: the detail parameter sets; groupOf[s]: which set strand s uses (size = strand count);
@@ -99,10 +120,11 @@ Status validateDetail(const DetailParams& d);
 // hair that ends at one line (a bob, a fringe, a length cap) ends over a little band instead.
 // ringlets: a clumped strand curls in phase with its clump's guide, so a clump's strands wind
 // round together (ringlets) instead of each at its own phase (a crimped texture).
+// headCentre (optional): the head's centre flyaways move away from (the origin when absent).
 Status applyDetail(const std::vector<DetailParams>& groups, const std::vector<uint32_t>& groupOf,
                    const std::vector<uint32_t>& key, uint32_t seed, Strands& strands,
                    int maxPoints = 255, const std::vector<float>* endSpread = nullptr,
-                   bool ringlets = false);
+                   bool ringlets = false, const Eigen::Vector3d* headCentre = nullptr);
 
 // The end spread of sessions with finished edges (world units: 1.2 cm), and the most of a
 // strand's length it may take.

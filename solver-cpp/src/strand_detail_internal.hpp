@@ -1,7 +1,8 @@
 // Internal to hair detail (strand_detail.hpp): what its translation units share. applyDetail
 // (strand_detail.cpp) runs the steps in order; the polyline helpers are in
 // strand_detail_polyline.cpp, curl and frizz in strand_detail_curl_frizz.cpp, clump in
-// strand_detail_clump.cpp. Not part of the solver's API: only those files include it.
+// strand_detail_clump.cpp, flyaways in strand_detail_flyaway.cpp. Not part of the solver's API:
+// only those files include it.
 #pragma once
 
 #include <Eigen/Core>
@@ -27,6 +28,7 @@ constexpr uint64_t kStreamCurl = 0x082efa98ec4e6c89ULL;
 constexpr uint64_t kStreamFrizz = 0x452821e638d01377ULL;
 constexpr uint64_t kStreamEndSpread = 0xbe5466cf34e90c6cULL;
 constexpr uint64_t kStreamRinglet = 0x3f84d5b5b5470917ULL;
+constexpr uint64_t kStreamFlyaway = 0x9216d5d98979fb1bULL;
 
 inline Pcg32 strandRng(uint32_t seed, uint32_t key, uint64_t stream) {
   return Pcg32((uint64_t(seed) << 32) | key, stream);
@@ -119,5 +121,13 @@ void curlAndFrizz(const DetailParams& d, uint32_t seed, uint32_t key, uint32_t p
 void clumpGroup(const ClumpParams& c, const std::vector<uint32_t>& members,
                 const std::vector<uint32_t>& key, uint32_t seed, Strands& strands, Work& w,
                 std::vector<uint32_t>* phaseKey);
+
+// Flyaway (strand_detail_flyaway.cpp).
+
+// Whether the strand of `key` is a flyaway (its seeded pick; false when share or distance is 0).
+bool flyawayPicked(const FlyawayParams& f, uint32_t seed, uint32_t key);
+
+// Moves a picked strand (w.p, in place) away from `centre` past f.start of its length.
+void flyaway(const FlyawayParams& f, uint32_t seed, uint32_t key, const V3& centre, Work& w);
 
 }  // namespace hairsketch::strand_detail

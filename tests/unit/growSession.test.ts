@@ -10,6 +10,7 @@ import { Head } from '../../web/head/head';
 import { packCurves, packHairOptions } from '../../web/model/curveSet';
 import { gridForPreset } from '../../web/model/grid';
 import type { StrandArrays } from '../../web/model/hairArrays';
+import { NEW_SESSION_DETAIL } from '../../web/model/presets';
 import type { SessionState } from '../../web/model/session';
 import type { FromWorker } from '../../web/solver/protocol';
 import { loadSolverEngine } from '../../web/solver/wasmEngine';
@@ -135,12 +136,34 @@ describe('growSessionHair', () => {
     expect(withOwn.equals(withDetail)).toBe(false);
   });
 
+  it("flyaways: a block that is off changes no bit (a session saved before them keeps its hair); on, the new session's detail moves strands", async () => {
+    const points = async (s: SessionState) =>
+      bytes((await grow('fast', 2000, s)).hair.strands.points);
+    const before = await points(curly);
+    const off = { share: 0, distance: 0.15, start: 0.5 };
+    expect(
+      (await points({ ...curly, detail: { ...curly.detail, flyaway: off } })).equals(before),
+    ).toBe(true);
+    const on = { ...curly, detail: { ...curly.detail, flyaway: { ...off, share: 0.05 } } };
+    expect((await points(on)).equals(before)).toBe(false);
+    const natural = await points({ ...session, detail: NEW_SESSION_DETAIL });
+    expect(natural.equals(await points(session))).toBe(false);
+  });
+
   it('keeps every grown point after the root outside the head, with and without detail', async () => {
     for (const [label, s] of [
       ['default', session],
       ['default, avoid scalp', { ...session, avoidScalp: true }],
       ['curly', curly],
       ['styled', styled],
+      // a new session's detail, with more (and farther) flyaways than it has
+      [
+        'natural',
+        {
+          ...session,
+          detail: { ...NEW_SESSION_DETAIL, flyaway: { share: 0.2, distance: 0.5, start: 0.2 } },
+        },
+      ],
     ] as const) {
       const { strands } = (await grow('fast', 2000, s)).hair;
       const P = strands.points;

@@ -5,7 +5,14 @@ import { Head } from '../../web/head/head';
 import { headSdf } from '../../web/head/headSdf';
 import { packCurves } from '../../web/model/curveSet';
 import { gridForPreset } from '../../web/model/grid';
-import { applyPreset, type PresetName, presetCurves } from '../../web/model/presets';
+import {
+  applyPreset,
+  CURLY_DETAIL,
+  NEW_SESSION_DETAIL,
+  PRESET_NAMES,
+  type PresetName,
+  presetCurves,
+} from '../../web/model/presets';
 import { emptySession } from '../../web/model/session';
 import { parseSession } from '../../web/model/sessionFile';
 import { distance, type Vec3 } from '../../web/model/vec3';
@@ -74,5 +81,30 @@ describe('presets', () => {
     expect(read.ok && read.value).toEqual(curly);
     const fig6 = applyPreset(curly, 'fig6', ctx);
     expect(Object.keys(fig6)).not.toContain('detail');
+  });
+
+  it('a new session (empty) has natural detail: subtle clumps, uneven ends, a few flyaways; the other presets keep theirs', () => {
+    const fresh = applyPreset(emptySession('25k'), 'empty', ctx);
+    expect(fresh.detail).toEqual(NEW_SESSION_DETAIL);
+    const d = fresh.detail ?? {};
+    expect(d.curl).toBeUndefined();
+    expect(d.frizz).toBeUndefined();
+    // subtle: strands part of the way onto clumps 1–1.5 cm apart, a little tip spread
+    expect(d.clump?.factor).toBeGreaterThanOrEqual(0.3);
+    expect(d.clump?.factor).toBeLessThanOrEqual(0.5);
+    expect(d.clump?.guideDistance).toBeGreaterThanOrEqual(0.1);
+    expect(d.clump?.guideDistance).toBeLessThanOrEqual(0.15);
+    expect(d.clump?.tipSpread).toBeGreaterThan(0);
+    expect(d.lengthJitter).toBeGreaterThan(0);
+    expect(d.lengthJitter).toBeLessThanOrEqual(0.15);
+    expect(d.flyaway).toEqual({ share: 0.01, distance: 0.12, start: 0.55 });
+    // the reader keeps it as it is
+    const read = parseSession(JSON.parse(JSON.stringify(fresh)));
+    expect(read.ok && read.value).toEqual(fresh);
+    // every other preset: no detail, or the curly preset's own
+    for (const name of PRESET_NAMES.filter((n) => n !== 'empty')) {
+      const s = applyPreset(emptySession('25k'), name, ctx);
+      expect([name, s.detail]).toEqual([name, name === 'curly' ? CURLY_DETAIL : undefined]);
+    }
   });
 });

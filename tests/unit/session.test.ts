@@ -124,18 +124,35 @@ describe('session with every curve kind', () => {
 });
 
 describe('packHairOptions (solve options: avoid scalp and detail groups)', () => {
-  // Group layout (protocol.ts DETAIL_GROUP_STRIDE = 11): curl radius, frequency, start,
-  // randomOffset; clump factor, shape, tipSpread, guideDistance; frizz distance, shape;
-  // lengthJitter. An absent block is off: its first number is 0.
+  // Group layout (protocol.ts DETAIL_GROUP_STRIDE = 14): curl radius, frequency, start,
+  // randomOffset; clump factor, shape, tipSpread, guideDistance; frizz distance, shape; flyaway
+  // share, distance, start; lengthJitter (solver-cpp/src/hair_engine.cpp detailFromArray). An
+  // absent block is off: its first number is 0.
   const CURL = 0;
   const CLUMP = 4;
   const FRIZZ = 8;
-  const JITTER = 10;
+  const FLYAWAY = 10;
+  const JITTER = 13;
   const group = (o: { groups: Float64Array }, g: number) =>
     Array.from(o.groups.subarray(DETAIL_GROUP_STRIDE * g, DETAIL_GROUP_STRIDE * (g + 1)));
 
-  it('has 11 numbers per group', () => {
-    expect(DETAIL_GROUP_STRIDE).toBe(11);
+  it('has 14 numbers per group', () => {
+    expect(DETAIL_GROUP_STRIDE).toBe(14);
+  });
+
+  it('packs a flyaway block after frizz; absent, its share is 0 (off)', () => {
+    const flying: HairDetail = {
+      frizz: { distance: 0.006, shape: -0.4 },
+      flyaway: { share: 0.05, distance: 0.2, start: 0.6 },
+      lengthJitter: 0.1,
+    };
+    const o = packHairOptions({ detail: flying }, [stream, { ...stream, id: 'c2', detail: {} }]);
+    const g0 = group(o.detail, 0);
+    expect(g0.slice(FRIZZ, FRIZZ + 2)).toEqual([0.006, -0.4]);
+    expect(g0.slice(FLYAWAY, FLYAWAY + 3)).toEqual([0.05, 0.2, 0.6]);
+    expect(g0[JITTER]).toBe(0.1);
+    expect(group(o.detail, 1)[FLYAWAY]).toBe(0);
+    expect(group(o.detail, 1)[JITTER]).toBe(0);
   });
 
   it('group 0 is the session detail; a curve with its own detail gets its own group', () => {
@@ -187,7 +204,7 @@ describe('packHairOptions (solve options: avoid scalp and detail groups)', () =>
     expect(o.detail.groups.length).toBe(DETAIL_GROUP_STRIDE);
     expect(Array.from(o.detail.curveGroup)).toEqual([0, 0]);
     const g0 = group(o.detail, 0);
-    expect([g0[CURL], g0[CLUMP], g0[FRIZZ], g0[JITTER]]).toEqual([0, 0, 0, 0]);
+    expect([g0[CURL], g0[CLUMP], g0[FRIZZ], g0[FLYAWAY], g0[JITTER]]).toEqual([0, 0, 0, 0, 0]);
     expect(packHairOptions({ avoidScalp: false }, []).avoidScalp).toBe(false);
     expect(packHairOptions({}, []).detail.curveGroup.length).toBe(0);
   });

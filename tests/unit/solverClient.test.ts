@@ -392,7 +392,7 @@ describe('SolverClient', () => {
     client.request(curves(2), DEFAULT_GROWTH, o);
     const sent = workers[0].solves()[0].options;
     expect(sent.avoidScalp).toBe(true);
-    expect(sent.detail.groups[10]).toBe(0.4); // group 0's lengthJitter
+    expect(sent.detail.groups[13]).toBe(0.4); // group 0's lengthJitter
     expect(Array.from(sent.detail.curveGroup)).toEqual([0, 0]);
     workers[0].die();
     workers[1].reply({ type: 'ready', gridPoints: 8, roots: 0 });

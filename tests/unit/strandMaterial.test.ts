@@ -15,6 +15,8 @@ import {
   setHairColor,
   setHairLook,
   setLightDirection,
+  strandWidthFactor,
+  WIDTH_VARIATION,
 } from '../../web/viewer/strandMaterial';
 
 describe('buildStrandGeometry', () => {
@@ -198,6 +200,61 @@ describe('createStrandMaterial', () => {
     const blended = createStrandMaterial({ kind: 'strips' });
     expect(blended.transparent).toBe(true);
     expect(blended.depthWrite).toBe(false);
+  });
+});
+
+describe('per-strand width', () => {
+  // 20,000 strands' random bytes as the shaders read them (normalised: byte / 255)
+  const n = 20_000;
+  const pts = new Float32Array(6 * n);
+  const start = new Uint32Array(n + 1);
+  for (let s = 0; s <= n; s++) start[s] = 2 * s;
+  for (let s = 0; s < n; s++) pts[6 * s + 4] = 0.1;
+  const random = buildStrandGeometry(pts, start, 7).getAttribute('strandRandom')
+    .array as Uint8Array;
+  const factors: number[] = [];
+  const value: number[] = [];
+  for (let s = 0; s < n; s++) {
+    const r = [0, 1, 2, 3].map((c) => random[8 * s + c] / 255) as [number, number, number, number];
+    factors.push(strandWidthFactor(r));
+    value.push(r[0]);
+  }
+
+  it('varies from 0.6 to 1.4 of the width, evenly, so the mean width stays the same', () => {
+    expect(WIDTH_VARIATION).toBe(0.4);
+    const mean = factors.reduce((a, f) => a + f, 0) / n;
+    expect(Math.abs(mean - 1)).toBeLessThan(0.01);
+    expect(Math.min(...factors)).toBeGreaterThanOrEqual(0.6);
+    expect(Math.max(...factors)).toBeLessThanOrEqual(1.4);
+    // uniform: a quarter below 0.8, a quarter above 1.2
+    const share = (f: (x: number) => boolean) => factors.filter(f).length / n;
+    expect(Math.abs(share((x) => x < 0.8) - 0.25)).toBeLessThan(0.03);
+    expect(Math.abs(share((x) => x > 1.2) - 0.25)).toBeLessThan(0.03);
+    // not tied to the strand's brightness (its first random byte)
+    const mv = value.reduce((a, v) => a + v, 0) / n;
+    let cov = 0;
+    let vf = 0;
+    let vv = 0;
+    for (let s = 0; s < n; s++) {
+      cov += (factors[s] - mean) * (value[s] - mv);
+      vf += (factors[s] - mean) ** 2;
+      vv += (value[s] - mv) ** 2;
+    }
+    expect(Math.abs(cov / Math.sqrt(vf * vv))).toBeLessThan(0.05);
+  });
+
+  it("is applied to the strips' width and the lines' coverage alike", () => {
+    for (const kind of ['lines', 'strips'] as const) {
+      const m = createStrandMaterial({ kind });
+      expect(m.vertexShader).toContain('float width = strandWidth * widthOf(strandRandom) *');
+      expect(m.uniforms.widthVariation.value).toBe(WIDTH_VARIATION);
+    }
+    expect(createStrandMaterial({ kind: 'lines' }).vertexShader).toContain(
+      'vCoverage = min(1.0, width / pixel)',
+    );
+    expect(createStrandMaterial({ kind: 'strips' }).vertexShader).toContain(
+      'float drawn = max(width, pixel)',
+    );
   });
 });
 

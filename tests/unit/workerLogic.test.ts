@@ -27,7 +27,7 @@ function scriptedEngine(log: string[], colours = new Uint8Array([0, 1, 3])): Sol
       if (m.length !== 8) throw new SolverError(`mask of ${m.length} for 8`, 'invalid_input');
       log.push(`mask:${Array.from(m).join('')}`);
     },
-    setDetail: (d) => log.push(`detail:${d.groups.length}:${d.groups[10]}`),
+    setDetail: (d) => log.push(`detail:${d.groups.length}:${d.groups[13]}`),
     setCurves: (c) => {
       it = 0;
       log.push(`curves:${c.curveStart.length - 1}:extra${c.extraIndex.length}`);
@@ -234,7 +234,7 @@ describe('WorkerLogic', () => {
     await Promise.all([preview, full]);
     // the preview stopped there: the next thing done is the full request's set-up
     const at = h.log.indexOf('iterate:1');
-    expect(h.log.slice(at, at + 3)).toEqual(['iterate:1', 'detail:11:0', 'curves:0:extra0']);
+    expect(h.log.slice(at, at + 3)).toEqual(['iterate:1', 'detail:14:0', 'curves:0:extra0']);
     expect(h.results().map((r) => [r.id, r.final])).toEqual([
       [2, false],
       [2, true],
@@ -316,8 +316,8 @@ describe('WorkerLogic', () => {
     await done;
     // the same curves and settings, another detail: no iteration, no new curves, one final growth
     const before = h.log.length;
-    const curly = { ...NO_OPTIONS, detail: { ...NO_OPTIONS.detail, groups: new Float64Array(11) } };
-    curly.detail.groups[10] = 0.3;
+    const curly = { ...NO_OPTIONS, detail: { ...NO_OPTIONS.detail, groups: new Float64Array(14) } };
+    curly.detail.groups[13] = 0.3;
     done = h.logic.handle(solve(2, 'full', LIGHT, curly));
     while (h.pendingYields() > 0) await h.release();
     await done;
@@ -445,7 +445,7 @@ describe('WorkerLogic', () => {
     const done = h.logic.handle(solve(1, 'preview', LIGHT, options));
     while (h.pendingYields() > 0) await h.release();
     await done;
-    const d = h.log.indexOf('detail:11:0.25'); // one group of 11, lengthJitter 0.25
+    const d = h.log.indexOf('detail:14:0.25'); // one group of 14, lengthJitter 0.25
     expect(d).toBeGreaterThanOrEqual(0);
     expect(h.log[d + 1]).toBe('curves:0:extra0');
   });

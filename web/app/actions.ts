@@ -328,7 +328,8 @@ export function buildActions(t: ActionTarget): Action[] {
     {
       id: 'view.detail',
       label: 'Detail',
-      title: 'Show or hide the Hair panel: strand count, maximum length, curl, clump, frizz',
+      title:
+        'Show or hide the Hair panel: strand count, maximum length, curl, clump, frizz, flyaways',
       shortcuts: ['h'],
       group: 'view',
       toolbar: 'more',

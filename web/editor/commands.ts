@@ -515,7 +515,7 @@ function applyExact(s: SessionState, cmd: Command): CommandResult {
 }
 
 function describeDetail(d: HairDetail): string {
-  const on = (['curl', 'clump', 'frizz'] as const).filter((b) => d[b]);
+  const on = (['curl', 'clump', 'frizz', 'flyaway'] as const).filter((b) => d[b]);
   if ((d.lengthJitter ?? 0) > 0) on.push('length jitter' as never);
   return on.length ? on.join(', ') : 'none';
 }

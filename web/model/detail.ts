@@ -1,4 +1,4 @@
-// Hair detail (curl, clump, frizz, length jitter), applied to grown strands by the solver's growth
+// Hair detail (curl, clump, frizz, flyaway, length jitter), applied to grown strands by the solver's growth
 // step (solver-cpp/src/strand_detail.hpp). Parameter names and defaults are Blender's
 // (docs/user-guide.md "Detail"), in world units (1 unit = 10 cm). One table states every parameter: the
 // session reader, the Detail panel and the packing for the wasm engine all read it.
@@ -19,23 +19,29 @@ export interface FrizzDetail {
   distance: number; // size of the random offsets
   shape: number; // -1..1: falloff along the strand
 }
+export interface FlyawayDetail {
+  share: number; // 0..0.2: fraction of strands that fly away
+  distance: number; // how far a flyaway's tip leaves the groom
+  start: number; // fraction of the length where a flyaway starts to leave the groom
+}
 /** A block present is on; absent blocks are off. */
 export interface HairDetail {
   curl?: CurlDetail;
   clump?: ClumpDetail;
   frizz?: FrizzDetail;
+  flyaway?: FlyawayDetail;
   lengthJitter?: number; // 0..1: each strand's length times (1 - lengthJitter · u), u in [0, 1)
 }
 
-export type DetailBlock = 'curl' | 'clump' | 'frizz';
+export type DetailBlock = 'curl' | 'clump' | 'frizz' | 'flyaway';
 
 export interface DetailParamSpec {
   key: string;
   label: string;
   /** How the Hair panel shows it: 'cm' a length in world units shown in centimetres (× 10);
-   *  'turns per 10 cm' per world unit; 'of length', 'of a turn' fractions; absent: a plain
-   *  number. */
-  unit?: 'cm' | 'turns per 10 cm' | 'of length' | 'of a turn';
+   *  'turns per 10 cm' per world unit; 'of length', 'of a turn', 'of strands' fractions; absent:
+   *  a plain number. */
+  unit?: 'cm' | 'turns per 10 cm' | 'of length' | 'of a turn' | 'of strands';
   default: number;
   min: number;
   max: number;
@@ -91,9 +97,31 @@ export const DETAIL_PARAMS = {
     },
     { key: 'shape', label: 'Shape', default: 0.5, min: -1, max: 1, step: 0.01 },
   ],
+  // not Blender's: a few stray hairs leaving the groom (strand_detail.hpp "Flyaway")
+  flyaway: [
+    {
+      key: 'share',
+      label: 'Share',
+      unit: 'of strands',
+      default: 0.01,
+      min: 0,
+      max: 0.2,
+      step: 0.005,
+    },
+    { key: 'distance', label: 'Distance', unit: 'cm', default: 0.12, min: 0, max: 0.5, step: 0.01 },
+    {
+      key: 'start',
+      label: 'Start',
+      unit: 'of length',
+      default: 0.55,
+      min: 0,
+      max: 0.95,
+      step: 0.01,
+    },
+  ],
 } as const satisfies Record<DetailBlock, readonly DetailParamSpec[]>;
 
-export const DETAIL_BLOCKS: readonly DetailBlock[] = ['curl', 'clump', 'frizz'];
+export const DETAIL_BLOCKS: readonly DetailBlock[] = ['curl', 'clump', 'frizz', 'flyaway'];
 export const LENGTH_JITTER: DetailParamSpec = {
   key: 'lengthJitter',
   label: 'Length jitter',
@@ -108,7 +136,7 @@ export const LENGTH_JITTER: DetailParamSpec = {
 export const DETAIL_GROUP_STRIDE: number =
   DETAIL_BLOCKS.reduce((n, b) => n + DETAIL_PARAMS[b].length, 0) + 1;
 
-/** A block with Blender's defaults. */
+/** A block with Blender's defaults (flyaway: its own). */
 export function defaultBlock<B extends DetailBlock>(b: B): NonNullable<HairDetail[B]> {
   const out: Record<string, number> = {};
   for (const p of DETAIL_PARAMS[b]) out[p.key] = p.default;
@@ -117,8 +145,8 @@ export function defaultBlock<B extends DetailBlock>(b: B): NonNullable<HairDetai
 
 /** Writes one detail group (hairArrays.ts DetailArrays, DETAIL_GROUP_STRIDE numbers) at `at`:
  *  curl radius, frequency, start, randomOffset; clump factor, shape, tipSpread, guideDistance;
- *  frizz distance, shape; lengthJitter. An absent block is written as off (radius, factor,
- *  distance 0). */
+ *  frizz distance, shape; flyaway share, distance, start; lengthJitter. An absent block is written
+ *  as off (radius, factor, distance, share 0). */
 export function packDetailGroup(d: HairDetail | undefined, out: Float64Array, at: number): void {
   let k = at;
   for (const b of DETAIL_BLOCKS) {
@@ -131,5 +159,5 @@ export function packDetailGroup(d: HairDetail | undefined, out: Float64Array, at
 
 /** True when the detail changes any strand. */
 export function detailIsOn(d: HairDetail | undefined): boolean {
-  return !!d && (!!d.curl || !!d.clump || !!d.frizz || (d.lengthJitter ?? 0) > 0);
+  return !!d && (!!d.curl || !!d.clump || !!d.frizz || !!d.flyaway || (d.lengthJitter ?? 0) > 0);
 }

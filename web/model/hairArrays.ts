@@ -34,9 +34,9 @@ export interface CurveSet {
 }
 
 /** Hair detail for growth (detail.ts; solver-cpp/src/strand_detail.hpp): groups of
- *  DETAIL_GROUP_STRIDE (11) numbers: curl radius, frequency, start, randomOffset; clump factor,
- *  shape, tipSpread, guideDistance; frizz distance, shape; lengthJitter (radius, factor and
- *  distance 0 = that block off). Group 0 is the session's; a strand uses the group of the curve
+ *  DETAIL_GROUP_STRIDE (14) numbers: curl radius, frequency, start, randomOffset; clump factor,
+ *  shape, tipSpread, guideDistance; frizz distance, shape; flyaway share, distance, start;
+ *  lengthJitter (radius, factor, distance and share 0 = that block off). Group 0 is the session's; a strand uses the group of the curve
  *  nearest its root. */
 export interface DetailArrays {
   groups: Float64Array; // groups[DETAIL_GROUP_STRIDE * g + k]

@@ -5,10 +5,11 @@
 // The paper's figures: fig6 (ten stream curves), fig7 (seven stream curves and a short parting),
 // fig8 (two ponytails and eight stream curves that comb each half of the head to its ponytail), fig1 (thirteen stream curves, four dividing curves and one ponytail); and
 // `curly`, the default style with curl, clumps and a little frizz (model/detail.ts); `braid`,
-// `bun` and `pigtail-braids`, the braid and bun curve kinds (solver-cpp/src/braid_bun.hpp).
+// `bun` and `pigtail-braids`, the braid and bun curve kinds (solver-cpp/src/braid_bun.hpp);
+// `empty`, a new session: no curves, natural detail (NEW_SESSION_DETAIL).
 
 import { defaultParams } from './curveParams';
-import type { HairDetail } from './detail';
+import { defaultBlock, type HairDetail } from './detail';
 import { DEFAULT_HAIR_LOOK, type HairLook } from './hairLook';
 import { defOf } from './kinds';
 import { mirrorCurve } from './mirror';
@@ -533,6 +534,17 @@ export const CURLY_DETAIL: HairDetail = {
   lengthJitter: 0.15,
 };
 
+/** The detail a new session (the `empty` preset) starts with: natural hair at arm's length,
+ *  strands and subtle clumps rather than a smooth shell (issue 50): strands drawn part of the way
+ *  half-way onto clumps about 1.5 cm apart, loosening towards the tips, ends a little uneven and
+ *  a few flyaways (DETAIL_PARAMS' defaults: 1 % of the strands). Chosen by eye from renders of new sessions with a few
+ *  strokes, Fast and High. */
+export const NEW_SESSION_DETAIL: HairDetail = {
+  clump: { factor: 0.5, shape: 0.5, tipSpread: 0.006, guideDistance: 0.15 },
+  flyaway: defaultBlock('flyaway'),
+  lengthJitter: 0.1,
+};
+
 /** The paper's figures keep the paper's method (no natural fall), so they show what its figures
  *  show; the other presets are sketched as a user of today's app would, with it. */
 const PAPER_FIGURES: readonly PresetName[] = ['fig6', 'fig7', 'fig8', 'fig1'];
@@ -562,7 +574,13 @@ export function applyPreset(s: SessionState, name: PresetName, ctx: PresetContex
     bust,
     ...rest
   } = s;
-  const detail = name === 'curly' ? { detail: CURLY_DETAIL } : {};
+  // natural detail for a new session (an empty head); the presets keep the hair they had
+  const detail =
+    name === 'curly'
+      ? { detail: CURLY_DETAIL }
+      : name === 'empty'
+        ? { detail: NEW_SESSION_DETAIL }
+        : {};
   const fall = !PAPER_FIGURES.includes(name);
   // sketched curves end where the hair should end: with fall that is what "extend" off means
   const curves = presetCurves(name, ctx).map((c) =>

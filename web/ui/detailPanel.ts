@@ -1,7 +1,7 @@
 // The "Hair" panel: strand count and maximum length (growth settings), which rule sets the
 // length, Volume (with the shape rules), the colour
 // (ui/hairLookEditor.ts: melanin, redness, grey, dye, tips…), and the detail (curl,
-// clump, frizz, length jitter) of the whole head and, with a curve selected, below it that
+// clump, frizz, flyaway, length jitter) of the whole head and, with a curve selected, below it that
 // curve's own (of the strands it governs). Lengths in centimetres. Built from model/detail.ts DETAIL_PARAMS; every change is one undoable edit
 // (the app runs it as an editor command).
 
@@ -223,7 +223,7 @@ export function buildDetailPanel(root: HTMLElement, events: DetailPanelEvents): 
     return h;
   }
 
-  /** The curl, clump and frizz editors and length jitter of one detail; `prefix` starts every
+  /** The curl, clump, frizz and flyaway editors and length jitter of one detail; `prefix` starts every
    *  accessible name (empty for the whole head's, so its names stay "Curl", "Curl radius"…). */
   function detailEditors(detail: HairDetail, set: (d: HairDetail) => void, prefix: string): void {
     panel.append(row('Curl type', curlTypeSelect(detail, set, prefix)));

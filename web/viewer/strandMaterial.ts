@@ -53,13 +53,34 @@ float tipDistanceOf(float encoded) {
 }
 `;
 
-/** Where a strand's tip starts to taper and fade (both shaders of either geometry). */
+/** Each strand's width is strandWidth times 1 ± WIDTH_VARIATION, from a hash of its four random
+ *  bytes (uniform, so the mean width is strandWidth): some strands read finer, some coarser. */
+export const WIDTH_VARIATION = 0.4;
+const WIDTH_HASH = [0.4142136, 0.7320508, 0.236068, 0.6457513] as const;
+const WIDTH_HASH_SCALE = 113.17;
+
+/** The width factor the shaders give a strand of random values `rnd` (each 0..1, as the
+ *  normalised `strandRandom` attribute reads): what `widthOf` computes, for tests. */
+export function strandWidthFactor(rnd: readonly [number, number, number, number]): number {
+  const d = rnd.reduce((a, v, i) => a + v * WIDTH_HASH[i], 0) * WIDTH_HASH_SCALE;
+  return 1 + WIDTH_VARIATION * (2 * (d - Math.floor(d)) - 1);
+}
+
+/** Where a strand's tip starts to taper and fade, and its width (both shaders of either
+ *  geometry). */
 const tips = /* glsl */ `
 uniform float lengthVariation; // ± shift of where the tip fade starts, per strand
 uniform float tipFade; // fraction of the strand over which the tip tapers and fades out
+uniform float widthVariation; // ± share of the width, per strand (WIDTH_VARIATION)
 // where a strand's tip starts (rnd: its random values; length appearance, ragged ends)
 float fadeStartOf(vec4 rnd) {
   return clamp(1.0 - tipFade + lengthVariation * (2.0 * rnd.z - 1.0), 0.3, 0.98);
+}
+// the strand's width factor, 1 ± widthVariation (strandWidthFactor): a hash of its random values
+// other than the colour's (uniform over the strands: the mean width is unchanged)
+float widthOf(vec4 rnd) {
+  float h = fract(dot(rnd, vec4(${WIDTH_HASH.map((v) => v.toFixed(7)).join(', ')})) * ${WIDTH_HASH_SCALE.toFixed(2)});
+  return 1.0 + widthVariation * (2.0 * h - 1.0);
 }
 `;
 
@@ -195,7 +216,7 @@ void main() {
   vDistance = dist;
   float pixel = 2.0 * dist / (projectionMatrix[1][1] * max(viewportHeight, 1.0));
   if (projectionMatrix[3][3] > 0.5) pixel = 2.0 / (projectionMatrix[1][1] * max(viewportHeight, 1.0));
-  float width = strandWidth * mix(1.0, tipWidth, smoothstep(fadeStartOf(strandRandom), 1.0, along.x));
+  float width = strandWidth * widthOf(strandRandom) * mix(1.0, tipWidth, smoothstep(fadeStartOf(strandRandom), 1.0, along.x));
   vCoverage = min(1.0, width / pixel);
   vFadeStart = fadeStartOf(strandRandom);
   gl_Position = projectionMatrix * viewMatrix * world;
@@ -256,7 +277,7 @@ void main() {
   vec3 side = cross(T, V);
   float sl = length(side);
   side = sl > 1e-4 ? side / sl : normalize(cross(T, abs(T.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0)));
-  float width = strandWidth * mix(1.0, tipWidth, smoothstep(fadeStartOf(strandRandom), 1.0, along.x));
+  float width = strandWidth * widthOf(strandRandom) * mix(1.0, tipWidth, smoothstep(fadeStartOf(strandRandom), 1.0, along.x));
   float drawn = max(width, pixel);
   float s = (gl_VertexID % 2 == 0) ? -0.5 : 0.5;
   world.xyz += side * (s * drawn);
@@ -338,6 +359,7 @@ export interface StrandUniforms {
   rootDarkening: THREE.IUniform<number>;
   hueVariation: THREE.IUniform<number>;
   lengthVariation: THREE.IUniform<number>;
+  widthVariation: THREE.IUniform<number>;
   tipFade: THREE.IUniform<number>;
   precomputed: THREE.IUniform<number>;
   strandWidth: THREE.IUniform<number>;
@@ -401,6 +423,7 @@ export function createStrandMaterial(options: StrandMaterialOptions = {}): Stran
     rootDarkening: { value: 0.3 },
     hueVariation: { value: 0.05 },
     lengthVariation: { value: 0.06 },
+    widthVariation: { value: WIDTH_VARIATION },
     tipFade: { value: 0.12 },
     precomputed: { value: 1 },
     strandWidth: { value: representedWidth(30_000) }, // set per draw
