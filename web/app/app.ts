@@ -42,6 +42,7 @@ import { type ExportWiring, wireExport } from './exportActions';
 import { HairPresenter } from './hairPresenter';
 import { HeadController } from './headController';
 import { bindInput } from './input';
+import { loadMirrorSetting, saveMirrorSetting } from './localSettings';
 import { MotionPlayer } from './motionPlayer';
 import { OverlayPresenter } from './overlayPresenter';
 import { bindPageControls } from './pageControls';
@@ -117,7 +118,10 @@ export function startApp(): void {
   heads.startWith(initial);
   // every preset starts with the tool a new user wants first: drawing a stream curve
   const editor = new Editor(initial, 'stream');
-  const view = new ViewStore({ quality: loadQualitySetting() });
+  const view = new ViewStore({ quality: loadQualitySetting(), mirror: loadMirrorSetting() });
+  view.listen((c) => {
+    if (c.state.mirror !== c.previous.mirror) saveMirrorSetting(c.state.mirror);
+  });
 
   const hairView = new HairView(viewer, headMesh);
   const quality = new QualityControl(hairView, viewer, view);

@@ -28,6 +28,9 @@ export function bindInput(d: InputDeps): void {
   });
   canvas.addEventListener('pointerdown', (e) => {
     if (captured !== null) return;
+    // a text selection left on the page (Ctrl+A) would turn this drag into the browser's drag
+    // of the selection: strokes did nothing and said nothing
+    window.getSelection()?.removeAllRanges();
     if (d.tool().onPointerDown(ptr(e))) {
       captured = e.pointerId;
       canvas.setPointerCapture(e.pointerId);
@@ -36,6 +39,7 @@ export function bindInput(d: InputDeps): void {
       captured = e.pointerId;
     }
   });
+  canvas.addEventListener('dragstart', (e) => e.preventDefault());
   // Pointer samples as they come (pointerrawupdate, where the browser has it: not held until
   // the next animation frame as pointermove is), so a preview can go out between frames.
   const moves = 'onpointerrawupdate' in canvas ? 'pointerrawupdate' : 'pointermove';

@@ -4,6 +4,8 @@
 // the unmasked WebGL renderer is a real GPU and Fast on a software rasteriser (SwiftShader,
 // llvmpipe), where a High frame costs several times a Fast one.
 
+import { type Store, storage } from './localSettings';
+
 export type QualitySetting = 'auto' | 'fast' | 'high';
 export type ActiveQuality = 'fast' | 'high';
 
@@ -29,16 +31,6 @@ export function nextQuality(s: QualitySetting): QualitySetting {
 export function qualityLabel(setting: QualitySetting, active: ActiveQuality): string {
   const name = (q: string) => q[0].toUpperCase() + q.slice(1);
   return setting === 'auto' ? `Quality: Auto (${name(active)})` : `Quality: ${name(setting)}`;
-}
-
-type Store = Pick<Storage, 'getItem' | 'setItem'>;
-
-function storage(): Store | null {
-  try {
-    return typeof localStorage !== 'undefined' ? localStorage : null;
-  } catch {
-    return null; // storage blocked (e.g. a sandboxed frame)
-  }
 }
 
 /** The saved setting ('auto' when none or unreadable). */

@@ -74,8 +74,10 @@ export interface ToolSet {
 const SCALP_END_REACH = 0.05;
 // How far off the scalp (world units: 2 cm) a stroke's press may land and still start on it.
 const START_REACH = 0.2;
-// How far past the head's outline (world units: 1 cm, a few pixels) a press still starts on it.
-const OUTLINE_REACH = 0.1;
+// How far past the head's outline (world units: 3 cm, about as far as hair stands off it) a
+// press still starts on it: fresh eyes pressed on the hair beside a long style's crown, 1-2 cm
+// outside the head, and were refused.
+const OUTLINE_REACH = 0.3;
 
 /** What every tool is built from: the page's picking, the camera, the draft line and the rule
  *  for whether a stroke's hair grows on past its end. */

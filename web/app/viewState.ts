@@ -1,7 +1,7 @@
 // View state: how the user is looking at the work, not the work itself. Which overlays show, the
 // drawing quality, mirror editing and which ponytail stroke comes next live here, in one small
-// store; none of it is in the session, its undo history or its links (quality alone is kept in
-// localStorage, by QualityControl). The toolbar, the display toggles, the hint line and the
+// store; none of it is in the session, its undo history or its links (quality and mirror are
+// kept in localStorage: quality.ts, localSettings.ts). The toolbar, the display toggles, the hint line and the
 // overlays derive what they show from it. The camera is not here: the viewer's orbit controls
 // move it every frame, and the editor hands the viewer a loaded session's saved view.
 import { DEFAULT_CARD_COUNT } from '../export/cardCount';
