@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "strand_detail.hpp"
+#include "strand_lists.hpp"
 
 // Each test file is a namespace of its own: the build compiles several files as one (unity).
 namespace strand_detail_flyaway_test {
@@ -21,27 +22,12 @@ using V3 = Eigen::Vector3d;
 
 namespace {
 
-using Strand = std::vector<V3>;
+using strand_lists::Strand;
 
 const V3 kCentre(0.1, 0.2, -0.1);
 
-Strands makeStrands(const std::vector<Strand>& list) {
-  Strands s;
-  s.strandStart.push_back(0);
-  for (const Strand& st : list) {
-    for (const V3& p : st)
-      for (int a = 0; a < 3; ++a) s.points.push_back(float(p[a]));
-    s.strandStart.push_back(uint32_t(s.points.size() / 3));
-  }
-  return s;
-}
-
-Strand strandOf(const Strands& s, size_t k) {
-  Strand out;
-  for (uint32_t p = s.strandStart[k]; p < s.strandStart[k + 1]; ++p)
-    out.emplace_back(s.points[3 * p], s.points[3 * p + 1], s.points[3 * p + 2]);
-  return out;
-}
+using strand_lists::makeStrands;
+using strand_lists::strandOf;
 
 bool sameBits(const Strands& a, const Strands& b) {
   return a.strandStart == b.strandStart && a.points.size() == b.points.size() &&
