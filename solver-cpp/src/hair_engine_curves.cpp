@@ -199,14 +199,34 @@ Status HairEngine::setCurves(const CurveSetView& curves) {
       for (size_t k = 0; k < fv.pointCount; ++k)
         lift[k] = strokeLift(headDistance_, fv.points + 3 * k);
     }
+    // (ties on) a stroke that grows on into a tie (its end within kIntoTie of a tie's curve: a
+    // stroke combed into a bun or a ponytail) says nothing of the length of the hair around it:
+    // its hair is the tie's. Counted with its own length, one short stroke into a half-up's bun
+    // cut the loose hair below the parting to the chin.
+    const auto intoTie = [&](size_t c) {
+      if (!ties_ || !(fv.extend && fv.extend[c] != 0)) return false;
+      const double* end = fv.points + 3 * (fv.curveStart[c + 1] - 1);
+      // every tie of the session (whole-section ties are not in fv: the field does not see them)
+      for (size_t t = 0; t < curves.curveCount; ++t) {
+        const CurveKindDef* k = curveKind(curves.kinds[t]);
+        if (!k || !k->tail) continue;
+        for (size_t q = curves.curveStart[t]; q < curves.curveStart[t + 1] && q < curves.pointCount;
+             ++q) {
+          const double* x = curves.points + 3 * q;
+          if (std::hypot(x[0] - end[0], x[1] - end[1], x[2] - end[2]) < kIntoTie) return true;
+        }
+      }
+      return false;
+    };
     if (fv.kinds && fv.curveStart && fv.points)
       for (size_t c = 0; c < fv.curveCount; ++c) {
         const CurveKindDef* kind = curveKind(fv.kinds[c]);
         if (!kind || !kind->reach) continue;
         const size_t a = fv.curveStart[c], b = fv.curveStart[c + 1];
         if (b <= a || b > fv.pointCount) continue;
+        const bool setsLength = kind->tail == nullptr && !intoTie(c);
         rc.push_back({fv.points + 3 * a, b - a, fv.extend && fv.extend[c] != 0,
-                      fv.offScalp ? fv.offScalp + a : nullptr, kind->tail == nullptr,
+                      fv.offScalp ? fv.offScalp + a : nullptr, setsLength,
                       lift.empty() ? nullptr : lift.data() + a, ownVolume(fv, c)});
       }
     std::vector<uint8_t> noExtension(fv.curveCount, 0);

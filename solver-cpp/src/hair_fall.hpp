@@ -109,6 +109,11 @@ struct StrokeLength {
   bool growsOn = false;
 };
 
+// (ties on) A stroke that grows on and ends within this distance (world units: 3 cm, as the app
+// extends a stroke that ends there into a tie) of a tie's curve is combed into the tie: it does
+// not set the length of the hair around it.
+constexpr double kIntoTie = 0.3;
+
 // Within kGovernNear of a curve the hair is the stroke's (it may stand off the head as the
 // stroke does); past kGovernFar from every curve the shape rules lay it on the head.
 constexpr double kGovernNear = 0.1, kGovernFar = 0.25;

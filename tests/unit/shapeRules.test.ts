@@ -166,4 +166,31 @@ describe('the shape rules on hand-drawn stroke sets', () => {
     expect(ratio).toBeGreaterThan(0.8);
     expect(ratio).toBeLessThan(1.2);
   });
+
+  it('a stroke combed into a bun leaves the loose hair its length', async () => {
+    // fresh eyes' half-up: a parting, a bun on the top section and a mirrored pair of short
+    // strokes from the temples into the bun (extended: "on into bun c2"). The loose hair below
+    // the parting is as long with the pair as without it (Max length, 32 cm): counted with their
+    // own length, the pair cut it to the chin
+    const s = fixture('half-up-into-bun');
+    const without = { ...s, curves: s.curves.filter((c) => c.type !== 'stream') };
+    const loose = (h: StrandArrays) => {
+      const lengths: number[] = [];
+      let k = 0;
+      eachStrand(h, (pts) => {
+        const tied = (h.tailCurves?.[k++] ?? -1) >= 0;
+        if (tied) return;
+        let l = 0;
+        for (let i = 1; i < pts.length; i++) l += dist(pts[i], pts[i - 1]);
+        lengths.push(l);
+      });
+      return median(lengths);
+    };
+    const [a, b] = [loose(await grow(without)), loose(await grow(s))];
+    console.log(
+      `half-up: loose hair's median length ${(10 * a).toFixed(1)} cm without the strokes into the bun, ${(10 * b).toFixed(1)} cm with them`,
+    );
+    expect(a).toBeGreaterThan(2);
+    expect(b).toBeGreaterThan(0.85 * a);
+  });
 });
