@@ -204,8 +204,28 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
         if (curve >= 0 && size_t(curve) < curveGroup_.size())
           groupOf[k] = uint32_t(curveGroup_[curve]);
       }
-    s = applyDetail(detail_.empty() ? std::vector<DetailParams>{DetailParams{}} : detail_, groupOf,
-                    key, rp.seed, strands_, 255, finish_ ? &endSpread : nullptr, finish_, &centre_);
+    std::vector<DetailParams> groups =
+        detail_.empty() ? std::vector<DetailParams>{DetailParams{}} : detail_;
+    // (ties on) hair a tie lays keeps its length: a tail ends where its stroke ends, with the
+    // tie's own uneven ends (gathered_tail.hpp), so its strands take their group's detail without
+    // the length jitter (which cut tails up to a tenth short of their strokes' ends)
+    if (ties_ && anyDetail) {
+      std::vector<int64_t> tiedGroup(groups.size(), -1);
+      for (size_t st = 0; st < n; ++st) {
+        if (strandTailCurve_[st] < 0) continue;
+        const uint32_t g = groupOf[st];
+        if (g >= tiedGroup.size() || !(groups[g].lengthJitter > 0)) continue;
+        if (tiedGroup[g] < 0) {
+          DetailParams kept = groups[g];
+          kept.lengthJitter = 0;
+          tiedGroup[g] = int64_t(groups.size());
+          groups.push_back(kept);
+        }
+        groupOf[st] = uint32_t(tiedGroup[g]);
+      }
+    }
+    s = applyDetail(groups, groupOf, key, rp.seed, strands_, 255, finish_ ? &endSpread : nullptr,
+                    finish_, &centre_);
     // cutting ends back moves no point: only detail needs keeping outside again
     if (head && anyDetail) {
       keepOutsideHead(*head, float(gp.margin), strands_);

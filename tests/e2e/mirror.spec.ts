@@ -57,16 +57,18 @@ test('Mirror: three strokes make six curves, symmetric hair, a twin deleted and 
   const errors = watchConsole(page);
   await page.goto('/?preset=empty');
   let s = await settled(page);
-  // without finished edges and the soft hairline: their end spread and which roots thin out are
-  // seeded per strand, not mirrored, and the tips are compared here (the head is bald, so
-  // nothing is solved)
+  // without finished edges, the soft hairline and a new session's natural detail: their end
+  // spread, which roots thin out, clumps, length jitter and flyaways are seeded per strand, not
+  // mirrored, and the tips are compared here (the head is bald, so nothing is solved)
   const {
     finish: _,
     hairline: __,
+    detail: ___,
     ...plain
   } = (await page.evaluate(() => window.hairsketch.session())) as {
     finish?: boolean;
     hairline?: boolean;
+    detail?: unknown;
   };
   await page.evaluate((q) => window.hairsketch.replaceSession(q), plain);
   await page.getByRole('button', { name: 'Mirror' }).click();

@@ -6,7 +6,7 @@ import { mkdtempSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { expect, test } from '@playwright/test';
-import { settled, watchConsole } from './helpers';
+import { settled, status, watchConsole } from './helpers';
 
 const PAYLOADS = [
   '<img src=x onerror="window.__xss=1">',
@@ -112,6 +112,13 @@ test('payloads in a link only ever show as text, and the preset loads instead', 
     for (const b of bytes) bin += String.fromCharCode(b);
     return `#s=${btoa(bin).replace(/\+/g, '-').replace(/\//g, '_').replace(/=+$/, '')}`;
   }, PAYLOADS[0]);
+  // pasted into the address bar of the open app (a hash change): refused, the work stays
+  const before = await settled(page);
+  await page.goto(`/?strands=800${link}`);
+  await expect(page.getByTestId('status')).toContainText('Nothing changed');
+  expect((await status(page)).curves).toBe(before.curves);
+  // opened in a fresh page: refused, the preset loads
+  await page.goto('about:blank');
   await page.goto(`/?strands=800${link}`);
   await settled(page);
   const probe = await page.evaluate(() => ({

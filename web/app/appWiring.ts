@@ -77,7 +77,8 @@ export function openStartingLink(p: {
   const { editor, status, links, headStore } = p;
   const open = (pasted: boolean) =>
     void openSessionLinkOutcome(editor, window.location.hash, headStore, pasted).then((o) => {
-      if (o.kind === 'failed') status.error(o.message);
+      // a bad link pasted over the work changes nothing: a note, not an error state
+      if (o.kind === 'failed') pasted ? status.note(o.message) : status.error(o.message);
       else links.markLinked(editor.session);
     });
   if (window.location.hash.startsWith('#s=')) open(false);

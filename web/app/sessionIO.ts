@@ -186,7 +186,7 @@ export async function openSessionLinkOutcome(
   if (!decoded.ok)
     return {
       kind: 'failed',
-      message: `Could not open the link: ${decoded.error}. Showing the preset instead.`,
+      message: `Could not open the link: ${decoded.error}. ${pasted ? 'Nothing changed.' : 'Showing the preset instead.'}`,
     };
   return openParsed(editor, decoded.value, { kind: 'link', pasted }, undefined, heads);
 }
