@@ -161,7 +161,7 @@ test('Longer lengthens a sketched bob by 10 cm with two clicks, without strays; 
   await page.getByRole('button', { name: 'Detail' }).click();
   const panel = page.getByRole('region', { name: 'Hair detail' });
   for (let i = 0; i < 2; i++) {
-    await panel.getByRole('button', { name: 'Longer by 5 cm' }).click();
+    await panel.getByRole('button', { name: '+5 cm: longer' }).click();
     s = await settled(page, s.revision);
   }
   expect(s.text).toContain('lengthened by 5 cm');

@@ -148,12 +148,13 @@ export function buildDetailPanel(root: HTMLElement, events: DetailPanelEvents): 
     // the whole style longer or shorter: stroke ends and the maximum length move together
     const longer = document.createElement('button');
     longer.textContent = `+${LENGTHEN_STEP * 10} cm`;
-    longer.setAttribute('aria-label', `Longer by ${LENGTHEN_STEP * 10} cm`);
+    // the accessible name starts with the visible text (fresh eyes looked the button up by it)
+    longer.setAttribute('aria-label', `+${LENGTHEN_STEP * 10} cm: longer`);
     longer.title = 'Every stroke that ends hair goes on, and Max length rises, by this much';
     longer.addEventListener('click', () => events.lengthen(LENGTHEN_STEP));
     const shorter = document.createElement('button');
     shorter.textContent = `−${LENGTHEN_STEP * 10} cm`;
-    shorter.setAttribute('aria-label', `Shorter by ${LENGTHEN_STEP * 10} cm`);
+    shorter.setAttribute('aria-label', `−${LENGTHEN_STEP * 10} cm: shorter`);
     shorter.title = 'Every stroke that ends hair is cut back, and Max length falls, by this much';
     shorter.addEventListener('click', () => events.lengthen(-LENGTHEN_STEP));
     // a div, not a label: a label would pass a click on its text to the first button
