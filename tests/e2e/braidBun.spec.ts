@@ -150,6 +150,13 @@ test('a bun drawn as a loop on the head: the session holds it, the hair changes,
   const [bun] = await curves(page);
   expect(bun.type).toBe('bun');
   expect([bun.radius, bun.height, bun.turns]).toEqual([0, 0.35, 2.5]);
+  // the status line gives the loop's length round (the saved loop's, closed), not its points
+  let round = 0;
+  bun.points.forEach((p, i) => {
+    const q = bun.points[(i + 1) % bun.points.length];
+    round += Math.hypot(q[0] - p[0], q[1] - p[1], q[2] - p[2]);
+  });
+  expect(after.text).toContain(`a loop ${Math.round(10 * round)} cm round`);
   expect(await page.evaluate(() => window.hairsketch.hairHash())).not.toBe(empty.hash);
   // with no parting the bun coils the whole head's hair (sections)
   const all = await tieShare(page, 0);

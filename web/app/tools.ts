@@ -440,7 +440,7 @@ function tieTool(k: ToolKit, kind: PlainTieKind): Tool {
     return editor.run({
       kind: 'addCurve',
       curve: STROKE_KINDS[kind].fromStroke(points, camera(), newCurveExtends(editor.session)),
-      what: `${spec.what(points.length)}${snapped ? ', centred on the head' : ''}`,
+      what: `${spec.what(points)}${snapped ? ', centred on the head' : ''}`,
       // a tie on the symmetry plane is its own mirror image
       mirror: d.mirror() && !snapped,
     });
