@@ -11,7 +11,7 @@ import { growSessionHair } from '../web/export/growSession';
 import { Head } from '../web/head/head';
 import type { HairDetail } from '../web/model/detail';
 import { gridForSession } from '../web/model/grid';
-import { CURLY_DETAIL, NEW_SESSION_DETAIL } from '../web/model/presets';
+import { CURLY_DETAIL, NEW_SESSION_DETAIL } from '../web/model/presetDetail';
 import { hangLength } from '../web/model/session';
 import { loadSolverEngine } from '../web/solver/wasmEngine';
 import { writeBenchResults } from './benchResults.mjs';

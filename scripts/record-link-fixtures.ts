@@ -14,7 +14,7 @@
 import { existsSync, readFileSync, writeFileSync } from 'node:fs';
 import { presetSession } from '../web/cli/presetSession';
 import { Head } from '../web/head/head';
-import { CURLY_DETAIL } from '../web/model/presets';
+import { CURLY_DETAIL } from '../web/model/presetDetail';
 import { quantizeSession } from '../web/model/quantize';
 import type { SessionState, StyleCurve } from '../web/model/session';
 import * as link from '../web/model/sessionLink';

@@ -10,7 +10,7 @@ import { Head } from '../../web/head/head';
 import { packCurves, packHairOptions } from '../../web/model/curveSet';
 import { gridForPreset } from '../../web/model/grid';
 import type { StrandArrays } from '../../web/model/hairArrays';
-import { NEW_SESSION_DETAIL } from '../../web/model/presets';
+import { NEW_SESSION_DETAIL } from '../../web/model/presetDetail';
 import type { SessionState } from '../../web/model/session';
 import type { FromWorker } from '../../web/solver/protocol';
 import { loadSolverEngine } from '../../web/solver/wasmEngine';

@@ -5,14 +5,8 @@ import { Head } from '../../web/head/head';
 import { headSdf } from '../../web/head/headSdf';
 import { packCurves } from '../../web/model/curveSet';
 import { gridForPreset } from '../../web/model/grid';
-import {
-  applyPreset,
-  CURLY_DETAIL,
-  NEW_SESSION_DETAIL,
-  PRESET_NAMES,
-  type PresetName,
-  presetCurves,
-} from '../../web/model/presets';
+import { CURLY_DETAIL, NEW_SESSION_DETAIL } from '../../web/model/presetDetail';
+import { applyPreset, PRESET_NAMES, type PresetName, presetCurves } from '../../web/model/presets';
 import { emptySession } from '../../web/model/session';
 import { parseSession } from '../../web/model/sessionFile';
 import { distance, type Vec3 } from '../../web/model/vec3';

@@ -9,11 +9,11 @@
 // `empty`, a new session: no curves, natural detail (NEW_SESSION_DETAIL).
 
 import { defaultParams } from './curveParams';
-import { defaultBlock, type HairDetail } from './detail';
 import { DEFAULT_HAIR_LOOK, type HairLook } from './hairLook';
 import { defOf } from './kinds';
 import { mirrorCurve } from './mirror';
 import { ponytailCircles } from './ponytailGeometry';
+import { CURLY_DETAIL, NEW_SESSION_DETAIL } from './presetDetail';
 import { quantizeSession } from './quantize';
 import { resamplePolyline } from './resample';
 import type {
@@ -524,26 +524,6 @@ export function presetCurves(name: PresetName, ctx: PresetContext): StyleCurve[]
   PRESET_BUILDERS[name]({ ctx, push, nextId, sweeps, curves });
   return curves;
 }
-
-/** The `curly` preset's detail: 1 cm curls gathered into clumps (with finished edges a clump's
- *  strands curl together, as ringlets), a little frizz, uneven ends. */
-export const CURLY_DETAIL: HairDetail = {
-  curl: { radius: 0.1, frequency: 2, start: 0.15, randomOffset: 1 },
-  clump: { factor: 0.7, shape: 0.3, tipSpread: 0.02, guideDistance: 0.12 },
-  frizz: { distance: 0.006, shape: 0.5 },
-  lengthJitter: 0.15,
-};
-
-/** The detail a new session (the `empty` preset) starts with: natural hair at arm's length,
- *  strands and subtle clumps rather than a smooth shell (issue 50): strands drawn part of the way
- *  half-way onto clumps about 1.5 cm apart, loosening towards the tips, ends a little uneven and
- *  a few flyaways (DETAIL_PARAMS' defaults: 1 % of the strands). Chosen by eye from renders of new sessions with a few
- *  strokes, Fast and High. */
-export const NEW_SESSION_DETAIL: HairDetail = {
-  clump: { factor: 0.5, shape: 0.5, tipSpread: 0.006, guideDistance: 0.15 },
-  flyaway: defaultBlock('flyaway'),
-  lengthJitter: 0.1,
-};
 
 /** The paper's figures keep the paper's method (no natural fall), so they show what its figures
  *  show; the other presets are sketched as a user of today's app would, with it. */

@@ -1,0 +1,23 @@
+// The detail blocks presets start with (model/detail.ts): the `curly` preset's curls and a new
+// session's natural detail (presets.ts applies them).
+import { defaultBlock, type HairDetail } from './detail';
+
+/** The `curly` preset's detail: 1 cm curls gathered into clumps (with finished edges a clump's
+ *  strands curl together, as ringlets), a little frizz, uneven ends. */
+export const CURLY_DETAIL: HairDetail = {
+  curl: { radius: 0.1, frequency: 2, start: 0.15, randomOffset: 1 },
+  clump: { factor: 0.7, shape: 0.3, tipSpread: 0.02, guideDistance: 0.12 },
+  frizz: { distance: 0.006, shape: 0.5 },
+  lengthJitter: 0.15,
+};
+
+/** The detail a new session (the `empty` preset) starts with, so hair at arm's length reads as
+ *  strands and subtle clumps rather than the smooth shell a smooth field grows: strands drawn
+ *  half-way onto clumps about 1.5 cm apart, loosening towards the tips, ends a little uneven and a
+ *  few flyaways (DETAIL_PARAMS' defaults: 1 % of the strands). Chosen by eye from renders of new
+ *  sessions with a few strokes, Fast and High. */
+export const NEW_SESSION_DETAIL: HairDetail = {
+  clump: { factor: 0.5, shape: 0.5, tipSpread: 0.006, guideDistance: 0.15 },
+  flyaway: defaultBlock('flyaway'),
+  lengthJitter: 0.1,
+};
