@@ -73,7 +73,7 @@ export function hueDistance(a: number, b: number): number {
   return d > 180 ? 360 - d : d;
 }
 
-/** How the key light's highlight stands out over the top of the hair (issue: ring- and
+/** How the key light's highlight stands out over the top of the hair (ring- and
  *  S-shaped highlights read as cowlicks): of the hair's pixels in the top `topShare` of its
  *  height (the crown and the sides above the ears, where hair covers the head: no skin), the
  *  luma averaged over (2r + 1)² pixels (the scale of a band, not of a strand); the 99th

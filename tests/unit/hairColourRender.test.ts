@@ -88,7 +88,7 @@ describe.runIf(DIST_BUILT)('hair colour as drawn', () => {
 
   it("the key light's highlight over the crown breaks into strands, not one band", async () => {
     // the bob (near-black, where a highlight shows most) at 8,000 strands, front and side: one
-    // smooth band ringing the crown's whorl and an S on the side read as cowlicks (issue 50).
+    // smooth band ringing the crown's whorl and an S on the side read as cowlicks to a stylist.
     // highlightPeak: the band-scale luma's 99th percentile over its median on the top of the
     // hair; it was 12.9 and 14.8 in Fast, 15.0 and 22.3 in High before the strands' shading
     // tangents were tilted strand by strand (7.1, 6.3 and 10.3, 9.8 after)
