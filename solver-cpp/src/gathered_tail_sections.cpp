@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -54,16 +55,11 @@ float combPath(const SectionGather& g, const Eigen::Vector3f& root, const Eigen:
     const Eigen::Vector2f h = bh.normalized() * std::sqrt(1 - high * high);
     w = Eigen::Vector3f(h.x(), high, h.y());
   }
-  const auto legOf = [](const Eigen::Vector3f& from, const Eigen::Vector3f& to,
-                        Eigen::Vector3f& axis) {
-    axis = from.cross(to);
-    if (!(axis.norm() > 1e-5f)) axis = from.cross(Eigen::Vector3f::UnitY());
-    if (!(axis.norm() > 1e-5f)) axis = from.cross(Eigen::Vector3f::UnitX());
-    axis.normalize();
-    return std::acos(std::clamp(from.dot(to), -1.f, 1.f));
-  };
-  Eigen::Vector3f axis;
-  float ang = legOf(a, b, axis);
+  float ang = std::acos(std::clamp(a.dot(b), -1.f, 1.f));
+  Eigen::Vector3f axis = a.cross(b);
+  if (!(axis.norm() > 1e-5f)) axis = a.cross(Eigen::Vector3f::UnitY());
+  if (!(axis.norm() > 1e-5f)) axis = a.cross(Eigen::Vector3f::UnitX());
+  axis.normalize();
   // (ties on) when the short way from root to foot passes in front of the centre below the root
   // (a temple root and a seat low on the nape: the short way runs down the cheek), it goes the
   // long way, over the crown
@@ -76,8 +72,9 @@ float combPath(const SectionGather& g, const Eigen::Vector3f& root, const Eigen:
   // towards the seat gradually rather than at a corner above it, tabulated by its angle so that
   // a share t of the route is a share t of its length
   constexpr int kRouteSamples = 64;
-  std::vector<Eigen::Vector3f> route;
-  std::vector<float> turned;
+  // fixed arrays: this runs for every gathered strand, and heap vectors cost more than the slerps
+  std::array<Eigen::Vector3f, kRouteSamples + 1> route;
+  std::array<float, kRouteSamples + 1> turned{};
   if (viaAbove) {
     const auto slerp = [](const Eigen::Vector3f& p, const Eigen::Vector3f& q, float t) {
       const float om = std::acos(std::clamp(p.dot(q), -1.f, 1.f));
@@ -86,10 +83,10 @@ float combPath(const SectionGather& g, const Eigen::Vector3f& root, const Eigen:
     };
     for (int k = 0; k <= kRouteSamples; ++k) {
       const float t = float(k) / kRouteSamples;
-      route.push_back(slerp(slerp(a, w, t), slerp(w, b, t), t).normalized());
-      turned.push_back(k == 0 ? 0.f
-                              : turned.back() +
-                                    std::acos(std::clamp(route[k].dot(route[k - 1]), -1.f, 1.f)));
+      route[k] = slerp(slerp(a, w, t), slerp(w, b, t), t).normalized();
+      turned[k] =
+          k == 0 ? 0.f
+                 : turned[k - 1] + std::acos(std::clamp(route[k].dot(route[k - 1]), -1.f, 1.f));
     }
     ang = turned.back();
   }
