@@ -191,6 +191,13 @@ constexpr float kSupportNormalY = -0.15f;
 constexpr float kLayReach = 0.4f;
 // Over what length the hair rises to its standoff (volume / kVolumeRise).
 constexpr float kVolumeRise = 0.5f;
+// Short hair (kHugLength) keeps its Volume on top of the head and loses what it has past the
+// default's (kHugVolumeKept, the Hair panel's 5 mm) down the sides and the nape, as a cut's
+// close sides and nape do: that part is scaled by a smoothstep of the surface normal's height,
+// 0 at kHugVolumeLow (the skull's widest part) to 1 at kHugVolumeHigh (60 degrees from the
+// crown), so a pixie is lifted at the crown and tapers in to the head over the ears and down the
+// nape instead of ending off it as a shelf (hair at the default volume grows as before).
+constexpr float kHugVolumeLow = 0.0f, kHugVolumeHigh = 0.5f, kHugVolumeKept = 0.05f;
 // Hair laid on the head lies on top of the hair rooted under it: its standoff grows by this
 // much per unit of length it has come over the head (3 mm per 10 cm), up to kLayerMax (1 cm),
 // so hair from the crown covers the sides in layers instead of all at one distance.

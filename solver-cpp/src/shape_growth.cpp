@@ -66,7 +66,13 @@ ShapeGrowth::Lay ShapeGrowth::layOnHead(const float x[3], float n[3], double& se
   }
   // the standoff: the volume reached over the first length, and hair that has come farther
   // over the head lying on top of the hair rooted where it passes (kLayerSlope)
-  const float vol = volume + ownWeight * (ownVolume - volume);
+  float vol = volume + ownWeight * (ownVolume - volume);
+  if (hugs) {  // short hair: lifted on top, close at the sides and the nape (kHugVolumeLow)
+    const float t =
+        std::clamp((nrm[1] - kHugVolumeLow) / (kHugVolumeHigh - kHugVolumeLow), 0.f, 1.f);
+    const float kept = std::min(vol, kHugVolumeKept);
+    vol = kept + (vol - kept) * t * t * (3 - 2 * t);
+  }
   const float want = margin + std::min(vol, kVolumeRise * float(arc)) +
                      std::min(kLayerMax, kLayerSlope * float(arc));
   const float cap = margin + kLiftSlack + std::max(lift, ownWeight * (want - margin));

@@ -291,6 +291,56 @@ TEST(ShapeGrowth, ShortHairHugsTheNapeLongHairHangsFromIt) {
   }
 }
 
+// Short hair keeps its Volume on top and loses it below the skull's widest part (kHugVolumeLow):
+// a pixie's crown stands off, its nape lies close, instead of ending off the neck as a shelf.
+TEST(ShapeGrowth, ShortHairsVolumeLiftsTheCrownNotTheNape) {
+  const SphereHead head;
+  const Grid g = boxGrid(41, -2, 2);
+  const std::vector<float> field = constantField(g, 0, -0.6f, -0.8f);  // back and down
+  ShapeRules rules;
+  rules.on = true;
+  rules.volume = 0.15f;
+  GrowthParams gp;
+  gp.maxLength = 0.6;  // 6 cm: short hair
+  ASSERT_LT(gp.maxLength, kHugLength * (1 - kHugJitter));
+  // roots over the back (azimuth within 60 degrees of -z) at polar angle theta
+  const auto back = [](float theta) {
+    std::vector<Eigen::Vector3f> r = ring(theta, 12);
+    for (Eigen::Vector3f& p : r) p.z() = -p.z();
+    return r;
+  };
+  // the standoff of strand s's points past the rise (kVolumeRise), by the height of their
+  // direction from the centre (the sphere's normal): top (y > 0.45) or under the widest part
+  const auto past = [](const Strands& st, bool top) {
+    std::vector<float> d;
+    for (size_t s = 0; s + 1 < st.strandStart.size(); ++s) {
+      const std::vector<float> all = standOff(st, s, 1.f);
+      for (size_t k = all.size() / 2; k < all.size(); ++k) {
+        const float* q = &st.points[3 * size_t(st.strandStart[s] + 1 + k)];
+        const float ny = q[1] / std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
+        if (top ? ny > 0.45f : ny < -0.02f) d.push_back(all[k]);
+      }
+    }
+    return d;
+  };
+  Strands crown, nape;
+  ASSERT_TRUE(growStrands(g, field, back(0.5f), gp, crown, 1 << 20, &head.distance, nullptr,
+                          BodyCollider(), &rules)
+                  .ok());
+  ASSERT_TRUE(growStrands(g, field, back(1.45f), gp, nape, 1 << 20, &head.distance, nullptr,
+                          BodyCollider(), &rules)
+                  .ok());
+  const std::vector<float> top = past(crown, true), low = past(nape, false);
+  ASSERT_GT(top.size(), 12u);
+  ASSERT_GT(low.size(), 12u);
+  std::printf("short hair with 1.5 cm Volume: crown %.3f, nape %.3f off\n", median(top),
+              median(low));
+  // the crown at margin + volume (and a little layering); the nape at the default volume's
+  // (kHugVolumeKept) within 5 mm
+  EXPECT_NEAR(median(top), float(gp.margin) + 0.15f, 0.03f);
+  EXPECT_LT(median(low), float(gp.margin) + kHugVolumeKept + 0.05f);
+}
+
 TEST(ShapeGrowth, HairOverAnEarHeadsForAStrokeBehindItNotForOneInFront) {
   // a sphere whose scalp ends at y = 0.3 (an "ear" band below it, still above the widest part)
   const SphereHead sphere(0.3);
