@@ -39,6 +39,30 @@ test('the link in the address bar reopens the session in a new page', async ({ p
   expect(errors).toEqual([]);
 });
 
+test('New starts an empty head as a new session does, and Undo brings the work back', async ({
+  page,
+  context,
+}) => {
+  await page.goto('/?strands=2000');
+  const s0 = await settled(page);
+  expect(s0.curves).toBeGreaterThan(0);
+  await page.getByRole('button', { name: 'New', exact: true }).click();
+  const s1 = await settled(page, s0.revision);
+  expect(s1.curves).toBe(0);
+  expect(s1.text).toContain('New session');
+  // the same session the app opens with ?preset=empty (the camera aside)
+  const other = await context.newPage();
+  await other.goto('/?strands=2000&preset=empty');
+  await settled(other);
+  const [made, fresh] = await Promise.all(
+    [page, other].map((p) => p.evaluate(() => JSON.stringify(window.hairsketch.session()))),
+  );
+  expect(made).toBe(fresh);
+  await page.keyboard.press('Control+z');
+  const s2 = await settled(page, s1.revision);
+  expect(s2.curves).toBe(s0.curves);
+});
+
 test('a damaged link says what is wrong and the preset still loads', async ({ page }) => {
   await page.goto('/?strands=2000#s=bm90LWRlZmxhdGU');
   const s = await settled(page);

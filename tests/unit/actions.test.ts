@@ -53,6 +53,7 @@ function target() {
     copyEmbed: () => calls.push('copyEmbed'),
     save: () => calls.push('save'),
     open: () => calls.push('open'),
+    newSession: () => calls.push('new'),
     exportMenu: () => calls.push('export'),
     resetView: () => calls.push('reset'),
     showView: (name) => calls.push(`view:${name}`),

@@ -33,6 +33,8 @@ export interface ActionTarget {
   copyEmbed(): void;
   save(): void;
   open(): void;
+  /** "New": an empty head, as a new session starts (one undoable edit). */
+  newSession(): void;
   exportMenu(): void;
   resetView(): void;
   /** Eases the camera to a named view (viewer/namedViews.ts). */
@@ -200,6 +202,14 @@ export function buildActions(t: ActionTarget): Action[] {
       group: 'file',
       toolbar: 'more',
       run: () => t.copyEmbed(),
+    },
+    {
+      id: 'file.new',
+      label: 'New',
+      title: 'Start again from an empty head (Undo brings the work back)',
+      group: 'file',
+      toolbar: 'more',
+      run: () => t.newSession(),
     },
     {
       id: 'file.save',

@@ -193,6 +193,16 @@ export function startApp(): void {
     hairstyleLowest: () => lowestPoint(hair.strands?.points ?? [], heads.head.mesh.bounds.min[1]),
     cancelTool: () => active.cancel(),
     openDialog: () => toolbar.openFileDialog(),
+    // a new session keeps this one's strand count
+    emptySession: () =>
+      applyPreset(
+        emptySession(opts.grid, {
+          ...DEFAULT_GROWTH,
+          maxStrands: editor.session.growth.maxStrands,
+        }),
+        'empty',
+        { head, step: grid.step, viewpoint: viewer.cameraState() },
+      ),
     links,
     heads: headStore,
     pictures: pictureStore,

@@ -2,6 +2,7 @@
 // files: the ActionTarget of actions.ts, minus the view toggles the composition root adds.
 import type { Editor } from '../editor/editor';
 import type { HeadStore } from '../head/headStore';
+import type { SessionState } from '../model/session';
 import type { PictureStore } from '../reference/pictureStore';
 import type { Viewer } from '../viewer/viewer';
 import type { ActionTarget } from './actions';
@@ -25,6 +26,8 @@ export interface EditActionDeps {
   /** Abandons what the active tool is doing. */
   cancelTool(): void;
   openDialog(): void;
+  /** What "New" starts from: an empty head with a new session's settings. */
+  emptySession(): SessionState;
   /** The toolbar reflects a state change (e.g. "Avoid scalp" busy). */
   refresh(): void;
 }
@@ -95,6 +98,15 @@ export function editActions(d: EditActionDeps): EditActions {
       );
     },
     open: () => d.openDialog(),
+    newSession: () => {
+      const n = editor.session.curves.length;
+      editor.run({
+        kind: 'loadSession',
+        session: d.emptySession(),
+        what: `New session: an empty head (Undo brings back the ${n} curves before)`,
+        resetHistory: false,
+      });
+    },
     resetView: () => viewer.resetView(),
     showView: (name) => viewer.showView(name, d.hairstyleLowest()),
     orbitSpeed: () => viewer.orbitSpeed,
