@@ -22,9 +22,14 @@ export function activeQuality(setting: QualitySetting, software: boolean): Activ
   return setting;
 }
 
-/** The setting after `s` in the Quality button's cycle (Auto → Fast → High → Auto). */
-export function nextQuality(s: QualitySetting): QualitySetting {
-  return QUALITY_SETTINGS[(QUALITY_SETTINGS.indexOf(s) + 1) % QUALITY_SETTINGS.length];
+/** The setting after `s` in the Quality button's cycle: from Auto to the path Auto does not draw
+ *  on this renderer (`auto`: the one it draws), then to the other, then back to Auto; on a
+ *  software rasteriser Auto → High → Fast → Auto, so the first press changes the drawing (Auto →
+ *  Fast changed nothing there, and a new user pressed Q twice to see High). */
+export function nextQuality(s: QualitySetting, auto: ActiveQuality): QualitySetting {
+  const other: ActiveQuality = auto === 'fast' ? 'high' : 'fast';
+  if (s === 'auto') return other;
+  return s === other ? auto : 'auto';
 }
 
 /** The button's label: "Quality: Auto (Fast)", "Quality: High". */
@@ -89,7 +94,7 @@ export class QualityControl {
   }
 
   cycle(): void {
-    this.set(nextQuality(this.setting));
+    this.set(nextQuality(this.setting, activeQuality('auto', this.renderer.software)));
   }
 
   label(): string {
