@@ -3,6 +3,7 @@
 // curves are left alone. Lengths and directions worked out by hand.
 import { describe, expect, it } from 'vitest';
 import { presetSession } from '../../web/cli/presetSession';
+import { applyCommand } from '../../web/editor/commands';
 import { Head } from '../../web/head/head';
 import { endsAsFringe, lengthenSession } from '../../web/model/lengthen';
 import { emptySession, type StyleCurve } from '../../web/model/session';
@@ -103,5 +104,14 @@ describe('lengthenSession', () => {
     };
     expect(lengthenSession(tiny, -0.1).strokes).toBe(0);
     expect(arc(lengthenSession(tiny, -0.04).session.curves[0].points)).toBeCloseTo(0.21, 3);
+    // the status says what changed: the cap only (a new user read "shortened by 23 cm: 0 stroke
+    // ends moved" as a fault), or the strokes with it
+    const max = tiny.growth.maxLength * 10;
+    expect(applyCommand(tiny, { kind: 'lengthen', by: -0.1 }).message).toBe(
+      `Max length ${max - 1} cm (was ${max} cm): hair no stroke ends grows to at most that; no stroke's end moved.`,
+    );
+    expect(applyCommand(tiny, { kind: 'lengthen', by: 0.1 }).message).toBe(
+      `Hair lengthened by 1 cm: 1 stroke end moved, Max length ${max + 1} cm.`,
+    );
   });
 });

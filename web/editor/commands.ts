@@ -402,10 +402,13 @@ const HANDLERS: {
     const check = parseSession(r.session);
     if (!check.ok) return { session: s, message: `Nothing changed: ${check.error}.` };
     const cm = Math.round(Math.abs(cmd.by) * 100) / 10;
-    return {
-      session: r.session,
-      message: `Hair ${cmd.by > 0 ? 'lengthened' : 'shortened'} by ${cm} cm: ${r.strokes} stroke end${r.strokes === 1 ? '' : 's'} moved, Max length ${Math.round(r.session.growth.maxLength * 100) / 10} cm.`,
-    };
+    const ml = (g: SessionState['growth']) => Math.round(g.maxLength * 100) / 10;
+    // no stroke's end moved: only the cap changed, which the hair no stroke ends grows to
+    const message =
+      r.strokes === 0
+        ? `Max length ${ml(r.session.growth)} cm (was ${ml(s.growth)} cm): hair no stroke ends grows to at most that; no stroke's end moved.`
+        : `Hair ${cmd.by > 0 ? 'lengthened' : 'shortened'} by ${cm} cm: ${r.strokes} stroke end${r.strokes === 1 ? '' : 's'} moved, Max length ${ml(r.session.growth)} cm.`;
+    return { session: r.session, message };
   },
   setGrowth(s, cmd) {
     const g = { ...s.growth };
