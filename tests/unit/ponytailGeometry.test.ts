@@ -3,7 +3,11 @@
 
 import { describe, expect, it } from 'vitest';
 import { curveParams } from '../../web/model/curveSet';
-import { planeCrossing, ponytailCircles } from '../../web/model/ponytailGeometry';
+import {
+  MAX_PONYTAIL_RADIUS,
+  planeCrossing,
+  ponytailCircles,
+} from '../../web/model/ponytailGeometry';
 import type { Vec3 } from '../../web/model/vec3';
 
 // Spine straight down from the scalp at y = 1 to y = -1 (21 points, step 0.1).
@@ -36,15 +40,29 @@ describe('ponytail circles', () => {
   });
 
   it('take their scale from the cross-section curve where it is drawn', () => {
-    // A circle of radius 0.5 around the spine at y = 0, where the profiles give 0.25.
+    // A circle of radius 0.3 around the spine at y = 0, where the profiles give 0.25.
     const cs: Vec3[] = Array.from({ length: 24 }, (_, k) => {
       const a = (2 * Math.PI * k) / 24;
-      return [0.5 * Math.cos(a), 0, 0.5 * Math.sin(a)];
+      return [0.3 * Math.cos(a), 0, 0.3 * Math.sin(a)];
     });
     const g = ponytailCircles(spine, cs, profileA, profileB);
-    expect(g.scale).toBeCloseTo(2, 10);
-    expect(g.circles[0].radius).toBeCloseTo(0.6, 10);
-    expect(g.circles[10].radius).toBeCloseTo(0.4, 10);
+    expect(g.scale).toBeCloseTo(1.2, 10);
+    expect(g.circles[10].radius).toBeCloseTo(0.2 * 1.2, 10);
+    // 0.3 * 1.2 = 0.36 is past the widest a ponytail may be
+    expect(g.circles[0].radius).toBe(MAX_PONYTAIL_RADIUS);
+  });
+
+  it('are no wider than 1.25 times their neighbours where a profile crosses far from the spine', () => {
+    // narrow profiles, r(y) = 0.1 + 0.02 y; profile A runs in from far out above them (as a new
+    // user's profile drawn from the head down), profile B straight up
+    const a = [[-0.5, 0.65, 0] as Vec3, ...line(-0.111, 0.55, -0.089, -0.55)];
+    const b = [[0.111, 0.65, 0] as Vec3, ...line(0.111, 0.55, 0.089, -0.55)];
+    const g = ponytailCircles(spine, [], a, b);
+    const at = (y: number) => g.circles.find((c) => Math.abs(c.centre[1] - y) < 1e-9);
+    // by hand: at y = 0.6 profile A is at x = -0.3055, B at 0.111: radius 0.208 as drawn
+    expect(at(0.5)?.radius).toBeCloseTo(0.11, 10);
+    expect(at(0.6)?.radius).toBeCloseTo(1.25 * 0.11, 10);
+    expect(at(0)?.radius).toBeCloseTo(0.1, 10);
   });
 
   it('every other spine point with every = 2; none without profiles', () => {

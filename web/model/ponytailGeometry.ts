@@ -11,7 +11,18 @@
 // nearest its centroid, its radius is half its largest extent across the spine (points projected
 // onto the plane normal to t_j); every radius is multiplied by r_cross / r_profiles(j), r_profiles
 // being the profile radius of the circle nearest j. No cross-section curve: scale 1.
+// Guards against profiles drawn loosely (a new user's, following the user guide): a profile that
+// crosses a circle's plane far from the spine (near the scalp, where the spine turns up and over)
+// gives that circle a radius far past its neighbours' (a band 9.8 cm wide, the tail a cone over
+// the head), so each circle is at most OUTLIER times the wider of its neighbours (as the profiles
+// gave them, before the scale), and no circle is wider than MAX_PONYTAIL_RADIUS (a whole head of
+// hair gathered is about 6 cm across).
 import { add, distance, dot, length, normalize, scale, sub, type Vec3 } from './vec3';
+
+/** How much wider than the wider of its neighbours a circle may be. */
+export const OUTLIER = 1.25;
+/** The widest a ponytail circle may be (world units: 3 cm). */
+export const MAX_PONYTAIL_RADIUS = 0.3;
 
 export interface PonytailCircle {
   centre: Vec3;
@@ -82,6 +93,11 @@ export function ponytailCircles(
     const r = distance(a, b) / 2;
     if (r > 0) circles.push({ centre: spine[i], axis: t, radius: r, spineIndex: i });
   }
+  const drawn = circles.map((c) => c.radius);
+  for (let i = 0; i < circles.length; i++) {
+    const near = Math.max(drawn[i - 1] ?? 0, drawn[i + 1] ?? 0);
+    if (near > 0) circles[i].radius = Math.min(drawn[i], OUTLIER * near);
+  }
   let k = 1;
   if (crossSection.length >= 2 && circles.length > 0 && spine.length > 0) {
     let cx: Vec3 = [0, 0, 0];
@@ -96,6 +112,6 @@ export function ponytailCircles(
     const rc = crossRadius(crossSection, tangents[j]);
     if (rc > 0) k = rc / nearest.radius;
   }
-  for (const c of circles) c.radius *= k;
+  for (const c of circles) c.radius = Math.min(c.radius * k, MAX_PONYTAIL_RADIUS);
   return { circles, scale: k };
 }
