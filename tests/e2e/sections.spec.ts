@@ -120,6 +120,13 @@ test('half-up: an ear-to-ear parting and a bun on the top section gather the top
   // the Bun tool is active: the scalp shows its sections; another tool: the head's own colours
   await page.waitForFunction(() => window.hairsketch.sectionsTinted() > 0);
   await shoot(page, 'sections-half-up-tinted');
+  // with the style curves hidden (1, for clean pictures) the tint goes too, and comes back
+  await page.keyboard.press('1');
+  await page.waitForFunction(
+    () => window.hairsketch.sectionsTinted() === 0 && window.hairsketch.sectionsOverHair() === 0,
+  );
+  await page.keyboard.press('1');
+  await page.waitForFunction(() => window.hairsketch.sectionsOverHair() > 0);
   await page.getByRole('button', { name: 'Stream curve' }).click();
   await page.waitForFunction(() => window.hairsketch.sectionsTinted() === 0);
   await shoot(page, 'sections-half-up');

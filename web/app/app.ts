@@ -147,6 +147,10 @@ export function startApp(): void {
     headMesh,
     head: () => heads.head.mesh,
     hair,
+    curvesShown: () => view.state.display.curves,
+  });
+  view.listen((c) => {
+    if (c.state.display.curves !== c.previous.display.curves) sectionTint.update();
   });
   const bandView = new TieBandView(viewer);
   const bands = new TieBandPresenter(bandView, editor);

@@ -1,7 +1,8 @@
 // Shows the scalp's sections while a tie tool (Ponytail, Braid, Bun) is active and the session
 // has sections on: the head is tinted by section (viewer/sectionTint.ts) from the hair shown,
 // the sections are drawn over the hair too (half transparent: the scalp is under the hair), and
-// the head gets its own colours back when another tool is chosen.
+// the head gets its own colours back when another tool is chosen or the style curves are hidden
+// (key 1, for clean pictures: the tint over the hair read as a shaved scalp to a new user).
 
 import type * as THREE from 'three';
 import type { Editor, ToolName } from '../editor/editor';
@@ -44,6 +45,8 @@ export class SectionTintPresenter {
       headMesh: import('three').Mesh;
       head: () => HeadMeshArrays;
       hair: HairPresenter;
+      /** Whether the style curves are shown (the Curves display toggle). */
+      curvesShown: () => boolean;
     },
   ) {
     d.editor.listen(() => this.update());
@@ -52,7 +55,7 @@ export class SectionTintPresenter {
   /** Call when the hair shown or the head changed. */
   update(): void {
     const { editor, hair } = this.d;
-    const on = TIE_TOOLS.includes(editor.tool) && !!editor.session.sections;
+    const on = TIE_TOOLS.includes(editor.tool) && !!editor.session.sections && this.d.curvesShown();
     const strands = on ? hair.strands : null;
     const key = on ? (strands ?? 'none') : null;
     if (key === this.shownFor) return;
