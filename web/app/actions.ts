@@ -204,14 +204,6 @@ export function buildActions(t: ActionTarget): Action[] {
       run: () => t.copyEmbed(),
     },
     {
-      id: 'file.new',
-      label: 'New',
-      title: 'Start again from an empty head (Undo brings the work back)',
-      group: 'file',
-      toolbar: 'more',
-      run: () => t.newSession(),
-    },
-    {
       id: 'file.save',
       label: 'Save',
       title: 'Save the session as a JSON file',
@@ -376,6 +368,15 @@ export function buildActions(t: ActionTarget): Action[] {
         pressed: () => t.display(key),
       }),
     ),
+    // last in the toolbar's second row: it fits on its last line without moving the rest
+    {
+      id: 'file.new',
+      label: 'New',
+      title: 'Start again from an empty head (Undo brings the work back)',
+      group: 'file',
+      toolbar: 'more',
+      run: () => t.newSession(),
+    },
   ];
 }
 
