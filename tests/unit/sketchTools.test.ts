@@ -260,21 +260,21 @@ describe('PonytailTool', () => {
     expect(previews.some((p) => p !== null && p.length >= 3)).toBe(true);
     expect(previews[previews.length - 1]).toBeNull();
     expect(tool.stage).toBe('cross');
-    drag(tool, line([-0.6, -1], [0.6, -1]));
-    drag(tool, line([-0.5, -0.5], [-0.3, -3.5]));
+    drag(tool, line([-0.25, -1], [0.25, -1]));
+    drag(tool, line([-0.2, -0.5], [-0.1, -3.5]));
     expect(shaped).toHaveLength(0);
-    drag(tool, line([0.5, -0.5], [0.3, -3.5]));
+    drag(tool, line([0.2, -0.5], [0.1, -3.5]));
     expect(stages).toEqual(['cross', 'profileA', 'profileB', 'spine']);
     expect(shaped).toHaveLength(1);
     expect(shaped[0].id).toBe('c1');
     const p = shaped[0].shape;
     expect(p.circles.length).toBeGreaterThan(3);
-    // C1 first (nearest the root), radius from the cross-section: 0.6 at y = -1
+    // C1 first (nearest the root), radius from the cross-section: 0.25 at y = -1
     expect(p.circles[0].centre[1]).toBeGreaterThan(p.circles[1].centre[1]);
     const atCross = p.circles.reduce((a, c) =>
       Math.abs(c.centre[1] + 1) < Math.abs(a.centre[1] + 1) ? c : a,
     );
-    expect(atCross.radius).toBeCloseTo(0.6, 1);
+    expect(atCross.radius).toBeCloseTo(0.25, 2);
     // the circles narrow toward the tip, as the profiles do
     expect(p.circles[p.circles.length - 1].radius).toBeLessThan(p.circles[0].radius);
   });
