@@ -11,7 +11,7 @@ const plainPort = port + 1;
 
 export default defineConfig({
   testDir: 'tests/e2e',
-  timeout: 120_000,
+  timeout: 240_000,
   expect: { timeout: 60_000 },
   // Two workers, one per core of the test machine (E2E_WORKERS overrides): on 13 tests they took
   // 0.6-1.0x the time of one worker on the loaded two-core machine, and no test was less stable.

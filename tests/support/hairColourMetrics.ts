@@ -121,3 +121,35 @@ export function highlightPeak(withHair: Rgba, bald: Rgba, r = 3, topShare = 0.35
   const at = (f: number) => means[Math.floor(f * (means.length - 1))];
   return at(0.99) / at(0.5);
 }
+
+/** How much the hair's strands and locks show: of the hair's pixels, the mean of |v − the mean v
+ *  of its (2r + 1)² neighbourhood| over the mean v, v the pixel's sRGB grey (as an eye weighs
+ *  dark hair: in linear light every dark strand is near 0). A smooth shell gives nearly 0. */
+export function strandContrast(withHair: Rgba, bald: Rgba, r = 1): number {
+  const { width: W, height: H } = withHair;
+  if (W !== bald.width || H !== bald.height) throw new Error('the two pictures differ in size');
+  const a = withHair.rgba;
+  const z = bald.rgba;
+  const hair = new Uint8Array(W * H);
+  const v = new Float64Array(W * H);
+  for (let i = 0; i < W * H; i++) {
+    const k = 4 * i;
+    v[i] = 0.299 * a[k] + 0.587 * a[k + 1] + 0.114 * a[k + 2];
+    const diff =
+      Math.abs(a[k] - z[k]) + Math.abs(a[k + 1] - z[k + 1]) + Math.abs(a[k + 2] - z[k + 2]);
+    hair[i] = diff > 24 ? 1 : 0;
+  }
+  let dev = 0;
+  let sum = 0;
+  for (let y = r; y < H - r; y++)
+    for (let x = r; x < W - r; x++) {
+      const i = y * W + x;
+      if (!hair[i]) continue;
+      let m = 0;
+      for (let dy = -r; dy <= r; dy++) for (let dx = -r; dx <= r; dx++) m += v[i + dy * W + dx];
+      m /= (2 * r + 1) ** 2;
+      dev += Math.abs(v[i] - m);
+      sum += v[i];
+    }
+  return sum > 0 ? dev / sum : 0;
+}

@@ -9,7 +9,12 @@ import { openStillRenderer, type StillRenderer } from '../../web/cli/render';
 import { Head } from '../../web/head/head';
 import { DEFAULT_HAIR_LOOK, type HairLook } from '../../web/model/hairLook';
 import type { SessionState } from '../../web/model/session';
-import { hairColour, highlightPeak, hueDistance } from '../support/hairColourMetrics';
+import {
+  hairColour,
+  highlightPeak,
+  hueDistance,
+  strandContrast,
+} from '../support/hairColourMetrics';
 import { readPng } from './pngPixels';
 
 const DIST_BUILT = existsSync(new URL('../../dist/embed.html', import.meta.url));
@@ -104,5 +109,25 @@ describe.runIf(DIST_BUILT)('hair colour as drawn', () => {
       );
       for (const p of peaks) expect(p).toBeLessThan(limits[quality]);
     }
+  });
+
+  it('from behind, the outer strands show, not a smooth shell', async () => {
+    // the default style at full density from behind, in Fast: drawn as the weighted mean of all
+    // its layers, the hair was a smooth shell, near-black down the middle (each fragment's weight
+    // counted its depth from one point for the whole hair, so beyond 6 cm of it every layer
+    // weighed the same); weighted from the nearest hair in each pixel, the outer strands show.
+    // strandContrast 0.067 before, 0.124 after (500 × 500 pixels, 30,000 strands)
+    // light brown hair whose strands vary widely in colour: a pixel that is the mean of many
+    // layers is the mean of many strands' colours
+    const style = {
+      ...presetSession('default', Head.builtin(), '25k', 30000),
+      hairLook: { ...DEFAULT_HAIR_LOOK, melanin: 0.3, tipMelanin: 0.3, variation: 1 },
+    };
+    const views = { width: 500, height: 500, views: ['back'] as const };
+    const hair = await renderer.render(style, { ...views, quality: 'fast' });
+    const none = await renderer.render({ ...style, curves: [] }, { ...views, quality: 'fast' });
+    const c = strandContrast(readPng(hair.png[0]), readPng(none.png[0]));
+    console.log(`from behind: strand contrast ${c.toFixed(3)}`);
+    expect(c).toBeGreaterThan(0.095);
   });
 });

@@ -15,28 +15,52 @@
 // their depth first (colour off), so hair behind them is not counted.
 //
 // f(depth): exp(−(d − d0)/OIT_DEPTH_SCALE), d the fragment's distance from the camera and d0 that
-// of the hair's nearest bounding point: a strand 5 mm (0.05 units) behind another counts 1/e as
-// much, which keeps the outer hair's strands and highlights on top of the inner hair's shade.
-// Clamped to a range a half float carries (about 3.5 cm of depth past d0 is told apart).
+// of the hair nearest the camera in the same pixel: a strand 5 mm (0.05 units) behind another
+// counts 1/e as much, which keeps the outer hair's strands, locks and highlights on top of the
+// inner hair's shade. Clamped to a range a half float carries (about 6 cm of depth past d0 is
+// told apart). d0 comes from a first pass over the same strands (HAIR_FRONT: no shading, each
+// fragment's distance blended by MIN into a one-channel half-float target). With one d0 for the
+// whole hair (its bounding sphere's nearest point) every fragment of hair more than 6 cm behind
+// that point weighed the same, so a head of hair seen from behind or from the side was the plain
+// mean of all its layers: a smooth shell without strands, curls or locks.
 import * as THREE from 'three';
 
 /** e-folding depth of a fragment's weight, world units (1 unit = 10 cm). */
 export const OIT_DEPTH_SCALE = 0.05;
 
+/** The front pass counts a fragment when its strand covers at least this much of the pixel. */
+export const FRONT_MIN_ALPHA = 0.05;
+
+/** The front target holds distances past oitNear over this range (world units), so its clear
+ *  colour, 1 (white, the same in every colour space), is 'no hair here'. */
+const FRONT_RANGE = 100;
+
 /** GLSL for a strand fragment shader under HAIR_OIT (glslVersion GLSL3): the two outputs and
  *  oitWrite(colour, alpha), which writes them. */
 export const OIT_FRAGMENT_GLSL = /* glsl */ `
+uniform float oitNear; // distance from the camera to the hair's nearest bounding point
+#ifdef HAIR_FRONT
+layout(location = 0) out highp vec4 oitFront;
+void oitWrite(vec3 color, float alpha, float dist) {
+  // the front pass: fragments a strand covers well (not its fading tip) give their distance past
+  // oitNear; the target's MIN blending keeps the nearest
+  if (alpha < ${FRONT_MIN_ALPHA.toFixed(2)}) discard;
+  oitFront = vec4((dist - oitNear) / ${FRONT_RANGE.toFixed(1)}, 0.0, 0.0, 1.0);
+}
+#else
 layout(location = 0) out highp vec4 oitAccum;
 layout(location = 1) out highp vec4 oitWeight;
-uniform float oitNear; // distance from the camera to the hair's nearest bounding point
+uniform sampler2D oitFrontDepth; // the front pass: the nearest hair's distance past oitNear
 void oitWrite(vec3 color, float alpha, float dist) {
+  float front = oitNear + ${FRONT_RANGE.toFixed(1)} * texelFetch(oitFrontDepth, ivec2(gl_FragCoord.xy), 0).r;
   // ln f in [-7, 4.6]: f from ~1e-3 to 100, so c·w stays a normal half float for α >= 0.004
-  float lnF = clamp((oitNear - dist) / ${OIT_DEPTH_SCALE.toFixed(3)} + 4.6, -7.0, 4.6);
+  float lnF = clamp((front - dist) / ${OIT_DEPTH_SCALE.toFixed(3)} + 4.6, -7.0, 4.6);
   float w = alpha * exp(lnF);
   oitAccum = vec4(color * w, alpha);
   // and the weighted depth past oitNear (small numbers: a half float keeps them to ~0.1 mm)
   oitWeight = vec4(w, w * (dist - oitNear), 0.0, alpha);
 }
+#endif
 `;
 
 const compositeVertex = /* glsl */ `
@@ -89,6 +113,10 @@ void main() {
 export class WeightedBlendedHair {
   readonly material: THREE.ShaderMaterial;
   private target: THREE.WebGLRenderTarget | null = null;
+  /** The front pass's material and target (one half float a pixel: the nearest hair's distance
+   *  past oitNear). */
+  private readonly front: THREE.ShaderMaterial;
+  private frontTarget: THREE.WebGLRenderTarget | null = null;
   private readonly depthOnly = new THREE.MeshBasicMaterial({ colorWrite: false });
   private readonly composite: THREE.ShaderMaterial;
   private readonly depth: THREE.ShaderMaterial;
@@ -117,8 +145,26 @@ export class WeightedBlendedHair {
     });
     material.name = 'HairStripsOit';
     material.uniforms.oitNear = { value: 0 };
+    material.uniforms.oitFrontDepth = { value: null };
     material.onBeforeRender = strands.onBeforeRender;
     this.material = material;
+    this.front = new THREE.ShaderMaterial({
+      uniforms: strands.uniforms,
+      defines: { ...strands.defines, HAIR_OIT: '', HAIR_FRONT: '' },
+      vertexShader: strands.vertexShader,
+      fragmentShader: strands.fragmentShader,
+      glslVersion: THREE.GLSL3,
+      side: THREE.DoubleSide,
+      transparent: true,
+      depthTest: false,
+      depthWrite: false,
+      blending: THREE.CustomBlending,
+      blendEquation: THREE.MinEquation,
+      blendSrc: THREE.OneFactor,
+      blendDst: THREE.OneFactor,
+    });
+    this.front.name = 'HairFrontOit';
+    this.front.onBeforeRender = strands.onBeforeRender;
     this.composite = new THREE.ShaderMaterial({
       uniforms: { accumTexture: { value: null }, weightTexture: { value: null } },
       vertexShader: compositeVertex,
@@ -174,6 +220,17 @@ export class WeightedBlendedHair {
     } else if (this.target.width !== size.x || this.target.height !== size.y) {
       this.target.setSize(size.x, size.y);
     }
+    if (!this.frontTarget) {
+      this.frontTarget = new THREE.WebGLRenderTarget(size.x, size.y, {
+        type: THREE.HalfFloatType,
+        format: THREE.RedFormat,
+        minFilter: THREE.NearestFilter,
+        magFilter: THREE.NearestFilter,
+        depthBuffer: false,
+      });
+    } else if (this.frontTarget.width !== size.x || this.frontTarget.height !== size.y) {
+      this.frontTarget.setSize(size.x, size.y);
+    }
     return this.target;
   }
 
@@ -202,6 +259,21 @@ export class WeightedBlendedHair {
       restore.push(o);
     };
     try {
+      // the hair's distance past oitNear nearest the camera, per pixel
+      const sphere = this.sphere.copy(hair.geometry.boundingSphere ?? new THREE.Sphere());
+      sphere.applyMatrix4(hair.matrixWorld);
+      const eye = new THREE.Vector3().setFromMatrixPosition(camera.matrixWorld);
+      const near = Math.max(0, eye.distanceTo(sphere.center) - sphere.radius);
+      this.material.uniforms.oitNear.value = near;
+      const front = this.frontTarget as THREE.WebGLRenderTarget;
+      renderer.setRenderTarget(front);
+      renderer.setClearColor(0xffffff, 1); // no hair: FRONT_RANGE past oitNear
+      renderer.clear(true, false, false);
+      renderer.autoClear = false;
+      hair.material = this.front;
+      renderer.render(hair, camera);
+      this.material.uniforms.oitFrontDepth.value = front.texture;
+
       renderer.setRenderTarget(target);
       renderer.setClearColor(0x000000, 1); // Σ = 0, revealage 1
       renderer.clear(true, true, false);
@@ -226,13 +298,6 @@ export class WeightedBlendedHair {
       }
       for (const c of shown) c.visible = false;
       // the hair's sums
-      const sphere = this.sphere.copy(hair.geometry.boundingSphere ?? new THREE.Sphere());
-      sphere.applyMatrix4(hair.matrixWorld);
-      const eye = new THREE.Vector3().setFromMatrixPosition(camera.matrixWorld);
-      this.material.uniforms.oitNear.value = Math.max(
-        0,
-        eye.distanceTo(sphere.center) - sphere.radius,
-      );
       hair.material = this.material;
       renderer.render(hair, camera);
       // the composite over what was drawn before
@@ -263,6 +328,8 @@ export class WeightedBlendedHair {
 
   dispose(): void {
     this.target?.dispose();
+    this.frontTarget?.dispose();
+    this.front.dispose();
     this.material.dispose();
     this.composite.dispose();
     this.depth.dispose();

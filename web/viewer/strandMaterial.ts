@@ -209,7 +209,11 @@ void main() {
   vec4 world = modelMatrix * vec4(position, 1.0);
   vec3 T = normalize(mat3(modelMatrix) * tangent);
   vAlong = vec2(along.x, tipDistanceOf(along.y));
+#ifdef HAIR_FRONT
+  vColor = vec3(0.0); // the front pass needs the distance only (hairOit.ts)
+#else
   vColor = shadeStrand(T, world.xyz, vAlong, strandRandom, lighting);
+#endif
   // a line is one pixel wide: its opacity is the strand's true coverage of that pixel (as the
   // strips' width / drawn width), tapering to the tip
   float dist = length(cameraPosition - world.xyz);
@@ -312,7 +316,11 @@ void main() {
 #else
   if (alpha < 0.004) discard;
 #endif
+#ifdef HAIR_FRONT
+  vec3 color = vec3(0.0); // the front pass needs the distance only (hairOit.ts)
+#else
   vec3 color = shadeStrand(normalize(vTangent), vWorldPosition, vAlong, vRandom, vLight);
+#endif
 #ifdef HAIR_OIT
   oitWrite(color, alpha, length(cameraPosition - vWorldPosition));
 #else
