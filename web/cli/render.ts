@@ -145,6 +145,9 @@ export async function openStillRenderer(): Promise<StillRenderer> {
       const t0 = performance.now();
       const link = await encodeSessionLink(session);
       const page = await browser.newPage({ viewport: { width, height }, deviceScaleFactor: 1 });
+      // every step waits as long as the time cap (not Playwright's 30 s): on a busy machine a
+      // page drawing 30,000 strands in software answers late
+      page.setDefaultTimeout(timeoutMs);
       try {
         if (headFile) {
           // into the page's head store, where the embed looks for the head the link names

@@ -1,0 +1,91 @@
+// npm run pictures:look: the hair's look in both qualities (issue: hair that looks like hair).
+// Eight styles from the presets, each at 30,000 strands, drawn by `hairsketch render`'s renderer
+// (the built app's embed) in Fast and in High, front, side and back side by side in one picture
+// per style and quality: docs/screenshots/look/<style>-<quality>.png (LOOK_DIR=<dir> writes
+// elsewhere, e.g. a build before a change; LOOK_SIZE=WxH of each view, default 320x320;
+// LOOK_STYLES=a,b only those).
+import { mkdirSync, writeFileSync } from 'node:fs';
+import { readPng } from '../tests/unit/pngPixels';
+import { presetSession } from '../web/cli/presetSession';
+import { openStillRenderer } from '../web/cli/render';
+import { encodePng } from '../web/export/png';
+import { Head } from '../web/head/head';
+import { detailForCurlType } from '../web/model/curlTypes';
+import { DEFAULT_HAIR_LOOK, type HairLook } from '../web/model/hairLook';
+import type { PresetName } from '../web/model/presets';
+import type { SessionState } from '../web/model/session';
+import { VIEW_NAMES } from '../web/viewer/namedViews';
+
+const [WIDTH, HEIGHT] = (process.env.LOOK_SIZE ?? '320x320').split('x').map(Number);
+const out = process.env.LOOK_DIR ?? 'docs/screenshots/look';
+const STRANDS = 30_000;
+mkdirSync(out, { recursive: true });
+
+const head = Head.builtin();
+const preset = (name: PresetName) => presetSession(name, head, '25k', STRANDS);
+const withLook = (s: SessionState, look: Partial<HairLook>): SessionState => ({
+  ...s,
+  hairLook: { ...DEFAULT_HAIR_LOOK, ...(s.hairLook ?? {}), ...look },
+});
+
+const styles: Record<string, () => SessionState> = {
+  bob: () => preset('bob'),
+  long: () => preset('long'),
+  braid: () => preset('braid'),
+  bun: () => preset('bun'),
+  curly: () => preset('curly'),
+  coily: () => {
+    const s = preset('curly');
+    return withLook(
+      { ...s, detail: detailForCurlType('4B', s.detail) },
+      {
+        melanin: 0.85,
+        tipMelanin: 0.85,
+        redness: 0.2,
+      },
+    );
+  },
+  grey: () => withLook(preset('bob'), { melanin: 0.5, tipMelanin: 0.5, grey: 100 }),
+  'auburn-tips': () =>
+    withLook(preset('long'), { melanin: 0.32, redness: 0.8, tipMelanin: 0.12, tipLength: 2 }),
+};
+
+const only = process.env.LOOK_STYLES?.split(',');
+
+/** The views side by side, 2 pixels apart on white. */
+function sideBySide(pngs: readonly Uint8Array[]): Uint8Array {
+  const views = pngs.map((p) => readPng(p));
+  const gap = 2;
+  const height = Math.max(...views.map((v) => v.height));
+  const width = views.reduce((w, v) => w + v.width, 0) + gap * (views.length - 1);
+  const rgba = new Uint8Array(4 * width * height).fill(255);
+  let x0 = 0;
+  for (const v of views) {
+    for (let y = 0; y < v.height; y++)
+      rgba.set(v.rgba.subarray(4 * y * v.width, 4 * (y + 1) * v.width), 4 * (y * width + x0));
+    x0 += v.width + gap;
+  }
+  return encodePng(width, height, 4, rgba);
+}
+
+const renderer = await openStillRenderer();
+try {
+  for (const [style, make] of Object.entries(styles)) {
+    if (only && !only.includes(style)) continue;
+    for (const quality of ['fast', 'high'] as const) {
+      const still = await renderer.render(make(), {
+        views: VIEW_NAMES,
+        width: WIDTH,
+        height: HEIGHT,
+        quality,
+        timeoutMs: 600_000,
+      });
+      writeFileSync(`${out}/${style}-${quality}.png`, sideBySide(still.png));
+      console.log(
+        `${style} (${quality}): ${still.strands} strands, ${(still.ms / 1000).toFixed(1)} s`,
+      );
+    }
+  }
+} finally {
+  await renderer.close();
+}
