@@ -182,6 +182,40 @@ describe('editor commands, each undoable', () => {
     expect(e.run({ kind: 'setDetail', curveId: null, detail: { curl: { ...curl } } })).toBe(false);
   });
 
+  it('setCurlType: a coily type brings its root lift as the Volume in the same edit', () => {
+    // emptySession has the shape rules and the default Volume (none stored): 4B sets its curl
+    // (radius 2.2-3 mm, 8.5-10.5 turns per 10 cm) and Volume 2.5 cm, undone together
+    roundTrip([], { kind: 'setCurlType', curveId: null, type: '4B' }, (s) => {
+      expect(s.detail?.curl?.radius).toBeGreaterThanOrEqual(0.022);
+      expect(s.detail?.curl?.radius).toBeLessThanOrEqual(0.03);
+      expect(s.detail?.curl?.frequency).toBeGreaterThanOrEqual(8.5);
+      expect(s.detail?.curl?.frequency).toBeLessThanOrEqual(10.5);
+      expect(s.volume).toBe(0.25);
+    });
+    // waves lie on the head: no Volume
+    roundTrip([], { kind: 'setCurlType', curveId: null, type: '2B' }, (s) => {
+      expect(s.detail?.curl?.radius).toBeGreaterThanOrEqual(0.04);
+      expect(s.volume).toBeUndefined();
+    });
+    // a Volume the user set stays
+    roundTrip(
+      [{ kind: 'setVolume', volume: 0.12 }],
+      { kind: 'setCurlType', curveId: null, type: '3A' },
+      (s) => expect(s.volume).toBe(0.12),
+    );
+    // a curve's own curl type leaves the whole head's Volume
+    roundTrip([addStream(0.1)], { kind: 'setCurlType', curveId: 'c1', type: '4C' }, (s) => {
+      expect(s.curves[0].detail?.curl?.radius).toBeGreaterThanOrEqual(0.015);
+      expect(s.volume).toBeUndefined();
+    });
+    const { e, log } = editorWithLog();
+    expect(e.run({ kind: 'setCurlType', curveId: null, type: '4A' })).toBe(true);
+    expect(log.at(-1)?.message).toContain('Volume 2.5 cm');
+    expect(e.undo()).toBe(true);
+    expect(e.session.detail).toBeUndefined();
+    expect(e.session.volume).toBeUndefined();
+  });
+
   it("setDetail of a curve: its own detail (even none), then back to the session's", () => {
     const frizz = { distance: 0.006, shape: 0.5 };
     roundTrip([addStream(0)], { kind: 'setDetail', curveId: 'c1', detail: { frizz } }, (s) =>

@@ -116,6 +116,7 @@ export function buildHairPanel(
     setVolume: (volume) => editor.run({ kind: 'setVolume', volume }),
     lengthen: (by) => editor.run({ kind: 'lengthen', by }),
     setDetail: (curveId, detail) => editor.run({ kind: 'setDetail', curveId, detail }),
+    setCurlType: (curveId, type) => editor.run({ kind: 'setCurlType', curveId, type }),
     setHairLook: (look) => editor.run({ kind: 'setHairLook', look }),
     setBandColor: (color) => editor.run({ kind: 'setBandColor', color }),
     say: (m) => status.note(m),

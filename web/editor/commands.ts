@@ -2,6 +2,7 @@
 // function from (session, command) to the next session, the selection after it and a sentence
 // for the status line. The Editor (editor.ts) runs them through one path: history, then notify.
 
+import { detailForCurlType, rootLiftOf } from '../model/curlTypes';
 import { CURVE_PARAMS, type CurveParamSpec, defaultParams } from '../model/curveParams';
 import { detailIsOn, type HairDetail } from '../model/detail';
 import type { GrowthParams } from '../model/growthParams';
@@ -85,6 +86,9 @@ export type Command =
   | { kind: 'setVolume'; volume: number }
   /** The session's detail (curveId null) or one curve's own (undefined: none / the session's). */
   | { kind: 'setDetail'; curveId: string | null; detail: HairDetail | undefined }
+  /** The Hair panel's Curl type: the type's detail (curlTypes.ts), and for the whole head of a
+   *  session with the shape rules whose Volume is the default, the type's root lift, one edit. */
+  | { kind: 'setCurlType'; curveId: string | null; type: string }
   /** Growth settings (strand density, cap, maximum length). */
   | { kind: 'setGrowth'; patch: Partial<GrowthParams> }
   /** "Longer" / "Shorter": every stroke that ends hair moved on by `by` world units (cut back
@@ -393,6 +397,20 @@ const HANDLERS: {
       message: d
         ? `Detail of ${c.id}: ${describeDetail(d)}.`
         : `${c.id} uses the session's detail.`,
+    };
+  },
+  setCurlType(s, cmd) {
+    const c = cmd.curveId === null ? null : findCurve(s, cmd.curveId);
+    if (cmd.curveId !== null && !c) return { session: s, message: `No curve ${cmd.curveId}.` };
+    const detail = detailForCurlType(cmd.type, c ? c.detail : s.detail);
+    const r = HANDLERS.setDetail(s, { kind: 'setDetail', curveId: cmd.curveId, detail });
+    const lift = rootLiftOf(cmd.type);
+    const spec = SESSION_SETTINGS.volume;
+    if (c || lift === undefined || !s.shape || s.volume !== undefined) return r;
+    const lifted = { ...r.session, volume: Math.min(spec.max, lift) };
+    return {
+      session: lifted,
+      message: `${r.session === s ? `Curl type ${cmd.type}` : r.message.replace(/\.$/, '')}; Volume ${(lifted.volume * 10).toFixed(1)} cm: its roots stand off the head.`,
     };
   },
   lengthen(s, cmd) {

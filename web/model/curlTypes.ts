@@ -20,6 +20,10 @@ export interface CurlType {
   frequency: [number, number];
   /** The lock spacing on the scalp (clump guide distance, world units). */
   lock: number;
+  /** The Volume it brings (world units: the hair's lift at the roots, sessions with the shape
+   *  rules): curly and coily hair stands off the head at its roots, a spring of hair on hair,
+   *  where straight and wavy hair lies on it; none for waves. */
+  rootLift?: number;
 }
 
 export const CURL_TYPES: readonly CurlType[] = [
@@ -44,6 +48,7 @@ export const CURL_TYPES: readonly CurlType[] = [
     radius: [0.09, 0.12],
     frequency: [2.2, 2.8],
     lock: 0.18,
+    rootLift: 0.1,
   },
   {
     id: '3B',
@@ -51,6 +56,7 @@ export const CURL_TYPES: readonly CurlType[] = [
     radius: [0.07, 0.09],
     frequency: [3, 3.8],
     lock: 0.15,
+    rootLift: 0.1,
   },
   {
     id: '3C',
@@ -58,14 +64,23 @@ export const CURL_TYPES: readonly CurlType[] = [
     radius: [0.05, 0.065],
     frequency: [4.2, 5.4],
     lock: 0.12,
+    rootLift: 0.1,
   },
-  { id: '4A', label: '4A coily: tight coils', radius: [0.03, 0.045], frequency: [6, 8], lock: 0.1 },
+  {
+    id: '4A',
+    label: '4A coily: tight coils',
+    radius: [0.03, 0.045],
+    frequency: [6, 8],
+    lock: 0.1,
+    rootLift: 0.25,
+  },
   {
     id: '4B',
     label: '4B coily: zig-zag coils',
     radius: [0.022, 0.03],
     frequency: [8.5, 10.5],
     lock: 0.08,
+    rootLift: 0.25,
   },
   {
     id: '4C',
@@ -73,6 +88,7 @@ export const CURL_TYPES: readonly CurlType[] = [
     radius: [0.015, 0.022],
     frequency: [11, 13],
     lock: 0.07,
+    rootLift: 0.25,
   },
 ];
 
@@ -93,6 +109,11 @@ export function detailForCurlType(id: string, d: HairDetail | undefined): HairDe
     // locks: strands drawn most of the way onto their lock, loosening towards the tips
     clump: { factor: 0.7, shape: 0.3, tipSpread: 0.01, guideDistance: t.lock },
   };
+}
+
+/** The Volume (world units) choosing curl type `id` brings, or undefined: none. */
+export function rootLiftOf(id: string): number | undefined {
+  return CURL_TYPES.find((c) => c.id === id)?.rootLift;
 }
 
 /** The curl type a detail matches (its curl's radius and frequency in a type's ranges), '1' for

@@ -5,7 +5,7 @@
 // curve's own (of the strands it governs). Lengths in centimetres. Built from model/detail.ts DETAIL_PARAMS; every change is one undoable edit
 // (the app runs it as an editor command).
 
-import { CURL_TYPES, curlTypeOf, detailForCurlType } from '../model/curlTypes';
+import { CURL_TYPES, curlTypeOf } from '../model/curlTypes';
 import {
   DETAIL_BLOCKS,
   DETAIL_PARAMS,
@@ -89,6 +89,8 @@ export interface DetailPanelEvents {
   say: Say;
   /** curveId null: the session's detail. */
   setDetail(curveId: string | null, detail: HairDetail | undefined): void;
+  /** Curl type `type` (curlTypes.ts) for the whole head (null) or one curve. */
+  setCurlType(curveId: string | null, type: string): void;
   /** The colour model (null: the colour box's direct colour). */
   setHairLook(look: HairLook | null): void;
   /** The ties' band colour, #rrggbb. */
@@ -191,7 +193,7 @@ export function buildDetailPanel(root: HTMLElement, events: DetailPanelEvents): 
     );
     // the whole head's detail is always here; a selected curve's own detail follows it
     panel.append(heading('Detail: whole head'));
-    detailEditors(s.detail ?? {}, (d) => events.setDetail(null, d), '');
+    detailEditors(s.detail ?? {}, (d) => events.setDetail(null, d), '', null);
     if (!selected) return;
     const own = selected.detail !== undefined;
     panel.append(heading(`Detail: curve ${selected.id} only`));
@@ -215,6 +217,7 @@ export function buildDetailPanel(root: HTMLElement, events: DetailPanelEvents): 
       selected.detail ?? {},
       (d) => events.setDetail(selected.id, d),
       `${selected.id} `,
+      selected.id,
     );
   }
 
@@ -226,8 +229,13 @@ export function buildDetailPanel(root: HTMLElement, events: DetailPanelEvents): 
 
   /** The curl, clump, frizz and flyaway editors and length jitter of one detail; `prefix` starts every
    *  accessible name (empty for the whole head's, so its names stay "Curl", "Curl radius"…). */
-  function detailEditors(detail: HairDetail, set: (d: HairDetail) => void, prefix: string): void {
-    panel.append(row('Curl type', curlTypeSelect(detail, set, prefix)));
+  function detailEditors(
+    detail: HairDetail,
+    set: (d: HairDetail) => void,
+    prefix: string,
+    curveId: string | null,
+  ): void {
+    panel.append(row('Curl type', curlTypeSelect(detail, curveId, prefix)));
     for (const b of DETAIL_BLOCKS) panel.append(blockEditor(b, detail, set, prefix));
     panel.append(
       row(
@@ -247,10 +255,11 @@ export function buildDetailPanel(root: HTMLElement, events: DetailPanelEvents): 
   }
 
   /** "Curl type": straight, the wavy, curly and coily types (model/curlTypes.ts), or "Own curl"
-   *  when the curl matches none; choosing one sets curl and clump and takes frizz off. */
+   *  when the curl matches none; choosing one sets curl and clump and takes frizz off (and, for
+   *  the whole head, a curly or coily type's root lift as the Volume: editor setCurlType). */
   function curlTypeSelect(
     detail: HairDetail,
-    set: (d: HairDetail) => void,
+    curveId: string | null,
     prefix: string,
   ): HTMLSelectElement {
     const select = document.createElement('select');
@@ -269,7 +278,7 @@ export function buildDetailPanel(root: HTMLElement, events: DetailPanelEvents): 
     }
     select.value = current ?? '';
     select.addEventListener('change', () => {
-      if (select.value) set(detailForCurlType(select.value, detail));
+      if (select.value) events.setCurlType(curveId, select.value);
     });
     return select;
   }
