@@ -36,6 +36,9 @@ export class CameraRig {
     this.controls.enableDamping = false;
     this.controls.minDistance = 2;
     this.controls.maxDistance = 25;
+    // the wheel zooms towards the point under the pointer, as design tools do (fresh eyes zoomed
+    // on a nape and it slid out of the view towards the middle)
+    this.controls.zoomToCursor = true;
     this.controls.addEventListener('change', () => host.requestRender());
     this.controls.addEventListener('start', () => {
       this.stopViewAnimation(); // the user takes the camera
