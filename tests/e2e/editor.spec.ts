@@ -153,6 +153,40 @@ test('Reset view brings the camera back; Surface mode shows the mode that is on'
   await page.getByRole('button', { name: 'Reset view' }).click();
   await expect(page.getByTestId('view-label')).toHaveText('View: three-quarter front');
 
+  // the wheel zooms towards the point under the pointer: a point on the plane through the orbit
+  // target, 8 cm right of it and 3 cm up, stays under the pointer while the camera comes nearer
+  // (zooming towards the middle moves it out by the zoom's factor: tens of pixels)
+  await page.evaluate(() => window.hairsketch.idle());
+  const c0 = (await session(page)).camera;
+  const dir = c0.target.map((t, i) => t - c0.position[i]);
+  const right = [-dir[2], 0, dir[0]];
+  const rn = Math.hypot(...right);
+  const r = right.map((x) => x / rn);
+  const dn = Math.hypot(...dir);
+  const d = dir.map((x) => x / dn);
+  const up = [r[1] * d[2] - r[2] * d[1], r[2] * d[0] - r[0] * d[2], r[0] * d[1] - r[1] * d[0]];
+  const w = c0.target.map((t, i) => t + 0.8 * r[i] + 0.3 * up[i]) as V3;
+  const s0 = await page.evaluate((p) => window.hairsketch.worldToScreen(p), w);
+  if (!s0) throw new Error('the point is not on screen');
+  expect(
+    Math.hypot(s0.x - (box.x + box.width / 2), s0.y - (box.y + box.height / 2)),
+  ).toBeGreaterThan(80);
+  await page.mouse.move(s0.x, s0.y);
+  for (let k = 0; k < 3; k++) await page.mouse.wheel(0, -200);
+  await page.waitForFunction((p) => {
+    const c = (window.hairsketch.session() as Session).camera;
+    const dist = Math.hypot(...c.position.map((x, i) => x - c.target[i]));
+    return dist < 0.85 * p;
+  }, dn);
+  await page.evaluate(() => window.hairsketch.idle());
+  const s1 = await page.evaluate((p) => window.hairsketch.worldToScreen(p), w);
+  console.log(
+    `zoom: the point under the pointer moved ${Math.hypot((s1?.x ?? 0) - s0.x, (s1?.y ?? 0) - s0.y).toFixed(1)} px`,
+  );
+  expect(Math.hypot((s1?.x ?? 0) - s0.x, (s1?.y ?? 0) - s0.y)).toBeLessThan(6);
+  await page.getByRole('button', { name: 'Reset view' }).click();
+  await expect(page.getByTestId('view-label')).toHaveText('View: three-quarter front');
+
   // select a stream curve: the surface mode button says which mode it is in
   const s = await session(page);
   await page.evaluate((id) => window.hairsketch.select(id), s.curves[0].id);
