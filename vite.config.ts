@@ -131,6 +131,8 @@ export default defineConfig({
     // a time allowance catches a hang, it is not a speed check: tests that take 30-40 s alone
     // took up to 61 s with the suite's other lanes beside them on two cores
     testTimeout: 240_000,
+    // a beforeAll that opens a browser or parses a head waited past 10 s on a loaded machine
+    hookTimeout: 120_000,
     // vitest's default is one worker fewer than the cores: one on a two-core machine, which
     // leaves a core idle whenever the unit tests are all that is left of npm test (160 CPU-s of
     // tests took 135 s on one worker, 84 s on two).

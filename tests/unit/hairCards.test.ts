@@ -430,7 +430,7 @@ describe('hair cards (.glb)', () => {
       console.log(
         `hair cards, ${preset}: ${strands} strands → ${(cards.json as unknown as { asset: { extras: { hairsketch: { cards: { made: number } } } } }).asset.extras.hairsketch.cards.made} cards (asked ${DEFAULT_CARD_COUNT}), ${triangles} triangles; ${sizes.join(', ')}; ${(cardsBytes.length / 1048576).toFixed(1)} MB; IoU ${scores.join(', ')}`,
       );
-    }, 120_000);
+    }, 240_000);
 
   it('takes the count it is given, and refuses one out of range with a sentence', () => {
     const inp = inputs.bob;
