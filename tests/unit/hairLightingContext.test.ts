@@ -5,7 +5,7 @@ import {
   type LightingGrid,
   lightingGridFor,
 } from '../../web/lighting/hairLighting';
-import { HairLightingContext } from '../../web/lighting/hairLightingContext';
+import { HairLightingContext, softenHeadShadow } from '../../web/lighting/hairLightingContext';
 import {
   boxMean,
   headDepthMarch,
@@ -105,6 +105,7 @@ function uncached(
   const insideBox = voxelizeHead(mesh, inside, dims, origin, h);
   const headDepth = new Float32Array(cells);
   headDepthMarch(inside, insideBox, dims, light, 4, 2, 12, headDepth);
+  softenHeadShadow(headDepth, inside, dims, 5); // checked on its own below
   const all = {
     lo: [0, 0, 0] as [number, number, number],
     hi: [nx - 1, ny - 1, nz - 1] as [number, number, number],
@@ -192,5 +193,45 @@ describe('HairLightingContext', () => {
     const ref = uncached(other, head, grid, light);
     expectClose(full.strand, ref.strand);
     expectClose(full.head, ref.head);
+  });
+});
+
+describe('softenHeadShadow', () => {
+  // a row of 40 nodes (8 × 8 across): the head's shadow covers x < 20; the head's inside is x < 3
+  const dims: [number, number, number] = [40, 8, 8];
+  const at = (x: number) => x + 40 * (4 + 8 * 4);
+  function softened(insideBelow: number, shadowBelow: number, r: number) {
+    const n = 40 * 8 * 8;
+    const depth = new Float32Array(n);
+    const inside = new Float32Array(n);
+    for (let c = 0; c < n; c++) {
+      const x = c % 40;
+      depth[c] = x < shadowBelow ? 12 : 0;
+      inside[c] = x < insideBelow ? 1 : 0;
+    }
+    softenHeadShadow(depth, inside, dims, r);
+    return depth;
+  }
+
+  it("spreads the shadow's edge over the box: the transmittance is the box's share of lit nodes", () => {
+    const d = softened(0, 20, 5);
+    // x = 20: nodes 15..25 along x, 6 of 11 lit (the box is the same across)
+    expect(Math.exp(-d[at(20)])).toBeCloseTo(6 / 11, 5);
+    expect(Math.exp(-d[at(17)])).toBeCloseTo(3 / 11, 5);
+    expect(d[at(14)]).toBeCloseTo(12, 4); // all 11 in the shadow
+    expect(d[at(25)]).toBe(0); // all lit
+  });
+
+  it("hair by the lit scalp stays lit: the head's inside does not count", () => {
+    // the inside (x < 3) is deep in its own shadow; the hair beside it (x ≥ 3) is lit
+    const d = softened(3, 3, 5);
+    expect(d[at(4)]).toBe(0); // nodes 0..9: the 7 outside are all lit
+    expect(d[at(1)]).toBe(12); // inside: kept
+  });
+
+  it('r = 0 leaves the shadow as marched', () => {
+    const d = softened(0, 20, 0);
+    expect(d[at(19)]).toBe(12);
+    expect(d[at(20)]).toBe(0);
   });
 });

@@ -59,6 +59,9 @@ export interface HairLightingOptions {
   aoStrength?: number;
   /** Optical thickness per cell the head adds to the occlusion (0.35). */
   headAoOpacity?: number;
+  /** Half-width, in cells, of the box over which the edge of the head's shadow is softened
+   *  (5: the key light is a softbox, not a point). */
+  penumbraCells?: number;
   /** Compute the hair's shadow on every head vertex (step 5; default true). Previews skip it:
    *  the view keeps the converged hair's shadow on the head while the pen moves, and on a
    *  million-triangle head it is most of the cost. */

@@ -46,6 +46,7 @@ export interface ResolvedLightingOptions {
   aoRadius: number;
   aoStrength: number;
   headAoOpacity: number;
+  penumbra: number;
   headShadow: boolean;
 }
 
@@ -61,13 +62,15 @@ export function resolveOptions(options: HairLightingOptions): ResolvedLightingOp
     aoRadius: Math.max(0, Math.round(options.aoRadiusCells ?? 3)),
     aoStrength: options.aoStrength ?? 0.9,
     headAoOpacity: options.headAoOpacity ?? 0.35,
+    penumbra: Math.max(0, Math.round(options.penumbraCells ?? 5)),
     headShadow: options.headShadow !== false,
   };
 }
 
 /** What depends only on the head (and the grid and light). */
 interface HeadCache {
-  /** The head's optical depth towards the light from the head's first step (2 cells) on. */
+  /** The head's optical depth towards the light from the head's first step (2 cells) on, its
+   *  edge softened over the penumbra (softenHeadShadow). */
   depth: Float32Array;
   /** headAoOpacity × the box mean of the head's inside. */
   occ: Float32Array;
@@ -153,6 +156,7 @@ export class HairLightingContext {
         : emptyBox();
     const depth = new Float32Array(cells);
     headDepthMarch(inside, insideBox, this.dims, o.light, o.headOpacity, 2, MAX_DEPTH, depth);
+    softenHeadShadow(depth, inside, this.dims, o.penumbra);
     const occ = inside; // reused in place
     for (let c = 0; c < cells; c++) occ[c] *= o.headAoOpacity;
     boxMean(occ, this.dims, o.aoRadius);
@@ -397,4 +401,25 @@ export class HairLightingContext {
       out[v] = Number.isFinite(d) ? Math.exp(-d) : 1;
     }
   }
+}
+
+/** The head's shadow with a soft edge, as a key light of some size casts (a softbox a few tens
+ *  of degrees wide: the edge of the head's shadow on hair a hand's width behind it blurs over
+ *  several centimetres; a hard edge reads as a stain on the hair). Per node outside the head:
+ *  the mean transmittance exp(−depth) over the nodes outside the head within `r` cells (a box),
+ *  back to a depth; nodes inside keep theirs (hair near the lit scalp is not darkened by the
+ *  head's inside). */
+export function softenHeadShadow(depth: Float32Array, inside: Float32Array, dims: Dims, r: number) {
+  if (r <= 0) return;
+  const lit = new Float32Array(depth.length);
+  const outside = new Float32Array(depth.length);
+  for (let c = 0; c < depth.length; c++) {
+    outside[c] = inside[c] < 0.5 ? 1 : 0;
+    lit[c] = outside[c] * Math.exp(-depth[c]);
+  }
+  boxMean(lit, dims, r);
+  boxMean(outside, dims, r);
+  for (let c = 0; c < depth.length; c++)
+    if (inside[c] < 0.5 && outside[c] > 0)
+      depth[c] = Math.min(MAX_DEPTH, Math.max(0, -Math.log(lit[c] / outside[c])));
 }
