@@ -218,6 +218,7 @@ export class DeepOpacityMaps {
     u.hsBias.value = 2 * this.texel;
     u.hsHeadOpacity.value = HEAD_FRAGMENT_OPACITY;
     u.hsTexel.value = 1 / this.size;
+    u.hsTexelWorld.value = this.texel;
   }
 
   dispose(): void {

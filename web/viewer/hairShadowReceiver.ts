@@ -25,6 +25,7 @@ export const HAIR_SHADOW_UNIFORMS = {
   hsBias: { value: 0.01 },
   hsHeadOpacity: { value: 0 },
   hsTexel: { value: 1 / 512 }, // one texel of the maps, in texture coordinates
+  hsTexelWorld: { value: 0.01 }, // one texel of the maps, in world units
 };
 
 const receiverGlsl = (inMap: boolean) => /* glsl */ `
@@ -38,6 +39,7 @@ uniform float hsKappa;
 uniform float hsBias;
 uniform float hsHeadOpacity;
 uniform float hsTexel;
+uniform float hsTexelWorld;
 varying vec3 vHsWorld;
 float hairShadowAt(vec3 q) {
   if (q.x <= 0.0 || q.y <= 0.0 || q.x >= 1.0 || q.y >= 1.0) return 1.0;
@@ -58,14 +60,38 @@ float hairShadowAt(vec3 q) {
   else opacity = o.b;
   return exp(-hsKappa * opacity);
 }
-// four taps two texels apart, averaged: the first-hair depth is per texel, so a thin strand's
-// shadow read from one tap is a hard line a texel wide, dotted where the surface crosses texels
+// The penumbra grows with the distance behind the hair in front (the key light is a softbox
+// some degrees wide, tan of its half-angle HS_SOFTNESS; after "percentage-closer soft shadows",
+// Fernando 2005): a search over a ring of HS_SEARCH texels finds the mean distance of the hair in
+// front, and nine taps over a disc of that distance × HS_SOFTNESS (1 to HS_SEARCH texels) are
+// averaged. With one radius for all, the shadow of hair ends a few centimetres off the neck was a
+// hatching of single strands' shadows, each a texel wide.
+const float HS_SOFTNESS = 0.12;
+const float HS_SEARCH = 8.0;
 float hairShadowFromMaps(vec3 world) {
   vec4 p = hsMatrix * vec4(world, 1.0);
   vec3 q = p.xyz / p.w * 0.5 + 0.5;
-  float t = hsTexel;
-  return 0.25 * (hairShadowAt(q + vec3(-t, -t, 0.0)) + hairShadowAt(q + vec3(t, -t, 0.0))
-    + hairShadowAt(q + vec3(-t, t, 0.0)) + hairShadowAt(q + vec3(t, t, 0.0)));
+  float behind = 0.0;
+  float found = 0.0;
+  for (int i = 0; i < 8; i++) {
+    float a = 0.7853982 * float(i);
+    vec2 at = q.xy + HS_SEARCH * hsTexel * vec2(cos(a), sin(a));
+    float d = (q.z - texture2D(hsDepth, at).r) * hsRange - hsBias;
+    if (d > 0.0) {
+      behind += d;
+      found += 1.0;
+    }
+  }
+  if (found == 0.0) return hairShadowAt(q);
+  float r = hsTexel * clamp(behind / found * HS_SOFTNESS / hsTexelWorld, 1.0, HS_SEARCH);
+  float t = hairShadowAt(q);
+  for (int i = 0; i < 8; i++) {
+    float a = 0.7853982 * (float(i) + 0.5);
+    // a ring at r and a ring at r / 2 (alternate taps), so the disc is covered
+    float ri = mod(float(i), 2.0) == 0.0 ? r : 0.5 * r;
+    t += hairShadowAt(q + vec3(ri * cos(a), ri * sin(a), 0.0));
+  }
+  return t / 9.0;
 }
 `;
 
