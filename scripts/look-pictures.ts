@@ -8,9 +8,9 @@ import { mkdirSync, writeFileSync } from 'node:fs';
 import { readPng } from '../tests/unit/pngPixels';
 import { presetSession } from '../web/cli/presetSession';
 import { openStillRenderer } from '../web/cli/render';
+import { applyCommand } from '../web/editor/commands';
 import { encodePng } from '../web/export/png';
 import { Head } from '../web/head/head';
-import { detailForCurlType } from '../web/model/curlTypes';
 import { DEFAULT_HAIR_LOOK, type HairLook } from '../web/model/hairLook';
 import type { PresetName } from '../web/model/presets';
 import type { SessionState } from '../web/model/session';
@@ -37,7 +37,8 @@ const styles: Record<string, () => SessionState> = {
   coily: () => {
     const s = preset('curly');
     return withLook(
-      { ...s, detail: detailForCurlType('4B', s.detail) },
+      // as the Hair panel's Curl type sets it: the curl and the type's root lift as the Volume
+      applyCommand(s, { kind: 'setCurlType', curveId: null, type: '4B' }).session,
       {
         melanin: 0.85,
         tipMelanin: 0.85,

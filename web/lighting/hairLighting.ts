@@ -15,7 +15,8 @@
 //    plane of nodes (shearedDepth.ts), and a node counts its ray from `selfCells` − ½ cells out
 //    (a point does not shadow itself: splat and look-up each blur a strand over ±1 cell). Head:
 //    a march in steps of one cell, counted from the second step (roots on the lit side are not
-//    shadowed by the scalp they sit on), stopped at optical depth 12. `npm run bench:lighting`
+//    shadowed by the scalp they sit on), stopped at optical depth 12, then its edge softened over
+//    `penumbraCells` (the key light is a softbox: softenHeadShadow). `npm run bench:lighting`
 //    compares the result with a per-node march in steps of one cell.
 // 4. Ambient occlusion: the mean optical thickness of the cells within `aoRadiusCells` (a box
 //    mean of the hair's σ·h plus a weaker head term), times the radius: ao = exp(−aoStrength·that)
