@@ -83,6 +83,39 @@ test('"?" lists every shortcut; Escape closes it', async ({ page }) => {
   await expect(dialog).toBeHidden();
 });
 
+test("Enter in a panel's number field commits it and gives the keys back to the shortcuts", async ({
+  page,
+}) => {
+  // a helper typed a Max length, pressed Enter and chose a Curl type: then H, X and L did
+  // nothing (the field kept the focus) and the next strokes went on in the view before
+  await page.goto('/?preset=empty&strands=1000');
+  let s = await settled(page);
+  await page.getByRole('button', { name: 'Detail' }).click();
+  const panel = page.getByRole('region', { name: 'Hair detail' });
+  const maxLength = panel.getByLabel('Max length (cm)');
+  await maxLength.click();
+  await page.keyboard.press('Control+A');
+  await page.keyboard.type('30');
+  await page.keyboard.press('Enter');
+  s = await settled(page, s.revision);
+  expect(await maxLength.inputValue()).toBe('30');
+  await page.keyboard.press('l');
+  await expect(page.getByTestId('view-label')).toHaveText('View: left');
+  // Escape puts back what was there and leaves the field too
+  await maxLength.click();
+  await page.keyboard.press('Control+A');
+  await page.keyboard.type('45');
+  await page.keyboard.press('Escape');
+  expect(await maxLength.inputValue()).toBe('30');
+  await page.keyboard.press('Shift+F');
+  await expect(page.getByTestId('view-label')).toHaveText('View: back');
+  // a Curl type chosen from its list leaves the keys to the shortcuts as well
+  await panel.getByLabel('Curl type').selectOption('3A');
+  await settled(page, s.revision);
+  await page.keyboard.press('f');
+  await expect(page.getByTestId('view-label')).toHaveText('View: front');
+});
+
 test('the status line speaks plainly: strand count with separators, no strands on a bald head', async ({
   page,
 }) => {

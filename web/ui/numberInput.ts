@@ -94,5 +94,15 @@ export function numberInput(
     onValue(c.value);
     if (c.message) say(c.message);
   });
+  // Enter commits and Escape puts the value back; either leaves the field, as design tools do,
+  // so the next key is a shortcut again (a field that kept the focus swallowed H, X, L… and the
+  // next stroke went on in the view before)
+  input.addEventListener('keydown', (e) => {
+    if (e.key === 'Escape') input.value = String(shown);
+    if (e.key === 'Enter' || e.key === 'Escape') {
+      e.stopPropagation();
+      input.blur();
+    }
+  });
   return input;
 }
