@@ -426,6 +426,52 @@ test('pigtails: Mirror and one ponytail stroke from behind an ear; each gathers 
   expect(await page.evaluate(() => window.hairsketch.hairHash())).toBe(hash);
 });
 
+test('pigtails drawn from the side, from behind an ear back and down: each tail hangs beside the head on its side', async ({
+  page,
+}) => {
+  // a round-10 helper drew this from the Left view: the spine's part over the back of the head
+  // took the scalp's depth there, which seen from the side curves round to the middle, so both
+  // tails hung side by side down the middle of the back, 5 cm from their bands
+  test.setTimeout(120_000);
+  const s0 = await emptyHead(page);
+  await page.getByRole('button', { name: 'Mirror' }).click();
+  await view(page, 'l', 'left');
+  await page.getByRole('button', { name: 'Ponytail' }).click();
+  const behind = await scalpAt(page, 80, 110);
+  await dragThrough(page, [
+    behind,
+    { x: behind.x + 25, y: behind.y + 5 },
+    { x: behind.x + 50, y: behind.y + 25 },
+    { x: behind.x + 60, y: behind.y + 70 },
+    { x: behind.x + 60, y: behind.y + 190 },
+  ]);
+  await curveCount(page, 2);
+  await settled(page, s0.revision);
+  const h = await hair(page);
+  const rs = roots(h);
+  for (const c of [0, 1]) {
+    // the mean x of its strands' roots and of their tips (world units: 0.1 = 1 cm)
+    let rootX = 0;
+    let tipX = 0;
+    let n = 0;
+    for (let i = 0; i + 1 < h.strandStart.length; i++) {
+      if (h.tailCurves[i] !== c) continue;
+      rootX += rs[i][0];
+      tipX += h.points[3 * (h.strandStart[i + 1] - 1)];
+      n++;
+    }
+    rootX /= n;
+    tipX /= n;
+    console.log(
+      `pigtail ${c} from the side: roots at x ${(10 * rootX).toFixed(1)} cm, tips at ${(10 * tipX).toFixed(1)} cm`,
+    );
+    // on its roots' side, beside the head: the tips were 4.0 cm from the middle with the
+    // scalp's depth over the back of the head, 7.3 cm with the first point's
+    expect(Math.sign(tipX)).toBe(Math.sign(rootX));
+    expect(Math.abs(tipX)).toBeGreaterThan(0.55);
+  }
+});
+
 test('a braid drawn from the side down the back of the head is put on its middle, as a ponytail is', async ({
   page,
 }) => {

@@ -201,4 +201,32 @@ describe('liftStroke from a camera looking down (a lock drawn hanging)', () => {
     expect(r.points[xs.length - 1][1]).toBeLessThan(0.4);
     expect(lastScalpHeight).toBeGreaterThan(0.5);
   });
+
+  it("a tie's spine over scalp deeper than its first point's keeps the first point's depth", () => {
+    // from the front (eye on +z), pressed at x = 0.05 of the image plane and drawn out towards the
+    // silhouette: the sphere's surface falls away (deeper) under the stroke. A stream curve follows
+    // it; a tie's spine (a pigtail drawn from the side, from behind an ear) keeps the plane
+    // z = z0 of its first point, in front of the sphere
+    const xs = [0.05, 0.1, 0.15, 0.18, 0.2]; // the silhouette is at 1/sqrt(24) ≈ 0.204
+    const samples = xs.map((x) => sample(x, 0));
+    const stream = liftStroke(samples, eye, forward);
+    const spine = liftStroke(samples, eye, forward, true);
+    if (!stream.ok || !spine.ok) throw new Error('expected ok');
+    const z0 = samples[0].scalpHit?.[2] ?? Number.NaN;
+    expect(spine.points[0]).toEqual(samples[0].scalpHit);
+    for (let i = 1; i < xs.length; i++) {
+      const hit = samples[i].scalpHit;
+      if (!hit) throw new Error('expected every sample on the sphere');
+      expect(stream.points[i]).toEqual(hit);
+      expect(spine.points[i][2]).toBeCloseTo(z0, 12);
+      // on the pointer's ray, in front of the sphere
+      const toP = sub(spine.points[i], eye);
+      expect(Math.hypot(...toP)).toBeLessThan(Math.hypot(...sub(hit, eye)));
+      expect(dot(normalize(toP), samples[i].direction)).toBeCloseTo(1, 12);
+    }
+    // drawn back in over shallower scalp, it lies on the scalp again
+    const back = liftStroke([sample(0.15, 0), sample(0.05, 0)], eye, forward, true);
+    if (!back.ok) throw new Error('expected ok');
+    expect(back.points[1]).toEqual(sample(0.05, 0).scalpHit);
+  });
 });

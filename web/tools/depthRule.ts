@@ -30,8 +30,17 @@ export const LEVEL_MIN = 0.3;
 
 export type LiftResult = { ok: true; points: Vec3[] } | { ok: false; reason: 'not-on-scalp' };
 
-/** `forward` is the unit viewing direction of the camera. */
-export function liftStroke(samples: readonly StrokeSample[], eye: Vec3, forward: Vec3): LiftResult {
+/** `forward` is the unit viewing direction of the camera. `hangFromFirst` (a tie's spine): a
+ *  point over the scalp takes the scalp's depth only where the scalp is no deeper than under the
+ *  first point, else the first point's depth: a pigtail drawn from the side, from behind an ear
+ *  back and down, hangs beside the head where it was pressed, not round the back of the head in
+ *  the middle (the scalp seen from the side curves away to the middle towards the back). */
+export function liftStroke(
+  samples: readonly StrokeSample[],
+  eye: Vec3,
+  forward: Vec3,
+  hangFromFirst = false,
+): LiftResult {
   if (samples.length === 0 || samples[0].scalpHit === null)
     return { ok: false, reason: 'not-on-scalp' };
   const points: Vec3[] = [];
@@ -40,10 +49,22 @@ export function liftStroke(samples: readonly StrokeSample[], eye: Vec3, forward:
     level >= LEVEL_MIN ? [forward[0] / level, 0, forward[2] / level] : forward;
   const steep = level < LEVEL_MIN;
   let depth = 0;
+  const firstDepth = dot(sub(samples[0].scalpHit, eye), depthAxis);
   for (const s of samples) {
-    if (s.scalpHit) {
+    if (
+      s.scalpHit &&
+      !(hangFromFirst && !steep && dot(sub(s.scalpHit, eye), depthAxis) > firstDepth)
+    ) {
       depth = dot(sub(s.scalpHit, eye), depthAxis);
       points.push(s.scalpHit);
+    } else if (s.scalpHit) {
+      // deeper than the first point's scalp: on the first point's depth plane
+      depth = firstDepth;
+      const along = dot(s.direction, depthAxis);
+      if (along <= 1e-9) continue;
+      points.push(
+        add(s.origin, scale(s.direction, (depth - dot(sub(s.origin, eye), depthAxis)) / along)),
+      );
     } else if (steep && s.headDistance != null) {
       const p = add(s.origin, scale(s.direction, Math.max(0, s.headDistance - STROKE_MARGIN)));
       depth = dot(sub(p, eye), depthAxis);

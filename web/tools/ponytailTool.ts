@@ -218,7 +218,7 @@ export class PonytailTool implements Tool {
 
   private lifted(k: Stroke): Vec3[] | null {
     if (this.stage === 'spine') {
-      const l = liftStroke(k.samples, k.eye, k.forward);
+      const l = liftStroke(k.samples, k.eye, k.forward, true);
       return l.ok ? l.points : null;
     }
     if (!k.surface) return null;
