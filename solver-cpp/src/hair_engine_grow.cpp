@@ -108,6 +108,7 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
   std::vector<uint32_t> key(n);
   for (size_t k = 0; k < n; ++k) key[k] = subset_ ? subsetIndex_[k] : uint32_t(k);
   strandTailCurve_.assign(n, -1);
+  std::vector<uint8_t> inBun(n, 0);  // laid in a bun's coil
   tieFrames_.clear();
   strandSection_.clear();
   ScalpSections sections;
@@ -162,8 +163,10 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
         gatherTails(tails, R, key, rp.seed, float(gp.stepFraction * grid_.step),
                     std::min<size_t>(size_t(std::max(gp.maxSegments, 1)) + 1, 255), strands_,
                     float(std::min(gp.maxLength, 1e6)), bySection ? &sg : nullptr);
-    for (size_t i = 0; i < ts.strands.size(); ++i)
+    for (size_t i = 0; i < ts.strands.size(); ++i) {
       strandTailCurve_[ts.strands[i]] = tailCurves_[ts.tail[i]];
+      inBun[ts.strands[i]] = tails[ts.tail[i]].shape == TailShape::Bun;
+    }
     // where each tie gathers its hair, and how wide that hair is there (its band)
     for (size_t k = 0; k < tails.size() && k < tailCurves_.size(); ++k) {
       const GatheredTail& t = tails[k];
@@ -208,20 +211,31 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
         detail_.empty() ? std::vector<DetailParams>{DetailParams{}} : detail_;
     // (ties on) hair a tie lays keeps its length: a tail ends where its stroke ends, with the
     // tie's own uneven ends (gathered_tail.hpp), so its strands take their group's detail without
-    // the length jitter (which cut tails up to a tenth short of their strokes' ends)
+    // the length jitter (which cut tails up to a tenth short of their strokes' ends); hair wound
+    // into a bun's coil, without flyaways and frizz too (a bun is wound tight and its ends tucked:
+    // a new session's 1 % of flyaways stood round it as a wiry grey halo)
     if (ties_ && anyDetail) {
-      std::vector<int64_t> tiedGroup(groups.size(), -1);
+      const size_t own = groups.size();
+      std::vector<int64_t> tiedGroup(2 * own, -1);  // [g]: a tail's, [own + g]: a bun's
       for (size_t st = 0; st < n; ++st) {
         if (strandTailCurve_[st] < 0) continue;
         const uint32_t g = groupOf[st];
-        if (g >= tiedGroup.size() || !(groups[g].lengthJitter > 0)) continue;
-        if (tiedGroup[g] < 0) {
+        if (g >= own) continue;
+        const DetailParams& d = groups[g];
+        const bool bun = inBun[st] && (d.flyaway.share > 0 || d.frizz.distance > 0);
+        if (!(d.lengthJitter > 0) && !bun) continue;
+        const size_t slot = bun ? own + g : g;
+        if (tiedGroup[slot] < 0) {
           DetailParams kept = groups[g];
           kept.lengthJitter = 0;
-          tiedGroup[g] = int64_t(groups.size());
+          if (bun) {
+            kept.flyaway.share = 0;
+            kept.frizz.distance = 0;
+          }
+          tiedGroup[slot] = int64_t(groups.size());
           groups.push_back(kept);
         }
-        groupOf[st] = uint32_t(tiedGroup[g]);
+        groupOf[st] = uint32_t(tiedGroup[slot]);
       }
     }
     s = applyDetail(groups, groupOf, key, rp.seed, strands_, 255, finish_ ? &endSpread : nullptr,
