@@ -48,31 +48,33 @@ export function liftStroke(
   const depthAxis: Vec3 =
     level >= LEVEL_MIN ? [forward[0] / level, 0, forward[2] / level] : forward;
   const steep = level < LEVEL_MIN;
+  const depthOf = (p: Vec3) => dot(sub(p, eye), depthAxis);
+  // how far along a sample's ray its depth plane lies (null: the ray runs parallel to it)
+  const toPlane = (s: StrokeSample, d: number) => {
+    const along = dot(s.direction, depthAxis);
+    return along <= 1e-9 ? null : (d - depthOf(s.origin)) / along;
+  };
+  const firstDepth = depthOf(samples[0].scalpHit);
   let depth = 0;
-  const firstDepth = dot(sub(samples[0].scalpHit, eye), depthAxis);
   for (const s of samples) {
-    if (
-      s.scalpHit &&
-      !(hangFromFirst && !steep && dot(sub(s.scalpHit, eye), depthAxis) > firstDepth)
-    ) {
-      depth = dot(sub(s.scalpHit, eye), depthAxis);
-      points.push(s.scalpHit);
-    } else if (s.scalpHit) {
+    if (s.scalpHit) {
+      const d = depthOf(s.scalpHit);
+      if (!(hangFromFirst && !steep && d > firstDepth)) {
+        depth = d;
+        points.push(s.scalpHit);
+        continue;
+      }
       // deeper than the first point's scalp: on the first point's depth plane
       depth = firstDepth;
-      const along = dot(s.direction, depthAxis);
-      if (along <= 1e-9) continue;
-      points.push(
-        add(s.origin, scale(s.direction, (depth - dot(sub(s.origin, eye), depthAxis)) / along)),
-      );
+      const t = toPlane(s, depth);
+      if (t !== null) points.push(add(s.origin, scale(s.direction, t)));
     } else if (steep && s.headDistance != null) {
       const p = add(s.origin, scale(s.direction, Math.max(0, s.headDistance - STROKE_MARGIN)));
-      depth = dot(sub(p, eye), depthAxis);
+      depth = depthOf(p);
       points.push(p);
     } else {
-      const along = dot(s.direction, depthAxis);
-      if (along <= 1e-9) continue; // a ray parallel to the depth plane has no point on it
-      let t = (depth - dot(sub(s.origin, eye), depthAxis)) / along;
+      let t = toPlane(s, depth);
+      if (t === null) continue; // a ray parallel to the depth plane has no point on it
       if (s.headDistance != null && t > s.headDistance - STROKE_MARGIN)
         t = Math.max(0, s.headDistance - STROKE_MARGIN);
       points.push(add(s.origin, scale(s.direction, t)));
