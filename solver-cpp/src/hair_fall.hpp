@@ -198,6 +198,10 @@ constexpr float kVolumeRise = 0.5f;
 // crown), so a pixie is lifted at the crown and tapers in to the head over the ears and down the
 // nape instead of ending off it as a shelf (hair at the default volume grows as before).
 constexpr float kHugVolumeLow = 0.0f, kHugVolumeHigh = 0.5f, kHugVolumeKept = 0.05f;
+// Short hair at the nape loses the rest of its standoff (Volume and layering) where the skull
+// turns in under its widest part, all of it where the surface faces down by this much (the
+// normal's height) and past the hairline: it closes in to the neck as a tapered nape does.
+constexpr float kNapeCloseNormal = 0.4f;
 // Hair laid on the head lies on top of the hair rooted under it: its standoff grows by this
 // much per unit of length it has come over the head (3 mm per 10 cm), up to kLayerMax (1 cm),
 // so hair from the crown covers the sides in layers instead of all at one distance.
@@ -208,10 +212,11 @@ constexpr float kLayerSlope = 0.03f, kLayerMax = 0.1f;
 // [1 - kHugJitter, 1 + kHugJitter] seeded by where its root is (mirror-symmetrically), so where
 // lengths cross it the hair mixes.
 constexpr float kHugLength = 1.2f, kHugJitter = 0.2f;
-// Short hair lies on past the scalp's edge for at most this (world units): 3 cm past the nape's
-// hairline, 1.5 cm over an ear, so the nape tapers to the hairline instead of hanging down the
-// neck, and the sides cover the top of the ear instead of hanging over it to a blunt line. Hair a
-// stroke combs over an ear goes with the stroke instead (it is not cut).
+// Short hair lies on past the scalp's edge for about this (world units; scaled per strand by
+// 1 +- kTaperJitter, strand_growth.cpp): 3 cm past the nape's hairline, 1.5 cm over an ear, so the
+// nape tapers to the hairline instead of hanging down the neck, and the sides cover the top of the
+// ear instead of hanging over it to a blunt line. Hair a stroke combs over an ear goes with the
+// stroke instead (it is not cut).
 constexpr float kTaperPastNape = 0.3f, kTaperPastEar = 0.15f;
 // Short hair a stroke governs lies on the head as hair no stroke governs does when that stroke
 // never goes farther than this off the head (world units, 3 cm): a stroke drawn down past the nape

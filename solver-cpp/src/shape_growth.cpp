@@ -50,7 +50,6 @@ ShapeGrowth::Lay ShapeGrowth::layOnHead(const float x[3], float n[3], double& se
     dist = dx;
     // short hair lies on under the skull's widest part and down the nape (behind the head's
     // axis more than beside it), and on past the scalp's edge (PastEdge)
-    const bool nape = hugs && atNape(x[0], x[2]);
     const bool onScalp =
         head->scalpNear(x[0] - dx * nrm[0], x[1] - dx * nrm[1], x[2] - dx * nrm[2]);
     if (nrm[1] < kSupportNormalY && !hugs) {
@@ -67,14 +66,20 @@ ShapeGrowth::Lay ShapeGrowth::layOnHead(const float x[3], float n[3], double& se
   // the standoff: the volume reached over the first length, and hair that has come farther
   // over the head lying on top of the hair rooted where it passes (kLayerSlope)
   float vol = volume + ownWeight * (ownVolume - volume);
+  // short hair at the nape closes in to the head where the skull turns in under its widest part
+  // (the surface facing down by kNapeCloseNormal: all of its Volume and layering gone) and past
+  // the hairline: a tapered nape, not a shelf
+  const float closes = hugs && atNape(x[0], x[2])
+                           ? (past ? 1.f : std::clamp(-nrm[1] / kNapeCloseNormal, 0.f, 1.f))
+                           : 0.f;
   if (hugs) {  // short hair: lifted on top, close at the sides and the nape (kHugVolumeLow)
     const float t =
         std::clamp((nrm[1] - kHugVolumeLow) / (kHugVolumeHigh - kHugVolumeLow), 0.f, 1.f);
     const float kept = std::min(vol, kHugVolumeKept);
     vol = kept + (vol - kept) * t * t * (3 - 2 * t);
   }
-  const float want = margin + std::min(vol, kVolumeRise * float(arc)) +
-                     std::min(kLayerMax, kLayerSlope * float(arc));
+  const float layer = std::min(kLayerMax, kLayerSlope * float(arc));
+  const float want = margin + (1 - closes) * (std::min(vol, kVolumeRise * float(arc)) + layer);
   const float cap = margin + kLiftSlack + std::max(lift, ownWeight * (want - margin));
   float st[3] = {n[0] - x[0], n[1] - x[1], n[2] - x[2]};
   const float dn = dist + st[0] * nrm[0] + st[1] * nrm[1] + st[2] * nrm[2];

@@ -134,6 +134,10 @@ using PointBuffer = decltype(Strands::points);
 // trilinearly, so roots close together get close values (a root and its mirror twin, a fraction
 // of a millimetre apart, agree) while roots a few cells apart vary independently.
 constexpr float kHugNoiseCell = 0.05f;  // world units (5 mm)
+// Each short strand lies on past the scalp's edge for kTaperPast* scaled by a factor in
+// [1 - kTaperJitter, 1 + kTaperJitter], from hugNoise read kTaperNoiseShift away (other values
+// than its hug threshold's).
+constexpr float kTaperJitter = 0.5f, kTaperNoiseShift = 7.3f;
 float hugNoise(float x, float y, float z) {
   const float p[3] = {x / kHugNoiseCell, y / kHugNoiseCell, z / kHugNoiseCell};
   int64_t c[3];
@@ -288,6 +292,13 @@ struct GrowRange {
       const bool liesOn =
           hugs && reach && s.inside(x, y, z) && !reach->strokeLift.empty() &&
           interpolateScalar(reach->grid, reach->strokeLift.data(), x, y, z) < kDrawnLift;
+      // how far past the scalp's edge this strand lies on (kTaperPast* scaled, seeded by
+      // where its root is as the hug threshold is, from other noise): a nape and sides that end
+      // in uneven tufts, not on one line
+      const float taper =
+          hugs ? 1 + kTaperJitter *
+                         (2 * hugNoise(std::abs(x - shaped.centre[0]) + kTaperNoiseShift, y, z) - 1)
+               : 1.f;
       float layDist = 0, layNormal[3] = {0, 1, 0};
       double pastEdge = 0;  // the length laid past the scalp's edge (Lay::PastEdge)
       // a curve's own Volume at the root (weight, value): the strand's lift is that curve's
@@ -383,7 +394,7 @@ struct GrowRange {
                 now = ShapeGrowth::Lay::Over;
               } else {
                 pastEdge += segLen;
-                if (pastEdge > (nape ? kTaperPastNape : kTaperPastEar)) break;
+                if (pastEdge > taper * (nape ? kTaperPastNape : kTaperPastEar)) break;
               }
             }
             laying = now == ShapeGrowth::Lay::Laid || now == ShapeGrowth::Lay::PastEdge;

@@ -256,7 +256,7 @@ TEST(ShapeGrowth, HairBelowTheWidestPartHangsAndAStrokeKeepsItsOwnHair) {
 }
 
 TEST(ShapeGrowth, ShortHairHugsTheNapeLongHairHangsFromIt) {
-  const SphereHead head;
+  const SphereHead head(-0.9);  // the scalp's edge far below: the hair is laid, not tapered
   const Grid g = boxGrid(41, -2, 2);
   // a field pointing back and down everywhere
   const std::vector<float> field = constantField(g, 0, -0.6f, -0.8f);
@@ -427,41 +427,61 @@ TEST(ShapeGrowth, ShortHairEndsALittlePastTheScalpsEdgeAtTheNapeAndOverAnEar) {
   GrowthParams gp;
   gp.maxLength = 0.8;  // 8 cm: short hair (kHugLength), long enough to go 5 cm past the edge
   ASSERT_LT(gp.maxLength, kHugLength * (1 - kHugJitter));
-  // the length of strand s laid with its foot (the sphere's nearest point) below the edge (a
-  // triangle's height of slack: the scalp flags are per triangle)
-  const auto pastEdge = [](const Strands& st, size_t s) {
+  // the length of strand s below the edge (from y = -0.3 exactly: up to a triangle's height more
+  // than growth's, whose scalp flags are per triangle), and the largest stand-off of its points a
+  // triangle's height (0.07) below the edge
+  const auto pastEdge = [](const Strands& st, size_t s, float& off) {
     float len = 0;
+    off = 0;
     for (uint32_t p = st.strandStart[s] + 1; p < st.strandStart[s + 1]; ++p) {
       const float* q = &st.points[3 * size_t(p)];
       const float r = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
-      if (q[1] / r < -0.3f - 0.07f)
+      if (q[1] / r < -0.3f)
         len += std::sqrt((q[0] - q[-3]) * (q[0] - q[-3]) + (q[1] - q[-2]) * (q[1] - q[-2]) +
                          (q[2] - q[-1]) * (q[2] - q[-1]));
+      if (q[1] / r < -0.3f - 0.07f) off = std::max(off, r - kRadius);
     }
     return len;
   };
-  // at the nape (behind the head), combed down and back
-  const std::vector<Eigen::Vector3f> nape = {{0, -0.05f, -0.998f}, {0.2f, -0.05f, -0.978f}};
-  Strands back;
+  // twelve roots 1 cm apart at the nape (behind the head), combed down and back, and over an ear
+  // (beside the head), combed down and out
+  std::vector<Eigen::Vector3f> nape, side;
+  for (int k = 0; k < 12; ++k) {
+    const float a = 0.1f * float(k - 6), c = std::sqrt(1 - 0.05f * 0.05f);
+    nape.emplace_back(c * std::sin(a), -0.05f, -c * std::cos(a));
+    side.emplace_back(c * std::cos(a), -0.05f, c * std::sin(a));
+  }
+  Strands back, ear;
   ASSERT_TRUE(growStrands(g, constantField(g, 0, -1, -0.3f), nape, gp, back, 1 << 20, &head,
                           nullptr, BodyCollider(), &rules)
                   .ok());
-  // over an ear (beside the head), combed down and out
-  const std::vector<Eigen::Vector3f> side = {{0.998f, -0.05f, 0}, {0.978f, -0.05f, 0.2f}};
-  Strands ear;
   ASSERT_TRUE(growStrands(g, constantField(g, 0.3f, -1, 0), side, gp, ear, 1 << 20, &head, nullptr,
                           BodyCollider(), &rules)
                   .ok());
-  for (size_t s = 0; s < 2; ++s) {
-    const float b = pastEdge(back, s), e = pastEdge(ear, s);
-    std::printf("past the edge: nape %.3f, ear %.3f\n", b, e);
-    // it gets there (the edge is 2.5 cm below the roots, the hair 8 cm long) and ends within its
-    // taper and a step
-    EXPECT_GT(b, 0.5f * kTaperPastNape);
-    EXPECT_LT(b, kTaperPastNape + 0.1f);
-    EXPECT_GT(e, 0.3f * kTaperPastEar);
-    EXPECT_LT(e, kTaperPastEar + 0.1f);
+  ASSERT_EQ(back.strandStart.size(), 13u);
+  ASSERT_EQ(ear.strandStart.size(), 13u);
+  std::vector<float> b, e;
+  float napeOff = 0, off = 0;
+  for (size_t s = 0; s < 12; ++s) {
+    b.push_back(pastEdge(back, s, off));
+    napeOff = std::max(napeOff, off);
+    e.push_back(pastEdge(ear, s, off));
   }
+  const auto [bMin, bMax] = std::minmax_element(b.begin(), b.end());
+  const auto [eMin, eMax] = std::minmax_element(e.begin(), e.end());
+  std::printf("past the edge: nape %.3f..%.3f (off the head at most %.3f), ear %.3f..%.3f\n", *bMin,
+              *bMax, napeOff, *eMin, *eMax);
+  // every strand gets there (the edge is 2.5 cm below the roots, the hair 8 cm long) and ends
+  // within its taper (at most 1.5 times kTaperPast*), a step and a triangle
+  EXPECT_GT(*bMin, 0.f);
+  EXPECT_LT(*bMax, 1.5f * kTaperPastNape + 0.1f);
+  EXPECT_GT(*eMin, 0.f);
+  EXPECT_LT(*eMax, 1.5f * kTaperPastEar + 0.1f);
+  // in uneven tufts, not on one line: the shortest and longest differ by a third of the taper
+  EXPECT_GT(*bMax - *bMin, kTaperPastNape / 3);
+  // and at the nape closes in to the head: within a millimetre of the growth margin (2 mm; 3.8
+  // mm off before it closed in)
+  EXPECT_LT(napeOff, float(gp.margin) + 0.01f);
 }
 
 TEST(ShapeGrowth, ShortHairOfAStrokeThatStaysNearTheHeadLiesOnIt) {
