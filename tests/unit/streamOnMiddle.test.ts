@@ -54,4 +54,25 @@ describe('streamOnMiddle', () => {
     expect(Math.abs(n[0])).toBeGreaterThan(0.55);
     expect(streamOnMiddle(inside, X_PLANE, side, head).snapped).toBe(false);
   });
+
+  it('with Mirror on, puts a stroke within 1.5 cm of the middle on it from any view', () => {
+    // a crest 1 cm off the middle, drawn from the front: as drawn without Mirror, on the middle
+    // (on the head) with it
+    const drawn = crest(0.1);
+    expect(streamOnMiddle(drawn, X_PLANE, front, head).snapped).toBe(false);
+    const r = streamOnMiddle(drawn, X_PLANE, front, head, true);
+    expect(r.snapped).toBe(true);
+    for (const p of r.points) {
+      expect(p[0]).toBeCloseTo(0, 9);
+      expect(Math.abs(head.signedDistance(p))).toBeLessThan(0.01);
+    }
+    // 3 cm off, or a parting's stroke from the middle out to the side: its twin is meant
+    expect(streamOnMiddle(crest(0.3), X_PLANE, front, head, true).snapped).toBe(false);
+    const out = crest(0.05).map((p, i): Vec3 => {
+      const hit = head.raycast([0.05 + 0.12 * i, 3, p[2]], [0, -1, 0]);
+      return hit ? hit.point : p;
+    });
+    expect(Math.abs(out[0][0])).toBeLessThan(0.15);
+    expect(streamOnMiddle(out, X_PLANE, front, head, true).snapped).toBe(false);
+  });
 });

@@ -1,8 +1,9 @@
 // A stream curve drawn in a side view along the head's middle (a mohawk's crest, a centre
 // line combed back) is put on it: from the side the middle is the head's outline, and a press
 // just inside it lands a few centimetres to the near side (fresh eyes could not draw a centred
-// mohawk without Mirror), when it is pressed on the outline. Its points that lay on the head are
-// put back on it where the middle meets it; those past the scalp keep their place in the plane.
+// mohawk without Mirror), when it is pressed on the outline; with Mirror on, one drawn within
+// 1.5 cm of the middle from any view is too. Its points that lay on the head are put back on it
+// where the middle meets it; those past the scalp keep their place in the plane.
 import type { Head } from '../head/head';
 import { type MirrorPlane, snapToPlane } from '../model/mirror';
 import type { Vec3 } from '../model/vec3';
@@ -20,13 +21,18 @@ export function streamOnMiddle(
   plane: MirrorPlane,
   view: Vec3,
   head: Head,
+  mirrored = false,
 ): { points: Vec3[]; snapped: boolean } {
   if (drawn.length === 0) return { points: drawn, snapped: false };
   const n = head.normalAt(drawn[0]);
   const len = Math.hypot(view[0], view[1], view[2]) || 1;
-  if (Math.abs(n[0] * view[0] + n[1] * view[1] + n[2] * view[2]) / len >= ON_OUTLINE)
-    return { points: drawn, snapped: false };
-  const { points, snapped } = snapToPlane(drawn, plane, view, true);
+  const onOutline = Math.abs(n[0] * view[0] + n[1] * view[1] + n[2] * view[2]) / len < ON_OUTLINE;
+  let r = onOutline ? snapToPlane(drawn, plane, view, true) : { points: drawn, snapped: false };
+  // with Mirror on, a stroke along the middle from any view (its first point and its points on
+  // average within SNAP_TO_PLANE, 1.5 cm): its twin would lie beside it, a crest of two strokes
+  // a few centimetres apart where one was meant (fresh eyes' first mohawk strokes)
+  if (!r.snapped && mirrored) r = snapToPlane(drawn, plane);
+  const { points, snapped } = r;
   if (!snapped) return { points, snapped };
   const c = head.center;
   return {

@@ -304,9 +304,10 @@ function scalpBrushTool(k: ToolKit): ScalpBrushTool {
 function streamTool(k: ToolKit): Tool {
   const { d, editor, viewer, step, camera, sample, sampleStart, eye, forward, showDraft } = k;
   const { strokeExtends } = k;
-  // drawn from the side along the head's middle, it is put on the middle
+  // drawn from the side along the head's middle (with Mirror on, from any view), it is put on
+  // the middle
   const onMiddle = (points: Vec3[]) =>
-    streamOnMiddle(points, editor.session.symmetry ?? X_PLANE, forward(), d.head());
+    streamOnMiddle(points, editor.session.symmetry ?? X_PLANE, forward(), d.head(), d.mirror());
   return new StreamCurveTool({
     sample,
     sampleStart,
