@@ -142,7 +142,12 @@ function toolKit(d: ToolDeps): ToolKit {
       if (!(near.distance < OUTLINE_REACH)) return s;
       at = near.point;
     }
-    return { ...s, scalpHit: head.nearestScalpPoint(at, START_REACH) };
+    // failing that, the scalp the press is beside on screen: from the top view, a press on an ear
+    // or just past the head's outline beside it was refused
+    const scalpHit =
+      head.nearestScalpPoint(at, START_REACH) ??
+      head.scalpPointNearRay(s.origin, s.direction, OUTLINE_REACH);
+    return { ...s, scalpHit };
   };
   // with natural fall a new curve's hair ends where the stroke ends: the draft marks it
   // A stream stroke's hair grows on past its end when the session says so, when it ends at a

@@ -17,6 +17,10 @@ import { buildHead } from './buildHead';
 import { headSdf } from './headSdf';
 
 /** The head's triangles and what is known per vertex and per triangle. */
+/** A scalp triangle whose normal leans away from a ray by at most this (the cosine) still counts
+ *  as seen by it, edge-on at the outline (scalpPointNearRay). */
+const EDGE_ON = 0.15;
+
 export interface HeadMesh {
   positions: Float32Array; // positions[3 * vertex + axis], world units
   normals: Float32Array; // normals[3 * vertex + axis], unit, outward (area-weighted)
@@ -135,6 +139,43 @@ export class Head {
       if (d2 < best) {
         best = d2;
         at = q;
+      }
+    }
+    return at && this.closest(at).point;
+  }
+
+  /** The scalp point nearest the ray from `origin` along unit `dir`, within `within` of it
+   *  (perpendicular distance, world units) and on a triangle facing the ray's origin or seen
+   *  edge-on (a press just beside the scalp's outline), or null. */
+  scalpPointNearRay(origin: Vec3, dir: Vec3, within: number): Vec3 | null {
+    const { positions: P, indices: I, scalp } = this.mesh;
+    let best = within * within;
+    let at: Vec3 | null = null;
+    for (let t = 0; t < scalp.length; t++) {
+      if (!scalp[t]) continue;
+      const a = 3 * I[3 * t];
+      const b = 3 * I[3 * t + 1];
+      const c = 3 * I[3 * t + 2];
+      const e1: Vec3 = [P[b] - P[a], P[b + 1] - P[a + 1], P[b + 2] - P[a + 2]];
+      const e2: Vec3 = [P[c] - P[a], P[c + 1] - P[a + 1], P[c + 2] - P[a + 2]];
+      const n: Vec3 = [
+        e1[1] * e2[2] - e1[2] * e2[1],
+        e1[2] * e2[0] - e1[0] * e2[2],
+        e1[0] * e2[1] - e1[1] * e2[0],
+      ];
+      const nl = Math.hypot(n[0], n[1], n[2]);
+      if (!(nl > 0) || (n[0] * dir[0] + n[1] * dir[1] + n[2] * dir[2]) / nl > EDGE_ON) continue;
+      const q: Vec3 = [
+        (P[a] + P[b] + P[c]) / 3 - origin[0],
+        (P[a + 1] + P[b + 1] + P[c + 1]) / 3 - origin[1],
+        (P[a + 2] + P[b + 2] + P[c + 2]) / 3 - origin[2],
+      ];
+      const along = q[0] * dir[0] + q[1] * dir[1] + q[2] * dir[2];
+      if (!(along > 0)) continue;
+      const d2 = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] - along * along;
+      if (d2 < best) {
+        best = d2;
+        at = [q[0] + origin[0], q[1] + origin[1], q[2] + origin[2]];
       }
     }
     return at && this.closest(at).point;
