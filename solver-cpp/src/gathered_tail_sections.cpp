@@ -16,6 +16,10 @@ namespace gathered_tail {
 
 namespace {
 
+// The long way round (combPath) must pass this far above the centre at its middle (the unit
+// direction's height).
+constexpr float kLongWayAbove = 0.2f;
+
 // A point put `lift` off the head (outside it) along the head's distance gradient, or on the
 // sphere about the centre through `onSphere` when there is no head.
 Eigen::Vector3f offHead(const SectionGather& g, Eigen::Vector3f x, float lift, float sphere) {
@@ -62,9 +66,12 @@ float combPath(const SectionGather& g, const Eigen::Vector3f& root, const Eigen:
   axis.normalize();
   // (ties on) when the short way from root to foot passes in front of the centre below the root
   // (a temple root and a seat low on the nape: the short way runs down the cheek), it goes the
-  // long way, over the crown
+  // long way, over the crown: only when the long way does pass over the top (its middle, -mid,
+  // above the centre by kLongWayAbove); a crown root beside a bun on top of the head went the
+  // long way round under the chin, a veil of hair over the face and throat
   const Eigen::Vector3f mid = (a + b).normalized();
-  if (!viaAbove && smooth && (a + b).norm() > 1e-3f && mid.z() > 0 && mid.y() < a.y()) {
+  if (!viaAbove && smooth && (a + b).norm() > 1e-3f && mid.z() > 0 && mid.y() < a.y() &&
+      -mid.y() > kLongWayAbove) {
     ang = 2 * 3.14159265f - ang;
     axis = -axis;
   }

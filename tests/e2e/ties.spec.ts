@@ -134,6 +134,21 @@ test('half-up: the user guide gesture (a parting from above one ear round the cr
   );
   expect(topIn / top).toBeGreaterThanOrEqual(0.95);
   expect(restDown / rest).toBeGreaterThanOrEqual(0.95);
+  // no hair in front of the throat, below the chin (y -1.2, the head's front z 0.15): crown hair
+  // beside the bun was combed the long way round under the chin, 9 % of the strands
+  let throat = 0;
+  for (let s = 0; s + 1 < h.strandStart.length; s++) {
+    for (let k = h.strandStart[s]; k < h.strandStart[s + 1]; k++) {
+      const [x, y, z] = [h.points[3 * k], h.points[3 * k + 1], h.points[3 * k + 2]];
+      if (z > 0.15 && y < -1.2 && Math.abs(x) < 0.5) {
+        throat++;
+        break;
+      }
+    }
+  }
+  const strands = h.strandStart.length - 1;
+  console.log(`half-up: ${throat} of ${strands} strands in front of the throat`);
+  expect(throat).toBeLessThanOrEqual(0.002 * strands);
   await shoot(page, 'ties-half-up-sections');
   await page.getByRole('button', { name: 'Stream curve' }).click();
   await page.waitForFunction(() => window.hairsketch.sectionsOverHair() === 0);
