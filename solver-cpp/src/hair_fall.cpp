@@ -141,7 +141,7 @@ void curveFootprint(const Grid& g, const ReachCurve& c, CurveFootprint& out) {
   if (c.lift)
     for (size_t k = 0; k < c.count; ++k) out.maxLift = std::max(out.maxLift, c.lift[k]);
   if (c.setsLength)
-    out.stroke = {float(q[0]), float(q[1]), float(q[2]), float(L), c.growsOn && !combs};
+    out.stroke = {float(q[0]), float(q[1]), float(q[2]), float(L), c.growsOn && !combs, combs};
   size_t lastSeg = c.count - 2;
   while (lastSeg > 0 && !(s[lastSeg + 1] > s[lastSeg])) --lastSeg;
   const double inf = std::numeric_limits<double>::infinity();
@@ -294,7 +294,10 @@ void combineReach(const Grid& g, const std::vector<const CurveFootprint*>& curve
 
 float lengthAround(const std::vector<StrokeLength>& strokes, const float p[3], float maxLength) {
   double sw = 0, swl = 0;
+  const bool anyEnds =
+      std::any_of(strokes.begin(), strokes.end(), [](const StrokeLength& c) { return !c.combs; });
   for (const StrokeLength& c : strokes) {
+    if (anyEnds && c.combs) continue;
     const double d2 = double(c.x - p[0]) * (c.x - p[0]) + double(c.y - p[1]) * (c.y - p[1]) +
                       double(c.z - p[2]) * (c.z - p[2]);
     const double w = 1 / (d2 + 1e-4);

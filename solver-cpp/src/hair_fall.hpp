@@ -107,6 +107,9 @@ struct StrokeLength {
   float x = 0, y = 0, z = 0;  // the curve's first point (on the scalp)
   float length = 0;           // the curve's arc length (world units)
   bool growsOn = false;
+  // It ends on the scalp and combs on: it counts (with its own length) only where no stroke
+  // that ends hair (one that leaves the head) is in the session (LengthAround).
+  bool combs = false;
 };
 
 // (ties on) A stroke that grows on and ends within this distance (world units: 3 cm, as the app
@@ -243,7 +246,9 @@ constexpr float kCombNear = 0.3f, kCombFar = 0.5f, kCombFarOverEar = 0.8f, kComb
 constexpr float kCombBeside = 0.15f;
 // The length of hair no stroke ends, rooted at p: Shepard's inverse-square-distance blend of the
 // strokes' lengths (a stroke that grows on counts as maxLength, unless it ends on the scalp: a
-// stroke that combs counts its own length), capped by maxLength; maxLength when there is no
+// stroke that combs counts its own length, and only when every stroke combs: one sweep drawn on
+// the head over long hair says where the hair goes, not how long it is), capped by maxLength;
+// maxLength when there is no
 // stroke.
 float lengthAround(const std::vector<StrokeLength>& strokes, const float p[3], float maxLength);
 

@@ -116,6 +116,13 @@ TEST(LengthAround, ShepardBlendOfTheStrokesLengthsCappedByTheMaximum) {
   const float at[3] = {1, 0, 0};
   EXPECT_NEAR(lengthAround(strokes, at, 5.f), 2.0, 1e-3);
   EXPECT_EQ(lengthAround({}, p, 4.f), 4.f);
+  // a stroke that combs (ends on the scalp) counts only when every stroke combs: beside a stroke
+  // that ends hair it says nothing of the length; alone (a short slicked back) its own length
+  const std::vector<StrokeLength> sweep = {{0, 1, 0, 0.7f, false, true}, {1, 0, 0, 2.0f, false}};
+  EXPECT_NEAR(lengthAround(sweep, p, 5.f), 2.0, 1e-6);
+  const std::vector<StrokeLength> combs = {{0, 1, 0, 0.7f, false, true},
+                                           {1, 0, 0, 2.0f, false, true}};
+  EXPECT_NEAR(lengthAround(combs, p, 5.f), (w1 * 0.7 + w2 * 2.0) / (w1 + w2), 1e-5);
 }
 
 TEST(ShapeGrowth, HairNoStrokeGovernsLiesOnTheHeadAtItsStandoff) {

@@ -12,4 +12,9 @@ describe('combingOnNote', () => {
     expect(note).toContain('its hair is 5 cm, Max length');
     expect(note).not.toContain('about as long as the stroke');
   });
+  it('says the strokes that end hair set the length when there are any', () => {
+    const note = combingOnNote(11.2, 32, true);
+    expect(note).toContain('takes its length from the strokes that end hair');
+    expect(note).not.toContain('11 cm');
+  });
 });

@@ -58,7 +58,8 @@ const off = (s: SessionState): SessionState => {
 
 /** Hair no stroke ends, rooted 4 cm or more from every stroke point: the median of its length
  *  over the Shepard blend of the stream curves' lengths (weights 1 / squared distance from the
- *  root to each curve's first point; a curve extended off the head counts as Max length),
+ *  root to each curve's first point; a curve extended off the head counts as Max length, one that
+ *  combs (ends on the scalp) only when every curve combs),
  *  capped by Max length, computed here from the strokes and the head's exact distance. */
 function lengthRatio(s: StrandArrays, session: SessionState): number {
   const maxLength = session.growth.maxLength;
@@ -74,8 +75,11 @@ function lengthRatio(s: StrandArrays, session: SessionState): number {
       return {
         start: c.points[0],
         length: c.extend && !combs ? maxLength : Math.min(L, maxLength),
+        combs: c.extend && combs,
       };
-    });
+    })
+    // a stroke that combs counts only when every stroke combs
+    .filter((c, _, all) => !c.combs || all.every((o) => o.combs));
   const ratios: number[] = [];
   eachStrand(s, (pts) => {
     if (session.curves.some((c) => c.points.some((q) => dist(q, pts[0]) < 0.4))) return;

@@ -93,6 +93,8 @@ interface ToolKit {
   forward: () => Vec3;
   showDraft: (pts: readonly Vec3[] | null) => void;
   strokeExtends: (pts: readonly Vec3[]) => boolean;
+  /** Whether a stroke's last point lies on the scalp (within SCALP_END_REACH): it combs. */
+  endsOnScalp: (pts: readonly Vec3[]) => boolean;
 }
 
 function toolKit(d: ToolDeps): ToolKit {
@@ -179,6 +181,7 @@ function toolKit(d: ToolDeps): ToolKit {
     forward,
     showDraft,
     strokeExtends,
+    endsOnScalp,
   };
 }
 
@@ -308,7 +311,7 @@ function scalpBrushTool(k: ToolKit): ScalpBrushTool {
 /** The stream curve tool: strokes, hint strokes on the selected curve, previews. */
 function streamTool(k: ToolKit): Tool {
   const { d, editor, viewer, step, camera, sample, sampleStart, eye, forward, showDraft } = k;
-  const { strokeExtends } = k;
+  const { strokeExtends, endsOnScalp } = k;
   // drawn from the side along the head's middle (with Mirror on, from any view), it is put on
   // the middle
   const onMiddle = (points: Vec3[]) =>
@@ -357,7 +360,16 @@ function streamTool(k: ToolKit): Tool {
         ? `, on into ${tie.type} ${tie.id}`
         : extend && !newCurveExtends(editor.session)
           ? editor.session.shape
-            ? combingOnNote(cm, 10 * editor.session.growth.maxLength)
+            ? combingOnNote(
+                cm,
+                10 * editor.session.growth.maxLength,
+                editor.session.curves.some(
+                  (c) =>
+                    c.type === 'stream' &&
+                    !(c.extend && endsOnScalp(c.points)) &&
+                    !tieAtEnd(editor.session.curves, c.points[c.points.length - 1]),
+                ),
+              )
             : ', combing on: it ends on the scalp'
           : '';
       editor.run({
@@ -385,7 +397,11 @@ function streamTool(k: ToolKit): Tool {
 /** What the status says of a stroke that ends on the scalp (with the shape rules): its hair is
  *  about as long as the stroke, `cm`, or Max length (`maxCm`) when that is shorter (fresh eyes
  *  read "11 cm" for hair capped at 5). */
-export function combingOnNote(cm: number, maxCm: number): string {
+export function combingOnNote(cm: number, maxCm: number, othersEndHair = false): string {
+  // a stroke that combs says nothing of the length beside strokes that end hair
+  // (docs/natural-fall.md, length from the strokes around)
+  if (othersEndHair)
+    return ', combing on: it ends on the scalp; its hair takes its length from the strokes that end hair';
   return cm <= maxCm
     ? `, combing on: it ends on the scalp; its hair is about as long as the stroke, ${Math.round(cm)} cm (draw on past the head for longer hair)`
     : `, combing on: it ends on the scalp; its hair is ${Math.round(maxCm)} cm, Max length (the stroke is ${Math.round(cm)} cm: raise Max length in the Hair panel for longer hair)`;
