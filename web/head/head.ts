@@ -8,6 +8,7 @@
 // scalp_avoidance.cpp). The signed distance is exact where the head has an analytic one (the
 // built-in head's SDF); otherwise the distance to the mesh, negative where the normal at the
 // closest point faces away.
+
 import * as THREE from 'three';
 import { MeshBVH } from 'three-mesh-bvh';
 import type { ScalpMesh } from '../model/hairArrays';
@@ -15,8 +16,21 @@ import { sphericalDirection, type Vec3 } from '../model/vec3';
 import { type BodyMesh, bodyArrays, builtinBody } from './buildBody';
 import { buildHead } from './buildHead';
 import { headSdf } from './headSdf';
+import { triangleNormal } from './triangleNormal';
 
 /** The head's triangles and what is known per vertex and per triangle. */
+/** The centroid of triangle t. */
+function centroid(P: ArrayLike<number>, I: ArrayLike<number>, t: number): Vec3 {
+  const a = 3 * I[3 * t];
+  const b = 3 * I[3 * t + 1];
+  const c = 3 * I[3 * t + 2];
+  return [
+    (P[a] + P[b] + P[c]) / 3,
+    (P[a + 1] + P[b + 1] + P[c + 1]) / 3,
+    (P[a + 2] + P[b + 2] + P[c + 2]) / 3,
+  ];
+}
+
 /** A scalp triangle whose normal leans away from a ray by at most this (the cosine) still counts
  *  as seen by it, edge-on at the outline (scalpPointNearRay). */
 const EDGE_ON = 0.15;
@@ -127,14 +141,7 @@ export class Head {
     let at: Vec3 | null = null;
     for (let t = 0; t < scalp.length; t++) {
       if (!scalp[t]) continue;
-      const a = 3 * I[3 * t];
-      const b = 3 * I[3 * t + 1];
-      const c = 3 * I[3 * t + 2];
-      const q: Vec3 = [
-        (P[a] + P[b] + P[c]) / 3,
-        (P[a + 1] + P[b + 1] + P[c + 1]) / 3,
-        (P[a + 2] + P[b + 2] + P[c + 2]) / 3,
-      ];
+      const q = centroid(P, I, t);
       const d2 = (q[0] - p[0]) ** 2 + (q[1] - p[1]) ** 2 + (q[2] - p[2]) ** 2;
       if (d2 < best) {
         best = d2;
@@ -149,27 +156,16 @@ export class Head {
    *  edge-on (a press just beside the scalp's outline), or null. */
   scalpPointNearRay(origin: Vec3, dir: Vec3, within: number): Vec3 | null {
     const { positions: P, indices: I, scalp } = this.mesh;
+    const n = new Float64Array(3);
     let best = within * within;
     let at: Vec3 | null = null;
     for (let t = 0; t < scalp.length; t++) {
       if (!scalp[t]) continue;
-      const a = 3 * I[3 * t];
-      const b = 3 * I[3 * t + 1];
-      const c = 3 * I[3 * t + 2];
-      const e1: Vec3 = [P[b] - P[a], P[b + 1] - P[a + 1], P[b + 2] - P[a + 2]];
-      const e2: Vec3 = [P[c] - P[a], P[c + 1] - P[a + 1], P[c + 2] - P[a + 2]];
-      const n: Vec3 = [
-        e1[1] * e2[2] - e1[2] * e2[1],
-        e1[2] * e2[0] - e1[0] * e2[2],
-        e1[0] * e2[1] - e1[1] * e2[0],
-      ];
+      triangleNormal(P, 3 * I[3 * t], 3 * I[3 * t + 1], 3 * I[3 * t + 2], n);
       const nl = Math.hypot(n[0], n[1], n[2]);
       if (!(nl > 0) || (n[0] * dir[0] + n[1] * dir[1] + n[2] * dir[2]) / nl > EDGE_ON) continue;
-      const q: Vec3 = [
-        (P[a] + P[b] + P[c]) / 3 - origin[0],
-        (P[a + 1] + P[b + 1] + P[c + 1]) / 3 - origin[1],
-        (P[a + 2] + P[b + 2] + P[c + 2]) / 3 - origin[2],
-      ];
+      const q = centroid(P, I, t);
+      for (let k = 0; k < 3; k++) q[k] -= origin[k];
       const along = q[0] * dir[0] + q[1] * dir[1] + q[2] * dir[2];
       if (!(along > 0)) continue;
       const d2 = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] - along * along;
