@@ -3,10 +3,7 @@
 // an iris, and lips are reddened. The hair's shadow: a per-vertex `hairShadow` attribute
 // (transmittance through the hair towards the key light, from the worker's lighting precompute,
 // 1 = unshadowed) scales the key light (the scene's first directional light); High reads the
-// deep opacity maps instead (hairShadowReceiver.ts). Under hair the scalp takes the hair's colour
-// (setHeadHairUnder), as real-time grooms paint the scalp under the hair: where the strands are
-// sparse (a hairline, an up-style's nape, a parting) the gaps between them show hair-coloured
-// scalp, not pink skin between dark bristles.
+// deep opacity maps instead (hairShadowReceiver.ts).
 import * as THREE from 'three';
 import type { HeadMesh } from '../head/head';
 import { EYE_R, EYE_X, EYE_Y, EYE_Z, HeadPart } from '../head/headSdf';
@@ -95,55 +92,6 @@ function scalpCounts(head: HeadMeshArrays): { scalpCount: Uint16Array; triCount:
   return { scalpCount, triCount };
 }
 
-/** How much of the scalp's colour under hair a head takes where hair grows: the rest is the
- *  skin's (scalp skin shows a little through the roots). */
-export const HAIR_UNDER_SHARE = 0.8;
-
-/** Over this distance in from the scalp's edge (world units, 1 cm) the colour under the hair
- *  fades in: the hairline stays soft instead of a painted line. */
-export const HAIR_UNDER_FADE = 0.1;
-
-/** Per vertex: how far the scalp's colour under hair holds there, 0 at and outside the scalp's
- *  edge (a vertex with a triangle off the scalp, and eyes and lips) rising to 1 at HAIR_UNDER_FADE
- *  in from it (smoothstep of the distance along the mesh's edges). */
-function scalpShares(head: HeadMeshArrays, out?: Float32Array): Float32Array {
-  const { scalpCount, triCount } = scalpCounts(head);
-  const { positions: P, indices: I } = head;
-  const n = P.length / 3;
-  const f = out && out.length === n ? out : new Float32Array(n);
-  const d = new Float32Array(n);
-  for (let v = 0; v < n; v++) {
-    const skin = !head.parts || head.parts[v] === HeadPart.skin;
-    d[v] = skin && triCount[v] > 0 && scalpCount[v] === triCount[v] ? Infinity : 0;
-  }
-  // relaxation over the triangles' edges until nothing within the fade changes
-  for (let pass = 0, changed = true; changed && pass < 64; pass++) {
-    changed = false;
-    for (let t = 0; t < I.length; t += 3)
-      for (let k = 0; k < 3; k++) {
-        const a = I[t + k];
-        const b = I[t + ((k + 1) % 3)];
-        const e = Math.hypot(
-          P[3 * a] - P[3 * b],
-          P[3 * a + 1] - P[3 * b + 1],
-          P[3 * a + 2] - P[3 * b + 2],
-        );
-        if (d[a] + e < d[b] && d[a] + e < HAIR_UNDER_FADE) {
-          d[b] = d[a] + e;
-          changed = true;
-        } else if (d[b] + e < d[a] && d[b] + e < HAIR_UNDER_FADE) {
-          d[a] = d[b] + e;
-          changed = true;
-        }
-      }
-  }
-  for (let v = 0; v < n; v++) {
-    const x = Math.min(1, d[v] / HAIR_UNDER_FADE);
-    f[v] = x * x * (3 - 2 * x);
-  }
-  return f;
-}
-
 /** Indexed geometry with `position`, `normal` and `color` (linear RGB, headVertexColors). */
 export function createHeadGeometry(
   head: HeadMeshArrays,
@@ -160,7 +108,6 @@ export function createHeadGeometry(
     'hairShadow',
     new THREE.BufferAttribute(new Float32Array(vertices).fill(1), 1),
   );
-  geometry.setAttribute('scalpShare', new THREE.BufferAttribute(scalpShares(head), 1));
   if (head.normals) geometry.setAttribute('normal', new THREE.BufferAttribute(head.normals, 3));
   else geometry.computeVertexNormals();
   geometry.computeBoundingBox();
@@ -176,30 +123,17 @@ export function createHeadMaterial(): THREE.MeshStandardMaterial {
     metalness: 0,
   });
   material.name = 'HeadSkin';
-  // the scalp's colour under hair (linear RGB) and how much of it shows (0: no hair)
-  const hairUnder = { value: new THREE.Vector4(0, 0, 0, 0) };
-  material.userData.hairUnder = hairUnder;
   material.onBeforeCompile = (shader) => {
-    shader.uniforms.hairUnder = hairUnder;
     shader.vertexShader = shader.vertexShader
       .replace(
         '#include <common>',
-        '#include <common>\nattribute float hairShadow;\nvarying float vHairShadow;\n' +
-          'attribute float scalpShare;\nvarying float vScalpShare;',
+        '#include <common>\nattribute float hairShadow;\nvarying float vHairShadow;',
       )
-      .replace(
-        '#include <begin_vertex>',
-        '#include <begin_vertex>\nvHairShadow = hairShadow;\nvScalpShare = scalpShare;',
-      );
-    shader.fragmentShader = shader.fragmentShader
-      .replace(
-        '#include <common>',
-        '#include <common>\nvarying float vHairShadow;\nvarying float vScalpShare;\nuniform vec4 hairUnder;',
-      )
-      .replace(
-        '#include <color_fragment>',
-        '#include <color_fragment>\ndiffuseColor.rgb = mix(diffuseColor.rgb, hairUnder.rgb, hairUnder.a * vScalpShare);',
-      );
+      .replace('#include <begin_vertex>', '#include <begin_vertex>\nvHairShadow = hairShadow;');
+    shader.fragmentShader = shader.fragmentShader.replace(
+      '#include <common>',
+      '#include <common>\nvarying float vHairShadow;',
+    );
     // the key light is the scene's first directional light (viewer.ts adds it first)
     patchHairShadowReceiver(shader, { perVertex: 'vHairShadow', inMap: true });
   };
@@ -213,25 +147,6 @@ export function setHeadHairShadow(mesh: THREE.Mesh, transmittance: Float32Array)
   if (!a || a.count !== transmittance.length) return;
   (a.array as Float32Array).set(transmittance);
   a.needsUpdate = true;
-}
-
-/** The scalp under the hair takes `colour` (linear RGB, the hair's colour at its roots), or its
- *  own tint again (null: no hair). Returns whether anything changed (the frame cache's head layer
- *  must be drawn again). */
-export function setHeadHairUnder(
-  mesh: THREE.Mesh,
-  colour: readonly [number, number, number] | null,
-): boolean {
-  const u = (mesh.material as THREE.Material).userData.hairUnder as
-    | { value: THREE.Vector4 }
-    | undefined;
-  if (!u) return false;
-  const v = colour
-    ? new THREE.Vector4(colour[0], colour[1], colour[2], HAIR_UNDER_SHARE)
-    : new THREE.Vector4(0, 0, 0, 0);
-  if (u.value.equals(v)) return false;
-  u.value.copy(v);
-  return true;
 }
 
 /** The head as a ready-to-add mesh (geometry views the head's arrays, not copied). */
@@ -255,11 +170,6 @@ export function recolorHeadScalp(mesh: THREE.Mesh, head: HeadMeshArrays): void {
   if (!a) return;
   headVertexColors(head, DEFAULT_HEAD_COLORS, a.array as Float32Array);
   a.needsUpdate = true;
-  const f = mesh.geometry.getAttribute('scalpShare') as THREE.BufferAttribute | undefined;
-  if (f) {
-    scalpShares(head, f.array as Float32Array);
-    f.needsUpdate = true;
-  }
   delete mesh.geometry.userData.scalpCounts;
 }
 
@@ -279,7 +189,6 @@ export function paintHeadTriangles(
   g.userData.scalpCounts ??= scalpCounts(head);
   const { scalpCount, triCount } = g.userData.scalpCounts as ReturnType<typeof scalpCounts>;
   const rgb = a.array as Float32Array;
-  const share = g.getAttribute('scalpShare') as THREE.BufferAttribute | undefined;
   const skin = new THREE.Color(colors.skin);
   const scalpColor = new THREE.Color(colors.scalp);
   const c = new THREE.Color();
@@ -292,19 +201,12 @@ export function paintHeadTriangles(
       const v = head.indices[3 * t + k];
       scalpCount[v] += value ? 1 : -1;
       if (head.parts && head.parts[v] !== HeadPart.skin) continue;
-      const f = triCount[v] ? scalpCount[v] / triCount[v] : 0;
-      // the colour under hair, until the stroke's end recolours the scalp (recolorHeadScalp):
-      // on where all of the vertex's triangles are scalp, off elsewhere
-      if (share) (share.array as Float32Array)[v] = f === 1 ? 1 : 0;
-      c.copy(skin).lerp(scalpColor, f);
+      c.copy(skin).lerp(scalpColor, triCount[v] ? scalpCount[v] / triCount[v] : 0);
       rgb[3 * v] = c.r;
       rgb[3 * v + 1] = c.g;
       rgb[3 * v + 2] = c.b;
     }
   }
-  if (changed) {
-    a.needsUpdate = true;
-    if (share) share.needsUpdate = true;
-  }
+  if (changed) a.needsUpdate = true;
   return changed;
 }
