@@ -248,8 +248,7 @@ constexpr float kCombBeside = 0.15f;
 // strokes' lengths (a stroke that grows on counts as maxLength, unless it ends on the scalp: a
 // stroke that combs counts its own length, and only when every stroke combs: one sweep drawn on
 // the head over long hair says where the hair goes, not how long it is), capped by maxLength;
-// maxLength when there is no
-// stroke.
+// maxLength when there is no stroke.
 float lengthAround(const std::vector<StrokeLength>& strokes, const float p[3], float maxLength);
 
 // One curve's part of the reach: the lattice points within kReachFar of it, with the distance to
