@@ -141,7 +141,15 @@ void curveFootprint(const Grid& g, const ReachCurve& c, CurveFootprint& out) {
   if (c.lift)
     for (size_t k = 0; k < c.count; ++k) out.maxLift = std::max(out.maxLift, c.lift[k]);
   if (c.setsLength)
-    out.stroke = {float(q[0]), float(q[1]), float(q[2]), float(L), c.growsOn && !combs, combs};
+    out.stroke = {float(q[0]),
+                  float(q[1]),
+                  float(q[2]),
+                  float(L),
+                  c.growsOn && !combs,
+                  combs,
+                  float(q[3 * c.count - 3]),
+                  float(q[3 * c.count - 2]),
+                  float(q[3 * c.count - 1])};
   size_t lastSeg = c.count - 2;
   while (lastSeg > 0 && !(s[lastSeg + 1] > s[lastSeg])) --lastSeg;
   const double inf = std::numeric_limits<double>::infinity();
@@ -292,19 +300,47 @@ void combineReach(const Grid& g, const std::vector<const CurveFootprint*>& curve
     if (sumVW[p] > 0) out.ownVolume[p] = float(sumV[p] / sumVW[p]);
 }
 
-float lengthAround(const std::vector<StrokeLength>& strokes, const float p[3], float maxLength) {
-  double sw = 0, swl = 0;
+namespace {
+
+// Calls f(stroke, weight) for each stroke that counts for the length of the hair rooted at p
+// (strokes that comb only when every stroke combs), with Shepard's inverse-square weight.
+template <class F>
+void eachLengthStroke(const std::vector<StrokeLength>& strokes, const float p[3], F&& f) {
   const bool anyEnds =
       std::any_of(strokes.begin(), strokes.end(), [](const StrokeLength& c) { return !c.combs; });
   for (const StrokeLength& c : strokes) {
     if (anyEnds && c.combs) continue;
     const double d2 = double(c.x - p[0]) * (c.x - p[0]) + double(c.y - p[1]) * (c.y - p[1]) +
                       double(c.z - p[2]) * (c.z - p[2]);
-    const double w = 1 / (d2 + 1e-4);
+    f(c, 1 / (d2 + 1e-4));
+  }
+}
+
+}  // namespace
+
+float lengthAround(const std::vector<StrokeLength>& strokes, const float p[3], float maxLength) {
+  double sw = 0, swl = 0;
+  eachLengthStroke(strokes, p, [&](const StrokeLength& c, double w) {
     sw += w;
     swl += w * (c.growsOn ? double(maxLength) : std::min(double(c.length), double(maxLength)));
-  }
+  });
   return sw > 0 ? float(std::min(swl / sw, double(maxLength))) : maxLength;
+}
+
+float hemAround(const std::vector<StrokeLength>& strokes, const float p[3]) {
+  double sw = 0, swHem = 0, swy = 0;
+  eachLengthStroke(strokes, p, [&](const StrokeLength& c, double w) {
+    sw += w;
+    if (!c.growsOn && !c.combs && c.endY < c.y - kHemDrop) {
+      const double across = std::hypot(double(c.endX - p[0]), double(c.endZ - p[2]));
+      const double h = w * (1 - smoothstep(kHemNear, kHemFar, across));
+      swHem += h;
+      swy += h * c.endY;
+    }
+  });
+  const double share = swHem > 0 ? swHem / sw : 0;
+  if (!(share > kHemShareFrom)) return -std::numeric_limits<float>::infinity();
+  return float(swy / swHem - (1 - smoothstep(kHemShareFrom, kHemShareTo, share)) * kHemFade);
 }
 
 void buildCurveReach(const Grid& solverGrid, const std::vector<ReachCurve>& curves,

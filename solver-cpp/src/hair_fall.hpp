@@ -110,6 +110,7 @@ struct StrokeLength {
   // It ends on the scalp and combs on: it counts (with its own length) only where no stroke
   // that ends hair (one that leaves the head) is in the session (LengthAround).
   bool combs = false;
+  float endX = 0, endY = 0, endZ = 0;  // the curve's last point (the hem, HemAround)
 };
 
 // (ties on) A stroke that grows on and ends within this distance (world units: 3 cm, as the app
@@ -250,6 +251,21 @@ constexpr float kCombBeside = 0.15f;
 // the head over long hair says where the hair goes, not how long it is), capped by maxLength;
 // maxLength when there is no stroke.
 float lengthAround(const std::vector<StrokeLength>& strokes, const float p[3], float maxLength);
+
+// The hem: hair no stroke ends that hangs beside strokes that end their hair well below where
+// they start (kHemDrop: long hair drawn down the back, a bob drawn to the chin) stops at the
+// height where those strokes end, blended over the scalp with lengthAround's weights, not at
+// their length: hair rooted low at the sides would otherwise hang lower than a stroke drawn down
+// the middle of the back (an upside-down U). A stroke's end sets the hem of the hair hanging
+// beside it: its weight fades out as the root lies farther across (in x and z) from that end,
+// from kHemNear to kHemFar (hair at the back is not cut to the height of a sweep drawn down the
+// front). Where such strokes hold less than kHemShareFrom of the weight (a fringe, a spike,
+// strokes extended to the maximum, ends far across) there is no hem; up to kHemShareTo it sinks
+// by up to kHemFade, so it comes in smoothly over the scalp. Returns the hem's height,
+// -infinity where there is none.
+constexpr float kHemDrop = 1.5f, kHemNear = 0.8f, kHemFar = 1.4f, kHemShareFrom = 0.4f,
+                kHemShareTo = 0.8f, kHemFade = 3.f;
+float hemAround(const std::vector<StrokeLength>& strokes, const float p[3]);
 
 // One curve's part of the reach: the lattice points within kReachFar of it, with the distance to
 // it, its remaining length there (L - s, s the arc length of the closest point on the polyline,

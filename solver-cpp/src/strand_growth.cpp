@@ -8,6 +8,7 @@
 #include "parallel.hpp"
 #include "rng.hpp"
 #include "shape_growth.hpp"
+#include "strand_noise.hpp"
 
 namespace hairsketch {
 
@@ -130,36 +131,15 @@ struct PaddedSampler {
 
 using PointBuffer = decltype(Strands::points);
 
-// Value noise in [0, 1): seeded values at the corners of kHugNoiseCell cells, blended
-// trilinearly, so roots close together get close values (a root and its mirror twin, a fraction
-// of a millimetre apart, agree) while roots a few cells apart vary independently.
-constexpr float kHugNoiseCell = 0.05f;  // world units (5 mm)
 // Each short strand lies on past the scalp's edge for kTaperPast* scaled by a factor in
-// [1 - kTaperJitter, 1 + kTaperJitter], from hugNoise read kTaperNoiseShift away (other values
+// [1 - kTaperJitter, 1 + kTaperJitter], from rootNoise read kTaperNoiseShift away (other values
 // than its hug threshold's).
 constexpr float kTaperJitter = 0.5f, kTaperNoiseShift = 7.3f;
-float hugNoise(float x, float y, float z) {
-  const float p[3] = {x / kHugNoiseCell, y / kHugNoiseCell, z / kHugNoiseCell};
-  int64_t c[3];
-  float f[3];
-  for (int k = 0; k < 3; ++k) {
-    const float fl = std::floor(p[k]);
-    c[k] = int64_t(fl);
-    f[k] = p[k] - fl;
-  }
-  float sum = 0;
-  for (int corner = 0; corner < 8; ++corner) {
-    float w = 1;
-    uint64_t key = 0;
-    for (int k = 0; k < 3; ++k) {
-      const int bit = (corner >> k) & 1;
-      w *= bit ? f[k] : 1 - f[k];
-      key = key << 20 | (uint64_t(c[k] + bit) & 0xfffff);
-    }
-    sum += w * float(Pcg32(key, 0x68756773ULL).uniform());
-  }
-  return sum;
-}
+// Hair that stops at the hem (HemAround) stops up to kHemBand above it, from rootNoise read
+// kHemNoiseShift away, so the hem is a band of cut ends, not one line; never before it has
+// kHemKeeps of its length.
+// Hair within kGovernNear of a stroke (governed above kHemGoverned) is the stroke's: no hem.
+constexpr float kHemBand = 0.12f, kHemNoiseShift = 13.1f, kHemKeeps = 0.5f, kHemGoverned = 0.5f;
 
 // Between the body's distance, read at one point, and the distance read later that lower bound
 // stands in for (trilinear interpolation is not exactly 1-Lipschitz): world units (1 mm).
@@ -275,9 +255,18 @@ struct GrowRange {
         }
       }
       if (lengthCap) strandMax = std::min(strandMax, double(lengthCap[r]));
+      // hair that hangs beside strokes drawn down to a hem, and that no stroke governs (its
+      // hair ends where the stroke does), stops there
+      float hem = -std::numeric_limits<float>::infinity();
+      if (reach && shape && s.inside(x, y, z) &&
+          interpolateScalar(reach->grid, reach->governed.data(), x, y, z) < kHemGoverned) {
+        const float at[3] = {x, y, z};
+        hem = hemAround(reach->strokes, at) +
+              kHemBand * rootNoise(std::abs(x - shaped.centre[0]) + kHemNoiseShift, y, z);
+      }
       bool laying = shape && head, hanging = false, overEar = false;
       // short hair hugs the head (kHugLength, each strand's threshold seeded by where its root
-      // is, mirror-symmetrically and smoothly: hugNoise, so Mirror's hair is the same on both
+      // is, mirror-symmetrically and smoothly: rootNoise, so Mirror's hair is the same on both
       // sides though mirrored roots are a fraction of a millimetre apart)
       bool hugs = false;
       if (laying) {
@@ -285,7 +274,7 @@ struct GrowRange {
             endsWithCurve ? std::min(strandMax, double(remainingAtRoot)) : strandMax;
         hugs = expected <
                kHugLength *
-                   (1 + kHugJitter * (2 * hugNoise(std::abs(x - shaped.centre[0]), y, z) - 1));
+                   (1 + kHugJitter * (2 * rootNoise(std::abs(x - shaped.centre[0]), y, z) - 1));
       }
       // short hair whose nearest stroke never leaves the head by kDrawnLift lies on the head
       // wherever that stroke governs it (ShapeGrowth::layOnHead's liesOn)
@@ -296,9 +285,10 @@ struct GrowRange {
       // where its root is as the hug threshold is, from other noise): a nape and sides that end
       // in uneven tufts, not on one line
       const float taper =
-          hugs ? 1 + kTaperJitter *
-                         (2 * hugNoise(std::abs(x - shaped.centre[0]) + kTaperNoiseShift, y, z) - 1)
-               : 1.f;
+          hugs
+              ? 1 + kTaperJitter *
+                        (2 * rootNoise(std::abs(x - shaped.centre[0]) + kTaperNoiseShift, y, z) - 1)
+              : 1.f;
       float layDist = 0, layNormal[3] = {0, 1, 0};
       double pastEdge = 0;  // the length laid past the scalp's edge (Lay::PastEdge)
       // a curve's own Volume at the root (weight, value): the strand's lift is that curve's
@@ -427,6 +417,7 @@ struct GrowRange {
           }
           if (!s.inside(nx, ny, nz)) break;  // leaving the bounding volume
           if (length + segLen > strandMax) break;
+          if (ny < hem && ny < y && length + segLen > kHemKeeps * strandMax) break;
           if (endsWithCurve && reachRemaining(*reach, nx, ny, nz, around) < 0) break;
           length += segLen;
           px = x;

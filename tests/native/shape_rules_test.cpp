@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "box_grid.hpp"
@@ -123,6 +124,46 @@ TEST(LengthAround, ShepardBlendOfTheStrokesLengthsCappedByTheMaximum) {
   const std::vector<StrokeLength> combs = {{0, 1, 0, 0.7f, false, true},
                                            {1, 0, 0, 2.0f, false, true}};
   EXPECT_NEAR(lengthAround(combs, p, 5.f), (w1 * 0.7 + w2 * 2.0) / (w1 + w2), 1e-5);
+}
+
+TEST(HemAround, TheHeightWhereStrokesDrawnDownEndBlendedOverTheScalp) {
+  // {x, y, z, length, growsOn, combs, end x, y, z}: two strokes drawn down 4 and 3 units, a spike
+  const StrokeLength down1{0, 1, 0, 4.f, false, false, 0, -3.f, 0};
+  const StrokeLength down2{1, 0, 0, 3.f, false, false, 1, -3.5f, 0};
+  const StrokeLength spike{0, 0, 1, 0.5f, false, false, 0, 0.4f, 1.2f};
+  const float p[3] = {0.3f, 0.8f, 0};
+  // by hand: weights 1 / (d^2 + 1e-4), the hem is the ends' heights blended
+  const double d1 = 0.3 * 0.3 + 0.2 * 0.2, d2 = 0.7 * 0.7 + 0.8 * 0.8;
+  const double w1 = 1 / (d1 + 1e-4), w2 = 1 / (d2 + 1e-4);
+  EXPECT_NEAR(hemAround({down1, down2}, p), (w1 * -3.0 + w2 * -3.5) / (w1 + w2), 1e-5);
+  // at a stroke's root, where it ends
+  const float at[3] = {1, 0, 0};
+  EXPECT_NEAR(hemAround({down1, down2}, at), -3.5, 1e-3);
+  // beside a spike (it ends above where it starts) there is no hem; where the strokes drawn down
+  // hold a share between kHemShareFrom and kHemShareTo of the weight, it sinks
+  const float bySpike[3] = {0, 0, 0.9f};
+  EXPECT_EQ(hemAround({down1, spike}, bySpike), -std::numeric_limits<float>::infinity());
+  const float between[3] = {0, 0.55f, 0.45f};
+  const double wa = 1 / (2 * 0.45 * 0.45 + 1e-4), wb = 1 / (2 * 0.55 * 0.55 + 1e-4);
+  const double share = wa / (wa + wb);  // down1 is the nearer: (0,1,0) vs the spike (0,0,1)
+  ASSERT_GT(share, kHemShareFrom);
+  ASSERT_LT(share, kHemShareTo);
+  const double t = (share - kHemShareFrom) / (kHemShareTo - kHemShareFrom);
+  EXPECT_NEAR(hemAround({down1, spike}, between), -3.0 - (1 - t * t * (3 - 2 * t)) * kHemFade,
+              1e-4);
+  // a stroke that ends a little below its start (a fringe), one whose hair grows on, strokes
+  // that comb: no hem
+  const StrokeLength fringe{0, 1, 0, 1.2f, false, false, 0, 1 - 0.5f * kHemDrop, 0};
+  const StrokeLength grows{0, 1, 0, 4.f, true, false, 0, -3.f, 0};
+  const StrokeLength combs{0, 1, 0, 4.f, false, true, 0, -3.f, 0};
+  // a stroke drawn down far across the head from the root (a sweep down the front, hair at
+  // the back): past kHemFar, no hem; at kHemNear, all of it
+  const StrokeLength across{0, 1, 0, 4.f, false, false, 0.3f + kHemFar + 0.01f, -3.f, 0};
+  for (const StrokeLength& c : {fringe, grows, combs, across})
+    EXPECT_EQ(hemAround({c}, p), -std::numeric_limits<float>::infinity());
+  EXPECT_EQ(hemAround({}, p), -std::numeric_limits<float>::infinity());
+  const StrokeLength beside{0, 1, 0, 4.f, false, false, 0.3f + kHemNear - 0.01f, -3.f, 0};
+  EXPECT_NEAR(hemAround({beside}, p), -3.0, 1e-5);
 }
 
 TEST(ShapeGrowth, HairNoStrokeGovernsLiesOnTheHeadAtItsStandoff) {

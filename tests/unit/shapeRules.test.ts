@@ -21,6 +21,7 @@ import {
   earCoverShare,
   fallOfUngoverned,
   median,
+  quantile,
   standOff,
   templeStrays,
   widthAtEars,
@@ -169,6 +170,31 @@ describe('the shape rules on hand-drawn stroke sets', () => {
     expect(lie).toBeLessThanOrEqual(0.1);
     expect(ratio).toBeGreaterThan(0.8);
     expect(ratio).toBeLessThan(1.2);
+  });
+
+  it('one stroke down the middle of the back: the hair beside it ends at its end, a straight hem', async () => {
+    // a new user's long hair (fresh eyes, round 11): Max length 60 cm, Mirror on, one stroke
+    // drawn from the crown down the back in the back view. Hair rooted at the back of the head 4
+    // cm or more from the stroke ends no lower than the stroke's last point (a band of 1.2 cm),
+    // not as long as the stroke, which hung the sides lower than the middle (an upside-down U)
+    const s = fixture('eyes-back-stroke');
+    const stroke = s.curves[0].points;
+    const endY = stroke[stroke.length - 1][1];
+    const below = (h: StrandArrays) => {
+      const drop: number[] = [];
+      eachStrand(h, (pts) => {
+        const root = pts[0];
+        if (root[2] > -0.3 || stroke.some((q) => dist(q, root) < 0.4)) return;
+        drop.push(endY - pts[pts.length - 1][1]);
+      });
+      return quantile(drop, 0.9);
+    };
+    const [before, after] = [below(await grow(off(s))), below(await grow(s))];
+    console.log(
+      `one stroke down the back, rules off -> on: p90 of the back hair's ends below the stroke's end ${(10 * before).toFixed(1)} -> ${(10 * after).toFixed(1)} cm`,
+    );
+    expect(before).toBeGreaterThan(0.3); // the fault
+    expect(after).toBeLessThanOrEqual(0.1);
   });
 
   it('a stroke combed into a bun leaves the loose hair its length', async () => {
