@@ -12,7 +12,7 @@ light. The camera is the app's front still view (web/viewer/namedViews.ts namedV
 lowest) with the bust's floor, vertical field of view 35 degrees), in app units (1 = 10 cm)
 mapped through the imported hair's own transform. Cycles on the CPU, SAMPLES samples, SIZE x SIZE.
 The export's strands are one hair wide (80 um at the root); with `represented` each is widened
-as the app draws it (web/viewer/strandMaterial.ts representedWidth: the 100,000 hairs of a head
+as the app draws it (web/viewer/strandWidth.ts representedWidth: the 100,000 hairs of a head
 shared among the strands, at most 1.2 mm), so the two show the same density.
 """
 

@@ -4,20 +4,20 @@
 import { describe, expect, it } from 'vitest';
 import { DEFAULT_HAIR_LOOK, hexToLinear } from '../../web/model/hairLook';
 import { colorAbsorption } from '../../web/model/melanin';
-import { decodeTipDistance } from '../../web/viewer/strandAttributes';
+import { decodeTipDistance, LOD_GROUPS } from '../../web/viewer/strandAttributes';
+import { buildStrandGeometry, buildStrandStripGeometry } from '../../web/viewer/strandGeometry';
 import {
-  buildStrandGeometry,
-  buildStrandStripGeometry,
   createStrandMaterial,
-  drawnStrands,
-  LOD_GROUPS,
-  representedWidth,
   setHairColor,
   setHairLook,
   setLightDirection,
+} from '../../web/viewer/strandMaterial';
+import {
+  drawnStrands,
+  representedWidth,
   strandWidthFactor,
   WIDTH_VARIATION,
-} from '../../web/viewer/strandMaterial';
+} from '../../web/viewer/strandWidth';
 
 describe('buildStrandGeometry', () => {
   // strand 0: 3 points along +x then +y; strand 1: a single point; strand 2: 2 points along −z

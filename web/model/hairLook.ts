@@ -3,7 +3,7 @@
 // strand's tip, so short and long strands of one style lighten over the same last centimetres), a
 // seeded per-strand spread of melanin and roughness, and the roughness itself. A session without
 // one (older sessions, or a colour picked in the colour box) shows its direct colour: the
-// absorption whose base colour it is (melanin.ts), varied per strand a little. Pure arithmetic: the strand shader (viewer/strandMaterial.ts) takes
+// absorption whose base colour it is (melanin.ts), varied per strand a little. Pure arithmetic: the strand shader (viewer/strandShaders.ts) takes
 // lookUniforms(), the exports strandLookColor() (linear RGB).
 import { absorptionColor, colorAbsorption, melaninAbsorption, type Rgb } from './melanin';
 

@@ -17,15 +17,10 @@ import { DeepOpacityMaps } from './deepOpacity';
 import { WeightedBlendedHair } from './hairOit';
 import { setHeadHairShadow } from './headMaterial';
 import type { LineAttributes } from './strandAttributes';
-import {
-  buildStrandGeometry,
-  buildStrandStripGeometry,
-  createStrandMaterial,
-  representedWidth,
-  type StrandMaterial,
-  setHairLook,
-} from './strandMaterial';
+import { buildStrandGeometry, buildStrandStripGeometry } from './strandGeometry';
+import { createStrandMaterial, type StrandMaterial, setHairLook } from './strandMaterial';
 import { updateStrandPositions } from './strandPositions';
+import { representedWidth } from './strandWidth';
 import type { Viewer } from './viewer';
 
 export type ActiveQuality = 'fast' | 'high';

@@ -1,5 +1,5 @@
 // The strands' vertex attributes, as typed arrays (no three.js: the solver worker builds them
-// for the final hair, the page for previews; strandMaterial.ts wraps them in a geometry).
+// for the final hair, the page for previews; strandGeometry.ts wraps them in a geometry).
 // Per point i of strand s (points strandStart[s] .. strandStart[s + 1] − 1):
 //   tangent[3i .. 3i+2]  unit tangent (central differences, one-sided at the ends), Int8 ÷ 127
 //   along[2i]            0 at the root … 255 at the tip (by point)
@@ -36,7 +36,7 @@ export function encodeTipDistance(d: number): number {
 }
 
 /** The distance (world units) a byte of encodeTipDistance stands for; the strand shader decodes
- *  the same way (strandMaterial.ts tipDistanceOf, from the byte ÷ 255). */
+ *  the same way (strandShaders.ts tipDistanceOf, from the byte ÷ 255). */
 export function decodeTipDistance(byte: number): number {
   return TIP_DISTANCE_RANGE * (byte / 255) ** 2;
 }

@@ -1,0 +1,298 @@
+// The strand shaders (method S6.1), GLSL for both geometries: GL lines shaded per vertex (the
+// Fast quality) and camera-facing strips expanded in the vertex shader and shaded per fragment
+// (High, with deep opacity maps: deepOpacity.ts). Shading: the hair BSDF of hairBsdf.ts for a key
+// light fixed in world space, its shadow the precomputed transmittance of the hair (the
+// `lighting` attribute) or, in High, the deep opacity maps; a fill light from behind and a sky
+// ambient on the base colour, both scaled by the occlusion; root darkening on top. Colour:
+// absorption σa (model/hairLook.ts) spread per strand by four seeded random bytes. The tips taper
+// and fade; strands are blended order-independently (hairOit.ts). The material that uses them:
+// strandMaterial.ts.
+import { HAIR_BSDF_GLSL } from './hairBsdf';
+import { OIT_FRAGMENT_GLSL } from './hairOit';
+import { TIP_DISTANCE_RANGE } from './strandAttributes';
+import { WIDTH_HASH, WIDTH_HASH_SCALE } from './strandWidth';
+
+const commonVertex = /* glsl */ `
+attribute vec3 tangent;
+attribute vec2 along; // x: 0 root … 1 tip (by point); y: distance from the tip, encoded
+attribute vec4 strandRandom;
+attribute vec2 lighting;
+varying vec3 vTangent;
+varying vec3 vWorldPosition;
+varying vec2 vAlong; // x: along.x; y: the distance from the tip, world units
+varying vec4 vRandom;
+varying vec2 vLight;
+varying float vCoverage;
+// the distance from the tip, world units, of along.y (strandAttributes.ts decodeTipDistance: the
+// byte's steps are finest near the tip)
+float tipDistanceOf(float encoded) {
+  return ${TIP_DISTANCE_RANGE.toFixed(1)} * encoded * encoded;
+}
+`;
+
+/** Where a strand's tip starts to taper and fade, and its width (both shaders of either
+ *  geometry). */
+const tips = /* glsl */ `
+uniform float lengthVariation; // ± shift of where the tip fade starts, per strand
+uniform float tipFade; // fraction of the strand over which the tip tapers and fades out
+uniform float widthVariation; // ± share of the width, per strand (WIDTH_VARIATION)
+// where a strand's tip starts (rnd: its random values; length appearance, ragged ends)
+float fadeStartOf(vec4 rnd) {
+  return clamp(1.0 - tipFade + lengthVariation * (2.0 * rnd.z - 1.0), 0.3, 0.98);
+}
+// the strand's width factor, 1 ± widthVariation (strandWidthFactor): a hash of its random values
+// other than the colour's (uniform over the strands: the mean width is unchanged)
+float widthOf(vec4 rnd) {
+  float h = fract(dot(rnd, vec4(${WIDTH_HASH.map((v) => v.toFixed(7)).join(', ')})) * ${WIDTH_HASH_SCALE.toFixed(2)});
+  return 1.0 + widthVariation * (2.0 * h - 1.0);
+}
+`;
+
+/** Uniforms, helpers and shadeStrand(): the shading, shared by the lines' vertex shader and
+ *  the strips' fragment shader. */
+const shading = /* glsl */ `
+uniform vec3 rootSigma; // absorption at the root (melanin.ts; from the colour for a direct colour)
+uniform vec3 tipSigma; // absorption at the tips (the lighter tips' colour)
+uniform vec3 greySigma; // absorption of a grey (unpigmented) strand
+// grey share, an older session's tip start along the strand (>= 1: none; else tipLength), melanin
+// and roughness variation
+uniform vec4 lookShares;
+uniform float tipLength; // the lighter tips' length from the tip, world units (0: none)
+uniform float roughness; // longitudinal roughness β of the hair BSDF
+uniform float bsdfGain; // the key light's radiance per unit of the BSDF
+uniform vec3 keyDirection; // world space, towards the light (fixed: not the camera's)
+uniform vec3 keyColor;
+uniform vec3 fillDirection;
+uniform vec3 fillColor;
+uniform vec3 ambientColor;
+uniform vec3 headCenter; // strand normals point away from it
+uniform float rootDarkening; // roots are darker by this fraction
+uniform float hueVariation; // ± red/blue balance per strand
+// the largest tilt of a strand's shading tangent towards its normal (about 8 degrees)
+const float HIGHLIGHT_TILT = 0.14;
+uniform float precomputed; // 1: use the precomputed lighting attribute; 0: ignore it (all lit)
+#ifdef DEEP_OPACITY
+uniform sampler2D domDepth;
+uniform sampler2D domOpacity;
+uniform mat4 domMatrix; // world -> the light's clip space
+uniform vec3 domLayers; // far ends of the 3 layers past the first hair, world units
+uniform float domRange; // world depth of the light camera's [0, 1]
+uniform float domKappa; // optical depth per unit of accumulated opacity
+uniform float domBias; // world units
+#endif
+${HAIR_BSDF_GLSL}
+${tips}
+
+#ifdef DEEP_OPACITY
+// Yuksel & Keyser 2008: the opacity accumulated between the first hair seen from the light and
+// this point, interpolated between the 3 layers' cumulative values.
+float deepOpacityTransmittance(vec3 world) {
+  vec4 p = domMatrix * vec4(world, 1.0);
+  vec3 q = p.xyz / p.w * 0.5 + 0.5;
+  if (q.x <= 0.0 || q.y <= 0.0 || q.x >= 1.0 || q.y >= 1.0) return 1.0;
+  float z0 = texture2D(domDepth, q.xy).r;
+  float d = (q.z - z0) * domRange - domBias;
+  if (d <= 0.0) return 1.0;
+  vec3 o = texture2D(domOpacity, q.xy).rgb;
+  float opacity;
+  if (d < domLayers.x) opacity = o.r * d / domLayers.x;
+  else if (d < domLayers.y) opacity = mix(o.r, o.g, (d - domLayers.x) / (domLayers.y - domLayers.x));
+  else if (d < domLayers.z) opacity = mix(o.g, o.b, (d - domLayers.y) / (domLayers.z - domLayers.y));
+  else opacity = o.b;
+  return exp(-domKappa * opacity);
+}
+#endif
+
+
+// The tip colour's share (hairLook.ts tipShare): fading in over tipLength from the strand's tip
+// (tipDistance, world units), or an older session's fraction of the strand (along: 0 root … 1
+// tip).
+float tipShare(float along, float tipDistance) {
+  if (lookShares.y < 0.999) return smoothstep(lookShares.y, 1.0, along);
+  return tipLength > 0.0 ? 1.0 - smoothstep(0.0, tipLength, tipDistance) : 0.0;
+}
+
+// The strand's absorption at \`along\` (x: 0 root … 1 tip; y: distance from the tip, world
+// units; rnd: its seeded random values): root → lighter tips, grey strands, a seeded spread of
+// melanin and a little of the red/blue balance.
+vec3 strandSigma(vec4 rnd, vec2 along) {
+  vec3 s = mix(rootSigma, tipSigma, tipShare(along.x, along.y));
+  float pick = fract(dot(rnd, vec4(0.7548777, 0.5698403, 0.3308946, 0.1234567)) * 97.31);
+  if (pick < lookShares.x) s = greySigma;
+  float hue = hueVariation * (2.0 * rnd.y - 1.0);
+  return s * (1.0 + lookShares.z * (2.0 * rnd.x - 1.0)) * vec3(1.0 - hue, 1.0, 1.0 + hue);
+}
+
+// The strand's colour at world point P with unit tangent T (root -> tip); along as strandSigma's.
+vec3 shadeStrand(vec3 T, vec3 P, vec2 along, vec4 rnd, vec2 light) {
+  vec3 V = normalize(cameraPosition - P);
+  vec3 radial = P - headCenter;
+  vec3 N = radial - T * dot(radial, T);
+  N = dot(N, N) > 1e-10 ? normalize(N) : V;
+  vec3 sigma = strandSigma(rnd, along);
+  // the shading tangent tilted towards N per strand and along it (shifted tangents, Scheuermann
+  // 2004): a head's hairs are not parallel (cuticle tilt, waves, strands crossing), so the key
+  // light's highlight breaks into strands instead of lying on the hair as one smooth band that
+  // rings a whorl (read as a cowlick) or outlines a fringe
+  float tilt = HIGHLIGHT_TILT * ((2.0 * fract(rnd.w * 13.71 + rnd.x * 3.17) - 1.0)
+    + 0.5 * sin(along.y * 25.0 + 6.2832 * rnd.z));
+  vec3 Ts = normalize(T + tilt * N);
+  float beta = roughness * (1.0 + lookShares.w * (2.0 * fract(rnd.w * 7.31) - 1.0));
+
+  float shadow = mix(1.0, light.x, precomputed);
+  float ao = mix(1.0, light.y, precomputed);
+#ifdef DEEP_OPACITY
+  // the deep opacity maps, per pixel, in place of the precomputed grid's (which blurs a strand
+  // over a cell: the two together count the hairs in front twice)
+  shadow = deepOpacityTransmittance(P);
+#endif
+  // root darkening: occlusion towards the scalp, on top of the hair's own occlusion
+  float rootAo = mix(1.0 - rootDarkening, 1.0, smoothstep(0.0, 0.3, along.x));
+  vec3 key = keyColor * bsdfGain * hairBsdf(Ts, keyDirection, V, sigma, beta, shadow);
+  // fill and sky: the base colour (what a head of this hair scatters back), occluded
+  vec3 base = hairBaseColor(sigma);
+  float TF = dot(T, fillDirection);
+  float fill = mix(0.3, 1.0, sqrt(max(0.0, 1.0 - TF * TF)));
+  float sky = 0.65 + 0.35 * N.y;
+  return rootAo * (key + ao * (fillColor * fill + ambientColor * sky) * base);
+}
+`;
+
+/** Lines shade per vertex (the strand is a 1-pixel line: the only interpolation is along
+ *  segments a few pixels long), so a fragment costs no more than a flat colour. */
+export const linesVertexShader = /* glsl */ `
+${commonVertex}
+${shading}
+uniform float strandWidth; // world units at the root (representedWidth)
+uniform float tipWidth; // fraction of strandWidth at the tip (the width tapers over the tip fade)
+uniform float viewportHeight; // pixels of the target being drawn
+varying vec3 vColor;
+varying float vFadeStart; // vCoverage: commonVertex's
+varying float vDistance; // from the camera (the order-independent pass's weight)
+void main() {
+  vec4 world = modelMatrix * vec4(position, 1.0);
+  vec3 T = normalize(mat3(modelMatrix) * tangent);
+  vAlong = vec2(along.x, tipDistanceOf(along.y));
+#ifdef HAIR_FRONT
+  vColor = vec3(0.0); // the front pass needs the distance only (hairOit.ts)
+#else
+  vColor = shadeStrand(T, world.xyz, vAlong, strandRandom, lighting);
+#endif
+  // a line is one pixel wide: its opacity is the strand's true coverage of that pixel (as the
+  // strips' width / drawn width), tapering to the tip
+  float dist = length(cameraPosition - world.xyz);
+  vDistance = dist;
+  float pixel = 2.0 * dist / (projectionMatrix[1][1] * max(viewportHeight, 1.0));
+  if (projectionMatrix[3][3] > 0.5) pixel = 2.0 / (projectionMatrix[1][1] * max(viewportHeight, 1.0));
+  float width = strandWidth * widthOf(strandRandom) * mix(1.0, tipWidth, smoothstep(fadeStartOf(strandRandom), 1.0, along.x));
+  vCoverage = min(1.0, width / pixel);
+  vFadeStart = fadeStartOf(strandRandom);
+  gl_Position = projectionMatrix * viewMatrix * world;
+}
+`;
+
+export const linesFragmentShader = /* glsl */ `
+varying vec3 vColor;
+varying vec2 vAlong;
+varying float vCoverage;
+varying float vFadeStart;
+varying float vDistance;
+#ifdef HAIR_OIT
+${OIT_FRAGMENT_GLSL}
+#endif
+void main() {
+  // coverage times the tip's fade, blended order-independently (HAIR_OIT: hairOit.ts) or
+  // unsorted, without depth writes
+  float alpha = vCoverage * (1.0 - smoothstep(vFadeStart, 1.0, vAlong.x));
+  if (alpha < 0.004) discard;
+#ifdef HAIR_OIT
+  oitWrite(vColor, alpha, vDistance);
+#else
+  gl_FragColor = vec4(vColor, alpha);
+  #include <tonemapping_fragment>
+  #include <colorspace_fragment>
+#endif
+}
+`;
+
+/** Strip expansion: vertex 2i and 2i + 1 are the two sides of point i (gl_VertexID parity). In
+ *  the deep-opacity passes (DOM_PASS) the strip faces the light instead of the camera. */
+export const stripsVertexShader = /* glsl */ `
+${commonVertex}
+${tips}
+uniform float strandWidth; // world units at the root
+uniform float tipWidth; // fraction of strandWidth at the tip (the width tapers over the tip fade)
+uniform float viewportHeight; // pixels of the target being drawn
+#ifdef DOM_PASS
+uniform vec3 domViewDirection; // towards the light
+uniform float domPixelSize; // world units per map texel
+#endif
+
+void main() {
+  vec4 world = modelMatrix * vec4(position, 1.0);
+  vec3 T = normalize(mat3(modelMatrix) * tangent);
+#ifdef DOM_PASS
+  vec3 V = domViewDirection;
+  float pixel = domPixelSize;
+#else
+  vec3 toEye = cameraPosition - world.xyz;
+  float dist = length(toEye);
+  vec3 V = toEye / max(dist, 1e-6);
+  // world size of a pixel at this distance (perspective: 2 d tan(fov / 2) / height)
+  float pixel = 2.0 * dist / (projectionMatrix[1][1] * max(viewportHeight, 1.0));
+  if (projectionMatrix[3][3] > 0.5) pixel = 2.0 / (projectionMatrix[1][1] * max(viewportHeight, 1.0));
+#endif
+  vec3 side = cross(T, V);
+  float sl = length(side);
+  side = sl > 1e-4 ? side / sl : normalize(cross(T, abs(T.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0)));
+  float width = strandWidth * widthOf(strandRandom) * mix(1.0, tipWidth, smoothstep(fadeStartOf(strandRandom), 1.0, along.x));
+  float drawn = max(width, pixel);
+  float s = (gl_VertexID % 2 == 0) ? -0.5 : 0.5;
+  world.xyz += side * (s * drawn);
+  vWorldPosition = world.xyz;
+  vTangent = T;
+  vAlong = vec2(along.x, tipDistanceOf(along.y)); // linear along a segment, as the distance is
+  vRandom = strandRandom;
+  vLight = lighting;
+  vCoverage = width / drawn;
+  gl_Position = projectionMatrix * viewMatrix * world;
+}
+`;
+
+/** Strips shade per fragment (wide strands on a GPU). HAIR_OIT: the order-independent pass's
+ *  two outputs instead of a colour (hairOit.ts). */
+export const stripsFragmentShader = /* glsl */ `
+${shading}
+varying vec3 vTangent;
+varying vec3 vWorldPosition;
+varying vec2 vAlong;
+varying vec4 vRandom;
+varying vec2 vLight;
+varying float vCoverage;
+#ifdef HAIR_OIT
+${OIT_FRAGMENT_GLSL}
+#endif
+
+void main() {
+  float alpha = vCoverage * (1.0 - smoothstep(fadeStartOf(vRandom), 1.0, vAlong.x));
+#ifdef ALPHA_TO_COVERAGE
+  if (alpha < 0.02) discard;
+#else
+  if (alpha < 0.004) discard;
+#endif
+#ifdef HAIR_FRONT
+  vec3 color = vec3(0.0); // the front pass needs the distance only (hairOit.ts)
+#else
+  vec3 color = shadeStrand(normalize(vTangent), vWorldPosition, vAlong, vRandom, vLight);
+#endif
+#ifdef HAIR_OIT
+  oitWrite(color, alpha, length(cameraPosition - vWorldPosition));
+#else
+  // without multisampling and without the order-independent pass: blended unsorted, no depth
+  // writes
+  gl_FragColor = vec4(color, alpha);
+  #include <tonemapping_fragment>
+  #include <colorspace_fragment>
+#endif
+}
+`;
