@@ -8,6 +8,7 @@
 // so a head point counts only what lies in front of it. The bust is not in the maps; the head's
 // opacity in front of it is its shadow from the head.
 import * as THREE from 'three';
+import { DOM_LAYERED_OPACITY_GLSL } from './deepOpacityGlsl';
 
 /** How much of the key light the hair's shadow takes away (1 = all of it). */
 export const HAIR_SHADOW_STRENGTH = 0.85;
@@ -41,6 +42,7 @@ uniform float hsHeadOpacity;
 uniform float hsTexel;
 uniform float hsTexelWorld;
 varying vec3 vHsWorld;
+${DOM_LAYERED_OPACITY_GLSL}
 float hairShadowAt(vec3 q) {
   if (q.x <= 0.0 || q.y <= 0.0 || q.x >= 1.0 || q.y >= 1.0) return 1.0;
   float z0 = texture2D(hsDepth, q.xy).r;
@@ -53,12 +55,7 @@ float hairShadowAt(vec3 q) {
   }
   d -= hsBias;
   if (d <= 0.0) return 1.0;
-  float opacity;
-  if (d < hsLayers.x) opacity = o.r * d / hsLayers.x;
-  else if (d < hsLayers.y) opacity = mix(o.r, o.g, (d - hsLayers.x) / (hsLayers.y - hsLayers.x));
-  else if (d < hsLayers.z) opacity = mix(o.g, o.b, (d - hsLayers.y) / (hsLayers.z - hsLayers.y));
-  else opacity = o.b;
-  return exp(-hsKappa * opacity);
+  return exp(-hsKappa * domLayeredOpacity(o, d, hsLayers));
 }
 // The penumbra grows with the distance behind the hair in front (the key light is a softbox
 // some degrees wide, tan of its half-angle HS_SOFTNESS; after "percentage-closer soft shadows",

@@ -7,6 +7,7 @@
 // absorption σa (model/hairLook.ts) spread per strand by four seeded random bytes. The tips taper
 // and fade; strands are blended order-independently (hairOit.ts). The material that uses them:
 // strandMaterial.ts.
+import { DOM_LAYERED_OPACITY_GLSL } from './deepOpacityGlsl';
 import { HAIR_BSDF_GLSL } from './hairBsdf';
 import { OIT_FRAGMENT_GLSL } from './hairOit';
 import { TIP_DISTANCE_RANGE } from './strandAttributes';
@@ -84,6 +85,7 @@ ${HAIR_BSDF_GLSL}
 ${tips}
 
 #ifdef DEEP_OPACITY
+${DOM_LAYERED_OPACITY_GLSL}
 // Yuksel & Keyser 2008: the opacity accumulated between the first hair seen from the light and
 // this point, interpolated between the 3 layers' cumulative values.
 float deepOpacityTransmittance(vec3 world) {
@@ -94,12 +96,7 @@ float deepOpacityTransmittance(vec3 world) {
   float d = (q.z - z0) * domRange - domBias;
   if (d <= 0.0) return 1.0;
   vec3 o = texture2D(domOpacity, q.xy).rgb;
-  float opacity;
-  if (d < domLayers.x) opacity = o.r * d / domLayers.x;
-  else if (d < domLayers.y) opacity = mix(o.r, o.g, (d - domLayers.x) / (domLayers.y - domLayers.x));
-  else if (d < domLayers.z) opacity = mix(o.g, o.b, (d - domLayers.y) / (domLayers.z - domLayers.y));
-  else opacity = o.b;
-  return exp(-domKappa * opacity);
+  return exp(-domKappa * domLayeredOpacity(o, d, domLayers));
 }
 #endif
 
