@@ -146,6 +146,16 @@ export function lookUniforms(look: HairLook | null, hairColor: string): LookUnif
   };
 }
 
+/** The hair's colour at its roots (linear RGB): the base colour of its root pigment, with its
+ *  grey share's; what the scalp under the hair shows (viewer/headMaterial.ts). */
+export function rootColor(look: HairLook | null, hairColor: string): Rgb {
+  const v = lookUniforms(look, hairColor);
+  const root = absorptionColor(v.rootSigma);
+  const grey = absorptionColor(v.greySigma);
+  const g = v.shares[0];
+  return [0, 1, 2].map((c) => root[c] + (grey[c] - root[c]) * g) as Rgb;
+}
+
 /** Linear RGB base colour of one strand at a point `along` it (0 root … 1 tip, by point) and
  *  `tipDistance` from its tip (world units, by arc length): u = its seeded random values in
  *  [0, 1) (u[0] grey pick, u[1] melanin spread), as the shader does it. */

@@ -10,12 +10,12 @@
 import * as THREE from 'three';
 import type { GrowthParams } from '../model/growthParams';
 import type { HairLightingArrays, StrandArrays } from '../model/hairArrays';
-import type { HairLook } from '../model/hairLook';
+import { type HairLook, rootColor } from '../model/hairLook';
 import { DEFAULT_HAIR_COLOR } from '../model/session';
 import { buildCardsObject } from './cardsView';
 import { DeepOpacityMaps } from './deepOpacity';
 import { WeightedBlendedHair } from './hairOit';
-import { setHeadHairShadow } from './headMaterial';
+import { setHeadHairShadow, setHeadHairUnder } from './headMaterial';
 import type { LineAttributes } from './strandAttributes';
 import { buildStrandGeometry, buildStrandStripGeometry } from './strandGeometry';
 import { createStrandMaterial, type StrandMaterial, setHairLook } from './strandMaterial';
@@ -78,6 +78,7 @@ export class HairView {
     this.current = { strands, lighting: lighting ?? null, attributes, final: headShadow };
     this.lightingMs = lighting ? lighting.ms : null;
     if (this.head && lighting && headShadow) setHeadHairShadow(this.head, lighting.head);
+    this.colourScalp();
     const hair = this.build();
     if (shown) {
       const off = this.viewer.onHairShown((h) => {
@@ -142,9 +143,23 @@ export class HairView {
     this.color = css;
     this.look = look;
     for (const m of [this.lines, this.strips]) if (m) setHairLook(m, look, css);
+    this.colourScalp();
     // the cards' colour is in their atlas
     if (this.cardsShown && this.current) this.viewer.setHair(this.build());
     this.viewer.invalidateFrameCache(); // a uniform: the cached hair layer cannot see it
+  }
+
+  /** The scalp's hairline band in the hair's root colour while there is hair to see (a strand
+   *  longer than its root), its own tint on a bald head (the drawing tools' cue; a session
+   *  with no curves grows each strand as its root alone). */
+  private colourScalp(): void {
+    if (!this.head) return;
+    const start = this.current?.strands.strandStart;
+    let seen = false;
+    if (start)
+      for (let s = 0; s + 1 < start.length && !seen; s++) seen = start[s + 1] - start[s] > 1;
+    const under = seen ? rootColor(this.look, this.color) : null;
+    if (setHeadHairUnder(this.head, under)) this.viewer.invalidateFrameCache();
   }
 
   private build(): THREE.Object3D {

@@ -3,7 +3,11 @@
 // an iris, and lips are reddened. The hair's shadow: a per-vertex `hairShadow` attribute
 // (transmittance through the hair towards the key light, from the worker's lighting precompute,
 // 1 = unshadowed) scales the key light (the scene's first directional light); High reads the
-// deep opacity maps instead (hairShadowReceiver.ts).
+// deep opacity maps instead (hairShadowReceiver.ts). While there is hair, a band of scalp along
+// its edge takes the hair's colour (setHeadHairUnder): it stands for the fine, short hairs of a
+// real hairline, too fine to grow as strands, so a hairline or an up-style's nape shows
+// hair-coloured skin between the strands, not pink skin between dark bristles. Farther in (the
+// crown, a parting) the scalp is skin, as it is between real hair.
 import * as THREE from 'three';
 import type { HeadMesh } from '../head/head';
 import { EYE_R, EYE_X, EYE_Y, EYE_Z, HeadPart } from '../head/headSdf';
@@ -92,6 +96,63 @@ function scalpCounts(head: HeadMeshArrays): { scalpCount: Uint16Array; triCount:
   return { scalpCount, triCount };
 }
 
+/** How much of the scalp's colour under hair a head takes where hair grows: the rest is the
+ *  skin's (scalp skin shows a little through the roots). */
+export const HAIR_UNDER_SHARE = 0.8;
+
+/** Over this distance in from the scalp's edge (world units, 1 cm) the colour under the hair
+ *  fades in: the hairline stays soft instead of a painted line. It holds to HAIR_UNDER_HOLD in
+ *  and is gone by HAIR_UNDER_OUT (3.5 cm): the band of a hairline's fine hairs. */
+export const HAIR_UNDER_FADE = 0.1;
+export const HAIR_UNDER_HOLD = 0.25;
+export const HAIR_UNDER_OUT = 0.35;
+
+/** Per vertex: how far the scalp's colour under hair holds there, 0 at and outside the scalp's
+ *  edge (a vertex with a triangle off the scalp, and eyes and lips) rising to 1 at HAIR_UNDER_FADE
+ *  in from it, falling to 0 again from HAIR_UNDER_HOLD to HAIR_UNDER_OUT (smoothsteps of the
+ *  distance along the mesh's edges). */
+function scalpShares(head: HeadMeshArrays, out?: Float32Array): Float32Array {
+  const { scalpCount, triCount } = scalpCounts(head);
+  const { positions: P, indices: I } = head;
+  const n = P.length / 3;
+  const f = out && out.length === n ? out : new Float32Array(n);
+  const d = new Float32Array(n);
+  for (let v = 0; v < n; v++) {
+    const skin = !head.parts || head.parts[v] === HeadPart.skin;
+    d[v] = skin && triCount[v] > 0 && scalpCount[v] === triCount[v] ? Infinity : 0;
+  }
+  // relaxation over the triangles' edges until nothing within the fade changes
+  for (let pass = 0, changed = true; changed && pass < 64; pass++) {
+    changed = false;
+    for (let t = 0; t < I.length; t += 3)
+      for (let k = 0; k < 3; k++) {
+        const a = I[t + k];
+        const b = I[t + ((k + 1) % 3)];
+        const e = Math.hypot(
+          P[3 * a] - P[3 * b],
+          P[3 * a + 1] - P[3 * b + 1],
+          P[3 * a + 2] - P[3 * b + 2],
+        );
+        if (d[a] + e < d[b] && d[a] + e < HAIR_UNDER_OUT) {
+          d[b] = d[a] + e;
+          changed = true;
+        } else if (d[b] + e < d[a] && d[b] + e < HAIR_UNDER_OUT) {
+          d[a] = d[b] + e;
+          changed = true;
+        }
+      }
+  }
+  const smooth = (x: number) => {
+    const c = Math.min(1, Math.max(0, x));
+    return c * c * (3 - 2 * c);
+  };
+  for (let v = 0; v < n; v++)
+    f[v] =
+      smooth(d[v] / HAIR_UNDER_FADE) *
+      (1 - smooth((d[v] - HAIR_UNDER_HOLD) / (HAIR_UNDER_OUT - HAIR_UNDER_HOLD)));
+  return f;
+}
+
 /** Indexed geometry with `position`, `normal` and `color` (linear RGB, headVertexColors). */
 export function createHeadGeometry(
   head: HeadMeshArrays,
@@ -108,6 +169,7 @@ export function createHeadGeometry(
     'hairShadow',
     new THREE.BufferAttribute(new Float32Array(vertices).fill(1), 1),
   );
+  geometry.setAttribute('scalpShare', new THREE.BufferAttribute(scalpShares(head), 1));
   if (head.normals) geometry.setAttribute('normal', new THREE.BufferAttribute(head.normals, 3));
   else geometry.computeVertexNormals();
   geometry.computeBoundingBox();
@@ -123,17 +185,30 @@ export function createHeadMaterial(): THREE.MeshStandardMaterial {
     metalness: 0,
   });
   material.name = 'HeadSkin';
+  // the scalp's colour under hair (linear RGB) and how much of it shows (0: no hair)
+  const hairUnder = { value: new THREE.Vector4(0, 0, 0, 0) };
+  material.userData.hairUnder = hairUnder;
   material.onBeforeCompile = (shader) => {
+    shader.uniforms.hairUnder = hairUnder;
     shader.vertexShader = shader.vertexShader
       .replace(
         '#include <common>',
-        '#include <common>\nattribute float hairShadow;\nvarying float vHairShadow;',
+        '#include <common>\nattribute float hairShadow;\nvarying float vHairShadow;\n' +
+          'attribute float scalpShare;\nvarying float vScalpShare;',
       )
-      .replace('#include <begin_vertex>', '#include <begin_vertex>\nvHairShadow = hairShadow;');
-    shader.fragmentShader = shader.fragmentShader.replace(
-      '#include <common>',
-      '#include <common>\nvarying float vHairShadow;',
-    );
+      .replace(
+        '#include <begin_vertex>',
+        '#include <begin_vertex>\nvHairShadow = hairShadow;\nvScalpShare = scalpShare;',
+      );
+    shader.fragmentShader = shader.fragmentShader
+      .replace(
+        '#include <common>',
+        '#include <common>\nvarying float vHairShadow;\nvarying float vScalpShare;\nuniform vec4 hairUnder;',
+      )
+      .replace(
+        '#include <color_fragment>',
+        '#include <color_fragment>\ndiffuseColor.rgb = mix(diffuseColor.rgb, hairUnder.rgb, hairUnder.a * vScalpShare);',
+      );
     // the key light is the scene's first directional light (viewer.ts adds it first)
     patchHairShadowReceiver(shader, { perVertex: 'vHairShadow', inMap: true });
   };
@@ -147,6 +222,25 @@ export function setHeadHairShadow(mesh: THREE.Mesh, transmittance: Float32Array)
   if (!a || a.count !== transmittance.length) return;
   (a.array as Float32Array).set(transmittance);
   a.needsUpdate = true;
+}
+
+/** The scalp under the hair takes `colour` (linear RGB, the hair's colour at its roots), or its
+ *  own tint again (null: no hair). Returns whether anything changed (the frame cache's head layer
+ *  must be drawn again). */
+export function setHeadHairUnder(
+  mesh: THREE.Mesh,
+  colour: readonly [number, number, number] | null,
+): boolean {
+  const u = (mesh.material as THREE.Material).userData.hairUnder as
+    | { value: THREE.Vector4 }
+    | undefined;
+  if (!u) return false;
+  const v = colour
+    ? new THREE.Vector4(colour[0], colour[1], colour[2], HAIR_UNDER_SHARE)
+    : new THREE.Vector4(0, 0, 0, 0);
+  if (u.value.equals(v)) return false;
+  u.value.copy(v);
+  return true;
 }
 
 /** The head as a ready-to-add mesh (geometry views the head's arrays, not copied). */
@@ -170,6 +264,11 @@ export function recolorHeadScalp(mesh: THREE.Mesh, head: HeadMeshArrays): void {
   if (!a) return;
   headVertexColors(head, DEFAULT_HEAD_COLORS, a.array as Float32Array);
   a.needsUpdate = true;
+  const f = mesh.geometry.getAttribute('scalpShare') as THREE.BufferAttribute | undefined;
+  if (f) {
+    scalpShares(head, f.array as Float32Array);
+    f.needsUpdate = true;
+  }
   delete mesh.geometry.userData.scalpCounts;
 }
 
@@ -189,6 +288,7 @@ export function paintHeadTriangles(
   g.userData.scalpCounts ??= scalpCounts(head);
   const { scalpCount, triCount } = g.userData.scalpCounts as ReturnType<typeof scalpCounts>;
   const rgb = a.array as Float32Array;
+  const share = g.getAttribute('scalpShare') as THREE.BufferAttribute | undefined;
   const skin = new THREE.Color(colors.skin);
   const scalpColor = new THREE.Color(colors.scalp);
   const c = new THREE.Color();
@@ -201,12 +301,19 @@ export function paintHeadTriangles(
       const v = head.indices[3 * t + k];
       scalpCount[v] += value ? 1 : -1;
       if (head.parts && head.parts[v] !== HeadPart.skin) continue;
-      c.copy(skin).lerp(scalpColor, triCount[v] ? scalpCount[v] / triCount[v] : 0);
+      const f = triCount[v] ? scalpCount[v] / triCount[v] : 0;
+      // the colour under hair, until the stroke's end recolours the scalp (recolorHeadScalp):
+      // on where all of the vertex's triangles are scalp, off elsewhere
+      if (share) (share.array as Float32Array)[v] = f === 1 ? 1 : 0;
+      c.copy(skin).lerp(scalpColor, f);
       rgb[3 * v] = c.r;
       rgb[3 * v + 1] = c.g;
       rgb[3 * v + 2] = c.b;
     }
   }
-  if (changed) a.needsUpdate = true;
+  if (changed) {
+    a.needsUpdate = true;
+    if (share) share.needsUpdate = true;
+  }
   return changed;
 }
