@@ -258,11 +258,12 @@ struct GrowRange {
       // hair that hangs beside strokes drawn down to a hem, and that no stroke governs (its
       // hair ends where the stroke does), stops there
       float hem = -std::numeric_limits<float>::infinity();
-      if (reach && shape && s.inside(x, y, z) &&
+      if (reach && shape && !reach->strokes.empty() && s.inside(x, y, z) &&
           interpolateScalar(reach->grid, reach->governed.data(), x, y, z) < kHemGoverned) {
         const float at[3] = {x, y, z};
-        hem = hemAround(reach->strokes, at) +
-              kHemBand * rootNoise(std::abs(x - shaped.centre[0]) + kHemNoiseShift, y, z);
+        hem = hemAround(reach->strokes, at);
+        if (std::isfinite(hem))  // the band's noise only where there is a hem
+          hem += kHemBand * rootNoise(std::abs(x - shaped.centre[0]) + kHemNoiseShift, y, z);
       }
       bool laying = shape && head, hanging = false, overEar = false;
       // short hair hugs the head (kHugLength, each strand's threshold seeded by where its root
