@@ -331,7 +331,7 @@ float hemAround(const std::vector<StrokeLength>& strokes, const float p[3]) {
   double sw = 0, swHem = 0, swy = 0;
   eachLengthStroke(strokes, p, [&](const StrokeLength& c, double w) {
     sw += w;
-    if (!c.growsOn && !c.combs && c.endY < c.y - kHemDrop) {
+    if (setsHem(c)) {
       const double across = std::hypot(double(c.endX - p[0]), double(c.endZ - p[2]));
       const double h = w * (1 - smoothstep(kHemNear, kHemFar, across));
       swHem += h;

@@ -266,6 +266,10 @@ float lengthAround(const std::vector<StrokeLength>& strokes, const float p[3], f
 constexpr float kHemDrop = 1.5f, kHemNear = 0.8f, kHemFar = 1.4f, kHemShareFrom = 0.4f,
                 kHemShareTo = 0.8f, kHemFade = 3.f;
 float hemAround(const std::vector<StrokeLength>& strokes, const float p[3]);
+// A stroke that sets a hem: it ends its hair off the head, kHemDrop or more below its start.
+inline bool setsHem(const StrokeLength& c) {
+  return !c.growsOn && !c.combs && c.endY < c.y - kHemDrop;
+}
 
 // One curve's part of the reach: the lattice points within kReachFar of it, with the distance to
 // it, its remaining length there (L - s, s the arc length of the closest point on the polyline,

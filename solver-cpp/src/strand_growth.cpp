@@ -164,6 +164,7 @@ struct GrowRange {
   bool shape;                // the shape rules (hair_fall.hpp ShapeRules): their steps below
   ShapeGrowth shaped;
   const float* lengthCap;  // per root (null: none)
+  bool hems;               // with the shape rules, a stroke sets a hem (setsHem)
 
   // Slides the step from x to n (which ends within the margin of `mesh`) over the body
   // (BodyCollider): n and segLen become the slid step's end and length. prev: the strand's last
@@ -258,7 +259,7 @@ struct GrowRange {
       // hair that hangs beside strokes drawn down to a hem, and that no stroke governs (its
       // hair ends where the stroke does), stops there
       float hem = -std::numeric_limits<float>::infinity();
-      if (reach && shape && !reach->strokes.empty() && s.inside(x, y, z) &&
+      if (hems && s.inside(x, y, z) &&
           interpolateScalar(reach->grid, reach->governed.data(), x, y, z) < kHemGoverned) {
         const float at[3] = {x, y, z};
         hem = hemAround(reach->strokes, at);
@@ -486,7 +487,9 @@ Status growStrands(const Grid& g, const std::vector<float>& field,
                                    shape ? std::clamp(shape->volume, 0.f, 0.3f) : 0.f,
                                    {shape ? shape->centre[0] : 0.f, shape ? shape->centre[1] : 0.f,
                                     shape ? shape->centre[2] : 0.f}},
-                       lengthCap};
+                       lengthCap,
+                       shape && shape->on && reach && !reach->empty() &&
+                           std::any_of(reach->strokes.begin(), reach->strokes.end(), setsHem)};
   out.strandStart.resize(roots.size() + 1);
   const size_t n = roots.size();
   const int threads = parallel::threadCount();
