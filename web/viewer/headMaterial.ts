@@ -9,6 +9,7 @@
 // hair-coloured skin between the strands, not pink skin between dark bristles. Farther in (the
 // crown, a parting) the scalp is skin, as it is between real hair.
 import * as THREE from 'three';
+import { edgeDistance } from '../head/edgeDistance';
 import type { HeadMesh } from '../head/head';
 import { EYE_R, EYE_X, EYE_Y, EYE_Z, HeadPart } from '../head/headSdf';
 import { patchHairShadowReceiver } from './hairShadowReceiver';
@@ -110,38 +111,22 @@ export const HAIR_UNDER_OUT = 0.35;
 /** Per vertex: how far the scalp's colour under hair holds there, 0 at and outside the scalp's
  *  edge (a vertex with a triangle off the scalp, and eyes and lips) rising to 1 at HAIR_UNDER_FADE
  *  in from it, falling to 0 again from HAIR_UNDER_HOLD to HAIR_UNDER_OUT (smoothsteps of the
- *  distance along the mesh's edges). */
+ *  distance along the mesh's edges, web/head/edgeDistance.ts). */
 function scalpShares(head: HeadMeshArrays, out?: Float32Array): Float32Array {
   const { scalpCount, triCount } = scalpCounts(head);
-  const { positions: P, indices: I } = head;
-  const n = P.length / 3;
+  const n = head.positions.length / 3;
   const f = out && out.length === n ? out : new Float32Array(n);
-  const d = new Float32Array(n);
-  for (let v = 0; v < n; v++) {
-    const skin = !head.parts || head.parts[v] === HeadPart.skin;
-    d[v] = skin && triCount[v] > 0 && scalpCount[v] === triCount[v] ? Infinity : 0;
-  }
-  // relaxation over the triangles' edges until nothing within the fade changes
-  for (let pass = 0, changed = true; changed && pass < 64; pass++) {
-    changed = false;
-    for (let t = 0; t < I.length; t += 3)
-      for (let k = 0; k < 3; k++) {
-        const a = I[t + k];
-        const b = I[t + ((k + 1) % 3)];
-        const e = Math.hypot(
-          P[3 * a] - P[3 * b],
-          P[3 * a + 1] - P[3 * b + 1],
-          P[3 * a + 2] - P[3 * b + 2],
-        );
-        if (d[a] + e < d[b] && d[a] + e < HAIR_UNDER_OUT) {
-          d[b] = d[a] + e;
-          changed = true;
-        } else if (d[b] + e < d[a] && d[b] + e < HAIR_UNDER_OUT) {
-          d[a] = d[b] + e;
-          changed = true;
-        }
-      }
-  }
+  const d = edgeDistance(
+    head.positions,
+    head.indices,
+    (v) =>
+      !(
+        (!head.parts || head.parts[v] === HeadPart.skin) &&
+        triCount[v] > 0 &&
+        scalpCount[v] === triCount[v]
+      ),
+    HAIR_UNDER_OUT,
+  );
   const smooth = (x: number) => {
     const c = Math.min(1, Math.max(0, x));
     return c * c * (3 - 2 * c);
