@@ -110,3 +110,59 @@ test('a stroke that stays on the scalp combs the hair on past its end', async ({
   expect(below.length).toBeGreaterThan(10);
   expect(median).toBeGreaterThan(0.5);
 });
+
+test('a stroke that ends on the scalp just above the nape hairline ends its hair there', async ({
+  page,
+}) => {
+  // fresh eyes drew a pixie's nape from the back down to what looked like the neck; the stroke
+  // ended about 1 cm above the hairline (the scalp's finish carries it down the nape to y -0.62;
+  // θ 122 is at -0.56), so it combed on and the nape hair hung down the neck
+  await page.goto('/?preset=empty&strands=4000');
+  const s0 = await settled(page);
+  await page.keyboard.press('Shift+F');
+  await expect(page.getByTestId('view-label')).toContainText('back');
+  await page.evaluate(() => window.hairsketch.idle());
+  const [a, b] = await page.evaluate(() => [
+    window.hairsketch.scalpToScreen(25, 180),
+    window.hairsketch.scalpToScreen(122, 180),
+  ]);
+  if (!a || !b) throw new Error('scalp points not visible from the back');
+  await page.mouse.move(a.x, a.y);
+  await page.mouse.down();
+  for (let i = 1; i <= 24; i++)
+    await page.mouse.move(a.x + ((b.x - a.x) * i) / 24, a.y + ((b.y - a.y) * i) / 24);
+  await page.mouse.up();
+  const s1 = await settled(page, s0.revision);
+  expect(s1.curves).toBe(1);
+  expect(s1.text).not.toContain('combing on');
+  const curve = (
+    (await page.evaluate(() => window.hairsketch.session())) as {
+      curves: { extend: boolean; points: [number, number, number][] }[];
+    }
+  ).curves[0];
+  expect(curve.extend).toBe(false);
+  // the hair rooted by the stroke's lower half ends about where the stroke ends, not down the neck
+  const end = curve.points[curve.points.length - 1];
+  const low = curve.points[Math.floor((3 * curve.points.length) / 4)];
+  const below = await page.evaluate(
+    ([m, e]) => {
+      const h = window.hairsketch.strands();
+      if (!h) return [];
+      const out: number[] = [];
+      for (let k = 0; k + 1 < h.strandStart.length; k++) {
+        const r = 3 * h.strandStart[k];
+        const t = 3 * (h.strandStart[k + 1] - 1);
+        const d = Math.hypot(h.points[r] - m[0], h.points[r + 1] - m[1], h.points[r + 2] - m[2]);
+        if (d < 0.2) out.push(e[1] - h.points[t + 1]);
+      }
+      return out.sort((x, y) => x - y);
+    },
+    [low, end],
+  );
+  const p90 = below[Math.floor(0.9 * (below.length - 1))];
+  console.log(
+    `${below.length} strands rooted by the stroke's lower half: p90 tip ${(p90 * 10).toFixed(1)} cm below its end`,
+  );
+  expect(below.length).toBeGreaterThan(10);
+  expect(p90).toBeLessThan(0.15);
+});

@@ -11,7 +11,7 @@ import { defaultParams, type PlainTieKind } from '../model/curveParams';
 import { STROKE_KINDS } from '../model/kinds';
 import { type MirrorPlane, snapToPlane, X_PLANE } from '../model/mirror';
 import { newCurveExtends, streamExtends, tieAtEnd } from '../model/session';
-import { distance, type Vec3 } from '../model/vec3';
+import { distance, sub, type Vec3 } from '../model/vec3';
 import { BunTool } from '../tools/bunTool';
 import type { StrokeSample } from '../tools/depthRule';
 import { DividingCurveTool } from '../tools/dividingCurveTool';
@@ -72,6 +72,19 @@ export interface ToolSet {
 
 // How near the scalp (world units: 5 mm) a stroke's last point must be to count as ending on it.
 const SCALP_END_REACH = 0.05;
+// A stroke that ends on the scalp this near its edge (world units: 2 cm from the face, an ear or
+// the neck) ends its hair there, as one that leaves the head does: fresh eyes drew a pixie's nape
+// down to what looked like the neck, ended 1 cm above the hairline (its points, a grid step
+// apart, stop up to a step short of the pointer: 1.3 cm at 25K), and the hair combed on down the
+// neck as a mullet.
+const HAIRLINE_END_BAND = 0.2;
+// A stroke drawn downward (its last segment at least 37° below level) that ends on the scalp
+// where the head faces sideways or down (the surface's normal under 12° above level: the back
+// below the crown, the sides) ends its hair there: hair hangs there anyway, and fresh eyes who
+// drew a pixie's nape over the hair from behind, stopping where the neck seemed to begin (3 cm
+// above the hairline the hair hid), got the nape hair combed on down the neck.
+const HANG_STROKE_Y = -0.6;
+const HANG_SURFACE_Y = 0.2;
 // How far off the scalp (world units: 2 cm) a stroke's press may land and still start on it.
 const START_REACH = 0.2;
 // How far past the head's outline (world units: 3 cm, about as far as hair stands off it) a
@@ -93,7 +106,8 @@ interface ToolKit {
   forward: () => Vec3;
   showDraft: (pts: readonly Vec3[] | null) => void;
   strokeExtends: (pts: readonly Vec3[]) => boolean;
-  /** Whether a stroke's last point lies on the scalp (within SCALP_END_REACH): it combs. */
+  /** Whether a stroke's last point lies on the scalp (within SCALP_END_REACH), inside its edge
+   *  (HAIRLINE_END_BAND): it combs. */
   endsOnScalp: (pts: readonly Vec3[]) => boolean;
 }
 
@@ -153,14 +167,20 @@ function toolKit(d: ToolDeps): ToolKit {
   };
   // with natural fall a new curve's hair ends where the stroke ends: the draft marks it
   // A stream stroke's hair grows on past its end when the session says so, when it ends at a
-  // tie, or when it ends on the scalp (a stroke that stays on the head combs the hair, one that
-  // leaves it says where the hair ends)
+  // tie, or when it ends on the scalp inside the hairline (a stroke that stays on the head combs
+  // the hair, one that leaves it, or ends at the hairline, says where the hair ends)
   const endsOnScalp = (pts: readonly Vec3[]) => {
     const end = pts[pts.length - 1];
     if (!end) return false;
     const h = d.head();
     const near = h.closest(end);
-    return near.distance < SCALP_END_REACH && h.mesh.scalp[near.triangle] === 1;
+    if (!(near.distance < SCALP_END_REACH && h.mesh.scalp[near.triangle] === 1)) return false;
+    const last = pts[pts.length - 2];
+    const along = last ? sub(end, last) : null;
+    const len = along ? Math.hypot(along[0], along[1], along[2]) : 0;
+    const hangs =
+      len > 0 && (along as Vec3)[1] / len < HANG_STROKE_Y && near.normal[1] < HANG_SURFACE_Y;
+    return !hangs && !h.nearScalpEdge(end, HAIRLINE_END_BAND);
   };
   const strokeExtends = (pts: readonly Vec3[]) =>
     streamExtends(editor.session, pts) || endsOnScalp(pts);

@@ -151,6 +151,19 @@ export class Head {
     return at && this.closest(at).point;
   }
 
+  /** Whether some triangle off the scalp (the face, an ear, the neck) lies within `within` of
+   *  `p` (world units): `p` is that near the scalp's edge, the hairline. */
+  nearScalpEdge(p: Vec3, within: number): boolean {
+    const { scalp } = this.mesh;
+    const at = new THREE.Vector3(...p);
+    const closest = new THREE.Vector3();
+    return this.bvh.shapecast({
+      intersectsBounds: (box) => box.distanceToPoint(at) < within,
+      intersectsTriangle: (tri, t) =>
+        scalp[t] !== 1 && tri.closestPointToPoint(at, closest).distanceTo(at) < within,
+    });
+  }
+
   /** The scalp point nearest the ray from `origin` along unit `dir`, within `within` of it
    *  (perpendicular distance, world units) and on a triangle facing the ray's origin or seen
    *  edge-on (a press just beside the scalp's outline), or null. */
