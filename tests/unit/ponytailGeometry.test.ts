@@ -71,6 +71,17 @@ describe('ponytail circles', () => {
     expect(ponytailCircles(spine, [], profileA, []).circles.length).toBe(0);
   });
 
+  it('start no nearer the root than `from` (the one-stroke band), wherever the profiles begin', () => {
+    // profiles from the scalp down: without `from` C1 would sit on the spine's root
+    const a = line(-0.3, 1, -0.2, -0.5);
+    const b = line(0.3, 1, 0.2, -0.5);
+    expect(ponytailCircles(spine, [], a, b, { every: 2 }).circles[0].spineIndex).toBe(0);
+    const g = ponytailCircles(spine, [], a, b, { every: 2, from: 3 });
+    // counted from the root every other point: 4 is the first at or past 3
+    expect(g.circles[0].spineIndex).toBe(4);
+    expect(g.circles.every((c) => c.spineIndex >= 3)).toBe(true);
+  });
+
   it('packs to the protocol block', () => {
     const g = ponytailCircles(spine, [], profileA, profileB);
     const p = curveParams({

@@ -38,6 +38,9 @@ export interface PonytailGeometry {
 
 export interface PonytailOptions {
   every?: number; // a circle at every `every`-th spine point (default 1)
+  /** No circle before this spine point (default 0): the band stays where the spine puts it
+   *  (ponytailFromSpine.ts bandIndex), however near the scalp the profiles begin. */
+  from?: number;
 }
 
 /** Unit tangents of a polyline (central differences; one-sided at the ends). */
@@ -85,6 +88,7 @@ export function ponytailCircles(
   const tangents = polylineTangents(spine);
   const circles: PonytailCircle[] = [];
   for (let i = 0; i < spine.length; i += every) {
+    if (i < (opts.from ?? 0)) continue;
     const t = tangents[i];
     if (length(t) === 0) continue;
     const a = planeCrossing(profileA, spine[i], t);

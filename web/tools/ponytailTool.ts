@@ -12,6 +12,8 @@
 // strokes are lifted onto the spine's supporting surface rebuilt from the view of the moment
 // (the 'strip' mode, which faces that view), with hintStroke.ts's depth rule off it. Each stroke
 // is its own state machine Idle -> Drawing -> Idle; `stage` says which stroke comes next.
+
+import { bandIndex } from '../model/ponytailFromSpine';
 import { type PonytailCircle, ponytailCircles } from '../model/ponytailGeometry';
 import { resamplePolyline } from '../model/resample';
 import { buildSupportingSurface, type SupportingSurface } from '../model/supportingSurface';
@@ -179,7 +181,10 @@ export class PonytailTool implements Tool {
         this.setStage('profileB');
         break;
       case 'profileB': {
-        const g = ponytailCircles(this.spine, this.cross, this.profileA, line, { every: 2 });
+        const g = ponytailCircles(this.spine, this.cross, this.profileA, line, {
+          every: 2,
+          from: bandIndex(this.spine),
+        });
         if (g.circles.length === 0) {
           this.ctx.notify(
             'The profiles do not run beside the spine on both sides: draw the two profiles again.',

@@ -4,7 +4,7 @@
 import { defaultParams } from '../curveParams';
 import { DIRECTION_SCALE as DIR, POSITION_SCALE as POS, toGridInt } from '../gridNumbers';
 import { readPolyline, writePolyline } from '../linkBytes';
-import { ponytailFromSpine } from '../ponytailFromSpine';
+import { bandIndex, ponytailFromSpine } from '../ponytailFromSpine';
 import { type PonytailCircle, ponytailCircles } from '../ponytailGeometry';
 import { fail } from '../readFailure';
 import {
@@ -74,10 +74,11 @@ export const PONYTAIL: StrokeKindDef<'ponytail'> = {
   surface: () => 'ruled',
   extends: true,
   tieNear: (c) => c.points.slice(0, 1),
-  // the circles follow the edited spine, between the profiles as drawn
+  // the circles follow the edited spine, between the profiles as drawn, from the band on
   respine(c, points) {
     const { circles } = ponytailCircles(points, c.crossSection, c.profiles[0], c.profiles[1], {
       every: 2,
+      from: bandIndex(points),
     });
     return circles.length === 0 ? null : { ...c, points, circles };
   },
