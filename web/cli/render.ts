@@ -103,13 +103,22 @@ function distDirectory(): string {
   return process.env.HAIRSKETCH_DIST ?? resolve(here, '../../dist');
 }
 
-/** Serves the built app and starts Chromium (CHROMIUM_PATH, default Debian's /usr/bin/chromium)
+/** Debian's Chromium without its UI (package chromium-headless-shell) where it is installed: the
+ *  same engine, and a still starts in 3.5 s instead of 4.4 s (the page load dominates a small
+ *  still's time); else the browser itself. */
+function defaultChromium(): string {
+  const shell = '/usr/lib/chromium/chromium-headless-shell';
+  return existsSync(shell) ? shell : '/usr/bin/chromium';
+}
+
+/** Serves the built app and starts Chromium (CHROMIUM_PATH, default Debian's headless shell or
+ *  /usr/bin/chromium, defaultChromium)
  *  with software WebGL, as the app's browser tests run it. */
 export async function openStillRenderer(): Promise<StillRenderer> {
   const dist = distDirectory();
   if (!existsSync(join(dist, 'embed.html')))
     throw new CliError(`render needs the built app (no ${dist}/embed.html): run npm run build`);
-  const executablePath = process.env.CHROMIUM_PATH ?? '/usr/bin/chromium';
+  const executablePath = process.env.CHROMIUM_PATH ?? defaultChromium();
   if (!existsSync(executablePath))
     throw new CliError(
       `render needs Chromium at ${executablePath} (apt-get install chromium, or set CHROMIUM_PATH)`,
