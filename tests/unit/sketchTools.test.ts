@@ -287,4 +287,20 @@ describe('PonytailTool', () => {
     expect(shaped).toHaveLength(0);
     expect(stages).toEqual(['cross', 'spine', 'cross']);
   });
+
+  it('an Undo that takes the ponytail away ends its shaping: the next stroke is a spine', () => {
+    const { tool, spines, shaped, stages } = ponytailTool(true);
+    drag(tool, line([0, 0], [0, -4]));
+    const made = { id: 'c1', type: 'ponytail', points: spines[0] };
+    // an edit that keeps it (another curve added) keeps the shaping
+    tool.sessionChanged([made, { id: 'c2', type: 'stream', points: [] }]);
+    expect(tool.stage).toBe('cross');
+    tool.sessionChanged([]); // Undo
+    expect(tool.stage).toBe('spine');
+    // a stroke near where the spine was is a new ponytail, not a cross-section
+    drag(tool, line([0, 0], [0, -4]));
+    expect(spines).toHaveLength(2);
+    expect(shaped).toHaveLength(0);
+    expect(stages).toEqual(['cross', 'spine', 'cross']);
+  });
 });
