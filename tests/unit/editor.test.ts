@@ -182,6 +182,20 @@ describe('editor commands, each undoable', () => {
     expect(e.run({ kind: 'setDetail', curveId: null, detail: { curl: { ...curl } } })).toBe(false);
   });
 
+  it('setDetail says which blocks are on: one set to 0 in the panel (Flyaway share 0) is not', () => {
+    const { e, log } = editorWithLog();
+    const flyaway = { share: 0.01, distance: 0.3, start: 0.5 };
+    const clump = { factor: 0.3, shape: 0, tipSpread: 0.02, guideDistance: 0.3 };
+    e.run({ kind: 'setDetail', curveId: null, detail: { clump, flyaway } });
+    expect(log.at(-1)?.message).toBe('Detail: clump, flyaway.');
+    e.run({
+      kind: 'setDetail',
+      curveId: null,
+      detail: { clump, flyaway: { ...flyaway, share: 0 } },
+    });
+    expect(log.at(-1)?.message).toBe('Detail: clump.');
+  });
+
   it('setCurlType: a coily type brings its root lift as the Volume in the same edit', () => {
     // emptySession has the shape rules and the default Volume (none stored): 4B sets its curl
     // (radius 2.2-3 mm, 8.5-10.5 turns per 10 cm) and Volume 2.5 cm, undone together

@@ -4,7 +4,7 @@
 
 import { detailForCurlType, rootLiftOf } from '../model/curlTypes';
 import { CURVE_PARAMS, type CurveParamSpec, defaultParams } from '../model/curveParams';
-import { detailIsOn, type HairDetail } from '../model/detail';
+import { blockIsOn, detailIsOn, type HairDetail } from '../model/detail';
 import type { GrowthParams } from '../model/growthParams';
 import { DEFAULT_BAND_COLOR, type HairLook } from '../model/hairLook';
 import { defOf } from '../model/kinds';
@@ -536,7 +536,8 @@ function applyExact(s: SessionState, cmd: Command): CommandResult {
 }
 
 function describeDetail(d: HairDetail): string {
-  const on = (['curl', 'clump', 'frizz', 'flyaway'] as const).filter((b) => d[b]);
+  // a block set to 0 in the Detail panel (Flyaway share 0) is off, though present
+  const on = (['curl', 'clump', 'frizz', 'flyaway'] as const).filter((b) => blockIsOn(d, b));
   if ((d.lengthJitter ?? 0) > 0) on.push('length jitter' as never);
   return on.length ? on.join(', ') : 'none';
 }

@@ -157,6 +157,13 @@ export function packDetailGroup(d: HairDetail | undefined, out: Float64Array, at
   out[k] = d?.lengthJitter ?? 0;
 }
 
+/** Whether block `b` is present and turned on: its first parameter (curl radius, clump factor,
+ *  frizz distance, flyaway share) above 0 (packDetailGroup writes 0 there for an absent block). */
+export function blockIsOn(d: HairDetail, b: DetailBlock): boolean {
+  const block = d[b] as Record<string, number> | undefined;
+  return !!block && block[DETAIL_PARAMS[b][0].key] > 0;
+}
+
 /** True when the detail changes any strand. */
 export function detailIsOn(d: HairDetail | undefined): boolean {
   return !!d && (!!d.curl || !!d.clump || !!d.frizz || !!d.flyaway || (d.lengthJitter ?? 0) > 0);
