@@ -119,6 +119,9 @@ struct SectionGather {
 // of the whole head's hair (a full head: kTieRadius, kTailRadius), world units. A bun's radius
 // also grows with the length of hair it coils (lengthAfterTie, world units).
 constexpr float kTieRadius = 0.12f;  // 1.2 cm: the whole head's hair held by a band
+// The widest a ponytail's drawn circles make its band (ties on): a one-stroke ponytail's width
+// (web/model/ponytailFromSpine.ts ONE_STROKE_RADIUS), 8 mm.
+constexpr float kBandDrawnRadius = 0.08f;
 constexpr float kTailRadius = 0.2f;  // 2 cm: the same hair hanging below it
 constexpr float kCombLift = 0.07f;   // 7 mm: the top layer of combed hair over the scalp
 // ties on: combed hair rises to its seat over kCombRise times the seat's height off the head

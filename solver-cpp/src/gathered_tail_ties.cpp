@@ -42,12 +42,19 @@ void sizeTie(GatheredTail& t, float share, float after) {
   } else if (t.shape == TailShape::Braid) {
     t.braid.width = std::max(t.braid.width, 3.0 * double(body));
   } else {
-    // full at the band, the body below it (tieTaper narrows the end when laid)
+    // full at the band, the body below it (tieTaper narrows the end when laid). The band holds
+    // what it gathers however wide the profiles were drawn there: a new user's profiles begin on
+    // the head, loosely, and widths of 2-3 cm at the band put half its seats inside the head (the
+    // hair rose over the head as a topknot and hung off the spine below); drawn widths past
+    // kBandDrawnRadius shape the tail from kTailBlend below the band on. A ponytail of one
+    // stroke (drawn 8 mm) is laid as before.
+    const float band = std::max(tie, kBandDrawnRadius);
     float arc = 0;
     for (size_t i = 0; i < t.spine.size(); ++i) {
       if (i > 0) arc += (t.spine[i] - t.spine[i - 1]).norm();
-      t.radius[i] =
-          std::max(t.radius[i], tie + (body - tie) * gathered_tail::smoothstepf(arc / kTailBlend));
+      const float f = gathered_tail::smoothstepf(arc / kTailBlend);
+      const float drawn = std::min(t.radius[i], band + (t.radius[i] - band) * f);
+      t.radius[i] = std::max(drawn, tie + (body - tie) * f);
     }
   }
 }
