@@ -87,6 +87,11 @@ struct GatheredTail {
   // head (the scalp point nearest C1's centre).
   bool section = false;
   Eigen::Vector3f anchor = Eigen::Vector3f::Zero();
+  // Where its stroke was pressed (the head point under the curve's first point): with `ties` on,
+  // a ponytail's or braid's section is the one pressed in, not the one its band lies over (fresh
+  // eyes pressed just in front of a half-up parting; the band, 1.2 cm along the stroke, lay
+  // behind it and the tie gathered the hair behind).
+  Eigen::Vector3f pressed = Eigen::Vector3f::Zero();
   // The session's `ties` (HairEngine::ties): lay the tie as "Ties from any hand" below
   // (gathered_tail_ties.cpp). Off: laid exactly as before (saved sessions keep their hair).
   bool ties = false;

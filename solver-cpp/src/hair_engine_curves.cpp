@@ -135,16 +135,24 @@ Status HairEngine::setCurves(const CurveSetView& curves) {
         line.emplace_back(float(curves.points[3 * k]), float(curves.points[3 * k + 1]),
                           float(curves.points[3 * k + 2]));
     }
-  // where each tie meets the head: the head point nearest its first circle's centre
-  for (GatheredTail& t : nextTails) {
-    Eigen::Vector3f x = t.shape == TailShape::Bun ? t.bunCentre : t.spine.front();
+  // where each tie meets the head: the head point nearest its first circle's centre; and where
+  // its stroke was pressed: the head point nearest the curve's first point
+  const auto onHead = [&](Eigen::Vector3f x) {
     if (headDistance_.built())
       for (int it = 0; it < 3; ++it) {
         float dir[3];
         const float d = headDistance_.outward(x.data(), dir);
         x -= d * Eigen::Vector3f(dir[0], dir[1], dir[2]);
       }
-    t.anchor = x;
+    return x;
+  };
+  for (size_t k = 0; k < nextTails.size(); ++k) {
+    GatheredTail& t = nextTails[k];
+    t.anchor = onHead(t.shape == TailShape::Bun ? t.bunCentre : t.spine.front());
+    const double* first = curves.points + 3 * curves.curveStart[nextTailCurves[k]];
+    t.pressed = t.shape == TailShape::Bun
+                    ? t.anchor
+                    : onHead(Eigen::Vector3f(float(first[0]), float(first[1]), float(first[2])));
   }
   // With the bust, a tail's spine stands off the body by its radius: a braid or round tail
   // drawn over a shoulder lies on it, round, rather than pressed flat into it afterwards.

@@ -141,7 +141,8 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
     if (bySection) {
       std::vector<int> tieSection(tails.size(), -1);
       for (size_t k = 0; k < tails.size(); ++k)
-        if (tails[k].section) tieSection[k] = sections.section(tails[k].anchor);
+        if (tails[k].section)
+          tieSection[k] = sections.section(ties_ ? tails[k].pressed : tails[k].anchor);
       sg.assigned.assign(n, -1);
       for (size_t st = 0; st < n; ++st) {
         const int here = strandSection_[st];

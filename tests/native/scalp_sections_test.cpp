@@ -68,10 +68,12 @@ struct Scene {
   }
   // A ponytail whose tie sits `off` out from the sphere in direction dir, hanging 2 units down;
   // small drawn circles (radius 0.05), so its thickness is the hair's.
-  void ponytail(const Vector3d& dir, bool section, double off = 0.08) {
+  // `pressed`: where the stroke began on the head (default: under the tie, along dir).
+  void ponytail(const Vector3d& dir, bool section, double off = 0.08,
+                const Vector3d& pressed = Vector3d::Zero()) {
     std::vector<Vector3d> spine;
     Vector3d p = dir.normalized() * (1 + off);
-    spine.push_back(dir.normalized() * 0.98);
+    spine.push_back((pressed.isZero() ? dir : pressed).normalized() * 0.98);
     for (int i = 0; i < 24; ++i) {
       spine.push_back(p);
       const Vector3d out = Vector3d(p.x(), 0, p.z()).normalized();
@@ -124,8 +126,9 @@ struct Scene {
     v.paramStart = paramStart.data();
     return v;
   }
-  // A coarse grid (the field does not place gathered hair), natural fall, sections on.
-  void run(HairEngine& e, uint32_t seed = 7, bool sections = true) const {
+  // A coarse grid (the field does not place gathered hair), natural fall, sections on (and the
+  // session's ties when `ties`).
+  void run(HairEngine& e, uint32_t seed = 7, bool sections = true, bool ties = false) const {
     Grid g;
     g.origin = Vector3d(-1.75, -3.25, -1.75);
     g.step = 0.25;
@@ -139,6 +142,7 @@ struct Scene {
     double settings[kEngineSettingCount] = {};
     settings[kSettingFall] = 1;
     settings[kSettingSections] = sections ? 1 : 0;
+    settings[kSettingTies] = ties ? 1 : 0;
     ASSERT_TRUE(e.setSettings(settings, kEngineSettingCount).ok());
     ASSERT_TRUE(e.setCurves(view()).ok());
     ASSERT_TRUE(e.solve().ok());
@@ -402,6 +406,30 @@ TEST(SectionTies, HalfUpGathersTheTopSectionAndLeavesTheRestLoose) {
   std::printf("[sections] half-up: top %.1f %%, rest %.1f %%\n", 100 * t, 100 * b);
   EXPECT_GE(t, 0.95);
   EXPECT_LT(b, 0.05);
+}
+
+TEST(SectionTies, WithTiesOnATieGathersTheSectionItsStrokeWasPressedIn) {
+  // the half-up parting (z = -0.35); the stroke pressed in front of it, on the top section
+  // (z -0.27), its band behind it (z -0.55): with ties on it gathers the top, as the hand meant;
+  // with ties off (sessions saved before) the section under its band, as before
+  const auto top = [](const Vector3d& r) { return r.z() > -0.32; };
+  const auto rest = [](const Vector3d& r) { return r.z() < -0.38; };
+  double shares[2][2];
+  for (int on = 0; on < 2; ++on) {
+    Scene sc;
+    sc.parting(partingInPlane(Vector3d::UnitZ(), -0.35));
+    sc.ponytail(Vector3d(0, 0.84, -0.55), true, 0.05, Vector3d(0, 0.96, -0.27));
+    HairEngine e;
+    sc.run(e, 7, true, on == 1);
+    shares[on][0] = share(e, 1, top);
+    shares[on][1] = share(e, 1, rest);
+    std::printf("[sections] pressed in front of the parting, ties %s: top %.1f %%, rest %.1f %%\n",
+                on ? "on" : "off", 100 * shares[on][0], 100 * shares[on][1]);
+  }
+  EXPECT_LT(shares[0][0], 0.05);  // ties off: the band's section, behind
+  EXPECT_GE(shares[0][1], 0.95);
+  EXPECT_GE(shares[1][0], 0.95);  // ties on: the pressed section, the top
+  EXPECT_LT(shares[1][1], 0.05);
 }
 
 TEST(SectionTies, TheTailHoldsItsHairAndTheCombedHairLiesOnTheScalp) {
