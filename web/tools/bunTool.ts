@@ -54,7 +54,11 @@ export class BunTool implements Tool {
     if (p.button !== 0) return false;
     const first = headPoint(this.ctx.sample(p.x, p.y));
     if (!first) {
-      this.ctx.notify('A bun is a loop drawn on the head: nothing was created.');
+      // fresh eyes began a loop on its far side, just past the head's outline, and could not
+      // tell which point was off the head
+      this.ctx.notify(
+        'A bun is a loop drawn on the head: this press is off it (beyond the outline). Start the loop inside the outline; nothing was created.',
+      );
       return true; // the press is still the tool's: it must not orbit the camera
     }
     this.stroke = { raw: [], points: [first], offHead: false };
@@ -72,7 +76,9 @@ export class BunTool implements Tool {
     this.update();
     this.end();
     if (k.offHead) {
-      this.ctx.notify("The bun's loop left the head: nothing was created.");
+      this.ctx.notify(
+        "The bun's loop left the head (it went past the outline): draw it a little further inside; nothing was created.",
+      );
       return;
     }
     const points = resamplePolyline(k.points, this.ctx.step());
