@@ -68,6 +68,40 @@ TEST(TieTails, ATailsRadiusGrowsWithTheSquareRootOfItsShare) {
   EXPECT_NEAR(whole * std::sqrt(2.f), kTailRadius, 0.25f * kTailRadius);
 }
 
+TEST(TieTails, DrawnCirclesWidenTheTailBelowTheBandNotTheBand) {
+  // a straight spine, 1 cm a point; the whole head (share 1): tie 1.2 cm, body 2 cm
+  const auto sized = [](float drawn) {
+    GatheredTail t;
+    t.shape = TailShape::Round;
+    t.ties = true;
+    for (int i = 0; i <= 10; ++i) t.spine.emplace_back(0.f, -0.1f * float(i), 0.f);
+    t.radius.assign(t.spine.size(), drawn);
+    sizeTie(t, 1.f, 3.f);
+    return t.radius;
+  };
+  const auto ss = [](float x) {
+    const float c = std::clamp(x, 0.f, 1.f);
+    return c * c * (3 - 2 * c);
+  };
+  const float tie = kTieRadius, body = kTailRadius;
+  // profiles 3 cm round the spine: the band is the tie's (not 3 cm), 3 cm from kTailBlend on
+  const std::vector<float> wide = sized(0.3f);
+  EXPECT_NEAR(wide[0], std::max(tie, kBandDrawnRadius), 1e-6f);
+  for (size_t i = 0; i < wide.size(); ++i) {
+    const float f = ss(0.1f * float(i) / kTailBlend);
+    const float band = std::max(tie, kBandDrawnRadius);
+    const float want = std::max(std::min(0.3f, band + (0.3f - band) * f), tie + (body - tie) * f);
+    EXPECT_NEAR(wide[i], want, 1e-6f) << i;
+  }
+  EXPECT_NEAR(wide.back(), 0.3f, 1e-6f);
+  // a one-stroke ponytail (8 mm drawn): as before, the larger of the drawn and the hair's
+  const std::vector<float> one = sized(0.08f);
+  for (size_t i = 0; i < one.size(); ++i)
+    EXPECT_NEAR(one[i], std::max(0.08f, tie + (body - tie) * ss(0.1f * float(i) / kTailBlend)),
+                1e-6f)
+        << i;
+}
+
 TEST(TieTails, ATieReachesItsSpinesEndWhateverMaxLength) {
   const Head h = backOfHead();
   const Eigen::Vector3f end = kBand - Eigen::Vector3f(0, 4.f, 0);
