@@ -666,8 +666,7 @@ EMSCRIPTEN_KEEPALIVE int32_t hs_sim_create(EngineHandle* h, const float* points,
   in.motion = SimMotion(motion);
   in.seed = uint32_t(seed);
   in.maxGuides = std::max(1, maxGuides);
-  in.settings.gravity = 98.1f;          // world units are 10 cm
-  in.settings.collisionMargin = 0.02f;  // 2 mm: the distance grids' zero is within a cell
+  // the simulation's physics are its settings' defaults (hair_sim.hpp SimSettings: world units)
   auto sim = std::make_unique<SimHandle>();
   sim->motion.init(in);
   *out = sim.release();

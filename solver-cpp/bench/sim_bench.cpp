@@ -1,7 +1,8 @@
 // One 24 Hz step of HairSim (SimSettings defaults: 2 substeps x 2 iterations) for 1,000 / 3,000 /
 // 10,000 guides of 32 points, single thread and with the thread pool: the median of 20 steps
-// with no head collider (the dynamics alone), then with a head (a sphere of radius 0.095 under
-// the roots, its distance grid at 0.003: about the app's head and cell relative to each other).
+// with no head collider (the dynamics alone), then with a head (a sphere of radius 0.95 under
+// the roots, its distance grid at 0.03: about the app's head and cell, in its world units of
+// 10 cm, so the settings' gravity and margin are the app's).
 // Usage: sim_bench [threads [fixed]]   (threads: default the hardware's thread count; fixed: the
 // pool's adaptive switch off, so the loops go to the threads even when they do not pay, as on a
 // loaded machine where the default runs them serially)
@@ -28,7 +29,7 @@ static std::vector<float> radialGroom(int strands, int n) {
     const float ox = float(std::sin(th) * std::cos(ph)), oy = float(std::cos(th)),
                 oz = float(std::sin(th) * std::sin(ph));
     for (int i = 0; i < n; ++i) {
-      const float r = 0.1f + 0.008f * i;
+      const float r = 1.f + 0.08f * i;
       p.insert(p.end(), {r * ox, r * oy, r * oz});
     }
   }
@@ -72,14 +73,14 @@ int main(int argc, char** argv) {
   if (argc > 2 && std::string(argv[2]) == "fixed") parallel::setAdaptive(false);
   std::vector<float> hv;
   std::vector<uint32_t> ht;
-  sphere(0.095f, hv, ht);
+  sphere(0.95f, hv, ht);
   HeadMeshView mesh;
   mesh.positions = hv.data();
   mesh.vertexCount = hv.size() / 3;
   mesh.indices = ht.data();
   mesh.triangleCount = ht.size() / 3;
   HeadDistance head;
-  if (!head.build(mesh, 0.003, 3).ok()) return 1;
+  if (!head.build(mesh, 0.03, 3).ok()) return 1;
   for (int threads : {1, hw}) {
     parallel::setThreadCount(threads);
     for (int guides : {1000, 3000, 10000}) {

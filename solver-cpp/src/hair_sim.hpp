@@ -49,7 +49,8 @@ struct SimSettings {
   int substeps = 2;
   int iterations = 2;  // stiffnesses below set so 2 sweeps pull as far as 3 at 0.2 / 0.5 did
   double frameRate = 24;
-  float gravity = 9.81f;          // m/s^2 along -y
+  // Lengths are the app's world units (1 unit = 10 cm): 9.81 m/s^2 is 98.1 units/s^2.
+  float gravity = 98.1f;          // world units/s^2 along -y
   float damping = 0.02f;          // velocity lost per substep
   float shapeStiffness = 0.285f;  // global shape pull at the root, per iteration
   // The pull never fades below this fraction of shapeStiffness (at the tips): with gravity
@@ -58,7 +59,9 @@ struct SimSettings {
   float shapeFloor = 0.035f;
   float bendStiffness = 0.65f;
   float windDrag = 0.5f;  // per second, toward the wind velocity
-  float collisionMargin = 0.0f;
+  // Points are kept this far outside the head and the body (2 mm: the distance grids' zero is
+  // within a cell of the surface).
+  float collisionMargin = 0.02f;
 };
 
 class HairSim {

@@ -15,6 +15,11 @@
 namespace hairsketch {
 namespace {
 
+// The app's world units (10 cm): lengths below are written in metres times kU, so the head is the
+// size of the app's and the simulation runs with its own defaults (gravity and collision margin
+// in world units), as users' hair does.
+constexpr float kU = 10.f;
+
 // A UV sphere of radius r at the origin.
 void simSphere(float r, std::vector<float>& v, std::vector<uint32_t>& t) {
   const int nu = 32, nv = 16;
@@ -37,12 +42,13 @@ std::vector<float> simGroom(int strands, int n) {
   std::vector<float> p;
   for (int s = 0; s < strands; ++s) {
     const double ph = 2 * M_PI * s / strands, th = 0.3 + 0.9 * (s % 7) / 7.0;
-    Eigen::Vector3f q(float(0.1 * std::sin(th) * std::cos(ph)), float(0.1 * std::cos(th)),
-                      float(0.1 * std::sin(th) * std::sin(ph)));
+    const float r = 0.1f * kU;
+    Eigen::Vector3f q(float(r * std::sin(th) * std::cos(ph)), float(r * std::cos(th)),
+                      float(r * std::sin(th) * std::sin(ph)));
     Eigen::Vector3f out = q.normalized();
     for (int i = 0; i < n; ++i) {
       p.insert(p.end(), {q.x(), q.y(), q.z()});
-      q += 0.005f * out;
+      q += 0.005f * kU * out;
     }
   }
   return p;
@@ -53,13 +59,13 @@ struct SimHead {
   std::vector<uint32_t> t;
   HeadDistance head;
   SimHead() {
-    simSphere(0.1f, v, t);
+    simSphere(0.1f * kU, v, t);
     HeadMeshView mesh;
     mesh.positions = v.data();
     mesh.vertexCount = v.size() / 3;
     mesh.indices = t.data();
     mesh.triangleCount = t.size() / 3;
-    EXPECT_TRUE(head.build(mesh, 0.005, 4).ok());
+    EXPECT_TRUE(head.build(mesh, 0.005 * kU, 4).ok());
   }
 };
 
@@ -84,7 +90,7 @@ TEST(HairSim, KeepsLengthsAndStaysOutOfTheHeadInEachMotion) {
   const std::vector<float> g = simGroom(strands, n);
   for (SimMotion m : {SimMotion::Settle, SimMotion::HeadTurn, SimMotion::Nod, SimMotion::Wind}) {
     HairSim sim;
-    sim.init(g.data(), strands, n, &f.head, Eigen::Vector3f(0, -0.1f, 0), m, 7);
+    sim.init(g.data(), strands, n, &f.head, Eigen::Vector3f(0, -0.1f * kU, 0), m, 7);
     for (int k = 0; k < 48; ++k) {
       sim.step();
       EXPECT_LE(simMaxLengthError(sim), 0.03f) << int(m) << " frame " << k;
@@ -96,7 +102,7 @@ TEST(HairSim, KeepsLengthsAndStaysOutOfTheHeadInEachMotion) {
                                 (Eigen::Vector3f(x[i], x[i + 1], x[i + 2]) - pose.translation);
         deepest = std::min(deepest, f.head.distance(local.x(), local.y(), local.z()));
       }
-      EXPECT_GE(deepest, -0.001f) << int(m) << " frame " << k;
+      EXPECT_GE(deepest, -0.001f * kU) << int(m) << " frame " << k;
     }
   }
 }
@@ -106,14 +112,14 @@ TEST(HairSim, SettleHoldsTheGroom) {
   const int strands = 60, n = 32;
   const std::vector<float> g = simGroom(strands, n);
   HairSim sim;
-  sim.init(g.data(), strands, n, &f.head, Eigen::Vector3f(0, -0.1f, 0), SimMotion::Settle, 1);
+  sim.init(g.data(), strands, n, &f.head, Eigen::Vector3f(0, -0.1f * kU, 0), SimMotion::Settle, 1);
   for (int k = 0; k < 120; ++k) sim.step();  // 5 s at 24 Hz
   std::vector<float> drift;
   for (size_t i = 0; i < g.size(); i += 3)
     drift.push_back(std::hypot(sim.positions()[i] - g[i], sim.positions()[i + 1] - g[i + 1],
                                sim.positions()[i + 2] - g[i + 2]));
   std::nth_element(drift.begin(), drift.begin() + drift.size() / 2, drift.end());
-  EXPECT_LE(drift[drift.size() / 2], 0.001f);
+  EXPECT_LE(drift[drift.size() / 2], 0.001f * kU);
 }
 
 TEST(HairSim, SameSeedSameFrames) {
@@ -143,7 +149,7 @@ TEST(HairSim, StrandsMoveAloneWhateverTheirPackOrThread) {
     parallel::setThreadCount(threads);
     parallel::setAdaptive(false);  // every loop of more than one chunk goes to the workers
     HairSim sim;
-    sim.init(points, count, n, &f.head, Eigen::Vector3f(0, -0.1f, 0), SimMotion::HeadTurn, 3);
+    sim.init(points, count, n, &f.head, Eigen::Vector3f(0, -0.1f * kU, 0), SimMotion::HeadTurn, 3);
     const unsigned long long loops = parallel::dispatchedLoops();
     for (int k = 0; k < 24; ++k) sim.step();
     if (threads > 1) EXPECT_EQ(parallel::dispatchedLoops() - loops, 24u);
@@ -181,7 +187,7 @@ TEST(HairSim, FollowersRideTheirGuides) {
   EXPECT_EQ(out, g);
   for (int k = 0; k < 6; ++k) sim.step();
   followers.update(sim, out.data());
-  for (size_t i = 0; i < out.size(); ++i) EXPECT_NEAR(out[i], sim.positions()[i], 1e-6f);
+  for (size_t i = 0; i < out.size(); ++i) EXPECT_NEAR(out[i], sim.positions()[i], 1e-6f * kU);
 }
 
 // The groom as the engine lays it: strands of varying point counts (strandStart).
@@ -213,7 +219,7 @@ MotionInput simMotionInput(const VarGroom& v, const HeadDistance* head, const He
   in.tailCurves = v.tails.data();
   in.head = head;
   in.body = body;
-  in.pivot = Eigen::Vector3f(0, -0.1f, 0);
+  in.pivot = Eigen::Vector3f(0, -0.1f * kU, 0);
   in.motion = m;
   in.seed = 3;
   in.maxGuides = 40;
@@ -225,15 +231,15 @@ TEST(HairSimMotion, FollowersStayOutsideHeadAndBodyAndTiesStayGathered) {
   // The body: a sphere below and behind the head, where the strands reach.
   std::vector<float> bv;
   std::vector<uint32_t> bt;
-  simSphere(0.08f, bv, bt);
-  for (size_t i = 0; i < bv.size(); i += 3) bv[i + 1] -= 0.15f;
+  simSphere(0.08f * kU, bv, bt);
+  for (size_t i = 0; i < bv.size(); i += 3) bv[i + 1] -= 0.15f * kU;
   HeadDistance body;
   HeadMeshView mesh;
   mesh.positions = bv.data();
   mesh.vertexCount = bv.size() / 3;
   mesh.indices = bt.data();
   mesh.triangleCount = bt.size() / 3;
-  ASSERT_TRUE(body.build(mesh, 0.005, 4).ok());
+  ASSERT_TRUE(body.build(mesh, 0.005 * kU, 4).ok());
   const VarGroom v = simVarGroom(300);
   for (SimMotion m : {SimMotion::Settle, SimMotion::HeadTurn, SimMotion::Nod, SimMotion::Wind}) {
     StrandMotion motion;
@@ -247,8 +253,8 @@ TEST(HairSimMotion, FollowersStayOutsideHeadAndBodyAndTiesStayGathered) {
     for (size_t i = 0; i < x.size(); i += 3) {
       Eigen::Vector3f local = pose.rotation.transpose() *
                               (Eigen::Vector3f(x[i], x[i + 1], x[i + 2]) - pose.translation);
-      inside += f.head.distance(local.x(), local.y(), local.z()) < -0.001f ||
-                body.distance(local.x(), local.y(), local.z()) < -0.001f;
+      inside += f.head.distance(local.x(), local.y(), local.z()) < -0.001f * kU ||
+                body.distance(local.x(), local.y(), local.z()) < -0.001f * kU;
     }
     EXPECT_EQ(inside, 0) << int(m);
     // a tie's strands (tail 0) move as one: their tips' displacements spread less than the same
@@ -288,15 +294,16 @@ TEST(HairSimMotion, FollowersStayOutsideHeadAndBodyAndTiesStayGathered) {
 TEST(HairSimMotion, FollowerPointPushedOutStaysOutAfterItsLengthIsRestored) {
   SimHead f;
   const HeadPose pose;
-  const Eigen::Vector3f prev(0, 0.11f, 0);
-  for (float length : {0.005f, 0.01f, 0.03f, 0.05f}) {
-    const Eigen::Vector3f q = placeFollowerPoint(Eigen::Vector3f(0.003f, 0.095f, 0.0f), &prev,
-                                                 length, pose, &f.head, nullptr, 0.002f);
-    EXPECT_GE(f.head.distance(q.x(), q.y(), q.z()), 0.001f) << length;
+  const Eigen::Vector3f prev(0, 0.11f * kU, 0);
+  for (float length : {0.005f * kU, 0.01f * kU, 0.03f * kU, 0.05f * kU}) {
+    const Eigen::Vector3f q =
+        placeFollowerPoint(Eigen::Vector3f(0.003f * kU, 0.095f * kU, 0.0f), &prev, length, pose,
+                           &f.head, nullptr, SimSettings().collisionMargin);
+    EXPECT_GE(f.head.distance(q.x(), q.y(), q.z()), 0.001f * kU) << length;
     std::printf("length %.3f: placed %.4f from the point before, %.4f outside\n", length,
                 (q - prev).norm(), f.head.distance(q.x(), q.y(), q.z()));
     // at its groomed length (the step turned out of the head)
-    EXPECT_NEAR((q - prev).norm(), length, 1e-5f) << length;
+    EXPECT_NEAR((q - prev).norm(), length, 1e-5f * kU) << length;
   }
 }
 
@@ -313,8 +320,8 @@ TEST(HairSimMotion, SettleHoldsTheGroomFor5Seconds) {
         std::hypot(x[i] - v.points[i], x[i + 1] - v.points[i + 1], x[i + 2] - v.points[i + 2]));
   std::nth_element(drift.begin(), drift.begin() + drift.size() / 2, drift.end());
   std::printf("rest drift after 5 s of Settle: median %.4f mm, %d guides\n",
-              drift[drift.size() / 2] * 1000, motion.guideCount());
-  EXPECT_LE(drift[drift.size() / 2], 0.001f);
+              drift[drift.size() / 2] * 1000 / kU, motion.guideCount());
+  EXPECT_LE(drift[drift.size() / 2], 0.001f * kU);
 }
 
 TEST(HairSimMotion, NearestRootByGridMatchesBruteForce) {
