@@ -113,6 +113,7 @@ Status growStrands(const Grid& grid, const std::vector<float>& field,
 // Moves every point but the roots that lies closer to the head than `margin` out to it (after
 // detail has moved points), of every strand or of the strands listed in `only`. Returns how
 // many points moved. Any closed mesh's HeadDistance will do (the body's too).
+// (keep_outside_head.cpp)
 size_t keepOutsideHead(const HeadDistance& head, float margin, Strands& strands,
                        const std::vector<uint32_t>* only = nullptr);
 
