@@ -180,10 +180,6 @@ export function startApp(): void {
       if (stage === 'profileA' || stage === 'profileB') status.note(PONYTAIL_STAGE_HINT[stage]);
     },
   });
-  // an Undo (or any edit) that takes away the ponytail being shaped ends its shaping
-  editor.listen((c) => {
-    if (c.sessionChanged) tools.ponytail.sessionChanged(c.session.curves);
-  });
   const active = new ActiveTool({
     editor,
     tools: tools.byName,

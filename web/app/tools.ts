@@ -176,10 +176,9 @@ function toolKit(d: ToolDeps): ToolKit {
     const near = h.closest(end);
     if (!(near.distance < SCALP_END_REACH && h.mesh.scalp[near.triangle] === 1)) return false;
     const last = pts[pts.length - 2];
-    const along = last ? sub(end, last) : null;
-    const len = along ? Math.hypot(along[0], along[1], along[2]) : 0;
-    const hangs =
-      len > 0 && (along as Vec3)[1] / len < HANG_STROKE_Y && near.normal[1] < HANG_SURFACE_Y;
+    const along = last ? sub(end, last) : ([0, 0, 0] as Vec3);
+    const len = Math.hypot(along[0], along[1], along[2]);
+    const hangs = len > 0 && along[1] / len < HANG_STROKE_Y && near.normal[1] < HANG_SURFACE_Y;
     return !hangs && !h.nearScalpEdge(end, HAIRLINE_END_BAND);
   };
   const strokeExtends = (pts: readonly Vec3[]) =>
@@ -226,7 +225,7 @@ export function createTools(d: ToolDeps): ToolSet {
  *  it (S4.6). */
 function ponytailTool(k: ToolKit): PonytailTool {
   const { d, editor, viewer, camera, sample, sampleStart, eye, forward, step, showDraft } = k;
-  return new PonytailTool({
+  const tool = new PonytailTool({
     sample,
     sampleStart,
     eye,
@@ -287,6 +286,11 @@ function ponytailTool(k: ToolKit): PonytailTool {
     notify: d.notify,
     stageChanged: (stage) => d.ponytailStage(stage),
   });
+  // an Undo (or any edit) that takes away the ponytail being shaped ends its shaping
+  editor.listen((c) => {
+    if (c.sessionChanged) tool.sessionChanged(c.session.curves);
+  });
+  return tool;
 }
 
 /** A shaping stroke (cross-section, profiles) starts within this many pixels of the spine. */

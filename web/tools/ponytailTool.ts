@@ -208,10 +208,10 @@ export class PonytailTool implements Tool {
   /** The session changed (an edit, Undo, Redo, a loaded file): shaping strokes wait for a
    *  ponytail only while it is still the one made. Fresh eyes undid a new ponytail, drew the next
    *  spine beside where it had been, and got the cross-section of the ponytail undone. */
-  sessionChanged(curves: readonly { id: string; type: string; points: readonly Vec3[] }[]): void {
+  sessionChanged(curves: readonly { id: string; points: readonly Vec3[] }[]): void {
     if (this.stage === 'spine' || this.stroke || this.made === null) return;
     const c = curves.find((k) => k.id === this.made);
-    if (c?.type !== 'ponytail' || c.points.length !== this.spine.length) this.reset();
+    if (!c || c.points.length !== this.spine.length) this.reset();
   }
 
   private setStage(stage: PonytailStage): void {
