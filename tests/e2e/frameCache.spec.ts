@@ -215,3 +215,27 @@ test('after Undo, answered from the cache, the hair is drawn in full, not thinne
   expect(s.text).toContain('Undone');
   expect(await page.evaluate(() => window.hairsketch.viewHolds())).toEqual([]);
 });
+
+test('dense hair: the full-detail frame is drawn a slice a frame and equals the frame drawn whole', async ({
+  page,
+}, testInfo) => {
+  // on a software rasteriser the whole hair takes seconds to draw; drawn in one frame it froze
+  // the page after every edit and orbit (viewer.ts renderFullInSlices)
+  const errors = watchConsole(page);
+  await page.goto('/');
+  await settled(page);
+  expect(await page.evaluate(() => window.hairsketch.setFrameCache(true))).toBe(true);
+  await page.waitForFunction(
+    () => window.hairsketch.hairDetail() === 1 && window.hairsketch.viewHolds().length === 0,
+  );
+  const slices = await page.evaluate(() => window.hairsketch.fullFrameSlices());
+  test.skip(slices === 0, 'this renderer draws the whole hair in one interactive frame');
+  expect(slices).toBeGreaterThan(1);
+  const both = await page.evaluate(() => window.hairsketch.renderBoth());
+  expect(both.source, 'the sliced frame is what the cache holds').toBe('hair');
+  const d = compare(both);
+  await savePngs(page, both, testInfo.outputPath('sliced'));
+  expect(d.drawn).toBeGreaterThan(0.05);
+  expect(d.meanDiff).toBeLessThan(0.001);
+  expect(errors).toEqual([]);
+});

@@ -167,6 +167,9 @@ export interface HairsketchTestApi {
   frameSource(): string;
   /** Frames drawn since the page loaded, by where each started from (benchmark probe). */
   frameSources(): { hair: number; static: number; none: number };
+  /** Slices the last full-detail frame drawn a slice a frame took (viewer.ts
+   *  renderFullInSlices; counted from the last frame drawn between them); 0 when none was. */
+  fullFrameSlices(): number;
   /** Scalp vertices tinted by section (while a tie tool is active; 0 otherwise). */
   sectionsTinted(): number;
   /** Scalp triangles of the sections drawn over the hair (while a tie tool is active; 0
@@ -420,6 +423,7 @@ export function installTestApi(app: TestApiParts): void {
     },
     frameSource: () => viewer.lastFrameSource,
     frameSources: () => ({ ...viewer.frameSources }),
+    fullFrameSlices: () => viewer.lastFullFrameSlices,
     sectionsTinted: () => app.sectionsTinted(),
     sectionsOverHair: () => app.sectionsOverHair(),
     tieBands: () => app.tieBands(),

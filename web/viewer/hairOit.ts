@@ -115,7 +115,7 @@ export class WeightedBlendedHair {
   private target: THREE.WebGLRenderTarget | null = null;
   /** The front pass's material and target (one half float a pixel: the nearest hair's distance
    *  past oitNear). */
-  private readonly front: THREE.ShaderMaterial;
+  private readonly frontMaterial: THREE.ShaderMaterial;
   private frontTarget: THREE.WebGLRenderTarget | null = null;
   private readonly depthOnly = new THREE.MeshBasicMaterial({ colorWrite: false });
   private readonly composite: THREE.ShaderMaterial;
@@ -148,7 +148,7 @@ export class WeightedBlendedHair {
     material.uniforms.oitFrontDepth = { value: null };
     material.onBeforeRender = strands.onBeforeRender;
     this.material = material;
-    this.front = new THREE.ShaderMaterial({
+    this.frontMaterial = new THREE.ShaderMaterial({
       uniforms: strands.uniforms,
       defines: { ...strands.defines, HAIR_OIT: '', HAIR_FRONT: '' },
       vertexShader: strands.vertexShader,
@@ -163,8 +163,8 @@ export class WeightedBlendedHair {
       blendSrc: THREE.OneFactor,
       blendDst: THREE.OneFactor,
     });
-    this.front.name = 'HairFrontOit';
-    this.front.onBeforeRender = strands.onBeforeRender;
+    this.frontMaterial.name = 'HairFrontOit';
+    this.frontMaterial.onBeforeRender = strands.onBeforeRender;
     this.composite = new THREE.ShaderMaterial({
       uniforms: { accumTexture: { value: null }, weightTexture: { value: null } },
       vertexShader: compositeVertex,
@@ -234,9 +234,13 @@ export class WeightedBlendedHair {
     return this.target;
   }
 
+  /** Bumped by every pass that clears the targets (begin, and so draw): a drawing spread over
+   *  several frames (ProgressiveHair) starts again when another drawing came between. */
+  generation = 0;
+
   /** Draws `hair` (strips or lines of this material's twin) over what the current target holds:
    *  `occluders` (children of the scene drawn opaque, shown or not: the head, the body) hide the
-   *  hair behind them.
+   *  hair behind them. The hair's draw range is drawn (all of it, for the whole hair).
    *  The renderer's target, clear colour and autoClear are left as they were. */
   draw(
     renderer: THREE.WebGLRenderer,
@@ -245,65 +249,113 @@ export class WeightedBlendedHair {
     hair: THREE.Mesh | THREE.LineSegments,
     occluders: readonly THREE.Object3D[],
   ): void {
-    const into = renderer.getRenderTarget();
-    const target = this.targetFor(renderer);
-    const clear = new THREE.Color();
-    renderer.getClearColor(clear);
-    const clearAlpha = renderer.getClearAlpha();
-    const autoClear = renderer.autoClear;
-    const material = hair.material;
+    this.begin(renderer, camera, hair);
+    this.front(renderer, camera, hair);
+    this.beginSums(renderer, scene, camera, occluders);
+    this.sums(renderer, camera, hair);
+    this.compose(renderer, camera);
+  }
+
+  /** The passes one at a time (draw runs them in this order; each may run on a part of the hair,
+   *  its draw range, several times over, in other frames): begin sets the hair's nearest
+   *  distance and clears the front target. */
+  begin(renderer: THREE.WebGLRenderer, camera: THREE.Camera, hair: THREE.Object3D): void {
+    this.generation++;
+    const sphere = this.sphere.copy(
+      (hair as THREE.Mesh).geometry.boundingSphere ?? new THREE.Sphere(),
+    );
+    sphere.applyMatrix4(hair.matrixWorld);
+    const eye = new THREE.Vector3().setFromMatrixPosition(camera.matrixWorld);
+    this.material.uniforms.oitNear.value = Math.max(
+      0,
+      eye.distanceTo(sphere.center) - sphere.radius,
+    );
+    this.targetFor(renderer);
+    this.keepingState(renderer, () => {
+      renderer.setRenderTarget(this.frontTarget);
+      renderer.setClearColor(0xffffff, 1); // no hair: FRONT_RANGE past oitNear
+      renderer.clear(true, false, false);
+    });
+  }
+
+  /** The front pass over the hair's draw range: each pixel's nearest hair distance. */
+  front(
+    renderer: THREE.WebGLRenderer,
+    camera: THREE.Camera,
+    hair: THREE.Mesh | THREE.LineSegments,
+  ): void {
+    this.keepingState(renderer, () => {
+      renderer.setRenderTarget(this.frontTarget);
+      renderer.autoClear = false;
+      this.drawWith(renderer, camera, hair, this.frontMaterial);
+    });
+  }
+
+  /** Clears the sums and writes the occluders' depth (only they, opaque surfaces only, colour
+   *  off; shown for this pass if the caller's layer pass hid them). After every front pass. */
+  beginSums(
+    renderer: THREE.WebGLRenderer,
+    scene: THREE.Scene,
+    camera: THREE.Camera,
+    occluders: readonly THREE.Object3D[],
+  ): void {
+    this.material.uniforms.oitFrontDepth.value = this.frontTarget?.texture ?? null;
     const restore: THREE.Object3D[] = [];
     const hide = (o: THREE.Object3D) => {
       if (!o.visible) return;
       o.visible = false;
       restore.push(o);
     };
-    try {
-      // the hair's distance past oitNear nearest the camera, per pixel
-      const sphere = this.sphere.copy(hair.geometry.boundingSphere ?? new THREE.Sphere());
-      sphere.applyMatrix4(hair.matrixWorld);
-      const eye = new THREE.Vector3().setFromMatrixPosition(camera.matrixWorld);
-      const near = Math.max(0, eye.distanceTo(sphere.center) - sphere.radius);
-      this.material.uniforms.oitNear.value = near;
-      const front = this.frontTarget as THREE.WebGLRenderTarget;
-      renderer.setRenderTarget(front);
-      renderer.setClearColor(0xffffff, 1); // no hair: FRONT_RANGE past oitNear
-      renderer.clear(true, false, false);
-      renderer.autoClear = false;
-      hair.material = this.front;
-      renderer.render(hair, camera);
-      this.material.uniforms.oitFrontDepth.value = front.texture;
-
-      renderer.setRenderTarget(target);
-      renderer.setClearColor(0x000000, 1); // Σ = 0, revealage 1
-      renderer.clear(true, true, false);
-      renderer.autoClear = false;
-      // the occluders' depth: only they, opaque surfaces only, colour off
-      // (the occluders may be hidden by the caller's layer pass: shown for this one)
-      const shown = occluders.filter((c) => !c.visible);
-      for (const c of shown) c.visible = true;
-      for (const c of scene.children)
-        if (!(c instanceof THREE.Light) && !occluders.includes(c)) hide(c);
-      for (const c of occluders)
-        c.traverse((o) => {
-          const m = (o as THREE.Mesh).material as THREE.Material | undefined;
-          const drawn =
-            o instanceof THREE.Line || o instanceof THREE.Points || o instanceof THREE.Sprite;
-          if (drawn || (m && (m.transparent || !m.depthWrite))) hide(o);
-        });
-      if (occluders.length > 0) {
-        scene.overrideMaterial = this.depthOnly;
-        renderer.render(scene, camera);
+    const shown = occluders.filter((c) => !c.visible);
+    this.keepingState(renderer, () => {
+      try {
+        renderer.setRenderTarget(this.target);
+        renderer.setClearColor(0x000000, 1); // Σ = 0, revealage 1
+        renderer.clear(true, true, false);
+        renderer.autoClear = false;
+        for (const c of shown) c.visible = true;
+        for (const c of scene.children)
+          if (!(c instanceof THREE.Light) && !occluders.includes(c)) hide(c);
+        for (const c of occluders)
+          c.traverse((o) => {
+            const m = (o as THREE.Mesh).material as THREE.Material | undefined;
+            const drawn =
+              o instanceof THREE.Line || o instanceof THREE.Points || o instanceof THREE.Sprite;
+            if (drawn || (m && (m.transparent || !m.depthWrite))) hide(o);
+          });
+        if (occluders.length > 0) {
+          scene.overrideMaterial = this.depthOnly;
+          renderer.render(scene, camera);
+        }
+      } finally {
         scene.overrideMaterial = null;
+        for (const c of shown) c.visible = false;
+        for (const o of restore) o.visible = true;
       }
-      for (const c of shown) c.visible = false;
-      // the hair's sums
-      hair.material = this.material;
-      renderer.render(hair, camera);
-      // the composite over what was drawn before
-      renderer.setRenderTarget(into);
+    });
+  }
+
+  /** The sums over the hair's draw range (after beginSums). */
+  sums(
+    renderer: THREE.WebGLRenderer,
+    camera: THREE.Camera,
+    hair: THREE.Mesh | THREE.LineSegments,
+  ): void {
+    this.keepingState(renderer, () => {
+      renderer.setRenderTarget(this.target);
+      renderer.autoClear = false;
+      this.drawWith(renderer, camera, hair, this.material);
+    });
+  }
+
+  /** Lays the sums over the renderer's current target (the composite), then the hair's depth. */
+  compose(renderer: THREE.WebGLRenderer, camera: THREE.Camera): void {
+    const target = this.target;
+    if (!target) return;
+    this.keepingState(renderer, () => {
       this.composite.uniforms.accumTexture.value = target.textures[0];
       this.composite.uniforms.weightTexture.value = target.textures[1];
+      renderer.autoClear = false;
       renderer.render(this.quad, this.quadCamera);
       if (this.writesDepth && camera instanceof THREE.PerspectiveCamera) {
         const u = this.depth.uniforms;
@@ -313,13 +365,41 @@ export class WeightedBlendedHair {
         u.cameraProjection.value.copy(camera.projectionMatrix);
         u.cameraProjectionInverse.value.copy(camera.projectionMatrixInverse);
         this.quad.material = this.depth;
-        renderer.render(this.quad, this.quadCamera);
+        try {
+          renderer.render(this.quad, this.quadCamera);
+        } finally {
+          this.quad.material = this.composite;
+        }
       }
+    });
+  }
+
+  /** Draws the hair alone with `material` in place of its own. */
+  private drawWith(
+    renderer: THREE.WebGLRenderer,
+    camera: THREE.Camera,
+    hair: THREE.Mesh | THREE.LineSegments,
+    material: THREE.Material,
+  ): void {
+    const own = hair.material;
+    hair.material = material;
+    try {
+      renderer.render(hair, camera);
     } finally {
-      scene.overrideMaterial = null;
-      hair.material = material;
-      this.quad.material = this.composite;
-      for (const o of restore) o.visible = true;
+      hair.material = own;
+    }
+  }
+
+  /** Runs `f`, then puts back the renderer's target, clear colour and autoClear. */
+  private keepingState(renderer: THREE.WebGLRenderer, f: () => void): void {
+    const into = renderer.getRenderTarget();
+    const clear = new THREE.Color();
+    renderer.getClearColor(clear);
+    const clearAlpha = renderer.getClearAlpha();
+    const autoClear = renderer.autoClear;
+    try {
+      f();
+    } finally {
       renderer.setRenderTarget(into);
       renderer.setClearColor(clear, clearAlpha);
       renderer.autoClear = autoClear;
@@ -329,7 +409,7 @@ export class WeightedBlendedHair {
   dispose(): void {
     this.target?.dispose();
     this.frontTarget?.dispose();
-    this.front.dispose();
+    this.frontMaterial.dispose();
     this.material.dispose();
     this.composite.dispose();
     this.depth.dispose();

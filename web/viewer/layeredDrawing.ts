@@ -15,6 +15,7 @@ import {
 } from './frameCache';
 import type { DrawnHair } from './hairLevelOfDetail';
 import type { WeightedBlendedHair } from './hairOit';
+import { ProgressiveHair } from './progressiveHair';
 
 type Layer = 'static' | 'hair' | 'overlay' | 'light';
 type DrawnLayer = Exclude<Layer, 'light'>;
@@ -108,6 +109,8 @@ export class LayeredDrawing {
   private hairKey: HairKey | null = null;
   /** Bumped by invalidate: changes the slots' stamps cannot see (uniforms). */
   private epoch = 0;
+  /** The whole hair's frame drawn a slice a frame (progressiveHair.ts). */
+  private readonly progressive = new ProgressiveHair();
 
   constructor(private readonly s: LayeredScene) {}
 
@@ -154,6 +157,44 @@ export class LayeredDrawing {
   /** Whether the static slot holds the view `keys` describe. */
   staticValid(keys: LayerKeys): boolean {
     return this.active && sameLayer(this.staticKey, keys.layer);
+  }
+
+  /** The whole hair's frame, a slice of `slice` indices a call: returns 'wait' while the GPU
+   *  still draws the last slice (nothing drawn), 'more' while slices remain (nothing on screen
+   *  changed), 'done' when the last one was drawn and the frame
+   *  composed over the cached head (and cached, with the overlays over it), or 'whole' when it
+   *  cannot be sliced (no order-independent drawing, no cached head of this view): then the
+   *  caller draws the frame whole. */
+  drawWholeInSlices(
+    all: number,
+    keys: LayerKeys,
+    slice: number,
+  ): 'wait' | 'more' | 'done' | 'whole' {
+    const { renderer: r, scene, camera, hairGroup } = this.s;
+    const hair = this.s.hair();
+    const oit = hair?.userData.oit as WeightedBlendedHair | undefined;
+    if (!hair || !oit || !hairGroup.visible || !hair.visible || !this.staticValid(keys)) {
+      this.progressive.cancel();
+      return 'whole';
+    }
+    if (this.progressive.busy(r.getContext() as WebGL2RenderingContext)) return 'wait';
+    const slots = this.slots as FrameSlots;
+    const k = { key: `${keys.layer.view}|${keys.layer.scene}|${keys.hair}`, hair, oit, all };
+    const statics = scene.children.filter((c) => c.visible && layerOf(this.s, c) === 'static');
+    if (!this.progressive.step(r, scene, camera, statics, k, slice)) return 'more';
+    const size = r.getDrawingBufferSize(new THREE.Vector2());
+    if (!slots.copy('static', 'restore', size.x, size.y)) return 'whole';
+    oit.compose(r, camera);
+    if (slots.copy('hair', 'save', size.x, size.y))
+      this.hairKey = { ...keys.layer, hair: keys.hair, count: all };
+    const autoClear = r.autoClear;
+    try {
+      r.autoClear = false;
+      drawLayers(this.s, ['overlay']);
+    } finally {
+      r.autoClear = autoClear;
+    }
+    return 'done';
   }
 
   /** Draws a frame as `plan` says, into the canvas; `save`: keep the layers drawn in the cache.

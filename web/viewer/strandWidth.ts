@@ -35,10 +35,12 @@ export function representedWidth(drawn: number): number {
 }
 
 /** Strands a draw of `geometry` (a strand geometry: userData.strands, lodCounts) covers: its
- *  draw range's share of the index (prefixes are even samples of the strands). */
+ *  draw range's share of the index (prefixes are even samples of the strands), or all of them
+ *  when the draw is a slice of the whole hair's frame (userData.sliceOfWhole: progressiveHair.ts),
+ *  whose strands are as wide as in the frame drawn in one pass. */
 export function drawnStrands(geometry: THREE.BufferGeometry): number {
   const strands = (geometry.userData.strands as number | undefined) ?? 0;
   const all = geometry.index?.count ?? 0;
-  if (all === 0) return strands;
+  if (all === 0 || geometry.userData.sliceOfWhole) return strands;
   return (strands * Math.min(geometry.drawRange.count, all)) / all;
 }

@@ -41,6 +41,12 @@ const OVERLAY_WAIT_MS = 50;
 /** Frames between a settled view drawn at interactive detail and its full-detail frame: the
  *  former is presented (with whatever the page changed meanwhile) before the latter's GPU work. */
 const FULL_DETAIL_DELAY_FRAMES = 1;
+/** The full-detail frame is drawn in slices that keep frames about this far apart (ms). */
+const FULL_SLICE_MS = 160;
+/** The first full-detail frame draws its hair in this many slices; none in more than
+ *  FULL_MAX_SLICES. */
+const FULL_FIRST_SLICES = 20;
+const FULL_MAX_SLICES = 400;
 
 export { type FrameMode, frameDetail } from './frameCache';
 export type { CurveView } from './overlayLayer';
@@ -79,6 +85,13 @@ export class Viewer {
    *  (in fullDetailWait more frames). */
   private fullDetailOwed = false;
   private fullDetailWait = 0;
+  /** Indices of hair a slice of the full-detail frame draws (renderFullInSlices), and when the
+   *  last slice was drawn (null: none of the frame under way yet). */
+  private sliceCount = 0;
+  private lastSliceAt: number | null = null;
+  /** Slices drawn of the full-detail frame under way, and of the last one finished that way. */
+  private slicesDrawn = 0;
+  lastFullFrameSlices = 0;
   /** The hair object the last rendered frame drew (null: none yet). */
   private shownHair: THREE.Object3D | null = null;
   private readonly hairShownListeners = new Set<(hair: THREE.Object3D) => void>();
@@ -163,7 +176,7 @@ export class Viewer {
     if (this.dirty) {
       this.dirty = !this.renderFrame(now, this.holds.size > 0 ? 'interactive' : 'settled');
     } else if (this.fullDetailOwed && this.holds.size === 0 && this.fullDetailWait-- <= 0) {
-      this.renderFrame(now, 'full');
+      this.renderFullInSlices(now);
     }
     if (this.needsFrame()) this.scheduleFrame();
   };
@@ -174,6 +187,7 @@ export class Viewer {
    *  were drawn is drawn again. Returns false when the frame waits for hair on its way (only
    *  overlays would be drawn, before the time expectHair allowed). */
   private renderFrame(now: number, mode: FrameMode): boolean {
+    this.lastSliceAt = null; // a slice drawn before this frame says nothing about the next one's cost
     const { all, interactive } = this.detail.counts(this.hair);
     const keys = this.layers.keys();
     const plan = this.layers.plan(mode, all, interactive, keys);
@@ -194,6 +208,48 @@ export class Viewer {
       if (hair) for (const cb of [...this.hairShownListeners]) cb(hair);
     }
     return true;
+  }
+
+  /** The full-detail frame owed, a slice of the hair a frame (layeredDrawing.ts
+   *  drawWholeInSlices): the page stays responsive while a software rasteriser draws it, and
+   *  any frame that must be drawn first (an orbit, new hair) comes first. Slices are sized so
+   *  that frames come about FULL_SLICE_MS apart. */
+  private renderFullInSlices(now: number): void {
+    const { all } = this.detail.counts(this.hair);
+    const keys = this.layers.keys();
+    if (!this.layers.active) {
+      this.renderFrame(now, 'full');
+      return;
+    }
+    // the first slice: the size the last full-detail frame's slices came to, else a twentieth
+    // of the hair; then sized by how long the GPU took to draw the one before (a slice is drawn
+    // only once the GPU has drawn the last one)
+    let count = this.sliceCount > 0 ? this.sliceCount : all / FULL_FIRST_SLICES;
+    if (this.lastSliceAt !== null)
+      count *= Math.min(2, Math.max(0.5, FULL_SLICE_MS / Math.max(now - this.lastSliceAt, 1)));
+    count = Math.round(Math.min(all, Math.max(all / FULL_MAX_SLICES, count)));
+    const step = this.layers.drawWholeInSlices(all, keys, count);
+    if (step === 'wait') return;
+    this.sliceCount = count;
+    if (this.lastSliceAt === null) this.slicesDrawn = 0;
+    this.slicesDrawn++;
+    if (step === 'whole') {
+      this.lastSliceAt = null;
+      this.renderFrame(now, 'full');
+      return;
+    }
+    if (step === 'more') {
+      this.lastSliceAt = now;
+      return;
+    }
+    this.lastSliceAt = null;
+    this.lastFullFrameSlices = this.slicesDrawn;
+    this.fullDetailOwed = false;
+    this.lastDetail = 1;
+    this.lastSource = 'static';
+    this.frameSources.static++;
+    this.onRendered?.();
+    for (const cb of this.renderedListeners) cb();
   }
 
   /** New hair is on its way (a stroke's preview was asked for): on a software rasteriser, frames
