@@ -223,11 +223,12 @@ test('dense hair: the full-detail frame is drawn a slice a frame and equals the 
   // the page after every edit and orbit (viewer.ts renderFullInSlices)
   const errors = watchConsole(page);
   await page.goto('/');
+  // settled() ends with idle(), which waits for the full-detail frame too: every strand is then
+  // on screen and the status line says so (data-detail), so a picture taken now shows them all
   await settled(page);
   expect(await page.evaluate(() => window.hairsketch.setFrameCache(true))).toBe(true);
-  await page.waitForFunction(
-    () => window.hairsketch.hairDetail() === 1 && window.hairsketch.viewHolds().length === 0,
-  );
+  expect(await page.evaluate(() => window.hairsketch.hairDetail())).toBe(1);
+  await expect(page.getByTestId('status')).toHaveAttribute('data-detail', 'full');
   const slices = await page.evaluate(() => window.hairsketch.fullFrameSlices());
   test.skip(slices === 0, 'this renderer draws the whole hair in one interactive frame');
   expect(slices).toBeGreaterThan(1);
@@ -237,5 +238,17 @@ test('dense hair: the full-detail frame is drawn a slice a frame and equals the 
   await savePngs(page, both, testInfo.outputPath('sliced'));
   expect(d.drawn).toBeGreaterThan(0.05);
   expect(d.meanDiff).toBeLessThan(0.001);
+  // an orbit: the sample while the view moves (data-detail sample), every strand once it stops
+  const box = await page.getByTestId('viewport').boundingBox();
+  if (!box) throw new Error('no viewport');
+  await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+  await page.mouse.down({ button: 'right' });
+  for (let i = 1; i <= 6; i++)
+    await page.mouse.move(box.x + box.width / 2 + 10 * i, box.y + box.height / 2);
+  await expect(page.getByTestId('status')).toHaveAttribute('data-detail', 'sample');
+  await page.mouse.up({ button: 'right' });
+  await page.evaluate(() => window.hairsketch.idle());
+  expect(await page.evaluate(() => window.hairsketch.hairDetail())).toBe(1);
+  await expect(page.getByTestId('status')).toHaveAttribute('data-detail', 'full');
   expect(errors).toEqual([]);
 });

@@ -263,6 +263,8 @@ export function startApp(): void {
   };
   followView();
   viewer.renderedListeners.add(followView);
+  // data-detail: every strand on screen, or the sample drawn until the full-detail frame is
+  viewer.renderedListeners.add(() => line.detail(viewer.hairDetail === 1));
   help = buildHelpOverlay(document.body, actions);
   exporting = wireExport({
     editor,

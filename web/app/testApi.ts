@@ -248,7 +248,7 @@ export function installTestApi(app: TestApiParts): void {
     idle: () =>
       new Promise<void>((resolve) => {
         const check = () => {
-          if (!app.busy() && !viewer.renderPending) resolve();
+          if (!app.busy() && !viewer.renderPending && !viewer.fullDetailPending) resolve();
           // a timer, not an animation frame: asking for frames would keep an idle view drawing
           else setTimeout(check, 16);
         };

@@ -28,6 +28,13 @@ export class StatusLine {
     this.el.dataset.curves = String(curves);
   }
 
+  /** Whether the hair on screen is every strand (`data-detail` full) or the sample a slow
+   *  renderer draws while the view moves and until the full-detail frame is drawn (sample). */
+  detail(full: boolean): void {
+    const v = full ? 'full' : 'sample';
+    if (this.el.dataset.detail !== v) this.el.dataset.detail = v;
+  }
+
   bumpRevision(): void {
     this.revision++;
     this.el.dataset.revision = String(this.revision);
