@@ -44,6 +44,9 @@ struct HeadPose {
 HeadPose headPose(SimMotion motion, double t, const Eigen::Vector3f& pivot);
 // The wind velocity at time t (m/s; zero but for Wind), gusting deterministically from the seed.
 Eigen::Vector3f windVelocity(SimMotion motion, double t, uint32_t seed);
+// The app's world units per metre (1 unit = 10 cm): the simulation works in world units, so the
+// wind (m/s) is scaled by this (it was used as units/s, a tenth of its speed: no visible motion).
+constexpr float kUnitsPerMetre = 10.0f;
 
 struct SimSettings {
   int substeps = 2;
