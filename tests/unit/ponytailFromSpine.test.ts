@@ -56,13 +56,13 @@ describe('snapToPlane', () => {
     const b = snapToPlane(off, X_PLANE);
     expect(b.snapped).toBe(false);
     expect(b.points).toBe(off);
-    // drawn in a side view (looking along x), 3 cm off is put on the middle; 5 cm is not
-    const side = spine.map((p) => [0.3, p[1], p[2]] as Vec3);
+    // drawn in a side view (looking along x), 5 cm off is put on the middle; 6 cm is not
+    const side = spine.map((p) => [0.5, p[1], p[2]] as Vec3);
     expect(snapToPlane(side, X_PLANE, [-1, -0.14, 0]).snapped).toBe(true);
     expect(snapToPlane(side, X_PLANE, [0, -0.14, -1]).snapped).toBe(false);
     expect(
       snapToPlane(
-        off.map((p) => [0.5, p[1], p[2]] as Vec3),
+        off.map((p) => [0.6, p[1], p[2]] as Vec3),
         X_PLANE,
         [-1, 0, 0],
       ).snapped,

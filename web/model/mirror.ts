@@ -99,8 +99,11 @@ export function syncMirrorTwins(
 export const SNAP_TO_PLANE = 0.15;
 /** Drawn in a side view (looking along the plane's normal, within about 25 degrees), where the
  *  middle of the head is its outline and a press just inside it lands a few centimetres off the
- *  middle, the spine is put on the plane from this far (world units, 4 cm). */
-export const SNAP_FROM_SIDE = 0.4;
+ *  middle, the spine is put on the plane from this far (world units, 5.5 cm: a press 30 px
+ *  inside the outline at the back of the crown, 1280×800, lands 5 cm off it; fresh eyes round
+ *  14, following the guide's "just inside", got a tail 5 cm off the middle at 4 cm). The side of
+ *  the head, where a side ponytail sits, is 6.5 cm or more off the middle. */
+export const SNAP_FROM_SIDE = 0.55;
 
 /** `points` put on the plane when its first point and its points on average lie within
  *  SNAP_TO_PLANE of it (SNAP_FROM_SIDE when drawn looking along `view`, a side view), else as
