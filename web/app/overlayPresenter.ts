@@ -21,6 +21,8 @@ import type { ViewStore } from './viewState';
 export class OverlayPresenter {
   /** Construction lines of the ponytail being built (empty: none). */
   private toolGuides: Vec3[][] = [];
+  /** Guide lines drawn now (test API displayInfo). */
+  private guidesShown = 0;
   /** The result whose constraints / field the overlays draw. */
   private shown: SolveResult | null = null;
   private readonly views = {
@@ -77,13 +79,14 @@ export class OverlayPresenter {
   }
 
   /** What the overlays draw now (test API). */
-  info(): { constraints: number; glyphs: number; surfaceTriangles: number } {
+  info(): { constraints: number; glyphs: number; surfaceTriangles: number; guides: number } {
     const v = this.views;
     const d = this.display;
     return {
       constraints: d.constraints ? v.constraints.count : 0,
       glyphs: d.field ? v.field.count : 0,
       surfaceTriangles: d.surface ? v.surface.triangles : 0,
+      guides: this.guidesShown,
     };
   }
 
@@ -94,13 +97,18 @@ export class OverlayPresenter {
   }
 
   private syncGuides(): void {
+    // guides (a ponytail tool's spine and strokes, a selected ponytail's circles) are part of
+    // the curves: hidden with them (key 1), for clean pictures (fresh eyes: the tool's spine
+    // stayed on the tail with the curves hidden)
+    let lines: Vec3[][] = [];
     if (this.toolGuides.length > 0) {
-      this.viewer.setGuides(this.toolGuides);
-      return;
+      if (this.display.curves) lines = this.toolGuides;
+    } else {
+      const c = this.display.curves ? this.editor.selectedCurve : null;
+      lines = c ? (defOf(c).guides?.(c) ?? []).map(circlePolyline) : [];
     }
-    // the selected curve's guides (a ponytail's circles) are part of the curves: hidden with them
-    const c = this.display.curves ? this.editor.selectedCurve : null;
-    this.viewer.setGuides(c ? (defOf(c).guides?.(c) ?? []).map(circlePolyline) : []);
+    this.guidesShown = lines.length;
+    this.viewer.setGuides(lines);
   }
 
   /** Rebuilds what changed of the shown overlays and adds / removes them from the view. */

@@ -50,7 +50,7 @@ export interface HairsketchTestApi {
   /** The display toggles (method S6.2): which of curves, constraints, surface, field, box show. */
   display(): DisplayState;
   /** What the shown overlays draw: constraints, field glyphs, surface triangles (0 when off). */
-  displayInfo(): { constraints: number; glyphs: number; surfaceTriangles: number };
+  displayInfo(): { constraints: number; glyphs: number; surfaceTriangles: number; guides: number };
   /** Points of the grid the solver works on (the session's bounding volume, gridForSession). */
   gridPoints(): number;
   /** Rays from one side (back: travelling +z) at a 3° grid of scalp points: how many are seen
