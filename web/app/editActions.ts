@@ -103,7 +103,10 @@ export function editActions(d: EditActionDeps): EditActions {
       editor.run({
         kind: 'loadSession',
         session: d.emptySession(),
-        what: `New session: an empty head (Undo brings back the ${n} curves before)`,
+        what:
+          n === 0
+            ? 'New session: an empty head'
+            : `New session: an empty head (Undo brings back the ${n === 1 ? 'curve' : `${n} curves`} before)`,
         resetHistory: false,
       });
     },
