@@ -21,6 +21,9 @@ type Layer = 'static' | 'hair' | 'overlay' | 'light';
 type DrawnLayer = Exclude<Layer, 'light'>;
 export const ALL_LAYERS: readonly DrawnLayer[] = ['static', 'hair', 'overlay'];
 export type LayerKeys = { layer: LayerKey; hair: string };
+/** The full-detail frame drawn in slices shows the hair drawn so far each time this much more of
+ *  it (of both passes) is drawn. */
+const FILL_IN_STEP = 0.15;
 
 /** What drawing a scene's layers reads from it. */
 export interface SceneLayers {
@@ -109,8 +112,10 @@ export class LayeredDrawing {
   private hairKey: HairKey | null = null;
   /** Bumped by invalidate: changes the slots' stamps cannot see (uniforms). */
   private epoch = 0;
-  /** The whole hair's frame drawn a slice a frame (progressiveHair.ts). */
+  /** The whole hair's frame drawn a slice a frame (progressiveHair.ts), and how much of it was
+   *  last shown filling in. */
   private readonly progressive = new ProgressiveHair();
+  private shownProgress = 0;
 
   constructor(private readonly s: LayeredScene) {}
 
@@ -160,7 +165,7 @@ export class LayeredDrawing {
   }
 
   /** The whole hair's frame, a slice of `slice` indices a call: returns 'wait' while the GPU
-   *  still draws the last slice (nothing drawn), 'more' while slices remain (nothing on screen
+   *  still draws the last slice (nothing drawn) or when the hair drawn so far was shown, 'more' while slices remain (nothing on screen
    *  changed), 'done' when the last one was drawn and the frame
    *  composed over the cached head (and cached, with the overlays over it), or 'whole' when it
    *  cannot be sliced (no order-independent drawing, no cached head of this view): then the
@@ -181,12 +186,42 @@ export class LayeredDrawing {
     const slots = this.slots as FrameSlots;
     const k = { key: `${keys.layer.view}|${keys.layer.scene}|${keys.hair}`, hair, oit, all };
     const statics = scene.children.filter((c) => c.visible && layerOf(this.s, c) === 'static');
-    if (!this.progressive.step(r, scene, camera, statics, k, slice)) return 'more';
     const size = r.getDrawingBufferSize(new THREE.Vector2());
+    // the hair drawn so far over the sample on screen (the hair slot), each FILL_IN_STEP of the
+    // drawing, in a frame of its own (with a slice, the frame waited for it): it fills in
+    const sample =
+      this.hairKey && sameLayer(this.hairKey, keys.layer) && this.hairKey.hair === keys.hair;
+    const p = this.progressive.running(k) ? this.progressive.progress : 0;
+    if (p < this.shownProgress) this.shownProgress = 0; // another drawing began
+    if (
+      this.progressive.partial &&
+      p >= this.shownProgress + FILL_IN_STEP &&
+      sample &&
+      slots.copy('hair', 'restore', size.x, size.y)
+    ) {
+      this.shownProgress = p;
+      this.composeAndOverlays(oit);
+      return 'wait';
+    }
+    if (!this.progressive.step(r, scene, camera, statics, k, slice)) return 'more';
+    this.shownProgress = 0;
     if (!slots.copy('static', 'restore', size.x, size.y)) return 'whole';
     oit.compose(r, camera);
     if (slots.copy('hair', 'save', size.x, size.y))
       this.hairKey = { ...keys.layer, hair: keys.hair, count: all };
+    this.composeAndOverlays(null);
+    return 'done';
+  }
+
+  /** How much of the full-detail frame under way is drawn, 0..1 (0: none under way). */
+  get slicedProgress(): number {
+    return this.progressive.progress;
+  }
+
+  /** Composes `oit`'s sums over the canvas (unless null), then draws the overlays. */
+  private composeAndOverlays(oit: WeightedBlendedHair | null): void {
+    const r = this.s.renderer;
+    if (oit) oit.compose(r, this.s.camera);
     const autoClear = r.autoClear;
     try {
       r.autoClear = false;
@@ -194,7 +229,6 @@ export class LayeredDrawing {
     } finally {
       r.autoClear = autoClear;
     }
-    return 'done';
   }
 
   /** Draws a frame as `plan` says, into the canvas; `save`: keep the layers drawn in the cache.

@@ -48,6 +48,19 @@ export class ProgressiveHair {
     return this.fences.length >= SLICES_IN_FLIGHT;
   }
 
+  /** Whether the sums of the drawing under way hold some of the hair (its second pass has
+   *  begun): composed now, they show the hair drawn so far (its index order is an even sample). */
+  get partial(): boolean {
+    return this.job?.phase === 'sums' && this.job.next > 0;
+  }
+
+  /** How much of the drawing under way is done, 0..1 (each pass half). */
+  get progress(): number {
+    const j = this.job;
+    if (!j || j.all <= 0) return 0;
+    return (j.phase === 'sums' ? 0.5 : 0) + (0.5 * j.next) / j.all;
+  }
+
   /** Whether a drawing of `k` is under way (some slices drawn). */
   running(k: ProgressiveKey): boolean {
     return this.job !== null && this.matches(k);
