@@ -88,7 +88,7 @@ test('each display toggle switches with a click and with its shortcut, and the a
   });
   for (const name of ['Constraints', 'Surface', 'Field', 'Box'])
     await expect(box(name)).not.toBeChecked();
-  expect(await info(page)).toEqual({ constraints: 0, glyphs: 0, surfaceTriangles: 0 });
+  expect(await info(page)).toEqual({ constraints: 0, glyphs: 0, surfaceTriangles: 0, guides: 0 });
 
   // Not in the undo history: undo still removes nothing (no edit was made).
   await expect(page.getByRole('button', { name: 'Undo' })).toBeDisabled();
