@@ -124,3 +124,45 @@ export class ProgressiveHair {
     return true;
   }
 }
+
+/** The full-detail frame is drawn in slices that keep frames about this far apart (ms). */
+const FULL_SLICE_MS = 160;
+/** The first full-detail frame draws its hair in this many slices; none in more than
+ *  FULL_MAX_SLICES. */
+const FULL_FIRST_SLICES = 20;
+const FULL_MAX_SLICES = 400;
+
+/** How many indices each slice draws: the first, the size the last full-detail frame's slices
+ *  came to, else a twentieth of the hair; then sized by how long the GPU took to draw the one
+ *  before (a slice is drawn only once the GPU has drawn the last one), so frames come about
+ *  FULL_SLICE_MS apart. Counts the slices a frame took. */
+export class SliceSizer {
+  private count = 0;
+  private lastAt: number | null = null;
+  private drawn = 0;
+  /** Slices the last full-detail frame drawn in slices took (since the last frame between). */
+  lastFrameSlices = 0;
+
+  /** The size of a slice drawn at `now`, of a hair of `all` indices. */
+  next(now: number, all: number): number {
+    let count = this.count > 0 ? this.count : all / FULL_FIRST_SLICES;
+    if (this.lastAt !== null)
+      count *= Math.min(2, Math.max(0.5, FULL_SLICE_MS / Math.max(now - this.lastAt, 1)));
+    return Math.round(Math.min(all, Math.max(all / FULL_MAX_SLICES, count)));
+  }
+
+  /** A slice of `count` was asked for at `now`: 'more' (slices remain), 'done' (the frame's
+   *  last) or 'whole' (the frame is drawn whole instead). */
+  drew(now: number, count: number, step: 'more' | 'done' | 'whole'): void {
+    this.count = count;
+    if (this.lastAt === null) this.drawn = 0;
+    this.drawn++;
+    this.lastAt = step === 'more' ? now : null;
+    if (step === 'done') this.lastFrameSlices = this.drawn;
+  }
+
+  /** Another frame was drawn: the time since the last slice says nothing of the next's cost. */
+  interrupt(): void {
+    this.lastAt = null;
+  }
+}

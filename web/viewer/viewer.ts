@@ -30,6 +30,7 @@ import { HairLevelOfDetail, INTERACTIVE_RESOLUTION } from './hairLevelOfDetail';
 import { ALL_LAYERS, drawLayers, LayeredDrawing, type LayeredScene } from './layeredDrawing';
 import { type AppViewName, framedAppView } from './namedViews';
 import { type CurveView, OverlayLayer } from './overlayLayer';
+import { SliceSizer } from './progressiveHair';
 import { basePixelRatio, glRendererName, isSoftwareRenderer } from './rendererProbe';
 import { disposeObject } from './sceneObjects';
 import { type CaptureSource, captureImage, measureFullFrame } from './viewCapture';
@@ -41,12 +42,6 @@ const OVERLAY_WAIT_MS = 50;
 /** Frames between a settled view drawn at interactive detail and its full-detail frame: the
  *  former is presented (with whatever the page changed meanwhile) before the latter's GPU work. */
 const FULL_DETAIL_DELAY_FRAMES = 1;
-/** The full-detail frame is drawn in slices that keep frames about this far apart (ms). */
-const FULL_SLICE_MS = 160;
-/** The first full-detail frame draws its hair in this many slices; none in more than
- *  FULL_MAX_SLICES. */
-const FULL_FIRST_SLICES = 20;
-const FULL_MAX_SLICES = 400;
 
 export { type FrameMode, frameDetail } from './frameCache';
 export type { CurveView } from './overlayLayer';
@@ -85,13 +80,8 @@ export class Viewer {
    *  (in fullDetailWait more frames). */
   private fullDetailOwed = false;
   private fullDetailWait = 0;
-  /** Indices of hair a slice of the full-detail frame draws (renderFullInSlices), and when the
-   *  last slice was drawn (null: none of the frame under way yet). */
-  private sliceCount = 0;
-  private lastSliceAt: number | null = null;
-  /** Slices drawn of the full-detail frame under way, and of the last one finished that way. */
-  private slicesDrawn = 0;
-  lastFullFrameSlices = 0;
+  /** The size of each slice of the full-detail frame (renderFullInSlices). */
+  private readonly slices = new SliceSizer();
   /** The hair object the last rendered frame drew (null: none yet). */
   private shownHair: THREE.Object3D | null = null;
   private readonly hairShownListeners = new Set<(hair: THREE.Object3D) => void>();
@@ -187,7 +177,7 @@ export class Viewer {
    *  were drawn is drawn again. Returns false when the frame waits for hair on its way (only
    *  overlays would be drawn, before the time expectHair allowed). */
   private renderFrame(now: number, mode: FrameMode): boolean {
-    this.lastSliceAt = null; // a slice drawn before this frame says nothing about the next one's cost
+    this.slices.interrupt();
     const { all, interactive } = this.detail.counts(this.hair);
     const keys = this.layers.keys();
     const plan = this.layers.plan(mode, all, interactive, keys);
@@ -212,8 +202,8 @@ export class Viewer {
 
   /** The full-detail frame owed, a slice of the hair a frame (layeredDrawing.ts
    *  drawWholeInSlices): the page stays responsive while a software rasteriser draws it, and
-   *  any frame that must be drawn first (an orbit, new hair) comes first. Slices are sized so
-   *  that frames come about FULL_SLICE_MS apart. */
+   *  any frame that must be drawn first (an orbit, new hair) comes first (slice sizes:
+   *  progressiveHair.ts SliceSizer). */
   private renderFullInSlices(now: number): void {
     const { all } = this.detail.counts(this.hair);
     const keys = this.layers.keys();
@@ -221,29 +211,12 @@ export class Viewer {
       this.renderFrame(now, 'full');
       return;
     }
-    // the first slice: the size the last full-detail frame's slices came to, else a twentieth
-    // of the hair; then sized by how long the GPU took to draw the one before (a slice is drawn
-    // only once the GPU has drawn the last one)
-    let count = this.sliceCount > 0 ? this.sliceCount : all / FULL_FIRST_SLICES;
-    if (this.lastSliceAt !== null)
-      count *= Math.min(2, Math.max(0.5, FULL_SLICE_MS / Math.max(now - this.lastSliceAt, 1)));
-    count = Math.round(Math.min(all, Math.max(all / FULL_MAX_SLICES, count)));
+    const count = this.slices.next(now, all);
     const step = this.layers.drawWholeInSlices(all, keys, count);
     if (step === 'wait') return;
-    this.sliceCount = count;
-    if (this.lastSliceAt === null) this.slicesDrawn = 0;
-    this.slicesDrawn++;
-    if (step === 'whole') {
-      this.lastSliceAt = null;
-      this.renderFrame(now, 'full');
-      return;
-    }
-    if (step === 'more') {
-      this.lastSliceAt = now;
-      return;
-    }
-    this.lastSliceAt = null;
-    this.lastFullFrameSlices = this.slicesDrawn;
+    this.slices.drew(now, count, step);
+    if (step === 'whole') this.renderFrame(now, 'full');
+    if (step !== 'done') return;
     this.fullDetailOwed = false;
     this.lastDetail = 1;
     this.lastSource = 'static';
@@ -326,6 +299,11 @@ export class Viewer {
     const full = read();
     this.requestRender();
     return { width: size.x, height: size.y, source, count: plan.count, cached, full };
+  }
+
+  /** Slices the last full-detail frame drawn in slices took (0: none was). */
+  get lastFullFrameSlices(): number {
+    return this.slices.lastFrameSlices;
   }
 
   /** Test probe: blendOrderProbe.ts on the view (a normal frame follows). */
