@@ -284,11 +284,7 @@ export class WeightedBlendedHair {
     camera: THREE.Camera,
     hair: THREE.Mesh | THREE.LineSegments,
   ): void {
-    this.keepingState(renderer, () => {
-      renderer.setRenderTarget(this.frontTarget);
-      renderer.autoClear = false;
-      this.drawWith(renderer, camera, hair, this.frontMaterial);
-    });
+    this.pass(renderer, camera, hair, this.frontTarget, this.frontMaterial);
   }
 
   /** Clears the sums and writes the occluders' depth (only they, opaque surfaces only, colour
@@ -341,11 +337,7 @@ export class WeightedBlendedHair {
     camera: THREE.Camera,
     hair: THREE.Mesh | THREE.LineSegments,
   ): void {
-    this.keepingState(renderer, () => {
-      renderer.setRenderTarget(this.target);
-      renderer.autoClear = false;
-      this.drawWith(renderer, camera, hair, this.material);
-    });
+    this.pass(renderer, camera, hair, this.target, this.material);
   }
 
   /** Lays the sums over the renderer's current target (the composite), then the hair's depth. */
@@ -374,20 +366,25 @@ export class WeightedBlendedHair {
     });
   }
 
-  /** Draws the hair alone with `material` in place of its own. */
-  private drawWith(
+  /** Draws the hair alone into `target` (not cleared) with `material` in place of its own. */
+  private pass(
     renderer: THREE.WebGLRenderer,
     camera: THREE.Camera,
     hair: THREE.Mesh | THREE.LineSegments,
+    target: THREE.WebGLRenderTarget | null,
     material: THREE.Material,
   ): void {
     const own = hair.material;
-    hair.material = material;
-    try {
-      renderer.render(hair, camera);
-    } finally {
-      hair.material = own;
-    }
+    this.keepingState(renderer, () => {
+      renderer.setRenderTarget(target);
+      renderer.autoClear = false;
+      hair.material = material;
+      try {
+        renderer.render(hair, camera);
+      } finally {
+        hair.material = own;
+      }
+    });
   }
 
   /** Runs `f`, then puts back the renderer's target, clear colour and autoClear. */
