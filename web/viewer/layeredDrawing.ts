@@ -152,11 +152,13 @@ export class LayeredDrawing {
 
   plan(mode: FrameMode, all: number, interactive: number, keys: LayerKeys): FramePlan {
     if (!this.active) return planFrame(mode, all, interactive, false, null);
-    const cachedHair =
-      this.hairKey && sameLayer(this.hairKey, keys.layer) && this.hairKey.hair === keys.hair
-        ? this.hairKey.count
-        : null;
+    const cachedHair = this.hairSlotHolds(keys) ? (this.hairKey?.count ?? null) : null;
     return planFrame(mode, all, interactive, sameLayer(this.staticKey, keys.layer), cachedHair);
+  }
+
+  /** Whether the hair slot holds this view's hair (at some count). */
+  private hairSlotHolds(keys: LayerKeys): boolean {
+    return !!this.hairKey && sameLayer(this.hairKey, keys.layer) && this.hairKey.hair === keys.hair;
   }
 
   /** Whether the static slot holds the view `keys` describe. */
@@ -189,8 +191,7 @@ export class LayeredDrawing {
     const size = r.getDrawingBufferSize(new THREE.Vector2());
     // the hair drawn so far over the sample on screen (the hair slot), each FILL_IN_STEP of the
     // drawing, in a frame of its own (with a slice, the frame waited for it): it fills in
-    const sample =
-      this.hairKey && sameLayer(this.hairKey, keys.layer) && this.hairKey.hair === keys.hair;
+    const sample = this.hairSlotHolds(keys);
     const p = this.progressive.running(k) ? this.progressive.progress : 0;
     if (p < this.shownProgress) this.shownProgress = 0; // another drawing began
     if (
