@@ -139,6 +139,8 @@ constexpr float kTaperJitter = 0.5f, kTaperNoiseShift = 7.3f;
 // kHemNoiseShift away, so the hem is a band of cut ends, not one line; never before it has
 // kHemKeeps of its length.
 // Hair within kGovernNear of a stroke (governed above kHemGoverned) is the stroke's: no hem.
+// Layered ends (kLayeredBand) read rootNoise kLayeredNoiseShift away.
+constexpr float kLayeredNoiseShift = 19.7f;
 constexpr float kHemBand = 0.12f, kHemNoiseShift = 13.1f, kHemKeeps = 0.5f, kHemGoverned = 0.5f;
 
 // Between the body's distance, read at one point, and the distance read later that lower bound
@@ -291,6 +293,13 @@ struct GrowRange {
               ? 1 + kTaperJitter *
                         (2 * rootNoise(std::abs(x - shaped.centre[0]) + kTaperNoiseShift, y, z) - 1)
               : 1.f;
+      // short hair a stroke's hair ends stops up to kLayeredBand early (the remaining length
+      // it stops at): a layered cut's spread ends
+      const float layeredEnd =
+          hugs && endsWithCurve
+              ? std::min(kLayeredBand, kLayeredShare * remainingAtRoot) *
+                    rootNoise(std::abs(x - shaped.centre[0]) + kLayeredNoiseShift, y, z)
+              : 0.f;
       float layDist = 0, layNormal[3] = {0, 1, 0};
       double pastEdge = 0;  // the length laid past the scalp's edge (Lay::PastEdge)
       // a curve's own Volume at the root (weight, value): the strand's lift is that curve's
@@ -420,7 +429,7 @@ struct GrowRange {
           if (!s.inside(nx, ny, nz)) break;  // leaving the bounding volume
           if (length + segLen > strandMax) break;
           if (ny < hem && ny < y && length + segLen > kHemKeeps * strandMax) break;
-          if (endsWithCurve && reachRemaining(*reach, nx, ny, nz, around) < 0) break;
+          if (endsWithCurve && reachRemaining(*reach, nx, ny, nz, around) < layeredEnd) break;
           length += segLen;
           px = x;
           py = y;

@@ -559,4 +559,57 @@ TEST(ShapeGrowth, ShortHairOfAStrokeThatStaysNearTheHeadLiesOnIt) {
   EXPECT_LT(*std::max_element(d.begin(), d.end()), float(gp.margin) + 0.04f);
 }
 
+TEST(ShapeGrowth, ShortHairAStrokesHairEndsHasItsEndsSpreadAsALayeredCut) {
+  const SphereHead sphere;
+  const Grid g = boxGrid(41, -2, 2);
+  ShapeRules rules;
+  rules.on = true;
+  // a stroke down the back on the head, from 60 to 105 degrees from the crown (7.9 cm: short
+  // hair), its hair ending at 105 degrees
+  constexpr float kFrom = 1.0472f, kTo = 1.8326f;
+  std::vector<double> pts;
+  std::vector<float> lift;
+  for (int k = 0; k <= 12; ++k) {
+    const float t = kFrom + (kTo - kFrom) * float(k) / 12;
+    pts.insert(pts.end(), {0.0, double(std::cos(t)), -double(std::sin(t))});
+    lift.push_back(0.f);
+  }
+  ReachCurve c;
+  c.points = pts.data();
+  c.count = lift.size();
+  c.setsLength = true;
+  c.lift = lift.data();
+  CurveReach reach;
+  buildCurveReach(g, {c}, reach);
+  // twelve roots 1 cm apart across the stroke, 5 degrees below its start, combed down the back
+  std::vector<Eigen::Vector3f> roots;
+  const float theta = kFrom + 0.0873f;
+  for (int k = 0; k < 12; ++k) {
+    const float a = 0.1f * (float(k) - 5.5f);
+    roots.emplace_back(std::sin(theta) * std::sin(a), std::cos(theta),
+                       -std::sin(theta) * std::cos(a));
+  }
+  GrowthParams gp;
+  gp.maxLength = 0.8;
+  Strands st;
+  ASSERT_TRUE(growStrands(g, constantField(g, 0, -1, -0.3f), roots, gp, st, 1 << 20,
+                          &sphere.distance, &reach, BodyCollider(), &rules)
+                  .ok());
+  ASSERT_EQ(st.strandStart.size(), 13u);
+  // each tip's arc from the crown (radians on the unit sphere: world units)
+  std::vector<float> tips;
+  for (size_t s = 0; s < 12; ++s) {
+    const float* q = &st.points[3 * size_t(st.strandStart[s + 1] - 1)];
+    tips.push_back(std::acos(q[1] / std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2])));
+  }
+  const auto [lo, hi] = std::minmax_element(tips.begin(), tips.end());
+  std::printf("tips from %.3f to %.3f from the crown (the stroke ends at %.3f)\n", *lo, *hi, kTo);
+  // none past the stroke's end (a step and the reach lattice's blur), none more than the layered
+  // band before it (and a step), and spread over a quarter of the band: not on one line (1.03 cm;
+  // 0.07 mm with the band made 0.1 mm)
+  EXPECT_LT(*hi, kTo + 0.1f);
+  EXPECT_GT(*lo, kTo - kLayeredBand - 0.1f);
+  EXPECT_GT(*hi - *lo, kLayeredBand / 4);
+}
+
 }  // namespace shape_rules_test
