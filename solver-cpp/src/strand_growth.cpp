@@ -300,6 +300,9 @@ struct GrowRange {
               ? std::min(kLayeredBand, kLayeredShare * remainingAtRoot) *
                     rootNoise(std::abs(x - shaped.centre[0]) + kLayeredNoiseShift, y, z)
               : 0.f;
+      // and is never shorter than the hair rooted just past that end (kPastEndLength): no
+      // stubs on the scalp just above the strokes' ends
+      const double shortest = hugs && endsWithCurve ? std::min(kPastEndLength, strandMax) : 0.0;
       float layDist = 0, layNormal[3] = {0, 1, 0};
       double pastEdge = 0;  // the length laid past the scalp's edge (Lay::PastEdge)
       // a curve's own Volume at the root (weight, value): the strand's lift is that curve's
@@ -429,7 +432,9 @@ struct GrowRange {
           if (!s.inside(nx, ny, nz)) break;  // leaving the bounding volume
           if (length + segLen > strandMax) break;
           if (ny < hem && ny < y && length + segLen > kHemKeeps * strandMax) break;
-          if (endsWithCurve && reachRemaining(*reach, nx, ny, nz, around) < layeredEnd) break;
+          if (endsWithCurve && length + segLen > shortest &&
+              reachRemaining(*reach, nx, ny, nz, around) < layeredEnd)
+            break;
           length += segLen;
           px = x;
           py = y;

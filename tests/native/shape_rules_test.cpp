@@ -610,6 +610,27 @@ TEST(ShapeGrowth, ShortHairAStrokesHairEndsHasItsEndsSpreadAsALayeredCut) {
   EXPECT_LT(*hi, kTo + 0.1f);
   EXPECT_GT(*lo, kTo - kLayeredBand - 0.1f);
   EXPECT_GT(*hi - *lo, kLayeredBand / 4);
+  // hair rooted 5 mm above the stroke's end is as long as hair rooted past it (kPastEndLength, to
+  // a step): no stubs (5 mm long without the rule)
+  std::vector<Eigen::Vector3f> low;
+  for (const Eigen::Vector3f& r : roots) {
+    const float a = std::atan2(r.x(), -r.z()), t = kTo - 0.05f;
+    low.emplace_back(std::sin(t) * std::sin(a), std::cos(t), -std::sin(t) * std::cos(a));
+  }
+  Strands lowSt;
+  ASSERT_TRUE(growStrands(g, constantField(g, 0, -1, -0.3f), low, gp, lowSt, 1 << 20,
+                          &sphere.distance, &reach, BodyCollider(), &rules)
+                  .ok());
+  ASSERT_EQ(lowSt.strandStart.size(), 13u);
+  for (size_t s = 0; s < 12; ++s) {
+    float len = 0;
+    for (uint32_t p = lowSt.strandStart[s] + 1; p < lowSt.strandStart[s + 1]; ++p) {
+      const float* q = &lowSt.points[3 * size_t(p)];
+      len += std::sqrt((q[0] - q[-3]) * (q[0] - q[-3]) + (q[1] - q[-2]) * (q[1] - q[-2]) +
+                       (q[2] - q[-1]) * (q[2] - q[-1]));
+    }
+    EXPECT_GT(len, float(kPastEndLength) - 0.05f) << "strand " << s;
+  }
 }
 
 }  // namespace shape_rules_test
