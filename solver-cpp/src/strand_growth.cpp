@@ -167,6 +167,7 @@ struct GrowRange {
   ShapeGrowth shaped;
   const float* lengthCap;  // per root (null: none)
   bool hems;               // with the shape rules, a stroke sets a hem (setsHem)
+  uint8_t* cut;            // per root (Strands::cut), or null
 
   // Slides the step from x to n (which ends within the margin of `mesh`) over the body
   // (BodyCollider): n and segLen become the slid step's end and length. prev: the strand's last
@@ -431,10 +432,12 @@ struct GrowRange {
           }
           if (!s.inside(nx, ny, nz)) break;  // leaving the bounding volume
           if (length + segLen > strandMax) break;
-          if (ny < hem && ny < y && length + segLen > kHemKeeps * strandMax) break;
-          if (endsWithCurve && length + segLen > shortest &&
-              reachRemaining(*reach, nx, ny, nz, around) < layeredEnd)
+          if ((ny < hem && ny < y && length + segLen > kHemKeeps * strandMax) ||
+              (endsWithCurve && length + segLen > shortest &&
+               reachRemaining(*reach, nx, ny, nz, around) < layeredEnd)) {
+            if (cut) cut[r] = 1;
             break;
+          }
           length += segLen;
           px = x;
           py = y;
@@ -465,6 +468,7 @@ Status growStrands(const Grid& g, const std::vector<float>& field,
   // UninitAllocator), so a repeated growth neither reallocates nor refills it.
   out.points.clear();
   out.strandStart.assign(1, 0);
+  out.cut.clear();
   if (!g.valid()) return Status::Error(StatusCode::NotReady, "grow: no grid");
   if (field.size() != size_t(g.size()) * 3)
     return Status::Error(StatusCode::NotReady, "grow: no field for this grid (solve first)");
@@ -482,28 +486,33 @@ Status growStrands(const Grid& g, const std::vector<float>& field,
   if (head && !head->built()) head = nullptr;
   const float margin = float(prm.margin), minSlide = float(prm.minSlide);
   const PaddedSampler s(g, field);
-  const GrowRange grow{s,
-                       head,
-                       margin,
-                       minSlide,
-                       float(prm.stepFraction * g.step),
-                       float(prm.minMagnitude * prm.minMagnitude),
-                       prm.maxLength,
-                       prm.maxSegments,
-                       roots,
-                       reach && !reach->empty() ? reach : nullptr,
-                       body.body && body.body->built() ? body.body : nullptr,
-                       body.headBelow,
-                       shape && shape->on,
-                       ShapeGrowth{head,
-                                   reach && !reach->empty() ? reach : nullptr,
-                                   margin,
-                                   shape ? std::clamp(shape->volume, 0.f, 0.3f) : 0.f,
-                                   {shape ? shape->centre[0] : 0.f, shape ? shape->centre[1] : 0.f,
-                                    shape ? shape->centre[2] : 0.f}},
-                       lengthCap,
-                       shape && shape->on && reach && !reach->empty() &&
-                           std::any_of(reach->strokes.begin(), reach->strokes.end(), setsHem)};
+  GrowRange grow{s,
+                 head,
+                 margin,
+                 minSlide,
+                 float(prm.stepFraction * g.step),
+                 float(prm.minMagnitude * prm.minMagnitude),
+                 prm.maxLength,
+                 prm.maxSegments,
+                 roots,
+                 reach && !reach->empty() ? reach : nullptr,
+                 body.body && body.body->built() ? body.body : nullptr,
+                 body.headBelow,
+                 shape && shape->on,
+                 ShapeGrowth{head,
+                             reach && !reach->empty() ? reach : nullptr,
+                             margin,
+                             shape ? std::clamp(shape->volume, 0.f, 0.3f) : 0.f,
+                             {shape ? shape->centre[0] : 0.f, shape ? shape->centre[1] : 0.f,
+                              shape ? shape->centre[2] : 0.f}},
+                 lengthCap,
+                 shape && shape->on && reach && !reach->empty() &&
+                     std::any_of(reach->strokes.begin(), reach->strokes.end(), setsHem),
+                 nullptr};
+  if (shape && shape->on) {
+    out.cut.assign(roots.size(), 0);
+    grow.cut = out.cut.data();
+  }
   out.strandStart.resize(roots.size() + 1);
   const size_t n = roots.size();
   const int threads = parallel::threadCount();
@@ -515,6 +524,7 @@ Status growStrands(const Grid& g, const std::vector<float>& field,
     if (!grow(0, n, out.points, used, out.strandStart.data() + 1, maxPoints)) {
       out.points.clear();
       out.strandStart.assign(1, 0);
+      out.cut.clear();
       return Status::Error(StatusCode::OverMemoryCap, "grow: too many strand points");
     }
     out.points.resize(used);
@@ -539,6 +549,7 @@ Status growStrands(const Grid& g, const std::vector<float>& field,
   if (!ok || total / 3 > maxPoints) {
     out.points.clear();
     out.strandStart.assign(1, 0);
+    out.cut.clear();
     return Status::Error(StatusCode::OverMemoryCap, "grow: too many strand points");
   }
   out.points.resize(total);

@@ -59,6 +59,9 @@ struct UninitAllocator : std::allocator<T> {
 struct Strands {
   std::vector<float, UninitAllocator<float>> points;  // points[3 * point + axis]
   std::vector<uint32_t> strandStart;
+  // With the shape rules, one per strand: 1 where growth ended it at a line (the remaining
+  // length of the strokes around, a hem) rather than at its own length; empty without them.
+  std::vector<uint8_t> cut;
 };
 
 // The field in float, interleaved (v[3 * p + axis]), for cache-friendly interpolation.

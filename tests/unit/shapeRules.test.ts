@@ -223,4 +223,28 @@ describe('the shape rules on hand-drawn stroke sets', () => {
     expect(a).toBeGreaterThan(2);
     expect(b).toBeGreaterThan(0.85 * a);
   });
+
+  it("a bob's hem stays at its strokes' ends with length jitter: hair cut at a line keeps its length", async () => {
+    // fresh eyes (rounds 12, 14): a chin bob's hem sat 2-3 cm above where its strokes ended; the
+    // length jitter (up to a tenth of the length: 2.5 cm on bob hair) cut the hair that a hem or
+    // its strokes' end had already cut. Strand by strand (the same roots, in the same order), how
+    // much higher the hair that ends below the ears' middle ends with jitter 0.3 than without
+    const s = fixture('bob');
+    const tips = (h: StrandArrays) => {
+      const y: number[] = [];
+      eachStrand(h, (pts) => y.push(pts[pts.length - 1][1]));
+      return y;
+    };
+    const [plain, jittered] = [
+      tips(await grow(s)),
+      tips(await grow({ ...s, detail: { lengthJitter: 0.3 } })),
+    ];
+    expect(jittered.length).toBe(plain.length);
+    const rise = plain.flatMap((y, k) => (y < -0.3 ? [jittered[k] - y] : []));
+    console.log(
+      `bob: ${rise.length} strands end below the ears' middle; with length jitter 0.3 they end ${(10 * median(rise)).toFixed(2)} cm higher (median), ${(10 * quantile(rise, 0.9)).toFixed(2)} cm (p90)`,
+    );
+    expect(rise.length).toBeGreaterThan(500);
+    expect(median(rise)).toBeLessThan(0.02);
+  });
 });
