@@ -23,6 +23,7 @@
 #include "hair_engine.hpp"
 #include "hair_sim.hpp"
 #include "parallel.hpp"
+#include "strand_motion.hpp"
 
 using namespace hairsketch;
 

@@ -18,6 +18,7 @@
 #include "hair_sim.hpp"
 #include "head_distance.hpp"
 #include "parallel.hpp"
+#include "strand_motion.hpp"
 
 using namespace hairsketch;
 

@@ -1,6 +1,8 @@
 // The whole groom in motion: GuideFollowers (each strand bound to a guide, riding its displacement)
 // and StrandMotion (a grown groom: guides picked and resampled, ties bound to their tail, the
 // followers placed each frame and kept outside head and body), over HairSim (hair_sim.cpp).
+#include "strand_motion.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <vector>

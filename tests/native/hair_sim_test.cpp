@@ -11,6 +11,7 @@
 
 #include "head_distance.hpp"
 #include "parallel.hpp"
+#include "strand_motion.hpp"
 
 namespace hairsketch {
 namespace {
