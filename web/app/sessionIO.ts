@@ -312,7 +312,7 @@ export class LinkWriter {
   share(): Promise<string> {
     return this.copy(
       (href) => href,
-      (href) => `Link copied (${Math.round(href.length / 1024)} KB).`,
+      (href) => `Link copied (${href.length.toLocaleString('en-US')} characters).`,
       'The link is in the address bar (the clipboard is not available here).',
     );
   }
