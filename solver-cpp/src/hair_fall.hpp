@@ -222,11 +222,11 @@ constexpr float kHugLength = 1.2f, kHugJitter = 0.2f;
 // ear instead of hanging over it to a blunt line. Hair a stroke combs over an ear goes with the
 // stroke instead (it is not cut).
 constexpr float kTaperPastNape = 0.3f, kTaperPastEar = 0.15f;
-// Short hair (hugs) that a stroke's hair ends (the remaining length) ends up to kLayeredBand
-// before that end (scaled per strand by noise seeded where its root is, and never by more than
-// kLayeredShare of the length it had left at its root), as a layered cut's ends are spread over
-// the back and sides: not all on the line where the strokes end, a bowl's shelf.
-constexpr float kLayeredBand = 0.35f, kLayeredShare = 0.5f;
+// Short hair (hugs) that a stroke's hair ends (the remaining length) ends anywhere from
+// kLayeredPast past that end to kLayeredBand before it (by noise seeded where its root is; never
+// before it has used kLayeredShare of the length it had left at its root), as a layered cut's
+// ends are spread round the line where the strokes end: not all on it, a bowl's shelf.
+constexpr float kLayeredBand = 0.35f, kLayeredShare = 0.5f, kLayeredPast = 0.15f;
 // Short hair a stroke governs lies on the head as hair no stroke governs does when that stroke
 // never goes farther than this off the head (world units, 3 cm): a stroke drawn down past the nape
 // in a back view keeps its depth (the depth rule) and so leaves the neck as it curves in, and the

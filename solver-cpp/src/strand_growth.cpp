@@ -294,12 +294,15 @@ struct GrowRange {
               ? 1 + kTaperJitter *
                         (2 * rootNoise(std::abs(x - shaped.centre[0]) + kTaperNoiseShift, y, z) - 1)
               : 1.f;
-      // short hair a stroke's hair ends stops up to kLayeredBand early (the remaining length
-      // it stops at): a layered cut's spread ends
+      // short hair a stroke's hair ends stops from kLayeredPast past that end to kLayeredBand
+      // before it (the remaining length it stops at): a layered cut's ends, spread round the
+      // line where the strokes end
+      const float layeredNoise =
+          rootNoise(std::abs(x - shaped.centre[0]) + kLayeredNoiseShift, y, z);
       const float layeredEnd =
           hugs && endsWithCurve
-              ? std::min(kLayeredBand, kLayeredShare * remainingAtRoot) *
-                    rootNoise(std::abs(x - shaped.centre[0]) + kLayeredNoiseShift, y, z)
+              ? std::min(kLayeredBand, kLayeredShare * remainingAtRoot) * layeredNoise -
+                    kLayeredPast
               : 0.f;
       // and is never shorter than the hair rooted just past that end (kPastEndLength): no
       // stubs on the scalp just above the strokes' ends
