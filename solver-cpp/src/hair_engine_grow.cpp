@@ -215,20 +215,15 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
     // the length jitter (which cut tails up to a tenth short of their strokes' ends); hair wound
     // into a bun's coil, without flyaways and frizz too (a bun is wound tight and its ends tucked:
     // a new session's 1 % of flyaways stood round it as a wiry grey halo)
-    // With the shape rules, hair growth ended at a line (its strokes' end, a hem) keeps its
-    // length too: it ends over the end spread's band at that line, as a cut does, and the jitter
-    // (up to a tenth of the length: 2.5 cm on a bob) lifted a bob's hem above its strokes' ends.
-    const bool cutAtLine = strands_.cut.size() == n;
-    if ((ties_ || cutAtLine) && anyDetail) {
+    if (ties_ && anyDetail) {
       const size_t own = groups.size();
-      std::vector<int64_t> tiedGroup(2 * own, -1);  // [g]: a tail's or cut, [own + g]: a bun's
+      std::vector<int64_t> tiedGroup(2 * own, -1);  // [g]: a tail's, [own + g]: a bun's
       for (size_t st = 0; st < n; ++st) {
-        const bool tied = ties_ && strandTailCurve_[st] >= 0;
-        if (!tied && !(cutAtLine && strands_.cut[st])) continue;
+        if (strandTailCurve_[st] < 0) continue;
         const uint32_t g = groupOf[st];
         if (g >= own) continue;
         const DetailParams& d = groups[g];
-        const bool bun = tied && inBun[st] && (d.flyaway.share > 0 || d.frizz.distance > 0);
+        const bool bun = inBun[st] && (d.flyaway.share > 0 || d.frizz.distance > 0);
         if (!(d.lengthJitter > 0) && !bun) continue;
         const size_t slot = bun ? own + g : g;
         if (tiedGroup[slot] < 0) {
@@ -244,8 +239,20 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
         groupOf[st] = uint32_t(tiedGroup[slot]);
       }
     }
+    // With the shape rules, each strand's exceptions to its group (StrandKeeps), in its group
+    // (its clumps stay whole): hair growth ended at a line (its strokes' end, a hem) keeps its
+    // length, ending over the end spread's band at that line as a cut does (the jitter, up to a
+    // tenth of the length, 2.5 cm on a bob, lifted a bob's hem above its strokes' ends); short
+    // hair lying on the head has no flyaways (they stood up as spikes on a slicked crown)
+    std::vector<uint8_t> keeps;
+    if (strands_.cut.size() == n && strands_.hugs.size() == n) {
+      keeps.resize(n);
+      for (size_t st = 0; st < n; ++st)
+        keeps[st] =
+            uint8_t((strands_.cut[st] ? kKeepLength : 0) | (strands_.hugs[st] ? kNoFlyaway : 0));
+    }
     s = applyDetail(groups, groupOf, key, rp.seed, strands_, 255, finish_ ? &endSpread : nullptr,
-                    finish_, &centre_);
+                    finish_, &centre_, keeps.empty() ? nullptr : &keeps);
     // cutting ends back moves no point: only detail needs keeping outside again
     if (head && anyDetail) {
       keepOutsideHead(*head, float(gp.margin), strands_);

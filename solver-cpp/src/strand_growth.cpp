@@ -168,6 +168,7 @@ struct GrowRange {
   const float* lengthCap;  // per root (null: none)
   bool hems;               // with the shape rules, a stroke sets a hem (setsHem)
   uint8_t* cut;            // per root (Strands::cut), or null
+  uint8_t* hugsOut;        // per root (Strands::hugs), or null
 
   // Slides the step from x to n (which ends within the margin of `mesh`) over the body
   // (BodyCollider): n and segLen become the slid step's end and length. prev: the strand's last
@@ -281,6 +282,7 @@ struct GrowRange {
                kHugLength *
                    (1 + kHugJitter * (2 * rootNoise(std::abs(x - shaped.centre[0]), y, z) - 1));
       }
+      if (hugsOut) hugsOut[r] = hugs ? 1 : 0;
       // short hair whose nearest stroke never leaves the head by kDrawnLift lies on the head
       // wherever that stroke governs it (ShapeGrowth::layOnHead's liesOn)
       const bool liesOn =
@@ -472,6 +474,7 @@ Status growStrands(const Grid& g, const std::vector<float>& field,
   out.points.clear();
   out.strandStart.assign(1, 0);
   out.cut.clear();
+  out.hugs.clear();
   if (!g.valid()) return Status::Error(StatusCode::NotReady, "grow: no grid");
   if (field.size() != size_t(g.size()) * 3)
     return Status::Error(StatusCode::NotReady, "grow: no field for this grid (solve first)");
@@ -511,10 +514,13 @@ Status growStrands(const Grid& g, const std::vector<float>& field,
                  lengthCap,
                  shape && shape->on && reach && !reach->empty() &&
                      std::any_of(reach->strokes.begin(), reach->strokes.end(), setsHem),
+                 nullptr,
                  nullptr};
   if (shape && shape->on) {
     out.cut.assign(roots.size(), 0);
     grow.cut = out.cut.data();
+    out.hugs.assign(roots.size(), 0);
+    grow.hugsOut = out.hugs.data();
   }
   out.strandStart.resize(roots.size() + 1);
   const size_t n = roots.size();
@@ -528,6 +534,7 @@ Status growStrands(const Grid& g, const std::vector<float>& field,
       out.points.clear();
       out.strandStart.assign(1, 0);
       out.cut.clear();
+      out.hugs.clear();
       return Status::Error(StatusCode::OverMemoryCap, "grow: too many strand points");
     }
     out.points.resize(used);
@@ -553,6 +560,7 @@ Status growStrands(const Grid& g, const std::vector<float>& field,
     out.points.clear();
     out.strandStart.assign(1, 0);
     out.cut.clear();
+    out.hugs.clear();
     return Status::Error(StatusCode::OverMemoryCap, "grow: too many strand points");
   }
   out.points.resize(total);

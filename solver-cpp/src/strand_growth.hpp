@@ -62,6 +62,9 @@ struct Strands {
   // With the shape rules, one per strand: 1 where growth ended it at a line (the remaining
   // length of the strokes around, a hem) rather than at its own length; empty without them.
   std::vector<uint8_t> cut;
+  // With the shape rules, one per strand: 1 where it is short hair that lies on the head
+  // (ShapeGrowth::layOnHead's hugs, kHugLength); empty without them.
+  std::vector<uint8_t> hugs;
 };
 
 // The field in float, interleaved (v[3 * p + axis]), for cache-friendly interpolation.

@@ -439,6 +439,49 @@ TEST(StrandDetail, LengthJitterKeepsLengthsBetweenOneMinusJAndOneTimesTheLength)
   }
 }
 
+TEST(StrandDetail, AStrandKeptByKeepsHasItsLengthAndNoFlyawayTheOthersTheirGroups) {
+  // 200 strands 2 units long, length jitter 0.6 and every strand a flyaway: the even ones kept
+  // (kKeepLength | kNoFlyaway) end bit for bit as grown, the odd ones are cut and moved, as
+  // without keeps
+  std::vector<Strand> in;
+  for (int k = 0; k < 200; ++k)
+    in.push_back(straight(V3(0.01 * k, 1, 0), V3(std::sin(k), 1, std::cos(k)), 41, 0.05));
+  DetailParams d;
+  d.lengthJitter = 0.6;
+  d.flyaway.share = 1;
+  d.flyaway.distance = 0.2;
+  d.flyaway.start = 0.3;
+  const size_t n = in.size();
+  std::vector<uint8_t> keeps(n, 0);
+  for (size_t k = 0; k < n; k += 2) keeps[k] = kKeepLength | kNoFlyaway;
+  const Strands grown = makeStrands(in);
+  Strands kept = grown, plain = grown;
+  const V3 centre(0, 0, 0);
+  ASSERT_TRUE(applyDetail({d}, std::vector<uint32_t>(n, 0), iota(n), 7, kept, 255, nullptr, false,
+                          &centre, &keeps)
+                  .ok());
+  ASSERT_TRUE(
+      applyDetail({d}, std::vector<uint32_t>(n, 0), iota(n), 7, plain, 255, nullptr, false, &centre)
+          .ok());
+  int cut = 0;
+  for (size_t k = 0; k < n; ++k) {
+    if (k % 2 == 0) {
+      EXPECT_EQ(strandOf(kept, k), strandOf(grown, k)) << "strand " << k;
+    } else {
+      EXPECT_EQ(strandOf(kept, k), strandOf(plain, k)) << "strand " << k;
+      cut += polyLength(strandOf(kept, k)) < 2.0 - 1e-3;
+    }
+  }
+  EXPECT_GT(cut, 90);
+  // a keeps of the wrong size is refused, strands untouched
+  Strands bad = makeStrands(in);
+  std::vector<uint8_t> shortKeeps(n - 1, 0);
+  EXPECT_FALSE(applyDetail({d}, std::vector<uint32_t>(n, 0), iota(n), 7, bad, 255, nullptr, false,
+                           &centre, &shortKeeps)
+                   .ok());
+  EXPECT_TRUE(sameBits(bad, makeStrands(in)));
+}
+
 TEST(StrandDetail, RejectsBadParametersNamingTheField) {
   struct Case {
     const char* field;
