@@ -10,12 +10,12 @@ import { packCurves } from '../../web/model/curveSet';
 import type { CurveSet, GridSpec } from '../../web/model/hairArrays';
 import type { StyleCurve } from '../../web/model/session';
 import { SolverError } from '../../web/solver/engine';
+import type { SolverErrorKind } from '../../web/solver/protocol';
 import { loadRawSolver, loadSolverEngine } from '../../web/solver/wasmEngine';
 import {
   CURVE_SET_HEADER,
   GRID_INPUT,
   ITERATE_PROGRESS,
-  type SolverErrorKind,
   STATS_OUTPUT,
   solverErrorKind,
   structLayout,

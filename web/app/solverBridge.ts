@@ -19,9 +19,8 @@ import {
 } from '../model/session';
 import { needsSolve } from '../model/sessionSchema';
 import type { Vec3 } from '../model/vec3';
-import type { SolverName } from '../solver/protocol';
+import type { SolverErrorKind, SolverName } from '../solver/protocol';
 import { type SolveResult, SolverClient } from '../solver/solverClient';
-import type { SolverErrorKind } from '../solver/wasmStructs';
 
 /** Strands grown for a preview or a first look: at most this many, fewer when the view draws a
  *  sample (a slow GPU), never fewer than the minimum. */

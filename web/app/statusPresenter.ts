@@ -4,8 +4,8 @@
 import type { EditorChange } from '../editor/editor';
 import { gridPointCount } from '../model/grid';
 import type { GridSpec } from '../model/hairArrays';
+import type { SolverErrorKind } from '../solver/protocol';
 import type { SolveResult } from '../solver/solverClient';
-import type { SolverErrorKind } from '../solver/wasmStructs';
 import type { StatusLine } from '../ui/status';
 import type { BusyPhase } from './solverBridge';
 

@@ -5,8 +5,7 @@
 import type { GridSpec, ScalpMesh } from '../model/hairArrays';
 import type { MotionName } from '../model/motion';
 import type { SessionState } from '../model/session';
-import type { SolverName } from '../solver/protocol';
-import type { SolverErrorKind } from '../solver/wasmStructs';
+import type { SolverErrorKind, SolverName } from '../solver/protocol';
 import type { ExportFormat } from './formats';
 import type { UvSurface } from './surfaceUv';
 import type { ExportHead } from './types';

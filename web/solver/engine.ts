@@ -11,9 +11,27 @@ import type {
   ScalpMesh,
   StrandArrays,
 } from '../model/hairArrays';
-import type { SolverName, SolveStats } from './protocol';
-import type { MotionOptions, MotionRun } from './wasmMotion';
-import type { SolverErrorKind } from './wasmStructs';
+import type { MotionFrame, MotionName } from '../model/motion';
+import type { SolverErrorKind, SolverName, SolveStats } from './protocol';
+
+/** A groom in motion over an engine's head (SolverEngine.startMotion; wasmMotion.ts). */
+export interface MotionRun {
+  /** Frame 0 (the groom as given) before the first step, then one frame per call; the points
+   *  are written into `into` when it has their length (else a new array). */
+  step(into?: Float32Array): MotionFrame;
+  /** Advances like step without reading the frame (frames skipped when catching up). */
+  advance(): void;
+  readonly guides: number;
+  dispose(): void;
+}
+
+export interface MotionOptions {
+  motion: MotionName;
+  seed: number;
+  /** Collide with the engine's body (the session's bust is on). */
+  body: boolean;
+  maxGuides?: number;
+}
 
 export interface SolverEngine {
   /** Analyse the grid and create the solver. Throws SolverError on bad input. */
@@ -24,9 +42,6 @@ export interface SolverEngine {
    *  triangle): the next grow samples roots over it; nothing else is rebuilt. Throws SolverError
    *  (the old mask stays) on a wrong length. Optional (test fakes). */
   setScalpMask?(scalp: Uint8Array): void;
-  /** The body below the head that hair slides over in sessions with `bust` (hairArrays.ts
-   *  ScalpMesh.body; null: none). */
-  setBody?(body: { positions: Float32Array; indices: Uint32Array } | null): void;
   /** The body under the head (a bust: neck, shoulders, chest, back), a closed triangle mesh
    *  apart from the head's (3 numbers per vertex, 3 indices per triangle, counter-clockwise =
    *  outward): with the session's bust setting on, hair slides over it and is kept out of it.

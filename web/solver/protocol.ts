@@ -32,9 +32,16 @@ import type {
   StrandVertexArrays,
 } from '../model/hairArrays';
 import type { MotionName } from '../model/motion';
-import type { SolverErrorKind } from './wasmStructs';
-
 export type SolverName = 'cg' | 'fast' | 'exact' | 'auto';
+
+/** What went wrong in a solver call (wasmStructs.ts SOLVER_STATUS gives the binding's code of
+ *  each). */
+export type SolverErrorKind =
+  | 'invalid_input' // malformed input: sizes, ranges, layout, an unknown name
+  | 'non_finite' // a NaN or infinity in the input
+  | 'over_memory_cap' // the grid or its factor would not fit the memory cap
+  | 'not_ready' // called before what it needs (no grid, no scalp, not solved since the edit)
+  | 'internal'; // a numerical failure or anything else
 
 export interface SolveStats {
   method: string;

@@ -18,8 +18,7 @@
 import { contentKey, hairRequestKey } from '../model/curveSet';
 import type { GrowthParams } from '../model/growthParams';
 import type { CurveSet, HairOptions, ScalpMesh } from '../model/hairArrays';
-import type { FromWorker, ToWorker } from './protocol';
-import type { SolverErrorKind } from './wasmStructs';
+import type { FromWorker, SolverErrorKind, ToWorker } from './protocol';
 
 export type InitMessage = Extract<ToWorker, { type: 'init' }>;
 export type SolveResult = Extract<FromWorker, { type: 'result' }>;

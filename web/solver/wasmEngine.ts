@@ -17,7 +17,13 @@ import type {
   ScalpMesh,
   StrandArrays,
 } from '../model/hairArrays';
-import { type IterateProgress, type SolverEngine, SolverError } from './engine';
+import {
+  type IterateProgress,
+  type MotionOptions,
+  type MotionRun,
+  type SolverEngine,
+  SolverError,
+} from './engine';
 import type { SolverName, SolveStats } from './protocol';
 import {
   callOut,
@@ -34,7 +40,7 @@ import {
   withScratch,
 } from './wasmMemory';
 import { instantiate, type LoadOptions, moduleLabel } from './wasmModule';
-import { createMotion, type MotionOptions, type MotionRun } from './wasmMotion';
+import { createMotion } from './wasmMotion';
 import { toRawStats } from './wasmRawSolver';
 import {
   AVOID_INPUT,

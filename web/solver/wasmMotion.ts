@@ -3,32 +3,9 @@
 // (into a caller's array of the right length when given: no allocation a frame).
 import type { HairSolverModule } from '../generated/hairsolver.mjs';
 import type { StrandArrays } from '../model/hairArrays';
-import {
-  MOTION_MAX_GUIDES,
-  MOTION_PIVOT,
-  type MotionFrame,
-  type MotionName,
-  motionCode,
-} from '../model/motion';
+import { MOTION_MAX_GUIDES, MOTION_PIVOT, type MotionFrame, motionCode } from '../model/motion';
+import type { MotionOptions, MotionRun } from './engine';
 import { check, withInputs, withScratch } from './wasmMemory';
-
-export interface MotionRun {
-  /** Frame 0 (the groom as given) before the first step, then one frame per call; the points
-   *  are written into `into` when it has their length (else a new array). */
-  step(into?: Float32Array): MotionFrame;
-  /** Advances like step without reading the frame (frames skipped when catching up). */
-  advance(): void;
-  readonly guides: number;
-  dispose(): void;
-}
-
-export interface MotionOptions {
-  motion: MotionName;
-  seed: number;
-  /** Collide with the engine's body (the session's bust is on). */
-  body: boolean;
-  maxGuides?: number;
-}
 
 export function createMotion(
   mod: HairSolverModule,

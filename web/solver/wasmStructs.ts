@@ -4,6 +4,7 @@
 // SolverErrorKind with its message in hs_last_error(). Inputs and outputs that are more than a
 // handle and an array cross as C structs whose layout is declared here once (structLayout) and
 // mirrored by one struct in the binding (static_assert on its size, offsets checked at load).
+import type { SolverErrorKind } from './protocol';
 
 /** Status codes of the binding (binding.cpp HsStatus has the same values). */
 export const SOLVER_STATUS = {
@@ -13,10 +14,7 @@ export const SOLVER_STATUS = {
   over_memory_cap: 3, // the grid or its factor would not fit the memory cap
   not_ready: 4, // called before what it needs (no grid, no scalp, not solved since the edit)
   internal: 5, // a numerical failure or anything else
-} as const;
-
-/** What went wrong in a solver call. */
-export type SolverErrorKind = Exclude<keyof typeof SOLVER_STATUS, 'ok'>;
+} as const satisfies Record<SolverErrorKind | 'ok', number>;
 
 /** The kind of a non-zero status code ('internal' for a code this side does not know). */
 export function solverErrorKind(code: number): SolverErrorKind {

@@ -24,11 +24,14 @@ import {
 } from '../model/hairArrays';
 import { engineSettings } from '../model/sessionSchema';
 import { everyOtherPoint } from '../model/strandSubsample';
-import { type IterateProgress, type SolverEngine, SolverError } from '../solver/engine';
-import type { FromWorker, SolverName, ToWorker } from '../solver/protocol';
+import {
+  type IterateProgress,
+  type MotionRun,
+  type SolverEngine,
+  SolverError,
+} from '../solver/engine';
+import type { FromWorker, SolverErrorKind, SolverName, ToWorker } from '../solver/protocol';
 import { convergeField, solveFraction } from '../solver/solveRecipe';
-import type { MotionRun } from '../solver/wasmMotion';
-import type { SolverErrorKind } from '../solver/wasmStructs';
 import { lineAttributes } from '../viewer/strandAttributes';
 
 export type Post = (msg: FromWorker) => void;
