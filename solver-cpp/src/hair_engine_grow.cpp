@@ -239,20 +239,13 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
         groupOf[st] = uint32_t(tiedGroup[slot]);
       }
     }
-    // With the shape rules, each strand's exceptions to its group (StrandKeeps), in its group
-    // (its clumps stay whole): hair growth ended at a line (its strokes' end, a hem) keeps its
+    // With the shape rules, what growth found of each strand (Strands::flags) excepts it from
+    // its group's detail, in its group (its clumps stay whole): hair ended at a line keeps its
     // length, ending over the end spread's band at that line as a cut does (the jitter, up to a
     // tenth of the length, 2.5 cm on a bob, lifted a bob's hem above its strokes' ends); short
     // hair lying on the head has no flyaways (they stood up as spikes on a slicked crown)
-    std::vector<uint8_t> keeps;
-    if (strands_.cut.size() == n && strands_.hugs.size() == n) {
-      keeps.resize(n);
-      for (size_t st = 0; st < n; ++st)
-        keeps[st] =
-            uint8_t((strands_.cut[st] ? kKeepLength : 0) | (strands_.hugs[st] ? kNoFlyaway : 0));
-    }
     s = applyDetail(groups, groupOf, key, rp.seed, strands_, 255, finish_ ? &endSpread : nullptr,
-                    finish_, &centre_, keeps.empty() ? nullptr : &keeps);
+                    finish_, &centre_, strands_.flags.size() == n ? &strands_.flags : nullptr);
     // cutting ends back moves no point: only detail needs keeping outside again
     if (head && anyDetail) {
       keepOutsideHead(*head, float(gp.margin), strands_);

@@ -47,7 +47,7 @@ Status validateDetail(const DetailParams& d) {
 Status applyDetail(const std::vector<DetailParams>& groups, const std::vector<uint32_t>& groupOf,
                    const std::vector<uint32_t>& key, uint32_t seed, Strands& strands, int maxPoints,
                    const std::vector<float>* endSpread, bool ringlets,
-                   const Eigen::Vector3d* headCentre, const std::vector<uint8_t>* keeps) {
+                   const Eigen::Vector3d* headCentre, const std::vector<uint8_t>* flags) {
   using namespace strand_detail;
   auto invalid = [](std::string m) {
     return Status::Error(StatusCode::InvalidInput, std::move(m));
@@ -64,10 +64,10 @@ Status applyDetail(const std::vector<DetailParams>& groups, const std::vector<ui
   if (endSpread && endSpread->size() != nS)
     return invalid("detail: endSpread has " + std::to_string(endSpread->size()) + " entries for " +
                    std::to_string(nS) + " strands");
-  if (keeps && keeps->size() != nS)
-    return invalid("detail: keeps has " + std::to_string(keeps->size()) + " entries for " +
+  if (flags && flags->size() != nS)
+    return invalid("detail: flags has " + std::to_string(flags->size()) + " entries for " +
                    std::to_string(nS) + " strands");
-  auto excepted = [&](size_t s, uint8_t bit) { return keeps && ((*keeps)[s] & bit) != 0; };
+  auto flagged = [&](size_t s, uint8_t bit) { return flags && ((*flags)[s] & bit) != 0; };
   if (nS == 0) return Status::Ok();
   if (start[0] != 0 || size_t(start[nS]) * 3 != strands.points.size())
     return invalid("detail: strandStart does not match the points");
@@ -113,7 +113,7 @@ Status applyDetail(const std::vector<DetailParams>& groups, const std::vector<ui
       const size_t b = start[s], count = start[s + 1] - b;
       start[s] = uint32_t(out);
       const DetailParams& d = groups[groupOf[s]];
-      const bool jitter = count >= 2 && d.any() && d.lengthJitter > 0 && !excepted(s, kKeepLength);
+      const bool jitter = count >= 2 && d.any() && d.lengthJitter > 0 && !flagged(s, kCutAtLine);
       const double spread = count >= 2 ? spreadOf(s) : 0.0;
       if (!jitter && spread == 0 && count <= cap) {
         if (out != b) std::memmove(P + 3 * out, P + 3 * b, 3 * count * sizeof(float));
@@ -161,7 +161,7 @@ Status applyDetail(const std::vector<DetailParams>& groups, const std::vector<ui
     for (size_t s = 0; s < nS; ++s) {
       const size_t count = start[s + 1] - start[s];
       const FlyawayParams& f = groups[groupOf[s]].flyaway;
-      if (count < 2 || excepted(s, kNoFlyaway) || !flyawayPicked(f, seed, key[s])) continue;
+      if (count < 2 || flagged(s, kLiesOnHead) || !flyawayPicked(f, seed, key[s])) continue;
       load(P + 3 * size_t(start[s]), count, w.p);
       flyaway(f, seed, key[s], centre, w);
       store(w.p, P + 3 * size_t(start[s]));

@@ -121,18 +121,16 @@ Status validateDetail(const DetailParams& d);
 // ringlets: a clumped strand curls in phase with its clump's guide, so a clump's strands wind
 // round together (ringlets) instead of each at its own phase (a crimped texture).
 // headCentre (optional): the head's centre flyaways move away from (the origin when absent).
-// keeps (optional, one per strand, StrandKeeps bits): exceptions to a strand's group without
-// moving it to another group (clumps stay whole).
+// flags (optional, one per strand, growth's StrandFlag bits: Strands::flags): exceptions to a
+// strand's group without moving it to another group (clumps stay whole). A kCutAtLine strand
+// takes no length jitter (hair cut at a line keeps its length); a kLiesOnHead strand is never a
+// flyaway (a stray hair 1.2 cm off at the tip of 10 cm hair stands up as a spike on a slicked
+// crown).
 Status applyDetail(const std::vector<DetailParams>& groups, const std::vector<uint32_t>& groupOf,
                    const std::vector<uint32_t>& key, uint32_t seed, Strands& strands,
                    int maxPoints = 255, const std::vector<float>* endSpread = nullptr,
                    bool ringlets = false, const Eigen::Vector3d* headCentre = nullptr,
-                   const std::vector<uint8_t>* keeps = nullptr);
-
-// applyDetail's per-strand exceptions: kKeepLength, no length jitter (hair cut at a line);
-// kNoFlyaway, not picked as a flyaway (short hair lying on the head: a stray hair 1.2 cm off at
-// the tip of 10 cm hair stands up as a spike on a slicked crown).
-enum StrandKeeps : uint8_t { kKeepLength = 1, kNoFlyaway = 2 };
+                   const std::vector<uint8_t>* flags = nullptr);
 
 // The end spread of sessions with finished edges (world units: 1.2 cm), and the most of a
 // strand's length it may take.

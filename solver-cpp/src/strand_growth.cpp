@@ -167,8 +167,7 @@ struct GrowRange {
   ShapeGrowth shaped;
   const float* lengthCap;  // per root (null: none)
   bool hems;               // with the shape rules, a stroke sets a hem (setsHem)
-  uint8_t* cut;            // per root (Strands::cut), or null
-  uint8_t* hugsOut;        // per root (Strands::hugs), or null
+  uint8_t* flags;          // per root (Strands::flags), or null
 
   // Slides the step from x to n (which ends within the margin of `mesh`) over the body
   // (BodyCollider): n and segLen become the slid step's end and length. prev: the strand's last
@@ -282,7 +281,7 @@ struct GrowRange {
                kHugLength *
                    (1 + kHugJitter * (2 * rootNoise(std::abs(x - shaped.centre[0]), y, z) - 1));
       }
-      if (hugsOut) hugsOut[r] = hugs ? 1 : 0;
+      if (flags) flags[r] = hugs ? kLiesOnHead : 0;
       // short hair whose nearest stroke never leaves the head by kDrawnLift lies on the head
       // wherever that stroke governs it (ShapeGrowth::layOnHead's liesOn)
       const bool liesOn =
@@ -299,11 +298,10 @@ struct GrowRange {
       // short hair a stroke's hair ends stops from kLayeredPast past that end to kLayeredBand
       // before it (the remaining length it stops at): a layered cut's ends, spread round the
       // line where the strokes end
-      const float layeredNoise =
-          rootNoise(std::abs(x - shaped.centre[0]) + kLayeredNoiseShift, y, z);
       const float layeredEnd =
           hugs && endsWithCurve
-              ? std::min(kLayeredBand, kLayeredShare * remainingAtRoot) * layeredNoise -
+              ? std::min(kLayeredBand, kLayeredShare * remainingAtRoot) *
+                        rootNoise(std::abs(x - shaped.centre[0]) + kLayeredNoiseShift, y, z) -
                     kLayeredPast
               : 0.f;
       // and is never shorter than the hair rooted just past that end (kPastEndLength): no
@@ -440,7 +438,7 @@ struct GrowRange {
           if ((ny < hem && ny < y && length + segLen > kHemKeeps * strandMax) ||
               (endsWithCurve && length + segLen > shortest &&
                reachRemaining(*reach, nx, ny, nz, around) < layeredEnd)) {
-            if (cut) cut[r] = 1;
+            if (flags) flags[r] |= kCutAtLine;
             break;
           }
           length += segLen;
@@ -473,8 +471,7 @@ Status growStrands(const Grid& g, const std::vector<float>& field,
   // UninitAllocator), so a repeated growth neither reallocates nor refills it.
   out.points.clear();
   out.strandStart.assign(1, 0);
-  out.cut.clear();
-  out.hugs.clear();
+  out.flags.clear();
   if (!g.valid()) return Status::Error(StatusCode::NotReady, "grow: no grid");
   if (field.size() != size_t(g.size()) * 3)
     return Status::Error(StatusCode::NotReady, "grow: no field for this grid (solve first)");
@@ -514,13 +511,10 @@ Status growStrands(const Grid& g, const std::vector<float>& field,
                  lengthCap,
                  shape && shape->on && reach && !reach->empty() &&
                      std::any_of(reach->strokes.begin(), reach->strokes.end(), setsHem),
-                 nullptr,
                  nullptr};
   if (shape && shape->on) {
-    out.cut.assign(roots.size(), 0);
-    grow.cut = out.cut.data();
-    out.hugs.assign(roots.size(), 0);
-    grow.hugsOut = out.hugs.data();
+    out.flags.assign(roots.size(), 0);
+    grow.flags = out.flags.data();
   }
   out.strandStart.resize(roots.size() + 1);
   const size_t n = roots.size();
@@ -533,8 +527,7 @@ Status growStrands(const Grid& g, const std::vector<float>& field,
     if (!grow(0, n, out.points, used, out.strandStart.data() + 1, maxPoints)) {
       out.points.clear();
       out.strandStart.assign(1, 0);
-      out.cut.clear();
-      out.hugs.clear();
+      out.flags.clear();
       return Status::Error(StatusCode::OverMemoryCap, "grow: too many strand points");
     }
     out.points.resize(used);
@@ -559,8 +552,7 @@ Status growStrands(const Grid& g, const std::vector<float>& field,
   if (!ok || total / 3 > maxPoints) {
     out.points.clear();
     out.strandStart.assign(1, 0);
-    out.cut.clear();
-    out.hugs.clear();
+    out.flags.clear();
     return Status::Error(StatusCode::OverMemoryCap, "grow: too many strand points");
   }
   out.points.resize(total);

@@ -56,15 +56,17 @@ struct UninitAllocator : std::allocator<T> {
   }
 };
 
+// What growth found of a strand (Strands::flags): kCutAtLine, it ended at a line (the remaining
+// length of the strokes around, a hem) rather than at its own length; kLiesOnHead, it is short
+// hair that lies on the head (ShapeGrowth::layOnHead's hugs, kHugLength).
+enum StrandFlag : uint8_t { kCutAtLine = 1, kLiesOnHead = 2 };
+
 struct Strands {
   std::vector<float, UninitAllocator<float>> points;  // points[3 * point + axis]
   std::vector<uint32_t> strandStart;
-  // With the shape rules, one per strand: 1 where growth ended it at a line (the remaining
-  // length of the strokes around, a hem) rather than at its own length; empty without them.
-  std::vector<uint8_t> cut;
-  // With the shape rules, one per strand: 1 where it is short hair that lies on the head
-  // (ShapeGrowth::layOnHead's hugs, kHugLength); empty without them.
-  std::vector<uint8_t> hugs;
+  // With the shape rules, one per strand: what growth found (StrandFlag bits); empty without
+  // them.
+  std::vector<uint8_t> flags;
 };
 
 // The field in float, interleaved (v[3 * p + axis]), for cache-friendly interpolation.

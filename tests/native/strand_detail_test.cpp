@@ -439,10 +439,10 @@ TEST(StrandDetail, LengthJitterKeepsLengthsBetweenOneMinusJAndOneTimesTheLength)
   }
 }
 
-TEST(StrandDetail, AStrandKeptByKeepsHasItsLengthAndNoFlyawayTheOthersTheirGroups) {
+TEST(StrandDetail, AFlaggedStrandHasItsLengthAndNoFlyawayTheOthersTheirGroups) {
   // 200 strands 2 units long, length jitter 0.6 and every strand a flyaway: the even ones kept
-  // (kKeepLength | kNoFlyaway) end bit for bit as grown, the odd ones are cut and moved, as
-  // without keeps
+  // (kCutAtLine | kLiesOnHead) end bit for bit as grown, the odd ones are cut and moved, as
+  // without flags
   std::vector<Strand> in;
   for (int k = 0; k < 200; ++k)
     in.push_back(straight(V3(0.01 * k, 1, 0), V3(std::sin(k), 1, std::cos(k)), 41, 0.05));
@@ -452,13 +452,13 @@ TEST(StrandDetail, AStrandKeptByKeepsHasItsLengthAndNoFlyawayTheOthersTheirGroup
   d.flyaway.distance = 0.2;
   d.flyaway.start = 0.3;
   const size_t n = in.size();
-  std::vector<uint8_t> keeps(n, 0);
-  for (size_t k = 0; k < n; k += 2) keeps[k] = kKeepLength | kNoFlyaway;
+  std::vector<uint8_t> flags(n, 0);
+  for (size_t k = 0; k < n; k += 2) flags[k] = kCutAtLine | kLiesOnHead;
   const Strands grown = makeStrands(in);
   Strands kept = grown, plain = grown;
   const V3 centre(0, 0, 0);
   ASSERT_TRUE(applyDetail({d}, std::vector<uint32_t>(n, 0), iota(n), 7, kept, 255, nullptr, false,
-                          &centre, &keeps)
+                          &centre, &flags)
                   .ok());
   ASSERT_TRUE(
       applyDetail({d}, std::vector<uint32_t>(n, 0), iota(n), 7, plain, 255, nullptr, false, &centre)
@@ -473,11 +473,11 @@ TEST(StrandDetail, AStrandKeptByKeepsHasItsLengthAndNoFlyawayTheOthersTheirGroup
     }
   }
   EXPECT_GT(cut, 90);
-  // a keeps of the wrong size is refused, strands untouched
+  // flags of the wrong size is refused, strands untouched
   Strands bad = makeStrands(in);
-  std::vector<uint8_t> shortKeeps(n - 1, 0);
+  std::vector<uint8_t> shortFlags(n - 1, 0);
   EXPECT_FALSE(applyDetail({d}, std::vector<uint32_t>(n, 0), iota(n), 7, bad, 255, nullptr, false,
-                           &centre, &shortKeeps)
+                           &centre, &shortFlags)
                    .ok());
   EXPECT_TRUE(sameBits(bad, makeStrands(in)));
 }
