@@ -227,6 +227,16 @@ constexpr float kTaperPastNape = 0.3f, kTaperPastEar = 0.15f;
 // before it has used kLayeredShare of the length it had left at its root), as a layered cut's
 // ends are spread round the line where the strokes end: not all on it, a bowl's shelf.
 constexpr float kLayeredBand = 0.35f, kLayeredShare = 0.5f, kLayeredPast = 0.15f;
+// A crown's whorl, not a seam: where the field sends the hair apart across a line that runs
+// across the head (strokes drawn forward from the crown and others down the back from the same
+// place), hair rooted within about kSeamProbe of the line first lies along it, outward from the
+// head's mid-plane (down on the sides), fading out over kSeamCoverLength; by how sharply the
+// field parts there (the turn of its direction across the probe, from kSeamLow to kSeamHigh) and
+// how far the line runs across the head rather than front to back (kSeamAcrossLow to
+// kSeamAcrossHigh of 1 - |t.z|, t the line's direction): the line is covered as a whorl is, not
+// bare scalp as a parting. Lines that run front to back (the partings strokes make) stay partings.
+constexpr float kSeamProbe = 0.12f, kSeamLow = 0.4f, kSeamHigh = 0.8f, kSeamCoverLength = 0.35f,
+                kSeamAcrossLow = 0.4f, kSeamAcrossHigh = 0.8f;
 // Short hair a stroke governs lies on the head as hair no stroke governs does when that stroke
 // never goes farther than this off the head (world units, 3 cm): a stroke drawn down past the nape
 // in a back view keeps its depth (the depth rule) and so leaves the neck as it curves in, and the

@@ -633,4 +633,88 @@ TEST(ShapeGrowth, ShortHairAStrokesHairEndsHasItsEndsSpreadAsALayeredCut) {
   }
 }
 
+namespace {
+
+// A field that parts at coordinate `axis` = at: along +axis past it, along -axis before it
+// (turning over the one lattice cell that holds `at`, as a field between strokes drawn both ways
+// from one line does).
+std::vector<float> partingField(const Grid& g, int axis, float at) {
+  std::vector<float> f(size_t(g.size()) * 3, 0.f);
+  for (int k = 0; k < g.nz; ++k)
+    for (int j = 0; j < g.ny; ++j)
+      for (int i = 0; i < g.nx; ++i) {
+        const Eigen::Vector3d p = g.position(i, j, k);
+        const size_t q = size_t(i) + size_t(j) * g.nx + size_t(k) * g.nx * g.ny;
+        f[3 * q + axis] = p[axis] > at ? 1.f : -1.f;
+      }
+  return f;
+}
+
+// The unit direction from strand s's root to its first point `arc` or more along it.
+Eigen::Vector3f firstDirection(const Strands& st, size_t s, float arc) {
+  const float* r = &st.points[3 * size_t(st.strandStart[s])];
+  float len = 0;
+  for (uint32_t p = st.strandStart[s] + 1; p < st.strandStart[s + 1]; ++p) {
+    const float* q = &st.points[3 * size_t(p)];
+    len += std::sqrt((q[0] - q[-3]) * (q[0] - q[-3]) + (q[1] - q[-2]) * (q[1] - q[-2]) +
+                     (q[2] - q[-1]) * (q[2] - q[-1]));
+    if (len >= arc || p + 1 == st.strandStart[s + 1])
+      return Eigen::Vector3f(q[0] - r[0], q[1] - r[1], q[2] - r[2]).normalized();
+  }
+  return Eigen::Vector3f::Zero();
+}
+
+Eigen::Vector3f onSphere(float x, float z) {
+  return {x, std::sqrt(kRadius * kRadius - x * x - z * z), z};
+}
+
+}  // namespace
+
+TEST(ShapeGrowth, HairAtASeamAcrossTheCrownLiesAlongItAPartingFrontToBackStays) {
+  const SphereHead sphere;
+  const Grid g = boxGrid(41, -2, 2);  // lattice points every 0.1
+  ShapeRules rules;
+  rules.on = true;
+  GrowthParams gp;
+  gp.maxLength = 0.5;  // short hair (kHugLength)
+  auto grow = [&](const std::vector<float>& field, const std::vector<Eigen::Vector3f>& roots) {
+    Strands st;
+    EXPECT_TRUE(growStrands(g, field, roots, gp, st, 1 << 20, &sphere.distance, nullptr,
+                            BodyCollider(), &rules)
+                    .ok());
+    EXPECT_EQ(st.strandStart.size(), roots.size() + 1);
+    return st;
+  };
+  // a seam across the crown at z = -0.35: hair forward in front of it, back behind it
+  const std::vector<float> across = partingField(g, 2, -0.35f);
+  std::vector<Eigen::Vector3f> atSeam;
+  for (float x : {-0.25f, -0.15f, 0.15f, 0.25f})
+    for (float dz : {-0.02f, 0.f, 0.02f}) atSeam.push_back(onSphere(x, -0.35f + dz));
+  const Strands seam = grow(across, atSeam);
+  for (size_t s = 0; s < atSeam.size(); ++s) {
+    const Eigen::Vector3f d = firstDirection(seam, s, 0.15f);
+    std::printf("root x %+.2f z %+.3f: first 1.5 cm along (%+.2f %+.2f %+.2f)\n", atSeam[s].x(),
+                atSeam[s].z(), d.x(), d.y(), d.z());
+    // along the line (x), towards the mid-plane: the seam is covered (straight along z, 0.0,
+    // without the cover)
+    EXPECT_GT(-d.x() * std::copysign(1.f, atSeam[s].x()), 0.6f) << "strand " << s;
+  }
+  // hair rooted 3 cm in front of the seam grows as it does in a field with no seam, to the bit
+  std::vector<Eigen::Vector3f> ahead;
+  for (float x : {-0.2f, 0.f, 0.2f}) ahead.push_back(onSphere(x, -0.05f));
+  const Strands mid = grow(across, ahead), plain = grow(constantField(g, 0, 0, 1), ahead);
+  EXPECT_EQ(mid.points, plain.points);
+  // a parting front to back (at x = 0.05) stays a parting: the hair at it leaves across it
+  const std::vector<float> parted = partingField(g, 0, 0.05f);
+  std::vector<Eigen::Vector3f> atParting;
+  for (float z : {-0.2f, 0.f, 0.2f})
+    for (float dx : {-0.02f, 0.02f}) atParting.push_back(onSphere(0.05f + dx, z));
+  const Strands parting = grow(parted, atParting);
+  for (size_t s = 0; s < atParting.size(); ++s) {
+    const Eigen::Vector3f d = firstDirection(parting, s, 0.15f);
+    EXPECT_LT(std::abs(d.z()), 0.2f) << "strand " << s;
+    EXPECT_GT(d.x() * std::copysign(1.f, atParting[s].x() - 0.05f), 0.8f) << "strand " << s;
+  }
+}
+
 }  // namespace shape_rules_test
