@@ -11,7 +11,7 @@ test('loads to ready with hair and a non-blank canvas, without console errors', 
 }) => {
   const errors = watchConsole(page);
   await page.goto(SCENE);
-  const s = await settled(page);
+  const s = await settled(page, -1, { drawn: true });
   expect(s.strands).toBeGreaterThan(500);
   expect(s.curves).toBeGreaterThanOrEqual(4);
   // Not blank: the canvas holds many distinct colours (head shading + hair + background).

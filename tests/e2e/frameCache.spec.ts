@@ -95,7 +95,7 @@ test('frames drawn through the cache look the same as full redraws, during and a
 }, testInfo) => {
   const errors = watchConsole(page);
   await page.goto('/?strands=1500');
-  const s0 = await settled(page);
+  const s0 = await settled(page, -1, { drawn: true });
   expect(await page.evaluate(() => window.hairsketch.setFrameCache(true))).toBe(true);
   await page.getByRole('button', { name: 'Stream curve' }).click();
   const start = await page.evaluate(() => window.hairsketch.scalpToScreen(35, 20));
@@ -125,7 +125,7 @@ test('frames drawn through the cache look the same as full redraws, during and a
   expect(compare(fromHead).meanDiff).toBeLessThan(0.01);
 
   await page.mouse.up();
-  const s1 = await settled(page, s0.revision);
+  const s1 = await settled(page, s0.revision, { drawn: true });
   expect(s1.curves).toBe(s0.curves + 1);
   // idle, every strand drawn: an overlay change (the Constraints display) redraws no hair
   await page.waitForFunction(() => window.hairsketch.hairDetail() === 1);
@@ -151,7 +151,7 @@ test("a stroke's commit keeps the head cached: no frame is drawn whole before it
   page,
 }) => {
   await page.goto('/?preset=empty&strands=1500');
-  let s = await settled(page);
+  let s = await settled(page, -1, { drawn: true });
   expect(await page.evaluate(() => window.hairsketch.setFrameCache(true))).toBe(true);
   await page.getByRole('button', { name: 'Stream curve' }).click();
   // every animation frame's count of frames drawn whole, with its time
@@ -177,7 +177,7 @@ test("a stroke's commit keeps the head cached: no frame is drawn whole before it
     await page.mouse.down();
     for (let i = 1; i <= 12; i++) await page.mouse.move(start.x + 6 * i, start.y + 12 * i);
     await page.mouse.up();
-    s = await settled(page, s.revision);
+    s = await settled(page, s.revision, { drawn: true });
   }
   // the second stroke (the first's hair is on the head): from pointer-up to the first frame
   // that showed its hair, and the frame after it
@@ -204,14 +204,14 @@ test('after Undo, answered from the cache, the hair is drawn in full, not thinne
   // stayed interactive ("settling") after that answer, so the hair was drawn at interactive
   // detail (a 64th of it on a software rasteriser) until the next edit
   await page.goto('/?preset=empty&strands=1500');
-  let s = await settled(page);
+  let s = await settled(page, -1, { drawn: true });
   await page.getByRole('button', { name: 'Stream curve' }).click();
   for (const phi of [80, 110]) {
     await strokeFromScalp(page, 30, phi, 10, 150);
-    s = await settled(page, s.revision);
+    s = await settled(page, s.revision, { drawn: true });
   }
   await page.keyboard.press('Control+z');
-  s = await settled(page, s.revision);
+  s = await settled(page, s.revision, { drawn: true });
   expect(s.text).toContain('Undone');
   expect(await page.evaluate(() => window.hairsketch.viewHolds())).toEqual([]);
 });
@@ -223,9 +223,9 @@ test('dense hair: the full-detail frame is drawn a slice a frame and equals the 
   // the page after every edit and orbit (viewer.ts renderFullInSlices)
   const errors = watchConsole(page);
   await page.goto('/');
-  // settled() ends with idle(), which waits for the full-detail frame too: every strand is then
+  // settled(drawn) ends with idle(), which waits for the full-detail frame too: every strand is then
   // on screen and the status line says so (data-detail), so a picture taken now shows them all
-  await settled(page);
+  await settled(page, -1, { drawn: true });
   expect(await page.evaluate(() => window.hairsketch.setFrameCache(true))).toBe(true);
   expect(await page.evaluate(() => window.hairsketch.hairDetail())).toBe(1);
   await expect(page.getByTestId('status')).toHaveAttribute('data-detail', 'full');

@@ -21,8 +21,13 @@ export async function status(page: Page): Promise<StatusAttrs> {
 
 /** Waits until the app is ready and idle with a hair revision past `after`. Polls every 50 ms:
  *  polling at every animation frame (Playwright's default) would make an idle page draw frames
- *  for as long as a solve takes. */
-export async function settled(page: Page, after = -1): Promise<StatusAttrs> {
+ *  for as long as a solve takes. The hair's full-detail frame is waited for only with `drawn`
+ *  (tests that read pixels): SwiftShader takes 0.8 s over it at 3,000 strands, 16 s at 29,000. */
+export async function settled(
+  page: Page,
+  after = -1,
+  { drawn = false }: { drawn?: boolean } = {},
+): Promise<StatusAttrs> {
   await page.waitForFunction(
     (rev) => {
       const el = document.querySelector('[data-testid="status"]') as HTMLElement | null;
@@ -31,7 +36,7 @@ export async function settled(page: Page, after = -1): Promise<StatusAttrs> {
     after,
     { polling: 50 },
   );
-  await page.evaluate(() => window.hairsketch.idle());
+  await page.evaluate((d) => window.hairsketch.idle(d), drawn);
   return status(page);
 }
 

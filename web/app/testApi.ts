@@ -21,7 +21,10 @@ export interface HairsketchTestApi {
   scalpToScreen(thetaDeg: number, phiDeg: number): { x: number; y: number } | null;
   worldToScreen(p: Vec3): { x: number; y: number } | null;
   session(): unknown;
-  idle(): Promise<void>;
+  /** Resolves once nothing is left to do: no solve or growth, no frame to draw and (drawn, the
+   *  default) the full-detail frame drawn; with drawn false, once the hair is there, before its
+   *  full-detail frame (a software rasteriser takes seconds over it at 30K strands). */
+  idle(drawn?: boolean): Promise<void>;
   hairHash(): string | null;
   /** Writes the session's link to the address bar now (it is otherwise written 400 ms after an
    *  edit) and returns the page's address with it. */
@@ -245,10 +248,11 @@ export function installTestApi(app: TestApiParts): void {
           selected: editor.selectedId,
         }),
       ),
-    idle: () =>
+    idle: (drawn = true) =>
       new Promise<void>((resolve) => {
         const check = () => {
-          if (!app.busy() && !viewer.renderPending && !viewer.fullDetailPending) resolve();
+          if (!app.busy() && (!drawn || (!viewer.renderPending && !viewer.fullDetailPending)))
+            resolve();
           // a timer, not an animation frame: asking for frames would keep an idle view drawing
           else setTimeout(check, 16);
         };
