@@ -4,6 +4,8 @@ import { describe, expect, it } from 'vitest';
 import type { Command } from '../../web/editor/commands';
 import { Editor, type EditorChange } from '../../web/editor/editor';
 import { POSITION_SCALE, quantize } from '../../web/model/gridNumbers';
+import { STROKE_KINDS } from '../../web/model/kinds';
+import { ONE_STROKE_RADIUS } from '../../web/model/ponytailFromSpine';
 import {
   emptySession,
   type SessionState,
@@ -445,5 +447,47 @@ describe('the editor holds only sessions the reader accepts', () => {
     e.run({ kind: 'loadSession', session: emptySession('25k'), what: 'Opened y' });
     expect(Object.keys(e.session)).not.toContain('avoidScalp');
     expect(Object.keys(e.session)).not.toContain('detail');
+  });
+});
+
+describe('shapePonytail', () => {
+  it('keeps the band as tight as it was: the profiles shape the tail below it (fresh eyes 16)', () => {
+    // a spine from the back of the crown up, over and down (a high ponytail drawn from the side)
+    const spine: Vec3[] = Array.from({ length: 24 }, (_, i) => {
+      const a = Math.min(i, 6) / 6;
+      return [
+        0,
+        0.64 + 0.2 * Math.sin(a * Math.PI * 0.5) - 0.08 * Math.max(0, i - 6),
+        -0.64 - 0.1 * i,
+      ];
+    });
+    const e = new Editor(emptySession('25k'), 'stream');
+    e.run({
+      kind: 'addCurve',
+      curve: STROKE_KINDS.ponytail.fromStroke(spine, vp, false),
+      what: 'ponytail {id}',
+    });
+    const made = e.session.curves[0];
+    if (made?.type !== 'ponytail') throw new Error('no ponytail');
+    expect(made.circles[0].radius).toBe(ONE_STROKE_RADIUS);
+    // profiles drawn from the head cross the band's plane 3 cm from the spine
+    const circles = made.circles.map((q, i) => ({ ...q, radius: i === 0 ? 0.3 : 0.25 }));
+    expect(
+      e.run({
+        kind: 'shapePonytail',
+        id: made.id,
+        crossSection: made.crossSection,
+        profiles: made.profiles,
+        circles,
+      }),
+    ).toBe(true);
+    const shaped = e.session.curves[0];
+    if (shaped?.type !== 'ponytail') throw new Error('no ponytail');
+    expect(shaped.circles.map((q) => q.radius)).toEqual([
+      ONE_STROKE_RADIUS,
+      ...circles.slice(1).map(() => 0.25),
+    ]);
+    e.undo();
+    expect(e.session.curves[0]).toEqual(made);
   });
 });

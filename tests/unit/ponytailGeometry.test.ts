@@ -82,6 +82,28 @@ describe('ponytail circles', () => {
     expect(g.circles.every((c) => c.spineIndex >= 3)).toBe(true);
   });
 
+  it('keep the band as tight as given (bandRadius), however far apart the profiles cross its plane', () => {
+    // profiles drawn from the scalp down, 3 cm either side of the spine at the band (spine point 4)
+    const a = line(-0.3, 1, -0.2, -0.5);
+    const b = line(0.3, 1, 0.2, -0.5);
+    const loose = ponytailCircles(spine, [], a, b, { every: 2, from: 3 });
+    // by hand: at y = 0.6 the profiles are at x = -+(0.3 - 0.1 * 0.4 / 1.5) = 0.2733
+    expect(loose.circles[0].radius).toBeCloseTo(0.3 - 0.04 / 1.5, 10);
+    const tight = ponytailCircles(spine, [], a, b, { every: 2, from: 3, bandRadius: 0.08 });
+    expect(tight.circles[0].spineIndex).toBe(4);
+    expect(tight.circles[0].radius).toBe(0.08);
+    // the tail below it as the profiles say
+    expect(tight.circles.slice(1)).toEqual(loose.circles.slice(1));
+    // profiles that begin well below the band leave their first circle as drawn
+    const low = ponytailCircles(spine, [], profileA, profileB, {
+      every: 2,
+      from: 3,
+      bandRadius: 0.08,
+    });
+    expect(low.circles[0].spineIndex).toBe(6);
+    expect(low.circles[0].radius).toBeCloseTo(0.25 + 0.1 * 0.4, 10);
+  });
+
   it('packs to the protocol block', () => {
     const g = ponytailCircles(spine, [], profileA, profileB);
     const p = curveParams({

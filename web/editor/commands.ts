@@ -17,7 +17,7 @@ import {
   syncMirrorTwins,
   X_PLANE,
 } from '../model/mirror';
-import { PONYTAIL_WIDTH, widenPonytail } from '../model/ponytailFromSpine';
+import { bandIndex, PONYTAIL_WIDTH, widenPonytail } from '../model/ponytailFromSpine';
 import type { PonytailCircle } from '../model/ponytailGeometry';
 import { quantizeSession } from '../model/quantize';
 import type { ReferenceImage } from '../model/referenceImage';
@@ -291,7 +291,13 @@ const HANDLERS: {
     if (c?.type !== 'ponytail') return { session: s, message: `No ponytail ${cmd.id}.` };
     if (cmd.circles.length === 0)
       return { session: s, message: 'The profiles do not run beside the spine: nothing changed.' };
-    const { crossSection, profiles, circles } = cmd;
+    const { crossSection, profiles } = cmd;
+    // the band keeps its radius (ponytailCircles' bandRadius): the profiles shape the tail below
+    const band = c.circles[0]?.radius;
+    const at = bandIndex(c.points);
+    const circles = cmd.circles.map((q, i) =>
+      i === 0 && band && q.spineIndex <= at + 1 ? { ...q, radius: band } : q,
+    );
     return {
       session: updateCurve(s, c.id, () => ({ ...c, crossSection, profiles, circles })),
       selectedId: c.id,

@@ -41,6 +41,11 @@ export interface PonytailOptions {
   /** No circle before this spine point (default 0): the band stays where the spine puts it
    *  (ponytailFromSpine.ts bandIndex), however near the scalp the profiles begin. */
   from?: number;
+  /** The band's radius: the circle at the band (the first at or past `from`) keeps it, however far apart the profiles cross its
+   *  plane (the band stays as tight as the hair it holds; the profiles shape the tail below it:
+   *  a profile drawn from the head crosses the band's tilted plane far from the spine, and the
+   *  band took the tail's width, 6 cm, lifting the hair into a tent above the head). */
+  bandRadius?: number;
 }
 
 /** Unit tangents of a polyline (central differences; one-sided at the ends). */
@@ -87,8 +92,9 @@ export function ponytailCircles(
   const every = Math.max(1, Math.floor(opts.every ?? 1));
   const tangents = polylineTangents(spine);
   const circles: PonytailCircle[] = [];
+  const from = opts.from ?? 0;
   for (let i = 0; i < spine.length; i += every) {
-    if (i < (opts.from ?? 0)) continue;
+    if (i < from) continue;
     const t = tangents[i];
     if (length(t) === 0) continue;
     const a = planeCrossing(profileA, spine[i], t);
@@ -117,5 +123,8 @@ export function ponytailCircles(
     if (rc > 0) k = rc / nearest.radius;
   }
   for (const c of circles) c.radius = Math.min(c.radius * k, MAX_PONYTAIL_RADIUS);
+  const band = opts.bandRadius;
+  if (band !== undefined && band > 0 && circles.length > 0 && circles[0].spineIndex < from + every)
+    circles[0].radius = band;
   return { circles, scale: k };
 }

@@ -79,6 +79,7 @@ export const PONYTAIL: StrokeKindDef<'ponytail'> = {
     const { circles } = ponytailCircles(points, c.crossSection, c.profiles[0], c.profiles[1], {
       every: 2,
       from: bandIndex(points),
+      bandRadius: c.circles[0]?.radius,
     });
     return circles.length === 0 ? null : { ...c, points, circles };
   },
