@@ -46,10 +46,16 @@ test('New starts an empty head as a new session does, and Undo brings the work b
   await page.goto('/?strands=2000');
   const s0 = await settled(page);
   expect(s0.curves).toBeGreaterThan(0);
+  // Mirror, a view setting, stays on through New, and the status line says so
+  await page.keyboard.press('x');
+  await expect(page.getByRole('button', { name: 'Mirror' })).toHaveAttribute(
+    'aria-pressed',
+    'true',
+  );
   await page.getByRole('button', { name: 'New', exact: true }).click();
   const s1 = await settled(page, s0.revision);
   expect(s1.curves).toBe(0);
-  expect(s1.text).toContain('New session');
+  expect(s1.text).toContain('New session: an empty head; Mirror is on (X turns it off)');
   // the same session the app opens with ?preset=empty (the camera aside)
   const other = await context.newPage();
   await other.goto('/?strands=2000&preset=empty');

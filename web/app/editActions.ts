@@ -100,13 +100,16 @@ export function editActions(d: EditActionDeps): EditActions {
     open: () => d.openDialog(),
     newSession: () => {
       const n = editor.session.curves.length;
+      // Mirror is a view setting and stays as it was: say so while it is on (fresh eyes drew a
+      // bun after pigtails and got two)
+      const mirror = d.view.state.mirror ? '; Mirror is on (X turns it off)' : '';
       editor.run({
         kind: 'loadSession',
         session: d.emptySession(),
         what:
           n === 0
-            ? 'New session: an empty head'
-            : `New session: an empty head (Undo brings back the ${n === 1 ? 'curve' : `${n} curves`} before)`,
+            ? `New session: an empty head${mirror}`
+            : `New session: an empty head${mirror} (Undo brings back the ${n === 1 ? 'curve' : `${n} curves`} before)`,
         resetHistory: false,
       });
     },
