@@ -473,6 +473,13 @@ struct GrowRange {
             const ShapeGrowth::Lay lay =
                 shaped.layOnHead(at, q, segLen, length + segLen, gov, here[2], layDist, layNormal,
                                  own[0], own[1], hugs, liesOn);
+            // hair no stroke governs or combs ends where it would lie on the forehead's skin (in
+            // the face's column, its foot off the scalp): no strays lying across the forehead
+            // along the hairline (fresh eyes round 16)
+            if (seg > 0 && std::max(gov, combed) < 0.5f && inFaceColumn(shaped.centre, x, y, z) &&
+                !head->scalpNear(x - layDist * layNormal[0], y - layDist * layNormal[1],
+                                 z - layDist * layNormal[2]))
+              break;
             // short hair laid on past the scalp's edge ends kTaperPast* on; over an ear, hair a
             // stroke combs goes round the ear with it instead
             ShapeGrowth::Lay now = lay;

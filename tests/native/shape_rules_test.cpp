@@ -717,4 +717,39 @@ TEST(ShapeGrowth, HairAtASeamAcrossTheCrownLiesAlongItAPartingFrontToBackStays) 
   }
 }
 
+TEST(ShapeGrowth, HairNoStrokeGovernsEndsAtTheForeheadsSkinNotLyingAcrossIt) {
+  // a sphere whose scalp is the cap above y = 0.4: below it, in front, the forehead's skin (the
+  // face's column begins at y = 0.5)
+  const SphereHead sphere(0.4);
+  const Grid g = boxGrid(41, -2, 2);
+  ShapeRules rules;
+  rules.on = true;
+  rules.volume = 0.05f;  // the Hair panel's default: laid 7 mm off, past the growth margin
+  GrowthParams gp;
+  gp.maxLength = 0.6;
+  // hair combed forward and down over the front of the scalp, rooted just above its edge
+  std::vector<Eigen::Vector3f> roots;
+  for (float x : {-0.15f, -0.05f, 0.05f, 0.15f}) roots.push_back(onSphere(x, 0.85f));
+  Strands st;
+  ASSERT_TRUE(growStrands(g, constantField(g, 0, -1, 0.5f), roots, gp, st, 1 << 20,
+                          &sphere.distance, nullptr, BodyCollider(), &rules)
+                  .ok());
+  ASSERT_EQ(st.strandStart.size(), roots.size() + 1);
+  // no strand lies on the skin (in front, below y = 0.5, within 1 cm of the sphere) farther than
+  // a step below the scalp's edge (3 mm; 11 mm, turned aside across the forehead, without the
+  // rule)
+  float below = 0;  // how far below the scalp's edge a point lies on the skin (radians)
+  for (size_t p = 0; p < st.points.size() / 3; ++p) {
+    const float* q = &st.points[3 * p];
+    const float r = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
+    if (q[2] > std::abs(q[0]) && q[1] < 0.5f && r - kRadius < 0.1f)
+      below = std::max(below, std::asin(0.4f) - std::asin(q[1] / r));
+  }
+  std::printf("hair on the forehead's skin: down to %.3f below the scalp's edge\n", below);
+  EXPECT_LT(below, 0.05f);
+  // and each strand grew down to the scalp's edge (at least one step past its root)
+  for (size_t s = 0; s < roots.size(); ++s)
+    EXPECT_GE(st.strandStart[s + 1] - st.strandStart[s], 2u);
+}
+
 }  // namespace shape_rules_test
