@@ -14,6 +14,7 @@
 import { existsSync, readFileSync, writeFileSync } from 'node:fs';
 import { presetSession } from '../web/cli/presetSession';
 import { Head } from '../web/head/head';
+import { DEFAULT_HAIR_LOOK } from '../web/model/hairLook';
 import { CURLY_DETAIL } from '../web/model/presetDetail';
 import { quantizeSession } from '../web/model/quantize';
 import type { SessionState, StyleCurve } from '../web/model/session';
@@ -111,7 +112,42 @@ function tailsEverything(): SessionState {
   return quantizeSession({ ...s, curves: [...s.curves, { ...bun, id: 'bun1', height: 0.4 }] });
 }
 
+/** Sections, the bust and hair colour (link version 3): a new user's half-up (an ear-to-ear
+ *  parting and a bun on the top section, ties on) over the long preset's strokes, the bust on,
+ *  and every hair-colour setting off its default; without the shape rules, which are still
+ *  changing, so the hair it grows stays what it was. */
+function sectionsBustColour(): SessionState {
+  const s = presetSession('long', head);
+  const halfUp = JSON.parse(
+    readFileSync('tests/fixtures/shape/half-up-into-bun.json', 'utf8'),
+  ) as SessionState;
+  const ties = halfUp.curves
+    .filter((c) => c.type === 'dividing' || c.type === 'bun')
+    .map((c, i) => ({ ...c, id: `t${i + 1}` }) as StyleCurve);
+  return quantizeSession({
+    ...s,
+    curves: [...s.curves, ...ties],
+    sections: true,
+    ties: true,
+    bust: true,
+    hairLook: {
+      ...(s.hairLook ?? DEFAULT_HAIR_LOOK),
+      melanin: 0.32,
+      redness: 0.8,
+      grey: 20,
+      tipMelanin: 0.1,
+      tipLength: 1.5,
+    },
+  });
+}
+
 const SESSIONS: Record<string, { make: () => SessionState; covers: string; formats: number[] }> = {
+  'sections-bust-colour': {
+    make: sectionsBustColour,
+    covers:
+      'sections (an ear-to-ear parting, a bun gathering the top section, ties on), the bust, hair colour settings; natural fall, no shape rules',
+    formats: [3],
+  },
   'paper-everything': {
     make: paperEverything,
     covers:
