@@ -18,7 +18,7 @@ import {
   X_PLANE,
 } from '../model/mirror';
 import { bandIndex, PONYTAIL_WIDTH, widenPonytail } from '../model/ponytailFromSpine';
-import type { PonytailCircle } from '../model/ponytailGeometry';
+import { keepBand, type PonytailCircle } from '../model/ponytailGeometry';
 import { quantizeSession } from '../model/quantize';
 import type { ReferenceImage } from '../model/referenceImage';
 import {
@@ -292,12 +292,9 @@ const HANDLERS: {
     if (cmd.circles.length === 0)
       return { session: s, message: 'The profiles do not run beside the spine: nothing changed.' };
     const { crossSection, profiles } = cmd;
-    // the band keeps its radius (ponytailCircles' bandRadius): the profiles shape the tail below
-    const band = c.circles[0]?.radius;
-    const at = bandIndex(c.points);
-    const circles = cmd.circles.map((q, i) =>
-      i === 0 && band && q.spineIndex <= at + 1 ? { ...q, radius: band } : q,
-    );
+    // the band keeps its radius: the profiles shape the tail below it (the tool's circles are
+    // every other spine point from the band)
+    const circles = keepBand(cmd.circles, c.circles[0]?.radius, bandIndex(c.points), 2);
     return {
       session: updateCurve(s, c.id, () => ({ ...c, crossSection, profiles, circles })),
       selectedId: c.id,

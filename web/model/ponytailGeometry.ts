@@ -123,8 +123,19 @@ export function ponytailCircles(
     if (rc > 0) k = rc / nearest.radius;
   }
   for (const c of circles) c.radius = Math.min(c.radius * k, MAX_PONYTAIL_RADIUS);
-  const band = opts.bandRadius;
-  if (band !== undefined && band > 0 && circles.length > 0 && circles[0].spineIndex < from + every)
-    circles[0].radius = band;
-  return { circles, scale: k };
+  return { circles: keepBand(circles, opts.bandRadius, from, every), scale: k };
+}
+
+/** `circles` with the band's circle (the first, when it sits at the first spine point taken at or
+ *  past `from`, every `every`-th) at `radius` (ponytailCircles' bandRadius; undefined or 0:
+ *  as they are). */
+export function keepBand(
+  circles: PonytailCircle[],
+  radius: number | undefined,
+  from: number,
+  every: number,
+): PonytailCircle[] {
+  if (!radius || radius <= 0 || circles.length === 0 || circles[0].spineIndex >= from + every)
+    return circles;
+  return [{ ...circles[0], radius }, ...circles.slice(1)];
 }
