@@ -96,6 +96,7 @@ Status HairEngine::setScalp(const float* positions, size_t vertexCount, const ui
                             size_t triangleCount, const uint8_t* scalp,
                             const Eigen::Vector3d& center) {
   rootsValid_ = false;
+  napeValid_ = false;
   roots_.clear();
   rootIds_.clear();
   subset_ = false;
@@ -175,6 +176,7 @@ Status HairEngine::setScalpMask(const uint8_t* scalp, size_t triangleCount) {
   if (!s.ok()) return s;
   // Roots are sampled again over the new scalp at the next grow.
   rootsValid_ = false;
+  napeValid_ = false;
   roots_.clear();
   rootIds_.clear();
   subset_ = false;

@@ -187,6 +187,9 @@ class HairEngine {
   bool keptFinish_ = false, keptHairline_ = false;
   // with a soft hairline: per root of roots_, the longest its hair may grow (infinity: full)
   std::vector<float> rootCap_;
+  // the lower hairline (nape_line.hpp) of the current scalp and centre, while napeValid_
+  std::vector<float> napeLine_;
+  bool napeValid_ = false;
   std::vector<float> growCap_;                     // the same for the roots grown (roots())
   std::vector<uint32_t> rootIds_, subsetRootIds_;  // sample indices of roots_, subsetRoots_
   std::vector<int32_t> strandTailCurve_;

@@ -10,6 +10,7 @@
 #include "elapsed.hpp"
 #include "hair_engine.hpp"
 #include "memory_budget.hpp"
+#include "nape_line.hpp"
 #include "soft_hairline.hpp"
 
 namespace hairsketch {
@@ -93,6 +94,14 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
   const CurveReach* reach = fall_ && !reach_.empty() ? &reach_ : nullptr;
   ShapeRules shape = shape_;
   for (int e = 0; e < 3; ++e) shape.centre[e] = float(centre_[e]);
+  if (fall_ && shape.on) {
+    if (!napeValid_) {  // the lower hairline, for the fade of short hair there
+      napeLine_ = napeLine(scalpEdges(scalp_.positions(), scalp_.indices(), scalp_.scalpMask()),
+                           shape.centre);
+      napeValid_ = true;
+    }
+    shape.napeLine = &napeLine_;
+  }
   growCap_.clear();
   if (!rootCap_.empty()) {
     growCap_.resize(roots().size());

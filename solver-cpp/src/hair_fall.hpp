@@ -174,6 +174,8 @@ struct ShapeRules {
   bool on = false;
   float volume = 0;  // world units: how far the hair stands off the head at its roots (0..0.3)
   float centre[3] = {0, 0, 0};  // the head's centre (the prior's vertical axis)
+  // the lower hairline where short hair fades out (nape_line.hpp napeLine), or null: no fade
+  const std::vector<float>* napeLine = nullptr;
 };
 // Whether p lies in the face's column (kFaceTop, kFaceBottom, kFaceHalfAngle about the vertical
 // axis through centre, in front of it), where hair no stroke governs does not go: it parts to

@@ -10,11 +10,12 @@
 namespace hairsketch {
 
 struct ShapeGrowth {
-  const HeadDistance* head = nullptr;  // set whenever the rules are on
-  const CurveReach* reach = nullptr;   // the curves' reach, or null (no curve ends hair)
-  float margin = 0;                    // the growth margin off the head (world units)
-  float volume = 0;                    // the lift at the roots (world units, 0..0.3)
-  float centre[3] = {0, 0, 0};         // the head's centre (the prior's vertical axis)
+  const HeadDistance* head = nullptr;            // set whenever the rules are on
+  const CurveReach* reach = nullptr;             // the curves' reach, or null (no curve ends hair)
+  float margin = 0;                              // the growth margin off the head (world units)
+  float volume = 0;                              // the lift at the roots (world units, 0..0.3)
+  float centre[3] = {0, 0, 0};                   // the head's centre (the prior's vertical axis)
+  const std::vector<float>* napeLine = nullptr;  // the lower hairline (nape_line.hpp), or null
 
   // The head's distance at p (world units) and its outward normal there (nrm, unit): read where
   // the distance grid is exact (HeadDistance::band), farther out by walking towards the head

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "hair_fall.hpp"
+#include "nape_line.hpp"
 #include "parallel.hpp"
 #include "rng.hpp"
 #include "seam_cover.hpp"
@@ -142,6 +143,9 @@ constexpr float kTaperJitter = 0.5f, kTaperNoiseShift = 7.3f;
 // Hair within kGovernNear of a stroke (governed above kHemGoverned) is the stroke's: no hem.
 // Layered ends (kLayeredBand) read rootNoise kLayeredNoiseShift away.
 constexpr float kLayeredNoiseShift = 19.7f;
+// The fade round the lower hairline (nape_line.hpp) reads rootNoise at kFadeNoiseScale times the
+// root's coordinates (1 mm cells: neighbouring strands differ, mirror twins agree), shifted.
+constexpr float kFadeNoiseScale = 5.f, kFadeNoiseShift = 29.3f;
 constexpr float kHemBand = 0.12f, kHemNoiseShift = 13.1f, kHemKeeps = 0.5f, kHemGoverned = 0.5f;
 
 // Between the body's distance, read at one point, and the distance read later that lower bound
@@ -302,6 +306,14 @@ struct GrowRange {
               ? 1 + kTaperJitter *
                         (2 * rootNoise(std::abs(x - shaped.centre[0]) + kTaperNoiseShift, y, z) - 1)
               : 1.f;
+      // short hair's share of the band round the lower hairline where it ends (kFadeAbove ..
+      // kFadeBelow; -1: no fade), from rootNoise read finer and kFadeNoiseShift away, so
+      // neighbouring strands end at different heights: the nape thins out to the skin
+      const float fade =
+          hugs && shaped.napeLine && !shaped.napeLine->empty()
+              ? rootNoise(kFadeNoiseScale * std::abs(x - shaped.centre[0]) + kFadeNoiseShift,
+                          kFadeNoiseScale * y, kFadeNoiseScale * z)
+              : -1.f;
       // short hair a stroke's hair ends stops from kLayeredPast past that end to kLayeredBand
       // before it (the remaining length it stops at): a layered cut's ends, spread round the
       // line where the strokes end
@@ -464,6 +476,13 @@ struct GrowRange {
           }
           if (!s.inside(nx, ny, nz)) break;  // leaving the bounding volume
           if (length + segLen > strandMax) break;
+          // short hair ends in a band round the lower hairline (nape_line.hpp): a faded nape
+          if (fade >= 0 && length + segLen > kFadeShortest && ny - y < -kFadeDown * segLen &&
+              ny < napeLineAt(*shaped.napeLine, shaped.centre, nx, nz) + kFadeAbove -
+                       fade * (kFadeAbove + kFadeBelow)) {
+            if (flags) flags[r] |= kCutAtLine;
+            break;
+          }
           if ((ny < hem && ny < y && length + segLen > kHemKeeps * strandMax) ||
               (endsWithCurve && length + segLen > shortest &&
                reachRemaining(*reach, nx, ny, nz, around) < layeredEnd)) {
@@ -541,6 +560,7 @@ Status growStrands(const Grid& g, const std::vector<float>& field,
                  shape && shape->on && reach && !reach->empty() &&
                      std::any_of(reach->strokes.begin(), reach->strokes.end(), setsHem),
                  nullptr};
+  grow.shaped.napeLine = shape ? shape->napeLine : nullptr;
   if (shape && shape->on) {
     out.flags.assign(roots.size(), 0);
     grow.flags = out.flags.data();

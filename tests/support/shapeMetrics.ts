@@ -184,3 +184,55 @@ export function templeStrays(s: StrandSet, curves: readonly CurveLike[]): number
   });
   return n ? over / n : 0;
 }
+
+/** The lower hairline round the back of the head, computed here from the scalp mesh (a
+ *  reference for solver-cpp nape_line): the lowest point of the scalp's boundary edges (between a
+ *  scalp triangle and one that is not) per 7.5° of angle about the vertical axis through `center`,
+ *  over the head behind 1 cm in front of the centre and below 2.5 cm above it. `at(x, z)` gives
+ *  the nearest bin's height (NaN in front, or where no edge passes). */
+export function lowerHairline(mesh: {
+  positions: Float32Array;
+  indices: Uint32Array;
+  scalp: Uint8Array;
+  center: readonly number[];
+}) {
+  const { positions: P, indices: I, scalp: S, center: c } = mesh;
+  const count = new Map<number, [number, number]>();
+  const n = P.length / 3;
+  for (let t = 0; t < S.length; t++)
+    for (let k = 0; k < 3; k++) {
+      const a = I[3 * t + k];
+      const b = I[3 * t + ((k + 1) % 3)];
+      const key = Math.min(a, b) * n + Math.max(a, b);
+      const e = count.get(key) ?? [0, 0];
+      e[S[t] ? 0 : 1]++;
+      count.set(key, e);
+    }
+  const bins = 48;
+  const line = new Array<number>(bins).fill(Number.POSITIVE_INFINITY);
+  const binOf = (x: number, z: number) =>
+    Math.min(
+      bins - 1,
+      Math.floor(((Math.atan2(x - c[0], -(z - c[2])) + Math.PI) / (2 * Math.PI)) * bins),
+    );
+  for (const [key, [s, o]] of count) {
+    if (s === 0 || (o === 0 && s > 1)) continue;
+    const ends = [Math.floor(key / n), key % n];
+    for (let k = 0; k <= 4; k++) {
+      const t = k / 4;
+      const p = [0, 1, 2].map(
+        (e) => P[3 * ends[0] + e] + t * (P[3 * ends[1] + e] - P[3 * ends[0] + e]),
+      );
+      if (p[2] - c[2] > 0.1 || p[1] > c[1] + 0.25) continue;
+      const b = binOf(p[0], p[2]);
+      line[b] = Math.min(line[b], p[1]);
+    }
+  }
+  return {
+    at: (x: number, z: number) => {
+      if (z - c[2] > 0.1) return Number.NaN;
+      const v = line[binOf(x, z)];
+      return Number.isFinite(v) ? v : Number.NaN;
+    },
+  };
+}

@@ -20,10 +20,12 @@ import {
   eachStrand,
   earCoverShare,
   fallOfUngoverned,
+  lowerHairline,
   median,
   quantile,
   standOff,
   templeStrays,
+  type V3,
   widthAtEars,
 } from '../support/shapeMetrics';
 
@@ -52,6 +54,18 @@ async function grow(s: SessionState): Promise<StrandArrays> {
   }
 }
 
+/** The lower hairline of the session's scalp (shapeMetrics lowerHairline). */
+async function hairlineOf(s: SessionState) {
+  const { scalp } = await headForGrow(s, undefined, null);
+  return lowerHairline(scalp);
+}
+/** Whether p lies in the band round the lower hairline where short hair fades out (2.5 cm above
+ *  it to 1 cm below, with 2 mm to spare for the bins). */
+const inFade = (line: { at: (x: number, z: number) => number }, p: readonly number[]) => {
+  const h = p[1] - line.at(p[0], p[2]);
+  return h < 0.27 && h > -0.12;
+};
+
 const off = (s: SessionState): SessionState => {
   const { shape: _s, volume: _v, ...rest } = s;
   return rest;
@@ -62,7 +76,11 @@ const off = (s: SessionState): SessionState => {
  *  root to each curve's first point; a curve extended off the head counts as Max length, one that
  *  combs (ends on the scalp) only when every curve combs),
  *  capped by Max length, computed here from the strokes and the head's exact distance. */
-function lengthRatio(s: StrandArrays, session: SessionState): number {
+function lengthRatio(
+  s: StrandArrays,
+  session: SessionState,
+  skip: (tip: V3) => boolean = () => false,
+): number {
   const maxLength = session.growth.maxLength;
   const strokes = session.curves
     .filter((c) => c.type === 'stream')
@@ -84,6 +102,7 @@ function lengthRatio(s: StrandArrays, session: SessionState): number {
   const ratios: number[] = [];
   eachStrand(s, (pts) => {
     if (session.curves.some((c) => c.points.some((q) => dist(q, pts[0]) < 0.4))) return;
+    if (skip(pts[pts.length - 1])) return;
     let sw = 0;
     let swl = 0;
     for (const c of strokes) {
@@ -139,7 +158,9 @@ describe('the shape rules on hand-drawn stroke sets', () => {
   it('a short crop: hair no stroke ends is as long as the strokes around (within 20 %)', async () => {
     const s = fixture('slicked');
     const [before, after] = [await grow(off(s)), await grow(s)];
-    const [rb, ra] = [lengthRatio(before, s), lengthRatio(after, s)];
+    // hair that ends round the lower hairline ends by the fade there (the next test)
+    const line = await hairlineOf(s);
+    const [rb, ra] = [lengthRatio(before, s), lengthRatio(after, s, (tip) => inFade(line, tip))];
     console.log(
       `short crop, rules off -> on: length of hair no stroke ends over its strokes' ${rb.toFixed(2)} -> ${ra.toFixed(2)}`,
     );
@@ -148,6 +169,37 @@ describe('the shape rules on hand-drawn stroke sets', () => {
     expect(ra).toBeLessThan(1.2);
     expect(standOff(after, s.curves, 0.3, 0.4)).toBeLessThanOrEqual(0.1);
   });
+
+  it.each(['pixie', 'eyes-pixie', 'slicked'])(
+    '%s: short hair fades out round the lower hairline (nape and over the ears), not on one line',
+    async (name) => {
+      const s = fixture(name);
+      const line = await hairlineOf(s);
+      const after = await grow(s);
+      // the short hair that comes down to within 3 cm of the line behind the ears: where it ends
+      // against the line (cm, + above)
+      const ends: number[] = [];
+      eachStrand(after, (pts) => {
+        const tip = pts[pts.length - 1];
+        const h = tip[1] - line.at(tip[0], tip[2]);
+        if (!Number.isFinite(h) || pts[0][1] - tip[1] < 0.05 || h > 0.3) return;
+        ends.push(10 * h);
+      });
+      const below = ends.filter((h) => h < -1.2).length / ends.length;
+      const [q25, q50, q75] = [0.25, 0.5, 0.75].map((q) => quantile(ends, q));
+      console.log(
+        `${name}: ${ends.length} strands end round the lower hairline, quartiles ${q25.toFixed(2)} / ${q50.toFixed(2)} / ${q75.toFixed(2)} cm from it; ${(100 * below).toFixed(1)} % more than 1.2 cm below it`,
+      );
+      expect(ends.length).toBeGreaterThan(100);
+      // spread over the band (2.5 cm above to 1 cm below; hair from higher up ends as it comes
+      // down into it, so more end in its upper part), so the nape thins out to the skin; no
+      // hair hangs on down the neck (without the fade: median about 1 cm below, 10 % or more
+      // past 2 cm below)
+      expect(below).toBeLessThanOrEqual(0.05);
+      expect(q50).toBeGreaterThan(0.2);
+      expect(q75 - q25).toBeGreaterThan(0.6);
+    },
+  );
 
   it('Avoid scalp lays the short crop along the scalp without wings', async () => {
     const s = { ...fixture('slicked'), avoidScalp: true };
