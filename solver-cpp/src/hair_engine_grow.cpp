@@ -101,6 +101,7 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
       napeValid_ = true;
     }
     shape.napeLine = &napeLine_;
+    shape.lineOvershoot = finish_ ? 0.5f * kEndSpread : 0.f;
   }
   growCap_.clear();
   if (!rootCap_.empty()) {

@@ -176,6 +176,10 @@ struct ShapeRules {
   float centre[3] = {0, 0, 0};  // the head's centre (the prior's vertical axis)
   // the lower hairline where short hair fades out (nape_line.hpp napeLine), or null: no fade
   const std::vector<float>* napeLine = nullptr;
+  // how far hair that ends at its strokes' line grows past it (world units; half the end
+  // spread detail cuts back with finished edges, at most half its share of the length), so
+  // its ends are spread round the line, not above it
+  float lineOvershoot = 0;
 };
 // Whether p lies in the face's column (kFaceTop, kFaceBottom, kFaceHalfAngle about the vertical
 // axis through centre, in front of it), where hair no stroke governs does not go: it parts to

@@ -16,6 +16,7 @@ struct ShapeGrowth {
   float volume = 0;                              // the lift at the roots (world units, 0..0.3)
   float centre[3] = {0, 0, 0};                   // the head's centre (the prior's vertical axis)
   const std::vector<float>* napeLine = nullptr;  // the lower hairline (nape_line.hpp), or null
+  float lineOvershoot = 0;                       // ShapeRules::lineOvershoot
 
   // The head's distance at p (world units) and its outward normal there (nrm, unit): read where
   // the distance grid is exact (HeadDistance::band), farther out by walking towards the head

@@ -10,6 +10,7 @@
 #include "rng.hpp"
 #include "seam_cover.hpp"
 #include "shape_growth.hpp"
+#include "strand_detail.hpp"
 #include "strand_noise.hpp"
 
 namespace hairsketch {
@@ -143,6 +144,9 @@ constexpr float kTaperJitter = 0.5f, kTaperNoiseShift = 7.3f;
 // Hair within kGovernNear of a stroke (governed above kHemGoverned) is the stroke's: no hem.
 // Layered ends (kLayeredBand) read rootNoise kLayeredNoiseShift away.
 constexpr float kLayeredNoiseShift = 19.7f;
+// Hair a stroke's hair ends may grow this share past the strokes' length around it: it ends
+// where the remaining length runs out (its path beside the stroke is a little longer).
+constexpr double kAroundSlack = 0.1;
 // The fade round the lower hairline (nape_line.hpp) reads rootNoise at kFadeNoiseScale times the
 // root's coordinates (1 mm cells: neighbouring strands differ, mirror twins agree), shifted.
 constexpr float kFadeNoiseScale = 5.f, kFadeNoiseShift = 29.3f;
@@ -293,6 +297,12 @@ struct GrowRange {
                    (1 + kHugJitter * (2 * rootNoise(std::abs(x - shaped.centre[0]), y, z) - 1));
       }
       if (flags) flags[r] = hugs ? kLiesOnHead : 0;
+      // with finished edges, hair that ends at its strokes' line (their length, the remaining
+      // length, a hem) grows on past it by half the end spread detail cuts back
+      // (ShapeRules::lineOvershoot), so its ends spread round the line instead of above it
+      const double overshoot =
+          shape && !hugs ? std::min(double(shaped.lineOvershoot), 0.5 * kEndSpreadShare * strandMax)
+                         : 0.0;
       // short hair whose nearest stroke never leaves the head by kDrawnLift lies on the head
       // wherever that stroke governs it (ShapeGrowth::layOnHead's liesOn)
       const bool liesOn =
@@ -475,7 +485,16 @@ struct GrowRange {
             }
           }
           if (!s.inside(nx, ny, nz)) break;  // leaving the bounding volume
-          if (length + segLen > strandMax) break;
+          // hair a stroke's hair ends: the remaining length ends it; the strokes' length, with
+          // kAroundSlack for a path a little longer than the stroke's (laid on the head), only
+          // bounds it
+          if (length + segLen > (endsWithCurve && shape
+                                     ? std::min(maxLen, strandMax * (1 + kAroundSlack)) + overshoot
+                                     : strandMax)) {
+            // hair whose length is its strokes' ends at their line: no length jitter
+            if (flags && endsWithCurve && shape) flags[r] |= kCutAtLine;
+            break;
+          }
           // short hair ends in a band round the lower hairline (nape_line.hpp): a faded nape
           if (fade >= 0 && length + segLen > kFadeShortest && ny - y < -kFadeDown * segLen &&
               ny < napeLineAt(*shaped.napeLine, shaped.centre, nx, nz) + kFadeAbove -
@@ -483,9 +502,9 @@ struct GrowRange {
             if (flags) flags[r] |= kCutAtLine;
             break;
           }
-          if ((ny < hem && ny < y && length + segLen > kHemKeeps * strandMax) ||
+          if ((ny < hem - float(overshoot) && ny < y && length + segLen > kHemKeeps * strandMax) ||
               (endsWithCurve && length + segLen > shortest &&
-               reachRemaining(*reach, nx, ny, nz, around) < layeredEnd)) {
+               reachRemaining(*reach, nx, ny, nz, around) < layeredEnd - float(overshoot))) {
             if (flags) flags[r] |= kCutAtLine;
             break;
           }
@@ -561,6 +580,7 @@ Status growStrands(const Grid& g, const std::vector<float>& field,
                      std::any_of(reach->strokes.begin(), reach->strokes.end(), setsHem),
                  nullptr};
   grow.shaped.napeLine = shape ? shape->napeLine : nullptr;
+  grow.shaped.lineOvershoot = shape ? std::max(shape->lineOvershoot, 0.f) : 0.f;
   if (shape && shape->on) {
     out.flags.assign(roots.size(), 0);
     grow.flags = out.flags.data();

@@ -170,7 +170,7 @@ describe('the shape rules on hand-drawn stroke sets', () => {
     expect(standOff(after, s.curves, 0.3, 0.4)).toBeLessThanOrEqual(0.1);
   });
 
-  it.each(['pixie', 'eyes-pixie', 'slicked'])(
+  it.each(['pixie', 'eyes-pixie', 'eyes17-pixie', 'slicked'])(
     '%s: short hair fades out round the lower hairline (nape and over the ears), not on one line',
     async (name) => {
       const s = fixture(name);
