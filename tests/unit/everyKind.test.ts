@@ -4,8 +4,11 @@
 // stroke kind is made by its own fromStroke, any other must have a maker below (the test says so).
 import { describe, expect, it } from 'vitest';
 import { Editor } from '../../web/editor/editor';
+import { groomLayout } from '../../web/export/groomLayout';
+import { strandsForExport } from '../../web/export/strandsForExport';
 import { CURVE_PARAMS, type CurveKindName, defaultParams } from '../../web/model/curveParams';
-import { STROKE_KINDS } from '../../web/model/kinds';
+import { DEFAULT_GROWTH } from '../../web/model/growthParams';
+import { defOf, STROKE_KINDS } from '../../web/model/kinds';
 import { mirrorCurve } from '../../web/model/mirror';
 import { quantizeSession } from '../../web/model/quantize';
 import { emptySession, type StyleCurve, type Viewpoint } from '../../web/model/session';
@@ -112,5 +115,35 @@ describe.each(KIND_NAMES)('every curve kind: %s', (k) => {
     const [c, twin] = sessionWith(k).curves;
     const back = mirrorCurve(twin, c.id, twin.id);
     expect(round(back)).toEqual(round(c));
+  });
+
+  it('the export names its groups by kind: a tie and its twin are <kind>1 and <kind>2, a parting splits in two', () => {
+    const curves = sessionWith(k).curves;
+    // 40 two-point strands, the first 10 laid by the first curve, the next 10 by its twin
+    const n = 40;
+    const points = new Float32Array(6 * n);
+    const strandStart = Uint32Array.from({ length: n + 1 }, (_, s) => 2 * s);
+    for (let s = 0; s < n; s++) {
+      const a = (2 * Math.PI * s) / n;
+      points.set(
+        [Math.sin(a), 0.5, Math.cos(a), 1.1 * Math.sin(a), 0.55, 1.1 * Math.cos(a)],
+        6 * s,
+      );
+    }
+    const tailCurves = Int32Array.from({ length: n }, (_, s) => (s < 10 ? 0 : s < 20 ? 1 : -1));
+    const ex = strandsForExport(
+      { points, strandStart },
+      { hairColor: '#5a3825', growth: DEFAULT_GROWTH },
+    );
+    const g = groomLayout(ex, { tailCurves }, { curves, growth: DEFAULT_GROWTH });
+    const role = defOf(curves[0]).role;
+    for (const name of g.groupNames) expect(name).toMatch(/^[a-z]+[0-9]*(_[a-z]+)?$/);
+    if (role === 'tie') {
+      expect(g.groupNames).toEqual(expect.arrayContaining([`${k}1`, `${k}2`]));
+      for (let s = 0; s < 20; s++) expect(g.groupNames[g.groupOf[s]]).toBe(`${k}${s < 10 ? 1 : 2}`);
+    } else if (k === 'dividing') {
+      expect(g.groupNames.filter((x) => x.startsWith('parting1_'))).toHaveLength(2);
+      expect(g.groupNames.filter((x) => x.startsWith('parting2_'))).toHaveLength(2);
+    }
   });
 });

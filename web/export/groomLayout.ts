@@ -54,11 +54,8 @@ export interface GroomLayout {
   guideWeights: Float32Array; // guideWeights[3 * s + k]
 }
 
-/** What a curve gathers into its own group. */
-type Gathering = 'ponytail' | 'braid' | 'bun';
-
-const isGathering = (c: StyleCurve): c is Extract<StyleCurve, { type: Gathering }> =>
-  defOf(c).role === 'tie';
+/** Whether a curve gathers its hair into a group of its own: the kind table's ties. */
+const isGathering = (c: StyleCurve): boolean => defOf(c).role === 'tie';
 
 interface Parting {
   curve: number;
@@ -107,18 +104,20 @@ export function groomLayout(
 
   // ---- groups -------------------------------------------------------------------------------
   const curves = session.curves;
-  const count: Record<Gathering | 'dividing', number> = {
-    ponytail: 0,
-    braid: 0,
-    bun: 0,
-    dividing: 0,
+  // groups numbered per kind in the session's order (ponytail1, bun1, bun2…): every kind the
+  // kind table calls a tie counts from 1, whatever its name
+  const count = new Map<string, number>();
+  const next = (kind: string) => {
+    const k = (count.get(kind) ?? 0) + 1;
+    count.set(kind, k);
+    return k;
   };
   const tailName = new Map<number, string>();
   const partings: Parting[] = [];
   curves.forEach((c, i) => {
-    if (isGathering(c)) tailName.set(i, `${c.type}${++count[c.type]}`);
+    if (isGathering(c)) tailName.set(i, `${c.type}${next(c.type)}`);
     else if (c.type === 'dividing' && c.points.length > 0)
-      partings.push(parting(c, i, ++count.dividing));
+      partings.push(parting(c, i, next('dividing')));
   });
   // a key per strand: 'hair', 'tail:<curve>' or 'part:<curve>:<0|1>'
   const key: string[] = new Array(n);
