@@ -53,8 +53,13 @@ async function playHeadTurn(page: Page, until: number, strands: number): Promise
   await motionFrame(page, until);
   const m = await page.evaluate(() => window.hairsketch.motion());
   console.log(
-    `motion at ${strands} strands: ${m.fps.toFixed(1)} frames per second drawn (frame ${m.frame}; last frame: worker ${m.workerMs.toFixed(0)} ms, geometry ${m.buildMs.toFixed(0)} ms; ${m.rebuilds} frames rebuilt in full)`,
+    `motion at ${strands} strands: ${m.fps.toFixed(1)} frames per second drawn (frame ${m.frame}; ${m.drawnStrands} of ${m.strands} strands in the last frame; last frame: worker ${m.workerMs.toFixed(0)} ms, geometry ${m.buildMs.toFixed(0)} ms; ${m.rebuilds} frames rebuilt in full)`,
   );
+  // the contract's figures (docs/testing.md): the frame's strands are the groom's, some drawn
+  expect(m.playing).toBe('head-turn');
+  expect(m.strands).toBe(strands);
+  expect(m.drawnStrands).toBeGreaterThan(0);
+  expect(m.drawnStrands).toBeLessThanOrEqual(m.strands);
 }
 
 test('Play with Head turn moves the strands; Stop restores them bit for bit', async ({ page }) => {

@@ -91,6 +91,10 @@ export interface HairsketchTestApi {
     playing: string | null;
     frame: number;
     fps: number;
+    /** Strands of the hair shown (the motion's frame while playing), and of those the strands
+     *  the last frame drew (the view's level of detail: fewer while a frame cannot draw all). */
+    strands: number;
+    drawnStrands: number;
     workerMs: number;
     buildMs: number;
     /** Frames of this play drawn by rebuilding the geometry (the rest moved its points). */
@@ -314,18 +318,24 @@ export function installTestApi(app: TestApiParts): void {
       app.quality?.set(s);
     },
     lightingMs: () => app.quality?.lightingMs() ?? null,
-    motion: () => ({
-      playing: app.motion?.playing ?? null,
-      frame: app.motion?.frame ?? 0,
-      fps: app.motion?.fps ?? 0,
-      workerMs: app.motion?.times.workerMs ?? 0,
-      buildMs: app.motion?.times.buildMs ?? 0,
-      rebuilds: app.motion?.times.rebuilds ?? 0,
-      // at rest their matrix is the identity (1 on the diagonal: every fifth element)
-      overlaysPosed: viewer.headOverlays.some((g) =>
-        g.matrix.elements.some((v, i) => v !== (i % 5 === 0 ? 1 : 0)),
-      ),
-    }),
+    motion: () => {
+      const shown = app.motion?.drawn ?? hair.strands;
+      const strands = shown ? shown.strandStart.length - 1 : 0;
+      return {
+        playing: app.motion?.playing ?? null,
+        frame: app.motion?.frame ?? 0,
+        fps: app.motion?.fps ?? 0,
+        strands,
+        drawnStrands: Math.round(viewer.hairDetail * strands),
+        workerMs: app.motion?.times.workerMs ?? 0,
+        buildMs: app.motion?.times.buildMs ?? 0,
+        rebuilds: app.motion?.times.rebuilds ?? 0,
+        // at rest their matrix is the identity (1 on the diagonal: every fifth element)
+        overlaysPosed: viewer.headOverlays.some((g) =>
+          g.matrix.elements.some((v, i) => v !== (i % 5 === 0 ? 1 : 0)),
+        ),
+      };
+    },
     strands() {
       const s = app.motion?.drawn ?? hair.strands;
       return s
