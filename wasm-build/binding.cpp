@@ -636,7 +636,9 @@ EMSCRIPTEN_KEEPALIVE int32_t hs_raw_stats(RawHandle* h, HsStats* out) {
 // must outlive it. points: float32[3 * pointCount]; strandStart: uint32[strandCount + 1];
 // tails: int32[strandCount] (the tail curve per strand, -1 none) or 0; pivot: float32[3], the
 // point the head turns about (world units, 10 cm); motion: 0 settle, 1 head turn, 2 nod,
-// 3 wind. The arrays are copied. *out receives the handle.
+// 3 wind; windFromDeg: where the wind comes from (degrees about the vertical axis: 0 the front,
+// 90 the head's left), windSpeed its mean speed (m/s, 0..30). The arrays are copied. *out
+// receives the handle.
 struct SimHandle {
   StrandMotion motion;
 };
@@ -645,12 +647,15 @@ EMSCRIPTEN_KEEPALIVE int32_t hs_sim_create(EngineHandle* h, const float* points,
                                            const uint32_t* strandStart, int32_t strandCount,
                                            const int32_t* tails, const float* pivot, int32_t motion,
                                            double seed, int32_t maxGuides, int32_t useBody,
+                                           double windFromDeg, double windSpeed,
                                            SimHandle** out) {
   if (!h || !points || !strandStart || !pivot || !out || pointCount < 0 || strandCount < 0)
     return fail(HS_INVALID_INPUT, "sim_create: missing input");
   if (motion < 0 || motion > 3) return fail(HS_INVALID_INPUT, "sim_create: unknown motion");
   if (!(seed >= 0 && seed <= 4294967295.0) || std::floor(seed) != seed)
     return fail(HS_INVALID_INPUT, "sim_create: seed must be a uint32");
+  if (!std::isfinite(windFromDeg) || !(windSpeed >= 0 && windSpeed <= 30))
+    return fail(HS_INVALID_INPUT, "sim_create: wind direction must be finite, speed 0..30 m/s");
   if (strandStart[0] != 0 || strandStart[strandCount] != uint32_t(pointCount))
     return fail(HS_INVALID_INPUT, "sim_create: strandStart does not cover the points");
   for (int32_t s = 0; s < strandCount; ++s)
@@ -667,6 +672,8 @@ EMSCRIPTEN_KEEPALIVE int32_t hs_sim_create(EngineHandle* h, const float* points,
   in.motion = SimMotion(motion);
   in.seed = uint32_t(seed);
   in.maxGuides = std::max(1, maxGuides);
+  in.settings.windFrom = float(windFromDeg * 3.14159265358979323846 / 180);
+  in.settings.windSpeed = float(windSpeed);
   // the simulation's physics are its settings' defaults (hair_sim.hpp SimSettings: world units)
   auto sim = std::make_unique<SimHandle>();
   sim->motion.init(in);

@@ -106,6 +106,8 @@ export interface HairSolverModule {
     seed: number,
     maxGuides: number,
     useBody: number,
+    windFromDeg: number,
+    windSpeed: number,
     handleOut: number,
   ): number;
   _hs_sim_destroy(s: number): void;

@@ -52,17 +52,20 @@ HeadPose headPose(SimMotion motion, double t, const Eigen::Vector3f& pivot) {
   return pose;
 }
 
-Eigen::Vector3f windVelocity(SimMotion motion, double t, uint32_t seed) {
+Eigen::Vector3f windVelocity(SimMotion motion, double t, uint32_t seed, float from, float mean) {
   if (motion != SimMotion::Wind) return Eigen::Vector3f::Zero();
   // Gusts: a few seeded sinusoids, ramped in over the first second.
   const double ramp = std::min(1.0, t);
-  double speed = 3.0;
+  double speed = mean;
   for (uint32_t k = 0; k < 3; ++k) {
     const double f = 0.3 + 0.7 * unit(seed, 2 * k), ph = 2 * kPi * unit(seed, 2 * k + 1);
-    speed += 1.5 * std::sin(2 * kPi * f * t + ph);
+    speed += 0.5 * mean * std::sin(2 * kPi * f * t + ph);
   }
-  const double dir = 2 * kPi * unit(seed, 99) * 0.25 - kPi / 8;  // mostly from the front (+z)
-  return float(ramp * speed) * Eigen::Vector3f(float(std::sin(dir)), 0.0f, float(-std::cos(dir)));
+  // from the front (+z) give or take pi / 8, then turned about the vertical axis by `from`
+  const double dir = 2 * kPi * unit(seed, 99) * 0.25 - kPi / 8;
+  const double x = std::sin(dir), z = -std::cos(dir);
+  const double c = std::cos(double(from)), sn = std::sin(double(from));
+  return float(ramp * speed) * Eigen::Vector3f(float(x * c + z * sn), 0.0f, float(z * c - x * sn));
 }
 
 void HairSim::init(const float* points, int strandCount, int pointsPerStrand,
@@ -199,7 +202,9 @@ void HairSim::step() {
     f.pose = headPose(motion_, t, pivot_);
     // Preloaded gravity: the groom was shaped under g in the starting orientation (identity).
     const Eigen::Vector3f gEff = g - f.pose.rotation * g;
-    const Eigen::Vector3f wind = kUnitsPerMetre * windVelocity(motion_, t, seed_);
+    const Eigen::Vector3f wind =
+        kUnitsPerMetre *
+        windVelocity(motion_, t, seed_, settings_.windFrom, settings_.windSpeed);
     for (int a = 0; a < 3; ++a) {
       f.wdt[a] = wind[a] * dt;
       f.gdt[a] = gEff[a] * dt * dt;

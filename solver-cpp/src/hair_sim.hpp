@@ -42,8 +42,11 @@ struct HeadPose {
 // Settle and Wind keep the head still; Head turn yaws ±60° and Nod pitches ±25° (smooth, period
 // 2 s, starting at rest with zero velocity).
 HeadPose headPose(SimMotion motion, double t, const Eigen::Vector3f& pivot);
-// The wind velocity at time t (m/s; zero but for Wind), gusting deterministically from the seed.
-Eigen::Vector3f windVelocity(SimMotion motion, double t, uint32_t seed);
+// The wind velocity at time t (m/s; zero but for Wind), gusting deterministically from the seed:
+// from the direction `from` (radians about the vertical axis: 0 the face's side, +z; pi / 2 the
+// head's left, +x), give or take a seeded pi / 8, at `speed` m/s give or take half of it.
+Eigen::Vector3f windVelocity(SimMotion motion, double t, uint32_t seed, float from = 0.f,
+                             float speed = 3.f);
 // The app's world units per metre (1 unit = 10 cm): the simulation works in world units, so the
 // wind (m/s) is scaled by this (it was used as units/s, a tenth of its speed: no visible motion).
 constexpr float kUnitsPerMetre = 10.0f;
@@ -62,6 +65,10 @@ struct SimSettings {
   float shapeFloor = 0.035f;
   float bendStiffness = 0.65f;
   float windDrag = 0.5f;  // per second, toward the wind velocity
+  // Wind (the Wind motion; windVelocity): where it comes from (radians about the vertical axis,
+  // 0 the front) and its mean speed (m/s; its gusts add and take up to half of it).
+  float windFrom = 0.f;
+  float windSpeed = 3.f;
   // Points are kept this far outside the head and the body (2 mm: the distance grids' zero is
   // within a cell of the surface).
   float collisionMargin = 0.02f;

@@ -88,6 +88,53 @@ test('Play with Head turn moves the strands; Stop restores them bit for bit', as
   expect(errors).toEqual([]);
 });
 
+test('Wind from the left, chosen in the Motion controls, blows the tips to the right', async ({
+  page,
+}) => {
+  const errors = watchConsole(page);
+  await page.goto('/?preset=long&strands=3000');
+  await settled(page);
+  await keepDrawn(page);
+  // the wind's controls are off until Wind is the motion
+  await expect(page.getByLabel('Wind direction')).toBeDisabled();
+  await page.getByLabel('Motion').selectOption('wind');
+  await page.getByLabel('Wind direction').selectOption({ label: 'from the left' });
+  await page.getByLabel('Wind speed (m/s)').fill('8');
+  await page.getByLabel('Wind speed (m/s)').press('Enter');
+  await page.getByRole('button', { name: 'Play' }).click();
+  await expect(page.getByTestId('status')).toContainText('Playing Wind');
+  // the tips' mean move along x since the groom (cm; the head's left is +x), averaged over the
+  // frames drawn from frame 24 (the gusts ramped in) to 96: the gusts swing the hair to and fro
+  const tipsX = () =>
+    page.evaluate(() => {
+      const s = window.hairsketch.strands();
+      const k = (window as unknown as { kept: NonNullable<typeof s> }).kept;
+      if (!s) throw new Error('no hair');
+      let sum = 0;
+      const n = k.strandStart.length - 1;
+      for (let i = 0; i < n; i++) {
+        const tip = k.strandStart[i + 1] - 1;
+        sum += s.points[3 * tip] - k.points[3 * tip];
+      }
+      return { x: (10 * sum) / n, frame: window.hairsketch.motion().frame };
+    });
+  const xs: number[] = [];
+  for (let f = 24; f <= 96; ) {
+    await motionFrame(page, f);
+    const t = await tipsX();
+    xs.push(t.x);
+    f = t.frame + 1;
+  }
+  const x = xs.reduce((a, b) => a + b, 0) / xs.length;
+  console.log(
+    `wind from the left at 8 m/s: the tips moved ${x.toFixed(2)} cm along x on average over ${xs.length} frames drawn (24-96)`,
+  );
+  expect(x).toBeLessThan(-1);
+  await page.getByRole('button', { name: 'Stop' }).click();
+  expect((await changedSinceKept(page)).changed).toBe(0);
+  expect(errors).toEqual([]);
+});
+
 test('frames per second while playing at 30K strands (printed)', async ({ page }) => {
   test.skip(!process.env.MOTION_FPS, 'slow under SwiftShader: run with MOTION_FPS=1');
   test.setTimeout(300_000);

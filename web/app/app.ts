@@ -236,7 +236,7 @@ export function startApp(): void {
     cycleQuality: () => quality.cycle(),
     toggleMotion: () => {
       if (motion.playing) motion.stop();
-      else motion.play(motionControls.selected());
+      else motion.play(motionControls.selected(), motionControls.wind());
     },
   });
   const toolbar = buildToolbar(byId('toolbar'), actions, {
@@ -344,7 +344,7 @@ export function startApp(): void {
     changed: () => motionControls.refresh(),
   });
   const motionControls = buildMotionControls(toolbar.moreElement, {
-    play: (m) => motion.play(m),
+    play: (m, w) => motion.play(m, w),
     stop: () => motion.stop(),
     playing: () => motion.playing,
   });

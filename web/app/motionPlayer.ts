@@ -10,7 +10,13 @@
 import * as THREE from 'three';
 import type { Editor } from '../editor/editor';
 import type { StrandArrays } from '../model/hairArrays';
-import { MOTION_FRAME_RATE, MOTION_LABELS, type MotionName } from '../model/motion';
+import {
+  DEFAULT_WIND,
+  MOTION_FRAME_RATE,
+  MOTION_LABELS,
+  type MotionName,
+  type WindSettings,
+} from '../model/motion';
 import { changesHair } from '../model/sessionSchema';
 import type { SolveResult, SolverClient } from '../solver/solverClient';
 import type { HairView } from '../viewer/hairView';
@@ -95,7 +101,7 @@ export class MotionPlayer {
     return this.drawnCount > 1 && s > 0 ? (this.drawnCount - 1) / s : 0;
   }
 
-  play(motion: MotionName): void {
+  play(motion: MotionName, wind: WindSettings = DEFAULT_WIND): void {
     if (this.motion) this.stop();
     const base = this.d.shown();
     if (!base || base.strands.strandStart.length < 2) {
@@ -108,6 +114,7 @@ export class MotionPlayer {
       motion,
       seed: s.growth.seed,
       body: !!s.bust,
+      ...(motion === 'wind' ? { wind } : {}),
       strands: {
         points: base.strands.points,
         strandStart: base.strands.strandStart,

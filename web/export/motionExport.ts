@@ -3,11 +3,14 @@
 // same session, motion and frame count give the same .usda bytes in both.
 import type { StrandArrays } from '../model/hairArrays';
 import {
+  DEFAULT_WIND,
   isMotionName,
   MOTION_FRAME_RATE,
   MOTION_MAX_FRAMES,
   MOTIONS,
   type MotionName,
+  type WindSettings,
+  windProblem,
 } from '../model/motion';
 import type { SessionState } from '../model/session';
 import { type SolverEngine, SolverError } from '../solver/engine';
@@ -29,21 +32,23 @@ export function motionNameProblem(name: string): string | null {
 
 /** Plays `motion` over `strands` (grown on `engine`, whose head and body it collides with) for
  *  `frames` frames at 24 fps, frame 0 being the groom itself: the seed is the session's, the
- *  body is used when the session's bust is on. */
+ *  body is used when the session's bust is on; `wind`: the Wind motion's direction and speed. */
 export function simulateMotion(
   engine: SolverEngine,
   strands: StrandArrays,
   session: SessionState,
   motion: MotionName,
   frames: number,
+  wind: WindSettings = DEFAULT_WIND,
 ): NonNullable<ExportInput['motion']> {
-  const problem = motionFramesProblem(frames) ?? motionNameProblem(motion);
+  const problem = motionFramesProblem(frames) ?? motionNameProblem(motion) ?? windProblem(wind);
   if (problem) throw new SolverError(problem, 'invalid_input');
   if (!engine.startMotion) throw new SolverError('this engine cannot play motions', 'internal');
   const run = engine.startMotion(strands, {
     motion,
     seed: session.growth.seed,
     body: !!session.bust,
+    wind,
   });
   try {
     const out: NonNullable<ExportInput['motion']> = {

@@ -24,6 +24,32 @@ export const MOTION_MAX_GUIDES = 3000;
 /** The point the head (and bust) turns about: the top of the neck, in world units (10 cm). */
 export const MOTION_PIVOT: readonly [number, number, number] = [0, -1.0, -0.15];
 
+/** The Wind motion's wind: where it comes from (degrees about the vertical axis: 0 the face's
+ *  side, 90 the head's left, 180 behind, 270 its right) and its mean speed (m/s; gusts add and
+ *  take up to half of it). */
+export interface WindSettings {
+  fromDeg: number;
+  speed: number;
+}
+export const DEFAULT_WIND: WindSettings = { fromDeg: 0, speed: 3 };
+/** The wind speeds the Motion controls offer (m/s). */
+export const WIND_SPEED_RANGE = { min: 0, max: 30, step: 0.5 };
+/** The directions the Motion controls offer, by name. */
+export const WIND_FROM: readonly { label: string; deg: number }[] = [
+  { label: 'from the front', deg: 0 },
+  { label: 'from the left', deg: 90 },
+  { label: 'from behind', deg: 180 },
+  { label: 'from the right', deg: 270 },
+];
+
+/** Why `w` is no wind the simulation takes, or null. */
+export function windProblem(w: WindSettings): string | null {
+  if (!Number.isFinite(w.fromDeg)) return 'the wind direction must be a number of degrees';
+  if (!(w.speed >= WIND_SPEED_RANGE.min && w.speed <= WIND_SPEED_RANGE.max))
+    return `the wind speed must be ${WIND_SPEED_RANGE.min} to ${WIND_SPEED_RANGE.max} m/s`;
+  return null;
+}
+
 /** The C++ enum's value (SimMotion). */
 export function motionCode(m: MotionName): number {
   return MOTIONS.indexOf(m);

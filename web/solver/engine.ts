@@ -11,7 +11,7 @@ import type {
   ScalpMesh,
   StrandArrays,
 } from '../model/hairArrays';
-import type { MotionFrame, MotionName } from '../model/motion';
+import type { MotionFrame, MotionName, WindSettings } from '../model/motion';
 import type { SolverErrorKind, SolverName, SolveStats } from './protocol';
 
 /** A groom in motion over an engine's head (SolverEngine.startMotion; wasmMotion.ts). */
@@ -28,6 +28,8 @@ export interface MotionRun {
 export interface MotionOptions {
   motion: MotionName;
   seed: number;
+  /** The Wind motion's wind (model/motion.ts DEFAULT_WIND when absent). */
+  wind?: WindSettings;
   /** Collide with the engine's body (the session's bust is on). */
   body: boolean;
   maxGuides?: number;

@@ -31,7 +31,7 @@ import type {
   StrandArrays,
   StrandVertexArrays,
 } from '../model/hairArrays';
-import type { MotionName } from '../model/motion';
+import type { MotionName, WindSettings } from '../model/motion';
 export type SolverName = 'cg' | 'fast' | 'exact' | 'auto';
 
 /** What went wrong in a solver call (wasmStructs.ts SOLVER_STATUS gives the binding's code of
@@ -107,6 +107,7 @@ export type ToWorker =
       motion: MotionName;
       seed: number; // uint32: the session's seed (the wind's gusts)
       body: boolean;
+      wind?: WindSettings; // the Wind motion's direction and speed (DEFAULT_WIND when absent)
       strands: StrandArrays; // points, strandStart, tailCurves (per strand, optional) as above
     }
   | {

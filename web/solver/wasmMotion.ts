@@ -3,7 +3,13 @@
 // (into a caller's array of the right length when given: no allocation a frame).
 import type { HairSolverModule } from '../generated/hairsolver.mjs';
 import type { StrandArrays } from '../model/hairArrays';
-import { MOTION_MAX_GUIDES, MOTION_PIVOT, type MotionFrame, motionCode } from '../model/motion';
+import {
+  DEFAULT_WIND,
+  MOTION_MAX_GUIDES,
+  MOTION_PIVOT,
+  type MotionFrame,
+  motionCode,
+} from '../model/motion';
 import type { MotionOptions, MotionRun } from './engine';
 import { check, withInputs, withScratch } from './wasmMemory';
 
@@ -39,6 +45,8 @@ export function createMotion(
           opts.seed >>> 0,
           opts.maxGuides ?? MOTION_MAX_GUIDES,
           opts.body ? 1 : 0,
+          (opts.wind ?? DEFAULT_WIND).fromDeg,
+          (opts.wind ?? DEFAULT_WIND).speed,
           out,
         ),
       );

@@ -183,6 +183,7 @@ export class WorkerLogic {
             motion: msg.motion,
             seed: msg.seed,
             body: msg.body,
+            ...(msg.wind ? { wind: msg.wind } : {}),
           });
           this.post({ type: 'motionFrame', ...this.motion.step() });
         }
