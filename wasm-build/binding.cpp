@@ -647,8 +647,7 @@ EMSCRIPTEN_KEEPALIVE int32_t hs_sim_create(EngineHandle* h, const float* points,
                                            const uint32_t* strandStart, int32_t strandCount,
                                            const int32_t* tails, const float* pivot, int32_t motion,
                                            double seed, int32_t maxGuides, int32_t useBody,
-                                           double windFromDeg, double windSpeed,
-                                           SimHandle** out) {
+                                           double windFromDeg, double windSpeed, SimHandle** out) {
   if (!h || !points || !strandStart || !pivot || !out || pointCount < 0 || strandCount < 0)
     return fail(HS_INVALID_INPUT, "sim_create: missing input");
   if (motion < 0 || motion > 3) return fail(HS_INVALID_INPUT, "sim_create: unknown motion");

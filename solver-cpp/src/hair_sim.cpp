@@ -203,8 +203,7 @@ void HairSim::step() {
     // Preloaded gravity: the groom was shaped under g in the starting orientation (identity).
     const Eigen::Vector3f gEff = g - f.pose.rotation * g;
     const Eigen::Vector3f wind =
-        kUnitsPerMetre *
-        windVelocity(motion_, t, seed_, settings_.windFrom, settings_.windSpeed);
+        kUnitsPerMetre * windVelocity(motion_, t, seed_, settings_.windFrom, settings_.windSpeed);
     for (int a = 0; a < 3; ++a) {
       f.wdt[a] = wind[a] * dt;
       f.gdt[a] = gEff[a] * dt * dt;
