@@ -38,6 +38,13 @@ std::vector<float> napeLine(const std::vector<float>& edges, const float centre[
   return line;
 }
 
+float napeLineTop(const std::vector<float>& line) {
+  float top = -std::numeric_limits<float>::infinity();
+  for (float v : line)
+    if (v > top) top = v;  // NaN compares false: bins with no edge are skipped
+  return top;
+}
+
 float napeLineAt(const std::vector<float>& line, const float centre[3], float x, float z) {
   if (line.size() != size_t(kNapeBins) || z - centre[2] > kNapeFront)
     return std::numeric_limits<float>::quiet_NaN();

@@ -26,6 +26,9 @@ constexpr float kFadeDown = 0.5f;
 // (NaN where no edge passes), behind kNapeFront and below the centre.
 std::vector<float> napeLine(const std::vector<float>& edges, const float centre[3]);
 
+// The line's highest point (-infinity when it has none).
+float napeLineTop(const std::vector<float>& line);
+
 // The line's height at (x, z) (linear between bins), NaN in front of kNapeFront, where the line
 // has no edge, or when line is empty.
 float napeLineAt(const std::vector<float>& line, const float centre[3], float x, float z);

@@ -4,6 +4,8 @@
 // field proposed.
 #pragma once
 
+#include <limits>
+
 #include "hair_fall.hpp"
 #include "head_distance.hpp"
 
@@ -16,7 +18,10 @@ struct ShapeGrowth {
   float volume = 0;                              // the lift at the roots (world units, 0..0.3)
   float centre[3] = {0, 0, 0};                   // the head's centre (the prior's vertical axis)
   const std::vector<float>* napeLine = nullptr;  // the lower hairline (nape_line.hpp), or null
-  float lineOvershoot = 0;                       // ShapeRules::lineOvershoot
+  // no fade above this height (the line's highest point plus kFadeAbove): growth reads the line
+  // only below it
+  float napeTop = -std::numeric_limits<float>::infinity();
+  float lineOvershoot = 0;  // ShapeRules::lineOvershoot
 
   // The head's distance at p (world units) and its outward normal there (nrm, unit): read where
   // the distance grid is exact (HeadDistance::band), farther out by walking towards the head

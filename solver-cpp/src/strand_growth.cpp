@@ -497,6 +497,7 @@ struct GrowRange {
           }
           // short hair ends in a band round the lower hairline (nape_line.hpp): a faded nape
           if (fade >= 0 && length + segLen > kFadeShortest && ny - y < -kFadeDown * segLen &&
+              ny < shaped.napeTop &&
               ny < napeLineAt(*shaped.napeLine, shaped.centre, nx, nz) + kFadeAbove -
                        fade * (kFadeAbove + kFadeBelow)) {
             if (flags) flags[r] |= kCutAtLine;
@@ -580,6 +581,7 @@ Status growStrands(const Grid& g, const std::vector<float>& field,
                      std::any_of(reach->strokes.begin(), reach->strokes.end(), setsHem),
                  nullptr};
   grow.shaped.napeLine = shape ? shape->napeLine : nullptr;
+  if (grow.shaped.napeLine) grow.shaped.napeTop = napeLineTop(*grow.shaped.napeLine) + kFadeAbove;
   grow.shaped.lineOvershoot = shape ? std::max(shape->lineOvershoot, 0.f) : 0.f;
   if (shape && shape->on) {
     out.flags.assign(roots.size(), 0);

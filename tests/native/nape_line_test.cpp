@@ -52,6 +52,9 @@ TEST(NapeLine, TheLowestEdgePerAngleBehindTheEarsReadBackBetweenBins) {
   // in front of kNapeFront: NaN whatever the bins hold
   EXPECT_TRUE(std::isnan(napeLineAt(line, centre, 0.f, kNapeFront + 0.01f)));
   EXPECT_TRUE(std::isnan(napeLineAt({}, centre, 0.f, -0.8f)));
+  // its highest point, over the bins that have one
+  EXPECT_FLOAT_EQ(napeLineTop(line), -0.4f);
+  EXPECT_TRUE(std::isinf(napeLineTop(std::vector<float>(kNapeBins, std::nanf("")))));
 }
 
 }  // namespace nape_line_test
