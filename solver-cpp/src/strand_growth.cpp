@@ -248,6 +248,7 @@ struct GrowRange {
       *dst++ = y;
       *dst++ = z;
       double length = 0;
+      double arc = 0;  // the path's length (length is the field's steps')
       // With the curves' reach: a strand rooted where a curve's hair still has length ends
       // where the remaining length runs out; one rooted past a curve's end (on the scalp beyond
       // a stroke that ends there) is short near it and longer away from it.
@@ -485,11 +486,16 @@ struct GrowRange {
             }
           }
           if (!s.inside(nx, ny, nz)) break;  // leaving the bounding volume
+          // Max length bounds the path as drawn: the rules above bend the step (combing,
+          // parting round the face, standing off the head), so it can be longer than segLen
+          const double pathStep = std::sqrt(double(nx - x) * (nx - x) + double(ny - y) * (ny - y) +
+                                            double(nz - z) * (nz - z));
+          if (arc + pathStep > maxLen) break;
           // hair a stroke's hair ends: the remaining length ends it; the strokes' length, with
           // kAroundSlack for a path a little longer than the stroke's (laid on the head), only
           // bounds it
           if (length + segLen > (endsWithCurve && shape
-                                     ? std::min(maxLen, strandMax * (1 + kAroundSlack)) + overshoot
+                                     ? std::min(maxLen, strandMax * (1 + kAroundSlack) + overshoot)
                                      : strandMax)) {
             // hair whose length is its strokes' ends at their line: no length jitter
             if (flags && endsWithCurve && shape) flags[r] |= kCutAtLine;
@@ -510,6 +516,7 @@ struct GrowRange {
             break;
           }
           length += segLen;
+          arc += pathStep;
           px = x;
           py = y;
           pz = z;
