@@ -55,6 +55,20 @@ describe('streamOnMiddle', () => {
     expect(streamOnMiddle(inside, X_PLANE, side, head).snapped).toBe(false);
   });
 
+  it('leaves a lock drawn from the top of the outline down in front of the face where it is drawn', () => {
+    // fresh eyes round 18: pressed just inside the top of the outline in a side view and drawn
+    // forward and down past the face, it was put on the middle and hung over the nose. The same
+    // press drawn up and back (a crest's spike) is still put on the middle
+    const top = crest(0.3).slice(0, 3);
+    const front = top[0];
+    const down: Vec3[] = [1, 2, 3, 4].map((k) => [0.3, front[1] - 0.4 * k, front[2] + 0.6]);
+    for (const p of down) expect(head.signedDistance(p)).toBeGreaterThan(0.05);
+    const lock = streamOnMiddle([...top, ...down], X_PLANE, side, head);
+    expect(lock.snapped).toBe(false);
+    const up: Vec3[] = [1, 2].map((k) => [0.3, top[2][1] + 0.3 * k, top[2][2] - 0.2 * k]);
+    expect(streamOnMiddle([...top, ...up], X_PLANE, side, head).snapped).toBe(true);
+  });
+
   it('with Mirror on, puts a stroke within 1.5 cm of the middle on it from any view', () => {
     // a crest 1 cm off the middle, drawn from the front: as drawn without Mirror, on the middle
     // (on the head) with it

@@ -2,7 +2,8 @@
 // line combed back) is put on it: from the side the middle is the head's outline, and a press
 // just inside it lands a few centimetres to the near side (fresh eyes could not draw a centred
 // mohawk without Mirror), when it is pressed on the outline; with Mirror on, one drawn within
-// 1.5 cm of the middle from any view is too. Its points that lay on the head are put back on it
+// 1.5 cm of the middle from any view is too; one that hangs down in front of the face is not.
+// Its points that lay on the head are put back on it
 // where the middle meets it; those past the scalp keep their place in the plane.
 import type { Head } from '../head/head';
 import { type MirrorPlane, snapToPlane } from '../model/mirror';
@@ -15,6 +16,18 @@ const ON_HEAD = 0.05;
  *  a bob's side stroke near the back of the head, is meant where it is (fresh eyes lost a
  *  stroke's mirror twin to the snap). */
 const ON_OUTLINE = 0.55;
+/** How high above the head's centre the face reaches (world units; the face's column of the
+ *  shape rules, solver-cpp/src/hair_fall.hpp kFaceTop). */
+const FACE_TOP = 0.5;
+
+/** Whether p, off the head, hangs before or beside the face: in front of the head's centre,
+ *  below FACE_TOP. A stroke with such a point is a lock drawn down past the face (fresh eyes round 18:
+ *  a long stroke pressed near the top of the outline in a side view went down the middle of the
+ *  face), not a crest or a centre line, and stays where it is drawn. */
+function beforeFace(p: Vec3, head: Head): boolean {
+  const c = head.center;
+  return p[2] > c[2] && p[1] < c[1] + FACE_TOP && head.signedDistance(p) > ON_HEAD;
+}
 
 export function streamOnMiddle(
   drawn: Vec3[],
@@ -23,7 +36,8 @@ export function streamOnMiddle(
   head: Head,
   mirrored = false,
 ): { points: Vec3[]; snapped: boolean } {
-  if (drawn.length === 0) return { points: drawn, snapped: false };
+  if (drawn.length === 0 || drawn.some((p) => beforeFace(p, head)))
+    return { points: drawn, snapped: false };
   const n = head.normalAt(drawn[0]);
   const len = Math.hypot(view[0], view[1], view[2]) || 1;
   const onOutline = Math.abs(n[0] * view[0] + n[1] * view[1] + n[2] * view[2]) / len < ON_OUTLINE;
