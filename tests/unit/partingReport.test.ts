@@ -56,10 +56,10 @@ describe('partingReport', () => {
     );
   });
 
-  it('says a parting that bounds nothing is open, and nothing without sections', () => {
+  it('says a parting that bounds nothing is a parting, and nothing without sections', () => {
     const h = hairOn(() => 0);
     expect(partingReport('c1', arc(-0.3), h)).toMatch(
-      /^c1 is open: it parts the hair and makes no section/,
+      /^c1 parts the hair: a parting \(for sections to tie/,
     );
     expect(partingReport('c1', arc(-0.3), { ...h, rootSections: undefined })).toBeNull();
     expect(partingReport('c1', arc(-0.3), null)).toBeNull();

@@ -1,5 +1,5 @@
 // Says what a new parting or tie did once the hair grown with it is on screen: a parting
-// (model/partingReport.ts) "c1 splits the scalp: top 38 %, rest 62 %" or "c1 is open…", so a user
+// (model/partingReport.ts) "c1 splits the scalp: top 38 %, rest 62 %" or "c1 parts the hair: a parting…", so a user
 // sees whether the section a tie needs exists; a tie "c2 gathers 62 % of the hair", so a tie
 // that took another section than meant shows at once.
 import type { EditorChange } from '../editor/editor';

@@ -1,7 +1,7 @@
 // What a parting did, in a sentence for the status line: whether it bounds a section (scalp_sections
 // in the solver splits the scalp along partings; the worker names each strand's section,
 // StrandArrays.rootSections) and, if it does, the sections on either side with their share of
-// the hair: "c1 splits the scalp: top 38 %, rest 62 %" or "c1 is open: no section…". A user
+// the hair: "c1 splits the scalp: top 38 %, rest 62 %" or "c1 parts the hair: a parting…". A user
 // who ends a parting short of the hairline sees at once whether it made the section a tie needs.
 import type { StrandArrays } from './hairArrays';
 import type { Vec3 } from './vec3';
@@ -79,7 +79,7 @@ export function partingReport(id: string, line: readonly Vec3[], hair: Hair | nu
     .filter(([, m]) => m >= Math.max(3, SIDE_SHARE * nearAll))
     .map(([sec]) => sec);
   if (sides.length < 2)
-    return `${id} is open: it parts the hair and makes no section (for one, end it within 5 cm of the hairline or of another parting)`;
+    return `${id} parts the hair: a parting (for sections to tie, end it within 5 cm of the hairline or of another parting)`;
   const centre = (sec: number): Vec3 => {
     const c = sum.get(sec) as Vec3;
     const m = count.get(sec) ?? 1;
