@@ -18,6 +18,7 @@ enum EngineSetting : size_t {
   kSettingVolume,      // their lift at the roots, world units (HairEngine::setShape)
   kSettingTies,        // ties from any hand (HairEngine::setTies)
   kSettingHairline,    // a soft hairline (HairEngine::setHairline, soft_hairline.hpp)
+  kSettingCurlVolume,  // curly hair spreads towards its ends (HairEngine::setCurlVolume)
   kEngineSettingCount
 };
 

@@ -87,6 +87,11 @@ class HairEngine {
   // Takes effect at the next grow.
   void setHairline(bool on) { hairline_ = on; }
   bool hairline() const { return hairline_; }
+  // Curl volume (strand_detail.hpp "Curl volume"): curly hair spreads out towards its ends by a
+  // share of its curl's shrinkage (kCurlSpread); hair a tie lays keeps its shape. Off (the
+  // default): curls wind round the hair's path, as in sessions made before it.
+  void setCurlVolume(bool on) { curlVolume_ = on; }
+  bool curlVolume() const { return curlVolume_; }
   // Finished edges: every strand not laid into a tie ends up to kEndSpread short of where it
   // grew to (strand_detail.hpp applyDetail's endSpread), seeded per strand; lone roots are not
   // grown (scalp_roots.hpp dropLoneRoots); with fall the prior opens the face (hair_fall.hpp);
@@ -215,6 +220,7 @@ class HairEngine {
   bool sections_ = false;
   bool ties_ = false;
   bool hairline_ = false;
+  bool curlVolume_ = false;
   bool finish_ = false;
   ShapeRules shape_;
   std::vector<std::vector<Eigen::Vector3f>> partings_;  // the dividing curves of the last setCurves

@@ -220,12 +220,15 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
       }
     std::vector<DetailParams> groups =
         detail_.empty() ? std::vector<DetailParams>{DetailParams{}} : detail_;
+    if (curlVolume_)
+      for (DetailParams& d : groups) d.curl.spread = kCurlSpread;
     // (ties on) hair a tie lays keeps its length: a tail ends where its stroke ends, with the
     // tie's own uneven ends (gathered_tail.hpp), so its strands take their group's detail without
     // the length jitter (which cut tails up to a tenth short of their strokes' ends); hair wound
     // into a bun's coil, without flyaways and frizz too (a bun is wound tight and its ends tucked:
-    // a new session's 1 % of flyaways stood round it as a wiry grey halo)
-    if (ties_ && anyDetail) {
+    // a new session's 1 % of flyaways stood round it as a wiry grey halo). (curl volume on) hair
+    // a tie lays keeps the shape the tie gives it: it curls but does not spread.
+    if ((ties_ || curlVolume_) && anyDetail) {
       const size_t own = groups.size();
       std::vector<int64_t> tiedGroup(2 * own, -1);  // [g]: a tail's, [own + g]: a bun's
       for (size_t st = 0; st < n; ++st) {
@@ -233,12 +236,15 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
         const uint32_t g = groupOf[st];
         if (g >= own) continue;
         const DetailParams& d = groups[g];
-        const bool bun = inBun[st] && (d.flyaway.share > 0 || d.frizz.distance > 0);
-        if (!(d.lengthJitter > 0) && !bun) continue;
+        const bool jitter = ties_ && d.lengthJitter > 0;
+        const bool bun = ties_ && inBun[st] && (d.flyaway.share > 0 || d.frizz.distance > 0);
+        const bool spread = d.curl.spread > 0 && d.curl.radius > 0;
+        if (!jitter && !bun && !spread) continue;
         const size_t slot = bun ? own + g : g;
         if (tiedGroup[slot] < 0) {
           DetailParams kept = groups[g];
-          kept.lengthJitter = 0;
+          if (ties_) kept.lengthJitter = 0;
+          kept.curl.spread = 0;
           if (bun) {
             kept.flyaway.share = 0;
             kept.frizz.distance = 0;

@@ -31,6 +31,7 @@ Status validateDetail(const DetailParams& d) {
   if (!nonNegative(d.curl.frequency)) return rangeError("curl.frequency", kNonNeg);
   if (!unit(d.curl.start)) return rangeError("curl.start", kUnit);
   if (!unit(d.curl.randomOffset)) return rangeError("curl.randomOffset", kUnit);
+  if (!nonNegative(d.curl.spread)) return rangeError("curl.spread", kNonNeg);
   if (!unit(d.clump.factor)) return rangeError("clump.factor", kUnit);
   if (!shape(d.clump.shape)) return rangeError("clump.shape", kShape);
   if (!nonNegative(d.clump.tipSpread)) return rangeError("clump.tipSpread", kNonNeg);
@@ -170,6 +171,7 @@ Status applyDetail(const std::vector<DetailParams>& groups, const std::vector<ui
 
   // 4. Curl and frizz, strand by strand (curl may add points: then into a new buffer).
   if (anyCurlOrFrizz) {
+    const V3 centre = headCentre ? *headCentre : V3::Zero();
     // with ringlets a strand curls as its clump's ringlet (ringletOf)
     auto curlOf = [&](size_t s) {
       return ringlets ? ringletOf(groups[groupOf[s]], seed, phaseKey[s])
@@ -186,7 +188,7 @@ Status applyDetail(const std::vector<DetailParams>& groups, const std::vector<ui
         const size_t count = start[s + 1] - start[s];
         load(P + 3 * size_t(start[s]), count, w.p);
         const Ringlet r = curlOf(s);
-        curlAndFrizz(r.detail, seed, key[s], phaseKey[s], count, w, r.hand);
+        curlAndFrizz(r.detail, seed, key[s], phaseKey[s], count, w, r.hand, centre);
         store(w.p, P + 3 * size_t(start[s]));
       }
     } else {
@@ -212,7 +214,7 @@ Status applyDetail(const std::vector<DetailParams>& groups, const std::vector<ui
         }
         load(src, count, w.p);
         const Ringlet r = curlOf(s);
-        curlAndFrizz(r.detail, seed, key[s], phaseKey[s], m, w, r.hand);
+        curlAndFrizz(r.detail, seed, key[s], phaseKey[s], m, w, r.hand, centre);
         store(w.p, dst);  // m points: resampled to m with curl, count = m without
       }
       strands.points.swap(out);

@@ -44,6 +44,15 @@
 //     theta_k = 2 pi (q s_k + o u),  ramp(x) = smoothstep(x / a) (1 for a = 0; 0 at the root),
 //   u uniform in [0, 1) from the key, (T, N, B) the path's rotation-minimising frame (double
 //   reflection, Wang et al. 2008; N_0 = the component of +y normal to T_0, +x if T_0 is along y).
+// Curl volume (spread v > 0, curl on): before the helix, the path it winds round moves out from the
+//   head as curly hair stands out from the hair under it, widening towards the ends: with the
+//   curl's shrinkage k = 1 - 1 / sqrt(1 + (2 pi q r)^2) (the share of its length a helix of radius
+//   r and q turns a unit takes up: about 0.5 for curly and coily types, 0.02 for loose waves),
+//     p_k <- p_k + v k L g t_k^1.3 D_k,   t_k = max(0, (x_k - a) / (1 - a)),
+//   g = 1 + kCurlSpreadVary (2 u - 1) per lock (u seeded by the phase key: a ringlet's guide's),
+//   D_k the unit of (p_k - c) with its y part dropped and its forward (+z) part clamped at 0, c the
+//   head's centre (so hair spreads sideways and back, never over the face; a point straight in
+//   front of c does not move).
 // Frizz (distance d, shape s): v_i uniform in the unit ball (seeded by the key, one per point),
 //   c_0 = 0, c_i = c_{i-1} + v_i.x T_i + v_i.y N_i + v_i.z B_i (the frame of the path before curl),
 //   p_i <- p_i + d S(x_i; s) c_i. The root is pinned.
@@ -71,6 +80,10 @@ struct CurlParams {
   double frequency = 1;        // turns per world unit of arc length
   double start = 0.1;          // fraction of the length over which the curl ramps in
   double randomOffset = 0.25;  // per-strand phase, fraction of a turn
+  // Curl volume (0 = off, as in sessions before it; the engine sets kCurlSpread with the
+  // session's `curlVolume`): the share of a curl's shrinkage that spreads the hair out at its tip
+  // (above, "Curl volume").
+  double spread = 0;
 };
 
 struct ClumpParams {
@@ -136,5 +149,11 @@ Status applyDetail(const std::vector<DetailParams>& groups, const std::vector<ui
 // strand's length it may take.
 constexpr float kEndSpread = 0.12f;
 constexpr double kEndSpreadShare = 0.15;
+
+// The curl volume sessions with `curlVolume` get (CurlParams::spread), and how much it varies
+// lock by lock (a seeded factor within 1 +- kCurlSpreadVary).
+constexpr double kCurlSpread = 0.45;
+constexpr double kCurlSpreadVary = 0.35;
+constexpr double kCurlSpreadTurn = 0.5;  // radians
 
 }  // namespace hairsketch

@@ -30,6 +30,35 @@ double smoothstep(double x) {
   return x * x * (3 - 2 * x);
 }
 
+// Curl volume (strand_detail.hpp "Curl volume") on the evenly resampled path, before the helix.
+void spreadCurl(const CurlParams& c, double L, uint32_t seed, uint32_t phaseKey, const V3& centre,
+                Work& w) {
+  const double steep = kTwoPi * c.frequency * c.radius;
+  const double shrink = 1 - 1 / std::sqrt(1 + steep * steep);
+  const double vary =
+      1 + kCurlSpreadVary * (2 * strandRng(seed, phaseKey, kStreamCurlSpread).uniform() - 1);
+  const double tip = c.spread * shrink * L * vary;
+  if (!(tip > 0)) return;
+  // each lock leans its own way, within +-kCurlSpreadTurn of straight out (about the vertical)
+  const double turn =
+      kCurlSpreadTurn * (2 * strandRng(seed, phaseKey, kStreamCurlSpread + 1).uniform() - 1);
+  const double ct = std::cos(turn), st = std::sin(turn);
+  const double a = std::min(c.start, 0.99);
+  const size_t n = w.p.size();
+  for (size_t k = 1; k < n; ++k) {
+    const double t = (w.s[k] / L - a) / (1 - a);
+    if (!(t > 0)) continue;
+    V3 out = w.p[k] - centre;
+    out.y() = 0;
+    out.z() = std::min(out.z(), 0.0);
+    out = V3(ct * out.x() + st * out.z(), 0, -st * out.x() + ct * out.z());
+    out.z() = std::min(out.z(), 0.0);
+    const double len = out.norm();
+    if (!(len > 1e-9)) continue;
+    w.p[k] += (tip * std::pow(t, 1.3) / len) * out;
+  }
+}
+
 }  // namespace
 
 size_t curlPointCount(const DetailParams& d, size_t n, double L, size_t cap) {
@@ -48,7 +77,7 @@ Ringlet ringletOf(const DetailParams& d, uint32_t seed, uint32_t phaseKey) {
 }
 
 void curlAndFrizz(const DetailParams& d, uint32_t seed, uint32_t key, uint32_t phaseKey, size_t m,
-                  Work& w, double hand) {
+                  Work& w, double hand, const V3& centre) {
   const double L = arcLengths(w.p, w.s);
   if (!(L > 0)) return;
   const bool curl = d.curl.radius > 0, frizz = d.frizz.distance > 0;
@@ -57,6 +86,7 @@ void curlAndFrizz(const DetailParams& d, uint32_t seed, uint32_t key, uint32_t p
     std::swap(w.p, w.q);
     w.s.resize(m);
     for (size_t k = 0; k < m; ++k) w.s[k] = L * double(k) / double(m - 1);
+    if (d.curl.spread > 0) spreadCurl(d.curl, L, seed, phaseKey, centre, w);
   }
   frames(w.p, w.t, w.n, w.b);
   const size_t n = w.p.size();

@@ -29,6 +29,7 @@ constexpr uint64_t kStreamFrizz = 0x452821e638d01377ULL;
 constexpr uint64_t kStreamEndSpread = 0xbe5466cf34e90c6cULL;
 constexpr uint64_t kStreamRinglet = 0x3f84d5b5b5470917ULL;
 constexpr uint64_t kStreamFlyaway = 0x9216d5d98979fb1bULL;
+constexpr uint64_t kStreamCurlSpread = 0xd1310ba698dfb5acULL;
 
 inline Pcg32 strandRng(uint32_t seed, uint32_t key, uint64_t stream) {
   return Pcg32((uint64_t(seed) << 32) | key, stream);
@@ -110,9 +111,10 @@ Ringlet ringletOf(const DetailParams& d, uint32_t seed, uint32_t phaseKey);
 // Curl then frizz on one strand (w.p), in place; with curl, the strand is first resampled evenly
 // to m points (curlPointCount) and s_k = L k / (m - 1) is the arc length along the path.
 // phaseKey seeds the curl's phase (the strand's own key, or its clump guide's for ringlets);
-// hand = -1 winds the curl the other way round the strand.
+// hand = -1 winds the curl the other way round the strand; centre: the head's, the curl volume
+// spreads hair away from.
 void curlAndFrizz(const DetailParams& d, uint32_t seed, uint32_t key, uint32_t phaseKey, size_t m,
-                  Work& w, double hand = 1);
+                  Work& w, double hand = 1, const V3& centre = V3::Zero());
 
 // Clump (strand_detail_clump.cpp).
 

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -396,6 +397,50 @@ TEST(BodyCollider, DetailAndATailThroughTheShouldersAreKeptOutOfTheBody) {
   EXPECT_GT(without.pointsInside, 1000u);
   EXPECT_EQ(with.pointsInside, 0u);
   EXPECT_EQ(with.segmentsInside, 0u);
+}
+
+TEST(BodyCollider, CurlVolumeSpreadsLooseCurlsAndLeavesATiesTailAsItWas) {
+  BodyScene s;
+  s.addPonytailThroughTheBody();
+  HairEngine off, on;
+  DetailParams curly;  // a 3A curl
+  curly.curl.radius = 0.105;
+  curly.curl.frequency = 2.5;
+  for (HairEngine* e : {&off, &on}) {
+    ASSERT_TRUE(s.setup(*e, false, false).ok());
+    e->setCurlVolume(e == &on);
+    ASSERT_TRUE(e->setDetail({curly}, {}).ok());
+    ASSERT_TRUE(e->grow(longRoots(), longHair()).ok());
+  }
+  const Strands &a = off.strands(), &b = on.strands();
+  const std::vector<int32_t>& tail = on.strandTailCurves();
+  ASSERT_EQ(a.strandStart.size(), b.strandStart.size());
+  size_t tails = 0, loose = 0, spread = 0;
+  double gained = 0;
+  for (size_t k = 0; k + 1 < a.strandStart.size(); ++k) {
+    const size_t a0 = a.strandStart[k], a1 = a.strandStart[k + 1], b0 = b.strandStart[k];
+    ASSERT_EQ(a1 - a0, b.strandStart[k + 1] - b0) << "strand " << k;
+    if (tail[k] >= 0) {
+      ++tails;
+      EXPECT_EQ(0, std::memcmp(&a.points[3 * a0], &b.points[3 * b0], 3 * (a1 - a0) * sizeof(float)))
+          << "tail strand " << k;
+      continue;
+    }
+    // the tip's distance from the vertical line through the head's centre (the origin)
+    const float *ta = &a.points[3 * (a1 - 1)], *tb = &b.points[3 * (a1 - a0 + b0 - 1)];
+    const double ra = std::hypot(ta[0], ta[2]), rb = std::hypot(tb[0], tb[2]);
+    ++loose;
+    gained += rb - ra;
+    spread += rb > ra + 0.02;
+  }
+  std::printf(
+      "[curl volume] %zu tail strands unchanged; %zu loose: tips %.3f further out (mean), "
+      "%zu by more than 2 mm\n",
+      tails, loose, gained / double(loose), spread);
+  EXPECT_GT(tails, 50u);
+  EXPECT_GT(loose, 200u);
+  EXPECT_GT(gained / double(loose), 0.05);
+  EXPECT_GT(spread, loose / 2);
 }
 
 TEST(BustHead, ALoadedBustIsItsOwnBodyBelowTheChin) {

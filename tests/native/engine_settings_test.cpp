@@ -28,4 +28,22 @@ TEST(EngineSettings, FallFollowsItsEntryAndBadArraysChangeNothing) {
   EXPECT_FALSE(e.fall());
 }
 
+TEST(EngineSettings, EachFlagFollowsItsOwnEntry) {
+  struct Flag {
+    EngineSetting at;
+    bool (HairEngine::*read)() const;
+  };
+  const Flag flags[] = {{kSettingSections, &HairEngine::sections},
+                        {kSettingTies, &HairEngine::ties},
+                        {kSettingHairline, &HairEngine::hairline},
+                        {kSettingCurlVolume, &HairEngine::curlVolume}};
+  for (const Flag& f : flags) {
+    HairEngine e;
+    double v[kEngineSettingCount] = {};
+    v[f.at] = 1;
+    ASSERT_TRUE(e.setSettings(v, kEngineSettingCount).ok());
+    for (const Flag& g : flags) EXPECT_EQ((e.*g.read)(), g.at == f.at) << f.at << " " << g.at;
+  }
+}
+
 }  // namespace engine_settings_test

@@ -21,6 +21,7 @@ function sample(): SessionState {
     shape: _shape,
     ties: _ties,
     hairline: _hairline,
+    curlVolume: _curlVolume,
     ...s
   } = emptySession('50k');
   return {

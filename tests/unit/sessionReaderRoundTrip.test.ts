@@ -90,9 +90,10 @@ describe('every preset session passes the reader and round-trips', () => {
 
   it('spells out the defaults of a minimal session, and keeps them on the next read', () => {
     // a session made before version 4 has no natural fall, sections, finished edges, bust or
-    // shape rules, ties from any hand or soft hairline (new sessions have them on)
-    const { fall, sections, finish, bust, shape, ties, hairline, ...beforeFall } =
+    // shape rules, ties from any hand, soft hairline or curl volume (new sessions have them on)
+    const { fall, sections, finish, bust, shape, ties, hairline, curlVolume, ...beforeFall } =
       emptySession('25k');
+    expect(curlVolume).toBe(true);
     expect(hairline).toBe(true);
     expect(shape).toBe(true);
     expect(ties).toBe(true);
@@ -117,6 +118,7 @@ describe('every preset session passes the reader and round-trips', () => {
         shape: true,
         ties: true,
         hairline: true,
+        curlVolume: true,
       }),
     ).toEqual(emptySession('25k'));
   });

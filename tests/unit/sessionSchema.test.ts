@@ -34,6 +34,7 @@ function full(): SessionState {
     volume: 0.12,
     ties: true,
     hairline: true,
+    curlVolume: true,
     bandColor: '#d02060',
     detail: { lengthJitter: 0.2 },
     scalpPaint: [{ erase: true, radius: 0.3, points: [[0, 1, 0]] }],
@@ -76,6 +77,7 @@ describe('session schema', () => {
       'volume',
       'ties',
       'hairline',
+      'curlVolume',
       'detail',
     ]);
     expect(needsSolve(s, { ...s })).toBe(false);
@@ -143,8 +145,9 @@ describe('engine settings', () => {
         volume: 0.12,
         ties: false,
         hairline: true,
+        curlVolume: false,
       }),
-    ]).toEqual([1, 0, 0, 1, 0, 1, 0.12, 0, 1]);
+    ]).toEqual([1, 0, 0, 1, 0, 1, 0.12, 0, 1, 0]);
     expect([
       ...engineSettings({
         avoidScalp: false,
@@ -156,7 +159,8 @@ describe('engine settings', () => {
         volume: 0,
         ties: true,
         hairline: false,
+        curlVolume: true,
       }),
-    ]).toEqual([0, 1, 1, 0, 1, 0, 0, 1, 0]);
+    ]).toEqual([0, 1, 1, 0, 1, 0, 0, 1, 0, 1]);
   });
 });

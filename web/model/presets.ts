@@ -330,6 +330,7 @@ export function applyPreset(s: SessionState, name: PresetName, ctx: PresetContex
     volume: _v,
     ties,
     hairline,
+    curlVolume,
     bust,
     ...rest
   } = s;
@@ -362,6 +363,7 @@ export function applyPreset(s: SessionState, name: PresetName, ctx: PresetContex
     ...(shape && name === 'empty' ? { shape } : {}),
     ...(ties && name === 'empty' ? { ties } : {}),
     ...(hairline && name === 'empty' ? { hairline } : {}),
+    ...(curlVolume && name === 'empty' ? { curlVolume } : {}),
     ...(bust ? { bust } : {}),
     growth,
     curves,

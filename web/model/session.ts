@@ -221,6 +221,7 @@ export function emptySession(
     shape: true,
     ties: true,
     hairline: true,
+    curlVolume: true,
   };
 }
 

@@ -82,6 +82,11 @@ export const SESSION_SETTINGS = {
    *  roots thin out and some grow short hairs, instead of a hard, comb-tooth edge. On in every
    *  new session; off, the roots of sessions made before. */
   hairline: { type: 'flag', hair: 'request' },
+  /** Curl volume (solver-cpp/src/strand_detail.hpp "Curl volume"): curly and coily hair spreads
+   *  out towards its ends, as curls stand out from the hair under them, instead of hanging as a
+   *  straight curtain with a curl texture. On in every new session; off, the curls of sessions
+   *  made before. */
+  curlVolume: { type: 'flag', hair: 'request' },
 } as const satisfies Record<string, SettingSpec>;
 
 export type SessionSettingName = keyof typeof SESSION_SETTINGS;
