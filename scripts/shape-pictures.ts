@@ -3,7 +3,9 @@
 // drawn with `hairsketch render`'s renderer twice, with the shape rules off (the session as saved
 // before them) and on, front, side and back: docs/screenshots/shape/<style>-{off,on}-<view>.png,
 // and with ImageMagick's montage on the machine one picture per style (off above on),
-// docs/screenshots/shape/<style>.png. SHOT_SIZE=WxH (default 420x340).
+// docs/screenshots/shape/<style>.png. SHOT_SIZE=WxH (default 420x340); SHAPE_ONLY=a,b draws only
+// those styles. "On" is the shape rules with curl volume (natural-fall.md "Curl volume"), "off"
+// neither.
 import { execFileSync } from 'node:child_process';
 import { mkdirSync, readdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { basename, join } from 'node:path';
@@ -28,15 +30,18 @@ const hasMontage = (() => {
 
 const renderer = await openStillRenderer();
 try {
-  for (const f of readdirSync(dir).filter((n) => n.endsWith('.json'))) {
+  const only = process.env.SHAPE_ONLY?.split(',');
+  for (const f of readdirSync(dir).filter(
+    (n) => n.endsWith('.json') && (!only || only.includes(basename(n, '.json'))),
+  )) {
     const r = parseSession(JSON.parse(readFileSync(join(dir, f), 'utf8')));
     if (!r.ok) throw new Error(`${f}: ${r.error}`);
     const style = basename(f, '.json');
-    const { shape: _s, volume: _v, ...before } = r.value;
+    const { shape: _s, volume: _v, curlVolume: _c, ...before } = r.value;
     const files: string[] = [];
     for (const [label, session] of [
       ['off', before],
-      ['on', { ...r.value, shape: true }],
+      ['on', { ...r.value, shape: true, curlVolume: true }],
     ] as [string, SessionState][]) {
       const still = await renderer.render(session, {
         views: VIEW_NAMES,
