@@ -5,7 +5,8 @@
 import { resamplePolyline } from '../model/resample';
 import { add, distance, scale, type Vec3 } from '../model/vec3';
 import type { StrokeSample } from './depthRule';
-import type { Tool, ToolPointer } from './tool';
+import { type PendingStroke, StrokeTool } from './strokeTool';
+import type { ToolPointer } from './tool';
 
 export interface BunContext {
   sample(x: number, y: number): StrokeSample;
@@ -36,22 +37,23 @@ export function bunLoopProblem(points: readonly Vec3[], step: number): string | 
   return null;
 }
 
-export class BunTool implements Tool {
-  readonly name = 'bun';
-  private stroke: {
-    raw: Array<{ x: number; y: number }>;
-    points: Vec3[];
-    offHead: boolean;
-  } | null = null;
+interface BunStroke extends PendingStroke {
+  points: Vec3[];
+  offHead: boolean;
+}
 
-  constructor(private readonly ctx: BunContext) {}
+export class BunTool extends StrokeTool<BunStroke> {
+  readonly name = 'bun';
+
+  constructor(private readonly ctx: BunContext) {
+    super();
+  }
 
   get state(): 'idle' | 'drawing' {
     return this.stroke ? 'drawing' : 'idle';
   }
 
-  onPointerDown(p: ToolPointer): boolean {
-    if (p.button !== 0) return false;
+  protected begin(p: ToolPointer): BunStroke | null {
     const first = headPoint(this.ctx.sample(p.x, p.y));
     if (!first) {
       // fresh eyes began a loop on its far side, just past the head's outline, and could not
@@ -59,22 +61,12 @@ export class BunTool implements Tool {
       this.ctx.notify(
         'A bun is a loop drawn on the head: this press is off it (beyond the outline). Start the loop inside the outline; nothing was created.',
       );
-      return true; // the press is still the tool's: it must not orbit the camera
+      return null;
     }
-    this.stroke = { raw: [], points: [first], offHead: false };
-    return true;
+    return { raw: [], points: [first], offHead: false };
   }
 
-  onPointerMove(p: ToolPointer): void {
-    this.stroke?.raw.push({ x: p.x, y: p.y });
-  }
-
-  onPointerUp(p: ToolPointer): void {
-    const k = this.stroke;
-    if (!k) return;
-    k.raw.push({ x: p.x, y: p.y });
-    this.update();
-    this.end();
+  protected finish(k: BunStroke): void {
     if (k.offHead) {
       this.ctx.notify(
         "The bun's loop left the head (it went past the outline): draw it a little further inside; nothing was created.",
@@ -90,18 +82,11 @@ export class BunTool implements Tool {
     this.ctx.commit(points);
   }
 
-  onCancel(): void {
-    this.end();
-  }
-
-  private end(): void {
-    this.stroke = null;
+  protected clearShown(): void {
     this.ctx.showDraft(null);
   }
 
-  update(): void {
-    const k = this.stroke;
-    if (!k || k.raw.length === 0) return;
+  protected sample(k: BunStroke): void {
     for (const r of k.raw) {
       const q = headPoint(this.ctx.sample(r.x, r.y));
       if (q) k.points.push(q);

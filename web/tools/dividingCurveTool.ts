@@ -11,7 +11,8 @@ import { tiltFromHint } from '../model/dividingFrames';
 import { resamplePolyline } from '../model/resample';
 import { add, distance, dot, scale, sub, type Vec3 } from '../model/vec3';
 import type { StrokeSample } from './depthRule';
-import type { Tool, ToolPointer } from './tool';
+import { type PendingStroke, StrokeTool } from './strokeTool';
+import type { ToolPointer } from './tool';
 
 /** A press this near the selected dividing curve (grid steps) may be a tilt hint (isTiltHint). */
 export const HINT_RADIUS = 2;
@@ -62,66 +63,44 @@ export interface DividingContext {
 }
 
 /** One stroke, from press to release; it goes when the stroke ends (end()). */
-interface Stroke {
+interface Stroke extends PendingStroke {
   /** 'hinting': pressed near the selected dividing curve, so it may be a tilt hint. */
   mode: 'drawing' | 'hinting';
-  /** Pointer positions not sampled yet (update() samples them). */
-  raw: Array<{ x: number; y: number }>;
   /** The stroke's samples over the scalp. */
   points: Vec3[];
 }
 
-export class DividingCurveTool implements Tool {
+export class DividingCurveTool extends StrokeTool<Stroke> {
   readonly name = 'dividing';
-  private stroke: Stroke | null = null;
 
-  constructor(private readonly ctx: DividingContext) {}
+  constructor(private readonly ctx: DividingContext) {
+    super();
+  }
 
   get state(): 'idle' | 'drawing' | 'hinting' {
     return this.stroke?.mode ?? 'idle';
   }
 
-  onPointerDown(p: ToolPointer): boolean {
-    if (p.button !== 0) return false;
+  protected begin(p: ToolPointer): Stroke | null {
     const hit = (this.ctx.sampleStart ?? this.ctx.sample).call(this.ctx, p.x, p.y).scalpHit;
     if (!hit) {
       this.ctx.notify(
         'A parting must start on the scalp (or within 2 cm of it): nothing was created.',
       );
-      return true;
+      return null;
     }
     const sel = this.ctx.selected();
     const reach = HINT_RADIUS * this.ctx.step();
     const near = !!sel && distanceToPolyline(hit, sel.points) <= reach;
-    this.stroke = { mode: near ? 'hinting' : 'drawing', raw: [], points: [hit] };
-    return true;
+    return { mode: near ? 'hinting' : 'drawing', raw: [], points: [hit] };
   }
 
-  onPointerMove(p: ToolPointer): void {
-    this.stroke?.raw.push({ x: p.x, y: p.y });
-  }
-
-  onPointerUp(p: ToolPointer): void {
-    const k = this.stroke;
-    if (!k) return;
-    k.raw.push({ x: p.x, y: p.y });
-    this.update();
-    this.end();
-    this.finish(k);
-  }
-
-  onCancel(): void {
-    this.end();
-  }
-
-  /** Leaving the stroke: its data and its draft go. */
-  private end(): void {
-    this.stroke = null;
+  protected clearShown(): void {
     this.ctx.showDraft(null);
   }
 
   /** What a released stroke does: a tilt, a new dividing curve, or a sentence saying why not. */
-  private finish(k: Stroke): void {
+  protected finish(k: Stroke): void {
     if (k.mode === 'hinting') {
       const sel = this.ctx.selected();
       const t = sel && tiltFromHint(sel.points, sel.normals, k.points);
@@ -139,9 +118,7 @@ export class DividingCurveTool implements Tool {
     this.ctx.commit(points, this.ctx.normalsAt(points));
   }
 
-  update(): void {
-    const k = this.stroke;
-    if (!k || k.raw.length === 0) return;
+  protected sample(k: Stroke): void {
     // only samples over the scalp: the curve lies on the head
     for (const r of k.raw) {
       const hit = this.ctx.sample(r.x, r.y).scalpHit;

@@ -20,7 +20,8 @@ import { buildSupportingSurface, type SupportingSurface } from '../model/support
 import type { Vec3 } from '../model/vec3';
 import { liftStroke, type StrokeSample } from './depthRule';
 import { liftHintStroke } from './hintStroke';
-import type { Tool, ToolPointer } from './tool';
+import { type PendingStroke, StrokeTool } from './strokeTool';
+import type { ToolPointer } from './tool';
 
 export type PonytailStage = 'spine' | 'cross' | 'profileA' | 'profileB';
 
@@ -69,9 +70,7 @@ export const PONYTAIL_STAGE_HINT: Record<PonytailStage, string> = {
 };
 
 /** One stroke, from press to release; it goes when the stroke ends (end()). */
-interface Stroke {
-  /** Pointer positions not sampled yet (update() samples them). */
-  raw: Array<{ x: number; y: number }>;
+interface Stroke extends PendingStroke {
   samples: StrokeSample[];
   /** The camera when the stroke began. */
   eye: Vec3;
@@ -80,10 +79,9 @@ interface Stroke {
   surface: SupportingSurface | null;
 }
 
-export class PonytailTool implements Tool {
+export class PonytailTool extends StrokeTool<Stroke> {
   readonly name = 'ponytail';
   stage: PonytailStage = 'spine';
-  private stroke: Stroke | null = null;
   /** The ponytail's strokes so far (kept between strokes, dropped by reset()). */
   private spine: Vec3[] = [];
   private cross: Vec3[] = [];
@@ -91,7 +89,9 @@ export class PonytailTool implements Tool {
   /** The ponytail the shaping strokes are for. */
   private made: string | null = null;
 
-  constructor(private readonly ctx: PonytailContext) {}
+  constructor(private readonly ctx: PonytailContext) {
+    super();
+  }
 
   get state(): 'idle' | 'drawing' {
     return this.stroke ? 'drawing' : 'idle';
@@ -102,8 +102,7 @@ export class PonytailTool implements Tool {
     return this.spine;
   }
 
-  onPointerDown(p: ToolPointer): boolean {
-    if (p.button !== 0) return false;
+  protected begin(p: ToolPointer): Stroke | null {
     let first = this.ctx.sample(p.x, p.y);
     // a spine's press just off the scalp starts on it
     if (this.stage === 'spine' && !first.scalpHit && this.ctx.sampleStart)
@@ -113,7 +112,7 @@ export class PonytailTool implements Tool {
       this.reset();
     if (this.stage === 'spine' && !first.scalpHit) {
       this.ctx.notify('A ponytail spine must start on the scalp: nothing was created.');
-      return true;
+      return null;
     }
     const eye = this.ctx.eye();
     const surface =
@@ -125,33 +124,20 @@ export class PonytailTool implements Tool {
             'strip',
             PONYTAIL_SURFACE_HALF_WIDTH * this.ctx.step(),
           );
-    this.stroke = { raw: [], samples: [first], eye, forward: this.ctx.forward(), surface };
-    return true;
+    return { raw: [], samples: [first], eye, forward: this.ctx.forward(), surface };
   }
 
-  onPointerMove(p: ToolPointer): void {
-    this.stroke?.raw.push({ x: p.x, y: p.y });
-  }
-
-  onPointerUp(p: ToolPointer): void {
-    const k = this.stroke;
-    if (!k) return;
-    k.raw.push({ x: p.x, y: p.y });
-    this.update(false);
-    // the edit first, then the stroke ends: a commit ends the stroke's preview with it
-    this.finish(this.lifted(k));
-    this.end();
-  }
-
-  /** Leaving the stroke: its data, its draft and its preview go. */
-  private end(): void {
-    this.stroke = null;
+  protected clearShown(): void {
     this.ctx.showDraft(null);
     this.ctx.preview(null);
   }
 
+  protected finish(k: Stroke): void {
+    this.finishLifted(this.lifted(k));
+  }
+
   /** A released stroke, lifted: the ponytail's next part, or a sentence saying why not. */
-  private finish(pts: Vec3[] | null): void {
+  private finishLifted(pts: Vec3[] | null): void {
     const step = this.ctx.step();
     const line = pts ? resamplePolyline(pts, step / 2) : [];
     if (line.length < 2) {
@@ -242,7 +228,7 @@ export class PonytailTool implements Tool {
 
   onCancel(): void {
     const drawing = this.stroke !== null;
-    this.end();
+    super.onCancel();
     // cancelling a stroke keeps the ponytail's earlier strokes; cancelling between strokes
     // (Escape, another tool) abandons the ponytail
     if (!drawing && this.stage !== 'spine') this.reset();
@@ -250,9 +236,7 @@ export class PonytailTool implements Tool {
 
   /** Samples the pointer positions taken since the last call, shows the stroke and (unless
    *  `preview` is false) previews the spine's ponytail. */
-  update(preview = true): void {
-    const k = this.stroke;
-    if (!k || k.raw.length === 0) return;
+  protected sample(k: Stroke, preview: boolean): void {
     for (const r of k.raw) k.samples.push(this.ctx.sample(r.x, r.y));
     k.raw = [];
     const pts = this.lifted(k);

@@ -27,7 +27,8 @@ import {
   type StrokeRay,
   scalpHintEdit,
 } from './hintStroke';
-import type { Tool, ToolPointer } from './tool';
+import { type PendingStroke, StrokeTool } from './strokeTool';
+import type { ToolPointer } from './tool';
 
 /** The cosine of the largest angle between the view and the curve's viewpoint from which a
  *  press beside the selected curve is a hint (60°; "Set viewpoint" moves the viewpoint). */
@@ -116,10 +117,8 @@ function screenDistanceToPolyline(
 
 /** One stroke of the tool, from press to release: everything the stroke gathers lives here and
  *  goes when it ends (end()), so no field outlives its stroke. */
-interface Stroke {
+interface Stroke extends PendingStroke {
   mode: 'drawing' | 'hinting';
-  /** Pointer positions not sampled yet (update() samples them). */
-  raw: Array<{ x: number; y: number }>;
   samples: StrokeSample[];
   /** The pointer position of each sample (for screen distances). */
   pointers: Array<{ x: number; y: number }>;
@@ -134,18 +133,18 @@ interface Stroke {
   screenDistances: number[];
 }
 
-export class StreamCurveTool implements Tool {
+export class StreamCurveTool extends StrokeTool<Stroke> {
   readonly name = 'stream';
-  private stroke: Stroke | null = null;
 
-  constructor(private readonly ctx: StrokeContext) {}
+  constructor(private readonly ctx: StrokeContext) {
+    super();
+  }
 
   get state(): 'idle' | 'drawing' | 'hinting' {
     return this.stroke?.mode ?? 'idle';
   }
 
-  onPointerDown(p: ToolPointer): boolean {
-    if (p.button !== 0) return false;
+  protected begin(p: ToolPointer): Stroke | null {
     let first = this.ctx.sample(p.x, p.y);
     let target = this.ctx.hintTarget?.() ?? null;
     // hints are drawn from about the view the curve's surface faces: from another view (the
@@ -172,11 +171,11 @@ export class StreamCurveTool implements Tool {
       this.ctx.notify(
         `${this.ctx.noun ?? 'A stream curve'} must start on the scalp: nothing was created.`,
       );
-      return true; // the press is still the tool's: it must not orbit the camera
+      return null; // the press is still the tool's: it must not orbit the camera
     }
     const candidate = target && onSurface ? target : null;
     const toScreen = this.ctx.toScreen?.bind(this.ctx);
-    this.stroke = {
+    return {
       mode: hinting ? 'hinting' : 'drawing',
       raw: [],
       samples: [first],
@@ -188,36 +187,15 @@ export class StreamCurveTool implements Tool {
         !hinting && candidate && toScreen ? candidate.points.map((q) => toScreen(q)) : null,
       screenDistances: [],
     };
-    return true;
   }
 
-  onPointerMove(p: ToolPointer): void {
-    this.stroke?.raw.push({ x: p.x, y: p.y });
-  }
-
-  onPointerUp(p: ToolPointer): void {
-    const k = this.stroke;
-    if (!k) return;
-    k.raw.push({ x: p.x, y: p.y });
-    this.update(false); // the stroke is final: its solve follows, no preview of it
-    // the edit first, then the stroke ends: a commit ends the stroke's preview with it
-    this.finish(k);
-    this.end();
-  }
-
-  onCancel(): void {
-    this.end();
-  }
-
-  /** Leaving the stroke: its data goes, and so do its draft and preview. */
-  private end(): void {
-    this.stroke = null;
+  protected clearShown(): void {
     this.ctx.showDraft(null);
     this.ctx.preview(null);
   }
 
   /** What a released stroke does: a hint's edit, a new curve, or a sentence saying why not. */
-  private finish(k: Stroke): void {
+  protected finish(k: Stroke): void {
     if (k.mode === 'hinting') {
       if (k.target) this.finishHint(k, k.target);
       return;
@@ -281,9 +259,7 @@ export class StreamCurveTool implements Tool {
 
   /** Samples the pointer positions that came since the last call, shows the stroke so far and
    *  (unless `preview` is false) asks for a preview of it. */
-  update(preview = true): void {
-    const k = this.stroke;
-    if (!k || k.raw.length === 0) return;
+  protected sample(k: Stroke, preview: boolean): void {
     for (const r of k.raw) {
       k.samples.push(this.ctx.sample(r.x, r.y));
       k.pointers.push(r);
