@@ -19,6 +19,7 @@ enum EngineSetting : size_t {
   kSettingTies,        // ties from any hand (HairEngine::setTies)
   kSettingHairline,    // a soft hairline (HairEngine::setHairline, soft_hairline.hpp)
   kSettingCurlVolume,  // curly hair spreads towards its ends (HairEngine::setCurlVolume)
+  kSettingNape,        // a low nape: read by the app's head (the scalp mask), not by the engine
   kEngineSettingCount
 };
 

@@ -4,6 +4,7 @@
 // mask exactly, and scalp away from the erase is never touched.
 import { describe, expect, it } from 'vitest';
 import { Head } from '../../web/head/head';
+import { earDistance } from '../../web/head/headSdf';
 import {
   applyScalpPaint,
   type ScalpPaintStroke,
@@ -69,9 +70,9 @@ const passes: ScalpPaintStroke[] = [-1, 1].map((side) => ({
 
 describe('sessionScalpMask with finished edges', () => {
   it('starts the built-in head from its natural hairline: lower round the ears and at the nape', () => {
-    const classic = sessionScalpMask(mesh, mesh.scalp, [], false);
+    const classic = sessionScalpMask(mesh, mesh.scalp, [], 'classic');
     expect(classic).toEqual(mesh.scalp);
-    const finished = sessionScalpMask(mesh, mesh.scalp, [], true);
+    const finished = sessionScalpMask(mesh, mesh.scalp, [], 'natural');
     expect(finished).toEqual(natural);
     let added = 0;
     let lowest = Number.POSITIVE_INFINITY;
@@ -87,10 +88,34 @@ describe('sessionScalpMask with finished edges', () => {
     expect(lowest).toBeLessThan(-0.4);
   });
 
+  it('with a low nape goes on down the upper neck behind the ears, and is the natural one elsewhere', () => {
+    const low = sessionScalpMask(mesh, mesh.scalp, [], 'lowNape');
+    expect(low).toEqual(mesh.lowNapeScalp);
+    let lowestNatural = Number.POSITIVE_INFINITY;
+    let lowestLow = Number.POSITIVE_INFINITY;
+    let added = 0;
+    for (let t = 0; t < T; t++) {
+      const c = centroid(t);
+      expect(low[t] >= natural[t]).toBe(true); // it only adds
+      if (natural[t]) lowestNatural = Math.min(lowestNatural, c[1]);
+      if (low[t]) lowestLow = Math.min(lowestLow, c[1]);
+      if (low[t] && !natural[t]) {
+        added++;
+        // only behind the ears (|φ| > 100°, seen from the scalp's centre, the origin) and never
+        // on or within 8 mm of an ear
+        expect(Math.abs(Math.atan2(c[0], c[2])) * (180 / Math.PI)).toBeGreaterThan(100);
+        expect(earDistance(c[0], c[1], c[2])).toBeGreaterThanOrEqual(0.08);
+      }
+    }
+    expect(added).toBeGreaterThan(300);
+    // 3 cm or more further down the neck at the back than the natural nape (at -0.6)
+    expect(lowestLow).toBeLessThan(lowestNatural - 0.3);
+  });
+
   it('leaves no scrap or sliver an erase cut off, and touches nothing away from it', () => {
     const strokes = [ring, ...passes];
     const plain = applyScalpPaint(mesh, natural, strokes);
-    const finished = sessionScalpMask(mesh, mesh.scalp, strokes, true);
+    const finished = sessionScalpMask(mesh, mesh.scalp, strokes, 'natural');
     // what the brush alone leaves: the scrap inside the ring and lone triangles between passes
     const top = surface(0, 0);
     let scrap = 0;
@@ -124,12 +149,12 @@ describe('sessionScalpMask with finished edges', () => {
   it('painting the erased part back gives the mask as it was, exactly', () => {
     const strokes = [ring, ...passes];
     const back = strokes.map((s) => ({ ...s, erase: false }));
-    expect(sessionScalpMask(mesh, mesh.scalp, [...strokes, ...back], true)).toEqual(
+    expect(sessionScalpMask(mesh, mesh.scalp, [...strokes, ...back], 'natural')).toEqual(
       applyScalpPaint(mesh, natural, [...strokes, ...back]),
     );
     // an erase of part of the hairline painted back: the natural scalp again
     const dab: ScalpPaintStroke = { erase: true, radius: 0.2, points: [surface(60, 0)] };
-    expect(sessionScalpMask(mesh, mesh.scalp, [dab, { ...dab, erase: false }], true)).toEqual(
+    expect(sessionScalpMask(mesh, mesh.scalp, [dab, { ...dab, erase: false }], 'natural')).toEqual(
       applyScalpPaint(mesh, natural, [dab, { ...dab, erase: false }]),
     );
   });

@@ -22,6 +22,7 @@ function sample(): SessionState {
     ties: _ties,
     hairline: _hairline,
     curlVolume: _curlVolume,
+    nape: _nape,
     ...s
   } = emptySession('50k');
   return {

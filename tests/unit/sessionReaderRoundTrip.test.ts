@@ -90,9 +90,11 @@ describe('every preset session passes the reader and round-trips', () => {
 
   it('spells out the defaults of a minimal session, and keeps them on the next read', () => {
     // a session made before version 4 has no natural fall, sections, finished edges, bust or
-    // shape rules, ties from any hand, soft hairline or curl volume (new sessions have them on)
-    const { fall, sections, finish, bust, shape, ties, hairline, curlVolume, ...beforeFall } =
+    // shape rules, ties from any hand, soft hairline, curl volume or low nape (new sessions have
+    // them on)
+    const { fall, sections, finish, bust, shape, ties, hairline, curlVolume, nape, ...beforeFall } =
       emptySession('25k');
+    expect(nape).toBe(true);
     expect(curlVolume).toBe(true);
     expect(hairline).toBe(true);
     expect(shape).toBe(true);
@@ -119,6 +121,7 @@ describe('every preset session passes the reader and round-trips', () => {
         ties: true,
         hairline: true,
         curlVolume: true,
+        nape: true,
       }),
     ).toEqual(emptySession('25k'));
   });

@@ -35,6 +35,7 @@ function full(): SessionState {
     ties: true,
     hairline: true,
     curlVolume: true,
+    nape: true,
     bandColor: '#d02060',
     detail: { lengthJitter: 0.2 },
     scalpPaint: [{ erase: true, radius: 0.3, points: [[0, 1, 0]] }],
@@ -78,6 +79,7 @@ describe('session schema', () => {
       'ties',
       'hairline',
       'curlVolume',
+      'nape',
       'detail',
     ]);
     expect(needsSolve(s, { ...s })).toBe(false);
@@ -146,8 +148,9 @@ describe('engine settings', () => {
         ties: false,
         hairline: true,
         curlVolume: false,
+        nape: true,
       }),
-    ]).toEqual([1, 0, 0, 1, 0, 1, 0.12, 0, 1, 0]);
+    ]).toEqual([1, 0, 0, 1, 0, 1, 0.12, 0, 1, 0, 1]);
     expect([
       ...engineSettings({
         avoidScalp: false,
@@ -160,7 +163,8 @@ describe('engine settings', () => {
         ties: true,
         hairline: false,
         curlVolume: true,
+        nape: false,
       }),
-    ]).toEqual([0, 1, 1, 0, 1, 0, 0, 1, 0, 1]);
+    ]).toEqual([0, 1, 1, 0, 1, 0, 0, 1, 0, 1, 0]);
   });
 });

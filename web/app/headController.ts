@@ -22,6 +22,7 @@ import type { HeadStore } from '../head/headStore';
 import { hashHeadBytes, headRefOf, loadHeadRef } from '../head/headStore';
 import { type LoadedHead, loadHeadFile } from '../head/loadHead';
 import { forEachCovered, type ScalpPaintStroke, sessionScalpMask } from '../head/scalpPaint';
+import { type Hairline, sessionHairline } from '../head/scalpRegion';
 import { fitSymmetryPlane } from '../head/symmetryPlane';
 import type { ScalpMesh } from '../model/hairArrays';
 import { type MirrorPlane, reflectPoint } from '../model/mirror';
@@ -78,7 +79,7 @@ export class HeadController {
   private current: Prepared;
   private key = 'builtin';
   private paint: readonly ScalpStroke[] | undefined = undefined;
-  private finish = false;
+  private hairline: Hairline = 'classic';
   private readonly cache = new Map<string, Prepared>();
   private generation = 0;
   private latest: SessionState | null = null;
@@ -126,9 +127,11 @@ export class HeadController {
     this.showBody(s);
     if (s.head !== 'builtin') return; // a loaded head arrives through sessionChanged
     this.paint = s.scalpPaint;
-    this.finish = !!s.finish;
+    this.hairline = sessionHairline(s);
     const { head, defaultScalp } = this.current;
-    head.mesh.scalp.set(sessionScalpMask(head.mesh, defaultScalp, s.scalpPaint ?? [], this.finish));
+    head.mesh.scalp.set(
+      sessionScalpMask(head.mesh, defaultScalp, s.scalpPaint ?? [], this.hairline),
+    );
     recolorHeadScalp(this.d.headMesh, head.mesh);
   }
 
@@ -156,8 +159,8 @@ export class HeadController {
       });
       return;
     }
-    if (s.scalpPaint !== this.paint || !!s.finish !== this.finish)
-      this.applyPaint(s.scalpPaint, !!s.finish);
+    if (s.scalpPaint !== this.paint || sessionHairline(s) !== this.hairline)
+      this.applyPaint(s.scalpPaint, sessionHairline(s));
   }
 
   /** "Open head" from the files the user picked (a head file, or a .gltf with its .bin and
@@ -276,12 +279,12 @@ export class HeadController {
       this.d.viewer.invalidateFrameCache();
   }
 
-  private applyPaint(strokes: readonly ScalpStroke[] | undefined, finish: boolean): void {
+  private applyPaint(strokes: readonly ScalpStroke[] | undefined, hairline: Hairline): void {
     this.paint = strokes;
-    this.finish = finish;
+    this.hairline = hairline;
     this.previewMask = null;
     const { head, defaultScalp } = this.current;
-    const mask = sessionScalpMask(head.mesh, defaultScalp, strokes ?? [], finish);
+    const mask = sessionScalpMask(head.mesh, defaultScalp, strokes ?? [], hairline);
     head.mesh.scalp.set(mask);
     recolorHeadScalp(this.d.headMesh, head.mesh);
     this.d.viewer.invalidateFrameCache();
@@ -323,12 +326,12 @@ export class HeadController {
     this.current = prepared;
     this.previewMask = null;
     this.paint = s.scalpPaint;
-    this.finish = !!s.finish;
+    this.hairline = sessionHairline(s);
     const mask = sessionScalpMask(
       prepared.head.mesh,
       prepared.defaultScalp,
       s.scalpPaint ?? [],
-      this.finish,
+      this.hairline,
     );
     prepared.head.mesh.scalp.set(mask);
     setHeadGeometry(this.d.headMesh, prepared.head.mesh);

@@ -12,6 +12,7 @@ import { bodyArrays, builtinBody } from '../head/buildBody';
 import { buildHead } from '../head/buildHead';
 import type { HeadMesh } from '../head/head';
 import { sessionScalpMask } from '../head/scalpPaint';
+import { sessionHairline } from '../head/scalpRegion';
 import type { ScalpMesh } from '../model/hairArrays';
 import type { SessionState } from '../model/session';
 import type { HeadFileData } from '../model/sessionFile';
@@ -74,7 +75,7 @@ export async function headForGrow(
     mesh = await file.loadRef(s.head, embedded.bytes, 'the head in the session file: ');
     loaded = true;
   } else mesh = buildHead();
-  const mask = sessionScalpMask(mesh, mesh.scalp, s.scalpPaint ?? [], !!s.finish);
+  const mask = sessionScalpMask(mesh, mesh.scalp, s.scalpPaint ?? [], sessionHairline(s));
   // what Head.scalpMesh() gives, with the painted mask
   const scalp: ScalpMesh = {
     positions: mesh.positions.slice(),

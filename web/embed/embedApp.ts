@@ -8,6 +8,7 @@ import { visibleStrands } from '../app/hairPresenter';
 import { activeQuality } from '../app/quality';
 import { Head } from '../head/head';
 import { sessionScalpMask } from '../head/scalpPaint';
+import { sessionHairline } from '../head/scalpRegion';
 import { packCurves, packHairOptions } from '../model/curveSet';
 import { FIELD_OMEGA, gridForSession } from '../model/grid';
 import { DEFAULT_BAND_COLOR } from '../model/hairLook';
@@ -103,7 +104,7 @@ export async function startEmbed(): Promise<void> {
   }
   if (s.scalpPaint?.length || s.finish) {
     head.mesh.scalp.set(
-      sessionScalpMask(head.mesh, head.mesh.scalp.slice(), s.scalpPaint ?? [], !!s.finish),
+      sessionScalpMask(head.mesh, head.mesh.scalp.slice(), s.scalpPaint ?? [], sessionHairline(s)),
     );
     recolorHeadScalp(headMesh, head.mesh);
   }

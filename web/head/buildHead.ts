@@ -47,25 +47,31 @@ export function buildHead(options: BuildHeadOptions = {}): HeadMesh {
   }
   const center: [number, number, number] = [0, 0, 0];
   const scalp = markScalpTriangles(mesh, center);
-  const naturalScalp = markScalpTriangles(mesh, center, 'natural');
-  // the natural hairline wraps the ear: the ear and a few millimetres round it stay bare
-  for (let t = 0; t < naturalScalp.length; t++) {
-    if (!naturalScalp[t] || scalp[t]) continue;
-    const c = [0, 1, 2].map(
-      (a) =>
-        (positions[3 * indices[3 * t] + a] +
-          positions[3 * indices[3 * t + 1] + a] +
-          positions[3 * indices[3 * t + 2] + a]) /
-        3,
-    );
-    if (earDistance(c[0], c[1], c[2]) < EAR_MARGIN) naturalScalp[t] = 0;
-  }
+  // the natural hairlines wrap the ear: the ear and a few millimetres round it stay bare
+  const aroundTheEar = (hairline: 'natural' | 'lowNape') => {
+    const marked = markScalpTriangles(mesh, center, hairline);
+    for (let t = 0; t < marked.length; t++) {
+      if (!marked[t] || scalp[t]) continue;
+      const c = [0, 1, 2].map(
+        (a) =>
+          (positions[3 * indices[3 * t] + a] +
+            positions[3 * indices[3 * t + 1] + a] +
+            positions[3 * indices[3 * t + 2] + a]) /
+          3,
+      );
+      if (earDistance(c[0], c[1], c[2]) < EAR_MARGIN) marked[t] = 0;
+    }
+    return marked;
+  };
+  const naturalScalp = aroundTheEar('natural');
+  const lowNapeScalp = aroundTheEar('lowNape');
   return {
     positions,
     normals,
     indices,
     scalp,
     naturalScalp,
+    lowNapeScalp,
     parts,
     center,
     bounds: { min, max },

@@ -43,6 +43,9 @@ export interface HeadMesh {
   /** The built-in head's scalp with the natural hairline (scalpRegion.ts), which sessions with
    *  finished edges (`finish`) start from; absent on a loaded head. */
   naturalScalp?: Uint8Array;
+  /** The same with a low nape (scalpRegion.ts), which sessions with `nape` start from; absent on
+   *  a loaded head. */
+  lowNapeScalp?: Uint8Array;
   parts?: Uint8Array; // parts[vertex]: a HeadPart value (skin, eye, lips), for colouring
   center: Vec3; // origin of the scalp parameterisation (S5.1)
   /** A loaded head's own texture coordinates, per corner: cornerUvs[6 * triangle + 2 * corner

@@ -9,6 +9,7 @@
 // triangles near it, not the whole mesh (1M-triangle heads).
 import type { Vec3 } from '../model/vec3';
 import type { TriangleSoup } from './head';
+import type { Hairline } from './scalpRegion';
 
 export interface ScalpPaintStroke {
   /** true: the stroke removes scalp; false: it adds scalp. */
@@ -151,18 +152,22 @@ export function applyScalpPaint(
 }
 
 /** The scalp mask a session gives (what every caller uses: the app, the CLI, the embed): its
- *  strokes over the head's default scalp. With finished edges (`finish`) the built-in head starts
- *  from its natural hairline, and an erase leaves no lone hair: a triangle the erasing left with
+ *  strokes over the head's default scalp. With finished edges (`finish`: a hairline other than
+ *  'classic', sessionHairline) the built-in head starts from its natural hairline (with a low nape
+ *  in sessions with `nape`), and an erase leaves no lone hair: a triangle the erasing left with
  *  fewer than two scalp neighbours goes, as does a scrap of scalp under 2 cm² cut off by it. Both
  *  only touch scalp next to erased scalp, so painting the erased part back gives the mask exactly
  *  as before the erase. */
 export function sessionScalpMask(
-  mesh: TriangleSoup & { naturalScalp?: Uint8Array },
+  mesh: TriangleSoup & { naturalScalp?: Uint8Array; lowNapeScalp?: Uint8Array },
   defaultScalp: Uint8Array,
   strokes: readonly ScalpPaintStroke[],
-  finish: boolean,
+  hairline: Hairline,
 ): Uint8Array {
-  const base = finish && mesh.naturalScalp ? mesh.naturalScalp : defaultScalp;
+  const finish = hairline !== 'classic';
+  const base =
+    (hairline === 'lowNape' ? mesh.lowNapeScalp : finish ? mesh.naturalScalp : undefined) ??
+    defaultScalp;
   const mask = applyScalpPaint(mesh, base, strokes);
   if (finish && strokes.some((s) => s.erase)) removeLoneScalp(mesh, base, mask);
   return mask;

@@ -49,14 +49,34 @@ const NATURAL_HAIRLINE: ReadonlyArray<readonly [number, number]> = [
   [180, 124],
 ];
 
-/** Which hairline a scalp region follows: the classic one (every session before `finish`) or
- *  the natural one. */
-export type Hairline = 'classic' | 'natural';
+// The natural hairline with the nape where it is on a person (sessions with `nape`): past the
+// ear it goes on down the upper neck, about 3.5 cm below the skull's base at the back, instead of
+// stopping there (fresh eyes, rounds 19 and 21: a ponytail, a bun or a slicked-back style read as
+// "cut at ear level" from behind, the hair ending in a line where the head meets the neck).
+const LOW_NAPE_HAIRLINE: ReadonlyArray<readonly [number, number]> = [
+  ...NATURAL_HAIRLINE.filter(([phi]) => phi < 112),
+  [112, 94],
+  [122, 116],
+  [135, 133],
+  [155, 140],
+  [180, 142],
+];
+
+/** Which hairline a scalp region follows: the classic one (every session before `finish`), the
+ *  natural one, or the natural one with a low nape (`nape`). */
+export type Hairline = 'classic' | 'natural' | 'lowNape';
 
 const HAIRLINES: Record<Hairline, ReadonlyArray<readonly [number, number]>> = {
   classic: HAIRLINE,
   natural: NATURAL_HAIRLINE,
+  lowNape: LOW_NAPE_HAIRLINE,
 };
+
+/** The hairline a session's built-in head starts from: the classic one without finished edges,
+ *  else the natural one, with a low nape in sessions with `nape`. */
+export function sessionHairline(s: { finish?: boolean; nape?: boolean }): Hairline {
+  return !s.finish ? 'classic' : s.nape ? 'lowNape' : 'natural';
+}
 
 /** θ_max (radians) of the hairline at azimuth φ (radians, any range). */
 export function hairlineTheta(phi: number, hairline: Hairline = 'classic'): number {

@@ -331,6 +331,7 @@ export function applyPreset(s: SessionState, name: PresetName, ctx: PresetContex
     ties,
     hairline,
     curlVolume,
+    nape,
     bust,
     ...rest
   } = s;
@@ -364,6 +365,7 @@ export function applyPreset(s: SessionState, name: PresetName, ctx: PresetContex
     ...(ties && name === 'empty' ? { ties } : {}),
     ...(hairline && name === 'empty' ? { hairline } : {}),
     ...(curlVolume && name === 'empty' ? { curlVolume } : {}),
+    ...(nape && name === 'empty' ? { nape } : {}),
     ...(bust ? { bust } : {}),
     growth,
     curves,

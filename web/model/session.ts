@@ -222,6 +222,7 @@ export function emptySession(
     ties: true,
     hairline: true,
     curlVolume: true,
+    nape: true,
   };
 }
 

@@ -87,6 +87,11 @@ export const SESSION_SETTINGS = {
    *  straight curtain with a curl texture. On in every new session; off, the curls of sessions
    *  made before. */
   curlVolume: { type: 'flag', hair: 'request' },
+  /** A low nape (head/scalpRegion.ts, with finished edges): the built-in head's hairline goes on
+   *  down the upper neck behind the ears, as on a person, so up-styles and short backs are not
+   *  cut off where the head meets the neck. On in every new session; off, the scalp of sessions
+   *  made before. */
+  nape: { type: 'flag', hair: 'request' },
 } as const satisfies Record<string, SettingSpec>;
 
 export type SessionSettingName = keyof typeof SESSION_SETTINGS;
