@@ -299,8 +299,9 @@ test('pigtails made with Mirror leave no bare stripe behind, and each gathers ro
     await shoot(page, 'pigtails');
     // each pigtail now takes its whole half (sections), so the back parts down the middle as
     // real pigtails do: the parting line and the nape below it show (10.3 % when this was
-    // written; 2 % before sections, when each tie took only the hair that reached it)
-    expect(back.fraction).toBeLessThanOrEqual(0.13);
+    // written; 2 % before sections, when each tie took only the hair that reached it; 14.3 %
+    // with a low nape, whose scalp goes 3.5 cm further down the neck, the parting with it)
+    expect(back.fraction).toBeLessThanOrEqual(0.16);
   });
   await test.step('a gathered pigtail has a round cross-section of its radius', () =>
     expectRoundTails(page, tails));
