@@ -28,6 +28,12 @@ function scriptedEngine(log: string[], colours = new Uint8Array([0, 1, 3])): Sol
       log.push(`mask:${Array.from(m).join('')}`);
     },
     setDetail: (d) => log.push(`detail:${d.groups.length}:${d.groups[13]}`),
+    setBody: () => {},
+    setSettings: () => {},
+    deferPreconditionerUpdate: () => {},
+    startMotion: () => {
+      throw new SolverError('the scripted engine plays no motion', 'internal');
+    },
     setCurves: (c) => {
       it = 0;
       log.push(`curves:${c.curveStart.length - 1}:extra${c.extraIndex.length}`);

@@ -67,11 +67,11 @@ export function growSessionHair(
   report('solve', 0);
   engine.setGrid(opts.grid, FIELD_OMEGA, opts.solver);
   engine.setScalp(scalp);
-  engine.setBody?.(scalp.body ?? null);
+  engine.setBody(scalp.body ?? null);
   const curves = packCurves(session.curves, null, !!session.fall);
   const options = packHairOptions(session, session.curves);
-  engine.setDetail?.(options.detail);
-  engine.setSettings?.(engineSettings(options));
+  engine.setDetail(options.detail);
+  engine.setSettings(engineSettings(options));
   engine.setCurves(curves);
   // the worker's recipe (solver/solveRecipe.ts), driven in one go
   const steps = convergeField(engine, curves, {

@@ -43,7 +43,6 @@ export function simulateMotion(
 ): NonNullable<ExportInput['motion']> {
   const problem = motionFramesProblem(frames) ?? motionNameProblem(motion) ?? windProblem(wind);
   if (problem) throw new SolverError(problem, 'invalid_input');
-  if (!engine.startMotion) throw new SolverError('this engine cannot play motions', 'internal');
   const run = engine.startMotion(strands, {
     motion,
     seed: session.growth.seed,

@@ -55,7 +55,7 @@ export function* convergeField(
     yield { progress: p, stage: 'curves' };
     p = engine.iterate(o.slice, o.tolerance);
   }
-  if (o.avoidFor && engine.scalpAvoidance) {
+  if (o.avoidFor) {
     yield { progress: p, stage: 'avoidance' };
     const r = engine.scalpAvoidance(avoidanceOptions(o.avoidFor));
     // warm-started from the curves' converged field, which depends on the session alone (it was

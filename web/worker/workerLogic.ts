@@ -113,7 +113,7 @@ export class WorkerLogic {
         this.engine.setGrid(msg.grid, msg.omega, msg.solver);
         this.setup = { omega: msg.omega, solver: msg.solver };
         this.engine.setScalp(msg.scalp);
-        this.engine.setBody?.(msg.scalp.body ?? null);
+        this.engine.setBody(msg.scalp.body ?? null);
         this.head = msg.scalp;
         this.lighting = new ResultLighting(msg.scalp, msg.grid);
         this.initialised = true;
@@ -177,7 +177,6 @@ export class WorkerLogic {
         this.motion = null;
         this.motionSpare = [];
         if (!this.initialised) fail('the solver is not initialised');
-        else if (!this.engine.startMotion) fail('this engine cannot play motions');
         else {
           this.motion = this.engine.startMotion(msg.strands, {
             motion: msg.motion,
@@ -209,7 +208,6 @@ export class WorkerLogic {
       this.post({ type: 'error', id: null, message: `Scalp mask: ${message}`, kind });
     };
     if (!this.initialised || !this.head) fail('the solver is not initialised', 'not_ready');
-    else if (!this.engine.setScalpMask) fail('this engine cannot change the scalp', 'internal');
     else
       try {
         this.engine.setScalpMask(scalp);
@@ -275,8 +273,8 @@ export class WorkerLogic {
     const o = this.opts;
     const t0 = o.now();
     this.post({ type: 'progress', id: job.id, phase: 'constraints', fraction: 0 });
-    this.engine.setDetail?.(job.options.detail);
-    this.engine.setSettings?.(engineSettings(job.options));
+    this.engine.setDetail(job.options.detail);
+    this.engine.setSettings(engineSettings(job.options));
     const key = fieldKey(job);
     const kept = this.solved;
     if (job.mode !== 'preview' && kept && kept.key === key && kept.epoch === this.jobEpoch) {
@@ -287,7 +285,7 @@ export class WorkerLogic {
     this.solved = null;
     // a full solve's first look runs a few warm iterations and forgetWarmStart then rebuilds the
     // preconditioner from the penalties alone: its incremental update would be thrown away
-    if (job.mode !== 'preview') this.engine.deferPreconditionerUpdate?.();
+    if (job.mode !== 'preview') this.engine.deferPreconditionerUpdate();
     this.engine.setCurves(job.curves);
     if (job.mode === 'preview') {
       // one iteration at a time: when the pen lifts meanwhile, its full solve need not wait
@@ -310,7 +308,7 @@ export class WorkerLogic {
     if (!p.converged) this.emit(job, lightGrowth(job), p, false, t0);
     // then the recipe growSession.ts runs too (solver/solveRecipe.ts), a slice between messages
     let from: IterateProgress | undefined = p;
-    if (this.engine.forgetWarmStart?.()) {
+    if (this.engine.forgetWarmStart()) {
       await o.yieldNow();
       if (this.superseded()) return;
       from = undefined;
