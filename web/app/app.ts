@@ -6,9 +6,9 @@
 import { Editor } from '../editor/editor';
 import { Head } from '../head/head';
 import { indexedDbHeadStore } from '../head/headStore';
-import { gridForPreset, gridForSession } from '../model/grid';
+import { gridForPreset, sessionGrid } from '../model/grid';
 import { applyPreset } from '../model/presets';
-import { DEFAULT_GROWTH, emptySession, hangLength } from '../model/session';
+import { DEFAULT_GROWTH, emptySession } from '../model/session';
 import { indexedDbPictureStore } from '../reference/pictureStore';
 import { PONYTAIL_STAGE_HINT } from '../tools/ponytailTool';
 import type { DetailPanel } from '../ui/detailPanel';
@@ -128,7 +128,7 @@ export function startApp(): void {
   // the bridge hears of each edit first: a result it answers from its cache at once comes
   // before the presenters' own reaction to the edit
   const bridge = new SolverBridge(editor, {
-    grid: gridForSession(initial.grid, initial.curves, undefined, hangLength(initial)),
+    grid: sessionGrid(initial, undefined),
     solver: opts.solver,
     scalp: head.scalpMesh(),
     headBounds: () => heads.gridBounds,

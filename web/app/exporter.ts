@@ -13,10 +13,9 @@ import {
 import type { UvSurface } from '../export/surfaceUv';
 import type { ExportHead } from '../export/types';
 import type { GroomSummary } from '../export/usdWriter';
-import { gridForSession } from '../model/grid';
+import { sessionGrid } from '../model/grid';
 import type { ScalpMesh } from '../model/hairArrays';
 import type { MotionName } from '../model/motion';
-import { hangLength } from '../model/session';
 import { parseSession } from '../model/sessionFile';
 import type { SolverName } from '../solver/protocol';
 
@@ -27,8 +26,8 @@ export interface ExporterDeps {
   head: () => ExportHead;
   /** The head's own UVs, when it is a loaded head whose file has them. */
   headUv?: () => UvSurface | null;
-  /** A loaded head's bounds for the bounding volume (gridForSession); undefined: built-in. */
-  headBounds?: () => Parameters<typeof gridForSession>[2];
+  /** A loaded head's bounds for the bounding volume (sessionGrid); undefined: built-in. */
+  headBounds?: () => Parameters<typeof sessionGrid>[1];
   /** Resolves once no solve is pending (at once when idle). */
   solveSettled(): Promise<void>;
   solving(): boolean;
@@ -128,12 +127,7 @@ export class Exporter {
             type: 'export',
             format,
             session: parsed.value,
-            grid: gridForSession(
-              parsed.value.grid,
-              parsed.value.curves,
-              this.d.headBounds?.(),
-              hangLength(parsed.value),
-            ),
+            grid: sessionGrid(parsed.value, this.d.headBounds?.()),
             solver: this.d.solver,
             scalp: this.d.scalp(),
             head: withHead ? this.d.head() : null,

@@ -7,11 +7,10 @@
 
 import type { Editor, EditorChange, StrokeInProgress } from '../editor/editor';
 import { packCurves, packHairOptions } from '../model/curveSet';
-import { FIELD_OMEGA, gridForSession, sameGrid } from '../model/grid';
+import { FIELD_OMEGA, sameGrid, sessionGrid } from '../model/grid';
 import type { GridSpec, ScalpMesh } from '../model/hairArrays';
 import { STROKE_KINDS } from '../model/kinds';
 import {
-  hangLength,
   newCurveExtends,
   type SessionState,
   type StyleCurve,
@@ -107,7 +106,7 @@ export class SolverBridge {
   /** The grid the current session needs: its curves and the head (gridForSession). */
   private sessionGrid(): GridSpec {
     const s = this.editor.session;
-    return gridForSession(s.grid, s.curves, this.opts.headBounds?.(), hangLength(s));
+    return sessionGrid(s, this.opts.headBounds?.());
   }
 
   /** Another head (a loaded mesh, a turn of it, the built-in one), with its scalp mask: the

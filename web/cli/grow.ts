@@ -37,9 +37,9 @@ import { exportedCounts } from '../export/strandsForExport';
 import type { ExportHead } from '../export/types';
 import { writeExport } from '../export/writeExport';
 import { builtinBody } from '../head/buildBody';
-import { GRID_PRESETS, type GridPreset, gridForSession, isGridPreset } from '../model/grid';
+import { GRID_PRESETS, type GridPreset, isGridPreset, sessionGrid } from '../model/grid';
 import { MOTION_DEFAULT_FRAMES, MOTIONS, type MotionName } from '../model/motion';
-import { hangLength, type SessionState } from '../model/session';
+import type { SessionState } from '../model/session';
 import { type HeadFileData, readSessionFile } from '../model/sessionFile';
 import { decodeSessionLink } from '../model/sessionLink';
 import { SolverError } from '../solver/engine';
@@ -336,7 +336,7 @@ export async function runGrow(
     const t0 = performance.now();
     let lastLine = t0;
     hair = growSessionHair(engine, session, scalp, {
-      grid: gridForSession(preset, session.curves, bounds, hangLength(session)),
+      grid: sessionGrid(session, bounds, preset),
       solver: args.solver,
       ...(args.strands !== null ? { maxStrands: args.strands } : {}),
       // between solver slices: progress on stderr now and then, and the time cap

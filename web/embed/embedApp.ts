@@ -10,9 +10,9 @@ import { Head } from '../head/head';
 import { sessionScalpMask } from '../head/scalpPaint';
 import { sessionHairline } from '../head/scalpRegion';
 import { packCurves, packHairOptions } from '../model/curveSet';
-import { FIELD_OMEGA, gridForSession } from '../model/grid';
+import { FIELD_OMEGA, sessionGrid } from '../model/grid';
 import { DEFAULT_BAND_COLOR } from '../model/hairLook';
-import { hangLength, type SessionState } from '../model/session';
+import type { SessionState } from '../model/session';
 import { decodeSessionLink } from '../model/sessionLink';
 import { tieBands } from '../model/tieBands';
 import { SolverClient } from '../solver/solverClient';
@@ -120,7 +120,7 @@ export async function startEmbed(): Promise<void> {
   let framed = false;
   let lowest = Math.min(head.mesh.bounds.min[1], showsBody ? BUST_VIEW_FLOOR : Infinity);
   const bounds = s.head === 'builtin' ? undefined : head.mesh.bounds;
-  const grid = gridForSession(s.grid, s.curves, bounds, hangLength(s));
+  const grid = sessionGrid(s, bounds);
   say('loading', 'Growing the hair…');
   const client = new SolverClient(
     () => new Worker(new URL('../worker/worker.ts', import.meta.url), { type: 'module' }),
