@@ -6,9 +6,9 @@
 import { Editor } from '../editor/editor';
 import { Head } from '../head/head';
 import { indexedDbHeadStore } from '../head/headStore';
-import { gridForPreset, sessionGrid } from '../model/grid';
+import { gridForPreset } from '../model/grid';
 import { applyPreset } from '../model/presets';
-import { DEFAULT_GROWTH, emptySession } from '../model/session';
+import { DEFAULT_GROWTH, emptySession, sessionGrid } from '../model/session';
 import { indexedDbPictureStore } from '../reference/pictureStore';
 import { PONYTAIL_STAGE_HINT } from '../tools/ponytailTool';
 import type { DetailPanel } from '../ui/detailPanel';

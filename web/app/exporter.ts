@@ -13,9 +13,9 @@ import {
 import type { UvSurface } from '../export/surfaceUv';
 import type { ExportHead } from '../export/types';
 import type { GroomSummary } from '../export/usdWriter';
-import { sessionGrid } from '../model/grid';
 import type { ScalpMesh } from '../model/hairArrays';
 import type { MotionName } from '../model/motion';
+import { sessionGrid } from '../model/session';
 import { parseSession } from '../model/sessionFile';
 import type { SolverName } from '../solver/protocol';
 

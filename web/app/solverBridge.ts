@@ -7,13 +7,14 @@
 
 import type { Editor, EditorChange, StrokeInProgress } from '../editor/editor';
 import { packCurves, packHairOptions } from '../model/curveSet';
-import { FIELD_OMEGA, sameGrid, sessionGrid } from '../model/grid';
+import { FIELD_OMEGA, sameGrid } from '../model/grid';
 import type { GridSpec, ScalpMesh } from '../model/hairArrays';
 import { STROKE_KINDS } from '../model/kinds';
 import {
   newCurveExtends,
   type SessionState,
   type StyleCurve,
+  sessionGrid,
   streamExtends,
 } from '../model/session';
 import { needsSolve } from '../model/sessionSchema';
@@ -103,8 +104,8 @@ export class SolverBridge {
     return this.client.grid;
   }
 
-  /** The grid the current session needs: its curves and the head (gridForSession). */
-  private sessionGrid(): GridSpec {
+  /** The grid the current session needs: its curves and the head (sessionGrid). */
+  private gridNeeded(): GridSpec {
     const s = this.editor.session;
     return sessionGrid(s, this.opts.headBounds?.());
   }
@@ -113,7 +114,7 @@ export class SolverBridge {
    *  worker is restarted on it (on the grid the session needs with it, so at most one restart)
    *  and the session is solved again. */
   setHead(scalp: ScalpMesh): void {
-    const grid = this.sessionGrid();
+    const grid = this.gridNeeded();
     const moved = !sameGrid(grid, this.client.grid);
     this.client.setHead(scalp, grid);
     if (moved) this.each((l) => l.gridChanged?.(grid));
@@ -132,7 +133,7 @@ export class SolverBridge {
   sync(): void {
     this.lastAsked = 'full';
     const s = this.editor.session;
-    const grid = this.sessionGrid();
+    const grid = this.gridNeeded();
     if (!sameGrid(grid, this.client.grid)) {
       this.client.setGrid(grid);
       this.each((l) => l.gridChanged?.(grid));

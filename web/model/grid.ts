@@ -1,6 +1,5 @@
 // Grid presets over the fixed bounding volume of the built-in head (method S1.2).
 import type { GridSpec } from './hairArrays';
-import { hangLength, type SessionState } from './session';
 import type { Vec3 } from './vec3';
 
 export const BOX_MIN: Vec3 = [-1.7, -2.9, -1.7];
@@ -132,14 +131,3 @@ export const sameGrid = (a: GridSpec, b: GridSpec): boolean =>
   a.origin.every((o, i) => o === b.origin[i]);
 
 export const gridPointCount = (g: GridSpec): number => g.dims[0] * g.dims[1] * g.dims[2];
-
-/** The grid a session's hair is solved on: gridForSession with its preset (or `preset`, a
- *  command line's override), its curves and how far its hair may hang. The one place the app, the
- *  exports, the embed and the command line get it. */
-export function sessionGrid(
-  s: Pick<SessionState, 'grid' | 'curves' | 'fall' | 'growth'>,
-  headBounds: { min: Vec3; max: Vec3 } | undefined,
-  preset: GridPreset = s.grid,
-): GridSpec {
-  return gridForSession(preset, s.curves, headBounds, hangLength(s));
-}

@@ -3,8 +3,9 @@
 import type { CurveParamValues, PlainTieKind } from './curveParams';
 import type { HairDetail } from './detail';
 import type { DividingSettings } from './dividingFrames';
-import type { GridPreset } from './grid';
+import { type GridPreset, gridForSession } from './grid';
 import { DEFAULT_GROWTH, type GrowthParams } from './growthParams';
+import type { GridSpec } from './hairArrays';
 import type { HairLook } from './hairLook';
 import { tieNear } from './kinds';
 import type { MirrorPlane } from './mirror';
@@ -263,4 +264,15 @@ export function nextCurveId(s: SessionState): string {
     if (m) max = Math.max(max, Number(m[1]));
   }
   return `c${max + 1}`;
+}
+
+/** The grid a session's hair is solved on: gridForSession with its preset (or `preset`, a
+ *  command line's override), its curves and how far its hair may hang. The one place the app, the
+ *  exports, the embed and the command line get it. */
+export function sessionGrid(
+  s: Pick<SessionState, 'grid' | 'curves' | 'fall' | 'growth'>,
+  headBounds: { min: Vec3; max: Vec3 } | undefined,
+  preset: GridPreset = s.grid,
+): GridSpec {
+  return gridForSession(preset, s.curves, headBounds, hangLength(s));
 }
