@@ -54,6 +54,7 @@ function target() {
     save: () => calls.push('save'),
     open: () => calls.push('open'),
     newSession: () => calls.push('new'),
+    openStyles: () => calls.push('styles'),
     exportMenu: () => calls.push('export'),
     resetView: () => calls.push('reset'),
     showView: (name) => calls.push(`view:${name}`),

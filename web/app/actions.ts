@@ -35,6 +35,8 @@ export interface ActionTarget {
   open(): void;
   /** "New": an empty head, as a new session starts (one undoable edit). */
   newSession(): void;
+  /** "Styles": the style library's dialog (app/styleGallery.ts). */
+  openStyles(): void;
   exportMenu(): void;
   resetView(): void;
   /** Eases the camera to a named view (viewer/namedViews.ts). */
@@ -376,6 +378,15 @@ export function buildActions(t: ActionTarget): Action[] {
       group: 'file',
       toolbar: 'more',
       run: () => t.newSession(),
+    },
+    {
+      id: 'file.styles',
+      label: 'Styles',
+      title:
+        'Start from a style in the library: every stroke of it can be edited (Undo brings the work back)',
+      group: 'file',
+      toolbar: 'more',
+      run: () => t.openStyles(),
     },
   ];
 }

@@ -52,6 +52,7 @@ import { SectionTintPresenter } from './sectionTintPresenter';
 import { LinkWriter, openSessionFileOutcome } from './sessionIO';
 import { SolverBridge } from './solverBridge';
 import { StatusPresenter } from './statusPresenter';
+import { styleGallery } from './styleGallery';
 import { installTestApi } from './testApi';
 import { TieAndPartingReporter } from './tieAndPartingReporter';
 import { TieBandPresenter } from './tieBandPresenter';
@@ -212,6 +213,7 @@ export function startApp(): void {
     pictures: pictureStore,
     refresh: () => toolbar.refresh(),
   });
+  const styles = styleGallery({ editor, parent: document.body, status });
   let exporting: ExportWiring | null = null;
   const actions = buildActions({
     ...edits,
@@ -224,6 +226,7 @@ export function startApp(): void {
     detailPanelOpen: () => !!detailPanel?.open,
     openHead: () => toolbar.openHeadDialog(),
     openReference: () => toolbar.openReferenceDialog(),
+    openStyles: () => styles.show(),
     toggleHeadPanel: () => {
       headPanel?.toggle();
       showHeadPanel();

@@ -44,6 +44,7 @@ export type EditActions = Omit<
   | 'toggleHeadPanel'
   | 'headPanelOpen'
   | 'openReference'
+  | 'openStyles'
 >;
 
 export function editActions(d: EditActionDeps): EditActions {

@@ -93,6 +93,8 @@ export function bindInput(d: InputDeps): void {
 
   window.addEventListener('keydown', (e) => {
     if (typesText(e.target)) return;
+    // a modal dialog (Styles) has the keyboard: Escape closes it, Tab and Enter choose in it
+    if (e.target instanceof Element && e.target.closest('dialog[open]')) return;
     const s = shortcutOf(e);
     if (s === null) return;
     if (d.overlayKey?.(s)) {

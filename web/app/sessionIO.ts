@@ -25,6 +25,7 @@ import type { PictureStore } from '../reference/pictureStore';
 export type LoadSource =
   | { kind: 'file'; name: string }
   | { kind: 'link'; pasted?: boolean }
+  | { kind: 'style'; name: string }
   | { kind: 'test' };
 
 /** Largest file "Open" reads, and largest JSON session file (a JavaScript string holds at most
@@ -73,7 +74,9 @@ function applySession(
       ? `Opened ${from.name}`
       : from.kind === 'link'
         ? 'Opened a shared session'
-        : 'Loaded a session';
+        : from.kind === 'style'
+          ? `Started from the style “${from.name}” (Undo brings back the work before)`
+          : 'Loaded a session';
   editor.run({
     kind: 'loadSession',
     session,
