@@ -52,7 +52,9 @@
 //   g = 1 + kCurlSpreadVary (2 u - 1) per lock (u seeded by the phase key: a ringlet's guide's),
 //   D_k the unit of (p_k - c) with its y part dropped and its forward (+z) part clamped at 0, c the
 //   head's centre (so hair spreads sideways and back, never over the face; a point straight in
-//   front of c does not move).
+//   front of c does not move), turned by the lock's lean; the move's back (-z) part is then
+//   scaled by kCurlSpreadBack (curls widen more than they stand off the back: at the full amount
+//   a new user saw long curls lean back off the body).
 // Frizz (distance d, shape s): v_i uniform in the unit ball (seeded by the key, one per point),
 //   c_0 = 0, c_i = c_{i-1} + v_i.x T_i + v_i.y N_i + v_i.z B_i (the frame of the path before curl),
 //   p_i <- p_i + d S(x_i; s) c_i. The root is pinned.
@@ -152,8 +154,9 @@ constexpr double kEndSpreadShare = 0.15;
 
 // The curl volume sessions with `curlVolume` get (CurlParams::spread), and how much it varies
 // lock by lock (a seeded factor within 1 +- kCurlSpreadVary).
-constexpr double kCurlSpread = 0.45;
+constexpr double kCurlSpread = 0.4;
 constexpr double kCurlSpreadVary = 0.35;
 constexpr double kCurlSpreadTurn = 0.5;  // radians
+constexpr double kCurlSpreadBack = 0.5;  // of the move's back (-z) part
 
 }  // namespace hairsketch

@@ -55,7 +55,9 @@ void spreadCurl(const CurlParams& c, double L, uint32_t seed, uint32_t phaseKey,
     out.z() = std::min(out.z(), 0.0);
     const double len = out.norm();
     if (!(len > 1e-9)) continue;
-    w.p[k] += (tip * std::pow(t, 1.3) / len) * out;
+    V3 move = (tip * std::pow(t, 1.3) / len) * out;
+    move.z() *= kCurlSpreadBack;  // less back than sideways: curls widen, the mass does not lean
+    w.p[k] += move;
   }
 }
 

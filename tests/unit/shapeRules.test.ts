@@ -335,42 +335,54 @@ describe('the shape rules on hand-drawn stroke sets', () => {
 
   it('long curls with curl volume widen towards their ends as the formula says, the face stays open', async () => {
     // fresh eyes round 19's long curls (3A, 50 cm): "crimped hair in a box". With curl volume the
-    // path a strand curls round moves out by 0.45 k L g t^1.3 at arc t past the curl's start (k
+    // path a strand curls round moves out by 0.4 k L g t^1.3 at arc t past the curl's start (k
     // the curl's shrinkage, L the strand's length before curl, g a lock's factor within 1 ± 0.35,
-    // each lock leaning up to 0.5 rad from straight out): at the tip, 0.45 k L g. Strand by strand
-    // (the same roots), how much further the tip is from the head's vertical axis, over that
-    // value with g = 1, for strands ending below the chin; L from the curled strand's length
-    // without curl volume (a helix is sqrt(1 + (2 pi q r)^2) times the path it winds round)
+    // each lock leaning up to 0.5 rad from straight out, the back part of the move halved): at
+    // the tip of hair at the sides, about 0.4 k L g sideways. Strand by strand (the same roots),
+    // how much further the tip is from the head's vertical axis, over that value with g = 1, for
+    // strands ending below the chin at the sides (|x| over twice |z|); L from the curled strand's
+    // length without curl volume (a helix is sqrt(1 + (2 pi q r)^2) times the path it winds
+    // round). Behind, the hair moves out by half as much (round 22: at the full amount long
+    // curls leaned back off the body).
     const s = fixture('eyes19-curls');
     const curl = s.detail?.curl;
     if (!curl) throw new Error('eyes19-curls has no curl');
     const steep = 2 * Math.PI * curl.frequency * curl.radius;
     const k = 1 - 1 / Math.sqrt(1 + steep * steep);
     const tips = (h: StrandArrays) => {
-      const out: { r: number; y: number; len: number }[] = [];
+      const out: { x: number; z: number; y: number; len: number }[] = [];
       eachStrand(h, (pts) => {
         let len = 0;
         for (let i = 1; i < pts.length; i++) len += dist(pts[i], pts[i - 1]);
         const t = pts[pts.length - 1];
-        out.push({ r: Math.hypot(t[0], t[2]), y: t[1], len });
+        out.push({ x: t[0], z: t[2], y: t[1], len });
       });
       return out;
     };
     const [plainHair, volumeHair] = [await grow(s), await grow({ ...s, curlVolume: true })];
     const [plain, volume] = [tips(plainHair), tips(volumeHair)];
     expect(volume.length).toBe(plain.length);
-    const ratio = plain.flatMap((p, i) =>
-      p.y < -1.5 ? [(volume[i].r - p.r) / (0.45 * k * (p.len / Math.sqrt(1 + steep * steep)))] : [],
+    const want = (p: { len: number }) => 0.4 * k * (p.len / Math.sqrt(1 + steep * steep));
+    const side = plain.flatMap((p, i) =>
+      p.y < -1.5 && Math.abs(p.x) > 2 * Math.abs(p.z)
+        ? [(Math.hypot(volume[i].x, volume[i].z) - Math.hypot(p.x, p.z)) / want(p)]
+        : [],
+    );
+    const back = plain.flatMap((p, i) =>
+      p.y < -1.5 && p.z < -2 * Math.abs(p.x) ? [(p.z - volume[i].z) / want(p)] : [],
     );
     const face = [faceShare(plainHair), faceShare(volumeHair)];
     console.log(
-      `long curls: ${ratio.length} tips below the chin move out by ${quantile(ratio, 0.1).toFixed(2)} / ${median(ratio).toFixed(2)} / ${quantile(ratio, 0.9).toFixed(2)} (p10 / median / p90) of 0.45 k L; strands across the face ${(100 * face[0]).toFixed(2)} -> ${(100 * face[1]).toFixed(2)} %`,
+      `long curls: ${side.length} tips below the chin at the sides move out by ${quantile(side, 0.1).toFixed(2)} / ${median(side).toFixed(2)} / ${quantile(side, 0.9).toFixed(2)} (p10 / median / p90) of 0.4 k L, ${back.length} behind by ${median(back).toFixed(2)} (median); strands across the face ${(100 * face[0]).toFixed(2)} -> ${(100 * face[1]).toFixed(2)} %`,
     );
-    expect(ratio.length).toBeGreaterThan(1000);
-    expect(median(ratio)).toBeGreaterThan(0.8);
-    expect(median(ratio)).toBeLessThan(1.15);
-    expect(quantile(ratio, 0.1)).toBeGreaterThan(0.5);
-    expect(quantile(ratio, 0.9)).toBeLessThan(1.5);
+    expect(side.length).toBeGreaterThan(300);
+    expect(median(side)).toBeGreaterThan(0.75);
+    expect(median(side)).toBeLessThan(1.15);
+    expect(quantile(side, 0.1)).toBeGreaterThan(0.45);
+    expect(quantile(side, 0.9)).toBeLessThan(1.5);
+    expect(back.length).toBeGreaterThan(300);
+    expect(median(back)).toBeGreaterThan(0.3);
+    expect(median(back)).toBeLessThan(0.65);
     expect(face[1]).toBeLessThanOrEqual(face[0]);
   });
 });
