@@ -24,7 +24,7 @@ export const STYLE_LIBRARY: readonly LibraryStyle[] = [
   { id: 'high-ponytail', name: 'High ponytail', view: 'side' },
   { id: 'pigtails', name: 'Pigtails', view: 'back' },
   { id: 'half-up', name: 'Half-up, half-down', view: 'side' },
-  { id: 'bun', name: 'Bun', view: 'side' },
+  { id: 'top-bun', name: 'Top bun', view: 'side' },
   { id: 'braid', name: 'Braid', view: 'back' },
   { id: 'mohawk', name: 'Mohawk', view: 'side' },
 ];
