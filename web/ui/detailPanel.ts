@@ -49,12 +49,12 @@ export function lengthRule(s: Pick<SessionState, 'shape' | 'fall' | 'curves' | '
     defOf(c).role === 'tie' && defOf(c).surface(c) !== null;
   const ties =
     s.ties && s.fall && s.curves.some(spineTie)
-      ? ' Ponytails and braids: their hair reaches the end of their stroke, whatever Max length says.'
+      ? ' Ponytails and braids reach their strokes’ ends.'
       : '';
   if (!s.fall) return 'Length: the strokes alone (the paper’s method).';
   if (!s.shape || !s.curves.some((c) => defOf(c).role === 'flow'))
     return `Length: hair no stroke ends grows to Max length.${ties}`;
-  return `Length: hair no stroke ends is as long as the strokes near it (at most Max length; a stroke extended off the head counts as Max length, one that ends on the scalp its own length).${ties}`;
+  return `Length: hair no stroke ends is as long as the strokes near it, up to Max length.${ties}`;
 }
 
 /** The strand count the panel shows for a session's growth (before its cap). */
@@ -168,7 +168,10 @@ export function buildDetailPanel(root: HTMLElement, events: DetailPanelEvents): 
     panel.append(lengthRow);
     const rule = document.createElement('p');
     rule.dataset.testid = 'length-rule';
+    rule.className = 'length-rule';
     rule.textContent = lengthRule(s);
+    rule.title =
+      'A stroke extended off the head counts as Max length, one that ends on the scalp as its own length; a ponytail’s or braid’s hair reaches the end of its stroke whatever Max length says.';
     panel.append(rule);
     if (s.shape)
       panel.append(
