@@ -16,16 +16,24 @@ export interface LibraryStyle {
 
 export const STYLE_LIBRARY: readonly LibraryStyle[] = [
   { id: 'bob-fringe', name: 'Chin bob with a fringe', view: 'front' },
+  { id: 'long-bob', name: 'Long bob', view: 'front' },
   { id: 'long-side-part', name: 'Long, side part', view: 'front' },
+  { id: 'curtain-bangs', name: 'Long, curtain bangs', view: 'front' },
   { id: 'tucked', name: 'Tucked behind the ears', view: 'side' },
   { id: 'pixie', name: 'Pixie', view: 'side' },
+  { id: 'short-crop', name: 'Short crop', view: 'side' },
   { id: 'slicked-back', name: 'Slicked back', view: 'side' },
   { id: 'long-curls', name: 'Long curls', view: 'front' },
+  { id: 'coily', name: 'Coily', view: 'front' },
   { id: 'high-ponytail', name: 'High ponytail', view: 'side' },
+  { id: 'low-ponytail', name: 'Low ponytail', view: 'back' },
+  { id: 'side-ponytail', name: 'Side ponytail', view: 'front' },
   { id: 'pigtails', name: 'Pigtails', view: 'back' },
   { id: 'half-up', name: 'Half-up, half-down', view: 'side' },
   { id: 'top-bun', name: 'Top bun', view: 'side' },
+  { id: 'low-bun', name: 'Low bun', view: 'back' },
   { id: 'braid', name: 'Braid', view: 'back' },
+  { id: 'two-braids', name: 'Two braids', view: 'back' },
   { id: 'mohawk', name: 'Mohawk', view: 'side' },
 ];
 
