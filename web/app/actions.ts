@@ -385,7 +385,9 @@ export function buildActions(t: ActionTarget): Action[] {
       title:
         'Start from a style in the library: every stroke of it can be edited (Undo brings the work back)',
       group: 'file',
-      toolbar: 'more',
+      // on the first row, where there is room: after New it wrapped the toolbar a row deeper in a
+      // 1000 px window and moved the 3D view down 30 px
+      toolbar: 'main',
       run: () => t.openStyles(),
     },
   ];
