@@ -84,7 +84,10 @@ test('script and HTML payloads in every string of a session file and its name on
   await expect(page.getByTestId('status')).toContainText('ids.json');
   const probe = await page.evaluate(() => ({
     xss: (window as unknown as { __xss?: number }).__xss ?? 0,
-    imgs: document.querySelectorAll('img').length,
+    // the Styles dialog's own pictures (styles/<id>.png) aside
+    imgs: [...document.querySelectorAll('img')].filter(
+      (i) => !(i.closest('#styles-dialog') && /\/styles\/[a-z-]+\.png$/.test(i.src)),
+    ).length,
     svgs: document.querySelectorAll('svg').length,
     scripts: [...document.querySelectorAll('script')].filter((s) => !s.src).length,
   }));
@@ -123,7 +126,10 @@ test('payloads in a link only ever show as text, and the preset loads instead', 
   await settled(page);
   const probe = await page.evaluate(() => ({
     xss: (window as unknown as { __xss?: number }).__xss ?? 0,
-    imgs: document.querySelectorAll('img').length,
+    // the Styles dialog's own pictures (styles/<id>.png) aside
+    imgs: [...document.querySelectorAll('img')].filter(
+      (i) => !(i.closest('#styles-dialog') && /\/styles\/[a-z-]+\.png$/.test(i.src)),
+    ).length,
     curves: (window.hairsketch.session() as { curves: unknown[] }).curves.length,
   }));
   expect(probe.xss).toBe(0);
