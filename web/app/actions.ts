@@ -379,17 +379,20 @@ export function buildActions(t: ActionTarget): Action[] {
       toolbar: 'more',
       run: () => t.newSession(),
     },
-    {
-      id: 'file.styles',
-      label: 'Styles',
-      title:
-        'Start from a style in the library: every stroke of it can be edited (Undo brings the work back)',
-      group: 'file',
-      // on the first row, where there is room: after New it wrapped the toolbar a row deeper in a
-      // 1000 px window and moved the 3D view down 30 px
-      toolbar: 'main',
-      run: () => t.openStyles(),
-    },
+    // "Styles" sits on the toolbar's first row, where there is room (beside New it wrapped the
+    // toolbar a row deeper in a 1000 px window and moved the 3D view down 30 px); on a phone,
+    // whose first row is full, it is in More instead (style.css shows one of the two)
+    ...(['main', 'more'] as const).map(
+      (row): Action => ({
+        id: row === 'main' ? 'file.styles' : 'file.styles.more',
+        label: 'Styles',
+        title:
+          'Start from a style in the library: every stroke of it can be edited (Undo brings the work back)',
+        group: 'file',
+        toolbar: row,
+        run: () => t.openStyles(),
+      }),
+    ),
   ];
 }
 
