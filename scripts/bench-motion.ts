@@ -7,13 +7,13 @@
 // worker's time for a frame (workerMs) and the page's geometry time (buildMs). Then Stop.
 // Writes bench-results/motion.json and .md (BENCH_LABEL=<label>: motion-<label>) and prints the
 // table. A benchmark, not a test: it asserts nothing about speed.
-import { type ChildProcess, spawn } from 'node:child_process';
-import { chromium, type Page } from '@playwright/test';
+import { resolve } from 'node:path';
+import type { Page } from '@playwright/test';
 import { presetSession } from '../web/cli/presetSession';
 import { Head } from '../web/head/head';
 import { growthForStrands } from '../web/ui/detailPanel';
 import { writeBenchResults } from './benchResults.mjs';
-import { openWhenHairReady, waitServer } from './previewServer';
+import { openWhenHairReady, previewAndBrowser, waitServer } from './previewServer';
 
 const PORT = Number(process.env.BENCH_PORT ?? 4192);
 const BASE = `http://127.0.0.1:${PORT}`;
@@ -82,15 +82,9 @@ async function playOnce(page: Page, strands: number) {
 }
 
 async function main(): Promise<void> {
-  const server: ChildProcess = spawn(
-    'node_modules/.bin/vite',
-    ['preview', '--port', String(PORT), '--strictPort'],
-    { stdio: ['ignore', 'ignore', 'inherit'] },
-  );
-  const browser = await chromium.launch({
-    executablePath: process.env.CHROMIUM_PATH ?? '/usr/lib/chromium/chromium-headless-shell',
-    args: ['--no-sandbox', '--disable-gpu', '--enable-unsafe-swiftshader'],
-  });
+  // the headless shell, as the figures in bench-results/motion.md were measured with
+  process.env.CHROMIUM_PATH ??= '/usr/lib/chromium/chromium-headless-shell';
+  const { server, browser } = await previewAndBrowser(resolve('dist'), PORT);
   const rows: Awaited<ReturnType<typeof playOnce>>[] = [];
   try {
     await waitServer(BASE);
