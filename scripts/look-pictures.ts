@@ -5,16 +5,15 @@
 // elsewhere, e.g. a build before a change; LOOK_SIZE=WxH of each view, default 320x320;
 // LOOK_STYLES=a,b only those).
 import { mkdirSync, writeFileSync } from 'node:fs';
-import { readPng } from '../tests/unit/pngPixels';
 import { presetSession } from '../web/cli/presetSession';
 import { openStillRenderer } from '../web/cli/render';
 import { applyCommand } from '../web/editor/commands';
-import { encodePng } from '../web/export/png';
 import { Head } from '../web/head/head';
 import { DEFAULT_HAIR_LOOK, type HairLook } from '../web/model/hairLook';
 import type { PresetName } from '../web/model/presets';
 import type { SessionState } from '../web/model/session';
 import { VIEW_NAMES } from '../web/viewer/namedViews';
+import { sideBySide } from './pictureStrip';
 
 const [WIDTH, HEIGHT] = (process.env.LOOK_SIZE ?? '320x320').split('x').map(Number);
 const out = process.env.LOOK_DIR ?? 'docs/screenshots/look';
@@ -52,22 +51,6 @@ const styles: Record<string, () => SessionState> = {
 };
 
 const only = process.env.LOOK_STYLES?.split(',');
-
-/** The views side by side, 2 pixels apart on white. */
-function sideBySide(pngs: readonly Uint8Array[]): Uint8Array {
-  const views = pngs.map((p) => readPng(p));
-  const gap = 2;
-  const height = Math.max(...views.map((v) => v.height));
-  const width = views.reduce((w, v) => w + v.width, 0) + gap * (views.length - 1);
-  const rgba = new Uint8Array(4 * width * height).fill(255);
-  let x0 = 0;
-  for (const v of views) {
-    for (let y = 0; y < v.height; y++)
-      rgba.set(v.rgba.subarray(4 * y * v.width, 4 * (y + 1) * v.width), 4 * (y * width + x0));
-    x0 += v.width + gap;
-  }
-  return encodePng(width, height, 4, rgba);
-}
 
 const renderer = await openStillRenderer();
 try {
