@@ -37,7 +37,12 @@ const styles: Record<string, () => SessionState> = {
     const s = preset('curly');
     return withLook(
       // as the Hair panel's Curl type sets it: the curl and the type's root lift as the Volume
-      applyCommand(s, { kind: 'setCurlType', curveId: null, type: '4B' }).session,
+      // in a new session (curl and coil volume on), as a user choosing 4B gets it
+      {
+        ...applyCommand(s, { kind: 'setCurlType', curveId: null, type: '4B' }).session,
+        curlVolume: true,
+        coilVolume: true,
+      },
       {
         melanin: 0.85,
         tipMelanin: 0.85,

@@ -20,6 +20,7 @@ enum EngineSetting : size_t {
   kSettingHairline,    // a soft hairline (HairEngine::setHairline, soft_hairline.hpp)
   kSettingCurlVolume,  // curly hair spreads towards its ends (HairEngine::setCurlVolume)
   kSettingNape,        // a low nape: read by the app's head (the scalp mask), not by the engine
+  kSettingCoilVolume,  // coily hair stands out from the head (HairEngine::setCoilVolume)
   kEngineSettingCount
 };
 

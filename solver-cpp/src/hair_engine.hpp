@@ -92,6 +92,9 @@ class HairEngine {
   // default): curls wind round the hair's path, as in sessions made before it.
   void setCurlVolume(bool on) { curlVolume_ = on; }
   bool curlVolume() const { return curlVolume_; }
+  // Coily hair stands out from the head (strand_detail.hpp "Coil volume"; with curl volume).
+  void setCoilVolume(bool on) { coilVolume_ = on; }
+  bool coilVolume() const { return coilVolume_; }
   // Finished edges: every strand not laid into a tie ends up to kEndSpread short of where it
   // grew to (strand_detail.hpp applyDetail's endSpread), seeded per strand; lone roots are not
   // grown (scalp_roots.hpp dropLoneRoots); with fall the prior opens the face (hair_fall.hpp);
@@ -221,6 +224,7 @@ class HairEngine {
   bool ties_ = false;
   bool hairline_ = false;
   bool curlVolume_ = false;
+  bool coilVolume_ = false;
   bool finish_ = false;
   ShapeRules shape_;
   std::vector<std::vector<Eigen::Vector3f>> partings_;  // the dividing curves of the last setCurves

@@ -221,7 +221,10 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
     std::vector<DetailParams> groups =
         detail_.empty() ? std::vector<DetailParams>{DetailParams{}} : detail_;
     if (curlVolume_)
-      for (DetailParams& d : groups) d.curl.spread = kCurlSpread;
+      for (DetailParams& d : groups) {
+        d.curl.spread = kCurlSpread;
+        if (coilVolume_) d.curl.coil = 1;
+      }
     // (ties on) hair a tie lays keeps its length: a tail ends where its stroke ends, with the
     // tie's own uneven ends (gathered_tail.hpp), so its strands take their group's detail without
     // the length jitter (which cut tails up to a tenth short of their strokes' ends); hair wound

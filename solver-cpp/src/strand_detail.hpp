@@ -55,6 +55,13 @@
 //   front of c does not move), turned by the lock's lean; the move's back (-z) part is then
 //   scaled by kCurlSpreadBack (curls widen more than they stand off the back: at the full amount
 //   a new user saw long curls lean back off the body).
+// Coil volume (coil w = 1, with curl volume): coily hair (4A-4C) stands out from the head as a
+//   spring does, rather than hanging as a curtain: with its coiliness
+//     C = w smoothstep((q - kCoilFrom) / (kCoilFull - kCoilFrom))   (0 for 3C and looser, 1 from
+//   the middle of 4A), the curl volume's tip move is (1 + kCoilGain C) times as far, its profile
+//   t^(1.3 + (kCoilPower - 1.3) C) (it leaves the head sooner), and D_k keeps C times the upward
+//   (+y) part of p_k - c (hair on the top of the head stands up, never pushed down). C = 0: the
+//   curl volume above, bit for bit.
 // Frizz (distance d, shape s): v_i uniform in the unit ball (seeded by the key, one per point),
 //   c_0 = 0, c_i = c_{i-1} + v_i.x T_i + v_i.y N_i + v_i.z B_i (the frame of the path before curl),
 //   p_i <- p_i + d S(x_i; s) c_i. The root is pinned.
@@ -86,6 +93,9 @@ struct CurlParams {
   // session's `curlVolume`): the share of a curl's shrinkage that spreads the hair out at its tip
   // (above, "Curl volume").
   double spread = 0;
+  // Coil volume (0 = off, as in sessions before it; 1 with the session's `coilVolume`): above,
+  // "Coil volume".
+  double coil = 0;
 };
 
 struct ClumpParams {
@@ -158,5 +168,12 @@ constexpr double kCurlSpread = 0.4;
 constexpr double kCurlSpreadVary = 0.35;
 constexpr double kCurlSpreadTurn = 0.5;  // radians
 constexpr double kCurlSpreadBack = 0.5;  // of the move's back (-z) part
+// Coil volume: the coiliness ramps in between these curl frequencies (turns a world unit: 3C's
+// fastest and 4A's middle), and at full coiliness the curl volume's move is 1 + kCoilGain as far
+// with the profile t^kCoilPower.
+constexpr double kCoilFrom = 5.4;
+constexpr double kCoilFull = 7.0;
+constexpr double kCoilGain = 1.0;
+constexpr double kCoilPower = 0.8;
 
 }  // namespace hairsketch

@@ -30,14 +30,16 @@ double smoothstep(double x) {
   return x * x * (3 - 2 * x);
 }
 
-// Curl volume (strand_detail.hpp "Curl volume") on the evenly resampled path, before the helix.
+// Curl volume and coil volume (strand_detail.hpp "Curl volume", "Coil volume") on the evenly
+// resampled path, before the helix.
 void spreadCurl(const CurlParams& c, double L, uint32_t seed, uint32_t phaseKey, const V3& centre,
                 Work& w) {
   const double steep = kTwoPi * c.frequency * c.radius;
   const double shrink = 1 - 1 / std::sqrt(1 + steep * steep);
+  const double coily = c.coil * smoothstep((c.frequency - kCoilFrom) / (kCoilFull - kCoilFrom));
   const double vary =
       1 + kCurlSpreadVary * (2 * strandRng(seed, phaseKey, kStreamCurlSpread).uniform() - 1);
-  const double tip = c.spread * shrink * L * vary;
+  const double tip = c.spread * shrink * L * vary * (1 + kCoilGain * coily);
   if (!(tip > 0)) return;
   // each lock leans its own way, within +-kCurlSpreadTurn of straight out (about the vertical)
   const double turn =
@@ -49,13 +51,17 @@ void spreadCurl(const CurlParams& c, double L, uint32_t seed, uint32_t phaseKey,
     const double t = (w.s[k] / L - a) / (1 - a);
     if (!(t > 0)) continue;
     V3 out = w.p[k] - centre;
-    out.y() = 0;
+    out.y() = coily * std::max(out.y(), 0.0);
     out.z() = std::min(out.z(), 0.0);
-    out = V3(ct * out.x() + st * out.z(), 0, -st * out.x() + ct * out.z());
+    out = V3(ct * out.x() + st * out.z(), out.y(), -st * out.x() + ct * out.z());
     out.z() = std::min(out.z(), 0.0);
     const double len = out.norm();
     if (!(len > 1e-9)) continue;
-    V3 move = (tip * std::pow(t, 1.3) / len) * out;
+    // coils leave the head at once and then hang: a rounded mass, not a flare to the tips
+    const double rise = 1 - (1 - t) * (1 - t);
+    const double profile = coily > 0 ? std::pow(t, 1.3) + (rise - std::pow(t, 1.3)) * coily
+                                     : std::pow(t, 1.3);
+    V3 move = (tip * profile / len) * out;
     move.z() *= kCurlSpreadBack;  // less back than sideways: curls widen, the mass does not lean
     w.p[k] += move;
   }

@@ -36,7 +36,8 @@ TEST(EngineSettings, EachFlagFollowsItsOwnEntry) {
   const Flag flags[] = {{kSettingSections, &HairEngine::sections},
                         {kSettingTies, &HairEngine::ties},
                         {kSettingHairline, &HairEngine::hairline},
-                        {kSettingCurlVolume, &HairEngine::curlVolume}};
+                        {kSettingCurlVolume, &HairEngine::curlVolume},
+                        {kSettingCoilVolume, &HairEngine::coilVolume}};
   for (const Flag& f : flags) {
     HairEngine e;
     double v[kEngineSettingCount] = {};

@@ -4,7 +4,7 @@
 // kCurlSpreadTurn of straight out and never forward, its back part then scaled by
 // kCurlSpreadBack; nothing moves up to the curl's start; hair
 // straight in front of the head's centre does not move; loose waves hardly spread; spread 0 leaves
-// the curl as before, bit for bit.
+// the curl as before, bit for bit. Coil volume on top of it (strand_detail.hpp "Coil volume").
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -151,6 +151,66 @@ TEST(CurlVolume, SpreadZeroIsTheCurlAsBeforeAndABadSpreadIsRefused) {
     EXPECT_FALSE(st.ok());
     EXPECT_NE(st.message.find("curl.spread"), std::string::npos) << st.message;
   }
+}
+
+// Coil volume (strand_detail.hpp "Coil volume"): a coil (coiliness 1: the tiny curl's frequency is
+// far past kCoilFull) moves hair at the side 1 + kCoilGain times as far at the tip, along
+// 1 - (1 - t)^2 (out at once, then hanging), horizontally below the head's centre.
+TEST(CoilVolume, CoilsStandOutSoonerAndFurtherThanCurls) {
+  std::vector<Strand> hair;
+  for (int k = 0; k < 12; ++k) {
+    const double a = -0.3 * kPi - 1.2 * kPi * k / 11;
+    hair.push_back(hanging(kCentre + V3(0.8 * std::cos(a), -0.2, -0.8 * std::sin(a)), 121, 0.025));
+  }
+  DetailParams coil = tinyCurl(kCurlSpread);
+  coil.curl.coil = 1;
+  ASSERT_GT(coil.curl.frequency, kCoilFull);
+  const Strands on = grow(hair, coil), off = grow(hair, tinyCurl(0)),
+                curl = grow(hair, tinyCurl(kCurlSpread));
+  for (size_t s = 0; s < hair.size(); ++s) {
+    SCOPED_TRACE(testing::Message() << "strand " << s);
+    const Strand a = strandOf(on, s), b = strandOf(off, s), c = strandOf(curl, s);
+    ASSERT_EQ(a.size(), b.size());
+    const size_t m = a.size();
+    auto unscaled = [](V3 v) {
+      v.z() /= kCurlSpreadBack;
+      return v;
+    };
+    const V3 tipMove = unscaled(a[m - 1] - b[m - 1]), curlTip = unscaled(c[m - 1] - b[m - 1]);
+    // the same lock's factor and lean: 1 + kCoilGain times the curl's move, the same way
+    EXPECT_NEAR(tipMove.norm(), (1 + kCoilGain) * curlTip.norm(), 1e-4);
+    EXPECT_GT(tipMove.normalized().dot(curlTip.normalized()), 0.99999);
+    EXPECT_NEAR(tipMove.y(), 0, 1e-4);  // below the centre: horizontally
+    for (size_t k = 0; k < m; ++k) {
+      const double x = double(k) / double(m - 1), t = std::max(0.0, (x - 0.2) / 0.8);
+      const V3 move = unscaled(a[k] - b[k]);
+      EXPECT_NEAR(move.norm(), tipMove.norm() * (1 - (1 - t) * (1 - t)), 1e-4) << "point " << k;
+    }
+  }
+}
+
+TEST(CoilVolume, HairOnTheTopStandsUpAndLooseCurlsAreAsBefore) {
+  // a strand rising from the top of the head: its coil volume lifts it, never pushes it down
+  Strand up;
+  for (int i = 0; i < 81; ++i) up.push_back(kCentre + V3(0.2, 0.7 + 0.025 * i, -0.1));
+  DetailParams coil = tinyCurl(kCurlSpread);
+  coil.curl.coil = 1;
+  const Strands on = grow({up}, coil), off = grow({up}, tinyCurl(0));
+  const Strand a = strandOf(on, 0), b = strandOf(off, 0);
+  for (size_t k = 0; k < a.size(); ++k) EXPECT_GE(a[k].y() - b[k].y(), -1e-6) << "point " << k;
+  EXPECT_GT(a.back().y() - b.back().y(), 0.1);
+  // 3C (4.8 turns a unit, under kCoilFrom): coil on is the curl volume alone, bit for bit
+  std::vector<Strand> hair{hanging(V3(0.8, 0, -0.3), 61, 0.03),
+                           hanging(V3(-0.5, 0.1, -0.7), 61, 0.03)};
+  DetailParams d;
+  d.curl.radius = 0.058;
+  d.curl.frequency = 4.8;
+  d.curl.spread = kCurlSpread;
+  DetailParams c = d;
+  c.curl.coil = 1;
+  const Strands x = grow(hair, d), y = grow(hair, c);
+  ASSERT_EQ(x.strandStart, y.strandStart);
+  EXPECT_EQ(0, std::memcmp(x.points.data(), y.points.data(), x.points.size() * sizeof(float)));
 }
 
 }  // namespace

@@ -23,6 +23,7 @@ function sample(): SessionState {
     hairline: _hairline,
     curlVolume: _curlVolume,
     nape: _nape,
+    coilVolume: _coilVolume,
     ...s
   } = emptySession('50k');
   return {

@@ -90,10 +90,22 @@ describe('every preset session passes the reader and round-trips', () => {
 
   it('spells out the defaults of a minimal session, and keeps them on the next read', () => {
     // a session made before version 4 has no natural fall, sections, finished edges, bust or
-    // shape rules, ties from any hand, soft hairline, curl volume or low nape (new sessions have
-    // them on)
-    const { fall, sections, finish, bust, shape, ties, hairline, curlVolume, nape, ...beforeFall } =
-      emptySession('25k');
+    // shape rules, ties from any hand, soft hairline, curl volume, low nape or coil volume (new
+    // sessions have them on)
+    const {
+      fall,
+      sections,
+      finish,
+      bust,
+      shape,
+      ties,
+      hairline,
+      curlVolume,
+      nape,
+      coilVolume,
+      ...beforeFall
+    } = emptySession('25k');
+    expect(coilVolume).toBe(true);
     expect(nape).toBe(true);
     expect(curlVolume).toBe(true);
     expect(hairline).toBe(true);
@@ -122,6 +134,7 @@ describe('every preset session passes the reader and round-trips', () => {
         hairline: true,
         curlVolume: true,
         nape: true,
+        coilVolume: true,
       }),
     ).toEqual(emptySession('25k'));
   });

@@ -36,6 +36,7 @@ function full(): SessionState {
     hairline: true,
     curlVolume: true,
     nape: true,
+    coilVolume: true,
     bandColor: '#d02060',
     detail: { lengthJitter: 0.2 },
     scalpPaint: [{ erase: true, radius: 0.3, points: [[0, 1, 0]] }],
@@ -80,6 +81,7 @@ describe('session schema', () => {
       'hairline',
       'curlVolume',
       'nape',
+      'coilVolume',
       'detail',
     ]);
     expect(needsSolve(s, { ...s })).toBe(false);
@@ -149,8 +151,9 @@ describe('engine settings', () => {
         hairline: true,
         curlVolume: false,
         nape: true,
+        coilVolume: true,
       }),
-    ]).toEqual([1, 0, 0, 1, 0, 1, 0.12, 0, 1, 0, 1]);
+    ]).toEqual([1, 0, 0, 1, 0, 1, 0.12, 0, 1, 0, 1, 1]);
     expect([
       ...engineSettings({
         avoidScalp: false,
@@ -164,7 +167,8 @@ describe('engine settings', () => {
         hairline: false,
         curlVolume: true,
         nape: false,
+        coilVolume: false,
       }),
-    ]).toEqual([0, 1, 1, 0, 1, 0, 0, 1, 0, 1, 0]);
+    ]).toEqual([0, 1, 1, 0, 1, 0, 0, 1, 0, 1, 0, 0]);
   });
 });

@@ -332,6 +332,7 @@ export function applyPreset(s: SessionState, name: PresetName, ctx: PresetContex
     hairline,
     curlVolume,
     nape,
+    coilVolume,
     bust,
     ...rest
   } = s;
@@ -366,6 +367,7 @@ export function applyPreset(s: SessionState, name: PresetName, ctx: PresetContex
     ...(hairline && name === 'empty' ? { hairline } : {}),
     ...(curlVolume && name === 'empty' ? { curlVolume } : {}),
     ...(nape && name === 'empty' ? { nape } : {}),
+    ...(coilVolume && name === 'empty' ? { coilVolume } : {}),
     ...(bust ? { bust } : {}),
     growth,
     curves,

@@ -224,6 +224,7 @@ export function emptySession(
     hairline: true,
     curlVolume: true,
     nape: true,
+    coilVolume: true,
   };
 }
 

@@ -92,6 +92,10 @@ export const SESSION_SETTINGS = {
    *  cut off where the head meets the neck. On in every new session; off, the scalp of sessions
    *  made before. */
   nape: { type: 'flag', hair: 'request' },
+  /** Coil volume (solver-cpp/src/strand_detail.hpp "Coil volume", with curl volume): coily hair
+   *  (4A–4C) stands out from the head and up from its top, as a spring of coils does, where looser
+   *  curls hang. On in every new session; off, the coils of sessions made before. */
+  coilVolume: { type: 'flag', hair: 'request' },
 } as const satisfies Record<string, SettingSpec>;
 
 export type SessionSettingName = keyof typeof SESSION_SETTINGS;
