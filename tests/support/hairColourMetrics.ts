@@ -67,6 +67,24 @@ export function hairColour(withHair: Rgba, bald: Rgba, threshold = 24): HairColo
   return { pixels: n, hue, luma: n ? luma / n : 0, saturation: n ? sat / n : 0 };
 }
 
+/** How much of the hair is drawn black (the back of dark hair as a shell lit by nothing): of the
+ *  hair's pixels (as hairColour finds them), the share whose brightest sRGB channel is under
+ *  `below` (bytes). Dark brown hair's own colour is brighter than that where any light reaches
+ *  it. */
+export function blackShare(withHair: Rgba, bald: Rgba, below = 12, threshold = 24): number {
+  let hair = 0;
+  let black = 0;
+  const a = withHair.rgba;
+  const b = bald.rgba;
+  for (let i = 0; i < a.length; i += 4) {
+    const d = Math.abs(a[i] - b[i]) + Math.abs(a[i + 1] - b[i + 1]) + Math.abs(a[i + 2] - b[i + 2]);
+    if (d <= threshold) continue;
+    hair++;
+    if (Math.max(a[i], a[i + 1], a[i + 2]) < below) black++;
+  }
+  return hair > 0 ? black / hair : 0;
+}
+
 /** The smaller angle between two hues, degrees. */
 export function hueDistance(a: number, b: number): number {
   const d = Math.abs(a - b) % 360;

@@ -10,6 +10,7 @@ import { Head } from '../../web/head/head';
 import { DEFAULT_HAIR_LOOK, type HairLook } from '../../web/model/hairLook';
 import type { SessionState } from '../../web/model/session';
 import {
+  blackShare,
   hairColour,
   highlightPeak,
   hueDistance,
@@ -129,6 +130,19 @@ describe.runIf(DIST_BUILT)('hair colour as drawn', () => {
     );
     expect(high.pixels).toBeGreaterThan(0.8 * fast.pixels);
     expect(high.grain).toBeLessThan(1.4 * fast.grain);
+  });
+
+  it("from behind, dark hair shows its strands in the fill's sheen, not a black shell", async () => {
+    // the dark brown bob (melanin 0.7) from behind, lit by the fill alone: with the fill lighting
+    // only the hair's base colour, 0.65 of its pixels in Fast and 0.59 in High were under 12 of
+    // 255 in every channel; with the fill's sheen (its primary reflection), 0.39 and 0.38
+    const dark = presetSession('bob', Head.builtin(), '25k', 8000);
+    for (const quality of ['fast', 'high'] as const) {
+      const hair = readPng((await renderer.render(dark, { ...size, quality })).png[0]);
+      const share = blackShare(hair, await bald(quality));
+      console.log(`dark bob from behind (${quality}): ${share.toFixed(3)} of its pixels black`);
+      expect(share).toBeLessThan(0.5);
+    }
   });
 
   it('from behind, the outer strands show, not a smooth shell', async () => {

@@ -44,6 +44,17 @@ float hairFresnel(float c) {
   return HAIR_F0 + (1.0 - HAIR_F0) * f2 * f2 * f;
 }
 
+// The primary reflection alone (the R lobe above), for a light with no shadow or colour of its
+// own: the fill's sheen (strandShaders.ts).
+float hairR(vec3 T, vec3 L, vec3 V, float beta) {
+  float sinL = clamp(dot(T, L), -1.0, 1.0);
+  float sinV = clamp(dot(T, V), -1.0, 1.0);
+  vec3 Lp = L - sinL * T;
+  vec3 Vp = V - sinV * T;
+  float cosPhi = dot(Lp, Vp) * inversesqrt(max(dot(Lp, Lp) * dot(Vp, Vp), 1e-8));
+  return hairG(beta * beta, sinL + sinV + 0.07) * 0.25 * sqrt(clamp(0.5 + 0.5 * cosPhi, 0.0, 1.0))
+    * hairFresnel(sqrt(clamp(0.5 + 0.5 * dot(L, V), 0.0, 1.0)));
+}
 // Light leaving towards V from a strand of tangent T lit from L (unit vectors), per unit of
 // light reaching the hair's outer layer; sigma: the absorption σa (C = exp(−√σa D), so powers
 // of C are exponentials of √σa); shadowT: the transmittance towards the light. HAIR_CHEAP (the

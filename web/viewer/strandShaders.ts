@@ -71,6 +71,8 @@ uniform float rootDarkening; // roots are darker by this fraction
 uniform float hueVariation; // ± red/blue balance per strand
 // the largest tilt of a strand's shading tangent towards its normal (about 8 degrees)
 const float HIGHLIGHT_TILT = 0.14;
+// the fill's sheen, over the fill's brightness (the key's BSDF gain's share of it)
+const float FILL_SHEEN = 5.0;
 uniform float precomputed; // 1: use the precomputed lighting attribute; 0: ignore it (all lit)
 #ifdef DEEP_OPACITY
 uniform sampler2D domDepth;
@@ -151,7 +153,11 @@ vec3 shadeStrand(vec3 T, vec3 P, vec2 along, vec4 rnd, vec2 light) {
   float TF = dot(T, fillDirection);
   float fill = mix(0.3, 1.0, sqrt(max(0.0, 1.0 - TF * TF)));
   float sky = 0.65 + 0.35 * N.y;
-  return rootAo * (key + ao * (fillColor * fill + ambientColor * sky) * base);
+  // the fill's sheen: its primary reflection, white, where the hair turns towards it (from
+  // behind, dark hair lit by the fill alone was a black shell with no strand showing)
+  float sheen =
+    FILL_SHEEN * dot(fillColor, vec3(0.2126, 0.7152, 0.0722)) * hairR(Ts, fillDirection, V, beta);
+  return rootAo * (key + ao * ((fillColor * fill + ambientColor * sky) * base + sheen));
 }
 `;
 
