@@ -73,6 +73,8 @@ test('each display toggle switches with a click and with its shortcut, and the a
   await page.mouse.click(target.x, target.y);
   await page.evaluate(() => window.hairsketch.idle());
   expect(await selected(page)).toBeNull();
+  // and the click says why nothing was picked
+  await expect(page.getByTestId('status')).toContainText('curves are hidden');
   expect((await info(page)).surfaceTriangles).toBe(0);
 
   // Shortcuts 1–5 flip each toggle back (also with the focus on a checkbox).

@@ -514,9 +514,13 @@ function tieTool(k: ToolKit, kind: PlainTieKind): Tool {
 function selectTool(k: ToolKit): Tool {
   const { d, editor, viewer } = k;
   return new SelectTool({
-    // hidden curves (Curves display off) cannot be picked
+    // hidden curves (Curves display off) cannot be picked: a click says so rather than nothing
     curves: () => (d.curvesShown() ? editor.session.curves : []),
     toScreen: (p) => viewer.worldToScreen(p),
-    select: (id) => editor.select(id),
+    select: (id) => {
+      if (id === null && !d.curvesShown() && editor.session.curves.length > 0)
+        d.notify('The curves are hidden: tick Curves (key 1) to select one.');
+      editor.select(id);
+    },
   });
 }
