@@ -85,6 +85,49 @@ export function blackShare(withHair: Rgba, bald: Rgba, below = 12, threshold = 2
   return hair > 0 ? black / hair : 0;
 }
 
+/** How much bare skin shows through the hair (stripes of scalp between clumps, a crown's whorl):
+ *  in the top `topShare` of the hair's bounding box (as hairColour finds the hair's pixels: there
+ *  the head is covered by hair), the share of all pixels that read as skin (sRGB with r > g > b,
+ *  HSV saturation 0.15 to 0.6 and value above 90 of 255, as skinGrain's). */
+export function skinThroughHair(
+  withHair: Rgba,
+  bald: Rgba,
+  topShare = 0.6,
+  threshold = 24,
+): number {
+  const { width, height } = withHair;
+  const a = withHair.rgba;
+  const b = bald.rgba;
+  let x0 = width;
+  let x1 = -1;
+  let y0 = height;
+  let y1 = -1;
+  for (let y = 0; y < height; y++)
+    for (let x = 0; x < width; x++) {
+      const i = 4 * (y * width + x);
+      const d =
+        Math.abs(a[i] - b[i]) + Math.abs(a[i + 1] - b[i + 1]) + Math.abs(a[i + 2] - b[i + 2]);
+      if (d <= threshold) continue;
+      x0 = Math.min(x0, x);
+      x1 = Math.max(x1, x);
+      y0 = Math.min(y0, y);
+      y1 = Math.max(y1, y);
+    }
+  if (x1 < 0) return 0;
+  const yEnd = y0 + topShare * (y1 - y0);
+  let all = 0;
+  let skin = 0;
+  for (let y = y0; y <= yEnd; y++)
+    for (let x = x0; x <= x1; x++) {
+      const i = 4 * (y * width + x);
+      all++;
+      const [r, g, bl] = [a[i], a[i + 1], a[i + 2]];
+      const [, sat, val] = hsv(r, g, bl);
+      if (r > g && g > bl && sat >= 0.15 && sat <= 0.6 && val > 90 / 255) skin++;
+    }
+  return all > 0 ? skin / all : 0;
+}
+
 /** The smaller angle between two hues, degrees. */
 export function hueDistance(a: number, b: number): number {
   const d = Math.abs(a - b) % 360;

@@ -2,19 +2,21 @@
 // not champagne, and the same look (lighter tips too) reads as the same hue and brightness in
 // Fast and High. Drawn by `hairsketch render`'s renderer (the built app's embed in Chromium); the
 // hair's pixels are those that differ from the same view without hair.
-import { existsSync } from 'node:fs';
+import { existsSync, readFileSync } from 'node:fs';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { presetSession } from '../../web/cli/presetSession';
 import { openStillRenderer, type StillRenderer } from '../../web/cli/render';
 import { Head } from '../../web/head/head';
 import { DEFAULT_HAIR_LOOK, type HairLook } from '../../web/model/hairLook';
 import type { SessionState } from '../../web/model/session';
+import { parseSession } from '../../web/model/sessionFile';
 import {
   blackShare,
   hairColour,
   highlightPeak,
   hueDistance,
   skinGrain,
+  skinThroughHair,
   strandContrast,
 } from '../support/hairColourMetrics';
 import { readPng } from './pngPixels';
@@ -143,6 +145,28 @@ describe.runIf(DIST_BUILT)('hair colour as drawn', () => {
       console.log(`dark bob from behind (${quality}): ${share.toFixed(3)} of its pixels black`);
       expect(share).toBeLessThan(0.5);
     }
+  });
+
+  it('from behind, a short crop shows its hair, not pink stripes of scalp between its clumps', async () => {
+    // the library's short crop (drawn by a new user) from behind in Fast: with the scalp's colour
+    // under hair only in a band along its edge, 0.073 of the top of the hair's box read as skin
+    // (a judge: "stripes of scalp between the clumps, like cornrows"); with the scalp farther in
+    // keeping 0.6 of it, 0.042
+    const read = parseSession(
+      JSON.parse(
+        readFileSync(new URL('../../public/styles/short-crop.json', import.meta.url), 'utf8'),
+      ),
+    );
+    if (!read.ok) throw new Error(read.error);
+    const crop = { ...read.value, growth: { ...read.value.growth, maxStrands: 12000 } };
+    const o = { ...size, quality: 'fast' as const };
+    const hair = readPng((await renderer.render(crop, o)).png[0]);
+    const none = readPng((await renderer.render({ ...crop, curves: [] }, o)).png[0]);
+    const skin = skinThroughHair(hair, none);
+    console.log(
+      `short crop from behind: ${skin.toFixed(3)} of the top of the hair's box reads as skin`,
+    );
+    expect(skin).toBeLessThan(0.055);
   });
 
   it('from behind, the outer strands show, not a smooth shell', async () => {

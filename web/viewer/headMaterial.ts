@@ -107,11 +107,15 @@ export const HAIR_UNDER_SHARE = 0.8;
 export const HAIR_UNDER_FADE = 0.1;
 export const HAIR_UNDER_HOLD = 0.25;
 export const HAIR_UNDER_OUT = 0.35;
+/** Farther in than that, the share it keeps: scalp seen between clumps, at a crown's whorl or along
+ *  a parting reads as the hair's shade over skin, as under real hair, not as bare pink stripes
+ *  (new users judging the library: "pink stripes of scalp between the clumps, like cornrows"). */
+export const HAIR_UNDER_INNER = 0.6;
 
 /** Per vertex: how far the scalp's colour under hair holds there, 0 at and outside the scalp's
  *  edge (a vertex with a triangle off the scalp, and eyes and lips) rising to 1 at HAIR_UNDER_FADE
- *  in from it, falling to 0 again from HAIR_UNDER_HOLD to HAIR_UNDER_OUT (smoothsteps of the
- *  distance along the mesh's edges, web/head/edgeDistance.ts). */
+ *  in from it, falling to HAIR_UNDER_INNER from HAIR_UNDER_HOLD to HAIR_UNDER_OUT (smoothsteps of
+ *  the distance along the mesh's edges, web/head/edgeDistance.ts). */
 function scalpShares(head: HeadMeshArrays, out?: Float32Array): Float32Array {
   const { scalpCount, triCount } = scalpCounts(head);
   const n = head.positions.length / 3;
@@ -134,7 +138,9 @@ function scalpShares(head: HeadMeshArrays, out?: Float32Array): Float32Array {
   for (let v = 0; v < n; v++)
     f[v] =
       smooth(d[v] / HAIR_UNDER_FADE) *
-      (1 - smooth((d[v] - HAIR_UNDER_HOLD) / (HAIR_UNDER_OUT - HAIR_UNDER_HOLD)));
+      (1 -
+        (1 - HAIR_UNDER_INNER) *
+          smooth((d[v] - HAIR_UNDER_HOLD) / (HAIR_UNDER_OUT - HAIR_UNDER_HOLD)));
   return f;
 }
 
