@@ -114,6 +114,11 @@ test("Enter in a panel's number field commits it and gives the keys back to the 
   await settled(page, s.revision);
   await page.keyboard.press('f');
   await expect(page.getByTestId('view-label')).toHaveText('View: front');
+  // a view key: data-detail leaves full at once and is full again only once the camera is there
+  // (at 1,000 strands every moving frame draws every strand: it read full mid-way, "View: free")
+  await page.keyboard.press('l');
+  await expect(page.getByTestId('status')).toHaveAttribute('data-detail', 'full');
+  expect(await page.getByTestId('view-label').textContent()).toBe('View: left');
 });
 
 test('the status line speaks plainly: strand count with separators, no strands on a bald head', async ({

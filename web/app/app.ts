@@ -266,8 +266,10 @@ export function startApp(): void {
   };
   followView();
   viewer.renderedListeners.add(followView);
-  // data-detail: every strand on screen, or the sample drawn until the full-detail frame is
-  viewer.renderedListeners.add(() => line.detail(viewer.hairDetail === 1));
+  // data-detail: every strand on screen, or the sample drawn until the full-detail frame is; not
+  // full while a view key's camera eases (from the key press on: a screenshot waits for it)
+  viewer.renderedListeners.add(() => line.detail(viewer.hairDetail === 1 && !viewer.viewAnimating));
+  viewer.viewMovingListeners.add(() => line.detail(false));
   help = buildHelpOverlay(document.body, actions);
   exporting = wireExport({
     editor,

@@ -76,6 +76,9 @@ export class Viewer {
   onRendered: (() => void) | null = null;
   /** Also called after each rendered frame (the view control's label follows the camera). */
   readonly renderedListeners = new Set<() => void>();
+  /** Called when the camera starts easing to a view (resetView, showView), before its first frame:
+   *  what is on screen is about to move. */
+  readonly viewMovingListeners = new Set<() => void>();
   /** The settled view was drawn at interactive detail; its full-detail frame is still to come
    *  (in fullDetailWait more frames). */
   private fullDetailOwed = false;
@@ -407,6 +410,7 @@ export class Viewer {
    *  setCamera or another resetView during the animation takes over from it. */
   resetView(animate = true): void {
     this.rig.resetView(animate);
+    this.viewMoving();
   }
 
   /** Eases the camera to a named view (namedViews.ts framedAppView) of the home framing, farther
@@ -415,6 +419,11 @@ export class Viewer {
   showView(name: AppViewName, lowest = Number.POSITIVE_INFINITY): void {
     const v = framedAppView(name, this.rig.home, lowest);
     this.rig.easeTo(v.position, v.target);
+    this.viewMoving();
+  }
+
+  private viewMoving(): void {
+    if (this.rig.viewAnimating) for (const l of this.viewMovingListeners) l();
   }
 
   /** Sets the framing resetView returns to (default: DEFAULT_CAMERA). */
