@@ -58,9 +58,8 @@ void spreadCurl(const CurlParams& c, double L, uint32_t seed, uint32_t phaseKey,
     const double len = out.norm();
     if (!(len > 1e-9)) continue;
     // coils leave the head at once and then hang: a rounded mass, not a flare to the tips
-    const double rise = 1 - (1 - t) * (1 - t);
-    const double profile =
-        coily > 0 ? std::pow(t, 1.3) + (rise - std::pow(t, 1.3)) * coily : std::pow(t, 1.3);
+    const double curl = std::pow(t, 1.3);
+    const double profile = coily > 0 ? curl + (1 - (1 - t) * (1 - t) - curl) * coily : curl;
     V3 move = (tip * profile / len) * out;
     move.z() *= kCurlSpreadBack;  // less back than sideways: curls widen, the mass does not lean
     w.p[k] += move;
