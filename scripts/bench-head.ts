@@ -20,7 +20,7 @@ import { gridForSession } from '../web/model/grid';
 import type { ScalpMesh } from '../web/model/hairArrays';
 import { DEFAULT_GROWTH } from '../web/model/session';
 import type { Vec3 } from '../web/model/vec3';
-import { loadSolverEngine } from '../web/solver/wasmEngine';
+import { loadWasmEngine } from '../web/solver/wasmEngine';
 import { writeBenchResults } from './benchResults.mjs';
 
 const RUNS = Math.max(1, Number(process.env.BENCH_RUNS ?? 3));
@@ -185,7 +185,7 @@ async function measure(triangles: number): Promise<Row> {
   const maskMs: number[] = [];
   let wasm: Row['wasm'] = { growth: 0, head: 0, inUse: 0, cells: 0 };
   for (let run = 0; run < RUNS; run++) {
-    const engine = await loadSolverEngine({ wasmBinary });
+    const engine = await loadWasmEngine({ wasmBinary });
     const heap0 = engine.heapBytes();
     const t0 = performance.now();
     engine.setScalp(scalp);

@@ -21,7 +21,8 @@ import { gridForSession } from '../web/model/grid';
 import type { StrandArrays } from '../web/model/hairArrays';
 import { hangLength } from '../web/model/session';
 import { singleNodeOptions } from '../web/solver/nodeThreads';
-import { loadSolverEngine } from '../web/solver/wasmEngine';
+import { engineOver } from '../web/solver/requestRunner';
+import { loadWasmEngine } from '../web/solver/wasmEngine';
 import { writeBenchResults } from './benchResults.mjs';
 
 const RUNS = Math.max(1, Number(process.env.BENCH_RUNS ?? 7));
@@ -337,12 +338,13 @@ const head = Head.builtin();
 const session = presetSession('default', head, '25k', 0);
 const spec = gridForSession('25k', session.curves, undefined, hangLength(session));
 const scalp = head.scalpMesh();
-const engine = await loadSolverEngine(singleNodeOptions());
+const core = await loadWasmEngine(singleNodeOptions());
+const engine = engineOver(core);
 const grown = growSessionHair(engine, session, scalp, { grid: spec, solver: 'fast' });
 const cases: { name: string; strands: StrandArrays; headShadow: boolean }[] = [800, 6000].map(
   (cap) => ({
     name: `preview ${cap} strands`,
-    strands: engine.grow({ ...session.growth, maxStrands: cap }),
+    strands: core.grow({ ...session.growth, maxStrands: cap }),
     headShadow: false,
   }),
 );

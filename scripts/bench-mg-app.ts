@@ -17,7 +17,7 @@ import { type GridPreset, gridForSession } from '../web/model/grid';
 import type { GridSpec } from '../web/model/hairArrays';
 import { hangLength, type SessionState } from '../web/model/session';
 import { singleNodeOptions } from '../web/solver/nodeThreads';
-import { loadSolverEngine } from '../web/solver/wasmEngine';
+import { loadWasmEngine } from '../web/solver/wasmEngine';
 import { writeBenchResults } from './benchResults.mjs';
 
 const builds = (process.env.MG_BUILD ?? 'build/native').split(',');
@@ -36,7 +36,7 @@ if (builds.length === 1) {
 }
 
 async function write(session: SessionState, spec: GridSpec, file: string) {
-  const engine = await loadSolverEngine(singleNodeOptions());
+  const engine = await loadWasmEngine(singleNodeOptions());
   try {
     engine.setGrid(spec, 100, 'fast');
     engine.setScalp(head.scalpMesh());

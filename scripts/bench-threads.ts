@@ -20,7 +20,8 @@ import {
   stopThreadWorkers,
   threadedNodeOptions,
 } from '../web/solver/nodeThreads';
-import { chooseThreads, type LoadOptions, loadSolverEngine } from '../web/solver/wasmEngine';
+import { engineOver } from '../web/solver/requestRunner';
+import { chooseThreads, type LoadOptions, loadWasmEngine } from '../web/solver/wasmEngine';
 import { writeBenchResults } from './benchResults.mjs';
 
 const gridName = (process.env.BENCH_GRID ?? '250k') as GridPreset;
@@ -37,7 +38,8 @@ const session = dense
   : base;
 
 async function run(label: string, load: LoadOptions) {
-  const engine = await loadSolverEngine(load);
+  const core = await loadWasmEngine(load);
+  const engine = engineOver(core);
   const hair = growSessionHair(engine, session, head.scalpMesh(), {
     grid,
     solver: 'fast',
@@ -47,11 +49,11 @@ async function run(label: string, load: LoadOptions) {
   let growMs = hair.growMs;
   for (let r = 1; r < repeat; r++) {
     const t = performance.now();
-    engine.grow({ ...session.growth, maxStrands: strands });
+    core.grow({ ...session.growth, maxStrands: strands });
     growMs = Math.min(growMs, performance.now() - t);
   }
   const out = {
-    module: engine.moduleLabel(),
+    module: core.moduleLabel(),
     grid: gridName,
     gridPoints: grid.dims[0] * grid.dims[1] * grid.dims[2],
     strands: hair.strands.strandStart.length - 1,
@@ -72,14 +74,15 @@ const median = (v: number[]) => {
 /** Solve only (maxStrands 1: the growth is negligible), from a fresh engine. */
 async function solveOnce(load: LoadOptions, gridName: GridPreset) {
   const s = presetSession('default', head, gridName, 0);
-  const engine = await loadSolverEngine(load);
+  const core = await loadWasmEngine(load);
+  const engine = engineOver(core);
   try {
     const hair = growSessionHair(engine, s, head.scalpMesh(), {
       grid: gridForSession(gridName, s.curves, undefined, hangLength(s)),
       solver: 'fast',
       maxStrands: 1,
     });
-    return { module: engine.moduleLabel(), solveMs: hair.solveMs, iterations: hair.iterations };
+    return { module: core.moduleLabel(), solveMs: hair.solveMs, iterations: hair.iterations };
   } finally {
     engine.dispose();
   }

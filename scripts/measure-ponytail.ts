@@ -18,7 +18,8 @@ import type { CurveSet, StrandArrays } from '../web/model/hairArrays';
 import type { PresetName } from '../web/model/presets';
 import type { PonytailCurve } from '../web/model/session';
 import { hangLength } from '../web/model/session';
-import { loadSolverEngine } from '../web/solver/wasmEngine';
+import { engineOver } from '../web/solver/requestRunner';
+import { loadWasmEngine } from '../web/solver/wasmEngine';
 
 type V = [number, number, number];
 const sub = (a: V, b: V): V => [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
@@ -165,13 +166,14 @@ async function main() {
       name === ('twins' as PresetName)
         ? { ...base, curves: base.curves.filter((c) => c.type === 'ponytail') }
         : base;
-    const engine = await loadSolverEngine({
+    const core = await loadWasmEngine({
       wasmBinary: new Uint8Array(readFileSync('web/generated/hairsolver.wasm')),
     });
     if (gather !== null) {
-      const set = engine.setCurves.bind(engine);
-      engine.setCurves = (cs: CurveSet) => set(withGather(cs, gather));
+      const set = core.setCurves.bind(core);
+      core.setCurves = (cs: CurveSet) => set(withGather(cs, gather));
     }
+    const engine = engineOver(core);
     const scalp = head.scalpMesh();
     const g = gridForSession(grid, session.curves, undefined, hangLength(session));
     const hair = growSessionHair(engine, session, scalp, { grid: g, solver: 'fast' });

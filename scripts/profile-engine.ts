@@ -8,7 +8,7 @@ import { gridForPreset, isGridPreset } from '../web/model/grid';
 import { presetCurves } from '../web/model/presets';
 import { DEFAULT_GROWTH } from '../web/model/session';
 import type { SolverName } from '../web/solver/protocol';
-import { loadSolverEngine } from '../web/solver/wasmEngine';
+import { loadWasmEngine } from '../web/solver/wasmEngine';
 
 const gridName = process.argv[2] ?? '25k';
 const solver = (process.argv[3] ?? 'fast') as SolverName;
@@ -21,7 +21,7 @@ const curves = presetCurves('default', {
   step: grid.step,
   viewpoint: { position: [0, 0, 6], target: [0, 0, 0] },
 });
-const engine = await loadSolverEngine({
+const engine = await loadWasmEngine({
   wasmBinary: new Uint8Array(readFileSync('web/generated/hairsolver.wasm')),
 });
 let s = t();

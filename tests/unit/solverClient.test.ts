@@ -122,12 +122,12 @@ describe('SolverClient', () => {
     const { client, workers, shown } = setup();
     const w = workers[0];
     expect(w.sent[0].type).toBe('init');
-    client.request(curves(1), DEFAULT_GROWTH, opts(1));
+    client.request({ curves: curves(1), growth: DEFAULT_GROWTH, options: opts(1) });
     expect(w.solves()).toHaveLength(0); // not ready yet: sent on ready
     w.reply({ type: 'ready', gridPoints: 8, roots: 0 });
     expect(w.solves()).toHaveLength(1);
-    client.request(curves(2), DEFAULT_GROWTH, opts(2));
-    client.request(curves(3), DEFAULT_GROWTH, opts(3));
+    client.request({ curves: curves(2), growth: DEFAULT_GROWTH, options: opts(2) });
+    client.request({ curves: curves(3), growth: DEFAULT_GROWTH, options: opts(3) });
     expect(w.solves()).toHaveLength(3); // the worker supersedes; the client does not queue
     const [a, , c] = w.solves();
     w.reply(result(a.id, false));
@@ -145,11 +145,11 @@ describe('SolverClient', () => {
     const { client, workers, shown } = setup();
     const w = workers[0];
     w.reply({ type: 'ready', gridPoints: 8, roots: 0 });
-    client.request(curves(1), DEFAULT_GROWTH, opts(1), 'preview');
+    client.request({ curves: curves(1), growth: DEFAULT_GROWTH, options: opts(1) }, 'preview');
     expect(w.solves()[0].mode).toBe('preview');
     w.reply(result(w.solves()[0].id, false));
     expect(client.pending).toBe(false);
-    client.request(curves(1), DEFAULT_GROWTH, opts(1), 'full');
+    client.request({ curves: curves(1), growth: DEFAULT_GROWTH, options: opts(1) }, 'full');
     expect(w.solves()).toHaveLength(2); // not answered from a cache
     expect(shown).toHaveLength(1);
   });
@@ -158,9 +158,9 @@ describe('SolverClient', () => {
     const { client, workers, shown } = setup();
     const w = workers[0];
     w.reply({ type: 'ready', gridPoints: 8, roots: 0 });
-    client.request(curves(1), DEFAULT_GROWTH, opts(1), 'preview');
-    client.request(curves(2), DEFAULT_GROWTH, opts(2), 'preview');
-    client.request(curves(3), DEFAULT_GROWTH, opts(3), 'preview');
+    client.request({ curves: curves(1), growth: DEFAULT_GROWTH, options: opts(1) }, 'preview');
+    client.request({ curves: curves(2), growth: DEFAULT_GROWTH, options: opts(2) }, 'preview');
+    client.request({ curves: curves(3), growth: DEFAULT_GROWTH, options: opts(3) }, 'preview');
     expect(w.solves()).toHaveLength(1); // the drag does not queue solves in the worker
     const first = w.solves()[0];
     w.reply(result(first.id, false));
@@ -177,14 +177,14 @@ describe('SolverClient', () => {
     const { client, workers } = setup();
     const w = workers[0];
     w.reply({ type: 'ready', gridPoints: 8, roots: 0 });
-    client.request(curves(1), DEFAULT_GROWTH, opts(1), 'preview');
-    client.request(curves(2), DEFAULT_GROWTH, opts(2), 'preview');
+    client.request({ curves: curves(1), growth: DEFAULT_GROWTH, options: opts(1) }, 'preview');
+    client.request({ curves: curves(2), growth: DEFAULT_GROWTH, options: opts(2) }, 'preview');
     expect(w.solves()).toHaveLength(1);
     w.reply({ type: 'error', id: w.solves()[0].id, message: 'bad curve', kind: 'invalid_input' });
     // the waiting preview goes out, and so does the next one once that is answered
     expect(w.solves()).toHaveLength(2);
     w.reply(result(w.solves()[1].id, false));
-    client.request(curves(3), DEFAULT_GROWTH, opts(3), 'preview');
+    client.request({ curves: curves(3), growth: DEFAULT_GROWTH, options: opts(3) }, 'preview');
     expect(w.solves()).toHaveLength(3);
   });
 
@@ -192,8 +192,8 @@ describe('SolverClient', () => {
     const { client, workers, shown } = setup();
     const w = workers[0];
     w.reply({ type: 'ready', gridPoints: 8, roots: 0 });
-    client.request(curves(1), DEFAULT_GROWTH, opts(1), 'preview');
-    client.request(curves(1), DEFAULT_GROWTH, opts(1), 'full'); // pointer-up: sent at once
+    client.request({ curves: curves(1), growth: DEFAULT_GROWTH, options: opts(1) }, 'preview');
+    client.request({ curves: curves(1), growth: DEFAULT_GROWTH, options: opts(1) }, 'full'); // pointer-up: sent at once
     expect(w.solves().map((m) => m.mode)).toEqual(['preview', 'full']);
     const [p, f] = w.solves();
     w.reply(result(p.id, false)); // late preview answer
@@ -202,7 +202,7 @@ describe('SolverClient', () => {
     w.reply(result(f.id, true));
     expect(shown.map((s) => s.id)).toEqual([f.id, f.id]);
     // A preview after the full request is sent at once (nothing in flight), its answer shown.
-    client.request(curves(2), DEFAULT_GROWTH, opts(2), 'preview');
+    client.request({ curves: curves(2), growth: DEFAULT_GROWTH, options: opts(2) }, 'preview');
     expect(w.solves()).toHaveLength(3);
   });
 
@@ -210,12 +210,12 @@ describe('SolverClient', () => {
     const { client, workers, shown } = setup();
     const w = workers[0];
     w.reply({ type: 'ready', gridPoints: 8, roots: 0 });
-    client.request(curves(1), DEFAULT_GROWTH, opts(1));
+    client.request({ curves: curves(1), growth: DEFAULT_GROWTH, options: opts(1) });
     w.reply(result(w.solves()[0].id));
-    client.request(curves(2), DEFAULT_GROWTH, opts(2));
+    client.request({ curves: curves(2), growth: DEFAULT_GROWTH, options: opts(2) });
     w.reply(result(w.solves()[1].id));
     expect(client.pending).toBe(false);
-    client.request(curves(1), DEFAULT_GROWTH, opts(1)); // undo
+    client.request({ curves: curves(1), growth: DEFAULT_GROWTH, options: opts(1) }); // undo
     expect(w.solves()).toHaveLength(2);
     expect(shown.at(-1)).toEqual({ id: w.solves()[0].id, cached: true });
   });
@@ -224,26 +224,26 @@ describe('SolverClient', () => {
     const { client, workers, shown } = setup();
     const w = workers[0];
     w.reply({ type: 'ready', gridPoints: 8, roots: 0 });
-    client.request(curves(1), DEFAULT_GROWTH, opts(1));
+    client.request({ curves: curves(1), growth: DEFAULT_GROWTH, options: opts(1) });
     expect(w.solves()[0].wantField).toBe(false);
     w.reply(result(w.solves()[0].id));
     client.wantField = true;
-    client.request(curves(1), DEFAULT_GROWTH, opts(1)); // same state, but the cached answer has no field
+    client.request({ curves: curves(1), growth: DEFAULT_GROWTH, options: opts(1) }); // same state, but the cached answer has no field
     expect(w.solves()).toHaveLength(2);
     expect(w.solves()[1].wantField).toBe(true);
     w.reply({ ...result(w.solves()[1].id), field: { vectors: new Float32Array(24) } });
-    client.request(curves(1), DEFAULT_GROWTH, opts(1)); // now cached with its field
+    client.request({ curves: curves(1), growth: DEFAULT_GROWTH, options: opts(1) }); // now cached with its field
     expect(w.solves()).toHaveLength(2);
     expect(shown.at(-1)).toEqual({ id: w.solves()[1].id, cached: true });
     client.wantField = false;
-    client.request(curves(1), DEFAULT_GROWTH, opts(1)); // a field in the cache does no harm
+    client.request({ curves: curves(1), growth: DEFAULT_GROWTH, options: opts(1) }); // a field in the cache does no harm
     expect(w.solves()).toHaveLength(2);
   });
 
   it('restarts a dead worker and re-sends the newest state', () => {
     const { client, workers, errors } = setup();
     workers[0].reply({ type: 'ready', gridPoints: 8, roots: 0 });
-    client.request(curves(2), DEFAULT_GROWTH, opts(2));
+    client.request({ curves: curves(2), growth: DEFAULT_GROWTH, options: opts(2) });
     workers[0].die();
     expect(workers[0].terminated).toBe(true);
     expect(errors[0]).toMatch(/restarting/);
@@ -259,7 +259,7 @@ describe('SolverClient', () => {
     const { client, workers } = setup();
     const w = workers[0];
     w.reply({ type: 'ready', gridPoints: 8, roots: 0 });
-    client.request(curves(1), DEFAULT_GROWTH, opts(1));
+    client.request({ curves: curves(1), growth: DEFAULT_GROWTH, options: opts(1) });
     w.reply(result(w.solves()[0].id));
     const bigger = {
       dims: [2, 3, 2] as [number, number, number],
@@ -272,7 +272,7 @@ describe('SolverClient', () => {
     expect(workers).toHaveLength(1);
     expect(w.terminated).toBe(false);
     expect(w.sent.at(-1)).toEqual({ type: 'grid', grid: bigger });
-    client.request(curves(1), DEFAULT_GROWTH, opts(1)); // the same state: not from the old grid's cache
+    client.request({ curves: curves(1), growth: DEFAULT_GROWTH, options: opts(1) }); // the same state: not from the old grid's cache
     expect(w.solves()).toHaveLength(2);
     expect(w.sent.at(-1)).toMatchObject({ type: 'solve' });
     expect(client.pending).toBe(true);
@@ -286,7 +286,7 @@ describe('SolverClient', () => {
     const { client, workers, shown } = setup({ ...init, scalp: fourTriangles() });
     const w = workers[0];
     w.reply({ type: 'ready', gridPoints: 8, roots: 0 });
-    client.request(curves(1), DEFAULT_GROWTH, opts(1));
+    client.request({ curves: curves(1), growth: DEFAULT_GROWTH, options: opts(1) });
     const onA = w.solves()[0].id;
     w.reply(result(onA));
     const maskB = new Uint8Array([1, 0, 0, 1]);
@@ -294,7 +294,7 @@ describe('SolverClient', () => {
     // the worker is sent the mask and kept (no restart, no new init)
     expect(workers).toHaveLength(1);
     expect(w.sent.at(-1)).toEqual({ type: 'scalpMask', scalp: maskB });
-    client.request(curves(1), DEFAULT_GROWTH, opts(1)); // same curves, other scalp
+    client.request({ curves: curves(1), growth: DEFAULT_GROWTH, options: opts(1) }); // same curves, other scalp
     expect(w.solves()).toHaveLength(2);
     expect(shown.at(-1)).toEqual({ id: onA, cached: false });
     const onB = w.solves()[1].id;
@@ -302,11 +302,11 @@ describe('SolverClient', () => {
     expect(shown.at(-1)).toEqual({ id: onB, cached: false });
     // back to the first mask (an undo): its hair from the cache, without the worker
     client.setScalpMask(new Uint8Array([1, 1, 1, 1]));
-    client.request(curves(1), DEFAULT_GROWTH, opts(1));
+    client.request({ curves: curves(1), growth: DEFAULT_GROWTH, options: opts(1) });
     expect(w.solves()).toHaveLength(2);
     expect(shown.at(-1)).toEqual({ id: onA, cached: true });
     client.setScalpMask(maskB);
-    client.request(curves(1), DEFAULT_GROWTH, opts(1));
+    client.request({ curves: curves(1), growth: DEFAULT_GROWTH, options: opts(1) });
     expect(shown.at(-1)).toEqual({ id: onB, cached: true });
   });
 
@@ -314,11 +314,11 @@ describe('SolverClient', () => {
     const { client, workers, shown } = setup({ ...init, scalp: fourTriangles() });
     const w = workers[0];
     w.reply({ type: 'ready', gridPoints: 8, roots: 0 });
-    client.request(curves(1), DEFAULT_GROWTH, opts(1));
+    client.request({ curves: curves(1), growth: DEFAULT_GROWTH, options: opts(1) });
     client.setScalpMask(new Uint8Array([0, 1, 0, 1]));
     client.setScalpMask(new Uint8Array([1, 1, 1, 1])); // back, before the answer came
     w.reply(result(w.solves()[0].id));
-    client.request(curves(1), DEFAULT_GROWTH, opts(1));
+    client.request({ curves: curves(1), growth: DEFAULT_GROWTH, options: opts(1) });
     expect(w.solves()).toHaveLength(2); // asked again, not answered from the cache
     expect(shown.every((s) => !s.cached)).toBe(true);
   });
@@ -340,7 +340,7 @@ describe('SolverClient', () => {
   it('setHead restarts the worker with the new head (and grid), drops the cache and solves the open request', () => {
     const { client, workers } = setup({ ...init, scalp: fourTriangles() });
     workers[0].reply({ type: 'ready', gridPoints: 8, roots: 0 });
-    client.request(curves(1), DEFAULT_GROWTH, opts(1));
+    client.request({ curves: curves(1), growth: DEFAULT_GROWTH, options: opts(1) });
     workers[0].reply(result(workers[0].solves()[0].id));
     const head = fourTriangles(new Uint8Array([1, 1, 1, 1]));
     head.positions[0] = 0.5; // another head with the same scalp mask
@@ -356,7 +356,7 @@ describe('SolverClient', () => {
     expect(w.sent).toHaveLength(1);
     expect(w.sent[0]).toEqual({ ...init, grid, scalp: head });
     expect(client.grid).toEqual(grid);
-    client.request(curves(1), DEFAULT_GROWTH, opts(1)); // same state: not from the old head's cache
+    client.request({ curves: curves(1), growth: DEFAULT_GROWTH, options: opts(1) }); // same state: not from the old head's cache
     expect(w.solves()).toHaveLength(0); // waits for the new worker
     w.reply({ type: 'ready', gridPoints: 27, roots: 0 });
     expect(w.solves()).toHaveLength(1);
@@ -376,7 +376,7 @@ describe('SolverClient', () => {
     const { client, workers, errors, kinds } = setup();
     const w = workers[0];
     w.reply({ type: 'ready', gridPoints: 8, roots: 0 });
-    client.request(curves(1), DEFAULT_GROWTH, opts(1));
+    client.request({ curves: curves(1), growth: DEFAULT_GROWTH, options: opts(1) });
     const id = w.solves()[0].id;
     w.reply({ type: 'error', id, message: 'exact: over the cap', kind: 'over_memory_cap' });
     expect(errors).toEqual(['exact: over the cap']);
@@ -389,7 +389,7 @@ describe('SolverClient', () => {
     const { client, workers } = setup();
     workers[0].reply({ type: 'ready', gridPoints: 8, roots: 0 });
     const o = opts(2, { avoidScalp: true, detail: { lengthJitter: 0.4 } });
-    client.request(curves(2), DEFAULT_GROWTH, o);
+    client.request({ curves: curves(2), growth: DEFAULT_GROWTH, options: o });
     const sent = workers[0].solves()[0].options;
     expect(sent.avoidScalp).toBe(true);
     expect(sent.detail.groups[13]).toBe(0.4); // group 0's lengthJitter
@@ -403,23 +403,39 @@ describe('SolverClient', () => {
     const { client, workers, shown } = setup();
     const w = workers[0];
     w.reply({ type: 'ready', gridPoints: 8, roots: 0 });
-    client.request(curves(1), DEFAULT_GROWTH, opts(1));
+    client.request({ curves: curves(1), growth: DEFAULT_GROWTH, options: opts(1) });
     w.reply(result(w.solves()[0].id));
-    client.request(curves(1), DEFAULT_GROWTH, opts(1, { avoidScalp: true }));
+    client.request({
+      curves: curves(1),
+      growth: DEFAULT_GROWTH,
+      options: opts(1, { avoidScalp: true }),
+    });
     expect(w.solves()).toHaveLength(2); // the same curves with avoid scalp: solved again
     expect(w.solves()[1].options.avoidScalp).toBe(true);
     w.reply(result(w.solves()[1].id));
-    client.request(curves(1), DEFAULT_GROWTH, opts(1, { detail: { lengthJitter: 0.2 } }));
+    client.request({
+      curves: curves(1),
+      growth: DEFAULT_GROWTH,
+      options: opts(1, { detail: { lengthJitter: 0.2 } }),
+    });
     expect(w.solves()).toHaveLength(3); // another detail: grown again
     w.reply(result(w.solves()[2].id));
-    client.request(curves(1), DEFAULT_GROWTH, opts(1, { detail: { lengthJitter: 0.3 } }));
+    client.request({
+      curves: curves(1),
+      growth: DEFAULT_GROWTH,
+      options: opts(1, { detail: { lengthJitter: 0.3 } }),
+    });
     expect(w.solves()).toHaveLength(4);
     w.reply(result(w.solves()[3].id));
     // undo back to avoid scalp off: from the cache
-    client.request(curves(1), DEFAULT_GROWTH, opts(1));
+    client.request({ curves: curves(1), growth: DEFAULT_GROWTH, options: opts(1) });
     expect(w.solves()).toHaveLength(4);
     expect(shown.at(-1)).toEqual({ id: w.solves()[0].id, cached: true });
-    client.request(curves(1), DEFAULT_GROWTH, opts(1, { avoidScalp: true }));
+    client.request({
+      curves: curves(1),
+      growth: DEFAULT_GROWTH,
+      options: opts(1, { avoidScalp: true }),
+    });
     expect(w.solves()).toHaveLength(4);
     expect(shown.at(-1)).toEqual({ id: w.solves()[1].id, cached: true });
   });
@@ -428,9 +444,9 @@ describe('SolverClient', () => {
     const { client, workers } = setup();
     const w = workers[0];
     w.reply({ type: 'ready', gridPoints: 8, roots: 0 });
-    client.request(curves(1), DEFAULT_GROWTH, opts(1));
-    client.request(curves(2), DEFAULT_GROWTH, opts(2), 'full', 900);
-    client.request(curves(3), DEFAULT_GROWTH, opts(3), 'preview', 450);
+    client.request({ curves: curves(1), growth: DEFAULT_GROWTH, options: opts(1) });
+    client.request({ curves: curves(2), growth: DEFAULT_GROWTH, options: opts(2) }, 'full', 900);
+    client.request({ curves: curves(3), growth: DEFAULT_GROWTH, options: opts(3) }, 'preview', 450);
     expect(w.solves().map((m) => [m.mode, m.lightMaxStrands])).toEqual([
       ['full', 0],
       ['full', 900],

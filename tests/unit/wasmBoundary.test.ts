@@ -11,7 +11,7 @@ import type { CurveSet, GridSpec } from '../../web/model/hairArrays';
 import type { StyleCurve } from '../../web/model/session';
 import { SolverError } from '../../web/solver/engine';
 import type { SolverErrorKind } from '../../web/solver/protocol';
-import { loadRawSolver, loadSolverEngine } from '../../web/solver/wasmEngine';
+import { loadRawSolver, loadWasmEngine } from '../../web/solver/wasmEngine';
 import {
   CURVE_SET_HEADER,
   GRID_INPUT,
@@ -81,7 +81,7 @@ describe('struct layouts', () => {
 
 describe('error kinds', () => {
   it('engine: each kind from the input that causes it', async () => {
-    const e = await loadSolverEngine({ wasmBinary }); // loading checks every struct's offsets
+    const e = await loadWasmEngine({ wasmBinary }); // loading checks every struct's offsets
     expect(kindOf(() => e.solve())).toBe('not_ready');
     expect(kindOf(() => e.setGrid({ ...grid, dims: [1, 4, 4] }, 100, 'cg'))).toBe('invalid_input');
     expect(kindOf(() => e.setGrid({ ...grid, dims: [200, 200, 200] }, 100, 'fast'))).toBe(
@@ -126,7 +126,7 @@ describe('error kinds', () => {
   });
 
   it('the exact solver on a grid whose factor is over its memory cap says over_memory_cap', async () => {
-    const e = await loadSolverEngine({ wasmBinary });
+    const e = await loadWasmEngine({ wasmBinary });
     // 250K preset size (63 x 63 x 63): the factor needs more than the 1800 MB cap.
     const big: GridSpec = { dims: [63, 63, 63], origin: [-1.5, -1.5, -1.5], step: 3 / 62 };
     let err: unknown = null;
@@ -163,7 +163,7 @@ describe('error kinds', () => {
 
 describe('stats', () => {
   it('are fixed fields matching what the engine did', async () => {
-    const e = await loadSolverEngine({ wasmBinary });
+    const e = await loadWasmEngine({ wasmBinary });
     e.setGrid(grid, 100, 'exact');
     const a = packCurves([
       { id: 'a', type: 'stream', points: line(6, 0), extend: true, viewpoint: vp() },
@@ -280,7 +280,7 @@ describe('curve parameters from CURVE_PARAMS', () => {
   });
 
   it('gives the constraints of the hand-written packing, parameter by parameter', async () => {
-    const e = await loadSolverEngine({ wasmBinary });
+    const e = await loadWasmEngine({ wasmBinary });
     e.setGrid(grid, 100, 'cg');
     const results: string[] = [];
     for (const c of cases) {

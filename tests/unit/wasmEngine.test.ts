@@ -6,7 +6,7 @@ import { beforeAll, describe, expect, it } from 'vitest';
 import type { GrowthParams } from '../../web/model/growthParams';
 import type { CurveSet, GridSpec, ScalpMesh } from '../../web/model/hairArrays';
 import { SolverError } from '../../web/solver/engine';
-import { loadRawSolver, loadSolverEngine } from '../../web/solver/wasmEngine';
+import { loadRawSolver, loadWasmEngine } from '../../web/solver/wasmEngine';
 
 const wasmPath = fileURLToPath(new URL('../../web/generated/hairsolver.wasm', import.meta.url));
 let wasmBinary: Uint8Array;
@@ -264,7 +264,7 @@ describe('engine', () => {
 
   it('solves the curve into a field that follows it and matches a dense solve', async () => {
     const small: GridSpec = { dims: [6, 6, 6], origin: [-1.5, -1.5, -1.5], step: 0.6 };
-    const e = await loadSolverEngine({ wasmBinary });
+    const e = await loadWasmEngine({ wasmBinary });
     e.setGrid(small, OMEGA, 'cg');
     e.setCurves(streamCurve(c, 1.05, small.step));
     e.solve();
@@ -280,7 +280,7 @@ describe('engine', () => {
 
   it('grows non-empty, seed-deterministic strands on a sphere scalp', async () => {
     const run = async (seed: number) => {
-      const e = await loadSolverEngine({ wasmBinary });
+      const e = await loadWasmEngine({ wasmBinary });
       e.setGrid(grid, OMEGA, 'cg');
       e.setScalp(head);
       e.setCurves(curves);
@@ -340,7 +340,7 @@ describe('engine', () => {
       left[t] = x > 0 && y > 0 ? 1 : 0;
     }
     const grown = async (scalp: ScalpMesh, mask?: Uint8Array) => {
-      const e = await loadSolverEngine({ wasmBinary });
+      const e = await loadWasmEngine({ wasmBinary });
       e.setGrid(grid, OMEGA, 'cg');
       e.setScalp(scalp);
       e.setCurves(curves);
@@ -373,7 +373,7 @@ describe('engine', () => {
   });
 
   it('throws SolverError with the C++ message on bad input', async () => {
-    const e = await loadSolverEngine({ wasmBinary });
+    const e = await loadWasmEngine({ wasmBinary });
     expect(() => e.solve()).toThrow(/before setGrid/);
     expect(() => e.setGrid(grid, OMEGA, 'nope' as 'cg')).toThrow(/unknown solver/);
     e.setGrid(grid, OMEGA, 'cg');

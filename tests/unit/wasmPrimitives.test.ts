@@ -5,7 +5,7 @@ import { fileURLToPath } from 'node:url';
 import { beforeAll, describe, expect, it } from 'vitest';
 import type { CurveSet, GridSpec, ScalpMesh } from '../../web/model/hairArrays';
 import { SolverError } from '../../web/solver/engine';
-import { loadSolverEngine } from '../../web/solver/wasmEngine';
+import { loadWasmEngine } from '../../web/solver/wasmEngine';
 
 const wasmPath = fileURLToPath(new URL('../../web/generated/hairsolver.wasm', import.meta.url));
 let wasmBinary: Uint8Array;
@@ -72,7 +72,7 @@ function dividingSet(
 
 describe('wasm primitives', () => {
   it('parts the field along a dividing curve', async () => {
-    const e = await loadSolverEngine({ wasmBinary });
+    const e = await loadWasmEngine({ wasmBinary });
     e.setGrid(GRID, 100, 'cg');
     e.setScalp(sphere());
     e.setCurves(dividingSet());
@@ -98,7 +98,7 @@ describe('wasm primitives', () => {
   });
 
   it('returns scalp-avoidance constraints that the next solve accepts as extras', async () => {
-    const e = await loadSolverEngine({ wasmBinary });
+    const e = await loadWasmEngine({ wasmBinary });
     e.setGrid(GRID, 100, 'cg');
     expect(() => e.scalpAvoidance()).toThrow(SolverError); // no scalp yet
     e.setScalp(sphere());

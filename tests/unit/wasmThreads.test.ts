@@ -14,7 +14,12 @@ import {
   stopThreadWorkers,
   threadedNodeOptions,
 } from '../../web/solver/nodeThreads';
-import { type LoadOptions, loadRawSolver, loadSolverEngine } from '../../web/solver/wasmEngine';
+import {
+  type LoadOptions,
+  loadRawSolver,
+  loadSolverEngine,
+  loadWasmEngine,
+} from '../../web/solver/wasmEngine';
 
 interface Problem {
   grid: [number, number, number];
@@ -108,10 +113,10 @@ describe('threaded wasm module', () => {
   afterAll(stopThreadWorkers);
 
   it('loads under Node with the thread count asked for and says so', async () => {
-    const e = await loadSolverEngine(await threadedNodeOptions(2));
+    const e = await loadWasmEngine(await threadedNodeOptions(2));
     expect(e.moduleLabel()).toBe('threads: 2');
     e.dispose();
-    const s = await loadSolverEngine({ ...singleNodeOptions(), singleReason: 'test' });
+    const s = await loadWasmEngine({ ...singleNodeOptions(), singleReason: 'test' });
     expect(s.moduleLabel()).toBe('single-threaded: test');
     s.dispose();
   });

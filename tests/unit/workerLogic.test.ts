@@ -6,14 +6,16 @@ import { describe, expect, it } from 'vitest';
 import { packCurves, packHairOptions } from '../../web/model/curveSet';
 import type { GridSpec, HairOptions } from '../../web/model/hairArrays';
 import { DEFAULT_GROWTH } from '../../web/model/session';
-import { type IterateProgress, type SolverEngine, SolverError } from '../../web/solver/engine';
+import { type IterateProgress, SolverError } from '../../web/solver/engine';
+import type { EngineCore } from '../../web/solver/engineCore';
 import type { FromWorker, ToWorker } from '../../web/solver/protocol';
+import { engineOver } from '../../web/solver/requestRunner';
 import { loadSolverEngine } from '../../web/solver/wasmEngine';
 import { lineAttributes } from '../../web/viewer/strandAttributes';
 import { DEFAULT_SCHEDULER, WorkerLogic } from '../../web/worker/workerLogic';
 
-/** An engine whose error falls by 10x per iteration from 1 (so 1e-6 takes 6 iterations). */
-function scriptedEngine(log: string[], colours = new Uint8Array([0, 1, 3])): SolverEngine {
+/** An engine core whose error falls by 10x per iteration from 1 (so 1e-6 takes 6 iterations). */
+function scriptedEngine(log: string[], colours = new Uint8Array([0, 1, 3])): EngineCore {
   let it = 0;
   const progress = (): IterateProgress => ({
     iterations: it,
@@ -118,7 +120,7 @@ function harness(colours?: Uint8Array<ArrayBuffer>, convergedSample = false) {
   const log: string[] = [];
   const posted: FromWorker[] = [];
   let yields: Array<() => void> = [];
-  const logic = new WorkerLogic(scriptedEngine(log, colours), (m) => posted.push(m), {
+  const logic = new WorkerLogic(engineOver(scriptedEngine(log, colours)), (m) => posted.push(m), {
     ...DEFAULT_SCHEDULER,
     firstLookIterations: 2,
     sliceIterations: 2,

@@ -6,7 +6,6 @@
 // (hair presenter, overlays, status line, the active tool).
 
 import type { Editor, EditorChange, StrokeInProgress } from '../editor/editor';
-import { packCurves, packHairOptions } from '../model/curveSet';
 import { FIELD_OMEGA, sameGrid } from '../model/grid';
 import type { GridSpec, ScalpMesh } from '../model/hairArrays';
 import { STROKE_KINDS } from '../model/kinds';
@@ -19,6 +18,7 @@ import {
 } from '../model/session';
 import { needsSolve } from '../model/sessionSchema';
 import type { Vec3 } from '../model/vec3';
+import { jobOf } from '../solver/hairRequest';
 import type { SolverErrorKind, SolverName } from '../solver/protocol';
 import { type SolveResult, SolverClient } from '../solver/solverClient';
 
@@ -138,13 +138,7 @@ export class SolverBridge {
       this.client.setGrid(grid);
       this.each((l) => l.gridChanged?.(grid));
     }
-    this.client.request(
-      packCurves(s.curves, null, !!s.fall),
-      s.growth,
-      packHairOptions(s, s.curves),
-      'full',
-      this.lightCap(s),
-    );
+    this.client.request(jobOf(s), 'full', this.lightCap(s));
   }
 
   /** The session with the stroke being drawn, solved as a preview (a stroke of fewer than three
@@ -165,13 +159,7 @@ export class SolverBridge {
     } as StyleCurve;
     const cap = this.lightCap(s);
     const curves = [...s.curves, draft];
-    this.client.request(
-      packCurves(curves, null, !!s.fall),
-      { ...s.growth, maxStrands: cap },
-      packHairOptions(s, curves),
-      'preview',
-      cap,
-    );
+    this.client.request(jobOf(s, curves, { ...s.growth, maxStrands: cap }), 'preview', cap);
   }
 
   /** Shows the solved field in results (the field display), re-solving when it is missing. */

@@ -9,13 +9,13 @@ import { activeQuality } from '../app/quality';
 import { Head } from '../head/head';
 import { sessionScalpMask } from '../head/scalpPaint';
 import { sessionHairline } from '../head/scalpRegion';
-import { packCurves, packHairOptions } from '../model/curveSet';
 import { FIELD_OMEGA } from '../model/grid';
 import { DEFAULT_BAND_COLOR } from '../model/hairLook';
 import type { SessionState } from '../model/session';
 import { sessionGrid } from '../model/session';
 import { decodeSessionLink } from '../model/sessionLink';
 import { tieBands } from '../model/tieBands';
+import { jobOf } from '../solver/hairRequest';
 import { SolverClient } from '../solver/solverClient';
 import { createBodyMesh } from '../viewer/bodyMaterial';
 import { setCameraButtons } from '../viewer/cameraButtons';
@@ -160,9 +160,7 @@ export async function startEmbed(): Promise<void> {
     },
   );
   client.request(
-    packCurves(s.curves, null, !!s.fall),
-    s.growth,
-    packHairOptions(s, s.curves),
+    jobOf(s),
     'full',
     s.growth.maxStrands > 0
       ? Math.min(s.growth.maxStrands, FIRST_LOOK_STRANDS)

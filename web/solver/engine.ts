@@ -1,18 +1,11 @@
-// The solver engine as the worker sees it: one stateful object over the wasm module.
-// Implemented by wasmEngine.ts; the same object runs in the browser worker and under Node.
+// The solver engine as its consumers see it: a HairRequest in (hairRequest.ts), a groom out.
+// requestRunner.ts implements it over the primitive calls of engineCore.ts, which wasmEngine.ts
+// binds to the wasm module; the same object runs in the browser worker and under Node.
 
-import type { GrowthParams } from '../model/growthParams';
-import type {
-  ConstraintArrays,
-  CurveSet,
-  DetailArrays,
-  FieldArrays,
-  GridSpec,
-  ScalpMesh,
-  StrandArrays,
-} from '../model/hairArrays';
+import type { ConstraintArrays, FieldArrays, StrandArrays } from '../model/hairArrays';
 import type { MotionFrame, MotionName, WindSettings } from '../model/motion';
-import type { SolverErrorKind, SolverName, SolveStats } from './protocol';
+import type { HairRequest } from './hairRequest';
+import type { SolverErrorKind, SolveStats } from './protocol';
 
 /** A groom in motion over an engine's head (SolverEngine.startMotion; wasmMotion.ts). */
 export interface MotionRun {
@@ -35,67 +28,68 @@ export interface MotionOptions {
   maxGuides?: number;
 }
 
+/** What consumers of the engine see: a request in, a groom out (requestRunner.ts implements it
+ *  over the primitive calls of engineCore.ts). The worker steps run() a slice at a time between
+ *  messages; `hairsketch grow`, the exports and the tests drive it in one go (growGroom). */
 export interface SolverEngine {
-  /** Analyse the grid and create the solver. Throws SolverError on bad input. */
-  setGrid(grid: GridSpec, omega: number, solver: SolverName): void;
-  /** Store the head: its triangles for root sampling and its distance grid. */
-  setScalp(mesh: ScalpMesh): void;
-  /** A new scalp mask for the head of setScalp (scalp[triangle] = 1 on the scalp, one flag per
-   *  triangle): the next grow samples roots over it; nothing else is rebuilt. Throws SolverError
-   *  (the old mask stays) on a wrong length. */
-  setScalpMask(scalp: Uint8Array): void;
-  /** The body under the head (a bust: neck, shoulders, chest, back), a closed triangle mesh
-   *  apart from the head's (3 numbers per vertex, 3 indices per triangle, counter-clockwise =
-   *  outward): with the session's bust setting on, hair slides over it and is kept out of it.
-   *  null clears it. Takes effect at the next grow. Throws SolverError on non-finite positions,
-   *  an index out of range or over the memory cap (the engine is then left without a body). */
-  setBody(body: { positions: Float32Array; indices: Uint32Array } | null): void;
-  /** Detail applied by grow (curl, clump, frizz, length jitter). */
-  setDetail(detail: DetailArrays): void;
-  /** The session's settings for the curves of the next setCurves, as
-   *  sessionSchema.ts engineSettings packs them (solver-cpp/src/engine_settings.hpp reads them:
-   *  natural fall, for one). */
-  setSettings(values: Float64Array): void;
-  /** Derive constraints from the curves and hand them to the solver (diffed in C++). */
-  setCurves(curves: CurveSet): void;
-  /** Solve the field for the current constraints. */
-  solve(): void;
-  /** Progressive solve: at most `maxIterations` more iterations, stopping once the estimated
-   *  relative error is <= tolerance. Direct solvers solve fully and report converged. The
-   *  field (and grow) then use the current iterate. */
-  iterate(maxIterations: number, tolerance: number): IterateProgress;
-  /** The next iterate() starts from zero instead of the previous field, so the converged field
-   *  depends on the curves alone (the same session gives bit-identical hair whatever was drawn
-   *  before: share links, exports). False when there is nothing to forget (a direct solver). */
-  forgetWarmStart(): boolean;
-  /** The next setCurves may leave the preconditioner's costliest update undone (the fast
-   *  solver's coarsest factor), for a first look of a few iterations that forgetWarmStart
-   *  follows: that reset would throw the update away (a direct solver: nothing to defer). */
-  deferPreconditionerUpdate(): void;
-  /** Sample roots (S5.1) and grow strands (S5.2) in the current field. Returns copies. */
-  grow(params: GrowthParams): StrandArrays;
-  /** The current constraints (sorted by grid index); their colours come from constraintColours. */
-  constraints(): Omit<ConstraintArrays, 'colour'>;
-  /** Display colour of each constraint of constraints(), same order (ConstraintColour values). */
-  constraintColours(): Uint8Array;
-  field(): FieldArrays;
-  stats(): Omit<SolveStats, 'growMs' | 'errorEstimate' | 'heapBytes'>;
-  /** Scalp-avoidance constraints (S4.7) from the current field. */
-  scalpAvoidance(opts: {
-    band?: number;
-    magnitude?: number;
-    wholeHead?: boolean;
-    insideToo?: boolean;
-    minField?: number;
-  }): {
-    index: Int32Array;
-    target: Float64Array;
-  };
-  /** A groom in motion over this engine's head (and body): wasmMotion.ts. */
+  /** Runs a request: sets up its head and grid where they differ from the last request's, then
+   *  solves its job's field and grows its hair as `plan` says, yielding progress, slice
+   *  boundaries (where a driver may pause, or stop by not resuming) and hair (light results, then
+   *  the final groom). Without a job it only sets up. Throws SolverError on bad input. */
+  run(request: HairRequest, plan: RunPlan): Generator<RunStep, void, void>;
+  /** A groom in motion over the head (and body) of the last request run (wasmMotion.ts). */
   startMotion(strands: StrandArrays, opts: MotionOptions): MotionRun;
   /** Bytes of the wasm heap (memory grows, never shrinks). */
   heapBytes(): number;
   dispose(): void;
+}
+
+/** How a request's job is run.
+ *  'preview': a few iterations from the warm start and one light growth (live feedback while a
+ *             stroke is drawn);
+ *  'full':    a first look after a few warm iterations (light), then the field solved from zero
+ *             to convergence (solveRecipe.ts), a light growth of the converged field when it
+ *             saves strands, then the final hair (the app's worker);
+ *  'once':    the field solved to convergence and the final hair only (a fresh engine: the
+ *             command line, the exports, tests). Every mode grows bit-identical final hair. */
+export interface RunPlan {
+  mode: 'preview' | 'full' | 'once';
+  /** Estimated relative field error at which the field counts as converged. */
+  tolerance: number;
+  /** Iterations per slice of the converging solve. */
+  slice: number;
+  /** Iterations of a full run's first look. */
+  firstLook: number;
+  /** Iterations of a preview (one per slice). */
+  previewIterations: number;
+  /** Strand cap of light growths (previews, first looks); 0 = none of its own. */
+  lightMaxStrands: number;
+  /** A full run posts the converged field's light growth before the full hair. */
+  convergedSample: boolean;
+  /** Results carry the solved field. */
+  wantField: boolean;
+  now: () => number;
+}
+
+/** A step of a run: progress to report; the end of a slice of work (a driver may pause here, or
+ *  stop); hair grown (light: final false; the final groom: final true, the run's last step). */
+export type RunStep =
+  | {
+      type: 'progress';
+      phase: 'constraints' | 'solve' | 'grow';
+      fraction: number;
+      /** The solve's progress when phase is 'solve'. */
+      solve?: IterateProgress;
+    }
+  | { type: 'slice' }
+  | { type: 'hair'; groom: Groom; final: boolean; converged: boolean };
+
+/** Hair grown by a run, with what the views and the status show of how it was solved. */
+export interface Groom {
+  strands: StrandArrays;
+  constraints: ConstraintArrays;
+  field: FieldArrays | null;
+  stats: SolveStats;
 }
 
 export interface IterateProgress {

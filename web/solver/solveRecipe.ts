@@ -1,10 +1,11 @@
-// The one recipe for solving a session's field to convergence, shared by the worker's full
-// solve (worker/workerLogic.ts, which drives it a slice at a time between other messages) and
-// the export's and `hairsketch grow`'s growSessionHair (export/growSession.ts, which drives it
-// in one go): the same iterations in the same slices, so both grow bit-identical hair.
+// The one recipe for solving a request's field to convergence, run by requestRunner.ts for every
+// full solve: the worker drives it a slice at a time between other messages, `hairsketch grow`
+// and the exports in one go (growGroom): the same iterations in the same slices, so all grow
+// bit-identical hair.
 import type { GrowthParams } from '../model/growthParams';
 import type { CurveSet } from '../model/hairArrays';
-import type { IterateProgress, SolverEngine } from './engine';
+import type { IterateProgress } from './engine';
+import type { EngineCore } from './engineCore';
 
 /** Scalp avoidance as the app applies it (S4.7): grid points within 1.5 grid steps of the scalp
  *  (inside it too: growth interpolates them just outside), turned along the surface where they
@@ -46,7 +47,7 @@ export interface ConvergeStep {
  *  after every slice that did not converge, and once between the two solves; returns the
  *  converged progress. The driver may stop early by not resuming it. */
 export function* convergeField(
-  engine: SolverEngine,
+  engine: EngineCore,
   curves: CurveSet,
   o: ConvergeOptions,
 ): Generator<ConvergeStep, IterateProgress> {

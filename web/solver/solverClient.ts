@@ -15,9 +15,11 @@
 // a request made before either change is never cached (the worker may have grown it on either).
 // The solved field is copied out of the worker only while `wantField` is set (the field display
 // is on); a cached result without it does not answer a request that wants it.
+
 import { contentKey, hairRequestKey } from '../model/curveSet';
 import type { GrowthParams } from '../model/growthParams';
 import type { CurveSet, HairOptions, ScalpMesh } from '../model/hairArrays';
+import type { HairJob } from './hairRequest';
 import type { FromWorker, SolverErrorKind, ToWorker } from './protocol';
 
 export type InitMessage = Extract<ToWorker, { type: 'init' }>;
@@ -155,16 +157,11 @@ export class SolverClient {
     this.start(phase);
   }
 
-  /** Solves `curves` and grows `growth`; previews and a full solve's first look are grown with
+  /** Runs a job (its curves solved, its growth grown) over the head and grid of the worker's set-up; previews and a full solve's first look are grown with
    *  at most `lightMaxStrands` strands (0: growth.maxStrands alone). The app's solver bridge
    *  (app/solverBridge.ts) decides the cap. */
-  request(
-    curves: CurveSet,
-    growth: GrowthParams,
-    options: HairOptions,
-    mode: SolveMode = 'full',
-    lightMaxStrands = 0,
-  ): void {
+  request(job: HairJob, mode: SolveMode = 'full', lightMaxStrands = 0): void {
+    const { curves, growth, options } = job;
     const key = `${hairRequestKey(curves, growth, options)}|head ${this.headId}:${this.maskKey}`;
     const req: Request = {
       id: this.nextId++,

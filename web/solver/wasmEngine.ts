@@ -1,4 +1,4 @@
-// SolverEngine over the wasm module (wasm-build/binding.cpp). Inputs are copied into wasm
+// The engine's primitive calls (engineCore.ts) over the wasm module (wasm-build/binding.cpp). Inputs are copied into wasm
 // memory for the duration of a call and described to the binding by one C struct per call,
 // written by writeStruct from its protocol.ts layout; results are copied out into fresh typed
 // arrays of the protocol.ts layouts, so they can be transferred and outlive the next call.
@@ -24,7 +24,9 @@ import {
   type SolverEngine,
   SolverError,
 } from './engine';
+import type { EngineCore } from './engineCore';
 import type { SolverName, SolveStats } from './protocol';
+import { engineOver } from './requestRunner';
 import {
   callOut,
   callWith,
@@ -68,7 +70,7 @@ export {
   type RawSolveStats,
 } from './wasmRawSolver';
 
-class WasmEngine implements SolverEngine {
+class WasmEngine implements EngineCore {
   private handle: number;
 
   constructor(private readonly mod: HairSolverModule) {
@@ -389,8 +391,8 @@ export interface HeadStats {
   inUseBytes: number; // bytes malloc has handed out in the module (its whole state)
 }
 
-/** Engine with extras beyond SolverEngine (timings, root count). */
-export type WasmSolverEngine = SolverEngine & {
+/** The wasm module's primitive calls with extras beyond EngineCore (timings, root count). */
+export type WasmEngineCore = EngineCore & {
   setScalpMask(scalp: Uint8Array): void;
   headStats(): HeadStats;
   growMs(): number;
@@ -415,7 +417,13 @@ export interface ScalpAvoidanceResult {
   target: Float64Array;
 }
 
-/** Loads a fresh wasm module and returns an engine over it. */
-export async function loadSolverEngine(opts: LoadOptions = {}): Promise<WasmSolverEngine> {
+/** Loads a fresh wasm module and returns its primitive calls (binding tests, benchmarks that
+ *  time one call). */
+export async function loadWasmEngine(opts: LoadOptions = {}): Promise<WasmEngineCore> {
   return new WasmEngine(await instantiate(opts));
+}
+
+/** Loads a fresh wasm module and returns an engine that runs requests on it. */
+export async function loadSolverEngine(opts: LoadOptions = {}): Promise<SolverEngine> {
+  return engineOver(await loadWasmEngine(opts));
 }

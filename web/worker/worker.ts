@@ -8,13 +8,9 @@ import wasmUrl from '../generated/hairsolver.wasm?url';
 import mtScriptUrl from '../generated/hairsolver-mt.mjs?url';
 import mtWasmUrl from '../generated/hairsolver-mt.wasm?url';
 import mtWorkerUrl from '../generated/hairsolver-mt.worker.js?url';
+import type { SolverEngine } from '../solver/engine';
 import { type FromWorker, resultTransferables, type ToWorker } from '../solver/protocol';
-import {
-  chooseThreads,
-  loadSolverEngine,
-  type ModuleFactory,
-  type WasmSolverEngine,
-} from '../solver/wasmEngine';
+import { chooseThreads, loadSolverEngine, type ModuleFactory } from '../solver/wasmEngine';
 import { DEFAULT_SCHEDULER, WorkerLogic } from './workerLogic';
 
 const scope = self as unknown as {
@@ -49,7 +45,7 @@ scope.onmessage = (ev) => {
   else early.push(ev.data);
 };
 
-async function loadEngine(): Promise<WasmSolverEngine> {
+async function loadEngine(): Promise<SolverEngine> {
   const single = (singleReason: string) =>
     loadSolverEngine({ locateFile: () => wasmUrl, singleReason });
   if (!(self as { crossOriginIsolated?: boolean }).crossOriginIsolated)

@@ -1,37 +1,28 @@
-// The worker's logic as plain functions over a SolverEngine, so the same code runs in the
-// browser worker and under Node tests with the real wasm module.
-//
-// Scheduling (one job at a time, the newest request supersedes the running one):
-//   preview job: a few iterations (one per slice), light growth, one non-final result (none
-//                when a newer request came in meanwhile: the app no longer waits for it);
-//   full job:    a first look after a few iterations (non-final, light growth), then iterate in slices,
-//                yielding to the event loop between slices so a newer request can take over,
-//                and grow the final hair when the field has converged (solver/solveRecipe.ts,
-//                the recipe growSession.ts runs too: with "Avoid scalp" on, the converged field
-//                gives the scalp-avoidance constraints (S4.7) and the field is solved again with
-//                them, warm-started from that field). The converged field's hair is posted light first (its first strands, as
-//                a first look is grown: what a slow GPU draws of the hair first), then in full.
-// A 'scalpMask' message changes the scalp at once (no restart, nothing else rebuilt); a 'grid'
-// message moves the engine to another grid in place (the head stays).
+// The worker's logic over a SolverEngine, so the same code runs in the browser worker and under
+// Node tests with the real wasm module. Each 'solve' message is a request (solver/hairRequest.ts:
+// the head and grid of 'init', 'grid' and 'scalpMask', and the message's job) that the engine
+// runs as a generator (solver/requestRunner.ts); this file only schedules it:
+//   one request at a time, the newest superseding the running one: the run is stepped a slice
+//   at a time, yielding to the event loop between slices, and dropped (not resumed) when a newer
+//   request or another grid came in meanwhile;
+//   'preview': a few iterations, light growth, one non-final result (none when superseded);
+//   'full':    a first look (light), the field solved to convergence, the converged field's
+//              hair light (what a slow GPU draws first), then in full.
+// Its results get their lighting and, for the final hair, the view's vertex attributes here.
+// 'scalpMask' and 'grid' set up the engine at once (no restart; a refusal is reported with id
+// null and the old setup stays).
 import { ResultLighting } from '../lighting/resultLighting';
-import { structuredKey } from '../model/curveSet';
-import type { GrowthParams } from '../model/growthParams';
-import {
-  type ConstraintArrays,
-  ConstraintColour,
-  type GridSpec,
-  type ScalpMesh,
-} from '../model/hairArrays';
-import { engineSettings } from '../model/sessionSchema';
+import type { GridSpec } from '../model/hairArrays';
 import { everyOtherPoint } from '../model/strandSubsample';
 import {
-  type IterateProgress,
+  type Groom,
   type MotionRun,
+  type RunPlan,
   type SolverEngine,
   SolverError,
 } from '../solver/engine';
-import type { FromWorker, SolverErrorKind, SolverName, ToWorker } from '../solver/protocol';
-import { convergeField, solveFraction } from '../solver/solveRecipe';
+import type { HairSetup } from '../solver/hairRequest';
+import type { FromWorker, SolverErrorKind, ToWorker } from '../solver/protocol';
 import { lineAttributes } from '../viewer/strandAttributes';
 
 export type Post = (msg: FromWorker) => void;
@@ -66,38 +57,17 @@ export const DEFAULT_SCHEDULER: SchedulerOptions = {
 const errorMessage = (e: unknown): string => (e instanceof Error ? e.message : String(e));
 const errorKind = (e: unknown): SolverErrorKind => (e instanceof SolverError ? e.kind : 'internal');
 
-/** The growth of a light result (a preview, a first look): the job's growth capped at its
- *  lightMaxStrands (0 or less: no cap of its own; maxStrands 0 means no cap, as in GrowthParams). */
-export function lightGrowth(job: SolveMsg): GrowthParams {
-  const g = job.growth;
-  const cap = job.lightMaxStrands > 0 ? Math.round(job.lightMaxStrands) : 0;
-  if (cap === 0) return g;
-  return { ...g, maxStrands: g.maxStrands > 0 ? Math.min(g.maxStrands, cap) : cap };
-}
-
-/** Whether a light growth of `job` grows fewer strands than its full growth may. */
-function lightenedGrowth(job: SolveMsg): boolean {
-  const light = lightGrowth(job).maxStrands;
-  return light > 0 && (job.growth.maxStrands <= 0 || light < job.growth.maxStrands);
-}
-
 export class WorkerLogic {
-  private initialised = false;
-  /** The head from 'init': the hair's lighting is computed against it (resultLighting). */
-  private head: ScalpMesh | null = null;
-  /** The hair's lighting against that head, on a grid over it and the solver's grid. */
+  /** The head and grid requests run over (from 'init', 'grid' and 'scalpMask'); null before
+   *  'init' succeeded. */
+  private setup: HairSetup | null = null;
+  /** The hair's lighting against the setup's head, on a grid over it and the solver's grid. */
   private lighting: ResultLighting | null = null;
   private latest: SolveMsg | null = null;
   private running = false;
-  /** The omega and solver of 'init' (a 'grid' message keeps them). */
-  private setup: { omega: number; solver: SolverName } | null = null;
   /** Bumped by every grid change: a job started before it is dropped. */
   private gridEpoch = 0;
   private jobEpoch = 0;
-  /** The field the engine holds is the converged full solve of the curves and settings of this
-   *  key (fieldKey) on grid epoch `epoch`: a job asking for the same field (a change of growth or
-   *  detail alone) grows from it without solving again. Null once anything else touched it. */
-  private solved: { key: string; epoch: number; progress: IterateProgress } | null = null;
 
   constructor(
     readonly engine: SolverEngine,
@@ -105,18 +75,22 @@ export class WorkerLogic {
     private readonly opts: SchedulerOptions = DEFAULT_SCHEDULER,
   ) {}
 
+  /** Sets up the engine on `setup` at once (a request without a job). */
+  private setUp(setup: HairSetup): void {
+    for (const _ of this.engine.run(setup, this.plan('once', 0, false))) {
+      // a request without a job yields nothing
+    }
+  }
+
   /** Handles one message; solve jobs run asynchronously. Returns when the job queue is empty. */
   handle(msg: ToWorker): Promise<void> {
     if (msg.type === 'init') {
-      this.solved = null;
       try {
-        this.engine.setGrid(msg.grid, msg.omega, msg.solver);
-        this.setup = { omega: msg.omega, solver: msg.solver };
-        this.engine.setScalp(msg.scalp);
-        this.engine.setBody(msg.scalp.body ?? null);
-        this.head = msg.scalp;
+        const setup = { grid: msg.grid, omega: msg.omega, solver: msg.solver, head: msg.scalp };
+        this.setup = null;
+        this.setUp(setup);
+        this.setup = setup;
         this.lighting = new ResultLighting(msg.scalp, msg.grid);
-        this.initialised = true;
         const n = msg.grid.dims[0] * msg.grid.dims[1] * msg.grid.dims[2];
         this.post({ type: 'ready', gridPoints: n, roots: 0 });
       } catch (e) {
@@ -141,7 +115,7 @@ export class WorkerLogic {
       this.handleMotion(msg);
       return Promise.resolve();
     }
-    if (!this.initialised) {
+    if (!this.setup) {
       this.post({
         type: 'error',
         id: msg.id,
@@ -176,7 +150,7 @@ export class WorkerLogic {
         this.motion?.dispose();
         this.motion = null;
         this.motionSpare = [];
-        if (!this.initialised) fail('the solver is not initialised');
+        if (!this.setup) fail('the solver is not initialised');
         else {
           this.motion = this.engine.startMotion(msg.strands, {
             motion: msg.motion,
@@ -199,22 +173,24 @@ export class WorkerLogic {
     }
   }
 
-  /** A new scalp on the init head: the next growth samples its roots over it (a job running now
-   *  grows its remaining results from it too; the app asks again after a scalp edit). The
+  /** A new scalp on the setup's head: the next growth samples its roots over it (a job running
+   *  now grows its remaining results from it too; the app asks again after a scalp edit). The
    *  lighting head keeps its triangles. A refused mask is reported and the old one stays. */
   private setScalpMask(scalp: Uint8Array): void {
-    this.solved = null; // which curve points lie off the scalp (and so the constraints) may change
     const fail = (message: string, kind: SolverErrorKind): void => {
       this.post({ type: 'error', id: null, message: `Scalp mask: ${message}`, kind });
     };
-    if (!this.initialised || !this.head) fail('the solver is not initialised', 'not_ready');
-    else
-      try {
-        this.engine.setScalpMask(scalp);
-        this.head = { ...this.head, scalp };
-      } catch (e) {
-        fail(errorMessage(e), errorKind(e));
-      }
+    if (!this.setup) {
+      fail('the solver is not initialised', 'not_ready');
+      return;
+    }
+    const setup = { ...this.setup, head: { ...this.setup.head, scalp } };
+    try {
+      this.setUp(setup);
+      this.setup = setup;
+    } catch (e) {
+      fail(errorMessage(e), errorKind(e));
+    }
   }
 
   /** Another grid for the same head: the engine is set up on it in place and the job running
@@ -222,8 +198,7 @@ export class WorkerLogic {
    *  its grid still holds the new one (ResultLighting.forGrid). */
   private setGrid(grid: GridSpec): void {
     this.gridEpoch++;
-    this.solved = null;
-    if (!this.initialised || !this.setup) {
+    if (!this.setup) {
       this.post({
         type: 'error',
         id: null,
@@ -232,8 +207,10 @@ export class WorkerLogic {
       });
       return;
     }
+    const setup = { ...this.setup, grid };
     try {
-      this.engine.setGrid(grid, this.setup.omega, this.setup.solver);
+      this.setUp(setup);
+      this.setup = setup;
       this.lighting = this.lighting?.forGrid(grid) ?? null;
     } catch (e) {
       this.post({
@@ -269,138 +246,62 @@ export class WorkerLogic {
     return this.latest !== null || this.jobEpoch !== this.gridEpoch;
   }
 
-  private async runJob(job: SolveMsg): Promise<void> {
+  private plan(mode: RunPlan['mode'], lightMaxStrands: number, wantField: boolean): RunPlan {
     const o = this.opts;
-    const t0 = o.now();
-    this.post({ type: 'progress', id: job.id, phase: 'constraints', fraction: 0 });
-    this.engine.setDetail(job.options.detail);
-    this.engine.setSettings(engineSettings(job.options));
-    const key = fieldKey(job);
-    const kept = this.solved;
-    if (job.mode !== 'preview' && kept && kept.key === key && kept.epoch === this.jobEpoch) {
-      // the same field as the last full solve (only growth or detail changed): grow from it
-      this.emit(job, job.growth, kept.progress, true, t0);
-      return;
-    }
-    this.solved = null;
-    // a full solve's first look runs a few warm iterations and forgetWarmStart then rebuilds the
-    // preconditioner from the penalties alone: its incremental update would be thrown away
-    if (job.mode !== 'preview') this.engine.deferPreconditionerUpdate();
-    this.engine.setCurves(job.curves);
-    if (job.mode === 'preview') {
-      // one iteration at a time: when the pen lifts meanwhile, its full solve need not wait
-      // for the rest of this preview, nor for its growth
-      let p = this.engine.iterate(1, o.tolerance);
-      for (let k = 1; ; k++) {
-        await o.yieldNow();
-        if (this.superseded()) return;
-        if (k >= o.previewIterations || p.converged) break;
-        p = this.engine.iterate(1, o.tolerance);
-      }
-      this.emit(job, lightGrowth(job), p, false, t0);
-      return;
-    }
-    this.post({ type: 'progress', id: job.id, phase: 'solve', fraction: 0.05 });
-    let p = this.engine.iterate(o.firstLookIterations, o.tolerance);
-    // A first look from the warm start (the last preview of nearly the same curves), grown light
-    // so it reaches the screen fast. The final field is then solved from zero: it depends on the
-    // session alone, so a share link, an export or the command line grow bit-identical hair.
-    if (!p.converged) this.emit(job, lightGrowth(job), p, false, t0);
-    // then the recipe growSession.ts runs too (solver/solveRecipe.ts), a slice between messages
-    let from: IterateProgress | undefined = p;
-    if (this.engine.forgetWarmStart()) {
-      await o.yieldNow();
-      if (this.superseded()) return;
-      from = undefined;
-    }
-    const steps = convergeField(this.engine, job.curves, {
+    return {
+      mode,
       tolerance: o.tolerance,
       slice: o.sliceIterations,
-      avoidFor: job.options.avoidScalp ? job.growth : null,
-      from,
-    });
-    let step = steps.next();
-    while (!step.done) {
-      const { progress, stage } = step.value;
-      const fraction =
-        stage === 'avoidance' ? 0.95 : solveFraction(progress.errorEstimate, o.tolerance);
-      this.post({
-        type: 'progress',
-        id: job.id,
-        phase: 'solve',
-        fraction: Math.min(0.95, Math.max(0.05, fraction)),
-      });
-      await o.yieldNow();
-      if (this.superseded()) return;
-      step = steps.next();
-    }
-    p = step.value;
-    this.solved = { key, epoch: this.jobEpoch, progress: p };
-    if (o.convergedSample && lightenedGrowth(job)) {
-      this.emit(job, lightGrowth(job), p, false, t0, true);
-      await o.yieldNow();
-      if (this.superseded()) return;
-    }
-    this.emit(job, job.growth, p, true, t0);
-  }
-
-  /** The engine's constraints with their display colours (4, "extra", where a colour is missing,
-   *  so the arrays always have the same length). */
-  private constraintsWithColours(): ConstraintArrays {
-    const c = this.engine.constraints();
-    let colour = this.engine.constraintColours();
-    if (colour.length !== c.index.length) {
-      const fixed = new Uint8Array(c.index.length).fill(ConstraintColour.extra);
-      fixed.set(colour.subarray(0, Math.min(colour.length, fixed.length)));
-      colour = fixed;
-    }
-    return { ...c, colour };
-  }
-
-  private emit(
-    job: SolveMsg,
-    growth: GrowthParams,
-    p: IterateProgress,
-    final: boolean,
-    t0: number,
-    converged = final,
-  ): void {
-    this.post({ type: 'progress', id: job.id, phase: 'grow', fraction: 0.95 });
-    const g0 = this.opts.now();
-    const grown = this.engine.grow(growth);
-    // a stroke's preview is drawn and lit with every other point: half the work on both sides
-    const strands = job.mode === 'preview' ? everyOtherPoint(grown) : grown;
-    const growMs = this.opts.now() - g0;
-    const stats = {
-      ...this.engine.stats(),
-      iterations: p.iterations,
-      errorEstimate: p.converged ? Math.min(p.errorEstimate, this.opts.tolerance) : p.errorEstimate,
-      solveMs: g0 - t0,
-      growMs,
-      heapBytes: this.engine.heapBytes(),
+      firstLook: o.firstLookIterations,
+      previewIterations: o.previewIterations,
+      lightMaxStrands,
+      convergedSample: o.convergedSample,
+      wantField,
+      now: o.now,
     };
+  }
+
+  /** Runs one request a slice at a time, posting its progress and results. */
+  private async runJob(job: SolveMsg): Promise<void> {
+    const setup = this.setup;
+    if (!setup) return;
+    const request = {
+      ...setup,
+      job: { curves: job.curves, options: job.options, growth: job.growth },
+    };
+    for (const step of this.engine.run(
+      request,
+      this.plan(job.mode, job.lightMaxStrands, job.wantField),
+    )) {
+      if (step.type === 'progress')
+        this.post({ type: 'progress', id: job.id, phase: step.phase, fraction: step.fraction });
+      else if (step.type === 'slice') {
+        await this.opts.yieldNow();
+        if (this.superseded()) return;
+      } else this.postResult(job, step.groom, step.final, step.converged);
+    }
+  }
+
+  /** Posts hair grown for `job`, lit against the head (a preview's with every other point: half
+   *  the work on both sides), with the view's vertex attributes when final. */
+  private postResult(job: SolveMsg, groom: Groom, final: boolean, converged: boolean): void {
+    const strands = job.mode === 'preview' ? everyOtherPoint(groom.strands) : groom.strands;
     const lighting = this.lighting?.of(strands, this.opts.now, final) ?? null;
     this.post({
       type: 'result',
       id: job.id,
       strands,
-      constraints: this.constraintsWithColours(),
-      field: job.wantField ? this.engine.field() : null,
+      constraints: groom.constraints,
+      field: groom.field,
       lighting,
       // the full hair's vertex attributes are built here, not on the page (it would stall there
       // for ~60 ms at 30K strands); lighter hair is quicker to build there than to send
       attributes: final
         ? lineAttributes(strands.points, strands.strandStart, 0, lighting?.strand ?? null)
         : null,
-      stats,
+      stats: groom.stats,
       final,
       converged,
     });
   }
-}
-
-/** What a job's field depends on: its curves (every field of the set) and its settings (natural
- *  fall's prior, scalp avoidance, sections); growth and detail are not part of it. */
-function fieldKey(job: SolveMsg): string {
-  return structuredKey({ curves: job.curves, settings: engineSettings(job.options) });
 }
