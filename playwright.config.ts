@@ -20,7 +20,8 @@ export default defineConfig({
   // a few long tests (strokeSays) would otherwise keep one worker busy long after the other ends.
   fullyParallel: true,
   retries: 0,
-  reporter: [['list']],
+  // the list, and where the CPU went, test by test (build/test-logs/e2e-cpu.tsv)
+  reporter: [['list'], ['./tests/support/cpuReporter.ts']],
   use: {
     baseURL: `http://127.0.0.1:${port}`,
     viewport: { width: 1000, height: 750 },
