@@ -30,8 +30,9 @@ export interface GrownHair {
   iterations: number;
 }
 
-/** Grows `session`'s full hair on `engine`, which must be fresh (loadSolverEngine: nothing to
- *  warm-start the solve from). The caller disposes of it. */
+/** Grows `session`'s full hair on `engine` (fresh, or used before: the run forgets the warm
+ *  start of earlier requests, and grows from the field it holds when only growth or detail
+ *  changed). The caller disposes of it. */
 export function growSessionHair(
   engine: SolverEngine,
   session: SessionState,
