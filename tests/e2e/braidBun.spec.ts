@@ -3,7 +3,7 @@
 // takes them away; Mirror doubles a braid; a loop that leaves the head makes nothing and says why.
 // Waits on the status attributes and the session, never on fixed sleeps.
 import { expect, type Page, test } from '@playwright/test';
-import { settled, shoot, status, strokeFromScalp } from './helpers';
+import { hairOf, settled, shoot, status, strokeFromScalp } from './helpers';
 
 /** Of the hair shown, the share of the strands rooted where `side` says that curve `curve`'s tie
  *  laid (sections: a tie takes its whole section). */
@@ -143,18 +143,17 @@ test("a bun's hair has no flyaways: a new session's flyaways leave its coil as i
   await curveCount(page, 1);
   const withFlyaways = await settled(page, empty.rev);
   // per strand: whether the bun holds it, and its points
-  const strands = () =>
-    page.evaluate(() => {
-      const h = window.hairsketch.strands();
-      const out: { bun: boolean; points: number[] }[] = [];
-      if (!h) return out;
-      for (let s = 0; s + 1 < h.strandStart.length; s++)
-        out.push({
-          bun: h.tailCurves[s] === 0,
-          points: h.points.slice(3 * h.strandStart[s], 3 * h.strandStart[s + 1]),
-        });
-      return out;
-    });
+  const strands = async () => {
+    const h = await hairOf(page);
+    const out: { bun: boolean; points: Float32Array }[] = [];
+    if (!h) return out;
+    for (let s = 0; s + 1 < h.strandStart.length; s++)
+      out.push({
+        bun: h.tailCurves[s] === 0,
+        points: h.points.slice(3 * h.strandStart[s], 3 * h.strandStart[s + 1]),
+      });
+    return out;
+  };
   const on = await strands();
   await page.getByRole('button', { name: 'Detail' }).click();
   await page
@@ -167,7 +166,8 @@ test("a bun's hair has no flyaways: a new session's flyaways leave its coil as i
   let bunStrands = 0;
   let bunMoved = 0;
   on.forEach((s, i) => {
-    const same = JSON.stringify(s.points) === JSON.stringify(off[i].points);
+    const same =
+      s.points.length === off[i].points.length && s.points.every((v, k) => v === off[i].points[k]);
     if (!s.bun) return;
     bunStrands++;
     if (!same) bunMoved++;

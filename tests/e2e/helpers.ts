@@ -150,3 +150,29 @@ export async function shoot(
     await page.getByTestId('viewport').screenshot({ path: `${dir}/${name}-${view}.png` });
   }
 }
+
+/** The hair drawn, taken out of the page as base64 (window.hairsketch.strandsPacked): the same
+ *  arrays as strands() gives, typed. Taking 300,000 numbers as a plain array cost the test
+ *  runner about a second of CPU per call in Playwright's protocol checks. */
+export interface PageHair {
+  points: Float32Array;
+  strandStart: Uint32Array;
+  tailCurves: Int32Array;
+  rootSections: Uint8Array;
+}
+
+export async function hairOf(page: Page): Promise<PageHair | null> {
+  const h = await page.evaluate(() => window.hairsketch.strandsPacked());
+  if (!h) return null;
+  const bytes = (b64: string) => {
+    const b = Buffer.from(b64, 'base64');
+    // a copy on its own buffer, aligned for the typed views
+    return new Uint8Array(b).buffer;
+  };
+  return {
+    points: new Float32Array(bytes(h.points)),
+    strandStart: new Uint32Array(bytes(h.strandStart)),
+    tailCurves: new Int32Array(bytes(h.tailCurves)),
+    rootSections: new Uint8Array(bytes(h.rootSections)),
+  };
+}

@@ -5,14 +5,10 @@
 // from the strands' roots against the side of the parting they grow on (not from the app's own
 // sections), and Undo, Redo and the link keep the hair. Waits on the status attributes.
 import { expect, type Page, test } from '@playwright/test';
-import { settled, shoot, status } from './helpers';
+import { hairOf, type PageHair, settled, shoot, status } from './helpers';
 
 type V3 = [number, number, number];
-interface Hair {
-  points: number[];
-  strandStart: number[];
-  tailCurves: number[];
-}
+type Hair = PageHair;
 
 async function drag(page: Page, pts: { x: number; y: number }[]): Promise<void> {
   await page.mouse.move(pts[0].x, pts[0].y);
@@ -39,7 +35,7 @@ const curveCount = (page: Page, n: number) =>
     n,
   );
 
-const hair = (page: Page) => page.evaluate(() => window.hairsketch.strands() as Hair | null);
+const hair = (page: Page) => hairOf(page);
 
 /** Of the strands whose root passes `side`, the share tie `curve` laid. */
 function share(h: Hair, curve: number, side: (r: V3) => boolean): number {

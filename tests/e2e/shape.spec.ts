@@ -16,26 +16,31 @@ import {
   standOffNear,
   widthAtEars,
 } from '../support/shapeMetrics';
-import { dragThrough, scalpAt, settled, shoot, status, strokeFromScalp } from './helpers';
+import {
+  dragThrough,
+  hairOf,
+  type PageHair,
+  scalpAt,
+  settled,
+  shoot,
+  status,
+  strokeFromScalp,
+} from './helpers';
 
 test.use({ viewport: { width: 1280, height: 800 } });
 
 type V3 = [number, number, number];
-interface Strands {
-  points: number[];
-  strandStart: number[];
-}
+type Strands = PageHair;
 interface Curve {
   type: string;
   points: V3[];
 }
 
-const strands = (page: Page) =>
-  page.evaluate(() => {
-    const s = window.hairsketch.strands();
-    if (!s) throw new Error('no hair');
-    return { points: Array.from(s.points), strandStart: Array.from(s.strandStart) };
-  }) as Promise<Strands>;
+const strands = async (page: Page): Promise<Strands> => {
+  const s = await hairOf(page);
+  if (!s) throw new Error('no hair');
+  return s;
+};
 
 const curves = async (page: Page) =>
   ((await page.evaluate(() => window.hairsketch.session())) as { curves: Curve[] }).curves;

@@ -3,7 +3,14 @@
 // forehead covers it, a ponytail spine drawn from the side hangs plumb seen from behind. Every
 // figure is printed. Waits on the status attributes, never on fixed sleeps.
 import { expect, type Page, test } from '@playwright/test';
-import { dragThrough as drag, scalpAt, settled, shoot, status } from './helpers';
+import {
+  dragThrough as drag,
+  hairOf,
+  scalpAt,
+  settled,
+  shoot,
+  status,
+} from './helpers';
 
 type V3 = [number, number, number];
 interface Curve {
@@ -11,10 +18,6 @@ interface Curve {
   type: string;
   points: V3[];
   extend?: boolean;
-}
-interface Strands {
-  points: number[];
-  strandStart: number[];
 }
 
 const session = (page: Page) =>
@@ -43,8 +46,7 @@ async function expectOutsideHead(page: Page): Promise<void> {
   expect(await page.evaluate(() => window.hairsketch.segmentsInsideHead(0.01).inside)).toBe(0);
 }
 
-const strandsOf = (page: Page) =>
-  page.evaluate(() => window.hairsketch.strands() as Strands | null);
+const strandsOf = (page: Page) => hairOf(page);
 
 test('a stroke down the front ends its hair at its end; the hair behind hangs', async ({
   page,
@@ -225,9 +227,7 @@ async function mirrorPigtails(page: Page) {
 // Hair reaches a tail drawn from the scalp as a thin sheet; the growth step re-seats it round
 // the spine (gathered_tail.hpp), and hair hanging beside the tail joins it.
 async function expectRoundTails(page: Page, tails: Awaited<ReturnType<typeof mirrorPigtails>>) {
-  const hair = (await page.evaluate(() => window.hairsketch.strands())) as Strands & {
-    tailCurves: number[];
-  };
+  const hair = await hairOf(page);
   if (!hair) throw new Error('no hair');
   for (const [index, tail] of tails.entries()) {
     // the strands of this tail (the other may hang within a few radii of it) crossing the plane
@@ -306,9 +306,8 @@ test('pigtails made with Mirror leave no bare stripe behind, and each gathers ro
   await test.step('a gathered pigtail has a round cross-section of its radius', () =>
     expectRoundTails(page, tails));
   await test.step('each pigtail gathers its own half of the head (sections: the nearer tie)', async () => {
-    const h = (await page.evaluate(() => window.hairsketch.strands())) as Strands & {
-      tailCurves: number[];
-    };
+    const h = await hairOf(page);
+    if (!h) throw new Error('no hair');
     const side = (s: number) => Math.sign(h.points[3 * h.strandStart[s]]);
     for (const [i, tail] of tails.entries()) {
       const own = Math.sign(tail.points[tail.points.length - 1][0]);

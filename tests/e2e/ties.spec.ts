@@ -3,14 +3,10 @@
 // strands' roots against the side of the drawn parting they grow on, not from the app's own
 // sections; each tail's end against its stroke's end. Waits on the status attributes.
 import { expect, type Page, test } from '@playwright/test';
-import { dragThrough, scalpAt, settled, shoot, status } from './helpers';
+import { dragThrough, hairOf, type PageHair, scalpAt, settled, shoot, status } from './helpers';
 
 type V3 = [number, number, number];
-interface Hair {
-  points: number[];
-  strandStart: number[];
-  tailCurves: number[];
-}
+type Hair = PageHair;
 
 test.use({ viewport: { width: 1280, height: 800 } });
 
@@ -43,7 +39,11 @@ async function view(page: Page, key: string, name: string) {
   await page.evaluate(() => window.hairsketch.idle());
 }
 
-const hair = async (page: Page) => (await page.evaluate(() => window.hairsketch.strands())) as Hair;
+const hair = async (page: Page): Promise<Hair> => {
+  const h = await hairOf(page);
+  if (!h) throw new Error('no hair');
+  return h;
+};
 
 function roots(h: Hair): V3[] {
   const out: V3[] = [];

@@ -103,6 +103,15 @@ export interface HairsketchTestApi {
      *  the head's pose. */
     overlaysPosed: boolean;
   };
+  /** strands() with each array's bytes as base64 (little-endian Float32, Uint32, Int32 and Uint8
+   *  arrays in that order), for scripts that take the whole hair out of the page: a plain array
+   *  of 300,000 numbers costs the driver seconds to check and parse, a string almost nothing. */
+  strandsPacked(): {
+    points: string;
+    strandStart: string;
+    tailCurves: string;
+    rootSections: string;
+  } | null;
   strands(): {
     points: number[];
     strandStart: number[];
@@ -336,6 +345,17 @@ export function installTestApi(app: TestApiParts): void {
         ),
       };
     },
+    strandsPacked() {
+      const s = app.motion?.drawn ?? hair.strands;
+      return s
+        ? {
+            points: base64Of(s.points),
+            strandStart: base64Of(s.strandStart),
+            tailCurves: base64Of(s.tailCurves ?? new Int32Array()),
+            rootSections: base64Of(s.rootSections ?? new Uint8Array()),
+          }
+        : null;
+    },
     strands() {
       const s = app.motion?.drawn ?? hair.strands;
       return s
@@ -457,4 +477,13 @@ function base64(bytes: Uint8Array): string {
   for (let i = 0; i < bytes.length; i += 0x8000)
     s += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
   return btoa(s);
+}
+
+/** A typed array's bytes as base64 (strandsPacked). */
+function base64Of(a: ArrayBufferView): string {
+  const bytes = new Uint8Array(a.buffer, a.byteOffset, a.byteLength);
+  let bin = '';
+  for (let i = 0; i < bytes.length; i += 0x8000)
+    bin += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
+  return btoa(bin);
 }
