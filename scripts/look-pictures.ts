@@ -30,7 +30,8 @@ const withLook = (s: SessionState, look: Partial<HairLook>): SessionState => ({
 const styles: Record<string, () => SessionState> = {
   bob: () => preset('bob'),
   long: () => preset('long'),
-  braid: () => preset('braid'),
+  // round plaits as a braid drawn in a new session has them
+  braid: () => ({ ...preset('braid'), roundPlaits: true }),
   bun: () => preset('bun'),
   curly: () => preset('curly'),
   coily: () => {

@@ -9,18 +9,19 @@
 namespace hairsketch {
 
 enum EngineSetting : size_t {
-  kSettingAvoidScalp,  // read by the worker (scalp avoidance), not by the engine
-  kSettingFall,        // natural fall (HairEngine::setFall)
-  kSettingSections,    // ties may gather their whole scalp section (HairEngine::setSections)
-  kSettingFinish,      // finished edges: ends spread near a cut line (HairEngine::setFinish)
-  kSettingBust,        // hair rests on the body (HairEngine::setBust, setBody)
-  kSettingShape,       // the shape rules (HairEngine::setShape, hair_fall.hpp ShapeRules)
-  kSettingVolume,      // their lift at the roots, world units (HairEngine::setShape)
-  kSettingTies,        // ties from any hand (HairEngine::setTies)
-  kSettingHairline,    // a soft hairline (HairEngine::setHairline, soft_hairline.hpp)
-  kSettingCurlVolume,  // curly hair spreads towards its ends (HairEngine::setCurlVolume)
-  kSettingNape,        // a low nape: read by the app's head (the scalp mask), not by the engine
-  kSettingCoilVolume,  // coily hair stands out from the head (HairEngine::setCoilVolume)
+  kSettingAvoidScalp,   // read by the worker (scalp avoidance), not by the engine
+  kSettingFall,         // natural fall (HairEngine::setFall)
+  kSettingSections,     // ties may gather their whole scalp section (HairEngine::setSections)
+  kSettingFinish,       // finished edges: ends spread near a cut line (HairEngine::setFinish)
+  kSettingBust,         // hair rests on the body (HairEngine::setBust, setBody)
+  kSettingShape,        // the shape rules (HairEngine::setShape, hair_fall.hpp ShapeRules)
+  kSettingVolume,       // their lift at the roots, world units (HairEngine::setShape)
+  kSettingTies,         // ties from any hand (HairEngine::setTies)
+  kSettingHairline,     // a soft hairline (HairEngine::setHairline, soft_hairline.hpp)
+  kSettingCurlVolume,   // curly hair spreads towards its ends (HairEngine::setCurlVolume)
+  kSettingNape,         // a low nape: read by the app's head (the scalp mask), not by the engine
+  kSettingCoilVolume,   // coily hair stands out from the head (HairEngine::setCoilVolume)
+  kSettingRoundPlaits,  // a braid's sections are round across their own path (setRoundPlaits)
   kEngineSettingCount
 };
 

@@ -59,6 +59,7 @@ namespace hairsketch {
 constexpr float kTailCapture = 2.5f;      // x r_1: how far from the axis a crossing is taken in
 constexpr float kBunCapture = 5.0f;       // the same for a bun (x its circles' 0.6 R: 3 R)
 constexpr float kBraidBundle = 1 / 4.5f;  // a braid bundle's radius, x the braid's width
+constexpr float kPlaitStretchMax = 2.5f;  // round plaits: the most a bundle's slice is widened
 constexpr float kBraidLoose = 0.7f;       // the loose tail's radius, x the width at the tie
 constexpr float kTailBlend = 0.3f;        // world units (3 cm): from the crossing to the seat
 constexpr float kBraidTie = 0.1f;         // world units: the bundles meet into the loose tail
@@ -95,6 +96,9 @@ struct GatheredTail {
   // The session's `ties` (HairEngine::ties): lay the tie as "Ties from any hand" below
   // (gathered_tail_ties.cpp). Off: laid exactly as before (saved sessions keep their hair).
   bool ties = false;
+  // The session's `roundPlaits` (HairEngine::roundPlaits): a braid's sections are round across
+  // their own path (gathered_tail_shapes.cpp plaitStretch). Off: as before.
+  bool roundPlaits = false;
 };
 
 // The tail of a gathered ponytail: spine = the curve's points from the one nearest C1's centre

@@ -122,6 +122,12 @@ struct SpineFrames {
 
 // Tail shapes (gathered_tail_shapes.cpp).
 
+// Round plaits (T.roundPlaits): how much longer than round a braid bundle's section is, across
+// the spine, in the frame's two directions, at phase t of a bundle whose centre swings
+// A sin t, B sin 2t over `period`: a slice across the spine cuts a round bundle running at slope
+// m to it sqrt(1 + m^2) long (at most kPlaitStretchMax). (1, 1) with round plaits off.
+Eigen::Vector2f plaitStretch(const GatheredTail& T, float A, float B, float t, float period);
+
 // A seat's offset in the spine's frame at arc length S (as layAlongSpine lays it).
 Eigen::Vector2f seatOffset(const GatheredTail& T, float S, float rad, float theta, float rho,
                            int bundle);

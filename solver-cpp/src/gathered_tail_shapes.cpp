@@ -104,6 +104,14 @@ float braidOpen(const GatheredTail& T, float S, float period) {
 
 }  // namespace
 
+Eigen::Vector2f plaitStretch(const GatheredTail& T, float A, float B, float t, float period) {
+  if (!T.roundPlaits || !(period > 0)) return Eigen::Vector2f(1, 1);
+  const float mx = A * (kTwoPi / period) * std::cos(t);
+  const float my = B * (2 * kTwoPi / period) * std::cos(2 * t);
+  return Eigen::Vector2f(std::min(kPlaitStretchMax, std::sqrt(1 + mx * mx)),
+                         std::min(kPlaitStretchMax, std::sqrt(1 + my * my)));
+}
+
 Eigen::Vector2f seatOffset(const GatheredTail& T, float S, float rad, float theta, float rho,
                            int bundle) {
   const float ct = std::cos(theta), st = std::sin(theta);
@@ -117,8 +125,11 @@ Eigen::Vector2f seatOffset(const GatheredTail& T, float S, float rad, float thet
     A *= open;
     B *= open;
   }
-  const float t = kTwoPi * (S / float(6.0 / T.braid.crossings) + float(bundle) / 3);
-  return Eigen::Vector2f(A * std::sin(t) + rb * rho * ct, B * std::sin(2 * t) + rb * rho * st);
+  const float period = float(6.0 / T.braid.crossings);
+  const float t = kTwoPi * (S / period + float(bundle) / 3);
+  const Eigen::Vector2f k = plaitStretch(T, A, B, t, period);
+  return Eigen::Vector2f(A * std::sin(t) + rb * rho * ct * k.x(),
+                         B * std::sin(2 * t) + rb * rho * st * k.y());
 }
 
 void layAlongSpine(const GatheredTail& T, const SpineFrames& F, const Capture& cap, float theta,
@@ -163,8 +174,9 @@ void layAlongSpine(const GatheredTail& T, const SpineFrames& F, const Capture& c
         B *= open;
       }
       const float t = kTwoPi * (S / period + float(bundle) / 3);
-      x = A * std::sin(t) + rb * rho * ct;
-      y = B * std::sin(2 * t) + rb * rho * st;
+      const Eigen::Vector2f k = plaitStretch(T, A, B, t, period);
+      x = A * std::sin(t) + rb * rho * ct * k.x();
+      y = B * std::sin(2 * t) + rb * rho * st * k.y();
       if (S > Lb) {  // the tie, then the loose tail
         float loose = kBraidLoose * width(Lb) * rho;
         const float w = smoothstepf((S - Lb) / kBraidTie);

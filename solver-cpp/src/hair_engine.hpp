@@ -95,6 +95,10 @@ class HairEngine {
   // Coily hair stands out from the head (strand_detail.hpp "Coil volume"; with curl volume).
   void setCoilVolume(bool on) { coilVolume_ = on; }
   bool coilVolume() const { return coilVolume_; }
+  // Round plaits (gathered_tail_shapes.cpp plaitStretch): a braid's three sections keep a round
+  // section across their own path where they run aslant. Off: as in sessions made before.
+  void setRoundPlaits(bool on) { roundPlaits_ = on; }
+  bool roundPlaits() const { return roundPlaits_; }
   // Finished edges: every strand not laid into a tie ends up to kEndSpread short of where it
   // grew to (strand_detail.hpp applyDetail's endSpread), seeded per strand; lone roots are not
   // grown (scalp_roots.hpp dropLoneRoots); with fall the prior opens the face (hair_fall.hpp);
@@ -225,6 +229,7 @@ class HairEngine {
   bool hairline_ = false;
   bool curlVolume_ = false;
   bool coilVolume_ = false;
+  bool roundPlaits_ = false;
   bool finish_ = false;
   ShapeRules shape_;
   std::vector<std::vector<Eigen::Vector3f>> partings_;  // the dividing curves of the last setCurves

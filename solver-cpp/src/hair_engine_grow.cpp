@@ -146,6 +146,7 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
     for (GatheredTail& t : tails) {
       t.section = t.section && sections_;
       t.ties = ties_;
+      t.roundPlaits = roundPlaits_;
       bySection |= t.section;
     }
     if (bySection) {

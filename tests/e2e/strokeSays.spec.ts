@@ -3,14 +3,7 @@
 // forehead covers it, a ponytail spine drawn from the side hangs plumb seen from behind. Every
 // figure is printed. Waits on the status attributes, never on fixed sleeps.
 import { expect, type Page, test } from '@playwright/test';
-import {
-  dragThrough as drag,
-  hairOf,
-  scalpAt,
-  settled,
-  shoot,
-  status,
-} from './helpers';
+import { dragThrough as drag, hairOf, scalpAt, settled, shoot, status } from './helpers';
 
 type V3 = [number, number, number];
 interface Curve {

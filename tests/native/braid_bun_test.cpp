@@ -16,6 +16,7 @@
 
 #include "curve_params.hpp"
 #include "gathered_tail.hpp"
+#include "gathered_tail_internal.hpp"
 #include "hand_strands.hpp"
 
 // Each test file is a namespace of its own: the build compiles several files as one (unity).
@@ -224,6 +225,47 @@ TEST(Bun, TheSeedDecides) {
   gatherTails({t}, b.roots, b.key, 7, kStep, 255, b.strands);
   gatherTails({t}, c.roots, c.key, 8, kStep, 255, c.strands);
   EXPECT_EQ(a.strands.points, b.strands.points);
+  EXPECT_NE(a.strands.points, c.strands.points);
+}
+
+// Round plaits: where a bundle runs aslant, a slice across the spine cuts its round section
+// sqrt(1 + m^2) long (m its centre's slope against the spine's arc length). Hand values for the
+// test braid at S = 1 (P = 1, bundle 0: phase 2 pi, its centre crossing the spine at its
+// steepest): width 0.6 (1 - 0.4 S / 4) = 0.54, bundle radius rb = 0.54 / 4.5 = 0.12, swing
+// A = 0.27 - 0.12 = 0.15 across and B = 0.12 (1.5 - 0.8 x 0.5) = 0.132 in depth, slopes
+// A 2 pi = 0.94248 and B 4 pi = 1.65876.
+TEST(Braid, RoundPlaitsKeepEachBundleRoundAcrossItsOwnPath) {
+  GatheredTail off = braid();
+  GatheredTail on = braid();
+  on.roundPlaits = true;
+  const double rb = 0.12, kx = std::sqrt(1 + 0.94248 * 0.94248),
+               ky = std::sqrt(1 + 1.65876 * 1.65876);
+  const float rad = 0.1f;
+  for (const float rho : {0.5f, 1.f}) {
+    // across the spine (theta 0) and in depth (theta pi / 2); the centre is at ~0 here
+    const Eigen::Vector2f x0 = gathered_tail::seatOffset(off, 1.f, rad, 0.f, rho, 0);
+    const Eigen::Vector2f x1 = gathered_tail::seatOffset(on, 1.f, rad, 0.f, rho, 0);
+    EXPECT_NEAR(x0.x(), rb * rho, 1e-5);
+    EXPECT_NEAR(x1.x(), rb * rho * kx, 1e-5);
+    const float half = 0.5f * float(kPi);
+    const Eigen::Vector2f y0 = gathered_tail::seatOffset(off, 1.f, rad, half, rho, 0);
+    const Eigen::Vector2f y1 = gathered_tail::seatOffset(on, 1.f, rad, half, rho, 0);
+    EXPECT_NEAR(y0.y(), rb * rho, 1e-5);
+    EXPECT_NEAR(y1.y(), rb * rho * ky, 1e-5);
+  }
+  // where the bundle turns (phase 2 pi + pi / 2: its centre at the braid's edge, not moving
+  // across) a slice is round across; in depth it runs at B 4 pi |cos(pi)| there, as steep
+  const Eigen::Vector2f edge = gathered_tail::seatOffset(on, 1.25f, rad, 0.f, 1.f, 0);
+  const double W = 0.6 * (1 - 0.4 * 1.25 / 4), A = W / 2 - W / 4.5;
+  EXPECT_NEAR(edge.x(), A + W / 4.5, 1e-5);
+  // the same seed lays the same strands each time; round plaits lay the same strands wider
+  Hair a = sheet(), b = sheet(), c = sheet();
+  gatherTails({off}, a.roots, a.key, 7, kStep, 255, a.strands);
+  GatheredTail off2 = braid();
+  gatherTails({off2}, b.roots, b.key, 7, kStep, 255, b.strands);
+  gatherTails({on}, c.roots, c.key, 7, kStep, 255, c.strands);
+  EXPECT_EQ(a.strands.points, b.strands.points);
+  EXPECT_EQ(a.strands.strandStart, c.strands.strandStart);
   EXPECT_NE(a.strands.points, c.strands.points);
 }
 

@@ -24,6 +24,7 @@ function sample(): SessionState {
     curlVolume: _curlVolume,
     nape: _nape,
     coilVolume: _coilVolume,
+    roundPlaits: _roundPlaits,
     ...s
   } = emptySession('50k');
   return {

@@ -103,8 +103,10 @@ describe('every preset session passes the reader and round-trips', () => {
       curlVolume,
       nape,
       coilVolume,
+      roundPlaits,
       ...beforeFall
     } = emptySession('25k');
+    expect(roundPlaits).toBe(true);
     expect(coilVolume).toBe(true);
     expect(nape).toBe(true);
     expect(curlVolume).toBe(true);
@@ -135,6 +137,7 @@ describe('every preset session passes the reader and round-trips', () => {
         curlVolume: true,
         nape: true,
         coilVolume: true,
+        roundPlaits: true,
       }),
     ).toEqual(emptySession('25k'));
   });

@@ -37,6 +37,7 @@ function full(): SessionState {
     curlVolume: true,
     nape: true,
     coilVolume: true,
+    roundPlaits: true,
     bandColor: '#d02060',
     detail: { lengthJitter: 0.2 },
     scalpPaint: [{ erase: true, radius: 0.3, points: [[0, 1, 0]] }],
@@ -82,6 +83,7 @@ describe('session schema', () => {
       'curlVolume',
       'nape',
       'coilVolume',
+      'roundPlaits',
       'detail',
     ]);
     expect(needsSolve(s, { ...s })).toBe(false);
@@ -152,8 +154,9 @@ describe('engine settings', () => {
         curlVolume: false,
         nape: true,
         coilVolume: true,
+        roundPlaits: false,
       }),
-    ]).toEqual([1, 0, 0, 1, 0, 1, 0.12, 0, 1, 0, 1, 1]);
+    ]).toEqual([1, 0, 0, 1, 0, 1, 0.12, 0, 1, 0, 1, 1, 0]);
     expect([
       ...engineSettings({
         avoidScalp: false,
@@ -168,7 +171,8 @@ describe('engine settings', () => {
         curlVolume: true,
         nape: false,
         coilVolume: false,
+        roundPlaits: true,
       }),
-    ]).toEqual([0, 1, 1, 0, 1, 0, 0, 1, 0, 1, 0, 0]);
+    ]).toEqual([0, 1, 1, 0, 1, 0, 0, 1, 0, 1, 0, 0, 1]);
   });
 });

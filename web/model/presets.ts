@@ -333,6 +333,7 @@ export function applyPreset(s: SessionState, name: PresetName, ctx: PresetContex
     curlVolume,
     nape,
     coilVolume,
+    roundPlaits,
     bust,
     ...rest
   } = s;
@@ -368,6 +369,7 @@ export function applyPreset(s: SessionState, name: PresetName, ctx: PresetContex
     ...(curlVolume && name === 'empty' ? { curlVolume } : {}),
     ...(nape && name === 'empty' ? { nape } : {}),
     ...(coilVolume && name === 'empty' ? { coilVolume } : {}),
+    ...(roundPlaits && name === 'empty' ? { roundPlaits } : {}),
     ...(bust ? { bust } : {}),
     growth,
     curves,

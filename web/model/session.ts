@@ -225,6 +225,7 @@ export function emptySession(
     curlVolume: true,
     nape: true,
     coilVolume: true,
+    roundPlaits: true,
   };
 }
 

@@ -96,6 +96,11 @@ export const SESSION_SETTINGS = {
    *  (4A–4C) stands out from the head and up from its top, as a spring of coils does, where looser
    *  curls hang. On in every new session; off, the coils of sessions made before. */
   coilVolume: { type: 'flag', hair: 'request' },
+  /** Round plaits (solver-cpp/src/gathered_tail_shapes.cpp plaitStretch): a braid's three
+   *  sections stay round across their own path where they cross aslant, so its lobes read as
+   *  plaited hair, not flat fins. On in every new session; off, the braids of sessions made
+   *  before. */
+  roundPlaits: { type: 'flag', hair: 'request' },
 } as const satisfies Record<string, SettingSpec>;
 
 export type SessionSettingName = keyof typeof SESSION_SETTINGS;
