@@ -10,6 +10,7 @@ import { openStillRenderer } from '../web/cli/render';
 import { applyCommand } from '../web/editor/commands';
 import { Head } from '../web/head/head';
 import { DEFAULT_HAIR_LOOK, type HairLook } from '../web/model/hairLook';
+import { NEW_SESSION_DETAIL } from '../web/model/presetDetail';
 import type { PresetName } from '../web/model/presets';
 import type { SessionState } from '../web/model/session';
 import { VIEW_NAMES } from '../web/viewer/namedViews';
@@ -27,12 +28,21 @@ const withLook = (s: SessionState, look: Partial<HairLook>): SessionState => ({
   hairLook: { ...DEFAULT_HAIR_LOOK, ...(s.hairLook ?? {}), ...look },
 });
 
+const newSessionTies = (s: SessionState): SessionState => ({
+  ...s,
+  ties: true,
+  roundPlaits: true,
+  hairline: true,
+  detail: s.detail ?? NEW_SESSION_DETAIL,
+});
+
 const styles: Record<string, () => SessionState> = {
   bob: () => preset('bob'),
   long: () => preset('long'),
-  // round plaits as a braid drawn in a new session has them
-  braid: () => ({ ...preset('braid'), roundPlaits: true }),
-  bun: () => preset('bun'),
+  // the braid and the bun as a tie drawn in a new session lays them (ties from any hand, round
+  // plaits, a soft hairline, natural detail): the presets keep the ties they had
+  braid: () => newSessionTies(preset('braid')),
+  bun: () => newSessionTies(preset('bun')),
   curly: () => preset('curly'),
   coily: () => {
     const s = preset('curly');
