@@ -1,6 +1,7 @@
-// The ties' bands in the app: the braid preset has none (made before ties); with `ties` on its
-// braid gets a band at its top, in the default band colour, drawn on screen; "Band colour" in
-// the Hair panel recolours it as one edit that Undo takes back.
+// The ties' bands in the app: the braid preset lays its braid with ties, so it has a band; with
+// `ties` off (a session made before ties) it has none, and on again its braid gets a band at its
+// top, in the default band colour, drawn on screen; "Band colour" in the Hair panel recolours it
+// as one edit that Undo takes back.
 import { expect, test } from '@playwright/test';
 import { settled, watchConsole } from './helpers';
 
@@ -8,15 +9,23 @@ test('a braid with ties gets a band; Band colour recolours it, Undo restores', a
   const errors = watchConsole(page);
   await page.goto('/?preset=braid&strands=12000');
   await settled(page);
+  expect(await page.evaluate(() => window.hairsketch.tieBands().bands.length)).toBe(1);
+  const revision = () =>
+    page.evaluate(() =>
+      Number(document.querySelector<HTMLElement>('[data-testid="status"]')?.dataset.revision),
+    );
+  const setTies = (on: boolean) =>
+    page.evaluate((ties) => {
+      const s = window.hairsketch.session() as Record<string, unknown>;
+      window.hairsketch.replaceSession({ ...s, ties });
+    }, on);
+  let before = await revision();
+  await setTies(false);
+  await settled(page, before);
   expect(await page.evaluate(() => window.hairsketch.tieBands().bands.length)).toBe(0);
 
-  const before = await page.evaluate(() =>
-    Number(document.querySelector<HTMLElement>('[data-testid="status"]')?.dataset.revision),
-  );
-  await page.evaluate(() => {
-    const s = window.hairsketch.session() as Record<string, unknown>;
-    window.hairsketch.replaceSession({ ...s, ties: true });
-  });
+  before = await revision();
+  await setTies(true);
   await settled(page, before);
   const shown = await page.evaluate(() => window.hairsketch.tieBands());
   expect(shown.bands).toHaveLength(1);

@@ -308,6 +308,9 @@ export function presetCurves(name: PresetName, ctx: PresetContext): StyleCurve[]
  *  show; the other presets are sketched as a user of today's app would, with it. */
 const PAPER_FIGURES: readonly PresetName[] = ['fig6', 'fig7', 'fig8', 'fig1'];
 
+/** The presets made of ties (braids, a bun): they lay them as a new session does. */
+const TIE_PRESETS: readonly PresetName[] = ['braid', 'bun', 'pigtail-braids'];
+
 /** Natural colours (hairLook.ts) of the presets; the rest take DEFAULT_HAIR_LOOK (a mid brown). */
 const PRESET_LOOKS: Partial<Record<PresetName, Partial<HairLook>>> = {
   bob: { melanin: 0.7, redness: 0.1, tipMelanin: 0.7 },
@@ -364,12 +367,14 @@ export function applyPreset(s: SessionState, name: PresetName, ctx: PresetContex
     // the shape rules for an empty head (a new session); the presets' curves were drawn for
     // natural fall before them and keep the hair they had
     ...(shape && name === 'empty' ? { shape } : {}),
-    ...(ties && name === 'empty' ? { ties } : {}),
+    // ties from any hand and round plaits: a new session's, and the tie presets' (their braids and
+    // bun as one drawn today lays them: a band, hair combed into the tie, no shelf)
+    ...(ties && (name === 'empty' || TIE_PRESETS.includes(name)) ? { ties } : {}),
     ...(hairline && name === 'empty' ? { hairline } : {}),
     ...(curlVolume && name === 'empty' ? { curlVolume } : {}),
     ...(nape && name === 'empty' ? { nape } : {}),
     ...(coilVolume && name === 'empty' ? { coilVolume } : {}),
-    ...(roundPlaits && name === 'empty' ? { roundPlaits } : {}),
+    ...(roundPlaits && (name === 'empty' || TIE_PRESETS.includes(name)) ? { roundPlaits } : {}),
     ...(bust ? { bust } : {}),
     growth,
     curves,
