@@ -3,8 +3,9 @@
 // (solveRecipe.ts), growth. The worker, `hairsketch grow`, the exports and the tests all run
 // requests through it, so they all grow the same hair from the same request.
 import { structuredKey } from '../model/curveSet';
+import { sameGrid } from '../model/grid';
 import type { GrowthParams } from '../model/growthParams';
-import { ConstraintColour, type GridSpec } from '../model/hairArrays';
+import { ConstraintColour } from '../model/hairArrays';
 import { engineSettings } from '../model/sessionSchema';
 import {
   type Groom,
@@ -38,9 +39,6 @@ function lightened(growth: GrowthParams, lightMaxStrands: number): boolean {
 function fieldKey(job: HairJob): string {
   return structuredKey({ curves: job.curves, settings: engineSettings(job.options) });
 }
-
-const sameGrid = (a: GridSpec, b: GridSpec): boolean =>
-  a.step === b.step && a.dims.every((d, i) => d === b.dims[i] && a.origin[i] === b.origin[i]);
 
 const sameBytes = (a: Uint8Array, b: Uint8Array): boolean =>
   a.length === b.length && a.every((v, i) => v === b[i]);
