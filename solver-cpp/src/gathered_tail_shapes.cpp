@@ -153,7 +153,7 @@ void layAlongSpine(const GatheredTail& T, const SpineFrames& F, const Capture& c
   F.at(cap.s0, pq, g1, g2, rq);
   const float xq = (cap.q - pq).dot(g1), yq = (cap.q - pq).dot(g2);
   const float ct = std::cos(theta), st = std::sin(theta);
-  const float Lb = T.braidLength, tau = float(T.braid.tightness);
+  const float Lb = T.braidLength;
   auto width = [&](float S) {
     const float f = Lb > 0 ? std::clamp(S / Lb, 0.f, 1.f) : 1.f;
     return float(T.braid.width) * (1 - 0.4f * f);
@@ -166,17 +166,9 @@ void layAlongSpine(const GatheredTail& T, const SpineFrames& F, const Capture& c
     F.at(S, pos, f1, f2, rad);
     float x = rho * ct * rad, y = rho * st * rad;
     if (braid) {
-      const float W = width(S), rb = W * kBraidBundle;
-      float A = W / 2 - rb, B = rb * (1.5f - 0.8f * tau);
-      if (T.ties) {
-        const float open = braidOpen(T, S, period);
-        A *= open;
-        B *= open;
-      }
-      const float t = kTwoPi * (S / period + float(bundle) / 3);
-      const Eigen::Vector2f k = plaitStretch(T, A, B, t, period);
-      x = A * std::sin(t) + rb * rho * ct * k.x();
-      y = B * std::sin(2 * t) + rb * rho * st * k.y();
+      const Eigen::Vector2f o = seatOffset(T, S, rad, theta, rho, bundle);
+      x = o.x();
+      y = o.y();
       if (S > Lb) {  // the tie, then the loose tail
         float loose = kBraidLoose * width(Lb) * rho;
         const float w = smoothstepf((S - Lb) / kBraidTie);
