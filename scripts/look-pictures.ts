@@ -28,10 +28,9 @@ const withLook = (s: SessionState, look: Partial<HairLook>): SessionState => ({
   hairLook: { ...DEFAULT_HAIR_LOOK, ...(s.hairLook ?? {}), ...look },
 });
 
-const newSessionTies = (s: SessionState): SessionState => ({
+/** A new session's soft hairline and natural detail (the tie presets have its ties already). */
+const newSessionLook = (s: SessionState): SessionState => ({
   ...s,
-  ties: true,
-  roundPlaits: true,
   hairline: true,
   detail: s.detail ?? NEW_SESSION_DETAIL,
 });
@@ -39,10 +38,10 @@ const newSessionTies = (s: SessionState): SessionState => ({
 const styles: Record<string, () => SessionState> = {
   bob: () => preset('bob'),
   long: () => preset('long'),
-  // the braid and the bun as a tie drawn in a new session lays them (ties from any hand, round
-  // plaits, a soft hairline, natural detail): the presets keep the ties they had
-  braid: () => newSessionTies(preset('braid')),
-  bun: () => newSessionTies(preset('bun')),
+  // the braid and the bun as drawn in a new session: the presets' ties (ties from any hand, round
+  // plaits) with a soft hairline and natural detail
+  braid: () => newSessionLook(preset('braid')),
+  bun: () => newSessionLook(preset('bun')),
   curly: () => preset('curly'),
   coily: () => {
     const s = preset('curly');
