@@ -154,7 +154,7 @@ export class StatusPresenter {
         ? `${fmt(l.strands)} strands`
         : l.curves > 0
           ? 'no strands grow from these curves'
-          : 'no hair yet: draw a stream curve from the scalp (S)';
+          : 'no hair yet: draw a stroke from the scalp with the tool chosen';
     const extra = this.lastMessage ? ` · ${this.lastMessage}` : '';
     l.set('ready', `Ready — ${hair}${extra}`, this.details);
   }
