@@ -631,9 +631,9 @@ EMSCRIPTEN_KEEPALIVE int32_t hs_raw_stats(RawHandle* h, HsStats* out) {
   return HS_OK;
 }
 
-// ---- motion (hair_sim.hpp StrandMotion) ---------------------------------------------------
-// A groom in motion over the engine's head (and body when useBody and one is set); the engine
-// must outlive it. points: float32[3 * pointCount]; strandStart: uint32[strandCount + 1];
+// ---- motion (strand_motion.hpp StrandMotion) ----------------------------------------------
+// A groom's guides in motion over the engine's head (and body when useBody and one is set); the
+// engine must outlive it. points: float32[3 * pointCount]; strandStart: uint32[strandCount + 1];
 // tails: int32[strandCount] (the tail curve per strand, -1 none) or 0; pivot: float32[3], the
 // point the head turns about (world units, 10 cm); motion: 0 settle, 1 head turn, 2 nod,
 // 3 wind; windFromDeg: where the wind comes from (degrees about the vertical axis: 0 the front,
@@ -682,8 +682,23 @@ EMSCRIPTEN_KEEPALIVE int32_t hs_sim_create(EngineHandle* h, const float* points,
 EMSCRIPTEN_KEEPALIVE void hs_sim_destroy(SimHandle* s) { delete s; }
 // Advances one frame (1/24 s).
 EMSCRIPTEN_KEEPALIVE void hs_sim_step(SimHandle* s) { s->motion.step(); }
-// The strands now: float32[3 * pointCount], the create call's layout.
-EMSCRIPTEN_KEEPALIVE const float* hs_sim_points(SimHandle* s) { return s->motion.points().data(); }
+// The guides now: float32[3 * (guideCount * guidePoints + point)], strand-major; the same at
+// rest (the groom's, resampled); points per guide.
+EMSCRIPTEN_KEEPALIVE const float* hs_sim_guides(SimHandle* s) {
+  return s->motion.guides().positions().data();
+}
+EMSCRIPTEN_KEEPALIVE const float* hs_sim_guide_rest(SimHandle* s) {
+  return s->motion.guides().rest().data();
+}
+EMSCRIPTEN_KEEPALIVE int32_t hs_sim_guide_points(SimHandle* s) {
+  return s->motion.guides().pointsPerStrand();
+}
+// Each strand's guide: int32[strandCount] (-1: none); each point's place along it: float32
+// [pointCount] (0 .. guidePoints - 1).
+EMSCRIPTEN_KEEPALIVE const int32_t* hs_sim_guide_of(SimHandle* s) {
+  return s->motion.guideOf().data();
+}
+EMSCRIPTEN_KEEPALIVE const float* hs_sim_along(SimHandle* s) { return s->motion.along().data(); }
 // The head's pose now: out float32[12] = rotation row-major (9), then translation (3).
 EMSCRIPTEN_KEEPALIVE void hs_sim_pose(SimHandle* s, float* out) {
   const HeadPose& p = s->motion.pose();

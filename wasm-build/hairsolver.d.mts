@@ -112,7 +112,11 @@ export interface HairSolverModule {
   ): number;
   _hs_sim_destroy(s: number): void;
   _hs_sim_step(s: number): void;
-  _hs_sim_points(s: number): number; // float32[3 * pointCount]
+  _hs_sim_guides(s: number): number; // float32[3 * guideCount * guidePoints], strand-major
+  _hs_sim_guide_rest(s: number): number; // the same at rest
+  _hs_sim_guide_points(s: number): number;
+  _hs_sim_guide_of(s: number): number; // int32[strandCount], -1: none
+  _hs_sim_along(s: number): number; // float32[pointCount], in guide points
   _hs_sim_pose(s: number, out: number): void; // out float32[12]: rotation row-major, translation
   _hs_sim_frame(s: number): number;
   _hs_sim_guide_count(s: number): number;

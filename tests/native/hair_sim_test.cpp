@@ -176,21 +176,6 @@ TEST(HairSim, HeadTurnMovesTheHair) {
   EXPECT_NE(sim.positions(), g);
 }
 
-TEST(HairSim, FollowersRideTheirGuides) {
-  const int strands = 10, n = 16;
-  const std::vector<float> g = simGroom(strands, n);
-  HairSim sim;
-  sim.init(g.data(), strands, n, nullptr, Eigen::Vector3f::Zero(), SimMotion::HeadTurn, 1);
-  GuideFollowers followers;
-  followers.bind(g.data(), strands, n, sim);  // the guides themselves as followers
-  std::vector<float> out(g.size());
-  followers.update(sim, out.data());
-  EXPECT_EQ(out, g);
-  for (int k = 0; k < 6; ++k) sim.step();
-  followers.update(sim, out.data());
-  for (size_t i = 0; i < out.size(); ++i) EXPECT_NEAR(out[i], sim.positions()[i], 1e-6f * kU);
-}
-
 // The groom as the engine lays it: strands of varying point counts (strandStart).
 struct VarGroom {
   std::vector<float> points;
@@ -227,100 +212,64 @@ MotionInput simMotionInput(const VarGroom& v, const HeadDistance* head, const He
   return in;
 }
 
-TEST(HairSimMotion, FollowersStayOutsideHeadAndBodyAndTiesStayGathered) {
+// Guides stay outside the head in every motion; a tie's strands all ride one guide (the tail
+// moves as one bunch); every point's place along its guide is its arc-length fraction of its
+// strand, in guide points (0 at the root, G - 1 at the tip).
+TEST(HairSimMotion, GuidesStayOutsideTiesShareAGuideAndPointsLieAlongIt) {
   SimHead f;
-  // The body: a sphere below and behind the head, where the strands reach.
-  std::vector<float> bv;
-  std::vector<uint32_t> bt;
-  simSphere(0.08f * kU, bv, bt);
-  for (size_t i = 0; i < bv.size(); i += 3) bv[i + 1] -= 0.15f * kU;
-  HeadDistance body;
-  HeadMeshView mesh;
-  mesh.positions = bv.data();
-  mesh.vertexCount = bv.size() / 3;
-  mesh.indices = bt.data();
-  mesh.triangleCount = bt.size() / 3;
-  ASSERT_TRUE(body.build(mesh, 0.005 * kU, 4).ok());
   const VarGroom v = simVarGroom(300);
   for (SimMotion m : {SimMotion::Settle, SimMotion::HeadTurn, SimMotion::Nod, SimMotion::Wind}) {
     StrandMotion motion;
-    motion.init(simMotionInput(v, &f.head, &body, m));
+    motion.init(simMotionInput(v, &f.head, nullptr, m));
     EXPECT_LE(motion.guideCount(), 61);
-    EXPECT_EQ(motion.points(), v.points);  // frame 0 is the groom
+    const int G = motion.guides().pointsPerStrand();
+    // frame 0: the guides are their resampled groom
+    EXPECT_EQ(motion.guides().positions(), motion.guides().rest());
     for (int k = 0; k < 24; ++k) motion.step();
-    const auto& x = motion.points();
+    const auto& x = motion.guides().positions();
     const HeadPose& pose = motion.pose();
     int inside = 0;
     for (size_t i = 0; i < x.size(); i += 3) {
       Eigen::Vector3f local = pose.rotation.transpose() *
                               (Eigen::Vector3f(x[i], x[i + 1], x[i + 2]) - pose.translation);
-      inside += f.head.distance(local.x(), local.y(), local.z()) < -0.001f * kU ||
-                body.distance(local.x(), local.y(), local.z()) < -0.001f * kU;
+      inside += f.head.distance(local.x(), local.y(), local.z()) < -0.001f * kU;
     }
     EXPECT_EQ(inside, 0) << int(m);
-    // a tie's strands (tail 0) move as one: their tips' displacements spread less than the same
-    // strands' do without the tie (each keeps its own segment lengths, so they are not equal)
-    auto spread = [&](const StrandMotion& sm) {
-      const auto& y = sm.points();
-      std::vector<Eigen::Vector3f> moved;
-      Eigen::Vector3f mean = Eigen::Vector3f::Zero();
-      for (size_t s = 0; s + 1 < v.start.size(); ++s) {
-        if (v.tails[s] != 0) continue;
-        const size_t p = 3 * (v.start[s + 1] - 1);
-        const Eigen::Vector3f groom =
-            sm.pose().apply(Eigen::Vector3f(v.points[p], v.points[p + 1], v.points[p + 2]));
-        moved.push_back(Eigen::Vector3f(y[p], y[p + 1], y[p + 2]) - groom);
-        mean += moved.back();
+    int tieGuide = -2;
+    for (size_t s = 0; s + 1 < v.start.size(); ++s) {
+      const int32_t g = motion.guideOf()[s];
+      ASSERT_GE(g, 0) << s;
+      if (v.tails[s] == 0) {
+        if (tieGuide == -2) tieGuide = g;
+        EXPECT_EQ(g, tieGuide) << s;
       }
-      mean /= float(moved.size());
-      float worst = 0;
-      for (const auto& d : moved) worst = std::max(worst, (d - mean).norm());
-      return worst;
-    };
-    if (m == SimMotion::HeadTurn || m == SimMotion::Nod) {
-      MotionInput loose = simMotionInput(v, &f.head, &body, m);
-      std::vector<int32_t> none(v.tails.size(), -1);
-      loose.tailCurves = none.data();
-      StrandMotion free;
-      free.init(loose);
-      for (int k = 0; k < 24; ++k) free.step();
-      EXPECT_LT(spread(motion), spread(free)) << int(m);
+      const uint32_t a = v.start[s], b = v.start[s + 1];
+      double total = 0;
+      std::vector<double> acc{0};
+      for (uint32_t p = a + 1; p < b; ++p) {
+        const float* q = v.points.data() + 3 * p;
+        total += std::hypot(q[0] - q[-3], q[1] - q[-2], q[2] - q[-1]);
+        acc.push_back(total);
+      }
+      for (uint32_t p = a; p < b; ++p)
+        EXPECT_NEAR(motion.along()[p], acc[p - a] / total * (G - 1), 1e-4) << s;
     }
   }
 }
 
-// A follower point whose guide carried it into the head, the point before it 1 cm out and the
-// groomed segment longer than the gap (the Nod pitched the head into a braid's strands): put back
-// at the groomed length along the step, it lands inside again; it must end outside.
-TEST(HairSimMotion, FollowerPointPushedOutStaysOutAfterItsLengthIsRestored) {
-  SimHead f;
-  const HeadPose pose;
-  const Eigen::Vector3f prev(0, 0.11f * kU, 0);
-  for (float length : {0.005f * kU, 0.01f * kU, 0.03f * kU, 0.05f * kU}) {
-    const Eigen::Vector3f q =
-        placeFollowerPoint(Eigen::Vector3f(0.003f * kU, 0.095f * kU, 0.0f), &prev, length, pose,
-                           &f.head, nullptr, SimSettings().collisionMargin);
-    EXPECT_GE(f.head.distance(q.x(), q.y(), q.z()), 0.001f * kU) << length;
-    std::printf("length %.3f: placed %.4f from the point before, %.4f outside\n", length,
-                (q - prev).norm(), f.head.distance(q.x(), q.y(), q.z()));
-    // at its groomed length (the step turned out of the head)
-    EXPECT_NEAR((q - prev).norm(), length, 1e-5f * kU) << length;
-  }
-}
-
-TEST(HairSimMotion, SettleHoldsTheGroomFor5Seconds) {
+TEST(HairSimMotion, SettleHoldsTheGuidesFor5Seconds) {
   SimHead f;
   const VarGroom v = simVarGroom(200);
   StrandMotion motion;
   motion.init(simMotionInput(v, &f.head, nullptr, SimMotion::Settle));
   for (int k = 0; k < 120; ++k) motion.step();
   std::vector<float> drift;
-  const auto& x = motion.points();
+  const auto& x = motion.guides().positions();
+  const auto& r = motion.guides().rest();
   for (size_t i = 0; i < x.size(); i += 3)
-    drift.push_back(
-        std::hypot(x[i] - v.points[i], x[i + 1] - v.points[i + 1], x[i + 2] - v.points[i + 2]));
+    drift.push_back(std::hypot(x[i] - r[i], x[i + 1] - r[i + 1], x[i + 2] - r[i + 2]));
   std::nth_element(drift.begin(), drift.begin() + drift.size() / 2, drift.end());
-  std::printf("rest drift after 5 s of Settle: median %.4f mm, %d guides\n",
+  std::printf("guide drift after 5 s of Settle: median %.4f mm, %d guides\n",
               drift[drift.size() / 2] * 1000 / kU, motion.guideCount());
   EXPECT_LE(drift[drift.size() / 2], 0.001f * kU);
 }

@@ -1,14 +1,21 @@
-// Plays a motion over the hair on screen: the worker simulates (protocol.ts motionStart /
-// motionStep / motionStop), each frame it sends is drawn as the hair and moves the head and body
-// meshes by the head's pose. Frames are asked for at 24 per second of wall time (several at once
-// when drawing falls behind, at most MAX_CATCH_UP), PIPELINE requests ahead so the worker steps
-// the next frame while this thread draws the current one. A frame with the strands' layout moves
-// the shown geometry's points (HairView.showPositions) instead of rebuilding it, and its array
-// goes back to the worker for a later frame (transferred both ways). Stop shows the groom's
-// result again, the very arrays it was (bit for bit); an edit that changes the hair, or new hair
-// from the solver, stops the motion first.
+// Plays a motion over the hair on screen: the worker simulates the guides (protocol.ts
+// motionStart / motionStep / motionStop) and binds every strand to one (motionBound, once); each
+// frame it sends is the guides and the head's pose, which go to the strand shader (HairView.follow
+// and followFrame: every strand placed on its guide on the GPU, all of them drawn) and move the
+// head and body meshes. Frames are asked for at 24 per second of wall time (several at once when
+// drawing falls behind, at most MAX_CATCH_UP), PIPELINE requests ahead so the worker steps the
+// next frame while this thread draws the current one; a frame's guide array goes back to the
+// worker for a later frame (transferred both ways). Where the hair shown cannot follow (the Cards
+// view) each frame's strands are placed on the CPU (guideFollowers.ts) and drawn rebuilt. The
+// geometry's points are never written: Stop shows the groom again bit for bit; an edit that
+// changes the hair, or new hair from the solver, stops the motion first.
 import * as THREE from 'three';
 import type { Editor } from '../editor/editor';
+import {
+  type FollowerAttributes,
+  type GuideBinding,
+  placeFollowers,
+} from '../model/guideFollowers';
 import type { StrandArrays } from '../model/hairArrays';
 import {
   DEFAULT_WIND,
@@ -44,16 +51,21 @@ export interface MotionPlayerDeps {
 
 export class MotionPlayer {
   private motion: MotionName | null = null;
+  /** This play's id (protocol motionStart.play): messages of plays before are dropped. */
+  private playId = 0;
   private base: SolveResult | null = null;
-  private drawnStrands: StrandArrays | null = null;
+  /** This play's binding (null until the worker sent it), and whether the hair shown follows
+   *  it on the GPU (else each frame is placed here and drawn rebuilt). */
+  private bound: { binding: GuideBinding; attrs: FollowerAttributes; gpu: boolean } | null = null;
+  /** The last frame drawn: its guides and pose, and its strands once placed on the CPU. */
+  private last: { guides: Float32Array; pose: Float32Array; strands: StrandArrays | null } | null =
+    null;
   private startTime = 0;
   private frameNo = 0;
   /** Requests sent and not yet answered, and when each was sent (oldest first). */
   private sent: number[] = [];
   /** The frame the last request sent will answer with. */
   private requested = 0;
-  /** Waiting for frame 0 of this play (frames of a motion stopped before are dropped). */
-  private starting = false;
   /** Frame arrays drawn and replaced, to give back to the worker with the next request. */
   private spare: Float32Array[] = [];
   private timer: ReturnType<typeof setTimeout> | null = null;
@@ -73,9 +85,13 @@ export class MotionPlayer {
         d.say(`Motion stopped: ${msg.message}`);
         return;
       }
-      if (this.starting && msg.frame !== 0) return; // a frame of the motion played before
-      this.starting = false;
-      this.draw(msg.frame, msg.points, msg.pose);
+      if (msg.play !== this.playId) return; // of a play stopped before
+      if (msg.type === 'motionBound') {
+        const gpu = d.hairView.follow(msg.binding, msg.attributes);
+        this.bound = { binding: msg.binding, attrs: msg.attributes, gpu };
+        return;
+      }
+      this.draw(msg.frame, msg.guides, msg.pose);
     };
     d.editor.listen((c) => {
       if (this.motion && c.sessionChanged && changesHair(c.previous, c.session)) this.stop();
@@ -86,9 +102,61 @@ export class MotionPlayer {
     return this.motion;
   }
 
-  /** What is drawn while playing (null when stopped: the groom's result is drawn). */
+  /** What is drawn while playing (null when stopped: the groom's result is drawn): the strands
+   *  of the last frame as guideFollowers.ts places them (the strand shader's CPU reference),
+   *  placed when first asked for. */
   get drawn(): StrandArrays | null {
-    return this.motion ? this.drawnStrands : null;
+    if (!this.motion) return null;
+    const base = this.base;
+    const last = this.last;
+    const bound = this.bound;
+    if (!base || !last || !bound) return base?.strands ?? null;
+    last.strands ??= {
+      ...base.strands,
+      points: placeFollowers(
+        base.strands.points,
+        bound.attrs,
+        last.guides,
+        bound.binding.guidePoints,
+        last.pose,
+      ),
+    };
+    return last.strands;
+  }
+
+  /** Test probe: the strand shader's placement of the last frame read back from the GPU
+   *  (followerProbe.ts) against the CPU reference (drawn): the points compared, the largest
+   *  distance between the two and the largest distance the reference moved a point from its
+   *  groom (world units); null while nothing follows on the GPU. */
+  checkFollowers(): { points: number; maxDifference: number; maxMoved: number } | null {
+    const base = this.base;
+    if (!this.motion || !this.bound?.gpu || !this.last || !base) return null;
+    const gpu = this.d.hairView.readFollowed();
+    const ref = this.drawn?.points;
+    if (!gpu || !ref) return null;
+    const groom = base.strands.points;
+    const points = ref.length / 3;
+    const per = gpu.length / 3 / points; // vertices a point: lines 1, strips 2
+    let maxDifference = 0;
+    let maxMoved = 0;
+    for (let i = 0; i < points; i++) {
+      for (let side = 0; side < per; side++) {
+        const v = 3 * (per * i + side);
+        maxDifference = Math.max(
+          maxDifference,
+          Math.hypot(gpu[v] - ref[3 * i], gpu[v + 1] - ref[3 * i + 1], gpu[v + 2] - ref[3 * i + 2]),
+        );
+      }
+      maxMoved = Math.max(
+        maxMoved,
+        Math.hypot(
+          ref[3 * i] - groom[3 * i],
+          ref[3 * i + 1] - groom[3 * i + 1],
+          ref[3 * i + 2] - groom[3 * i + 2],
+        ),
+      );
+    }
+    return { points, maxDifference, maxMoved };
   }
 
   get frame(): number {
@@ -109,8 +177,10 @@ export class MotionPlayer {
       return;
     }
     const s = this.d.editor.session;
+    const play = this.playId + 1;
     const sent = this.d.client.motion({
       type: 'motionStart',
+      play,
       motion,
       seed: s.growth.seed,
       body: !!s.bust,
@@ -126,18 +196,17 @@ export class MotionPlayer {
       return;
     }
     this.motion = motion;
+    this.playId = play;
     this.base = base;
-    this.drawnStrands = base.strands;
+    this.bound = null;
+    this.last = null;
     this.frameNo = 0;
     this.drawnCount = 0;
     this.times.rebuilds = 0;
     this.startTime = performance.now();
     this.sent = [this.startTime];
     this.requested = 0;
-    this.starting = true;
     this.spare = [];
-    // drawn at interactive detail while it moves, in full once it stops
-    this.d.viewer.hold('motion', true);
     this.setStatus();
     this.d.say(`Playing ${MOTION_LABELS[motion]}`);
     this.d.changed();
@@ -149,7 +218,7 @@ export class MotionPlayer {
     if (this.timer !== null) clearTimeout(this.timer);
     this.timer = null;
     this.d.client.motion({ type: 'motionStop' });
-    this.d.viewer.hold('motion', false);
+    this.d.hairView.unfollow();
     for (const [m, matrix] of this.saved) {
       m.matrix.copy(matrix);
       m.matrixAutoUpdate = true;
@@ -158,12 +227,15 @@ export class MotionPlayer {
     this.saved.clear();
     this.d.viewer.invalidateFrameCache();
     const base = this.base;
+    const rebuilt = this.times.rebuilds > 0;
     this.base = null;
-    this.drawnStrands = null;
+    this.bound = null;
+    this.last = null;
     this.sent = [];
     this.spare = [];
-    // the groom again, as it was shown (the same arrays); hair newer than it is already shown
-    if (base && this.d.shown() === base)
+    // the groom again, as it was shown (the same arrays) where frames were drawn rebuilt; hair
+    // newer than it is already shown
+    if (base && rebuilt && this.d.shown() === base)
       this.d.hairView.show(base.strands, base.lighting, undefined, true, base.attributes ?? null);
     this.setStatus();
     this.d.say('Motion stopped: the groom is back');
@@ -171,9 +243,10 @@ export class MotionPlayer {
     this.d.changed();
   }
 
-  private draw(frame: number, points: Float32Array, pose: Float32Array): void {
+  private draw(frame: number, guides: Float32Array, pose: Float32Array): void {
     const base = this.base;
-    if (!base) return;
+    const bound = this.bound;
+    if (!base || !bound) return;
     if (this.d.shown() !== base) {
       // new hair from the solver: it is shown, the motion over the old hair ends
       this.base = null;
@@ -183,18 +256,15 @@ export class MotionPlayer {
     this.frameNo = frame;
     const b0 = performance.now();
     this.times.workerMs = b0 - (this.sent.shift() ?? b0);
-    const strands: StrandArrays = { ...base.strands, points };
-    const before = this.drawnStrands?.points;
-    this.drawnStrands = strands;
-    // the first frame is built in full (the groom's own arrays are never written), later ones
-    // move its points
-    if (this.drawnCount === 0 || !this.d.hairView.showPositions(strands)) {
+    // the frame drawn before is no longer read: the worker fills its array again
+    if (this.last) this.spare.push(this.last.guides);
+    this.last = { guides, pose, strands: null };
+    if (bound.gpu) this.d.hairView.followFrame(guides, pose);
+    else {
+      const strands = this.drawn as StrandArrays;
       this.d.hairView.show(strands, base.lighting, undefined, false, null);
       this.times.rebuilds++;
     }
-    // the frame drawn before is no longer viewed by the geometry (lines took the new array,
-    // strips copied it): the worker fills it again
-    if (before && before !== base.strands.points && before !== points) this.spare.push(before);
     this.times.buildMs = performance.now() - b0;
     const m = new THREE.Matrix4().set(
       pose[0],

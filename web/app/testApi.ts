@@ -97,12 +97,18 @@ export interface HairsketchTestApi {
     drawnStrands: number;
     workerMs: number;
     buildMs: number;
-    /** Frames of this play drawn by rebuilding the geometry (the rest moved its points). */
+    /** Frames of this play drawn by rebuilding the geometry (the Cards view: the strands placed
+     *  on the CPU); 0 while the strand shader places them. */
     rebuilds: number;
     /** The overlays on the head (style curves, displays) are moved from their rest: they carry
      *  the head's pose. */
     overlaysPosed: boolean;
   };
+  /** While a motion plays: the strand shader's placement of the last frame read back from the
+   *  GPU against the CPU reference (model/guideFollowers.ts): points compared, the largest
+   *  distance between the two and the largest distance a point moved from its groom (world
+   *  units); null when nothing follows on the GPU. */
+  checkFollowers(): { points: number; maxDifference: number; maxMoved: number } | null;
   /** strands() with each array's bytes as base64 (little-endian Float32, Uint32, Int32 and Uint8
    *  arrays in that order), for scripts that take the whole hair out of the page: a plain array
    *  of 300,000 numbers costs the driver seconds to check and parse, a string almost nothing. */
@@ -240,6 +246,7 @@ export interface TestApiParts {
     frame: number;
     fps: number;
     times: { workerMs: number; buildMs: number; rebuilds: number };
+    checkFollowers(): { points: number; maxDifference: number; maxMoved: number } | null;
   };
 }
 
@@ -345,6 +352,7 @@ export function installTestApi(app: TestApiParts): void {
         ),
       };
     },
+    checkFollowers: () => app.motion?.checkFollowers() ?? null,
     strandsPacked() {
       const s = app.motion?.drawn ?? hair.strands;
       return s

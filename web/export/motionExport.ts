@@ -1,6 +1,8 @@
 // A motion for export: the full hair grown (growSession.ts) played on the same engine, frame by
-// frame. The app's export worker and `hairsketch grow --motion` both call simulateMotion, so the
+// frame, the strands placed on the guides as the app's strand shader places them
+// (model/guideFollowers.ts placeFollowers). The app's export worker and `hairsketch grow --motion` both call simulateMotion, so the
 // same session, motion and frame count give the same .usda bytes in both.
+import { followerAttributes, placeFollowers } from '../model/guideFollowers';
 import type { StrandArrays } from '../model/hairArrays';
 import {
   DEFAULT_WIND,
@@ -55,9 +57,20 @@ export function simulateMotion(
       poses: [],
       frameRate: MOTION_FRAME_RATE,
     };
+    const attrs = followerAttributes(strands.points, strands.strandStart, run.binding);
     for (let f = 0; f < frames; f++) {
       const frame = run.step();
-      out.frames.push(f === 0 ? strands.points : frame.points);
+      out.frames.push(
+        f === 0
+          ? strands.points
+          : placeFollowers(
+              strands.points,
+              attrs,
+              frame.guides,
+              run.binding.guidePoints,
+              frame.pose,
+            ),
+      );
       out.poses.push(frame.pose);
     }
     return out;

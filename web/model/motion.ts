@@ -59,11 +59,12 @@ export function isMotionName(s: string): s is MotionName {
   return (MOTIONS as readonly string[]).includes(s);
 }
 
-/** One frame of a motion: the strands (the groom's layout: points[3 * point + axis]) and the
+/** One frame of a motion: its guides (guideFollowers.ts GuideBinding's layout: 3 * (guide * G +
+ *  point) + axis; the strands are placed on them by placeFollowers, or the strand shader) and the
  *  head's rigid pose, pose[0..8] its rotation row-major and pose[9..11] its translation
  *  (world = R * groom + t). */
 export interface MotionFrame {
   frame: number;
-  points: Float32Array;
+  guides: Float32Array;
   pose: Float32Array;
 }

@@ -2,6 +2,7 @@
 // requestRunner.ts implements it over the primitive calls of engineCore.ts, which wasmEngine.ts
 // binds to the wasm module; the same object runs in the browser worker and under Node.
 
+import type { GuideBinding } from '../model/guideFollowers';
 import type { ConstraintArrays, FieldArrays, StrandArrays } from '../model/hairArrays';
 import type { MotionFrame, MotionName, WindSettings } from '../model/motion';
 import type { HairRequest } from './hairRequest';
@@ -9,12 +10,13 @@ import type { SolverErrorKind, SolveStats } from './protocol';
 
 /** A groom in motion over an engine's head (SolverEngine.startMotion; wasmMotion.ts). */
 export interface MotionRun {
-  /** Frame 0 (the groom as given) before the first step, then one frame per call; the points
-   *  are written into `into` when it has their length (else a new array). */
+  /** The guides and how the strands are bound to them (fixed for the run). */
+  readonly binding: GuideBinding;
+  /** Frame 0 (the guides at rest) before the first step, then one frame per call; the guides'
+   *  points are written into `into` when it has their length (else a new array). */
   step(into?: Float32Array): MotionFrame;
   /** Advances like step without reading the frame (frames skipped when catching up). */
   advance(): void;
-  readonly guides: number;
   dispose(): void;
 }
 

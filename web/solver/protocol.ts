@@ -20,6 +20,7 @@
 //     (tie t: k = 0 its curve's index, 1..3 its first circle's centre, 4..6 its unit axis, 7 its
 //     hair's radius there, 0 when that is not one circle).
 import type { GrowthParams } from '../model/growthParams';
+import type { FollowerAttributes, GuideBinding } from '../model/guideFollowers';
 import type {
   ConstraintArrays,
   CurveSet,
@@ -102,8 +103,11 @@ export type ToWorker =
   | {
       /** Plays a motion over the strands on screen (HairSim in the worker, over the init head and,
        *  with `body`, its body; model/motion.ts): the strands are copied, a motion already playing
-       *  is dropped. Answered by the 'motionFrame' of frame 0 (the strands as given). */
+       *  is dropped. Answered by 'motionBound' and then the 'motionFrame' of frame 0 (the guides at
+       *  rest). */
       type: 'motionStart';
+      /** Names this play: its binding and frames carry it (a play stopped before is dropped). */
+      play: number;
       motion: MotionName;
       seed: number; // uint32: the session's seed (the wind's gusts)
       body: boolean;
@@ -112,7 +116,8 @@ export type ToWorker =
     }
   | {
       /** Advances the motion `frames` frames (1/24 s each) and answers with the last one.
-       *  `recycle`: frame arrays the page is done with (transferred), refilled for later frames. */
+       *  `recycle`: frames' guide arrays the page is done with (transferred), refilled for later
+       *  frames. */
       type: 'motionStep';
       frames: number;
       recycle?: Float32Array[];
@@ -146,12 +151,24 @@ export type FromWorker =
     }
   | { type: 'error'; id: number | null; message: string; kind: SolverErrorKind }
   | {
-      /** A frame of the motion playing: points[3 * point + axis] in the layout of motionStart's
-       *  strands; pose[0..8] the head's rotation row-major, pose[9..11] its translation (world =
-       *  R * groom + t, the head and body meshes move by it). Transferred. */
+      /** The motion started: its guides and how motionStart's strands are bound to them, and
+       *  the strand shader's attributes per point (model/guideFollowers.ts: follow, 2 floats;
+       *  offset, 3 floats; tangent, 3 signed bytes), made here so the page does not. Transferred. */
+      type: 'motionBound';
+      play: number;
+      binding: GuideBinding;
+      attributes: FollowerAttributes;
+    }
+  | {
+      /** A frame of the motion playing: its guides, guides[3 * (guide * G + point) + axis] (G:
+       *  the binding's guidePoints); pose[0..8] the head's rotation row-major, pose[9..11] its
+       *  translation (world = R * groom + t, the head and body meshes move by it). The strands
+       *  are placed on the guides by the strand shader (guideFollowers.ts placeFollowers on the
+       *  CPU). Transferred. */
       type: 'motionFrame';
+      play: number;
       frame: number;
-      points: Float32Array;
+      guides: Float32Array;
       pose: Float32Array;
     }
   | { type: 'motionError'; message: string };

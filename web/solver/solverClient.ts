@@ -77,9 +77,11 @@ export class SolverClient {
   private maskKey: string;
   /** Ask the worker for the solved field with each result (for the field display). */
   wantField = false;
-  /** Called with each motion frame and motion error from the worker (app/motionPlayer.ts). */
-  onMotion: ((msg: Extract<FromWorker, { type: 'motionFrame' | 'motionError' }>) => void) | null =
-    null;
+  /** Called with the motion's binding, each frame and motion error from the worker
+   *  (app/motionPlayer.ts). */
+  onMotion:
+    | ((msg: Extract<FromWorker, { type: 'motionBound' | 'motionFrame' | 'motionError' }>) => void)
+    | null = null;
   constructor(
     private readonly makeWorker: () => Worker,
     private init: InitMessage,
@@ -328,6 +330,7 @@ export class SolverClient {
         if (!this.pending) this.events.onIdle();
         return;
       }
+      case 'motionBound':
       case 'motionFrame':
       case 'motionError':
         this.onMotion?.(msg);

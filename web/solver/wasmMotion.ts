@@ -1,7 +1,9 @@
 // The wasm side of a groom in motion (binding.cpp hs_sim_*): strands copied into the module,
-// stepped a frame (1/24 s) at a time over the engine's head (and body), read back as copies
-// (into a caller's array of the right length when given: no allocation a frame).
+// its guides stepped a frame (1/24 s) at a time over the engine's head (and body), read back as
+// copies (into a caller's array of the right length when given: no allocation a frame); the
+// binding of the strands to the guides is read once.
 import type { HairSolverModule } from '../generated/hairsolver.mjs';
+import type { GuideBinding } from '../model/guideFollowers';
 import type { StrandArrays } from '../model/hairArrays';
 import {
   DEFAULT_WIND,
@@ -55,21 +57,34 @@ export function createMotion(
   );
   let live = true;
   let started = false;
+  const guideCount = mod._hs_sim_guide_count(handle);
+  const guidePoints = mod._hs_sim_guide_points(handle);
+  const floats = 3 * guideCount * guidePoints;
+  const rest = mod._hs_sim_guide_rest(handle) >> 2;
+  const guideOf = mod._hs_sim_guide_of(handle) >> 2;
+  const along = mod._hs_sim_along(handle) >> 2;
+  const binding: GuideBinding = {
+    guideCount,
+    guidePoints,
+    guideRest: mod.HEAPF32.slice(rest, rest + floats),
+    guideOf: mod.HEAP32.slice(guideOf, guideOf + strandCount),
+    along: mod.HEAPF32.slice(along, along + pointCount),
+  };
   const read = (into?: Float32Array): MotionFrame => {
-    const p = mod._hs_sim_points(handle) >> 2;
-    let points: Float32Array;
-    if (into && into.length === 3 * pointCount) {
-      into.set(mod.HEAPF32.subarray(p, p + 3 * pointCount));
-      points = into;
-    } else points = mod.HEAPF32.slice(p, p + 3 * pointCount);
+    const p = mod._hs_sim_guides(handle) >> 2;
+    let guides: Float32Array;
+    if (into && into.length === floats) {
+      into.set(mod.HEAPF32.subarray(p, p + floats));
+      guides = into;
+    } else guides = mod.HEAPF32.slice(p, p + floats);
     const pose = withScratch(mod, 48, (ptr) => {
       mod._hs_sim_pose(handle, ptr);
       return mod.HEAPF32.slice(ptr >> 2, (ptr >> 2) + 12);
     });
-    return { frame: mod._hs_sim_frame(handle), points, pose };
+    return { frame: mod._hs_sim_frame(handle), guides, pose };
   };
   return {
-    guides: mod._hs_sim_guide_count(handle),
+    binding,
     step(into?: Float32Array): MotionFrame {
       this.advance();
       return read(into);

@@ -3,23 +3,25 @@
 // and occlusion per point), blended order-independently (hairOit.ts); 'high' = camera-facing
 // tapered strips with alpha-to-coverage (where the canvas is multisampled, else weighted blended
 // order-independent transparency: hairOit.ts) and deep opacity maps for the key light's shadow.
-// Hair that is not final (a stroke's previews, a motion's frames) is drawn as Fast draws it in
-// either quality. Materials are shared across revisions (a new material would compile its
+// Hair that is not final (a stroke's previews) is drawn as Fast draws it in either quality; a
+// motion moves the hair shown in its vertex shader (strandFollowing.ts). Materials are shared across revisions (a new material would compile its
 // shader again). The head receives the hair's shadow (per-vertex transmittance,
 // headMaterial.ts).
 import * as THREE from 'three';
 import type { GrowthParams } from '../model/growthParams';
+import type { FollowerAttributes } from '../model/guideFollowers';
 import type { HairLightingArrays, StrandArrays } from '../model/hairArrays';
 import { type HairLook, rootColor } from '../model/hairLook';
 import { DEFAULT_HAIR_COLOR } from '../model/session';
 import { buildCardsObject } from './cardsView';
 import { DeepOpacityMaps } from './deepOpacity';
+import { readFollowedVertices } from './followerProbe';
 import { WeightedBlendedHair } from './hairOit';
 import { setHeadHairShadow, setHeadHairUnder } from './headMaterial';
 import type { LineAttributes } from './strandAttributes';
+import { attachFollowers, GuideTextures, unbindFollowers } from './strandFollowing';
 import { buildStrandGeometry, buildStrandStripGeometry } from './strandGeometry';
 import { createStrandMaterial, type StrandMaterial, setHairLook } from './strandMaterial';
-import { updateStrandPositions } from './strandPositions';
 import { representedWidth } from './strandWidth';
 import type { Viewer } from './viewer';
 
@@ -52,6 +54,13 @@ export class HairView {
   /** The lines' (undefined: not made yet; null: unsorted, no half-float targets here). */
   private linesOit: WeightedBlendedHair | null | undefined;
   private domDirty = false;
+  /** The motion the hair shown follows (null: none): its attributes, guide textures and the
+   *  pose of the last frame (null before the first). */
+  private following: {
+    attrs: FollowerAttributes;
+    textures: GuideTextures;
+    pose: Float32Array | null;
+  } | null = null;
   /** Lighting precompute time of the hair shown (ms, in the worker), null without one. */
   lightingMs: number | null = null;
 
@@ -90,18 +99,61 @@ export class HairView {
     this.viewer.setHair(hair);
   }
 
-  /** Moves the strands on screen to `strands.points` (a motion frame: the same strand layout as
-   *  the hair shown, new points) without rebuilding: the position and tangent attributes are
-   *  written in place (strandPositions.ts), colours and lighting stay. False when the hair shown
-   *  is not strands of this layout (cards, another groom): call show instead. */
-  showPositions(strands: StrandArrays): boolean {
-    const c = this.current;
-    if (!c || this.cardsShown) return false;
-    if (!updateStrandPositions(this.object, strands.points, strands.strandStart)) return false;
-    this.current = { ...c, strands };
-    this.domDirty = this.dom !== null && this.object instanceof THREE.Mesh;
-    this.viewer.requestRender();
+  /** Draws the hair shown riding a motion's guides (strandFollowing.ts): `attrs` bind its
+   *  points to them, frames come through followFrame. False (nothing done) when the hair shown is
+   *  not strands of these points (cards, another groom): the caller draws the motion itself. The
+   *  hair is drawn whole in every frame while it follows (Viewer.drawWhole). */
+  follow(binding: { guideCount: number; guidePoints: number }, attrs: FollowerAttributes): boolean {
+    this.unfollow();
+    const o = this.object;
+    if (!this.current || this.cardsShown || !o || !attachFollowers(o, attrs)) return false;
+    this.following = {
+      attrs,
+      textures: new GuideTextures(binding.guideCount, binding.guidePoints),
+      pose: null,
+    };
+    this.viewer.drawWhole('motion', true);
     return true;
+  }
+
+  /** A frame of the motion followed: the guides now (3 * (guide * G + point) + axis) and the
+   *  head's pose (pose[0..8] rotation row-major, pose[9..11] translation). */
+  followFrame(guides: Float32Array, pose: Float32Array): void {
+    const f = this.following;
+    if (!f) return;
+    f.textures.update(guides);
+    f.pose = pose;
+    for (const m of [this.lines, this.strips]) if (m) f.textures.bind(m.uniforms, pose);
+    this.viewer.requestRender();
+  }
+
+  /** Whether the hair shown rides a motion's guides. */
+  get followingGuides(): boolean {
+    return this.following?.pose != null;
+  }
+
+  /** Test probe: where the strand shader puts each vertex of the hair shown now (3 floats a
+   *  vertex: lines one a point, strips two), null when not following or not readable. */
+  readFollowed(): Float32Array | null {
+    const o = this.object;
+    if (!this.following || !o || !(o.material instanceof THREE.ShaderMaterial)) return null;
+    return readFollowedVertices(
+      this.viewer.renderer,
+      o.geometry as THREE.BufferGeometry,
+      (o.material as StrandMaterial).uniforms,
+    );
+  }
+
+  /** The hair drawn as groomed again (its geometry's positions were never changed). */
+  unfollow(): void {
+    const f = this.following;
+    if (!f) return;
+    this.following = null;
+    for (const m of [this.lines, this.strips]) if (m) unbindFollowers(m.uniforms);
+    if (this.object) this.object.frustumCulled = true;
+    f.textures.dispose();
+    this.viewer.drawWhole('motion', false);
+    this.viewer.requestRender();
   }
 
   /** The drawing path: rebuilds the shown hair when it changes. */
@@ -165,6 +217,10 @@ export class HairView {
   private build(): THREE.Object3D {
     const o = this.buildHair();
     this.onCards?.(this.cardsShown);
+    // a new object for the same strands while a motion plays (Quality): it follows too
+    const f = this.following;
+    if (f && !this.cardsShown && (o instanceof THREE.Mesh || o instanceof THREE.LineSegments))
+      attachFollowers(o, f.attrs);
     return o;
   }
 

@@ -70,6 +70,23 @@ function setPointAttributes(
   geometry.setAttribute('lighting', new THREE.BufferAttribute(attrs.light, 2, true));
 }
 
+/** Each point's `size` values twice, for a strip's two sides (vertices 2i and 2i + 1 are point
+ *  i's), over its first `count` points. */
+export function bothSides<T extends Int8Array | Uint8Array | Float32Array>(
+  src: T,
+  size: number,
+  count = src.length / size,
+): T {
+  const out = new (src.constructor as { new (n: number): T })(2 * src.length);
+  for (let i = 0; i < count; i++)
+    for (let c = 0; c < size; c++) {
+      const v = src[size * i + c];
+      out[2 * size * i + c] = v;
+      out[2 * size * i + size + c] = v;
+    }
+  return out;
+}
+
 /** Strip geometry for the same strands: point i becomes vertices 2i and 2i + 1 (the two sides,
  *  by gl_VertexID parity; same attributes as buildStrandGeometry, each twice) and each segment
  *  two triangles. The index lists strands in the same level-of-detail order, with
@@ -83,16 +100,8 @@ export function buildStrandStripGeometry(
 ): THREE.BufferGeometry {
   const attrs = prebuilt ?? pointAttributes(points, strandStart, colorSeed, lighting);
   const { pointCount } = attrs;
-  const twice = <T extends Int8Array | Uint8Array | Float32Array>(src: T, size: number): T => {
-    const out = new (src.constructor as { new (n: number): T })(2 * src.length);
-    for (let i = 0; i < pointCount; i++)
-      for (let c = 0; c < size; c++) {
-        const v = src[size * i + c];
-        out[2 * size * i + c] = v;
-        out[2 * size * i + size + c] = v;
-      }
-    return out;
-  };
+  const twice = <T extends Int8Array | Uint8Array | Float32Array>(src: T, size: number): T =>
+    bothSides(src, size, pointCount);
   // vertices 2i, 2i + 1 are point i's two sides: two triangles per segment
   const { index, lodCounts } = lodIndex(strandStart, [0, 1, 2, 1, 3, 2], 2);
   const geometry = new THREE.BufferGeometry();

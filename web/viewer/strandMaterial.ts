@@ -9,6 +9,7 @@ import * as THREE from 'three';
 import { FILL_LIGHT_DIRECTION, KEY_LIGHT_DIRECTION } from '../lighting/keyLight';
 import { type HairLook, lookUniforms } from '../model/hairLook';
 import { DEFAULT_HAIR_COLOR } from '../model/session';
+import { type FollowerUniforms, followerUniforms } from './followerGlsl';
 import {
   linesFragmentShader,
   linesVertexShader,
@@ -33,7 +34,7 @@ export interface StrandMaterialOptions {
 }
 
 /** Uniform names of the strand material (all `{ value }` objects, settable at any time). */
-export interface StrandUniforms {
+export interface StrandUniforms extends FollowerUniforms {
   [name: string]: THREE.IUniform;
   rootSigma: THREE.IUniform<THREE.Vector3>;
   tipSigma: THREE.IUniform<THREE.Vector3>;
@@ -94,6 +95,7 @@ export function createStrandMaterial(options: StrandMaterialOptions = {}): Stran
     strandWidth: { value: representedWidth(30_000) }, // set per draw
     tipWidth: { value: 0.25 },
     viewportHeight: { value: 750 },
+    ...followerUniforms(),
   };
   const defines: Record<string, string> = {};
   if (options.deepOpacity) defines.DEEP_OPACITY = '';

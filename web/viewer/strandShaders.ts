@@ -5,15 +5,18 @@
 // `lighting` attribute) or, in High, the deep opacity maps; a fill light from behind and a sky
 // ambient on the base colour, both scaled by the occlusion; root darkening on top. Colour:
 // absorption σa (model/hairLook.ts) spread per strand by four seeded random bytes. The tips taper
-// and fade; strands are blended order-independently (hairOit.ts). The material that uses them:
-// strandMaterial.ts.
+// and fade; strands are blended order-independently (hairOit.ts). While a motion plays the
+// vertex shaders place each point on its guide first (followerGlsl.ts). The material that uses
+// them: strandMaterial.ts.
 import { DOM_LAYERED_OPACITY_GLSL } from './deepOpacityGlsl';
+import { FOLLOWER_GLSL } from './followerGlsl';
 import { HAIR_BSDF_GLSL } from './hairBsdf';
 import { OIT_FRAGMENT_GLSL } from './hairOit';
 import { TIP_DISTANCE_RANGE } from './strandAttributes';
 import { WIDTH_HASH, WIDTH_HASH_SCALE } from './strandWidth';
 
 const commonVertex = /* glsl */ `
+${FOLLOWER_GLSL}
 attribute vec3 tangent;
 attribute vec2 along; // x: 0 root … 1 tip (by point); y: distance from the tip, encoded
 attribute vec4 strandRandom;
@@ -173,8 +176,11 @@ varying vec3 vColor;
 varying float vFadeStart; // vCoverage: commonVertex's
 varying float vDistance; // from the camera (the order-independent pass's weight)
 void main() {
-  vec4 world = modelMatrix * vec4(position, 1.0);
-  vec3 T = normalize(mat3(modelMatrix) * tangent);
+  vec3 P = position;
+  vec3 T0 = tangent;
+  if (followGuides > 0.5) followGuide(P, T0); // a motion playing (followerGlsl.ts)
+  vec4 world = modelMatrix * vec4(P, 1.0);
+  vec3 T = normalize(mat3(modelMatrix) * T0);
   vAlong = vec2(along.x, tipDistanceOf(along.y));
 #ifdef HAIR_FRONT
   vColor = vec3(0.0); // the front pass needs the distance only (hairOit.ts)
@@ -232,8 +238,11 @@ uniform float domPixelSize; // world units per map texel
 #endif
 
 void main() {
-  vec4 world = modelMatrix * vec4(position, 1.0);
-  vec3 T = normalize(mat3(modelMatrix) * tangent);
+  vec3 P = position;
+  vec3 T0 = tangent;
+  if (followGuides > 0.5) followGuide(P, T0); // a motion playing (followerGlsl.ts)
+  vec4 world = modelMatrix * vec4(P, 1.0);
+  vec3 T = normalize(mat3(modelMatrix) * T0);
 #ifdef DOM_PASS
   vec3 V = domViewDirection;
   float pixel = domPixelSize;

@@ -65,6 +65,9 @@ export class Viewer {
   readonly rendererName: string;
   /** Reasons the view is interactive now (e.g. 'orbit', 'stroke', 'settling'). */
   private readonly holds = new Set<string>();
+  /** Reasons every frame draws all of the hair (a motion playing: it moves in every frame, and a
+   *  sample of it looks thin), whatever holds. */
+  private readonly whole = new Set<string>();
   private readonly detail: HairLevelOfDetail;
   private readonly layers: LayeredDrawing;
   /** The scene's layers as drawLayers draws them (layeredDrawing.ts). */
@@ -167,7 +170,7 @@ export class Viewer {
     this.rig.stepViewAnimation(now);
     for (const hook of this.frameHooks) hook();
     if (this.dirty) {
-      this.dirty = !this.renderFrame(now, this.holds.size > 0 ? 'interactive' : 'settled');
+      this.dirty = !this.renderFrame(now, this.frameMode());
     } else if (this.fullDetailOwed && this.holds.size === 0 && this.fullDetailWait-- <= 0) {
       this.renderFullInSlices(now);
     }
@@ -280,12 +283,7 @@ export class Viewer {
   } {
     const { all, interactive } = this.detail.counts(this.hair);
     const keys = this.layers.keys();
-    let plan = this.layers.plan(
-      this.holds.size > 0 ? 'interactive' : 'settled',
-      all,
-      interactive,
-      keys,
-    );
+    let plan = this.layers.plan(this.frameMode(), all, interactive, keys);
     if (from === 'static' && plan.source === 'hair')
       plan = { ...plan, source: this.layers.staticValid(keys) ? 'static' : 'none' };
     const size = this.renderer.getDrawingBufferSize(new THREE.Vector2());
@@ -360,6 +358,18 @@ export class Viewer {
   /** Why the view is interactive (hair drawn at interactive detail): the reasons held. */
   get heldFor(): string[] {
     return [...this.holds];
+  }
+
+  /** Every frame draws all of the hair while `reason` holds (drawWhole(reason, false) ends it). */
+  drawWhole(reason: string, on: boolean): void {
+    if (on) this.whole.add(reason);
+    else this.whole.delete(reason);
+    this.requestRender();
+  }
+
+  private frameMode(): FrameMode {
+    if (this.whole.size > 0) return 'full';
+    return this.holds.size > 0 ? 'interactive' : 'settled';
   }
 
   /** Marks the view interactive for `reason` (or not): hair is drawn at interactive detail

@@ -21,7 +21,19 @@ const scope = self as unknown as {
 const post = (msg: FromWorker): void => {
   if (msg.type === 'result') scope.postMessage(msg, resultTransferables(msg));
   else if (msg.type === 'motionFrame')
-    scope.postMessage(msg, [msg.points.buffer as ArrayBuffer, msg.pose.buffer as ArrayBuffer]);
+    scope.postMessage(msg, [msg.guides.buffer as ArrayBuffer, msg.pose.buffer as ArrayBuffer]);
+  else if (msg.type === 'motionBound')
+    scope.postMessage(
+      msg,
+      [
+        msg.binding.guideRest,
+        msg.binding.guideOf,
+        msg.binding.along,
+        msg.attributes.follow,
+        msg.attributes.offset,
+        msg.attributes.tangent,
+      ].map((a) => a.buffer as ArrayBuffer),
+    );
   else scope.postMessage(msg);
 };
 

@@ -12,6 +12,7 @@
 // 'scalpMask' and 'grid' set up the engine at once (no restart; a refusal is reported with id
 // null and the old setup stays).
 import { ResultLighting } from '../lighting/resultLighting';
+import { followerAttributes } from '../model/guideFollowers';
 import type { GridSpec } from '../model/hairArrays';
 import { everyOtherPoint } from '../model/strandSubsample';
 import {
@@ -128,8 +129,9 @@ export class WorkerLogic {
     return this.running ? Promise.resolve() : this.run();
   }
 
-  /** The motion playing (motionStart .. motionStop). */
+  /** The motion playing (motionStart .. motionStop), and its play id. */
   private motion: MotionRun | null = null;
+  private play = 0;
   /** Frame arrays the page has drawn and given back (motionStep.recycle). */
   private motionSpare: Float32Array[] = [];
 
@@ -150,6 +152,7 @@ export class WorkerLogic {
         this.motion?.dispose();
         this.motion = null;
         this.motionSpare = [];
+        this.play = msg.play;
         if (!this.setup) fail('the solver is not initialised');
         else {
           this.motion = this.engine.startMotion(msg.strands, {
@@ -158,16 +161,27 @@ export class WorkerLogic {
             body: msg.body,
             ...(msg.wind ? { wind: msg.wind } : {}),
           });
-          this.post({ type: 'motionFrame', ...this.motion.step() });
+          const { binding } = this.motion;
+          this.post({
+            type: 'motionBound',
+            play: this.play,
+            binding,
+            attributes: followerAttributes(msg.strands.points, msg.strands.strandStart, binding),
+          });
+          this.post({ type: 'motionFrame', play: this.play, ...this.motion.step() });
         }
         return;
       }
       if (msg.recycle) this.motionSpare.push(...msg.recycle);
       if (!this.motion) return; // stopped meanwhile
       for (let k = 1; k < Math.max(1, Math.floor(msg.frames)); k++) this.motion.advance();
-      // the points go into an array the page gave back (transferred both ways: no allocation
+      // the guides go into an array the page gave back (transferred both ways: no allocation
       // a frame once a few are in circulation)
-      this.post({ type: 'motionFrame', ...this.motion.step(this.motionSpare.pop()) });
+      this.post({
+        type: 'motionFrame',
+        play: this.play,
+        ...this.motion.step(this.motionSpare.pop()),
+      });
     } catch (e) {
       fail(errorMessage(e));
     }
