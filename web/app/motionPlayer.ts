@@ -124,8 +124,13 @@ export class MotionPlayer {
     return last.strands;
   }
 
+  /** Every how many points each strand is drawn while playing (HairView.followStride). */
+  get pointStride(): number {
+    return this.d.hairView.followStride;
+  }
+
   /** Test probe: the strand shader's placement of the last frame read back from the GPU
-   *  (followerProbe.ts) against the CPU reference (drawn): the points compared, the largest
+   *  (followerProbe.ts) against the CPU reference (drawn): the vertices compared, the largest
    *  distance between the two and the largest distance the reference moved a point from its
    *  groom (world units); null while nothing follows on the GPU. */
   checkFollowers(): { points: number; maxDifference: number; maxMoved: number } | null {
@@ -135,27 +140,25 @@ export class MotionPlayer {
     const ref = this.drawn?.points;
     if (!gpu || !ref) return null;
     const groom = base.strands.points;
-    const points = ref.length / 3;
-    const per = gpu.length / 3 / points; // vertices a point: lines 1, strips 2
+    const { placed, pointOf } = gpu;
     let maxDifference = 0;
     let maxMoved = 0;
-    for (let i = 0; i < points; i++) {
-      for (let side = 0; side < per; side++) {
-        const v = 3 * (per * i + side);
-        maxDifference = Math.max(
-          maxDifference,
-          Math.hypot(gpu[v] - ref[3 * i], gpu[v + 1] - ref[3 * i + 1], gpu[v + 2] - ref[3 * i + 2]),
-        );
-      }
-      maxMoved = Math.max(
-        maxMoved,
+    for (let v = 0; v < pointOf.length; v++) {
+      const p = 3 * pointOf[v];
+      maxDifference = Math.max(
+        maxDifference,
         Math.hypot(
-          ref[3 * i] - groom[3 * i],
-          ref[3 * i + 1] - groom[3 * i + 1],
-          ref[3 * i + 2] - groom[3 * i + 2],
+          placed[3 * v] - ref[p],
+          placed[3 * v + 1] - ref[p + 1],
+          placed[3 * v + 2] - ref[p + 2],
         ),
       );
+      maxMoved = Math.max(
+        maxMoved,
+        Math.hypot(ref[p] - groom[p], ref[p + 1] - groom[p + 1], ref[p + 2] - groom[p + 2]),
+      );
     }
+    const points = pointOf.length;
     return { points, maxDifference, maxMoved };
   }
 

@@ -97,6 +97,9 @@ export interface HairsketchTestApi {
     drawnStrands: number;
     workerMs: number;
     buildMs: number;
+    /** Every how many points each strand is drawn while playing (1: all of them; more where a
+     *  frame cannot draw them all: a software rasteriser). */
+    pointStride: number;
     /** Frames of this play drawn by rebuilding the geometry (the Cards view: the strands placed
      *  on the CPU); 0 while the strand shader places them. */
     rebuilds: number;
@@ -247,6 +250,7 @@ export interface TestApiParts {
     fps: number;
     times: { workerMs: number; buildMs: number; rebuilds: number };
     checkFollowers(): { points: number; maxDifference: number; maxMoved: number } | null;
+    readonly pointStride: number;
   };
 }
 
@@ -346,6 +350,7 @@ export function installTestApi(app: TestApiParts): void {
         workerMs: app.motion?.times.workerMs ?? 0,
         buildMs: app.motion?.times.buildMs ?? 0,
         rebuilds: app.motion?.times.rebuilds ?? 0,
+        pointStride: app.motion?.playing ? app.motion.pointStride : 1,
         // at rest their matrix is the identity (1 on the diagonal: every fifth element)
         overlaysPosed: viewer.headOverlays.some((g) =>
           g.matrix.elements.some((v, i) => v !== (i % 5 === 0 ? 1 : 0)),

@@ -28,6 +28,11 @@ const SOFTWARE_INITIAL_BUDGET = 2 * MIN_HAIR_BUDGET;
  *  counts of growing prefixes, the last one all of it) and `strands`. */
 export type DrawnHair = THREE.LineSegments | THREE.Mesh | null;
 
+/** A playing motion's frame may draw this many times an interactive frame's hair (about 160 ms
+ *  a frame where the budget holds), every strand with every MAX_MOTION_STRIDE-th point at most. */
+const MOTION_BUDGET_FACTOR = 8;
+export const MAX_MOTION_STRIDE = 8;
+
 export class HairLevelOfDetail {
   /** Hair index count an interactive frame may draw (until a slow frame is seen: Infinity on a
    *  GPU, SOFTWARE_INITIAL_BUDGET on a software rasteriser). */
@@ -42,6 +47,16 @@ export class HairLevelOfDetail {
     const lod = hair?.geometry.userData.lodCounts as Uint32Array | undefined;
     const all = lod ? lod[lod.length - 1] : 0;
     return all > 0 ? Math.min(1, this.budget / all) : 1;
+  }
+
+  /** Every how many points a playing motion draws each strand of `hair` (every strand is drawn
+   *  in every frame, with fewer points where the budget is short: 1 on a GPU). */
+  motionStride(hair: DrawnHair): number {
+    const lod = hair?.geometry.userData.lodCounts as Uint32Array | undefined;
+    const all = lod ? lod[lod.length - 1] : 0;
+    if (!Number.isFinite(this.budget) || all <= 0) return 1;
+    const k = Math.ceil(all / (this.budget * MOTION_BUDGET_FACTOR));
+    return Math.min(MAX_MOTION_STRIDE, Math.max(1, k));
   }
 
   /** Index counts of `hair`: all of it, and the prefix an interactive frame draws. */

@@ -19,7 +19,7 @@ import { readFollowedVertices } from './followerProbe';
 import { WeightedBlendedHair } from './hairOit';
 import { setHeadHairShadow, setHeadHairUnder } from './headMaterial';
 import type { LineAttributes } from './strandAttributes';
-import { attachFollowers, GuideTextures, unbindFollowers } from './strandFollowing';
+import { attachFollowers, GuideTextures, thinForMotion, unbindFollowers } from './strandFollowing';
 import { buildStrandGeometry, buildStrandStripGeometry } from './strandGeometry';
 import { createStrandMaterial, type StrandMaterial, setHairLook } from './strandMaterial';
 import { representedWidth } from './strandWidth';
@@ -60,6 +60,9 @@ export class HairView {
     attrs: FollowerAttributes;
     textures: GuideTextures;
     pose: Float32Array | null;
+    /** Every how many points each strand is drawn (1: all), and what puts the object back. */
+    stride: number;
+    restore: (() => void) | null;
   } | null = null;
   /** Lighting precompute time of the hair shown (ms, in the worker), null without one. */
   lightingMs: number | null = null;
@@ -106,14 +109,37 @@ export class HairView {
   follow(binding: { guideCount: number; guidePoints: number }, attrs: FollowerAttributes): boolean {
     this.unfollow();
     const o = this.object;
-    if (!this.current || this.cardsShown || !o || !attachFollowers(o, attrs)) return false;
+    const c = this.current;
+    if (!c || this.cardsShown || !o) return false;
+    const stride = this.viewer.motionPointStride();
+    const restore = this.followWith(o, c.strands.strandStart, attrs, stride);
+    if (restore === null) return false;
     this.following = {
       attrs,
       textures: new GuideTextures(binding.guideCount, binding.guidePoints),
       pose: null,
+      stride,
+      restore,
     };
     this.viewer.drawWhole('motion', true);
     return true;
+  }
+
+  /** Makes `o` follow: its own geometry (stride 1) or one of every few points (thinForMotion);
+   *  null when its vertices are not the points of `attrs`. */
+  private followWith(
+    o: THREE.Mesh | THREE.LineSegments,
+    strandStart: Uint32Array,
+    attrs: FollowerAttributes,
+    stride: number,
+  ): (() => void) | null {
+    if (stride > 1) return thinForMotion(o, strandStart, attrs, stride);
+    return attachFollowers(o, attrs) ? () => {} : null;
+  }
+
+  /** Every how many points the strands are drawn while following (1: all). */
+  get followStride(): number {
+    return this.following?.stride ?? 1;
   }
 
   /** A frame of the motion followed: the guides now (3 * (guide * G + point) + axis) and the
@@ -133,15 +159,27 @@ export class HairView {
   }
 
   /** Test probe: where the strand shader puts each vertex of the hair shown now (3 floats a
-   *  vertex: lines one a point, strips two), null when not following or not readable. */
-  readFollowed(): Float32Array | null {
+   *  vertex) and the strands' point each vertex is (lines: one vertex a point, strips two; while
+   *  a motion draws every few points, those points only); null when not following or not
+   *  readable. */
+  readFollowed(): { placed: Float32Array; pointOf: Uint32Array } | null {
     const o = this.object;
     if (!this.following || !o || !(o.material instanceof THREE.ShaderMaterial)) return null;
-    return readFollowedVertices(
+    const g = o.geometry as THREE.BufferGeometry;
+    const placed = readFollowedVertices(
       this.viewer.renderer,
-      o.geometry as THREE.BufferGeometry,
+      g,
       (o.material as StrandMaterial).uniforms,
     );
+    if (!placed) return null;
+    const per = o instanceof THREE.Mesh ? 2 : 1;
+    const points = g.userData.motionPoints as Uint32Array | undefined;
+    const pointOf = new Uint32Array(placed.length / 3);
+    for (let v = 0; v < pointOf.length; v++) {
+      const i = Math.floor(v / per);
+      pointOf[v] = points ? points[i] : i;
+    }
+    return { placed, pointOf };
   }
 
   /** The hair drawn as groomed again (its geometry's positions were never changed). */
@@ -149,6 +187,7 @@ export class HairView {
     const f = this.following;
     if (!f) return;
     this.following = null;
+    f.restore?.();
     for (const m of [this.lines, this.strips]) if (m) unbindFollowers(m.uniforms);
     if (this.object) this.object.frustumCulled = true;
     f.textures.dispose();
@@ -219,8 +258,15 @@ export class HairView {
     this.onCards?.(this.cardsShown);
     // a new object for the same strands while a motion plays (Quality): it follows too
     const f = this.following;
-    if (f && !this.cardsShown && (o instanceof THREE.Mesh || o instanceof THREE.LineSegments))
-      attachFollowers(o, f.attrs);
+    const start = this.current?.strands.strandStart;
+    if (
+      f &&
+      start &&
+      !this.cardsShown &&
+      (o instanceof THREE.Mesh || o instanceof THREE.LineSegments)
+    ) {
+      f.restore = this.followWith(o, start, f.attrs, f.stride);
+    }
     return o;
   }
 

@@ -1,44 +1,139 @@
 // A motion drawn on the hair shown without moving a vertex on the CPU: the followers' attributes
 // (model/guideFollowers.ts followerAttributes) go on the strand geometry once, each frame the
 // guides' points and tangents go into two float textures and the head's pose into uniforms, and
-// the strand shader places every point (followerGlsl.ts). The geometry's positions stay the
-// groom's, so the groom is back bit for bit the moment following stops.
+// the strand shader places every point (followerGlsl.ts). The groom's geometry keeps its
+// positions, so the groom is back bit for bit the moment following stops. Where a frame cannot
+// draw every point (a software rasteriser), a geometry of every few points of every strand
+// stands in for it while the motion plays (thinForMotion).
 import * as THREE from 'three';
 import { type FollowerAttributes, guideTangents } from '../model/guideFollowers';
 import { type FollowerUniforms, GUIDES_PER_ROW } from './followerGlsl';
-import { bothSides } from './strandGeometry';
+import { lodIndex } from './strandAttributes';
+import { STRIP_SEGMENT } from './strandGeometry';
 
 /** The hair objects the strand builders make: lines (one vertex a point) or strips (two). */
 type StrandObject = THREE.LineSegments | THREE.Mesh;
+
+/** Vertices a point of `object` has for these attributes' points: lines 1, strips 2; 0 when its
+ *  vertices are not these points. */
+function verticesPerPoint(object: StrandObject, attrs: FollowerAttributes): number {
+  const points = attrs.follow.length / 2;
+  const vertices = object.geometry.getAttribute('position')?.count ?? -1;
+  return vertices === points ? 1 : vertices === 2 * points ? 2 : 0;
+}
+
+/** `size` values an item of `src` for the points `points` (all when null), each `per` times. */
+function pick<T extends Float32Array | Int8Array | Uint8Array | Uint32Array>(
+  src: T,
+  size: number,
+  per: number,
+  points: Uint32Array | null,
+): T {
+  if (!points && per === 1) return src;
+  const n = points ? points.length : src.length / size;
+  const out = new (src.constructor as { new (n: number): T })(per * size * n);
+  for (let i = 0; i < n; i++) {
+    const from = (points ? points[i] : i) * size;
+    for (let side = 0; side < per; side++)
+      for (let c = 0; c < size; c++) out[(per * i + side) * size + c] = src[from + c];
+  }
+  return out;
+}
+
+/** The followers' vertex attributes, `per` vertices a point, over `points` (null: all). */
+function followerVertexAttributes(
+  attrs: FollowerAttributes,
+  per: number,
+  points: Uint32Array | null,
+): [string, THREE.BufferAttribute][] {
+  return [
+    ['follow', new THREE.BufferAttribute(pick(attrs.follow, 2, per, points), 2)],
+    ['followOffset', new THREE.BufferAttribute(pick(attrs.offset, 3, per, points), 3)],
+    ['followTangent', new THREE.BufferAttribute(pick(attrs.tangent, 3, per, points), 3, true)],
+  ];
+}
 
 /** Puts the followers' attributes on a strand object's geometry (false: its vertices are not
  *  these points, once or twice each; nothing done). The object is no longer culled by its
  *  groomed bounds (the hair moves past them). */
 export function attachFollowers(object: StrandObject, attrs: FollowerAttributes): boolean {
-  const g = object.geometry as THREE.BufferGeometry;
-  const points = attrs.follow.length / 2;
-  const vertices = g.getAttribute('position')?.count ?? -1;
-  const per = vertices === points ? 1 : vertices === 2 * points ? 2 : 0;
+  const per = verticesPerPoint(object, attrs);
   if (per === 0) return false;
-  const set = (
-    name: string,
-    array: Float32Array | Int8Array,
-    size: number,
-    normalized: boolean,
-  ) => {
-    const data = per === 1 ? array : bothSides(array, size);
+  const g = object.geometry as THREE.BufferGeometry;
+  for (const [name, a] of followerVertexAttributes(attrs, per, null)) {
     const old = g.getAttribute(name);
     // the same buffer again when the geometry had one (a geometry's GL buffers are freed with it)
-    if (old instanceof THREE.BufferAttribute && old.array.length === data.length) {
-      old.array = data;
+    if (old instanceof THREE.BufferAttribute && old.array.length === a.array.length) {
+      old.array = a.array;
       old.needsUpdate = true;
-    } else g.setAttribute(name, new THREE.BufferAttribute(data, size, normalized));
-  };
-  set('follow', attrs.follow, 2, false);
-  set('followOffset', attrs.offset, 3, false);
-  set('followTangent', attrs.tangent, 3, true);
+    } else g.setAttribute(name, a);
+  }
   object.frustumCulled = false;
   return true;
+}
+
+/** Every `stride`-th point of each strand and its tip: the points, and where each strand's
+ *  start in them. */
+function everyFewPoints(
+  strandStart: Uint32Array,
+  stride: number,
+): { points: Uint32Array; start: Uint32Array } {
+  const strands = Math.max(0, strandStart.length - 1);
+  const start = new Uint32Array(strands + 1);
+  let n = 0;
+  for (let s = 0; s < strands; s++) {
+    const len = strandStart[s + 1] - strandStart[s];
+    n += len > 0 ? Math.ceil((len - 1) / stride) + 1 : 0;
+    start[s + 1] = n;
+  }
+  const points = new Uint32Array(n);
+  let w = 0;
+  for (let s = 0; s < strands; s++) {
+    const last = strandStart[s + 1] - 1;
+    if (last < strandStart[s]) continue;
+    for (let i = strandStart[s]; i < last; i += stride) points[w++] = i;
+    points[w++] = last;
+  }
+  return { points, start };
+}
+
+/** Draws a strand object with every `stride`-th point of each strand and its tip, blended
+ *  unsorted (a motion on a slow renderer: every strand, fewer segments, one pass), following
+ *  its guides: a geometry of those points only stands in for the object's own (a software
+ *  rasteriser's cost follows the vertex buffers' length, not only the segments drawn) until
+ *  the returned function puts it back. Null (nothing done) when the object's vertices are not
+ *  the points of `attrs`. */
+export function thinForMotion(
+  object: StrandObject,
+  strandStart: Uint32Array,
+  attrs: FollowerAttributes,
+  stride: number,
+): (() => void) | null {
+  const per = verticesPerPoint(object, attrs);
+  if (per === 0) return null;
+  const g = object.geometry as THREE.BufferGeometry;
+  const { points, start } = everyFewPoints(strandStart, stride);
+  const thin = new THREE.BufferGeometry();
+  for (const [name, a] of Object.entries(g.attributes)) {
+    if (!(a instanceof THREE.BufferAttribute) || name.startsWith('follow')) continue;
+    const array = pick(a.array as Float32Array, a.itemSize, per, points);
+    thin.setAttribute(name, new THREE.BufferAttribute(array, a.itemSize, a.normalized));
+  }
+  for (const [name, a] of followerVertexAttributes(attrs, per, points)) thin.setAttribute(name, a);
+  const made = lodIndex(start, per === 2 ? STRIP_SEGMENT : [0, 1], per);
+  thin.setIndex(new THREE.BufferAttribute(made.index, 1));
+  thin.userData.lodCounts = made.lodCounts;
+  thin.userData.strands = g.userData.strands;
+  thin.userData.motionPoints = points; // the point each pair (strips) or vertex (lines) is
+  const oit = object.userData.oit as unknown;
+  object.geometry = thin;
+  object.frustumCulled = false;
+  delete object.userData.oit;
+  return () => {
+    object.geometry = g;
+    if (oit) object.userData.oit = oit;
+    thin.dispose();
+  };
 }
 
 /** The guides as the strand shader reads them: positions and unit tangents, RGBA float

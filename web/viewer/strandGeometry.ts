@@ -70,6 +70,9 @@ function setPointAttributes(
   geometry.setAttribute('lighting', new THREE.BufferAttribute(attrs.light, 2, true));
 }
 
+/** A strip segment's two triangles over the vertices of its two points (2i, 2i + 1, 2j, 2j + 1). */
+export const STRIP_SEGMENT = [0, 1, 2, 1, 3, 2] as const;
+
 /** Each point's `size` values twice, for a strip's two sides (vertices 2i and 2i + 1 are point
  *  i's), over its first `count` points. */
 export function bothSides<T extends Int8Array | Uint8Array | Float32Array>(
@@ -103,7 +106,7 @@ export function buildStrandStripGeometry(
   const twice = <T extends Int8Array | Uint8Array | Float32Array>(src: T, size: number): T =>
     bothSides(src, size, pointCount);
   // vertices 2i, 2i + 1 are point i's two sides: two triangles per segment
-  const { index, lodCounts } = lodIndex(strandStart, [0, 1, 2, 1, 3, 2], 2);
+  const { index, lodCounts } = lodIndex(strandStart, STRIP_SEGMENT, 2);
   const geometry = new THREE.BufferGeometry();
   geometry.userData.lodCounts = lodCounts;
   geometry.userData.strands = strandCount({ points, strandStart });

@@ -360,10 +360,19 @@ export class Viewer {
     return [...this.holds];
   }
 
+  /** Every how many points a playing motion draws each strand of the hair shown
+   *  (hairLevelOfDetail.ts motionStride: 1 where frames can draw all of them). */
+  motionPointStride(): number {
+    return this.detail.motionStride(this.hair);
+  }
+
   /** Every frame draws all of the hair while `reason` holds (drawWhole(reason, false) ends it). */
   drawWhole(reason: string, on: boolean): void {
     if (on) this.whole.add(reason);
     else this.whole.delete(reason);
+    // on a software rasteriser a frame of every strand costs by the pixels its lines cover:
+    // drawn at the interactive resolution while it moves, in full once it stops
+    if (this.software) this.setResolutionScale(this.whole.size > 0 ? INTERACTIVE_RESOLUTION : 1);
     this.requestRender();
   }
 
@@ -380,7 +389,8 @@ export class Viewer {
     else this.holds.delete(reason);
     this.scheduleFrame();
     if (had !== this.holds.size > 0) {
-      if (!on) this.setResolutionScale(1); // the settled view in full resolution
+      // the settled view in full resolution (a playing motion keeps its own)
+      if (!on && this.whole.size === 0) this.setResolutionScale(1);
       this.requestRender();
     }
   }
