@@ -3,10 +3,12 @@
 // Head turn is played with a real click on Play for BENCH_MOTION_SECONDS (8) seconds, and the app's
 // own readout (window.hairsketch.motion(), docs/testing.md) gives: the time from the click to the
 // first moving frame on screen, frames drawn a second, the motion's frames advanced a second, the
-// strands drawn in the last frame against the groom's, and (medians of samples every 250 ms) the
-// worker's time for a frame (workerMs) and the page's geometry time (buildMs). Then Stop.
-// Writes bench-results/motion.json and .md (BENCH_LABEL=<label>: motion-<label>) and prints the
-// table. A benchmark, not a test: it asserts nothing about speed.
+// strands drawn in the last frame against the groom's and every how many of their points, and
+// (medians of samples every 250 ms) the page's wait for a frame (workerMs), the worker's own step
+// (stepMs) and the page's geometry time (buildMs). Then Stop. BENCH_DIST=<dir> measures another
+// build (before and after in one run). Writes bench-results/motion.json and .md
+// (BENCH_LABEL=<label>: motion-<label>) and prints the table. A benchmark, not a test: it asserts
+// nothing about speed.
 import { resolve } from 'node:path';
 import type { Page } from '@playwright/test';
 import { presetSession } from '../web/cli/presetSession';
@@ -58,6 +60,7 @@ async function playOnce(page: Page, strands: number) {
   const firstFrameMs = Date.now() - t0;
   const first = await motionOf(page);
   const worker: number[] = [];
+  const step: number[] = [];
   const build: number[] = [];
   const end = Date.now() + SECONDS * 1000;
   let last = first;
@@ -66,6 +69,8 @@ async function playOnce(page: Page, strands: number) {
     last = await motionOf(page);
     if (last.workerMs > 0) worker.push(last.workerMs);
     if (last.buildMs > 0) build.push(last.buildMs);
+    // (builds before the worker reported its own time have no stepMs)
+    if (last.stepMs > 0) step.push(last.stepMs);
   }
   const elapsed = (Date.now() - t0) / 1000;
   await page.getByRole('button', { name: 'Stop' }).click();
@@ -76,15 +81,20 @@ async function playOnce(page: Page, strands: number) {
     motionFramesPerSecond: last.frame / elapsed,
     drawnStrands: last.drawnStrands,
     workerMs: median(worker),
+    stepMs: median(step),
     buildMs: median(build),
     rebuilds: last.rebuilds,
+    pointStride: last.pointStride ?? 1,
   };
 }
 
 async function main(): Promise<void> {
   // the headless shell, as the figures in bench-results/motion.md were measured with
   process.env.CHROMIUM_PATH ??= '/usr/lib/chromium/chromium-headless-shell';
-  const { server, browser } = await previewAndBrowser(resolve('dist'), PORT);
+  const { server, browser } = await previewAndBrowser(
+    resolve(process.env.BENCH_DIST ?? 'dist'),
+    PORT,
+  );
   const rows: Awaited<ReturnType<typeof playOnce>>[] = [];
   try {
     await waitServer(BASE);
@@ -102,11 +112,11 @@ async function main(): Promise<void> {
     server.kill();
   }
   const table = [
-    '| strands | first frame after Play (ms) | frames drawn / s | motion frames / s | strands drawn | worker ms / frame | page geometry ms / frame |',
-    '| ---: | ---: | ---: | ---: | ---: | ---: | ---: |',
+    '| strands | first frame after Play (ms) | frames drawn / s | motion frames / s | strands drawn | every how many points | wait for the worker, ms / frame | worker step, ms / frame | page geometry ms / frame |',
+    '| ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |',
     ...rows.map(
       (r) =>
-        `| ${r.strands} | ${r.firstFrameMs} | ${r.framesDrawnPerSecond.toFixed(2)} | ${r.motionFramesPerSecond.toFixed(2)} | ${r.drawnStrands} | ${r.workerMs.toFixed(0)} | ${r.buildMs.toFixed(0)} |`,
+        `| ${r.strands} | ${r.firstFrameMs} | ${r.framesDrawnPerSecond.toFixed(2)} | ${r.motionFramesPerSecond.toFixed(2)} | ${r.drawnStrands} | ${r.pointStride} | ${r.workerMs.toFixed(0)} | ${Number.isNaN(r.stepMs) ? '-' : r.stepMs.toFixed(1)} | ${r.buildMs.toFixed(0)} |`,
     ),
   ].join('\n');
   console.log(table);
@@ -115,8 +125,14 @@ async function main(): Promise<void> {
     script: 'scripts/bench-motion.ts',
     command: 'npm run bench:motion',
     measures:
-      'Per strand count: ms from the click on Play to the first moving frame drawn; frames drawn a second and motion frames advanced a second over the run; the strands the last frame drew; medians of the worker ms and page geometry ms per frame sampled every 250 ms (window.hairsketch.motion()).',
-    config: { counts: COUNTS, seconds: SECONDS, preset: 'long', motion: 'head-turn' },
+      "Per strand count: ms from the click on Play to the first moving frame drawn; frames drawn a second and motion frames advanced a second over the run; the strands the last frame drew and every how many of their points; medians, sampled every 250 ms (window.hairsketch.motion()), of the page's wait for a frame from the worker, the worker's own step time and the page's geometry (or guide upload) time per frame.",
+    config: {
+      counts: COUNTS,
+      seconds: SECONDS,
+      preset: 'long',
+      motion: 'head-turn',
+      dist: process.env.BENCH_DIST ?? 'dist',
+    },
     results: rows,
     table,
   });

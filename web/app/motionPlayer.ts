@@ -75,7 +75,7 @@ export class MotionPlayer {
   private firstDrawn = 0;
   /** The last frame's wait for the worker and its geometry update on this thread (ms), and the
    *  frames of this play drawn by rebuilding the geometry. */
-  readonly times = { workerMs: 0, buildMs: 0, rebuilds: 0 };
+  readonly times = { workerMs: 0, stepMs: 0, buildMs: 0, rebuilds: 0 };
 
   constructor(private readonly d: MotionPlayerDeps) {
     d.client.onMotion = (msg) => {
@@ -91,6 +91,7 @@ export class MotionPlayer {
         this.bound = { binding: msg.binding, attrs: msg.attributes, gpu };
         return;
       }
+      this.times.stepMs = msg.stepMs;
       this.draw(msg.frame, msg.guides, msg.pose);
     };
     d.editor.listen((c) => {

@@ -96,6 +96,8 @@ export interface HairsketchTestApi {
     strands: number;
     drawnStrands: number;
     workerMs: number;
+    /** The worker's own time for the last frame: stepping the guides and reading them (ms). */
+    stepMs: number;
     buildMs: number;
     /** Every how many points each strand is drawn while playing (1: all of them; more where a
      *  frame cannot draw them all: a software rasteriser). */
@@ -248,7 +250,7 @@ export interface TestApiParts {
     playing: string | null;
     frame: number;
     fps: number;
-    times: { workerMs: number; buildMs: number; rebuilds: number };
+    times: { workerMs: number; stepMs: number; buildMs: number; rebuilds: number };
     checkFollowers(): { points: number; maxDifference: number; maxMoved: number } | null;
     readonly pointStride: number;
   };
@@ -348,6 +350,7 @@ export function installTestApi(app: TestApiParts): void {
         strands,
         drawnStrands: Math.round(viewer.hairDetail * strands),
         workerMs: app.motion?.times.workerMs ?? 0,
+        stepMs: app.motion?.times.stepMs ?? 0,
         buildMs: app.motion?.times.buildMs ?? 0,
         rebuilds: app.motion?.times.rebuilds ?? 0,
         pointStride: app.motion?.playing ? app.motion.pointStride : 1,

@@ -168,6 +168,8 @@ export type FromWorker =
       type: 'motionFrame';
       play: number;
       frame: number;
+      /** The worker's time stepping the guides to this frame and reading them (ms). */
+      stepMs: number;
       guides: Float32Array;
       pose: Float32Array;
     }

@@ -168,20 +168,18 @@ export class WorkerLogic {
             binding,
             attributes: followerAttributes(msg.strands.points, msg.strands.strandStart, binding),
           });
-          this.post({ type: 'motionFrame', play: this.play, ...this.motion.step() });
+          this.post({ type: 'motionFrame', play: this.play, stepMs: 0, ...this.motion.step() });
         }
         return;
       }
       if (msg.recycle) this.motionSpare.push(...msg.recycle);
       if (!this.motion) return; // stopped meanwhile
+      const t0 = performance.now();
       for (let k = 1; k < Math.max(1, Math.floor(msg.frames)); k++) this.motion.advance();
       // the guides go into an array the page gave back (transferred both ways: no allocation
       // a frame once a few are in circulation)
-      this.post({
-        type: 'motionFrame',
-        play: this.play,
-        ...this.motion.step(this.motionSpare.pop()),
-      });
+      const frame = this.motion.step(this.motionSpare.pop());
+      this.post({ type: 'motionFrame', play: this.play, stepMs: performance.now() - t0, ...frame });
     } catch (e) {
       fail(errorMessage(e));
     }
