@@ -151,34 +151,56 @@ test('frames per second while playing at 30K strands (printed)', async ({ page }
   await page.getByRole('button', { name: 'Stop' }).click();
 });
 
-for (const preset of ['long', 'braid']) {
-  test(`pictures: ${preset} turning, front and side`, async ({ page }) => {
+// long and braid (presets) and a high ponytail (the style library's session), turning and in
+// the wind (from the left at 8 m/s), front and side: frames 6 to 30 (SHOT_DIR; the strips in the
+// user guide are these side by side)
+const PICTURED = [
+  { name: 'long', preset: 'long' },
+  { name: 'braid', preset: 'braid' },
+  { name: 'ponytail', style: 'high-ponytail' },
+] as const;
+for (const item of PICTURED) {
+  test(`pictures: ${item.name} turning and in the wind, front and side`, async ({ page }) => {
     test.skip(!process.env.SHOT_DIR, 'pictures only with SHOT_DIR');
-    test.setTimeout(240_000);
-    await page.goto(`/?preset=${preset}&strands=8000`);
+    test.setTimeout(600_000);
+    await page.goto(`/?preset=${'preset' in item ? item.preset : 'empty'}&strands=8000`);
+    if ('style' in item) {
+      const session = await (await page.request.get(`/styles/${item.style}.json`)).json();
+      await page.evaluate((s) => window.hairsketch.replaceSession(s), session);
+    }
     await settled(page);
     const dir = process.env.SHOT_DIR;
     const cams = {
       front: [0.8, 0.2, 10.5],
       side: [10.5, 0.2, -0.4],
     } as const;
-    for (const [view, p] of Object.entries(cams)) {
-      await page.evaluate(
-        ([q, t]) =>
-          window.hairsketch.setCamera(q as [number, number, number], t as [number, number, number]),
-        [p, [0, -0.8, 0]],
-      );
-      await page.evaluate(() => window.hairsketch.idle());
-      await page.getByLabel('Motion').selectOption('head-turn');
-      await page.getByRole('button', { name: 'Play' }).click();
-      for (const f of [6, 12, 18, 24, 30]) {
-        await motionFrame(page, f);
-        const at = await page.evaluate(() => window.hairsketch.motion().frame);
-        await page
-          .getByTestId('viewport')
-          .screenshot({ path: `${dir}/${preset}-${view}-${String(at).padStart(2, '0')}.png` });
+    for (const motion of ['head-turn', 'wind'] as const) {
+      await page.getByLabel('Motion').selectOption(motion);
+      if (motion === 'wind') {
+        await page.getByLabel('Wind direction').selectOption({ label: 'from the left' });
+        await page.getByLabel('Wind speed (m/s)').fill('8');
+        await page.getByLabel('Wind speed (m/s)').press('Enter');
       }
-      await page.getByRole('button', { name: 'Stop' }).click();
+      for (const [view, p] of Object.entries(cams)) {
+        await page.evaluate(
+          ([q, t]) =>
+            window.hairsketch.setCamera(
+              q as [number, number, number],
+              t as [number, number, number],
+            ),
+          [p, [0, -0.8, 0]],
+        );
+        await page.evaluate(() => window.hairsketch.idle());
+        await page.getByRole('button', { name: 'Play' }).click();
+        for (const f of [6, 12, 18, 24, 30]) {
+          await motionFrame(page, f);
+          const at = await page.evaluate(() => window.hairsketch.motion().frame);
+          await page.getByTestId('viewport').screenshot({
+            path: `${dir}/${item.name}-${motion}-${view}-${String(at).padStart(2, '0')}.png`,
+          });
+        }
+        await page.getByRole('button', { name: 'Stop' }).click();
+      }
     }
   });
 }

@@ -263,6 +263,12 @@ export class MotionPlayer {
     // the frame drawn before is no longer read: the worker fills its array again
     if (this.last) this.spare.push(this.last.guides);
     this.last = { guides, pose, strands: null };
+    if (frame === 0 && bound.gpu) {
+      // the groom itself, on screen already: the first frame drawn is the next one
+      this.setStatus();
+      this.schedule();
+      return;
+    }
     if (bound.gpu) this.d.hairView.followFrame(guides, pose);
     else {
       const strands = this.drawn as StrandArrays;

@@ -57,7 +57,7 @@ export function guideTangents(
       const x = guides[b] - guides[a];
       const y = guides[b + 1] - guides[a + 1];
       const z = guides[b + 2] - guides[a + 2];
-      const l = Math.hypot(x, y, z);
+      const l = Math.sqrt(x * x + y * y + z * z);
       const o = 3 * (base + j);
       if (l > 1e-12) {
         out[o] = x / l;
@@ -111,7 +111,7 @@ export function followerAttributes(
       const tx = restTangents[i0] + w * (restTangents[i1] - restTangents[i0]);
       const ty = restTangents[i0 + 1] + w * (restTangents[i1 + 1] - restTangents[i0 + 1]);
       const tz = restTangents[i0 + 2] + w * (restTangents[i1 + 2] - restTangents[i0 + 2]);
-      const l = Math.hypot(tx, ty, tz) || 1;
+      const l = Math.sqrt(tx * tx + ty * ty + tz * tz) || 1;
       tangent[3 * p] = Math.round((127 * tx) / l);
       tangent[3 * p + 1] = Math.round((127 * ty) / l);
       tangent[3 * p + 2] = Math.round((127 * tz) / l);
@@ -181,7 +181,7 @@ export function placeFollowers(
     let bx = tangents[i0] + w * (tangents[i1] - tangents[i0]);
     let by = tangents[i0 + 1] + w * (tangents[i1 + 1] - tangents[i0 + 1]);
     let bz = tangents[i0 + 2] + w * (tangents[i1 + 2] - tangents[i0 + 2]);
-    const bl = Math.hypot(bx, by, bz) || 1;
+    const bl = Math.sqrt(bx * bx + by * by + bz * bz) || 1;
     bx /= bl;
     by /= bl;
     bz /= bl;
@@ -191,7 +191,7 @@ export function placeFollowers(
     let ax = r0 * qx + r1 * qy + r2 * qz;
     let ay = r3 * qx + r4 * qy + r5 * qz;
     let az = r6 * qx + r7 * qy + r8 * qz;
-    const al = Math.hypot(ax, ay, az) || 1;
+    const al = Math.sqrt(ax * ax + ay * ay + az * az) || 1;
     ax /= al;
     ay /= al;
     az /= al;

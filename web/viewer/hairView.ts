@@ -104,8 +104,9 @@ export class HairView {
 
   /** Draws the hair shown riding a motion's guides (strandFollowing.ts): `attrs` bind its
    *  points to them, frames come through followFrame. False (nothing done) when the hair shown is
-   *  not strands of these points (cards, another groom): the caller draws the motion itself. The
-   *  hair is drawn whole in every frame while it follows (Viewer.drawWhole). */
+   *  not strands of these points (cards, another groom): the caller draws the motion itself. From
+   *  the first frame on, the hair is drawn whole in every frame while it follows
+   *  (Viewer.drawWhole). */
   follow(binding: { guideCount: number; guidePoints: number }, attrs: FollowerAttributes): boolean {
     this.unfollow();
     const o = this.object;
@@ -121,7 +122,6 @@ export class HairView {
       stride,
       restore,
     };
-    this.viewer.drawWhole('motion', true);
     return true;
   }
 
@@ -148,6 +148,7 @@ export class HairView {
     const f = this.following;
     if (!f) return;
     f.textures.update(guides);
+    if (!f.pose) this.viewer.drawWhole('motion', true);
     f.pose = pose;
     for (const m of [this.lines, this.strips]) if (m) f.textures.bind(m.uniforms, pose);
     this.viewer.requestRender();
@@ -254,19 +255,18 @@ export class HairView {
   }
 
   private build(): THREE.Object3D {
+    // while a motion plays the object shown goes back to its own geometry first (the viewer
+    // disposes it with that geometry), and a new object for the same strands (Quality) follows
+    // too; new hair stops the motion (MotionPlayer)
+    const f = this.following;
+    f?.restore?.();
+    if (f) f.restore = null;
     const o = this.buildHair();
     this.onCards?.(this.cardsShown);
-    // a new object for the same strands while a motion plays (Quality): it follows too
-    const f = this.following;
     const start = this.current?.strands.strandStart;
-    if (
-      f &&
-      start &&
-      !this.cardsShown &&
-      (o instanceof THREE.Mesh || o instanceof THREE.LineSegments)
-    ) {
+    const strands = o instanceof THREE.Mesh || o instanceof THREE.LineSegments;
+    if (f && start && strands && !this.cardsShown)
       f.restore = this.followWith(o, start, f.attrs, f.stride);
-    }
     return o;
   }
 
