@@ -150,9 +150,12 @@ void StrandMotion::init(const MotionInput& in) {
         }
       }
       guideOf_[s] = best;
+      // by arc length from the root: a strand shorter than its guide rides the guide's first
+      // part, one longer rides all of it and goes on past its tip as the tip does (by fraction,
+      // a 1 cm hair on a 60 cm guide would swing 59 cm of offset about the guide's tip)
       followerArcLengths(r, n, acc);
-      const float total = acc[n - 1] > 0 ? acc[n - 1] : 1.0f;
-      for (int i = 0; i < n; ++i) along_[start[s] + i] = acc[i] / total * float(G - 1);
+      const float perPoint = float(G - 1) / std::max(gLength[size_t(best)], 1e-6f);
+      for (int i = 0; i < n; ++i) along_[start[s] + i] = std::min(acc[i] * perPoint, float(G - 1));
     }
   });
 }

@@ -20,7 +20,8 @@ namespace hairsketch {
 //     bunch and stays gathered past its tie.
 //   Binding: every other strand with two points or more is bound to the guide whose root is
 //     nearest its own (a uniform grid over the guides' roots, searched ring by ring), each of its
-//     points at its own arc-length fraction along the guide (along(), in guide points).
+//     points at its own arc length from the root along the guide (along(), in guide points), at
+//     most the guide's tip.
 // A guide strand is bound to its own resampled guide the same way.
 struct MotionInput {
   const float* points = nullptr;          // points[3 * point + axis]
@@ -48,7 +49,7 @@ class StrandMotion {
   int guideCount() const { return sim_.strandCount(); }
   // The strands simulated (their indices), each strand's guide (an index into them, or -1: fewer
   // than two points, it rides the head) and each point's place along its guide (0 .. G - 1, in
-  // guide points; 0 where the strand has no guide).
+  // guide points: its arc length from the root, at most the guide's; 0 where it has no guide).
   const std::vector<int>& guideStrands() const { return guides_; }
   const std::vector<int32_t>& guideOf() const { return guideOf_; }
   const std::vector<float>& along() const { return along_; }

@@ -76,6 +76,34 @@ test('Play with Head turn moves the strands; Stop restores them bit for bit', as
   expect(check?.points).toBeGreaterThan(1000);
   expect(check?.maxDifference).toBeLessThan(1e-3); // world units: 0.1 mm
   expect(check?.maxMoved).toBeGreaterThan(0.2); // 2 cm
+  // the strands keep their lengths: each segment of the frame against the groom's (a 1 cm hair
+  // bound to a long guide by fraction swung 83x its length; bound by arc length, 1.16x at most
+  // for 999 in 1,000 segments)
+  const stretch = await page.evaluate(() => {
+    const k = (window as unknown as { kept: ReturnType<typeof window.hairsketch.strands> }).kept;
+    const s = window.hairsketch.strands();
+    if (!k || !s) throw new Error('no hair');
+    const ratios: number[] = [];
+    for (let st = 0; st + 1 < k.strandStart.length; st++)
+      for (let i = k.strandStart[st] + 1; i < k.strandStart[st + 1]; i++) {
+        const d = (p: ArrayLike<number>, a: number) =>
+          Math.sqrt(
+            (p[3 * a] - p[3 * a - 3]) ** 2 +
+              (p[3 * a + 1] - p[3 * a - 2]) ** 2 +
+              (p[3 * a + 2] - p[3 * a - 1]) ** 2,
+          );
+        const rest = d(k.points, i);
+        if (rest > 1e-6) ratios.push(d(s.points, i) / rest);
+      }
+    ratios.sort((a, b) => a - b);
+    return {
+      p999: ratios[Math.floor(0.999 * (ratios.length - 1))],
+      max: ratios[ratios.length - 1],
+    };
+  });
+  console.log(`segment length over the groom's: ${JSON.stringify(stretch)}`);
+  expect(stretch.p999).toBeLessThan(1.5);
+  expect(stretch.max).toBeLessThan(4);
   const playing = await changedSinceKept(page);
   expect(playing.same).toBe(true);
   expect(playing.changed).toBeGreaterThan(playing.of / 4);

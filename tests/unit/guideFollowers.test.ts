@@ -1,6 +1,7 @@
 // The CPU reference of strands riding their guides (model/guideFollowers.ts), against hand values:
-// at rest every point is its groom; a guide turned rigidly carries its followers with it as a
-// rigid body would; the head's pose moves a strand with no guide exactly as the pose says.
+// at rest every point is its groom; a guide turned rigidly carries a follower near it with it as a
+// rigid body would, and one far from it without turning; the head's pose moves a strand with no
+// guide exactly as the pose says.
 import { describe, expect, it } from 'vitest';
 import {
   followerAttributes,
@@ -62,6 +63,20 @@ describe('guide followers', () => {
     expectClose(out.subarray(0, 9), [0, 0.1, 0, 1, 0.1, 0, 2, 0.1, 0], 1e-6);
     // the point with no guide rides the head, which has not moved
     expect(Array.from(out.subarray(9))).toEqual([0.5, 0.5, 0.5]);
+  });
+
+  it('a point far from its guide moves as the guide does without turning about it', () => {
+    const { binding } = hanging();
+    // 1 along x of the guide: past FOLLOW_TURN_FAR (a strand parted the other way)
+    const points = new Float32Array([1, 0, 0, 1, -1, 0, 1, -2, 0]);
+    const attrs = followerAttributes(points, new Uint32Array([0, 3]), {
+      ...binding,
+      guideOf: new Int32Array([0]),
+    });
+    const guides = new Float32Array([0, 0, 0, 1, 0, 0, 2, 0, 0]);
+    const out = placeFollowers(points, attrs, guides, 3, IDENTITY);
+    // each point is its guide point now plus its rest offset (hand values)
+    expectClose(out, [1, 0, 0, 2, 0, 0, 3, 0, 0], 1e-6);
   });
 
   it('the head turned and the guide with it: every point turned and moved with the head', () => {

@@ -8,13 +8,28 @@
 // from its groom, its offset from the guide's rest point there, o = r - lerp(A_j, A_j+1, w), and
 // the guide's rest unit tangent there, t = normalize(lerp(TA_j, TA_j+1, w)) (TA: the guide's
 // smoothed tangents, guideTangents). With the head's pose (R, c) and the guide now (B, TB):
-//   p = lerp(B_j, B_j+1, w) + M (R o),   M the least rotation taking R t to normalize(lerp(TB_j,
-//   TB_j+1, w)),
-// so the point turns with its guide's direction where it is and keeps its distance from it: a
-// strand beside its guide, or a tie's strand around the tail's one guide, keeps its segment
-// lengths to first order. A strand with no guide (fewer than two points) rides the head: R r + c.
+//   p = lerp(B_j, B_j+1, w) + lerp(M (R o), R o, f(|o|)),   M the least rotation taking R t to
+//   normalize(lerp(TB_j, TB_j+1, w)), f rising smoothly from 0 at FOLLOW_TURN_NEAR to 1 at
+//   FOLLOW_TURN_FAR,
+// so a point near its guide turns with the guide's direction where it is and keeps its distance
+// from it (a strand beside its guide, or a tie's strand around the tail's one guide, keeps its
+// segment lengths to first order), and a point far from it (hair parted the other way, long hair
+// falling in front of the shoulder bound to a guide behind it) moves as the guide's point does
+// without turning about it: turned, a 10 cm offset swings 10 cm for every radian the guide bends
+// and stretches the strand. A strand with no guide (fewer than two points) rides the head: R r + c.
 // At rest (guides at their groom, pose the identity) every point is its groom but for the rest
 // tangent's rounding to bytes (the offset turned by at most about half a degree: under 0.1 mm).
+
+/** Offsets from the guide (world units) up to which a point turns with its guide's direction
+ *  in full, and from which it does not turn at all (followerGlsl.ts uses the same). */
+export const FOLLOW_TURN_NEAR = 0.15;
+export const FOLLOW_TURN_FAR = 0.6;
+
+/** GLSL's smoothstep. */
+function smoothstep(e0: number, e1: number, x: number): number {
+  const t = Math.min(1, Math.max(0, (x - e0) / (e1 - e0)));
+  return t * t * (3 - 2 * t);
+}
 
 /** The guides of a motion and how the strands are bound to them (StrandMotion's binding). */
 export interface GuideBinding {
@@ -198,21 +213,16 @@ export function placeFollowers(
     const ox = offset[3 * p];
     const oy = offset[3 * p + 1];
     const oz = offset[3 * p + 2];
-    rotateBetween(
-      ax,
-      ay,
-      az,
-      bx,
-      by,
-      bz,
-      r0 * ox + r1 * oy + r2 * oz,
-      r3 * ox + r4 * oy + r5 * oz,
-      r6 * ox + r7 * oy + r8 * oz,
-      out,
-      3 * p,
-    );
-    for (let c = 0; c < 3; c++)
-      out[3 * p + c] += guides[i0 + c] + w * (guides[i1 + c] - guides[i0 + c]);
+    const vx = r0 * ox + r1 * oy + r2 * oz;
+    const vy = r3 * ox + r4 * oy + r5 * oz;
+    const vz = r6 * ox + r7 * oy + r8 * oz;
+    rotateBetween(ax, ay, az, bx, by, bz, vx, vy, vz, out, 3 * p);
+    const f = smoothstep(FOLLOW_TURN_NEAR, FOLLOW_TURN_FAR, Math.sqrt(ox * ox + oy * oy + oz * oz));
+    out[3 * p] += f * (vx - out[3 * p]) + guides[i0] + w * (guides[i1] - guides[i0]);
+    out[3 * p + 1] +=
+      f * (vy - out[3 * p + 1]) + guides[i0 + 1] + w * (guides[i1 + 1] - guides[i0 + 1]);
+    out[3 * p + 2] +=
+      f * (vz - out[3 * p + 2]) + guides[i0 + 2] + w * (guides[i1 + 2] - guides[i0 + 2]);
   }
   return out;
 }

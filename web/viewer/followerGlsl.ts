@@ -5,6 +5,7 @@
 // pass drawn with them (order-independent, deep opacity) run it while `followGuides` is 1; at 0
 // the hair is drawn as it was groomed.
 import * as THREE from 'three';
+import { FOLLOW_TURN_FAR, FOLLOW_TURN_NEAR } from '../model/guideFollowers';
 
 /** Guides a texture row holds: guide g's point j is texel (g % GUIDES_PER_ROW * G + j,
  *  floor(g / GUIDES_PER_ROW)). */
@@ -48,8 +49,11 @@ void followGuide(inout vec3 P, inout vec3 T) {
   vec3 t1 = texelFetch(guideTangents, guideTexel(g, j + 1), 0).xyz;
   vec3 now = normalize(mix(t0, t1, w));
   vec3 rest = normalize(followRotation * followTangent);
-  P = mix(b0, b1, w) + rotateBetween(rest, now, followRotation * followOffset);
-  T = rotateBetween(rest, now, followRotation * T);
+  vec3 offset = followRotation * followOffset;
+  // turned with the guide near it, carried without turning far from it (guideFollowers.ts)
+  float f = smoothstep(${FOLLOW_TURN_NEAR.toFixed(3)}, ${FOLLOW_TURN_FAR.toFixed(3)}, length(followOffset));
+  P = mix(b0, b1, w) + mix(rotateBetween(rest, now, offset), offset, f);
+  T = mix(rotateBetween(rest, now, followRotation * T), followRotation * T, f);
 }
 `;
 
