@@ -18,9 +18,11 @@ namespace hairsketch {
 //     resampled by arc length to guidePoints points; a tie's strands (a braid, bun or ponytail
 //     tail: tailCurve >= 0) all follow one guide of their own tail, so the tail moves as one
 //     bunch and stays gathered past its tie.
-//   Binding: every other strand with two points or more is bound to the guide whose root is
-//     nearest its own (a uniform grid over the guides' roots, searched ring by ring), each of its
-//     points at its own arc length from the root along the guide (along(), in guide points), at
+//   Binding: every other strand with two points or more is bound to one of the 6 guides whose
+//     roots are nearest its own (a uniform grid over the guides' roots, searched ring by ring):
+//     the one whose root and point halfway along lie nearest its own (the root's distance
+//     squared weighted 4 to 1), so hair parted the other way rides a guide going its way; each of
+//     its points at its own arc length from the root along the guide (along(), in guide points), at
 //     most the guide's tip.
 // A guide strand is bound to its own resampled guide the same way.
 struct MotionInput {
