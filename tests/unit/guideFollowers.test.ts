@@ -46,6 +46,24 @@ describe('guide followers', () => {
     expectClose(t, [0, -1, 0, h, -h, 0, 1, 0, 0], 1e-7);
   });
 
+  it("the attributes of some points are those points' attributes of all of them", () => {
+    const { points, strandStart, binding } = hanging();
+    const all = followerAttributes(points, strandStart, binding);
+    const only = new Uint32Array([0, 2, 3]);
+    const some = followerAttributes(points, strandStart, binding, only);
+    only.forEach((p, i) => {
+      expect(Array.from(some.follow.subarray(2 * i, 2 * i + 2))).toEqual(
+        Array.from(all.follow.subarray(2 * p, 2 * p + 2)),
+      );
+      expect(Array.from(some.offset.subarray(3 * i, 3 * i + 3))).toEqual(
+        Array.from(all.offset.subarray(3 * p, 3 * p + 3)),
+      );
+      expect(Array.from(some.tangent.subarray(3 * i, 3 * i + 3))).toEqual(
+        Array.from(all.tangent.subarray(3 * p, 3 * p + 3)),
+      );
+    });
+  });
+
   it('at rest, every point is its groom', () => {
     const { points, strandStart, binding } = hanging();
     const attrs = followerAttributes(points, strandStart, binding);

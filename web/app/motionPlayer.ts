@@ -13,6 +13,7 @@ import * as THREE from 'three';
 import type { Editor } from '../editor/editor';
 import {
   type FollowerAttributes,
+  followerAttributes,
   type GuideBinding,
   placeFollowers,
 } from '../model/guideFollowers';
@@ -56,7 +57,14 @@ export class MotionPlayer {
   private base: SolveResult | null = null;
   /** This play's binding (null until the worker sent it), and whether the hair shown follows
    *  it on the GPU (else each frame is placed here and drawn rebuilt). */
-  private bound: { binding: GuideBinding; attrs: FollowerAttributes; gpu: boolean } | null = null;
+  private bound: {
+    binding: GuideBinding;
+    /** Of every point (the drawn points' when every point is drawn; else made when asked). */
+    attrs: FollowerAttributes | null;
+    gpu: boolean;
+  } | null = null;
+  /** Every how many points this play draws each strand (motionStart.pointStride). */
+  private pointStride0 = 1;
   /** The last frame drawn: its guides and pose, and its strands once placed on the CPU. */
   private last: { guides: Float32Array; pose: Float32Array; strands: StrandArrays | null } | null =
     null;
@@ -87,8 +95,9 @@ export class MotionPlayer {
       }
       if (msg.play !== this.playId) return; // of a play stopped before
       if (msg.type === 'motionBound') {
-        const gpu = d.hairView.follow(msg.binding, msg.attributes);
-        this.bound = { binding: msg.binding, attrs: msg.attributes, gpu };
+        const stride = this.pointStride0;
+        const gpu = d.hairView.follow(msg.binding, msg.attributes, stride);
+        this.bound = { binding: msg.binding, attrs: stride > 1 ? null : msg.attributes, gpu };
         return;
       }
       this.times.stepMs = msg.stepMs;
@@ -112,6 +121,11 @@ export class MotionPlayer {
     const last = this.last;
     const bound = this.bound;
     if (!base || !last || !bound) return base?.strands ?? null;
+    bound.attrs ??= followerAttributes(
+      base.strands.points,
+      base.strands.strandStart,
+      bound.binding,
+    );
     last.strands ??= {
       ...base.strands,
       points: placeFollowers(
@@ -182,9 +196,11 @@ export class MotionPlayer {
     }
     const s = this.d.editor.session;
     const play = this.playId + 1;
+    const pointStride = this.d.viewer.motionPointStride();
     const sent = this.d.client.motion({
       type: 'motionStart',
       play,
+      pointStride,
       motion,
       seed: s.growth.seed,
       body: !!s.bust,
@@ -201,6 +217,7 @@ export class MotionPlayer {
     }
     this.motion = motion;
     this.playId = play;
+    this.pointStride0 = pointStride;
     this.base = base;
     this.bound = null;
     this.last = null;

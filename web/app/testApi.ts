@@ -194,6 +194,9 @@ export interface HairsketchTestApi {
   frameSource(): string;
   /** Frames drawn since the page loaded, by where each started from (benchmark probe). */
   frameSources(): { hair: number; static: number; none: number };
+  /** How many times the drawing buffer's resolution changed (interactive frames on a slow
+   *  renderer lower it, the settled view restores it): each change redraws the cached layers. */
+  resolutionChanges(): number;
   /** Slices the last full-detail frame drawn a slice a frame took (viewer.ts
    *  renderFullInSlices; counted from the last frame drawn between them); 0 when none was. */
   fullFrameSlices(): number;
@@ -473,6 +476,7 @@ export function installTestApi(app: TestApiParts): void {
     },
     frameSource: () => viewer.lastFrameSource,
     frameSources: () => ({ ...viewer.frameSources }),
+    resolutionChanges: () => viewer.resolutionChanges,
     fullFrameSlices: () => viewer.lastFullFrameSlices,
     sectionsTinted: () => app.sectionsTinted(),
     sectionsOverHair: () => app.sectionsOverHair(),

@@ -94,43 +94,47 @@ export function snorm8(v: number): number {
 }
 
 /** The attributes that bind `points` (strandStart: each strand's first point, and the end) to
- *  their guides. */
+ *  their guides: of every point, or of the points `only` lists (ascending; the attributes then
+ *  in its order). */
 export function followerAttributes(
   points: Float32Array,
   strandStart: Uint32Array,
   binding: GuideBinding,
+  only: Uint32Array | null = null,
 ): FollowerAttributes {
   const pointCount = strandStart.length > 0 ? strandStart[strandStart.length - 1] : 0;
-  const follow = new Float32Array(2 * pointCount);
-  const offset = new Float32Array(3 * pointCount);
-  const tangent = new Int8Array(3 * pointCount);
+  const n = only ? only.length : pointCount;
+  const follow = new Float32Array(2 * n);
+  const offset = new Float32Array(3 * n);
+  const tangent = new Int8Array(3 * n);
   const G = binding.guidePoints;
   const rest = binding.guideRest;
   const restTangents = guideTangents(rest, G);
-  for (let s = 0; s + 1 < strandStart.length; s++) {
+  let s = 0;
+  for (let p = 0; p < n; p++) {
+    const q = only ? only[p] : p; // the point; p: where its attributes go
+    while (strandStart[s + 1] <= q) s++;
     const g = binding.guideOf[s];
-    for (let p = strandStart[s]; p < strandStart[s + 1]; p++) {
-      if (g < 0 || G < 2) {
-        follow[2 * p] = -1;
-        continue;
-      }
-      const a = binding.along[p];
-      const j = Math.min(G - 2, Math.max(0, Math.floor(a)));
-      const w = a - j;
-      follow[2 * p] = g;
-      follow[2 * p + 1] = a;
-      const i0 = 3 * (g * G + j);
-      const i1 = i0 + 3;
-      for (let c = 0; c < 3; c++)
-        offset[3 * p + c] = points[3 * p + c] - (rest[i0 + c] + w * (rest[i1 + c] - rest[i0 + c]));
-      const tx = restTangents[i0] + w * (restTangents[i1] - restTangents[i0]);
-      const ty = restTangents[i0 + 1] + w * (restTangents[i1 + 1] - restTangents[i0 + 1]);
-      const tz = restTangents[i0 + 2] + w * (restTangents[i1 + 2] - restTangents[i0 + 2]);
-      const l = Math.sqrt(tx * tx + ty * ty + tz * tz) || 1;
-      tangent[3 * p] = Math.round((127 * tx) / l);
-      tangent[3 * p + 1] = Math.round((127 * ty) / l);
-      tangent[3 * p + 2] = Math.round((127 * tz) / l);
+    if (g < 0 || G < 2) {
+      follow[2 * p] = -1;
+      continue;
     }
+    const a = binding.along[q];
+    const j = Math.min(G - 2, Math.max(0, Math.floor(a)));
+    const w = a - j;
+    follow[2 * p] = g;
+    follow[2 * p + 1] = a;
+    const i0 = 3 * (g * G + j);
+    const i1 = i0 + 3;
+    for (let c = 0; c < 3; c++)
+      offset[3 * p + c] = points[3 * q + c] - (rest[i0 + c] + w * (rest[i1 + c] - rest[i0 + c]));
+    const tx = restTangents[i0] + w * (restTangents[i1] - restTangents[i0]);
+    const ty = restTangents[i0 + 1] + w * (restTangents[i1 + 1] - restTangents[i0 + 1]);
+    const tz = restTangents[i0 + 2] + w * (restTangents[i1 + 2] - restTangents[i0 + 2]);
+    const l = Math.sqrt(tx * tx + ty * ty + tz * tz) || 1;
+    tangent[3 * p] = Math.round((127 * tx) / l);
+    tangent[3 * p + 1] = Math.round((127 * ty) / l);
+    tangent[3 * p + 2] = Math.round((127 * tz) / l);
   }
   return { follow, offset, tangent };
 }

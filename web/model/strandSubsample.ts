@@ -27,3 +27,29 @@ export function everyOtherPoint(s: StrandArrays): StrandArrays {
   }
   return { points, strandStart };
 }
+
+/** Every `stride`-th point of each strand and its tip (a playing motion's strands on a slow
+ *  renderer): the points kept, in order, and where each strand's start in them (and the end). */
+export function everyNthPoint(
+  strandStart: Uint32Array,
+  stride: number,
+): { points: Uint32Array; start: Uint32Array } {
+  const k = Math.max(1, Math.floor(stride));
+  const strands = Math.max(0, strandStart.length - 1);
+  const start = new Uint32Array(strands + 1);
+  let n = 0;
+  for (let s = 0; s < strands; s++) {
+    const len = strandStart[s + 1] - strandStart[s];
+    n += len > 0 ? Math.ceil((len - 1) / k) + 1 : 0;
+    start[s + 1] = n;
+  }
+  const points = new Uint32Array(n);
+  let w = 0;
+  for (let s = 0; s < strands; s++) {
+    const last = strandStart[s + 1] - 1;
+    if (last < strandStart[s]) continue;
+    for (let i = strandStart[s]; i < last; i += k) points[w++] = i;
+    points[w++] = last;
+  }
+  return { points, start };
+}

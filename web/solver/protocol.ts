@@ -108,6 +108,9 @@ export type ToWorker =
       type: 'motionStart';
       /** Names this play: its binding and frames carry it (a play stopped before is dropped). */
       play: number;
+      /** The page draws every pointStride-th point of each strand and its tip (1: every
+       *  point; strandSubsample.ts everyNthPoint): motionBound's attributes are of those. */
+      pointStride: number;
       motion: MotionName;
       seed: number; // uint32: the session's seed (the wind's gusts)
       body: boolean;
@@ -152,8 +155,9 @@ export type FromWorker =
   | { type: 'error'; id: number | null; message: string; kind: SolverErrorKind }
   | {
       /** The motion started: its guides and how motionStart's strands are bound to them, and
-       *  the strand shader's attributes per point (model/guideFollowers.ts: follow, 2 floats;
-       *  offset, 3 floats; tangent, 3 signed bytes), made here so the page does not. Transferred. */
+       *  the strand shader's attributes of each point drawn (motionStart.pointStride;
+       *  model/guideFollowers.ts: follow, 2 floats; offset, 3 floats; tangent, 3 signed bytes),
+       *  made here so the page does not. Transferred. */
       type: 'motionBound';
       play: number;
       binding: GuideBinding;

@@ -103,16 +103,20 @@ export class HairView {
   }
 
   /** Draws the hair shown riding a motion's guides (strandFollowing.ts): `attrs` bind its
-   *  points to them, frames come through followFrame. False (nothing done) when the hair shown is
+   *  points to them (every `stride`-th point of each strand and its tip, strandSubsample.ts
+   *  everyNthPoint: drawn through those only), frames come through followFrame. False (nothing done) when the hair shown is
    *  not strands of these points (cards, another groom): the caller draws the motion itself. From
    *  the first frame on, the hair is drawn whole in every frame while it follows
    *  (Viewer.drawWhole). */
-  follow(binding: { guideCount: number; guidePoints: number }, attrs: FollowerAttributes): boolean {
+  follow(
+    binding: { guideCount: number; guidePoints: number },
+    attrs: FollowerAttributes,
+    stride: number,
+  ): boolean {
     this.unfollow();
     const o = this.object;
     const c = this.current;
     if (!c || this.cardsShown || !o) return false;
-    const stride = this.viewer.motionPointStride();
     const restore = this.followWith(o, c.strands.strandStart, attrs, stride);
     if (restore === null) return false;
     this.following = {

@@ -7,6 +7,7 @@
 // stands in for it while the motion plays (thinForMotion).
 import * as THREE from 'three';
 import { type FollowerAttributes, guideTangents } from '../model/guideFollowers';
+import { everyNthPoint } from '../model/strandSubsample';
 import { type FollowerUniforms, GUIDES_PER_ROW } from './followerGlsl';
 import { lodIndex } from './strandAttributes';
 import { STRIP_SEGMENT } from './strandGeometry';
@@ -72,54 +73,30 @@ export function attachFollowers(object: StrandObject, attrs: FollowerAttributes)
   return true;
 }
 
-/** Every `stride`-th point of each strand and its tip: the points, and where each strand's
- *  start in them. */
-function everyFewPoints(
-  strandStart: Uint32Array,
-  stride: number,
-): { points: Uint32Array; start: Uint32Array } {
-  const strands = Math.max(0, strandStart.length - 1);
-  const start = new Uint32Array(strands + 1);
-  let n = 0;
-  for (let s = 0; s < strands; s++) {
-    const len = strandStart[s + 1] - strandStart[s];
-    n += len > 0 ? Math.ceil((len - 1) / stride) + 1 : 0;
-    start[s + 1] = n;
-  }
-  const points = new Uint32Array(n);
-  let w = 0;
-  for (let s = 0; s < strands; s++) {
-    const last = strandStart[s + 1] - 1;
-    if (last < strandStart[s]) continue;
-    for (let i = strandStart[s]; i < last; i += stride) points[w++] = i;
-    points[w++] = last;
-  }
-  return { points, start };
-}
-
 /** Draws a strand object with every `stride`-th point of each strand and its tip, blended
  *  unsorted (a motion on a slow renderer: every strand, fewer segments, one pass), following
- *  its guides: a geometry of those points only stands in for the object's own (a software
- *  rasteriser's cost follows the vertex buffers' length, not only the segments drawn) until
- *  the returned function puts it back. Null (nothing done) when the object's vertices are not
- *  the points of `attrs`. */
+ *  its guides (`attrs`: of those points, in order): a geometry of those points only stands in
+ *  for the object's own until the returned function puts it back. Null (nothing done) when the
+ *  object's vertices are not the strands' points, or `attrs` not those of the points kept. */
 export function thinForMotion(
   object: StrandObject,
   strandStart: Uint32Array,
   attrs: FollowerAttributes,
   stride: number,
 ): (() => void) | null {
-  const per = verticesPerPoint(object, attrs);
-  if (per === 0) return null;
   const g = object.geometry as THREE.BufferGeometry;
-  const { points, start } = everyFewPoints(strandStart, stride);
+  const { points, start } = everyNthPoint(strandStart, stride);
+  const pointCount = strandStart.length > 0 ? strandStart[strandStart.length - 1] : 0;
+  const vertices = g.getAttribute('position')?.count ?? -1;
+  const per = vertices === pointCount ? 1 : vertices === 2 * pointCount ? 2 : 0;
+  if (per === 0 || attrs.follow.length !== 2 * points.length) return null;
   const thin = new THREE.BufferGeometry();
   for (const [name, a] of Object.entries(g.attributes)) {
     if (!(a instanceof THREE.BufferAttribute) || name.startsWith('follow')) continue;
     const array = pick(a.array as Float32Array, a.itemSize, per, points);
     thin.setAttribute(name, new THREE.BufferAttribute(array, a.itemSize, a.normalized));
   }
-  for (const [name, a] of followerVertexAttributes(attrs, per, points)) thin.setAttribute(name, a);
+  for (const [name, a] of followerVertexAttributes(attrs, per, null)) thin.setAttribute(name, a);
   const made = lodIndex(start, per === 2 ? STRIP_SEGMENT : [0, 1], per);
   thin.setIndex(new THREE.BufferAttribute(made.index, 1));
   thin.userData.lodCounts = made.lodCounts;

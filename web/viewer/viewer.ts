@@ -95,8 +95,10 @@ export class Viewer {
   private lastSource: FramePlan['source'] = 'none';
   /** Frames drawn so far, by where each started from (a benchmark probe). */
   readonly frameSources: Record<FramePlan['source'], number> = { hair: 0, static: 0, none: 0 };
-  /** Drawing-buffer resolution relative to the display's (interactive frames may lower it). */
+  /** Drawing-buffer resolution relative to the display's (interactive frames may lower it), and
+   *  how many times it changed (each change redraws the cached layers: a test probe). */
   private resolutionScale = 1;
+  resolutionChanges = 0;
   /** Objects left out of captures (addBackdrop). */
   private readonly backdrops: THREE.Object3D[] = [];
 
@@ -398,6 +400,7 @@ export class Viewer {
   private setResolutionScale(scale: number): void {
     if (scale === this.resolutionScale) return;
     this.resolutionScale = scale;
+    this.resolutionChanges++;
     this.renderer.setPixelRatio(basePixelRatio() * scale);
     this.requestRender(); // resizing the drawing buffer cleared it
   }

@@ -14,7 +14,7 @@
 import { ResultLighting } from '../lighting/resultLighting';
 import { followerAttributes } from '../model/guideFollowers';
 import type { GridSpec } from '../model/hairArrays';
-import { everyOtherPoint } from '../model/strandSubsample';
+import { everyNthPoint, everyOtherPoint } from '../model/strandSubsample';
 import {
   type Groom,
   type MotionRun,
@@ -166,7 +166,14 @@ export class WorkerLogic {
             type: 'motionBound',
             play: this.play,
             binding,
-            attributes: followerAttributes(msg.strands.points, msg.strands.strandStart, binding),
+            attributes: followerAttributes(
+              msg.strands.points,
+              msg.strands.strandStart,
+              binding,
+              msg.pointStride > 1
+                ? everyNthPoint(msg.strands.strandStart, msg.pointStride).points
+                : null,
+            ),
           });
           this.post({ type: 'motionFrame', play: this.play, stepMs: 0, ...this.motion.step() });
         }
