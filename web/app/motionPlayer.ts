@@ -64,7 +64,7 @@ export class MotionPlayer {
     gpu: boolean;
   } | null = null;
   /** Every how many points this play draws each strand (motionStart.pointStride). */
-  private pointStride0 = 1;
+  private stride = 1;
   /** The last frame drawn: its guides and pose, and its strands once placed on the CPU. */
   private last: { guides: Float32Array; pose: Float32Array; strands: StrandArrays | null } | null =
     null;
@@ -95,7 +95,7 @@ export class MotionPlayer {
       }
       if (msg.play !== this.playId) return; // of a play stopped before
       if (msg.type === 'motionBound') {
-        const stride = this.pointStride0;
+        const stride = this.stride;
         const gpu = d.hairView.follow(msg.binding, msg.attributes, stride);
         this.bound = { binding: msg.binding, attrs: stride > 1 ? null : msg.attributes, gpu };
         return;
@@ -139,9 +139,9 @@ export class MotionPlayer {
     return last.strands;
   }
 
-  /** Every how many points each strand is drawn while playing (HairView.followStride). */
+  /** Every how many points each strand is drawn while playing (1: all of them). */
   get pointStride(): number {
-    return this.d.hairView.followStride;
+    return this.motion ? this.stride : 1;
   }
 
   /** Test probe: the strand shader's placement of the last frame read back from the GPU
@@ -217,7 +217,7 @@ export class MotionPlayer {
     }
     this.motion = motion;
     this.playId = play;
-    this.pointStride0 = pointStride;
+    this.stride = pointStride;
     this.base = base;
     this.bound = null;
     this.last = null;

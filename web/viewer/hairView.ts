@@ -141,11 +141,6 @@ export class HairView {
     return attachFollowers(o, attrs) ? () => {} : null;
   }
 
-  /** Every how many points the strands are drawn while following (1: all). */
-  get followStride(): number {
-    return this.following?.stride ?? 1;
-  }
-
   /** A frame of the motion followed: the guides now (3 * (guide * G + point) + axis) and the
    *  head's pose (pose[0..8] rotation row-major, pose[9..11] translation). */
   followFrame(guides: Float32Array, pose: Float32Array): void {
@@ -156,11 +151,6 @@ export class HairView {
     f.pose = pose;
     for (const m of [this.lines, this.strips]) if (m) f.textures.bind(m.uniforms, pose);
     this.viewer.requestRender();
-  }
-
-  /** Whether the hair shown rides a motion's guides. */
-  get followingGuides(): boolean {
-    return this.following?.pose != null;
   }
 
   /** Test probe: where the strand shader puts each vertex of the hair shown now (3 floats a

@@ -189,36 +189,27 @@ export function writeTangents(
 
 /** The index of every segment in level-of-detail order (strands interleaved with stride
  *  LOD_GROUPS, groups in LOD_ORDER) and `lodCounts[g]`, the index count of the first g groups.
- *  Each segment from point i to point j writes `pattern`, an entry k below `verticesPerPoint`
- *  as vertex verticesPerPoint * i + k and the others as verticesPerPoint * j + k -
- *  verticesPerPoint. `pointStride` > 1: a strand's segments join every pointStride-th point and
- *  its tip (fewer segments for the same strands; the motion on a slow renderer). */
+ *  Each segment from point i writes `pattern` offset by `verticesPerPoint * i`. */
 export function lodIndex(
   strandStart: Uint32Array,
   pattern: readonly number[],
   verticesPerPoint = 1,
-  pointStride = 1,
 ): { index: Uint32Array; lodCounts: Uint32Array } {
   const strands = Math.max(0, strandStart.length - 1);
-  const k = Math.max(1, Math.floor(pointStride));
   let segments = 0;
   for (let s = 0; s < strands; s++) {
     const n = strandStart[s + 1] - strandStart[s];
-    if (n > 1) segments += Math.ceil((n - 1) / k);
+    if (n > 1) segments += n - 1;
   }
   const index = new Uint32Array(pattern.length * segments);
   const lodCounts = new Uint32Array(LOD_GROUPS + 1);
-  const vpp = verticesPerPoint;
   let w = 0;
   for (let g = 0; g < LOD_GROUPS; g++) {
-    for (let s = LOD_ORDER[g]; s < strands; s += LOD_GROUPS) {
-      const last = strandStart[s + 1] - 1;
-      for (let i = strandStart[s]; i < last; i += k) {
-        const a = vpp * i;
-        const b = vpp * Math.min(i + k, last) - vpp;
-        for (const e of pattern) index[w++] = e < vpp ? a + e : b + e;
+    for (let s = LOD_ORDER[g]; s < strands; s += LOD_GROUPS)
+      for (let i = strandStart[s]; i + 1 < strandStart[s + 1]; i++) {
+        const a = verticesPerPoint * i;
+        for (const k of pattern) index[w++] = a + k;
       }
-    }
     lodCounts[g + 1] = w;
   }
   return { index, lodCounts };
