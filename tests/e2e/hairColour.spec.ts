@@ -1,5 +1,6 @@
 // The Hair panel's colour model end to end: Grey (%), Redness and Melanin change the drawn hair
-// the way their names say (greyer, redder, lighter), Undo restores it, and the link keeps it;
+// the way their names say (greyer, redder, lighter), a Shade (Auburn) sets them in one edit, Undo
+// restores it, and the link keeps it;
 // Tips lighten the hair over a length typed in cm, and a session saved with the older fraction
 // of the strand shows it as a length until one is typed.
 // Real pointer events for clicks; waits on the test API's idle(), never on fixed sleeps.
@@ -47,7 +48,7 @@ async function openHairPanel(page: Page) {
   return page.getByRole('region', { name: 'Hair detail' });
 }
 
-test('Melanin, Redness and Grey change the hair as named; Undo restores; the link keeps it', async ({
+test('Melanin, Redness, Grey and Shade change the hair as named; Undo restores; the link keeps it', async ({
   page,
 }) => {
   const errors = watchConsole(page);
@@ -81,6 +82,28 @@ test('Melanin, Redness and Grey change the hair as named; Undo restores; the lin
   };
   expect(look.hairLook).toMatchObject({ melanin: 0.1, redness: 0.95, grey: 0 });
 
+  // a named Shade sets the pigment in one edit: Auburn is redder than the start's brown
+  const shade = panel.getByRole('combobox', { name: 'Shade' });
+  await expect(shade).toHaveValue('');
+  await shade.click();
+  await shade.selectOption({ label: 'Auburn' });
+  await expect(panel.getByRole('combobox', { name: 'Shade' })).toHaveValue('auburn');
+  await expect
+    .poll(async () => {
+      const c = await hairColour(page);
+      return c[0] / c[1];
+    })
+    .toBeGreaterThan((1.25 * start[0]) / start[1]);
+  await page.getByRole('button', { name: 'Undo' }).click();
+  await expect(panel.getByRole('combobox', { name: 'Shade' })).toHaveValue('');
+  expect(
+    ((await page.evaluate(() => window.hairsketch.session())) as typeof look).hairLook,
+  ).toEqual(look.hairLook);
+  await page.getByRole('button', { name: 'Redo' }).click();
+  await expect(panel.getByRole('combobox', { name: 'Shade' })).toHaveValue('auburn');
+  const auburn = (await page.evaluate(() => window.hairsketch.session())) as typeof look;
+  expect(auburn.hairLook).toMatchObject({ redness: 1, dye: '#ff5a50', grey: 0 });
+
   // the link (Share link writes it to the address bar too) reopens it
   await page.getByRole('button', { name: 'Share link' }).click();
   await expect(page.getByTestId('status')).toContainText('Link');
@@ -89,7 +112,7 @@ test('Melanin, Redness and Grey change the hair as named; Undo restores; the lin
   await other.goto(href);
   await settled(other);
   const again = (await other.evaluate(() => window.hairsketch.session())) as typeof look;
-  expect(again.hairLook).toEqual(look.hairLook);
+  expect(again.hairLook).toEqual(auburn.hairLook);
   expect(errors).toEqual([]);
 });
 

@@ -67,6 +67,42 @@ export function hairColour(withHair: Rgba, bald: Rgba, threshold = 24): HairColo
   return { pixels: n, hue, luma: n ? luma / n : 0, saturation: n ? sat / n : 0 };
 }
 
+/** The colour a colourist names the hair by, its body colour: of the hair's pixels (as hairColour
+ *  finds them) in the top `topShare` of their rows (below that the hair's shadow on the neck and
+ *  shoulders differs from the bald picture too), the middle half by luma (no highlights, no gaps);
+ *  their mean in linear RGB, as sRGB bytes, with its HSV and luma. */
+export function bodyColour(
+  withHair: Rgba,
+  bald: Rgba,
+  topShare = 0.6,
+  threshold = 24,
+): { rgb: [number, number, number]; hue: number; saturation: number; value: number; luma: number } {
+  const { width } = withHair;
+  const a = withHair.rgba;
+  const b = bald.rgba;
+  const hair: number[] = [];
+  for (let i = 0; i < a.length; i += 4) {
+    const d = Math.abs(a[i] - b[i]) + Math.abs(a[i + 1] - b[i + 1]) + Math.abs(a[i + 2] - b[i + 2]);
+    if (d > threshold) hair.push(i);
+  }
+  if (hair.length === 0) throw new Error('no hair in the picture');
+  const row = (i: number) => Math.floor(i / 4 / width);
+  const top = row(hair[0]);
+  const cut = top + topShare * (row(hair[hair.length - 1]) - top);
+  const luma = (i: number) =>
+    0.2126 * linear(a[i]) + 0.7152 * linear(a[i + 1]) + 0.0722 * linear(a[i + 2]);
+  const upper = hair.filter((i) => row(i) <= cut).sort((x, y) => luma(x) - luma(y));
+  const middle = upper.slice(Math.floor(upper.length / 4), Math.ceil((3 * upper.length) / 4));
+  const sum = [0, 0, 0];
+  for (const i of middle) for (let c = 0; c < 3; c++) sum[c] += linear(a[i + c]);
+  const toByte = (v: number) =>
+    Math.round(255 * (v <= 0.0031308 ? 12.92 * v : 1.055 * v ** (1 / 2.4) - 0.055));
+  const rgb = sum.map((v) => toByte(v / middle.length)) as [number, number, number];
+  const [hue, saturation, value] = hsv(...rgb);
+  const l = sum.map((v) => v / middle.length);
+  return { rgb, hue, saturation, value, luma: 0.2126 * l[0] + 0.7152 * l[1] + 0.0722 * l[2] };
+}
+
 /** How much of the hair is drawn black (the back of dark hair as a shell lit by nothing): of the
  *  hair's pixels (as hairColour finds them), the share whose brightest sRGB channel is under
  *  `below` (bytes). Dark brown hair's own colour is brighter than that where any light reaches

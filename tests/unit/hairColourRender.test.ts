@@ -1,6 +1,6 @@
-// The hair's colour as drawn (tests/support/hairColourMetrics.ts): Grey 100 % reads silver-white,
-// not champagne, and the same look (lighter tips too) reads as the same hue and brightness in
-// Fast and High. Drawn by `hairsketch render`'s renderer (the built app's embed in Chromium); the
+// The hair's colour as drawn (tests/support/hairColourMetrics.ts): each named Shade reads as its
+// name (Silver silver-white, not champagne; Auburn red-brown), and the same look (lighter tips
+// too) reads as the same hue and brightness in Fast and High. Drawn by `hairsketch render`'s renderer (the built app's embed in Chromium); the
 // hair's pixels are those that differ from the same view without hair.
 import { existsSync, readFileSync } from 'node:fs';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
@@ -8,10 +8,12 @@ import { presetSession } from '../../web/cli/presetSession';
 import { openStillRenderer, type StillRenderer } from '../../web/cli/render';
 import { Head } from '../../web/head/head';
 import { DEFAULT_HAIR_LOOK, type HairLook } from '../../web/model/hairLook';
+import { HAIR_SHADES, withShade } from '../../web/model/hairShades';
 import type { SessionState } from '../../web/model/session';
 import { parseSession } from '../../web/model/sessionFile';
 import {
   blackShare,
+  bodyColour,
   hairColour,
   highlightPeak,
   hueDistance,
@@ -50,28 +52,60 @@ async function bald(quality: 'fast' | 'high') {
 }
 
 describe.runIf(DIST_BUILT)('hair colour as drawn', () => {
-  it('Grey 100 % is silver-white: the hair pixels are nearly unsaturated', async () => {
-    const grey = hairColour(await picture({ melanin: 0.5, grey: 100 }, 'fast'), await bald('fast'));
-    const brown = hairColour(await picture({}, 'fast'), await bald('fast'));
-    console.log(
-      `grey 100 %: saturation ${grey.saturation.toFixed(3)} over ${grey.pixels} pixels; mid brown ${brown.saturation.toFixed(3)}`,
-    );
-    expect(grey.pixels).toBeGreaterThan(2000);
-    expect(grey.saturation).toBeLessThan(0.15);
-    // the measure sees colour where there is some
-    expect(brown.saturation).toBeGreaterThan(0.4);
-  });
-
-  it('auburn reads as the same hue and brightness in Fast and High', async () => {
-    const auburn = { melanin: 0.32, redness: 0.8 };
-    const fast = hairColour(await picture(auburn, 'fast'), await bald('fast'));
-    const high = hairColour(await picture(auburn, 'high'), await bald('high'));
-    console.log(
-      `auburn: hue ${fast.hue.toFixed(1)} deg Fast, ${high.hue.toFixed(1)} High; luma ${fast.luma.toFixed(4)} Fast, ${high.luma.toFixed(4)} High`,
-    );
-    expect(fast.pixels).toBeGreaterThan(2000);
-    expect(hueDistance(fast.hue, high.hue)).toBeLessThan(10);
-    expect(Math.abs(fast.luma / high.luma - 1)).toBeLessThan(0.15);
+  it('each Shade reads as its name, in Fast and High alike', async () => {
+    // The bob from behind at 1,500 strands, each shade as the Hair panel's Shade sets it; the
+    // body colour (bodyColour: the middle half of the hair's pixels by luma) against how a
+    // colourist names hair: the levels get lighter from Black to Platinum blonde; browns and
+    // blondes are warm (hue 18-48 deg, saturated); the reds are red (hue under 25 deg, auburn
+    // under 15 and darker than copper); Black is black, Platinum and Silver nearly unsaturated
+    // (Grey 100 % read as champagne blonde at saturation 0.24 before). Before the shades, auburn's
+    // settings (melanin 0.32, redness 0.8) drew hue 24 deg, a dark brown.
+    // every shade on one growth of the hair (the still renderer's looks), in each quality
+    const looks = HAIR_SHADES.map((shade) => withShade(null, shade));
+    const still = async (quality: 'fast' | 'high') =>
+      (await renderer.render(base, { ...size, quality, looks })).png.map(readPng);
+    const [fast, high] = [await still('fast'), await still('high')];
+    const body = new Map<string, ReturnType<typeof bodyColour>>();
+    for (const [k, shade] of HAIR_SHADES.entries()) {
+      const c = bodyColour(fast[k], await bald('fast'));
+      body.set(shade.id, c);
+      console.log(
+        `${shade.name}: body ${c.rgb.join(',')}, hue ${c.hue.toFixed(0)}, saturation ${c.saturation.toFixed(2)}, value ${c.value.toFixed(2)}`,
+      );
+    }
+    const at = (id: string) => body.get(id) as ReturnType<typeof bodyColour>;
+    const levels = ['black', 'dark-brown', 'medium-brown', 'light-brown', 'dark-blonde'];
+    levels.push('blonde', 'light-blonde', 'platinum');
+    for (let k = 1; k < levels.length; k++)
+      expect(at(levels[k]).luma, levels[k]).toBeGreaterThan(at(levels[k - 1]).luma);
+    expect(at('black').value).toBeLessThan(0.12);
+    for (const id of levels.slice(1, -1)) {
+      expect(at(id).hue, id).toBeGreaterThan(18);
+      expect(at(id).hue, id).toBeLessThan(48);
+      expect(at(id).saturation, id).toBeGreaterThan(0.25);
+    }
+    for (const id of ['strawberry', 'copper', 'auburn']) {
+      expect(at(id).hue, id).toBeLessThan(25);
+      expect(at(id).saturation, id).toBeGreaterThan(0.45);
+    }
+    expect(at('auburn').hue).toBeLessThan(15);
+    expect(at('auburn').luma).toBeLessThan(at('copper').luma);
+    for (const id of ['platinum', 'silver']) {
+      expect(at(id).saturation, id).toBeLessThan(0.15);
+      expect(at(id).value, id).toBeGreaterThan(0.55);
+    }
+    expect(at('salt-pepper').saturation).toBeLessThan(0.2);
+    // the same settings read as the same hue and brightness in Fast and High (hair pixels' mean)
+    for (const [k, shade] of HAIR_SHADES.entries()) {
+      const f = hairColour(fast[k], await bald('fast'));
+      const h = hairColour(high[k], await bald('high'));
+      console.log(
+        `${shade.name}: hue ${f.hue.toFixed(1)} deg Fast, ${h.hue.toFixed(1)} High; luma ${f.luma.toFixed(4)} Fast, ${h.luma.toFixed(4)} High`,
+      );
+      expect(f.pixels).toBeGreaterThan(2000);
+      if (f.saturation > 0.2) expect(hueDistance(f.hue, h.hue), shade.id).toBeLessThan(10);
+      expect(Math.abs(f.luma / h.luma - 1), shade.id).toBeLessThan(0.15);
+    }
   });
 
   it('lighter tips over 25 cm lighten the hair alike in Fast and High', async () => {

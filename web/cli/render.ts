@@ -9,6 +9,7 @@ import { existsSync, renameSync, statSync, unlinkSync, writeFileSync } from 'nod
 import { basename, dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import type { QualitySetting } from '../app/quality';
+import type { HairLook } from '../model/hairLook';
 import type { SessionState } from '../model/session';
 import type { HeadFileData } from '../model/sessionFile';
 import { encodeSessionLink } from '../model/sessionLink';
@@ -88,6 +89,9 @@ export interface StillOptions {
   quality?: QualitySetting;
   /** The loaded head's file, for a session on one (a saved session file embeds it). */
   headFile?: HeadFileData;
+  /** Colour looks (hairLook.ts; null: the colour box's colour) drawn on the same hair, each from
+   *  every view, instead of the session's own: png is then look by look, view by view. */
+  looks?: readonly (HairLook | null)[];
 }
 
 export interface StillRenderer {
@@ -145,7 +149,7 @@ export async function openStillRenderer(): Promise<StillRenderer> {
   return {
     async render(
       session,
-      { views, width, height, timeoutMs = 300_000, quality = 'auto', headFile },
+      { views, width, height, timeoutMs = 300_000, quality = 'auto', headFile, looks },
     ) {
       if (session.head !== 'builtin' && headFile?.hash !== session.head.hash)
         throw new CliError(
@@ -193,13 +197,19 @@ export async function openStillRenderer(): Promise<StillRenderer> {
         if (drawnOn !== wanted)
           throw new Error(`the viewer drew the head “${drawnOn}” instead of “${wanted}”`);
         const png: Uint8Array[] = [];
-        for (const view of views) {
-          const base64 = await page.evaluate((v) => {
-            const embed = window.hairsketchEmbed;
-            if (!embed) throw new Error('the viewer has no capture');
-            return embed.capture(1, v);
-          }, view);
-          png.push(new Uint8Array(Buffer.from(base64, 'base64')));
+        for (const look of looks ?? [undefined]) {
+          for (const view of views) {
+            const base64 = await page.evaluate(
+              ([v, l]) => {
+                const embed = window.hairsketchEmbed;
+                if (!embed) throw new Error('the viewer has no capture');
+                if (l !== undefined) embed.setLook(l);
+                return embed.capture(1, v);
+              },
+              [view, look] as const,
+            );
+            png.push(new Uint8Array(Buffer.from(base64, 'base64')));
+          }
         }
         return { png, strands, head: wanted, ms: performance.now() - t0 };
       } finally {

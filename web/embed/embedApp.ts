@@ -10,7 +10,7 @@ import { Head } from '../head/head';
 import { sessionScalpMask } from '../head/scalpPaint';
 import { sessionHairline } from '../head/scalpRegion';
 import { FIELD_OMEGA } from '../model/grid';
-import { DEFAULT_BAND_COLOR } from '../model/hairLook';
+import { DEFAULT_BAND_COLOR, type HairLook } from '../model/hairLook';
 import type { SessionState } from '../model/session';
 import { sessionGrid } from '../model/session';
 import { decodeSessionLink } from '../model/sessionLink';
@@ -38,6 +38,8 @@ declare global {
       /** For `hairsketch render`: keeps a head file (base64) in this page's head store, where
        *  a link naming it finds it. */
       storeHead(name: string, hash: string, base64: string): Promise<void>;
+      /** For `hairsketch render`'s looks: the hair shown with another colour look. */
+      setLook(look: HairLook | null): void;
     };
   }
 }
@@ -63,6 +65,9 @@ export async function startEmbed(): Promise<void> {
         hash,
         Uint8Array.from(atob(base64), (c) => c.charCodeAt(0)),
       );
+    },
+    setLook: () => {
+      throw new Error('no hair on screen yet');
     },
   };
   window.hairsketchEmbed = api;
@@ -167,6 +172,7 @@ export async function startEmbed(): Promise<void> {
       : FIRST_LOOK_STRANDS,
   );
 
+  api.setLook = (look) => hair.setLook(look, s.hairColor);
   api.capture = async (scale = 1, view) => {
     if (view) {
       const v = namedView(view, lowest);

@@ -1,11 +1,13 @@
-// The Hair panel's colour editors (model/hairLook.ts): "Natural colour" on gives the colour
-// model — "Melanin", "Redness", "Grey (%)", "Dye" (off by default) with its colour, "Tips"
+// The Hair panel's colour editors (model/hairLook.ts): "Shade" picks a named colour
+// (model/hairShades.ts: Black … Platinum blonde, Copper, Auburn, Silver…); "Natural colour" on
+// gives the colour model — "Melanin", "Redness", "Grey (%)", "Dye" (off by default) with its colour, "Tips"
 // (lighter tips, a balayage: "Tip melanin", "Lighter tips over (cm)" from each strand's tip, "Tip
 // dye"), "Variation" and "Roughness"; off, the hair shows the colour box's direct colour. A
 // session saved before lengths in cm keeps its fraction of the strand until a length is set.
 // "Band colour" (the ties' bands, model/tieBands.ts) is there either way: a new session shows the
 // direct colour and has bands. Every change is one call of `set` or `band.set` (one undoable edit).
 import { DEFAULT_HAIR_LOOK, type HairLook, hasTips } from '../model/hairLook';
+import { HAIR_SHADES, shadeOf, withShade } from '../model/hairShades';
 import { HAIR_LOOK_NUMBERS } from '../model/readHairLook';
 import { numberInput, type Say } from './numberInput';
 
@@ -56,7 +58,7 @@ export function hairLookEditors(
     set(on ? { ...DEFAULT_HAIR_LOOK } : null),
   );
   legend.append(natural, ' Natural colour');
-  group.append(legend);
+  group.append(legend, shadeRow(look, set));
   if (!look) {
     const note = document.createElement('p');
     note.textContent = 'The colour box’s colour, as it is.';
@@ -129,6 +131,27 @@ function tipLengthRow(
   const both = document.createElement('div');
   both.append(r, note);
   return both;
+}
+
+/** "Shade": the named colours (model/hairShades.ts); choosing one sets the pigment and grey
+ *  share in one edit (and turns the colour model on); a look that is no shade shows "Custom". */
+function shadeRow(look: HairLook | null, set: (look: HairLook | null) => void): HTMLElement {
+  const select = document.createElement('select');
+  select.setAttribute('aria-label', 'Shade');
+  const current = shadeOf(look);
+  const custom = new Option(look ? 'Custom' : 'Colour box', '');
+  custom.disabled = true;
+  select.append(custom);
+  for (const shade of HAIR_SHADES) {
+    const option = new Option(shade.name, shade.id);
+    select.append(option);
+  }
+  select.value = current?.id ?? '';
+  select.addEventListener('change', () => {
+    const shade = HAIR_SHADES.find((s) => s.id === select.value);
+    if (shade) set(withShade(look, shade));
+  });
+  return row('Shade', select);
 }
 
 /** "Band colour": a colour input, one edit when a colour is picked. */

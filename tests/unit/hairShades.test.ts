@@ -1,0 +1,45 @@
+// The named shades (model/hairShades.ts) as the Hair panel's Shade sets them; how each reads when
+// drawn is checked in hairColourRender.test.ts.
+import { describe, expect, it } from 'vitest';
+import { DEFAULT_HAIR_LOOK } from '../../web/model/hairLook';
+import { HAIR_SHADES, shadeOf, withShade } from '../../web/model/hairShades';
+import { HAIR_LOOK_NUMBERS } from '../../web/model/readHairLook';
+
+describe('hair shades', () => {
+  it('each shade is found again in the look it sets, and a look of its own is none', () => {
+    expect(new Set(HAIR_SHADES.map((s) => s.id)).size).toBe(HAIR_SHADES.length);
+    for (const shade of HAIR_SHADES) expect(shadeOf(withShade(null, shade))).toBe(shade);
+    expect(shadeOf(null)).toBeNull();
+    expect(shadeOf({ ...DEFAULT_HAIR_LOOK, melanin: 0.123 })).toBeNull();
+  });
+
+  it('a shade sets the pigment and grey share within the panel ranges and keeps the rest', () => {
+    const mine = { ...DEFAULT_HAIR_LOOK, variation: 0.7, roughness: 0.55 };
+    for (const shade of HAIR_SHADES) {
+      const look = withShade(mine, shade);
+      expect(look).toEqual({
+        ...mine,
+        melanin: shade.melanin,
+        redness: shade.redness,
+        dye: shade.dye,
+        grey: shade.grey,
+        tipMelanin: shade.melanin,
+        tipDye: null,
+      });
+      for (const key of ['melanin', 'redness', 'grey'] as const) {
+        expect(look[key]).toBeGreaterThanOrEqual(HAIR_LOOK_NUMBERS[key].min);
+        expect(look[key]).toBeLessThanOrEqual(HAIR_LOOK_NUMBERS[key].max);
+      }
+    }
+  });
+
+  it('with lighter tips on, the tips take half the melanin amount and the dye', () => {
+    const auburn = HAIR_SHADES.find((s) => s.id === 'auburn');
+    if (!auburn) throw new Error('no auburn');
+    const look = withShade({ ...DEFAULT_HAIR_LOOK, tipLength: 2 }, auburn);
+    // −ln(1 − 0.25) / 2 = 0.1438 → 1 − e^−0.1438 = 0.134
+    expect(look.tipMelanin).toBeCloseTo(0.134, 3);
+    expect(look.tipDye).toBe(auburn.dye);
+    expect(look.tipLength).toBe(2);
+  });
+});

@@ -1,0 +1,82 @@
+// Named hair colours, as a stylist names them: the levels of the colour chart (black … platinum
+// blonde), its red tones (strawberry blonde, copper, auburn), salt and pepper and silver. Each is
+// the colour model's settings (hairLook.ts) whose hair, drawn, reads as the name: melanin sets the
+// level; red hair takes a dye as well, since in the model pheomelanin hardly moves the hue (it
+// stays near 33° whatever the redness: red hair would read as brown). Chosen from pictures of the
+// bob at 25,000 strands from behind, the hair's body colour (the middle half of its pixels by
+// luminance) against each melanin; tests/unit/hairShades.test.ts checks the named ranges in Fast
+// and High. The Hair panel's "Shade" sets them in one edit, each still editable.
+import { DEFAULT_HAIR_LOOK, type HairLook, hasTips } from './hairLook';
+
+export interface HairShade {
+  id: string;
+  name: string;
+  melanin: number;
+  /** The pheomelanin share of its melanin. */
+  redness: number;
+  /** A dye (#rrggbb) for the red tones, or null. */
+  dye: string | null;
+  /** Share of grey strands, percent. */
+  grey: number;
+}
+
+const shade = (
+  id: string,
+  name: string,
+  melanin: number,
+  redness: number,
+  dye: string | null = null,
+  grey = 0,
+): HairShade => ({ id, name, melanin, redness, dye, grey });
+
+/** The shades in the panel's order: the levels from dark to light, the reds, the greys. */
+export const HAIR_SHADES: readonly HairShade[] = [
+  shade('black', 'Black', 0.85, 0.1),
+  shade('dark-brown', 'Dark brown', 0.35, 0.25),
+  shade('medium-brown', 'Medium brown', 0.22, 0.3),
+  shade('light-brown', 'Light brown', 0.13, 0.3),
+  shade('dark-blonde', 'Dark blonde', 0.07, 0.35),
+  shade('blonde', 'Blonde', 0.035, 0.5),
+  shade('light-blonde', 'Light blonde', 0.01, 0.5, '#ffd8a0'),
+  shade('platinum', 'Platinum blonde', 0.004, 0.1),
+  shade('strawberry', 'Strawberry blonde', 0.02, 1, '#ffa080'),
+  shade('copper', 'Copper', 0.04, 1, '#ff7a45'),
+  shade('auburn', 'Auburn', 0.25, 1, '#ff5a50'),
+  shade('salt-pepper', 'Salt and pepper', 0.35, 0.25, null, 40),
+  shade('silver', 'Silver', 0.35, 0.25, null, 100),
+];
+
+/** The look with a shade: its pigment and grey share; lighter tips, variation and roughness
+ *  kept (tips then lighten the shade: half its melanin amount, its dye). */
+export function withShade(look: HairLook | null, shade: HairShade): HairLook {
+  const base = look ?? DEFAULT_HAIR_LOOK;
+  const tips = hasTips(base);
+  return {
+    ...base,
+    melanin: shade.melanin,
+    redness: shade.redness,
+    dye: shade.dye,
+    grey: shade.grey,
+    tipMelanin: tips ? lighterMelanin(shade.melanin) : shade.melanin,
+    tipDye: tips ? shade.dye : null,
+  };
+}
+
+/** The shade a look has (its pigment and grey share as the shade sets them), or null. */
+export function shadeOf(look: HairLook | null): HairShade | null {
+  if (!look) return null;
+  return (
+    HAIR_SHADES.find(
+      (s) =>
+        look.melanin === s.melanin &&
+        look.redness === s.redness &&
+        look.dye === s.dye &&
+        look.grey === s.grey,
+    ) ?? null
+  );
+}
+
+/** Half the melanin amount (−ln(1 − m)): a tip two levels or so lighter. */
+function lighterMelanin(m: number): number {
+  return Math.round((1 - Math.sqrt(1 - m)) * 1000) / 1000;
+}
