@@ -10,6 +10,7 @@ import { openStillRenderer } from '../web/cli/render';
 import { applyCommand } from '../web/editor/commands';
 import { Head } from '../web/head/head';
 import { DEFAULT_HAIR_LOOK, type HairLook } from '../web/model/hairLook';
+import { HAIR_SHADES, withShade } from '../web/model/hairShades';
 import { NEW_SESSION_DETAIL } from '../web/model/presetDetail';
 import type { PresetName } from '../web/model/presets';
 import type { SessionState } from '../web/model/session';
@@ -23,12 +24,18 @@ mkdirSync(out, { recursive: true });
 
 const head = Head.builtin();
 const preset = (name: PresetName) => presetSession(name, head, '25k', STRANDS);
-const withLook = (s: SessionState, look: Partial<HairLook>): SessionState => ({
-  ...s,
-  hairLook: { ...DEFAULT_HAIR_LOOK, ...(s.hairLook ?? {}), ...look },
-});
-
 /** A new session's soft hairline and natural detail (the tie presets have its ties already). */
+/** The look the Hair panel's Shade `id` gives the session (its tips kept). */
+const withShadeNamed = (
+  s: SessionState,
+  id: string,
+  tips: Partial<HairLook> = {},
+): SessionState => {
+  const shade = HAIR_SHADES.find((x) => x.id === id);
+  if (!shade) throw new Error(`no shade ${id}`);
+  return { ...s, hairLook: withShade({ ...DEFAULT_HAIR_LOOK, ...tips }, shade) };
+};
+
 const newSessionLook = (s: SessionState): SessionState => ({
   ...s,
   hairline: true,
@@ -45,7 +52,7 @@ const styles: Record<string, () => SessionState> = {
   curly: () => preset('curly'),
   coily: () => {
     const s = preset('curly');
-    return withLook(
+    return withShadeNamed(
       // as the Hair panel's Curl type sets it: the curl and the type's root lift as the Volume
       // in a new session (curl and coil volume on), as a user choosing 4B gets it
       {
@@ -53,16 +60,12 @@ const styles: Record<string, () => SessionState> = {
         curlVolume: true,
         coilVolume: true,
       },
-      {
-        melanin: 0.85,
-        tipMelanin: 0.85,
-        redness: 0.2,
-      },
+      'black',
     );
   },
-  grey: () => withLook(preset('bob'), { melanin: 0.5, tipMelanin: 0.5, grey: 100 }),
-  'auburn-tips': () =>
-    withLook(preset('long'), { melanin: 0.32, redness: 0.8, tipMelanin: 0.12, tipLength: 2 }),
+  // the Hair panel's Shade: Silver; Auburn with lighter tips over 20 cm
+  grey: () => withShadeNamed(preset('bob'), 'silver'),
+  'auburn-tips': () => withShadeNamed(preset('long'), 'auburn', { tipLength: 2 }),
 };
 
 const only = process.env.LOOK_STYLES?.split(',');

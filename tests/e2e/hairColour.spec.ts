@@ -102,7 +102,7 @@ test('Melanin, Redness, Grey and Shade change the hair as named; Undo restores; 
   await page.getByRole('button', { name: 'Redo' }).click();
   await expect(panel.getByRole('combobox', { name: 'Shade' })).toHaveValue('auburn');
   const auburn = (await page.evaluate(() => window.hairsketch.session())) as typeof look;
-  expect(auburn.hairLook).toMatchObject({ redness: 1, dye: '#ff5a50', grey: 0 });
+  expect(auburn.hairLook).toMatchObject({ melanin: 0.3, redness: 1, dye: '#ff8070', grey: 0 });
 
   // the link (Share link writes it to the address bar too) reopens it
   await page.getByRole('button', { name: 'Share link' }).click();

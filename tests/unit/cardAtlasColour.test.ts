@@ -1,12 +1,13 @@
 // The cards atlas keeps the strands' colour: the mean colour (linear light) of the atlas's covered
-// pixels against the base colour that the colour model gives the preset's hairLook, computed here
-// from melanin.ts alone (Unreal's GetHairColorFromMelanin). Synthetic hanging strands (no solver),
+// pixels against the base colour that the colour model gives the preset's hairLook (its melanin,
+// redness and dye), computed here from melanin.ts alone (Unreal's GetHairColorFromMelanin). Synthetic hanging strands (no solver),
 // so the test costs a fraction of a second beside the atlas's drawing.
 import { describe, expect, it } from 'vitest';
 import { presetSession } from '../../web/cli/presetSession';
 import { makeHairCards } from '../../web/export/cardsWriter';
 import { srgbToLinear, strandsForExport } from '../../web/export/strandsForExport';
 import { Head } from '../../web/head/head';
+import { hexToLinear } from '../../web/model/hairLook';
 import { hairColorFromMelanin } from '../../web/model/melanin';
 import type { PresetName } from '../../web/model/presets';
 
@@ -38,7 +39,9 @@ describe('cards atlas colour', () => {
       if (!look) throw new Error('preset without a hairLook');
       expect(look.tipLength).toBe(0); // no lighter tips: one colour from root to tip
       expect(look.tipStart).toBeUndefined();
-      const want = hairColorFromMelanin(look.melanin, look.redness);
+      // with its dye (curly's copper has one)
+      const dye = look.dye ? hexToLinear(look.dye) : null;
+      const want = hairColorFromMelanin(look.melanin, look.redness, dye);
       const exported = strandsForExport(hangingStrands(600, 16), session);
       const { atlas } = makeHairCards(exported, 100, session.growth.seed);
       const sum = [0, 0, 0];

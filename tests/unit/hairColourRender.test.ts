@@ -57,8 +57,8 @@ describe.runIf(DIST_BUILT)('hair colour as drawn', () => {
     // body colour (bodyColour: the middle half of the hair's pixels by luma) against how a
     // colourist names hair: the levels get lighter from Black to Platinum blonde; browns and
     // blondes are warm (hue 18-48 deg, saturated); the reds are red (hue under 25 deg, auburn
-    // under 15 and darker than copper); Black is black, Platinum and Silver nearly unsaturated
-    // (Grey 100 % read as champagne blonde at saturation 0.24 before). Before the shades, auburn's
+    // redder and darker than copper); Black is black, Silver nearly unsaturated (Grey 100 % read
+    // as champagne blonde at saturation 0.24 before) and Platinum between it and Light blonde. Before the shades, auburn's
     // settings (melanin 0.32, redness 0.8) drew hue 24 deg, a dark brown.
     // every shade on one growth of the hair (the still renderer's looks), in each quality
     const looks = HAIR_SHADES.map((shade) => withShade(null, shade));
@@ -84,16 +84,19 @@ describe.runIf(DIST_BUILT)('hair colour as drawn', () => {
       expect(at(id).hue, id).toBeLessThan(48);
       expect(at(id).saturation, id).toBeGreaterThan(0.25);
     }
-    for (const id of ['strawberry', 'copper', 'auburn']) {
-      expect(at(id).hue, id).toBeLessThan(25);
-      expect(at(id).saturation, id).toBeGreaterThan(0.45);
-    }
-    expect(at('auburn').hue).toBeLessThan(15);
+    for (const id of ['strawberry', 'copper', 'auburn']) expect(at(id).hue, id).toBeLessThan(25);
+    for (const id of ['copper', 'auburn']) expect(at(id).saturation, id).toBeGreaterThan(0.45);
+    // strawberry blonde: a blonde gone red, redder than Blonde by 10 deg at least
+    expect(at('strawberry').hue).toBeLessThan(at('blonde').hue - 10);
+    expect(at('strawberry').value).toBeGreaterThan(at('light-brown').value);
+    // auburn a red-brown: redder and darker than copper
+    expect(at('auburn').hue).toBeLessThan(at('copper').hue);
     expect(at('auburn').luma).toBeLessThan(at('copper').luma);
-    for (const id of ['platinum', 'silver']) {
-      expect(at(id).saturation, id).toBeLessThan(0.15);
-      expect(at(id).value, id).toBeGreaterThan(0.55);
-    }
+    // Silver nearly unsaturated, Platinum ivory: paler than Light blonde, warmer than Silver
+    for (const id of ['platinum', 'silver']) expect(at(id).value, id).toBeGreaterThan(0.55);
+    expect(at('silver').saturation).toBeLessThan(0.1);
+    expect(at('platinum').saturation).toBeGreaterThan(at('silver').saturation + 0.05);
+    expect(at('platinum').saturation).toBeLessThan(at('light-blonde').saturation);
     expect(at('salt-pepper').saturation).toBeLessThan(0.2);
     // the same settings read as the same hue and brightness in Fast and High (hair pixels' mean)
     for (const [k, shade] of HAIR_SHADES.entries()) {

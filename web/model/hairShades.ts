@@ -4,8 +4,9 @@
 // level; red hair takes a dye as well, since in the model pheomelanin hardly moves the hue (it
 // stays near 33° whatever the redness: red hair would read as brown). Chosen from pictures of the
 // bob at 25,000 strands from behind, the hair's body colour (the middle half of its pixels by
-// luminance) against each melanin; tests/unit/hairShades.test.ts checks the named ranges in Fast
-// and High. The Hair panel's "Shade" sets them in one edit, each still editable.
+// luminance) against each melanin, and adjusted after a colourist named them blind (11 of 13
+// first; platinum and silver looked alike, the reds looked dyed); Platinum is ivory and Silver
+// cool. tests/unit/hairColourRender.test.ts checks the named ranges in Fast and High. The Hair panel's "Shade" sets them in one edit, each still editable.
 import { DEFAULT_HAIR_LOOK, type HairLook, hasTips } from './hairLook';
 
 export interface HairShade {
@@ -38,16 +39,16 @@ export const HAIR_SHADES: readonly HairShade[] = [
   shade('dark-blonde', 'Dark blonde', 0.07, 0.35),
   shade('blonde', 'Blonde', 0.035, 0.5),
   shade('light-blonde', 'Light blonde', 0.01, 0.5, '#ffd8a0'),
-  shade('platinum', 'Platinum blonde', 0.004, 0.1),
-  shade('strawberry', 'Strawberry blonde', 0.02, 1, '#ffa080'),
-  shade('copper', 'Copper', 0.04, 1, '#ff7a45'),
-  shade('auburn', 'Auburn', 0.25, 1, '#ff5a50'),
+  shade('platinum', 'Platinum blonde', 0.006, 0.3, '#fff0c8'),
+  shade('strawberry', 'Strawberry blonde', 0.015, 1, '#ffb0a0'),
+  shade('copper', 'Copper', 0.045, 1, '#ff8a58'),
+  shade('auburn', 'Auburn', 0.3, 1, '#ff8070'),
   shade('salt-pepper', 'Salt and pepper', 0.35, 0.25, null, 40),
-  shade('silver', 'Silver', 0.35, 0.25, null, 100),
+  shade('silver', 'Silver', 0.35, 0.25, '#dde6ff', 100),
 ];
 
 /** The look with a shade: its pigment and grey share; lighter tips, variation and roughness
- *  kept (tips then lighten the shade: half its melanin amount, its dye). */
+ *  kept (tips then lighten the shade: a quarter of its melanin amount, its dye). */
 export function withShade(look: HairLook | null, shade: HairShade): HairLook {
   const base = look ?? DEFAULT_HAIR_LOOK;
   const tips = hasTips(base);
@@ -76,7 +77,8 @@ export function shadeOf(look: HairLook | null): HairShade | null {
   );
 }
 
-/** Half the melanin amount (−ln(1 − m)): a tip two levels or so lighter. */
+/** A quarter of the melanin amount (−ln(1 − m)): tips three levels or so lighter, as a balayage
+ *  lifts them (half the amount barely showed on long auburn hair). */
 function lighterMelanin(m: number): number {
-  return Math.round((1 - Math.sqrt(1 - m)) * 1000) / 1000;
+  return Math.round((1 - (1 - m) ** 0.25) * 1000) / 1000;
 }

@@ -7,6 +7,7 @@
 // session: no curves, natural detail (NEW_SESSION_DETAIL).
 
 import { DEFAULT_HAIR_LOOK, type HairLook } from './hairLook';
+import { HAIR_SHADES, withShade } from './hairShades';
 import { defOf } from './kinds';
 import { mirrorCurve } from './mirror';
 import { CURLY_DETAIL, NEW_SESSION_DETAIL } from './presetDetail';
@@ -311,17 +312,26 @@ const PAPER_FIGURES: readonly PresetName[] = ['fig6', 'fig7', 'fig8', 'fig1'];
 /** The presets made of ties (braids, a bun): they lay them as a new session does. */
 const TIE_PRESETS: readonly PresetName[] = ['braid', 'bun', 'pigtail-braids'];
 
-/** Natural colours (hairLook.ts) of the presets; the rest take DEFAULT_HAIR_LOOK (a mid brown). */
-const PRESET_LOOKS: Partial<Record<PresetName, Partial<HairLook>>> = {
-  bob: { melanin: 0.7, redness: 0.1, tipMelanin: 0.7 },
-  // chestnut lightened over the last 20 cm (about what its fraction, 45 % of each strand, gave its
-  // longest hair before tips were a length)
-  long: { melanin: 0.35, redness: 0.35, tipMelanin: 0.12, tipLength: 2 },
-  curly: { melanin: 0.3, redness: 0.65, tipMelanin: 0.3 },
-  braid: { melanin: 0.15, redness: 0.25, tipMelanin: 0.15 },
-  bun: { melanin: 0.55, redness: 0.15, tipMelanin: 0.55, grey: 35 },
-  'pigtail-braids': { melanin: 0.25, redness: 0.3, tipMelanin: 0.25 },
+/** Natural colours of the presets, as the Hair panel's Shade names them (hairShades.ts); the
+ *  paper's figures take DEFAULT_HAIR_LOOK. */
+const PRESET_SHADES: Partial<Record<PresetName, { shade: string; tipLength?: number }>> = {
+  default: { shade: 'medium-brown' },
+  empty: { shade: 'medium-brown' },
+  bob: { shade: 'dark-brown' },
+  // lighter over the last 20 cm, a balayage
+  long: { shade: 'light-brown', tipLength: 2 },
+  curly: { shade: 'copper' },
+  braid: { shade: 'dark-blonde' },
+  bun: { shade: 'salt-pepper' },
+  'pigtail-braids': { shade: 'auburn' },
 };
+
+function presetLook(name: PresetName): HairLook {
+  const named = PRESET_SHADES[name];
+  const shade = named && HAIR_SHADES.find((s) => s.id === named.shade);
+  if (!named || !shade) return { ...DEFAULT_HAIR_LOOK };
+  return withShade({ ...DEFAULT_HAIR_LOOK, tipLength: named.tipLength ?? 0 }, shade);
+}
 
 export function applyPreset(s: SessionState, name: PresetName, ctx: PresetContext): SessionState {
   const {
@@ -357,7 +367,7 @@ export function applyPreset(s: SessionState, name: PresetName, ctx: PresetContex
     name === 'long'
       ? { ...rest.growth, maxLength: Math.max(rest.growth.maxLength, LONG_MAX) }
       : rest.growth;
-  const hairLook: HairLook = { ...DEFAULT_HAIR_LOOK, ...PRESET_LOOKS[name] };
+  const hairLook = presetLook(name);
   const made: SessionState = {
     ...rest,
     hairLook,
