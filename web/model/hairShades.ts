@@ -43,7 +43,7 @@ export const HAIR_SHADES: readonly HairShade[] = [
   shade('strawberry', 'Strawberry blonde', 0.015, 1, '#ffb0a0'),
   shade('copper', 'Copper', 0.045, 1, '#ff8a58'),
   shade('auburn', 'Auburn', 0.3, 1, '#ff8070'),
-  shade('salt-pepper', 'Salt and pepper', 0.35, 0.25, null, 40),
+  shade('salt-pepper', 'Salt and pepper', 0.85, 0.1, null, 40),
   shade('silver', 'Silver', 0.35, 0.25, '#dde6ff', 100),
 ];
 
