@@ -63,9 +63,9 @@ const styles: Record<string, () => SessionState> = {
       'black',
     );
   },
-  // the Hair panel's Shade: Silver; Auburn with lighter tips over 20 cm
+  // the Hair panel's Shade: Silver; Auburn with lighter tips over 30 cm
   grey: () => withShadeNamed(preset('bob'), 'silver'),
-  'auburn-tips': () => withShadeNamed(preset('long'), 'auburn', { tipLength: 2 }),
+  'auburn-tips': () => withShadeNamed(preset('long'), 'auburn', { tipLength: 3 }),
 };
 
 const only = process.env.LOOK_STYLES?.split(',');

