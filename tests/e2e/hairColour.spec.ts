@@ -89,6 +89,7 @@ test('Melanin, Redness, Grey and Shade change the hair as named; Undo restores; 
   await shade.click();
   await shade.selectOption({ label: 'Auburn' });
   await expect(panel.getByRole('combobox', { name: 'Shade' })).toHaveValue('auburn');
+  await expect(page.getByTestId('status')).toContainText('Hair colour: Auburn');
   await expect
     .poll(async () => {
       const c = await hairColour(page);

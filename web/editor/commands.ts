@@ -7,6 +7,7 @@ import { CURVE_PARAMS, type CurveParamSpec, defaultParams } from '../model/curve
 import { blockIsOn, detailIsOn, type HairDetail } from '../model/detail';
 import type { GrowthParams } from '../model/growthParams';
 import { DEFAULT_BAND_COLOR, type HairLook } from '../model/hairLook';
+import { shadeOf } from '../model/hairShades';
 import { defOf } from '../model/kinds';
 import { lengthenSession } from '../model/lengthen';
 import {
@@ -464,11 +465,14 @@ const HANDLERS: {
     const check = parseSession({ ...next, curves: [] });
     if (!check.ok) return { session: s, message: `Nothing changed: ${check.error}.` };
     const l = cmd.look;
+    const shade = shadeOf(l);
     return {
       session: next,
-      message: l
-        ? `Hair colour: melanin ${l.melanin}, redness ${l.redness}, grey ${l.grey} %.`
-        : 'Hair colour: the colour box’s colour.',
+      message: !l
+        ? 'Hair colour: the colour box’s colour.'
+        : shade
+          ? `Hair colour: ${shade.name} (melanin ${l.melanin}, redness ${l.redness}, grey ${l.grey} %).`
+          : `Hair colour: melanin ${l.melanin}, redness ${l.redness}, grey ${l.grey} %.`,
     };
   },
   setBandColor(s, cmd) {
