@@ -61,7 +61,9 @@ describe.runIf(DIST_BUILT)('hair colour as drawn', () => {
     // as champagne blonde at saturation 0.24 before) and Platinum between it and Light blonde. Before the shades, auburn's
     // settings (melanin 0.32, redness 0.8) drew hue 24 deg, a dark brown.
     // every shade on one growth of the hair (the still renderer's looks), in each quality
-    const looks = HAIR_SHADES.map((shade) => withShade(null, shade));
+    // and, last, Grey 100 % typed on melanin 0.5 (no shade, no dye)
+    const grey100 = { ...DEFAULT_HAIR_LOOK, melanin: 0.5, tipMelanin: 0.5, grey: 100 };
+    const looks = [...HAIR_SHADES.map((shade) => withShade(null, shade)), grey100];
     const still = async (quality: 'fast' | 'high') =>
       (await renderer.render(base, { ...size, quality, looks })).png.map(readPng);
     const [fast, high] = [await still('fast'), await still('high')];
@@ -98,6 +100,9 @@ describe.runIf(DIST_BUILT)('hair colour as drawn', () => {
     expect(at('platinum').saturation).toBeGreaterThan(at('silver').saturation + 0.05);
     expect(at('platinum').saturation).toBeLessThan(at('light-blonde').saturation);
     expect(at('salt-pepper').saturation).toBeLessThan(0.2);
+    const grey = bodyColour(fast[HAIR_SHADES.length], await bald('fast'));
+    console.log(`Grey 100 % at melanin 0.5: saturation ${grey.saturation.toFixed(3)}`);
+    expect(grey.saturation).toBeLessThan(0.15);
     // the same settings read as the same hue and brightness in Fast and High (hair pixels' mean)
     for (const [k, shade] of HAIR_SHADES.entries()) {
       const f = hairColour(fast[k], await bald('fast'));
