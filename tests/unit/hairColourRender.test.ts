@@ -41,6 +41,9 @@ async function picture(look: Partial<HairLook> | null, quality: 'fast' | 'high')
     : { ...base, curves: [] };
   return readPng((await renderer.render(s, { ...size, quality })).png[0]);
 }
+/** The bob preset's colour before it took the Dark brown shade: the near-black hair the
+ *  highlight and the fill's sheen checks were made on. */
+const NEAR_BLACK: HairLook = { ...DEFAULT_HAIR_LOOK, melanin: 0.7, redness: 0.1, tipMelanin: 0.7 };
 const baldPictures = new Map<string, ReturnType<typeof readPng>>();
 /** The view without hair, drawn once per quality. */
 async function bald(quality: 'fast' | 'high') {
@@ -58,8 +61,9 @@ describe.runIf(DIST_BUILT)('hair colour as drawn', () => {
     // colourist names hair: the levels get lighter from Black to Platinum blonde; browns and
     // blondes are warm (hue 18-48 deg, saturated); the reds are red (hue under 25 deg, auburn
     // redder and darker than copper); Black is black, Silver nearly unsaturated (Grey 100 % read
-    // as champagne blonde at saturation 0.24 before) and Platinum between it and Light blonde. Before the shades, auburn's
-    // settings (melanin 0.32, redness 0.8) drew hue 24 deg, a dark brown.
+    // as champagne blonde at saturation 0.24 before) and Platinum between it and Light blonde.
+    // Before the shades, auburn's settings (melanin 0.32, redness 0.8) drew hue 24 deg, a dark
+    // brown.
     // every shade on one growth of the hair (the still renderer's looks), in each quality
     // and, last, Grey 100 % typed on melanin 0.5 (no shade, no dye)
     const grey100 = { ...DEFAULT_HAIR_LOOK, melanin: 0.5, tipMelanin: 0.5, grey: 100 };
@@ -146,7 +150,7 @@ describe.runIf(DIST_BUILT)('hair colour as drawn', () => {
     // highlightPeak: the band-scale luma's 99th percentile over its median on the top of the
     // hair; it was 12.9 and 14.8 in Fast, 15.0 and 22.3 in High before the strands' shading
     // tangents were tilted strand by strand (7.1, 6.3 and 10.3, 9.8 after)
-    const bob = presetSession('bob', Head.builtin(), '25k', 8000);
+    const bob = { ...presetSession('bob', Head.builtin(), '25k', 8000), hairLook: NEAR_BLACK };
     const views = { width: 320, height: 280, views: ['front', 'side'] as const };
     const limits = { fast: 10, high: 13.5 };
     for (const quality of ['fast', 'high'] as const) {
@@ -183,7 +187,7 @@ describe.runIf(DIST_BUILT)('hair colour as drawn', () => {
     // the dark brown bob (melanin 0.7) from behind, lit by the fill alone: with the fill lighting
     // only the hair's base colour, 0.65 of its pixels in Fast and 0.59 in High were under 12 of
     // 255 in every channel; with the fill's sheen (its primary reflection), 0.39 and 0.38
-    const dark = presetSession('bob', Head.builtin(), '25k', 8000);
+    const dark = { ...presetSession('bob', Head.builtin(), '25k', 8000), hairLook: NEAR_BLACK };
     for (const quality of ['fast', 'high'] as const) {
       const hair = readPng((await renderer.render(dark, { ...size, quality })).png[0]);
       const share = blackShare(hair, await bald(quality));
