@@ -119,6 +119,14 @@ test("Enter in a panel's number field commits it and gives the keys back to the 
   await page.keyboard.press('l');
   await expect(page.getByTestId('status')).toHaveAttribute('data-detail', 'full');
   expect(await page.getByTestId('view-label').textContent()).toBe('View: left');
+  // the Hair and Head panels share the left edge: opening one (G, H) closes the other
+  const head = page.getByRole('region', { name: 'Head' });
+  await page.keyboard.press('g');
+  await expect(head).toBeVisible();
+  await expect(panel).toBeHidden();
+  await page.keyboard.press('h');
+  await expect(panel).toBeVisible();
+  await expect(head).toBeHidden();
 });
 
 test('the status line speaks plainly: strand count with separators, no strands on a bald head', async ({

@@ -88,6 +88,7 @@ export function startApp(): void {
     taskDone: (m, failed) => status.taskDone(m, failed),
     offerOpenHead: () => {
       if (!headPanel?.open) headPanel?.toggle();
+      closeOtherPanel('head');
       showHeadPanel();
       toolbar.refresh();
     },
@@ -221,6 +222,7 @@ export function startApp(): void {
     toggleHelp: () => help?.toggle(),
     toggleDetailPanel: () => {
       detailPanel?.toggle();
+      closeOtherPanel('detail');
       toolbar.refresh();
     },
     detailPanelOpen: () => !!detailPanel?.open,
@@ -229,6 +231,7 @@ export function startApp(): void {
     openStyles: () => styles.show(),
     toggleHeadPanel: () => {
       headPanel?.toggle();
+      closeOtherPanel('head');
       showHeadPanel();
       toolbar.refresh();
     },
@@ -315,6 +318,13 @@ export function startApp(): void {
       say: (m) => status.note(m),
     }),
   );
+  /** The Hair and Head panels share the view's left edge: the one just opened closes the other
+   *  (both open, the Head panel covered the Hair panel's lower half: a new user's note). */
+  function closeOtherPanel(opened: 'detail' | 'head'): void {
+    const [mine, other] = opened === 'detail' ? [detailPanel, headPanel] : [headPanel, detailPanel];
+    if (mine?.open && other?.open) other.toggle();
+  }
+
   function showHeadPanel(): void {
     headPanel?.show({
       session: editor.session,
