@@ -4,7 +4,7 @@ import { describe, expect, it } from 'vitest';
 import { embedCode } from '../../web/app/sessionIO';
 import { editorUrlFor, parseEmbedOptions } from '../../web/embed/embedOptions';
 import { DEFAULT_CAMERA } from '../../web/viewer/defaultCamera';
-import { framedAppView, lowestPoint, namedView } from '../../web/viewer/namedViews';
+import { framedAppView, highestPoint, lowestPoint, namedView } from '../../web/viewer/namedViews';
 
 describe('the embed', () => {
   it('reads its options, ignoring unknown values', () => {
@@ -62,5 +62,23 @@ describe('the embed', () => {
     // the lowest point of strands and a floor
     expect(lowestPoint([0, -1, 0, 0, -3.5, 1], -2)).toBe(-3.5);
     expect(lowestPoint([], -2)).toBe(-2);
+  });
+
+  it('big hair above the head is framed whole: taller picture, aimed higher', () => {
+    const dist = (v: { position: number[]; target: number[] }) =>
+      Math.hypot(...v.position.map((p, a) => p - v.target[a]));
+    const front = namedView('front', -1);
+    // hair within the head's top (1.2): as before
+    expect(namedView('front', -1, 1.1)).toEqual(front);
+    // an afro up to y = 3: the picture spans -2.4 .. 3 (5.4 units against 3.6), so 1.5 times as
+    // far, its middle 0.9 higher (from -0.6 to 0.3)
+    const afro = namedView('front', -1, 3);
+    expect(dist(afro) / dist(front)).toBeCloseTo(1.5, 6);
+    expect(afro.target[1]).toBeCloseTo(front.target[1] + 0.9, 6);
+    const key = framedAppView('left', DEFAULT_CAMERA, -1, 3);
+    expect(dist(key) / dist(DEFAULT_CAMERA)).toBeCloseTo(1.5, 6);
+    expect(key.target[1]).toBeCloseTo(DEFAULT_CAMERA.target[1] + 0.9, 6);
+    expect(highestPoint([0, -1, 0, 0, 2.5, 1])).toBe(2.5);
+    expect(highestPoint([0, 0.3, 0])).toBe(1.2);
   });
 });

@@ -23,7 +23,7 @@ import { buildViewControl } from '../ui/viewControl';
 import { createBodyMesh } from '../viewer/bodyMaterial';
 import { HairView } from '../viewer/hairView';
 import { createHeadMesh } from '../viewer/headMaterial';
-import { lowestPoint, viewLabel } from '../viewer/namedViews';
+import { highestPoint, lowestPoint, viewLabel } from '../viewer/namedViews';
 import { ReferencePlanes } from '../viewer/referencePlanes';
 import { TieBandView } from '../viewer/tieBandView';
 import { Viewer } from '../viewer/viewer';
@@ -197,6 +197,7 @@ export function startApp(): void {
     view,
     // the views frame the hair and as much of the bust as it reaches (not the whole bust)
     hairstyleLowest: () => lowestPoint(hair.strands?.points ?? [], heads.head.mesh.bounds.min[1]),
+    hairstyleHighest: () => highestPoint(hair.strands?.points ?? []),
     cancelTool: () => active.cancel(),
     openDialog: () => toolbar.openFileDialog(),
     // a new session keeps this one's strand count

@@ -23,6 +23,8 @@ export interface EditActionDeps {
   /** The lowest point (world y) the hairstyle's views must show: its hair's, or the head's
    *  bottom. */
   hairstyleLowest(): number;
+  /** The hairstyle's highest point (world y), at least the head's top. */
+  hairstyleHighest(): number;
   /** Abandons what the active tool is doing. */
   cancelTool(): void;
   openDialog(): void;
@@ -115,7 +117,7 @@ export function editActions(d: EditActionDeps): EditActions {
       });
     },
     resetView: () => viewer.resetView(),
-    showView: (name) => viewer.showView(name, d.hairstyleLowest()),
+    showView: (name) => viewer.showView(name, d.hairstyleLowest(), d.hairstyleHighest()),
     orbitSpeed: () => viewer.orbitSpeed,
     setOrbitSpeed: (f) => {
       viewer.setOrbitSpeed(f);

@@ -21,7 +21,13 @@ import { createBodyMesh } from '../viewer/bodyMaterial';
 import { setCameraButtons } from '../viewer/cameraButtons';
 import { HairView } from '../viewer/hairView';
 import { createHeadMesh, recolorHeadScalp, setHeadGeometry } from '../viewer/headMaterial';
-import { BUST_VIEW_FLOOR, lowestPoint, namedView, type ViewName } from '../viewer/namedViews';
+import {
+  BUST_VIEW_FLOOR,
+  highestPoint,
+  lowestPoint,
+  namedView,
+  type ViewName,
+} from '../viewer/namedViews';
 import { TieBandView } from '../viewer/tieBandView';
 import { Viewer } from '../viewer/viewer';
 import { editorUrlFor, parseEmbedOptions } from './embedOptions';
@@ -124,6 +130,7 @@ export async function startEmbed(): Promise<void> {
     moved = true;
   });
   let framed = false;
+  let highest = Number.NEGATIVE_INFINITY;
   let lowest = Math.min(head.mesh.bounds.min[1], showsBody ? BUST_VIEW_FLOOR : Infinity);
   const bounds = s.head === 'builtin' ? undefined : head.mesh.bounds;
   const grid = sessionGrid(s, bounds);
@@ -135,6 +142,7 @@ export async function startEmbed(): Promise<void> {
       onBusy: () => {},
       onResult: (r, final) => {
         // the views frame the shoulders too when the bust is shown
+        if (final) highest = highestPoint(r.strands.points);
         if (final)
           lowest = Math.min(
             lowestPoint(r.strands.points, head.mesh.bounds.min[1]),
@@ -142,7 +150,7 @@ export async function startEmbed(): Promise<void> {
           );
         if (final && !framed && !moved) {
           framed = true;
-          const v = namedView(opts.view ?? 'front', lowest);
+          const v = namedView(opts.view ?? 'front', lowest, highest);
           viewer.setCamera(v.position, v.target);
           viewer.setHomeView(v.position, v.target);
         }
@@ -175,7 +183,7 @@ export async function startEmbed(): Promise<void> {
   api.setLook = (look) => hair.setLook(look, s.hairColor);
   api.capture = async (scale = 1, view) => {
     if (view) {
-      const v = namedView(view, lowest);
+      const v = namedView(view, lowest, highest);
       viewer.setCamera(v.position, v.target);
     }
     const blob = await viewer.captureImage({ scale });

@@ -27,21 +27,27 @@ const DEFAULT_FLOOR = -2.4;
 export const BUST_VIEW_FLOOR = -3.3;
 const HEAD_TOP = 1.2;
 
-/** How a framing made for the default floor grows for hair whose lowest point is at `lowest`:
- *  the picture's height grows with the hair's reach below the default floor (scale), and its
- *  middle moves down by half that reach (drop). */
-function reachFraming(lowest: number): { scale: number; drop: number } {
+/** How a framing made for the default floor grows for hair whose lowest point is at `lowest`
+ *  and highest at `highest`: the picture's height grows with the hair's reach below the default
+ *  floor and above the head's top (scale), and its middle moves by half of each (drop: down).
+ *  Hair within the head's top frames as it always did (a big afro's top was cut off). */
+function reachFraming(lowest: number, highest = HEAD_TOP): { scale: number; drop: number } {
   const floor = Number.isFinite(lowest) ? Math.min(DEFAULT_FLOOR, lowest) : DEFAULT_FLOOR;
+  const top = Number.isFinite(highest) ? Math.max(HEAD_TOP, highest) : HEAD_TOP;
   return {
-    scale: (HEAD_TOP - floor) / (HEAD_TOP - DEFAULT_FLOOR),
-    drop: (DEFAULT_FLOOR - floor) / 2,
+    scale: (top - floor) / (HEAD_TOP - DEFAULT_FLOOR),
+    drop: (DEFAULT_FLOOR - floor) / 2 - (top - HEAD_TOP) / 2,
   };
 }
 
 /** Where the camera stands and looks for `view` of hair whose lowest point is at height
  *  `lowest` (world y; the head's own bottom when there is no hair). */
-export function namedView(view: ViewName, lowest: number): { position: Vec3; target: Vec3 } {
-  const { scale, drop } = reachFraming(lowest);
+export function namedView(
+  view: ViewName,
+  lowest: number,
+  highest = HEAD_TOP,
+): { position: Vec3; target: Vec3 } {
+  const { scale, drop } = reachFraming(lowest, highest);
   const target: Vec3 = [0, DEFAULT_CAMERA.target[1] - drop, 0];
   const position = POSITIONS[view].map(
     (v, a) => target[a] + (v - DEFAULT_CAMERA.target[a]) * scale,
@@ -55,6 +61,14 @@ export function lowestPoint(points: ArrayLike<number>, floor: number): number {
   let low = floor;
   for (let i = 1; i < points.length; i += 3) if (points[i] < low) low = points[i];
   return low;
+}
+
+/** The highest point (world y) of the strands `points`, at least the head's top the framings
+ *  are made for. */
+export function highestPoint(points: ArrayLike<number>): number {
+  let high = HEAD_TOP;
+  for (let i = 1; i < points.length; i += 3) if (points[i] > high) high = points[i];
+  return high;
 }
 
 /** The views the app's view control and keys give (app/actions.ts): straight at the head from
@@ -80,8 +94,9 @@ export function framedAppView(
   name: AppViewName,
   home: { position: Vec3; target: Vec3 },
   lowest: number,
+  highest = HEAD_TOP,
 ): { position: Vec3; target: Vec3 } {
-  const { scale, drop } = reachFraming(lowest);
+  const { scale, drop } = reachFraming(lowest, highest);
   const [p, t] = [home.position, home.target];
   const distance = Math.hypot(p[0] - t[0], p[1] - t[1], p[2] - t[2]) * scale;
   return appView(name, [t[0], t[1] - drop, t[2]], distance);

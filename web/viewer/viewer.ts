@@ -438,9 +438,9 @@ export class Viewer {
 
   /** Eases the camera to a named view (namedViews.ts framedAppView) of the home framing, farther
    *  and lower as far as the hairstyle reaches below the head (`lowest`: its lowest point, world
-   *  y), as resetView eases home. */
-  showView(name: AppViewName, lowest = Number.POSITIVE_INFINITY): void {
-    const v = framedAppView(name, this.rig.home, lowest);
+   *  y), and above it (`highest`), as resetView eases home. */
+  showView(name: AppViewName, lowest = Number.POSITIVE_INFINITY, highest?: number): void {
+    const v = framedAppView(name, this.rig.home, lowest, highest);
     this.rig.easeTo(v.position, v.target);
     this.viewMoving();
   }
