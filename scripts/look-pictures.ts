@@ -10,7 +10,7 @@ import { openStillRenderer } from '../web/cli/render';
 import { applyCommand } from '../web/editor/commands';
 import { Head } from '../web/head/head';
 import { DEFAULT_HAIR_LOOK, type HairLook } from '../web/model/hairLook';
-import { HAIR_SHADES, withShade } from '../web/model/hairShades';
+import { shadeById, withShade } from '../web/model/hairShades';
 import { NEW_SESSION_DETAIL } from '../web/model/presetDetail';
 import type { PresetName } from '../web/model/presets';
 import type { SessionState } from '../web/model/session';
@@ -31,7 +31,7 @@ const withShadeNamed = (
   id: string,
   tips: Partial<HairLook> = {},
 ): SessionState => {
-  const shade = HAIR_SHADES.find((x) => x.id === id);
+  const shade = shadeById(id);
   if (!shade) throw new Error(`no shade ${id}`);
   return { ...s, hairLook: withShade({ ...DEFAULT_HAIR_LOOK, ...tips }, shade) };
 };

@@ -47,6 +47,11 @@ export const HAIR_SHADES: readonly HairShade[] = [
   shade('silver', 'Silver', 0.35, 0.25, '#dde6ff', 100),
 ];
 
+/** The shade named `id` (HairShade.id), or null. */
+export function shadeById(id: string): HairShade | null {
+  return HAIR_SHADES.find((s) => s.id === id) ?? null;
+}
+
 /** The look with a shade: its pigment and grey share; lighter tips, variation and roughness
  *  kept (tips then lighten the shade: a quarter of its melanin amount, its dye). */
 export function withShade(look: HairLook | null, shade: HairShade): HairLook {

@@ -7,7 +7,7 @@
 // session: no curves, natural detail (NEW_SESSION_DETAIL).
 
 import { DEFAULT_HAIR_LOOK, type HairLook } from './hairLook';
-import { HAIR_SHADES, withShade } from './hairShades';
+import { shadeById, withShade } from './hairShades';
 import { defOf } from './kinds';
 import { mirrorCurve } from './mirror';
 import { CURLY_DETAIL, NEW_SESSION_DETAIL } from './presetDetail';
@@ -328,7 +328,7 @@ const PRESET_SHADES: Partial<Record<PresetName, { shade: string; tipLength?: num
 
 function presetLook(name: PresetName): HairLook {
   const named = PRESET_SHADES[name];
-  const shade = named && HAIR_SHADES.find((s) => s.id === named.shade);
+  const shade = named && shadeById(named.shade);
   if (!named || !shade) return { ...DEFAULT_HAIR_LOOK };
   return withShade({ ...DEFAULT_HAIR_LOOK, tipLength: named.tipLength ?? 0 }, shade);
 }

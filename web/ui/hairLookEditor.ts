@@ -7,7 +7,7 @@
 // "Band colour" (the ties' bands, model/tieBands.ts) is there either way: a new session shows the
 // direct colour and has bands. Every change is one call of `set` or `band.set` (one undoable edit).
 import { DEFAULT_HAIR_LOOK, type HairLook, hasTips } from '../model/hairLook';
-import { HAIR_SHADES, shadeOf, withShade } from '../model/hairShades';
+import { HAIR_SHADES, shadeById, shadeOf, withShade } from '../model/hairShades';
 import { HAIR_LOOK_NUMBERS } from '../model/readHairLook';
 import { numberInput, type Say } from './numberInput';
 
@@ -148,7 +148,7 @@ function shadeRow(look: HairLook | null, set: (look: HairLook | null) => void): 
   }
   select.value = current?.id ?? '';
   select.addEventListener('change', () => {
-    const shade = HAIR_SHADES.find((s) => s.id === select.value);
+    const shade = shadeById(select.value);
     if (shade) set(withShade(look, shade));
   });
   return row('Shade', select);
