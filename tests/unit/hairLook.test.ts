@@ -3,7 +3,7 @@
 // the seeded spread; each colour checked against the melanin mapping of melanin.ts taken directly
 // (Unreal's GetHairColorFromMelanin of the pigment) at hand-computed melanin.
 import { describe, expect, it } from 'vitest';
-import { strandsForExport } from '../../web/export/strandsForExport';
+import { strandLookRandom, strandsForExport } from '../../web/export/strandsForExport';
 import { DEFAULT_GROWTH } from '../../web/model/growthParams';
 import {
   DEFAULT_HAIR_LOOK,
@@ -15,6 +15,18 @@ import { hairColorFromMelanin } from '../../web/model/melanin';
 import { quantizeHairLook, readHairLook } from '../../web/model/readHairLook';
 import { parseSession } from '../../web/model/sessionFile';
 import { decodeSessionLink, encodeSessionLink } from '../../web/model/sessionLink';
+
+/** The melanin, by hand, `cm` from the tip of a strand whose balayage piece is `piece`, with
+ *  lighter tips over `tipCm` (root melanin 0.4, tips 0.1): the strand's fade is tipCm · (0.8 +
+ *  0.8 piece) long and its strength 0.6 + 0.4 piece, the tips' share t = strength · (1 − x²(3 −
+ *  2x)), x = cm / fade (at most 1), and the melanin amounts a = −ln(1 − m) mix in log space:
+ *  a = a_root^(1 − t) · a_tip^t. */
+function tipMelaninByHand(cm: number, tipCm: number, piece: number): number {
+  const x = Math.min(1, cm / (tipCm * (0.8 + 0.8 * piece)));
+  const t = (0.6 + 0.4 * piece) * (1 - x * x * (3 - 2 * x));
+  const amount = (-Math.log(0.6)) ** (1 - t) * (-Math.log(0.9)) ** t;
+  return 1 - Math.exp(-amount);
+}
 
 /** Straight strands hanging down, points 0.1 apart (1 cm), `counts[s]` points in strand s. */
 function hanging(counts: readonly number[]) {
@@ -78,7 +90,7 @@ describe('colour model on the strands', () => {
     }
   });
 
-  it('lighter tips over 8 cm: strands of 10 and 30 cm have the same colour at the same distance from the tip', () => {
+  it("lighter tips over 8 cm, painted in pieces: the colour depends on the distance from the tip and the strand's piece, not on its length", () => {
     const look = { ...DEFAULT_HAIR_LOOK, variation: 0, tipMelanin: 0.1, tipLength: 0.8 };
     // 11 and 31 points 1 cm apart: 10 and 30 cm long
     const out = strandsForExport(hanging([11, 31]), {
@@ -88,34 +100,32 @@ describe('colour model on the strands', () => {
     });
     const pc = out.pointColors as Float32Array;
     const mel = out.pigment?.melanin as Float32Array;
-    // by hand: at d cm from the tip the tip's share is t = 1 − s(d / 8), s(x) = x²(3 − 2x); the
-    // melanin amounts −ln(1 − m) blend linearly, so m = 1 − 0.6^(1 − t) 0.9^t (0.4 root, 0.1 tip)
-    const byHand: [number, number][] = [
-      [0, 0.1], // t = 1
-      [1, 0.1155443], // x = 1/8: t = 1 − 11/256 = 0.95703125
-      [2, 0.1552499], // x = 1/4: t = 1 − 5/32 = 0.84375
-      [4, 0.2651531], // x = 1/2: t = 1/2, m = 1 − √0.54
-      [6, 0.3607577], // x = 3/4: t = 1 − 27/32 = 0.15625
-      [8, 0.4], // t = 0 from here up: the root colour
-      [9, 0.4],
-    ];
     const rows: string[] = [];
-    for (const [cm, m] of byHand) {
-      const want = hairColorFromMelanin(m, look.redness);
-      for (const s of [0, 1]) {
+    for (const s of [0, 1]) {
+      const piece = strandLookRandom(DEFAULT_GROWTH.seed, s)[2];
+      for (const cm of [0, 1, 2, 4, 6, 8, 9]) {
+        const m = tipMelaninByHand(cm, 8, piece);
         const p = out.strandStart[s + 1] - 1 - cm; // cm points (1 cm each) up from the tip
         expect(mel[p], `strand ${s}, ${cm} cm from the tip`).toBeCloseTo(m, 6);
-        expect(near(pc, 3 * p, want), `strand ${s}, ${cm} cm from the tip`).toBe(true);
+        expect(
+          near(pc, 3 * p, hairColorFromMelanin(m, look.redness)),
+          `strand ${s}, ${cm} cm`,
+        ).toBe(true);
       }
-      rows.push(`${cm} cm: melanin ${mel[out.strandStart[1] - 1 - cm].toFixed(4)}`);
+      rows.push(
+        `strand ${s} (piece ${piece.toFixed(2)}): melanin ${[0, 2, 4, 6].map((cm) => mel[out.strandStart[s + 1] - 1 - cm].toFixed(3)).join(', ')} at 0, 2, 4, 6 cm`,
+      );
     }
-    console.log(`lighter tips over 8 cm, 10 and 30 cm strands alike: ${rows.join(', ')}`);
-    // the short strand's root (10 cm from its tip) and the long one's are the root colour
-    expect(mel[out.strandStart[0]]).toBeCloseTo(0.4, 6);
+    console.log(`lighter tips over 8 cm: ${rows.join('; ')}`);
+    // pieces differ: the strands' tips are not all one colour
+    const tips = Array.from({ length: 40 }, (_, s) => strandLookRandom(DEFAULT_GROWTH.seed, s)[2]);
+    expect(Math.max(...tips) - Math.min(...tips)).toBeGreaterThan(0.5);
+    // the long strand's root, 30 cm from its tip (past any piece's fade, 12.8 cm at most), is the
+    // root colour
     expect(mel[out.strandStart[1]]).toBeCloseTo(0.4, 6);
 
     // by arc length, not by point: points unevenly spaced, 20, 12, 9, 8, 6, 4, 2, 1, 0 cm from
-    // the tip, have the same colours at the same distances
+    // the tip, have the colours of those distances
     const fromTip = [20, 12, 9, 8, 6, 4, 2, 1, 0];
     const uneven = strandsForExport(
       {
@@ -125,9 +135,9 @@ describe('colour model on the strands', () => {
       { hairColor: '#5a3825', hairLook: look, growth: DEFAULT_GROWTH },
     );
     const melUneven = uneven.pigment?.melanin as Float32Array;
-    const want = new Map(byHand);
+    const piece0 = strandLookRandom(DEFAULT_GROWTH.seed, 0)[2];
     for (const [i, cm] of fromTip.entries())
-      expect(melUneven[i], `${cm} cm from the tip`).toBeCloseTo(want.get(cm) ?? 0.4, 6);
+      expect(melUneven[i], `${cm} cm from the tip`).toBeCloseTo(tipMelaninByHand(cm, 8, piece0), 6);
   });
 
   it('an older session with tipStart keeps its colours: a fraction of each strand, not a length', () => {
@@ -188,7 +198,7 @@ describe('colour model on the strands', () => {
   it('resampled strands (over 255 points) take the distance from the tip by arc length', () => {
     // 601 points 1 cm apart (6 m) are exported as 255 evenly by arc length: point k of 254 is
     // 600 (1 − k / 254) cm from the tip; 8 cm from the tip is not a kept point, 600 · 3/254 cm
-    // (7.087 cm) is: x = 0.8858, t = 1 − x²(3 − 2x) = 0.03613, m = 1 − 0.6^(1 − t) 0.9^t
+    // (7.087 cm) is, as are 600 · 6/254 cm (14.17 cm: past any piece's fade, 12.8 cm at most)
     const look = { ...DEFAULT_HAIR_LOOK, variation: 0, tipMelanin: 0.1, tipLength: 0.8 };
     const out = strandsForExport(hanging([601]), {
       hairColor: '#5a3825',
@@ -197,9 +207,10 @@ describe('colour model on the strands', () => {
     });
     const mel = out.pigment?.melanin as Float32Array;
     expect(out.strandStart[1]).toBe(255);
-    expect(mel[254]).toBeCloseTo(0.1, 6);
-    expect(mel[251]).toBeCloseTo(0.3911456, 6);
-    expect(mel[250]).toBeCloseTo(0.4, 6);
+    const piece = strandLookRandom(DEFAULT_GROWTH.seed, 0)[2];
+    expect(mel[254]).toBeCloseTo(tipMelaninByHand(0, 8, piece), 6);
+    expect(mel[251]).toBeCloseTo(tipMelaninByHand((600 * 3) / 254, 8, piece), 6);
+    expect(mel[248]).toBeCloseTo(0.4, 6);
   });
 
   it('the spread is seeded: the same seed gives the same colours, another seed others', () => {

@@ -33,12 +33,12 @@ describe('hair shades', () => {
     }
   });
 
-  it('with lighter tips on, the tips take a quarter of the melanin amount and the dye', () => {
+  it('with lighter tips on, the tips take an eighth of the melanin amount and the dye', () => {
     const auburn = HAIR_SHADES.find((s) => s.id === 'auburn');
     if (!auburn) throw new Error('no auburn');
     const look = withShade({ ...DEFAULT_HAIR_LOOK, tipLength: 2 }, auburn);
-    // auburn 0.3: −ln(1 − 0.3) / 4 = 0.0892 → 1 − e^−0.0892 = 0.0853
-    expect(look.tipMelanin).toBeCloseTo(0.085, 3);
+    // auburn 0.3: −ln(1 − 0.3) / 8 = 0.04458 → 1 − e^−0.04458 = 0.0436
+    expect(look.tipMelanin).toBeCloseTo(0.044, 3);
     expect(look.tipDye).toBe(auburn.dye);
     expect(look.tipLength).toBe(2);
   });

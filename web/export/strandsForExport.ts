@@ -73,10 +73,12 @@ export function strandValueFactor(seed: number, index: number): number {
   return 1 + STRAND_VALUE_VARIATION * u;
 }
 
-/** The colour model's two random values of input strand `index` (grey pick, melanin spread). */
-export function strandLookRandom(seed: number, index: number): [number, number] {
+/** The colour model's random values of input strand `index` (grey pick, melanin spread, balayage
+ *  piece: hairLook.ts tipShare). */
+export function strandLookRandom(seed: number, index: number): [number, number, number] {
   const h = strandHash(seed ^ 0x6c8e9cf5, index);
-  return [(h >>> 16) / 65536, (h & 0xffff) / 65536];
+  const piece = strandHash(seed ^ 0x2f1b8e43, index);
+  return [(h >>> 16) / 65536, (h & 0xffff) / 65536, (piece >>> 16) / 65536];
 }
 
 /** Linear RGB of input strand `index` for a session colour and seed. */

@@ -78,20 +78,44 @@ export function hasTips(look: HairLook): boolean {
   return look.tipLength > 0 || (look.tipStart ?? 1) < 1;
 }
 
+/** Lighter tips are painted as a balayage is, in pieces: each strand's own fade length is
+ *  tipLength × (BALAYAGE_LENGTH[0] + BALAYAGE_LENGTH[1] · piece) and its own strength
+ *  BALAYAGE_STRENGTH[0] … 1 (piece: the strand's seeded value in [0, 1), shared by the two, so
+ *  the pieces painted higher are the lighter ones). One length and one strength for every strand
+ *  read as an even gradient that the hair's own shading hides. */
+export const BALAYAGE_LENGTH: readonly [number, number] = [0.8, 0.8];
+export const BALAYAGE_STRENGTH: readonly [number, number] = [0.6, 0.4];
+
+/** The absorption (or melanin amount, which it is proportional to) a share `t` of the way from
+ *  the root's `a` to the tips' `b`: mixed in log space, a · (b / a)^t, so the colour lightens
+ *  evenly along the fade (mixed linearly, the strand stays near the root's colour until the last
+ *  fifth of the fade: lighter tips read as lighter ends only). An older session's fraction
+ *  (tipStart < 1) mixes linearly. The strand shader mixes alike. */
+export function mixAbsorption(a: number, b: number, t: number, tipStart = 1): number {
+  // an older session's fraction (tipStart < 1) mixes linearly, as it always did
+  if (tipStart < 0.999) return a + (b - a) * t;
+  const la = Math.log(Math.max(a, 1e-4));
+  return Math.exp(la + (Math.log(Math.max(b, 1e-4)) - la) * t);
+}
+
 /** The share of the tip colour (0 root colour … 1 tip colour) at a point `tipDistance` world
- *  units from its strand's tip: 1 − smoothstep(0, tipLength, tipDistance). An older session's
- *  fraction (tipStart < 1) instead blends by the point's place along the strand, `along`
- *  (0 root … 1 tip): smoothstep(tipStart, 1, along), as it always did. The strand shader's
- *  tipShare() is the same arithmetic. */
+ *  units from its strand's tip: strength × (1 − smoothstep(0, length, tipDistance)), the
+ *  strand's length and strength by its `piece` (BALAYAGE_LENGTH, BALAYAGE_STRENGTH). An older
+ *  session's fraction (tipStart < 1) instead blends by the point's place along the strand,
+ *  `along` (0 root … 1 tip): smoothstep(tipStart, 1, along), as it always did. The strand
+ *  shader's tipShare() is the same arithmetic. */
 export function tipShare(
   tipStart: number,
   tipLength: number,
   along: number,
   tipDistance: number,
+  piece: number,
 ): number {
   if (tipStart < 0.999) return smoothstep(tipStart, 1, along);
-  if (tipLength > 0) return 1 - smoothstep(0, tipLength, tipDistance);
-  return 0;
+  if (tipLength <= 0) return 0;
+  const length = tipLength * (BALAYAGE_LENGTH[0] + BALAYAGE_LENGTH[1] * piece);
+  const strength = BALAYAGE_STRENGTH[0] + BALAYAGE_STRENGTH[1] * piece;
+  return strength * (1 - smoothstep(0, length, tipDistance));
 }
 
 /** #rrggbb (sRGB) → linear RGB; null when it is not #rrggbb. */
@@ -158,10 +182,10 @@ export function rootColor(look: HairLook | null, hairColor: string): Rgb {
 
 /** Linear RGB base colour of one strand at a point `along` it (0 root … 1 tip, by point) and
  *  `tipDistance` from its tip (world units, by arc length): u = its seeded random values in
- *  [0, 1) (u[0] grey pick, u[1] melanin spread), as the shader does it. */
+ *  [0, 1) (u[0] grey pick, u[1] melanin spread, u[2] balayage piece), as the shader does it. */
 export function strandLookColor(
   values: LookUniformValues,
-  u: readonly [number, number],
+  u: readonly [number, number, number],
   along: number,
   tipDistance: number,
 ): Rgb {
@@ -169,9 +193,9 @@ export function strandLookColor(
   let s: Rgb;
   if (u[0] < grey) s = values.greySigma;
   else {
-    const t = tipShare(tipStart, values.tipLength, along, tipDistance);
-    s = [0, 1, 2].map(
-      (c) => values.rootSigma[c] + (values.tipSigma[c] - values.rootSigma[c]) * t,
+    const t = tipShare(tipStart, values.tipLength, along, tipDistance, u[2]);
+    s = [0, 1, 2].map((c) =>
+      mixAbsorption(values.rootSigma[c], values.tipSigma[c], t, tipStart),
     ) as Rgb;
   }
   const k = 1 + spread * (2 * u[1] - 1);
@@ -184,7 +208,7 @@ export function strandLookColor(
  *  white: none). u as for strandLookColor. */
 export function strandPigment(
   look: HairLook,
-  u: readonly [number, number],
+  u: readonly [number, number, number],
   along: number,
   tipDistance: number,
 ): { melanin: number; redness: number; tint: Rgb } {
@@ -192,9 +216,9 @@ export function strandPigment(
   const tint: Rgb = dye ?? [1, 1, 1];
   if (u[0] < look.grey / 100) return { melanin: GREY_MELANIN, redness: GREY_REDNESS, tint };
   const amount = (m: number) => -Math.log(Math.max(1 - Math.min(1, Math.max(0, m)), 1e-4));
-  const t = tipShare(look.tipStart ?? 1, look.tipLength, along, tipDistance);
+  const t = tipShare(look.tipStart ?? 1, look.tipLength, along, tipDistance, u[2]);
   const m =
-    (amount(look.melanin) + (amount(look.tipMelanin) - amount(look.melanin)) * t) *
+    mixAbsorption(amount(look.melanin), amount(look.tipMelanin), t, look.tipStart ?? 1) *
     (1 + look.variation * (2 * u[1] - 1));
   return { melanin: 1 - Math.exp(-m), redness: look.redness, tint };
 }

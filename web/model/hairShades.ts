@@ -82,8 +82,9 @@ export function shadeOf(look: HairLook | null): HairShade | null {
   );
 }
 
-/** A quarter of the melanin amount (−ln(1 − m)): tips three levels or so lighter, as a balayage
- *  lifts them (half the amount barely showed on long auburn hair). */
+/** An eighth of the melanin amount (−ln(1 − m)): tips four levels or so lighter, as a balayage
+ *  lifts them (half the amount barely showed on long auburn hair; a quarter, mixed along the
+ *  strand in log space as hairLook.ts mixAbsorption does, showed as faintly lighter ends). */
 function lighterMelanin(m: number): number {
-  return Math.round((1 - (1 - m) ** 0.25) * 1000) / 1000;
+  return Math.round((1 - (1 - m) ** 0.125) * 1000) / 1000;
 }

@@ -8,6 +8,7 @@
 // and fade; strands are blended order-independently (hairOit.ts). While a motion plays the
 // vertex shaders place each point on its guide first (followerGlsl.ts). The material that uses
 // them: strandMaterial.ts.
+import { BALAYAGE_LENGTH, BALAYAGE_STRENGTH } from '../model/hairLook';
 import { DOM_LAYERED_OPACITY_GLSL } from './deepOpacityGlsl';
 import { FOLLOWER_GLSL } from './followerGlsl';
 import { HAIR_BSDF_GLSL } from './hairBsdf';
@@ -106,19 +107,27 @@ float deepOpacityTransmittance(vec3 world) {
 #endif
 
 
-// The tip colour's share (hairLook.ts tipShare): fading in over tipLength from the strand's tip
-// (tipDistance, world units), or an older session's fraction of the strand (along: 0 root … 1
-// tip).
-float tipShare(float along, float tipDistance) {
+// The tip colour's share (hairLook.ts tipShare): a balayage's piece of the strand's own length
+// and strength (piece: its seeded value), fading in over that length from the tip (tipDistance,
+// world units); or an older session's fraction of the strand (along: 0 root … 1 tip).
+float tipShare(float along, float tipDistance, float piece) {
   if (lookShares.y < 0.999) return smoothstep(lookShares.y, 1.0, along);
-  return tipLength > 0.0 ? 1.0 - smoothstep(0.0, tipLength, tipDistance) : 0.0;
+  if (tipLength <= 0.0) return 0.0;
+  float len = tipLength * (${BALAYAGE_LENGTH[0].toFixed(3)} + ${BALAYAGE_LENGTH[1].toFixed(3)} * piece);
+  return (${BALAYAGE_STRENGTH[0].toFixed(3)} + ${BALAYAGE_STRENGTH[1].toFixed(3)} * piece) * (1.0 - smoothstep(0.0, len, tipDistance));
 }
 
 // The strand's absorption at \`along\` (x: 0 root … 1 tip; y: distance from the tip, world
 // units; rnd: its seeded random values): root → lighter tips, grey strands, a seeded spread of
 // melanin and a little of the red/blue balance.
 vec3 strandSigma(vec4 rnd, vec2 along) {
-  vec3 s = mix(rootSigma, tipSigma, tipShare(along.x, along.y));
+  // the balayage piece (tipShare): a hash of its random values, as widthOf's
+  float piece = fract(dot(rnd, vec4(0.3183099, 0.7727564, 0.5351837, 0.1913462)) * 41.37);
+  // mixed in log space (hairLook.ts mixAbsorption; a linear mix shows lighter tips only at the
+  // last few centimetres), an older session's fraction linearly
+  float t = tipShare(along.x, along.y, piece);
+  vec3 s = lookShares.y < 0.999 ? mix(rootSigma, tipSigma, t)
+    : exp(mix(log(max(rootSigma, 1e-4)), log(max(tipSigma, 1e-4)), t));
   float pick = fract(dot(rnd, vec4(0.7548777, 0.5698403, 0.3308946, 0.1234567)) * 97.31);
   if (pick < lookShares.x) s = greySigma;
   float hue = hueVariation * (2.0 * rnd.y - 1.0);
