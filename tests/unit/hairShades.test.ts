@@ -2,7 +2,7 @@
 // drawn is checked in hairColourRender.test.ts.
 import { describe, expect, it } from 'vitest';
 import { DEFAULT_HAIR_LOOK } from '../../web/model/hairLook';
-import { HAIR_SHADES, shadeOf, withShade } from '../../web/model/hairShades';
+import { HAIR_SHADES, shadeOf, withLighterTips, withShade } from '../../web/model/hairShades';
 import { HAIR_LOOK_NUMBERS } from '../../web/model/readHairLook';
 
 describe('hair shades', () => {
@@ -41,5 +41,17 @@ describe('hair shades', () => {
     expect(look.tipMelanin).toBeCloseTo(0.044, 3);
     expect(look.tipDye).toBe(auburn.dye);
     expect(look.tipLength).toBe(2);
+    // a shade without a dye of its own gives its tips a warm one; without tips, none
+    const brown = HAIR_SHADES.find((s) => s.id === 'dark-brown');
+    if (!brown || brown.dye !== null) throw new Error('dark brown has no dye');
+    expect(withShade({ ...DEFAULT_HAIR_LOOK, tipLength: 2 }, brown).tipDye).toBe('#ffd8a0');
+    expect(withShade({ ...DEFAULT_HAIR_LOOK, tipLength: 0 }, brown).tipDye).toBeNull();
+    // Tips turned on after the shade: the same lighter tips; tips already lighter are kept
+    const plain = withShade(DEFAULT_HAIR_LOOK, brown);
+    expect(plain.tipMelanin).toBe(brown.melanin);
+    const on = withLighterTips({ ...plain, tipLength: 2 });
+    expect(on).toEqual(withShade({ ...DEFAULT_HAIR_LOOK, tipLength: 2 }, brown));
+    const mine = { ...on, tipMelanin: 0.2, tipDye: null };
+    expect(withLighterTips(mine)).toBe(mine);
   });
 });

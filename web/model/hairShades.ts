@@ -52,8 +52,14 @@ export function shadeById(id: string): HairShade | null {
   return HAIR_SHADES.find((s) => s.id === id) ?? null;
 }
 
+/** The dye of a shade's lighter tips when the shade has none of its own: a warm honey, as a
+ *  balayage's lightener leaves hair (the melanin alone, lightened four levels, reads ash-olive
+ *  at the ends of brown hair). The Light blonde shade's dye. */
+export const WARM_TIP_DYE = '#ffd8a0';
+
 /** The look with a shade: its pigment and grey share; lighter tips, variation and roughness
- *  kept (tips then lighten the shade: a quarter of its melanin amount, its dye). */
+ *  kept (tips then lighten the shade: an eighth of its melanin amount, its dye or else
+ *  WARM_TIP_DYE). */
 export function withShade(look: HairLook | null, shade: HairShade): HairLook {
   const base = look ?? DEFAULT_HAIR_LOOK;
   const tips = hasTips(base);
@@ -64,8 +70,16 @@ export function withShade(look: HairLook | null, shade: HairShade): HairLook {
     dye: shade.dye,
     grey: shade.grey,
     tipMelanin: tips ? lighterMelanin(shade.melanin) : shade.melanin,
-    tipDye: tips ? shade.dye : null,
+    tipDye: tips ? (shade.dye ?? WARM_TIP_DYE) : null,
   };
+}
+
+/** The look with tips lighter than its roots, as a Shade with Tips on gives them (an eighth of
+ *  the melanin amount, the look's dye or else WARM_TIP_DYE), unless its tips are lighter
+ *  already: turning Tips on shows a balayage at once, not tips of the roots' colour. */
+export function withLighterTips(look: HairLook): HairLook {
+  if (look.tipMelanin < look.melanin) return look;
+  return { ...look, tipMelanin: lighterMelanin(look.melanin), tipDye: look.dye ?? WARM_TIP_DYE };
 }
 
 /** The shade a look has (its pigment and grey share as the shade sets them), or null. */

@@ -7,7 +7,7 @@
 // "Band colour" (the ties' bands, model/tieBands.ts) is there either way: a new session shows the
 // direct colour and has bands. Every change is one call of `set` or `band.set` (one undoable edit).
 import { DEFAULT_HAIR_LOOK, type HairLook, hasTips } from '../model/hairLook';
-import { HAIR_SHADES, shadeById, shadeOf, withShade } from '../model/hairShades';
+import { HAIR_SHADES, shadeById, shadeOf, withLighterTips, withShade } from '../model/hairShades';
 import { HAIR_LOOK_NUMBERS } from '../model/readHairLook';
 import { numberInput, type Say } from './numberInput';
 
@@ -85,7 +85,11 @@ export function hairLookEditors(
     row(
       'Tips',
       checkbox('Tips', tips, (on) =>
-        set({ ...withoutTipStart(look), tipLength: on ? TIPS_LENGTH : 0 }),
+        set(
+          on
+            ? withLighterTips({ ...withoutTipStart(look), tipLength: TIPS_LENGTH })
+            : { ...withoutTipStart(look), tipLength: 0 },
+        ),
       ),
     ),
   );
