@@ -11,10 +11,14 @@ namespace hairsketch::strand_detail {
 
 namespace {
 
-// Ringlets vary as real ones do: each clump's curl radius and frequency are scaled by a seeded
-// factor within 1 ± kRingletVary (independently), and half the clumps (seeded) wind the other
-// way, so neighbouring ringlets do not line up in rows of parallel stripes.
-constexpr double kRingletVary = 0.25;
+// Ringlets vary as real ones do: each clump's curl radius and frequency are scaled by seeded
+// factors within 1 ± kRingletRadiusVary and 1 ± kRingletTurnsVary, half the clumps (seeded) wind
+// the other way, and each ringlet's curl ramps in over its own share of the hair, the curl's
+// start × (1 ± kRingletStartVary), so neighbouring ringlets do not line up in rows of beads of
+// one size. (±0.25 of radius and turns alone still read as identical ringlets to a stylist.)
+constexpr double kRingletRadiusVary = 0.4;
+constexpr double kRingletTurnsVary = 0.3;
+constexpr double kRingletStartVary = 0.5;
 
 // A point uniform in the unit ball (rejection from the cube).
 V3 inBall(Pcg32& rng) {
@@ -77,9 +81,12 @@ size_t curlPointCount(const DetailParams& d, size_t n, double L, size_t cap) {
 Ringlet ringletOf(const DetailParams& d, uint32_t seed, uint32_t phaseKey) {
   Pcg32 rng = strandRng(seed, phaseKey, kStreamRinglet);
   Ringlet r{d, 1};
-  r.detail.curl.radius *= 1 + kRingletVary * (2 * unitFromBits(rng.nextU32()) - 1);
-  r.detail.curl.frequency *= 1 + kRingletVary * (2 * unitFromBits(rng.nextU32()) - 1);
+  r.detail.curl.radius *= 1 + kRingletRadiusVary * (2 * unitFromBits(rng.nextU32()) - 1);
+  r.detail.curl.frequency *= 1 + kRingletTurnsVary * (2 * unitFromBits(rng.nextU32()) - 1);
   r.hand = rng.nextU32() & 1 ? -1 : 1;
+  const double start =
+      r.detail.curl.start * (1 + kRingletStartVary * (2 * unitFromBits(rng.nextU32()) - 1));
+  r.detail.curl.start = std::min(start, 0.9);
   return r;
 }
 

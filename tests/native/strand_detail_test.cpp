@@ -725,8 +725,9 @@ TEST(StrandDetail, RingletsCurlAClumpInPhase) {
 // Ringlets vary in size and winding, clump by clump: eight strands 0.5 apart (each its own
 // clump) curl at exactly the radius asked without ringlets (each point's distance from the
 // straight axis is r) and all wind the same way; with ringlets each clump's radius lies within
-// r (1 ± 0.25), the radii differ, and some wind each way (the sign of the turn of the point's
-// offset from the axis, seen along the strand), so neighbouring ringlets do not line up in rows.
+// r (1 ± 0.4), the radii differ by more than r / 4, and some wind each way (the sign of the turn of
+// the point's offset from the axis, seen along the strand), so neighbouring ringlets do not line up
+// in rows.
 TEST(StrandDetail, RingletsVaryInSizeClumpByClump) {
   const DetailParams d = curlyClumps();
   std::vector<Strand> list;
@@ -762,10 +763,52 @@ TEST(StrandDetail, RingletsVaryInSizeClumpByClump) {
   EXPECT_LT(v.back(), 8);
   v.pop_back();
   for (double r : v) {
-    EXPECT_GE(r, 0.075 - 1e-3);
-    EXPECT_LE(r, 0.125 + 1e-3);
+    EXPECT_GE(r, 0.06 - 1e-3);
+    EXPECT_LE(r, 0.14 + 1e-3);
   }
-  EXPECT_GT(*std::max_element(v.begin(), v.end()) - *std::min_element(v.begin(), v.end()), 0.01);
+  EXPECT_GT(*std::max_element(v.begin(), v.end()) - *std::min_element(v.begin(), v.end()), 0.025);
+}
+
+// Each ringlet's curl ramps in over its own share of the hair (the curl's start × (1 ± 0.5)),
+// so the curls of neighbouring ringlets do not begin at one height: eight straight strands 2 long
+// (each its own clump), curl start 0.3, ramped in by smoothstep(s / (start · L)), reach half their
+// radius at s = start · L / 2 = 0.3 without ringlets, one height for all; with ringlets within
+// 0.15 … 0.45, and spread over more than 0.08.
+TEST(StrandDetail, RingletsStartTheirCurlAtTheirOwnHeight) {
+  DetailParams d = curlyClumps();
+  d.curl.start = 0.3;
+  std::vector<Strand> list;
+  for (int k = 0; k < 8; ++k) list.push_back(straight(V3(0.5 * k, 0, 0), V3(0, -1, 0), 41, 0.05));
+  auto halfway = [&](bool ringlets) {
+    Strands s = makeStrands(list);
+    EXPECT_TRUE(applyDetail({d}, std::vector<uint32_t>(8, 0), {3, 17, 29, 41, 53, 67, 79, 97}, 5, s,
+                            255, nullptr, ringlets)
+                    .ok());
+    std::vector<double> at;
+    for (int k = 0; k < 8; ++k) {
+      const Strand a = strandOf(s, size_t(k));
+      double most = 0;
+      for (const V3& p : a) most = std::max(most, std::hypot(p.x() - 0.5 * k, p.z()));
+      double depth = 0;
+      for (const V3& p : a)
+        if (std::hypot(p.x() - 0.5 * k, p.z()) >= 0.5 * most) {
+          depth = -p.y();  // the straight strand's arc length there, near enough
+          break;
+        }
+      at.push_back(depth);
+    }
+    return at;
+  };
+  auto spread = [](const std::vector<double>& v) {
+    return *std::max_element(v.begin(), v.end()) - *std::min_element(v.begin(), v.end());
+  };
+  const std::vector<double> plain = halfway(false), own = halfway(true);
+  EXPECT_LT(spread(plain), 0.05);
+  for (double y : own) {
+    EXPECT_GE(y, 0.1);
+    EXPECT_LE(y, 0.5);
+  }
+  EXPECT_GT(spread(own), 0.08);
 }
 
 }  // namespace strand_detail_test
