@@ -1,10 +1,35 @@
 // The style library with real clicks: "Styles" opens a dialog listing every style with its
 // picture; each loads as one undoable edit with hair and no page error (at the session's strand
 // count); Undo returns to the work before; the link reopens a loaded style; Escape closes the
-// dialog without a change; the keyboard reaches the styles.
+// dialog without a change; the keyboard reaches the styles; each style's hair in the browser is
+// the hair `hairsketch grow` grows from its file (hashes).
+import { execFile } from 'node:child_process';
+import { mkdtempSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { promisify } from 'node:util';
 import { expect, test } from '@playwright/test';
 import { STYLE_LIBRARY } from '../../web/model/styleLibrary';
 import { settled, watchConsole } from './helpers';
+
+const execFileAsync = promisify(execFile);
+
+/** `hairsketch grow` on each style's file at `strands` strands, one after another (beside the
+ *  browser's work): each style's hairHash from its report. */
+async function cliHashes(strands: number): Promise<Map<string, string>> {
+  const dir = mkdtempSync(join(tmpdir(), 'styles-'));
+  const out = new Map<string, string>();
+  for (const st of STYLE_LIBRARY) {
+    const args = ['grow', `public/styles/${st.id}.json`, '--out', join(dir, `${st.id}.hair`)];
+    const { stdout } = await execFileAsync(
+      'node',
+      ['scripts/hairsketch.mjs', ...args, '--strands', String(strands)],
+      { maxBuffer: 1 << 20 },
+    );
+    out.set(st.id, (JSON.parse(stdout.trim()) as { hairHash: string }).hairHash);
+  }
+  return out;
+}
 
 interface SessionJson {
   curves: { id: string; type: string }[];
@@ -17,6 +42,10 @@ test('Styles lists every style with its picture; each loads with hair, Undo retu
 }) => {
   test.setTimeout(600_000);
   const errors = watchConsole(page);
+  // the command line grows every style meanwhile: the same hair as the browser's (hashes)
+  const cli = cliHashes(1200);
+  cli.catch(() => {}); // awaited below; no unhandled rejection meanwhile
+  const browser = new Map<string, string | null>();
   await page.goto('/?strands=1200');
   let s = await settled(page);
   const before = (await page.evaluate(() => window.hairsketch.session())) as SessionJson;
@@ -57,6 +86,7 @@ test('Styles lists every style with its picture; each loads with hair, Undo retu
     expect(now.growth.maxStrands, st.id).toBe(1200);
     expect(s.strands, st.id).toBeGreaterThan(300);
     expect(s.text).toContain(`Started from the style “${st.name}”`);
+    browser.set(st.id, await page.evaluate(() => window.hairsketch.hairHash()));
     if (i === 0) {
       // one Undo brings back the work before
       await page.keyboard.press('Control+z');
@@ -90,4 +120,6 @@ test('Styles lists every style with its picture; each loads with hair, Undo retu
     })
     .toBe(first.curves.map((c) => c.id).join(','));
   expect(errors).toEqual([]);
+  expect(new Set(browser.values()).size, 'a hash of its own per style').toBe(STYLE_LIBRARY.length);
+  expect(Object.fromEntries(browser)).toEqual(Object.fromEntries(await cli));
 });

@@ -69,7 +69,7 @@ async function growOk(...args: string[]) {
   expect(lines).toHaveLength(1);
   const report = JSON.parse(lines[0]);
   expect(Object.keys(report).sort()).toEqual(
-    ['bytes', 'file', 'format', 'growMs', 'points', 'solveMs', 'strands'].sort(),
+    ['bytes', 'file', 'format', 'growMs', 'hairHash', 'points', 'solveMs', 'strands'].sort(),
   );
   return report as {
     strands: number;

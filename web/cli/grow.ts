@@ -37,6 +37,7 @@ import { exportedCounts } from '../export/strandsForExport';
 import type { ExportHead } from '../export/types';
 import { writeExport } from '../export/writeExport';
 import { builtinBody } from '../head/buildBody';
+import { contentKey } from '../model/curveSet';
 import { GRID_PRESETS, type GridPreset, isGridPreset } from '../model/grid';
 import { MOTION_DEFAULT_FRAMES, MOTIONS, type MotionName } from '../model/motion';
 import type { SessionState } from '../model/session';
@@ -90,6 +91,9 @@ export interface GrowReport {
   growMs: number;
   format: ExportFormat;
   file: string;
+  /** The grown strands' content key (model/curveSet.ts contentKey of points and strandStart):
+   *  the app's `window.hairsketch.hairHash()` for the same session and strand count. */
+  hairHash: string;
 }
 
 const gridList = Object.keys(GRID_PRESETS).join('|');
@@ -407,6 +411,7 @@ export async function runGrow(
       growMs: Math.round(hair.growMs),
       format: args.format,
       file: resolve(args.out),
+      hairHash: contentKey(hair.strands.points, hair.strands.strandStart),
     };
     print(JSON.stringify(report));
     return report;
