@@ -722,6 +722,18 @@ TEST(StrandDetail, RingletsCurlAClumpInPhase) {
   EXPECT_GT(apart(false), 0.05);
 }
 
+// Eight straight strands 2 long hanging down, 0.5 apart along x, each its own clump, with `d`'s
+// detail applied (as ringlets or not).
+Strands eightClumps(const DetailParams& d, bool ringlets) {
+  std::vector<Strand> list;
+  for (int k = 0; k < 8; ++k) list.push_back(straight(V3(0.5 * k, 0, 0), V3(0, -1, 0), 41, 0.05));
+  Strands s = makeStrands(list);
+  EXPECT_TRUE(applyDetail({d}, std::vector<uint32_t>(8, 0), {3, 17, 29, 41, 53, 67, 79, 97}, 5, s,
+                          255, nullptr, ringlets)
+                  .ok());
+  return s;
+}
+
 // Ringlets vary in size and winding, clump by clump: eight strands 0.5 apart (each its own
 // clump) curl at exactly the radius asked without ringlets (each point's distance from the
 // straight axis is r) and all wind the same way; with ringlets each clump's radius lies within
@@ -730,13 +742,8 @@ TEST(StrandDetail, RingletsCurlAClumpInPhase) {
 // in rows.
 TEST(StrandDetail, RingletsVaryInSizeClumpByClump) {
   const DetailParams d = curlyClumps();
-  std::vector<Strand> list;
-  for (int k = 0; k < 8; ++k) list.push_back(straight(V3(0.5 * k, 0, 0), V3(0, -1, 0), 41, 0.05));
   auto radii = [&](bool ringlets) {
-    Strands s = makeStrands(list);
-    EXPECT_TRUE(applyDetail({d}, std::vector<uint32_t>(8, 0), {3, 17, 29, 41, 53, 67, 79, 97}, 5, s,
-                            255, nullptr, ringlets)
-                    .ok());
+    const Strands s = eightClumps(d, ringlets);
     std::vector<double> r;
     int clockwise = 0;
     for (int k = 0; k < 8; ++k) {
@@ -777,13 +784,8 @@ TEST(StrandDetail, RingletsVaryInSizeClumpByClump) {
 TEST(StrandDetail, RingletsStartTheirCurlAtTheirOwnHeight) {
   DetailParams d = curlyClumps();
   d.curl.start = 0.3;
-  std::vector<Strand> list;
-  for (int k = 0; k < 8; ++k) list.push_back(straight(V3(0.5 * k, 0, 0), V3(0, -1, 0), 41, 0.05));
   auto halfway = [&](bool ringlets) {
-    Strands s = makeStrands(list);
-    EXPECT_TRUE(applyDetail({d}, std::vector<uint32_t>(8, 0), {3, 17, 29, 41, 53, 67, 79, 97}, 5, s,
-                            255, nullptr, ringlets)
-                    .ok());
+    const Strands s = eightClumps(d, ringlets);
     std::vector<double> at;
     for (int k = 0; k < 8; ++k) {
       const Strand a = strandOf(s, size_t(k));
