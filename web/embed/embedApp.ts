@@ -141,13 +141,14 @@ export async function startEmbed(): Promise<void> {
     {
       onBusy: () => {},
       onResult: (r, final) => {
-        // the views frame the shoulders too when the bust is shown
-        if (final) highest = highestPoint(r.strands.points);
-        if (final)
+        if (final) {
+          // the views frame the hair's top, and the shoulders too when the bust is shown
+          highest = highestPoint(r.strands.points);
           lowest = Math.min(
             lowestPoint(r.strands.points, head.mesh.bounds.min[1]),
             showsBody ? BUST_VIEW_FLOOR : Infinity,
           );
+        }
         if (final && !framed && !moved) {
           framed = true;
           const v = namedView(opts.view ?? 'front', lowest, highest);

@@ -62,16 +62,16 @@ export const WARM_TIP_DYE = '#ffd8a0';
  *  WARM_TIP_DYE). */
 export function withShade(look: HairLook | null, shade: HairShade): HairLook {
   const base = look ?? DEFAULT_HAIR_LOOK;
-  const tips = hasTips(base);
-  return {
+  const shaded: HairLook = {
     ...base,
     melanin: shade.melanin,
     redness: shade.redness,
     dye: shade.dye,
     grey: shade.grey,
-    tipMelanin: tips ? lighterMelanin(shade.melanin) : shade.melanin,
-    tipDye: tips ? (shade.dye ?? WARM_TIP_DYE) : null,
+    tipMelanin: shade.melanin,
+    tipDye: null,
   };
+  return hasTips(base) ? withLighterTips(shaded) : shaded;
 }
 
 /** The look with tips lighter than its roots, as a Shade with Tips on gives them (an eighth of
