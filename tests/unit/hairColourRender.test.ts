@@ -9,7 +9,6 @@ import { openStillRenderer, type StillRenderer } from '../../web/cli/render';
 import { Head } from '../../web/head/head';
 import { DEFAULT_HAIR_LOOK, type HairLook } from '../../web/model/hairLook';
 import { HAIR_SHADES, withShade } from '../../web/model/hairShades';
-import type { SessionState } from '../../web/model/session';
 import { parseSession } from '../../web/model/sessionFile';
 import {
   blackShare,
@@ -35,23 +34,33 @@ afterAll(async () => {
   await renderer?.close();
 });
 
-async function picture(look: Partial<HairLook> | null, quality: 'fast' | 'high') {
-  const s: SessionState = look
-    ? { ...base, hairLook: { ...DEFAULT_HAIR_LOOK, ...look } }
-    : { ...base, curves: [] };
-  return readPng((await renderer.render(s, { ...size, quality })).png[0]);
-}
 /** The bob preset's colour before it took the Dark brown shade: the near-black hair the
  *  highlight and the fill's sheen checks were made on. */
 const NEAR_BLACK: HairLook = { ...DEFAULT_HAIR_LOOK, melanin: 0.7, redness: 0.1, tipMelanin: 0.7 };
-const baldPictures = new Map<string, ReturnType<typeof readPng>>();
-/** The view without hair, drawn once per quality. */
+/** Both qualities are drawn on one growth of the hair, in one page (the still renderer's
+ *  qualities): png is Fast's pictures, then High's. */
+const BOTH = ['fast', 'high'] as const;
+let baldPictures: Promise<Record<'fast' | 'high', ReturnType<typeof readPng>>> | null = null;
+/** The view without hair, drawn once in each quality. */
 async function bald(quality: 'fast' | 'high') {
-  const known = baldPictures.get(quality);
-  if (known) return known;
-  const p = await picture(null, quality);
-  baldPictures.set(quality, p);
-  return p;
+  baldPictures ??= renderer
+    .render({ ...base, curves: [] }, { ...size, qualities: BOTH })
+    .then(({ png }) => ({ fast: readPng(png[0]), high: readPng(png[1]) }));
+  return (await baldPictures)[quality];
+}
+/** The near-black bob at 8,000 strands from the front, the side and the back, in both
+ *  qualities (the highlight and the fill's sheen checks), with its bald views: png is Fast's
+ *  three views, then High's. */
+let darkBobPictures: Promise<{ hair: Uint8Array[]; none: Uint8Array[] }> | null = null;
+function darkBob() {
+  darkBobPictures ??= (async () => {
+    const bob = { ...presetSession('bob', Head.builtin(), '25k', 8000), hairLook: NEAR_BLACK };
+    const o = { width: 320, height: 280, views: ['front', 'side', 'back'] as const };
+    const hair = (await renderer.render(bob, { ...o, qualities: BOTH })).png;
+    const none = (await renderer.render({ ...bob, curves: [] }, { ...o, qualities: BOTH })).png;
+    return { hair, none };
+  })();
+  return darkBobPictures;
 }
 
 describe.runIf(DIST_BUILT)('hair colour as drawn', () => {
@@ -68,9 +77,8 @@ describe.runIf(DIST_BUILT)('hair colour as drawn', () => {
     // and, last, Grey 100 % typed on melanin 0.5 (no shade, no dye)
     const grey100 = { ...DEFAULT_HAIR_LOOK, melanin: 0.5, tipMelanin: 0.5, grey: 100 };
     const looks = [...HAIR_SHADES.map((shade) => withShade(null, shade)), grey100];
-    const still = async (quality: 'fast' | 'high') =>
-      (await renderer.render(base, { ...size, quality, looks })).png.map(readPng);
-    const [fast, high] = [await still('fast'), await still('high')];
+    const png = (await renderer.render(base, { ...size, looks, qualities: BOTH })).png.map(readPng);
+    const [fast, high] = [png.slice(0, looks.length), png.slice(looks.length)];
     const body = new Map<string, ReturnType<typeof bodyColour>>();
     for (const [k, shade] of HAIR_SHADES.entries()) {
       const c = bodyColour(fast[k], await bald('fast'));
@@ -128,12 +136,15 @@ describe.runIf(DIST_BUILT)('hair colour as drawn', () => {
     const plain = { melanin: 0.6, tipMelanin: 0.6 };
     const tips = { melanin: 0.6, tipMelanin: 0.08, tipLength: 2.5 };
     const gains = [];
-    for (const quality of ['fast', 'high'] as const) {
-      // both looks on one growth of the hair (the still renderer's looks)
-      const looks = [plain, tips].map((l) => ({ ...DEFAULT_HAIR_LOOK, ...l }));
-      const png = (await renderer.render(base, { ...size, quality, looks })).png;
+    // both looks on one growth of the hair, in each quality (the still renderer's looks and
+    // qualities)
+    const looks = [plain, tips].map((l) => ({ ...DEFAULT_HAIR_LOOK, ...l }));
+    const png = (await renderer.render(base, { ...size, looks, qualities: BOTH })).png;
+    for (const [k, quality] of BOTH.entries()) {
       const none = await bald(quality);
-      const [without, lighter] = png.map((p) => hairColour(readPng(p), none));
+      const [without, lighter] = png
+        .slice(2 * k, 2 * k + 2)
+        .map((p) => hairColour(readPng(p), none));
       expect(without.pixels).toBeGreaterThan(2000);
       gains.push(lighter.luma / without.luma - 1);
     }
@@ -150,13 +161,13 @@ describe.runIf(DIST_BUILT)('hair colour as drawn', () => {
     // highlightPeak: the band-scale luma's 99th percentile over its median on the top of the
     // hair; it was 12.9 and 14.8 in Fast, 15.0 and 22.3 in High before the strands' shading
     // tangents were tilted strand by strand (7.1, 6.3 and 10.3, 9.8 after)
-    const bob = { ...presetSession('bob', Head.builtin(), '25k', 8000), hairLook: NEAR_BLACK };
-    const views = { width: 320, height: 280, views: ['front', 'side'] as const };
+    const { hair, none } = await darkBob();
     const limits = { fast: 10, high: 13.5 };
-    for (const quality of ['fast', 'high'] as const) {
-      const hair = await renderer.render(bob, { ...views, quality });
-      const none = await renderer.render({ ...bob, curves: [] }, { ...views, quality });
-      const peaks = hair.png.map((png, i) => highlightPeak(readPng(png), readPng(none.png[i])));
+    for (const [k, quality] of BOTH.entries()) {
+      // front and side (darkBob's first two views)
+      const peaks = [0, 1].map((i) =>
+        highlightPeak(readPng(hair[3 * k + i]), readPng(none[3 * k + i])),
+      );
       console.log(
         `highlight peak, ${quality}: front ${peaks[0].toFixed(2)}, side ${peaks[1].toFixed(2)}`,
       );
@@ -172,10 +183,9 @@ describe.runIf(DIST_BUILT)('hair colour as drawn', () => {
     // (hairShadowReceiver.ts) gave 5.38
     const bob = presetSession('bob', Head.builtin(), '25k', 30000);
     const views = { width: 600, height: 600, views: ['front'] as const };
-    const grain = async (quality: 'fast' | 'high') =>
-      skinGrain(readPng((await renderer.render(bob, { ...views, quality })).png[0]));
-    const fast = await grain('fast');
-    const high = await grain('high');
+    const [fast, high] = (await renderer.render(bob, { ...views, qualities: BOTH })).png.map((p) =>
+      skinGrain(readPng(p)),
+    );
     console.log(
       `skin grain: Fast ${fast.grain.toFixed(2)} (${fast.pixels} px), High ${high.grain.toFixed(2)} (${high.pixels} px)`,
     );
@@ -187,10 +197,10 @@ describe.runIf(DIST_BUILT)('hair colour as drawn', () => {
     // the dark brown bob (melanin 0.7) from behind, lit by the fill alone: with the fill lighting
     // only the hair's base colour, 0.65 of its pixels in Fast and 0.59 in High were under 12 of
     // 255 in every channel; with the fill's sheen (its primary reflection), 0.39 and 0.38
-    const dark = { ...presetSession('bob', Head.builtin(), '25k', 8000), hairLook: NEAR_BLACK };
-    for (const quality of ['fast', 'high'] as const) {
-      const hair = readPng((await renderer.render(dark, { ...size, quality })).png[0]);
-      const share = blackShare(hair, await bald(quality));
+    const { hair } = await darkBob();
+    for (const [k, quality] of BOTH.entries()) {
+      // from the back (darkBob's third view), at the size of bald's pictures
+      const share = blackShare(readPng(hair[3 * k + 2]), await bald(quality));
       console.log(`dark bob from behind (${quality}): ${share.toFixed(3)} of its pixels black`);
       expect(share).toBeLessThan(0.5);
     }

@@ -92,6 +92,9 @@ export interface StillOptions {
   /** Colour looks (hairLook.ts; null: the colour box's colour) drawn on the same hair, each from
    *  every view, instead of the session's own: png is then look by look, view by view. */
   looks?: readonly (HairLook | null)[];
+  /** Qualities drawn on the same hair, one after another, instead of `quality` alone (the page
+   *  starts in the first): png is then quality by quality, look by look, view by view. */
+  qualities?: readonly QualitySetting[];
 }
 
 export interface StillRenderer {
@@ -149,8 +152,9 @@ export async function openStillRenderer(): Promise<StillRenderer> {
   return {
     async render(
       session,
-      { views, width, height, timeoutMs = 300_000, quality = 'auto', headFile, looks },
+      { views, width, height, timeoutMs = 300_000, quality = 'auto', headFile, looks, qualities },
     ) {
+      const drawn = qualities?.length ? qualities : [quality];
       if (session.head !== 'builtin' && headFile?.hash !== session.head.hash)
         throw new CliError(
           `this session needs the head file “${session.head.name}”: render the saved session file that embeds it`,
@@ -171,7 +175,7 @@ export async function openStillRenderer(): Promise<StillRenderer> {
           );
         }
         await page.goto(
-          `${server.base}/embed.html?still&view=${views[0]}&quality=${quality}#${link.replace(/^#/, '')}`,
+          `${server.base}/embed.html?still&view=${views[0]}&quality=${drawn[0]}#${link.replace(/^#/, '')}`,
         );
         const status = page.getByTestId('status');
         try {
@@ -197,18 +201,21 @@ export async function openStillRenderer(): Promise<StillRenderer> {
         if (drawnOn !== wanted)
           throw new Error(`the viewer drew the head “${drawnOn}” instead of “${wanted}”`);
         const png: Uint8Array[] = [];
-        for (const look of looks ?? [undefined]) {
-          for (const view of views) {
-            const base64 = await page.evaluate(
-              ([v, l]) => {
-                const embed = window.hairsketchEmbed;
-                if (!embed) throw new Error('the viewer has no capture');
-                if (l !== undefined) embed.setLook(l);
-                return embed.capture(1, v);
-              },
-              [view, look] as const,
-            );
-            png.push(new Uint8Array(Buffer.from(base64, 'base64')));
+        for (const [k, q] of drawn.entries()) {
+          for (const look of looks ?? [undefined]) {
+            for (const view of views) {
+              const base64 = await page.evaluate(
+                ([v, l, q]) => {
+                  const embed = window.hairsketchEmbed;
+                  if (!embed) throw new Error('the viewer has no capture');
+                  if (q !== undefined) embed.setQuality(q);
+                  if (l !== undefined) embed.setLook(l);
+                  return embed.capture(1, v);
+                },
+                [view, look, k > 0 ? q : undefined] as const,
+              );
+              png.push(new Uint8Array(Buffer.from(base64, 'base64')));
+            }
           }
         }
         return { png, strands, head: wanted, ms: performance.now() - t0 };

@@ -5,7 +5,7 @@
 // is not).
 
 import { visibleStrands } from '../app/hairPresenter';
-import { activeQuality } from '../app/quality';
+import { activeQuality, type QualitySetting } from '../app/quality';
 import { Head } from '../head/head';
 import { sessionScalpMask } from '../head/scalpPaint';
 import { sessionHairline } from '../head/scalpRegion';
@@ -46,6 +46,8 @@ declare global {
       storeHead(name: string, hash: string, base64: string): Promise<void>;
       /** For `hairsketch render`'s looks: the hair shown with another colour look. */
       setLook(look: HairLook | null): void;
+      /** For `hairsketch render`'s qualities: the hair drawn in another quality. */
+      setQuality(quality: QualitySetting): void;
     };
   }
 }
@@ -73,6 +75,9 @@ export async function startEmbed(): Promise<void> {
       );
     },
     setLook: () => {
+      throw new Error('no hair on screen yet');
+    },
+    setQuality: () => {
       throw new Error('no hair on screen yet');
     },
   };
@@ -182,6 +187,7 @@ export async function startEmbed(): Promise<void> {
   );
 
   api.setLook = (look) => hair.setLook(look, s.hairColor);
+  api.setQuality = (quality) => hair.setQuality(activeQuality(quality, viewer.software));
   api.capture = async (scale = 1, view) => {
     if (view) {
       const v = namedView(view, lowest, highest);

@@ -72,6 +72,7 @@ export class HairView {
     private readonly head: THREE.Mesh | null = null,
   ) {
     viewer.onFrame(() => this.renderDeepOpacity());
+    viewer.onBeforeCapture(() => this.renderDeepOpacity());
   }
 
   /** Replaces the hair on screen with `strands` (lit by `lighting` when given); `shown` runs

@@ -75,6 +75,7 @@ export class Viewer {
   private lastRender: { time: number; drawn: number } | null = null;
   private lastDetail = 1;
   private frameHooks: Array<() => void> = [];
+  private captureHooks: Array<() => void> = [];
   /** Called after each rendered frame (e.g. to count displayed hair revisions). */
   onRendered: (() => void) | null = null;
   /** Also called after each rendered frame (the view control's label follows the camera). */
@@ -348,6 +349,13 @@ export class Viewer {
     this.frameHooks.push(hook);
   }
 
+  /** Runs `hook` before a capture draws the view (captureImage): what a frame would have
+   *  prepared first (the hair's deep opacity maps after a quality switch) is ready although no
+   *  animation frame has run since. */
+  onBeforeCapture(hook: () => void): void {
+    this.captureHooks.push(hook);
+  }
+
   requestRender(): void {
     this.dirty = true;
     this.scheduleFrame();
@@ -593,6 +601,7 @@ export class Viewer {
   /** The current view as a PNG at `scale` × the canvas's resolution, with every strand drawn
    *  (not the level-of-detail sample), on a transparent background when asked. */
   captureImage(opts: { scale?: number; transparent?: boolean } = {}): Promise<Blob> {
+    for (const hook of this.captureHooks) hook();
     const shown = this.backdrops.filter((o) => o.visible);
     for (const o of shown) o.visible = false;
     try {
