@@ -22,6 +22,7 @@ enum EngineSetting : size_t {
   kSettingNape,         // a low nape: read by the app's head (the scalp mask), not by the engine
   kSettingCoilVolume,   // coily hair stands out from the head (HairEngine::setCoilVolume)
   kSettingRoundPlaits,  // a braid's sections are round across their own path (setRoundPlaits)
+  kSettingTieVolume,    // a tie's hair holds a stylist's volume (HairEngine::setTieVolume)
   kEngineSettingCount
 };
 

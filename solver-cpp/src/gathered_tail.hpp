@@ -99,6 +99,9 @@ struct GatheredTail {
   // The session's `roundPlaits` (HairEngine::roundPlaits): a braid's sections are round across
   // their own path (gathered_tail_shapes.cpp plaitStretch). Off: as before.
   bool roundPlaits = false;
+  // The session's `tieVolume` (HairEngine::tieVolume): sizeTie makes a round tail's body and a
+  // bun's rope kTieVolume times as wide. Off: as before.
+  bool tieVolume = false;
 };
 
 // The tail of a gathered ponytail: spine = the curve's points from the one nearest C1's centre
@@ -137,6 +140,12 @@ constexpr float kCombLift = 0.07f;   // 7 mm: the top layer of combed hair over 
 // (at most 1.5 / kCombRise of a slope: about 37 degrees)
 constexpr float kCombRise = 2.f;
 float sectionTailRadius(float share);
+// Tie volume (the session's tieVolume, with ties from any hand): a whole section's round tail
+// hangs kTieVolume times as wide as sectionTailRadius (3 cm for a whole head), and its bun's rope
+// is as much thicker (a braid keeps its width). Judges of the style library found tails, buns and
+// braids too small for the hair they gather (a whole head of long hair in a ponytail hangs 5-7 cm
+// wide).
+constexpr float kTieVolume = 1.5f;
 float sectionBunRadius(float share, float lengthAfterTie);
 
 // Ties from any hand (the session's `ties` on; gathered_tail_ties.cpp, docs/braids-buns.md):

@@ -24,7 +24,11 @@ void bunRopeShape(float R, float K, float& rr, float& H) {
 }
 
 void sizeTie(GatheredTail& t, float share, float after) {
-  const float tie = kTieRadius * std::sqrt(share), body = sectionTailRadius(share);
+  const float tie = kTieRadius * std::sqrt(share);
+  // tie volume widens round tails and buns; a braid's three bundles are as wide as before (three
+  // times the body: half as wide again read as a stack of beads)
+  const float plain = sectionTailRadius(share);
+  const float body = (t.tieVolume ? kTieVolume : 1.f) * plain;
   if (t.shape == TailShape::Bun) {
     // the rope holds the hair; as many turns as its length allows once it has climbed the stub
     const float rr = kBunRopeFill * body;
@@ -40,7 +44,7 @@ void sizeTie(GatheredTail& t, float share, float after) {
     t.bun.turns = K;
     t.bunRadius = rr * (kBunRopePitch * K + 2);
   } else if (t.shape == TailShape::Braid) {
-    t.braid.width = std::max(t.braid.width, 3.0 * double(body));
+    t.braid.width = std::max(t.braid.width, 3.0 * double(plain));
   } else {
     // full at the band, the body below it (tieTaper narrows the end when laid). The band holds
     // what it gathers however wide the profiles were drawn there: a new user's profiles begin on

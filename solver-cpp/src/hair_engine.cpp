@@ -229,6 +229,7 @@ Status HairEngine::setSettings(const double* values, size_t count) {
   setCurlVolume(values[kSettingCurlVolume] != 0);
   setCoilVolume(values[kSettingCoilVolume] != 0);
   setRoundPlaits(values[kSettingRoundPlaits] != 0);
+  setTieVolume(values[kSettingTieVolume] != 0);
   const Status sh = setShape(values[kSettingShape] != 0, values[kSettingVolume]);
   if (!sh.ok()) return sh;
   const Status f = setFinish(values[kSettingFinish] != 0);

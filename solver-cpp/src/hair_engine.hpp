@@ -99,6 +99,10 @@ class HairEngine {
   // section across their own path where they run aslant. Off: as in sessions made before.
   void setRoundPlaits(bool on) { roundPlaits_ = on; }
   bool roundPlaits() const { return roundPlaits_; }
+  // Tie volume (gathered_tail.hpp kTieVolume): with ties from any hand, a whole section's round
+  // tail and bun hold its hair kTieVolume times as wide. Off: as in sessions made before.
+  void setTieVolume(bool on) { tieVolume_ = on; }
+  bool tieVolume() const { return tieVolume_; }
   // Finished edges: every strand not laid into a tie ends up to kEndSpread short of where it
   // grew to (strand_detail.hpp applyDetail's endSpread), seeded per strand; lone roots are not
   // grown (scalp_roots.hpp dropLoneRoots); with fall the prior opens the face (hair_fall.hpp);
@@ -230,6 +234,7 @@ class HairEngine {
   bool curlVolume_ = false;
   bool coilVolume_ = false;
   bool roundPlaits_ = false;
+  bool tieVolume_ = false;
   bool finish_ = false;
   ShapeRules shape_;
   std::vector<std::vector<Eigen::Vector3f>> partings_;  // the dividing curves of the last setCurves

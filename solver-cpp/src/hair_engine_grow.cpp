@@ -147,6 +147,7 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
       t.section = t.section && sections_;
       t.ties = ties_;
       t.roundPlaits = roundPlaits_;
+      t.tieVolume = tieVolume_;
       bySection |= t.section;
     }
     if (bySection) {

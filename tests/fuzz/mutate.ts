@@ -437,6 +437,8 @@ export function applyMutations(
         log.push(`${at} = ${show(m.value)}`);
         break;
       case 'delete':
+        // a typed array's elements cannot be deleted (a replace may have put one there): skipped
+        if (ArrayBuffer.isView(parent)) continue;
         if (Array.isArray(parent) && typeof key === 'number') parent.splice(key, 1);
         else delete parent[key];
         log.push(`delete ${at}`);

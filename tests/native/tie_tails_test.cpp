@@ -102,6 +102,45 @@ TEST(TieTails, DrawnCirclesWidenTheTailBelowTheBandNotTheBand) {
         << i;
 }
 
+// Tie volume (the session's tieVolume): a whole section's tail hangs kTieVolume times as wide,
+// its band as before, and its bun's rope is as much thicker; a braid keeps its width.
+TEST(TieTails, TieVolumeHoldsAWholeSectionHalfAsWideAgain) {
+  const auto sized = [](TailShape shape, bool volume) {
+    GatheredTail t;
+    t.shape = shape;
+    t.ties = true;
+    t.tieVolume = volume;
+    for (int i = 0; i <= 10; ++i) t.spine.emplace_back(0.f, -0.1f * float(i), 0.f);
+    t.radius.assign(t.spine.size(), 0.08f);  // a one-stroke ponytail
+    t.braid.width = 0.1;
+    sizeTie(t, 1.f, 3.f);
+    return t;
+  };
+  // round: 1.2 cm at the band either way; 2 cm below it before, 3 cm with tie volume
+  const GatheredTail off = sized(TailShape::Round, false), on = sized(TailShape::Round, true);
+  EXPECT_NEAR(on.radius[0], off.radius[0], 1e-6f);
+  EXPECT_NEAR(off.radius.back(), 0.2f, 1e-6f);
+  EXPECT_NEAR(on.radius.back(), 0.3f, 1e-6f);
+  // braid: three times the body, 6 cm, either way
+  EXPECT_NEAR(sized(TailShape::Braid, false).braid.width, 0.6, 1e-6);
+  EXPECT_NEAR(sized(TailShape::Braid, true).braid.width, 0.6, 1e-6);
+  // bun: its rope is kBunRopeFill times the body, R = rr (kBunRopePitch K + 2) whatever K its
+  // length allows
+  for (const bool volume : {false, true}) {
+    const GatheredTail b = sized(TailShape::Bun, volume);
+    const float rr = kBunRopeFill * (volume ? 0.3f : 0.2f);
+    EXPECT_NEAR(b.bunRadius, rr * (kBunRopePitch * float(b.bun.turns) + 2), 1e-5f) << volume;
+  }
+  EXPECT_GT(sized(TailShape::Bun, true).bunRadius, 1.2f * sized(TailShape::Bun, false).bunRadius);
+  // and the hair laid: its spread below the band, half as wide again
+  const Head h = backOfHead();
+  GatheredTail t = hanging(4.f, TailShape::Round, true);
+  const float before = rms(radiiAt(grow(h, t, 3.2f), 1.5f, 1.6f));
+  t.tieVolume = true;
+  const float after = rms(radiiAt(grow(h, t, 3.2f), 1.5f, 1.6f));
+  EXPECT_NEAR(after / before, kTieVolume, 0.1f);
+}
+
 TEST(TieTails, ATieReachesItsSpinesEndWhateverMaxLength) {
   const Head h = backOfHead();
   const Eigen::Vector3f end = kBand - Eigen::Vector3f(0, 4.f, 0);

@@ -25,6 +25,7 @@ function sample(): SessionState {
     nape: _nape,
     coilVolume: _coilVolume,
     roundPlaits: _roundPlaits,
+    tieVolume: _tieVolume,
     ...s
   } = emptySession('50k');
   return {

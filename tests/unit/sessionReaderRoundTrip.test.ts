@@ -104,9 +104,11 @@ describe('every preset session passes the reader and round-trips', () => {
       nape,
       coilVolume,
       roundPlaits,
+      tieVolume,
       ...beforeFall
     } = emptySession('25k');
     expect(roundPlaits).toBe(true);
+    expect(tieVolume).toBe(true);
     expect(coilVolume).toBe(true);
     expect(nape).toBe(true);
     expect(curlVolume).toBe(true);
@@ -138,6 +140,7 @@ describe('every preset session passes the reader and round-trips', () => {
         nape: true,
         coilVolume: true,
         roundPlaits: true,
+        tieVolume: true,
       }),
     ).toEqual(emptySession('25k'));
   });

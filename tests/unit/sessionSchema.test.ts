@@ -38,6 +38,7 @@ function full(): SessionState {
     nape: true,
     coilVolume: true,
     roundPlaits: true,
+    tieVolume: true,
     bandColor: '#d02060',
     detail: { lengthJitter: 0.2 },
     scalpPaint: [{ erase: true, radius: 0.3, points: [[0, 1, 0]] }],
@@ -84,6 +85,7 @@ describe('session schema', () => {
       'nape',
       'coilVolume',
       'roundPlaits',
+      'tieVolume',
       'detail',
     ]);
     expect(needsSolve(s, { ...s })).toBe(false);
@@ -155,8 +157,9 @@ describe('engine settings', () => {
         nape: true,
         coilVolume: true,
         roundPlaits: false,
+        tieVolume: true,
       }),
-    ]).toEqual([1, 0, 0, 1, 0, 1, 0.12, 0, 1, 0, 1, 1, 0]);
+    ]).toEqual([1, 0, 0, 1, 0, 1, 0.12, 0, 1, 0, 1, 1, 0, 1]);
     expect([
       ...engineSettings({
         avoidScalp: false,
@@ -172,7 +175,8 @@ describe('engine settings', () => {
         nape: false,
         coilVolume: false,
         roundPlaits: true,
+        tieVolume: false,
       }),
-    ]).toEqual([0, 1, 1, 0, 1, 0, 0, 1, 0, 1, 0, 0, 1]);
+    ]).toEqual([0, 1, 1, 0, 1, 0, 0, 1, 0, 1, 0, 0, 1, 0]);
   });
 });

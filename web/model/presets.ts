@@ -347,6 +347,7 @@ export function applyPreset(s: SessionState, name: PresetName, ctx: PresetContex
     nape,
     coilVolume,
     roundPlaits,
+    tieVolume,
     bust,
     ...rest
   } = s;
@@ -385,6 +386,7 @@ export function applyPreset(s: SessionState, name: PresetName, ctx: PresetContex
     ...(nape && name === 'empty' ? { nape } : {}),
     ...(coilVolume && name === 'empty' ? { coilVolume } : {}),
     ...(roundPlaits && (name === 'empty' || TIE_PRESETS.includes(name)) ? { roundPlaits } : {}),
+    ...(tieVolume && name === 'empty' ? { tieVolume } : {}),
     ...(bust ? { bust } : {}),
     growth,
     curves,

@@ -226,6 +226,7 @@ export function emptySession(
     nape: true,
     coilVolume: true,
     roundPlaits: true,
+    tieVolume: true,
   };
 }
 

@@ -101,6 +101,11 @@ export const SESSION_SETTINGS = {
    *  plaited hair, not flat fins. On in every new session; off, the braids of sessions made
    *  before. */
   roundPlaits: { type: 'flag', hair: 'request' },
+  /** Tie volume (solver-cpp/src/gathered_tail.hpp kTieVolume, with ties from any hand): a
+   *  ponytail or bun that gathers a whole section holds its hair half as wide again, as a
+   *  stylist's tails and buns do, where they were too thin for the hair they gathered. On in every
+   *  new session; off, the ties of sessions made before. */
+  tieVolume: { type: 'flag', hair: 'request' },
 } as const satisfies Record<string, SettingSpec>;
 
 export type SessionSettingName = keyof typeof SESSION_SETTINGS;
