@@ -121,16 +121,17 @@ float tipShare(float along, float tipDistance, float piece) {
 // units; rnd: its seeded random values): root → lighter tips, grey strands, a seeded spread of
 // melanin and a little of the red/blue balance.
 vec3 strandSigma(vec4 rnd, vec2 along) {
-  // Lighter tips: a balayage's piece (tipShare; a hash of the strand's random values, as
-  // widthOf's), mixed in log space (hairLook.ts mixAbsorption; a linear mix shows lighter tips
-  // only at the last few centimetres); an older session's fraction linearly. Branches on
-  // uniforms: hair without tips does none of it (every preview frame draws this per vertex).
+  // Lighter tips: an older session's fraction, mixed linearly (whatever its length, as
+  // hairLook.ts mixAbsorption); else a balayage's piece (tipShare; a hash of the strand's random
+  // values, as widthOf's), mixed in log space (a linear mix shows lighter tips only at the last
+  // few centimetres). Branches on uniforms: hair without tips does none of it (every preview
+  // frame draws this per vertex).
   vec3 s = rootSigma;
-  if (tipLength > 0.0) {
+  if (lookShares.y < 0.999) {
+    s = mix(rootSigma, tipSigma, tipShare(along.x, along.y, 0.0));
+  } else if (tipLength > 0.0) {
     float piece = fract(dot(rnd, vec4(0.3183099, 0.7727564, 0.5351837, 0.1913462)) * 41.37);
     s = exp(mix(log(max(rootSigma, 1e-4)), log(max(tipSigma, 1e-4)), tipShare(along.x, along.y, piece)));
-  } else if (lookShares.y < 0.999) {
-    s = mix(rootSigma, tipSigma, tipShare(along.x, along.y, 0.0));
   }
   float pick = fract(dot(rnd, vec4(0.7548777, 0.5698403, 0.3308946, 0.1234567)) * 97.31);
   if (pick < lookShares.x) s = greySigma;
