@@ -23,6 +23,7 @@ enum EngineSetting : size_t {
   kSettingCoilVolume,   // coily hair stands out from the head (HairEngine::setCoilVolume)
   kSettingRoundPlaits,  // a braid's sections are round across their own path (setRoundPlaits)
   kSettingTieVolume,    // a tie's hair holds a stylist's volume (HairEngine::setTieVolume)
+  kSettingCompactBun,   // a bun is a round knot of wraps (HairEngine::setCompactBun)
   kEngineSettingCount
 };
 

@@ -236,8 +236,9 @@ TailStats gatherTails(const std::vector<GatheredTail>& tails,
                      bundle[i], distRank[i], u1, u2, step, room, out);
       } else if (Tk.ties && Tk.shape == TailShape::Bun) {
         const float budget = maxLength > 0 ? maxLength - cap.before : cap.remaining;
-        layBunRope(rope[0], cap, theta[i], rho[i], std::max(budget, cap.remaining), step, room,
-                   false, out);
+        layBunRope(rope[0], cap, theta[i], rho[i],
+                   Tk.compactBun ? kWholeRope : std::max(budget, cap.remaining), step, room, false,
+                   out);
       } else if (Tk.ties && Tk.shape == TailShape::Round) {
         layRoundTie(Tk, F, cap, theta[i], rho[i], u1, u2, step, room, out);
       } else if (Tk.ties) {

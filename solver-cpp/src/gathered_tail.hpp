@@ -102,6 +102,10 @@ struct GatheredTail {
   // The session's `tieVolume` (HairEngine::tieVolume): sizeTie makes a round tail's body and a
   // bun's rope kTieVolume times as wide. Off: as before.
   bool tieVolume = false;
+  // The session's `compactBun` (HairEngine::compactBun): a bun's rope wraps its own base tightly,
+  // each wrap a little lower and further out (knotShape), instead of spiralling out over a wide
+  // flat dome. Off: as before.
+  bool compactBun = false;
 };
 
 // The tail of a gathered ponytail: spine = the curve's points from the one nearest C1's centre
@@ -170,6 +174,22 @@ float tieTaper(float f);
 float tieEndCut(float rho, float u1, float u2);
 // A bun's rope radius for its radius R and turns K; H (its height) raised to hold the dome.
 void bunRopeShape(float R, float K, float& rr, float& H);
+// Compact bun (the session's compactBun): the rope climbs the axis from the band and wraps round
+// its own stub from the top down, K turns, each kKnotPitch rr lower and kKnotSpread rr further
+// out than the last, the first kKnotWrap rr from the axis, then a quarter turn in under the
+// lowest wrap (its end tucked). No hole at the top (the stub and the first wrap overlap), none at
+// the sides (wraps kKnotPitch < 2 rope radii apart) and no loose end: a round knot R = rr
+// (kKnotWrap + kKnotSpread K + 1) wide and H = rr (kKnotPitch K + 2) high. A whole-section bun's
+// rope is a twisted rope's, tighter than a hanging tail: rr = kKnotRope x sectionTailRadius.
+constexpr float kKnotWrap = 1.6f;
+constexpr float kKnotSpread = 0.6f;
+constexpr float kKnotPitch = 1.3f;
+constexpr float kKnotRope = 0.75f;
+// A whole-section compact bun wraps at least this many turns (fewer read as a loop, a C of rope
+// round a hole): its hair is as long as the rope (kWholeRope), as a ponytail's is its tail's.
+constexpr float kKnotMinTurns = 1.5f;
+// A compact bun's rope radius and height for its radius R, turns K and the height asked for.
+void knotShape(float R, float K, float height, float& rr, float& H);
 // A whole-section tie's size for `share` of the hair, `after` long past the tie (world units).
 void sizeTie(GatheredTail& t, float share, float after);
 

@@ -152,7 +152,9 @@ void layRoundTie(const GatheredTail& T, const SpineFrames& F, const Capture& cap
                  std::vector<Eigen::Vector3f>& out, bool seated = false);
 
 // A bun's rope (its centreline as a tail's spine, radius rr) and a strand laid along it from its
-// seat (theta, rho) in the rope's first cross-section, at most `budget` long.
+// seat (theta, rho) in the rope's first cross-section, at most `budget` long (kWholeRope: the
+// whole rope, a compact bun's hair whatever its length).
+constexpr float kWholeRope = 1e30f;
 GatheredTail bunRope(const GatheredTail& T);
 void layBunRope(const SpineFrames& rope, const Capture& cap, float theta, float rho, float budget,
                 float step, size_t room, bool seated, std::vector<Eigen::Vector3f>& out);

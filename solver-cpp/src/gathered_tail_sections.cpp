@@ -177,8 +177,11 @@ void layCombedTie(const GatheredTail& T, const SpineFrames& F, const SpineFrames
   }
   std::vector<Eigen::Vector3f> path;
   const float way = combPath(g, cap.q, seat, lambda, step, room / 2, path, true);
-  const float L = cap.remaining;  // the hair's length by Max length: a bun coils what it has
-  if ((bun && way >= L) || path.size() + 1 >= room) {  // combed towards the tie
+  // the hair's length by Max length: a bun coils what it has; a compact bun's hair is as long as
+  // its rope (a knot shows no hair ending short: shorter hair ends hidden in it)
+  const float L = cap.remaining;
+  const bool whole = bun && T.compactBun;
+  if ((bun && way >= L && !whole) || path.size() + 1 >= room) {  // combed towards the tie
     out.clear();
     combedTowards(path, cap.q, L, room, false, out);
     return;
@@ -193,7 +196,7 @@ void layCombedTie(const GatheredTail& T, const SpineFrames& F, const SpineFrames
   std::vector<Eigen::Vector3f> laid;
   const size_t left = room - path.size();
   if (bun)
-    layBunRope(*rope, tail, theta, rho, L - way, step, left, true, laid);
+    layBunRope(*rope, tail, theta, rho, whole ? kWholeRope : L - way, step, left, true, laid);
   else if (T.shape == TailShape::Round)
     layRoundTie(T, F, tail, theta, rho, u1, u2, step, left, laid, true);
   else

@@ -23,13 +23,32 @@ void bunRopeShape(float R, float K, float& rr, float& H) {
   H = std::max(H, std::max(0.7f * R, 2.2f * rr));
 }
 
+void knotShape(float R, float K, float height, float& rr, float& H) {
+  rr = R / (kKnotWrap + kKnotSpread * K + 1);
+  // the height asked for spaces the wraps further apart, up to just touching (2 rr)
+  H = rr * (2 + kKnotPitch * K);
+  H = std::max(H, std::min(height, rr * (2 + 2 * K)));
+}
+
 void sizeTie(GatheredTail& t, float share, float after) {
   const float tie = kTieRadius * std::sqrt(share);
   // tie volume widens round tails and buns; a braid's three bundles are as wide as before (three
   // times the body: half as wide again read as a stack of beads)
   const float plain = sectionTailRadius(share);
   const float body = (t.tieVolume ? kTieVolume : 1.f) * plain;
-  if (t.shape == TailShape::Bun) {
+  if (t.shape == TailShape::Bun && t.compactBun) {
+    // the rope holds the hair twisted tight; as many wraps as its length allows past the stub:
+    // K wraps at a mean radius (kKnotWrap + kKnotSpread K / 2) rr
+    const float rr = kKnotRope * plain;
+    float K = 1;
+    for (int it = 0; it < 6; ++it) {
+      const float top = rr * (1 + kKnotPitch * K);
+      const float perTurn = gathered_tail::kTwoPi * rr * (kKnotWrap + 0.5f * kKnotSpread * K);
+      K = std::clamp(std::max(0.f, after - top) / perTurn, kKnotMinTurns, 6.f);
+    }
+    t.bun.turns = K;
+    t.bunRadius = rr * (kKnotWrap + kKnotSpread * K + 1);
+  } else if (t.shape == TailShape::Bun) {
     // the rope holds the hair; as many turns as its length allows once it has climbed the stub
     const float rr = kBunRopeFill * body;
     float K = 1;
@@ -100,7 +119,10 @@ GatheredTail bunRope(const GatheredTail& T) {
   const Eigen::Vector3f n = T.axis, c = T.bunCentre, e1 = F0.e1[0], e2 = F0.e2[0];
   const float R = T.bunRadius, K = std::max(float(T.bun.turns), 0.5f);
   float rr, H = float(T.bun.height);
-  bunRopeShape(R, K, rr, H);
+  if (T.compactBun)
+    knotShape(R, K, float(T.bun.height), rr, H);
+  else
+    bunRopeShape(R, K, rr, H);
   // heights are over the scalp, not the base's tangent plane: the head (radius about
   // kBunHeadRadius) falls away by r^2 / 2 kBunHeadRadius at r from the centre, and the outer
   // wraps follow it down instead of floating over a gap
@@ -111,22 +133,31 @@ GatheredTail bunRope(const GatheredTail& T) {
   GatheredTail rope;
   rope.axis = n;
   rope.out = e2;
-  const float top = H - rr, stub = std::max(0.f, top - 1.5f * rr);
+  // the coiled rope spirals out over a dome from the top's centre; the compact knot
+  // (knotShape) wraps its own stub from the top down
+  const bool knot = T.compactBun;
+  const float top = H - rr, r0 = knot ? kKnotWrap * rr : rr;
+  const float stub = knot ? top - 0.5f * rr : std::max(0.f, top - 1.5f * rr);
+  const float rEnd = knot ? r0 + kKnotSpread * rr * K : R - rr;
+  const float tuckIn = knot ? 1.2f : 1.5f, tuckDown = knot ? 0.6f : 0.7f;
+  auto wrap = [&](float v) {
+    if (knot) return at(r0 + kKnotSpread * rr * K * v, kTwoPi * K * v, top - (top - rr) * v);
+    return at(rr + (R - 2 * rr) * v, kTwoPi * K * v, rr + (top - rr) * (1 - v * v));
+  };
   for (int i = 0; i <= 4; ++i) rope.spine.push_back(c + (stub * float(i) / 4) * n);
   // the bend over the top: a quadratic from the stub's end through (0, top) to the coil's start
-  const Eigen::Vector3f b0 = rope.spine.back(), b1 = c + top * n, b2 = at(rr, 0, top);
+  const Eigen::Vector3f b0 = rope.spine.back(), b1 = c + top * n, b2 = at(r0, 0, top);
   for (int i = 1; i <= 6; ++i) {
     const float t = float(i) / 6;
     rope.spine.push_back((1 - t) * (1 - t) * b0 + 2 * t * (1 - t) * b1 + t * t * b2);
   }
   const int turns = std::max(8, int(std::ceil(24 * K)));
-  for (int i = 1; i <= turns; ++i) {
-    const float v = float(i) / float(turns);
-    rope.spine.push_back(at(rr + (R - 2 * rr) * v, kTwoPi * K * v, rr + (top - rr) * (1 - v * v)));
-  }
+  for (int i = 1; i <= turns; ++i) rope.spine.push_back(wrap(float(i) / float(turns)));
+  // a quarter turn in and down under the outer (or lowest) wrap: the end tucked under
   for (int i = 1; i <= 6; ++i) {
     const float w = float(i) / 6;
-    rope.spine.push_back(at(R - rr - 1.5f * rr * w, kTwoPi * (K + 0.25f * w), rr * (1 - 0.7f * w)));
+    rope.spine.push_back(
+        at(rEnd - tuckIn * rr * w, kTwoPi * (K + 0.25f * w), rr * (1 - tuckDown * w)));
   }
   rope.radius.assign(rope.spine.size(), rr);
   return rope;

@@ -230,6 +230,7 @@ Status HairEngine::setSettings(const double* values, size_t count) {
   setCoilVolume(values[kSettingCoilVolume] != 0);
   setRoundPlaits(values[kSettingRoundPlaits] != 0);
   setTieVolume(values[kSettingTieVolume] != 0);
+  setCompactBun(values[kSettingCompactBun] != 0);
   const Status sh = setShape(values[kSettingShape] != 0, values[kSettingVolume]);
   if (!sh.ok()) return sh;
   const Status f = setFinish(values[kSettingFinish] != 0);

@@ -103,6 +103,10 @@ class HairEngine {
   // tail and bun hold its hair kTieVolume times as wide. Off: as in sessions made before.
   void setTieVolume(bool on) { tieVolume_ = on; }
   bool tieVolume() const { return tieVolume_; }
+  // Compact bun (gathered_tail.hpp knotShape): with ties from any hand, a bun's rope wraps its
+  // own base in a round knot, every strand as long as the rope. Off: as in sessions made before.
+  void setCompactBun(bool on) { compactBun_ = on; }
+  bool compactBun() const { return compactBun_; }
   // Finished edges: every strand not laid into a tie ends up to kEndSpread short of where it
   // grew to (strand_detail.hpp applyDetail's endSpread), seeded per strand; lone roots are not
   // grown (scalp_roots.hpp dropLoneRoots); with fall the prior opens the face (hair_fall.hpp);
@@ -235,6 +239,7 @@ class HairEngine {
   bool coilVolume_ = false;
   bool roundPlaits_ = false;
   bool tieVolume_ = false;
+  bool compactBun_ = false;
   bool finish_ = false;
   ShapeRules shape_;
   std::vector<std::vector<Eigen::Vector3f>> partings_;  // the dividing curves of the last setCurves

@@ -148,6 +148,7 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
       t.ties = ties_;
       t.roundPlaits = roundPlaits_;
       t.tieVolume = tieVolume_;
+      t.compactBun = compactBun_;
       bySection |= t.section;
     }
     if (bySection) {

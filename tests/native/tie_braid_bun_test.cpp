@@ -52,19 +52,34 @@ TEST(TieBraidBun, ABraidHasNoLedgeWhereTheHairMeetsIt) {
   EXPECT_GT(off, 0.2f);  // the ledge the plait had: the measure sees it
 }
 
-TEST(TieBraidBun, ABunIsACoilWithNoHoleOnTopAndItsTipsTuckedUnder) {
-  const Head h = backOfHead();
+// A whole-section bun on the back of the head, its hair 32 cm long, ties from any hand.
+struct BackBun {
+  Head h = backOfHead();
+  BunFrame f;
+  Strands s;
+};
+BackBun backBun(bool volume, bool compact) {
+  BackBun b;
   BunParams prm;
   prm.section = true;
-  BunFrame f;
-  f.centre = Eigen::Vector3d(0, 0.8, -0.6);
-  f.axis = f.centre.normalized();
-  f.radius = 0.3;
-  GatheredTail t = bunTail(f, prm);
+  b.f.centre = Eigen::Vector3d(0, 0.8, -0.6);
+  b.f.axis = b.f.centre.normalized();
+  b.f.radius = 0.3;
+  GatheredTail t = bunTail(b.f, prm);
   t.section = true;
-  t.anchor = f.centre.cast<float>().normalized();
+  t.anchor = b.f.centre.cast<float>().normalized();
   t.ties = true;
-  const Strands s = grow(h, t, 3.2f);
+  t.tieVolume = volume;
+  t.compactBun = compact;
+  b.s = grow(b.h, t, 3.2f);
+  return b;
+}
+
+TEST(TieBraidBun, ABunIsACoilWithNoHoleOnTopAndItsTipsTuckedUnder) {
+  const BackBun b = backBun(false, false);
+  const Head& h = b.h;
+  const BunFrame& f = b.f;
+  const Strands& s = b.s;
   const Eigen::Vector3f c = f.centre.cast<float>(), n = f.axis.cast<float>();
   auto height = [&](const Eigen::Vector3f& x) { return (x - c).dot(n); };
   auto offAxis = [&](const Eigen::Vector3f& x) { return (x - c - height(x) * n).norm(); };
@@ -107,6 +122,81 @@ TEST(TieBraidBun, ABunIsACoilWithNoHoleOnTopAndItsTipsTuckedUnder) {
   // sized from its hair: a rope of the round tail's radius, the whole coil wider than the rope
   EXPECT_GT(R, 2.5f * kBunRopeFill * kTailRadius);
   EXPECT_LT(R, 1.0f);
+}
+
+// The bun of the back of a head, its hair 32 cm long (the test above's scene), compact or not.
+struct BunSeen {
+  float top = 0;        // its height over the base (world units)
+  float covered = 0;    // of the disc within 0.8 of its outline, the share of 1 cm cells under hair
+  float roundness = 0;  // the outline's widest sector over its narrowest (24 sectors)
+  float tipHeight = 0;  // the highest tip, over the bun's height
+  float across = 0;     // its widest outline's diameter
+};
+BunSeen seeBun(bool compact) {
+  const BackBun bb = backBun(true, compact);
+  const Head& h = bb.h;
+  const BunFrame& f = bb.f;
+  const Strands& s = bb.s;
+  const Eigen::Vector3f c = f.centre.cast<float>(), n = f.axis.cast<float>();
+  const Eigen::Vector3f e1 = n.unitOrthogonal(), e2 = n.cross(e1);
+  BunSeen b;
+  std::vector<Eigen::Vector3f> bun;  // the points above the combed hair, in the bun's frame
+  for (size_t p = 0; p < s.points.size() / 3; ++p) {
+    const Eigen::Vector3f d = pointOf(s, p) - c;
+    const Eigen::Vector3f x(d.dot(e1), d.dot(e2), d.dot(n));
+    if (x.head<2>().norm() < 1.f && x.z() > 0.1f) bun.push_back(x);
+  }
+  constexpr int kSectors = 24;
+  std::vector<float> outline(kSectors, 0.f);
+  for (const Eigen::Vector3f& x : bun) {
+    b.top = std::max(b.top, x.z());
+    const float a = std::atan2(x.y(), x.x()) + 3.14159265f;
+    const int k = std::min(kSectors - 1, int(a / (2 * 3.14159265f) * kSectors));
+    outline[size_t(k)] = std::max(outline[size_t(k)], x.head<2>().norm());
+  }
+  const auto [lo, hi] = std::minmax_element(outline.begin(), outline.end());
+  b.roundness = *hi / std::max(*lo, 1e-6f);
+  b.across = 2 * *hi;
+  // seen down the axis: 1 cm cells of the disc within 0.8 of the narrowest outline
+  const float R = 0.8f * *lo;
+  const int m = int(std::ceil(R / 0.1f));
+  int cells = 0, hit = 0;
+  for (int i = -m; i <= m; ++i)
+    for (int j = -m; j <= m; ++j) {
+      const Eigen::Vector2f q(0.1f * float(i), 0.1f * float(j));
+      if (q.norm() > R) continue;
+      ++cells;
+      for (const Eigen::Vector3f& x : bun)
+        if ((x.head<2>() - q).cwiseAbs().maxCoeff() < 0.05f && x.z() > 0.3f * b.top) {
+          ++hit;
+          break;
+        }
+    }
+  b.covered = float(hit) / float(std::max(cells, 1));
+  for (size_t st = 0; st < h.roots.size(); ++st) {
+    const Eigen::Vector3f d = tipOf(s, st) - c;
+    b.tipHeight = std::max(b.tipHeight, d.dot(n) / b.top);
+  }
+  return b;
+}
+
+// Compact bun (the session's compactBun): seen down its axis the bun is hair all over (no hole
+// between its stub and its wraps), its outline round (no spiral's loose end), its tips tucked
+// low; the rope coiled outwards (compactBun off) fails the first two.
+TEST(TieBraidBun, ACompactBunIsARoundKnotWithNoHoleAndNoLooseEnd) {
+  const BunSeen on = seeBun(true), off = seeBun(false);
+  std::printf(
+      "bun, whole head, hair 32 cm: compact %.1f cm across, %.1f cm high, %.0f %% of its disc "
+      "under hair, outline "
+      "%.2f widest / narrowest, tips up to %.0f %% of its height; rope before %.1f cm, %.0f %%, "
+      "%.2f, %.0f %%\n",
+      10 * on.across, 10 * on.top, 100 * on.covered, on.roundness, 100 * on.tipHeight, 10 * off.top,
+      100 * off.covered, off.roundness, 100 * off.tipHeight);
+  EXPECT_GT(on.covered, 0.97f);
+  EXPECT_LT(on.roundness, 1.3f);
+  EXPECT_LT(on.tipHeight, 0.6f);
+  EXPECT_LT(off.covered, 0.97f);
+  EXPECT_GT(off.roundness, 1.3f);
 }
 
 }  // namespace

@@ -26,6 +26,7 @@ function sample(): SessionState {
     coilVolume: _coilVolume,
     roundPlaits: _roundPlaits,
     tieVolume: _tieVolume,
+    compactBun: _compactBun,
     ...s
   } = emptySession('50k');
   return {

@@ -105,10 +105,12 @@ describe('every preset session passes the reader and round-trips', () => {
       coilVolume,
       roundPlaits,
       tieVolume,
+      compactBun,
       ...beforeFall
     } = emptySession('25k');
     expect(roundPlaits).toBe(true);
     expect(tieVolume).toBe(true);
+    expect(compactBun).toBe(true);
     expect(coilVolume).toBe(true);
     expect(nape).toBe(true);
     expect(curlVolume).toBe(true);
@@ -141,6 +143,7 @@ describe('every preset session passes the reader and round-trips', () => {
         coilVolume: true,
         roundPlaits: true,
         tieVolume: true,
+        compactBun: true,
       }),
     ).toEqual(emptySession('25k'));
   });

@@ -39,6 +39,7 @@ function full(): SessionState {
     coilVolume: true,
     roundPlaits: true,
     tieVolume: true,
+    compactBun: true,
     bandColor: '#d02060',
     detail: { lengthJitter: 0.2 },
     scalpPaint: [{ erase: true, radius: 0.3, points: [[0, 1, 0]] }],
@@ -86,6 +87,7 @@ describe('session schema', () => {
       'coilVolume',
       'roundPlaits',
       'tieVolume',
+      'compactBun',
       'detail',
     ]);
     expect(needsSolve(s, { ...s })).toBe(false);
@@ -158,8 +160,9 @@ describe('engine settings', () => {
         coilVolume: true,
         roundPlaits: false,
         tieVolume: true,
+        compactBun: false,
       }),
-    ]).toEqual([1, 0, 0, 1, 0, 1, 0.12, 0, 1, 0, 1, 1, 0, 1]);
+    ]).toEqual([1, 0, 0, 1, 0, 1, 0.12, 0, 1, 0, 1, 1, 0, 1, 0]);
     expect([
       ...engineSettings({
         avoidScalp: false,
@@ -176,7 +179,8 @@ describe('engine settings', () => {
         coilVolume: false,
         roundPlaits: true,
         tieVolume: false,
+        compactBun: true,
       }),
-    ]).toEqual([0, 1, 1, 0, 1, 0, 0, 1, 0, 1, 0, 0, 1, 0]);
+    ]).toEqual([0, 1, 1, 0, 1, 0, 0, 1, 0, 1, 0, 0, 1, 0, 1]);
   });
 });

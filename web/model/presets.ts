@@ -348,6 +348,7 @@ export function applyPreset(s: SessionState, name: PresetName, ctx: PresetContex
     coilVolume,
     roundPlaits,
     tieVolume,
+    compactBun,
     bust,
     ...rest
   } = s;
@@ -387,6 +388,7 @@ export function applyPreset(s: SessionState, name: PresetName, ctx: PresetContex
     ...(coilVolume && name === 'empty' ? { coilVolume } : {}),
     ...(roundPlaits && (name === 'empty' || TIE_PRESETS.includes(name)) ? { roundPlaits } : {}),
     ...(tieVolume && name === 'empty' ? { tieVolume } : {}),
+    ...(compactBun && name === 'empty' ? { compactBun } : {}),
     ...(bust ? { bust } : {}),
     growth,
     curves,

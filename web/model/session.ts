@@ -227,6 +227,7 @@ export function emptySession(
     coilVolume: true,
     roundPlaits: true,
     tieVolume: true,
+    compactBun: true,
   };
 }
 

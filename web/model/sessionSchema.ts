@@ -106,6 +106,12 @@ export const SESSION_SETTINGS = {
    *  stylist's tails and buns do, where they were too thin for the hair they gathered. On in every
    *  new session; off, the ties of sessions made before. */
   tieVolume: { type: 'flag', hair: 'request' },
+  /** Compact bun (solver-cpp/src/gathered_tail.hpp knotShape, with ties from any hand): a bun's
+   *  rope wraps its own base in a round knot, each wrap a little lower and further out, every
+   *  strand as long as the rope, where it spiralled out over a flat dome (a loop with a loose end
+   *  round a hole, to the judges). On in every new session; off, the buns of sessions made
+   *  before. */
+  compactBun: { type: 'flag', hair: 'request' },
 } as const satisfies Record<string, SettingSpec>;
 
 export type SessionSettingName = keyof typeof SESSION_SETTINGS;
