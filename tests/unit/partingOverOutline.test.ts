@@ -59,6 +59,41 @@ describe('partingOverOutline', () => {
     ).toEqual(drawn);
   });
 
+  it('carries ends that stop a few pixels inside the outline on too, up to 5 cm', () => {
+    // a later new user's half-up stopped where the surface was 23-25 degrees from facing across
+    // the top view (|n . view| 0.39 and 0.42): the parting stayed open. The drawn parting cut at
+    // its points nearest 0.42 from each end: carried on over; cut where |n . view| is above 0.5
+    // (nearer the crown): left as drawn.
+    const drawn = halfUpParting();
+    const facing = (p: Vec3) => Math.abs(head.normalAt(p)[1]);
+    const cutAt = (from: number, to: number) => {
+      // the points from each end inward until the surface faces the view by at least `from`
+      const n = drawn.length;
+      let a = 0;
+      let b = n - 1;
+      while (a < n && facing(drawn[a]) < from) a++;
+      while (b > 0 && facing(drawn[b]) < from) b--;
+      const part = drawn.slice(a, b + 1);
+      for (const e of [part[0], part[part.length - 1]]) expect(facing(e)).toBeLessThan(to);
+      return part;
+    };
+    const near = cutAt(0.36, 0.5);
+    const r = partingOverOutline(near, down, head, step);
+    expect(r.carried).toBe(true);
+    for (const [end, was] of [
+      [r.points[0], near[0]],
+      [r.points[r.points.length - 1], near[near.length - 1]],
+    ]) {
+      expect(end[1]).toBeLessThan(was[1] - 0.15);
+      expect(head.closest(end).distance).toBeLessThan(0.005);
+      expect(Math.hypot(end[0] - was[0], end[1] - was[1], end[2] - was[2])).toBeLessThan(
+        0.5 + step,
+      );
+    }
+    const inner = cutAt(0.55, 1);
+    expect(partingOverOutline(inner, down, head, step).carried).toBe(false);
+  });
+
   it('leaves a parting whose ends face the viewer as drawn', () => {
     const drawn = halfUpParting();
     // from above, the crown's middle part alone: its ends face up

@@ -5,15 +5,21 @@
 // short of the scalp-edge search (ScalpSections' kCloseReach) the parting stayed open (fresh
 // eyes, twice). An end on the outline (its surface facing across the view) goes on along the
 // surface, turning away from the viewer over the outline, until it leaves the scalp or has gone
-// OVER_REACH; the solver's closing rule does the rest.
+// OVER_REACH; the solver's closing rule does the rest. An end a few pixels inside the outline
+// (its surface up to NEAR_OUTLINE from across the view) is carried on too: a later new user's half-up parting stopped 6 px inside the outline above each
+// ear and stayed open ("parts the hair"), the ends 5 cm above the scalp's edge.
 import type { Head } from '../head/head';
 import type { Vec3 } from '../model/vec3';
 
 /** An end whose surface normal is this close to across the view (|n · view| below it, about 20°
  *  from the outline) lies on the outline. */
 const ON_OUTLINE = 0.35;
-/** How far an end is carried over the outline at most (world units, 4 cm). */
+/** An end this close to across the view (|n · view| below it, about 30° from the outline) is
+ *  near it, and carried on over it as far as NEAR_REACH (the new user's ends: 0.39 and 0.42). */
+const NEAR_OUTLINE = 0.5;
+/** How far an end is carried over the outline at most (world units, 4 cm; 5 cm from near it). */
 const OVER_REACH = 0.4;
+const NEAR_REACH = 0.5;
 
 const dot = (a: Vec3, b: Vec3) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 const unit = (a: Vec3): Vec3 | null => {
@@ -30,11 +36,13 @@ const along = (v: Vec3, n: Vec3): Vec3 => {
  *  the screen), in steps of `step`; none when the end is not on the outline. */
 function over(before: Vec3, end: Vec3, view: Vec3, head: Head, step: number): Vec3[] {
   const n0 = head.normalAt(end);
-  if (Math.abs(dot(n0, view)) >= ON_OUTLINE) return [];
+  const facing = Math.abs(dot(n0, view));
+  if (facing >= NEAR_OUTLINE) return [];
+  const reach = facing < ON_OUTLINE ? OVER_REACH : NEAR_REACH;
   const out: Vec3[] = [];
   let prev = before;
   let at = end;
-  for (let gone = 0; gone < OVER_REACH; gone += step) {
+  for (let gone = 0; gone < reach; gone += step) {
     const n = head.normalAt(at);
     // on along the stroke, turned away from the viewer (over the outline), in the surface
     const d = unit(along([at[0] - prev[0], at[1] - prev[1], at[2] - prev[2]], n));
