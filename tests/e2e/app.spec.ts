@@ -104,6 +104,11 @@ test('a selected curve can be deleted, and a crashed worker is restarted with th
   await page.goto(SCENE);
   const s0 = await settled(page);
   await page.getByRole('button', { name: 'Select' }).click();
+  // a click beside every curve (the canvas's top left corner) selects nothing and says so
+  const box = await page.locator('canvas').first().boundingBox();
+  if (!box) throw new Error('no canvas');
+  await page.mouse.click(box.x + 12, box.y + 12);
+  await expect(page.getByRole('status').first()).toContainText('No curve under the click');
   // Click on the middle of a visible curve.
   const target = await visibleCurvePoint(page);
   await page.mouse.click(target.x, target.y);

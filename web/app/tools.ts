@@ -517,9 +517,14 @@ function selectTool(k: ToolKit): Tool {
     // hidden curves (Curves display off) cannot be picked: a click says so rather than nothing
     curves: () => (d.curvesShown() ? editor.session.curves : []),
     toScreen: (p) => viewer.worldToScreen(p),
-    select: (id) => {
+    select: (id, missedBy) => {
       if (id === null && !d.curvesShown() && editor.session.curves.length > 0)
         d.notify('The curves are hidden: tick Curves (key 1) to select one.');
+      else if (id === null && missedBy !== undefined)
+        // a click that missed says so (new users clicked beside a line and saw nothing happen)
+        d.notify(
+          `No curve under the click: the nearest line is ${Math.round(missedBy)} px away. Click on a curve's line to select it.`,
+        );
       editor.select(id);
     },
   });

@@ -5,7 +5,8 @@ import type { Tool, ToolPointer } from './tool';
 export interface SelectContext {
   curves(): ReadonlyArray<{ id: string; points: readonly Vec3[] }>;
   toScreen(p: Vec3): { x: number; y: number } | null;
-  select(id: string | null): void;
+  /** The curve clicked, or null; on a miss, how far (px) the nearest curve's line was. */
+  select(id: string | null, missedBy?: number): void;
 }
 
 const CLICK_SLOP = 5; // px a click may move
@@ -33,7 +34,9 @@ export class SelectTool implements Tool {
   onPointerUp(p: ToolPointer): void {
     if (this.state !== 'pressed') return;
     this.state = 'idle';
-    this.ctx.select(pickCurve(this.ctx, p.x, p.y));
+    const { id, distance } = nearestCurve(this.ctx, p.x, p.y);
+    if (id !== null && distance < PICK_RADIUS) this.ctx.select(id);
+    else this.ctx.select(null, id === null ? undefined : distance);
   }
 
   onCancel(): void {
@@ -43,10 +46,15 @@ export class SelectTool implements Tool {
   update(): void {}
 }
 
-/** Nearest curve within PICK_RADIUS pixels of (x, y), measured to its screen-space segments. */
-export function pickCurve(ctx: SelectContext, x: number, y: number): string | null {
+/** The curve nearest (x, y) and its distance in pixels, measured to its screen-space segments
+ *  (a click picks it within PICK_RADIUS). */
+export function nearestCurve(
+  ctx: SelectContext,
+  x: number,
+  y: number,
+): { id: string | null; distance: number } {
   let best: string | null = null;
-  let bestD = PICK_RADIUS;
+  let bestD = Number.POSITIVE_INFINITY;
   for (const c of ctx.curves()) {
     const s = c.points.map((p) => ctx.toScreen(p));
     for (let i = 1; i < s.length; i++) {
@@ -60,7 +68,7 @@ export function pickCurve(ctx: SelectContext, x: number, y: number): string | nu
       }
     }
   }
-  return best;
+  return { id: best, distance: bestD };
 }
 
 function segmentDistance(
