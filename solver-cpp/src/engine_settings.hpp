@@ -24,6 +24,7 @@ enum EngineSetting : size_t {
   kSettingRoundPlaits,  // a braid's sections are round across their own path (setRoundPlaits)
   kSettingTieVolume,    // a tie's hair holds a stylist's volume (HairEngine::setTieVolume)
   kSettingCompactBun,   // a bun is a round knot of wraps (HairEngine::setCompactBun)
+  kSettingClumpAll,     // every strand finds a clump whose path it shares (setClumpAll)
   kEngineSettingCount
 };
 

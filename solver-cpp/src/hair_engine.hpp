@@ -107,6 +107,11 @@ class HairEngine {
   // own base in a round knot, every strand as long as the rope. Off: as in sessions made before.
   void setCompactBun(bool on) { compactBun_ = on; }
   bool compactBun() const { return compactBun_; }
+  // Clump all (strand_detail.hpp applyDetail's clumpAll): a strand whose path parts from its
+  // nearest clump guide's is clumped to the next nearest whose path stays with it. Off: as in
+  // sessions made before (such strands are not clumped).
+  void setClumpAll(bool on) { clumpAll_ = on; }
+  bool clumpAll() const { return clumpAll_; }
   // Finished edges: every strand not laid into a tie ends up to kEndSpread short of where it
   // grew to (strand_detail.hpp applyDetail's endSpread), seeded per strand; lone roots are not
   // grown (scalp_roots.hpp dropLoneRoots); with fall the prior opens the face (hair_fall.hpp);
@@ -240,6 +245,7 @@ class HairEngine {
   bool roundPlaits_ = false;
   bool tieVolume_ = false;
   bool compactBun_ = false;
+  bool clumpAll_ = false;
   bool finish_ = false;
   ShapeRules shape_;
   std::vector<std::vector<Eigen::Vector3f>> partings_;  // the dividing curves of the last setCurves

@@ -267,7 +267,8 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
     // tenth of the length, 2.5 cm on a bob, lifted a bob's hem above its strokes' ends); short
     // hair lying on the head has no flyaways (they stood up as spikes on a slicked crown)
     s = applyDetail(groups, groupOf, key, rp.seed, strands_, 255, finish_ ? &endSpread : nullptr,
-                    finish_, &centre_, strands_.flags.size() == n ? &strands_.flags : nullptr);
+                    finish_, &centre_, strands_.flags.size() == n ? &strands_.flags : nullptr,
+                    clumpAll_);
     // cutting ends back moves no point: only detail needs keeping outside again
     if (head && anyDetail) {
       keepOutsideHead(*head, float(gp.margin), strands_);

@@ -48,7 +48,8 @@ Status validateDetail(const DetailParams& d) {
 Status applyDetail(const std::vector<DetailParams>& groups, const std::vector<uint32_t>& groupOf,
                    const std::vector<uint32_t>& key, uint32_t seed, Strands& strands, int maxPoints,
                    const std::vector<float>* endSpread, bool ringlets,
-                   const Eigen::Vector3d* headCentre, const std::vector<uint8_t>* flags) {
+                   const Eigen::Vector3d* headCentre, const std::vector<uint8_t>* flags,
+                   bool clumpAll) {
   using namespace strand_detail;
   auto invalid = [](std::string m) {
     return Status::Error(StatusCode::InvalidInput, std::move(m));
@@ -151,7 +152,7 @@ Status applyDetail(const std::vector<DetailParams>& groups, const std::vector<ui
     for (size_t g = 0; g < groups.size(); ++g) {
       const ClumpParams& c = groups[g].clump;
       if (c.factor > 0 && c.guideDistance > 0 && members[g].size() >= 2)
-        clumpGroup(c, members[g], key, seed, strands, w, ringlets ? &phaseKey : nullptr);
+        clumpGroup(c, members[g], key, seed, strands, w, ringlets ? &phaseKey : nullptr, clumpAll);
     }
   }
 

@@ -151,11 +151,15 @@ Status validateDetail(const DetailParams& d);
 // takes no length jitter (hair cut at a line keeps its length); a kLiesOnHead strand is never a
 // flyaway (a stray hair 1.2 cm off at the tip of 10 cm hair stands up as a spike on a slicked
 // crown).
+// clumpAll: a strand whose path parts from its nearest clump guide's (by more than 4 guide
+// distances, at least 10 cm: round the other side of the head or of a parting) is clumped to the
+// next nearest guide whose path stays with it, instead of not at all (each such strand curled on
+// its own: with curls, 3.5 % of long curly hair stood round it as a wiry halo of lone loops).
 Status applyDetail(const std::vector<DetailParams>& groups, const std::vector<uint32_t>& groupOf,
                    const std::vector<uint32_t>& key, uint32_t seed, Strands& strands,
                    int maxPoints = 255, const std::vector<float>* endSpread = nullptr,
                    bool ringlets = false, const Eigen::Vector3d* headCentre = nullptr,
-                   const std::vector<uint8_t>* flags = nullptr);
+                   const std::vector<uint8_t>* flags = nullptr, bool clumpAll = false);
 
 // The end spread of sessions with finished edges (world units: 1.2 cm), and the most of a
 // strand's length it may take.

@@ -82,7 +82,7 @@ constexpr double kMaxApart = 1.0;
 
 void clumpGroup(const ClumpParams& c, const std::vector<uint32_t>& members,
                 const std::vector<uint32_t>& key, uint32_t seed, Strands& strands, Work& w,
-                std::vector<uint32_t>* phaseKey) {
+                std::vector<uint32_t>* phaseKey, bool nextGuide) {
   const size_t M = members.size();
   const uint32_t* start = strands.strandStart.data();
   float* P = strands.points.data();
@@ -143,10 +143,32 @@ void clumpGroup(const ClumpParams& c, const std::vector<uint32_t>& members,
   }
 
   const Falloff S(c.shape);
+  const double maxApart = std::max(kMaxApart, 4 * c.guideDistance);
+  // whether the path of strand s (loaded in w.p, its arc lengths in w.s) parts from guide k's by
+  // more than maxApart (also when either has no length)
+  auto partsFrom = [&](uint32_t s, int32_t k) {
+    const uint32_t G = members[size_t(k)];
+    const size_t count = start[s + 1] - start[s], gCount = start[G + 1] - start[G];
+    const float* gp = P + 3 * size_t(start[G]);
+    const double* gArc = gs.data() + guideAt[size_t(k)];
+    const double LG = gArc[gCount - 1], L = w.s[count - 1];
+    if (!(L > 0) || !(LG > 0)) return true;
+    const double along = LG / std::max(L, LG);
+    size_t j = 0;
+    for (size_t i = 1; i < count; ++i) {
+      const double u = locate(gArc, gCount, w.s[i] * along, j);
+      const V3 a(gp[3 * j], gp[3 * j + 1], gp[3 * j + 2]);
+      const V3 b(gp[3 * j + 3], gp[3 * j + 4], gp[3 * j + 5]);
+      if ((lerp(a, b, u) - w.p[i]).norm() > maxApart) return true;
+    }
+    return false;
+  };
+  std::vector<std::pair<double, int32_t>> near;  // nextGuide: the guides that set off its way
   for (size_t m = 0; m < M; ++m) {
     if (isGuide[m]) continue;
     int32_t best = -1;
     double bestD2 = std::numeric_limits<double>::infinity();
+    near.clear();
     forNearGuides(table, next, roots[m], inv, [&](int32_t k) {
       // a guide that sets off the other way (across a parting) does not take this strand
       if (heading[size_t(k)].dot(heading[m]) < kSameWay) return true;
@@ -155,9 +177,22 @@ void clumpGroup(const ClumpParams& c, const std::vector<uint32_t>& members,
         bestD2 = d2;
         best = k;
       }
+      if (nextGuide) near.emplace_back(d2, k);
       return true;
     });
     if (best < 0) continue;  // no guide near that sets off the same way: not clumped
+    if (nextGuide) {
+      // the nearest guide whose path stays with the strand's (nearest first, ties by index)
+      const uint32_t s = members[m];
+      load(P + 3 * size_t(start[s]), start[s + 1] - start[s], w.p);
+      arcLengths(w.p, w.s);
+      std::sort(near.begin(), near.end());
+      for (const auto& [d2, k] : near)
+        if (!partsFrom(s, k)) {
+          best = k;
+          break;
+        }
+    }
     const uint32_t s = members[m], G = members[size_t(best)];
     const size_t count = start[s + 1] - start[s], gCount = start[G + 1] - start[G];
     const float* gp = P + 3 * size_t(start[G]);
@@ -174,7 +209,6 @@ void clumpGroup(const ClumpParams& c, const std::vector<uint32_t>& members,
     // A strand whose path parts from its guide's by more than kMaxApart (the two go round
     // different sides of the head, or either side of a parting further on) is not clumped: a
     // blend of the two paths would cut through the head.
-    const double maxApart = std::max(kMaxApart, 4 * c.guideDistance);
     bool apart = false;
     size_t j = 0;
     for (size_t i = 1; i < count && !apart; ++i) {

@@ -119,10 +119,12 @@ void curlAndFrizz(const DetailParams& d, uint32_t seed, uint32_t key, uint32_t p
 // Clump (strand_detail_clump.cpp).
 
 // Clump of one group's strands (members, each with >= 2 points), in place.
-// phaseKey (optional): a clumped strand's entry becomes its guide's key.
+// phaseKey (optional): a clumped strand's entry becomes its guide's key. nextGuide: a strand
+// whose path parts from its nearest guide's is clumped to the next nearest whose path stays with
+// it (applyDetail's clumpAll); off, it is not clumped.
 void clumpGroup(const ClumpParams& c, const std::vector<uint32_t>& members,
                 const std::vector<uint32_t>& key, uint32_t seed, Strands& strands, Work& w,
-                std::vector<uint32_t>* phaseKey);
+                std::vector<uint32_t>* phaseKey, bool nextGuide = false);
 
 // Flyaway (strand_detail_flyaway.cpp).
 

@@ -643,6 +643,54 @@ TEST(StrandDetail, ClumpLeavesAStrandWhosePathPartsFromItsGuide) {
       EXPECT_LT((strandOf(s, k)[i] - in[k][i]).norm(), 1e-6) << k << " " << i;
 }
 
+// Clump all (applyDetail's clumpAll): a follower whose nearest guide's path parts from its own is
+// clumped to the next nearest guide whose path stays with it. Two bundles side by side, 1 cm a
+// root: A hangs straight; B hangs beside it, then bends off sideways (1.5 apart at the tips). Off,
+// B's strands whose nearest guide is in A stay as they grew (unclumped: with curls, each curled on
+// its own); on, every strand that stays as it grew is a guide (pairwise a guide distance apart),
+// and every B strand ends with the bent-off bundle, for every seed tried.
+TEST(StrandDetail, ClumpAllTakesTheNextGuideWhosePathStaysWithTheStrand) {
+  std::vector<Strand> in;
+  for (int k = 0; k < 10; ++k) in.push_back(straight(V3(0.01 * k, 0, 0), V3(0, 1, 0), 45, 0.05));
+  for (int k = 10; k < 20; ++k) {
+    Strand b = straight(V3(0.01 * k, 0, 0), V3(0, 1, 0), 15, 0.05);
+    for (int i = 1; i <= 30; ++i) b.push_back(b.back() + V3(0.05, 0, 0));
+    in.push_back(b);
+  }
+  DetailParams d;
+  d.clump.factor = 1;
+  d.clump.shape = 0;
+  d.clump.guideDistance = 0.06;
+  const size_t n = in.size();
+  int lonelyOff = 0;
+  for (uint32_t seed = 1; seed <= 12; ++seed) {
+    for (const bool all : {false, true}) {
+      Strands s = makeStrands(in);
+      ASSERT_TRUE(applyDetail({d}, std::vector<uint32_t>(n, 0), iota(n), seed, s, 255, nullptr,
+                              false, nullptr, nullptr, all)
+                      .ok());
+      std::vector<size_t> kept;  // the strands that stayed as they grew
+      for (size_t k = 0; k < n; ++k) {
+        double moved = 0;
+        for (size_t i = 0; i < in[k].size(); ++i)
+          moved = std::max(moved, (strandOf(s, k)[i] - in[k][i]).norm());
+        if (moved < 1e-6) kept.push_back(k);
+        // a B strand ends with its bundle (bent off to x > 1), never pulled onto A's path
+        if (k >= 10) EXPECT_GT(strandOf(s, k).back().x(), 1.0) << seed << " " << k;
+      }
+      bool closePair = false;  // two kept strands nearer than a guide distance: one is lone
+      for (size_t a = 0; a < kept.size(); ++a)
+        for (size_t b = a + 1; b < kept.size(); ++b)
+          closePair |= (in[kept[a]][0] - in[kept[b]][0]).norm() < d.clump.guideDistance - 1e-9;
+      if (all)
+        EXPECT_FALSE(closePair) << "seed " << seed;
+      else
+        lonelyOff += closePair;
+    }
+  }
+  EXPECT_GT(lonelyOff, 0);  // off, the measure sees the lone strands
+}
+
 // Finished edges' end spread: strands that grew to one line end over a band below it. Each kept
 // length lies in [L - min(spread, 15 % L), L], the band is used (not all cut alike), a strand
 // given no spread keeps every point bit for bit, and the same keys give the same cuts.

@@ -27,6 +27,7 @@ function sample(): SessionState {
     roundPlaits: _roundPlaits,
     tieVolume: _tieVolume,
     compactBun: _compactBun,
+    clumpAll: _clumpAll,
     ...s
   } = emptySession('50k');
   return {

@@ -106,11 +106,13 @@ describe('every preset session passes the reader and round-trips', () => {
       roundPlaits,
       tieVolume,
       compactBun,
+      clumpAll,
       ...beforeFall
     } = emptySession('25k');
     expect(roundPlaits).toBe(true);
     expect(tieVolume).toBe(true);
     expect(compactBun).toBe(true);
+    expect(clumpAll).toBe(true);
     expect(coilVolume).toBe(true);
     expect(nape).toBe(true);
     expect(curlVolume).toBe(true);
@@ -144,6 +146,7 @@ describe('every preset session passes the reader and round-trips', () => {
         roundPlaits: true,
         tieVolume: true,
         compactBun: true,
+        clumpAll: true,
       }),
     ).toEqual(emptySession('25k'));
   });

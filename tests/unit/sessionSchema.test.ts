@@ -40,6 +40,7 @@ function full(): SessionState {
     roundPlaits: true,
     tieVolume: true,
     compactBun: true,
+    clumpAll: true,
     bandColor: '#d02060',
     detail: { lengthJitter: 0.2 },
     scalpPaint: [{ erase: true, radius: 0.3, points: [[0, 1, 0]] }],
@@ -88,6 +89,7 @@ describe('session schema', () => {
       'roundPlaits',
       'tieVolume',
       'compactBun',
+      'clumpAll',
       'detail',
     ]);
     expect(needsSolve(s, { ...s })).toBe(false);
@@ -161,8 +163,9 @@ describe('engine settings', () => {
         roundPlaits: false,
         tieVolume: true,
         compactBun: false,
+        clumpAll: true,
       }),
-    ]).toEqual([1, 0, 0, 1, 0, 1, 0.12, 0, 1, 0, 1, 1, 0, 1, 0]);
+    ]).toEqual([1, 0, 0, 1, 0, 1, 0.12, 0, 1, 0, 1, 1, 0, 1, 0, 1]);
     expect([
       ...engineSettings({
         avoidScalp: false,
@@ -180,7 +183,8 @@ describe('engine settings', () => {
         roundPlaits: true,
         tieVolume: false,
         compactBun: true,
+        clumpAll: false,
       }),
-    ]).toEqual([0, 1, 1, 0, 1, 0, 0, 1, 0, 1, 0, 0, 1, 0, 1]);
+    ]).toEqual([0, 1, 1, 0, 1, 0, 0, 1, 0, 1, 0, 0, 1, 0, 1, 0]);
   });
 });

@@ -349,6 +349,7 @@ export function applyPreset(s: SessionState, name: PresetName, ctx: PresetContex
     roundPlaits,
     tieVolume,
     compactBun,
+    clumpAll,
     bust,
     ...rest
   } = s;
@@ -389,6 +390,7 @@ export function applyPreset(s: SessionState, name: PresetName, ctx: PresetContex
     ...(roundPlaits && (name === 'empty' || TIE_PRESETS.includes(name)) ? { roundPlaits } : {}),
     ...(tieVolume && name === 'empty' ? { tieVolume } : {}),
     ...(compactBun && name === 'empty' ? { compactBun } : {}),
+    ...(clumpAll && name === 'empty' ? { clumpAll } : {}),
     ...(bust ? { bust } : {}),
     growth,
     curves,

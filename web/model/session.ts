@@ -228,6 +228,7 @@ export function emptySession(
     roundPlaits: true,
     tieVolume: true,
     compactBun: true,
+    clumpAll: true,
   };
 }
 

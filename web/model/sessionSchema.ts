@@ -112,6 +112,11 @@ export const SESSION_SETTINGS = {
    *  round a hole, to the judges). On in every new session; off, the buns of sessions made
    *  before. */
   compactBun: { type: 'flag', hair: 'request' },
+  /** Clump all (solver-cpp/src/strand_detail.hpp applyDetail's clumpAll): a strand whose path
+   *  parts from its nearest clump guide's is clumped to the next nearest whose path stays with
+   *  it, where it was not clumped (with curls each such strand curled on its own: a wiry halo of
+   *  lone loops round long curly hair). On in every new session; off, sessions made before. */
+  clumpAll: { type: 'flag', hair: 'request' },
 } as const satisfies Record<string, SettingSpec>;
 
 export type SessionSettingName = keyof typeof SESSION_SETTINGS;
