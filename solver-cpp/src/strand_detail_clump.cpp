@@ -63,11 +63,13 @@ uint64_t packCell(int64_t x, int64_t y, int64_t z) {
 // Calls f(member) for every guide in the 27 cells around the cell of p.
 template <class F>
 void forNearGuides(const CellTable& table, const std::vector<int32_t>& next, const V3& p,
-                   double inv, F f) {
+                   double inv, F f, int64_t cells = 1) {
   const int64_t cx = cellCoord(p.x(), inv), cy = cellCoord(p.y(), inv), cz = cellCoord(p.z(), inv);
-  for (int64_t x = std::max(cx - 1, -kCellHalf); x <= std::min(cx + 1, kCellHalf - 1); ++x)
-    for (int64_t y = std::max(cy - 1, -kCellHalf); y <= std::min(cy + 1, kCellHalf - 1); ++y)
-      for (int64_t z = std::max(cz - 1, -kCellHalf); z <= std::min(cz + 1, kCellHalf - 1); ++z)
+  for (int64_t x = std::max(cx - cells, -kCellHalf); x <= std::min(cx + cells, kCellHalf - 1); ++x)
+    for (int64_t y = std::max(cy - cells, -kCellHalf); y <= std::min(cy + cells, kCellHalf - 1);
+         ++y)
+      for (int64_t z = std::max(cz - cells, -kCellHalf); z <= std::min(cz + cells, kCellHalf - 1);
+           ++z)
         for (int32_t k = table.head(packCell(x, y, z)); k >= 0; k = next[size_t(k)])
           if (!f(k)) return;
 }
@@ -77,6 +79,9 @@ constexpr double kSameWay = 0.5;
 // How far (world units, 10 cm; at least 4 guide distances) a follower's path may part from its
 // guide's and still be clumped to it: round different sides of the head they part by more.
 constexpr double kMaxApart = 1.0;
+// nextGuide: when no guide in the cells next to a strand's root stays with its path, the guides
+// within this many world units (3 cm) of it are tried, nearest first.
+constexpr double kNextGuideReach = 0.3;
 
 }  // namespace
 
@@ -187,11 +192,32 @@ void clumpGroup(const ClumpParams& c, const std::vector<uint32_t>& members,
       load(P + 3 * size_t(start[s]), start[s + 1] - start[s], w.p);
       arcLengths(w.p, w.s);
       std::sort(near.begin(), near.end());
+      bool found = false;
       for (const auto& [d2, k] : near)
         if (!partsFrom(s, k)) {
           best = k;
+          found = true;
           break;
         }
+      if (!found) {
+        near.clear();
+        forNearGuides(
+            table, next, roots[m], inv,
+            [&](int32_t k) {
+              const double d2 = (roots[size_t(k)] - roots[m]).squaredNorm();
+              if (heading[size_t(k)].dot(heading[m]) >= kSameWay &&
+                  d2 < kNextGuideReach * kNextGuideReach)
+                near.emplace_back(d2, k);
+              return true;
+            },
+            int64_t(std::ceil(kNextGuideReach * inv)));
+        std::sort(near.begin(), near.end());
+        for (const auto& [d2, k] : near)
+          if (!partsFrom(s, k)) {
+            best = k;
+            break;
+          }
+      }
     }
     const uint32_t s = members[m], G = members[size_t(best)];
     const size_t count = start[s + 1] - start[s], gCount = start[G + 1] - start[G];
