@@ -295,4 +295,10 @@ test("a stream curve's own Volume (curve panel) lifts the hair it holds, not the
     ((await page.evaluate(() => window.hairsketch.session())) as { curves: { volume: number }[] })
       .curves[0].volume,
   ).toBe(0.2);
+  // the Hair panel with the curve's own detail: each of its numbers has a name of its own (the
+  // curve's Length jitter is "c1 Length jitter", not a second "Length jitter")
+  await page.keyboard.press('h');
+  await page.getByLabel('Own detail for c1').check();
+  await expect(page.getByLabel('c1 Length jitter', { exact: true })).toHaveCount(1);
+  await expect(page.getByLabel('Length jitter', { exact: true })).toHaveCount(1);
 });

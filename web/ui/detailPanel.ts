@@ -240,21 +240,20 @@ export function buildDetailPanel(root: HTMLElement, events: DetailPanelEvents): 
   ): void {
     panel.append(row('Curl type', curlTypeSelect(detail, curveId, prefix)));
     for (const b of DETAIL_BLOCKS) panel.append(blockEditor(b, detail, set, prefix));
-    panel.append(
-      row(
-        LENGTH_JITTER.label,
-        numberInput(
-          LENGTH_JITTER,
-          detail.lengthJitter ?? 0,
-          { label: `${prefix}${LENGTH_JITTER.label}` },
-          (v) => {
-            const { lengthJitter: _, ...rest } = detail;
-            set(v > 0 ? { ...rest, lengthJitter: v } : rest);
-          },
-          events.say,
-        ),
-      ),
+    const jitter = numberInput(
+      LENGTH_JITTER,
+      detail.lengthJitter ?? 0,
+      { label: `${prefix}${LENGTH_JITTER.label}` },
+      (v) => {
+        const { lengthJitter: _, ...rest } = detail;
+        set(v > 0 ? { ...rest, lengthJitter: v } : rest);
+      },
+      events.say,
     );
+    // its own name, as every other number here has: a curve's is "c3 Length jitter", not a
+    // second "Length jitter" beside the whole head's (a new user could not tell them apart)
+    jitter.setAttribute('aria-label', `${prefix}${LENGTH_JITTER.label}`);
+    panel.append(row(LENGTH_JITTER.label, jitter));
   }
 
   /** "Curl type": straight, the wavy, curly and coily types (model/curlTypes.ts), or "Own curl"
