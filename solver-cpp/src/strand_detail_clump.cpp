@@ -235,17 +235,9 @@ void clumpGroup(const ClumpParams& c, const std::vector<uint32_t>& members,
     // A strand whose path parts from its guide's by more than kMaxApart (the two go round
     // different sides of the head, or either side of a parting further on) is not clumped: a
     // blend of the two paths would cut through the head.
-    bool apart = false;
-    size_t j = 0;
-    for (size_t i = 1; i < count && !apart; ++i) {
-      const double u = locate(gArc, gCount, w.s[i] * along, j);
-      const V3 a(gp[3 * j], gp[3 * j + 1], gp[3 * j + 2]);
-      const V3 b(gp[3 * j + 3], gp[3 * j + 4], gp[3 * j + 5]);
-      apart = (lerp(a, b, u) - w.p[i]).norm() > maxApart;
-    }
-    if (apart) continue;
+    if (partsFrom(s, best)) continue;
     if (phaseKey) (*phaseKey)[s] = key[G];
-    j = 0;
+    size_t j = 0;
     for (size_t i = 1; i < count; ++i) {
       const double x = w.s[i] / L;
       const double u = locate(gArc, gCount, w.s[i] * along, j);
