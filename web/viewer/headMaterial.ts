@@ -81,6 +81,19 @@ export function headVertexColors(
   return rgb;
 }
 
+/** Per vertex: the share of the scalp's tint in its colour (headVertexColors: the fraction of its
+ *  triangles on the scalp; 0 on eyes and lips). */
+function scalpTints(head: HeadMeshArrays, out?: Float32Array): Float32Array {
+  const { scalpCount, triCount } = scalpCounts(head);
+  const n = head.positions.length / 3;
+  const f = out && out.length === n ? out : new Float32Array(n);
+  for (let v = 0; v < n; v++) {
+    const skinPart = !head.parts || head.parts[v] === HeadPart.skin;
+    f[v] = skinPart && triCount[v] ? scalpCount[v] / triCount[v] : 0;
+  }
+  return f;
+}
+
 /** Per vertex: how many of its triangles there are, and how many are scalp. */
 function scalpCounts(head: HeadMeshArrays): { scalpCount: Uint16Array; triCount: Uint16Array } {
   const { positions, indices, scalp } = head;
@@ -161,6 +174,7 @@ export function createHeadGeometry(
     new THREE.BufferAttribute(new Float32Array(vertices).fill(1), 1),
   );
   geometry.setAttribute('scalpShare', new THREE.BufferAttribute(scalpShares(head), 1));
+  geometry.setAttribute('scalpTint', new THREE.BufferAttribute(scalpTints(head), 1));
   if (head.normals) geometry.setAttribute('normal', new THREE.BufferAttribute(head.normals, 3));
   else geometry.computeVertexNormals();
   geometry.computeBoundingBox();
@@ -179,26 +193,40 @@ export function createHeadMaterial(): THREE.MeshStandardMaterial {
   // the scalp's colour under hair (linear RGB) and how much of it shows (0: no hair)
   const hairUnder = { value: new THREE.Vector4(0, 0, 0, 0) };
   material.userData.hairUnder = hairUnder;
+  // skin − scalp tint (linear RGB): what a vertex's colour gains per unit of its scalpTint to be
+  // skin again (headVertexColors mixes skin + tint · (scalp − skin))
+  const skin = new THREE.Color(DEFAULT_HEAD_COLORS.skin);
+  const scalp = new THREE.Color(DEFAULT_HEAD_COLORS.scalp);
+  const scalpToSkin = {
+    value: new THREE.Vector3(skin.r - scalp.r, skin.g - scalp.g, skin.b - scalp.b),
+  };
   material.onBeforeCompile = (shader) => {
     shader.uniforms.hairUnder = hairUnder;
+    shader.uniforms.scalpToSkin = scalpToSkin;
     shader.vertexShader = shader.vertexShader
       .replace(
         '#include <common>',
         '#include <common>\nattribute float hairShadow;\nvarying float vHairShadow;\n' +
-          'attribute float scalpShare;\nvarying float vScalpShare;',
+          'attribute float scalpShare;\nvarying float vScalpShare;\n' +
+          'attribute float scalpTint;\nvarying float vScalpTint;',
       )
       .replace(
         '#include <begin_vertex>',
-        '#include <begin_vertex>\nvHairShadow = hairShadow;\nvScalpShare = scalpShare;',
+        '#include <begin_vertex>\nvHairShadow = hairShadow;\nvScalpShare = scalpShare;\nvScalpTint = scalpTint;',
       );
     shader.fragmentShader = shader.fragmentShader
       .replace(
         '#include <common>',
-        '#include <common>\nvarying float vHairShadow;\nvarying float vScalpShare;\nuniform vec4 hairUnder;',
+        '#include <common>\nvarying float vHairShadow;\nvarying float vScalpShare;\n' +
+          'varying float vScalpTint;\nuniform vec4 hairUnder;\nuniform vec3 scalpToSkin;',
       )
       .replace(
         '#include <color_fragment>',
-        '#include <color_fragment>\ndiffuseColor.rgb = mix(diffuseColor.rgb, hairUnder.rgb, hairUnder.a * vScalpShare);',
+        // with hair, the scalp's tint (which marks where hair grows on a bald head) gives way to
+        // skin towards the edge, under the hairline's fine hairs: no pink line along it
+        '#include <color_fragment>\n' +
+          'if (hairUnder.a > 0.0) diffuseColor.rgb += vScalpTint * (1.0 - vScalpShare) * scalpToSkin;\n' +
+          'diffuseColor.rgb = mix(diffuseColor.rgb, hairUnder.rgb, hairUnder.a * vScalpShare);',
       );
     // the key light is the scene's first directional light (viewer.ts adds it first)
     patchHairShadowReceiver(shader, { perVertex: 'vHairShadow', inMap: true });
@@ -259,6 +287,11 @@ export function recolorHeadScalp(mesh: THREE.Mesh, head: HeadMeshArrays): void {
   if (f) {
     scalpShares(head, f.array as Float32Array);
     f.needsUpdate = true;
+  }
+  const tint = mesh.geometry.getAttribute('scalpTint') as THREE.BufferAttribute | undefined;
+  if (tint) {
+    scalpTints(head, tint.array as Float32Array);
+    tint.needsUpdate = true;
   }
   delete mesh.geometry.userData.scalpCounts;
 }

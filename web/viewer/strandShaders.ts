@@ -53,6 +53,20 @@ float widthOf(vec4 rnd) {
 }
 `;
 
+/** Roots emerge from the skin: a strand's coverage rises from 0 over its first ROOT_FADE (world
+ *  units; ROOT_FADE_SHARE of a shorter strand's length, so short hair keeps its body) from the
+ *  root, so where roots are seen (a hairline, a parting) the hair thins into the skin instead of
+ *  starting at a hard, pencil-drawn edge. along: x 0 root … 1 tip, y the distance from the tip
+ *  (world units), so the strand's length is y / (1 − x) and the distance from the root x of it. */
+const ROOT_FADE = 0.15;
+const ROOT_FADE_SHARE = 0.08;
+const rootFade = /* glsl */ `
+float rootFadeOf(vec2 along) {
+  float len = along.y / max(1.0 - along.x, 1e-3);
+  return smoothstep(0.0, min(${ROOT_FADE.toFixed(3)}, ${ROOT_FADE_SHARE.toFixed(3)} * len), along.x * len);
+}
+`;
+
 /** Uniforms, helpers and shadeStrand(): the shading, shared by the lines' vertex shader and
  *  the strips' fragment shader. */
 const shading = /* glsl */ `
@@ -223,10 +237,11 @@ varying float vDistance;
 #ifdef HAIR_OIT
 ${OIT_FRAGMENT_GLSL}
 #endif
+${rootFade}
 void main() {
-  // coverage times the tip's fade, blended order-independently (HAIR_OIT: hairOit.ts) or
-  // unsorted, without depth writes
-  float alpha = vCoverage * (1.0 - smoothstep(vFadeStart, 1.0, vAlong.x));
+  // coverage times the tip's and the root's fades, blended order-independently (HAIR_OIT:
+  // hairOit.ts) or unsorted, without depth writes
+  float alpha = vCoverage * (1.0 - smoothstep(vFadeStart, 1.0, vAlong.x)) * rootFadeOf(vAlong);
   if (alpha < 0.004) discard;
 #ifdef HAIR_OIT
   oitWrite(vColor, alpha, vDistance);
@@ -298,9 +313,10 @@ varying float vCoverage;
 #ifdef HAIR_OIT
 ${OIT_FRAGMENT_GLSL}
 #endif
+${rootFade}
 
 void main() {
-  float alpha = vCoverage * (1.0 - smoothstep(fadeStartOf(vRandom), 1.0, vAlong.x));
+  float alpha = vCoverage * (1.0 - smoothstep(fadeStartOf(vRandom), 1.0, vAlong.x)) * rootFadeOf(vAlong);
 #ifdef ALPHA_TO_COVERAGE
   if (alpha < 0.02) discard;
 #else
