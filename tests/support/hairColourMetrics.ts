@@ -351,3 +351,53 @@ export function hairlineWidth(withHair: Rgba, bald: Rgba, threshold = 24): numbe
   widths.sort((p, q) => p - q);
   return widths.length ? widths[Math.floor(widths.length / 2)] : Number.NaN;
 }
+
+/** How blotched the hair's shading is: over the hair's pixels (as hairColour's) whose whole
+ *  (2·wide + 1)² square is hair, the mean of |the grey's mean over a (2·fine + 1)² square − its
+ *  mean over the (2·wide + 1)² square|, over the hair's mean grey (sRGB, 0.299 r + 0.587 g +
+ *  0.114 b). Strands and their grain are averaged out by the fine square; what is left is shading
+ *  that changes over a few strands' width: blotches, and shadow lines drawn across the hair. */
+export function shadingBlotches(
+  withHair: Rgba,
+  bald: Rgba,
+  fine = 3,
+  wide = 10,
+  threshold = 24,
+): number {
+  const { width: W, height: H } = withHair;
+  if (W !== bald.width || H !== bald.height) throw new Error('the two pictures differ in size');
+  const a = withHair.rgba;
+  const z = bald.rgba;
+  // summed-area tables of the grey and of the hair mask
+  const S = new Float64Array((W + 1) * (H + 1));
+  const M = new Float64Array((W + 1) * (H + 1));
+  for (let y = 0; y < H; y++)
+    for (let x = 0; x < W; x++) {
+      const k = 4 * (y * W + x);
+      const hair =
+        Math.abs(a[k] - z[k]) + Math.abs(a[k + 1] - z[k + 1]) + Math.abs(a[k + 2] - z[k + 2]) >
+        threshold;
+      const g = 0.299 * a[k] + 0.587 * a[k + 1] + 0.114 * a[k + 2];
+      const i = (y + 1) * (W + 1) + x + 1;
+      S[i] = g + S[i - 1] + S[i - W - 1] - S[i - W - 2];
+      M[i] = (hair ? 1 : 0) + M[i - 1] + M[i - W - 1] - M[i - W - 2];
+    }
+  const box = (T: Float64Array, x: number, y: number, r: number) =>
+    T[(y + r + 1) * (W + 1) + x + r + 1] -
+    T[(y - r) * (W + 1) + x + r + 1] -
+    T[(y + r + 1) * (W + 1) + x - r] +
+    T[(y - r) * (W + 1) + x - r];
+  let sum = 0;
+  let grey = 0;
+  let n = 0;
+  for (let y = wide; y < H - wide; y++)
+    for (let x = wide; x < W - wide; x++) {
+      if (box(M, x, y, wide) < (2 * wide + 1) ** 2) continue;
+      const f = box(S, x, y, fine) / (2 * fine + 1) ** 2;
+      const w = box(S, x, y, wide) / (2 * wide + 1) ** 2;
+      sum += Math.abs(f - w);
+      grey += w;
+      n++;
+    }
+  return grey > 0 ? sum / grey : 0;
+}
