@@ -389,7 +389,6 @@ export function shadingBlotches(
     T[(y - r) * (W + 1) + x - r];
   let sum = 0;
   let grey = 0;
-  let n = 0;
   for (let y = wide; y < H - wide; y++)
     for (let x = wide; x < W - wide; x++) {
       if (box(M, x, y, wide) < (2 * wide + 1) ** 2) continue;
@@ -397,7 +396,6 @@ export function shadingBlotches(
       const w = box(S, x, y, wide) / (2 * wide + 1) ** 2;
       sum += Math.abs(f - w);
       grey += w;
-      n++;
     }
   return grey > 0 ? sum / grey : 0;
 }
