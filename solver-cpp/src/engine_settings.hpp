@@ -25,6 +25,7 @@ enum EngineSetting : size_t {
   kSettingTieVolume,    // a tie's hair holds a stylist's volume (HairEngine::setTieVolume)
   kSettingCompactBun,   // a bun is a round knot of wraps (HairEngine::setCompactBun)
   kSettingClumpAll,     // every strand finds a clump whose path it shares (setClumpAll)
+  kSettingFaceClear,    // governed hair parts round the face too (HairEngine::setFaceClear)
   kEngineSettingCount
 };
 

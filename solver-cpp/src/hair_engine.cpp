@@ -232,6 +232,7 @@ Status HairEngine::setSettings(const double* values, size_t count) {
   setTieVolume(values[kSettingTieVolume] != 0);
   setCompactBun(values[kSettingCompactBun] != 0);
   setClumpAll(values[kSettingClumpAll] != 0);
+  setFaceClear(values[kSettingFaceClear] != 0);
   const Status sh = setShape(values[kSettingShape] != 0, values[kSettingVolume]);
   if (!sh.ok()) return sh;
   const Status f = setFinish(values[kSettingFinish] != 0);

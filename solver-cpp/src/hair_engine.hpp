@@ -112,6 +112,11 @@ class HairEngine {
   // sessions made before (such strands are not clumped).
   void setClumpAll(bool on) { clumpAll_ = on; }
   bool clumpAll() const { return clumpAll_; }
+  // Face clear (hair_fall.hpp ShapeRules::faceClear): with the shape rules, hair a stroke governs
+  // parts round the face too unless it follows a stroke over the face. Off: as in sessions made
+  // before (governed hair went where the strokes' blend took it, across the eyes in the air).
+  void setFaceClear(bool on) { faceClear_ = on; }
+  bool faceClear() const { return faceClear_; }
   // Finished edges: every strand not laid into a tie ends up to kEndSpread short of where it
   // grew to (strand_detail.hpp applyDetail's endSpread), seeded per strand; lone roots are not
   // grown (scalp_roots.hpp dropLoneRoots); with fall the prior opens the face (hair_fall.hpp);
@@ -246,6 +251,7 @@ class HairEngine {
   bool tieVolume_ = false;
   bool compactBun_ = false;
   bool clumpAll_ = false;
+  bool faceClear_ = false;
   bool finish_ = false;
   ShapeRules shape_;
   std::vector<std::vector<Eigen::Vector3f>> partings_;  // the dividing curves of the last setCurves

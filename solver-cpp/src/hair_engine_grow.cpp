@@ -102,6 +102,7 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
     }
     shape.napeLine = &napeLine_;
     shape.lineOvershoot = finish_ ? 0.5f * kEndSpread : 0.f;
+    shape.faceClear = faceClear_;
   }
   growCap_.clear();
   if (!rootCap_.empty()) {

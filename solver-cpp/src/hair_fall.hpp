@@ -180,6 +180,10 @@ struct ShapeRules {
   // spread detail cuts back with finished edges, at most half its share of the length), so
   // its ends are spread round the line, not above it
   float lineOvershoot = 0;
+  // Face clear (a session's faceClear): hair a stroke governs parts round the face too, unless
+  // it follows a stroke over the face (reachOverFace), so hair between strokes drawn beside the
+  // face does not hang across the eyes in the air in front of it. Off: as sessions made before.
+  bool faceClear = false;
 };
 // Whether p lies in the face's column (kFaceTop, kFaceBottom, kFaceHalfAngle about the vertical
 // axis through centre, in front of it), where hair no stroke governs does not go: it parts to

@@ -80,6 +80,7 @@ struct GrowRange {
   const float* lengthCap;  // per root (null: none)
   bool hems;               // with the shape rules, a stroke sets a hem (setsHem)
   uint8_t* flags;          // per root (Strands::flags), or null
+  bool faceClear;          // with the shape rules, ShapeRules::faceClear
 
   // Slides the step from x to n (which ends within the margin of `mesh`) over the body
   // (BodyCollider): n and segLen become the slid step's end and length. prev: the strand's last
@@ -287,7 +288,15 @@ struct GrowRange {
           const float combed = hanging || laying
                                    ? shaped.fallOrComb(hanging, overEar, x, y, z, here, nx, ny, nz)
                                    : 0.f;
-          if (shape) shaped.partRoundFace(x, y, z, std::max(gov, combed), nx, ny, nz);
+          if (shape) {
+            // with face clear, hair a stroke governs parts round the face too unless it follows
+            // a stroke over the face (reachOverFace: near its stretch off the scalp, along it)
+            float g = std::max(gov, combed);
+            if (faceClear && g >= 0.5f && inFaceColumn(shaped.centre, nx, ny, nz) &&
+                !followsOverFace(x, y, z, nx, ny, nz))
+              g = 0.f;
+            shaped.partRoundFace(x, y, z, g, nx, ny, nz);
+          }
           // The body: the strand slides over it (never stops there).
           auto slide = [&](const HeadDistance& mesh) {
             const float at[3] = {x, y, z};
@@ -489,7 +498,8 @@ Status growStrands(const Grid& g, const std::vector<float>& field,
                  lengthCap,
                  shape && shape->on && reach && !reach->empty() &&
                      std::any_of(reach->strokes.begin(), reach->strokes.end(), setsHem),
-                 nullptr};
+                 nullptr,
+                 shape && shape->on && shape->faceClear};
   grow.shaped.napeLine = shape ? shape->napeLine : nullptr;
   if (grow.shaped.napeLine) grow.shaped.napeTop = napeLineTop(*grow.shaped.napeLine) + kFadeAbove;
   grow.shaped.lineOvershoot = shape ? std::max(shape->lineOvershoot, 0.f) : 0.f;

@@ -28,6 +28,7 @@ function sample(): SessionState {
     tieVolume: _tieVolume,
     compactBun: _compactBun,
     clumpAll: _clumpAll,
+    faceClear: _faceClear,
     ...s
   } = emptySession('50k');
   return {

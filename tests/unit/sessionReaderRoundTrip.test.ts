@@ -107,12 +107,14 @@ describe('every preset session passes the reader and round-trips', () => {
       tieVolume,
       compactBun,
       clumpAll,
+      faceClear,
       ...beforeFall
     } = emptySession('25k');
     expect(roundPlaits).toBe(true);
     expect(tieVolume).toBe(true);
     expect(compactBun).toBe(true);
     expect(clumpAll).toBe(true);
+    expect(faceClear).toBe(true);
     expect(coilVolume).toBe(true);
     expect(nape).toBe(true);
     expect(curlVolume).toBe(true);
@@ -147,6 +149,7 @@ describe('every preset session passes the reader and round-trips', () => {
         tieVolume: true,
         compactBun: true,
         clumpAll: true,
+        faceClear: true,
       }),
     ).toEqual(emptySession('25k'));
   });

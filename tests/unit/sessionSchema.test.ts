@@ -41,6 +41,7 @@ function full(): SessionState {
     tieVolume: true,
     compactBun: true,
     clumpAll: true,
+    faceClear: true,
     bandColor: '#d02060',
     detail: { lengthJitter: 0.2 },
     scalpPaint: [{ erase: true, radius: 0.3, points: [[0, 1, 0]] }],
@@ -90,6 +91,7 @@ describe('session schema', () => {
       'tieVolume',
       'compactBun',
       'clumpAll',
+      'faceClear',
       'detail',
     ]);
     expect(needsSolve(s, { ...s })).toBe(false);
@@ -164,8 +166,9 @@ describe('engine settings', () => {
         tieVolume: true,
         compactBun: false,
         clumpAll: true,
+        faceClear: false,
       }),
-    ]).toEqual([1, 0, 0, 1, 0, 1, 0.12, 0, 1, 0, 1, 1, 0, 1, 0, 1]);
+    ]).toEqual([1, 0, 0, 1, 0, 1, 0.12, 0, 1, 0, 1, 1, 0, 1, 0, 1, 0]);
     expect([
       ...engineSettings({
         avoidScalp: false,
@@ -184,7 +187,8 @@ describe('engine settings', () => {
         tieVolume: false,
         compactBun: true,
         clumpAll: false,
+        faceClear: true,
       }),
-    ]).toEqual([0, 1, 1, 0, 1, 0, 0, 1, 0, 1, 0, 0, 1, 0, 1, 0]);
+    ]).toEqual([0, 1, 1, 0, 1, 0, 0, 1, 0, 1, 0, 0, 1, 0, 1, 0, 1]);
   });
 });

@@ -350,6 +350,7 @@ export function applyPreset(s: SessionState, name: PresetName, ctx: PresetContex
     tieVolume,
     compactBun,
     clumpAll,
+    faceClear,
     bust,
     ...rest
   } = s;
@@ -391,6 +392,7 @@ export function applyPreset(s: SessionState, name: PresetName, ctx: PresetContex
     ...(tieVolume && name === 'empty' ? { tieVolume } : {}),
     ...(compactBun && name === 'empty' ? { compactBun } : {}),
     ...(clumpAll && name === 'empty' ? { clumpAll } : {}),
+    ...(faceClear && name === 'empty' ? { faceClear } : {}),
     ...(bust ? { bust } : {}),
     growth,
     curves,

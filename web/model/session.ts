@@ -229,6 +229,7 @@ export function emptySession(
     tieVolume: true,
     compactBun: true,
     clumpAll: true,
+    faceClear: true,
   };
 }
 

@@ -117,6 +117,11 @@ export const SESSION_SETTINGS = {
    *  it, where it was not clumped (with curls each such strand curled on its own: a wiry halo of
    *  lone loops round long curly hair). On in every new session; off, sessions made before. */
   clumpAll: { type: 'flag', hair: 'request' },
+  /** Face clear (solver-cpp/src/hair_fall.hpp ShapeRules::faceClear): with the shape rules, hair
+   *  a stroke governs parts round the face too unless it follows a stroke over the face (hair
+   *  at a centre part between two bang strokes hung across the eyes in the air, a veil in
+   *  profile). On in every new session; off, sessions made before. */
+  faceClear: { type: 'flag', hair: 'request' },
 } as const satisfies Record<string, SettingSpec>;
 
 export type SessionSettingName = keyof typeof SESSION_SETTINGS;
