@@ -18,12 +18,19 @@ export function everyOtherPoint(s: StrandArrays): StrandArrays {
     strandStart[k + 1] = strandStart[k] + m;
   }
   const points = new Float32Array(3 * strandStart[strands]);
+  const from = s.points;
+  // copied a coordinate at a time: a subarray per point cost ~5 ms a 6,000-strand preview
   for (let k = 0; k < strands; k++) {
     const a = s.strandStart[k];
     const n = s.strandStart[k + 1] - a;
-    let w = strandStart[k];
+    let w = 3 * strandStart[k];
     for (let i = 0; i < n; i++)
-      if (kept(i, n)) points.set(s.points.subarray(3 * (a + i), 3 * (a + i) + 3), 3 * w++);
+      if (kept(i, n)) {
+        const r = 3 * (a + i);
+        points[w++] = from[r];
+        points[w++] = from[r + 1];
+        points[w++] = from[r + 2];
+      }
   }
   return { points, strandStart };
 }
