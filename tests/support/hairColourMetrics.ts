@@ -399,3 +399,32 @@ export function shadingBlotches(
     }
   return grey > 0 ? sum / grey : 0;
 }
+
+/** How much of strongly coloured hair is crossed by a pale, greyed line: of the pixels whose
+ *  7 × 7 neighbourhood's median HSV saturation is above `vivid` (inside auburn or copper hair;
+ *  skin, the background and grey hair are far below it), the share whose own saturation is more
+ *  than `dip` below that median. A white sheen from the fill light drawn as a thin line over red
+ *  hair is such a dip; strands' own spread of colour is not. */
+export function greyLineShare(picture: Rgba, vivid = 0.7, dip = 0.3): number {
+  const { width: W, height: H, rgba: a } = picture;
+  const sat = new Float32Array(W * H);
+  for (let i = 0; i < W * H; i++) {
+    const [, s] = hsv(a[4 * i], a[4 * i + 1], a[4 * i + 2]);
+    sat[i] = s;
+  }
+  const window: number[] = [];
+  let inside = 0;
+  let lines = 0;
+  for (let y = 3; y < H - 3; y++)
+    for (let x = 3; x < W - 3; x++) {
+      window.length = 0;
+      for (let dy = -3; dy <= 3; dy++)
+        for (let dx = -3; dx <= 3; dx++) window.push(sat[(y + dy) * W + x + dx]);
+      window.sort((p, q) => p - q);
+      const median = window[24];
+      if (median <= vivid) continue;
+      inside++;
+      if (sat[y * W + x] < median - dip) lines++;
+    }
+  return inside ? lines / inside : 0;
+}

@@ -91,6 +91,7 @@ uniform float hueVariation; // ± red/blue balance per strand
 const float HIGHLIGHT_TILT = 0.14;
 // the fill's sheen, over the fill's brightness (the key's BSDF gain's share of it)
 const float FILL_SHEEN = 5.0;
+const float FILL_SHEEN_SPREAD = 3.0;
 uniform float precomputed; // 1: use the precomputed lighting attribute; 0: ignore it (all lit)
 #ifdef DEEP_OPACITY
 uniform sampler2D domDepth;
@@ -190,8 +191,10 @@ vec3 shadeStrand(vec3 T, vec3 P, vec2 along, vec4 rnd, vec2 light) {
   float sky = 0.65 + 0.35 * N.y;
   // the fill's sheen: its primary reflection, white, where the hair turns towards it (from
   // behind, dark hair lit by the fill alone was a black shell with no strand showing)
-  float sheen =
-    FILL_SHEEN * dot(fillColor, vec3(0.2126, 0.7152, 0.0722)) * hairR(Ts, fillDirection, V, beta);
+  // its lobe FILL_SHEEN_SPREAD times as wide as the key's: as sharp as the key's it drew a thin
+  // grey-blue line across the side of long hair where the strands turn through the mirror angle
+  float sheen = FILL_SHEEN * dot(fillColor, vec3(0.2126, 0.7152, 0.0722))
+    * hairR(Ts, fillDirection, V, FILL_SHEEN_SPREAD * beta);
   return rootAo * (key + ao * ((fillColor * fill + ambientColor * sky) * base + sheen));
 }
 `;
