@@ -54,11 +54,12 @@ const styles: Record<string, () => SessionState> = {
     const s = preset('curly');
     return withShadeNamed(
       // as the Hair panel's Curl type sets it: the curl and the type's root lift as the Volume
-      // in a new session (curl and coil volume on), as a user choosing 4B gets it
+      // in a new session (curl and coil volume and clump all on), as a user choosing 4B gets it
       {
         ...applyCommand(s, { kind: 'setCurlType', curveId: null, type: '4B' }).session,
         curlVolume: true,
         coilVolume: true,
+        clumpAll: true,
       },
       'black',
     );
