@@ -232,9 +232,16 @@ export class LayeredDrawing {
     }
   }
 
-  /** Draws a frame as `plan` says, into the canvas; `save`: keep the layers drawn in the cache.
-   *  Returns where the frame started from (a cached slot, or 'none'). */
-  draw(plan: FramePlan, all: number, keys: LayerKeys, save: boolean): FramePlan['source'] {
+  /** Draws a frame as `plan` says, into the canvas; `save`: keep the layers drawn in the cache
+   *  (the hair layer only when `saveHair` too). Returns where the frame started from (a cached
+   *  slot, or 'none'). */
+  draw(
+    plan: FramePlan,
+    all: number,
+    keys: LayerKeys,
+    save: boolean,
+    saveHair = save,
+  ): FramePlan['source'] {
     const r = this.s.renderer;
     const hair = this.s.hair();
     if (hair && all > 0 && plan.source !== 'hair') hair.geometry.setDrawRange(0, plan.count);
@@ -258,7 +265,7 @@ export class LayeredDrawing {
       r.autoClear = false;
       if (source !== 'hair') {
         drawLayers(this.s, ['hair']);
-        if (save && slots.copy('hair', 'save', size.x, size.y))
+        if (saveHair && slots.copy('hair', 'save', size.x, size.y))
           this.hairKey = { ...keys.layer, hair: keys.hair, count: plan.count };
       }
       drawLayers(this.s, ['overlay']);

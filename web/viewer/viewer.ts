@@ -59,6 +59,10 @@ export class Viewer {
   private dirty = true;
   /** Overlay-only frames waiting for hair on its way (expectHair). */
   private readonly overlayWait = new OverlayWait(OVERLAY_WAIT_MS);
+  /** A stroke's previews are on their way (expectHair): each replaces the hair drawn before it. */
+  private previewing = false;
+  /** The hair the last frame drew (its drawable stamp). */
+  private drawnHair = '';
   /** WebGL runs on a software rasteriser (no GPU). */
   readonly software: boolean;
   /** The unmasked WebGL renderer (WEBGL_debug_renderer_info), or the masked one without it. */
@@ -190,11 +194,19 @@ export class Viewer {
     const { all, interactive } = this.detail.counts(this.hair);
     const keys = this.layers.keys();
     const plan = this.layers.plan(mode, all, interactive, keys);
-    if (this.overlayWait.waits(plan, mode, now)) return false;
+    // a frame that would draw again the preview just drawn (not kept in the cache: below) only
+    // to move the overlays waits as an overlay-only frame does
+    const redraw = this.previewing && plan.source === 'static' && keys.hair === this.drawnHair;
+    if (this.overlayWait.waits(redraw ? { ...plan, source: 'hair' } : plan, mode, now))
+      return false;
     this.fullDetailOwed = plan.fullDetailNext;
     if (plan.fullDetailNext) this.fullDetailWait = FULL_DETAIL_DELAY_FRAMES;
     this.lastDetail = all > 0 ? plan.count / all : 1;
-    const source = this.layers.draw(plan, all, keys, true);
+    // while a stroke's previews come, the hair drawn is replaced by the next one: it is not
+    // copied into the cache (a copy of the frame costs a software rasteriser as much as the
+    // preview's hair)
+    const source = this.layers.draw(plan, all, keys, true, !this.previewing);
+    if (source !== 'hair') this.drawnHair = keys.hair;
     this.lastSource = source;
     this.frameSources[source]++;
     // a frame that drew no hair says nothing about what hair costs
@@ -239,6 +251,7 @@ export class Viewer {
    *  that found no wait running (so the stroke line still moves when previews are slow).
    *  expectHair(false): nothing is on its way (the stroke ended); frames no longer wait. */
   expectHair(on = true): void {
+    this.previewing = on;
     if (!on) this.overlayWait.cancel();
     else if (this.software) this.overlayWait.expect(performance.now());
   }
@@ -397,6 +410,8 @@ export class Viewer {
     const had = this.holds.size > 0;
     if (on) this.holds.add(reason);
     else this.holds.delete(reason);
+    // a stroke let go asks for no more previews, whichever tool drew it
+    if (reason === 'stroke' && !on) this.previewing = false;
     this.scheduleFrame();
     if (had !== this.holds.size > 0) {
       // the settled view in full resolution (a playing motion keeps its own)
