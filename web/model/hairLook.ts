@@ -85,6 +85,11 @@ export function hasTips(look: HairLook): boolean {
  *  read as an even gradient that the hair's own shading hides. */
 export const BALAYAGE_LENGTH: readonly [number, number] = [0.8, 0.8];
 export const BALAYAGE_STRENGTH: readonly [number, number] = [0.6, 0.4];
+/** A piece has its full strength over the last BALAYAGE_FULL of its fade length and fades to the
+ *  root colour over the rest (painted ends). Faded over the whole length, the share reached half
+ *  strength only halfway along it, and a colourist saw "the ends lighten only slightly more than
+ *  the plain hair does from lighting alone". */
+export const BALAYAGE_FULL = 0.35;
 
 /** The absorption (or melanin amount, which it is proportional to) a share `t` of the way from
  *  the root's `a` to the tips' `b`: mixed in log space, a · (b / a)^t, so the colour lightens
@@ -99,7 +104,8 @@ export function mixAbsorption(a: number, b: number, t: number, tipStart = 1): nu
 }
 
 /** The share of the tip colour (0 root colour … 1 tip colour) at a point `tipDistance` world
- *  units from its strand's tip: strength × (1 − smoothstep(0, length, tipDistance)), the
+ *  units from its strand's tip: strength × (1 − smoothstep(BALAYAGE_FULL · length, length,
+ *  tipDistance)), the
  *  strand's length and strength by its `piece` (BALAYAGE_LENGTH, BALAYAGE_STRENGTH). An older
  *  session's fraction (tipStart < 1) instead blends by the point's place along the strand,
  *  `along` (0 root … 1 tip): smoothstep(tipStart, 1, along), as it always did. The strand
@@ -115,7 +121,7 @@ export function tipShare(
   if (tipLength <= 0) return 0;
   const length = tipLength * (BALAYAGE_LENGTH[0] + BALAYAGE_LENGTH[1] * piece);
   const strength = BALAYAGE_STRENGTH[0] + BALAYAGE_STRENGTH[1] * piece;
-  return strength * (1 - smoothstep(0, length, tipDistance));
+  return strength * (1 - smoothstep(BALAYAGE_FULL * length, length, tipDistance));
 }
 
 /** #rrggbb (sRGB) → linear RGB; null when it is not #rrggbb. */

@@ -8,7 +8,7 @@
 // and fade; strands are blended order-independently (hairOit.ts). While a motion plays the
 // vertex shaders place each point on its guide first (followerGlsl.ts). The material that uses
 // them: strandMaterial.ts.
-import { BALAYAGE_LENGTH, BALAYAGE_STRENGTH } from '../model/hairLook';
+import { BALAYAGE_FULL, BALAYAGE_LENGTH, BALAYAGE_STRENGTH } from '../model/hairLook';
 import { DOM_LAYERED_OPACITY_GLSL } from './deepOpacityGlsl';
 import { FOLLOWER_GLSL } from './followerGlsl';
 import { HAIR_BSDF_GLSL } from './hairBsdf';
@@ -123,13 +123,13 @@ float deepOpacityTransmittance(vec3 world) {
 
 
 // The tip colour's share (hairLook.ts tipShare): a balayage's piece of the strand's own length
-// and strength (piece: its seeded value), fading in over that length from the tip (tipDistance,
-// world units); or an older session's fraction of the strand (along: 0 root … 1 tip).
+// and strength (piece: its seeded value), full over the last BALAYAGE_FULL of that length from
+// the tip and fading in over the rest (tipDistance, world units); or an older session's fraction of the strand (along: 0 root … 1 tip).
 float tipShare(float along, float tipDistance, float piece) {
   if (lookShares.y < 0.999) return smoothstep(lookShares.y, 1.0, along);
   if (tipLength <= 0.0) return 0.0;
   float len = tipLength * (${BALAYAGE_LENGTH[0].toFixed(3)} + ${BALAYAGE_LENGTH[1].toFixed(3)} * piece);
-  return (${BALAYAGE_STRENGTH[0].toFixed(3)} + ${BALAYAGE_STRENGTH[1].toFixed(3)} * piece) * (1.0 - smoothstep(0.0, len, tipDistance));
+  return (${BALAYAGE_STRENGTH[0].toFixed(3)} + ${BALAYAGE_STRENGTH[1].toFixed(3)} * piece) * (1.0 - smoothstep(${BALAYAGE_FULL.toFixed(3)} * len, len, tipDistance));
 }
 
 // The strand's absorption at \`along\` (x: 0 root … 1 tip; y: distance from the tip, world
