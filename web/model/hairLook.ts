@@ -105,8 +105,8 @@ export function mixAbsorption(a: number, b: number, t: number, tipStart = 1): nu
 
 /** The share of the tip colour (0 root colour … 1 tip colour) at a point `tipDistance` world
  *  units from its strand's tip: strength × (1 − smoothstep(BALAYAGE_FULL · length, length,
- *  tipDistance)), the
- *  strand's length and strength by its `piece` (BALAYAGE_LENGTH, BALAYAGE_STRENGTH). An older
+ *  tipDistance)), the strand's length and strength by its `piece` (BALAYAGE_LENGTH,
+ *  BALAYAGE_STRENGTH). An older
  *  session's fraction (tipStart < 1) instead blends by the point's place along the strand,
  *  `along` (0 root … 1 tip): smoothstep(tipStart, 1, along), as it always did. The strand
  *  shader's tipShare() is the same arithmetic. */

@@ -86,6 +86,25 @@ export class OverlayWait {
   waits(plan: FramePlan, mode: FrameMode, now: number): boolean {
     return plan.source === 'hair' && mode === 'interactive' && now < this.until;
   }
+
+  /** A stroke's previews are on their way: each replaces the hair drawn before it, so the hair
+   *  drawn is not copied into the cache (on a software rasteriser the copy costs as much as the
+   *  preview's hair). */
+  previewing = false;
+  /** The hair the last frame drew (its drawable stamp). */
+  private drawnHair = '';
+
+  /** As waits, and a frame that would draw again the preview just drawn (not kept in the cache)
+   *  only to move the overlays waits as an overlay-only frame does. `hair`: the hair's stamp. */
+  holds(plan: FramePlan, mode: FrameMode, now: number, hair: string): boolean {
+    const redraw = this.previewing && plan.source === 'static' && hair === this.drawnHair;
+    return this.waits(redraw ? { ...plan, source: 'hair' } : plan, mode, now);
+  }
+
+  /** A frame was drawn from `source` with the hair `hair` (its stamp). */
+  drew(source: FrameSource, hair: string): void {
+    if (source !== 'hair') this.drawnHair = hair;
+  }
 }
 
 /** What a slot was drawn from; a slot is used only while its key equals the frame's. */

@@ -124,7 +124,8 @@ float deepOpacityTransmittance(vec3 world) {
 
 // The tip colour's share (hairLook.ts tipShare): a balayage's piece of the strand's own length
 // and strength (piece: its seeded value), full over the last BALAYAGE_FULL of that length from
-// the tip and fading in over the rest (tipDistance, world units); or an older session's fraction of the strand (along: 0 root … 1 tip).
+// the tip and fading in over the rest (tipDistance, world units); or an older session's fraction
+// of the strand (along: 0 root … 1 tip).
 float tipShare(float along, float tipDistance, float piece) {
   if (lookShares.y < 0.999) return smoothstep(lookShares.y, 1.0, along);
   if (tipLength <= 0.0) return 0.0;

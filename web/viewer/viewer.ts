@@ -59,10 +59,6 @@ export class Viewer {
   private dirty = true;
   /** Overlay-only frames waiting for hair on its way (expectHair). */
   private readonly overlayWait = new OverlayWait(OVERLAY_WAIT_MS);
-  /** A stroke's previews are on their way (expectHair): each replaces the hair drawn before it. */
-  private previewing = false;
-  /** The hair the last frame drew (its drawable stamp). */
-  private drawnHair = '';
   /** WebGL runs on a software rasteriser (no GPU). */
   readonly software: boolean;
   /** The unmasked WebGL renderer (WEBGL_debug_renderer_info), or the masked one without it. */
@@ -194,19 +190,13 @@ export class Viewer {
     const { all, interactive } = this.detail.counts(this.hair);
     const keys = this.layers.keys();
     const plan = this.layers.plan(mode, all, interactive, keys);
-    // a frame that would draw again the preview just drawn (not kept in the cache: below) only
-    // to move the overlays waits as an overlay-only frame does
-    const redraw = this.previewing && plan.source === 'static' && keys.hair === this.drawnHair;
-    if (this.overlayWait.waits(redraw ? { ...plan, source: 'hair' } : plan, mode, now))
-      return false;
+    if (this.overlayWait.holds(plan, mode, now, keys.hair)) return false;
     this.fullDetailOwed = plan.fullDetailNext;
     if (plan.fullDetailNext) this.fullDetailWait = FULL_DETAIL_DELAY_FRAMES;
     this.lastDetail = all > 0 ? plan.count / all : 1;
-    // while a stroke's previews come, the hair drawn is replaced by the next one: it is not
-    // copied into the cache (a copy of the frame costs a software rasteriser as much as the
-    // preview's hair)
-    const source = this.layers.draw(plan, all, keys, true, !this.previewing);
-    if (source !== 'hair') this.drawnHair = keys.hair;
+    // a stroke's preview is not kept in the cache: the next one replaces it (OverlayWait)
+    const source = this.layers.draw(plan, all, keys, true, !this.overlayWait.previewing);
+    this.overlayWait.drew(source, keys.hair);
     this.lastSource = source;
     this.frameSources[source]++;
     // a frame that drew no hair says nothing about what hair costs
@@ -251,7 +241,7 @@ export class Viewer {
    *  that found no wait running (so the stroke line still moves when previews are slow).
    *  expectHair(false): nothing is on its way (the stroke ended); frames no longer wait. */
   expectHair(on = true): void {
-    this.previewing = on;
+    this.overlayWait.previewing = on;
     if (!on) this.overlayWait.cancel();
     else if (this.software) this.overlayWait.expect(performance.now());
   }
@@ -411,7 +401,7 @@ export class Viewer {
     if (on) this.holds.add(reason);
     else this.holds.delete(reason);
     // a stroke let go asks for no more previews, whichever tool drew it
-    if (reason === 'stroke' && !on) this.previewing = false;
+    if (reason === 'stroke' && !on) this.overlayWait.previewing = false;
     this.scheduleFrame();
     if (had !== this.holds.size > 0) {
       // the settled view in full resolution (a playing motion keeps its own)
