@@ -40,9 +40,9 @@ async function setNumber(page: Page, name: string, value: number): Promise<void>
   await page.evaluate(() => window.hairsketch.idle());
 }
 
-/** The default preset at 12,000 strands, settled, with the Hair panel open: the panel. */
+/** The default preset at 4,000 strands, settled, with the Hair panel open: the panel. */
 async function openHairPanel(page: Page) {
-  await page.goto('/?strands=12000');
+  await page.goto('/?strands=4000');
   await settled(page);
   await page.getByRole('button', { name: 'Detail' }).click();
   return page.getByRole('region', { name: 'Hair detail' });

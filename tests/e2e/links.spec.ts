@@ -55,7 +55,7 @@ test('the default preset with a stroke: a short link that reopens the identical 
   page,
   context,
 }) => {
-  const { hash, other } = await strokeAndReopen(page, context, '/?strands=8000');
+  const { hash, other } = await strokeAndReopen(page, context, '/?strands=3000');
   console.log(`default preset + one stroke: link fragment ${hash.length} characters`);
   expect(hash).toMatch(/^#s=3\.[A-Za-z0-9_-]+$/);
   expect(hash.length).toBeLessThanOrEqual(2000);

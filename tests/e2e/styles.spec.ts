@@ -14,20 +14,33 @@ import { settled, watchConsole } from './helpers';
 
 const execFileAsync = promisify(execFile);
 
-/** `hairsketch grow` on each style's file at `strands` strands, one after another (beside the
- *  browser's work): each style's hairHash from its report. */
+/** `hairsketch grow` on each style's file at `strands` strands (beside the browser's work): each
+ *  style's hairHash from its report. The bundled command line's main runs once per style in one
+ *  Node process (the command's own code, without a Node start and a wasm compile per style). */
 async function cliHashes(strands: number): Promise<Map<string, string>> {
   const dir = mkdtempSync(join(tmpdir(), 'styles-'));
+  const runs = STYLE_LIBRARY.map((st) => [
+    'grow',
+    `public/styles/${st.id}.json`,
+    '--out',
+    join(dir, `${st.id}.hair`),
+    '--strands',
+    String(strands),
+  ]);
+  const script = `
+    import { buildCliBundle, cliBundle, cliBundleStale } from './scripts/cliBundle.mjs';
+    const error = cliBundleStale() && buildCliBundle();
+    if (error) throw new Error('cannot build the command line bundle: ' + error);
+    const { main } = await import(cliBundle);
+    for (const argv of ${JSON.stringify(runs)}) if ((await main(argv)) !== 0) process.exit(1);`;
+  const { stdout } = await execFileAsync('node', ['--input-type=module', '-e', script], {
+    maxBuffer: 1 << 20,
+  });
+  const lines = stdout.trim().split('\n');
+  expect(lines).toHaveLength(STYLE_LIBRARY.length);
   const out = new Map<string, string>();
-  for (const st of STYLE_LIBRARY) {
-    const args = ['grow', `public/styles/${st.id}.json`, '--out', join(dir, `${st.id}.hair`)];
-    const { stdout } = await execFileAsync(
-      'node',
-      ['scripts/hairsketch.mjs', ...args, '--strands', String(strands)],
-      { maxBuffer: 1 << 20 },
-    );
-    out.set(st.id, (JSON.parse(stdout.trim()) as { hairHash: string }).hairHash);
-  }
+  for (const [i, st] of STYLE_LIBRARY.entries())
+    out.set(st.id, (JSON.parse(lines[i]) as { hairHash: string }).hairHash);
   return out;
 }
 

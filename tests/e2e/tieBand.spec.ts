@@ -7,7 +7,7 @@ import { settled, watchConsole } from './helpers';
 
 test('a braid with ties gets a band; Band colour recolours it, Undo restores', async ({ page }) => {
   const errors = watchConsole(page);
-  await page.goto('/?preset=braid&strands=12000');
+  await page.goto('/?preset=braid&strands=3000');
   await settled(page);
   expect(await page.evaluate(() => window.hairsketch.tieBands().bands.length)).toBe(1);
   const revision = () =>

@@ -124,7 +124,7 @@ export function blackShare(withHair: Rgba, bald: Rgba, below = 12, threshold = 2
 /** How much bare skin shows through the hair (stripes of scalp between clumps, a crown's whorl):
  *  in the top `topShare` of the hair's bounding box (as hairColour finds the hair's pixels: there
  *  the head is covered by hair), the share of all pixels that read as skin (sRGB with r > g > b,
- *  HSV saturation 0.15 to 0.6 and value above 90 of 255, as skinGrain's). */
+ *  HSV saturation 0.15 to 0.6 and value above 90 of 255). */
 export function skinThroughHair(
   withHair: Rgba,
   bald: Rgba,
@@ -249,42 +249,6 @@ export function strandContrast(withHair: Rgba, bald: Rgba, r = 1): number {
       sum += v[i];
     }
   return sum > 0 ? dev / sum : 0;
-}
-
-/** How grainy the skin is: over the skin's pixels (sRGB with r > g > b, HSV saturation 0.15 to
- *  0.6, value above 90 of 255, and so are all eight neighbours: the hair, the background and
- *  the edges are left out), the 99th percentile of |v − the mean v of its 3 × 3 neighbourhood|,
- *  v the sRGB grey. Smooth shading and soft shadows give a few units; a shadow hatched by single
- *  strands, each a texel of a shadow map wide, gives more. */
-export function skinGrain(picture: Rgba): { grain: number; pixels: number } {
-  const { width: W, height: H, rgba: a } = picture;
-  const skin = new Uint8Array(W * H);
-  const v = new Float64Array(W * H);
-  for (let i = 0; i < W * H; i++) {
-    const [r, g, b] = [a[4 * i], a[4 * i + 1], a[4 * i + 2]];
-    v[i] = 0.299 * r + 0.587 * g + 0.114 * b;
-    const s = r > 0 ? (r - b) / r : 0;
-    skin[i] = r > g && g > b && s > 0.15 && s < 0.6 && r > 90 ? 1 : 0;
-  }
-  const dev: number[] = [];
-  for (let y = 1; y < H - 1; y++)
-    for (let x = 1; x < W - 1; x++) {
-      let all = true;
-      let m = 0;
-      for (let dy = -1; dy <= 1 && all; dy++)
-        for (let dx = -1; dx <= 1; dx++) {
-          const j = (y + dy) * W + x + dx;
-          if (!skin[j]) {
-            all = false;
-            break;
-          }
-          m += v[j];
-        }
-      if (all) dev.push(Math.abs(v[y * W + x] - m / 9));
-    }
-  if (dev.length < 1000) throw new Error('too little skin in the picture to measure');
-  dev.sort((p, q) => p - q);
-  return { grain: dev[Math.floor(0.99 * (dev.length - 1))], pixels: dev.length };
 }
 
 /** How soft a hairline seen from the front is, in pixels: down each column of the middle third
