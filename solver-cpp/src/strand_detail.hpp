@@ -144,7 +144,9 @@ Status validateDetail(const DetailParams& d);
 // u · min(endSpread[s], kEndSpreadShare · its length), u uniform in [0, 1) seeded by its key, so
 // hair that ends at one line (a bob, a fringe, a length cap) ends over a little band instead.
 // ringlets: a clumped strand curls in phase with its clump's guide, so a clump's strands wind
-// round together (ringlets) instead of each at its own phase (a crimped texture).
+// round together (ringlets) instead of each at its own phase (a crimped texture); each hair but
+// the guide at its own radius (the ringlet's × (1 ± 0.35)) and up to 0.05 of a turn off the
+// guide's phase, so that a ringlet has a thickness (strand_detail_curl_frizz.cpp).
 // headCentre (optional): the head's centre flyaways move away from (the origin when absent).
 // flags (optional, one per strand, growth's StrandFlag bits: Strands::flags): exceptions to a
 // strand's group without moving it to another group (clumps stay whole). A kCutAtLine strand

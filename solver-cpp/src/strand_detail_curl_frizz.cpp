@@ -19,6 +19,12 @@ namespace {
 constexpr double kRingletRadiusVary = 0.4;
 constexpr double kRingletTurnsVary = 0.3;
 constexpr double kRingletStartVary = 0.5;
+// Within a ringlet each hair but its guide winds at its own radius, within 1 ±
+// kRingletStrandRadiusVary of the ringlet's, and a little off its phase (± kRingletStrandPhaseVary
+// of a turn): a ringlet is a bundle of hairs with a thickness, not a tube whose every turn is lit
+// as one bead (a stylist: "curly reads as scales").
+constexpr double kRingletStrandRadiusVary = 0.35;
+constexpr double kRingletStrandPhaseVary = 0.05;
 
 // A point uniform in the unit ball (rejection from the cube).
 V3 inBall(Pcg32& rng) {
@@ -107,8 +113,14 @@ void curlAndFrizz(const DetailParams& d, uint32_t seed, uint32_t key, uint32_t p
   const double invL = 1 / L;
   if (curl) {
     // theta_k = theta_0 + k dTheta (even spacing), by rotating (cos, sin) one step at a time.
-    const double r = d.curl.radius, a = d.curl.start;
-    const double phase = d.curl.randomOffset * strandRng(seed, phaseKey, kStreamCurl).uniform();
+    const double a = d.curl.start;
+    double r = d.curl.radius;
+    double phase = d.curl.randomOffset * strandRng(seed, phaseKey, kStreamCurl).uniform();
+    if (key != phaseKey) {  // a hair of a ringlet, not its guide
+      Pcg32 rng = strandRng(seed, key, kStreamRingletStrand);
+      r *= 1 + kRingletStrandRadiusVary * (2 * unitFromBits(rng.nextU32()) - 1);
+      phase += kRingletStrandPhaseVary * (2 * unitFromBits(rng.nextU32()) - 1);
+    }
     const double step = kTwoPi * d.curl.frequency * L / double(n - 1);
     const double cs = std::cos(step), sn = std::sin(step);
     double c = std::cos(kTwoPi * phase), s = std::sin(kTwoPi * phase);

@@ -30,6 +30,7 @@ constexpr uint64_t kStreamEndSpread = 0xbe5466cf34e90c6cULL;
 constexpr uint64_t kStreamRinglet = 0x3f84d5b5b5470917ULL;
 constexpr uint64_t kStreamFlyaway = 0x9216d5d98979fb1bULL;
 constexpr uint64_t kStreamCurlSpread = 0xd1310ba698dfb5acULL;
+constexpr uint64_t kStreamRingletStrand = 0x98dfb5ac2ffd72dbULL;
 
 inline Pcg32 strandRng(uint32_t seed, uint32_t key, uint64_t stream) {
   return Pcg32((uint64_t(seed) << 32) | key, stream);

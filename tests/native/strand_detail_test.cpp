@@ -743,8 +743,10 @@ DetailParams curlyClumps() {
 }
 
 // Ringlets: two strands 1 mm apart in one clump curl in phase with their guide when asked, so
-// they wind round together (each point of one within 5 mm of the other's path); each at its own
-// random phase they part by up to twice the radius.
+// they wind round together; each at its own random phase they part by up to twice the radius (1 cm
+// here). In phase, the hair that is not the guide winds at its own radius (the ringlet's × (1 ±
+// 0.35)) and up to 0.05 of a turn off its phase: it keeps within 0.35 r + 1.35 r · 2π · 0.05 + 1 mm
+// (the roots' distance) = 8 mm of the guide's path, 2.9 mm here.
 TEST(StrandDetail, RingletsCurlAClumpInPhase) {
   const DetailParams d = curlyClumps();
   const std::vector<Strand> list = {straight(V3(0, 0, 0), V3(0, -1, 0), 41, 0.05),
@@ -766,8 +768,41 @@ TEST(StrandDetail, RingletsCurlAClumpInPhase) {
     }
     return most;
   };
-  EXPECT_LT(apart(true), 0.005);
+  EXPECT_LT(apart(true), 0.08);
   EXPECT_GT(apart(false), 0.05);
+}
+
+// A ringlet has a thickness: twenty strands with roots within 1 mm of each other (one clump, one
+// ringlet) wind round at radii (the farthest each comes from the axis through the first root)
+// that spread over more than 0.2 of the ringlet's radius, within its radius × (1 ± 0.35) and the
+// roots' 1 mm; without ringlets each winds at the curl's radius (1 cm) about its own root.
+TEST(StrandDetail, RingletsHaveAThicknessStrandByStrand) {
+  const DetailParams d = curlyClumps();
+  std::vector<Strand> list;
+  for (int k = 0; k < 20; ++k) {
+    const double a = 2.399963 * k, rho = 0.001 * std::sqrt((k + 0.5) / 20);  // a 1 mm disc
+    list.push_back(straight(V3(rho * std::cos(a), 0, rho * std::sin(a)), V3(0, -1, 0), 41, 0.05));
+  }
+  std::vector<uint32_t> keys;
+  for (uint32_t k = 0; k < 20; ++k) keys.push_back(7 + 13 * k);
+  auto radii = [&](bool ringlets) {
+    Strands s = makeStrands(list);
+    EXPECT_TRUE(
+        applyDetail({d}, std::vector<uint32_t>(20, 0), keys, 5, s, 255, nullptr, ringlets).ok());
+    std::vector<double> r;
+    for (size_t k = 0; k < 20; ++k) {
+      double most = 0;
+      for (const V3& p : strandOf(s, k)) most = std::max(most, std::hypot(p.x(), p.z()));
+      r.push_back(most);
+    }
+    std::sort(r.begin(), r.end());
+    return r;
+  };
+  const std::vector<double> plain = radii(false), ringlet = radii(true);
+  EXPECT_LT(plain.back() - plain.front(), 0.0025);
+  const double median = ringlet[10];
+  EXPECT_GT(ringlet.back() - ringlet.front(), 0.2 * median);
+  EXPECT_LT(ringlet.back(), 1.35 / 0.65 * ringlet.front() + 0.002);
 }
 
 // Eight straight strands 2 long hanging down, 0.5 apart along x, each its own clump, with `d`'s
