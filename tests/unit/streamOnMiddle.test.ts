@@ -69,6 +69,26 @@ describe('streamOnMiddle', () => {
     expect(streamOnMiddle([...top, ...up], X_PLANE, side, head).snapped).toBe(true);
   });
 
+  it("puts a crest's front spike, pressed at the front hairline and drawn forward, on the middle", () => {
+    // fresh eyes' mohawk: spikes pressed on the outline at the front hairline (below the face's
+    // top, 5 cm above the head's centre) and drawn forward, drooping a little, were taken for
+    // locks hanging past the face and left 1 to 3 cm off the middle (5 of 16, 3 of 18)
+    let from: Vec3 | null = null;
+    for (let y = 0.3; y < 0.8 && !from; y += 0.01) {
+      const hit = head.raycast([0.1, y, 3], [0, 0, -1]);
+      if (hit?.scalp) from = hit.point;
+    }
+    if (!from) throw new Error('no scalp at the front');
+    const start = from;
+    const spike: Vec3[] = [1, 2, 3, 4].map((k) => [0.1, start[1] - 0.04 * k, start[2] + 0.3 * k]);
+    for (const p of spike) expect(head.signedDistance(p)).toBeGreaterThan(0.05);
+    // its tip below the face's top: a lock past the face by height alone
+    expect(spike[3][1]).toBeLessThan(head.center[1] + 0.5);
+    const r = streamOnMiddle([start, ...spike], X_PLANE, side, head);
+    expect(r.snapped).toBe(true);
+    for (const p of r.points) expect(p[0]).toBeCloseTo(0, 9);
+  });
+
   it('with Mirror on, puts a stroke within 1.5 cm of the middle on it from any view', () => {
     // a crest 1 cm off the middle, drawn from the front: as drawn without Mirror, on the middle
     // (on the head) with it

@@ -20,13 +20,24 @@ const ON_OUTLINE = 0.55;
  *  shape rules, solver-cpp/src/hair_fall.hpp kFaceTop). */
 const FACE_TOP = 0.5;
 
+/** How far below the stroke's first point a point must lie to hang down (world units, 2 cm). */
+const HANGS_BELOW = 0.2;
+
 /** Whether p, off the head, hangs before or beside the face: in front of the head's centre,
- *  below FACE_TOP. A stroke with such a point is a lock drawn down past the face (fresh eyes round 18:
- *  a long stroke pressed near the top of the outline in a side view went down the middle of the
- *  face), not a crest or a centre line, and stays where it is drawn. */
-function beforeFace(p: Vec3, head: Head): boolean {
+ *  below FACE_TOP and more than HANGS_BELOW below where the stroke was pressed (`from`). A stroke
+ *  with such a point is a lock drawn down past the face (fresh eyes round 18: a long stroke
+ *  pressed near the top of the outline in a side view went down the middle of the face), not a
+ *  crest or a centre line, and stays where it is drawn. A crest's spike pressed at the front
+ *  hairline and drawn forward or up does not go down: it is put on the middle (fresh eyes: the
+ *  mohawk's front spikes stayed off the middle, 5 of 16 and 3 of 18, and its front leaned to one
+ *  side). */
+function beforeFace(p: Vec3, from: Vec3, head: Head): boolean {
   const c = head.center;
-  return p[2] > c[2] && p[1] < c[1] + FACE_TOP && head.signedDistance(p) > ON_HEAD;
+  return (
+    p[2] > c[2] &&
+    p[1] < Math.min(c[1] + FACE_TOP, from[1] - HANGS_BELOW) &&
+    head.signedDistance(p) > ON_HEAD
+  );
 }
 
 export function streamOnMiddle(
@@ -36,7 +47,7 @@ export function streamOnMiddle(
   head: Head,
   mirrored = false,
 ): { points: Vec3[]; snapped: boolean } {
-  if (drawn.length === 0 || drawn.some((p) => beforeFace(p, head)))
+  if (drawn.length === 0 || drawn.some((p) => beforeFace(p, drawn[0], head)))
     return { points: drawn, snapped: false };
   const n = head.normalAt(drawn[0]);
   const len = Math.hypot(view[0], view[1], view[2]) || 1;
