@@ -106,7 +106,10 @@ ShapeGrowth::Lay ShapeGrowth::layOnHead(const float x[3], float n[3], double& se
 
 void ShapeGrowth::partRoundFace(float x, float y, float z, float gov, float& nx, float& ny,
                                 float& nz) const {
-  if (gov >= 0.5f || !inFaceColumn(centre, nx, ny, nz)) return;  // gov: governed or combed
+  // the column reaches up by the Volume: hair lifted that far off the front hairline parts
+  // before it comes down over the forehead (else it ended on the forehead's skin as a short
+  // blunt fringe nobody drew: fresh eyes' tucked behind the ears at Volume 1.2 cm)
+  if (gov >= 0.5f || !inFaceColumn(centre, nx, ny - volume, nz)) return;  // gov: governed or combed
   const float d[3] = {nx - x, ny - y, nz - z};
   const float len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
   const float side = nx >= centre[0] ? 1.f : -1.f;

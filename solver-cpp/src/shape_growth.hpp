@@ -54,8 +54,8 @@ struct ShapeGrowth {
                 bool hugs = false, bool liesOn = false) const;
 
   // "The face stays open": a step of hair no stroke governs or combs (gov below 0.5) that ends in
-  // the face's column turns to the nearer side (its horizontal part sideways, at least as much as
-  // it falls), so the hair parts round the face.
+  // the face's column, its top raised by the Volume, turns to the nearer side (its horizontal part
+  // sideways, at least as much as it falls), so the hair parts round the face.
   void partRoundFace(float x, float y, float z, float gov, float& nx, float& ny, float& nz) const;
 
   // "Hair no stroke governs hangs" and "is combed along a stroke beside it": the step of a strand

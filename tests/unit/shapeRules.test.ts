@@ -168,6 +168,44 @@ describe('the shape rules on hand-drawn stroke sets', () => {
     },
   );
 
+  it('tucked behind the ears at Volume 1.2 cm: the front hair parts at the hairline, no fringe nobody drew', async () => {
+    // fresh eyes drew tucked behind the ears with the guide's Volume 1.2 cm: the front hair,
+    // lifted off the hairline, came down over the forehead and ended on its skin as a short
+    // blunt fringe. Strands with a point over the forehead, standing off it (6 mm to 3 cm off the
+    // head, between 2 cm above the centre and just below the front hairline, within 3.5 cm of
+    // the middle): 0 % at Volume 0; at 1.2 cm 1.18 % before the face's column reached up by the
+    // Volume, 0 % after
+    const s = { ...fixture('tucked'), volume: 0.12 };
+    const overForehead = (hair: StrandArrays) => {
+      let n = 0;
+      let over = 0;
+      eachStrand(hair, (pts) => {
+        n++;
+        if (
+          pts.some(
+            ([x, y, z]) =>
+              Math.abs(x) < 0.35 &&
+              y > 0.2 &&
+              y < 0.47 &&
+              z > 0.5 &&
+              headSdf(x, y, z) > 0.06 &&
+              headSdf(x, y, z) < 0.3,
+          )
+        )
+          over++;
+      });
+      return n ? over / n : 0;
+    };
+    const [flat, lifted] = [
+      overForehead(await grow(fixture('tucked'))),
+      overForehead(await grow(s)),
+    ];
+    console.log(
+      `tucked: ${(100 * flat).toFixed(2)} % of strands over the forehead at Volume 0, ${(100 * lifted).toFixed(2)} % at 1.2 cm`,
+    );
+    expect(lifted).toBeLessThanOrEqual(Math.max(0.002, 2 * flat));
+  });
+
   it('a short crop: hair no stroke ends is as long as the strokes around (within 20 %)', async () => {
     const s = fixture('slicked');
     const [before, after] = [await grow(off(s)), await grow(s)];
