@@ -181,18 +181,12 @@ describe('the shape rules on hand-drawn stroke sets', () => {
       let over = 0;
       eachStrand(hair, (pts) => {
         n++;
-        if (
-          pts.some(
-            ([x, y, z]) =>
-              Math.abs(x) < 0.35 &&
-              y > 0.2 &&
-              y < 0.47 &&
-              z > 0.5 &&
-              headSdf(x, y, z) > 0.06 &&
-              headSdf(x, y, z) < 0.3,
-          )
-        )
-          over++;
+        const off = ([x, y, z]: V3) => {
+          if (!(Math.abs(x) < 0.35 && y > 0.2 && y < 0.47 && z > 0.5)) return false;
+          const d = headSdf(x, y, z);
+          return d > 0.06 && d < 0.3;
+        };
+        if (pts.some(off)) over++;
       });
       return n ? over / n : 0;
     };
