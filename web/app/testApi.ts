@@ -456,28 +456,19 @@ export function installTestApi(app: TestApiParts): void {
     },
     ponytailSpine: () => app.ponytail.spinePoints.map((p) => [...p] as Vec3),
     renderBoth(from) {
-      const r = viewer.compareFrames(from);
+      const r = viewer.probes.compareFrames(from);
       return { ...r, cached: base64(r.cached), full: base64(r.full) };
     },
-    hairDepth() {
-      const r = viewer.hairDepth();
-      viewer.requestRender();
-      return r;
-    },
-    blendOrder() {
-      const r = viewer.blendOrder();
-      viewer.requestRender();
-      return r;
-    },
+    hairDepth: () => viewer.probes.hairDepth(),
+    blendOrder: () => viewer.probes.blendOrder(),
     setFrameCache(on) {
-      viewer.frameCacheEnabled = on;
-      viewer.requestRender();
-      return viewer.frameCacheActive;
+      viewer.probes.frameCacheEnabled = on;
+      return viewer.probes.frameCacheActive;
     },
-    frameSource: () => viewer.lastFrameSource,
+    frameSource: () => viewer.probes.lastFrameSource,
     frameSources: () => ({ ...viewer.frameSources }),
     resolutionChanges: () => viewer.resolutionChanges,
-    fullFrameSlices: () => viewer.lastFullFrameSlices,
+    fullFrameSlices: () => viewer.probes.lastFullFrameSlices,
     sectionsTinted: () => app.sectionsTinted(),
     sectionsOverHair: () => app.sectionsOverHair(),
     tieBands: () => app.tieBands(),

@@ -8,7 +8,7 @@
 //   overlayLayer.ts       style curves, the stroke being drawn, guides, display objects
 //   viewCapture.ts        the view with every strand: PNG capture, timed frame
 //   hairOit.ts            High's order-independent blending of the strips (drawLayers runs it)
-//   blendOrderProbe.ts    test probe: does the drawing order change the picture
+//   viewerProbes.ts       test probes: frame cache against whole frames, blend order, depth
 // While the user interacts (orbit, a stroke, hair still settling) the hair is drawn at the level
 // of detail; a fast GPU always draws everything, a software rasteriser a sparse sample while
 // things move, and the whole head of hair once they stop. When the view settles and the whole
@@ -22,18 +22,18 @@ import * as THREE from 'three';
 import type { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { KEY_LIGHT_POSITION } from '../lighting/keyLight';
 import type { Vec3 } from '../model/vec3';
-import { blendOrderProbe, hairDepthProbe } from './blendOrderProbe';
 import { CameraRig } from './cameraRig';
 import { DEFAULT_CAMERA } from './defaultCamera';
 import { type FrameMode, type FramePlan, OverlayWait } from './frameCache';
 import { HairLevelOfDetail, INTERACTIVE_RESOLUTION } from './hairLevelOfDetail';
-import { ALL_LAYERS, drawLayers, LayeredDrawing, type LayeredScene } from './layeredDrawing';
+import { LayeredDrawing, type LayeredScene } from './layeredDrawing';
 import { type AppViewName, framedAppView } from './namedViews';
 import { type CurveView, OverlayLayer } from './overlayLayer';
 import { SliceSizer } from './progressiveHair';
 import { basePixelRatio, glRendererName, isSoftwareRenderer } from './rendererProbe';
 import { disposeObject } from './sceneObjects';
 import { type CaptureSource, captureImage, measureFullFrame } from './viewCapture';
+import { ViewerProbes } from './viewerProbes';
 
 /** While a stroke's preview is on its way, frames that would redraw only the overlays (the stroke
  *  line) wait for it this long at most, on a software rasteriser (frameCache.ts OverlayWait: a
@@ -102,6 +102,8 @@ export class Viewer {
   resolutionChanges = 0;
   /** Objects left out of captures (addBackdrop). */
   private readonly backdrops: THREE.Object3D[] = [];
+  /** Test and benchmark probes of the drawing (viewerProbes.ts). */
+  readonly probes: ViewerProbes;
 
   constructor(readonly canvas: HTMLCanvasElement) {
     // Multisampling costs ~2x per frame on a software rasteriser (SwiftShader, llvmpipe), where
@@ -128,6 +130,15 @@ export class Viewer {
       isOverlay: (o) => this.overlays.holds(o),
     };
     this.layers = new LayeredDrawing(this.sceneLayers);
+    this.probes = new ViewerProbes({
+      layers: this.layers,
+      scene: this.sceneLayers,
+      slices: this.slices,
+      counts: () => this.detail.counts(this.hair),
+      mode: () => this.frameMode(),
+      lastSource: () => this.lastSource,
+      requestRender: () => this.requestRender(),
+    });
 
     this.scene.add(new THREE.HemisphereLight(0xffffff, 0x6b5d52, 1.4));
     const key = new THREE.DirectionalLight(0xffffff, 1.6);
@@ -246,85 +257,12 @@ export class Viewer {
     else if (this.software) this.overlayWait.expect(performance.now());
   }
 
-  /** Frames are drawn through the frame cache when it is available (false: every frame is
-   *  drawn whole; a test and benchmark switch). */
-  get frameCacheEnabled(): boolean {
-    return this.layers.enabled;
-  }
-
-  set frameCacheEnabled(on: boolean) {
-    this.layers.enabled = on;
-  }
-
-  /** Whether frames go through the frame cache (on, and the canvas allows copies). */
-  get frameCacheActive(): boolean {
-    return this.layers.active;
-  }
-
-  /** Where the last frame started from: 'hair' (only overlays drawn), 'static' (hair and
-   *  overlays drawn over the cached head) or 'none' (drawn whole). */
-  get lastFrameSource(): FramePlan['source'] {
-    return this.lastSource;
-  }
-
   /** Forgets the cached layers: for changes the cache cannot see for itself (a uniform of the
    *  hair's or the head's material). Camera, size, the head's geometry and material versions and
    *  the hair object are checked every frame. Requests a frame. */
   invalidateFrameCache(): void {
     this.layers.invalidate();
     this.requestRender();
-  }
-
-  /** Test probe: the current view drawn through the frame cache (starting from the slot the next
-   *  frame would use, or from the static slot with `from` = 'static') and drawn whole in one pass,
-   *  both with the same hair detail; RGBA pixels of the drawing buffer, rows bottom-up. Caches
-   *  nothing; a normal frame follows. */
-  compareFrames(from?: 'static'): {
-    width: number;
-    height: number;
-    source: FramePlan['source'];
-    count: number;
-    cached: Uint8Array;
-    full: Uint8Array;
-  } {
-    const { all, interactive } = this.detail.counts(this.hair);
-    const keys = this.layers.keys();
-    let plan = this.layers.plan(this.frameMode(), all, interactive, keys);
-    if (from === 'static' && plan.source === 'hair')
-      plan = { ...plan, source: this.layers.staticValid(keys) ? 'static' : 'none' };
-    const size = this.renderer.getDrawingBufferSize(new THREE.Vector2());
-    const gl = this.renderer.getContext();
-    const read = (): Uint8Array => {
-      const px = new Uint8Array(4 * size.x * size.y);
-      gl.readPixels(0, 0, size.x, size.y, gl.RGBA, gl.UNSIGNED_BYTE, px);
-      return px;
-    };
-    const source = this.layers.draw(plan, all, keys, false);
-    const cached = read();
-    if (this.hair && all > 0) this.hair.geometry.setDrawRange(0, plan.count);
-    drawLayers(this.sceneLayers, ALL_LAYERS);
-    const full = read();
-    this.requestRender();
-    return { width: size.x, height: size.y, source, count: plan.count, cached, full };
-  }
-
-  /** Slices the last full-detail frame drawn in slices took (0: none was). */
-  get lastFullFrameSlices(): number {
-    return this.slices.lastFrameSlices;
-  }
-
-  /** Test probe: blendOrderProbe.ts on the view (a normal frame follows). */
-  blendOrder(): { oit: number; unsorted: number } | null {
-    const r = blendOrderProbe(this.sceneLayers);
-    this.requestRender();
-    return r;
-  }
-
-  /** Test probe: hairDepthProbe (blendOrderProbe.ts) on the view (a normal frame follows). */
-  hairDepth(): number | null {
-    const r = hairDepthProbe(this.sceneLayers);
-    this.requestRender();
-    return r;
   }
 
   /** Calls `cb` with each hair object (as given to setHair) once the first frame that draws it
