@@ -316,23 +316,13 @@ export function hairlineWidth(withHair: Rgba, bald: Rgba, threshold = 24): numbe
   return widths.length ? widths[Math.floor(widths.length / 2)] : Number.NaN;
 }
 
-/** How blotched the hair's shading is: over the hair's pixels (as hairColour's) whose whole
- *  (2·wide + 1)² square is hair, the mean of |the grey's mean over a (2·fine + 1)² square − its
- *  mean over the (2·wide + 1)² square|, over the hair's mean grey (sRGB, 0.299 r + 0.587 g +
- *  0.114 b). Strands and their grain are averaged out by the fine square; what is left is shading
- *  that changes over a few strands' width: blotches, and shadow lines drawn across the hair. */
-export function shadingBlotches(
-  withHair: Rgba,
-  bald: Rgba,
-  fine = 3,
-  wide = 10,
-  threshold = 24,
-): number {
+/** Summed-area tables of the grey (sRGB, 0.299 r + 0.587 g + 0.114 b) and of the hair's mask (as
+ *  hairColour's), and box(T, x, y, r): T's sum over the (2r + 1)² square round (x, y). */
+function greyAndHairTables(withHair: Rgba, bald: Rgba, threshold: number) {
   const { width: W, height: H } = withHair;
   if (W !== bald.width || H !== bald.height) throw new Error('the two pictures differ in size');
   const a = withHair.rgba;
   const z = bald.rgba;
-  // summed-area tables of the grey and of the hair mask
   const S = new Float64Array((W + 1) * (H + 1));
   const M = new Float64Array((W + 1) * (H + 1));
   for (let y = 0; y < H; y++)
@@ -351,6 +341,58 @@ export function shadingBlotches(
     T[(y - r) * (W + 1) + x + r + 1] -
     T[(y + r + 1) * (W + 1) + x - r] +
     T[(y - r) * (W + 1) + x - r];
+  return { S, M, box };
+}
+
+/** How sharply the light changes over the top of the hair: over the hair's pixels in the top
+ *  `topShare` of its rows whose whole (4r + 1)² square is hair, the gradient of the grey's
+ *  (2r + 1)² box means r pixels to either side (|up − down|, |left − right|, their length), over
+ *  the mean grey; its 90th percentile. Strands are averaged out by the boxes; what is left is
+ *  shading, and a lit cap ending in a rim across the crown is a band of steep gradient. */
+export function lightRim(withHair: Rgba, bald: Rgba, r = 4, topShare = 0.4, threshold = 24) {
+  const { width: W, height: H } = withHair;
+  const { box, S, M } = greyAndHairTables(withHair, bald, threshold);
+  let top = H;
+  let bottom = -1;
+  for (let y = 0; y < H; y++)
+    if (M[(y + 1) * (W + 1) + W] - M[y * (W + 1) + W] > 0) {
+      top = Math.min(top, y);
+      bottom = y;
+    }
+  const n = (2 * r + 1) ** 2;
+  const gradients: number[] = [];
+  let grey = 0;
+  for (
+    let y = Math.max(top, 2 * r + 1);
+    y < Math.min(top + topShare * (bottom - top), H - 2 * r - 1);
+    y++
+  )
+    for (let x = 2 * r + 1; x < W - 2 * r - 1; x++) {
+      if (box(M, x, y, 2 * r) < (4 * r + 1) ** 2) continue;
+      const up = box(S, x, y - r, r) / n;
+      const down = box(S, x, y + r, r) / n;
+      gradients.push(Math.hypot(up - down, (box(S, x - r, y, r) - box(S, x + r, y, r)) / n));
+      grey += (up + down) / 2;
+    }
+  if (gradients.length === 0) throw new Error('no hair in the picture');
+  gradients.sort((p, q) => p - q);
+  return gradients[Math.floor(0.9 * (gradients.length - 1))] / (grey / gradients.length);
+}
+
+/** How blotched the hair's shading is: over the hair's pixels (as hairColour's) whose whole
+ *  (2·wide + 1)² square is hair, the mean of |the grey's mean over a (2·fine + 1)² square − its
+ *  mean over the (2·wide + 1)² square|, over the hair's mean grey (sRGB, 0.299 r + 0.587 g +
+ *  0.114 b). Strands and their grain are averaged out by the fine square; what is left is shading
+ *  that changes over a few strands' width: blotches, and shadow lines drawn across the hair. */
+export function shadingBlotches(
+  withHair: Rgba,
+  bald: Rgba,
+  fine = 3,
+  wide = 10,
+  threshold = 24,
+): number {
+  const { width: W, height: H } = withHair;
+  const { box, S, M } = greyAndHairTables(withHair, bald, threshold);
   let sum = 0;
   let grey = 0;
   for (let y = wide; y < H - wide; y++)

@@ -18,6 +18,7 @@ import {
   hairlineWidth,
   highlightPeak,
   hueDistance,
+  lightRim,
   shadingBlotches,
   skinThroughHair,
   strandContrast,
@@ -235,7 +236,7 @@ describe.runIf(DIST_BUILT)('hair colour as drawn', () => {
     expect(width).toBeGreaterThanOrEqual(9);
   });
 
-  it('in High, the back of long hair is shaded as smoothly as in Fast: no blotches, no line', async () => {
+  it('in High, the back of long hair is shaded as smoothly as in Fast: no blotches, no line, no lit cap', async () => {
     // the long preset from behind, 12,000 strands, 400 pixels: the head's shadow in the deep
     // opacity maps ended in a line across the back of the head, with blotches beside it, where
     // the hair lying on the head turns away from the key light (new users: "a sharp diagonal
@@ -254,6 +255,16 @@ describe.runIf(DIST_BUILT)('hair colour as drawn', () => {
     const [f, h] = [0, 1].map((q) => hairColour(readPng(hair[q]), readPng(none[q])).luma);
     console.log(`long from behind: hair luma Fast / High ${(f / h).toFixed(3)}`);
     expect(Math.abs(f / h - 1)).toBeLessThan(0.05);
+    // and no lit cap over the crown: with the key light wrapped only from N.L -0.2 to 0.5 round
+    // the head, the light ended where the hair turns over the crown, a bright cap with a hard rim
+    // (a judge: "a hard lit cap boundary"); lightRim (the 90th percentile of the shading's
+    // gradient over the top 40 % of the hair) 0.320 Fast, 0.360 High before; wrapped from -0.7
+    // to 0.7 (and Fast's lines with High's whole dual scattering), 0.185 and 0.269
+    const [rimFast, rimHigh] = [0, 1].map((q) => lightRim(readPng(hair[q]), readPng(none[q])));
+    console.log(
+      `long from behind: light rim ${rimFast.toFixed(3)} Fast, ${rimHigh.toFixed(3)} High`,
+    );
+    expect(Math.max(rimFast, rimHigh)).toBeLessThan(0.3);
   });
 
   it('from the side, auburn hair has no grey-blue line across it where it turns', async () => {

@@ -57,9 +57,9 @@ float hairR(vec3 T, vec3 L, vec3 V, float beta) {
 }
 // Light leaving towards V from a strand of tangent T lit from L (unit vectors), per unit of
 // light reaching the hair's outer layer; sigma: the absorption σa (C = exp(−√σa D), so powers
-// of C are exponentials of √σa); shadowT: the transmittance towards the light. HAIR_CHEAP (the
-// lines, shaded per vertex): the spread single scattering inside the hair is left out (the
-// spread back scattering stays).
+// of C are exponentials of √σa); shadowT: the transmittance towards the light. The same in both
+// qualities: Fast's lines once left out the spread single scattering (cheaper per vertex; no
+// cost measured at 25K), and drew light hair and lighter tips a tenth darker than High.
 vec3 hairBsdf(vec3 T, vec3 L, vec3 V, vec3 sigma, float beta, float shadowT) {
   vec3 lnC = -sqrt(max(sigma, 0.0)) * HAIR_D; // ln of the base colour
   float sinL = clamp(dot(T, L), -1.0, 1.0);
@@ -109,13 +109,9 @@ vec3 hairBsdf(vec3 T, vec3 L, vec3 V, vec3 sigma, float beta, float shadowT) {
   vec3 reach = max(Tf - shadowT, 0.0);
   float sf2 = n * (B.x * B.x + B.y * B.y + B.z * B.z) / 3.0 + HAIR_ORIENT2 * min(n, 1.0);
   vec3 backSpread = 2.0 * Ab * hairG(sqrt(sb2 + sf2), x - 0.035) * invCos2;
-#ifdef HAIR_CHEAP
-  vec3 spread = vec3(0.0);
-#else
   vec3 spread = (HAIR_FBAR * hairG(sqrt(B.x * B.x + sf2), x + 0.07)
     + af * hairG(sqrt(B.y * B.y + sf2), x - 0.035)
     + aTRT * hairG(sqrt(B.z * B.z + sf2), x - 0.14)) / HAIR_PI;
-#endif
   vec3 scattered = reach * HAIR_DF * (spread + HAIR_PI * HAIR_DB * backSpread);
   return direct + scattered;
 }

@@ -100,7 +100,6 @@ export function createStrandMaterial(options: StrandMaterialOptions = {}): Stran
   const defines: Record<string, string> = {};
   if (options.deepOpacity) defines.DEEP_OPACITY = '';
   if (strips && options.alphaToCoverage) defines.ALPHA_TO_COVERAGE = '';
-  if (!strips) defines.HAIR_CHEAP = ''; // per vertex: the cheaper dual scattering
   const material = new THREE.ShaderMaterial({
     uniforms,
     defines,

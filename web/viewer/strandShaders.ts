@@ -181,8 +181,10 @@ vec3 shadeStrand(vec3 T, vec3 P, vec2 along, vec4 rnd, vec2 light) {
   // the head's terminator, soft, in both qualities: light reaching round the head falls off over
   // the hair lying on it (wrapped as light scattered through a head of hair is), so High's
   // hard-edged head shadow in the maps meets hair already in half light instead of drawing a
-  // line across the back, and Fast's back is as dark as High's (the same look in both)
-  shadow *= smoothstep(-0.2, 0.5, dot(N, keyDirection));
+  // line across the back, and Fast's back is as dark as High's (the same look in both); wrapped
+  // from N.L -0.7 to 0.7: from -0.2 to 0.5 the light ended over the crown's tight curve, a lit
+  // cap with a hard rim on the back of long hair
+  shadow *= smoothstep(-0.7, 0.7, dot(N, keyDirection));
   // root darkening: occlusion towards the scalp, on top of the hair's own occlusion
   float rootAo = mix(1.0 - rootDarkening, 1.0, smoothstep(0.0, 0.3, along.x));
   vec3 key = keyColor * bsdfGain * hairBsdf(Ts, keyDirection, V, sigma, beta, shadow);
