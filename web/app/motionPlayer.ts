@@ -2,9 +2,11 @@
 // motionStart / motionStep / motionStop) and binds every strand to one (motionBound, once); each
 // frame it sends is the guides and the head's pose, which go to the strand shader (HairView.follow
 // and followFrame: every strand placed on its guide on the GPU, all of them drawn) and move the
-// head and body meshes. Frames are asked for at 24 per second of wall time (several at once when
-// drawing falls behind, at most MAX_CATCH_UP), PIPELINE requests ahead so the worker steps the
-// next frame while this thread draws the current one; a frame's guide array goes back to the
+// head and body meshes. Frames are asked for one at a time, at most 24 per second of wall time,
+// PIPELINE requests ahead so the worker steps the next frame while this thread draws the current
+// one: every frame of the motion is drawn (where drawing takes longer than a 24th of a second the
+// motion plays slower than in life, as an animation package's playback without frame dropping
+// does; skipping frames to keep time drew 4 a second of the 16 the motion advanced at 30K); a frame's guide array goes back to the
 // worker for a later frame (transferred both ways). Where the hair shown cannot follow (the Cards
 // view) each frame's strands are placed on the CPU (guideFollowers.ts) and drawn rebuilt. The
 // geometry's points are never written: Stop shows the groom again bit for bit; an edit that
@@ -30,7 +32,6 @@ import type { SolveResult, SolverClient } from '../solver/solverClient';
 import type { HairView } from '../viewer/hairView';
 import type { Viewer } from '../viewer/viewer';
 
-const MAX_CATCH_UP = 4;
 /** Requests the worker may be working on at once. */
 const PIPELINE = 2;
 
@@ -330,8 +331,8 @@ export class MotionPlayer {
     this.schedule();
   }
 
-  /** Keeps PIPELINE requests in flight: each asks for the frames due by now (wall time at 24
-   *  per second; at least the next one, so it is ready when due), or waits until one is. */
+  /** Keeps PIPELINE requests in flight: each asks for the next frame when it is due (wall time at
+   *  24 per second) or already late, else waits until it is. */
   private schedule(): void {
     while (this.motion && this.sent.length < PIPELINE && this.timer === null) {
       const due = Math.floor(((performance.now() - this.startTime) / 1000) * MOTION_FRAME_RATE);
@@ -347,7 +348,7 @@ export class MotionPlayer {
         );
         return;
       }
-      const frames = Math.min(MAX_CATCH_UP, Math.max(1, due - this.requested));
+      const frames = 1;
       this.requested += frames;
       this.sent.push(performance.now());
       const recycle = this.spare;
