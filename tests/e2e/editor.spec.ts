@@ -183,6 +183,14 @@ test('Reset view brings the camera back; Surface mode shows the mode that is on'
     ['Shift+L', 'right', (d) => -d[0]],
     ['t', 'top', (d) => d[1]],
   ];
+  /** The camera's height over its target, as a share of its distance (the sine of its
+   *  elevation). */
+  const height = async () => {
+    const c = (await session(page)).camera;
+    const v = c.position.map((x: number, i: number) => x - c.target[i]);
+    return v[1] / Math.hypot(v[0], v[1], v[2]);
+  };
+  let frontHeight = Number.NaN;
   for (const [key, name, along] of views) {
     await page.keyboard.press(key);
     await expect(page.getByTestId('view-label')).toHaveText(`View: ${name}`);
@@ -193,7 +201,24 @@ test('Reset view brings the camera back; Surface mode shows the mode that is on'
     const deg = (Math.acos(along(v.map((x: number) => x / n))) * 180) / Math.PI;
     console.log(`${name} view (${key}): ${deg.toFixed(1)}° off the ${name} axis`);
     expect(deg).toBeLessThan(name === 'top' ? 2 : 10);
+    if (name === 'front') frontHeight = await height();
   }
+  // a drag begun while a named view's camera still eases (0.45 s) starts from that view, not
+  // from part way there (fresh eyes pressed F and right-dragged at once, and orbited from above
+  // the head): from the top view, F and at once a small right-drag sideways, which keeps the
+  // camera's height: as high as the front view's, not part way up to the top
+  const mid = { x: box.x + box.width / 2, y: box.y + box.height / 2 };
+  await page.mouse.move(mid.x, mid.y);
+  await page.keyboard.press('f');
+  await page.mouse.down({ button: 'right' });
+  await page.mouse.move(mid.x + 40, mid.y, { steps: 4 });
+  await page.mouse.up({ button: 'right' });
+  await page.evaluate(() => window.hairsketch.idle());
+  const dragged = await height();
+  console.log(
+    `F and a drag at once: camera height ${dragged.toFixed(3)} (the front view's ${frontHeight.toFixed(3)})`,
+  );
+  expect(Math.abs(dragged - frontHeight)).toBeLessThan(0.03);
   await page.getByRole('button', { name: 'Front view' }).click();
   await expect(page.getByTestId('view-label')).toHaveText('View: front');
   await page.getByRole('button', { name: 'Reset view' }).click();

@@ -41,7 +41,10 @@ export class CameraRig {
     this.controls.zoomToCursor = true;
     this.controls.addEventListener('change', () => host.requestRender());
     this.controls.addEventListener('start', () => {
-      this.stopViewAnimation(); // the user takes the camera
+      // the user takes the camera: from the view a named view key or Reset view asked for, not
+      // from part way there (fresh eyes pressed F and right-dragged while the camera still eased
+      // down from the top view, and orbited from above the head)
+      this.finishViewAnimation();
       host.hold('orbit', true);
     });
     this.controls.addEventListener('end', () => host.hold('orbit', false));
@@ -61,8 +64,8 @@ export class CameraRig {
   }
 
   /** Returns the camera to the home view (the view at load, or the one given to setHomeView):
-   *  animated over ~0.45 s unless `animate` is false. Orbiting, setCamera or another resetView
-   *  during the animation takes over from it. */
+   *  animated over ~0.45 s unless `animate` is false. setCamera or another resetView during the
+   *  animation takes over from it; orbiting or zooming during it starts from where it is going. */
   resetView(animate = true): void {
     this.easeTo(this.homeView.position, this.homeView.target, animate);
   }
@@ -104,6 +107,14 @@ export class CameraRig {
     const v = interpolateView(a.from, a.to, easeInOut(t));
     this.placeCamera(v.position, v.target);
     if (t >= 1) this.stopViewAnimation();
+  }
+
+  /** Puts the camera where the running animation is going, and ends it. */
+  private finishViewAnimation(): void {
+    const a = this.viewAnimation;
+    if (!a) return;
+    this.stopViewAnimation();
+    this.placeCamera(a.to.position, a.to.target);
   }
 
   private stopViewAnimation(): void {

@@ -380,8 +380,9 @@ export class Viewer {
   }
 
   /** Returns the camera to the default framing of the head (DEFAULT_CAMERA, the view at load, or
-   *  the one given to setHomeView): animated over ~0.45 s unless `animate` is false. Orbiting,
-   *  setCamera or another resetView during the animation takes over from it. */
+   *  the one given to setHomeView): animated over ~0.45 s unless `animate` is false. setCamera or
+   *  another resetView during the animation takes over from it; orbiting or zooming during it
+   *  starts from where it is going (CameraRig). */
   resetView(animate = true): void {
     this.rig.resetView(animate);
     this.viewMoving();
