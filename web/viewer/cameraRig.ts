@@ -39,6 +39,9 @@ export class CameraRig {
     // the wheel zooms towards the point under the pointer, as design tools do (fresh eyes zoomed
     // on a nape and it slid out of the view towards the middle)
     this.controls.zoomToCursor = true;
+    // a wheel notch (100 px of delta) brings the camera 10 % nearer, as design tools zoom (at
+    // three.js's 5 % fresh eyes needed 15 notches to frame a forehead)
+    this.controls.zoomSpeed = 2;
     this.controls.addEventListener('change', () => host.requestRender());
     this.controls.addEventListener('start', () => {
       // the user takes the camera: from the view a named view key or Reset view asked for, not
