@@ -6,8 +6,8 @@
 // PIPELINE requests ahead so the worker steps the next frame while this thread draws the current
 // one: every frame of the motion is drawn (where drawing takes longer than a 24th of a second the
 // motion plays slower than in life, as an animation package's playback without frame dropping
-// does; skipping frames to keep time drew 4 a second of the 16 the motion advanced at 30K); a frame's guide array goes back to the
-// worker for a later frame (transferred both ways). Where the hair shown cannot follow (the Cards
+// does; skipping frames to keep time drew 4 a second of the 16 the motion advanced at 30K); a
+// frame's guide array goes back to the worker for a later frame (transferred both ways). Where the hair shown cannot follow (the Cards
 // view) each frame's strands are placed on the CPU (guideFollowers.ts) and drawn rebuilt. The
 // geometry's points are never written: Stop shows the groom again bit for bit; an edit that
 // changes the hair, or new hair from the solver, stops the motion first.
@@ -348,14 +348,13 @@ export class MotionPlayer {
         );
         return;
       }
-      const frames = 1;
-      this.requested += frames;
+      this.requested += 1;
       this.sent.push(performance.now());
       const recycle = this.spare;
       this.spare = [];
       this.d.client.motion({
         type: 'motionStep',
-        frames,
+        frames: 1,
         ...(recycle.length > 0 ? { recycle } : {}),
       });
     }
