@@ -70,6 +70,20 @@ float ownVolume(const CurveSetView& v, size_t c) {
   const double vol = v.params[a + kStreamParamVolume];
   return vol > 0 ? float(vol) : -1.f;
 }
+// Whether curve [a, b) of v leaves the scalp over the face (ReachCurve::fringe): its first point
+// off the scalp is in front of the head's centre, within the face's half angle (kFaceHalfAngle)
+// and above its bottom (kFaceBottom).
+bool leavesOverFace(const CurveSetView& v, size_t a, size_t b, const Eigen::Vector3d& centre) {
+  if (!v.offScalp) return false;
+  for (size_t k = a; k < b; ++k) {
+    if (!v.offScalp[k]) continue;
+    const double* p = v.points + 3 * k;
+    const double dx = p[0] - centre.x(), dz = p[2] - centre.z();
+    return dz > 0 && std::atan2(std::abs(dx), dz) < kFaceHalfAngle &&
+           p[1] - centre.y() > kFaceBottom;
+  }
+  return false;
+}
 }  // namespace
 
 Status HairEngine::setCurves(const CurveSetView& curves) {
@@ -235,7 +249,8 @@ Status HairEngine::setCurves(const CurveSetView& curves) {
         const bool setsLength = kind->tail == nullptr && !intoTie(c);
         rc.push_back({fv.points + 3 * a, b - a, fv.extend && fv.extend[c] != 0,
                       fv.offScalp ? fv.offScalp + a : nullptr, setsLength,
-                      lift.empty() ? nullptr : lift.data() + a, ownVolume(fv, c)});
+                      lift.empty() ? nullptr : lift.data() + a, ownVolume(fv, c),
+                      shape_.on && leavesOverFace(fv, a, b, centre_)});
       }
     std::vector<uint8_t> noExtension(fv.curveCount, 0);
     CurveSetView view = fv;
@@ -256,6 +271,7 @@ Status HairEngine::setCurves(const CurveSetView& curves) {
         mix(c.points, 3 * c.count * sizeof(double));
         mix(&c.growsOn, sizeof(bool));
         mix(&c.setsLength, sizeof(bool));
+        mix(&c.fringe, sizeof(bool));
         mix(&c.volume, sizeof(float));
         if (c.lift) mix(c.lift, c.count * sizeof(float));
         if (c.offScalp) mix(c.offScalp, c.count);

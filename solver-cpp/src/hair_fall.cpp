@@ -126,6 +126,7 @@ Grid reachGrid(const Grid& g) {
 void curveFootprint(const Grid& g, const ReachCurve& c, CurveFootprint& out) {
   out = CurveFootprint();
   out.growsOn = c.growsOn;
+  out.fringe = c.fringe;
   if (c.count < 2 || !c.points) return;
   const double* q = c.points;
   std::vector<double> s(c.count, 0);
@@ -140,7 +141,7 @@ void curveFootprint(const Grid& g, const ReachCurve& c, CurveFootprint& out) {
   out.volume = c.volume;
   if (c.lift)
     for (size_t k = 0; k < c.count; ++k) out.maxLift = std::max(out.maxLift, c.lift[k]);
-  if (c.setsLength)
+  if (c.setsLength && !c.fringe)
     out.stroke = {float(q[0]),
                   float(q[1]),
                   float(q[2]),
@@ -233,7 +234,8 @@ void combineReach(const Grid& g, const std::vector<const CurveFootprint*>& curve
                   CurveReach& out) {
   const size_t n = size_t(g.size());
   const double inf = std::numeric_limits<double>::infinity();
-  std::vector<double> sumW(n, 0), sumWR(n, 0), dmin(n, inf), dface(n, inf);
+  std::vector<double> sumW(n, 0), sumWR(n, 0), sumWF(n, 0), sumWFR(n, 0), dmin(n, inf),
+      dface(n, inf);
   out.grid = g;
   out.lift.assign(n, 0.f);
   out.strokeLift.assign(n, 0.f);
@@ -245,9 +247,16 @@ void combineReach(const Grid& g, const std::vector<const CurveFootprint*>& curve
     for (size_t e = 0; e < c->index.size(); ++e) {
       const size_t p = size_t(c->index[e]);
       const double d = c->distance[e];
-      const double w = std::exp(-d * d / twoSigma2);
+      // a fringe's length holds for its own hair only
+      const double w = std::exp(-d * d / twoSigma2) *
+                       (c->fringe ? 1 - smoothstep(kOwnReach, kOwnReachFar, d) : 1.0);
       sumW[p] += w;
-      sumWR[p] += w * (c->growsOn ? kGrowsOnRemaining : double(c->remaining[e]));
+      const double r = c->growsOn ? kGrowsOnRemaining : double(c->remaining[e]);
+      sumWR[p] += w * r;
+      if (c->fringe) {
+        sumWF[p] += w;
+        sumWFR[p] += w * r;
+      }
       if (d < dmin[p]) {
         dmin[p] = d;
         out.lift[p] = c->lift.empty() ? 0.f : c->lift[e];
@@ -261,6 +270,8 @@ void combineReach(const Grid& g, const std::vector<const CurveFootprint*>& curve
       }
     }
   out.remaining.assign(n, 0.f);
+  out.fringeShare.assign(n, 0.f);
+  out.fringeRemaining.assign(n, 0.f);
   out.far.assign(n, 1.f);
   out.overFace.assign(n, 0.f);
   out.governed.assign(n, 0.f);
@@ -269,6 +280,8 @@ void combineReach(const Grid& g, const std::vector<const CurveFootprint*>& curve
     if (!(sumW[p] > 0)) continue;
     out.overFace[p] = float(1 - smoothstep(kFaceNear, kFaceFar, dface[p]));
     out.remaining[p] = float(sumWR[p] / sumW[p]);
+    out.fringeShare[p] = float(sumWF[p] / sumW[p]);
+    if (sumWF[p] > 0) out.fringeRemaining[p] = float(sumWFR[p] / sumWF[p]);
     out.far[p] = float(smoothstep(kReachNear, kReachFar, dmin[p]));
     out.governed[p] = float(1 - smoothstep(kGovernNear, kGovernFar, dmin[p]));
     out.nearest[p] = float(dmin[p]);

@@ -73,6 +73,11 @@ constexpr double kFaceTop = 0.5, kFaceBottom = -1.6, kFaceHalfAngle = 0.75, kFac
 constexpr double kReachNear = 0.8, kReachFar = 1.5, kReachCell = 0.15;
 // Width (world units) of the Gaussian weights that blend nearby curves' remaining lengths.
 constexpr double kReachSigma = 0.25;
+// A fringe's stroke (one that leaves the scalp over the face, ReachCurve::fringe) sets the length
+// of its own hair only, the hair within kOwnReach of it (as far as a stroke's pull reaches),
+// fading out by kOwnReachFar: the hair beside it that hangs on past its end takes its length from
+// the other strokes. (A bang drawn to the cheekbone cut all the hair in front of the ear there.)
+constexpr double kOwnReach = 0.25, kOwnReachFar = 0.4;
 // Hair within kFaceNear of a curve's stretch off the scalp, and heading along it (within about
 // 60 degrees), may slide over the face; past kFaceFar it stops at the hairline as ungoverned hair
 // does.
@@ -96,6 +101,9 @@ struct ReachCurve {
   // The curve's own Volume (world units; below 0: none, the session's applies), for the shape
   // rules: the hair around it stands off the head by this much instead (OwnVolume).
   float volume = -1;
+  // (shape rules) It leaves the scalp over the face (a fringe): its length is its own hair's
+  // only (kOwnReach); it does not set the length or the hem of the hair around it.
+  bool fringe = false;
 };
 
 // The reach lattice for a solver grid: the same box, cells of max(step, kReachCell).
@@ -126,8 +134,11 @@ constexpr double kGovernNear = 0.1, kGovernFar = 0.25;
 constexpr double kOwnVolumeNear = 0.3, kOwnVolumeFar = 0.6;
 
 struct CurveReach {
-  Grid grid;                       // the reach lattice
-  std::vector<float> remaining;    // per lattice point: blended remaining length (world units)
+  Grid grid;                     // the reach lattice
+  std::vector<float> remaining;  // per lattice point: blended remaining length (world units)
+  // per lattice point: the fringes' share of that blend's weight, and their remaining length
+  // blended alone (ReachCurve::fringe)
+  std::vector<float> fringeShare, fringeRemaining;
   std::vector<float> far;          // per lattice point: 0 near a curve .. 1 far from all
   std::vector<float> overFace;     // per lattice point: 1 near a curve's stretch off the scalp .. 0
   std::vector<float> faceTangent;  // 3 per lattice point: that stretch's unit direction
@@ -145,6 +156,8 @@ struct CurveReach {
   bool empty() const { return remaining.empty(); }
   void clear() {
     remaining.clear();
+    fringeShare.clear();
+    fringeRemaining.clear();
     far.clear();
     overFace.clear();
     faceTangent.clear();
@@ -309,8 +322,9 @@ struct CurveFootprint {
   std::vector<float> tangent;  // 3 each: the curve's direction at the closest point
   std::vector<float> toCurve;  // 3 each: from the lattice point to the closest point
   bool growsOn = false;
-  float volume = -1;  // the curve's own Volume (ReachCurve::volume)
-  float maxLift = 0;  // the curve's largest distance off the head (ReachCurve::lift)
+  float volume = -1;    // the curve's own Volume (ReachCurve::volume)
+  float maxLift = 0;    // the curve's largest distance off the head (ReachCurve::lift)
+  bool fringe = false;  // ReachCurve::fringe
   StrokeLength stroke;
 };
 void curveFootprint(const Grid& lattice, const ReachCurve& curve, CurveFootprint& out);

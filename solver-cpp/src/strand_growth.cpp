@@ -171,7 +171,15 @@ struct GrowRange {
         remainingAtRoot = r0;
         if (r0 > 0) {
           endsWithCurve = true;
-          if (shape) strandMax = around;
+          // (shape) the strokes around bound its length; a fringe's hair, its stroke (the
+          // strokes around do not count a fringe, kOwnReach)
+          if (shape) {
+            const float* const arrays[2] = {reach->fringeShare.data(),
+                                            reach->fringeRemaining.data()};
+            float fringe[2];
+            interpolateScalars(reach->grid, arrays, 2, x, y, z, fringe);
+            strandMax = around + fringe[0] * (std::min(fringe[1], float(maxLen)) - around);
+          }
         } else {
           const float f = interpolateScalar(reach->grid, reach->far.data(), x, y, z);
           const double farLength = shape ? double(around) : maxLen;

@@ -752,4 +752,65 @@ TEST(ShapeGrowth, HairNoStrokeGovernsEndsAtTheForeheadsSkinNotLyingAcrossIt) {
     EXPECT_GE(st.strandStart[s + 1] - st.strandStart[s], 2u);
 }
 
+TEST(ShapeGrowth, AFringesLengthIsItsOwnHairsNotTheHairBesideItThatHangsPastItsEnd) {
+  // hair hangs straight down (a constant field); a long stroke down at x = 1.2 from y = 0.6 to
+  // -1.6; a short stroke (a bang) at x = 0 from y = 0.6 to y = 0.2, 12 cm across from the long one
+  const Grid g = boxGrid(41, -2, 2);
+  const std::vector<float> field = constantField(g, 0, -1, 0);
+  std::vector<double> longPts, bangPts;
+  for (int k = 0; k <= 22; ++k) longPts.insert(longPts.end(), {1.2, 0.6 - 0.1 * k, 0});
+  for (int k = 0; k <= 4; ++k) bangPts.insert(bangPts.end(), {0.0, 0.6 - 0.1 * k, 0});
+  ShapeRules rules;
+  rules.on = true;
+  GrowthParams gp;
+  gp.maxLength = 3;
+  gp.maxSegments = 400;
+  // roots: on the bang's line; 1 cm beside it (within its reach); 4.5 and 5 cm beside it (past
+  // its reach, and farther still from the long stroke)
+  const std::vector<Eigen::Vector3f> roots{
+      {0.f, 0.6f, 0.f}, {0.1f, 0.6f, 0.f}, {0.45f, 0.6f, 0.f}, {0.5f, 0.6f, 0.f}};
+  auto grow = [&](bool withBang, bool fringe) {
+    std::vector<ReachCurve> curves(1);
+    curves[0].points = longPts.data();
+    curves[0].count = 23;
+    curves[0].setsLength = true;
+    if (withBang) {
+      ReachCurve bang;
+      bang.points = bangPts.data();
+      bang.count = 5;
+      bang.setsLength = true;
+      bang.fringe = fringe;
+      curves.push_back(bang);
+    }
+    CurveReach reach;
+    buildCurveReach(g, curves, reach);
+    Strands st;
+    EXPECT_TRUE(
+        growStrands(g, field, roots, gp, st, 1 << 20, nullptr, &reach, BodyCollider(), &rules)
+            .ok());
+    std::vector<float> tipY;
+    for (size_t s = 0; s + 1 < st.strandStart.size(); ++s)
+      tipY.push_back(st.points[3 * size_t(st.strandStart[s + 1] - 1) + 1]);
+    return tipY;
+  };
+  const std::vector<float> alone = grow(false, false), fringe = grow(true, true),
+                           unflagged = grow(true, false);
+  ASSERT_EQ(fringe.size(), roots.size());
+  const float step = float(0.5 * g.step);
+  std::printf(
+      "tips without the bang %.3f %.3f %.3f %.3f; with it as a fringe %.3f %.3f %.3f %.3f;"
+      " as a stroke beside the face %.3f %.3f %.3f %.3f\n",
+      alone[0], alone[1], alone[2], alone[3], fringe[0], fringe[1], fringe[2], fringe[3],
+      unflagged[0], unflagged[1], unflagged[2], unflagged[3]);
+  // the bang's own hair ends where the bang does (y = 0.2), within a step and its slack
+  EXPECT_NEAR(fringe[0], 0.2f, 2 * step);
+  EXPECT_NEAR(fringe[1], 0.2f, 2 * step);
+  // past its reach the hair is as long as without the bang (the independent reference)
+  EXPECT_NEAR(fringe[2], alone[2], step);
+  EXPECT_NEAR(fringe[3], alone[3], step);
+  EXPECT_LT(alone[3], -1.f);  // and that is long hair
+  // a stroke that is no fringe sets the length of the hair around it: the same roots are cut
+  EXPECT_GT(unflagged[3], alone[3] + 0.8f);
+}
+
 }  // namespace shape_rules_test
