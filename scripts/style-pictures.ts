@@ -1,7 +1,7 @@
 // npm run pictures:styles: each library style's pictures (model/styleLibrary.ts), drawn from its
 // session file by `hairsketch render`'s renderer: the gallery's public/styles/<id>.png, 256 × 256,
 // from the style's view, and the user guide's docs/screenshots/styles/<id>.png, front, side and
-// back side by side (STYLE_VIEW_SIZE=WxH each, default 240x240; STYLE_VIEW_DIR=<dir> writes them
+// back side by side (STYLE_VIEW_SIZE=WxH each, default 360x360; STYLE_VIEW_DIR=<dir> writes them
 // elsewhere). STYLE_ONLY=a,b draws only those; STYLE_GALLERY=0 skips the gallery's pictures.
 import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { openStillRenderer } from '../web/cli/render';
@@ -12,7 +12,7 @@ import { sideBySide } from './pictureStrip';
 
 const only = process.env.STYLE_ONLY?.split(',');
 const gallery = process.env.STYLE_GALLERY !== '0';
-const [viewW, viewH] = (process.env.STYLE_VIEW_SIZE ?? '240x240').split('x').map(Number);
+const [viewW, viewH] = (process.env.STYLE_VIEW_SIZE ?? '360x360').split('x').map(Number);
 const viewDir = process.env.STYLE_VIEW_DIR ?? 'docs/screenshots/styles';
 mkdirSync(viewDir, { recursive: true });
 
