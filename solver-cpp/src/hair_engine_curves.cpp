@@ -287,7 +287,7 @@ Status HairEngine::setCurves(const CurveSetView& curves) {
       }
       footprints_ = std::move(kept);
       for (const auto& f : footprints_) parts.push_back(&f.second);
-      combineReach(lattice, parts, reach_);
+      combineReach(lattice, parts, reach_, shape_.on ? &centre_ : nullptr);
     }
   } else {
     s = curvesToConstraints(grid_, fv, next, &nextColours);

@@ -60,6 +60,15 @@ constexpr double kGrowsOnRemaining = 100.0;
 
 }  // namespace
 
+double faceColumnWeight(const Eigen::Vector3d& centre, const Eigen::Vector3d& x) {
+  const double fz = x.z() - centre.z(), yc = x.y() - centre.y();
+  if (!(fz > 0)) return 0;
+  const double azimuth = std::abs(std::atan2(x.x() - centre.x(), fz));
+  return (1 - smoothstep(0.6 * kFaceHalfAngle, kFaceHalfAngle, azimuth)) *
+         smoothstep(kFaceBottom, kFaceBottom + 0.3, yc) *
+         (1 - smoothstep(kFaceTop - 0.2, kFaceTop, yc));
+}
+
 Field fallDirections(const Grid& g, const HeadDistance& head, const Eigen::Vector3d& centre,
                      bool openFace, bool shape) {
   const double blend = shape ? kShapeBlend : kFallBlend;
@@ -94,13 +103,8 @@ Field fallDirections(const Grid& g, const HeadDistance& head, const Eigen::Vecto
         Eigen::Vector3d v = (1 - a) * combed + a * down;
         const double off = std::isfinite(dist[size_t(p)]) ? double(dist[size_t(p)]) : 1e9;
         if (openFace && !shape && fz > 0 && off > 0) {
-          const double yc = x.y() - centre.y();
           const double dx = x.x() - centre.x();
-          const double azimuth = std::abs(std::atan2(dx, fz));
-          const double inFront = (1 - smoothstep(0.6 * kFaceHalfAngle, kFaceHalfAngle, azimuth)) *
-                                 smoothstep(kFaceBottom, kFaceBottom + 0.3, yc) *
-                                 (1 - smoothstep(kFaceTop - 0.2, kFaceTop, yc)) *
-                                 smoothstep(0, 0.15, off);
+          const double inFront = faceColumnWeight(centre, x) * smoothstep(0, 0.15, off);
           const Eigen::Vector3d aside =
               Eigen::Vector3d(dx >= 0 ? kFaceAside : -kFaceAside, -1, 0).normalized();
           v = (1 - inFront) * v.normalized() + inFront * aside;
@@ -230,8 +234,8 @@ void curveFootprint(const Grid& g, const ReachCurve& c, CurveFootprint& out) {
   }
 }
 
-void combineReach(const Grid& g, const std::vector<const CurveFootprint*>& curves,
-                  CurveReach& out) {
+void combineReach(const Grid& g, const std::vector<const CurveFootprint*>& curves, CurveReach& out,
+                  const Eigen::Vector3d* faceCentre) {
   const size_t n = size_t(g.size());
   const double inf = std::numeric_limits<double>::infinity();
   std::vector<double> sumW(n, 0), sumWR(n, 0), sumWF(n, 0), sumWFR(n, 0), dmin(n, inf),
@@ -243,13 +247,27 @@ void combineReach(const Grid& g, const std::vector<const CurveFootprint*>& curve
   out.toCurve.assign(3 * n, 0.f);
   out.faceTangent.assign(3 * n, 0.f);
   const double twoSigma2 = 2 * kReachSigma * kReachSigma;
+  // in front of the face a fringe's length holds at any distance (faceColumnWeight): the hair
+  // there beside it ends with it instead of hanging over the eyes
+  std::vector<float> face;
+  if (faceCentre && std::any_of(curves.begin(), curves.end(),
+                                [](const CurveFootprint* c) { return c->fringe; })) {
+    face.resize(n);
+    for (int k = 0; k < g.nz; ++k)
+      for (int j = 0; j < g.ny; ++j)
+        for (int i = 0; i < g.nx; ++i)
+          face[size_t(g.index(i, j, k))] =
+              float(faceColumnWeight(*faceCentre, g.position(i, j, k)));
+  }
   for (const CurveFootprint* c : curves)
     for (size_t e = 0; e < c->index.size(); ++e) {
       const size_t p = size_t(c->index[e]);
       const double d = c->distance[e];
       // a fringe's length holds for its own hair only
       const double w = std::exp(-d * d / twoSigma2) *
-                       (c->fringe ? 1 - smoothstep(kOwnReach, kOwnReachFar, d) : 1.0);
+                       (c->fringe ? std::max(1 - smoothstep(kOwnReach, kOwnReachFar, d),
+                                             face.empty() ? 0.0 : double(face[p]))
+                                  : 1.0);
       sumW[p] += w;
       const double r = c->growsOn ? kGrowsOnRemaining : double(c->remaining[e]);
       sumWR[p] += w * r;
@@ -356,8 +374,8 @@ float hemAround(const std::vector<StrokeLength>& strokes, const float p[3]) {
   return float(swy / swHem - (1 - smoothstep(kHemShareFrom, kHemShareTo, share)) * kHemFade);
 }
 
-void buildCurveReach(const Grid& solverGrid, const std::vector<ReachCurve>& curves,
-                     CurveReach& out) {
+void buildCurveReach(const Grid& solverGrid, const std::vector<ReachCurve>& curves, CurveReach& out,
+                     const Eigen::Vector3d* faceCentre) {
   const Grid g = reachGrid(solverGrid);
   std::vector<CurveFootprint> fp(curves.size());
   std::vector<const CurveFootprint*> ptr;
@@ -365,7 +383,7 @@ void buildCurveReach(const Grid& solverGrid, const std::vector<ReachCurve>& curv
     curveFootprint(g, curves[c], fp[c]);
     ptr.push_back(&fp[c]);
   }
-  combineReach(g, ptr, out);
+  combineReach(g, ptr, out, faceCentre);
 }
 
 namespace {

@@ -331,13 +331,19 @@ void curveFootprint(const Grid& lattice, const ReachCurve& curve, CurveFootprint
 
 // The reach of curves from their footprints: remaining lengths blended by Gaussian weights of
 // the distances (kReachSigma), the far fraction from the nearest curve, the over-face weight and
-// direction from the nearest stretch off the scalp.
+// direction from the nearest stretch off the scalp. faceCentre (the head's centre; null: none):
+// a fringe's length holds at any distance in front of the face (faceColumnWeight).
 void combineReach(const Grid& lattice, const std::vector<const CurveFootprint*>& curves,
-                  CurveReach& out);
+                  CurveReach& out, const Eigen::Vector3d* faceCentre = nullptr);
+
+// How far x is in front of the face (0..1): within the face's half angle (kFaceHalfAngle, fading
+// from 0.6 of it) in front of the head's centre, from kFaceBottom (fading in over 3 cm) up to
+// kFaceTop (fading out over 2 cm).
+double faceColumnWeight(const Eigen::Vector3d& centre, const Eigen::Vector3d& x);
 
 // curveFootprint of each curve, then combineReach, on reachGrid(solverGrid).
-void buildCurveReach(const Grid& solverGrid, const std::vector<ReachCurve>& curves,
-                     CurveReach& out);
+void buildCurveReach(const Grid& solverGrid, const std::vector<ReachCurve>& curves, CurveReach& out,
+                     const Eigen::Vector3d* faceCentre = nullptr);
 
 // Trilinear interpolation of a per-grid-point scalar at x (clamped to the volume); stride and
 // offset pick one component of interleaved values.

@@ -101,6 +101,43 @@ TEST(CurveReach, GrowsOnCurvesNeverEndHair) {
   EXPECT_GT(r.remaining[size_t(g.index(8, 5, 5))], 10.f);  // past its end, still long
 }
 
+TEST(CurveReach, AFringesLengthHoldsBesideItInFrontOfTheFaceOnly) {
+  // the head's centre at the origin, the face towards +z; a bang at x = 0 from y = 0.6 down to
+  // 0.2, a long stroke 12 cm across at x = 1.2, both at depth z (0.9: in front of the face; 0:
+  // beside the head); points 4 cm beside the bang, past its reach, below its end
+  const Grid g = boxGrid(41, -2, 2);
+  const Eigen::Vector3d centre(0, 0, 0);
+  for (const double z : {0.9, 0.0}) {
+    std::vector<double> longPts, bangPts;
+    for (int k = 0; k <= 22; ++k) longPts.insert(longPts.end(), {1.2, 0.6 - 0.1 * k, z});
+    for (int k = 0; k <= 4; ++k) bangPts.insert(bangPts.end(), {0.0, 0.6 - 0.1 * k, z});
+    std::vector<ReachCurve> curves(2);
+    curves[0].points = longPts.data();
+    curves[0].count = 23;
+    curves[0].setsLength = true;
+    curves[1].points = bangPts.data();
+    curves[1].count = 5;
+    curves[1].setsLength = true;
+    curves[1].fringe = true;
+    CurveReach reach;
+    buildCurveReach(g, curves, reach, &centre);
+    for (const float y : {0.1f, 0.0f}) {
+      const Eigen::Vector3d x(0.4, y, z);
+      const double r = reachRemaining(reach, float(x.x()), y, float(z), 3.f);
+      // by hand: each stroke's remaining length there (the bang's is past its end: below 0)
+      const double bang = straightRemaining({0, 0.6, z}, {0, 0.2, z}, x);
+      const double stroke = straightRemaining({1.2, 0.6, z}, {1.2, -1.6, z}, x);
+      std::printf(
+          "4 cm beside a bang at depth %.1f, y %.1f: remaining %.3f (bang %.3f, long %.3f)\n", z, y,
+          r, bang, stroke);
+      if (z > 0)  // in front of the face: the bang's (the long stroke weighs e^-(0.8^2-0.4^2)/2s^2)
+        EXPECT_NEAR(r, bang, 0.08);
+      else  // beside the head: the long stroke's
+        EXPECT_NEAR(r, stroke, 0.02);
+    }
+  }
+}
+
 TEST(FallGrowth, AStrandAlongACurveEndsWhereTheCurveEnds) {
   const Grid g = boxGrid(21, -1, 1);
   // a uniform field along +x; a curve from the root to x = 0.3; the strand would run to the box
