@@ -4,7 +4,12 @@
 import { describe, expect, it } from 'vitest';
 import { DEFAULT_HAIR_LOOK, hexToLinear } from '../../web/model/hairLook';
 import { colorAbsorption } from '../../web/model/melanin';
-import { decodeTipDistance, LOD_GROUPS } from '../../web/viewer/strandAttributes';
+import {
+  decodeTipDistance,
+  LOCK_CELL,
+  LOD_GROUPS,
+  lockNoise,
+} from '../../web/viewer/strandAttributes';
 import { buildStrandGeometry, buildStrandStripGeometry } from '../../web/viewer/strandGeometry';
 import {
   createStrandMaterial,
@@ -321,5 +326,60 @@ describe('lighting attribute and strips', () => {
     expect(index.slice(0, 6)).toEqual([0, 1, 2, 1, 3, 2]);
     const lod = g.userData.lodCounts as Uint32Array;
     expect(lod[LOD_GROUPS]).toBe(index.length);
+  });
+});
+
+describe("the lock's highlight", () => {
+  // strands on a 20 x 20 cm patch of scalp, as pairs: a strand and one rooted `gap` away
+  const pairs = (gap: number) => {
+    const n = 4000;
+    const pts = new Float32Array(12 * n);
+    const start = new Uint32Array(2 * n + 1);
+    for (let s = 0; s <= 2 * n; s++) start[s] = 2 * s;
+    for (let k = 0; k < n; k++) {
+      const x = 2 * ((k * 0.618034) % 1) - 1;
+      const z = 2 * ((k * 0.7548777) % 1) - 1;
+      const a = (k * 2.3999632) % (2 * Math.PI);
+      const put = (s: number, px: number, pz: number) => {
+        pts.set([px, 1, pz, px, 0.9, pz], 6 * s);
+      };
+      put(2 * k, x, z);
+      put(2 * k + 1, x + gap * Math.cos(a), z + gap * Math.sin(a));
+    }
+    const random = buildStrandGeometry(pts, start, 3).getAttribute('strandRandom')
+      .array as Uint8Array;
+    // the highlight byte of each strand's first point
+    const w = (s: number) => random[4 * start[s] + 3] / 255;
+    return Array.from({ length: n }, (_, k) => [w(2 * k), w(2 * k + 1)] as const);
+  };
+  const correlation = (p: readonly (readonly [number, number])[]) => {
+    const n = p.length;
+    const ma = p.reduce((t, q) => t + q[0], 0) / n;
+    const mb = p.reduce((t, q) => t + q[1], 0) / n;
+    let c = 0;
+    let va = 0;
+    let vb = 0;
+    for (const [a, b] of p) {
+      c += (a - ma) * (b - mb);
+      va += (a - ma) ** 2;
+      vb += (b - mb) ** 2;
+    }
+    return c / Math.sqrt(va * vb);
+  };
+
+  it('is shared by strands rooted together and independent a few locks apart', () => {
+    // 2 mm apart: one lock; 6 cm apart (five lattice cells): unrelated
+    expect(correlation(pairs(0.02))).toBeGreaterThan(0.8);
+    expect(Math.abs(correlation(pairs(5 * LOCK_CELL)))).toBeLessThan(0.1);
+  });
+
+  it('spreads over most of 0 to 1, so locks tilt both ways', () => {
+    const v = pairs(0.02).map((q) => q[0]);
+    const below = v.filter((x) => x < 0.3).length / v.length;
+    const above = v.filter((x) => x > 0.7).length / v.length;
+    expect(below).toBeGreaterThan(0.15);
+    expect(above).toBeGreaterThan(0.15);
+    // a lattice's values interpolated: the same at a lattice point as on its neighbour's side
+    expect(lockNoise(0, 0, 0, 5)).toBeCloseTo(lockNoise(1e-7, 0, 0, 5), 5);
   });
 });

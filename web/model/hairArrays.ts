@@ -139,7 +139,7 @@ export interface StrandVertexArrays {
   /** along[2 * point]: 0 at the root … 255 at the tip (by point); along[2 * point + 1]: the
    *  distance from the strand's tip by arc length (strandAttributes.ts encodeTipDistance). */
   along: Uint8Array;
-  random: Uint8Array; // random[4 * point + k]: the strand's value, hue, length look, highlight noise × 255
+  random: Uint8Array; // random[4 * point + k]: the strand's value, hue, length look, its lock's highlight × 255
   light: Uint8Array; // light[2 * point + k]: lighting.strand (transmittance, occlusion) × 255
   box: Float32Array; // min x, y, z, max x, y, z of the points; empty without points
   index: Uint32Array; // index[2 * segment + end]: point indices, strands in level-of-detail order

@@ -5,8 +5,9 @@
 //   along[2i]            0 at the root … 255 at the tip (by point)
 //   along[2i + 1]        the distance from the strand's tip by arc length, encoded
 //                        (encodeTipDistance: finest near the tip), for the lighter tips
-//   random[4i .. 4i+3]   per strand: value, hue, length appearance, highlight noise (a hash of s
-//                        and the colour seed), Uint8 ÷ 255
+//   random[4i .. 4i+3]   per strand: value, hue, length appearance (a hash of s and the colour
+//                        seed), and the lock's highlight (lockNoise of the root: strands rooted
+//                        together share it), Uint8 ÷ 255
 //   light[2i .. 2i+1]    transmittance, ambient occlusion (protocol.ts HairLightingArrays.strand),
 //                        Uint8 ÷ 255; 255, 255 without lighting
 // Level of detail: the index lists strands interleaved (stride LOD_GROUPS, groups in bit-reversed
@@ -90,7 +91,10 @@ export function pointAttributes(
     const r0 = h >>> 24; // value
     const r1 = (h >>> 16) & 255; // hue
     const r2 = (h >>> 8) & 255; // length appearance
-    const r3 = h2 >>> 24; // highlight noise
+    // the lock's highlight: shared by strands rooted within a lock's width of each other, with
+    // a little of the strand's own
+    const lock = lockNoise(points[3 * a], points[3 * a + 1], points[3 * a + 2], seedMix);
+    const r3 = Math.round(255 * clamp01(0.85 * lock + 0.15 * ((h2 >>> 24) / 255)));
     const inv = n > 1 ? 255 / (n - 1) : 0;
     // the distance from the tip, summed from the tip back to the root: encodeTipDistance inlined
     // (this runs on the page for every preview; a byte store truncates, so + 0.5 rounds)
@@ -220,6 +224,44 @@ function clamp01(v: number): number {
 }
 
 /** 32-bit integer hash (lowbias32, Chris Wellons). */
+/** Lattice spacing of lockNoise, world units (1.2 cm: about a clump's width, detail.ts). */
+export const LOCK_CELL = 0.12;
+
+/** Smooth value noise of a root position in [0, 1] (a lattice of seeded values LOCK_CELL apart,
+ *  interpolated with smoothstep and stretched to about a uniform spread): strands rooted within
+ *  a lock's width of each other get nearly the same value, so the strand shader's highlight tilt
+ *  (strandShaders.ts) turns whole locks together: the key light's highlight breaks into locks,
+ *  as it does on a head of hair, instead of averaging over strands into one smooth band. */
+export function lockNoise(x: number, y: number, z: number, seed = 0): number {
+  const fx = x / LOCK_CELL;
+  const fy = y / LOCK_CELL;
+  const fz = z / LOCK_CELL;
+  const ix = Math.floor(fx);
+  const iy = Math.floor(fy);
+  const iz = Math.floor(fz);
+  const ease = (t: number) => t * t * (3 - 2 * t);
+  const tx = ease(fx - ix);
+  const ty = ease(fy - iy);
+  const tz = ease(fz - iz);
+  let v = 0;
+  for (let c = 0; c < 8; c++) {
+    const dx = c & 1;
+    const dy = (c >> 1) & 1;
+    const dz = c >> 2;
+    const k = hash32(
+      Math.imul(ix + dx, 73856093) ^
+        Math.imul(iy + dy, 19349663) ^
+        Math.imul(iz + dz, 83492791) ^
+        seed,
+    );
+    const w = (dx ? tx : 1 - tx) * (dy ? ty : 1 - ty) * (dz ? tz : 1 - tz);
+    v += w * (k / 4294967296);
+  }
+  // interpolated values gather about the middle (standard deviation ~0.17 against a uniform's
+  // 0.29): stretched back to about a uniform's spread
+  return clamp01(0.5 + 1.7 * (v - 0.5));
+}
+
 function hash32(x: number): number {
   let h = x >>> 0;
   h ^= h >>> 16;

@@ -89,6 +89,8 @@ uniform float rootDarkening; // roots are darker by this fraction
 uniform float hueVariation; // ± red/blue balance per strand
 // the largest tilt of a strand's shading tangent towards its normal (about 8 degrees)
 const float HIGHLIGHT_TILT = 0.14;
+// the lock's share of the tilt (in HIGHLIGHT_TILTs)
+const float LOCK_TILT = 2.5;
 // the fill's sheen, over the fill's brightness (the key's BSDF gain's share of it)
 const float FILL_SHEEN = 5.0;
 const float FILL_SHEEN_SPREAD = 3.0;
@@ -166,7 +168,10 @@ vec3 shadeStrand(vec3 T, vec3 P, vec2 along, vec4 rnd, vec2 light) {
   // 2004): a head's hairs are not parallel (cuticle tilt, waves, strands crossing), so the key
   // light's highlight breaks into strands instead of lying on the hair as one smooth band that
   // rings a whorl (read as a cowlick) or outlines a fringe
-  float tilt = HIGHLIGHT_TILT * ((2.0 * fract(rnd.w * 13.71 + rnd.x * 3.17) - 1.0)
+  // mostly by lock (rnd.w: strandAttributes.ts lockNoise of the root), so whole locks catch the
+  // light together and the highlight shows locks; a little by strand, and along it
+  float tilt = HIGHLIGHT_TILT * (LOCK_TILT * (2.0 * rnd.w - 1.0)
+    + 0.5 * (2.0 * fract(rnd.x * 13.71 + rnd.y * 3.17) - 1.0)
     + 0.5 * sin(along.y * 25.0 + 6.2832 * rnd.z));
   vec3 Ts = normalize(T + tilt * N);
   float beta = roughness * (1.0 + lookShares.w * (2.0 * fract(rnd.w * 7.31) - 1.0));
