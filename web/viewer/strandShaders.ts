@@ -91,6 +91,8 @@ uniform float hueVariation; // ± red/blue balance per strand
 const float HIGHLIGHT_TILT = 0.14;
 // the lock's share of the tilt (in HIGHLIGHT_TILTs)
 const float LOCK_TILT = 2.5;
+// the lock's brightness, ± this share
+const float LOCK_VALUE = 0.15;
 // the fill's sheen, over the fill's brightness (the key's BSDF gain's share of it)
 const float FILL_SHEEN = 5.0;
 const float FILL_SHEEN_SPREAD = 3.0;
@@ -204,7 +206,10 @@ vec3 shadeStrand(vec3 T, vec3 P, vec2 along, vec4 rnd, vec2 light) {
   // grey-blue line across the side of long hair where the strands turn through the mirror angle
   float sheen = FILL_SHEEN * dot(fillColor, vec3(0.2126, 0.7152, 0.0722))
     * hairR(Ts, fillDirection, V, FILL_SHEEN_SPREAD * beta);
-  return rootAo * (key + ao * ((fillColor * fill + ambientColor * sky) * base + sheen));
+  // locks lighter and darker (rnd.w, the lock's value as for the tilt): a head of hair's locks
+  // lie at different depths and angles, so they differ in brightness as a whole
+  float lockValue = 1.0 + LOCK_VALUE * (2.0 * rnd.w - 1.0);
+  return lockValue * rootAo * (key + ao * ((fillColor * fill + ambientColor * sky) * base + sheen));
 }
 `;
 
