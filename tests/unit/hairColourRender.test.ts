@@ -242,14 +242,16 @@ describe.runIf(DIST_BUILT)('hair colour as drawn', () => {
     // the hair lying on the head turns away from the key light (new users: "a sharp diagonal
     // light-to-dark line across the back of the head"); shadingBlotches 0.0282 in High against
     // 0.0215 in Fast (1.31 times); with the light falling off softly round the head, 0.0229
-    // (1.07 times)
+    // (1.07 times). Highlights and brightness by lock (ed74186, f65e80e) add shading at a lock's
+    // scale to both, more sharply in High's per-pixel shading than in Fast's per-vertex: 0.0272
+    // and 0.0238 (1.14 times; 1.12 to 1.16 over the lock settings tried), so the bound is 1.2
     const long = presetSession('long', Head.builtin(), '25k', 12000);
     const o = { width: 400, height: 400, views: ['back'] as const, qualities: BOTH };
     const hair = (await renderer.render(long, o)).png;
     const none = (await renderer.render({ ...long, curves: [] }, o)).png;
     const [fast, high] = [0, 1].map((q) => shadingBlotches(readPng(hair[q]), readPng(none[q])));
     console.log(`long from behind: blotches ${fast.toFixed(4)} Fast, ${high.toFixed(4)} High`);
-    expect(high).toBeLessThan(1.15 * fast);
+    expect(high).toBeLessThan(1.2 * fast);
     // and as bright in both: with the soft terminator in High only, Fast's back was the lighter
     // (hair luma 1.09 times High's; a judge: 'Fast and High disagree, High darker at the back')
     const [f, h] = [0, 1].map((q) => hairColour(readPng(hair[q]), readPng(none[q])).luma);

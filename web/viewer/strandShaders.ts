@@ -109,6 +109,8 @@ const float HIGHLIGHT_TILT = 0.14;
 const float LOCK_TILT = 2.5;
 // the lock's brightness, ± this share
 const float LOCK_VALUE = 0.15;
+// the share of a strand (from the root) over which its lock's tilt and brightness grow in
+const float LOCK_FROM = 0.3;
 // the fill's sheen, over the fill's brightness (the key's BSDF gain's share of it)
 const float FILL_SHEEN = 5.0;
 const float FILL_SHEEN_SPREAD = 3.0;
@@ -187,8 +189,12 @@ vec3 shadeStrand(vec3 T, vec3 P, vec2 along, vec4 rnd, vec2 light) {
   // light's highlight breaks into strands instead of lying on the hair as one smooth band that
   // rings a whorl (read as a cowlick) or outlines a fringe
   // mostly by lock (rnd.w: strandAttributes.ts lockNoise of the root), so whole locks catch the
-  // light together and the highlight shows locks; a little by strand, and along it
-  float tilt = HIGHLIGHT_TILT * (LOCK_TILT * (2.0 * rnd.w - 1.0)
+  // light together and the highlight shows locks; a little by strand, and along it. Locks form
+  // away from the root (hair combed flat at the hairline lies as one): the lock's share grows
+  // over the first LOCK_FROM of the strand (at the root a pulled-back hairline drew lock streaks
+  // into the skin's edge)
+  float lockShare = smoothstep(0.0, LOCK_FROM, along.x) * (2.0 * rnd.w - 1.0);
+  float tilt = HIGHLIGHT_TILT * (LOCK_TILT * lockShare
     + 0.5 * (2.0 * fract(rnd.x * 13.71 + rnd.y * 3.17) - 1.0)
     + 0.5 * sin(along.y * 25.0 + 6.2832 * rnd.z));
   vec3 Ts = normalize(T + tilt * N);
@@ -224,7 +230,7 @@ vec3 shadeStrand(vec3 T, vec3 P, vec2 along, vec4 rnd, vec2 light) {
     * hairR(Ts, fillDirection, V, FILL_SHEEN_SPREAD * beta);
   // locks lighter and darker (rnd.w, the lock's value as for the tilt): a head of hair's locks
   // lie at different depths and angles, so they differ in brightness as a whole
-  float lockValue = 1.0 + LOCK_VALUE * (2.0 * rnd.w - 1.0);
+  float lockValue = 1.0 + LOCK_VALUE * lockShare;
   return lockValue * rootAo * (key + ao * ((fillColor * fill + ambientColor * sky) * base + sheen));
 }
 `;
