@@ -3,6 +3,7 @@
 // (never asserted). With SHOT_DIR set, a strip of frames of `long` and `braid` turning, front
 // and side.
 import { expect, type Page, test } from '@playwright/test';
+import { DEFAULT_WIND } from '../../web/model/motion';
 import { settled, watchConsole } from './helpers';
 
 /** Waits (polling the status line's data-motion-frame) until the motion has drawn `frame`. */
@@ -123,7 +124,7 @@ test('Play with Head turn moves the strands; Stop restores them bit for bit', as
   expect(errors).toEqual([]);
 });
 
-test('Wind from the left, chosen in the Motion controls, blows the tips to the right', async ({
+test('Wind at its default speed, from the left in the Motion controls, streams the tips to the right by centimetres', async ({
   page,
 }) => {
   const errors = watchConsole(page);
@@ -134,36 +135,49 @@ test('Wind from the left, chosen in the Motion controls, blows the tips to the r
   await expect(page.getByLabel('Wind direction')).toBeDisabled();
   await page.getByLabel('Motion').selectOption('wind');
   await page.getByLabel('Wind direction').selectOption({ label: 'from the left' });
-  await page.getByLabel('Wind speed (m/s)').fill('8');
-  await page.getByLabel('Wind speed (m/s)').press('Enter');
+  // the speed as the controls start (the default): the tips must move by centimetres at it
+  await expect(page.getByLabel('Wind speed (m/s)')).toHaveValue(String(DEFAULT_WIND.speed));
   await page.getByRole('button', { name: 'Play' }).click();
   await expect(page.getByTestId('status')).toContainText('Playing Wind');
-  // the tips' mean move along x since the groom (cm; the head's left is +x), averaged over the
-  // frames drawn from frame 24 (the gusts ramped in) to 96: the gusts swing the hair to and fro
-  const tipsX = () =>
+  // the tips' mean move since the groom (cm): along x (the head's left is +x) and its length,
+  // averaged over the frames drawn from frame 24 (the gusts ramped in) to 96: the gusts swing
+  // the hair to and fro
+  const tips = () =>
     page.evaluate(() => {
       const s = window.hairsketch.strands();
       const k = (window as unknown as { kept: NonNullable<typeof s> }).kept;
       if (!s) throw new Error('no hair');
       let sum = 0;
+      let moved = 0;
       const n = k.strandStart.length - 1;
       for (let i = 0; i < n; i++) {
-        const tip = k.strandStart[i + 1] - 1;
-        sum += s.points[3 * tip] - k.points[3 * tip];
+        const tip = 3 * (k.strandStart[i + 1] - 1);
+        const d = [0, 1, 2].map((a) => s.points[tip + a] - k.points[tip + a]);
+        sum += d[0];
+        moved += Math.hypot(d[0], d[1], d[2]);
       }
-      return { x: (10 * sum) / n, frame: window.hairsketch.motion().frame };
+      return {
+        x: (10 * sum) / n,
+        moved: (10 * moved) / n,
+        frame: window.hairsketch.motion().frame,
+      };
     });
   const xs: number[] = [];
+  const moves: number[] = [];
   for (let f = 24; f <= 96; ) {
     await motionFrame(page, f);
-    const t = await tipsX();
+    const t = await tips();
     xs.push(t.x);
+    moves.push(t.moved);
     f = t.frame + 1;
   }
-  const x = xs.reduce((a, b) => a + b, 0) / xs.length;
+  const mean = (v: number[]) => v.reduce((a, b) => a + b, 0) / v.length;
+  const x = mean(xs);
+  const moved = mean(moves);
   console.log(
-    `wind from the left at 8 m/s: the tips moved ${x.toFixed(2)} cm along x on average over ${xs.length} frames drawn (24-96)`,
+    `wind from the left at ${DEFAULT_WIND.speed} m/s (the default): the tips moved ${moved.toFixed(2)} cm from the groom on average, ${x.toFixed(2)} cm along x, over ${xs.length} frames drawn (24-96)`,
   );
+  expect(moved).toBeGreaterThan(2);
   expect(x).toBeLessThan(-1);
   await page.getByRole('button', { name: 'Stop' }).click();
   expect((await changedSinceKept(page)).changed).toBe(0);
