@@ -9,6 +9,7 @@ import {
   LOCK_CELL,
   LOD_GROUPS,
   lockNoise,
+  MAX_TURN,
 } from '../../web/viewer/strandAttributes';
 import { buildStrandGeometry, buildStrandStripGeometry } from '../../web/viewer/strandGeometry';
 import {
@@ -36,7 +37,7 @@ describe('buildStrandGeometry', () => {
     expect(g.getAttribute('position').count).toBe(6);
   });
 
-  it('has unit tangents from neighbouring points', () => {
+  it('has tangents along neighbouring points, shortened by the turn there', () => {
     const t = g.getAttribute('tangent');
     const s = Math.SQRT1_2;
     const expected = [
@@ -46,9 +47,15 @@ describe('buildStrandGeometry', () => {
       [0, 0, -1], // strand 2
       [0, 0, -1],
     ];
+    // lengths: 1 without a turn; ½ where the strand turns MAX_TURN or more (its middle point
+    // turns 90 degrees)
+    const lengths = [1, 0.5, 1, 1, 1];
     const rows = [0, 1, 2, 4, 5];
     rows.forEach((v, k) => {
-      for (let a = 0; a < 3; a++) expect(t.getComponent(v, a)).toBeCloseTo(expected[k][a], 2);
+      const c = [0, 1, 2].map((a) => t.getComponent(v, a));
+      const l = Math.hypot(...c);
+      expect(l).toBeCloseTo(lengths[k], 2);
+      for (let a = 0; a < 3; a++) expect(c[a] / l).toBeCloseTo(expected[k][a], 2);
     });
     // a lone point still gets a finite unit tangent
     const lone = [0, 1, 2].map((a) => t.getComponent(3, a));
@@ -381,5 +388,31 @@ describe("the lock's highlight", () => {
     expect(above).toBeGreaterThan(0.15);
     // a lattice's values interpolated: the same at a lattice point as on its neighbour's side
     expect(lockNoise(0, 0, 0, 5)).toBeCloseTo(lockNoise(1e-7, 0, 0, 5), 5);
+  });
+});
+
+describe("the strand's turn, in its tangent's length", () => {
+  it('reads back the angle between segments: 30 degrees round a 12-sided coil, 0 on a straight strand', () => {
+    // strand 0: 25 points round a circle of 12 steps a turn (each point turns 2 pi / 12 between
+    // its two segments, by hand), rising a little; strand 1: 10 points in a straight line
+    const pts: number[] = [];
+    for (let i = 0; i < 25; i++) {
+      const a = (2 * Math.PI * i) / 12;
+      pts.push(0.03 * Math.cos(a), 1 - 0.001 * i, 0.03 * Math.sin(a));
+    }
+    for (let i = 0; i < 10; i++) pts.push(0.5, 1 - 0.01 * i, 0);
+    const start = new Uint32Array([0, 25, 35]);
+    const t = buildStrandGeometry(new Float32Array(pts), start, 1).getAttribute('tangent')
+      .array as Int8Array;
+    // the shaders' turnOf: clamp(2 (1 - |t|), 0, 1) MAX_TURN
+    const turn = (i: number) => {
+      const l = Math.hypot(t[3 * i], t[3 * i + 1], t[3 * i + 2]) / 127;
+      return Math.min(1, Math.max(0, 2 * (1 - l))) * MAX_TURN;
+    };
+    // the coil's own turn: the angle between its two chords, with the rise (hand: 2 pi / 12)
+    for (let i = 1; i < 24; i++) expect(turn(i)).toBeCloseTo(Math.PI / 6, 1);
+    for (let i = 26; i < 34; i++) expect(turn(i)).toBeLessThan(0.02);
+    // the ends have one segment: no turn
+    expect(turn(0)).toBeLessThan(0.02);
   });
 });

@@ -135,7 +135,7 @@ export interface ConstraintArrays {
  *  StrandArrays (strand s owns points strandStart[s] .. strandStart[s + 1] − 1). */
 export interface StrandVertexArrays {
   pointCount: number;
-  tangent: Int8Array; // tangent[3 * point + axis]: unit tangent × 127 (central differences)
+  tangent: Int8Array; // tangent[3 * point + axis]: tangent × 127 (central differences), its length encodeTurn of the strand's turn there (strandAttributes.ts)
   /** along[2 * point]: 0 at the root … 255 at the tip (by point); along[2 * point + 1]: the
    *  distance from the strand's tip by arc length (strandAttributes.ts encodeTipDistance). */
   along: Uint8Array;

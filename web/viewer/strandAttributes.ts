@@ -1,7 +1,9 @@
 // The strands' vertex attributes, as typed arrays (no three.js: the solver worker builds them
 // for the final hair, the page for previews; strandGeometry.ts wraps them in a geometry).
 // Per point i of strand s (points strandStart[s] .. strandStart[s + 1] − 1):
-//   tangent[3i .. 3i+2]  unit tangent (central differences, one-sided at the ends), Int8 ÷ 127
+//   tangent[3i .. 3i+2]  tangent (central differences, one-sided at the ends), Int8 ÷ 127: its
+//                        direction the strand's, its length 1 − ½ of the strand's turn there
+//                        (encodeTurn: the angle between its two segments, for the highlight)
 //   along[2i]            0 at the root … 255 at the tip (by point)
 //   along[2i + 1]        the distance from the strand's tip by arc length, encoded
 //                        (encodeTipDistance: finest near the tip), for the lighter tips
@@ -128,9 +130,21 @@ export function pointAttributes(
 
 const boxScratch = new Float64Array(6);
 
-/** Writes the unit tangents (central differences, one-sided at the ends, Int8 ÷ 127), `per`
- *  copies a point (lines 1, strips 2); returns the points' box, min xyz then max xyz (a scratch
- *  array, overwritten by the next call). */
+/** The turn (radians between a point's two segments) a tangent's length tells apart: more reads
+ *  as this much. */
+export const MAX_TURN = 1.2;
+
+/** The length a tangent is written at for a turn of `angle` radians at its point: 1 straight,
+ *  down to ½ at MAX_TURN or more. The shaders read the turn back from the length (strandShaders.ts
+ *  turnOf) and widen the highlight by it: shading at the points of a tightly curled strand
+ *  sampled its narrow highlight at a few of them, as sparks. */
+export function encodeTurn(angle: number): number {
+  return 1 - 0.5 * Math.min(1, Math.max(0, angle) / MAX_TURN);
+}
+
+/** Writes the tangents (central differences, one-sided at the ends, Int8 ÷ 127; length
+ *  encodeTurn of the strand's turn there), `per` copies a point (lines 1, strips 2); returns the
+ *  points' box, min xyz then max xyz (a scratch array, overwritten by the next call). */
 export function writeTangents(
   points: Float32Array,
   strandStart: Uint32Array,
@@ -166,7 +180,23 @@ export function writeTangents(
       const dz = points[3 * i1 + 2] - points[3 * i0 + 2];
       const l = Math.sqrt(dx * dx + dy * dy + dz * dz);
       if (l > 1e-12) {
-        const k = 127 / l;
+        // the turn between the two segments (none at the ends)
+        let turn = 0;
+        if (i > a && i < b - 1) {
+          const ax = px - points[3 * i0];
+          const ay = py - points[3 * i0 + 1];
+          const az = pz - points[3 * i0 + 2];
+          const bx = points[3 * i1] - px;
+          const by = points[3 * i1 + 1] - py;
+          const bz = points[3 * i1 + 2] - pz;
+          const la = Math.sqrt(ax * ax + ay * ay + az * az);
+          const lb = Math.sqrt(bx * bx + by * by + bz * bz);
+          if (la > 1e-12 && lb > 1e-12) {
+            const c = (ax * bx + ay * by + az * bz) / (la * lb);
+            turn = Math.acos(c > 1 ? 1 : c < -1 ? -1 : c);
+          }
+        }
+        const k = (127 * encodeTurn(turn)) / l;
         tx = Math.round(dx * k);
         ty = Math.round(dy * k);
         tz = Math.round(dz * k);
