@@ -163,6 +163,11 @@ export function writeTangents(
     let tx = 0;
     let ty = 127;
     let tz = 0;
+    // the unit vector of the segment before the point (hasPrev: it has one)
+    let ux = 0;
+    let uy = 0;
+    let uz = 0;
+    let hasPrev = false;
     for (let i = a; i < b; i++) {
       const px = points[3 * i];
       const py = points[3 * i + 1];
@@ -180,27 +185,36 @@ export function writeTangents(
       const dz = points[3 * i1 + 2] - points[3 * i0 + 2];
       const l = Math.sqrt(dx * dx + dy * dy + dz * dz);
       if (l > 1e-12) {
-        // the turn between the two segments (none at the ends)
+        // the turn between the two segments (none at the ends), as its chord 2 sin(angle / 2) =
+        // |u0 − u1| of their unit vectors: within 6 % of the angle up to MAX_TURN; each segment's
+        // unit vector is found once (this runs on the page for every preview)
         let turn = 0;
-        if (i > a && i < b - 1) {
-          const ax = px - points[3 * i0];
-          const ay = py - points[3 * i0 + 1];
-          const az = pz - points[3 * i0 + 2];
-          const bx = points[3 * i1] - px;
-          const by = points[3 * i1 + 1] - py;
-          const bz = points[3 * i1 + 2] - pz;
-          const la = Math.sqrt(ax * ax + ay * ay + az * az);
-          const lb = Math.sqrt(bx * bx + by * by + bz * bz);
-          if (la > 1e-12 && lb > 1e-12) {
-            const c = (ax * bx + ay * by + az * bz) / (la * lb);
-            turn = Math.acos(c > 1 ? 1 : c < -1 ? -1 : c);
-          }
+        if (i < b - 1) {
+          const sx = points[3 * i + 3] - px;
+          const sy = points[3 * i + 4] - py;
+          const sz = points[3 * i + 5] - pz;
+          const sl = Math.sqrt(sx * sx + sy * sy + sz * sz);
+          if (sl > 1e-12) {
+            const nx = sx / sl;
+            const ny = sy / sl;
+            const nz = sz / sl;
+            if (i > a && hasPrev) {
+              const cx = nx - ux;
+              const cy = ny - uy;
+              const cz = nz - uz;
+              turn = Math.sqrt(cx * cx + cy * cy + cz * cz);
+            }
+            ux = nx;
+            uy = ny;
+            uz = nz;
+            hasPrev = true;
+          } else hasPrev = false;
         }
         const k = (127 * encodeTurn(turn)) / l;
         tx = Math.round(dx * k);
         ty = Math.round(dy * k);
         tz = Math.round(dz * k);
-      }
+      } else hasPrev = false;
       const o = 3 * per * i;
       tangent[o] = tx;
       tangent[o + 1] = ty;
