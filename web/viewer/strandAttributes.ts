@@ -134,8 +134,9 @@ const boxScratch = new Float64Array(6);
  *  as this much. */
 export const MAX_TURN = 1.2;
 
-/** The length a tangent is written at for a turn of `angle` radians at its point: 1 straight,
- *  down to ½ at MAX_TURN or more. The shaders read the turn back from the length (strandShaders.ts
+/** The length a tangent is written at for a turn of `angle` radians at its point (writeTangents
+ *  passes the turn's chord, 2 sin(angle / 2), within 6 % of the angle up to MAX_TURN): 1
+ *  straight, down to ½ at MAX_TURN or more. The shaders read the turn back from the length (strandShaders.ts
  *  turnOf) and widen the highlight by it: shading at the points of a tightly curled strand
  *  sampled its narrow highlight at a few of them, as sparks. */
 export function encodeTurn(angle: number): number {
