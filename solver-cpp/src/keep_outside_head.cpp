@@ -36,20 +36,35 @@ static void keepStrandOutside(const HeadDistance& head, float margin, Strands& s
                               size_t& moved) {
   {
     const uint32_t a = strands.strandStart[st], b = strands.strandStart[st + 1];
+    // each point's distance as found (a lower bound on it: 0 at the root, margin once pushed out)
+    thread_local std::vector<float> dist;
+    dist.assign(b - a, 0.f);
     for (uint32_t p = a + 1; p < b; ++p) {
       float* q = strands.points.data() + 3 * size_t(p);
-      if (head.distance(q[0], q[1], q[2]) < margin) {
+      const float d = head.distance(q[0], q[1], q[2]);
+      dist[p - a] = d;
+      if (d < margin) {
         head.pushOut(q, margin);
+        dist[p - a] = 0.f;
         ++moved;
       }
     }
     // A segment between two points outside can still cut a corner of the head (a curl over a
-    // convex part, a point pushed out far): its ends move out by the midpoint's depth.
+    // convex part, a point pushed out far): its ends move out by the midpoint's depth. The
+    // interpolated distance changes by at most sqrt(3) times the step (at most 1 along each
+    // axis), so a midpoint is not looked up when both ends are far enough out for it to be
+    // outside half the margin; after a first pass that moved points, every midpoint is.
+    constexpr float kLipschitz = 1.7321f;
     for (int pass = 0; pass < 6; ++pass) {
       bool any = false;
       for (uint32_t p = a; p + 1 < b; ++p) {
         float* q0 = strands.points.data() + 3 * size_t(p);
         float* q1 = q0 + 3;
+        if (pass == 0) {
+          const float dx = q1[0] - q0[0], dy = q1[1] - q0[1], dz = q1[2] - q0[2];
+          const float half = 0.5f * kLipschitz * std::sqrt(dx * dx + dy * dy + dz * dz);
+          if (std::min(dist[p - a], dist[p + 1 - a]) - half >= 0.5f * margin) continue;
+        }
         float g[3];
         const float dm = head.distance(0.5f * (q0[0] + q1[0]), 0.5f * (q0[1] + q1[1]),
                                        0.5f * (q0[2] + q1[2]), g);
@@ -61,6 +76,7 @@ static void keepStrandOutside(const HeadDistance& head, float margin, Strands& s
           if (q == strands.points.data() + 3 * size_t(a)) continue;  // the root stays
           for (int e = 0; e < 3; ++e) q[e] += move * g[e];
         }
+        dist[p - a] = dist[p + 1 - a] = 0.f;  // moved: looked up again next to it
         any = true;
         ++moved;
       }

@@ -9,6 +9,7 @@
 #include <tuple>
 #include <vector>
 
+#include "parallel.hpp"
 #include "strand_detail_internal.hpp"
 
 namespace hairsketch::strand_detail {
@@ -151,7 +152,7 @@ void clumpGroup(const ClumpParams& c, const std::vector<uint32_t>& members,
   const double maxApart = std::max(kMaxApart, 4 * c.guideDistance);
   // whether the path of strand s (loaded in w.p, its arc lengths in w.s) parts from guide k's by
   // more than maxApart (also when either has no length)
-  auto partsFrom = [&](uint32_t s, int32_t k) {
+  auto partsFrom = [&](uint32_t s, int32_t k, const Work& w) {
     const uint32_t G = members[size_t(k)];
     const size_t count = start[s + 1] - start[s], gCount = start[G + 1] - start[G];
     const float* gp = P + 3 * size_t(start[G]);
@@ -168,9 +169,9 @@ void clumpGroup(const ClumpParams& c, const std::vector<uint32_t>& members,
     }
     return false;
   };
-  std::vector<std::pair<double, int32_t>> near;  // nextGuide: the guides that set off its way
-  for (size_t m = 0; m < M; ++m) {
-    if (isGuide[m]) continue;
+  // Each follower reads only guides (which keep their shape) and writes only its own points, so
+  // followers are clumped in parallel, each chunk with its own work buffers.
+  auto clumpFollower = [&](size_t m, Work& w, std::vector<std::pair<double, int32_t>>& near) {
     int32_t best = -1;
     double bestD2 = std::numeric_limits<double>::infinity();
     near.clear();
@@ -185,7 +186,7 @@ void clumpGroup(const ClumpParams& c, const std::vector<uint32_t>& members,
       if (nextGuide) near.emplace_back(d2, k);
       return true;
     });
-    if (best < 0) continue;  // no guide near that sets off the same way: not clumped
+    if (best < 0) return;  // no guide near that sets off the same way: not clumped
     if (nextGuide) {
       // the nearest guide whose path stays with the strand's (nearest first, ties by index)
       const uint32_t s = members[m];
@@ -194,7 +195,7 @@ void clumpGroup(const ClumpParams& c, const std::vector<uint32_t>& members,
       std::sort(near.begin(), near.end());
       bool found = false;
       for (const auto& [d2, k] : near)
-        if (!partsFrom(s, k)) {
+        if (!partsFrom(s, k, w)) {
           best = k;
           found = true;
           break;
@@ -213,7 +214,7 @@ void clumpGroup(const ClumpParams& c, const std::vector<uint32_t>& members,
             int64_t(std::ceil(kNextGuideReach * inv)));
         std::sort(near.begin(), near.end());
         for (const auto& [d2, k] : near)
-          if (!partsFrom(s, k)) {
+          if (!partsFrom(s, k, w)) {
             best = k;
             break;
           }
@@ -226,7 +227,7 @@ void clumpGroup(const ClumpParams& c, const std::vector<uint32_t>& members,
     const double LG = gArc[gCount - 1];
     load(P + 3 * size_t(start[s]), count, w.p);
     const double L = arcLengths(w.p, w.s);
-    if (!(L > 0) || !(LG > 0)) continue;
+    if (!(L > 0) || !(LG > 0)) return;
     // Along the guide by arc length, stretched to its tip only for a strand longer than it: a
     // shorter strand (stubble at a hairline) joins the clump near its root, not at its far tip.
     const double along = LG / std::max(L, LG);
@@ -235,7 +236,7 @@ void clumpGroup(const ClumpParams& c, const std::vector<uint32_t>& members,
     // A strand whose path parts from its guide's by more than kMaxApart (the two go round
     // different sides of the head, or either side of a parting further on) is not clumped: a
     // blend of the two paths would cut through the head.
-    if (partsFrom(s, best)) continue;
+    if (partsFrom(s, best, w)) return;
     if (phaseKey) (*phaseKey)[s] = key[G];
     size_t j = 0;
     for (size_t i = 1; i < count; ++i) {
@@ -254,7 +255,14 @@ void clumpGroup(const ClumpParams& c, const std::vector<uint32_t>& members,
       }
     }
     store(w.p, P + 3 * size_t(start[s]));
-  }
+  };
+  const int chunks = int(std::min<size_t>(size_t(parallel::threadCount()) * 4, M / 256 + 1));
+  parallel::forChunks(M, chunks, [&](int, size_t m0, size_t m1) {
+    Work own;
+    std::vector<std::pair<double, int32_t>> near;  // nextGuide: the guides that set off its way
+    for (size_t m = m0; m < m1; ++m)
+      if (!isGuide[m]) clumpFollower(m, own, near);
+  });
 }
 
 }  // namespace hairsketch::strand_detail
