@@ -14,7 +14,8 @@ import { growOnBuiltinHead } from '../support/growOnBuiltinHead';
 const head = Head.builtin();
 // the long preset with its strokes' hair growing on past their ends ("Extend past the end"):
 // the maximum length ends every strand, over the shoulders
-const long = presetSession('long', head, '25k', 0);
+// without its natural detail, whose length jitter ends strands short of the maximum length
+const { detail: _detail, ...long } = presetSession('long', head, '25k', 0);
 const session: SessionState = {
   ...long,
   growth: { ...long.growth, maxLength: 6 },

@@ -277,10 +277,11 @@ describe.runIf(DIST_BUILT)('hair colour as drawn', () => {
     // below the 7 x 7 median where that is over 0.6): 0.326 % before, 0.136 % after
     const shade = HAIR_SHADES.find((s) => s.id === 'auburn');
     if (!shade) throw new Error('no Auburn shade');
-    const long = {
-      ...presetSession('long', Head.builtin(), '25k', 12000),
-      hairLook: withShade(DEFAULT_HAIR_LOOK, shade),
-    };
+    // without the preset's natural detail (a shading fault, measured on the smooth hair it
+    // showed on): with it, the edges of locks lying over others catch the light as thin lighter
+    // lines along the strands, 0.88 % of the hair by this measure
+    const { detail: _detail, ...smooth } = presetSession('long', Head.builtin(), '25k', 12000);
+    const long = { ...smooth, hairLook: withShade(DEFAULT_HAIR_LOOK, shade) };
     const o = { width: 320, height: 320, views: ['side'] as const, quality: 'fast' as const };
     const share = greyLineShare(readPng((await renderer.render(long, o)).png[0]), 0.6, 0.2);
     console.log(

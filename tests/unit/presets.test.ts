@@ -77,17 +77,19 @@ describe('presets', () => {
     expect(Object.keys(fig6)).not.toContain('detail');
   });
 
-  it('a new session (empty) has natural detail: subtle clumps, uneven ends, a few flyaways; the other presets keep theirs', () => {
+  it('a new session (empty) and the styles it opens with have natural detail: locks, uneven ends, a few flyaways; the paper figures none, curly its own', () => {
     const fresh = applyPreset(emptySession('25k'), 'empty', ctx);
     expect(fresh.detail).toEqual(NEW_SESSION_DETAIL);
     const d = fresh.detail ?? {};
     expect(d.curl).toBeUndefined();
     expect(d.frizz).toBeUndefined();
-    // subtle: strands part of the way onto clumps 1–1.5 cm apart, a little tip spread
-    expect(d.clump?.factor).toBeGreaterThanOrEqual(0.3);
-    expect(d.clump?.factor).toBeLessThanOrEqual(0.5);
-    expect(d.clump?.guideDistance).toBeGreaterThanOrEqual(0.1);
-    expect(d.clump?.guideDistance).toBeLessThanOrEqual(0.15);
+    // locks: strands most of the way onto clumps 2–3 cm apart towards the tips, a little tip
+    // spread (half-way onto clumps 1.5 cm apart read as a smooth tube from behind)
+    expect(d.clump?.factor).toBeGreaterThanOrEqual(0.6);
+    expect(d.clump?.factor).toBeLessThanOrEqual(0.9);
+    expect(d.clump?.shape).toBeGreaterThanOrEqual(0.5); // none at the root: no parting at the crown
+    expect(d.clump?.guideDistance).toBeGreaterThanOrEqual(0.2);
+    expect(d.clump?.guideDistance).toBeLessThanOrEqual(0.3);
     expect(d.clump?.tipSpread).toBeGreaterThan(0);
     expect(d.lengthJitter).toBeGreaterThan(0);
     expect(d.lengthJitter).toBeLessThanOrEqual(0.15);
@@ -95,10 +97,14 @@ describe('presets', () => {
     // the reader keeps it as it is
     const read = parseSession(JSON.parse(JSON.stringify(fresh)));
     expect(read.ok && read.value).toEqual(fresh);
-    // every other preset: no detail, or the curly preset's own
+    // every other preset: the same, but the paper's figures (smooth, as the paper draws them)
+    // and the curly preset (its own)
+    const paper: readonly string[] = ['fig6', 'fig7', 'fig8', 'fig1'];
     for (const name of PRESET_NAMES.filter((n) => n !== 'empty')) {
       const s = applyPreset(emptySession('25k'), name, ctx);
-      expect([name, s.detail]).toEqual([name, name === 'curly' ? CURLY_DETAIL : undefined]);
+      const want =
+        name === 'curly' ? CURLY_DETAIL : paper.includes(name) ? undefined : fresh.detail;
+      expect([name, s.detail]).toEqual([name, want]);
     }
   });
 });

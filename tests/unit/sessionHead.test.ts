@@ -240,13 +240,14 @@ describe('links with a head, scalp strokes and a mirror plane', () => {
 
   it('carry no mesh, and the strokes compactly; without them a link is what it was', async () => {
     // without the fields added since version 2 (the head, strokes, plane; natural fall, sections,
-    // finished edges, the bust, the colour model)
+    // finished edges, the bust, the colour model, hair detail)
     const {
       fall: _fall,
       sections: _sections,
       finish: _finish,
       bust: _bust,
       hairLook: _look,
+      detail: _detail,
       ...v2Fields
     } = base;
     const plain = packSession(v2Fields);

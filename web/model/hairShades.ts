@@ -41,7 +41,7 @@ export const HAIR_SHADES: readonly HairShade[] = [
   shade('light-blonde', 'Light blonde', 0.01, 0.5, '#ffd8a0'),
   shade('platinum', 'Platinum blonde', 0.006, 0.3, '#fff0c8'),
   shade('strawberry', 'Strawberry blonde', 0.015, 1, '#ffb0a0'),
-  shade('copper', 'Copper', 0.045, 1, '#ff8a58'),
+  shade('copper', 'Copper', 0.045, 1, '#ff8250'),
   shade('auburn', 'Auburn', 0.3, 1, '#ff8070'),
   shade('salt-pepper', 'Salt and pepper', 0.85, 0.1, null, 40),
   shade('silver', 'Silver', 0.35, 0.25, '#dde6ff', 100),

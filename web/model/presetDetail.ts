@@ -11,13 +11,15 @@ export const CURLY_DETAIL: HairDetail = {
   lengthJitter: 0.15,
 };
 
-/** The detail a new session (the `empty` preset) starts with, so hair at arm's length reads as
- *  strands and subtle clumps rather than the smooth shell a smooth field grows: strands drawn
- *  half-way onto clumps about 1.5 cm apart, loosening towards the tips, ends a little uneven and a
- *  few flyaways (DETAIL_PARAMS' defaults: 1 % of the strands). Chosen by eye from renders of new
- *  sessions with a few strokes, Fast and High. */
+/** The detail a new session (the `empty` preset) and the presets other than the paper's figures
+ *  start with, so hair at arm's length reads as strands and locks rather than the smooth shell a
+ *  smooth field grows: strands drawn onto locks about 2.5 cm apart, more towards the tips (most of
+ *  the way there, 2 mm round the lock), so lengths part into pieces and the ends break up; ends a
+ *  little uneven and a few flyaways (DETAIL_PARAMS' defaults: 1 % of the strands). Chosen by eye
+ *  from renders of the long, bob and default presets, front, side and back: half-way onto locks
+ *  1.5 cm apart, long hair still read as "a tube with straight sides" from behind. */
 export const NEW_SESSION_DETAIL: HairDetail = {
-  clump: { factor: 0.5, shape: 0.5, tipSpread: 0.006, guideDistance: 0.15 },
+  clump: { factor: 0.8, shape: 0.5, tipSpread: 0.02, guideDistance: 0.25 },
   flyaway: defaultBlock('flyaway'),
   lengthJitter: 0.1,
 };

@@ -354,14 +354,11 @@ export function applyPreset(s: SessionState, name: PresetName, ctx: PresetContex
     bust,
     ...rest
   } = s;
-  // natural detail for a new session (an empty head); the presets keep the hair they had
-  const detail =
-    name === 'curly'
-      ? { detail: CURLY_DETAIL }
-      : name === 'empty'
-        ? { detail: NEW_SESSION_DETAIL }
-        : {};
+  // natural detail for a new session (an empty head) and the styles it opens with; the paper's
+  // figures keep the smooth hair the paper draws
   const fall = !PAPER_FIGURES.includes(name);
+  const detail =
+    name === 'curly' ? { detail: CURLY_DETAIL } : fall ? { detail: NEW_SESSION_DETAIL } : {};
   // sketched curves end where the hair should end: with fall that is what "extend" off means
   const curves = presetCurves(name, ctx).map((c) =>
     defOf(c).extends ? { ...c, extend: !fall } : c,
