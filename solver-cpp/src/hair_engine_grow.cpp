@@ -231,7 +231,8 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
       }
     // (ties on) hair a tie lays keeps its length: a tail ends where its stroke ends, with the
     // tie's own uneven ends (gathered_tail.hpp), so its strands take their group's detail without
-    // the length jitter (which cut tails up to a tenth short of their strokes' ends); hair wound
+    // the length jitter (which cut tails up to a tenth short of their strokes' ends) and the
+    // clumps' tip spread (which drew strands out across the band: 4 mm of it); hair wound
     // into a bun's coil, without flyaways and frizz too (a bun is wound tight and its ends tucked:
     // a new session's 1 % of flyaways stood round it as a wiry grey halo). (curl volume on) hair
     // a tie lays keeps the shape the tie gives it: it curls but does not spread.
@@ -243,21 +244,24 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
         const uint32_t g = groupOf[st];
         if (g >= own) continue;
         const DetailParams& d = groups[g];
-        const bool jitter = ties_ && d.lengthJitter > 0;
+        const bool keep = ties_ && (d.lengthJitter > 0 || d.clump.tipSpread > 0);
         const bool bun = ties_ && inBun[st] && (d.flyaway.share > 0 || d.frizz.distance > 0);
         const bool spread = d.curl.spread > 0 && d.curl.radius > 0;
-        if (!jitter && !bun && !spread) continue;
+        if (!keep && !bun && !spread) continue;
         const size_t slot = bun ? own + g : g;
         if (tiedGroup[slot] < 0) {
-          DetailParams kept = groups[g];
-          if (ties_) kept.lengthJitter = 0;
-          kept.curl.spread = 0;
+          DetailParams tied = groups[g];
+          if (ties_) {
+            tied.lengthJitter = 0;
+            tied.clump.tipSpread = 0;
+          }
+          tied.curl.spread = 0;
           if (bun) {
-            kept.flyaway.share = 0;
-            kept.frizz.distance = 0;
+            tied.flyaway.share = 0;
+            tied.frizz.distance = 0;
           }
           tiedGroup[slot] = int64_t(groups.size());
-          groups.push_back(kept);
+          groups.push_back(tied);
         }
         groupOf[st] = uint32_t(tiedGroup[slot]);
       }

@@ -254,6 +254,7 @@ void clumpGroup(const ClumpParams& c, const std::vector<uint32_t>& members,
         w.p[i] += c.tipSpread * x * (cPhi * nrm + sPhi * t.cross(nrm));
       }
     }
+    keepLength(w.p, w.s, L, w.q);
     store(w.p, P + 3 * size_t(start[s]));
   };
   const int chunks = int(std::min<size_t>(size_t(parallel::threadCount()) * 4, M / 256 + 1));

@@ -63,6 +63,7 @@ void flyaway(const FlyawayParams& f, uint32_t seed, uint32_t key, const V3& cent
     w.q[i] = f.distance * u * u * (c * r + sn * b) + bend * bump * bump * b;
   }
   for (size_t i = 0; i < n; ++i) p[i] += w.q[i];
+  keepLength(p, w.s, L, w.q);
 }
 
 }  // namespace hairsketch::strand_detail

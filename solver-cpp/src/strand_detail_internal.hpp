@@ -90,6 +90,11 @@ void resampleEven(const std::vector<V3>& p, const std::vector<double>& s, size_t
 // Cuts the strand at arc length len (0 < len), interpolating its new last point.
 void cutAt(std::vector<V3>& p, std::vector<double>& s, double len);
 
+// Keeps a strand that detail moved (clump, flyaway: detail that bends, not curls) within its
+// length before, len: longer, it is cut there and resampled to its point count (q: scratch), so
+// the maximum length stays a maximum (s: arc lengths, recomputed).
+void keepLength(std::vector<V3>& p, std::vector<double>& s, double len, std::vector<V3>& q);
+
 // Rotation-minimising frame along p (double reflection, Wang et al. 2008): vertex tangents T (the
 // mean of the adjacent segment directions), N_0 = the part of +y normal to T_0 (+x if T_0 is along
 // y), B = T x N.

@@ -4,6 +4,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "strand_detail_internal.hpp"
@@ -50,6 +51,15 @@ void cutAt(std::vector<V3>& p, std::vector<double>& s, double len) {
   p.resize(i + 1);
   s.resize(i + 1);
   s[i] = len;
+}
+
+void keepLength(std::vector<V3>& p, std::vector<double>& s, double len, std::vector<V3>& q) {
+  const size_t n = p.size();
+  if (n < 2 || !(arcLengths(p, s) > len)) return;
+  cutAt(p, s, len);
+  if (p.size() < 2) return;
+  resampleEven(p, s, n, q);
+  std::swap(p, q);
 }
 
 void frames(const std::vector<V3>& p, std::vector<V3>& T, std::vector<V3>& N, std::vector<V3>& B) {

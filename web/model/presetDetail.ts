@@ -14,12 +14,13 @@ export const CURLY_DETAIL: HairDetail = {
 /** The detail a new session (the `empty` preset) and the presets other than the paper's figures
  *  start with, so hair at arm's length reads as strands and locks rather than the smooth shell a
  *  smooth field grows: strands drawn onto locks about 2.5 cm apart, more towards the tips (most of
- *  the way there, 2 mm round the lock), so lengths part into pieces and the ends break up; ends a
+ *  the way there, 4 mm round the lock), so lengths part into pieces and the ends break up; ends a
  *  little uneven and a few flyaways (DETAIL_PARAMS' defaults: 1 % of the strands). Chosen by eye
  *  from renders of the long, bob and default presets, front, side and back: half-way onto locks
- *  1.5 cm apart, long hair still read as "a tube with straight sides" from behind. */
+ *  1.5 cm apart, long hair still read as "a tube with straight sides" from behind; with 2 mm
+ *  round the lock a bob's hem ended in spikes. */
 export const NEW_SESSION_DETAIL: HairDetail = {
-  clump: { factor: 0.8, shape: 0.5, tipSpread: 0.02, guideDistance: 0.25 },
+  clump: { factor: 0.8, shape: 0.5, tipSpread: 0.04, guideDistance: 0.25 },
   flyaway: defaultBlock('flyaway'),
   lengthJitter: 0.1,
 };
