@@ -4,7 +4,7 @@
 // fig1 (thirteen stream curves, four dividing curves and one ponytail); and `curly`, the default
 // style with curl, clumps and a little frizz (model/detail.ts); `braid`, `bun` and
 // `pigtail-braids`, the braid and bun curve kinds (solver-cpp/src/braid_bun.hpp); `empty`, a new
-// session: no curves, natural detail (NEW_SESSION_DETAIL).
+// session: no curves. All but the paper's figures start with natural detail (NEW_SESSION_DETAIL).
 
 import { DEFAULT_HAIR_LOOK, type HairLook } from './hairLook';
 import { shadeById, withShade } from './hairShades';
