@@ -26,6 +26,7 @@ enum EngineSetting : size_t {
   kSettingCompactBun,   // a bun is a round knot of wraps (HairEngine::setCompactBun)
   kSettingClumpAll,     // every strand finds a clump whose path it shares (setClumpAll)
   kSettingFaceClear,    // governed hair parts round the face too (HairEngine::setFaceClear)
+  kSettingLocks,        // detail keeps strands within their length (HairEngine::setLocks)
   kEngineSettingCount
 };
 

@@ -233,6 +233,7 @@ Status HairEngine::setSettings(const double* values, size_t count) {
   setCompactBun(values[kSettingCompactBun] != 0);
   setClumpAll(values[kSettingClumpAll] != 0);
   setFaceClear(values[kSettingFaceClear] != 0);
+  setLocks(values[kSettingLocks] != 0);
   const Status sh = setShape(values[kSettingShape] != 0, values[kSettingVolume]);
   if (!sh.ok()) return sh;
   const Status f = setFinish(values[kSettingFinish] != 0);

@@ -117,6 +117,11 @@ class HairEngine {
   // before (governed hair went where the strokes' blend took it, across the eyes in the air).
   void setFaceClear(bool on) { faceClear_ = on; }
   bool faceClear() const { return faceClear_; }
+  // Locks (strand_detail.hpp applyDetail's locks): detail that bends strands keeps each within
+  // the length it grew, and a tie's tail takes its clumps without their tip spread (it drew
+  // strands out across the band).
+  void setLocks(bool on) { locks_ = on; }
+  bool locks() const { return locks_; }
   // Finished edges: every strand not laid into a tie ends up to kEndSpread short of where it
   // grew to (strand_detail.hpp applyDetail's endSpread), seeded per strand; lone roots are not
   // grown (scalp_roots.hpp dropLoneRoots); with fall the prior opens the face (hair_fall.hpp);
@@ -252,6 +257,7 @@ class HairEngine {
   bool compactBun_ = false;
   bool clumpAll_ = false;
   bool faceClear_ = false;
+  bool locks_ = false;
   bool finish_ = false;
   ShapeRules shape_;
   std::vector<std::vector<Eigen::Vector3f>> partings_;  // the dividing curves of the last setCurves

@@ -231,11 +231,11 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
       }
     // (ties on) hair a tie lays keeps its length: a tail ends where its stroke ends, with the
     // tie's own uneven ends (gathered_tail.hpp), so its strands take their group's detail without
-    // the length jitter (which cut tails up to a tenth short of their strokes' ends) and the
-    // clumps' tip spread (which drew strands out across the band: 4 mm of it); hair wound
-    // into a bun's coil, without flyaways and frizz too (a bun is wound tight and its ends tucked:
-    // a new session's 1 % of flyaways stood round it as a wiry grey halo). (curl volume on) hair
-    // a tie lays keeps the shape the tie gives it: it curls but does not spread.
+    // the length jitter (which cut tails up to a tenth short of their strokes' ends) and, with
+    // lengths kept, the clumps' tip spread (4 mm of it drew strands out across the band); hair
+    // wound into a bun's coil, without flyaways and frizz too (a bun is wound tight and its ends
+    // tucked: a new session's 1 % of flyaways stood round it as a wiry grey halo). (curl volume on)
+    // hair a tie lays keeps the shape the tie gives it: it curls but does not spread.
     if ((ties_ || curlVolume_) && anyDetail) {
       const size_t own = groups.size();
       std::vector<int64_t> tiedGroup(2 * own, -1);  // [g]: a tail's, [own + g]: a bun's
@@ -244,17 +244,15 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
         const uint32_t g = groupOf[st];
         if (g >= own) continue;
         const DetailParams& d = groups[g];
-        const bool keep = ties_ && (d.lengthJitter > 0 || d.clump.tipSpread > 0);
+        const bool keep = ties_ && (d.lengthJitter > 0 || (locks_ && d.clump.tipSpread > 0));
         const bool bun = ties_ && inBun[st] && (d.flyaway.share > 0 || d.frizz.distance > 0);
         const bool spread = d.curl.spread > 0 && d.curl.radius > 0;
         if (!keep && !bun && !spread) continue;
         const size_t slot = bun ? own + g : g;
         if (tiedGroup[slot] < 0) {
           DetailParams tied = groups[g];
-          if (ties_) {
-            tied.lengthJitter = 0;
-            tied.clump.tipSpread = 0;
-          }
+          if (ties_) tied.lengthJitter = 0;
+          if (ties_ && locks_) tied.clump.tipSpread = 0;
           tied.curl.spread = 0;
           if (bun) {
             tied.flyaway.share = 0;
@@ -273,7 +271,7 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
     // hair lying on the head has no flyaways (they stood up as spikes on a slicked crown)
     s = applyDetail(groups, groupOf, key, rp.seed, strands_, 255, finish_ ? &endSpread : nullptr,
                     finish_, &centre_, strands_.flags.size() == n ? &strands_.flags : nullptr,
-                    clumpAll_);
+                    clumpAll_, locks_);
     // cutting ends back moves no point: only detail needs keeping outside again
     if (head && anyDetail) {
       keepOutsideHead(*head, float(gp.margin), strands_);

@@ -49,7 +49,7 @@ Status applyDetail(const std::vector<DetailParams>& groups, const std::vector<ui
                    const std::vector<uint32_t>& key, uint32_t seed, Strands& strands, int maxPoints,
                    const std::vector<float>* endSpread, bool ringlets,
                    const Eigen::Vector3d* headCentre, const std::vector<uint8_t>* flags,
-                   bool clumpAll) {
+                   bool clumpAll, bool locks) {
   using namespace strand_detail;
   auto invalid = [](std::string m) {
     return Status::Error(StatusCode::InvalidInput, std::move(m));
@@ -152,7 +152,8 @@ Status applyDetail(const std::vector<DetailParams>& groups, const std::vector<ui
     for (size_t g = 0; g < groups.size(); ++g) {
       const ClumpParams& c = groups[g].clump;
       if (c.factor > 0 && c.guideDistance > 0 && members[g].size() >= 2)
-        clumpGroup(c, members[g], key, seed, strands, w, ringlets ? &phaseKey : nullptr, clumpAll);
+        clumpGroup(c, members[g], key, seed, strands, w, ringlets ? &phaseKey : nullptr, clumpAll,
+                   locks);
     }
   }
 
@@ -165,7 +166,7 @@ Status applyDetail(const std::vector<DetailParams>& groups, const std::vector<ui
       const FlyawayParams& f = groups[groupOf[s]].flyaway;
       if (count < 2 || flagged(s, kLiesOnHead) || !flyawayPicked(f, seed, key[s])) continue;
       load(P + 3 * size_t(start[s]), count, w.p);
-      flyaway(f, seed, key[s], centre, w);
+      flyaway(f, seed, key[s], centre, w, locks);
       store(w.p, P + 3 * size_t(start[s]));
     }
   }

@@ -157,11 +157,16 @@ Status validateDetail(const DetailParams& d);
 // distances, at least 10 cm: round the other side of the head or of a parting) is clumped to the
 // next nearest guide whose path stays with it, instead of not at all (each such strand curled on
 // its own: with curls, 3.5 % of long curly hair stood round it as a wiry halo of lone loops).
+// locks (the rules locks 2.5 cm apart need): a strand clumping or a flyaway made longer than it
+// grew is cut back to that length and resampled to its point count, so the maximum length stays
+// a maximum (locks 2.5 cm apart lengthened hair grown to 60 cm to 61.5 cm); curl, which winds a
+// strand, is not held to it.
 Status applyDetail(const std::vector<DetailParams>& groups, const std::vector<uint32_t>& groupOf,
                    const std::vector<uint32_t>& key, uint32_t seed, Strands& strands,
                    int maxPoints = 255, const std::vector<float>* endSpread = nullptr,
                    bool ringlets = false, const Eigen::Vector3d* headCentre = nullptr,
-                   const std::vector<uint8_t>* flags = nullptr, bool clumpAll = false);
+                   const std::vector<uint8_t>* flags = nullptr, bool clumpAll = false,
+                   bool locks = false);
 
 // The end spread of sessions with finished edges (world units: 1.2 cm), and the most of a
 // strand's length it may take.

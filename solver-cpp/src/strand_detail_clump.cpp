@@ -88,7 +88,7 @@ constexpr double kNextGuideReach = 0.3;
 
 void clumpGroup(const ClumpParams& c, const std::vector<uint32_t>& members,
                 const std::vector<uint32_t>& key, uint32_t seed, Strands& strands, Work& w,
-                std::vector<uint32_t>* phaseKey, bool nextGuide) {
+                std::vector<uint32_t>* phaseKey, bool nextGuide, bool locks) {
   const size_t M = members.size();
   const uint32_t* start = strands.strandStart.data();
   float* P = strands.points.data();
@@ -254,7 +254,7 @@ void clumpGroup(const ClumpParams& c, const std::vector<uint32_t>& members,
         w.p[i] += c.tipSpread * x * (cPhi * nrm + sPhi * t.cross(nrm));
       }
     }
-    keepLength(w.p, w.s, L, w.q);
+    if (locks) keepLength(w.p, w.s, L, w.q);
     store(w.p, P + 3 * size_t(start[s]));
   };
   const int chunks = int(std::min<size_t>(size_t(parallel::threadCount()) * 4, M / 256 + 1));

@@ -31,7 +31,8 @@ bool flyawayPicked(const FlyawayParams& f, uint32_t seed, uint32_t key) {
   return strandRng(seed, key, kStreamFlyaway).uniform() < f.share;
 }
 
-void flyaway(const FlyawayParams& f, uint32_t seed, uint32_t key, const V3& centre, Work& w) {
+void flyaway(const FlyawayParams& f, uint32_t seed, uint32_t key, const V3& centre, Work& w,
+             bool locks) {
   std::vector<V3>& p = w.p;
   const size_t n = p.size();
   if (n < 2) return;
@@ -63,7 +64,7 @@ void flyaway(const FlyawayParams& f, uint32_t seed, uint32_t key, const V3& cent
     w.q[i] = f.distance * u * u * (c * r + sn * b) + bend * bump * bump * b;
   }
   for (size_t i = 0; i < n; ++i) p[i] += w.q[i];
-  keepLength(p, w.s, L, w.q);
+  if (locks) keepLength(p, w.s, L, w.q);
 }
 
 }  // namespace hairsketch::strand_detail

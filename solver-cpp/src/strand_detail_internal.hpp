@@ -92,7 +92,7 @@ void cutAt(std::vector<V3>& p, std::vector<double>& s, double len);
 
 // Keeps a strand that detail moved (clump, flyaway: detail that bends, not curls) within its
 // length before, len: longer, it is cut there and resampled to its point count (q: scratch), so
-// the maximum length stays a maximum (s: arc lengths, recomputed).
+// the maximum length stays a maximum (s: arc lengths, recomputed). applyDetail's locks.
 void keepLength(std::vector<V3>& p, std::vector<double>& s, double len, std::vector<V3>& q);
 
 // Rotation-minimising frame along p (double reflection, Wang et al. 2008): vertex tangents T (the
@@ -127,17 +127,20 @@ void curlAndFrizz(const DetailParams& d, uint32_t seed, uint32_t key, uint32_t p
 // Clump of one group's strands (members, each with >= 2 points), in place.
 // phaseKey (optional): a clumped strand's entry becomes its guide's key. nextGuide: a strand
 // whose path parts from its nearest guide's is clumped to the next nearest whose path stays with
-// it (applyDetail's clumpAll); off, it is not clumped.
+// it (applyDetail's clumpAll); off, it is not clumped. locks (applyDetail's): a strand clumping
+// made longer is cut back to its length (keepLength).
 void clumpGroup(const ClumpParams& c, const std::vector<uint32_t>& members,
                 const std::vector<uint32_t>& key, uint32_t seed, Strands& strands, Work& w,
-                std::vector<uint32_t>* phaseKey, bool nextGuide = false);
+                std::vector<uint32_t>* phaseKey, bool nextGuide = false, bool locks = false);
 
 // Flyaway (strand_detail_flyaway.cpp).
 
 // Whether the strand of `key` is a flyaway (its seeded pick; false when share or distance is 0).
 bool flyawayPicked(const FlyawayParams& f, uint32_t seed, uint32_t key);
 
-// Moves a picked strand (w.p, in place) away from `centre` past f.start of its length.
-void flyaway(const FlyawayParams& f, uint32_t seed, uint32_t key, const V3& centre, Work& w);
+// Moves a picked strand (w.p, in place) away from `centre` past f.start of its length (within
+// its length with locks: keepLength).
+void flyaway(const FlyawayParams& f, uint32_t seed, uint32_t key, const V3& centre, Work& w,
+             bool locks = false);
 
 }  // namespace hairsketch::strand_detail

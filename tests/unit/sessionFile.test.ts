@@ -29,6 +29,7 @@ function sample(): SessionState {
     compactBun: _compactBun,
     clumpAll: _clumpAll,
     faceClear: _faceClear,
+    locks: _locks,
     ...s
   } = emptySession('50k');
   return {

@@ -240,7 +240,7 @@ describe('links with a head, scalp strokes and a mirror plane', () => {
 
   it('carry no mesh, and the strokes compactly; without them a link is what it was', async () => {
     // without the fields added since version 2 (the head, strokes, plane; natural fall, sections,
-    // finished edges, the bust, the colour model, hair detail)
+    // finished edges, the bust, the colour model, hair detail and its locks)
     const {
       fall: _fall,
       sections: _sections,
@@ -248,6 +248,7 @@ describe('links with a head, scalp strokes and a mirror plane', () => {
       bust: _bust,
       hairLook: _look,
       detail: _detail,
+      locks: _locks,
       ...v2Fields
     } = base;
     const plain = packSession(v2Fields);

@@ -108,6 +108,7 @@ describe('every preset session passes the reader and round-trips', () => {
       compactBun,
       clumpAll,
       faceClear,
+      locks,
       ...beforeFall
     } = emptySession('25k');
     expect(roundPlaits).toBe(true);
@@ -115,6 +116,7 @@ describe('every preset session passes the reader and round-trips', () => {
     expect(compactBun).toBe(true);
     expect(clumpAll).toBe(true);
     expect(faceClear).toBe(true);
+    expect(locks).toBe(true);
     expect(coilVolume).toBe(true);
     expect(nape).toBe(true);
     expect(curlVolume).toBe(true);
@@ -150,6 +152,7 @@ describe('every preset session passes the reader and round-trips', () => {
         compactBun: true,
         clumpAll: true,
         faceClear: true,
+        locks: true,
       }),
     ).toEqual(emptySession('25k'));
   });

@@ -42,6 +42,7 @@ function full(): SessionState {
     compactBun: true,
     clumpAll: true,
     faceClear: true,
+    locks: true,
     bandColor: '#d02060',
     detail: { lengthJitter: 0.2 },
     scalpPaint: [{ erase: true, radius: 0.3, points: [[0, 1, 0]] }],
@@ -92,6 +93,7 @@ describe('session schema', () => {
       'compactBun',
       'clumpAll',
       'faceClear',
+      'locks',
       'detail',
     ]);
     expect(needsSolve(s, { ...s })).toBe(false);
@@ -167,8 +169,9 @@ describe('engine settings', () => {
         compactBun: false,
         clumpAll: true,
         faceClear: false,
+        locks: true,
       }),
-    ]).toEqual([1, 0, 0, 1, 0, 1, 0.12, 0, 1, 0, 1, 1, 0, 1, 0, 1, 0]);
+    ]).toEqual([1, 0, 0, 1, 0, 1, 0.12, 0, 1, 0, 1, 1, 0, 1, 0, 1, 0, 1]);
     expect([
       ...engineSettings({
         avoidScalp: false,
@@ -188,7 +191,8 @@ describe('engine settings', () => {
         compactBun: true,
         clumpAll: false,
         faceClear: true,
+        locks: false,
       }),
-    ]).toEqual([0, 1, 1, 0, 1, 0, 0, 1, 0, 1, 0, 0, 1, 0, 1, 0, 1]);
+    ]).toEqual([0, 1, 1, 0, 1, 0, 0, 1, 0, 1, 0, 0, 1, 0, 1, 0, 1, 0]);
   });
 });

@@ -351,6 +351,7 @@ export function applyPreset(s: SessionState, name: PresetName, ctx: PresetContex
     compactBun,
     clumpAll,
     faceClear,
+    locks,
     bust,
     ...rest
   } = s;
@@ -390,6 +391,8 @@ export function applyPreset(s: SessionState, name: PresetName, ctx: PresetContex
     ...(compactBun && name === 'empty' ? { compactBun } : {}),
     ...(clumpAll && name === 'empty' ? { clumpAll } : {}),
     ...(faceClear && name === 'empty' ? { faceClear } : {}),
+    // the presets that start with natural detail keep their lengths with it
+    ...(locks && fall ? { locks } : {}),
     ...(bust ? { bust } : {}),
     growth,
     curves,

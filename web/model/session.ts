@@ -230,6 +230,7 @@ export function emptySession(
     compactBun: true,
     clumpAll: true,
     faceClear: true,
+    locks: true,
   };
 }
 

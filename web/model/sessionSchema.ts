@@ -122,6 +122,12 @@ export const SESSION_SETTINGS = {
    *  at a centre part between two bang strokes hung across the eyes in the air, a veil in
    *  profile). On in every new session; off, sessions made before. */
   faceClear: { type: 'flag', hair: 'request' },
+  /** Locks (solver-cpp/src/strand_detail.hpp applyDetail's locks), the rules locks 2.5 cm apart
+   *  need: detail that bends strands (clumps, flyaways) keeps each within the length it grew, so
+   *  the maximum length stays a maximum; a tie's tail takes its clumps without their tip spread
+   *  (strands stay in their band). On in every new session and the presets with natural detail;
+   *  off, sessions made before. */
+  locks: { type: 'flag', hair: 'request' },
 } as const satisfies Record<string, SettingSpec>;
 
 export type SessionSettingName = keyof typeof SESSION_SETTINGS;
