@@ -122,7 +122,8 @@ describe('the reader and session.fall', () => {
     expect(s.fall).toBe(true);
     expect(packHairOptions(s, s.curves).fall).toBe(true);
     expect(read(JSON.parse(JSON.stringify(s)))).toEqual(s);
-    // one key order, whatever the input's: avoidScalp, fall, sections, finish, bust, then detail
+    // one key order, whatever the input's: avoidScalp, fall, sections, finish, bust, (the
+    // default preset's) locks, then detail
     const all = read({
       detail: { lengthJitter: 0.1 },
       sections: true,
@@ -137,6 +138,7 @@ describe('the reader and session.fall', () => {
       'sections',
       'finish',
       'bust',
+      'locks',
       'detail',
     ]);
   });

@@ -180,6 +180,7 @@ describe('version 2 links', () => {
       finish: _e,
       bust: _b,
       hairLook: _l,
+      locks: _k,
       ...plain
     } = presetSession('default', head);
     const body = packSession(plain);
