@@ -153,7 +153,7 @@ Status applyDetail(const std::vector<DetailParams>& groups, const std::vector<ui
       const ClumpParams& c = groups[g].clump;
       if (c.factor > 0 && c.guideDistance > 0 && members[g].size() >= 2)
         clumpGroup(c, members[g], key, seed, strands, w, ringlets ? &phaseKey : nullptr, clumpAll,
-                   locks);
+                   locks, locks && !(groups[g].curl.radius > 0) ? kLockLength : 0.0);
     }
   }
 

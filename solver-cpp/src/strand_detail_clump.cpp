@@ -88,7 +88,7 @@ constexpr double kNextGuideReach = 0.3;
 
 void clumpGroup(const ClumpParams& c, const std::vector<uint32_t>& members,
                 const std::vector<uint32_t>& key, uint32_t seed, Strands& strands, Work& w,
-                std::vector<uint32_t>* phaseKey, bool nextGuide, bool locks) {
+                std::vector<uint32_t>* phaseKey, bool nextGuide, bool locks, double lockLength) {
   const size_t M = members.size();
   const uint32_t* start = strands.strandStart.data();
   float* P = strands.points.data();
@@ -237,6 +237,7 @@ void clumpGroup(const ClumpParams& c, const std::vector<uint32_t>& members,
     // different sides of the head, or either side of a parting further on) is not clumped: a
     // blend of the two paths would cut through the head.
     if (partsFrom(s, best, w)) return;
+    const double reach = lockLength > 0 ? std::min(1.0, L / lockLength) : 1.0;
     if (phaseKey) (*phaseKey)[s] = key[G];
     size_t j = 0;
     for (size_t i = 1; i < count; ++i) {
@@ -244,7 +245,7 @@ void clumpGroup(const ClumpParams& c, const std::vector<uint32_t>& members,
       const double u = locate(gArc, gCount, w.s[i] * along, j);
       const V3 a(gp[3 * j], gp[3 * j + 1], gp[3 * j + 2]);
       const V3 b(gp[3 * j + 3], gp[3 * j + 4], gp[3 * j + 5]);
-      const double wgt = c.factor * S(x);
+      const double wgt = c.factor * S(x) * reach;
       w.p[i] = (1 - wgt) * w.p[i] + wgt * lerp(a, b, u);
       if (spread) {
         const size_t o = guideAt[size_t(best)] + j;

@@ -128,10 +128,12 @@ void curlAndFrizz(const DetailParams& d, uint32_t seed, uint32_t key, uint32_t p
 // phaseKey (optional): a clumped strand's entry becomes its guide's key. nextGuide: a strand
 // whose path parts from its nearest guide's is clumped to the next nearest whose path stays with
 // it (applyDetail's clumpAll); off, it is not clumped. locks (applyDetail's): a strand clumping
-// made longer is cut back to its length (keepLength).
+// made longer is cut back to its length (keepLength). lockLength (> 0): a strand shorter is drawn
+// onto its guide the less by its length over it.
 void clumpGroup(const ClumpParams& c, const std::vector<uint32_t>& members,
                 const std::vector<uint32_t>& key, uint32_t seed, Strands& strands, Work& w,
-                std::vector<uint32_t>* phaseKey, bool nextGuide = false, bool locks = false);
+                std::vector<uint32_t>* phaseKey, bool nextGuide = false, bool locks = false,
+                double lockLength = 0);
 
 // Flyaway (strand_detail_flyaway.cpp).
 

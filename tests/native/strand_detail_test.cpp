@@ -263,10 +263,12 @@ TEST(StrandDetail, ClumpWithLinearShapeMovesHalfwayAtTheTip) {
   }
 }
 
-TEST(StrandDetail, LocksCutsAStrandClumpingLengthenedBackToItsLength) {
-  // The linear shear above lengthens the follower: its tip moves 0.5 D sideways, so its length
-  // is sqrt(1 + 0.025^2) (hand-computed: the sheared line from the root to (0.5 D, 1)). With
-  // locks it keeps length 1 and its point count, its points along the sheared line.
+TEST(StrandDetail, LocksDrawShortHairInLessAndKeepItsLength) {
+  // The linear shear above lengthens the follower: its tip moves f D sideways, so its length is
+  // sqrt(1 + (0.05 f)^2) (hand-computed: the sheared line from the root to (f D, 1)), f = 0.5.
+  // With locks, hair 10 cm long (a third of the 30 cm a strand needs to be drawn onto its lock in
+  // full) moves a third as far, f = 0.5 / 3, and is cut back to length 1 with its point count,
+  // its points along the sheared line.
   const V3 D(0.05, 0, 0);
   const std::vector<Strand> in = {straight(V3(0, 0, 0), V3(0, 1, 0), 21, 0.05),
                                   straight(D, V3(0, 1, 0), 21, 0.05)};
@@ -278,20 +280,21 @@ TEST(StrandDetail, LocksCutsAStrandClumpingLengthenedBackToItsLength) {
     for (size_t i = 1; i < p.size(); ++i) l += (p[i] - p[i - 1]).norm();
     return l;
   };
-  for (bool kept : {false, true}) {
+  for (bool locks : {false, true}) {
     Strands s = makeStrands(in);
     ASSERT_TRUE(
-        applyDetail({d}, {0, 0}, {0, 1}, 7, s, 255, nullptr, false, nullptr, nullptr, false, kept)
+        applyDetail({d}, {0, 0}, {0, 1}, 7, s, 255, nullptr, false, nullptr, nullptr, false, locks)
             .ok());
+    const double f = locks ? 0.5 / 3 : 0.5;
     for (size_t k = 0; k < 2; ++k) {
       const Strand p = strandOf(s, k);
       ASSERT_EQ(p.size(), 21u);
       const bool guide = (p.back() - in[k].back()).norm() < 1e-7;
       if (guide) continue;
-      const double want = kept ? 1.0 : std::sqrt(1 + 0.025 * 0.025);
-      EXPECT_NEAR(length(p), want, 1e-6) << (kept ? "kept" : "not kept");
-      // on the sheared line from the root: x = root + 0.5 (y / 1) (towards the guide)
-      const double sx = (in[1 - k][0] - in[k][0]).x() * 0.5;
+      const double want = locks ? 1.0 : std::sqrt(1 + 0.05 * f * 0.05 * f);
+      EXPECT_NEAR(length(p), want, 1e-6) << (locks ? "locks" : "no locks");
+      // on the sheared line from the root: x = root + f y (towards the guide)
+      const double sx = (in[1 - k][0] - in[k][0]).x() * f;
       for (const V3& q : p) EXPECT_NEAR(q.x(), in[k][0].x() + sx * q.y(), 1e-6);
     }
   }
