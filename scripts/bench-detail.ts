@@ -19,7 +19,8 @@ import { writeBenchResults } from './benchResults.mjs';
 const wasmBinary = new Uint8Array(readFileSync('web/generated/hairsolver.wasm'));
 const head = Head.builtin();
 const strandCap = Number(process.argv[2] ?? 0);
-const base = presetSession('default', head, '25k', strandCap);
+// the default preset's strokes and settings without its own natural detail (each case sets one)
+const { detail: _presetDetail, ...base } = presetSession('default', head, '25k', strandCap);
 const grid = gridForSession(base.grid, base.curves, undefined, hangLength(base));
 const cases: Array<[string, HairDetail | undefined]> = [
   ['none', undefined],
