@@ -232,7 +232,7 @@ Status HairEngine::grow(const RootParams& rp, const GrowthParams& gp) {
     // (ties on) hair a tie lays keeps its length: a tail ends where its stroke ends, with the
     // tie's own uneven ends (gathered_tail.hpp), so its strands take their group's detail without
     // the length jitter (which cut tails up to a tenth short of their strokes' ends) and, with
-    // lengths kept, the clumps' tip spread (4 mm of it drew strands out across the band); hair
+    // locks, the clumps' tip spread (4 mm of it drew strands out across the band); hair
     // wound into a bun's coil, without flyaways and frizz too (a bun is wound tight and its ends
     // tucked: a new session's 1 % of flyaways stood round it as a wiry grey halo). (curl volume on)
     // hair a tie lays keeps the shape the tie gives it: it curls but does not spread.

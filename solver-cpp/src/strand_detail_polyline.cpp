@@ -56,8 +56,7 @@ void cutAt(std::vector<V3>& p, std::vector<double>& s, double len) {
 void keepLength(std::vector<V3>& p, std::vector<double>& s, double len, std::vector<V3>& q) {
   const size_t n = p.size();
   if (n < 2 || !(arcLengths(p, s) > len)) return;
-  cutAt(p, s, len);
-  if (p.size() < 2) return;
+  cutAt(p, s, len);  // leaves at least 2 points
   resampleEven(p, s, n, q);
   std::swap(p, q);
 }

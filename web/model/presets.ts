@@ -391,7 +391,7 @@ export function applyPreset(s: SessionState, name: PresetName, ctx: PresetContex
     ...(compactBun && name === 'empty' ? { compactBun } : {}),
     ...(clumpAll && name === 'empty' ? { clumpAll } : {}),
     ...(faceClear && name === 'empty' ? { faceClear } : {}),
-    // the presets that start with natural detail keep their lengths with it
+    // the presets that start with natural detail take the rules its locks need
     ...(locks && fall ? { locks } : {}),
     ...(bust ? { bust } : {}),
     growth,
