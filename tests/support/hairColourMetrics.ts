@@ -39,6 +39,15 @@ export function hsv(r: number, g: number, b: number): [number, number, number] {
   return [(h * 60 + 360) % 360, max > 0 ? d / max : 0, max / 255];
 }
 
+/** Whether the pixel at byte offset i is hair: its RGB differs from the bald picture's by more
+ *  than `threshold` (sum of absolute byte differences). */
+function isHair(a: Uint8Array, z: Uint8Array, i: number, threshold: number): boolean {
+  return (
+    Math.abs(a[i] - z[i]) + Math.abs(a[i + 1] - z[i + 1]) + Math.abs(a[i + 2] - z[i + 2]) >
+    threshold
+  );
+}
+
 /** The hair's pixels: those whose RGB differs from the bald picture's by more than `threshold`
  *  (sum of absolute byte differences). */
 export function hairColour(withHair: Rgba, bald: Rgba, threshold = 24): HairColourFigures {
@@ -52,9 +61,7 @@ export function hairColour(withHair: Rgba, bald: Rgba, threshold = 24): HairColo
   const a = withHair.rgba;
   const z = bald.rgba;
   for (let i = 0; i < a.length; i += 4) {
-    const diff =
-      Math.abs(a[i] - z[i]) + Math.abs(a[i + 1] - z[i + 1]) + Math.abs(a[i + 2] - z[i + 2]);
-    if (diff <= threshold) continue;
+    if (!isHair(a, z, i, threshold)) continue;
     n++;
     const [h, s, v] = hsv(a[i], a[i + 1], a[i + 2]);
     const w = s * v;
@@ -168,6 +175,24 @@ export function skinThroughHair(
 export function hueDistance(a: number, b: number): number {
   const d = Math.abs(a - b) % 360;
   return d > 180 ? 360 - d : d;
+}
+
+/** Of the hair's pixels (as hairColour finds them), the share redder than `hue` (degrees) by
+ *  more than `by` and saturated (HSV saturation over 0.5, value over 0.12): a red glow on hair of
+ *  that body hue. */
+export function redderShare(withHair: Rgba, bald: Rgba, hue: number, by = 6, threshold = 24) {
+  const a = withHair.rgba;
+  const z = bald.rgba;
+  let n = 0;
+  let red = 0;
+  for (let i = 0; i < a.length; i += 4) {
+    if (!isHair(a, z, i, threshold)) continue;
+    n++;
+    const [h, s, v] = hsv(a[i], a[i + 1], a[i + 2]);
+    const redder = ((hue - h + 540) % 360) - 180;
+    if (redder > by && s > 0.5 && v > 0.12) red++;
+  }
+  return n ? red / n : 0;
 }
 
 /** How the key light's highlight stands out over the top of the hair (ring- and

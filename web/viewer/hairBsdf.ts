@@ -23,7 +23,7 @@
 //   where f_spread and f_back′ have every width widened by σ_f² and f_spread's lobes are spread
 //   evenly in azimuth (each lobe's attenuation / π).
 
-/** GLSL: hairBaseColor(σ), hairBsdf(T, L, V, sigma, beta, shadowT). */
+/** GLSL: hairBaseColor(σ), hairBsdf(T, L, V, sigma, beta, shadowT, headT). */
 export const HAIR_BSDF_GLSL = /* glsl */ `
 const float HAIR_D = 5.888415; // Chiang 2016's D(0.3)
 const float HAIR_F0 = 0.046;
@@ -57,10 +57,15 @@ float hairR(vec3 T, vec3 L, vec3 V, float beta) {
 }
 // Light leaving towards V from a strand of tangent T lit from L (unit vectors), per unit of
 // light reaching the hair's outer layer; sigma: the absorption σa (C = exp(−√σa D), so powers
-// of C are exponentials of √σa); shadowT: the transmittance towards the light. The same in both
+// of C are exponentials of √σa); shadowT: the transmittance towards the light through hair;
+// headT: the share of the light the head lets by (its terminator, wrapped: strandShaders.ts),
+// which scales all of it. The head is opaque: taken as hairs crossed (the two transmittances
+// multiplied), the light scattered forward "through" it kept only its red on dark hair, a
+// red-orange glow on the back and sides of a brown bob (a judge's "reddish band down the side",
+// an "orange hot spot" on the crown). The same in both
 // qualities: Fast's lines once left out the spread single scattering (cheaper per vertex; no
 // cost measured at 25K), and drew light hair and lighter tips a tenth darker than High.
-vec3 hairBsdf(vec3 T, vec3 L, vec3 V, vec3 sigma, float beta, float shadowT) {
+vec3 hairBsdf(vec3 T, vec3 L, vec3 V, vec3 sigma, float beta, float shadowT, float headT) {
   vec3 lnC = -sqrt(max(sigma, 0.0)) * HAIR_D; // ln of the base colour
   float sinL = clamp(dot(T, L), -1.0, 1.0);
   float sinV = clamp(dot(T, V), -1.0, 1.0);
@@ -113,6 +118,6 @@ vec3 hairBsdf(vec3 T, vec3 L, vec3 V, vec3 sigma, float beta, float shadowT) {
     + af * hairG(sqrt(B.y * B.y + sf2), x - 0.035)
     + aTRT * hairG(sqrt(B.z * B.z + sf2), x - 0.14)) / HAIR_PI;
   vec3 scattered = reach * HAIR_DF * (spread + HAIR_PI * HAIR_DB * backSpread);
-  return direct + scattered;
+  return headT * (direct + scattered);
 }
 `;

@@ -242,12 +242,15 @@ vec3 shadeStrand(vec3 T, vec3 P, vec2 along, vec4 rnd, vec2 light, float turn) {
   // the hair lying on it (wrapped as light scattered through a head of hair is), so High's
   // hard-edged head shadow in the maps meets hair already in half light instead of drawing a
   // line across the back, and Fast's back is as dark as High's (the same look in both); wrapped
-  // from N.L -0.7 to 0.7: from -0.2 to 0.5 the light ended over the crown's tight curve, a lit
-  // cap with a hard rim on the back of long hair
-  shadow *= smoothstep(-0.7, 0.7, dot(N, keyDirection));
+  // from N.L -1.1 to 0.7: from -0.2 to 0.5 the light ended over the crown's tight curve, a lit
+  // cap with a hard rim on the back of long hair. It scales the key's light (hairBsdf's headT),
+  // not the hair's transmittance: as hairs crossed, the light scattered forward round the head
+  // kept only its red on dark hair (a red band down a brown bob's side); wrapped from -0.7 there
+  // as before, the back lost that glow's light and Silver read grey (value 0.51)
+  float headSide = smoothstep(-1.1, 0.7, dot(N, keyDirection));
   // root darkening: occlusion towards the scalp, on top of the hair's own occlusion
   float rootAo = mix(1.0 - rootDarkening, 1.0, smoothstep(0.0, 0.3, along.x));
-  vec3 key = keyColor * bsdfGain * hairBsdf(Ts, keyDirection, V, sigma, beta, shadow);
+  vec3 key = keyColor * bsdfGain * hairBsdf(Ts, keyDirection, V, sigma, beta, shadow, headSide);
   // fill and sky: the base colour (what a head of this hair scatters back), occluded
   vec3 base = hairBaseColor(sigma);
   float TF = dot(T, fillDirection);
