@@ -283,7 +283,10 @@ describe.runIf(DIST_BUILT)('hair colour as drawn', () => {
     // (hair luma 1.09 times High's; a judge: 'Fast and High disagree, High darker at the back')
     const [f, h] = [0, 1].map((q) => hairColour(readPng(hair[q]), readPng(none[q])).luma);
     console.log(`long from behind: hair luma Fast / High ${(f / h).toFixed(3)}`);
-    expect(Math.abs(f / h - 1)).toBeLessThan(0.05);
+    // (1.02 with the head's terminator on all of the hair; 1.058 with it fading out over the
+    // lengths hanging free of the head, whose shadow the two qualities then take from the grid
+    // and from the maps: the issue's bound is 15 %)
+    expect(Math.abs(f / h - 1)).toBeLessThan(0.07);
     // and no lit cap over the crown: with the key light wrapped only from N.L -0.2 to 0.5 round
     // the head, the light ended where the hair turns over the crown, a bright cap with a hard rim
     // (a judge: "a hard lit cap boundary"); lightRim (the 90th percentile of the shading's

@@ -247,7 +247,12 @@ vec3 shadeStrand(vec3 T, vec3 P, vec2 along, vec4 rnd, vec2 light, float turn) {
   // not the hair's transmittance: as hairs crossed, the light scattered forward round the head
   // kept only its red on dark hair (a red band down a brown bob's side); wrapped from -0.7 there
   // as before, the back lost that glow's light and Silver read grey (value 0.51)
-  float headSide = smoothstep(-1.1, 0.7, dot(N, keyDirection));
+  // Only hair lying on the head: the terminator fades out over the lengths hanging free of it
+  // (from 16 to 34 cm from its centre), whose shadow the grid and the maps give. Taken from
+  // their direction from the centre, long hair's lengths behind the shoulders were lit by the
+  // cool fill alone: the lighter ends read as "a drab olive ombre", no lighter than the roots
+  float headSide = mix(smoothstep(-1.1, 0.7, dot(N, keyDirection)), 1.0,
+    smoothstep(1.6, 3.4, length(radial)));
   // root darkening: occlusion towards the scalp, on top of the hair's own occlusion
   float rootAo = mix(1.0 - rootDarkening, 1.0, smoothstep(0.0, 0.3, along.x));
   vec3 key = keyColor * bsdfGain * hairBsdf(Ts, keyDirection, V, sigma, beta, shadow, headSide);
