@@ -66,9 +66,9 @@ describe('presets', () => {
     const curly = applyPreset(emptySession('25k'), 'curly', ctx);
     expect(curly.curves).toEqual(applyPreset(emptySession('25k'), 'default', ctx).curves);
     expect(curly.detail).toEqual({
-      curl: { radius: 0.1, frequency: 2, start: 0.15, randomOffset: 1 },
-      clump: { factor: 0.7, shape: 0.3, tipSpread: 0.02, guideDistance: 0.12 },
-      frizz: { distance: 0.006, shape: 0.5 },
+      curl: { radius: 0.09, frequency: 2.4, start: 0.15, randomOffset: 1 },
+      clump: { factor: 0.92, shape: 0.15, tipSpread: 0.01, guideDistance: 0.16 },
+      frizz: { distance: 0.003, shape: 0.5 },
       lengthJitter: 0.15,
     });
     const read = parseSession(JSON.parse(JSON.stringify(curly)));

@@ -1,8 +1,8 @@
 // Curl types a stylist names: the hair typing stylists use (1 straight, 2A–2C wavy, 3A–3C curly,
 // 4A–4C coily), each as the detail that makes it (model/detail.ts): a curl of the type's radius
 // and turns, ramping in over the first 12 % of the hair (a curl rolling from the very root
-// makes barrel rolls across the crown, a stylist saw), wound in locks (a clump per
-// lock: with finished edges each lock's radius and frequency vary by a seeded ±25 % and half the
+// makes barrel rolls across the crown, a stylist saw), wound in locks (a clump per lock,
+// curly types' held tight: lockHold; with finished edges each lock's radius and frequency vary by a seeded ±25 % and half the
 // locks wind the other way, docs/natural-fall.md "Ringlets"), and no frizz (a wiry halo is not a
 // curl type). Radii and turns are for a curl's helix: the diameter a lock winds round (a 3A curl
 // round sidewalk chalk, 3C a pencil, 4A a crochet needle) and its pitch, about three diameters
@@ -24,6 +24,10 @@ export interface CurlType {
    *  rules): curly and coily hair stands off the head at its roots, a spring of hair on hair,
    *  where straight and wavy hair lies on it; none for waves. */
   rootLift?: number;
+  /** How far a lock's strands are drawn onto it (its clump factor; 0.7 when absent): curly
+   *  types hold theirs tight, each lock one spiral ringlet (at 0.7, loose bundles of curls read
+   *  as "rows of flat scallops, like fish scales"). */
+  lockHold?: number;
 }
 
 export const CURL_TYPES: readonly CurlType[] = [
@@ -49,6 +53,7 @@ export const CURL_TYPES: readonly CurlType[] = [
     frequency: [2.2, 2.8],
     lock: 0.18,
     rootLift: 0.1,
+    lockHold: 0.92,
   },
   {
     id: '3B',
@@ -57,6 +62,7 @@ export const CURL_TYPES: readonly CurlType[] = [
     frequency: [3, 3.8],
     lock: 0.15,
     rootLift: 0.1,
+    lockHold: 0.92,
   },
   {
     id: '3C',
@@ -65,6 +71,7 @@ export const CURL_TYPES: readonly CurlType[] = [
     frequency: [4.2, 5.4],
     lock: 0.12,
     rootLift: 0.1,
+    lockHold: 0.92,
   },
   {
     id: '4A',
@@ -107,7 +114,7 @@ export function detailForCurlType(id: string, d: HairDetail | undefined): HairDe
     ...rest,
     curl: { radius: mid(t.radius), frequency: mid(t.frequency), start: 0.12, randomOffset: 1 },
     // locks: strands drawn most of the way onto their lock, loosening towards the tips
-    clump: { factor: 0.7, shape: 0.3, tipSpread: 0.01, guideDistance: t.lock },
+    clump: { factor: t.lockHold ?? 0.7, shape: 0.3, tipSpread: 0.01, guideDistance: t.lock },
   };
 }
 

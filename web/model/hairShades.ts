@@ -44,7 +44,9 @@ export const HAIR_SHADES: readonly HairShade[] = [
   shade('strawberry', 'Strawberry blonde', 0.015, 1, '#ffb0a0'),
   shade('copper', 'Copper', 0.045, 1, '#ff8250'),
   shade('auburn', 'Auburn', 0.3, 1, '#ff8070'),
-  shade('salt-pepper', 'Salt and pepper', 0.85, 0.1, null, 40),
+  // a quarter of the strands grey: at 40 %, the white strands (brighter than the black ones by
+  // far) took over and the hair read "an even mid grey", not dark hair with white through it
+  shade('salt-pepper', 'Salt and pepper', 0.85, 0.1, null, 25),
   shade('silver', 'Silver', 0.35, 0.25, '#cdd6ec', 85),
 ];
 
