@@ -123,7 +123,7 @@ describe('the reader and session.fall', () => {
     expect(packHairOptions(s, s.curves).fall).toBe(true);
     expect(read(JSON.parse(JSON.stringify(s)))).toEqual(s);
     // one key order, whatever the input's: avoidScalp, fall, sections, finish, bust, (the
-    // default preset's) soft hairline and locks, then detail
+    // default preset's) locks, then detail
     const all = read({
       detail: { lengthJitter: 0.1 },
       sections: true,
@@ -138,7 +138,6 @@ describe('the reader and session.fall', () => {
       'sections',
       'finish',
       'bust',
-      'hairline',
       'locks',
       'detail',
     ]);

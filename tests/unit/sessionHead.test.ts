@@ -240,7 +240,7 @@ describe('links with a head, scalp strokes and a mirror plane', () => {
 
   it('carry no mesh, and the strokes compactly; without them a link is what it was', async () => {
     // without the fields added since version 2 (the head, strokes, plane; natural fall, sections,
-    // finished edges, the bust, the colour model, hair detail, its locks and the soft hairline)
+    // finished edges, the bust, the colour model, hair detail and its locks)
     const {
       fall: _fall,
       sections: _sections,
@@ -249,7 +249,6 @@ describe('links with a head, scalp strokes and a mirror plane', () => {
       hairLook: _look,
       detail: _detail,
       locks: _locks,
-      hairline: _hairline,
       ...v2Fields
     } = base;
     const plain = packSession(v2Fields);

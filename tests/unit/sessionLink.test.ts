@@ -181,7 +181,6 @@ describe('version 2 links', () => {
       bust: _b,
       hairLook: _l,
       locks: _k,
-      hairline: _h,
       ...plain
     } = presetSession('default', head);
     const body = packSession(plain);

@@ -382,9 +382,7 @@ export function applyPreset(s: SessionState, name: PresetName, ctx: PresetContex
     // ties from any hand and round plaits: a new session's, and the tie presets' (their braids and
     // bun as one drawn today lays them: a band, hair combed into the tie, no shelf)
     ...(ties && (name === 'empty' || TIE_PRESETS.includes(name)) ? { ties } : {}),
-    // a soft hairline in every preset with natural fall, the one the app opens with too (its
-    // front and its parting read as "a hard wig line" without)
-    ...(hairline && fall ? { hairline } : {}),
+    ...(hairline && name === 'empty' ? { hairline } : {}),
     ...(curlVolume && name === 'empty' ? { curlVolume } : {}),
     ...(nape && name === 'empty' ? { nape } : {}),
     ...(coilVolume && name === 'empty' ? { coilVolume } : {}),
