@@ -177,20 +177,20 @@ export function hueDistance(a: number, b: number): number {
   return d > 180 ? 360 - d : d;
 }
 
-/** Of the hair's pixels (as hairColour finds them), the share redder than `hue` (degrees) by
- *  more than `by` and saturated (HSV saturation over 0.5, value over 0.12): a red glow on hair of
- *  that body hue. */
-export function redderShare(withHair: Rgba, bald: Rgba, hue: number, by = 6, threshold = 24) {
+/** Of the hair's coloured pixels (as hairColour finds them, with HSV saturation over 0.3 and
+ *  value over 0.1), the share whose hue is under `hue` degrees (taking 180-360 as negative): a
+ *  red glow on hair of a warmer hue. */
+export function hueBelowShare(withHair: Rgba, bald: Rgba, hue: number, threshold = 24): number {
   const a = withHair.rgba;
   const z = bald.rgba;
   let n = 0;
   let red = 0;
   for (let i = 0; i < a.length; i += 4) {
     if (!isHair(a, z, i, threshold)) continue;
-    n++;
     const [h, s, v] = hsv(a[i], a[i + 1], a[i + 2]);
-    const redder = ((hue - h + 540) % 360) - 180;
-    if (redder > by && s > 0.5 && v > 0.12) red++;
+    if (!(s > 0.3 && v > 0.1)) continue;
+    n++;
+    if ((h > 180 ? h - 360 : h) < hue) red++;
   }
   return n ? red / n : 0;
 }
