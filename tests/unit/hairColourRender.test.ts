@@ -132,28 +132,27 @@ describe.runIf(DIST_BUILT)('hair colour as drawn', () => {
     }
   });
 
-  it('dark brown shows no red glow round the head, from the side or behind', async () => {
-    // the bob in its Dark brown at 8,000 strands, side and back, both qualities. With the head's
+  it('dark brown shows no red glow round the head from the side', async () => {
+    // the bob in its Dark brown at 8,000 strands from the side, both qualities. With the head's
     // terminator taken as hairs the key light crosses, the light forward-scattered "through" the
     // head kept only its red and glowed on the back and the sides (a judge: "a reddish band
     // down the side" of the bob in Fast): of the hair's coloured pixels (dark brown's hues run
-    // 21-28 deg), 4.4 % and 3.2 % were under 18 deg in Fast (side, back), 3.6 % and 3.6 % in
-    // High; with the head's terminator outside the hair's scattering 0.27 %, 0.42 %, 0.39 % and
-    // 0.40 %
+    // 21-28 deg), 3.4 to 4.4 % were under 18 deg in Fast and 3.6 % in High (from behind 3.2 % and
+    // 3.6 %); with the head's terminator outside the hair's scattering 0.18 to 0.27 % and 0.20 to
+    // 0.39 % (0.42 % and 0.40 % from behind). The side alone: the check costs half as much
     const bob = {
       ...presetSession('bob', Head.builtin(), '25k', 8000),
       hairLook: withShade(null, HAIR_SHADES.find((s) => s.id === 'dark-brown') as never),
     };
-    const o = { width: 320, height: 280, views: ['side', 'back'] as const, qualities: BOTH };
+    const o = { width: 320, height: 280, views: ['side'] as const, qualities: BOTH };
     const hair = (await renderer.render(bob, o)).png.map(readPng);
     const none = (await renderer.render({ ...bob, curves: [] }, o)).png.map(readPng);
-    const names = ['Fast side', 'Fast back', 'High side', 'High back'];
-    for (const [k, name] of names.entries()) {
+    for (const [k, quality] of BOTH.entries()) {
       const red = hueBelowShare(hair[k], none[k], 18);
       console.log(
-        `dark brown bob, ${name}: ${(100 * red).toFixed(2)} % of its pixels under 18 deg`,
+        `dark brown bob, ${quality}: ${(100 * red).toFixed(2)} % of its pixels under 18 deg`,
       );
-      expect(red, name).toBeLessThan(0.015);
+      expect(red, quality).toBeLessThan(0.015);
     }
   });
 
