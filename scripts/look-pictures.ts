@@ -57,12 +57,10 @@ function libraryStyle(id: string): SessionState {
 }
 
 /** A library style as a new session draws it today: its strokes and settings with a new
- *  session's natural detail and the rules its locks need (locks, clumps for every strand, the
- *  face kept clear). */
+ *  session's look (newSessionLook), its natural detail rather than the style's, and the rules
+ *  its locks need (locks, the face kept clear). */
 const drawnToday = (id: string): SessionState => ({
-  ...libraryStyle(id),
-  detail: NEW_SESSION_DETAIL,
-  clumpAll: fresh.clumpAll,
+  ...newSessionLook({ ...libraryStyle(id), detail: NEW_SESSION_DETAIL }),
   faceClear: fresh.faceClear,
   locks: fresh.locks,
 });

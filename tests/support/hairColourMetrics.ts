@@ -89,8 +89,7 @@ export function bodyColour(
   const b = bald.rgba;
   const hair: number[] = [];
   for (let i = 0; i < a.length; i += 4) {
-    const d = Math.abs(a[i] - b[i]) + Math.abs(a[i + 1] - b[i + 1]) + Math.abs(a[i + 2] - b[i + 2]);
-    if (d > threshold) hair.push(i);
+    if (isHair(a, b, i, threshold)) hair.push(i);
   }
   if (hair.length === 0) throw new Error('no hair in the picture');
   const row = (i: number) => Math.floor(i / 4 / width);
@@ -120,8 +119,7 @@ export function blackShare(withHair: Rgba, bald: Rgba, below = 12, threshold = 2
   const a = withHair.rgba;
   const b = bald.rgba;
   for (let i = 0; i < a.length; i += 4) {
-    const d = Math.abs(a[i] - b[i]) + Math.abs(a[i + 1] - b[i + 1]) + Math.abs(a[i + 2] - b[i + 2]);
-    if (d <= threshold) continue;
+    if (!isHair(a, b, i, threshold)) continue;
     hair++;
     if (Math.max(a[i], a[i + 1], a[i + 2]) < below) black++;
   }
@@ -148,9 +146,7 @@ export function skinThroughHair(
   for (let y = 0; y < height; y++)
     for (let x = 0; x < width; x++) {
       const i = 4 * (y * width + x);
-      const d =
-        Math.abs(a[i] - b[i]) + Math.abs(a[i + 1] - b[i + 1]) + Math.abs(a[i + 2] - b[i + 2]);
-      if (d <= threshold) continue;
+      if (!isHair(a, b, i, threshold)) continue;
       x0 = Math.min(x0, x);
       x1 = Math.max(x1, x);
       y0 = Math.min(y0, y);

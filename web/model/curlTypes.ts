@@ -1,10 +1,10 @@
 // Curl types a stylist names: the hair typing stylists use (1 straight, 2A–2C wavy, 3A–3C curly,
 // 4A–4C coily), each as the detail that makes it (model/detail.ts): a curl of the type's radius
 // and turns, ramping in over the first 12 % of the hair (a curl rolling from the very root
-// makes barrel rolls across the crown, a stylist saw), wound in locks (a clump per lock,
-// curly types' held tight: lockHold; with finished edges each lock's radius and frequency vary by a seeded ±25 % and half the
-// locks wind the other way, docs/natural-fall.md "Ringlets"), and no frizz (a wiry halo is not a
-// curl type). Radii and turns are for a curl's helix: the diameter a lock winds round (a 3A curl
+// makes barrel rolls across the crown, a stylist saw), wound in locks (a clump per lock, the
+// curly types' held tight: lockHold; with finished edges each lock's radius and frequency vary
+// by a seeded factor and half the locks wind the other way, docs/natural-fall.md "Ringlets"),
+// and no frizz (a wiry halo is not a curl type). Radii and turns are for a curl's helix: the diameter a lock winds round (a 3A curl
 // round sidewalk chalk, 3C a pencil, 4A a crochet needle) and its pitch, about three diameters
 // for springy curls and longer for waves.
 import type { HairDetail } from './detail';
