@@ -102,6 +102,7 @@ logs=build/test-logs
 built="$logs/app-built"            # the app lane: the wasm module, the app and the CLI bundle
 installed="$logs/packages-installed"  # the checks lane: npm's and Python's packages
 native_done="$logs/native-tested"  # the native lane: ctest, which writes the native fields
+browser_done="$logs/browser-tested"  # the app lane: the browser tests, run or failed
 wait_for() {  # file what: waits until the file says; fails unless it says ok
   until [ -s "$1" ]; do sleep 1; done
   if [ "$(cat "$1")" != ok ]; then
@@ -116,7 +117,9 @@ lane_app() {
   [ "$rc" = 0 ] && { phase "types (tsc; needs the wasm module's declarations)" npx tsc --noEmit -p tsconfig.json || rc=$?; }
   [ "$rc" = 0 ] && { phase "web build (app, CLI bundle)" web_build || rc=$?; }
   if [ "$rc" = 0 ]; then echo ok > "$built"; else echo failed > "$built"; return "$rc"; fi
-  phase "browser tests (Playwright, Debian Chromium)" npx playwright test
+  phase "browser tests (Playwright, Debian Chromium)" npx playwright test || rc=$?
+  if [ "$rc" = 0 ]; then echo ok > "$browser_done"; else echo failed > "$browser_done"; fi
+  return "$rc"
 }
 lane_native() {
   local rc=0
@@ -130,6 +133,7 @@ lane_native() {
 # lane has built the wasm module and the CLI bundle.
 unit_tests() {
   wait_for "$built" "the wasm module and the CLI bundle"
+  until [ -s "$browser_done" ]; do sleep 1; done
   npx vitest run --exclude tests/unit/wasmNative.test.ts
 }
 unit_tests_native() {
@@ -148,7 +152,7 @@ lane_checks() {
 lanes() {  # runs the three lanes at once; prints each lane's output whole, when it is done
   local pids=() names=(checks native app) name rc=0
   mkdir -p "$logs"
-  rm -f "$built" "$installed" "$native_done"
+  rm -f "$built" "$installed" "$native_done" "$browser_done"
   lane_checks > "$logs/checks.log" 2>&1 &
   pids+=($!)
   lane_native > "$logs/native.log" 2>&1 &
