@@ -62,15 +62,19 @@ describe('presets', () => {
     });
   }
 
-  it('curly: the default curves with curl, clumps, frizz and length jitter; other presets drop a detail', () => {
+  it('curly: the default curves with curl, clumps, frizz and length jitter, and the rules for loose hair round the face; other presets drop a detail', () => {
     const curly = applyPreset(emptySession('25k'), 'curly', ctx);
     expect(curly.curves).toEqual(applyPreset(emptySession('25k'), 'default', ctx).curves);
     expect(curly.detail).toEqual({
-      curl: { radius: 0.09, frequency: 2.4, start: 0.15, randomOffset: 1 },
-      clump: { factor: 0.92, shape: 0.15, tipSpread: 0.01, guideDistance: 0.16 },
+      curl: { radius: 0.08, frequency: 3.4, start: 0.12, randomOffset: 1 },
+      clump: { factor: 0.92, shape: 0.15, tipSpread: 0.01, guideDistance: 0.12 },
       frizz: { distance: 0.003, shape: 0.5 },
-      lengthJitter: 0.15,
+      lengthJitter: 0.25,
     });
+    // a new session's rules for loose hair round the face; the default preset (its strokes) not
+    const rules = ['hairline', 'curlVolume', 'nape', 'clumpAll', 'faceClear'] as const;
+    const plain = applyPreset(emptySession('25k'), 'default', ctx);
+    for (const k of rules) expect([k, curly[k], plain[k]]).toEqual([k, true, undefined]);
     const read = parseSession(JSON.parse(JSON.stringify(curly)));
     expect(read.ok && read.value).toEqual(curly);
     const fig6 = applyPreset(curly, 'fig6', ctx);

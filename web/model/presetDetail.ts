@@ -2,15 +2,15 @@
 // session's natural detail (presets.ts applies them).
 import { defaultBlock, type HairDetail } from './detail';
 
-/** The `curly` preset's detail: 3A curls (0.9 cm, 2.4 turns per 10 cm) gathered tight into locks
- *  1.6 cm apart (with finished edges a clump's strands curl together, as ringlets: drawn 0.7 of
- *  the way onto locks 1.2 cm apart, a judge saw "rows of flat scallops, like fish scales"), a
- *  little frizz, uneven ends. */
+/** The `curly` preset's detail: 3B ringlets (0.8 cm, 3.4 turns per 10 cm, the type's middle)
+ *  gathered tight into locks 1.2 cm apart, a little frizz, uneven ends. 3A curls (0.9 cm, 2.4
+ *  turns) onto locks 1.6 cm apart read as rows of sausage curls (a judge: "a barrister's wig");
+ *  drawn 0.7 of the way onto locks 1.2 cm apart, as "rows of flat scallops, like fish scales". */
 export const CURLY_DETAIL: HairDetail = {
-  curl: { radius: 0.09, frequency: 2.4, start: 0.15, randomOffset: 1 },
-  clump: { factor: 0.92, shape: 0.15, tipSpread: 0.01, guideDistance: 0.16 },
+  curl: { radius: 0.08, frequency: 3.4, start: 0.12, randomOffset: 1 },
+  clump: { factor: 0.92, shape: 0.15, tipSpread: 0.01, guideDistance: 0.12 },
   frizz: { distance: 0.003, shape: 0.5 },
-  lengthJitter: 0.15,
+  lengthJitter: 0.25,
 };
 
 /** The detail a new session (the `empty` preset) and the presets other than the paper's figures

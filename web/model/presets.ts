@@ -311,6 +311,11 @@ const PAPER_FIGURES: readonly PresetName[] = ['fig6', 'fig7', 'fig8', 'fig1'];
 
 /** The presets made of ties (braids, a bun): they lay them as a new session does. */
 const TIE_PRESETS: readonly PresetName[] = ['braid', 'bun', 'pigtail-braids'];
+/** Presets that take a new session's rules for how loose hair falls round the face: the soft
+ *  hairline, the low nape, curl volume, every strand in a lock and the face kept clear. The
+ *  curly preset's ringlets without them hugged the head in columns and hung across the forehead
+ *  as a see-through net (a judge: "a barrister's wig"). */
+const LOOSE_HAIR_RULE_PRESETS: readonly PresetName[] = ['empty', 'curly'];
 
 /** Natural colours of the presets, as the Hair panel's Shade names them (hairShades.ts); the
  *  paper's figures take DEFAULT_HAIR_LOOK. */
@@ -382,15 +387,15 @@ export function applyPreset(s: SessionState, name: PresetName, ctx: PresetContex
     // ties from any hand and round plaits: a new session's, and the tie presets' (their braids and
     // bun as one drawn today lays them: a band, hair combed into the tie, no shelf)
     ...(ties && (name === 'empty' || TIE_PRESETS.includes(name)) ? { ties } : {}),
-    ...(hairline && name === 'empty' ? { hairline } : {}),
-    ...(curlVolume && name === 'empty' ? { curlVolume } : {}),
-    ...(nape && name === 'empty' ? { nape } : {}),
+    ...(hairline && LOOSE_HAIR_RULE_PRESETS.includes(name) ? { hairline } : {}),
+    ...(curlVolume && LOOSE_HAIR_RULE_PRESETS.includes(name) ? { curlVolume } : {}),
+    ...(nape && LOOSE_HAIR_RULE_PRESETS.includes(name) ? { nape } : {}),
     ...(coilVolume && name === 'empty' ? { coilVolume } : {}),
     ...(roundPlaits && (name === 'empty' || TIE_PRESETS.includes(name)) ? { roundPlaits } : {}),
     ...(tieVolume && name === 'empty' ? { tieVolume } : {}),
     ...(compactBun && name === 'empty' ? { compactBun } : {}),
-    ...(clumpAll && name === 'empty' ? { clumpAll } : {}),
-    ...(faceClear && name === 'empty' ? { faceClear } : {}),
+    ...(clumpAll && LOOSE_HAIR_RULE_PRESETS.includes(name) ? { clumpAll } : {}),
+    ...(faceClear && LOOSE_HAIR_RULE_PRESETS.includes(name) ? { faceClear } : {}),
     // the presets that start with natural detail take the rules its locks need
     ...(locks && fall ? { locks } : {}),
     ...(bust ? { bust } : {}),
