@@ -455,3 +455,38 @@ export function greyLineShare(picture: Rgba, vivid = 0.7, dip = 0.3): number {
     }
   return inside ? lines / inside : 0;
 }
+
+/** How grainy the skin is in `picture` where `smooth` (the same view in another quality) has
+ *  smooth skin: of the skin pixels (sRGB red over 120, 25 over blue, red > green > blue) of
+ *  `smooth` whose grey is within 1.5 of its 5 × 5 mean, the share whose grey in `picture` is 4
+ *  or more off its own 5 × 5 mean. A hair's shadow that is a speckle of single strands' shadows
+ *  makes such pixels; a soft one, none. `top`: the share of the rows counted, from the top (the
+ *  face, not the bust below it). */
+export function skinGrain(picture: Rgba, smooth: Rgba, top = 1): number {
+  const { width: W, height: H } = picture;
+  if (W !== smooth.width || H !== smooth.height) throw new Error('the two pictures differ in size');
+  const grey = (p: Uint8Array) => {
+    const g = new Float64Array(W * H);
+    for (let i = 0; i < W * H; i++)
+      g[i] = 0.299 * p[4 * i] + 0.587 * p[4 * i + 1] + 0.114 * p[4 * i + 2];
+    return g;
+  };
+  const offMean = (g: Float64Array, i: number) => {
+    let m = 0;
+    for (let dy = -2; dy <= 2; dy++) for (let dx = -2; dx <= 2; dx++) m += g[i + dy * W + dx];
+    return Math.abs(g[i] - m / 25);
+  };
+  const [gp, gs] = [grey(picture.rgba), grey(smooth.rgba)];
+  const s = smooth.rgba;
+  let skin = 0;
+  let grainy = 0;
+  for (let y = 2; y < Math.min(H - 2, Math.round(top * H)); y++)
+    for (let x = 2; x < W - 2; x++) {
+      const i = y * W + x;
+      const [r, g, b] = [s[4 * i], s[4 * i + 1], s[4 * i + 2]];
+      if (!(r > 120 && r - b > 25 && r > g && g > b) || offMean(gs, i) >= 1.5) continue;
+      skin++;
+      if (offMean(gp, i) >= 4) grainy++;
+    }
+  return skin > 0 ? grainy / skin : 0;
+}
