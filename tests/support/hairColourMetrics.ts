@@ -490,3 +490,19 @@ export function skinGrain(picture: Rgba, smooth: Rgba, top = 1): number {
     }
   return skin > 0 ? grainy / skin : 0;
 }
+
+/** Of the hair's pixels (those that differ from the bald picture by more than `threshold`, summed
+ *  over the channels), the share with a channel at `level` or more: highlights clipped to white. */
+export function clippedShare(withHair: Rgba, bald: Rgba, level = 250, threshold = 24): number {
+  const { width: W, height: H } = withHair;
+  if (W !== bald.width || H !== bald.height) throw new Error('the two pictures differ in size');
+  let hair = 0;
+  let clipped = 0;
+  for (let i = 0; i < W * H; i++) {
+    if (!isHair(withHair.rgba, bald.rgba, 4 * i, threshold)) continue;
+    hair++;
+    const [r, g, b] = [withHair.rgba[4 * i], withHair.rgba[4 * i + 1], withHair.rgba[4 * i + 2]];
+    if (Math.max(r, g, b) >= level) clipped++;
+  }
+  return hair > 0 ? clipped / hair : 0;
+}

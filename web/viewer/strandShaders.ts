@@ -121,6 +121,8 @@ const float LOCK_FROM = 0.3;
 // the fill's sheen, over the fill's brightness (the key's BSDF gain's share of it)
 const float FILL_SHEEN = 5.0;
 const float FILL_SHEEN_SPREAD = 3.0;
+// where the highlights' soft shoulder starts (linear)
+const float HIGHLIGHT_KNEE = 0.7;
 uniform float precomputed; // 1: use the precomputed lighting attribute; 0: ignore it (all lit)
 #ifdef DEEP_OPACITY
 uniform sampler2D domDepth;
@@ -195,7 +197,7 @@ vec3 strandSigma(vec4 rnd, vec2 along) {
   // narrower than a lock; by the lock's value itself, the few locks that make a view's outer
   // layer swung salt and pepper's shown grey by 20 to 60 % from the share set). At four times its
   // rate and 0.6 of it, a judge still saw "an even mid grey-beige with no black strands and no
-  // white ones" at arm's length
+  // white ones" at arm's length (at 0.5, a colourist preferred 0.85 slightly: "a flatter grey")
   float pick = byLock(1.0 - fract(2.0 * rnd.w), fract(dot(rnd, vec4(0.7548777, 0.5698403, 0.3308946, 0.1234567)) * 97.31), 0.85);
   if (pick < lookShares.x) s = greySigma;
   float hue = hueVariation * (2.0 * rnd.y - 1.0);
@@ -270,7 +272,11 @@ vec3 shadeStrand(vec3 T, vec3 P, vec2 along, vec4 rnd, vec2 light, float turn) {
   // locks lighter and darker (rnd.w, the lock's value as for the tilt): a head of hair's locks
   // lie at different depths and angles, so they differ in brightness as a whole
   float lockValue = 1.0 + LOCK_VALUE * lockShare;
-  return lockValue * rootAo * (key + ao * ((fillColor * fill + ambientColor * sky) * base + sheen));
+  vec3 c = lockValue * rootAo * (key + ao * ((fillColor * fill + ambientColor * sky) * base + sheen));
+  // a soft shoulder over the top of the range (linear, per channel): light hair's brightest
+  // highlights roll off instead of clipping to flat white
+  vec3 over = max(c - HIGHLIGHT_KNEE, 0.0);
+  return min(c, HIGHLIGHT_KNEE) + (1.0 - HIGHLIGHT_KNEE) * (1.0 - exp(-over / (1.0 - HIGHLIGHT_KNEE)));
 }
 `;
 
