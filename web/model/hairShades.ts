@@ -44,9 +44,10 @@ export const HAIR_SHADES: readonly HairShade[] = [
   shade('strawberry', 'Strawberry blonde', 0.015, 1, '#ffb0a0'),
   shade('copper', 'Copper', 0.045, 1, '#ff8250'),
   shade('auburn', 'Auburn', 0.3, 1, '#ff8070'),
-  // a quarter of the strands grey: at 40 %, the white strands (brighter than the black ones by
-  // far) took over and the hair read "an even mid grey", not dark hair with white through it
-  shade('salt-pepper', 'Salt and pepper', 0.85, 0.1, null, 25),
+  // 18 % of the strands grey: the white strands are brighter than the black ones by far, so they
+  // take over (at 40 % the hair read "an even mid grey"; at 25 %, "a mid pewter grey, far more
+  // than 25 %", and a colourist preferred 18 % to 25 % side by side)
+  shade('salt-pepper', 'Salt and pepper', 0.85, 0.1, null, 18),
   shade('silver', 'Silver', 0.35, 0.25, '#cdd6ec', 85),
 ];
 
