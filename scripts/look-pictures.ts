@@ -4,16 +4,18 @@
 // per style and quality: docs/screenshots/look/<style>-<quality>.png (LOOK_DIR=<dir> writes
 // elsewhere, e.g. a build before a change; LOOK_SIZE=WxH of each view, default 320x320;
 // LOOK_STYLES=a,b only those).
-import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
-import { presetSession } from '../web/cli/presetSession';
+import { mkdirSync, writeFileSync } from 'node:fs';
+import {
+  drawnToday as lookDrawnToday,
+  libraryStyle as lookLibraryStyle,
+  lookPreset,
+  newSessionLook,
+} from '../tests/support/lookSessions';
 import { openStillRenderer } from '../web/cli/render';
-import { Head } from '../web/head/head';
 import { DEFAULT_HAIR_LOOK, type HairLook } from '../web/model/hairLook';
 import { shadeById, withShade } from '../web/model/hairShades';
-import { NEW_SESSION_DETAIL } from '../web/model/presetDetail';
 import type { PresetName } from '../web/model/presets';
 import type { SessionState } from '../web/model/session';
-import { parseSession } from '../web/model/sessionFile';
 import { VIEW_NAMES } from '../web/viewer/namedViews';
 import { sideBySide } from './pictureStrip';
 
@@ -22,9 +24,9 @@ const out = process.env.LOOK_DIR ?? 'docs/screenshots/look';
 const STRANDS = 30_000;
 mkdirSync(out, { recursive: true });
 
-const head = Head.builtin();
-const preset = (name: PresetName) => presetSession(name, head, '25k', STRANDS);
-/** A new session's soft hairline and natural detail (the tie presets have its ties already). */
+const preset = (name: PresetName) => lookPreset(name, STRANDS);
+const libraryStyle = (id: string) => lookLibraryStyle(id, STRANDS);
+const drawnToday = (id: string) => lookDrawnToday(id, STRANDS);
 /** The look the Hair panel's Shade `id` gives the session (its tips kept). */
 const withShadeNamed = (
   s: SessionState,
@@ -35,35 +37,6 @@ const withShadeNamed = (
   if (!shade) throw new Error(`no shade ${id}`);
   return { ...s, hairLook: withShade({ ...DEFAULT_HAIR_LOOK, ...tips }, shade) };
 };
-
-/** A preset as a new session draws it: a new session's soft hairline, low nape, tie volume,
- *  compact bun and clumps (the presets keep the hair they had without them: the bun's hair ended
- *  in a line above the nape, a judge's "swim cap") and natural detail. */
-const fresh = preset('empty');
-const newSessionLook = (s: SessionState): SessionState => ({
-  ...s,
-  hairline: fresh.hairline,
-  nape: fresh.nape,
-  tieVolume: fresh.tieVolume,
-  compactBun: fresh.compactBun,
-  clumpAll: fresh.clumpAll,
-  detail: s.detail ?? NEW_SESSION_DETAIL,
-});
-
-function libraryStyle(id: string): SessionState {
-  const r = parseSession(JSON.parse(readFileSync(`public/styles/${id}.json`, 'utf8')));
-  if (!r.ok) throw new Error(`public/styles/${id}.json: ${r.error}`);
-  return { ...r.value, growth: { ...r.value.growth, maxStrands: STRANDS } };
-}
-
-/** A library style as a new session draws it today: its strokes and settings with a new
- *  session's look (newSessionLook), its natural detail rather than the style's, and the rules
- *  its locks need (locks, the face kept clear). */
-const drawnToday = (id: string): SessionState => ({
-  ...newSessionLook({ ...libraryStyle(id), detail: NEW_SESSION_DETAIL }),
-  faceClear: fresh.faceClear,
-  locks: fresh.locks,
-});
 
 const styles: Record<string, () => SessionState> = {
   // the bob as the user guide draws it (the library's bob with a fringe, shape rules, Volume

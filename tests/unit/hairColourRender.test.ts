@@ -9,7 +9,6 @@ import { openStillRenderer, type StillRenderer } from '../../web/cli/render';
 import { Head } from '../../web/head/head';
 import { DEFAULT_HAIR_LOOK, type HairLook } from '../../web/model/hairLook';
 import { HAIR_SHADES, withShade } from '../../web/model/hairShades';
-import { NEW_SESSION_DETAIL } from '../../web/model/presetDetail';
 import { parseSession } from '../../web/model/sessionFile';
 import {
   blackShare,
@@ -27,6 +26,7 @@ import {
   skinThroughHair,
   strandContrast,
 } from '../support/hairColourMetrics';
+import { drawnToday } from '../support/lookSessions';
 import { readPng } from './pngPixels';
 
 const DIST_BUILT = existsSync(new URL('../../dist/embed.html', import.meta.url));
@@ -70,21 +70,12 @@ function darkBob() {
   return darkBobPictures;
 }
 
-/** The library's bob with a fringe as a new session draws it (natural detail, locks, the face
- *  kept clear) at 30,000 strands, in the shade `shade`. */
-function bobDrawnToday(shade: string) {
-  const read = parseSession(JSON.parse(readFileSync('public/styles/bob-fringe.json', 'utf8')));
-  if (!read.ok) throw new Error(read.error);
-  return {
-    ...read.value,
-    growth: { ...read.value.growth, maxStrands: 30000 },
-    detail: NEW_SESSION_DETAIL,
-    locks: true,
-    clumpAll: true,
-    faceClear: true,
-    hairLook: withShade(null, HAIR_SHADES.find((s) => s.id === shade) as never),
-  };
-}
+/** The library's bob with a fringe as a new session draws it (the look pictures' bob) at 30,000
+ *  strands, in the shade `shade`. */
+const bobDrawnToday = (shade: string) => ({
+  ...drawnToday('bob-fringe', 30000),
+  hairLook: withShade(null, HAIR_SHADES.find((s) => s.id === shade) as never),
+});
 
 describe.runIf(DIST_BUILT)('hair colour as drawn', () => {
   it('each Shade reads as its name, in Fast and High alike', async () => {
