@@ -17,15 +17,15 @@ import { parseSession } from '../../web/model/sessionFile';
 import { decodeSessionLink, encodeSessionLink } from '../../web/model/sessionLink';
 
 /** The melanin, by hand, `cm` from the tip of a strand whose balayage piece is `piece`, with
- *  lighter tips over `tipCm` (root melanin 0.4, tips 0.1): the strand's fade is tipCm · (0.8 +
- *  0.8 piece) long and its strength 0.6 + 0.4 piece, the tips' share t = strength · (1 − x²(3 −
+ *  lighter tips over `tipCm` (root melanin 0.4, tips 0.1): the strand's fade is tipCm · (0.6 +
+ *  1.3 piece) long and its strength 0.4 + 0.6 piece, the tips' share t = strength · (1 − x²(3 −
  *  2x)), x = (cm − 0.35 fade) / (0.65 fade) (within 0 … 1: full strength over the last 35 % of
  *  the fade), and the melanin amounts a = −ln(1 − m) mix in log space:
  *  a = a_root^(1 − t) · a_tip^t. */
 function tipMelaninByHand(cm: number, tipCm: number, piece: number): number {
-  const fade = tipCm * (0.8 + 0.8 * piece);
+  const fade = tipCm * (0.6 + 1.3 * piece);
   const x = Math.min(1, Math.max(0, (cm - 0.35 * fade) / (0.65 * fade)));
-  const t = (0.6 + 0.4 * piece) * (1 - x * x * (3 - 2 * x));
+  const t = (0.4 + 0.6 * piece) * (1 - x * x * (3 - 2 * x));
   const amount = (-Math.log(0.6)) ** (1 - t) * (-Math.log(0.9)) ** t;
   return 1 - Math.exp(-amount);
 }

@@ -4,13 +4,8 @@
 import { describe, expect, it } from 'vitest';
 import { DEFAULT_HAIR_LOOK, hexToLinear } from '../../web/model/hairLook';
 import { colorAbsorption } from '../../web/model/melanin';
-import {
-  decodeTipDistance,
-  LOCK_CELL,
-  LOD_GROUPS,
-  lockNoise,
-  MAX_TURN,
-} from '../../web/viewer/strandAttributes';
+import { LOCK_CELL, lockNoise } from '../../web/viewer/lockNoise';
+import { decodeTipDistance, LOD_GROUPS, MAX_TURN } from '../../web/viewer/strandAttributes';
 import { buildStrandGeometry, buildStrandStripGeometry } from '../../web/viewer/strandGeometry';
 import {
   createStrandMaterial,
@@ -87,7 +82,7 @@ describe('buildStrandGeometry', () => {
     // strand 0: 2, 1, 0 units from its tip; strand 2: 2, 0. By hand, the byte is
     // round(255 √(d / 10)): 255 √0.2 = 114.04 → 114, 255 √0.1 = 80.64 → 81; 0 at the tips
     const along = g.getAttribute('along');
-    expect(along.itemSize).toBe(2);
+    expect(along.itemSize).toBe(4);
     const bytes = [0, 1, 2, 4, 5].map((v) => Math.round(along.getY(v) * 255));
     expect(bytes).toEqual([114, 81, 0, 114, 0]);
     // decoded as the shader does (10 (byte / 255)²): within half a step of the distance
@@ -99,7 +94,15 @@ describe('buildStrandGeometry', () => {
       for (const side of [0, 1]) {
         expect(strips.getX(2 * v + side)).toBe(along.getX(v));
         expect(strips.getY(2 * v + side)).toBe(along.getY(v));
+        expect(strips.getZ(2 * v + side)).toBe(along.getZ(v));
+        expect(strips.getW(2 * v + side)).toBe(along.getW(v));
       }
+    // the grey rank and balayage section: one per strand, the same at each of its points
+    for (const c of ['getZ', 'getW'] as const) {
+      expect(along[c](1)).toBe(along[c](0));
+      expect(along[c](2)).toBe(along[c](0));
+      expect(along[c](5)).toBe(along[c](4));
+    }
   });
 
   it('handles no strands', () => {

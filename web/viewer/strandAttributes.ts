@@ -4,9 +4,12 @@
 //   tangent[3i .. 3i+2]  tangent (central differences, one-sided at the ends), Int8 ÷ 127: its
 //                        direction the strand's, its length 1 − ½ of the strand's turn there
 //                        (encodeTurn: the angle between its two segments, for the highlight)
-//   along[2i]            0 at the root … 255 at the tip (by point)
-//   along[2i + 1]        the distance from the strand's tip by arc length, encoded
+//   along[4i]            0 at the root … 255 at the tip (by point)
+//   along[4i + 1]        the distance from the strand's tip by arc length, encoded
 //                        (encodeTipDistance: finest near the tip), for the lighter tips
+//   along[4i + 2]        per strand: its grey rank (colourPlacement.ts: the order strands turn
+//                        grey in, temples first)
+//   along[4i + 3]        per strand: its balayage section (colourPlacement.ts)
 //   random[4i .. 4i+3]   per strand: value, hue, length appearance (a hash of s and the colour
 //                        seed), and the lock's highlight (lockNoise of the root: strands rooted
 //                        together share it), Uint8 ÷ 255
@@ -15,6 +18,8 @@
 // Level of detail: the index lists strands interleaved (stride LOD_GROUPS, groups in bit-reversed
 // order), so any prefix of the groups is an even sample of the whole head of hair.
 import type { StrandVertexArrays } from '../model/hairArrays';
+import { colourPlacement } from './colourPlacement';
+import { hash32, lockNoise } from './lockNoise';
 
 /** Strands are drawn in this many interleaved groups (see buildStrandGeometry). */
 export const LOD_GROUPS = 64;
@@ -78,11 +83,12 @@ export function pointAttributes(
   // compact, normalised attributes: tangent as signed bytes (÷127), the rest as unsigned bytes
   // (÷255); the shader reads floats either way
   const tangent = new Int8Array(3 * pointCount);
-  const along = new Uint8Array(2 * pointCount);
+  const along = new Uint8Array(4 * pointCount);
   const random = new Uint8Array(4 * pointCount);
   const light = new Uint8Array(2 * pointCount);
   const seedMix = Math.imul(colorSeed >>> 0, 0x9e3779b1);
   const bounds = writeTangents(points, strandStart, tangent, 1);
+  const place = colourPlacement(points, strandStart, seedMix);
   for (let s = 0; s < strands; s++) {
     const a = strandStart[s];
     const b = strandStart[s + 1];
@@ -101,16 +107,18 @@ export function pointAttributes(
     // the distance from the tip, summed from the tip back to the root: encodeTipDistance inlined
     // (this runs on the page for every preview; a byte store truncates, so + 0.5 rounds)
     let fromTip = 0;
-    along[2 * b - 1] = 0;
+    along[4 * (b - 1) + 1] = 0;
     for (let i = b - 2; i >= a; i--) {
       const dx = points[3 * i + 3] - points[3 * i];
       const dy = points[3 * i + 4] - points[3 * i + 1];
       const dz = points[3 * i + 5] - points[3 * i + 2];
       fromTip += Math.sqrt(dx * dx + dy * dy + dz * dz);
-      along[2 * i + 1] = fromTip < TIP_DISTANCE_RANGE ? TIP_BYTE * Math.sqrt(fromTip) + 0.5 : 255;
+      along[4 * i + 1] = fromTip < TIP_DISTANCE_RANGE ? TIP_BYTE * Math.sqrt(fromTip) + 0.5 : 255;
     }
     for (let i = a; i < b; i++) {
-      along[2 * i] = Math.round((i - a) * inv);
+      along[4 * i] = Math.round((i - a) * inv);
+      along[4 * i + 2] = place.greyRank[s];
+      along[4 * i + 3] = place.piece[s];
       random[4 * i] = r0;
       random[4 * i + 1] = r1;
       random[4 * i + 2] = r2;
@@ -266,53 +274,4 @@ export function lodIndex(
 
 function clamp01(v: number): number {
   return v > 0 ? Math.min(v, 1) : 0;
-}
-
-/** 32-bit integer hash (lowbias32, Chris Wellons). */
-/** Lattice spacing of lockNoise, world units (1.2 cm: about a clump's width, detail.ts). */
-export const LOCK_CELL = 0.12;
-
-/** Smooth value noise of a root position in [0, 1] (a lattice of seeded values LOCK_CELL apart,
- *  interpolated with smoothstep and stretched to about a uniform spread): strands rooted within
- *  a lock's width of each other get nearly the same value, so the strand shader's highlight tilt
- *  (strandShaders.ts) turns whole locks together: the key light's highlight breaks into locks,
- *  as it does on a head of hair, instead of averaging over strands into one smooth band. */
-export function lockNoise(x: number, y: number, z: number, seed = 0): number {
-  const fx = x / LOCK_CELL;
-  const fy = y / LOCK_CELL;
-  const fz = z / LOCK_CELL;
-  const ix = Math.floor(fx);
-  const iy = Math.floor(fy);
-  const iz = Math.floor(fz);
-  const ease = (t: number) => t * t * (3 - 2 * t);
-  const tx = ease(fx - ix);
-  const ty = ease(fy - iy);
-  const tz = ease(fz - iz);
-  let v = 0;
-  for (let c = 0; c < 8; c++) {
-    const dx = c & 1;
-    const dy = (c >> 1) & 1;
-    const dz = c >> 2;
-    const k = hash32(
-      Math.imul(ix + dx, 73856093) ^
-        Math.imul(iy + dy, 19349663) ^
-        Math.imul(iz + dz, 83492791) ^
-        seed,
-    );
-    const w = (dx ? tx : 1 - tx) * (dy ? ty : 1 - ty) * (dz ? tz : 1 - tz);
-    v += w * (k / 4294967296);
-  }
-  // interpolated values gather about the middle (standard deviation ~0.17 against a uniform's
-  // 0.29): stretched back to about a uniform's spread
-  return clamp01(0.5 + 1.7 * (v - 0.5));
-}
-
-function hash32(x: number): number {
-  let h = x >>> 0;
-  h ^= h >>> 16;
-  h = Math.imul(h, 0x7feb352d);
-  h ^= h >>> 15;
-  h = Math.imul(h, 0x846ca68b);
-  h ^= h >>> 16;
-  return h >>> 0;
 }

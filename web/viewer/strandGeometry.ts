@@ -33,7 +33,7 @@ function setBounds(geometry: THREE.BufferGeometry, b: Float32Array): void {
  *  strandStart[s] .. strandStart[s + 1] − 1 of `points` (points[3 * point + axis]); each pair of
  *  consecutive points is a segment. The `position` attribute views `points` (not copied: do not
  *  change it afterwards). Added per point (strandAttributes.ts): `tangent`, `along` (the place
- *  along the strand and the distance from its tip), `strandRandom` (a hash of the strand index
+ *  along the strand, the distance from its tip, its grey rank and balayage section), `strandRandom` (a hash of the strand index
  *  and `colorSeed`) and `lighting` (from `lighting`, 2 per point as protocol.ts
  *  HairLightingArrays.strand; 1, 1 without it), all normalised.
  *  `prebuilt`: those attributes and the index as lineAttributes made them for these strands
@@ -65,7 +65,7 @@ function setPointAttributes(
   attrs: Pick<PointAttributes, 'tangent' | 'along' | 'random' | 'light'>,
 ): void {
   geometry.setAttribute('tangent', new THREE.BufferAttribute(attrs.tangent, 3, true));
-  geometry.setAttribute('along', new THREE.BufferAttribute(attrs.along, 2, true));
+  geometry.setAttribute('along', new THREE.BufferAttribute(attrs.along, 4, true));
   geometry.setAttribute('strandRandom', new THREE.BufferAttribute(attrs.random, 4, true));
   geometry.setAttribute('lighting', new THREE.BufferAttribute(attrs.light, 2, true));
 }
@@ -116,7 +116,7 @@ export function buildStrandStripGeometry(
   );
   setPointAttributes(geometry, {
     tangent: twice(attrs.tangent, 3),
-    along: twice(attrs.along, 2),
+    along: twice(attrs.along, 4),
     random: twice(attrs.random, 4),
     light: twice(attrs.light, 2),
   });

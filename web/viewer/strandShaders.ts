@@ -19,12 +19,13 @@ import { WIDTH_HASH, WIDTH_HASH_SCALE } from './strandWidth';
 const commonVertex = /* glsl */ `
 ${FOLLOWER_GLSL}
 attribute vec3 tangent;
-attribute vec2 along; // x: 0 root … 1 tip (by point); y: distance from the tip, encoded
+attribute vec4 along; // x: 0 root … 1 tip (by point); y: distance from the tip, encoded; z: the
+// strand's grey rank; w: its balayage section (strandAttributes.ts, colourPlacement.ts)
 attribute vec4 strandRandom;
 attribute vec2 lighting;
 varying vec3 vTangent;
 varying vec3 vWorldPosition;
-varying vec2 vAlong; // x: along.x; y: the distance from the tip, world units
+varying vec4 vAlong; // x: along.x; y: the distance from the tip, world units; z, w: along.zw
 varying vec4 vRandom;
 varying vec2 vLight;
 varying float vCoverage;
@@ -164,48 +165,38 @@ float tipShare(float along, float tipDistance, float piece) {
   return (${BALAYAGE_STRENGTH[0].toFixed(3)} + ${BALAYAGE_STRENGTH[1].toFixed(3)} * piece) * (1.0 - smoothstep(${BALAYAGE_FULL.toFixed(3)} * len, len, tipDistance));
 }
 
-// a value in [0, 1) spread about evenly, a share \`a\` (0.5 … 1) of it the lock's (\`lock\`: the lock's
-// value, about even) and the rest the strand's own (\`own\`, even): a · lock + (1 − a) · own put
-// through its distribution function (two even values' weighted sum), so shares taken of it hold
-// over the head.
-float byLock(float lock, float own, float a) {
-  float b = 1.0 - a;
-  float z = a * lock + b * own;
-  if (z < b) return z * z / (2.0 * a * b);
-  if (z > a) return 1.0 - (1.0 - z) * (1.0 - z) / (2.0 * a * b);
-  return (z - 0.5 * b) / a;
-}
-
 // The strand's absorption at \`along\` (x: 0 root … 1 tip; y: distance from the tip, world
-// units; rnd: its seeded random values): root → lighter tips, grey strands, a seeded spread of
+// units; z, w: its grey rank and balayage section; rnd: its seeded random values): root → lighter tips, grey strands, a seeded spread of
 // melanin and a little of the red/blue balance.
-vec3 strandSigma(vec4 rnd, vec2 along) {
+vec3 strandSigma(vec4 rnd, vec4 along) {
   // Lighter tips: an older session's fraction, mixed linearly (whatever its length, as
-  // hairLook.ts mixAbsorption); else a balayage's piece (tipShare; a hash of the strand's random
-  // values, as widthOf's), mixed in log space (a linear mix shows lighter tips only at the last
+  // hairLook.ts mixAbsorption); else a balayage's piece (tipShare; the strand's section),
+  // mixed in log space (a linear mix shows lighter tips only at the last
   // few centimetres). Branches on uniforms: hair without tips does none of it (every preview
   // frame draws this per vertex).
   vec3 s = rootSigma;
   if (lookShares.y < 0.999) {
     s = mix(rootSigma, tipSigma, tipShare(along.x, along.y, 0.0));
   } else if (tipLength > 0.0) {
-    // painted in pieces: mostly the lock's (rnd.w), so a lock lightens together
-    float piece = byLock(rnd.w, fract(dot(rnd, vec4(0.3183099, 0.7727564, 0.5351837, 0.1913462)) * 41.37), 0.7);
+    // painted in sections (along.w: the strand's section, colourPlacement.ts, a byte's middle)
+    float piece = (255.0 * along.w + 0.5) / 256.0;
     s = exp(mix(log(max(rootSigma, 1e-4)), log(max(tipSigma, 1e-4)), tipShare(along.x, along.y, piece)));
   }
-  // grey strands gather in streaks: mostly by the lock's value at twice its rate (fract(2 w):
-  // narrower than a lock; by the lock's value itself, the few locks that make a view's outer
-  // layer swung salt and pepper's shown grey by 20 to 60 % from the share set). At four times its
-  // rate and 0.6 of it, a judge still saw "an even mid grey-beige with no black strands and no
-  // white ones" at arm's length (at 0.5, a colourist preferred 0.85 slightly: "a flatter grey")
-  float pick = byLock(1.0 - fract(2.0 * rnd.w), fract(dot(rnd, vec4(0.7548777, 0.5698403, 0.3308946, 0.1234567)) * 97.31), 0.85);
+  // grey strands by their rank (along.z, a byte's middle: colourPlacement.ts, temples first,
+  // in fine streaks), so a share g greys the strands ranked below it; as most of the hair turns
+  // grey, a growing share of strands by their own even value instead (either is even, so the
+  // share holds): the last dark strands scattered, not gathered at the nape and crown (Silver,
+  // 85 % grey, read a darker grey from the front with them gathered)
+  float pick = (255.0 * along.z + 0.5) / 256.0;
+  if (fract(dot(rnd, vec4(0.4142136, 0.7320508, 0.2360680, 0.6457513)) * 53.71) < smoothstep(0.4, 0.9, lookShares.x))
+    pick = fract(dot(rnd, vec4(0.7548777, 0.5698403, 0.3308946, 0.1234567)) * 97.31);
   if (pick < lookShares.x) s = greySigma;
   float hue = hueVariation * (2.0 * rnd.y - 1.0);
   return s * (1.0 + lookShares.z * (2.0 * rnd.x - 1.0)) * vec3(1.0 - hue, 1.0, 1.0 + hue);
 }
 
 // The strand's colour at world point P with unit tangent T (root -> tip); along as strandSigma's.
-vec3 shadeStrand(vec3 T, vec3 P, vec2 along, vec4 rnd, vec2 light, float turn) {
+vec3 shadeStrand(vec3 T, vec3 P, vec4 along, vec4 rnd, vec2 light, float turn) {
   vec3 V = normalize(cameraPosition - P);
   vec3 radial = P - headCenter;
   vec3 N = radial - T * dot(radial, T);
@@ -296,7 +287,7 @@ void main() {
   if (followGuides > 0.5) followGuide(P, T0); // a motion playing (followerGlsl.ts)
   vec4 world = modelMatrix * vec4(P, 1.0);
   vec3 T = normalize(mat3(modelMatrix) * T0);
-  vAlong = vec2(along.x, tipDistanceOf(along.y));
+  vAlong = vec4(along.x, tipDistanceOf(along.y), along.zw);
 #ifdef HAIR_FRONT
   vColor = vec3(0.0); // the front pass needs the distance only (hairOit.ts)
 #else
@@ -317,7 +308,7 @@ void main() {
 
 export const linesFragmentShader = /* glsl */ `
 varying vec3 vColor;
-varying vec2 vAlong;
+varying vec4 vAlong;
 varying float vCoverage;
 varying float vTipKeep;
 varying float vDistance;
@@ -328,7 +319,7 @@ ${rootFade}
 void main() {
   // coverage times the tip's and the root's fades, blended order-independently (HAIR_OIT:
   // hairOit.ts) or unsorted, without depth writes
-  float alpha = vCoverage * vTipKeep * rootFadeOf(vAlong);
+  float alpha = vCoverage * vTipKeep * rootFadeOf(vAlong.xy);
   if (alpha < 0.004) discard;
 #ifdef HAIR_OIT
   oitWrite(vColor, alpha, vDistance);
@@ -381,7 +372,7 @@ void main() {
   world.xyz += side * (s * drawn);
   vWorldPosition = world.xyz;
   vTangent = T;
-  vAlong = vec2(along.x, tipDistanceOf(along.y)); // linear along a segment, as the distance is
+  vAlong = vec4(along.x, tipDistanceOf(along.y), along.zw); // linear along a segment, as the distance is
   vRandom = strandRandom;
   vLight = lighting;
   vCoverage = width / drawn;
@@ -395,7 +386,7 @@ export const stripsFragmentShader = /* glsl */ `
 ${shading}
 varying vec3 vTangent;
 varying vec3 vWorldPosition;
-varying vec2 vAlong;
+varying vec4 vAlong;
 varying vec4 vRandom;
 varying vec2 vLight;
 varying float vCoverage;
@@ -407,7 +398,7 @@ ${OIT_FRAGMENT_GLSL}
 ${rootFade}
 
 void main() {
-  float alpha = vCoverage * vTipKeep * rootFadeOf(vAlong);
+  float alpha = vCoverage * vTipKeep * rootFadeOf(vAlong.xy);
 #ifdef ALPHA_TO_COVERAGE
   if (alpha < 0.02) discard;
 #else
