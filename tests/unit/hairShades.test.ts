@@ -39,7 +39,14 @@ describe('hair shades', () => {
     const look = withShade({ ...DEFAULT_HAIR_LOOK, tipLength: 2 }, auburn);
     // auburn 0.3: −ln(1 − 0.3) / 8 = 0.04458 → 1 − e^−0.04458 = 0.0436
     expect(look.tipMelanin).toBeCloseTo(0.044, 3);
-    expect(look.tipDye).toBe(auburn.dye);
+    // the reds' tips copper-gold, not their own dye (auburn's #ff8070, hue 7°, read
+    // salmon-pink): hue 60° (g − b) / (r − b) with red the largest, over 20°
+    const hue = (hex: string) => {
+      const [r, g, b] = [1, 3, 5].map((i) => Number.parseInt(hex.slice(i, i + 2), 16));
+      return (60 * (g - b)) / (r - b);
+    };
+    expect(hue(auburn.dye ?? '')).toBeLessThan(10);
+    expect(hue(look.tipDye ?? '')).toBeGreaterThan(20);
     expect(look.tipLength).toBe(2);
     // a shade without a dye of its own gives its tips a warm one; without tips, none
     const brown = HAIR_SHADES.find((s) => s.id === 'dark-brown');

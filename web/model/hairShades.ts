@@ -20,6 +20,9 @@ export interface HairShade {
   dye: string | null;
   /** Share of grey strands, percent. */
   grey: number;
+  /** The dye of its lighter tips when it is not the shade's own dye (the reds: lightened red
+   *  hair loses its brown first and turns copper-gold), or null. */
+  tipDye: string | null;
 }
 
 const shade = (
@@ -29,7 +32,8 @@ const shade = (
   redness: number,
   dye: string | null = null,
   grey = 0,
-): HairShade => ({ id, name, melanin, redness, dye, grey });
+  tipDye: string | null = null,
+): HairShade => ({ id, name, melanin, redness, dye, grey, tipDye });
 
 /** The shades in the panel's order: the levels from dark to light, the reds, the greys. */
 export const HAIR_SHADES: readonly HairShade[] = [
@@ -41,9 +45,11 @@ export const HAIR_SHADES: readonly HairShade[] = [
   shade('blonde', 'Blonde', 0.035, 0.5),
   shade('light-blonde', 'Light blonde', 0.01, 0.5, '#ffd8a0'),
   shade('platinum', 'Platinum blonde', 0.006, 0.3, '#fff0c8'),
-  shade('strawberry', 'Strawberry blonde', 0.015, 1, '#ffb0a0'),
+  // the reds' tips lightened with their own dye read "salmon-pink" (auburn; a colourist):
+  // copper-gold for auburn, a paler gold for strawberry blonde
+  shade('strawberry', 'Strawberry blonde', 0.015, 1, '#ffb0a0', 0, '#ffc898'),
   shade('copper', 'Copper', 0.045, 1, '#ff8250'),
-  shade('auburn', 'Auburn', 0.3, 1, '#ff8070'),
+  shade('auburn', 'Auburn', 0.3, 1, '#ff8070', 0, '#ffa868'),
   // 18 % of the strands grey: the white strands are brighter than the black ones by far, so they
   // take over (at 40 % the hair read "an even mid grey"; at 25 %, "a mid pewter grey, far more
   // than 25 %", and a colourist preferred 18 % to 25 % side by side)
@@ -62,8 +68,8 @@ export function shadeById(id: string): HairShade | null {
 export const WARM_TIP_DYE = '#ffd8a0';
 
 /** The look with a shade: its pigment and grey share; lighter tips, variation and roughness
- *  kept (tips then lighten the shade: an eighth of its melanin amount, its dye or else
- *  WARM_TIP_DYE). */
+ *  kept (tips then lighten the shade: an eighth of its melanin amount, its tip dye, its dye or
+ *  else WARM_TIP_DYE). */
 export function withShade(look: HairLook | null, shade: HairShade): HairLook {
   const base = look ?? DEFAULT_HAIR_LOOK;
   const shaded: HairLook = {
@@ -79,11 +85,17 @@ export function withShade(look: HairLook | null, shade: HairShade): HairLook {
 }
 
 /** The look with tips lighter than its roots, as a Shade with Tips on gives them (an eighth of
- *  the melanin amount, the look's dye or else WARM_TIP_DYE), unless its tips are lighter
- *  already: turning Tips on shows a balayage at once, not tips of the roots' colour. */
+ *  the melanin amount; the tip dye of the shade whose dye the look has, else the look's dye, else
+ *  WARM_TIP_DYE), unless its tips are lighter already: turning Tips on shows a balayage at once,
+ *  not tips of the roots' colour. */
 export function withLighterTips(look: HairLook): HairLook {
   if (look.tipMelanin < look.melanin) return look;
-  return { ...look, tipMelanin: lighterMelanin(look.melanin), tipDye: look.dye ?? WARM_TIP_DYE };
+  const ownTips = look.dye ? HAIR_SHADES.find((s) => s.dye === look.dye)?.tipDye : null;
+  return {
+    ...look,
+    tipMelanin: lighterMelanin(look.melanin),
+    tipDye: ownTips ?? look.dye ?? WARM_TIP_DYE,
+  };
 }
 
 /** The shade a look has (its pigment and grey share as the shade sets them), or null. */
