@@ -1,8 +1,8 @@
-// Where each strand's colour goes (web/viewer/colourPlacement.ts): ranks spread evenly, so a
+// Where each strand's colour goes (web/model/colourPlacement.ts): ranks spread evenly, so a
 // grey share greys that share of the strands; temples grey first and the nape last; the
 // balayage's sections lighter round the face; seeded.
 import { describe, expect, it } from 'vitest';
-import { colourPlacement, greyRegionWeight, ranks } from '../../web/viewer/colourPlacement';
+import { colourPlacement, greyRegionWeight, ranks } from '../../web/model/colourPlacement';
 
 /** `n` one-point strands rooted over a sphere about the built-in head's scalp (centre
  *  (0, 0.1, −0.12), radius 0.9; y above −1), from a fixed linear congruential sequence. */

@@ -3,7 +3,8 @@
 // the seeded spread; each colour checked against the melanin mapping of melanin.ts taken directly
 // (Unreal's GetHairColorFromMelanin of the pigment) at hand-computed melanin.
 import { describe, expect, it } from 'vitest';
-import { strandLookRandom, strandsForExport } from '../../web/export/strandsForExport';
+import { strandsForExport } from '../../web/export/strandsForExport';
+import { colourPlacement } from '../../web/model/colourPlacement';
 import { DEFAULT_GROWTH } from '../../web/model/growthParams';
 import {
   DEFAULT_HAIR_LOOK,
@@ -15,6 +16,7 @@ import { hairColorFromMelanin } from '../../web/model/melanin';
 import { quantizeHairLook, readHairLook } from '../../web/model/readHairLook';
 import { parseSession } from '../../web/model/sessionFile';
 import { decodeSessionLink, encodeSessionLink } from '../../web/model/sessionLink';
+import { pointAttributes } from '../../web/viewer/strandAttributes';
 
 /** The melanin, by hand, `cm` from the tip of a strand whose balayage piece is `piece`, with
  *  lighter tips over `tipCm` (root melanin 0.4, tips 0.1): the strand's fade is tipCm · (0.6 +
@@ -74,6 +76,34 @@ describe('colour model on the strands', () => {
     expect(out.pigment?.melanin[0]).toBeDefined();
   });
 
+  it("exports the view's grey strands: the ones its attributes rank below the share", () => {
+    // 3000 two-point strands rooted round a ring at the temples' height, 18 % grey (no scatter
+    // below 40 %): exported grey exactly where the view's rank byte (along[4i + 2]) is below it
+    const n = 3000;
+    const points = new Float32Array(6 * n);
+    for (let s = 0; s < n; s++) {
+      const a = (2 * Math.PI * s) / n;
+      points.set(
+        [0.8 * Math.sin(a), 0.3, 0.8 * Math.cos(a), 0.8 * Math.sin(a), 0.2, 0.8 * Math.cos(a)],
+        6 * s,
+      );
+    }
+    const strandStart = Uint32Array.from({ length: n + 1 }, (_, i) => 2 * i);
+    const look = { ...DEFAULT_HAIR_LOOK, grey: 18 };
+    const out = strandsForExport(
+      { points, strandStart },
+      { hairColor: '#5a3825', hairLook: look, growth: DEFAULT_GROWTH },
+    );
+    const view = pointAttributes(points, strandStart, 0, null);
+    let greys = 0;
+    for (let s = 0; s < n; s++) {
+      const exported = Math.abs((out.pigment?.melanin[2 * s] ?? 1) - GREY_MELANIN) < 1e-6;
+      expect(exported, `strand ${s}`).toBe((view.along[4 * 2 * s + 2] + 0.5) / 256 < 0.18);
+      if (exported) greys++;
+    }
+    expect(Math.abs(greys / n - 0.18)).toBeLessThan(0.01);
+  });
+
   it('an older fraction keeps the root colour before its start and reaches the tip melanin at the tip', () => {
     const look = { ...DEFAULT_HAIR_LOOK, variation: 0, tipMelanin: 0.1, tipStart: 0.5 };
     const out = exportWith(look, 10);
@@ -103,8 +133,10 @@ describe('colour model on the strands', () => {
     const pc = out.pointColors as Float32Array;
     const mel = out.pigment?.melanin as Float32Array;
     const rows: string[] = [];
+    // each strand's balayage section, as the view places it (a byte's middle)
+    const sections = colourPlacement(hanging([11, 31]).points, hanging([11, 31]).strandStart, 0);
     for (const s of [0, 1]) {
-      const piece = strandLookRandom(DEFAULT_GROWTH.seed, s)[2];
+      const piece = (sections.piece[s] + 0.5) / 256;
       for (const cm of [0, 1, 2, 4, 6, 8, 9]) {
         const m = tipMelaninByHand(cm, 8, piece);
         const p = out.strandStart[s + 1] - 1 - cm; // cm points (1 cm each) up from the tip
@@ -120,7 +152,8 @@ describe('colour model on the strands', () => {
     }
     console.log(`lighter tips over 8 cm: ${rows.join('; ')}`);
     // pieces differ: the strands' tips are not all one colour
-    const tips = Array.from({ length: 40 }, (_, s) => strandLookRandom(DEFAULT_GROWTH.seed, s)[2]);
+    const forty = strands(40);
+    const tips = [...colourPlacement(forty.points, forty.strandStart, 0).piece].map((b) => b / 256);
     expect(Math.max(...tips) - Math.min(...tips)).toBeGreaterThan(0.5);
     // the long strand's root, 30 cm from its tip (past any piece's fade, 12.8 cm at most), is the
     // root colour
@@ -137,7 +170,7 @@ describe('colour model on the strands', () => {
       { hairColor: '#5a3825', hairLook: look, growth: DEFAULT_GROWTH },
     );
     const melUneven = uneven.pigment?.melanin as Float32Array;
-    const piece0 = strandLookRandom(DEFAULT_GROWTH.seed, 0)[2];
+    const piece0 = 128.5 / 256; // one strand: the middle rank
     for (const [i, cm] of fromTip.entries())
       expect(melUneven[i], `${cm} cm from the tip`).toBeCloseTo(tipMelaninByHand(cm, 8, piece0), 6);
   });
@@ -209,7 +242,7 @@ describe('colour model on the strands', () => {
     });
     const mel = out.pigment?.melanin as Float32Array;
     expect(out.strandStart[1]).toBe(255);
-    const piece = strandLookRandom(DEFAULT_GROWTH.seed, 0)[2];
+    const piece = 128.5 / 256; // one strand: the middle rank
     expect(mel[254]).toBeCloseTo(tipMelaninByHand(0, 8, piece), 6);
     expect(mel[251]).toBeCloseTo(tipMelaninByHand((600 * 3) / 254, 8, piece), 6);
     expect(mel[248]).toBeCloseTo(0.4, 6);

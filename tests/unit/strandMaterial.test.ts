@@ -3,8 +3,8 @@
 // headless Chromium render); here the geometry layout is checked against direct computation.
 import { describe, expect, it } from 'vitest';
 import { DEFAULT_HAIR_LOOK, hexToLinear } from '../../web/model/hairLook';
+import { LOCK_CELL, lockNoise } from '../../web/model/lockNoise';
 import { colorAbsorption } from '../../web/model/melanin';
-import { LOCK_CELL, lockNoise } from '../../web/viewer/lockNoise';
 import { decodeTipDistance, LOD_GROUPS, MAX_TURN } from '../../web/viewer/strandAttributes';
 import { buildStrandGeometry, buildStrandStripGeometry } from '../../web/viewer/strandGeometry';
 import {

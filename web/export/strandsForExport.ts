@@ -7,10 +7,12 @@
 // colours use the same values): session.hairColor (#rrggbb, sRGB) varied per strand by
 // ±STRAND_VALUE_VARIATION in value (the sRGB channels scaled by one factor, clamped to 1), then
 // decoded with the sRGB transfer function. A session with a colour model (hairLook.ts) colours
-// each strand from it instead (its grey pick and melanin spread seeded by the growth seed and
-// the strand), and each point too (the lighter tips, by arc length from the tip), with the
+// each strand from it instead (its grey pick and balayage section placed by its root as the
+// view places them, colourPlacement.ts; its melanin spread seeded by the growth seed and the
+// strand), and each point too (the lighter tips, by arc length from the tip), with the
 // pigment per strand and point for Blender's Principled Hair BSDF (melanin, redness, tint).
 
+import { colourPlacement, greyPick } from '../model/colourPlacement';
 import type { StrandArrays } from '../model/hairArrays';
 import { type HairLook, lookUniforms, strandLookColor, strandPigment } from '../model/hairLook';
 import { DEFAULT_HAIR_COLOR, type SessionState } from '../model/session';
@@ -73,8 +75,9 @@ export function strandValueFactor(seed: number, index: number): number {
   return 1 + STRAND_VALUE_VARIATION * u;
 }
 
-/** The colour model's random values of input strand `index` (grey pick, melanin spread, balayage
- *  piece: hairLook.ts tipShare). */
+/** The colour model's random values of input strand `index`: its own even value for the grey
+ *  pick, its melanin spread, and the value that chooses between its own value and its rank
+ *  (colourPlacement.ts greyPick). */
 export function strandLookRandom(seed: number, index: number): [number, number, number] {
   const h = strandHash(seed ^ 0x6c8e9cf5, index);
   const piece = strandHash(seed ^ 0x2f1b8e43, index);
@@ -127,6 +130,9 @@ export function strandsForExport(
   const look = session.hairLook ?? null;
   const values = look ? lookUniforms(look, session.hairColor) : null;
   const pointColors = look ? new Float32Array(3 * pOut) : null;
+  // where the grey strands and the balayage's sections go, as the view places them (the same
+  // ranks and sections: colourPlacement.ts, seeded alike)
+  const place = look ? colourPlacement(src, start, 0) : null;
   const pigment = look
     ? {
         melanin: new Float32Array(pOut),
@@ -181,8 +187,13 @@ export function strandsForExport(
       }
     }
 
-    if (look && values && pointColors && pigment) {
-      const u = strandLookRandom(seed, s);
+    if (look && values && pointColors && pigment && place) {
+      const r = strandLookRandom(seed, s);
+      const u: [number, number, number] = [
+        greyPick(place.greyRank[s], look.grey / 100, r[2], r[0]),
+        r[1],
+        (place.piece[s] + 0.5) / 256,
+      ];
       const m = Math.min(n, cap);
       for (let k = 0; k < m; k++) {
         const along = m > 1 ? k / (m - 1) : 0;

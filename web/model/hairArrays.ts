@@ -139,7 +139,7 @@ export interface StrandVertexArrays {
   /** along[4 * point]: 0 at the root … 255 at the tip (by point); along[4 * point + 1]: the
    *  distance from the strand's tip by arc length (strandAttributes.ts encodeTipDistance);
    *  along[4 * point + 2], [4 * point + 3]: the strand's grey rank and balayage section
-   *  (viewer/colourPlacement.ts). */
+   *  (colourPlacement.ts). */
   along: Uint8Array;
   random: Uint8Array; // random[4 * point + k]: the strand's value, hue, length look, its lock's highlight × 255
   light: Uint8Array; // light[2 * point + k]: lighting.strand (transmittance, occlusion) × 255

@@ -82,7 +82,7 @@ export function hasTips(look: HairLook): boolean {
  *  tipLength × (BALAYAGE_LENGTH[0] + BALAYAGE_LENGTH[1] · piece) and its own strength
  *  BALAYAGE_STRENGTH[0] … 1 (piece in [0, 1), shared by the two, so the pieces painted higher
  *  are the lighter ones: in the view, the strand's section, a few centimetres wide and lighter
- *  round the face, viewer/colourPlacement.ts; in exports, its seeded value). One length and one
+ *  round the face, colourPlacement.ts). One length and one
  *  strength for every strand read as an even gradient that the hair's own shading hides; from
  *  0.6 … 1 strong and 0.8 … 1.6 × tipLength long, on sections a lock wide, as "an even
  *  top-to-bottom ombré, no separate painted lighter pieces" (a judge). */

@@ -17,9 +17,10 @@
 //                        Uint8 ÷ 255; 255, 255 without lighting
 // Level of detail: the index lists strands interleaved (stride LOD_GROUPS, groups in bit-reversed
 // order), so any prefix of the groups is an even sample of the whole head of hair.
+
+import { colourPlacement } from '../model/colourPlacement';
 import type { StrandVertexArrays } from '../model/hairArrays';
-import { colourPlacement } from './colourPlacement';
-import { hash32, lockNoise } from './lockNoise';
+import { hash32, lockNoise } from '../model/lockNoise';
 
 /** Strands are drawn in this many interleaved groups (see buildStrandGeometry). */
 export const LOD_GROUPS = 64;

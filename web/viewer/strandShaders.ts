@@ -8,6 +8,7 @@
 // and fade; strands are blended order-independently (hairOit.ts). While a motion plays the
 // vertex shaders place each point on its guide first (followerGlsl.ts). The material that uses
 // them: strandMaterial.ts.
+import { GREY_SCATTER } from '../model/colourPlacement';
 import { BALAYAGE_FULL, BALAYAGE_LENGTH, BALAYAGE_STRENGTH } from '../model/hairLook';
 import { DOM_LAYERED_OPACITY_GLSL } from './deepOpacityGlsl';
 import { FOLLOWER_GLSL } from './followerGlsl';
@@ -184,11 +185,9 @@ vec3 strandSigma(vec4 rnd, vec4 along) {
   }
   // grey strands by their rank (along.z, a byte's middle: colourPlacement.ts, temples first,
   // in fine streaks), so a share g greys the strands ranked below it; as most of the hair turns
-  // grey, a growing share of strands by their own even value instead (either is even, so the
-  // share holds): the last dark strands scattered, not gathered at the nape and crown (Silver,
-  // 85 % grey, read a darker grey from the front with them gathered)
+  // grey, more of the strands by their own even value (colourPlacement.ts greyPick)
   float pick = (255.0 * along.z + 0.5) / 256.0;
-  if (fract(dot(rnd, vec4(0.4142136, 0.7320508, 0.2360680, 0.6457513)) * 53.71) < smoothstep(0.4, 0.9, lookShares.x))
+  if (fract(dot(rnd, vec4(0.4142136, 0.7320508, 0.2360680, 0.6457513)) * 53.71) < smoothstep(${GREY_SCATTER[0].toFixed(2)}, ${GREY_SCATTER[1].toFixed(2)}, lookShares.x))
     pick = fract(dot(rnd, vec4(0.7548777, 0.5698403, 0.3308946, 0.1234567)) * 97.31);
   if (pick < lookShares.x) s = greySigma;
   float hue = hueVariation * (2.0 * rnd.y - 1.0);

@@ -7,7 +7,7 @@ export const LOCK_CELL = 0.12;
 /** Smooth value noise of a root position in [0, 1] (a lattice of seeded values LOCK_CELL apart,
  *  interpolated with smoothstep and stretched to about a uniform spread): strands rooted within
  *  a lock's width of each other get nearly the same value, so the strand shader's highlight tilt
- *  (strandShaders.ts) turns whole locks together: the key light's highlight breaks into locks,
+ *  (viewer/strandShaders.ts) turns whole locks together: the key light's highlight breaks into locks,
  *  as it does on a head of hair, instead of averaging over strands into one smooth band. */
 export function lockNoise(x: number, y: number, z: number, seed = 0): number {
   const fx = x / LOCK_CELL;

@@ -27,6 +27,20 @@ export const PIECE_CELL = 0.3;
 export const PIECE_OWN_SHARE = 0.25;
 export const PIECE_FACE = 0.35;
 
+/** As most of the hair turns grey, a growing share of the strands (smoothstep over the grey
+ *  share from GREY_SCATTER[0] to [1]) is picked by its own even value instead of its rank:
+ *  either is even, so the share holds, and the last dark strands are scattered, not gathered at
+ *  the nape and crown (Silver, 85 % grey, read a darker grey from the front with them gathered).
+ *  The strand shader (viewer/strandShaders.ts) and the exports (greyPick) pick alike. */
+export const GREY_SCATTER: readonly [number, number] = [0.4, 0.9];
+
+/** The value a strand's grey pick is compared with (grey iff below the grey share, 0 … 1): its
+ *  rank's (a byte's middle), or, for a share `scatter(share)` of the strands (`select` below
+ *  it), its own even value `own` (select, own: the strand's seeded values in [0, 1)). */
+export function greyPick(rank: number, share: number, select: number, own: number): number {
+  return select < smoothstep(GREY_SCATTER[0], GREY_SCATTER[1], share) ? own : (rank + 0.5) / 256;
+}
+
 const smoothstep = (a: number, b: number, x: number): number => {
   const t = Math.min(1, Math.max(0, (x - a) / (b - a)));
   return t * t * (3 - 2 * t);
@@ -55,7 +69,7 @@ export interface ColourPlacement {
 }
 
 /** Each strand's colour placement from its root (points[3 · strandStart[s]]), seeded by
- *  `seedMix` (strandAttributes.ts: the colour seed's mix). */
+ *  `seedMix` (viewer/strandAttributes.ts: the colour seed's mix; 0 in the view and in exports). */
 export function colourPlacement(
   points: Float32Array,
   strandStart: Uint32Array,
