@@ -54,10 +54,17 @@ describe('the embed', () => {
       const short = framedAppView(name, home, -1);
       expect(dist(short)).toBeCloseTo(dist(home), 9);
       expect(short.target).toEqual(home.target);
-      // hair down to y = -6: twice as far (3.6 -> 7.2 units tall), aimed 1.8 lower, as namedView
+      // hair down to y = -6: framed to the step below it, -3.3 - 2 × 1.5 = -6.3: 7.5 units tall
+      // against 3.6 (2.083 times as far), aimed (6.3 - 2.4) / 2 = 1.95 lower
       const long = framedAppView(name, home, -6);
-      expect(dist(long) / dist(home)).toBeCloseTo(2, 6);
-      expect(long.target[1]).toBeCloseTo(home.target[1] - 1.8, 6);
+      expect(dist(long) / dist(home)).toBeCloseTo(7.5 / 3.6, 6);
+      expect(long.target[1]).toBeCloseTo(home.target[1] - 1.95, 6);
+      // a stroke that lengthens the hair within a step keeps the view where it was; one past it
+      // steps out
+      expect(framedAppView(name, home, -5.0)).toEqual(long);
+      expect(dist(framedAppView(name, home, -6.4))).toBeGreaterThan(dist(long));
+      // down to the shoulders, the shoulders' framing (the bust's floor, -3.3)
+      expect(framedAppView(name, home, -2.5)).toEqual(framedAppView(name, home, -3.3));
     }
     // the lowest point of strands and a floor
     expect(lowestPoint([0, -1, 0, 0, -3.5, 1], -2)).toBe(-3.5);

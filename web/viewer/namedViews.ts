@@ -87,16 +87,31 @@ const DIRECTIONS: Record<AppViewName, Vec3> = {
   top: [0, Math.cos(0.01), Math.sin(0.01)],
 };
 
+/** How far down the app's views step out at a time, world units (15 cm). */
+export const FRAMING_STEP = 1.5;
+
+/** The floor an app view frames for hair reaching down to `lowest`: as low as the hair within
+ *  the default floor; the shoulders' (BUST_VIEW_FLOOR) down to them; below them, the next of
+ *  FRAMING_STEP steps under them. While a stroke lengthens the hair within a step the views keep
+ *  their framing, so a place on the head stays where it was on the screen (a drawing trial: "the
+ *  F, L and back views pull back and lower, so the head shifts on screen between strokes"). */
+export function framingFloor(lowest: number): number {
+  if (!(lowest < DEFAULT_FLOOR)) return lowest;
+  if (lowest >= BUST_VIEW_FLOOR) return BUST_VIEW_FLOOR;
+  return BUST_VIEW_FLOOR - FRAMING_STEP * Math.ceil((BUST_VIEW_FLOOR - lowest) / FRAMING_STEP);
+}
+
 /** An app view that frames the whole hairstyle: from `home` (the framing of the head, as at
  *  load) farther away and aimed lower as far as the hair reaches below the default floor
- *  (`lowest`, as for namedView), so hair down the back is in the picture. */
+ *  (`lowest`, as for namedView, in steps: framingFloor), so hair down the back is in the
+ *  picture. */
 export function framedAppView(
   name: AppViewName,
   home: { position: Vec3; target: Vec3 },
   lowest: number,
   highest = HEAD_TOP,
 ): { position: Vec3; target: Vec3 } {
-  const { scale, drop } = reachFraming(lowest, highest);
+  const { scale, drop } = reachFraming(framingFloor(lowest), highest);
   const [p, t] = [home.position, home.target];
   const distance = Math.hypot(p[0] - t[0], p[1] - t[1], p[2] - t[2]) * scale;
   return appView(name, [t[0], t[1] - drop, t[2]], distance);
