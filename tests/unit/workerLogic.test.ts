@@ -621,7 +621,7 @@ describe('WorkerLogic over the real wasm engine', () => {
         const [i0, i1] = [S[k], S[k + 1] - 1];
         if (i1 <= i0) continue;
         segments += i1 - i0;
-        expect([a.along[2 * i0], a.along[2 * i1], a.along[2 * i1 + 1]]).toEqual([0, 255, 0]);
+        expect([a.along[4 * i0], a.along[4 * i1], a.along[4 * i1 + 1]]).toEqual([0, 255, 0]);
         const d = [0, 1, 2].map((c) => P[3 * (i0 + 1) + c] - P[3 * i0 + c]);
         const t = [0, 1, 2].map((c) => a.tangent[3 * i0 + c] / 127);
         const cos = (d[0] * t[0] + d[1] * t[1] + d[2] * t[2]) / Math.hypot(...d) / Math.hypot(...t);
