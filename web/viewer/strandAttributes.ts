@@ -90,6 +90,10 @@ export function pointAttributes(
   const seedMix = Math.imul(colorSeed >>> 0, 0x9e3779b1);
   const bounds = writeTangents(points, strandStart, tangent, 1);
   const place = colourPlacement(points, strandStart, seedMix);
+  // a point's four bytes of `along` and of `random` written as one little-endian word each (the
+  // byte order of every platform WebGL runs on): a store a point instead of four
+  const along32 = new Uint32Array(along.buffer);
+  const random32 = new Uint32Array(random.buffer);
   for (let s = 0; s < strands; s++) {
     const a = strandStart[s];
     const b = strandStart[s + 1];
@@ -104,35 +108,26 @@ export function pointAttributes(
     // a little of the strand's own
     const lock = lockNoise(points[3 * a], points[3 * a + 1], points[3 * a + 2], seedMix);
     const r3 = Math.round(255 * clamp01(0.85 * lock + 0.15 * ((h2 >>> 24) / 255)));
+    random32.fill(r0 | (r1 << 8) | (r2 << 16) | (r3 << 24), a, b);
     const inv = n > 1 ? 255 / (n - 1) : 0;
+    // the strand's grey rank and balayage section, the upper two bytes of each point's word
+    const placed = (place.greyRank[s] << 16) | (place.piece[s] << 24);
     // the distance from the tip, summed from the tip back to the root: encodeTipDistance inlined
-    // (this runs on the page for every preview; a byte store truncates, so + 0.5 rounds)
+    // (this runs on the page for every preview; truncated, so + 0.5 rounds)
     let fromTip = 0;
-    along[4 * (b - 1) + 1] = 0;
+    along32[b - 1] = Math.round((n - 1) * inv) | placed;
     for (let i = b - 2; i >= a; i--) {
       const dx = points[3 * i + 3] - points[3 * i];
       const dy = points[3 * i + 4] - points[3 * i + 1];
       const dz = points[3 * i + 5] - points[3 * i + 2];
       fromTip += Math.sqrt(dx * dx + dy * dy + dz * dz);
-      along[4 * i + 1] = fromTip < TIP_DISTANCE_RANGE ? TIP_BYTE * Math.sqrt(fromTip) + 0.5 : 255;
+      const tip = fromTip < TIP_DISTANCE_RANGE ? (TIP_BYTE * Math.sqrt(fromTip) + 0.5) | 0 : 255;
+      along32[i] = Math.round((i - a) * inv) | (tip << 8) | placed;
     }
-    for (let i = a; i < b; i++) {
-      along[4 * i] = Math.round((i - a) * inv);
-      along[4 * i + 2] = place.greyRank[s];
-      along[4 * i + 3] = place.piece[s];
-      random[4 * i] = r0;
-      random[4 * i + 1] = r1;
-      random[4 * i + 2] = r2;
-      random[4 * i + 3] = r3;
-      if (useLight) {
-        light[2 * i] = Math.round(255 * clamp01(lighting[2 * i]));
-        light[2 * i + 1] = Math.round(255 * clamp01(lighting[2 * i + 1]));
-      } else {
-        light[2 * i] = 255;
-        light[2 * i + 1] = 255;
-      }
-    }
+    if (useLight)
+      for (let i = 2 * a; i < 2 * b; i++) light[i] = Math.round(255 * clamp01(lighting[i]));
   }
+  if (!useLight) light.fill(255);
   const box = pointCount > 0 ? new Float32Array(bounds) : new Float32Array(0);
   return { pointCount, tangent, along, random, light, box };
 }

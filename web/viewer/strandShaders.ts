@@ -185,11 +185,14 @@ vec3 strandSigma(vec4 rnd, vec4 along) {
   }
   // grey strands by their rank (along.z, a byte's middle: colourPlacement.ts, temples first,
   // in fine streaks), so a share g greys the strands ranked below it; as most of the hair turns
-  // grey, more of the strands by their own even value (colourPlacement.ts greyPick)
-  float pick = (255.0 * along.z + 0.5) / 256.0;
-  if (fract(dot(rnd, vec4(0.4142136, 0.7320508, 0.2360680, 0.6457513)) * 53.71) < smoothstep(${GREY_SCATTER[0].toFixed(2)}, ${GREY_SCATTER[1].toFixed(2)}, lookShares.x))
-    pick = fract(dot(rnd, vec4(0.7548777, 0.5698403, 0.3308946, 0.1234567)) * 97.31);
-  if (pick < lookShares.x) s = greySigma;
+  // grey, more of the strands by their own even value (colourPlacement.ts greyPick). Branches on
+  // uniforms: hair without grey does none of it
+  if (lookShares.x > 0.0) {
+    float pick = (255.0 * along.z + 0.5) / 256.0;
+    if (lookShares.x > ${GREY_SCATTER[0].toFixed(2)} && fract(dot(rnd, vec4(0.4142136, 0.7320508, 0.2360680, 0.6457513)) * 53.71) < smoothstep(${GREY_SCATTER[0].toFixed(2)}, ${GREY_SCATTER[1].toFixed(2)}, lookShares.x))
+      pick = fract(dot(rnd, vec4(0.7548777, 0.5698403, 0.3308946, 0.1234567)) * 97.31);
+    if (pick < lookShares.x) s = greySigma;
+  }
   float hue = hueVariation * (2.0 * rnd.y - 1.0);
   return s * (1.0 + lookShares.z * (2.0 * rnd.x - 1.0)) * vec3(1.0 - hue, 1.0, 1.0 + hue);
 }
