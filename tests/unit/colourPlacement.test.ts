@@ -95,6 +95,25 @@ describe('colour placement', () => {
     );
   });
 
+  it('ranks the other strands alike beside a strand without points or with a root not finite', () => {
+    const { points, strandStart } = scalp(1000);
+    const plain = colourPlacement(points, strandStart, 5);
+    // strand 0's root made NaN, and an empty strand added at the end
+    const bad = Float32Array.from(points);
+    bad[0] = Number.NaN;
+    const withEmpty = Uint32Array.from([...strandStart, strandStart[strandStart.length - 1]]);
+    const placed = colourPlacement(bad, withEmpty, 5);
+    expect(placed.greyRank.length).toBe(1001);
+    // the ranks still spread evenly: the share holds
+    const grey = placed.greyRank.reduce((k, r) => k + (isGrey(r, 0.18) ? 1 : 0), 0);
+    expect(Math.abs(grey / 1001 - 0.18)).toBeLessThan(0.01);
+    // and the other strands keep nearly their ranks (two more values among a thousand)
+    let moved = 0;
+    for (let s = 1; s < 1000; s++)
+      moved = Math.max(moved, Math.abs(placed.greyRank[s] - plain.greyRank[s]));
+    expect(moved).toBeLessThanOrEqual(2);
+  });
+
   it('places the same strands alike for a seed, and otherwise for another', () => {
     const { points, strandStart } = scalp(2000);
     const a = colourPlacement(points, strandStart, 5);

@@ -81,10 +81,13 @@ export function colourPlacement(
   const streakScale = LOCK_CELL / GREY_STREAK_CELL;
   const pieceScale = LOCK_CELL / PIECE_CELL;
   for (let s = 0; s < n; s++) {
+    // the root (a strand without points, or a root not finite, as at the head's centre: one
+    // NaN would spread to every rank through the ranks' range)
     const a = 3 * strandStart[s];
-    const x = points[a];
-    const y = points[a + 1];
-    const z = points[a + 2];
+    const rooted = strandStart[s + 1] > strandStart[s] && a + 2 < points.length;
+    const x = rooted && Number.isFinite(points[a]) ? points[a] : 0;
+    const y = rooted && Number.isFinite(points[a + 1]) ? points[a + 1] : 0;
+    const z = rooted && Number.isFinite(points[a + 2]) ? points[a + 2] : 0;
     const h = hash32(s ^ seedMix ^ 0x27d4eb2f);
     const own = (h >>> 8) / 16777216;
     const own2 = (h & 255) / 256;
