@@ -6,6 +6,7 @@
 // placed on its cranium: head/headPlacement.ts): y up, the face towards +z, the cranium's top at
 // y 1 and its sides at x ±0.79.
 import { hash32, LOCK_CELL, lockNoise } from './lockNoise';
+import { smoothstep } from './smoothstep';
 
 /** How much more often strands turn grey at the temples and sides than at the crown, and less
  *  at the nape: a strand's chance of being among a grey share is proportional to
@@ -41,11 +42,6 @@ export function greyPick(rank: number, share: number, select: number, own: numbe
   return select < smoothstep(GREY_SCATTER[0], GREY_SCATTER[1], share) ? own : (rank + 0.5) / 256;
 }
 
-const smoothstep = (a: number, b: number, x: number): number => {
-  const t = Math.min(1, Math.max(0, (x - a) / (b - a)));
-  return t * t * (3 - 2 * t);
-};
-
 /** The relative chance that a strand rooted at (x, y, z) is among the grey ones: 1 on the crown,
  *  up to 1 + GREY_REGION at the temples and sides, down to 1 − 0.6 GREY_REGION at the nape. */
 export function greyRegionWeight(x: number, y: number, z: number): number {
@@ -56,7 +52,7 @@ export function greyRegionWeight(x: number, y: number, z: number): number {
 }
 
 /** How much a strand rooted at (x, y, z) frames the face (0 … 1): the front hairline's sides. */
-export function faceFraming(x: number, z: number): number {
+function faceFraming(x: number, z: number): number {
   return smoothstep(0.25, 0.65, z) * smoothstep(0.15, 0.5, Math.abs(x));
 }
 

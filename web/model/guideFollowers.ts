@@ -20,16 +20,12 @@
 // At rest (guides at their groom, pose the identity) every point is its groom but for the rest
 // tangent's rounding to bytes (the offset turned by at most about half a degree: under 0.1 mm).
 
+import { smoothstep } from './smoothstep';
+
 /** Offsets from the guide (world units) up to which a point turns with its guide's direction
  *  in full, and from which it does not turn at all (followerGlsl.ts uses the same). */
 export const FOLLOW_TURN_NEAR = 0.15;
 export const FOLLOW_TURN_FAR = 0.6;
-
-/** GLSL's smoothstep. */
-function smoothstep(e0: number, e1: number, x: number): number {
-  const t = Math.min(1, Math.max(0, (x - e0) / (e1 - e0)));
-  return t * t * (3 - 2 * t);
-}
 
 /** The guides of a motion and how the strands are bound to them (StrandMotion's binding). */
 export interface GuideBinding {

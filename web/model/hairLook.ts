@@ -6,6 +6,7 @@
 // absorption whose base colour it is (melanin.ts), varied per strand a little. Pure arithmetic: the strand shader (viewer/strandShaders.ts) takes
 // lookUniforms(), the exports strandLookColor() (linear RGB).
 import { absorptionColor, colorAbsorption, melaninAbsorption, type Rgb } from './melanin';
+import { smoothstep } from './smoothstep';
 
 export interface HairLook {
   /** Melanin 0 (white) … 1 (black). */
@@ -230,9 +231,4 @@ export function strandPigment(
     mixAbsorption(amount(look.melanin), amount(look.tipMelanin), t, look.tipStart ?? 1) *
     (1 + look.variation * (2 * u[1] - 1));
   return { melanin: 1 - Math.exp(-m), redness: look.redness, tint };
-}
-
-function smoothstep(a: number, b: number, x: number): number {
-  const t = Math.min(1, Math.max(0, (x - a) / (b - a)));
-  return t * t * (3 - 2 * t);
 }
